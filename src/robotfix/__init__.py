@@ -1,0 +1,3 @@
+"""RobotFix: a static checker for units, frames and refinements in ROS Python programs."""
+
+__version__ = "0.1.0"

@@ -1,0 +1,5 @@
+"""`python -m robotfix` runs the command line."""
+
+from robotfix.cli import main
+
+raise SystemExit(main())

@@ -1,0 +1,1 @@
+"""Abstract interpretation of Python: values, states, statements, expressions, VCs."""

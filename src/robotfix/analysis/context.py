@@ -1,0 +1,191 @@
+"""Per-file analysis context: fresh symbols and heap ids, imports, reports, scopes.
+
+One `FileContext` per checked file; nothing here outlives the check of that file.
+"""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+from robotfix import messages
+from robotfix.annotations import ast as A
+from robotfix.annotations.extract import Refinement, extract
+from robotfix.analysis.values import Value, sort_of
+from robotfix.analysis.vc import VC, Verdict
+from robotfix.diagnostics import Diagnostic
+from robotfix.ros.catalog import MsgCatalog
+from robotfix.source import SourceFile
+
+MSG_MODULES = ("msg", "srv", "action")
+
+
+@dataclass
+class Scope:
+    """A module, class or function body: what it declares and what it binds."""
+
+    kind: str  # module, class, function
+    name: str
+    node: ast.AST
+    parent: Scope | None = None
+    decls: dict[str, Refinement] = field(default_factory=dict)
+    local_names: set[str] = field(default_factory=set)
+    global_names: set[str] = field(default_factory=set)
+
+    def module(self) -> Scope:
+        return self if self.parent is None else self.parent.module()
+
+
+class FileContext:
+    def __init__(
+        self, source: SourceFile, catalog: MsgCatalog, discharge: Callable[[VC], Verdict]
+    ) -> None:
+        self.source = source
+        self.catalog = catalog
+        self.discharge = discharge
+        self.diagnostics: list[Diagnostic] = []
+        self.sym_names: dict[int, str] = {}
+        self._next = 0
+        self.imports: dict[str, str] = {}  # local name -> qualified name
+        self.star_import = False
+        self._reported: set[tuple[object, ...]] = set()
+
+    # -- symbols and ids -----------------------------------------------------
+    def fresh_id(self) -> int:
+        self._next += 1
+        return self._next
+
+    def fresh(self, kind: str, description: str, unit: object = None) -> Value:
+        """An unknown value of `kind`, named `description` in counterexamples."""
+        ident = self.fresh_id()
+        self.sym_names[ident] = description
+        return Value(kind, A.Sym(ident, sort_of(kind)), unit)  # type: ignore[arg-type]
+
+    # -- reporting -----------------------------------------------------------
+    def report(self, diag: Diagnostic, once: tuple[object, ...] | None = None) -> None:
+        if once is not None:
+            if once in self._reported:
+                return
+            self._reported.add(once)
+        self.diagnostics.append(diag)
+
+    # -- names ---------------------------------------------------------------
+    def record_imports(self, tree: ast.Module) -> None:
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Import):
+                for alias in node.names:
+                    if alias.asname:
+                        self.imports[alias.asname] = alias.name
+                    else:
+                        top = alias.name.split(".")[0]
+                        self.imports[top] = top
+            elif isinstance(node, ast.ImportFrom) and node.module and not node.level:
+                for alias in node.names:
+                    if alias.name == "*":
+                        self.star_import = True
+                    else:
+                        self.imports[alias.asname or alias.name] = f"{node.module}.{alias.name}"
+
+    def qualname(self, node: ast.expr) -> str | None:
+        """`t.Annotated` -> `typing.Annotated`, when the names come from imports."""
+        if isinstance(node, ast.Name):
+            return self.imports.get(node.id)
+        if isinstance(node, ast.Attribute):
+            base = self.qualname(node.value)
+            return f"{base}.{node.attr}" if base else None
+        return None
+
+    def msg_type_named(self, qualified: str | None) -> str | None:
+        """`geometry_msgs.msg.Twist` or `std_msgs.Int32` -> the catalog's `pkg/Name`."""
+        if not qualified or "." not in qualified:
+            return None
+        module, _, name = qualified.rpartition(".")
+        parts = module.split(".")
+        if len(parts) == 2 and parts[1] in MSG_MODULES:
+            package = parts[0]
+        elif len(parts) == 1:
+            package = parts[0]
+        else:
+            return None
+        found = self.catalog.lookup(f"{package}/{name}")
+        return found.name if found else None
+
+    def msg_type_of(self, node: ast.expr) -> str | None:
+        return self.msg_type_named(self.qualname(node))
+
+    def refinement(self, annotation: ast.expr, self_name: str) -> Refinement | None:
+        found, problems = extract(
+            annotation, self_name, self.qualname, self.msg_type_of,
+            self.source.segment, self.source.char_col)
+        for problem in problems:
+            self.report(messages.annotation_problem(
+                self.source.path, problem.line, problem.col, problem.rule, problem.message),
+                once=("annotation", problem.line, problem.col, problem.message))
+        return found
+
+
+_SCOPE_NODES = (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)
+_COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
+
+
+def build_scope(ctx: FileContext, kind: str, name: str, node: ast.AST,
+                parent: Scope | None) -> Scope:
+    """Collect the names a body binds and the refinements it declares."""
+    scope = Scope(kind, name, node, parent)
+    body: list[ast.AST] = list(getattr(node, "body", []))
+    if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+        for arg in _all_args(node.args):
+            scope.local_names.add(arg.arg)
+            if arg.annotation is not None:
+                found = ctx.refinement(arg.annotation, arg.arg)
+                if found is not None:
+                    scope.decls[arg.arg] = found
+    for child in _own_nodes(body):
+        if isinstance(child, (ast.Global, ast.Nonlocal)):
+            scope.global_names.update(child.names)
+        elif isinstance(child, ast.Name) and isinstance(child.ctx, (ast.Store, ast.Del)):
+            scope.local_names.add(child.id)
+        elif isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+            scope.local_names.add(child.name)
+        elif isinstance(child, (ast.Import, ast.ImportFrom)):
+            for alias in child.names:
+                if alias.name != "*":
+                    scope.local_names.add(alias.asname or alias.name.split(".")[0])
+        elif isinstance(child, ast.ExceptHandler) and child.name:
+            scope.local_names.add(child.name)
+        elif isinstance(child, ast.AnnAssign) and isinstance(child.target, ast.Name):
+            target = child.target.id
+            if target not in scope.decls:
+                found = ctx.refinement(child.annotation, target)
+                if found is not None:
+                    scope.decls[target] = found
+    scope.local_names -= scope.global_names
+    return scope
+
+
+def _all_args(args: ast.arguments) -> list[ast.arg]:
+    found = [*args.posonlyargs, *args.args, *args.kwonlyargs]
+    found += [a for a in (args.vararg, args.kwarg) if a is not None]
+    return found
+
+
+def _own_nodes(body: list[ast.AST]) -> list[ast.AST]:
+    """Nodes of a body, not descending into nested scopes (but naming them)."""
+    out: list[ast.AST] = []
+    stack = list(reversed(body))
+    while stack:
+        node = stack.pop()
+        out.append(node)
+        if isinstance(node, _SCOPE_NODES):
+            if not isinstance(node, ast.Lambda):
+                stack.extend(reversed(node.decorator_list))
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
+                stack.extend(reversed(node.args.defaults))
+                stack.extend(d for d in node.args.kw_defaults if d is not None)
+            continue
+        if isinstance(node, _COMPREHENSIONS):
+            stack.append(node.generators[0].iter)  # the rest is the comprehension's own
+            continue
+        stack.extend(reversed(list(ast.iter_child_nodes(node))))
+    return out

@@ -1,0 +1,336 @@
+"""Expressions -> abstract values (cf. mypy's checkexpr.py; statements are elsewhere).
+
+Every expression yields a `Value`. What is not modelled yields an unknown value with a
+fresh symbol named after its source text, so a refinement that depends on it is a
+warning that names it, never an error.
+"""
+
+from __future__ import annotations
+
+import ast
+import math
+import re
+from dataclasses import replace
+from fractions import Fraction
+
+from robotfix import messages
+from robotfix.annotations import ast as A
+from robotfix.annotations.units import DIMENSIONLESS, Unit
+from robotfix.analysis import heap
+from robotfix.analysis.checks import Checker
+from robotfix.analysis.context import FileContext
+from robotfix.analysis.state import State
+from robotfix.analysis.values import NONE, Value
+
+ARITH = {ast.Add: "+", ast.Sub: "-", ast.Mult: "*", ast.Div: "/"}
+COMPARE = {ast.Eq: "==", ast.NotEq: "!=", ast.Lt: "<", ast.LtE: "<=", ast.Gt: ">", ast.GtE: ">="}
+_DECIMAL = re.compile(r"[0-9_]*\.?[0-9_]*([eE][+-]?[0-9_]+)?")
+MATH_CONSTANTS = {"pi": math.pi, "e": math.e, "tau": math.tau}
+KIND_ORDER = ("bool", "int", "float")
+
+
+class ExpressionEvaluator:
+    def __init__(self, ctx: FileContext) -> None:
+        self.ctx = ctx
+        self.check = Checker(ctx)
+        self.site: ast.AST = ast.Pass()
+
+    # -- to be provided by the statement interpreter --------------------------
+    def lookup_name(self, name: str, state: State, node: ast.AST) -> Value:
+        raise NotImplementedError
+
+    def bind(self, target: ast.expr, value: Value, state: State) -> None:
+        raise NotImplementedError
+
+    # -- dispatch ------------------------------------------------------------
+    def eval(self, node: ast.expr, state: State) -> Value:
+        method = getattr(self, f"eval_{type(node).__name__}", None)
+        if method is None:
+            self.eval_children(node, state)
+            return self.unknown(node)
+        result: Value = method(node, state)
+        return result
+
+    def eval_children(self, node: ast.AST, state: State) -> None:
+        for child in ast.iter_child_nodes(node):
+            if isinstance(child, ast.expr):
+                self.eval(child, state)
+
+    def unknown(self, node: ast.AST, kind: str = "unknown", unit: Unit | None = None) -> Value:
+        text = self.ctx.source.segment(node) or "an expression"
+        return self.ctx.fresh(kind, f"`{text}`" if len(text) < 40 else "an expression", unit)
+
+    # -- leaves --------------------------------------------------------------
+    def eval_Constant(self, node: ast.Constant, state: State) -> Value:
+        value = node.value
+        if isinstance(value, bool):
+            return Value("bool", A.Bool(value))
+        if isinstance(value, int):
+            return Value("int", A.Num(Fraction(value), True), literal=True)
+        if isinstance(value, float) and math.isfinite(value):
+            return Value("float", A.Num(self._exact(node, value), False), literal=True)
+        if isinstance(value, str):
+            return Value("str", A.Str(value))
+        if value is None:
+            return NONE
+        return self.unknown(node)
+
+    def _exact(self, node: ast.Constant, value: float) -> Fraction:
+        """Reals are exact: `3.141592653589793238` is read from the source text."""
+        text = self.ctx.source.segment(node) or ""
+        if text and _DECIMAL.fullmatch(text):
+            try:
+                return Fraction(text.replace("_", ""))
+            except (ValueError, ZeroDivisionError):
+                pass
+        return Fraction(value)
+
+    def eval_Name(self, node: ast.Name, state: State) -> Value:
+        return self.lookup_name(node.id, state, node)
+
+    def eval_Attribute(self, node: ast.Attribute, state: State) -> Value:
+        base = self.eval(node.value, state)
+        if base.kind == "msg" and base.ref in state.heap:
+            text = self.ctx.source.segment(node) or node.attr
+            return self.check.read_field(state, base.ref, node.attr, self.site, text)  # type: ignore[arg-type]
+        if base.kind == "module":
+            qualified = f"{base.name}.{node.attr}"
+            if base.name == "math" and node.attr in MATH_CONSTANTS:
+                exact = Fraction(MATH_CONSTANTS[node.attr])
+                return Value("float", A.Num(exact, False), literal=True)
+            msg_type = self.ctx.msg_type_named(qualified)
+            if msg_type is not None:
+                return Value("msgclass", name=msg_type)
+            return Value("module", name=qualified)
+        if base.kind == "msgclass":
+            return self._constant(base.name, node)
+        return self.unknown(node)
+
+    def _constant(self, msg_type: str, node: ast.Attribute) -> Value:
+        spec = self.ctx.catalog.lookup(msg_type)
+        if spec is None or node.attr not in spec.constants:
+            return self.unknown(node)
+        type_, value = spec.constants[node.attr]
+        if isinstance(value, bool):
+            return Value("bool", A.Bool(value))
+        if isinstance(value, (int, float)):
+            kind = "float" if type_ in ("float32", "float64") else "int"
+            return Value(kind, A.Num(Fraction(value), kind == "int"), literal=True)
+        if isinstance(value, str):
+            return Value("str", A.Str(value))
+        return self.unknown(node)
+
+    # -- arithmetic ----------------------------------------------------------
+    def eval_UnaryOp(self, node: ast.UnaryOp, state: State) -> Value:
+        operand = self.eval(node.operand, state)
+        if isinstance(node.op, ast.Not):
+            return Value("bool", A.Unary("not", self.truthy(operand, node.operand)))
+        if isinstance(node.op, (ast.USub, ast.UAdd)) and operand.term is not None and \
+                operand.kind in ("int", "float", "bool", "unknown"):
+            if isinstance(node.op, ast.UAdd):
+                return operand
+            term = operand.term
+            negated = A.Num(-term.value, term.is_int) if isinstance(term, A.Num) \
+                else A.Unary("-", term)
+            kind = "int" if operand.kind == "bool" else operand.kind
+            return replace(operand, kind=kind, term=negated)
+        return self.unknown(node)
+
+    def eval_BinOp(self, node: ast.BinOp, state: State) -> Value:
+        left, right = self.eval(node.left, state), self.eval(node.right, state)
+        uninit = left.uninit or right.uninit
+        op = ARITH.get(type(node.op))
+        if op is None:
+            return replace(self._other_binop(node, left, right), uninit=uninit)
+        if op in "+-":
+            unit, literal = self.unit_of_sum(left, right, node, op)
+        else:
+            unit, literal = self.unit_of_product(left, right, op)
+        kind = self.numeric_kind(left, right, op)
+        if kind is None or left.term is None or right.term is None:
+            return replace(self.unknown(node, unit=unit), uninit=uninit)
+        term = A.Binary(op, left.term, right.term)
+        return Value(kind, term, unit, literal, uninit=uninit)
+
+    def _other_binop(self, node: ast.BinOp, left: Value, right: Value) -> Value:
+        if isinstance(node.op, ast.Mod):
+            return self.unknown(node, unit=left.unit)
+        if isinstance(node.op, ast.FloorDiv):
+            return self.unknown(node, "int", self.unit_of_product(left, right, "/")[0])
+        if isinstance(node.op, ast.Pow) and isinstance(right.term, A.Num) and \
+                right.term.is_int and left.unit is not None and not left.literal:
+            return self.unknown(node, unit=left.unit.power(int(right.term.value)))
+        return self.unknown(node)
+
+    def numeric_kind(self, left: Value, right: Value, op: str) -> str | None:
+        kinds = {left.kind, right.kind}
+        if not kinds <= {"int", "float", "bool", "unknown"}:
+            return None
+        if "unknown" in kinds:
+            return "unknown"
+        if op == "/" or "float" in kinds:
+            return "float"
+        return "int"
+
+    def unit_of_sum(self, left: Value, right: Value, node: ast.AST, op: str) -> tuple[Unit | None, bool]:
+        if left.literal and right.literal:
+            return None, True
+        if left.literal or right.literal:
+            return (right.unit if left.literal else left.unit), False
+        if left.unit is None or right.unit is None:
+            return None, False
+        if left.unit.same_as(right.unit):
+            return left.unit, False
+        text = self.ctx.source.segment(node) or op
+        self.ctx.report(messages.operand_units(
+            self.ctx.source.path, self.ctx.source.span(node), text, op, left.unit, right.unit),
+            once=("operands", id(node)))
+        return None, False
+
+    def unit_of_product(self, left: Value, right: Value, op: str) -> tuple[Unit | None, bool]:
+        if left.literal and right.literal:
+            return None, True
+        lu = DIMENSIONLESS if left.literal else left.unit
+        ru = DIMENSIONLESS if right.literal else right.unit
+        if lu is None or ru is None:
+            return None, False
+        if ru == DIMENSIONLESS:
+            return lu, False
+        if lu == DIMENSIONLESS and op == "*":
+            return ru, False
+        return (lu * ru if op == "*" else lu / ru), False
+
+    def eval_Compare(self, node: ast.Compare, state: State) -> Value:
+        operands = [self.eval(node.left, state)] + [self.eval(c, state) for c in node.comparators]
+        parts: list[A.Expr] = []
+        for op, left, right in zip(node.ops, operands, operands[1:]):
+            name = COMPARE.get(type(op))
+            if name is not None and name not in ("==", "!=") or \
+                    left.is_number and right.is_number:
+                self.unit_of_sum(left, right, node, name or "==")
+            if name is None or left.term is None or right.term is None:
+                return self.unknown(node, "bool")
+            parts.append(A.Binary(name, left.term, right.term))
+        return Value("bool", A.conjoin(parts))
+
+    def eval_BoolOp(self, node: ast.BoolOp, state: State) -> Value:
+        values = [self.eval(v, state) for v in node.values]
+        if any(v.kind != "bool" or v.term is None for v in values):
+            return self.unknown(node)
+        op = "and" if isinstance(node.op, ast.And) else "or"
+        term = values[0].term
+        for value in values[1:]:
+            term = A.Binary(op, term, value.term)  # type: ignore[arg-type]
+        return Value("bool", term)
+
+    def eval_IfExp(self, node: ast.IfExp, state: State) -> Value:
+        cond = self.condition(node.test, state)
+        then, orelse = self.eval(node.body, state), self.eval(node.orelse, state)
+        kinds = {then.kind, orelse.kind}
+        if then.term is None or orelse.term is None or len(kinds) > 1 and \
+                not kinds <= {"int", "float", "bool"}:
+            return self.unknown(node)
+        kind = max(kinds, key=lambda k: KIND_ORDER.index(k) if k in KIND_ORDER else -1)
+        unit: Unit | None = None
+        if then.unit is not None and (orelse.literal or orelse.unit == then.unit):
+            unit = then.unit
+        elif orelse.unit is not None and then.literal:
+            unit = orelse.unit
+        return Value(kind, A.Ite(cond, then.term, orelse.term), unit,
+                     then.literal and orelse.literal)
+
+    def eval_Subscript(self, node: ast.Subscript, state: State) -> Value:
+        base = self.eval(node.value, state)
+        self.eval(node.slice, state)
+        return self.unknown(node, unit=base.unit if not base.literal else None)
+
+    def eval_NamedExpr(self, node: ast.NamedExpr, state: State) -> Value:
+        value = self.eval(node.value, state)
+        self.bind(node.target, value, state)
+        return value
+
+    def eval_Lambda(self, node: ast.Lambda, state: State) -> Value:
+        return self.unknown(node)
+
+    eval_ListComp = eval_SetComp = eval_DictComp = eval_GeneratorExp = eval_Lambda
+
+    # -- calls ---------------------------------------------------------------
+    def eval_Call(self, node: ast.Call, state: State) -> Value:
+        func = node.func
+        if isinstance(func, ast.Attribute) and func.attr == "publish" and node.args:
+            self.eval(func.value, state)
+            message = self.eval(node.args[0], state)
+            if message.kind == "msg" and message.ref is not None:
+                self.check.check_whole(state, message.ref, self.site, publishing=True)
+            return NONE
+        callee = self.eval(func, state)
+        args = [self.eval(a, state) for a in node.args]
+        kwargs = {k.arg: self.eval(k.value, state) for k in node.keywords}
+        if callee.kind == "msgclass":
+            return self.construct(callee.name, args, kwargs, state)
+        if callee.kind == "builtin":
+            found = self.builtin(callee.name, args, node)
+            if found is not None:
+                return found
+        for value in [*args, *kwargs.values()]:
+            if value.kind == "msg" and value.ref is not None:
+                heap.havoc(state, value.ref)
+        return self.unknown(node)
+
+    def construct(self, msg_type: str, args: list[Value], kwargs: dict[str | None, Value],
+                  state: State) -> Value:
+        message = heap.new_message(self.ctx, state, msg_type, "constructed")
+        spec = self.ctx.catalog.lookup(msg_type)
+        assert message.ref is not None and spec is not None
+        short = msg_type.split("/")[-1]
+        given = list(zip(spec.fields, args)) + [(k, v) for k, v in kwargs.items() if k]
+        for name, value in given:
+            self.check.write_field(state, message.ref, name, value, self.site, f"{short}.{name}")
+        return message
+
+    def builtin(self, name: str, args: list[Value], node: ast.Call) -> Value | None:
+        if not args or any(a.term is None for a in args):
+            return None
+        first = args[0]
+        if name == "abs" and len(args) == 1:
+            return replace(first, term=A.Func("abs", (first.term,)))  # type: ignore[arg-type]
+        if name in ("min", "max") and len(args) >= 2:
+            result = first
+            for other in args[1:]:
+                unit, literal = self.unit_of_sum(result, other, node, name)
+                kind = self.numeric_kind(result, other, "+")
+                if kind is None:
+                    return None
+                term = A.Func(name, (result.term, other.term))  # type: ignore[arg-type]
+                result = Value(kind, term, unit, literal)
+            return result
+        if name == "float" and len(args) == 1 and first.kind in ("int", "float", "bool"):
+            return replace(first, kind="float")
+        if name in ("int", "round") and len(args) == 1:
+            return self.unknown(node, "int", first.unit)
+        return None
+
+    # -- conditions ----------------------------------------------------------
+    def condition(self, node: ast.expr, state: State) -> A.Expr:
+        """The fact that holds when `node` is truthy (fresh booleans for the unknown)."""
+        if isinstance(node, ast.BoolOp):
+            op = "and" if isinstance(node.op, ast.And) else "or"
+            parts = [self.condition(v, state) for v in node.values]
+            result = parts[0]
+            for part in parts[1:]:
+                result = A.Binary(op, result, part)
+            return result
+        if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.Not):
+            return A.Unary("not", self.condition(node.operand, state))
+        return self.truthy(self.eval(node, state), node)
+
+    def truthy(self, value: Value, node: ast.AST) -> A.Expr:
+        if value.term is not None and value.kind == "bool":
+            return value.term
+        if value.term is not None and value.kind in ("int", "float"):
+            return A.Binary("!=", value.term, A.Num(Fraction(0), value.kind == "int"))
+        if value.term is not None and value.kind == "str":
+            return A.Binary("!=", value.term, A.Str(""))
+        if value.kind == "none":
+            return A.Bool(False)
+        return self.unknown(node, "bool").term  # type: ignore[return-value]

@@ -1,0 +1,153 @@
+"""Messages on the heap: construction, defaults, received messages, field units.
+
+A field path is looked up from the outermost enclosing message inward, so a
+refinement or unit declared on `Twist` for `linear.x` applies to `move.linear.x` but
+not to a free-standing `Vector3`.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+from robotfix.annotations import ast as A
+from robotfix.annotations.units import Unit, UnitError, label, resolve
+from robotfix.analysis.context import FileContext
+from robotfix.analysis.state import State
+from robotfix.analysis.values import MsgObj, Value
+from robotfix.ros.catalog import FieldSpec, FieldUnit, Invariant, MsgSpec
+
+DEFAULTS: dict[str, A.Expr] = {
+    "int": A.Num(Fraction(0), True),
+    "float": A.Num(Fraction(0), False),
+    "bool": A.Bool(False),
+    "str": A.Str(""),
+}
+
+
+def new_message(ctx: FileContext, state: State, msg_type: str, origin: str,
+                owner: tuple[int, str] | None = None) -> Value:
+    ref = ctx.fresh_id()
+    state.heap[ref] = MsgObj(msg_type, origin, owner=owner)
+    if origin == "received":
+        assume_invariants(ctx, state, ref)
+    return Value("msg", ref=ref, name=msg_type)
+
+
+def contexts(ctx: FileContext, state: State, ref: int, name: str) -> list[tuple[MsgSpec, str]]:
+    """(message spec, path relative to it) for field `name` of `ref`, outermost first."""
+    out: list[tuple[MsgSpec, str]] = []
+    path = name
+    current: int | None = ref
+    while current is not None and current in state.heap:
+        obj = state.heap[current]
+        spec = ctx.catalog.lookup(obj.type)
+        if spec is not None:
+            out.append((spec, path))
+        if obj.owner is None:
+            break
+        current, path = obj.owner[0], f"{obj.owner[1]}.{path}"
+    out.reverse()
+    return out
+
+
+def field_spec(ctx: FileContext, state: State, ref: int, name: str) -> FieldSpec | None:
+    spec = ctx.catalog.lookup(state.heap[ref].type)
+    return None if spec is None else spec.fields.get(name)
+
+
+def field_unit(ctx: FileContext, state: State, ref: int, name: str
+               ) -> tuple[Unit | None, FieldUnit | None, MsgSpec | None]:
+    for spec, path in contexts(ctx, state, ref, name):
+        declared = spec.units.get(path)
+        if declared is not None:
+            return unit_of(declared.text), declared, spec
+    return None, None, None
+
+
+def unit_of(text: str) -> Unit | None:
+    kind, sep, rest = text.partition(":")
+    if sep and kind in ("frame", "tag"):
+        return label(kind, rest)
+    try:
+        return resolve(text)
+    except UnitError:
+        return None  # already reported where the unit was declared
+
+
+def invariants_on(ctx: FileContext, state: State, ref: int, name: str
+                  ) -> list[tuple[MsgSpec, str, Invariant]]:
+    """Invariants that mention only field `name` (and what lies below it)."""
+    found = []
+    for spec, path in contexts(ctx, state, ref, name):
+        for inv in spec.invariants:
+            if all(p == path or p.startswith(path + ".") for p in inv.paths):
+                found.append((spec, path, inv))
+    return found
+
+
+def read_raw(ctx: FileContext, state: State, ref: int, name: str, description: str) -> Value:
+    """The value of a field, without any check; an unset field gives its default,
+    marked with `default_of`."""
+    obj = state.heap[ref]
+    if name in obj.fields:
+        return obj.fields[name]
+    spec = field_spec(ctx, state, ref, name)
+    if spec is None:
+        return Value("unknown")
+    if spec.kind == "msg" and not spec.array and spec.msg_type:
+        origin = obj.origin
+        sub = new_message(ctx, state, spec.msg_type, "constructed" if origin == "constructed"
+                          else "unknown", owner=(ref, name))
+        state.heap[sub.ref].origin = origin  # type: ignore[index]
+        obj.fields[name] = sub
+        return sub
+    unit = field_unit(ctx, state, ref, name)[0]
+    if spec.array or spec.kind not in DEFAULTS:
+        value = Value("unknown", unit=unit)
+        obj.fields[name] = value
+        return value
+    if obj.origin == "constructed" and name not in obj.reported:
+        return Value(spec.kind, DEFAULTS[spec.kind], unit, default_of=(ref, name))
+    value = ctx.fresh(spec.kind, description, unit)
+    obj.fields[name] = value
+    return value
+
+
+def assume_invariants(ctx: FileContext, state: State, ref: int, prefix: str = "m") -> None:
+    """A received message satisfies every invariant of its type and its sub-messages."""
+    obj = state.heap[ref]
+    spec = ctx.catalog.lookup(obj.type)
+    if spec is None:
+        return
+    for inv in spec.invariants:
+        terms = {p: resolve_path(ctx, state, ref, p, prefix).term for p in inv.paths}
+        if all(t is not None for t in terms.values()):
+            state.assume(A.substitute(inv.predicate, terms))  # type: ignore[arg-type]
+    for fname, fs in spec.fields.items():
+        if fs.kind == "msg" and not fs.array:
+            sub = read_raw(ctx, state, ref, fname, f"{prefix}.{fname}")
+            if sub.ref is not None:
+                assume_invariants(ctx, state, sub.ref, f"{prefix}.{fname}")
+
+
+def resolve_path(ctx: FileContext, state: State, ref: int, path: str, prefix: str) -> Value:
+    """Follow a dotted field path from message `ref`, reading raw values."""
+    parts = path.split(".")
+    value = Value("msg", ref=ref)
+    for index, part in enumerate(parts):
+        if value.ref is None or value.ref not in state.heap:
+            return Value("unknown")
+        value = read_raw(ctx, state, value.ref, part, f"{prefix}.{'.'.join(parts[:index + 1])}")
+    return value
+
+
+def havoc(state: State, ref: int) -> None:
+    """Unknown code may have changed any field of this message and its sub-messages."""
+    obj = state.heap.get(ref)
+    if obj is None:
+        return
+    for value in obj.fields.values():
+        if value.ref is not None and value.ref != ref:
+            havoc(state, value.ref)
+    obj.origin = "unknown"
+    obj.fields = {k: v for k, v in obj.fields.items() if v.ref is not None}

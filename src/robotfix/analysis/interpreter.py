@@ -1,0 +1,373 @@
+"""Statements: the abstract interpreter over one module (cf. mypy's checker.py).
+
+Module code runs first, top to bottom; then every function and method is analysed as
+an entry point of its own, its parameters unknown unless refined (a parameter whose
+annotation is a message class is a message that arrived: its refinements hold).
+Loops and `try` are handled by havoc: what they may change becomes unknown, while
+refined variables keep their refinement, which every assignment maintains.
+"""
+
+from __future__ import annotations
+
+import ast
+import builtins
+from dataclasses import replace
+
+from robotfix.annotations import ast as A
+from robotfix.annotations.extract import Refinement
+from robotfix.analysis import heap
+from robotfix.analysis.context import FileContext, Scope, build_scope
+from robotfix.analysis.expressions import ExpressionEvaluator
+from robotfix.analysis.state import MAYBE, State, join
+from robotfix.analysis.values import Uninit, Value
+
+BUILTINS = frozenset(dir(builtins)) | {"__file__", "__name__", "__doc__", "__spec__"}
+STATIC_KINDS = frozenset({"module", "msgclass", "function", "class"})
+
+
+def analyze_module(ctx: FileContext) -> None:
+    tree = ctx.source.tree
+    assert tree is not None
+    ctx.record_imports(tree)
+    module = build_scope(ctx, "module", "<module>", tree, None)
+    top = Interpreter(ctx, module, {})
+    state = top.exec_block(tree.body, State())
+    statics = {k: v for k, v in state.env.items()
+               if isinstance(v, Value) and v.kind in STATIC_KINDS}
+    pending = list(top.pending)
+    while pending:
+        node, parent = pending.pop(0)
+        pending.extend(_analyze_body(ctx, node, parent, statics))
+
+
+def _analyze_body(ctx: FileContext, node: ast.AST, parent: Scope,
+                  statics: dict[str, Value]) -> list[tuple[ast.AST, Scope]]:
+    if isinstance(node, ast.ClassDef):
+        scope = build_scope(ctx, "class", node.name, node, parent)
+        interp = Interpreter(ctx, scope, statics)
+        interp.exec_block(node.body, State())
+        return [(n, parent) for n, _ in interp.pending]  # methods don't see class names
+    assert isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef))
+    scope = build_scope(ctx, "function", node.name, node, parent)
+    interp = Interpreter(ctx, scope, statics)
+    state = State()
+    interp.bind_parameters(node, state, is_method=parent.kind == "class")
+    interp.exec_block(node.body, state)
+    return interp.pending
+
+
+class Interpreter(ExpressionEvaluator):
+    def __init__(self, ctx: FileContext, scope: Scope, statics: dict[str, Value]) -> None:
+        super().__init__(ctx)
+        self.scope = scope
+        self.statics = statics
+        self.pending: list[tuple[ast.AST, Scope]] = []
+
+    # -- blocks --------------------------------------------------------------
+    def exec_block(self, body: list[ast.stmt], state: State) -> State:
+        for stmt in body:
+            if not state.reachable:
+                break
+            self.site = stmt
+            method = getattr(self, f"visit_{type(stmt).__name__}", None)
+            state = method(stmt, state) if method else self.generic(stmt, state)
+        return state
+
+    def generic(self, stmt: ast.stmt, state: State) -> State:
+        self.havoc(state, [stmt])
+        return state
+
+    # -- names ---------------------------------------------------------------
+    def lookup_name(self, name: str, state: State, node: ast.AST) -> Value:
+        scope = self.scope
+        if name in scope.local_names:
+            bound = state.env.get(name)
+            if isinstance(bound, Value):
+                return bound
+            decl = scope.decls.get(name)
+            if bound is MAYBE:
+                return self.unknown(node, decl.base if decl else "unknown", decl.unit if decl else None)
+            value = Value("unknown", uninit=Uninit(name, decl is not None))
+            if decl is not None:
+                self.check.report_uninit(value, self.site)
+            return value
+        outer = scope.parent
+        while outer is not None and outer.parent is not None:
+            if outer.kind == "function" and name in outer.local_names:
+                return self._assumed_or_unknown(outer.decls.get(name), name, state, node)
+            outer = outer.parent
+        module = scope.module()
+        if name in self.statics:
+            return self.statics[name]
+        if scope is not module and name in module.local_names:
+            return self._assumed_or_unknown(module.decls.get(name), name, state, node)
+        if name in BUILTINS:
+            return Value("builtin", name=name)
+        if self.ctx.star_import or scope is not module and name in module.global_names:
+            return self.unknown(node)
+        return Value("unknown", uninit=Uninit(name, False))
+
+    def _assumed_or_unknown(self, decl: Refinement | None, name: str, state: State,
+                            node: ast.AST) -> Value:
+        if decl is None:
+            return self.unknown(node)
+        return self.check.assumed(state, name, decl, self.refinement_lookup(decl, state))
+
+    def decl_for(self, name: str) -> Refinement | None:
+        if name in self.scope.global_names:
+            return self.scope.module().decls.get(name)
+        return self.scope.decls.get(name)
+
+    def refinement_lookup(self, decl: Refinement, state: State) -> dict[str, A.Expr]:
+        """Terms for the other variables a refinement names (`y == x`)."""
+        found: dict[str, A.Expr] = {}
+        for ref_name in A.names(decl.predicate):
+            name = ref_name.name
+            if name == "_" or name in found:
+                continue
+            bound = state.env.get(name)
+            if isinstance(bound, Value) and bound.term is not None:
+                found[name] = bound.term
+            else:
+                found[name] = self.ctx.fresh("unknown", f"`{name}`").term  # type: ignore[assignment]
+        return found
+
+    # -- binding -------------------------------------------------------------
+    def bind(self, target: ast.expr, value: Value, state: State) -> None:
+        if isinstance(target, ast.Name):
+            decl = self.decl_for(target.id)
+            if decl is not None:
+                lookup = self.refinement_lookup(decl, state)
+                value = self.check.assign_refined(state, target.id, decl, value, self.site, lookup)
+            state.env[target.id] = replace(value, uninit=None, default_of=None)
+        elif isinstance(target, ast.Attribute):
+            base = self.eval(target.value, state)
+            if base.kind == "msg" and base.ref in state.heap:
+                text = self.ctx.source.segment(target) or target.attr
+                self.check.write_field(state, base.ref, target.attr, value, self.site, text)  # type: ignore[arg-type]
+        elif isinstance(target, (ast.Tuple, ast.List)):
+            for element in target.elts:
+                inner = element.value if isinstance(element, ast.Starred) else element
+                self.bind(inner, self.unknown(inner), state)
+        elif isinstance(target, ast.Subscript):
+            self.eval(target.value, state)
+            self.eval(target.slice, state)
+        elif isinstance(target, ast.Starred):
+            self.bind(target.value, self.unknown(target), state)
+
+    def bind_parameters(self, node: ast.FunctionDef | ast.AsyncFunctionDef, state: State,
+                        is_method: bool) -> None:
+        args = node.args
+        every = [*args.posonlyargs, *args.args, *args.kwonlyargs]
+        every += [a for a in (args.vararg, args.kwarg) if a is not None]
+        for index, arg in enumerate(every):
+            decl = self.scope.decls.get(arg.arg)
+            msg_type = self.ctx.msg_type_of(arg.annotation) if arg.annotation else None
+            if decl is not None and decl.base == "msg":
+                msg_type = decl.msg_type
+            if is_method and index == 0:
+                value = Value("unknown")
+            elif msg_type is not None:
+                value = heap.new_message(self.ctx, state, msg_type, "received")
+            elif decl is not None:
+                value = self.check.assumed(state, arg.arg, decl, self.refinement_lookup(decl, state))
+            else:
+                value = self.ctx.fresh("unknown", f"parameter `{arg.arg}` of {node.name}()")
+            state.env[arg.arg] = value
+
+    def havoc(self, state: State, nodes: list[ast.stmt]) -> None:
+        """Forget what `nodes` may write: assigned names and mentioned messages."""
+        for node in nodes:
+            for child in ast.walk(node):
+                if not isinstance(child, ast.Name):
+                    continue
+                bound = state.env.get(child.id)
+                if isinstance(bound, Value) and bound.ref is not None:
+                    heap.havoc(state, bound.ref)
+                if isinstance(child.ctx, ast.Store) and child.id in self.scope.local_names:
+                    decl = self.decl_for(child.id)
+                    if decl is not None:
+                        lookup = self.refinement_lookup(decl, state)
+                        state.env[child.id] = self.check.assumed(state, child.id, decl, lookup)
+                    else:
+                        state.env[child.id] = self.unknown(child)
+
+    # -- simple statements ---------------------------------------------------
+    def visit_Expr(self, node: ast.Expr, state: State) -> State:
+        self.eval(node.value, state)
+        return state
+
+    def visit_Assign(self, node: ast.Assign, state: State) -> State:
+        if len(node.targets) == 1 and isinstance(node.targets[0], (ast.Tuple, ast.List)) \
+                and isinstance(node.value, (ast.Tuple, ast.List)) \
+                and len(node.targets[0].elts) == len(node.value.elts) \
+                and not any(isinstance(e, ast.Starred) for e in node.value.elts):
+            values = [self.eval(v, state) for v in node.value.elts]
+            for target, value in zip(node.targets[0].elts, values):
+                self.bind(target, value, state)
+            return state
+        value = self.eval(node.value, state)
+        for target in node.targets:
+            self.bind(target, value, state)
+        return state
+
+    def visit_AnnAssign(self, node: ast.AnnAssign, state: State) -> State:
+        if node.value is not None:
+            self.bind(node.target, self.eval(node.value, state), state)
+        return state
+
+    def visit_AugAssign(self, node: ast.AugAssign, state: State) -> State:
+        load: ast.expr
+        if isinstance(node.target, ast.Name):
+            load = ast.Name(node.target.id, ast.Load())
+        elif isinstance(node.target, ast.Attribute):
+            load = ast.Attribute(node.target.value, node.target.attr, ast.Load())
+        else:
+            return self.generic(node, state)
+        combined = ast.BinOp(ast.copy_location(load, node.target), node.op, node.value)
+        self.bind(node.target, self.eval(ast.copy_location(combined, node), state), state)
+        return state
+
+    def visit_Assert(self, node: ast.Assert, state: State) -> State:
+        state.assume(self.condition(node.test, state))
+        return state
+
+    def visit_Return(self, node: ast.Return, state: State) -> State:
+        if node.value is not None:
+            self.eval(node.value, state)
+        state.reachable = False
+        return state
+
+    def visit_Raise(self, node: ast.Raise, state: State) -> State:
+        if node.exc is not None:
+            self.eval(node.exc, state)
+        state.reachable = False
+        return state
+
+    def visit_Break(self, node: ast.stmt, state: State) -> State:
+        state.reachable = False
+        return state
+
+    visit_Continue = visit_Break
+
+    def visit_Pass(self, node: ast.stmt, state: State) -> State:
+        return state
+
+    visit_Global = visit_Nonlocal = visit_Pass
+
+    def visit_Delete(self, node: ast.Delete, state: State) -> State:
+        for target in node.targets:
+            if isinstance(target, ast.Name):
+                state.env.pop(target.id, None)
+            else:
+                self.eval_children(target, state)
+        return state
+
+    def visit_Import(self, node: ast.Import, state: State) -> State:
+        for alias in node.names:
+            if alias.asname:
+                state.env[alias.asname] = Value("module", name=alias.name)
+            else:
+                top = alias.name.split(".")[0]
+                state.env[top] = Value("module", name=top)
+        return state
+
+    def visit_ImportFrom(self, node: ast.ImportFrom, state: State) -> State:
+        for alias in node.names:
+            if alias.name == "*":
+                continue
+            qualified = f"{node.module}.{alias.name}" if node.module and not node.level \
+                else alias.name
+            msg_type = self.ctx.msg_type_named(qualified) if not node.level else None
+            value = Value("msgclass", name=msg_type) if msg_type else \
+                Value("module", name=qualified)
+            state.env[alias.asname or alias.name] = value
+        return state
+
+    def visit_FunctionDef(self, node: ast.FunctionDef | ast.AsyncFunctionDef,
+                          state: State) -> State:
+        for expr in [*node.decorator_list, *node.args.defaults,
+                     *[d for d in node.args.kw_defaults if d is not None]]:
+            self.eval(expr, state)
+        state.env[node.name] = Value("function", name=node.name)
+        self.pending.append((node, self.scope))
+        return state
+
+    visit_AsyncFunctionDef = visit_FunctionDef
+
+    def visit_ClassDef(self, node: ast.ClassDef, state: State) -> State:
+        for expr in [*node.decorator_list, *node.bases]:
+            self.eval(expr, state)
+        state.env[node.name] = Value("class", name=node.name)
+        self.pending.append((node, self.scope))
+        return state
+
+    # -- compound statements -------------------------------------------------
+    def visit_If(self, node: ast.If, state: State) -> State:
+        cond = self.condition(node.test, state)
+        then_state, else_state = state.fork(), state.fork()
+        then_state.assume(cond)
+        else_state.assume(A.Unary("not", cond))
+        then_state = self.exec_block(node.body, then_state)
+        else_state = self.exec_block(node.orelse, else_state)
+        return join(then_state, else_state, self._merged)
+
+    def _merged(self, x: Value, y: Value) -> Value:
+        kinds = {x.kind, y.kind}
+        kind = x.kind if len(kinds) == 1 else ("float" if kinds <= {"int", "float", "bool"}
+                                               else "unknown")
+        unit = x.unit if x.unit == y.unit else None
+        if x.kind == "msg" or y.kind == "msg" or kind not in ("int", "float", "bool", "str",
+                                                               "unknown"):
+            return x if x.kind == y.kind and x.ref == y.ref else Value("unknown")
+        merged = self.ctx.fresh(kind, "a value set on several paths", unit)
+        return replace(merged, literal=x.literal and y.literal)
+
+    def visit_While(self, node: ast.While, state: State) -> State:
+        self.havoc(state, [node])
+        body_state = state.fork()
+        body_state.assume(self.condition(node.test, body_state))
+        self.exec_block(node.body, body_state)
+        self.havoc(state, [node])
+        return self.exec_block(node.orelse, state)
+
+    def visit_For(self, node: ast.For | ast.AsyncFor, state: State) -> State:
+        self.eval(node.iter, state)
+        self.havoc(state, [node])
+        body_state = state.fork()
+        self.bind(node.target, self.unknown(node.target), body_state)
+        self.exec_block(node.body, body_state)
+        self.havoc(state, [node])
+        return self.exec_block(node.orelse, state)
+
+    visit_AsyncFor = visit_For
+
+    def visit_With(self, node: ast.With | ast.AsyncWith, state: State) -> State:
+        for item in node.items:
+            self.eval(item.context_expr, state)
+            if item.optional_vars is not None:
+                self.bind(item.optional_vars, self.unknown(item.optional_vars), state)
+        return self.exec_block(node.body, state)
+
+    visit_AsyncWith = visit_With
+
+    def visit_Try(self, node: ast.Try, state: State) -> State:
+        entry = state.fork()
+        self.havoc(entry, node.body)
+        result = self.exec_block(node.orelse, self.exec_block(node.body, state))
+        for handler in node.handlers:
+            handler_state = entry.fork()
+            if handler.type is not None:
+                self.eval(handler.type, handler_state)
+            if handler.name:
+                handler_state.env[handler.name] = self.unknown(handler)
+            result = join(result, self.exec_block(handler.body, handler_state), self._merged)
+        if node.finalbody:
+            if not result.reachable:
+                self.havoc(entry, node.handlers)  # type: ignore[arg-type]
+                self.exec_block(node.finalbody, entry)
+                return result
+            result = self.exec_block(node.finalbody, result)
+        return result
+
+    visit_TryStar = visit_Try

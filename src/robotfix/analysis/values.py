@@ -1,0 +1,64 @@
+"""Abstract values: numbers and booleans as solver terms with a unit, and messages.
+
+Values are immutable. A message is a reference into the state's heap, so that
+aliases (`m = move`) see the same fields, as in Python.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+
+from robotfix.annotations import ast as A
+from robotfix.annotations.units import Unit
+
+NUMERIC = frozenset({"int", "float", "bool"})
+
+
+@dataclass(frozen=True)
+class Uninit:
+    """A read of a name that holds nothing on this path."""
+
+    name: str
+    declared: bool  # declared with an annotation but never assigned, vs never bound
+
+
+@dataclass(frozen=True)
+class Value:
+    kind: str  # int float bool str msg msgclass module none unknown
+    term: A.Expr | None = None  # the solver term, for int/float/bool/str
+    unit: Unit | None = None  # None: no unit known
+    literal: bool = False  # a number literal: takes the unit of its context
+    ref: int | None = None  # heap id, for messages
+    name: str = ""  # msgclass: pkg/Name; module: dotted name
+    uninit: Uninit | None = None
+    default_of: tuple[int, str] | None = field(default=None, compare=False)
+
+    @property
+    def is_number(self) -> bool:
+        return self.kind in NUMERIC
+
+    def with_unit(self, unit: Unit | None) -> Value:
+        return replace(self, unit=unit, literal=False)
+
+
+UNKNOWN = Value("unknown")
+NONE = Value("none")
+
+
+def sort_of(kind: str) -> str:
+    return {"int": "int", "bool": "bool", "str": "str"}.get(kind, "real")
+
+
+@dataclass
+class MsgObj:
+    """A message instance. `fields` holds what was set (or, if received, read)."""
+
+    type: str  # pkg/Name
+    origin: str  # constructed | received | unknown
+    fields: dict[str, Value] = field(default_factory=dict)
+    owner: tuple[int, str] | None = None  # (parent ref, field name)
+    reported: set[str] = field(default_factory=set)  # unset fields already reported
+
+    def copy(self) -> MsgObj:
+        return MsgObj(self.type, self.origin, dict(self.fields), self.owner,
+                      set(self.reported))

@@ -1,0 +1,1 @@
+"""The refinement language: grammar, AST, units, and where annotations sit in Python."""

@@ -1,0 +1,213 @@
+"""Frozen dataclasses for refinement predicates and the terms the analysis builds.
+
+The same nodes serve two purposes: they are what an annotation string parses to, and,
+with `Sym` standing for a solver symbol, the language of verification conditions.
+No lark types, no z3 types live here.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from fractions import Fraction
+
+
+@dataclass(frozen=True)
+class Num:
+    value: Fraction
+    is_int: bool
+
+
+@dataclass(frozen=True)
+class Bool:
+    value: bool
+
+
+@dataclass(frozen=True)
+class Str:
+    value: str
+
+
+@dataclass(frozen=True)
+class Name:
+    """A variable, `_`, or a dotted message field path such as `linear.x`."""
+
+    name: str
+    pos: int = field(default=0, compare=False)
+
+
+@dataclass(frozen=True)
+class Sym:
+    """A solver symbol introduced by the analysis; `sort` is int, real, bool or str."""
+
+    ident: int
+    sort: str
+
+
+@dataclass(frozen=True)
+class Unary:
+    op: str  # "-" or "not"
+    operand: Expr
+
+
+@dataclass(frozen=True)
+class Binary:
+    op: str  # + - * / and or == != < <= > >=
+    left: Expr
+    right: Expr
+
+
+@dataclass(frozen=True)
+class Ite:
+    cond: Expr
+    then: Expr
+    orelse: Expr
+
+
+@dataclass(frozen=True)
+class Func:
+    name: str  # abs, min, max
+    args: tuple[Expr, ...]
+
+
+@dataclass(frozen=True)
+class UnitIs:
+    """`Unit('m/s')`, `Frame('map')`, `Tag('x')`, or `Unit(path) == "m/s"`.
+
+    `kind` is unit, frame or tag; `target` is the field path, or None for the
+    annotated value itself.
+    """
+
+    kind: str
+    text: str
+    target: str | None = None
+    pos: int = field(default=0, compare=False)
+
+
+Expr = Num | Bool | Str | Name | Sym | Unary | Binary | Ite | Func | UnitIs
+
+ARITH_OPS = frozenset("+-*/")
+COMPARE_OPS = frozenset({"==", "!=", "<", "<=", ">", ">="})
+BOOL_OPS = frozenset({"and", "or"})
+TRUE = Bool(True)
+
+
+def conjuncts(expr: Expr) -> list[Expr]:
+    """The top-level `and` operands of a predicate, left to right."""
+    if isinstance(expr, Binary) and expr.op == "and":
+        return conjuncts(expr.left) + conjuncts(expr.right)
+    return [expr]
+
+
+def conjoin(parts: list[Expr]) -> Expr:
+    result: Expr | None = None
+    for part in parts:
+        result = part if result is None else Binary("and", result, part)
+    return TRUE if result is None else result
+
+
+def children(expr: Expr) -> tuple[Expr, ...]:
+    if isinstance(expr, Unary):
+        return (expr.operand,)
+    if isinstance(expr, Binary):
+        return (expr.left, expr.right)
+    if isinstance(expr, Ite):
+        return (expr.cond, expr.then, expr.orelse)
+    if isinstance(expr, Func):
+        return expr.args
+    return ()
+
+
+def walk(expr: Expr) -> list[Expr]:
+    """Every node of `expr`, parents before children."""
+    out = [expr]
+    for child in children(expr):
+        out.extend(walk(child))
+    return out
+
+
+def names(expr: Expr) -> list[Name]:
+    return [n for n in walk(expr) if isinstance(n, Name)]
+
+
+def syms(expr: Expr) -> set[Sym]:
+    return {n for n in walk(expr) if isinstance(n, Sym)}
+
+
+def rebuild(expr: Expr, new_children: tuple[Expr, ...]) -> Expr:
+    if isinstance(expr, Unary):
+        return Unary(expr.op, new_children[0])
+    if isinstance(expr, Binary):
+        return Binary(expr.op, new_children[0], new_children[1])
+    if isinstance(expr, Ite):
+        return Ite(*new_children)
+    if isinstance(expr, Func):
+        return Func(expr.name, new_children)
+    return expr
+
+
+def substitute(expr: Expr, mapping: dict[str, Expr]) -> Expr:
+    """Replace names found in `mapping`; other nodes are rebuilt unchanged."""
+    if isinstance(expr, Name):
+        return mapping.get(expr.name, expr)
+    kids = children(expr)
+    if not kids:
+        return expr
+    return rebuild(expr, tuple(substitute(k, mapping) for k in kids))
+
+
+def show(expr: Expr) -> str:
+    """Source-like text of an expression, for messages."""
+    if isinstance(expr, Num):
+        return _show_number(expr)
+    if isinstance(expr, Bool):
+        return "True" if expr.value else "False"
+    if isinstance(expr, Str):
+        return repr(expr.value)
+    if isinstance(expr, Name):
+        return expr.name
+    if isinstance(expr, Sym):
+        return f"${expr.ident}"
+    if isinstance(expr, Unary):
+        sep = " " if expr.op == "not" else ""
+        return f"{expr.op}{sep}{_show_operand(expr.operand)}"
+    if isinstance(expr, Binary):
+        return f"{_show_operand(expr.left)} {expr.op} {_show_operand(expr.right)}"
+    if isinstance(expr, Ite):
+        return f"{show(expr.then)} if {show(expr.cond)} else {show(expr.orelse)}"
+    if isinstance(expr, Func):
+        return f"{expr.name}({', '.join(show(a) for a in expr.args)})"
+    if expr.target is None:
+        return f"{expr.kind.capitalize()}({expr.text!r})"
+    return f"{expr.kind.capitalize()}({expr.target}) == {expr.text!r}"
+
+
+def _show_operand(expr: Expr) -> str:
+    text = show(expr)
+    return f"({text})" if isinstance(expr, (Binary, Ite)) else text
+
+
+def _show_number(num: Num) -> str:
+    value = num.value
+    if value.denominator == 1:
+        return str(value.numerator) if num.is_int else f"{value.numerator}.0"
+    decimal = _exact_decimal(value)
+    return decimal if decimal is not None else f"{float(value):g}"
+
+
+def _exact_decimal(value: Fraction) -> str | None:
+    """The finite decimal expansion of `value`, if it has one."""
+    den = value.denominator
+    twos = fives = 0
+    while den % 2 == 0:
+        den //= 2
+        twos += 1
+    while den % 5 == 0:
+        den //= 5
+        fives += 1
+    if den != 1:
+        return None
+    digits = max(twos, fives)
+    scaled = abs(value.numerator) * (10**digits // value.denominator)
+    text = str(scaled).rjust(digits + 1, "0")
+    sign = "-" if value < 0 else ""
+    return f"{sign}{text[:-digits]}.{text[-digits:]}"

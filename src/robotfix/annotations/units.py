@@ -1,0 +1,208 @@
+"""Unit strings -> dimension vectors and scale factors. The only module that imports pint.
+
+A `Unit` is a product of base dimensions with integer exponents plus a scale factor
+relative to SI. Angle is a base dimension of its own (pint calls `radian` a
+dimensionless base unit; we keep it), so `rad/s` is not `Hz` and `rad` is not a plain
+number. Names that are not units (`ENU`, `quaternion`) and the labels of `Frame(...)`
+and `Tag(...)` become opaque base dimensions of their own, compared by name.
+
+Importing pint and building its registry costs about 0.5 s, more than a whole check of
+a small file, so resolutions are cached on disk, keyed by pint's install, and pint is
+imported only when a unit string is not in that cache.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+from typing import Any
+
+from robotfix.disk_cache import JsonCache, cache_dir, install_key
+
+_SYMBOLS = {
+    "meter": "m",
+    "second": "s",
+    "radian": "rad",
+    "gram": "g",
+    "kelvin": "K",
+    "ampere": "A",
+    "mole": "mol",
+    "candela": "cd",
+}
+_IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_\-]*")
+
+
+@dataclass(frozen=True)
+class Unit:
+    dims: tuple[tuple[str, int], ...]  # sorted; e.g. (("meter", 1), ("second", -1))
+    factor: float = 1.0  # SI (root-unit) value of one of this unit
+    offset: float = 0.0  # SI value of this unit's zero (degC: 273.15 K)
+    text: str = field(default="", compare=False)
+
+    def __mul__(self, other: Unit) -> Unit:
+        return _compose(self, other, 1)
+
+    def __truediv__(self, other: Unit) -> Unit:
+        return _compose(self, other, -1)
+
+    def same_dimension(self, other: Unit) -> bool:
+        return self.dims == other.dims
+
+    def same_as(self, other: Unit) -> bool:
+        return (
+            self.dims == other.dims
+            and math.isclose(self.factor, other.factor, rel_tol=1e-9)
+            and math.isclose(self.offset, other.offset, abs_tol=1e-9)
+        )
+
+    def power(self, exponent: int) -> Unit:
+        dims = tuple((d, e * exponent) for d, e in self.dims if e * exponent)
+        factor = self.factor**exponent
+        return Unit(dims, factor, text=_render(dims, factor))
+
+    @property
+    def is_label(self) -> bool:
+        return any(":" in d for d, _ in self.dims)
+
+    def __str__(self) -> str:
+        return self.text or _render(self.dims, self.factor)
+
+
+DIMENSIONLESS = Unit((), text="1")
+
+
+class UnitError(Exception):
+    """A unit string that is neither a unit nor an acceptable label."""
+
+    def __init__(self, message: str, suggestion: str | None = None) -> None:
+        super().__init__(message)
+        self.message = message
+        self.suggestion = suggestion
+
+
+def _compose(a: Unit, b: Unit, sign: int) -> Unit:
+    exps: dict[str, int] = dict(a.dims)
+    for dim, exp in b.dims:
+        exps[dim] = exps.get(dim, 0) + sign * exp
+    dims = tuple(sorted((d, e) for d, e in exps.items() if e))
+    factor = a.factor * (b.factor if sign > 0 else 1 / b.factor)
+    return Unit(dims, factor, text=_render(dims, factor))
+
+
+def _render(dims: tuple[tuple[str, int], ...], factor: float) -> str:
+    def part(dim: str, exp: int) -> str:
+        name = dim.split(":", 1)[1] if ":" in dim else _SYMBOLS.get(dim, dim)
+        return name if abs(exp) == 1 else f"{name}^{abs(exp)}"
+
+    num = "*".join(part(d, e) for d, e in dims if e > 0) or "1"
+    den = "*".join(part(d, e) for d, e in dims if e < 0)
+    text = f"{num}/{den}" if den else num
+    return text if math.isclose(factor, 1.0) else f"{factor:.6g}*{text}"
+
+
+def label(kind: str, text: str) -> Unit:
+    """`Frame('map')` or `Tag('x')`: a dimension of its own, matched by name."""
+    return Unit(((f"{kind}:{text}", 1),), text=text)
+
+
+def resolve(text: str) -> Unit:
+    """The unit `Unit(text)` denotes; a non-unit name becomes a tag.
+
+    Raises UnitError for a typo of a unit (`meterz`) or text that is not a unit
+    expression and not a name.
+    """
+    entry = _CACHE.entries.get(text)
+    if entry is None:
+        entry = _resolve_with_pint(text)
+        _CACHE.put(text, entry)
+    kind = entry[0]
+    if kind == "unit":
+        dims = tuple((str(d), int(e)) for d, e in entry[1])
+        offset = float(entry[3]) if len(entry) > 3 else 0.0
+        return Unit(dims, float(entry[2]), offset, text)
+    if kind == "tag":
+        return label("tag", text)
+    raise UnitError(str(entry[1]), entry[2] if len(entry) > 2 else None)
+
+
+def save_cache() -> None:
+    _CACHE.save()
+
+
+def _resolve_with_pint(text: str) -> list[Any]:
+    registry = _registry()
+    try:
+        zero = registry.Quantity(0, text).to_root_units()
+        one = registry.Quantity(1, text).to_root_units()
+    except Exception:  # pint raises many kinds for text that is not a unit
+        return _not_a_unit(text, registry)
+    dims = sorted((str(name), int(exp)) for name, exp in one.unit_items())
+    offset = float(zero.magnitude)
+    return ["unit", dims, float(one.magnitude) - offset, offset]
+
+
+def _not_a_unit(text: str, registry: Any) -> list[Any]:
+    if not _IDENTIFIER.fullmatch(text):
+        return ["error", f"`{text}` is not a unit pint understands"]
+    suggestion = _near_unit(text, registry)
+    if suggestion is not None:
+        return [
+            "error",
+            f"unknown unit `{text}`; did you mean `{suggestion}`? "
+            f"(write Tag('{text}') if a label was meant)",
+            suggestion,
+        ]
+    return ["tag"]
+
+
+def _near_unit(text: str, registry: Any) -> str | None:
+    """A unit name (or its plural) one edit away from `text`.
+
+    Only for names of five or more letters: shorter frame names (`rear`, `odom`,
+    `base`) are one edit away from some unit far too often.
+    """
+    if len(text) < 5:
+        return None
+    lowered = text.lower()
+    names = [n for n in registry._units if len(n) >= 3]
+    for name in sorted(names):
+        if name.lower() == lowered:
+            return str(name)
+    candidates = sorted({n for n in names} | {n + "s" for n in names if n.isalpha()})
+    for name in candidates:
+        if abs(len(name) - len(text)) <= 1 and _one_edit(lowered, name.lower()):
+            return name
+    return None
+
+
+def _one_edit(a: str, b: str) -> bool:
+    """True when a and b differ by one insertion, deletion, substitution or swap."""
+    if a == b:
+        return False
+    if len(a) == len(b):
+        diffs = [i for i in range(len(a)) if a[i] != b[i]]
+        if len(diffs) == 1:
+            return True
+        i, j = diffs[0], diffs[-1]
+        return len(diffs) == 2 and j == i + 1 and a[i] == b[j] and a[j] == b[i]
+    short, long_ = (a, b) if len(a) < len(b) else (b, a)
+    return any(long_[:i] + long_[i + 1 :] == short for i in range(len(long_)))
+
+
+_REGISTRY: Any = None
+
+
+def _registry() -> Any:
+    global _REGISTRY
+    if _REGISTRY is None:
+        import pint
+
+        try:
+            _REGISTRY = pint.UnitRegistry(cache_folder=str(cache_dir() / "pint"))
+        except OSError:
+            _REGISTRY = pint.UnitRegistry()
+    return _REGISTRY
+
+
+_CACHE = JsonCache("units", install_key("pint", "units-v2"))

@@ -1,0 +1,73 @@
+"""Pure data that crosses layers: severities, spans, rules and diagnostics.
+
+Imports nothing of ours, so every layer may use it.
+"""
+
+from __future__ import annotations
+
+import enum
+from dataclasses import dataclass
+
+DOCS_BASE = "https://robotfix.dev/docs"
+
+
+class Severity(enum.Enum):
+    ERROR = "error"
+    WARNING = "warning"
+
+
+@dataclass(frozen=True)
+class Rule:
+    """One stable, documented kind of diagnostic."""
+
+    code: str  # "RF201": never reused, never renumbered
+    name: str  # "unit-mismatch": kebab-case, names the problem
+    title: str  # one line
+    severity: Severity = Severity.ERROR
+
+    @property
+    def docs_url(self) -> str:
+        return f"{DOCS_BASE}/rules/{self.code}"
+
+
+@dataclass(frozen=True, order=True)
+class Span:
+    """1-based lines, 0-based character columns, end exclusive."""
+
+    line: int
+    col: int
+    end_line: int
+    end_col: int
+
+    @staticmethod
+    def point(line: int, col: int = 0) -> Span:
+        return Span(line, col, line, col + 1)
+
+
+@dataclass(frozen=True, order=True)
+class Note:
+    """Extra context for a diagnostic; a location when `path` is set."""
+
+    message: str
+    path: str | None = None
+    line: int | None = None
+
+
+@dataclass(frozen=True)
+class Diagnostic:
+    rule: Rule
+    path: str
+    span: Span
+    message: str
+    notes: tuple[Note, ...] = ()
+
+    @property
+    def code(self) -> str:
+        return self.rule.code
+
+    @property
+    def severity(self) -> Severity:
+        return self.rule.severity
+
+    def sort_key(self) -> tuple[str, Span, str, str]:
+        return (self.path, self.span, self.code, self.message)

@@ -1,0 +1,155 @@
+"""Every diagnostic's wording: one builder per kind. Checkers never format strings.
+
+Builders take source-level facts (statement text, names, units, values) and return a
+`Diagnostic`; nothing here knows about the solver or the analysis state.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from robotfix import rules
+from robotfix.annotations.units import Unit
+from robotfix.diagnostics import Diagnostic, Note, Rule, Span
+
+
+@dataclass(frozen=True)
+class Declared:
+    """Where a refinement or unit was written down."""
+
+    what: str  # "refinement of `timeout`", "unit of geometry_msgs/Twist.linear.x"
+    path: str | None
+    line: int | None
+    source: str = ""  # e.g. "REP 103: ..."
+    owner: str = ""  # the message type whose refinement this is, if any
+
+    def note(self) -> Note:
+        if self.path is not None:
+            return Note(f"{self.what} declared here", self.path, self.line)
+        return Note(f"{self.what}: {self.source}")
+
+
+def unreadable(path: str, detail: str) -> Diagnostic:
+    return Diagnostic(rules.UNREADABLE_FILE, path, Span.point(1), detail)
+
+
+def syntax_error(path: str, span: Span, detail: str, rule: Rule) -> Diagnostic:
+    if rule is rules.PYTHON2_SOURCE:
+        message = f"this looks like Python 2 ({detail}); RobotFix checks Python 3 only"
+        notes = (Note("port it to Python 3, or exclude it from the check"),)
+        return Diagnostic(rule, path, span, message, notes)
+    return Diagnostic(rule, path, span, f"not valid Python 3: {detail}")
+
+
+def annotation_problem(path: str, line: int, col: int, rule: Rule, detail: str) -> Diagnostic:
+    return Diagnostic(rule, path, Span.point(line, col), detail)
+
+
+def refinement_violated(
+    path: str, span: Span, stmt: str, predicate: str, subject: str, value: str | None,
+    declared: Declared,
+) -> Diagnostic:
+    notes = [declared.note()]
+    if value is not None:
+        notes.append(Note(f"here {subject} = {value}"))
+    return Diagnostic(
+        rules.REFINEMENT_VIOLATED, path, span,
+        f"`{stmt}` violates `{predicate}`{_owner(declared)}", tuple(notes))
+
+
+def refinement_unproven(
+    path: str, span: Span, stmt: str, predicate: str, subject: str,
+    unknowns: list[str], example: list[str], declared: Declared,
+) -> Diagnostic:
+    why = f"nothing bounds {_join(unknowns)}" if unknowns else "it depends on values RobotFix cannot follow"
+    notes = [declared.note()]
+    if example:
+        notes.append(Note(f"for example {', '.join(example)} breaks it"))
+    notes.append(Note(f"add a refinement to the inputs, or a check such as `assert` before {subject} is set"))
+    return Diagnostic(
+        rules.REFINEMENT_UNPROVEN, path, span,
+        f"cannot prove that `{stmt}` keeps `{predicate}`{_owner(declared)}: {why}",
+        tuple(notes))
+
+
+def solver_unknown(path: str, span: Span, stmt: str, predicate: str, reason: str) -> Diagnostic:
+    return Diagnostic(
+        rules.SOLVER_UNKNOWN, path, span,
+        f"could not decide whether `{stmt}` keeps `{predicate}` (solver: {reason})")
+
+
+def unit_mismatch(
+    path: str, span: Span, stmt: str, target: str, expected: Unit, got: Unit,
+    declared: Declared,
+) -> Diagnostic:
+    message = f"`{stmt}` gives {target} a value in {got}, but {target} is in {expected}"
+    fix = conversion(got, expected)
+    notes = [declared.note()]
+    if fix:
+        message += f": {fix}"
+    return Diagnostic(rules.UNIT_MISMATCH, path, span, message, tuple(notes))
+
+
+def operand_units(path: str, span: Span, expr: str, op: str, left: Unit, right: Unit) -> Diagnostic:
+    verb = {"+": "add", "-": "subtract"}.get(op, "compare")
+    message = f"`{expr}`: cannot {verb} {left} and {right}"
+    fix = conversion(right, left)
+    if fix:
+        message += f" ({fix.replace('convert', 'convert the right side from', 1)})"
+    return Diagnostic(rules.OPERAND_UNIT_MISMATCH, path, span, message)
+
+
+def conversion(got: Unit, expected: Unit) -> str:
+    """How to turn a value in `got` into `expected`, when only the scale differs."""
+    if not got.same_dimension(expected) or expected.is_label:
+        return ""
+    ratio = got.factor / expected.factor
+    if math.isclose(ratio, 1.0) and math.isclose(got.offset, expected.offset):
+        return ""
+    if not math.isclose(got.offset, expected.offset):
+        shift = (got.offset - expected.offset) / expected.factor
+        return f"convert {got} to {expected} by multiplying by {ratio:.6g} and adding {shift:.6g}"
+    angle = dict(got.dims).get("radian")
+    if angle and math.isclose(ratio, math.pi / 180):
+        return f"use math.radians() to convert {got} to {expected}"
+    if angle and math.isclose(ratio, 180 / math.pi):
+        return f"use math.degrees() to convert {got} to {expected}"
+    if ratio < 1:
+        return f"divide by {1 / ratio:.6g} to convert {got} to {expected}"
+    return f"multiply by {ratio:.6g} to convert {got} to {expected}"
+
+
+def used_before_assignment(path: str, span: Span, stmt: str, name: str, declared: bool) -> Diagnostic:
+    if declared:
+        detail = f"`{name}` is declared but never assigned before this line"
+    else:
+        detail = f"`{name}` is not defined before this line"
+    return Diagnostic(rules.USED_BEFORE_ASSIGNMENT, path, span, f"`{stmt}` reads {detail}")
+
+
+def unset_field(
+    path: str, span: Span, stmt: str, field: str, default: str, predicate: str,
+    declared: Declared, publishing: bool,
+) -> Diagnostic:
+    verb = "sends" if publishing else "reads"
+    return Diagnostic(
+        rules.UNSET_FIELD_DEFAULT, path, span,
+        f"`{stmt}` {verb} `{field}`, which is never set: its ROS default {default} "
+        f"violates `{predicate}`{_owner(declared)}",
+        (declared.note(), Note(f"set `{field}` before this line")))
+
+
+def base_type_mismatch(path: str, span: Span, stmt: str, target: str, expected: str, got: str) -> Diagnostic:
+    return Diagnostic(
+        rules.BASE_TYPE_MISMATCH, path, span,
+        f"`{stmt}` gives {target} a {got}, but {target} is declared {expected}",
+        (Note(f"convert explicitly, e.g. {expected}(...), if that is what you mean"),))
+
+
+def _owner(declared: Declared) -> str:
+    return f" ({declared.owner})" if declared.owner else ""
+
+
+def _join(items: list[str]) -> str:
+    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]

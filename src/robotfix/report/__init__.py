@@ -1,0 +1,1 @@
+"""Renderers: diagnostics -> text or JSON. They know nothing of the analysis."""

@@ -1,0 +1,1 @@
+"""ROS interfaces: interface files, the standard message catalog, REP 103 units."""

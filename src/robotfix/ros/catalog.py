@@ -1,0 +1,339 @@
+"""MsgCatalog: every message type a check can meet, with its units and refinements.
+
+Three sources, later ones adding to earlier ones:
+1. the standard ROS 2 (Jazzy) and ROS 1 (Noetic) definitions bundled with `rosbags`
+   (the only module that imports rosbags), converted once into a JSON cache;
+2. REP 103 units (`rep103.toml`), unless turned off;
+3. the user's `.msg`/`.srv`/`.action` files, whose `#RobotFix#` lines add units and
+   invariants. A user file that redeclares a standard message adds its refinements to
+   it; its own field list wins where it has one.
+
+Problems in interface files come back as `CatalogProblem`s (rule, path, line, col),
+never as exceptions.
+"""
+
+from __future__ import annotations
+
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from robotfix import rules
+from robotfix.annotations import ast as A
+from robotfix.annotations.parser import AnnotationSyntaxError, parse_predicate
+from robotfix.annotations.units import UnitError, resolve
+from robotfix.diagnostics import Rule
+from robotfix.disk_cache import JsonCache, install_key
+from robotfix.ros.msg import InterfaceFile, Section, read_interface
+
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # pragma: no cover
+    import tomli as tomllib
+
+INT_TYPES = frozenset(
+    "byte char int8 uint8 int16 uint16 int32 uint32 int64 uint64".split()
+)
+FLOAT_TYPES = frozenset({"float32", "float64"})
+BASE_KINDS = {"bool": "bool", "string": "str", "wstring": "str"}
+ALIASES = {"Header": "std_msgs/Header", "time": "builtin_interfaces/Time",
+           "duration": "builtin_interfaces/Duration"}
+
+
+@dataclass(frozen=True)
+class Origin:
+    path: str
+    line: int
+
+
+@dataclass(frozen=True)
+class FieldSpec:
+    name: str
+    kind: str  # int, float, bool, str, msg
+    msg_type: str | None = None  # pkg/Name when kind == "msg"
+    array: bool = False
+
+
+@dataclass(frozen=True)
+class Invariant:
+    predicate: A.Expr  # names are field paths relative to the message
+    paths: frozenset[str]
+    text: str
+    origin: Origin
+
+
+@dataclass(frozen=True)
+class FieldUnit:
+    text: str
+    origin: Origin | None  # None for REP 103 (see `source`)
+    source: str = ""
+
+
+@dataclass
+class MsgSpec:
+    name: str
+    fields: dict[str, FieldSpec]
+    units: dict[str, FieldUnit] = field(default_factory=dict)
+    invariants: list[Invariant] = field(default_factory=list)
+    constants: dict[str, tuple[str, Any]] = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class CatalogProblem:
+    rule: Rule
+    path: str
+    line: int
+    col: int
+    message: str
+
+
+def normalize(name: str) -> str:
+    """`geometry_msgs/msg/Twist` and `geometry_msgs/Twist` name the same type."""
+    parts = name.split("/")
+    if len(parts) == 3 and parts[1] in ("msg", "srv", "action"):
+        return f"{parts[0]}/{parts[2]}"
+    return name
+
+
+class MsgCatalog:
+    def __init__(self, interface_files: list[Path], *, rep103: bool = True) -> None:
+        self._std: dict[str, Any] | None = None
+        self._specs: dict[str, MsgSpec] = {}
+        self._files = sorted(set(interface_files))
+        self._rep103 = rep103
+        self._loaded = False
+        self.problems: list[CatalogProblem] = []
+
+    # -- public --------------------------------------------------------------
+    def lookup(self, name: str) -> MsgSpec | None:
+        self._load()
+        key = normalize(name)
+        spec = self._specs.get(key)
+        if spec is None and key in self._standard():
+            spec = self._specs[key] = self._from_standard(key)
+        return spec
+
+    def has_package(self, package: str) -> bool:
+        self._load()
+        prefix = package + "/"
+        return any(k.startswith(prefix) for k in (*self._specs, *self._standard()))
+
+    def field_at(self, msg_type: str, path: str) -> FieldSpec | None:
+        """The field at a dotted path (`linear.x`) inside `msg_type`."""
+        spec = self.lookup(msg_type)
+        parts = path.split(".")
+        for index, part in enumerate(parts):
+            if spec is None or part not in spec.fields:
+                return None
+            found = spec.fields[part]
+            if index == len(parts) - 1:
+                return found
+            if found.kind != "msg" or found.array or found.msg_type is None:
+                return None
+            spec = self.lookup(found.msg_type)
+        return None
+
+    def save(self) -> None:
+        _STD_CACHE.save()
+
+    # -- loading -------------------------------------------------------------
+    def _load(self) -> None:
+        if self._loaded:
+            return
+        self._loaded = True
+        files: list[InterfaceFile] = []
+        for path in self._files:
+            try:
+                text = path.read_text(encoding="utf-8")
+            except (OSError, UnicodeDecodeError) as err:
+                self._problem(rules.MALFORMED_INTERFACE, str(path), 1, 0,
+                              f"cannot read interface file: {err}")
+                continue
+            files.append(read_interface(path, text))
+        for file in files:  # declare every type before resolving any field
+            for problem in file.problems:
+                self._problem(rules.MALFORMED_INTERFACE, file.path, problem.line,
+                              problem.col, problem.message)
+            for section in file.sections:
+                self._declare(section)
+        if self._rep103:
+            self._add_rep103()
+        for file in files:
+            for section in file.sections:
+                self._resolve_fields(file, section)
+        for file in files:
+            for section in file.sections:
+                self._add_annotations(file.path, section)
+
+    def _declare(self, section: Section) -> None:
+        base = self._specs.get(section.name)
+        if base is None and section.name in self._standard():
+            base = self._from_standard(section.name)
+        self._specs[section.name] = base or MsgSpec(section.name, {})
+
+    def _resolve_fields(self, file: InterfaceFile, section: Section) -> None:
+        if not section.fields:
+            return
+        package = section.name.split("/")[0]
+        spec = self._specs[section.name]
+        resolved: dict[str, FieldSpec] = {}
+        for decl in section.fields:
+            fs = self._field(decl.name, decl.type, decl.array, package)
+            if fs is None:
+                self._problem(rules.UNKNOWN_MESSAGE_TYPE, file.path, decl.line, 0,
+                              f"unknown message type `{decl.type}` of field `{decl.name}`")
+                fs = FieldSpec(decl.name, "unknown", None, decl.array)
+            resolved[decl.name] = fs
+        spec.fields = resolved
+
+    def _field(self, name: str, type_: str, array: bool, package: str) -> FieldSpec | None:
+        if type_ in INT_TYPES:
+            return FieldSpec(name, "int", None, array)
+        if type_ in FLOAT_TYPES:
+            return FieldSpec(name, "float", None, array)
+        if type_ in BASE_KINDS:
+            return FieldSpec(name, BASE_KINDS[type_], None, array)
+        target = self._resolve_type(type_, package)
+        return None if target is None else FieldSpec(name, "msg", target, array)
+
+    def _resolve_type(self, type_: str, package: str) -> str | None:
+        if type_ in ALIASES:
+            return ALIASES[type_]
+        if "/" in type_:
+            key = normalize(type_)
+            return key if self._known(key) else None
+        local = f"{package}/{type_}"
+        if self._known(local):
+            return local
+        matches = sorted(k for k in (*self._specs, *self._standard())
+                         if k.endswith("/" + type_))
+        return matches[0] if matches else None
+
+    def _known(self, key: str) -> bool:
+        return key in self._specs or key in self._standard()
+
+    def _add_annotations(self, path: str, section: Section) -> None:
+        spec = self._specs[section.name]
+        field_lines = {decl.line: decl.name for decl in section.fields}
+        for note in section.annotations:
+            try:
+                predicate = parse_predicate(note.text)
+            except AnnotationSyntaxError as err:
+                self._problem(rules.ANNOTATION_SYNTAX, path, note.line,
+                              note.col + err.offset, err.message)
+                continue
+            own = field_lines.get(note.line)
+            self._add_predicate(spec, predicate, own, Origin(path, note.line), note)
+
+    def _add_predicate(self, spec: MsgSpec, predicate: A.Expr, own: str | None,
+                       origin: Origin, note: Any) -> None:
+        rename = {"_": own} if own else {}
+        for part in A.conjuncts(predicate):
+            if isinstance(part, A.UnitIs):
+                target = part.target or own
+                if target is None:
+                    self._problem(rules.MISPLACED_UNIT, origin.path, origin.line,
+                                  note.col + part.pos,
+                                  f"{part.kind.capitalize()}('{part.text}') in an "
+                                  "interface file needs a field: write "
+                                  f"{part.kind.capitalize()}(field) == \"{part.text}\"")
+                elif self._check_path(spec, target, origin, note.col + part.pos):
+                    self._add_unit(spec, target, part, origin, note.col)
+                continue
+            if any(isinstance(n, A.UnitIs) for n in A.walk(part)):
+                self._problem(rules.MISPLACED_UNIT, origin.path, origin.line, note.col,
+                              "Unit(), Frame() and Tag() must be top-level `and` parts")
+                continue
+            part = A.substitute(part, {k: A.Name(v) for k, v in rename.items() if v})
+            paths = {n.name for n in A.names(part)}
+            if all(self._check_path(spec, p, origin, note.col + n.pos)
+                   for n in A.names(part) for p in [n.name]):
+                spec.invariants.append(
+                    Invariant(part, frozenset(paths), A.show(part), origin))
+
+    def _add_unit(self, spec: MsgSpec, target: str, part: A.UnitIs, origin: Origin,
+                  col: int) -> None:
+        text = part.text if part.kind == "unit" else f"{part.kind}:{part.text}"
+        if part.kind == "unit":
+            try:
+                resolve(part.text)
+            except UnitError as err:
+                self._problem(rules.UNKNOWN_UNIT, origin.path, origin.line,
+                              col + part.pos, err.message)
+                return
+        spec.units[target] = FieldUnit(text, origin)
+
+    def _check_path(self, spec: MsgSpec, path: str, origin: Origin, col: int) -> bool:
+        found = self.field_at(spec.name, path)
+        if found is None or found.kind == "msg":
+            what = "is a message, not a value" if found else "is not a field"
+            self._problem(rules.UNKNOWN_FIELD, origin.path, origin.line, col,
+                          f"`{path}` {what} of {spec.name}")
+            return False
+        return True
+
+    def _add_rep103(self) -> None:
+        data = tomllib.loads(
+            (Path(__file__).with_name("rep103.toml")).read_text(encoding="utf-8"))
+        for entry in data["message"]:
+            spec = self.lookup(entry["type"])
+            if spec is None:
+                continue
+            for path, unit in entry["units"].items():
+                if self.field_at(spec.name, path) is not None:
+                    spec.units.setdefault(path, FieldUnit(unit, None, entry["source"]))
+
+    def _problem(self, rule: Rule, path: str, line: int, col: int, message: str) -> None:
+        self.problems.append(CatalogProblem(rule, path, line, col, message))
+
+    # -- standard definitions ------------------------------------------------
+    def _standard(self) -> dict[str, Any]:
+        if self._std is None:
+            self._std = _standard_definitions()
+        return self._std
+
+    def _from_standard(self, key: str) -> MsgSpec:
+        entry = self._standard()[key]
+        fields = {}
+        for name, type_, array in entry["fields"]:
+            package = key.split("/")[0]
+            fs = self._field(name, type_, array, package)
+            fields[name] = fs or FieldSpec(name, "unknown", None, array)
+        consts = {name: (type_, value) for name, type_, value in entry["consts"]}
+        return MsgSpec(key, fields, constants=consts)
+
+
+_STD_CACHE = JsonCache("ros-messages", install_key("rosbags", "msgs-v1"))
+
+
+def _standard_definitions() -> dict[str, Any]:
+    if not _STD_CACHE.entries:
+        for key, value in _convert_rosbags().items():
+            _STD_CACHE.put(key, value)
+    return _STD_CACHE.entries
+
+
+def _convert_rosbags() -> dict[str, Any]:
+    from rosbags.typesys.stores import ros1_noetic, ros2_jazzy
+
+    out: dict[str, Any] = {}
+    for store in (ros1_noetic.FIELDDEFS, ros2_jazzy.FIELDDEFS):  # ROS 2 wins
+        for name, (consts, fields) in store.items():
+            out[normalize(name)] = {
+                "fields": [_rosbags_field(n, d) for n, d in fields],
+                "consts": [[n, t, v] for n, t, v in consts
+                           if isinstance(v, (int, float, str, bool))],
+            }
+    return out
+
+
+def _rosbags_field(name: str, desc: Any) -> list[Any]:
+    nodetype, detail = desc
+    kind = int(nodetype)
+    if kind in (3, 4):  # ARRAY, SEQUENCE: detail is (element, size)
+        element = _rosbags_field(name, detail[0])
+        return [name, element[1], True]
+    if kind == 1:  # BASE: (type, string bound)
+        return [name, str(detail[0]), False]
+    return [name, normalize(str(detail)), False]  # NAME

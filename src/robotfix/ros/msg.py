@@ -1,0 +1,137 @@
+"""Read `.msg`, `.srv` and `.action` text into `InterfaceFile`, keeping `#RobotFix#` lines.
+
+Pure text processing: no ROS install, no catalog. Field types stay as written
+(`Vector3`, `float64[]`); the catalog resolves them. Problems are returned as
+`Problem`s with 1-based lines and 0-based columns, never raised.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+MARKER = re.compile(r"#\s*robotfix\s*#", re.IGNORECASE)
+_HEADER_PATH = re.compile(r"^\s*([A-Za-z_][\w]*)/([A-Za-z_]\w*)(?:\.(?:msg|srv|action))?\s*$")
+_HEADER_BRACKET = re.compile(r"^\s*\[\s*([A-Za-z_]\w*)/([A-Za-z_]\w*)\s*\]\s*:?\s*$")
+_FIELD = re.compile(
+    r"^(?P<type>[A-Za-z_][\w/]*)(?P<bound><=\d+)?(?P<array>\[(?:<=)?\d*\])?"
+    r"\s+(?P<name>[A-Za-z_]\w*)\s*(?P<rest>.*)$"
+)
+SECTIONS = {".msg": ("",), ".srv": ("_Request", "_Response"),
+            ".action": ("_Goal", "_Result", "_Feedback")}
+
+
+@dataclass(frozen=True)
+class FieldDecl:
+    name: str
+    type: str  # as written: float64, Vector3, geometry_msgs/Vector3
+    array: bool
+    line: int
+
+
+@dataclass(frozen=True)
+class AnnotationLine:
+    text: str  # the predicate after the marker
+    line: int
+    col: int  # where the predicate starts on its line
+
+
+@dataclass(frozen=True)
+class Section:
+    """One message: the whole `.msg`, or one part of a `.srv`/`.action`."""
+
+    name: str  # pkg/Name, pkg/Name_Request, ...
+    fields: tuple[FieldDecl, ...]
+    annotations: tuple[AnnotationLine, ...]
+
+
+@dataclass(frozen=True)
+class Problem:
+    line: int
+    col: int
+    message: str
+
+
+@dataclass(frozen=True)
+class InterfaceFile:
+    path: str
+    package: str
+    sections: tuple[Section, ...]
+    problems: tuple[Problem, ...]
+
+
+def read_interface(path: Path, text: str) -> InterfaceFile:
+    lines = text.splitlines()
+    package, name, first_body = _name_of(path, lines)
+    suffixes = SECTIONS.get(path.suffix, ("",))
+    problems: list[Problem] = []
+    chunks: list[list[tuple[int, str]]] = [[]]
+    for number, line in enumerate(lines[first_body:], start=first_body + 1):
+        if line.strip() == "---" and len(chunks) < len(suffixes):
+            chunks.append([])
+        else:
+            chunks[-1].append((number, line))
+    sections = tuple(
+        _read_section(f"{package}/{name}{suffix}", chunk, problems)
+        for suffix, chunk in zip(suffixes, chunks)
+    )
+    return InterfaceFile(str(path), package, sections, tuple(problems))
+
+
+def _name_of(path: Path, lines: list[str]) -> tuple[str, str, int]:
+    """Package and type name from a header line (`pkg/Name.msg`, `[pkg/Name]:`) or path."""
+    for index, line in enumerate(lines):
+        if not line.strip():
+            continue
+        match = _HEADER_BRACKET.match(line) or _HEADER_PATH.match(line)
+        if match:
+            return match.group(1), match.group(2), index + 1
+        break
+    parent = path.parent
+    if parent.name in ("msg", "srv", "action"):
+        parent = parent.parent
+    return parent.name or "unknown", path.stem, 0
+
+
+def _read_section(
+    name: str, chunk: list[tuple[int, str]], problems: list[Problem]
+) -> Section:
+    fields: list[FieldDecl] = []
+    notes: list[AnnotationLine] = []
+    for number, raw in chunk:
+        code, annotation = _split_comment(raw)
+        if annotation is not None:
+            notes.append(AnnotationLine(annotation[1], number, annotation[0]))
+        code = code.strip()
+        if not code:
+            continue
+        match = _FIELD.match(code)
+        if match is None:
+            problems.append(Problem(number, len(raw) - len(raw.lstrip()), _bad_line(code)))
+            continue
+        if match["rest"].startswith("="):
+            continue  # a constant
+        fields.append(
+            FieldDecl(match["name"], match["type"], match["array"] is not None, number)
+        )
+    return Section(name, tuple(fields), tuple(notes))
+
+
+def _split_comment(line: str) -> tuple[str, tuple[int, str] | None]:
+    """The code part of a line, and the `#RobotFix#` predicate (column, text) if any."""
+    marker = MARKER.search(line)
+    hash_at = line.find("#")
+    if marker is not None and marker.start() == hash_at:
+        start = marker.end()
+        while start < len(line) and line[start] in " \t":
+            start += 1
+        return line[:hash_at], (start, line[start:].rstrip())
+    return (line if hash_at < 0 else line[:hash_at]), None
+
+
+def _bad_line(code: str) -> str:
+    hint = ""
+    if any(op in code for op in ("<", ">", "==", " and ", " or ")):
+        hint = " (a #RobotFix# annotation must fit on one line)"
+    return f"cannot read `{code}` as a field `type name`{hint}"

@@ -1,0 +1,86 @@
+"""Every rule RobotFix can report. Codes are permanent: add, deprecate, never renumber.
+
+Families (SPEC §4): RF0xx input, RF1xx refinements, RF2xx units and frames,
+RF3xx initialisation, RF4xx base types, RF5xx annotations and interface files,
+RF9xx analysis limits.
+"""
+
+from __future__ import annotations
+
+from robotfix.diagnostics import Rule, Severity
+
+W = Severity.WARNING
+
+PYTHON_SYNTAX_ERROR = Rule("RF001", "python-syntax-error", "File is not valid Python 3")
+PYTHON2_SOURCE = Rule(
+    "RF002", "python2-source", "File is Python 2 and was not checked", W
+)
+UNREADABLE_FILE = Rule("RF003", "unreadable-file", "File cannot be read or decoded")
+
+REFINEMENT_VIOLATED = Rule(
+    "RF101", "refinement-violated", "Value violates its refinement on every execution"
+)
+REFINEMENT_UNPROVEN = Rule(
+    "RF102", "refinement-unproven", "Refinement cannot be proved for every value", W
+)
+
+UNIT_MISMATCH = Rule(
+    "RF201", "unit-mismatch", "Value has a different unit or frame than its target"
+)
+OPERAND_UNIT_MISMATCH = Rule(
+    "RF202", "operand-unit-mismatch", "Operands of +, - or a comparison differ in unit"
+)
+
+USED_BEFORE_ASSIGNMENT = Rule(
+    "RF301", "used-before-assignment", "Variable read before it is assigned"
+)
+UNSET_FIELD_DEFAULT = Rule(
+    "RF302",
+    "unset-field-default",
+    "Message field never set, and its ROS default breaks its refinement",
+)
+
+BASE_TYPE_MISMATCH = Rule(
+    "RF401", "base-type-mismatch", "Value does not fit the annotated base type"
+)
+
+ANNOTATION_SYNTAX = Rule("RF501", "annotation-syntax", "Annotation does not parse")
+UNKNOWN_UNIT = Rule("RF502", "unknown-unit", "Unit name is a typo of a known unit")
+UNKNOWN_NAME = Rule("RF503", "unknown-name", "Annotation names something not in scope")
+UNKNOWN_MESSAGE_TYPE = Rule(
+    "RF504", "unknown-message-type", "Interface file names an unknown message type"
+)
+UNKNOWN_FIELD = Rule("RF505", "unknown-field", "Annotation names a field the message lacks")
+MALFORMED_INTERFACE = Rule(
+    "RF506", "malformed-interface-file", "Interface file line does not parse"
+)
+MISPLACED_UNIT = Rule(
+    "RF507", "misplaced-unit", "Unit(), Frame() or Tag() used where it has no meaning"
+)
+
+SOLVER_UNKNOWN = Rule("RF901", "solver-unknown", "Solver could not decide", W)
+
+ALL_RULES: dict[str, Rule] = {
+    r.code: r
+    for r in (
+        PYTHON_SYNTAX_ERROR,
+        PYTHON2_SOURCE,
+        UNREADABLE_FILE,
+        REFINEMENT_VIOLATED,
+        REFINEMENT_UNPROVEN,
+        UNIT_MISMATCH,
+        OPERAND_UNIT_MISMATCH,
+        USED_BEFORE_ASSIGNMENT,
+        UNSET_FIELD_DEFAULT,
+        BASE_TYPE_MISMATCH,
+        ANNOTATION_SYNTAX,
+        UNKNOWN_UNIT,
+        UNKNOWN_NAME,
+        UNKNOWN_MESSAGE_TYPE,
+        UNKNOWN_FIELD,
+        MALFORMED_INTERFACE,
+        MISPLACED_UNIT,
+        SOLVER_UNKNOWN,
+    )
+}
+RULES_BY_NAME: dict[str, Rule] = {r.name: r for r in ALL_RULES.values()}

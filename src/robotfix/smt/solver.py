@@ -1,0 +1,75 @@
+"""Discharge verification conditions with Z3 and answer with a `Verdict`.
+
+Two questions (SPEC §4 "Certainty"): can the goal fail under the facts (if not:
+Proved)? If it can, can it also hold? If not, it fails on every execution that
+reaches it along that path: Violated (an error). If it can: Unproven (a warning).
+`unknown` from z3 is Undecided, never a pass.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from typing import Any
+
+import z3
+
+from robotfix.analysis.vc import VC, Proved, Undecided, Unproven, Verdict, Violated
+from robotfix.smt.encode import Encoder
+
+# A work budget, not wall-clock time: the same input stops at the same point on any
+# machine. Linear problems of a node take a few thousand units; a million is ample.
+RLIMIT = 2_000_000
+
+
+def check(vc: VC, rlimit: int = RLIMIT) -> Verdict:
+    encoder = Encoder()
+    facts = [encoder.boolean(f) for f in vc.facts]
+    goal = encoder.boolean(vc.goal)
+    probes = [encoder.encode(p) for p in vc.probes]
+    solver = z3.Solver()
+    solver.set("random_seed", 0)
+    solver.set("rlimit", rlimit)
+    solver.add(*facts)
+    solver.push()
+    solver.add(z3.Not(goal))
+    first = solver.check()
+    if first == z3.unsat:
+        return Proved()
+    if first == z3.unknown:
+        return Undecided(solver.reason_unknown())
+    model = solver.model()
+    values = tuple(_show(model.eval(p, model_completion=True)) for p in probes)
+    syms = tuple((ident, _show(model.eval(s, model_completion=True)))
+                 for ident, s in sorted(encoder.syms.items()))
+    solver.pop()
+    solver.add(goal)
+    second = solver.check()
+    if second == z3.unsat:
+        return Violated(values)
+    if second == z3.unknown:
+        return Undecided(solver.reason_unknown())
+    return Unproven(values, syms)
+
+
+def _show(value: Any) -> str:
+    if z3.is_int_value(value):
+        return str(value.as_long())
+    if z3.is_rational_value(value):
+        exact = Fraction(value.numerator_as_long(), value.denominator_as_long())
+        return _decimal(exact)
+    if z3.is_algebraic_value(value):
+        return value.as_decimal(6).rstrip("?")
+    if z3.is_true(value) or z3.is_false(value):
+        return "True" if z3.is_true(value) else "False"
+    if z3.is_string_value(value):
+        return repr(value.as_string())
+    return str(value)
+
+
+def _decimal(value: Fraction) -> str:
+    if value.denominator == 1:
+        return str(value.numerator)
+    as_float = float(value)
+    if Fraction(as_float) == value or len(repr(as_float)) < 12:
+        return repr(as_float)
+    return f"{value.numerator}/{value.denominator}"

@@ -1,0 +1,131 @@
+"""SourceFile: one Python file's text, its AST, columns in characters, suppressions.
+
+Reading and parsing never raise for a fault in the user's file: an unreadable file is
+RF003, a Python 2 file RF002, any other syntax error RF001.
+"""
+
+from __future__ import annotations
+
+import ast
+import io
+import re
+import tokenize
+import warnings
+from dataclasses import dataclass, field
+
+from robotfix import messages, rules
+from robotfix.diagnostics import Diagnostic, Span
+
+_SUPPRESS = re.compile(r"#\s*robotfix:\s*ignore(?:\[(?P<codes>[^\]]*)\])?", re.IGNORECASE)
+# CPython's own words for Python 2 constructs (print and exec statements, `except
+# X, e`, `0777`, backticks, `<>`, `ur''`).
+_PY2_HINTS = (
+    "Missing parentheses in call to",
+    "multiple exception types must be parenthesized",
+    "leading zeros in decimal integer literals",
+    "invalid syntax. Perhaps you forgot a comma?",
+)
+_PY2_TOKENS = re.compile(r"^\s*(print\s+[\"'\w]|exec\s+[\"']|raise\s+\w+\s*,)|`|<>", re.M)
+
+
+@dataclass
+class SourceFile:
+    path: str
+    text: str
+    tree: ast.Module | None = None
+    problem: Diagnostic | None = None
+    lines: list[str] = field(default_factory=list)
+    suppressions: dict[int, frozenset[str] | None] = field(default_factory=dict)
+
+    @staticmethod
+    def from_bytes(path: str, data: bytes) -> SourceFile:
+        try:
+            text = _decode(data)
+        except (SyntaxError, UnicodeDecodeError, LookupError) as err:
+            return SourceFile(path, "", problem=messages.unreadable(path, f"cannot decode: {err}"))
+        return SourceFile.from_text(path, text)
+
+    @staticmethod
+    def from_text(path: str, text: str) -> SourceFile:
+        source = SourceFile(path, text, lines=text.splitlines())
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")  # SyntaxWarning in user code is theirs
+                source.tree = ast.parse(text, filename=path)
+        except (SyntaxError, ValueError) as err:
+            source.problem = _syntax_problem(path, text, err)
+            return source
+        except RecursionError:
+            source.problem = messages.syntax_error(
+                path, Span.point(1), "nesting too deep for Python's parser", rules.PYTHON_SYNTAX_ERROR)
+            return source
+        source.suppressions = _suppressions(text)
+        return source
+
+    def char_col(self, line: int, byte_col: int) -> int:
+        """ast gives UTF-8 byte offsets; diagnostics use characters."""
+        if 1 <= line <= len(self.lines):
+            text = self.lines[line - 1]
+            if text.isascii():
+                return byte_col
+            return len(text.encode("utf-8")[:byte_col].decode("utf-8", errors="replace"))
+        return byte_col
+
+    def span(self, node: ast.AST) -> Span:
+        line = getattr(node, "lineno", 1)
+        col = self.char_col(line, getattr(node, "col_offset", 0))
+        end_line = getattr(node, "end_lineno", None) or line
+        end_col = getattr(node, "end_col_offset", None)
+        end = self.char_col(end_line, end_col) if end_col is not None else col + 1
+        return Span(line, col, end_line, end)
+
+    def segment(self, node: ast.AST) -> str | None:
+        return ast.get_source_segment(self.text, node)
+
+    def statement_text(self, node: ast.AST) -> str:
+        """The first line of a statement's source, for messages."""
+        text = self.segment(node) or ""
+        first = text.splitlines()[0] if text else ""
+        return first if len(first) <= 80 else first[:77] + "..."
+
+    def is_suppressed(self, diag: Diagnostic) -> bool:
+        if diag.span.line not in self.suppressions:
+            return False
+        codes = self.suppressions[diag.span.line]
+        return codes is None or diag.code in codes or diag.rule.name in codes
+
+
+def _decode(data: bytes) -> str:
+    encoding, _ = tokenize.detect_encoding(io.BytesIO(data).readline)
+    text = data.decode(encoding)
+    return text[1:] if text.startswith("\ufeff") else text
+
+
+def _syntax_problem(path: str, text: str, err: SyntaxError | ValueError) -> Diagnostic:
+    if isinstance(err, ValueError):  # e.g. NUL bytes
+        return messages.syntax_error(path, Span.point(1), str(err), rules.PYTHON_SYNTAX_ERROR)
+    line = err.lineno or 1
+    col = max((err.offset or 1) - 1, 0)
+    detail = err.msg
+    python2 = any(hint in detail for hint in _PY2_HINTS) or _PY2_TOKENS.search(text)
+    rule = rules.PYTHON2_SOURCE if python2 else rules.PYTHON_SYNTAX_ERROR
+    return messages.syntax_error(path, Span.point(line, col), detail, rule)
+
+
+def _suppressions(text: str) -> dict[int, frozenset[str] | None]:
+    found: dict[int, frozenset[str] | None] = {}
+    if "robotfix" not in text.lower():
+        return found
+    try:
+        for tok in tokenize.generate_tokens(io.StringIO(text).readline):
+            if tok.type == tokenize.COMMENT:
+                match = _SUPPRESS.search(tok.string)
+                if match:
+                    codes = match["codes"]
+                    found[tok.start[0]] = (
+                        None if codes is None
+                        else frozenset(c.strip() for c in codes.split(",") if c.strip())
+                    )
+    except (tokenize.TokenError, SyntaxError):
+        pass
+    return found
