@@ -122,10 +122,12 @@ def conversion(got: Unit, expected: Unit) -> str:
 
 def used_before_assignment(path: str, span: Span, stmt: str, name: str, declared: bool) -> Diagnostic:
     if declared:
-        detail = f"`{name}` is declared but never assigned before this line"
+        detail = f"`{name}`, which is declared but not assigned on this path"
     else:
-        detail = f"`{name}` is not defined before this line"
-    return Diagnostic(rules.USED_BEFORE_ASSIGNMENT, path, span, f"`{stmt}` reads {detail}")
+        detail = f"`{name}`, which is not defined here"
+    return Diagnostic(
+        rules.USED_BEFORE_ASSIGNMENT, path, span, f"`{stmt}` reads {detail}",
+        (Note(f"assign `{name}` before this line"),))
 
 
 def unset_field(

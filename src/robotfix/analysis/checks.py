@@ -98,7 +98,7 @@ class Checker:
     def assign_refined(self, state: State, name: str, decl: Refinement, value: Value,
                        site: ast.AST, lookup: dict[str, A.Expr]) -> Value:
         """Check `name = value` against its refinement; return what `name` holds after."""
-        declared = Declared(f"refinement of `{name}`", self.path, decl.line)
+        declared = Declared(f"annotation of `{name}`", self.path, decl.line)
         if value.kind == "msg":
             return value
         if self.report_uninit(value, site):
@@ -107,11 +107,12 @@ class Checker:
         fits = self.units_agree(decl.unit, value, site, f"`{name}`", declared) and fits
         if not fits or value.term is None:
             return self.assumed(state, name, decl, lookup)
-        goal = A.substitute(decl.predicate, {**lookup, "_": value.term})
-        shown = A.show(A.substitute(decl.predicate, {"_": A.Name(name)}))
-        if not self.goal_holds(state, goal, value.term, site, shown, f"`{name}`", declared):
-            return self.assumed(state, name, decl, lookup)
-        state.assume(goal)
+        for part in A.conjuncts(decl.predicate):
+            goal = A.substitute(part, {**lookup, "_": value.term})
+            shown = A.show(A.substitute(part, {"_": A.Name(name)}))
+            if not self.goal_holds(state, goal, value.term, site, shown, f"`{name}`", declared):
+                return self.assumed(state, name, decl, lookup)
+            state.assume(goal)
         return self._stored(value, decl)
 
     def assumed(self, state: State, name: str, decl: Refinement, lookup: dict[str, A.Expr]) -> Value:

@@ -155,8 +155,12 @@ def substitute(expr: Expr, mapping: dict[str, Expr]) -> Expr:
     return rebuild(expr, tuple(substitute(k, mapping) for k in kids))
 
 
+_PRECEDENCE = {"or": 1, "and": 2, "not": 3, "==": 4, "!=": 4, "<": 4, "<=": 4, ">": 4,
+               ">=": 4, "+": 5, "-": 5, "*": 6, "/": 6}
+
+
 def show(expr: Expr) -> str:
-    """Source-like text of an expression, for messages."""
+    """Source-like text of an expression, for messages (parentheses only where needed)."""
     if isinstance(expr, Num):
         return _show_number(expr)
     if isinstance(expr, Bool):
@@ -168,12 +172,17 @@ def show(expr: Expr) -> str:
     if isinstance(expr, Sym):
         return f"${expr.ident}"
     if isinstance(expr, Unary):
-        sep = " " if expr.op == "not" else ""
-        return f"{expr.op}{sep}{_show_operand(expr.operand)}"
+        if expr.op == "not":
+            return f"not {_operand(expr.operand, 3)}"
+        return f"-{_operand(expr.operand, 7)}"
     if isinstance(expr, Binary):
-        return f"{_show_operand(expr.left)} {expr.op} {_show_operand(expr.right)}"
+        level = _PRECEDENCE[expr.op]
+        # comparisons do not chain here, and - and / are not associative on the right
+        right_level = level + 1 if expr.op in ("-", "/") or level == 4 else level
+        left_level = level + 1 if level == 4 else level
+        return f"{_operand(expr.left, left_level)} {expr.op} {_operand(expr.right, right_level)}"
     if isinstance(expr, Ite):
-        return f"{show(expr.then)} if {show(expr.cond)} else {show(expr.orelse)}"
+        return f"{_operand(expr.then, 1)} if {_operand(expr.cond, 1)} else {show(expr.orelse)}"
     if isinstance(expr, Func):
         return f"{expr.name}({', '.join(show(a) for a in expr.args)})"
     if expr.target is None:
@@ -181,11 +190,21 @@ def show(expr: Expr) -> str:
     return f"{expr.kind.capitalize()}({expr.target}) == {expr.text!r}"
 
 
-def _show_operand(expr: Expr) -> str:
+def _level(expr: Expr) -> int:
+    if isinstance(expr, Binary):
+        return _PRECEDENCE[expr.op]
+    if isinstance(expr, Unary):
+        return 3 if expr.op == "not" else 7
+    if isinstance(expr, Ite):
+        return 0
+    if isinstance(expr, Num) and expr.value < 0:
+        return 7
+    return 9
+
+
+def _operand(expr: Expr, minimum: int) -> str:
     text = show(expr)
-    return f"({text})" if isinstance(expr, (Binary, Ite)) else text
-
-
+    return f"({text})" if _level(expr) < minimum else text
 def _show_number(num: Num) -> str:
     value = num.value
     if value.denominator == 1:

@@ -1,0 +1,1 @@
+"""Helpers for RobotFix's own data-driven tests (shipped so plugins can reuse them)."""

@@ -1,0 +1,5 @@
+"""T11 (thesis A.11): an int variable must not receive a float."""
+from typing_extensions import Annotated
+
+x : Annotated[int, ""]
+x = 1

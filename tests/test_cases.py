@@ -1,0 +1,41 @@
+"""Run every program under tests/cases/ and compare with its inline assertions.
+
+Interface files come from `tests/cases/msgs/` and from a `msg/` folder beside the case.
+A `_xfail` suffix marks a known failure (it must fail, and fails the run once fixed).
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+from pathlib import Path
+
+import pytest
+
+from robotfix.api import catalog_problems, check_source, interface_files
+from robotfix.config import Config
+from robotfix.ros.catalog import MsgCatalog
+from robotfix.testing.expectations import compare, read_expectations
+
+CASES = Path(__file__).parent / "cases"
+
+
+@lru_cache(maxsize=None)
+def catalog_for(folder: Path) -> MsgCatalog:
+    folders = [CASES / "msgs", folder / "msg"]
+    catalog = MsgCatalog(interface_files([f for f in folders if f.is_dir()]))
+    problems = catalog_problems(catalog)
+    assert not problems, f"the case's interface files have problems: {problems}"
+    return catalog
+
+
+@pytest.mark.parametrize(
+    "path", sorted(CASES.rglob("*.py")), ids=lambda p: str(p.relative_to(CASES))
+)
+def test_case(path: Path) -> None:
+    source = path.read_text(encoding="utf-8")
+    found = check_source(source, str(path), Config(), catalog_for(path.parent))
+    problems = compare(read_expectations(source), found)
+    if path.stem.endswith("_xfail"):
+        assert problems, "this case passes now: drop the _xfail suffix"
+        pytest.xfail("\n".join(problems))
+    assert not problems, "\n".join(problems)
