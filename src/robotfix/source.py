@@ -83,8 +83,13 @@ class SourceFile:
         return ast.get_source_segment(self.text, node)
 
     def statement_text(self, node: ast.AST) -> str:
-        """The first line of a statement's source, for messages."""
-        text = self.segment(node) or ""
+        """The first line of a statement's source, for messages; an annotated
+        assignment is shown without its annotation (`x = 200`)."""
+        if isinstance(node, ast.AnnAssign) and node.value is not None:
+            target, value = self.segment(node.target), self.segment(node.value)
+            text = f"{target} = {value}" if target and value else ""
+        else:
+            text = self.segment(node) or ""
         first = text.splitlines()[0] if text else ""
         return first if len(first) <= 80 else first[:77] + "..."
 

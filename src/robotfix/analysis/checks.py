@@ -76,7 +76,7 @@ class Checker:
     def units_agree(self, expected: Unit | None, value: Value, site: ast.AST, target: str,
                     declared: Declared) -> bool:
         got = value.unit
-        if expected is None or got is None or value.literal or got.same_as(expected):
+        if expected is None or got is None or value.literal or value.fits_unit(expected):
             return True
         span, stmt = self.where(site)
         self.ctx.report(messages.unit_mismatch(self.path, span, stmt, target, expected, got, declared))

@@ -6,6 +6,7 @@ One `FileContext` per checked file; nothing here outlives the check of that file
 from __future__ import annotations
 
 import ast
+import builtins
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
@@ -114,10 +115,11 @@ class FileContext:
     def msg_type_of(self, node: ast.expr) -> str | None:
         return self.msg_type_named(self.qualname(node))
 
-    def refinement(self, annotation: ast.expr, self_name: str) -> Refinement | None:
+    def refinement(self, annotation: ast.expr, self_name: str,
+                   known: Callable[[str], bool] = lambda name: True) -> Refinement | None:
         found, problems = extract(
             annotation, self_name, self.qualname, self.msg_type_of,
-            self.source.segment, self.source.char_col)
+            self.source.segment, self.source.char_col, known)
         for problem in problems:
             self.report(messages.annotation_problem(
                 self.source.path, problem.line, problem.col, problem.rule, problem.message),
@@ -134,13 +136,12 @@ def build_scope(ctx: FileContext, kind: str, name: str, node: ast.AST,
     """Collect the names a body binds and the refinements it declares."""
     scope = Scope(kind, name, node, parent)
     body: list[ast.AST] = list(getattr(node, "body", []))
+    annotated: list[tuple[ast.expr, str]] = []
     if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
         for arg in _all_args(node.args):
             scope.local_names.add(arg.arg)
             if arg.annotation is not None:
-                found = ctx.refinement(arg.annotation, arg.arg)
-                if found is not None:
-                    scope.decls[arg.arg] = found
+                annotated.append((arg.annotation, arg.arg))
     for child in _own_nodes(body):
         if isinstance(child, (ast.Global, ast.Nonlocal)):
             scope.global_names.update(child.names)
@@ -155,13 +156,23 @@ def build_scope(ctx: FileContext, kind: str, name: str, node: ast.AST,
         elif isinstance(child, ast.ExceptHandler) and child.name:
             scope.local_names.add(child.name)
         elif isinstance(child, ast.AnnAssign) and isinstance(child.target, ast.Name):
-            target = child.target.id
-            if target not in scope.decls:
-                found = ctx.refinement(child.annotation, target)
-                if found is not None:
-                    scope.decls[target] = found
+            annotated.append((child.annotation, child.target.id))
     scope.local_names -= scope.global_names
+    for annotation, target in annotated:
+        if target not in scope.decls:
+            found = ctx.refinement(annotation, target, lambda n: _in_scope(ctx, scope, n))
+            if found is not None:
+                scope.decls[target] = found
     return scope
+
+
+def _in_scope(ctx: FileContext, scope: Scope, name: str) -> bool:
+    current: Scope | None = scope
+    while current is not None:
+        if name in current.local_names or name in current.global_names:
+            return True
+        current = current.parent
+    return name in ctx.imports or ctx.star_import or hasattr(builtins, name)
 
 
 def _all_args(args: ast.arguments) -> list[ast.arg]:

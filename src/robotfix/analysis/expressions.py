@@ -142,15 +142,18 @@ class ExpressionEvaluator:
         op = ARITH.get(type(node.op))
         if op is None:
             return replace(self._other_binop(node, left, right), uninit=uninit)
+        scale = 1.0
         if op in "+-":
             unit, literal = self.unit_of_sum(left, right, node, op)
+            scale = left.scale if unit is not None and unit == left.unit else right.scale
         else:
             unit, literal = self.unit_of_product(left, right, op)
+            scale = self.scale_of_product(left, right, op)
         kind = self.numeric_kind(left, right, op)
         if kind is None or left.term is None or right.term is None:
-            return replace(self.unknown(node, unit=unit), uninit=uninit)
+            return replace(self.unknown(node, unit=unit), uninit=uninit, scale=scale)
         term = A.Binary(op, left.term, right.term)
-        return Value(kind, term, unit, literal, uninit=uninit)
+        return Value(kind, term, unit, literal, uninit=uninit, scale=scale)
 
     def _other_binop(self, node: ast.BinOp, left: Value, right: Value) -> Value:
         if isinstance(node.op, ast.Mod):
@@ -161,6 +164,18 @@ class ExpressionEvaluator:
                 right.term.is_int and left.unit is not None and not left.literal:
             return self.unknown(node, unit=left.unit.power(int(right.term.value)))
         return self.unknown(node)
+
+    def scale_of_product(self, left: Value, right: Value, op: str) -> float:
+        """Literal factors carried along (see `Value.scale`)."""
+        if left.literal == right.literal:
+            return left.scale * (right.scale if op == "*" else 1 / right.scale) \
+                if not left.literal else 1.0
+        number = constant_value(right.term if right.literal else left.term)
+        if number is None or number == 0:
+            return 1.0
+        if right.literal:
+            return left.scale * (number if op == "*" else 1 / number)
+        return right.scale * number if op == "*" else 1.0
 
     def numeric_kind(self, left: Value, right: Value, op: str) -> str | None:
         kinds = {left.kind, right.kind}
@@ -179,7 +194,8 @@ class ExpressionEvaluator:
             return (right.unit if left.literal else left.unit), False
         if left.unit is None or right.unit is None:
             return None, False
-        if left.unit.same_as(right.unit):
+        if left.unit.same_as(right.unit) or right.fits_unit(left.unit) or \
+                left.fits_unit(right.unit):
             return left.unit, False
         text = self.ctx.source.segment(node) or op
         self.ctx.report(messages.operand_units(
@@ -334,3 +350,19 @@ class ExpressionEvaluator:
         if value.kind == "none":
             return A.Bool(False)
         return self.unknown(node, "bool").term  # type: ignore[return-value]
+
+
+def constant_value(term: A.Expr | None) -> float | None:
+    """The value of a term built from number literals only."""
+    if isinstance(term, A.Num):
+        return float(term.value)
+    if isinstance(term, A.Unary) and term.op == "-":
+        inner = constant_value(term.operand)
+        return None if inner is None else -inner
+    if isinstance(term, A.Binary) and term.op in "+-*/":
+        left, right = constant_value(term.left), constant_value(term.right)
+        if left is None or right is None or term.op == "/" and right == 0:
+            return None
+        return {"+": left + right, "-": left - right, "*": left * right}.get(
+            term.op, left / right if right else 0.0)
+    return None

@@ -6,6 +6,7 @@ aliases (`m = move`) see the same fields, as in Python.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field, replace
 
 from robotfix.annotations import ast as A
@@ -31,6 +32,9 @@ class Value:
     ref: int | None = None  # heap id, for messages
     name: str = ""  # msgclass: pkg/Name; module: dotted name
     uninit: Uninit | None = None
+    # The product of the number literals this value was multiplied by since it got its
+    # unit: `speed / 3.6` is km/h scaled by 1/3.6, which is a conversion to m/s.
+    scale: float = 1.0
     default_of: tuple[int, str] | None = field(default=None, compare=False)
 
     @property
@@ -38,7 +42,17 @@ class Value:
         return self.kind in NUMERIC
 
     def with_unit(self, unit: Unit | None) -> Value:
-        return replace(self, unit=unit, literal=False)
+        return replace(self, unit=unit, literal=False, scale=1.0)
+
+    def fits_unit(self, expected: Unit) -> bool:
+        """Same unit, or the same dimension after the literal factors it was scaled by
+        (`speed / 3.6` fits m/s when speed is in km/h)."""
+        got = self.unit
+        if got is None or got.same_as(expected):
+            return True
+        if not got.same_dimension(expected) or got.offset or expected.offset:
+            return False
+        return math.isclose(got.factor / self.scale, expected.factor, rel_tol=1e-3)
 
 
 UNKNOWN = Value("unknown")

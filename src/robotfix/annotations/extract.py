@@ -49,6 +49,7 @@ def extract(
     msg_type: Callable[[ast.expr], str | None],
     source_segment: Callable[[ast.AST], str | None],
     col_of: Callable[[int, int], int],
+    known: Callable[[str], bool] = lambda name: True,
 ) -> tuple[Refinement | None, list[AnnotationProblem]]:
     """The refinement in `node`, if it is `Annotated[base, "predicate", ...]`."""
     if not isinstance(node, ast.Subscript) or qualname(node.value) not in ANNOTATED:
@@ -71,6 +72,7 @@ def extract(
         problems.append(AnnotationProblem(rules.ANNOTATION_SYNTAX, line, col, err.message))
         return None, problems
     unit, value_parts = _split(predicate, self_name, start, problems)
+    value_parts = [p for p in value_parts if _names_known(p, self_name, known, start, problems)]
     renamed = A.substitute(A.conjoin(value_parts), {self_name: A.Name(SELF)})
     return Refinement(base, unit, renamed, text, node.lineno, mtype), problems
 
@@ -108,6 +110,20 @@ def _split(
         else:
             values.append(part)
     return unit, values
+
+
+def _names_known(part: A.Expr, self_name: str, known: Callable[[str], bool],
+                 start: tuple[int, int, bool], problems: list[AnnotationProblem]) -> bool:
+    for name in A.names(part):
+        root = name.name.split(".")[0]
+        if root not in (SELF, self_name) and not known(root):
+            line, col = _at(start, name.pos)
+            problems.append(AnnotationProblem(
+                rules.UNKNOWN_NAME, line, col,
+                f"`{name.name}` is not a variable in scope here (the annotated value is "
+                f"`_` or `{self_name}`)"))
+            return False
+    return True
 
 
 def _text_start(

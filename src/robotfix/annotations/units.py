@@ -92,18 +92,27 @@ def _compose(a: Unit, b: Unit, sign: int) -> Unit:
 
 def _render(dims: tuple[tuple[str, int], ...], factor: float) -> str:
     def part(dim: str, exp: int) -> str:
-        name = dim.split(":", 1)[1] if ":" in dim else _SYMBOLS.get(dim, dim)
+        name = _SYMBOLS.get(dim, dim)
         return name if abs(exp) == 1 else f"{name}^{abs(exp)}"
 
-    num = "*".join(part(d, e) for d, e in dims if e > 0) or "1"
-    den = "*".join(part(d, e) for d, e in dims if e < 0)
+    physical = [(d, e) for d, e in dims if ":" not in d]
+    num = "*".join(part(d, e) for d, e in physical if e > 0) or "1"
+    den = "*".join(part(d, e) for d, e in physical if e < 0)
     text = f"{num}/{den}" if den else num
-    return text if math.isclose(factor, 1.0) else f"{factor:.6g}*{text}"
+    if not math.isclose(factor, 1.0):
+        text = f"{factor:.6g}*{text}"
+    for dim, exp in dims:
+        if ":" in dim:
+            kind, name = dim.split(":", 1)
+            power = "" if exp == 1 else f"^{exp}"
+            text = (f"{name}{power}" if text == "1" and kind == "tag"
+                    else f"{text} in {kind} {name}{power}")
+    return text
 
 
 def label(kind: str, text: str) -> Unit:
     """`Frame('map')` or `Tag('x')`: a dimension of its own, matched by name."""
-    return Unit(((f"{kind}:{text}", 1),), text=text)
+    return Unit(((f"{kind}:{text}", 1),), text=text if kind == "tag" else f"frame {text}")
 
 
 def resolve(text: str) -> Unit:

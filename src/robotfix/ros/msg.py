@@ -82,7 +82,8 @@ def read_interface(path: Path, text: str) -> InterfaceFile:
 def _name_of(path: Path, lines: list[str]) -> tuple[str, str, int]:
     """Package and type name from a header line (`pkg/Name.msg`, `[pkg/Name]:`) or path."""
     for index, line in enumerate(lines):
-        if not line.strip():
+        stripped = line.strip()
+        if not stripped or stripped.startswith("#") and not MARKER.match(stripped):
             continue
         match = _HEADER_BRACKET.match(line) or _HEADER_PATH.match(line)
         if match:
