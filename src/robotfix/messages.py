@@ -62,7 +62,8 @@ def refinement_unproven(
     path: str, span: Span, stmt: str, predicate: str, subject: str,
     unknowns: list[str], example: list[str], declared: Declared,
 ) -> Diagnostic:
-    why = f"nothing bounds {_join(unknowns)}" if unknowns else "it depends on values RobotFix cannot follow"
+    why = (f"it does not hold for every possible value of {_join(unknowns)}" if unknowns
+           else "it depends on values RobotFix cannot follow")
     notes = [declared.note()]
     if example:
         notes.append(Note(f"for example {', '.join(example)} breaks it"))

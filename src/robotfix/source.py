@@ -47,7 +47,7 @@ class SourceFile:
 
     @staticmethod
     def from_text(path: str, text: str) -> SourceFile:
-        source = SourceFile(path, text, lines=text.splitlines())
+        source = SourceFile(path, text, lines=_LINE_BREAK.split(text))
         try:
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")  # SyntaxWarning in user code is theirs
@@ -80,7 +80,19 @@ class SourceFile:
         return Span(line, col, end_line, end)
 
     def segment(self, node: ast.AST) -> str | None:
-        return ast.get_source_segment(self.text, node)
+        """The source text of a node (as ast.get_source_segment, without re-splitting
+        the whole file on every call)."""
+        line, end_line = getattr(node, "lineno", None), getattr(node, "end_lineno", None)
+        col, end_col = getattr(node, "col_offset", None), getattr(node, "end_col_offset", None)
+        if line is None or end_line is None or col is None or end_col is None:
+            return None
+        if not 1 <= line <= end_line <= len(self.lines):
+            return None
+        if line == end_line:
+            return _byte_slice(self.lines[line - 1], col, end_col)
+        first = _byte_slice(self.lines[line - 1], col, None)
+        last = _byte_slice(self.lines[end_line - 1], 0, end_col)
+        return "\n".join([first, *self.lines[line:end_line - 1], last])
 
     def statement_text(self, node: ast.AST) -> str:
         """The first line of a statement's source, for messages; an annotated
@@ -98,6 +110,15 @@ class SourceFile:
             return False
         codes = self.suppressions[diag.span.line]
         return codes is None or diag.code in codes or diag.rule.name in codes
+
+
+_LINE_BREAK = re.compile(r"\r\n|\r|\n")  # the line breaks ast counts
+
+
+def _byte_slice(line: str, start: int, end: int | None) -> str:
+    if line.isascii():
+        return line[start:end]
+    return line.encode("utf-8")[start:end].decode("utf-8", errors="replace")
 
 
 def _decode(data: bytes) -> str:

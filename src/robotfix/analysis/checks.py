@@ -62,7 +62,7 @@ class Checker:
         return False
 
     def _describe(self, ident: int) -> str:
-        return self.ctx.sym_names.get(ident, f"value #{ident}")
+        return self.ctx.describe(ident)
 
     def report_uninit(self, value: Value, site: ast.AST) -> bool:
         if value.uninit is None:

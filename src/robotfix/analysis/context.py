@@ -46,7 +46,7 @@ class FileContext:
         self.catalog = catalog
         self.discharge = discharge
         self.diagnostics: list[Diagnostic] = []
-        self.sym_names: dict[int, str] = {}
+        self.sym_names: dict[int, str | ast.AST] = {}  # text, or a node to quote
         self._next = 0
         self.imports: dict[str, str] = {}  # local name -> qualified name
         self.star_import = False
@@ -57,11 +57,20 @@ class FileContext:
         self._next += 1
         return self._next
 
-    def fresh(self, kind: str, description: str, unit: object = None) -> Value:
-        """An unknown value of `kind`, named `description` in counterexamples."""
+    def fresh(self, kind: str, description: str | ast.AST, unit: object = None) -> Value:
+        """An unknown value of `kind`, named `description` (or the source of a node)
+        in counterexamples."""
         ident = self.fresh_id()
         self.sym_names[ident] = description
         return Value(kind, A.Sym(ident, sort_of(kind)), unit)  # type: ignore[arg-type]
+
+    def describe(self, ident: int) -> str:
+        found = self.sym_names.get(ident)
+        if isinstance(found, ast.AST):
+            text = self.source.segment(found) or ""
+            return f"`{text}`" if text and len(text) < 40 and "\n" not in text \
+                else "an expression"
+        return found or f"value #{ident}"
 
     # -- reporting -----------------------------------------------------------
     def report(self, diag: Diagnostic, once: tuple[object, ...] | None = None) -> None:

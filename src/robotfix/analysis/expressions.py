@@ -57,8 +57,7 @@ class ExpressionEvaluator:
                 self.eval(child, state)
 
     def unknown(self, node: ast.AST, kind: str = "unknown", unit: Unit | None = None) -> Value:
-        text = self.ctx.source.segment(node) or "an expression"
-        return self.ctx.fresh(kind, f"`{text}`" if len(text) < 40 else "an expression", unit)
+        return self.ctx.fresh(kind, node, unit)
 
     # -- leaves --------------------------------------------------------------
     def eval_Constant(self, node: ast.Constant, state: State) -> Value:

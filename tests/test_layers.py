@@ -1,0 +1,52 @@
+"""Layers import downward only, and each third-party library stays behind its gate."""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+SRC = Path(__file__).parent.parent / "src" / "robotfix"
+GATES = {
+    "z3": ("smt/",),
+    "lark": ("annotations/parser.py",),
+    "pint": ("annotations/units.py",),
+    "rosbags": ("ros/catalog.py",),
+    "pygls": ("lsp/",),
+}
+# module prefix -> what it must not import
+FORBIDDEN = {
+    "diagnostics.py": ("robotfix.",),
+    "annotations/": ("robotfix.analysis", "robotfix.smt", "robotfix.ros", "robotfix.api",
+                     "robotfix.report", "robotfix.cli"),
+    "ros/": ("robotfix.analysis", "robotfix.smt", "robotfix.api", "robotfix.report",
+             "robotfix.cli"),
+    "analysis/": ("robotfix.smt", "robotfix.api", "robotfix.report", "robotfix.cli"),
+    "smt/": ("robotfix.api", "robotfix.report", "robotfix.cli", "robotfix.ros"),
+    "report/": ("robotfix.analysis", "robotfix.smt", "robotfix.api", "robotfix.cli"),
+}
+
+
+def imports_of(path: Path) -> list[str]:
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    found = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            found.extend(alias.name for alias in node.names)
+        elif isinstance(node, ast.ImportFrom) and node.module and not node.level:
+            found.append(node.module)
+    return found
+
+
+def test_layers_import_downward_and_libraries_stay_behind_their_gates() -> None:
+    problems = []
+    for path in sorted(SRC.rglob("*.py")):
+        rel = path.relative_to(SRC).as_posix()
+        for name in imports_of(path):
+            top = name.split(".")[0]
+            if top in GATES and not rel.startswith(GATES[top]):
+                problems.append(f"{rel} imports {name} outside its gate")
+            for prefix, banned in FORBIDDEN.items():
+                if rel.startswith(prefix) and name.startswith(banned) and \
+                        not name.startswith("robotfix." + rel.split("/")[0]):
+                    problems.append(f"{rel} imports {name}")
+    assert not problems, "\n".join(problems)

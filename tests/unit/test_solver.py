@@ -1,0 +1,33 @@
+"""The two certainty questions on hand-built VCs."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+from robotfix.annotations import ast as A
+from robotfix.analysis.vc import VC, Proved, Unproven, Violated
+from robotfix.smt.solver import check
+
+X = A.Sym(1, "real")
+
+
+def num(n: int) -> A.Num:
+    return A.Num(Fraction(n), True)
+
+
+def test_proved_violated_unproven() -> None:
+    assert check(VC((A.Binary("<", X, num(1)),), A.Binary("<", X, num(2)))) == Proved()
+    violated = check(VC((A.Binary("==", X, num(5)),), A.Binary("<", X, num(2)), (X,)))
+    assert isinstance(violated, Violated) and violated.probe_values == ("5",)
+    assert isinstance(check(VC((), A.Binary("<", X, num(2)))), Unproven)
+
+
+def test_sort_confusion_weakens_never_refutes() -> None:
+    text = A.Str("a")
+    assert not isinstance(check(VC((), A.Binary("<", text, num(2)))), Violated)
+
+
+def test_nonlinear_goal_gives_a_verdict() -> None:
+    y = A.Sym(2, "real")
+    goal = A.Binary(">", A.Binary("*", X, y), A.Binary("*", X, A.Binary("*", y, y)))
+    assert check(VC((), goal), rlimit=50_000) is not None
