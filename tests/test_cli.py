@@ -91,3 +91,26 @@ def test_suppression_comment(project: Path) -> None:
 def test_version_and_rules(project: Path) -> None:
     assert run("--version", cwd=project).stdout.startswith("robotfix ")
     assert "RF101  refinement-violated" in run("rules", cwd=project).stdout
+
+
+def test_unreadable_file_is_reported_and_the_run_goes_on(project: Path) -> None:
+    (project / "gone.py").symlink_to(project / "missing-target.py")
+    (project / "latin.py").write_bytes(b"\xff\xfe\xfa = 1\n")
+    result = run("check", ".", cwd=project)
+    assert result.returncode == 2
+    assert "gone.py:1:1: error[RF003]" in result.stdout
+    assert "latin.py:1:1: error[RF003]" in result.stdout
+    assert "a.py:2:1: error[RF101]" in result.stdout
+
+
+def test_internal_error_names_the_file_without_a_traceback(project: Path) -> None:
+    script = ("import sys, robotfix.analysis.interpreter as i\n"
+              "def boom(ctx): raise RuntimeError('boom')\n"
+              "i.analyze_module = boom\n"
+              "from robotfix.cli import main\n"
+              "sys.exit(main(['check', 'sub/c.py', 'a.py']))\n")
+    result = subprocess.run([sys.executable, "-c", script], cwd=project, capture_output=True,
+                            text=True, timeout=120)
+    assert result.returncode == 2
+    assert "internal error while checking a.py: RuntimeError: boom" in result.stderr
+    assert "Traceback" not in result.stderr

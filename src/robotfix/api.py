@@ -25,7 +25,8 @@ INTERFACE_SUFFIXES = (".msg", ".srv", ".action")
 @dataclass
 class InternalError:
     path: str
-    detail: str
+    summary: str  # one line: the exception
+    detail: str  # the traceback, shown only on request
 
 
 @dataclass
@@ -72,8 +73,9 @@ def check_paths(paths: list[Path], config: Config) -> Result:
             continue
         try:
             result.diagnostics.extend(_check(SourceFile.from_bytes(str(file), data), catalog))
-        except Exception:  # a fault of ours: report it, go on with the other files
-            result.internal_errors.append(InternalError(str(file), traceback.format_exc()))
+        except Exception as err:  # a fault of ours: report it, go on with the other files
+            summary = f"{type(err).__name__}: {err}"
+            result.internal_errors.append(InternalError(str(file), summary, traceback.format_exc()))
     result.diagnostics = _finish(result.diagnostics)
     _save_caches(catalog)
     result.seconds = time.perf_counter() - started
@@ -114,7 +116,7 @@ def python_files(paths: list[Path]) -> list[Path]:
     for path in paths:
         if path.is_dir():
             found.extend(p for p in sorted(path.rglob("*.py"))
-                         if p.is_file() and not _hidden(p.relative_to(path)))
+                         if (p.is_file() or p.is_symlink()) and not _hidden(p.relative_to(path)))
         else:
             found.append(path)
     return sorted(dict.fromkeys(found))

@@ -7,6 +7,7 @@ Exit status: 0 no errors (warnings allowed unless --strict), 1 errors found,
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 from pathlib import Path
 
@@ -84,8 +85,13 @@ def run_check(args: argparse.Namespace) -> int:
     errors, warnings = result.count(Severity.ERROR), result.count(Severity.WARNING)
     _print(result, settings.output_format, errors, warnings)
     for failure in result.internal_errors:
-        print(f"robotfix: internal error while checking {failure.path}:\n{failure.detail}",
+        print(f"robotfix: internal error while checking {failure.path}: {failure.summary}",
               file=sys.stderr)
+        if os.environ.get("ROBOTFIX_DEBUG"):
+            print(failure.detail, file=sys.stderr)
+    if result.internal_errors and not os.environ.get("ROBOTFIX_DEBUG"):
+        print("robotfix: the other files were checked; set ROBOTFIX_DEBUG=1 for the "
+              "traceback, and please report it", file=sys.stderr)
     unreadable = any(d.code == "RF003" for d in result.diagnostics)
     if result.internal_errors or unreadable:
         return EXIT_FAILURE
