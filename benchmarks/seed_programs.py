@@ -21,8 +21,13 @@ SEED = ROOT / "tests" / "cases" / "seed"
 
 def timed(args: list[str], env: dict[str, str] | None = None) -> float:
     started = time.perf_counter()
-    subprocess.run([sys.executable, "-m", "robotfix", *args], capture_output=True,
-                   env=env, check=False, cwd=ROOT)
+    subprocess.run(
+        [sys.executable, "-m", "robotfix", *args],
+        capture_output=True,
+        env=env,
+        check=False,
+        cwd=ROOT,
+    )
     return time.perf_counter() - started
 
 
@@ -43,12 +48,18 @@ def main() -> None:
         # one invocation, so one msg path: each case's own msg/ folder would clash
         # (they annotate Twist differently); the 40 files still parse and check.
         all_runs.append(timed(every))
-    print(f"one seed program, new process (median of {len(warm)}): "
-          f"{statistics.median(warm):.3f} s")
-    print(f"one seed program, new process, empty cache (median of {len(cold)}): "
-          f"{statistics.median(cold):.3f} s")
-    print(f"all 40 seed programs in one invocation (median of {len(all_runs)}): "
-          f"{statistics.median(all_runs):.3f} s")
+    print(
+        f"one seed program, new process (median of {len(warm)}): "
+        f"{statistics.median(warm):.3f} s"
+    )
+    print(
+        f"one seed program, new process, empty cache (median of {len(cold)}): "
+        f"{statistics.median(cold):.3f} s"
+    )
+    print(
+        f"all 40 seed programs in one invocation (median of {len(all_runs)}): "
+        f"{statistics.median(all_runs):.3f} s"
+    )
 
 
 if __name__ == "__main__":

@@ -6,7 +6,7 @@ A `_xfail` suffix marks a known failure (it must fail, and fails the run once fi
 
 from __future__ import annotations
 
-from functools import lru_cache
+from functools import cache
 from pathlib import Path
 
 import pytest
@@ -19,7 +19,7 @@ from robotfix.testing.expectations import compare, read_expectations
 CASES = Path(__file__).parent / "cases"
 
 
-@lru_cache(maxsize=None)
+@cache
 def catalog_for(folder: Path) -> MsgCatalog:
     folders = [CASES / "msgs", folder / "msg"]
     catalog = MsgCatalog(interface_files([f for f in folders if f.is_dir()]))

@@ -14,8 +14,13 @@ WARN = 'from typing import Annotated\ndef f(v):\n    x: Annotated[int, "_ < 2"] 
 
 
 def run(*args: str, cwd: Path) -> subprocess.CompletedProcess[str]:
-    return subprocess.run([sys.executable, "-m", "robotfix", *args], cwd=cwd,
-                          capture_output=True, text=True, timeout=120)
+    return subprocess.run(
+        [sys.executable, "-m", "robotfix", *args],
+        cwd=cwd,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
 
 
 @pytest.fixture
@@ -31,7 +36,9 @@ def test_text_output_and_exit_status(project: Path) -> None:
     result = run("check", ".", cwd=project)
     assert result.returncode == 1
     first = result.stdout.splitlines()[0]
-    assert first.startswith("a.py:2:1: error[RF101]: `timeout = 200` violates `timeout < 200`")
+    assert first.startswith(
+        "a.py:2:1: error[RF101]: `timeout = 200` violates `timeout < 200`"
+    )
     assert "sub/b.py:3:5: warning[RF102]" in result.stdout
     assert result.stdout.rstrip().endswith("Found 1 error and 1 warning in 3 files.")
 
@@ -47,14 +54,30 @@ def test_json_has_the_spec_keys(project: Path) -> None:
     assert set(data) == {"diagnostics", "summary"}
     assert set(data["summary"]) == {"files", "errors", "warnings", "seconds"}
     first = data["diagnostics"][0]
-    assert set(first) == {"path", "line", "column", "end_line", "end_column", "severity",
-                          "code", "message", "notes"}
-    assert (first["path"], first["line"], first["column"], first["code"]) == ("a.py", 2, 1, "RF101")
+    assert set(first) == {
+        "path",
+        "line",
+        "column",
+        "end_line",
+        "end_column",
+        "severity",
+        "code",
+        "message",
+        "notes",
+    }
+    assert (first["path"], first["line"], first["column"], first["code"]) == (
+        "a.py",
+        2,
+        1,
+        "RF101",
+    )
     assert set(first["notes"][0]) == {"path", "line", "message"}
 
 
 def test_output_is_deterministic(project: Path) -> None:
-    assert run("check", ".", cwd=project).stdout == run("check", ".", cwd=project).stdout
+    assert (
+        run("check", ".", cwd=project).stdout == run("check", ".", cwd=project).stdout
+    )
 
 
 def test_missing_path_is_a_usage_error(project: Path) -> None:
@@ -73,18 +96,29 @@ def test_bad_files_do_not_stop_the_run(project: Path) -> None:
 
 def test_msg_path_and_pyproject(project: Path) -> None:
     (project / "interfaces").mkdir()
-    (project / "interfaces" / "Int32.msg").write_text("[std_msgs/Int32]:\nint32 data #RobotFix# data > 0\n")
-    (project / "d.py").write_text("from std_msgs.msg import Int32\nm = Int32()\nm.data = -1\n")
-    assert "d.py:3:1: error[RF101]" in run("check", "d.py", "--msg-path", "interfaces", cwd=project).stdout
-    (project / "pyproject.toml").write_text('[tool.robotfix]\nmsg-paths = ["interfaces"]\n')
+    (project / "interfaces" / "Int32.msg").write_text(
+        "[std_msgs/Int32]:\nint32 data #RobotFix# data > 0\n"
+    )
+    (project / "d.py").write_text(
+        "from std_msgs.msg import Int32\nm = Int32()\nm.data = -1\n"
+    )
+    assert (
+        "d.py:3:1: error[RF101]"
+        in run("check", "d.py", "--msg-path", "interfaces", cwd=project).stdout
+    )
+    (project / "pyproject.toml").write_text(
+        '[tool.robotfix]\nmsg-paths = ["interfaces"]\n'
+    )
     assert "d.py:3:1: error[RF101]" in run("check", "d.py", cwd=project).stdout
-    (project / "pyproject.toml").write_text('[tool.robotfix]\nmsg-paths = [\n')
+    (project / "pyproject.toml").write_text("[tool.robotfix]\nmsg-paths = [\n")
     broken = run("check", "d.py", cwd=project)
     assert broken.returncode == 2 and "pyproject.toml:" in broken.stderr
 
 
 def test_suppression_comment(project: Path) -> None:
-    (project / "a.py").write_text(BUGGY.replace("= 200\n", "= 200  # robotfix: ignore[RF101]\n"))
+    (project / "a.py").write_text(
+        BUGGY.replace("= 200\n", "= 200  # robotfix: ignore[RF101]\n")
+    )
     assert run("check", "a.py", cwd=project).returncode == 0
 
 
@@ -104,13 +138,20 @@ def test_unreadable_file_is_reported_and_the_run_goes_on(project: Path) -> None:
 
 
 def test_internal_error_names_the_file_without_a_traceback(project: Path) -> None:
-    script = ("import sys, robotfix.analysis.interpreter as i\n"
-              "def boom(ctx): raise RuntimeError('boom')\n"
-              "i.analyze_module = boom\n"
-              "from robotfix.cli import main\n"
-              "sys.exit(main(['check', 'sub/c.py', 'a.py']))\n")
-    result = subprocess.run([sys.executable, "-c", script], cwd=project, capture_output=True,
-                            text=True, timeout=120)
+    script = (
+        "import sys, robotfix.analysis.interpreter as i\n"
+        "def boom(ctx): raise RuntimeError('boom')\n"
+        "i.analyze_module = boom\n"
+        "from robotfix.cli import main\n"
+        "sys.exit(main(['check', 'sub/c.py', 'a.py']))\n"
+    )
+    result = subprocess.run(
+        [sys.executable, "-c", script],
+        cwd=project,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert result.returncode == 2
     assert "internal error while checking a.py: RuntimeError: boom" in result.stderr
     assert "Traceback" not in result.stderr

@@ -16,10 +16,21 @@ GATES = {
 # module prefix -> what it must not import
 FORBIDDEN = {
     "diagnostics.py": ("robotfix.",),
-    "annotations/": ("robotfix.analysis", "robotfix.smt", "robotfix.ros", "robotfix.api",
-                     "robotfix.report", "robotfix.cli"),
-    "ros/": ("robotfix.analysis", "robotfix.smt", "robotfix.api", "robotfix.report",
-             "robotfix.cli"),
+    "annotations/": (
+        "robotfix.analysis",
+        "robotfix.smt",
+        "robotfix.ros",
+        "robotfix.api",
+        "robotfix.report",
+        "robotfix.cli",
+    ),
+    "ros/": (
+        "robotfix.analysis",
+        "robotfix.smt",
+        "robotfix.api",
+        "robotfix.report",
+        "robotfix.cli",
+    ),
     "analysis/": ("robotfix.smt", "robotfix.api", "robotfix.report", "robotfix.cli"),
     "smt/": ("robotfix.api", "robotfix.report", "robotfix.cli", "robotfix.ros"),
     "report/": ("robotfix.analysis", "robotfix.smt", "robotfix.api", "robotfix.cli"),
@@ -46,7 +57,10 @@ def test_layers_import_downward_and_libraries_stay_behind_their_gates() -> None:
             if top in GATES and not rel.startswith(GATES[top]):
                 problems.append(f"{rel} imports {name} outside its gate")
             for prefix, banned in FORBIDDEN.items():
-                if rel.startswith(prefix) and name.startswith(banned) and \
-                        not name.startswith("robotfix." + rel.split("/")[0]):
+                if (
+                    rel.startswith(prefix)
+                    and name.startswith(banned)
+                    and not name.startswith("robotfix." + rel.split("/")[0])
+                ):
                     problems.append(f"{rel} imports {name}")
     assert not problems, "\n".join(problems)

@@ -1,3 +1,3 @@
-"""RobotFix: a static checker for units, frames and refinements in ROS Python programs."""
+"""RobotFix: static checking of units, frames and refinements in ROS Python code."""
 
 __version__ = "0.1.0"

@@ -46,12 +46,18 @@ def discharge(vc: VC) -> Verdict:
     return check(vc)
 
 
-def check_source(text: str, path: str, config: Config | None = None,
-                 catalog: MsgCatalog | None = None) -> list[Diagnostic]:
+def check_source(
+    text: str,
+    path: str,
+    config: Config | None = None,
+    catalog: MsgCatalog | None = None,
+) -> list[Diagnostic]:
     """Diagnostics for one Python source text (no file system access but .msg files)."""
     config = config or Config()
     if catalog is None:
-        catalog = MsgCatalog(interface_files(list(config.msg_paths)), rep103=config.rep103)
+        catalog = MsgCatalog(
+            interface_files(list(config.msg_paths)), rep103=config.rep103
+        )
     return _finish(_check(SourceFile.from_text(path, text), catalog))
 
 
@@ -69,13 +75,21 @@ def check_paths(paths: list[Path], config: Config) -> Result:
         try:
             data = file.read_bytes()
         except OSError as err:
-            result.diagnostics.append(messages.unreadable(str(file), f"cannot read: {err.strerror}"))
+            result.diagnostics.append(
+                messages.unreadable(str(file), f"cannot read: {err.strerror}")
+            )
             continue
         try:
-            result.diagnostics.extend(_check(SourceFile.from_bytes(str(file), data), catalog))
-        except Exception as err:  # a fault of ours: report it, go on with the other files
+            result.diagnostics.extend(
+                _check(SourceFile.from_bytes(str(file), data), catalog)
+            )
+        except (
+            Exception
+        ) as err:  # a fault of ours: report it, go on with the other files
             summary = f"{type(err).__name__}: {err}"
-            result.internal_errors.append(InternalError(str(file), summary, traceback.format_exc()))
+            result.internal_errors.append(
+                InternalError(str(file), summary, traceback.format_exc())
+            )
     result.diagnostics = _finish(result.diagnostics)
     _save_caches(catalog)
     result.seconds = time.perf_counter() - started
@@ -95,8 +109,10 @@ def _check(source: SourceFile, catalog: MsgCatalog) -> list[Diagnostic]:
 
 def catalog_problems(catalog: MsgCatalog) -> list[Diagnostic]:
     catalog.lookup("std_msgs/Header")  # loads the interface files
-    return [messages.annotation_problem(p.path, p.line, p.col, p.rule, p.message)
-            for p in catalog.problems]
+    return [
+        messages.annotation_problem(p.path, p.line, p.col, p.rule, p.message)
+        for p in catalog.problems
+    ]
 
 
 def _finish(diagnostics: list[Diagnostic]) -> list[Diagnostic]:
@@ -115,8 +131,11 @@ def python_files(paths: list[Path]) -> list[Path]:
     found: list[Path] = []
     for path in paths:
         if path.is_dir():
-            found.extend(p for p in sorted(path.rglob("*.py"))
-                         if (p.is_file() or p.is_symlink()) and not _hidden(p.relative_to(path)))
+            found.extend(
+                p
+                for p in sorted(path.rglob("*.py"))
+                if (p.is_file() or p.is_symlink()) and not _hidden(p.relative_to(path))
+            )
         else:
             found.append(path)
     return sorted(dict.fromkeys(found))
@@ -128,8 +147,11 @@ def interface_files(folders: list[Path]) -> list[Path]:
         if folder.is_file() and folder.suffix in INTERFACE_SUFFIXES:
             found.append(folder)
         elif folder.is_dir():
-            found.extend(p for p in sorted(folder.rglob("*")) if p.suffix in INTERFACE_SUFFIXES
-                         and p.is_file())
+            found.extend(
+                p
+                for p in sorted(folder.rglob("*"))
+                if p.suffix in INTERFACE_SUFFIXES and p.is_file()
+            )
     return found
 
 
@@ -141,14 +163,22 @@ def ros_interface_folders(paths: list[Path]) -> list[Path]:
         candidates = [root, *root.parents] if path.is_file() else [root]
         packages = [c for c in candidates if (c / "package.xml").is_file()][:1]
         if path.is_dir():
-            packages += [p.parent for p in sorted(path.rglob("package.xml"))
-                         if not _hidden(p.relative_to(path))]
+            packages += [
+                p.parent
+                for p in sorted(path.rglob("package.xml"))
+                if not _hidden(p.relative_to(path))
+            ]
         for package in packages:
-            folders.extend(package / name for name in ("msg", "srv", "action")
-                           if (package / name).is_dir())
+            folders.extend(
+                package / name
+                for name in ("msg", "srv", "action")
+                if (package / name).is_dir()
+            )
     return sorted(dict.fromkeys(folders))
 
 
 def _hidden(relative: Path) -> bool:
-    return any(part.startswith(".") or part in ("__pycache__", "node_modules")
-               for part in relative.parts[:-1])
+    return any(
+        part.startswith(".") or part in ("__pycache__", "node_modules")
+        for part in relative.parts[:-1]
+    )

@@ -19,19 +19,42 @@ EXIT_OK, EXIT_FOUND, EXIT_FAILURE = 0, 1, 2
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="robotfix",
-        description="Static checker for units, frames and refinements in ROS Python code.")
-    parser.add_argument("--version", action="version", version=f"robotfix {__version__}")
+        description="Check units, frames and refinements in ROS Python code.",
+    )
+    parser.add_argument(
+        "--version", action="version", version=f"robotfix {__version__}"
+    )
     commands = parser.add_subparsers(dest="command", metavar="COMMAND")
     check = commands.add_parser("check", help="check Python files and folders")
-    check.add_argument("paths", nargs="*", type=Path, metavar="PATH",
-                       help="files or folders (default: the current folder)")
-    check.add_argument("--msg-path", action="append", type=Path, default=[], metavar="DIR",
-                       help="a folder (or file) of .msg/.srv/.action files; repeatable")
+    check.add_argument(
+        "paths",
+        nargs="*",
+        type=Path,
+        metavar="PATH",
+        help="files or folders (default: the current folder)",
+    )
+    check.add_argument(
+        "--msg-path",
+        action="append",
+        type=Path,
+        default=[],
+        metavar="DIR",
+        help="a folder (or file) of .msg/.srv/.action files; repeatable",
+    )
     check.add_argument("--format", choices=("text", "json"), default=None)
-    check.add_argument("--strict", action="store_true", default=None,
-                       help="warnings also make the exit status 1")
-    check.add_argument("--no-rep103", dest="rep103", action="store_false", default=None,
-                       help="do not assume the REP 103 units of standard messages")
+    check.add_argument(
+        "--strict",
+        action="store_true",
+        default=None,
+        help="warnings also make the exit status 1",
+    )
+    check.add_argument(
+        "--no-rep103",
+        dest="rep103",
+        action="store_false",
+        default=None,
+        help="do not assume the REP 103 units of standard messages",
+    )
     commands.add_parser("rules", help="list every diagnostic code")
     return parser
 
@@ -67,7 +90,9 @@ def run_check(args: argparse.Namespace) -> int:
     missing = [p for p in paths if not p.exists()]
     if missing:
         for path in missing:
-            print(f"robotfix: error: {path}: no such file or directory", file=sys.stderr)
+            print(
+                f"robotfix: error: {path}: no such file or directory", file=sys.stderr
+            )
         return EXIT_FAILURE
     try:
         settings = config.load(paths[0])
@@ -85,13 +110,19 @@ def run_check(args: argparse.Namespace) -> int:
     errors, warnings = result.count(Severity.ERROR), result.count(Severity.WARNING)
     _print(result, settings.output_format, errors, warnings)
     for failure in result.internal_errors:
-        print(f"robotfix: internal error while checking {failure.path}: {failure.summary}",
-              file=sys.stderr)
+        print(
+            f"robotfix: internal error while checking {failure.path}: "
+            f"{failure.summary}",
+            file=sys.stderr,
+        )
         if os.environ.get("ROBOTFIX_DEBUG"):
             print(failure.detail, file=sys.stderr)
     if result.internal_errors and not os.environ.get("ROBOTFIX_DEBUG"):
-        print("robotfix: the other files were checked; set ROBOTFIX_DEBUG=1 for the "
-              "traceback, and please report it", file=sys.stderr)
+        print(
+            "robotfix: the other files were checked; set ROBOTFIX_DEBUG=1 for the "
+            "traceback, and please report it",
+            file=sys.stderr,
+        )
     unreadable = any(d.code == "RF003" for d in result.diagnostics)
     if result.internal_errors or unreadable:
         return EXIT_FAILURE
@@ -107,8 +138,11 @@ def _print(result: object, fmt: str, errors: int, warnings: int) -> None:
     if fmt == "json":
         from robotfix.report import json as json_report
 
-        sys.stdout.write(json_report.render(result.diagnostics, result.files, errors,
-                                            warnings, result.seconds))
+        sys.stdout.write(
+            json_report.render(
+                result.diagnostics, result.files, errors, warnings, result.seconds
+            )
+        )
         return
     from robotfix.report import text
 
@@ -117,10 +151,16 @@ def _print(result: object, fmt: str, errors: int, warnings: int) -> None:
     def source_line(path: str, line: int) -> str | None:
         if path not in lines:
             try:
-                lines[path] = Path(path).read_text(encoding="utf-8", errors="replace").splitlines()
+                lines[path] = (
+                    Path(path)
+                    .read_text(encoding="utf-8", errors="replace")
+                    .splitlines()
+                )
             except OSError:
                 lines[path] = []
         found = lines[path]
         return found[line - 1] if 0 < line <= len(found) else None
 
-    sys.stdout.write(text.render(result.diagnostics, source_line, result.files, errors, warnings))
+    sys.stdout.write(
+        text.render(result.diagnostics, source_line, result.files, errors, warnings)
+    )

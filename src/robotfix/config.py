@@ -70,10 +70,14 @@ def _apply(config: Config, table: Any, path: Path) -> Config:
         raise ConfigError(f"{path}: [tool.robotfix] must be a table")
     unknown = sorted(set(table) - KEYS)
     if unknown:
-        raise ConfigError(f"{path}: unknown [tool.robotfix] setting `{unknown[0]}` "
-                          f"(known: {', '.join(sorted(KEYS))})")
+        raise ConfigError(
+            f"{path}: unknown [tool.robotfix] setting `{unknown[0]}` "
+            f"(known: {', '.join(sorted(KEYS))})"
+        )
     msg_paths = table.get("msg-paths", [])
-    if not isinstance(msg_paths, list) or not all(isinstance(p, str) for p in msg_paths):
+    if not isinstance(msg_paths, list) or not all(
+        isinstance(p, str) for p in msg_paths
+    ):
         raise ConfigError(f"{path}: `msg-paths` must be a list of folder names")
     for key in ("strict", "rep103"):
         if key in table and not isinstance(table[key], bool):

@@ -42,46 +42,84 @@ def syntax_error(path: str, span: Span, detail: str, rule: Rule) -> Diagnostic:
     return Diagnostic(rule, path, span, f"not valid Python 3: {detail}")
 
 
-def annotation_problem(path: str, line: int, col: int, rule: Rule, detail: str) -> Diagnostic:
+def annotation_problem(
+    path: str, line: int, col: int, rule: Rule, detail: str
+) -> Diagnostic:
     return Diagnostic(rule, path, Span.point(line, col), detail)
 
 
 def refinement_violated(
-    path: str, span: Span, stmt: str, predicate: str, subject: str, value: str | None,
+    path: str,
+    span: Span,
+    stmt: str,
+    predicate: str,
+    subject: str,
+    value: str | None,
     declared: Declared,
 ) -> Diagnostic:
     notes = [declared.note()]
     if value is not None:
         notes.append(Note(f"here {subject} = {value}"))
     return Diagnostic(
-        rules.REFINEMENT_VIOLATED, path, span,
-        f"`{stmt}` violates `{predicate}`{_owner(declared)}", tuple(notes))
+        rules.REFINEMENT_VIOLATED,
+        path,
+        span,
+        f"`{stmt}` violates `{predicate}`{_owner(declared)}",
+        tuple(notes),
+    )
 
 
 def refinement_unproven(
-    path: str, span: Span, stmt: str, predicate: str, subject: str,
-    unknowns: list[str], example: list[str], declared: Declared,
+    path: str,
+    span: Span,
+    stmt: str,
+    predicate: str,
+    subject: str,
+    unknowns: list[str],
+    example: list[str],
+    declared: Declared,
 ) -> Diagnostic:
-    why = (f"it does not hold for every possible value of {_join(unknowns)}" if unknowns
-           else "it depends on values RobotFix cannot follow")
+    why = (
+        f"it does not hold for every possible value of {_join(unknowns)}"
+        if unknowns
+        else "it depends on values RobotFix cannot follow"
+    )
     notes = [declared.note()]
     if example:
         notes.append(Note(f"for example {', '.join(example)} breaks it"))
-    notes.append(Note(f"add a refinement to the inputs, or a check such as `assert` before {subject} is set"))
+    notes.append(
+        Note(
+            f"add a refinement to the inputs, or a check such as `assert` before "
+            f"{subject} is set"
+        )
+    )
     return Diagnostic(
-        rules.REFINEMENT_UNPROVEN, path, span,
+        rules.REFINEMENT_UNPROVEN,
+        path,
+        span,
         f"cannot prove that `{stmt}` keeps `{predicate}`{_owner(declared)}: {why}",
-        tuple(notes))
+        tuple(notes),
+    )
 
 
-def solver_unknown(path: str, span: Span, stmt: str, predicate: str, reason: str) -> Diagnostic:
+def solver_unknown(
+    path: str, span: Span, stmt: str, predicate: str, reason: str
+) -> Diagnostic:
     return Diagnostic(
-        rules.SOLVER_UNKNOWN, path, span,
-        f"could not decide whether `{stmt}` keeps `{predicate}` (solver: {reason})")
+        rules.SOLVER_UNKNOWN,
+        path,
+        span,
+        f"could not decide whether `{stmt}` keeps `{predicate}` (solver: {reason})",
+    )
 
 
 def unit_mismatch(
-    path: str, span: Span, stmt: str, target: str, expected: Unit, got: Unit,
+    path: str,
+    span: Span,
+    stmt: str,
+    target: str,
+    expected: Unit,
+    got: Unit,
     declared: Declared,
 ) -> Diagnostic:
     message = f"`{stmt}` gives {target} a value in {got}, but {target} is in {expected}"
@@ -92,7 +130,9 @@ def unit_mismatch(
     return Diagnostic(rules.UNIT_MISMATCH, path, span, message, tuple(notes))
 
 
-def operand_units(path: str, span: Span, expr: str, op: str, left: Unit, right: Unit) -> Diagnostic:
+def operand_units(
+    path: str, span: Span, expr: str, op: str, left: Unit, right: Unit
+) -> Diagnostic:
     verb = {"+": "add", "-": "subtract"}.get(op, "compare")
     message = f"`{expr}`: cannot {verb} {left} and {right}"
     fix = conversion(right, left)
@@ -110,7 +150,10 @@ def conversion(got: Unit, expected: Unit) -> str:
         return ""
     if not math.isclose(got.offset, expected.offset):
         shift = (got.offset - expected.offset) / expected.factor
-        return f"convert {got} to {expected} by multiplying by {ratio:.6g} and adding {shift:.6g}"
+        return (
+            f"convert {got} to {expected} by multiplying by {ratio:.6g} "
+            f"and adding {shift:.6g}"
+        )
     angle = dict(got.dims).get("radian")
     if angle and math.isclose(ratio, math.pi / 180):
         return f"use math.radians() to convert {got} to {expected}"
@@ -121,33 +164,53 @@ def conversion(got: Unit, expected: Unit) -> str:
     return f"multiply by {ratio:.6g} to convert {got} to {expected}"
 
 
-def used_before_assignment(path: str, span: Span, stmt: str, name: str, declared: bool) -> Diagnostic:
+def used_before_assignment(
+    path: str, span: Span, stmt: str, name: str, declared: bool
+) -> Diagnostic:
     if declared:
         detail = f"`{name}`, which is declared but not assigned on this path"
     else:
         detail = f"`{name}`, which is not defined here"
     return Diagnostic(
-        rules.USED_BEFORE_ASSIGNMENT, path, span, f"`{stmt}` reads {detail}",
-        (Note(f"assign `{name}` before this line"),))
+        rules.USED_BEFORE_ASSIGNMENT,
+        path,
+        span,
+        f"`{stmt}` reads {detail}",
+        (Note(f"assign `{name}` before this line"),),
+    )
 
 
 def unset_field(
-    path: str, span: Span, stmt: str, field: str, default: str, predicate: str,
-    declared: Declared, publishing: bool,
+    path: str,
+    span: Span,
+    stmt: str,
+    field: str,
+    default: str,
+    predicate: str,
+    declared: Declared,
+    publishing: bool,
 ) -> Diagnostic:
     verb = "sends" if publishing else "reads"
     return Diagnostic(
-        rules.UNSET_FIELD_DEFAULT, path, span,
+        rules.UNSET_FIELD_DEFAULT,
+        path,
+        span,
         f"`{stmt}` {verb} `{field}`, which is never set: its ROS default {default} "
         f"violates `{predicate}`{_owner(declared)}",
-        (declared.note(), Note(f"set `{field}` before this line")))
+        (declared.note(), Note(f"set `{field}` before this line")),
+    )
 
 
-def base_type_mismatch(path: str, span: Span, stmt: str, target: str, expected: str, got: str) -> Diagnostic:
+def base_type_mismatch(
+    path: str, span: Span, stmt: str, target: str, expected: str, got: str
+) -> Diagnostic:
     return Diagnostic(
-        rules.BASE_TYPE_MISMATCH, path, span,
+        rules.BASE_TYPE_MISMATCH,
+        path,
+        span,
         f"`{stmt}` gives {target} a {got}, but {target} is declared {expected}",
-        (Note(f"convert explicitly, e.g. {expected}(...), if that is what you mean"),))
+        (Note(f"convert explicitly, e.g. {expected}(...), if that is what you mean"),),
+    )
 
 
 def _owner(declared: Declared) -> str:

@@ -50,7 +50,9 @@ UNKNOWN_NAME = Rule("RF503", "unknown-name", "Annotation names something not in 
 UNKNOWN_MESSAGE_TYPE = Rule(
     "RF504", "unknown-message-type", "Interface file names an unknown message type"
 )
-UNKNOWN_FIELD = Rule("RF505", "unknown-field", "Annotation names a field the message lacks")
+UNKNOWN_FIELD = Rule(
+    "RF505", "unknown-field", "Annotation names a field the message lacks"
+)
 MALFORMED_INTERFACE = Rule(
     "RF506", "malformed-interface-file", "Interface file line does not parse"
 )

@@ -16,7 +16,9 @@ from dataclasses import dataclass, field
 from robotfix import messages, rules
 from robotfix.diagnostics import Diagnostic, Span
 
-_SUPPRESS = re.compile(r"#\s*robotfix:\s*ignore(?:\[(?P<codes>[^\]]*)\])?", re.IGNORECASE)
+_SUPPRESS = re.compile(
+    r"#\s*robotfix:\s*ignore(?:\[(?P<codes>[^\]]*)\])?", re.IGNORECASE
+)
 # CPython's own words for Python 2 constructs (print and exec statements, `except
 # X, e`, `0777`, backticks, `<>`, `ur''`).
 _PY2_HINTS = (
@@ -25,7 +27,9 @@ _PY2_HINTS = (
     "leading zeros in decimal integer literals",
     "invalid syntax. Perhaps you forgot a comma?",
 )
-_PY2_TOKENS = re.compile(r"^\s*(print\s+[\"'\w]|exec\s+[\"']|raise\s+\w+\s*,)|`|<>", re.M)
+_PY2_TOKENS = re.compile(
+    r"^\s*(print\s+[\"'\w]|exec\s+[\"']|raise\s+\w+\s*,)|`|<>", re.M
+)
 
 
 @dataclass
@@ -42,7 +46,9 @@ class SourceFile:
         try:
             text = _decode(data)
         except (SyntaxError, UnicodeDecodeError, LookupError) as err:
-            return SourceFile(path, "", problem=messages.unreadable(path, f"cannot decode: {err}"))
+            return SourceFile(
+                path, "", problem=messages.unreadable(path, f"cannot decode: {err}")
+            )
         return SourceFile.from_text(path, text)
 
     @staticmethod
@@ -57,7 +63,11 @@ class SourceFile:
             return source
         except RecursionError:
             source.problem = messages.syntax_error(
-                path, Span.point(1), "nesting too deep for Python's parser", rules.PYTHON_SYNTAX_ERROR)
+                path,
+                Span.point(1),
+                "nesting too deep for Python's parser",
+                rules.PYTHON_SYNTAX_ERROR,
+            )
             return source
         source.suppressions = _suppressions(text)
         return source
@@ -68,7 +78,9 @@ class SourceFile:
             text = self.lines[line - 1]
             if text.isascii():
                 return byte_col
-            return len(text.encode("utf-8")[:byte_col].decode("utf-8", errors="replace"))
+            return len(
+                text.encode("utf-8")[:byte_col].decode("utf-8", errors="replace")
+            )
         return byte_col
 
     def span(self, node: ast.AST) -> Span:
@@ -82,8 +94,14 @@ class SourceFile:
     def segment(self, node: ast.AST) -> str | None:
         """The source text of a node (as ast.get_source_segment, without re-splitting
         the whole file on every call)."""
-        line, end_line = getattr(node, "lineno", None), getattr(node, "end_lineno", None)
-        col, end_col = getattr(node, "col_offset", None), getattr(node, "end_col_offset", None)
+        line, end_line = (
+            getattr(node, "lineno", None),
+            getattr(node, "end_lineno", None),
+        )
+        col, end_col = (
+            getattr(node, "col_offset", None),
+            getattr(node, "end_col_offset", None),
+        )
         if line is None or end_line is None or col is None or end_col is None:
             return None
         if not 1 <= line <= end_line <= len(self.lines):
@@ -92,7 +110,7 @@ class SourceFile:
             return _byte_slice(self.lines[line - 1], col, end_col)
         first = _byte_slice(self.lines[line - 1], col, None)
         last = _byte_slice(self.lines[end_line - 1], 0, end_col)
-        return "\n".join([first, *self.lines[line:end_line - 1], last])
+        return "\n".join([first, *self.lines[line : end_line - 1], last])
 
     def statement_text(self, node: ast.AST) -> str:
         """The first line of a statement's source, for messages; an annotated
@@ -129,7 +147,9 @@ def _decode(data: bytes) -> str:
 
 def _syntax_problem(path: str, text: str, err: SyntaxError | ValueError) -> Diagnostic:
     if isinstance(err, ValueError):  # e.g. NUL bytes
-        return messages.syntax_error(path, Span.point(1), str(err), rules.PYTHON_SYNTAX_ERROR)
+        return messages.syntax_error(
+            path, Span.point(1), str(err), rules.PYTHON_SYNTAX_ERROR
+        )
     line = err.lineno or 1
     col = max((err.offset or 1) - 1, 0)
     detail = err.msg
@@ -149,7 +169,8 @@ def _suppressions(text: str) -> dict[int, frozenset[str] | None]:
                 if match:
                     codes = match["codes"]
                     found[tok.start[0]] = (
-                        None if codes is None
+                        None
+                        if codes is None
                         else frozenset(c.strip() for c in codes.split(",") if c.strip())
                     )
     except (tokenize.TokenError, SyntaxError):

@@ -13,26 +13,43 @@ from robotfix.ros.msg import read_interface
 
 
 def test_both_header_forms_and_the_path() -> None:
-    assert read_interface(Path("x/T.msg"), "geometry_msgs/Twist.msg\n").sections[0].name \
+    assert (
+        read_interface(Path("x/T.msg"), "geometry_msgs/Twist.msg\n").sections[0].name
         == "geometry_msgs/Twist"
-    assert read_interface(Path("x/T.msg"), "[std_msgs/Int32]:\nint32 data\n").sections[0].name \
+    )
+    assert (
+        read_interface(Path("x/T.msg"), "[std_msgs/Int32]:\nint32 data\n")
+        .sections[0]
+        .name
         == "std_msgs/Int32"
-    assert read_interface(Path("my_pkg/msg/Cmd.msg"), "float64 v\n").sections[0].name \
+    )
+    assert (
+        read_interface(Path("my_pkg/msg/Cmd.msg"), "float64 v\n").sections[0].name
         == "my_pkg/Cmd"
+    )
 
 
 def test_annotations_standalone_and_end_of_line() -> None:
     text = "[p/M]:\nfloat64 a #RobotFix# a > 0\n#RobotFix# Unit(a) == 'm'\nint32 K=3\n"
     section = read_interface(Path("M.msg"), text).sections[0]
     assert [f.name for f in section.fields] == ["a"]
-    assert [(a.text, a.line) for a in section.annotations] == [("a > 0", 2), ("Unit(a) == 'm'", 3)]
+    assert [(a.text, a.line) for a in section.annotations] == [
+        ("a > 0", 2),
+        ("Unit(a) == 'm'", 3),
+    ]
 
 
 def test_service_and_action_sections() -> None:
     srv = read_interface(Path("p/srv/Add.srv"), "int64 a\n---\nint64 sum\n")
     assert [s.name for s in srv.sections] == ["p/Add_Request", "p/Add_Response"]
-    action = read_interface(Path("p/action/Go.action"), "int32 g\n---\nint32 r\n---\nint32 f\n")
-    assert [s.name for s in action.sections] == ["p/Go_Goal", "p/Go_Result", "p/Go_Feedback"]
+    action = read_interface(
+        Path("p/action/Go.action"), "int32 g\n---\nint32 r\n---\nint32 f\n"
+    )
+    assert [s.name for s in action.sections] == [
+        "p/Go_Goal",
+        "p/Go_Result",
+        "p/Go_Feedback",
+    ]
 
 
 def test_standard_messages_without_ros(tmp_path: Path) -> None:
@@ -46,13 +63,18 @@ def test_standard_messages_without_ros(tmp_path: Path) -> None:
 
 def test_annotation_problems_point_into_the_file(tmp_path: Path) -> None:
     path = tmp_path / "Twist.msg"
-    path.write_text('geometry_msgs/Twist.msg\nVector3 linear\n#RobotFix# linear.q > 0\n'
-                    '#RobotFix# Unit(linear.x) == "meterz"\n#RobotFix# linear.x > > 0\n')
+    path.write_text(
+        "geometry_msgs/Twist.msg\nVector3 linear\n#RobotFix# linear.q > 0\n"
+        '#RobotFix# Unit(linear.x) == "meterz"\n#RobotFix# linear.x > > 0\n'
+    )
     catalog = MsgCatalog([path])
     catalog.lookup("geometry_msgs/Twist")
     found = sorted((p.rule.code, p.line, p.col) for p in catalog.problems)
-    assert found == [(rules.ANNOTATION_SYNTAX.code, 5, 22), (rules.UNKNOWN_UNIT.code, 4, 11),
-                     (rules.UNKNOWN_FIELD.code, 3, 11)]
+    assert found == [
+        (rules.ANNOTATION_SYNTAX.code, 5, 22),
+        (rules.UNKNOWN_UNIT.code, 4, 11),
+        (rules.UNKNOWN_FIELD.code, 3, 11),
+    ]
 
 
 @settings(max_examples=200, deadline=None)

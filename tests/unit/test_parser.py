@@ -56,7 +56,13 @@ def test_chains_membership_and_labels() -> None:
 
 @pytest.mark.parametrize(
     ("text", "offset"),
-    [("x < < 3", 4), ("x $ 3", 2), ("Foo(x)", 0), ("_ < 2 and Unit(x) < 3", 10), ("x <", 2)],
+    [
+        ("x < < 3", 4),
+        ("x $ 3", 2),
+        ("Foo(x)", 0),
+        ("_ < 2 and Unit(x) < 3", 10),
+        ("x <", 2),
+    ],
 )
 def test_errors_point_at_the_problem(text: str, offset: int) -> None:
     with pytest.raises(AnnotationSyntaxError) as info:

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 from fractions import Fraction
 
-from robotfix.annotations import ast as A
 from robotfix.analysis.vc import VC, Proved, Unproven, Violated
+from robotfix.annotations import ast as A
 from robotfix.smt.solver import check
 
 X = A.Sym(1, "real")

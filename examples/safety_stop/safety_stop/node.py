@@ -1,4 +1,5 @@
 """Drive forward at cruise speed; stop when the laser sees an obstacle too close."""
+
 from typing import Annotated
 
 import rclpy

@@ -10,19 +10,25 @@ import ast
 from dataclasses import replace
 
 from robotfix import messages
-from robotfix.annotations import ast as A
-from robotfix.annotations.extract import Refinement
-from robotfix.annotations.units import Unit
 from robotfix.analysis import heap
 from robotfix.analysis.context import FileContext
 from robotfix.analysis.state import State
 from robotfix.analysis.values import Value
 from robotfix.analysis.vc import VC, Proved, Undecided, Unproven, Violated
+from robotfix.annotations import ast as A
+from robotfix.annotations.extract import Refinement
+from robotfix.annotations.units import Unit
 from robotfix.diagnostics import Span
 from robotfix.messages import Declared
-from robotfix.ros.catalog import Invariant, MsgSpec
+from robotfix.ros.catalog import FieldUnit, Invariant, MsgSpec
 
-KIND_NAMES = {"int": "int", "float": "float", "bool": "bool", "str": "str", "msg": "message"}
+KIND_NAMES = {
+    "int": "int",
+    "float": "float",
+    "bool": "bool",
+    "str": "str",
+    "msg": "message",
+}
 
 
 class Checker:
@@ -34,31 +40,59 @@ class Checker:
     def where(self, node: ast.AST) -> tuple[Span, str]:
         return self.ctx.source.span(node), self.ctx.source.statement_text(node)
 
-    def goal_holds(self, state: State, goal: A.Expr, probe: A.Expr | None, site: ast.AST,
-                   predicate: str, subject: str, declared: Declared) -> bool:
+    def goal_holds(
+        self,
+        state: State,
+        goal: A.Expr,
+        probe: A.Expr | None,
+        site: ast.AST,
+        predicate: str,
+        subject: str,
+        declared: Declared,
+    ) -> bool:
         """Check `goal` under the path's facts; report RF101/RF102/RF901 if needed.
         True when nothing was reported or the report was only a warning."""
         if goal == A.TRUE:
             return True
-        verdict = self.ctx.discharge(VC(tuple(state.facts), goal, (probe,) if probe else ()))
+        verdict = self.ctx.discharge(
+            VC(tuple(state.facts), goal, (probe,) if probe else ())
+        )
         span, stmt = self.where(site)
         if isinstance(verdict, Proved):
             return True
         if isinstance(verdict, Violated):
             value = verdict.probe_values[0] if verdict.probe_values else None
-            self.ctx.report(messages.refinement_violated(
-                self.path, span, stmt, predicate, subject, value, declared))
+            self.ctx.report(
+                messages.refinement_violated(
+                    self.path, span, stmt, predicate, subject, value, declared
+                )
+            )
             return False
         if isinstance(verdict, Unproven):
             goal_syms = {s.ident for s in A.syms(goal)}
             unknowns = sorted({self._describe(i) for i in goal_syms})
-            example = [f"{self._describe(i)} = {v}" for i, v in verdict.sym_values
-                       if i in goal_syms]
-            self.ctx.report(messages.refinement_unproven(
-                self.path, span, stmt, predicate, subject, unknowns, example[:3], declared))
+            example = [
+                f"{self._describe(i)} = {v}"
+                for i, v in verdict.sym_values
+                if i in goal_syms
+            ]
+            self.ctx.report(
+                messages.refinement_unproven(
+                    self.path,
+                    span,
+                    stmt,
+                    predicate,
+                    subject,
+                    unknowns,
+                    example[:3],
+                    declared,
+                )
+            )
             return True
         assert isinstance(verdict, Undecided)
-        self.ctx.report(messages.solver_unknown(self.path, span, stmt, predicate, verdict.reason))
+        self.ctx.report(
+            messages.solver_unknown(self.path, span, stmt, predicate, verdict.reason)
+        )
         return False
 
     def _describe(self, ident: int) -> str:
@@ -68,36 +102,70 @@ class Checker:
         if value.uninit is None:
             return False
         span, stmt = self.where(site)
-        self.ctx.report(messages.used_before_assignment(
-            self.path, span, stmt, value.uninit.name, value.uninit.declared),
-            once=("uninit", span.line, value.uninit.name))
+        self.ctx.report(
+            messages.used_before_assignment(
+                self.path, span, stmt, value.uninit.name, value.uninit.declared
+            ),
+            once=("uninit", span.line, value.uninit.name),
+        )
         return True
 
-    def units_agree(self, expected: Unit | None, value: Value, site: ast.AST, target: str,
-                    declared: Declared) -> bool:
+    def units_agree(
+        self,
+        expected: Unit | None,
+        value: Value,
+        site: ast.AST,
+        target: str,
+        declared: Declared,
+    ) -> bool:
         got = value.unit
-        if expected is None or got is None or value.literal or value.fits_unit(expected):
+        if (
+            expected is None
+            or got is None
+            or value.literal
+            or value.fits_unit(expected)
+        ):
             return True
         span, stmt = self.where(site)
-        self.ctx.report(messages.unit_mismatch(self.path, span, stmt, target, expected, got, declared))
+        self.ctx.report(
+            messages.unit_mismatch(
+                self.path, span, stmt, target, expected, got, declared
+            )
+        )
         return False
 
-    def base_fits(self, expected: str, value: Value, site: ast.AST, target: str) -> bool:
+    def base_fits(
+        self, expected: str, value: Value, site: ast.AST, target: str
+    ) -> bool:
         got = value.kind
-        numeric = {"int": {"int", "bool"}, "float": {"int", "float", "bool"}, "bool": {"bool"}}
+        numeric = {
+            "int": {"int", "bool"},
+            "float": {"int", "float", "bool"},
+            "bool": {"bool"},
+        }
         if expected not in KIND_NAMES or got not in KIND_NAMES or expected == "msg":
             return True
         if got == expected or got in numeric.get(expected, set()):
             return True
         span, stmt = self.where(site)
-        self.ctx.report(messages.base_type_mismatch(
-            self.path, span, stmt, target, KIND_NAMES[expected], KIND_NAMES[got]))
+        self.ctx.report(
+            messages.base_type_mismatch(
+                self.path, span, stmt, target, KIND_NAMES[expected], KIND_NAMES[got]
+            )
+        )
         return False
 
     # -- variables -----------------------------------------------------------
-    def assign_refined(self, state: State, name: str, decl: Refinement, value: Value,
-                       site: ast.AST, lookup: dict[str, A.Expr]) -> Value:
-        """Check `name = value` against its refinement; return what `name` holds after."""
+    def assign_refined(
+        self,
+        state: State,
+        name: str,
+        decl: Refinement,
+        value: Value,
+        site: ast.AST,
+        lookup: dict[str, A.Expr],
+    ) -> Value:
+        """Check `name = value` against its refinement; return what `name` holds."""
         declared = Declared(f"annotation of `{name}`", self.path, decl.line)
         if value.kind == "msg":
             return value
@@ -110,12 +178,16 @@ class Checker:
         for part in A.conjuncts(decl.predicate):
             goal = A.substitute(part, {**lookup, "_": value.term})
             shown = A.show(A.substitute(part, {"_": A.Name(name)}))
-            if not self.goal_holds(state, goal, value.term, site, shown, f"`{name}`", declared):
+            if not self.goal_holds(
+                state, goal, value.term, site, shown, f"`{name}`", declared
+            ):
                 return self.assumed(state, name, decl, lookup)
             state.assume(goal)
         return self._stored(value, decl)
 
-    def assumed(self, state: State, name: str, decl: Refinement, lookup: dict[str, A.Expr]) -> Value:
+    def assumed(
+        self, state: State, name: str, decl: Refinement, lookup: dict[str, A.Expr]
+    ) -> Value:
         """A fresh value of `name` that satisfies its refinement."""
         value = self.ctx.fresh(decl.base, f"`{name}`", decl.unit)
         if value.term is not None:
@@ -128,8 +200,15 @@ class Checker:
         return value
 
     # -- message fields ------------------------------------------------------
-    def write_field(self, state: State, ref: int, name: str, value: Value, site: ast.AST,
-                    target: str) -> None:
+    def write_field(
+        self,
+        state: State,
+        ref: int,
+        name: str,
+        value: Value,
+        site: ast.AST,
+        target: str,
+    ) -> None:
         obj = state.heap[ref]
         spec = heap.field_spec(self.ctx, state, ref, name)
         if spec is None:
@@ -148,8 +227,9 @@ class Checker:
                 obj.fields[name] = value
                 self.check_whole(state, value.ref, site, publishing=False, single=True)
             else:
-                obj.fields[name] = heap.new_message(self.ctx, state, spec.msg_type or "", "unknown",
-                                                    owner=(ref, name))
+                obj.fields[name] = heap.new_message(
+                    self.ctx, state, spec.msg_type or "", "unknown", owner=(ref, name)
+                )
             return
         ok = self.base_fits(spec.kind, value, site, f"`{target}`")
         if unit_decl is not None and owner is not None:
@@ -162,10 +242,15 @@ class Checker:
             if not ok:
                 break
             goal = A.substitute(inv.predicate, {path: stored.term})  # type: ignore[dict-item]
-            declared = Declared(f"refinement of {owner_spec.name}", inv.origin.path,
-                                inv.origin.line, owner=owner_spec.name)
-            ok = self.goal_holds(state, goal, stored.term, site, inv.text, f"`{target}`",
-                                 declared)
+            declared = Declared(
+                f"refinement of {owner_spec.name}",
+                inv.origin.path,
+                inv.origin.line,
+                owner=owner_spec.name,
+            )
+            ok = self.goal_holds(
+                state, goal, stored.term, site, inv.text, f"`{target}`", declared
+            )
             if ok:
                 state.assume(goal)
         if not ok:
@@ -175,37 +260,75 @@ class Checker:
         obj.fields[name] = replace(stored, default_of=None)
         obj.reported.discard(name)
 
-    def _field_declared(self, owner: MsgSpec, name: str, unit_decl: heap.FieldUnit) -> Declared:
+    def _field_declared(
+        self, owner: MsgSpec, name: str, unit_decl: FieldUnit
+    ) -> Declared:
         what = f"unit of {owner.name}"
         if unit_decl.origin is None:
             return Declared(what, None, None, unit_decl.source, owner.name)
-        return Declared(what, unit_decl.origin.path, unit_decl.origin.line, owner=owner.name)
+        return Declared(
+            what, unit_decl.origin.path, unit_decl.origin.line, owner=owner.name
+        )
 
-    def read_field(self, state: State, ref: int, name: str, site: ast.AST, target: str) -> Value:
+    def read_field(
+        self, state: State, ref: int, name: str, site: ast.AST, target: str
+    ) -> Value:
         value = heap.read_raw(self.ctx, state, ref, name, target)
         if value.default_of is None:
             return value
         for spec, path, inv in heap.invariants_on(self.ctx, state, ref, name):
             if inv.paths == {path} and value.term is not None:
-                self._default_breaks(state, spec, inv, path, value.term, site, target, False)
+                self._default_breaks(
+                    state, spec, inv, path, value.term, site, target, False
+                )
         state.heap[ref].reported.add(name)
         return value
 
-    def _default_breaks(self, state: State, spec: MsgSpec, inv: Invariant, path: str,
-                        default: A.Expr, site: ast.AST, target: str, publishing: bool) -> bool:
+    def _default_breaks(
+        self,
+        state: State,
+        spec: MsgSpec,
+        inv: Invariant,
+        path: str,
+        default: A.Expr,
+        site: ast.AST,
+        target: str,
+        publishing: bool,
+    ) -> bool:
         goal = A.substitute(inv.predicate, {path: default})
         verdict = self.ctx.discharge(VC((), goal))
         if not isinstance(verdict, Violated):
             return False
         span, stmt = self.where(site)
-        declared = Declared(f"refinement of {spec.name}", inv.origin.path, inv.origin.line,
-                            owner=spec.name)
-        self.ctx.report(messages.unset_field(
-            self.path, span, stmt, target, A.show(default), inv.text, declared, publishing))
+        declared = Declared(
+            f"refinement of {spec.name}",
+            inv.origin.path,
+            inv.origin.line,
+            owner=spec.name,
+        )
+        self.ctx.report(
+            messages.unset_field(
+                self.path,
+                span,
+                stmt,
+                target,
+                A.show(default),
+                inv.text,
+                declared,
+                publishing,
+            )
+        )
         return True
 
-    def check_whole(self, state: State, ref: int, site: ast.AST, publishing: bool,
-                    single: bool = False, prefix: str = "") -> None:
+    def check_whole(
+        self,
+        state: State,
+        ref: int,
+        site: ast.AST,
+        publishing: bool,
+        single: bool = False,
+        prefix: str = "",
+    ) -> None:
         """A message leaves the node (or is stored into another): every field whose
         refinement its ROS default breaks must be set, and invariants over several
         fields must hold. Single-field invariants of set fields held when set."""
@@ -215,37 +338,71 @@ class Checker:
             return
         label = prefix or self._name_of(site)
         for inv in spec.invariants:
-            self._check_invariant(state, ref, spec, inv, site, label, publishing, single)
+            self._check_invariant(
+                state, ref, spec, inv, site, label, publishing, single
+            )
         for fname, fs in spec.fields.items():
             if fs.kind == "msg" and not fs.array:
                 sub = heap.read_raw(self.ctx, state, ref, fname, f"{label}.{fname}")
                 if sub.ref is not None:
-                    self.check_whole(state, sub.ref, site, publishing, single, f"{label}.{fname}")
+                    self.check_whole(
+                        state, sub.ref, site, publishing, single, f"{label}.{fname}"
+                    )
 
-    def _check_invariant(self, state: State, ref: int, spec: MsgSpec, inv: Invariant,
-                         site: ast.AST, label: str, publishing: bool, single: bool) -> None:
-        values = {p: heap.resolve_path(self.ctx, state, ref, p, label) for p in sorted(inv.paths)}
+    def _check_invariant(
+        self,
+        state: State,
+        ref: int,
+        spec: MsgSpec,
+        inv: Invariant,
+        site: ast.AST,
+        label: str,
+        publishing: bool,
+        single: bool,
+    ) -> None:
+        values = {
+            p: heap.resolve_path(self.ctx, state, ref, p, label)
+            for p in sorted(inv.paths)
+        }
         if any(v.term is None for v in values.values()):
             return
         unset = [p for p, v in values.items() if v.default_of is not None]
         terms = {p: v.term for p, v in values.items()}
         if unset:
             path = unset[0]
+            default = terms[path]
+            assert default is not None
             owner_ref, fname = values[path].default_of  # type: ignore[misc]
             if fname in state.heap[owner_ref].reported:
                 return
-            if self._default_breaks(state, spec, inv, path, terms[path], site,  # type: ignore[arg-type]
-                                    f"{label}.{path}", publishing):
+            if self._default_breaks(
+                state,
+                spec,
+                inv,
+                path,
+                default,
+                site,
+                f"{label}.{path}",
+                publishing,
+            ):
                 state.heap[owner_ref].reported.add(fname)
             return
         if len(inv.paths) == 1 and not single:
             return
         goal = A.substitute(inv.predicate, terms)  # type: ignore[arg-type]
-        declared = Declared(f"refinement of {spec.name}", inv.origin.path, inv.origin.line,
-                            owner=spec.name)
+        declared = Declared(
+            f"refinement of {spec.name}",
+            inv.origin.path,
+            inv.origin.line,
+            owner=spec.name,
+        )
         self.goal_holds(state, goal, None, site, inv.text, label, declared)
 
     def _name_of(self, site: ast.AST) -> str:
-        if isinstance(site, ast.Expr) and isinstance(site.value, ast.Call) and site.value.args:
+        if (
+            isinstance(site, ast.Expr)
+            and isinstance(site.value, ast.Call)
+            and site.value.args
+        ):
             return self.ctx.source.segment(site.value.args[0]) or "the message"
         return "the message"

@@ -11,10 +11,10 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from robotfix import messages
-from robotfix.annotations import ast as A
-from robotfix.annotations.extract import Refinement, extract
 from robotfix.analysis.values import Value, sort_of
 from robotfix.analysis.vc import VC, Verdict
+from robotfix.annotations import ast as A
+from robotfix.annotations.extract import Refinement, extract
 from robotfix.diagnostics import Diagnostic
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.source import SourceFile
@@ -40,7 +40,10 @@ class Scope:
 
 class FileContext:
     def __init__(
-        self, source: SourceFile, catalog: MsgCatalog, discharge: Callable[[VC], Verdict]
+        self,
+        source: SourceFile,
+        catalog: MsgCatalog,
+        discharge: Callable[[VC], Verdict],
     ) -> None:
         self.source = source
         self.catalog = catalog
@@ -57,7 +60,9 @@ class FileContext:
         self._next += 1
         return self._next
 
-    def fresh(self, kind: str, description: str | ast.AST, unit: object = None) -> Value:
+    def fresh(
+        self, kind: str, description: str | ast.AST, unit: object = None
+    ) -> Value:
         """An unknown value of `kind`, named `description` (or the source of a node)
         in counterexamples."""
         ident = self.fresh_id()
@@ -68,8 +73,11 @@ class FileContext:
         found = self.sym_names.get(ident)
         if isinstance(found, ast.AST):
             text = self.source.segment(found) or ""
-            return f"`{text}`" if text and len(text) < 40 and "\n" not in text \
+            return (
+                f"`{text}`"
+                if text and len(text) < 40 and "\n" not in text
                 else "an expression"
+            )
         return found or f"value #{ident}"
 
     # -- reporting -----------------------------------------------------------
@@ -95,7 +103,9 @@ class FileContext:
                     if alias.name == "*":
                         self.star_import = True
                     else:
-                        self.imports[alias.asname or alias.name] = f"{node.module}.{alias.name}"
+                        self.imports[alias.asname or alias.name] = (
+                            f"{node.module}.{alias.name}"
+                        )
 
     def qualname(self, node: ast.expr) -> str | None:
         """`t.Annotated` -> `typing.Annotated`, when the names come from imports."""
@@ -112,9 +122,7 @@ class FileContext:
             return None
         module, _, name = qualified.rpartition(".")
         parts = module.split(".")
-        if len(parts) == 2 and parts[1] in MSG_MODULES:
-            package = parts[0]
-        elif len(parts) == 1:
+        if (len(parts) == 2 and parts[1] in MSG_MODULES) or len(parts) == 1:
             package = parts[0]
         else:
             return None
@@ -124,15 +132,32 @@ class FileContext:
     def msg_type_of(self, node: ast.expr) -> str | None:
         return self.msg_type_named(self.qualname(node))
 
-    def refinement(self, annotation: ast.expr, self_name: str,
-                   known: Callable[[str], bool] = lambda name: True) -> Refinement | None:
+    def refinement(
+        self,
+        annotation: ast.expr,
+        self_name: str,
+        known: Callable[[str], bool] = lambda name: True,
+    ) -> Refinement | None:
         found, problems = extract(
-            annotation, self_name, self.qualname, self.msg_type_of,
-            self.source.segment, self.source.char_col, known)
+            annotation,
+            self_name,
+            self.qualname,
+            self.msg_type_of,
+            self.source.segment,
+            self.source.char_col,
+            known,
+        )
         for problem in problems:
-            self.report(messages.annotation_problem(
-                self.source.path, problem.line, problem.col, problem.rule, problem.message),
-                once=("annotation", problem.line, problem.col, problem.message))
+            self.report(
+                messages.annotation_problem(
+                    self.source.path,
+                    problem.line,
+                    problem.col,
+                    problem.rule,
+                    problem.message,
+                ),
+                once=("annotation", problem.line, problem.col, problem.message),
+            )
         return found
 
 
@@ -140,8 +165,9 @@ _SCOPE_NODES = (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)
 _COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
 
 
-def build_scope(ctx: FileContext, kind: str, name: str, node: ast.AST,
-                parent: Scope | None) -> Scope:
+def build_scope(
+    ctx: FileContext, kind: str, name: str, node: ast.AST, parent: Scope | None
+) -> Scope:
     """Collect the names a body binds and the refinements it declares."""
     scope = Scope(kind, name, node, parent)
     body: list[ast.AST] = list(getattr(node, "body", []))
@@ -154,7 +180,9 @@ def build_scope(ctx: FileContext, kind: str, name: str, node: ast.AST,
     for child in _own_nodes(body):
         if isinstance(child, (ast.Global, ast.Nonlocal)):
             scope.global_names.update(child.names)
-        elif isinstance(child, ast.Name) and isinstance(child.ctx, (ast.Store, ast.Del)):
+        elif isinstance(child, ast.Name) and isinstance(
+            child.ctx, (ast.Store, ast.Del)
+        ):
             scope.local_names.add(child.id)
         elif isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
             scope.local_names.add(child.name)
@@ -169,7 +197,9 @@ def build_scope(ctx: FileContext, kind: str, name: str, node: ast.AST,
     scope.local_names -= scope.global_names
     for annotation, target in annotated:
         if target not in scope.decls:
-            found = ctx.refinement(annotation, target, lambda n: _in_scope(ctx, scope, n))
+            found = ctx.refinement(
+                annotation, target, lambda n: _in_scope(ctx, scope, n)
+            )
             if found is not None:
                 scope.decls[target] = found
     return scope

@@ -14,16 +14,23 @@ from dataclasses import replace
 from fractions import Fraction
 
 from robotfix import messages
-from robotfix.annotations import ast as A
-from robotfix.annotations.units import DIMENSIONLESS, Unit
 from robotfix.analysis import heap
 from robotfix.analysis.checks import Checker
 from robotfix.analysis.context import FileContext
 from robotfix.analysis.state import State
 from robotfix.analysis.values import NONE, Value
+from robotfix.annotations import ast as A
+from robotfix.annotations.units import DIMENSIONLESS, Unit
 
 ARITH = {ast.Add: "+", ast.Sub: "-", ast.Mult: "*", ast.Div: "/"}
-COMPARE = {ast.Eq: "==", ast.NotEq: "!=", ast.Lt: "<", ast.LtE: "<=", ast.Gt: ">", ast.GtE: ">="}
+COMPARE = {
+    ast.Eq: "==",
+    ast.NotEq: "!=",
+    ast.Lt: "<",
+    ast.LtE: "<=",
+    ast.Gt: ">",
+    ast.GtE: ">=",
+}
 _DECIMAL = re.compile(r"[0-9_]*\.?[0-9_]*([eE][+-]?[0-9_]+)?")
 MATH_CONSTANTS = {"pi": math.pi, "e": math.e, "tau": math.tau}
 KIND_ORDER = ("bool", "int", "float")
@@ -56,7 +63,9 @@ class ExpressionEvaluator:
             if isinstance(child, ast.expr):
                 self.eval(child, state)
 
-    def unknown(self, node: ast.AST, kind: str = "unknown", unit: Unit | None = None) -> Value:
+    def unknown(
+        self, node: ast.AST, kind: str = "unknown", unit: Unit | None = None
+    ) -> Value:
         return self.ctx.fresh(kind, node, unit)
 
     # -- leaves --------------------------------------------------------------
@@ -91,7 +100,7 @@ class ExpressionEvaluator:
         base = self.eval(node.value, state)
         if base.kind == "msg" and base.ref in state.heap:
             text = self.ctx.source.segment(node) or node.attr
-            return self.check.read_field(state, base.ref, node.attr, self.site, text)  # type: ignore[arg-type]
+            return self.check.read_field(state, base.ref, node.attr, self.site, text)
         if base.kind == "module":
             qualified = f"{base.name}.{node.attr}"
             if base.name == "math" and node.attr in MATH_CONSTANTS:
@@ -124,13 +133,19 @@ class ExpressionEvaluator:
         operand = self.eval(node.operand, state)
         if isinstance(node.op, ast.Not):
             return Value("bool", A.Unary("not", self.truthy(operand, node.operand)))
-        if isinstance(node.op, (ast.USub, ast.UAdd)) and operand.term is not None and \
-                operand.kind in ("int", "float", "bool", "unknown"):
+        if (
+            isinstance(node.op, (ast.USub, ast.UAdd))
+            and operand.term is not None
+            and operand.kind in ("int", "float", "bool", "unknown")
+        ):
             if isinstance(node.op, ast.UAdd):
                 return operand
             term = operand.term
-            negated = A.Num(-term.value, term.is_int) if isinstance(term, A.Num) \
+            negated = (
+                A.Num(-term.value, term.is_int)
+                if isinstance(term, A.Num)
                 else A.Unary("-", term)
+            )
             kind = "int" if operand.kind == "bool" else operand.kind
             return replace(operand, kind=kind, term=negated)
         return self.unknown(node)
@@ -144,7 +159,9 @@ class ExpressionEvaluator:
         scale = 1.0
         if op in "+-":
             unit, literal = self.unit_of_sum(left, right, node, op)
-            scale = left.scale if unit is not None and unit == left.unit else right.scale
+            scale = (
+                left.scale if unit is not None and unit == left.unit else right.scale
+            )
         else:
             unit, literal = self.unit_of_product(left, right, op)
             scale = self.scale_of_product(left, right, op)
@@ -159,16 +176,24 @@ class ExpressionEvaluator:
             return self.unknown(node, unit=left.unit)
         if isinstance(node.op, ast.FloorDiv):
             return self.unknown(node, "int", self.unit_of_product(left, right, "/")[0])
-        if isinstance(node.op, ast.Pow) and isinstance(right.term, A.Num) and \
-                right.term.is_int and left.unit is not None and not left.literal:
+        if (
+            isinstance(node.op, ast.Pow)
+            and isinstance(right.term, A.Num)
+            and right.term.is_int
+            and left.unit is not None
+            and not left.literal
+        ):
             return self.unknown(node, unit=left.unit.power(int(right.term.value)))
         return self.unknown(node)
 
     def scale_of_product(self, left: Value, right: Value, op: str) -> float:
         """Literal factors carried along (see `Value.scale`)."""
         if left.literal == right.literal:
-            return left.scale * (right.scale if op == "*" else 1 / right.scale) \
-                if not left.literal else 1.0
+            return (
+                left.scale * (right.scale if op == "*" else 1 / right.scale)
+                if not left.literal
+                else 1.0
+            )
         number = constant_value(right.term if right.literal else left.term)
         if number is None or number == 0:
             return 1.0
@@ -186,23 +211,38 @@ class ExpressionEvaluator:
             return "float"
         return "int"
 
-    def unit_of_sum(self, left: Value, right: Value, node: ast.AST, op: str) -> tuple[Unit | None, bool]:
+    def unit_of_sum(
+        self, left: Value, right: Value, node: ast.AST, op: str
+    ) -> tuple[Unit | None, bool]:
         if left.literal and right.literal:
             return None, True
         if left.literal or right.literal:
             return (right.unit if left.literal else left.unit), False
         if left.unit is None or right.unit is None:
             return None, False
-        if left.unit.same_as(right.unit) or right.fits_unit(left.unit) or \
-                left.fits_unit(right.unit):
+        if (
+            left.unit.same_as(right.unit)
+            or right.fits_unit(left.unit)
+            or left.fits_unit(right.unit)
+        ):
             return left.unit, False
         text = self.ctx.source.segment(node) or op
-        self.ctx.report(messages.operand_units(
-            self.ctx.source.path, self.ctx.source.span(node), text, op, left.unit, right.unit),
-            once=("operands", id(node)))
+        self.ctx.report(
+            messages.operand_units(
+                self.ctx.source.path,
+                self.ctx.source.span(node),
+                text,
+                op,
+                left.unit,
+                right.unit,
+            ),
+            once=("operands", id(node)),
+        )
         return None, False
 
-    def unit_of_product(self, left: Value, right: Value, op: str) -> tuple[Unit | None, bool]:
+    def unit_of_product(
+        self, left: Value, right: Value, op: str
+    ) -> tuple[Unit | None, bool]:
         if left.literal and right.literal:
             return None, True
         lu = DIMENSIONLESS if left.literal else left.unit
@@ -216,12 +256,15 @@ class ExpressionEvaluator:
         return (lu * ru if op == "*" else lu / ru), False
 
     def eval_Compare(self, node: ast.Compare, state: State) -> Value:
-        operands = [self.eval(node.left, state)] + [self.eval(c, state) for c in node.comparators]
+        operands = [self.eval(node.left, state)] + [
+            self.eval(c, state) for c in node.comparators
+        ]
         parts: list[A.Expr] = []
-        for op, left, right in zip(node.ops, operands, operands[1:]):
+        for op, left, right in zip(node.ops, operands, operands[1:], strict=False):
             name = COMPARE.get(type(op))
-            if name is not None and name not in ("==", "!=") or \
-                    left.is_number and right.is_number:
+            if (name is not None and name not in ("==", "!=")) or (
+                left.is_number and right.is_number
+            ):
                 self.unit_of_sum(left, right, node, name or "==")
             if name is None or left.term is None or right.term is None:
                 return self.unknown(node, "bool")
@@ -242,8 +285,11 @@ class ExpressionEvaluator:
         cond = self.condition(node.test, state)
         then, orelse = self.eval(node.body, state), self.eval(node.orelse, state)
         kinds = {then.kind, orelse.kind}
-        if then.term is None or orelse.term is None or len(kinds) > 1 and \
-                not kinds <= {"int", "float", "bool"}:
+        if (
+            then.term is None
+            or orelse.term is None
+            or (len(kinds) > 1 and not kinds <= {"int", "float", "bool"})
+        ):
             return self.unknown(node)
         kind = max(kinds, key=lambda k: KIND_ORDER.index(k) if k in KIND_ORDER else -1)
         unit: Unit | None = None
@@ -251,8 +297,12 @@ class ExpressionEvaluator:
             unit = then.unit
         elif orelse.unit is not None and then.literal:
             unit = orelse.unit
-        return Value(kind, A.Ite(cond, then.term, orelse.term), unit,
-                     then.literal and orelse.literal)
+        return Value(
+            kind,
+            A.Ite(cond, then.term, orelse.term),
+            unit,
+            then.literal and orelse.literal,
+        )
 
     def eval_Subscript(self, node: ast.Subscript, state: State) -> Value:
         base = self.eval(node.value, state)
@@ -292,15 +342,24 @@ class ExpressionEvaluator:
                 heap.havoc(state, value.ref)
         return self.unknown(node)
 
-    def construct(self, msg_type: str, args: list[Value], kwargs: dict[str | None, Value],
-                  state: State) -> Value:
+    def construct(
+        self,
+        msg_type: str,
+        args: list[Value],
+        kwargs: dict[str | None, Value],
+        state: State,
+    ) -> Value:
         message = heap.new_message(self.ctx, state, msg_type, "constructed")
         spec = self.ctx.catalog.lookup(msg_type)
         assert message.ref is not None and spec is not None
         short = msg_type.split("/")[-1]
-        given = list(zip(spec.fields, args)) + [(k, v) for k, v in kwargs.items() if k]
+        given = list(zip(spec.fields, args, strict=False)) + [
+            (k, v) for k, v in kwargs.items() if k
+        ]
         for name, value in given:
-            self.check.write_field(state, message.ref, name, value, self.site, f"{short}.{name}")
+            self.check.write_field(
+                state, message.ref, name, value, self.site, f"{short}.{name}"
+            )
         return message
 
     def builtin(self, name: str, args: list[Value], node: ast.Call) -> Value | None:
@@ -319,7 +378,11 @@ class ExpressionEvaluator:
                 term = A.Func(name, (result.term, other.term))  # type: ignore[arg-type]
                 result = Value(kind, term, unit, literal)
             return result
-        if name == "float" and len(args) == 1 and first.kind in ("int", "float", "bool"):
+        if (
+            name == "float"
+            and len(args) == 1
+            and first.kind in ("int", "float", "bool")
+        ):
             return replace(first, kind="float")
         if name in ("int", "round") and len(args) == 1:
             return self.unknown(node, "int", first.unit)
@@ -327,7 +390,7 @@ class ExpressionEvaluator:
 
     # -- conditions ----------------------------------------------------------
     def condition(self, node: ast.expr, state: State) -> A.Expr:
-        """The fact that holds when `node` is truthy (fresh booleans for the unknown)."""
+        """The fact that holds when `node` is truthy (unknown parts: fresh booleans)."""
         if isinstance(node, ast.BoolOp):
             op = "and" if isinstance(node.op, ast.And) else "or"
             parts = [self.condition(v, state) for v in node.values]
@@ -360,8 +423,9 @@ def constant_value(term: A.Expr | None) -> float | None:
         return None if inner is None else -inner
     if isinstance(term, A.Binary) and term.op in "+-*/":
         left, right = constant_value(term.left), constant_value(term.right)
-        if left is None or right is None or term.op == "/" and right == 0:
+        if left is None or right is None or (term.op == "/" and right == 0):
             return None
         return {"+": left + right, "-": left - right, "*": left * right}.get(
-            term.op, left / right if right else 0.0)
+            term.op, left / right if right else 0.0
+        )
     return None

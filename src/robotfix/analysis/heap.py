@@ -9,11 +9,11 @@ from __future__ import annotations
 
 from fractions import Fraction
 
-from robotfix.annotations import ast as A
-from robotfix.annotations.units import Unit, UnitError, label, resolve
 from robotfix.analysis.context import FileContext
 from robotfix.analysis.state import State
 from robotfix.analysis.values import MsgObj, Value
+from robotfix.annotations import ast as A
+from robotfix.annotations.units import Unit, UnitError, label, resolve
 from robotfix.ros.catalog import FieldSpec, FieldUnit, Invariant, MsgSpec
 
 DEFAULTS: dict[str, A.Expr] = {
@@ -24,8 +24,13 @@ DEFAULTS: dict[str, A.Expr] = {
 }
 
 
-def new_message(ctx: FileContext, state: State, msg_type: str, origin: str,
-                owner: tuple[int, str] | None = None) -> Value:
+def new_message(
+    ctx: FileContext,
+    state: State,
+    msg_type: str,
+    origin: str,
+    owner: tuple[int, str] | None = None,
+) -> Value:
     ref = ctx.fresh_id()
     state.heap[ref] = MsgObj(msg_type, origin, owner=owner)
     if origin == "received":
@@ -33,8 +38,11 @@ def new_message(ctx: FileContext, state: State, msg_type: str, origin: str,
     return Value("msg", ref=ref, name=msg_type)
 
 
-def contexts(ctx: FileContext, state: State, ref: int, name: str) -> list[tuple[MsgSpec, str]]:
-    """(message spec, path relative to it) for field `name` of `ref`, outermost first."""
+def contexts(
+    ctx: FileContext, state: State, ref: int, name: str
+) -> list[tuple[MsgSpec, str]]:
+    """(message spec, path relative to it) for field `name` of `ref`, outermost
+    first."""
     out: list[tuple[MsgSpec, str]] = []
     path = name
     current: int | None = ref
@@ -55,8 +63,9 @@ def field_spec(ctx: FileContext, state: State, ref: int, name: str) -> FieldSpec
     return None if spec is None else spec.fields.get(name)
 
 
-def field_unit(ctx: FileContext, state: State, ref: int, name: str
-               ) -> tuple[Unit | None, FieldUnit | None, MsgSpec | None]:
+def field_unit(
+    ctx: FileContext, state: State, ref: int, name: str
+) -> tuple[Unit | None, FieldUnit | None, MsgSpec | None]:
     for spec, path in contexts(ctx, state, ref, name):
         declared = spec.units.get(path)
         if declared is not None:
@@ -74,8 +83,9 @@ def unit_of(text: str) -> Unit | None:
         return None  # already reported where the unit was declared
 
 
-def invariants_on(ctx: FileContext, state: State, ref: int, name: str
-                  ) -> list[tuple[MsgSpec, str, Invariant]]:
+def invariants_on(
+    ctx: FileContext, state: State, ref: int, name: str
+) -> list[tuple[MsgSpec, str, Invariant]]:
     """Invariants that mention only field `name` (and what lies below it)."""
     found = []
     for spec, path in contexts(ctx, state, ref, name):
@@ -85,7 +95,9 @@ def invariants_on(ctx: FileContext, state: State, ref: int, name: str
     return found
 
 
-def read_raw(ctx: FileContext, state: State, ref: int, name: str, description: str) -> Value:
+def read_raw(
+    ctx: FileContext, state: State, ref: int, name: str, description: str
+) -> Value:
     """The value of a field, without any check; an unset field gives its default,
     marked with `default_of`."""
     obj = state.heap[ref]
@@ -96,8 +108,13 @@ def read_raw(ctx: FileContext, state: State, ref: int, name: str, description: s
         return Value("unknown")
     if spec.kind == "msg" and not spec.array and spec.msg_type:
         origin = obj.origin
-        sub = new_message(ctx, state, spec.msg_type, "constructed" if origin == "constructed"
-                          else "unknown", owner=(ref, name))
+        sub = new_message(
+            ctx,
+            state,
+            spec.msg_type,
+            "constructed" if origin == "constructed" else "unknown",
+            owner=(ref, name),
+        )
         state.heap[sub.ref].origin = origin  # type: ignore[index]
         obj.fields[name] = sub
         return sub
@@ -113,7 +130,9 @@ def read_raw(ctx: FileContext, state: State, ref: int, name: str, description: s
     return value
 
 
-def assume_invariants(ctx: FileContext, state: State, ref: int, prefix: str = "m") -> None:
+def assume_invariants(
+    ctx: FileContext, state: State, ref: int, prefix: str = "m"
+) -> None:
     """A received message satisfies every invariant of its type and its sub-messages."""
     obj = state.heap[ref]
     spec = ctx.catalog.lookup(obj.type)
@@ -130,14 +149,18 @@ def assume_invariants(ctx: FileContext, state: State, ref: int, prefix: str = "m
                 assume_invariants(ctx, state, sub.ref, f"{prefix}.{fname}")
 
 
-def resolve_path(ctx: FileContext, state: State, ref: int, path: str, prefix: str) -> Value:
+def resolve_path(
+    ctx: FileContext, state: State, ref: int, path: str, prefix: str
+) -> Value:
     """Follow a dotted field path from message `ref`, reading raw values."""
     parts = path.split(".")
     value = Value("msg", ref=ref)
     for index, part in enumerate(parts):
         if value.ref is None or value.ref not in state.heap:
             return Value("unknown")
-        value = read_raw(ctx, state, value.ref, part, f"{prefix}.{'.'.join(parts[:index + 1])}")
+        value = read_raw(
+            ctx, state, value.ref, part, f"{prefix}.{'.'.join(parts[: index + 1])}"
+        )
     return value
 
 

@@ -13,13 +13,13 @@ import ast
 import builtins
 from dataclasses import replace
 
-from robotfix.annotations import ast as A
-from robotfix.annotations.extract import Refinement
 from robotfix.analysis import heap
 from robotfix.analysis.context import FileContext, Scope, build_scope
 from robotfix.analysis.expressions import ExpressionEvaluator
 from robotfix.analysis.state import MAYBE, State, join
 from robotfix.analysis.values import Uninit, Value
+from robotfix.annotations import ast as A
+from robotfix.annotations.extract import Refinement
 
 BUILTINS = frozenset(dir(builtins)) | {"__file__", "__name__", "__doc__", "__spec__"}
 STATIC_KINDS = frozenset({"module", "msgclass", "function", "class"})
@@ -32,16 +32,20 @@ def analyze_module(ctx: FileContext) -> None:
     module = build_scope(ctx, "module", "<module>", tree, None)
     top = Interpreter(ctx, module, {})
     state = top.exec_block(tree.body, State())
-    statics = {k: v for k, v in state.env.items()
-               if isinstance(v, Value) and v.kind in STATIC_KINDS}
+    statics = {
+        k: v
+        for k, v in state.env.items()
+        if isinstance(v, Value) and v.kind in STATIC_KINDS
+    }
     pending = list(top.pending)
     while pending:
         node, parent = pending.pop(0)
         pending.extend(_analyze_body(ctx, node, parent, statics))
 
 
-def _analyze_body(ctx: FileContext, node: ast.AST, parent: Scope,
-                  statics: dict[str, Value]) -> list[tuple[ast.AST, Scope]]:
+def _analyze_body(
+    ctx: FileContext, node: ast.AST, parent: Scope, statics: dict[str, Value]
+) -> list[tuple[ast.AST, Scope]]:
     if isinstance(node, ast.ClassDef):
         scope = build_scope(ctx, "class", node.name, node, parent)
         interp = Interpreter(ctx, scope, statics)
@@ -57,7 +61,9 @@ def _analyze_body(ctx: FileContext, node: ast.AST, parent: Scope,
 
 
 class Interpreter(ExpressionEvaluator):
-    def __init__(self, ctx: FileContext, scope: Scope, statics: dict[str, Value]) -> None:
+    def __init__(
+        self, ctx: FileContext, scope: Scope, statics: dict[str, Value]
+    ) -> None:
         super().__init__(ctx)
         self.scope = scope
         self.statics = statics
@@ -86,7 +92,9 @@ class Interpreter(ExpressionEvaluator):
                 return bound
             decl = scope.decls.get(name)
             if bound is MAYBE:
-                return self.unknown(node, decl.base if decl else "unknown", decl.unit if decl else None)
+                return self.unknown(
+                    node, decl.base if decl else "unknown", decl.unit if decl else None
+                )
             value = Value("unknown", uninit=Uninit(name, decl is not None))
             if decl is not None:
                 self.check.report_uninit(value, self.site)
@@ -94,7 +102,9 @@ class Interpreter(ExpressionEvaluator):
         outer = scope.parent
         while outer is not None and outer.parent is not None:
             if outer.kind == "function" and name in outer.local_names:
-                return self._assumed_or_unknown(outer.decls.get(name), name, state, node)
+                return self._assumed_or_unknown(
+                    outer.decls.get(name), name, state, node
+                )
             outer = outer.parent
         module = scope.module()
         if name in self.statics:
@@ -103,15 +113,20 @@ class Interpreter(ExpressionEvaluator):
             return self._assumed_or_unknown(module.decls.get(name), name, state, node)
         if name in BUILTINS:
             return Value("builtin", name=name)
-        if self.ctx.star_import or scope is not module and name in module.global_names:
+        if self.ctx.star_import or (
+            scope is not module and name in module.global_names
+        ):
             return self.unknown(node)
         return Value("unknown", uninit=Uninit(name, False))
 
-    def _assumed_or_unknown(self, decl: Refinement | None, name: str, state: State,
-                            node: ast.AST) -> Value:
+    def _assumed_or_unknown(
+        self, decl: Refinement | None, name: str, state: State, node: ast.AST
+    ) -> Value:
         if decl is None:
             return self.unknown(node)
-        return self.check.assumed(state, name, decl, self.refinement_lookup(decl, state))
+        return self.check.assumed(
+            state, name, decl, self.refinement_lookup(decl, state)
+        )
 
     def decl_for(self, name: str) -> Refinement | None:
         if name in self.scope.global_names:
@@ -138,13 +153,17 @@ class Interpreter(ExpressionEvaluator):
             decl = self.decl_for(target.id)
             if decl is not None:
                 lookup = self.refinement_lookup(decl, state)
-                value = self.check.assign_refined(state, target.id, decl, value, self.site, lookup)
+                value = self.check.assign_refined(
+                    state, target.id, decl, value, self.site, lookup
+                )
             state.env[target.id] = replace(value, uninit=None, default_of=None)
         elif isinstance(target, ast.Attribute):
             base = self.eval(target.value, state)
             if base.kind == "msg" and base.ref in state.heap:
                 text = self.ctx.source.segment(target) or target.attr
-                self.check.write_field(state, base.ref, target.attr, value, self.site, text)  # type: ignore[arg-type]
+                self.check.write_field(
+                    state, base.ref, target.attr, value, self.site, text
+                )
         elif isinstance(target, (ast.Tuple, ast.List)):
             for element in target.elts:
                 inner = element.value if isinstance(element, ast.Starred) else element
@@ -155,8 +174,12 @@ class Interpreter(ExpressionEvaluator):
         elif isinstance(target, ast.Starred):
             self.bind(target.value, self.unknown(target), state)
 
-    def bind_parameters(self, node: ast.FunctionDef | ast.AsyncFunctionDef, state: State,
-                        is_method: bool) -> None:
+    def bind_parameters(
+        self,
+        node: ast.FunctionDef | ast.AsyncFunctionDef,
+        state: State,
+        is_method: bool,
+    ) -> None:
         args = node.args
         every = [*args.posonlyargs, *args.args, *args.kwonlyargs]
         every += [a for a in (args.vararg, args.kwarg) if a is not None]
@@ -170,9 +193,13 @@ class Interpreter(ExpressionEvaluator):
             elif msg_type is not None:
                 value = heap.new_message(self.ctx, state, msg_type, "received")
             elif decl is not None:
-                value = self.check.assumed(state, arg.arg, decl, self.refinement_lookup(decl, state))
+                value = self.check.assumed(
+                    state, arg.arg, decl, self.refinement_lookup(decl, state)
+                )
             else:
-                value = self.ctx.fresh("unknown", f"parameter `{arg.arg}` of {node.name}()")
+                value = self.ctx.fresh(
+                    "unknown", f"parameter `{arg.arg}` of {node.name}()"
+                )
             state.env[arg.arg] = value
 
     def havoc(self, state: State, nodes: list[ast.stmt]) -> None:
@@ -184,11 +211,16 @@ class Interpreter(ExpressionEvaluator):
                 bound = state.env.get(child.id)
                 if isinstance(bound, Value) and bound.ref is not None:
                     heap.havoc(state, bound.ref)
-                if isinstance(child.ctx, ast.Store) and child.id in self.scope.local_names:
+                if (
+                    isinstance(child.ctx, ast.Store)
+                    and child.id in self.scope.local_names
+                ):
                     decl = self.decl_for(child.id)
                     if decl is not None:
                         lookup = self.refinement_lookup(decl, state)
-                        state.env[child.id] = self.check.assumed(state, child.id, decl, lookup)
+                        state.env[child.id] = self.check.assumed(
+                            state, child.id, decl, lookup
+                        )
                     else:
                         state.env[child.id] = self.unknown(child)
 
@@ -198,12 +230,15 @@ class Interpreter(ExpressionEvaluator):
         return state
 
     def visit_Assign(self, node: ast.Assign, state: State) -> State:
-        if len(node.targets) == 1 and isinstance(node.targets[0], (ast.Tuple, ast.List)) \
-                and isinstance(node.value, (ast.Tuple, ast.List)) \
-                and len(node.targets[0].elts) == len(node.value.elts) \
-                and not any(isinstance(e, ast.Starred) for e in node.value.elts):
+        if (
+            len(node.targets) == 1
+            and isinstance(node.targets[0], (ast.Tuple, ast.List))
+            and isinstance(node.value, (ast.Tuple, ast.List))
+            and len(node.targets[0].elts) == len(node.value.elts)
+            and not any(isinstance(e, ast.Starred) for e in node.value.elts)
+        ):
             values = [self.eval(v, state) for v in node.value.elts]
-            for target, value in zip(node.targets[0].elts, values):
+            for target, value in zip(node.targets[0].elts, values, strict=True):
                 self.bind(target, value, state)
             return state
         value = self.eval(node.value, state)
@@ -225,7 +260,9 @@ class Interpreter(ExpressionEvaluator):
         else:
             return self.generic(node, state)
         combined = ast.BinOp(ast.copy_location(load, node.target), node.op, node.value)
-        self.bind(node.target, self.eval(ast.copy_location(combined, node), state), state)
+        self.bind(
+            node.target, self.eval(ast.copy_location(combined, node), state), state
+        )
         return state
 
     def visit_Assert(self, node: ast.Assert, state: State) -> State:
@@ -276,18 +313,28 @@ class Interpreter(ExpressionEvaluator):
         for alias in node.names:
             if alias.name == "*":
                 continue
-            qualified = f"{node.module}.{alias.name}" if node.module and not node.level \
+            qualified = (
+                f"{node.module}.{alias.name}"
+                if node.module and not node.level
                 else alias.name
+            )
             msg_type = self.ctx.msg_type_named(qualified) if not node.level else None
-            value = Value("msgclass", name=msg_type) if msg_type else \
-                Value("module", name=qualified)
+            value = (
+                Value("msgclass", name=msg_type)
+                if msg_type
+                else Value("module", name=qualified)
+            )
             state.env[alias.asname or alias.name] = value
         return state
 
-    def visit_FunctionDef(self, node: ast.FunctionDef | ast.AsyncFunctionDef,
-                          state: State) -> State:
-        for expr in [*node.decorator_list, *node.args.defaults,
-                     *[d for d in node.args.kw_defaults if d is not None]]:
+    def visit_FunctionDef(
+        self, node: ast.FunctionDef | ast.AsyncFunctionDef, state: State
+    ) -> State:
+        for expr in [
+            *node.decorator_list,
+            *node.args.defaults,
+            *[d for d in node.args.kw_defaults if d is not None],
+        ]:
             self.eval(expr, state)
         state.env[node.name] = Value("function", name=node.name)
         self.pending.append((node, self.scope))
@@ -314,11 +361,17 @@ class Interpreter(ExpressionEvaluator):
 
     def _merged(self, x: Value, y: Value) -> Value:
         kinds = {x.kind, y.kind}
-        kind = x.kind if len(kinds) == 1 else ("float" if kinds <= {"int", "float", "bool"}
-                                               else "unknown")
+        kind = (
+            x.kind
+            if len(kinds) == 1
+            else ("float" if kinds <= {"int", "float", "bool"} else "unknown")
+        )
         unit = x.unit if x.unit == y.unit else None
-        if x.kind == "msg" or y.kind == "msg" or kind not in ("int", "float", "bool", "str",
-                                                               "unknown"):
+        if (
+            x.kind == "msg"
+            or y.kind == "msg"
+            or kind not in ("int", "float", "bool", "str", "unknown")
+        ):
             return x if x.kind == y.kind and x.ref == y.ref else Value("unknown")
         merged = self.ctx.fresh(kind, "a value set on several paths", unit)
         return replace(merged, literal=x.literal and y.literal)
@@ -361,7 +414,9 @@ class Interpreter(ExpressionEvaluator):
                 self.eval(handler.type, handler_state)
             if handler.name:
                 handler_state.env[handler.name] = self.unknown(handler)
-            result = join(result, self.exec_block(handler.body, handler_state), self._merged)
+            result = join(
+                result, self.exec_block(handler.body, handler_state), self._merged
+            )
         if node.finalbody:
             if not result.reachable:
                 self.havoc(entry, node.handlers)  # type: ignore[arg-type]

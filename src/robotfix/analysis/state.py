@@ -10,8 +10,8 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
-from robotfix.annotations import ast as A
 from robotfix.analysis.values import MsgObj, Value
+from robotfix.annotations import ast as A
 
 
 @dataclass(frozen=True)
@@ -31,8 +31,12 @@ class State:
     reachable: bool = True
 
     def fork(self) -> State:
-        return State(dict(self.env), {k: v.copy() for k, v in self.heap.items()},
-                     list(self.facts), self.reachable)
+        return State(
+            dict(self.env),
+            {k: v.copy() for k, v in self.heap.items()},
+            list(self.facts),
+            self.reachable,
+        )
 
     def assume(self, fact: A.Expr | None) -> None:
         if fact is not None and fact != A.TRUE:
@@ -73,8 +77,12 @@ def join(a: State, b: State, fresh: Callable[[Value, Value], Value]) -> State:
             heap[ref] = (x_obj or y_obj).copy()  # type: ignore[union-attr]
             continue
         origin = x_obj.origin if x_obj.origin == y_obj.origin else "unknown"
-        merged = MsgObj(x_obj.type, origin, owner=x_obj.owner,
-                        reported=x_obj.reported | y_obj.reported)
+        merged = MsgObj(
+            x_obj.type,
+            origin,
+            owner=x_obj.owner,
+            reported=x_obj.reported | y_obj.reported,
+        )
         for fname in sorted(x_obj.fields.keys() | y_obj.fields.keys()):
             fx, fy = x_obj.fields.get(fname), y_obj.fields.get(fname)
             if fx is not None and fy is not None:

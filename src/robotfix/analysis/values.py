@@ -74,5 +74,6 @@ class MsgObj:
     reported: set[str] = field(default_factory=set)  # unset fields already reported
 
     def copy(self) -> MsgObj:
-        return MsgObj(self.type, self.origin, dict(self.fields), self.owner,
-                      set(self.reported))
+        return MsgObj(
+            self.type, self.origin, dict(self.fields), self.owner, set(self.reported)
+        )

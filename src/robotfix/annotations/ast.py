@@ -155,12 +155,25 @@ def substitute(expr: Expr, mapping: dict[str, Expr]) -> Expr:
     return rebuild(expr, tuple(substitute(k, mapping) for k in kids))
 
 
-_PRECEDENCE = {"or": 1, "and": 2, "not": 3, "==": 4, "!=": 4, "<": 4, "<=": 4, ">": 4,
-               ">=": 4, "+": 5, "-": 5, "*": 6, "/": 6}
+_PRECEDENCE = {
+    "or": 1,
+    "and": 2,
+    "not": 3,
+    "==": 4,
+    "!=": 4,
+    "<": 4,
+    "<=": 4,
+    ">": 4,
+    ">=": 4,
+    "+": 5,
+    "-": 5,
+    "*": 6,
+    "/": 6,
+}
 
 
 def show(expr: Expr) -> str:
-    """Source-like text of an expression, for messages (parentheses only where needed)."""
+    """Source-like text of an expression for messages, parenthesised only as needed."""
     if isinstance(expr, Num):
         return _show_number(expr)
     if isinstance(expr, Bool):
@@ -180,9 +193,11 @@ def show(expr: Expr) -> str:
         # comparisons do not chain here, and - and / are not associative on the right
         right_level = level + 1 if expr.op in ("-", "/") or level == 4 else level
         left_level = level + 1 if level == 4 else level
-        return f"{_operand(expr.left, left_level)} {expr.op} {_operand(expr.right, right_level)}"
+        left = _operand(expr.left, left_level)
+        return f"{left} {expr.op} {_operand(expr.right, right_level)}"
     if isinstance(expr, Ite):
-        return f"{_operand(expr.then, 1)} if {_operand(expr.cond, 1)} else {show(expr.orelse)}"
+        then, cond = _operand(expr.then, 1), _operand(expr.cond, 1)
+        return f"{then} if {cond} else {show(expr.orelse)}"
     if isinstance(expr, Func):
         return f"{expr.name}({', '.join(show(a) for a in expr.args)})"
     if expr.target is None:
@@ -205,6 +220,8 @@ def _level(expr: Expr) -> int:
 def _operand(expr: Expr, minimum: int) -> str:
     text = show(expr)
     return f"({text})" if _level(expr) < minimum else text
+
+
 def _show_number(num: Num) -> str:
     value = num.value
     if value.denominator == 1:

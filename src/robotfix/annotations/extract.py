@@ -56,7 +56,11 @@ def extract(
         return None, []
     args = node.slice.elts if isinstance(node.slice, ast.Tuple) else [node.slice]
     text_node = next(
-        (a for a in args[1:] if isinstance(a, ast.Constant) and isinstance(a.value, str)),
+        (
+            a
+            for a in args[1:]
+            if isinstance(a, ast.Constant) and isinstance(a.value, str)
+        ),
         None,
     )
     if text_node is None or not args:
@@ -69,15 +73,21 @@ def extract(
         predicate = parse_predicate(text)
     except AnnotationSyntaxError as err:
         line, col = _at(start, err.offset)
-        problems.append(AnnotationProblem(rules.ANNOTATION_SYNTAX, line, col, err.message))
+        problems.append(
+            AnnotationProblem(rules.ANNOTATION_SYNTAX, line, col, err.message)
+        )
         return None, problems
     unit, value_parts = _split(predicate, self_name, start, problems)
-    value_parts = [p for p in value_parts if _names_known(p, self_name, known, start, problems)]
+    value_parts = [
+        p for p in value_parts if _names_known(p, self_name, known, start, problems)
+    ]
     renamed = A.substitute(A.conjoin(value_parts), {self_name: A.Name(SELF)})
     return Refinement(base, unit, renamed, text, node.lineno, mtype), problems
 
 
-def _base(node: ast.expr, msg_type: Callable[[ast.expr], str | None]) -> tuple[str, str | None]:
+def _base(
+    node: ast.expr, msg_type: Callable[[ast.expr], str | None]
+) -> tuple[str, str | None]:
     if isinstance(node, ast.Name) and node.id in BASE_TYPES:
         return BASE_TYPES[node.id], None
     found = msg_type(node)
@@ -95,33 +105,56 @@ def _split(
     for part in A.conjuncts(predicate):
         if isinstance(part, A.UnitIs) and part.target in (None, SELF, self_name):
             try:
-                found = resolve(part.text) if part.kind == "unit" else label(part.kind, part.text)
+                found = (
+                    resolve(part.text)
+                    if part.kind == "unit"
+                    else label(part.kind, part.text)
+                )
             except UnitError as err:
                 line, col = _at(start, part.pos)
-                problems.append(AnnotationProblem(rules.UNKNOWN_UNIT, line, col, err.message))
+                problems.append(
+                    AnnotationProblem(rules.UNKNOWN_UNIT, line, col, err.message)
+                )
                 continue
             unit = found if unit is None else unit * found
         elif any(isinstance(n, A.UnitIs) for n in A.walk(part)):
             line, col = _at(start, 0)
-            problems.append(AnnotationProblem(
-                rules.MISPLACED_UNIT, line, col,
-                "Unit(), Frame() and Tag() must be top-level `and` parts and name the "
-                "annotated value"))
+            problems.append(
+                AnnotationProblem(
+                    rules.MISPLACED_UNIT,
+                    line,
+                    col,
+                    "Unit(), Frame() and Tag() must be top-level `and` parts and name "
+                    "the "
+                    "annotated value",
+                )
+            )
         else:
             values.append(part)
     return unit, values
 
 
-def _names_known(part: A.Expr, self_name: str, known: Callable[[str], bool],
-                 start: tuple[int, int, bool], problems: list[AnnotationProblem]) -> bool:
+def _names_known(
+    part: A.Expr,
+    self_name: str,
+    known: Callable[[str], bool],
+    start: tuple[int, int, bool],
+    problems: list[AnnotationProblem],
+) -> bool:
     for name in A.names(part):
         root = name.name.split(".")[0]
         if root not in (SELF, self_name) and not known(root):
             line, col = _at(start, name.pos)
-            problems.append(AnnotationProblem(
-                rules.UNKNOWN_NAME, line, col,
-                f"`{name.name}` is not a variable in scope here (the annotated value is "
-                f"`_` or `{self_name}`)"))
+            problems.append(
+                AnnotationProblem(
+                    rules.UNKNOWN_NAME,
+                    line,
+                    col,
+                    f"`{name.name}` is not a variable in scope here "
+                    "(the annotated value is "
+                    f"`_` or `{self_name}`)",
+                )
+            )
             return False
     return True
 

@@ -87,7 +87,10 @@ class _ToAst(Transformer[Token, Any]):
     def chain(self, *items: Any) -> A.Expr:
         operands = items[0::2]
         ops = [str(op) for op in items[1::2]]
-        parts = [_compare(op, a, b) for op, a, b in zip(ops, operands, operands[1:])]
+        parts = [
+            _compare(op, a, b)
+            for op, a, b in zip(ops, operands, operands[1:], strict=False)
+        ]
         return A.conjoin(parts)
 
     def in_(self, item: A.Expr, *options: A.Expr | None) -> A.Expr:
@@ -180,7 +183,8 @@ def _offset(err: UnexpectedInput, text: str) -> int:
 
 def _describe(err: UnexpectedInput, text: str) -> str:
     if isinstance(err, UnexpectedCharacters):
-        return f"unexpected character {text[err.pos_in_stream]!r}"
+        at = err.pos_in_stream or 0
+        return f"unexpected character {text[at : at + 1]!r}"
     if isinstance(err, UnexpectedEOF):
         return "the annotation ends too early"
     token = getattr(err, "token", None)

@@ -1,4 +1,4 @@
-"""Unit strings -> dimension vectors and scale factors. The only module that imports pint.
+"""Unit strings -> dimension vectors and scale factors. The only pint importer.
 
 A `Unit` is a product of base dimensions with integer exponents plus a scale factor
 relative to SI. Angle is a base dimension of its own (pint calls `radian` a
@@ -105,14 +105,19 @@ def _render(dims: tuple[tuple[str, int], ...], factor: float) -> str:
         if ":" in dim:
             kind, name = dim.split(":", 1)
             power = "" if exp == 1 else f"^{exp}"
-            text = (f"{name}{power}" if text == "1" and kind == "tag"
-                    else f"{text} in {kind} {name}{power}")
+            text = (
+                f"{name}{power}"
+                if text == "1" and kind == "tag"
+                else f"{text} in {kind} {name}{power}"
+            )
     return text
 
 
 def label(kind: str, text: str) -> Unit:
     """`Frame('map')` or `Tag('x')`: a dimension of its own, matched by name."""
-    return Unit(((f"{kind}:{text}", 1),), text=text if kind == "tag" else f"frame {text}")
+    return Unit(
+        ((f"{kind}:{text}", 1),), text=text if kind == "tag" else f"frame {text}"
+    )
 
 
 def resolve(text: str) -> Unit:
@@ -181,7 +186,7 @@ def _near_unit(text: str, registry: Any) -> str | None:
     candidates = sorted({n for n in names} | {n + "s" for n in names if n.isalpha()})
     for name in candidates:
         if abs(len(name) - len(text)) <= 1 and _one_edit(lowered, name.lower()):
-            return name
+            return str(name)
     return None
 
 

@@ -9,12 +9,21 @@ from typing import Any
 from robotfix.diagnostics import Diagnostic
 
 
-def render(diagnostics: list[Diagnostic], files: int, errors: int, warnings: int,
-           seconds: float) -> str:
+def render(
+    diagnostics: list[Diagnostic],
+    files: int,
+    errors: int,
+    warnings: int,
+    seconds: float,
+) -> str:
     payload: dict[str, Any] = {
         "diagnostics": [_diagnostic(d) for d in diagnostics],
-        "summary": {"files": files, "errors": errors, "warnings": warnings,
-                    "seconds": round(seconds, 3)},
+        "summary": {
+            "files": files,
+            "errors": errors,
+            "warnings": warnings,
+            "seconds": round(seconds, 3),
+        },
     }
     return json.dumps(payload, indent=2) + "\n"
 
@@ -29,5 +38,7 @@ def _diagnostic(d: Diagnostic) -> dict[str, Any]:
         "severity": d.severity.value,
         "code": d.code,
         "message": d.message,
-        "notes": [{"path": n.path, "line": n.line, "message": n.message} for n in d.notes],
+        "notes": [
+            {"path": n.path, "line": n.line, "message": n.message} for n in d.notes
+        ],
     }

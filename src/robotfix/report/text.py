@@ -8,12 +8,19 @@ from collections.abc import Callable
 from robotfix.diagnostics import Diagnostic
 
 
-def render(diagnostics: list[Diagnostic], source_line: Callable[[str, int], str | None],
-           files: int, errors: int, warnings: int) -> str:
+def render(
+    diagnostics: list[Diagnostic],
+    source_line: Callable[[str, int], str | None],
+    files: int,
+    errors: int,
+    warnings: int,
+) -> str:
     out: list[str] = []
     for d in diagnostics:
-        out.append(f"{d.path}:{d.span.line}:{d.span.col + 1}: "
-                   f"{d.severity.value}[{d.code}]: {d.message}")
+        out.append(
+            f"{d.path}:{d.span.line}:{d.span.col + 1}: "
+            f"{d.severity.value}[{d.code}]: {d.message}"
+        )
         for note in d.notes:
             where = f" --> {note.path}:{note.line}" if note.path else ""
             out.append(f"  note: {note.message}{where}")
@@ -40,5 +47,7 @@ def summary(files: int, errors: int, warnings: int) -> str:
 
     if not errors and not warnings:
         return f"No problems found in {plural(files, 'file')}."
-    return (f"Found {plural(errors, 'error')} and {plural(warnings, 'warning')} "
-            f"in {plural(files, 'file')}.")
+    return (
+        f"Found {plural(errors, 'error')} and {plural(warnings, 'warning')} "
+        f"in {plural(files, 'file')}."
+    )

@@ -33,12 +33,26 @@ else:  # pragma: no cover
     import tomli as tomllib
 
 INT_TYPES = frozenset(
-    "byte char int8 uint8 int16 uint16 int32 uint32 int64 uint64".split()
+    [
+        "byte",
+        "char",
+        "int8",
+        "uint8",
+        "int16",
+        "uint16",
+        "int32",
+        "uint32",
+        "int64",
+        "uint64",
+    ]
 )
 FLOAT_TYPES = frozenset({"float32", "float64"})
 BASE_KINDS = {"bool": "bool", "string": "str", "wstring": "str"}
-ALIASES = {"Header": "std_msgs/Header", "time": "builtin_interfaces/Time",
-           "duration": "builtin_interfaces/Duration"}
+ALIASES = {
+    "Header": "std_msgs/Header",
+    "time": "builtin_interfaces/Time",
+    "duration": "builtin_interfaces/Duration",
+}
 
 
 @dataclass(frozen=True)
@@ -147,14 +161,24 @@ class MsgCatalog:
             try:
                 text = path.read_text(encoding="utf-8")
             except (OSError, UnicodeDecodeError) as err:
-                self._problem(rules.MALFORMED_INTERFACE, str(path), 1, 0,
-                              f"cannot read interface file: {err}")
+                self._problem(
+                    rules.MALFORMED_INTERFACE,
+                    str(path),
+                    1,
+                    0,
+                    f"cannot read interface file: {err}",
+                )
                 continue
             files.append(read_interface(path, text))
         for file in files:  # declare every type before resolving any field
             for problem in file.problems:
-                self._problem(rules.MALFORMED_INTERFACE, file.path, problem.line,
-                              problem.col, problem.message)
+                self._problem(
+                    rules.MALFORMED_INTERFACE,
+                    file.path,
+                    problem.line,
+                    problem.col,
+                    problem.message,
+                )
             for section in file.sections:
                 self._declare(section)
         if self._rep103:
@@ -181,13 +205,20 @@ class MsgCatalog:
         for decl in section.fields:
             fs = self._field(decl.name, decl.type, decl.array, package)
             if fs is None:
-                self._problem(rules.UNKNOWN_MESSAGE_TYPE, file.path, decl.line, 0,
-                              f"unknown message type `{decl.type}` of field `{decl.name}`")
+                self._problem(
+                    rules.UNKNOWN_MESSAGE_TYPE,
+                    file.path,
+                    decl.line,
+                    0,
+                    f"unknown message type `{decl.type}` of field `{decl.name}`",
+                )
                 fs = FieldSpec(decl.name, "unknown", None, decl.array)
             resolved[decl.name] = fs
         spec.fields = resolved
 
-    def _field(self, name: str, type_: str, array: bool, package: str) -> FieldSpec | None:
+    def _field(
+        self, name: str, type_: str, array: bool, package: str
+    ) -> FieldSpec | None:
         if type_ in INT_TYPES:
             return FieldSpec(name, "int", None, array)
         if type_ in FLOAT_TYPES:
@@ -206,8 +237,9 @@ class MsgCatalog:
         local = f"{package}/{type_}"
         if self._known(local):
             return local
-        matches = sorted(k for k in (*self._specs, *self._standard())
-                         if k.endswith("/" + type_))
+        matches = sorted(
+            k for k in (*self._specs, *self._standard()) if k.endswith("/" + type_)
+        )
         return matches[0] if matches else None
 
     def _known(self, key: str) -> bool:
@@ -220,47 +252,77 @@ class MsgCatalog:
             try:
                 predicate = parse_predicate(note.text)
             except AnnotationSyntaxError as err:
-                self._problem(rules.ANNOTATION_SYNTAX, path, note.line,
-                              note.col + err.offset, err.message)
+                self._problem(
+                    rules.ANNOTATION_SYNTAX,
+                    path,
+                    note.line,
+                    note.col + err.offset,
+                    err.message,
+                )
                 continue
             own = field_lines.get(note.line)
             self._add_predicate(spec, predicate, own, Origin(path, note.line), note)
 
-    def _add_predicate(self, spec: MsgSpec, predicate: A.Expr, own: str | None,
-                       origin: Origin, note: Any) -> None:
+    def _add_predicate(
+        self,
+        spec: MsgSpec,
+        predicate: A.Expr,
+        own: str | None,
+        origin: Origin,
+        note: Any,
+    ) -> None:
         rename = {"_": own} if own else {}
         for part in A.conjuncts(predicate):
             if isinstance(part, A.UnitIs):
                 target = part.target or own
                 if target is None:
-                    self._problem(rules.MISPLACED_UNIT, origin.path, origin.line,
-                                  note.col + part.pos,
-                                  f"{part.kind.capitalize()}('{part.text}') in an "
-                                  "interface file needs a field: write "
-                                  f"{part.kind.capitalize()}(field) == \"{part.text}\"")
+                    self._problem(
+                        rules.MISPLACED_UNIT,
+                        origin.path,
+                        origin.line,
+                        note.col + part.pos,
+                        f"{part.kind.capitalize()}('{part.text}') in an "
+                        "interface file needs a field: write "
+                        f'{part.kind.capitalize()}(field) == "{part.text}"',
+                    )
                 elif self._check_path(spec, target, origin, note.col + part.pos):
                     self._add_unit(spec, target, part, origin, note.col)
                 continue
             if any(isinstance(n, A.UnitIs) for n in A.walk(part)):
-                self._problem(rules.MISPLACED_UNIT, origin.path, origin.line, note.col,
-                              "Unit(), Frame() and Tag() must be top-level `and` parts")
+                self._problem(
+                    rules.MISPLACED_UNIT,
+                    origin.path,
+                    origin.line,
+                    note.col,
+                    "Unit(), Frame() and Tag() must be top-level `and` parts",
+                )
                 continue
             part = A.substitute(part, {k: A.Name(v) for k, v in rename.items() if v})
             paths = {n.name for n in A.names(part)}
-            if all(self._check_path(spec, p, origin, note.col + n.pos)
-                   for n in A.names(part) for p in [n.name]):
+            if all(
+                self._check_path(spec, p, origin, note.col + n.pos)
+                for n in A.names(part)
+                for p in [n.name]
+            ):
                 spec.invariants.append(
-                    Invariant(part, frozenset(paths), A.show(part), origin))
+                    Invariant(part, frozenset(paths), A.show(part), origin)
+                )
 
-    def _add_unit(self, spec: MsgSpec, target: str, part: A.UnitIs, origin: Origin,
-                  col: int) -> None:
+    def _add_unit(
+        self, spec: MsgSpec, target: str, part: A.UnitIs, origin: Origin, col: int
+    ) -> None:
         text = part.text if part.kind == "unit" else f"{part.kind}:{part.text}"
         if part.kind == "unit":
             try:
                 resolve(part.text)
             except UnitError as err:
-                self._problem(rules.UNKNOWN_UNIT, origin.path, origin.line,
-                              col + part.pos, err.message)
+                self._problem(
+                    rules.UNKNOWN_UNIT,
+                    origin.path,
+                    origin.line,
+                    col + part.pos,
+                    err.message,
+                )
                 return
         spec.units[target] = FieldUnit(text, origin)
 
@@ -268,14 +330,20 @@ class MsgCatalog:
         found = self.field_at(spec.name, path)
         if found is None or found.kind == "msg":
             what = "is a message, not a value" if found else "is not a field"
-            self._problem(rules.UNKNOWN_FIELD, origin.path, origin.line, col,
-                          f"`{path}` {what} of {spec.name}")
+            self._problem(
+                rules.UNKNOWN_FIELD,
+                origin.path,
+                origin.line,
+                col,
+                f"`{path}` {what} of {spec.name}",
+            )
             return False
         return True
 
     def _add_rep103(self) -> None:
         data = tomllib.loads(
-            (Path(__file__).with_name("rep103.toml")).read_text(encoding="utf-8"))
+            (Path(__file__).with_name("rep103.toml")).read_text(encoding="utf-8")
+        )
         for entry in data["message"]:
             spec = self.lookup(entry["type"])
             if spec is None:
@@ -284,7 +352,9 @@ class MsgCatalog:
                 if self.field_at(spec.name, path) is not None:
                     spec.units.setdefault(path, FieldUnit(unit, None, entry["source"]))
 
-    def _problem(self, rule: Rule, path: str, line: int, col: int, message: str) -> None:
+    def _problem(
+        self, rule: Rule, path: str, line: int, col: int, message: str
+    ) -> None:
         self.problems.append(CatalogProblem(rule, path, line, col, message))
 
     # -- standard definitions ------------------------------------------------
@@ -322,8 +392,11 @@ def _convert_rosbags() -> dict[str, Any]:
         for name, (consts, fields) in store.items():
             out[normalize(name)] = {
                 "fields": [_rosbags_field(n, d) for n, d in fields],
-                "consts": [[n, t, v] for n, t, v in consts
-                           if isinstance(v, (int, float, str, bool))],
+                "consts": [
+                    [n, t, v]
+                    for n, t, v in consts
+                    if isinstance(v, (int, float, str, bool))
+                ],
             }
     return out
 

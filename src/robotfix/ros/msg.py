@@ -1,4 +1,4 @@
-"""Read `.msg`, `.srv` and `.action` text into `InterfaceFile`, keeping `#RobotFix#` lines.
+"""Read `.msg`, `.srv`, `.action` text into `InterfaceFile`, with `#RobotFix#` lines.
 
 Pure text processing: no ROS install, no catalog. Field types stay as written
 (`Vector3`, `float64[]`); the catalog resolves them. Problems are returned as
@@ -12,14 +12,19 @@ from dataclasses import dataclass
 from pathlib import Path
 
 MARKER = re.compile(r"#\s*robotfix\s*#", re.IGNORECASE)
-_HEADER_PATH = re.compile(r"^\s*([A-Za-z_][\w]*)/([A-Za-z_]\w*)(?:\.(?:msg|srv|action))?\s*$")
+_HEADER_PATH = re.compile(
+    r"^\s*([A-Za-z_][\w]*)/([A-Za-z_]\w*)(?:\.(?:msg|srv|action))?\s*$"
+)
 _HEADER_BRACKET = re.compile(r"^\s*\[\s*([A-Za-z_]\w*)/([A-Za-z_]\w*)\s*\]\s*:?\s*$")
 _FIELD = re.compile(
     r"^(?P<type>[A-Za-z_][\w/]*)(?P<bound><=\d+)?(?P<array>\[(?:<=)?\d*\])?"
     r"\s+(?P<name>[A-Za-z_]\w*)\s*(?P<rest>.*)$"
 )
-SECTIONS = {".msg": ("",), ".srv": ("_Request", "_Response"),
-            ".action": ("_Goal", "_Result", "_Feedback")}
+SECTIONS = {
+    ".msg": ("",),
+    ".srv": ("_Request", "_Response"),
+    ".action": ("_Goal", "_Result", "_Feedback"),
+}
 
 
 @dataclass(frozen=True)
@@ -74,16 +79,17 @@ def read_interface(path: Path, text: str) -> InterfaceFile:
             chunks[-1].append((number, line))
     sections = tuple(
         _read_section(f"{package}/{name}{suffix}", chunk, problems)
-        for suffix, chunk in zip(suffixes, chunks)
+        for suffix, chunk in zip(suffixes, chunks, strict=False)
     )
     return InterfaceFile(str(path), package, sections, tuple(problems))
 
 
 def _name_of(path: Path, lines: list[str]) -> tuple[str, str, int]:
-    """Package and type name from a header line (`pkg/Name.msg`, `[pkg/Name]:`) or path."""
+    """Package and type name from a header line (`pkg/Name.msg`, `[pkg/Name]:`)
+    or from the path."""
     for index, line in enumerate(lines):
         stripped = line.strip()
-        if not stripped or stripped.startswith("#") and not MARKER.match(stripped):
+        if not stripped or (stripped.startswith("#") and not MARKER.match(stripped)):
             continue
         match = _HEADER_BRACKET.match(line) or _HEADER_PATH.match(line)
         if match:
@@ -109,7 +115,9 @@ def _read_section(
             continue
         match = _FIELD.match(code)
         if match is None:
-            problems.append(Problem(number, len(raw) - len(raw.lstrip()), _bad_line(code)))
+            problems.append(
+                Problem(number, len(raw) - len(raw.lstrip()), _bad_line(code))
+            )
             continue
         if match["rest"].startswith("="):
             continue  # a constant

@@ -22,7 +22,9 @@ class Encoder:
     def sym(self, node: A.Sym) -> Any:
         if node.ident not in self.syms:
             name = f"s{node.ident}"
-            make = {"int": z3.Int, "bool": z3.Bool, "str": z3.String}.get(node.sort, z3.Real)
+            make = {"int": z3.Int, "bool": z3.Bool, "str": z3.String}.get(
+                node.sort, z3.Real
+            )
             self.syms[node.ident] = make(name)
         return self.syms[node.ident]
 
@@ -81,13 +83,20 @@ class Encoder:
             return left == right if op == "==" else left != right
         left, right = self.arith(node.left), self.arith(node.right)
         if op == "/":
-            return z3.ToReal(left) / z3.ToReal(right) if _is_int(left) and _is_int(right) \
+            return (
+                z3.ToReal(left) / z3.ToReal(right)
+                if _is_int(left) and _is_int(right)
                 else _real(left) / _real(right)
+            )
         left, right = self._same_sort(left, right)
         return {
-            "+": lambda: left + right, "-": lambda: left - right, "*": lambda: left * right,
-            "<": lambda: left < right, "<=": lambda: left <= right,
-            ">": lambda: left > right, ">=": lambda: left >= right,
+            "+": lambda: left + right,
+            "-": lambda: left - right,
+            "*": lambda: left * right,
+            "<": lambda: left < right,
+            "<=": lambda: left <= right,
+            ">": lambda: left > right,
+            ">=": lambda: left >= right,
         }[op]()
 
     def _func(self, node: A.Func) -> Any:

@@ -39,8 +39,10 @@ def check(vc: VC, rlimit: int = RLIMIT) -> Verdict:
         return Undecided(solver.reason_unknown())
     model = solver.model()
     values = tuple(_show(model.eval(p, model_completion=True)) for p in probes)
-    syms = tuple((ident, _show(model.eval(s, model_completion=True)))
-                 for ident, s in sorted(encoder.syms.items()))
+    syms = tuple(
+        (ident, _show(model.eval(s, model_completion=True)))
+        for ident, s in sorted(encoder.syms.items())
+    )
     solver.pop()
     solver.add(goal)
     second = solver.check()
@@ -58,7 +60,7 @@ def _show(value: Any) -> str:
         exact = Fraction(value.numerator_as_long(), value.denominator_as_long())
         return _decimal(exact)
     if z3.is_algebraic_value(value):
-        return value.as_decimal(6).rstrip("?")
+        return str(value.as_decimal(6)).rstrip("?")
     if z3.is_true(value) or z3.is_false(value):
         return "True" if z3.is_true(value) else "False"
     if z3.is_string_value(value):

@@ -19,8 +19,14 @@ _PREFIX = re.compile(r"#\s*(error|warning)\s*:")
 _ASSERTION = re.compile(
     r'#\s*(?P<kind>error|warning):\s*(?P<code>RF\d{3})(?:\s+"(?P<text>[^"]*)")?\s*'
 )
-_SKIP = (tokenize.NL, tokenize.NEWLINE, tokenize.COMMENT, tokenize.INDENT,
-         tokenize.DEDENT, tokenize.ENDMARKER)
+_SKIP = (
+    tokenize.NL,
+    tokenize.NEWLINE,
+    tokenize.COMMENT,
+    tokenize.INDENT,
+    tokenize.DEDENT,
+    tokenize.ENDMARKER,
+)
 
 
 @dataclass(frozen=True)
@@ -46,7 +52,9 @@ def read_expectations(source: str) -> list[Expectation]:
         if tok.type == tokenize.COMMENT and _PREFIX.match(tok.string):
             match = _ASSERTION.fullmatch(tok.string)
             if match is None:
-                raise ValueError(f"line {tok.start[0]}: malformed assertion {tok.string!r}")
+                raise ValueError(
+                    f"line {tok.start[0]}: malformed assertion {tok.string!r}"
+                )
             if tok.line.lstrip().startswith("#"):
                 pending.append(match)
             else:
@@ -68,7 +76,9 @@ def compare(expected: list[Expectation], actual: list[Diagnostic]) -> list[str]:
     for exp in expected:
         hit = next((d for d in unmatched if exp.matches(d)), None)
         if hit is None:
-            problems.append(f"line {exp.line}: expected {exp.kind} {exp.code}, got none")
+            problems.append(
+                f"line {exp.line}: expected {exp.kind} {exp.code}, got none"
+            )
         else:
             unmatched.remove(hit)
     problems += [
