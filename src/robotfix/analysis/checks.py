@@ -22,6 +22,7 @@ from robotfix.diagnostics import Span
 from robotfix.messages import Declared
 from robotfix.ros.catalog import FieldUnit, Invariant, MsgSpec
 
+PROVED, WARNED, FAILED = "proved", "warned", "failed"
 KIND_NAMES = {
     "int": "int",
     "float": "float",
@@ -49,17 +50,16 @@ class Checker:
         predicate: str,
         subject: str,
         declared: Declared,
-    ) -> bool:
+    ) -> str:
         """Check `goal` under the path's facts; report RF101/RF102/RF901 if needed.
-        True when nothing was reported or the report was only a warning."""
+        Returns "proved", "warned" (RF102: the goal may hold) or "failed"."""
         if goal == A.TRUE:
-            return True
-        verdict = self.ctx.discharge(
-            VC(tuple(state.facts), goal, (probe,) if probe else ())
-        )
+            return PROVED
+        probes = (probe,) if probe else ()
+        verdict = self.ctx.discharge(VC(tuple(state.facts), goal, probes))
         span, stmt = self.where(site)
         if isinstance(verdict, Proved):
-            return True
+            return PROVED
         if isinstance(verdict, Violated):
             value = verdict.probe_values[0] if verdict.probe_values else None
             self.ctx.report(
@@ -67,7 +67,7 @@ class Checker:
                     self.path, span, stmt, predicate, subject, value, declared
                 )
             )
-            return False
+            return FAILED
         if isinstance(verdict, Unproven):
             goal_syms = {s.ident for s in A.syms(goal)}
             unknowns = sorted({self._describe(i) for i in goal_syms})
@@ -88,12 +88,12 @@ class Checker:
                     declared,
                 )
             )
-            return True
+            return WARNED
         assert isinstance(verdict, Undecided)
         self.ctx.report(
             messages.solver_unknown(self.path, span, stmt, predicate, verdict.reason)
         )
-        return False
+        return FAILED
 
     def _describe(self, ident: int) -> str:
         return self.ctx.describe(ident)
@@ -178,10 +178,14 @@ class Checker:
         for part in A.conjuncts(decl.predicate):
             goal = A.substitute(part, {**lookup, "_": value.term})
             shown = A.show(A.substitute(part, {"_": A.Name(name)}))
-            if not self.goal_holds(
+            outcome = self.goal_holds(
                 state, goal, value.term, site, shown, f"`{name}`", declared
-            ):
+            )
+            if outcome == FAILED:
                 return self.assumed(state, name, decl, lookup)
+            if outcome == WARNED:  # reported once: from here on, assume it all
+                state.assume(A.substitute(decl.predicate, {**lookup, "_": value.term}))
+                break
             state.assume(goal)
         return self._stored(value, decl)
 
@@ -238,25 +242,31 @@ class Checker:
         stored = value.with_unit(unit) if unit is not None else value
         if stored.term is None:
             stored = self.ctx.fresh(spec.kind, f"`{target}`", unit)
+        warned = False
         for owner_spec, path, inv in invariants:
             if not ok:
                 break
-            goal = A.substitute(inv.predicate, {path: stored.term})  # type: ignore[dict-item]
+            goal = A.substitute(inv.predicate, {path: stored.known_term})
+            if warned:  # one report per statement; the rest is assumed
+                state.assume(goal)
+                continue
             declared = Declared(
                 f"refinement of {owner_spec.name}",
                 inv.origin.path,
                 inv.origin.line,
                 owner=owner_spec.name,
             )
-            ok = self.goal_holds(
+            outcome = self.goal_holds(
                 state, goal, stored.term, site, inv.text, f"`{target}`", declared
             )
+            ok = outcome != FAILED
+            warned = outcome == WARNED
             if ok:
                 state.assume(goal)
         if not ok:
             stored = self.ctx.fresh(spec.kind, f"`{target}`", unit)
             for _, path, inv in invariants:
-                state.assume(A.substitute(inv.predicate, {path: stored.term}))  # type: ignore[dict-item]
+                state.assume(A.substitute(inv.predicate, {path: stored.known_term}))
         obj.fields[name] = replace(stored, default_of=None)
         obj.reported.discard(name)
 

@@ -20,6 +20,8 @@ from robotfix.ros.catalog import MsgCatalog
 from robotfix.source import SourceFile
 
 MSG_MODULES = ("msg", "srv", "action")
+# ROS 1 generates AddTwoIntsRequest, FibonacciGoal...; ROS 2 nests AddTwoInts.Request.
+SECTION_SUFFIXES = ("Request", "Response", "Goal", "Result", "Feedback")
 
 
 @dataclass
@@ -117,17 +119,50 @@ class FileContext:
         return None
 
     def msg_type_named(self, qualified: str | None) -> str | None:
-        """`geometry_msgs.msg.Twist` or `std_msgs.Int32` -> the catalog's `pkg/Name`."""
+        """`geometry_msgs.msg.Twist`, `std_msgs.Int32` or `pkg.srv.AddTwoIntsRequest`
+        -> the catalog's `pkg/Name`, if it is a known message."""
+        found = self._split(qualified)
+        if found is None:
+            return None
+        package, name = found
+        candidates = [name] + [
+            f"{name[: -len(s)].rstrip('_')}_{s}"
+            for s in SECTION_SUFFIXES
+            if name.endswith(s) and len(name) > len(s)
+        ]
+        for candidate in candidates:
+            spec = self.catalog.lookup(f"{package}/{candidate}")
+            if spec is not None:
+                return spec.name
+        return None
+
+    def interface_named(self, qualified: str | None) -> str | None:
+        """`pkg.srv.AddTwoInts` or `pkg.action.Fibonacci` -> `pkg/AddTwoInts`, when the
+        catalog knows its sections."""
+        found = self._split(qualified)
+        if found is None:
+            return None
+        package, name = found
+        name = name[: -len("Action")] if name.endswith("Action") else name
+        for section in ("Request", "Goal"):
+            if self.catalog.lookup(f"{package}/{name}_{section}") is not None:
+                return f"{package}/{name}"
+        return None
+
+    def interface_of(self, node: ast.expr) -> str | None:
+        """A message, service or action type named in code, as `pkg/Name`."""
+        qualified = self.qualname(node)
+        return self.msg_type_named(qualified) or self.interface_named(qualified)
+
+    @staticmethod
+    def _split(qualified: str | None) -> tuple[str, str] | None:
         if not qualified or "." not in qualified:
             return None
         module, _, name = qualified.rpartition(".")
         parts = module.split(".")
-        if (len(parts) == 2 and parts[1] in MSG_MODULES) or len(parts) == 1:
-            package = parts[0]
-        else:
-            return None
-        found = self.catalog.lookup(f"{package}/{name}")
-        return found.name if found else None
+        if len(parts) == 2 and parts[1] in MSG_MODULES or len(parts) == 1:
+            return parts[0], name
+        return None
 
     def msg_type_of(self, node: ast.expr) -> str | None:
         return self.msg_type_named(self.qualname(node))
@@ -170,13 +205,15 @@ def build_scope(
 ) -> Scope:
     """Collect the names a body binds and the refinements it declares."""
     scope = Scope(kind, name, node, parent)
-    body: list[ast.AST] = list(getattr(node, "body", []))
+    body: list[ast.AST] = (
+        [] if isinstance(node, ast.Lambda) else list(getattr(node, "body", []))
+    )
     annotated: list[tuple[ast.expr, str]] = []
-    if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+    if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
         for arg in _all_args(node.args):
             scope.local_names.add(arg.arg)
-            if arg.annotation is not None:
-                annotated.append((arg.annotation, arg.arg))
+            if getattr(arg, "annotation", None) is not None:
+                annotated.append((arg.annotation, arg.arg))  # type: ignore[arg-type]
     for child in _own_nodes(body):
         if isinstance(child, (ast.Global, ast.Nonlocal)):
             scope.global_names.update(child.names)

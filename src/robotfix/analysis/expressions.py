@@ -15,11 +15,14 @@ from fractions import Fraction
 
 from robotfix import messages
 from robotfix.analysis import heap
+from robotfix.analysis import heap
 from robotfix.analysis.checks import Checker
 from robotfix.analysis.context import FileContext
+from robotfix.analysis.program import Program
 from robotfix.analysis.state import State
 from robotfix.analysis.values import NONE, Value
 from robotfix.annotations import ast as A
+from robotfix.annotations.extract import Refinement
 from robotfix.annotations.units import DIMENSIONLESS, Unit
 
 ARITH = {ast.Add: "+", ast.Sub: "-", ast.Mult: "*", ast.Div: "/"}
@@ -37,10 +40,11 @@ KIND_ORDER = ("bool", "int", "float")
 
 
 class ExpressionEvaluator:
-    def __init__(self, ctx: FileContext) -> None:
+    def __init__(self, ctx: FileContext, program: Program) -> None:
         self.ctx = ctx
+        self.program = program
         self.check = Checker(ctx)
-        self.site: ast.AST = ast.Pass()
+        self.site: ast.AST = ast.Pass()  # the statement being interpreted
 
     # -- to be provided by the statement interpreter --------------------------
     def lookup_name(self, name: str, state: State, node: ast.AST) -> Value:
@@ -102,17 +106,74 @@ class ExpressionEvaluator:
             text = self.ctx.source.segment(node) or node.attr
             return self.check.read_field(state, base.ref, node.attr, self.site, text)
         if base.kind == "module":
-            qualified = f"{base.name}.{node.attr}"
-            if base.name == "math" and node.attr in MATH_CONSTANTS:
-                exact = Fraction(MATH_CONSTANTS[node.attr])
-                return Value("float", A.Num(exact, False), literal=True)
-            msg_type = self.ctx.msg_type_named(qualified)
-            if msg_type is not None:
-                return Value("msgclass", name=msg_type)
-            return Value("module", name=qualified)
+            return self._module_attribute(base.name, node)
         if base.kind == "msgclass":
             return self._constant(base.name, node)
+        if base.kind == "interface":
+            found = self.ctx.msg_type_named(
+                f"{base.name.replace('/', '.msg.')}_{node.attr}"
+            )
+            return Value("msgclass", name=found) if found else self.unknown(node)
+        if base.kind in ("instance", "goal_handle") and isinstance(
+            node.value, ast.Name
+        ):
+            return self.instance_attribute(base, node.value.id, node, state)
         return self.unknown(node)
+
+    def _module_attribute(self, module: str, node: ast.Attribute) -> Value:
+        qualified = f"{module}.{node.attr}"
+        if module == "math" and node.attr in MATH_CONSTANTS:
+            exact = Fraction(MATH_CONSTANTS[node.attr])
+            return Value("float", A.Num(exact, False), literal=True)
+        msg_type = self.ctx.msg_type_named(qualified)
+        if msg_type is not None:
+            return Value("msgclass", name=msg_type)
+        interface = self.ctx.interface_named(qualified)
+        if interface is not None:
+            return Value("interface", name=interface)
+        return Value("module", name=qualified)
+
+    def instance_attribute(
+        self, base: Value, var: str, node: ast.Attribute, state: State
+    ) -> Value:
+        """`self.x`: the value last stored in this path, else what its refinement says
+        (or, for a goal handle, the goal that arrived)."""
+        key = f"{var}.{node.attr}"
+        bound = state.env.get(key)
+        if isinstance(bound, Value):
+            return bound
+        method = f"{base.name}.{node.attr}"
+        if base.kind == "instance" and method in self.program.functions:
+            return Value("method", name=method)
+        if base.kind == "goal_handle" and node.attr == "request":
+            value = heap.new_message(
+                self.ctx, state, f"{base.name}_Goal", "received", label=key
+            )
+        else:
+            decl = self.program.attributes.get(base.name, {}).get(node.attr)
+            value = (
+                self.unknown(node)
+                if decl is None
+                else self.check.assumed(
+                    state, key, decl, self.refinement_lookup(decl, state)
+                )
+            )
+        state.env[key] = value
+        return value
+
+    def refinement_lookup(self, decl: Refinement, state: State) -> dict[str, A.Expr]:
+        """Terms for the other variables a refinement names (`y == x`)."""
+        found: dict[str, A.Expr] = {}
+        for ref_name in A.names(decl.predicate):
+            name = ref_name.name
+            if name == "_" or name in found:
+                continue
+            bound = state.env.get(name)
+            if isinstance(bound, Value) and bound.term is not None:
+                found[name] = bound.term
+            else:
+                found[name] = self.ctx.fresh("unknown", f"`{name}`").term  # type: ignore[assignment]
+        return found
 
     def _constant(self, msg_type: str, node: ast.Attribute) -> Value:
         spec = self.ctx.catalog.lookup(msg_type)
@@ -318,75 +379,6 @@ class ExpressionEvaluator:
         return self.unknown(node)
 
     eval_ListComp = eval_SetComp = eval_DictComp = eval_GeneratorExp = eval_Lambda
-
-    # -- calls ---------------------------------------------------------------
-    def eval_Call(self, node: ast.Call, state: State) -> Value:
-        func = node.func
-        if isinstance(func, ast.Attribute) and func.attr == "publish" and node.args:
-            self.eval(func.value, state)
-            message = self.eval(node.args[0], state)
-            if message.kind == "msg" and message.ref is not None:
-                self.check.check_whole(state, message.ref, self.site, publishing=True)
-            return NONE
-        callee = self.eval(func, state)
-        args = [self.eval(a, state) for a in node.args]
-        kwargs = {k.arg: self.eval(k.value, state) for k in node.keywords}
-        if callee.kind == "msgclass":
-            return self.construct(callee.name, args, kwargs, state)
-        if callee.kind == "builtin":
-            found = self.builtin(callee.name, args, node)
-            if found is not None:
-                return found
-        for value in [*args, *kwargs.values()]:
-            if value.kind == "msg" and value.ref is not None:
-                heap.havoc(state, value.ref)
-        return self.unknown(node)
-
-    def construct(
-        self,
-        msg_type: str,
-        args: list[Value],
-        kwargs: dict[str | None, Value],
-        state: State,
-    ) -> Value:
-        message = heap.new_message(self.ctx, state, msg_type, "constructed")
-        spec = self.ctx.catalog.lookup(msg_type)
-        assert message.ref is not None and spec is not None
-        short = msg_type.split("/")[-1]
-        given = list(zip(spec.fields, args, strict=False)) + [
-            (k, v) for k, v in kwargs.items() if k
-        ]
-        for name, value in given:
-            self.check.write_field(
-                state, message.ref, name, value, self.site, f"{short}.{name}"
-            )
-        return message
-
-    def builtin(self, name: str, args: list[Value], node: ast.Call) -> Value | None:
-        if not args or any(a.term is None for a in args):
-            return None
-        first = args[0]
-        if name == "abs" and len(args) == 1:
-            return replace(first, term=A.Func("abs", (first.term,)))  # type: ignore[arg-type]
-        if name in ("min", "max") and len(args) >= 2:
-            result = first
-            for other in args[1:]:
-                unit, literal = self.unit_of_sum(result, other, node, name)
-                kind = self.numeric_kind(result, other, "+")
-                if kind is None:
-                    return None
-                term = A.Func(name, (result.term, other.term))  # type: ignore[arg-type]
-                result = Value(kind, term, unit, literal)
-            return result
-        if (
-            name == "float"
-            and len(args) == 1
-            and first.kind in ("int", "float", "bool")
-        ):
-            return replace(first, kind="float")
-        if name in ("int", "round") and len(args) == 1:
-            return self.unknown(node, "int", first.unit)
-        return None
 
     # -- conditions ----------------------------------------------------------
     def condition(self, node: ast.expr, state: State) -> A.Expr:

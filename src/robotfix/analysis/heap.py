@@ -30,11 +30,13 @@ def new_message(
     msg_type: str,
     origin: str,
     owner: tuple[int, str] | None = None,
+    label: str = "the message",
 ) -> Value:
+    """A message; `label` names it in counterexamples (`request` in `request.a`)."""
     ref = ctx.fresh_id()
     state.heap[ref] = MsgObj(msg_type, origin, owner=owner)
     if origin == "received":
-        assume_invariants(ctx, state, ref)
+        assume_invariants(ctx, state, ref, label)
     return Value("msg", ref=ref, name=msg_type)
 
 

@@ -11,18 +11,20 @@ from __future__ import annotations
 
 import ast
 import builtins
+from collections.abc import Callable
 from dataclasses import replace
 
 from robotfix.analysis import heap
 from robotfix.analysis.context import FileContext, Scope, build_scope
-from robotfix.analysis.expressions import ExpressionEvaluator
+from robotfix.analysis.calls import CallEvaluator
+from robotfix.analysis.program import Function, Program, collect
 from robotfix.analysis.state import MAYBE, State, join
-from robotfix.analysis.values import Uninit, Value
+from robotfix.analysis.values import NONE, Uninit, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 
 BUILTINS = frozenset(dir(builtins)) | {"__file__", "__name__", "__doc__", "__spec__"}
-STATIC_KINDS = frozenset({"module", "msgclass", "function", "class"})
+STATIC_KINDS = frozenset({"module", "msgclass", "interface", "function", "class"})
 
 
 def analyze_module(ctx: FileContext) -> None:
@@ -30,43 +32,78 @@ def analyze_module(ctx: FileContext) -> None:
     assert tree is not None
     ctx.record_imports(tree)
     module = build_scope(ctx, "module", "<module>", tree, None)
-    top = Interpreter(ctx, module, {})
+    program = collect(ctx, tree, module)
+    top = Interpreter(ctx, program, module, {})
     state = top.exec_block(tree.body, State())
     statics = {
         k: v
         for k, v in state.env.items()
         if isinstance(v, Value) and v.kind in STATIC_KINDS
     }
-    pending = list(top.pending)
+    pending: list[tuple[ast.AST, Scope]] = list(top.pending)
+    for statement in tree.body:
+        if isinstance(statement, ast.ClassDef):
+            pending.append((statement, module))
+    for function in list(program.functions.values()):
+        pending.append((function.node, function.parent))
+    seen: set[int] = set()
     while pending:
         node, parent = pending.pop(0)
-        pending.extend(_analyze_body(ctx, node, parent, statics))
+        if id(node) not in seen:
+            seen.add(id(node))
+            pending.extend(_analyze_body(ctx, program, node, parent, statics))
 
 
 def _analyze_body(
-    ctx: FileContext, node: ast.AST, parent: Scope, statics: dict[str, Value]
+    ctx: FileContext,
+    program: Program,
+    node: ast.AST,
+    parent: Scope,
+    statics: dict[str, Value],
 ) -> list[tuple[ast.AST, Scope]]:
     if isinstance(node, ast.ClassDef):
-        scope = build_scope(ctx, "class", node.name, node, parent)
-        interp = Interpreter(ctx, scope, statics)
+        scope = program.classes.get(node.name) if parent.parent is None else None
+        scope = scope or build_scope(ctx, "class", node.name, node, parent)
+        interp = Interpreter(ctx, program, scope, statics)
         interp.exec_block(node.body, State())
         return [(n, parent) for n, _ in interp.pending]  # methods don't see class names
-    assert isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef))
-    scope = build_scope(ctx, "function", node.name, node, parent)
-    interp = Interpreter(ctx, scope, statics)
+    function = _function_for(program, node, parent)
+    scope = program.signature(ctx, function)
+    interp = Interpreter(ctx, program, scope, statics, function)
     state = State()
-    interp.bind_parameters(node, state, is_method=parent.kind == "class")
-    interp.exec_block(node.body, state)
+    interp.bind_parameters(state)
+    if isinstance(function.node, ast.Lambda):
+        interp.site = function.node
+        interp.eval(function.node.body, state)
+    else:
+        interp.exec_block(function.node.body, state)
     return interp.pending
 
 
-class Interpreter(ExpressionEvaluator):
+def _function_for(program: Program, node: ast.AST, parent: Scope) -> Function:
+    for function in program.functions.values():
+        if function.node is node:
+            return function
+    assert isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda))
+    key = f"<nested {getattr(node, 'name', 'lambda')}@{node.lineno}>"
+    function = Function(key, node, parent, None)
+    program.functions[key] = function
+    return function
+
+
+class Interpreter(CallEvaluator):
     def __init__(
-        self, ctx: FileContext, scope: Scope, statics: dict[str, Value]
+        self,
+        ctx: FileContext,
+        program: Program,
+        scope: Scope,
+        statics: dict[str, Value],
+        function: Function | None = None,
     ) -> None:
-        super().__init__(ctx)
+        super().__init__(ctx, program)
         self.scope = scope
         self.statics = statics
+        self.function = function
         self.pending: list[tuple[ast.AST, Scope]] = []
 
     # -- blocks --------------------------------------------------------------
@@ -113,9 +150,11 @@ class Interpreter(ExpressionEvaluator):
             return self._assumed_or_unknown(module.decls.get(name), name, state, node)
         if name in BUILTINS:
             return Value("builtin", name=name)
-        if self.ctx.star_import or (
-            scope is not module and name in module.global_names
-        ):
+        closure = self.function is not None and (
+            isinstance(self.function.node, ast.Lambda)
+            or self.function.key.startswith("<")
+        )
+        if self.ctx.star_import or closure or name in module.global_names:
             return self.unknown(node)
         return Value("unknown", uninit=Uninit(name, False))
 
@@ -133,20 +172,6 @@ class Interpreter(ExpressionEvaluator):
             return self.scope.module().decls.get(name)
         return self.scope.decls.get(name)
 
-    def refinement_lookup(self, decl: Refinement, state: State) -> dict[str, A.Expr]:
-        """Terms for the other variables a refinement names (`y == x`)."""
-        found: dict[str, A.Expr] = {}
-        for ref_name in A.names(decl.predicate):
-            name = ref_name.name
-            if name == "_" or name in found:
-                continue
-            bound = state.env.get(name)
-            if isinstance(bound, Value) and bound.term is not None:
-                found[name] = bound.term
-            else:
-                found[name] = self.ctx.fresh("unknown", f"`{name}`").term  # type: ignore[assignment]
-        return found
-
     # -- binding -------------------------------------------------------------
     def bind(self, target: ast.expr, value: Value, state: State) -> None:
         if isinstance(target, ast.Name):
@@ -159,7 +184,9 @@ class Interpreter(ExpressionEvaluator):
             state.env[target.id] = replace(value, uninit=None, default_of=None)
         elif isinstance(target, ast.Attribute):
             base = self.eval(target.value, state)
-            if base.kind == "msg" and base.ref in state.heap:
+            if base.kind == "instance" and isinstance(target.value, ast.Name):
+                self.bind_attribute(base, target.value.id, target.attr, value, state)
+            elif base.kind == "msg" and base.ref in state.heap:
                 text = self.ctx.source.segment(target) or target.attr
                 self.check.write_field(
                     state, base.ref, target.attr, value, self.site, text
@@ -174,38 +201,100 @@ class Interpreter(ExpressionEvaluator):
         elif isinstance(target, ast.Starred):
             self.bind(target.value, self.unknown(target), state)
 
-    def bind_parameters(
-        self,
-        node: ast.FunctionDef | ast.AsyncFunctionDef,
-        state: State,
-        is_method: bool,
+    def bind_attribute(
+        self, base: Value, var: str, attr: str, value: Value, state: State
     ) -> None:
-        args = node.args
+        key = f"{var}.{attr}"
+        decl = self.program.attributes.get(base.name, {}).get(attr)
+        if decl is not None:
+            lookup = self.refinement_lookup(decl, state)
+            value = self.check.assign_refined(
+                state, key, decl, value, self.site, lookup
+            )
+        state.env[key] = replace(value, uninit=None, default_of=None)
+
+    def bind_parameters(self, state: State) -> None:
+        """Parameters: `self`, messages that arrive at a callback, refined values."""
+        assert self.function is not None
+        function = self.function
+        args = function.node.args
         every = [*args.posonlyargs, *args.args, *args.kwonlyargs]
         every += [a for a in (args.vararg, args.kwarg) if a is not None]
+        arriving = self._arriving(every)
         for index, arg in enumerate(every):
             decl = self.scope.decls.get(arg.arg)
-            msg_type = self.ctx.msg_type_of(arg.annotation) if arg.annotation else None
+            annotation = getattr(arg, "annotation", None)
+            msg_type = (
+                self.ctx.msg_type_of(annotation) if annotation is not None else None
+            )
             if decl is not None and decl.base == "msg":
                 msg_type = decl.msg_type
-            if is_method and index == 0:
-                value = Value("unknown")
+            if index == 0 and function.is_method:
+                value = Value("instance", name=function.class_name or "")
+            elif arg.arg in arriving:
+                value = arriving[arg.arg](state)
             elif msg_type is not None:
-                value = heap.new_message(self.ctx, state, msg_type, "received")
-            elif decl is not None:
-                value = self.check.assumed(
-                    state, arg.arg, decl, self.refinement_lookup(decl, state)
+                value = heap.new_message(
+                    self.ctx, state, msg_type, "received", label=arg.arg
                 )
+            elif decl is not None:
+                lookup = self.refinement_lookup(decl, state)
+                value = self.check.assumed(state, arg.arg, decl, lookup)
             else:
                 value = self.ctx.fresh(
-                    "unknown", f"parameter `{arg.arg}` of {node.name}()"
+                    "unknown", f"parameter `{arg.arg}` of {function.name}()"
                 )
             state.env[arg.arg] = value
+
+    def _arriving(self, params: list[ast.arg]) -> dict[str, Callable[[State], Value]]:
+        """What a ROS callback's parameters hold, by the registration that names it."""
+        assert self.function is not None
+        callback = self.program.callbacks.get(self.function.key)
+        if callback is None or callback.interface is None:
+            return {}
+        skip = callback.bound + (1 if self.function.is_method else 0)
+        names = [p.arg for p in params[skip:]]
+        iface = callback.interface
+
+        if callback.kind == "action":
+            return (
+                {names[0]: lambda state: Value("goal_handle", name=iface)}
+                if names
+                else {}
+            )
+        sections = {
+            "subscription": [(iface, "received")],
+            "service": [
+                (f"{iface}_Request", "received"),
+                (f"{iface}_Response", "constructed"),
+            ],
+            "service1": [(f"{iface}_Request", "received")],
+            "action1": [(f"{iface}_Goal", "received")],
+        }.get(callback.kind, [])
+        if not sections or self.ctx.catalog.lookup(sections[0][0]) is None:
+            return {}
+        return {
+            name: self._message_maker(type_, origin, name)
+            for name, (type_, origin) in zip(names, sections, strict=False)
+        }
+
+    def _message_maker(
+        self, type_: str, origin: str, label: str
+    ) -> Callable[[State], Value]:
+        return lambda state: heap.new_message(
+            self.ctx, state, type_, origin, label=label
+        )
 
     def havoc(self, state: State, nodes: list[ast.stmt]) -> None:
         """Forget what `nodes` may write: assigned names and mentioned messages."""
         for node in nodes:
             for child in ast.walk(node):
+                if (
+                    isinstance(child, ast.Attribute)
+                    and isinstance(child.ctx, ast.Store)
+                    and isinstance(child.value, ast.Name)
+                ):
+                    state.env.pop(f"{child.value.id}.{child.attr}", None)
                 if not isinstance(child, ast.Name):
                     continue
                 bound = state.env.get(child.id)
@@ -270,8 +359,21 @@ class Interpreter(ExpressionEvaluator):
         return state
 
     def visit_Return(self, node: ast.Return, state: State) -> State:
-        if node.value is not None:
-            self.eval(node.value, state)
+        value = self.eval(node.value, state) if node.value is not None else NONE
+        function = self.function
+        if function is not None and function.returns is not None:
+            lookup = self.refinement_lookup(function.returns, state)
+            self.check.assign_refined(
+                state, f"{function.name}()", function.returns, value, node, lookup
+            )
+        callback = self.program.callbacks.get(function.key) if function else None
+        leaves = callback is not None and callback.kind in (
+            "service",
+            "service1",
+            "action",
+        )
+        if leaves and value.kind == "msg" and value.ref is not None:
+            self.check.check_whole(state, value.ref, node, publishing=True)
         state.reachable = False
         return state
 
@@ -319,11 +421,13 @@ class Interpreter(ExpressionEvaluator):
                 else alias.name
             )
             msg_type = self.ctx.msg_type_named(qualified) if not node.level else None
-            value = (
-                Value("msgclass", name=msg_type)
-                if msg_type
-                else Value("module", name=qualified)
-            )
+            interface = self.ctx.interface_named(qualified) if not node.level else None
+            if msg_type:
+                value = Value("msgclass", name=msg_type)
+            elif interface:
+                value = Value("interface", name=interface)
+            else:
+                value = Value("module", name=qualified)
             state.env[alias.asname or alias.name] = value
         return state
 
@@ -336,8 +440,15 @@ class Interpreter(ExpressionEvaluator):
             *[d for d in node.args.kw_defaults if d is not None],
         ]:
             self.eval(expr, state)
-        state.env[node.name] = Value("function", name=node.name)
-        self.pending.append((node, self.scope))
+        key = (
+            node.name
+            if self.scope.kind == "module"
+            else f"<nested {node.name}@{node.lineno}>"
+        )
+        state.env[node.name] = Value("function", name=key)
+        if self.scope.kind != "module":
+            if self.scope.kind == "function":
+                self.pending.append((node, self.scope))
         return state
 
     visit_AsyncFunctionDef = visit_FunctionDef
@@ -346,7 +457,8 @@ class Interpreter(ExpressionEvaluator):
         for expr in [*node.decorator_list, *node.bases]:
             self.eval(expr, state)
         state.env[node.name] = Value("class", name=node.name)
-        self.pending.append((node, self.scope))
+        if self.scope.kind != "module":
+            self.pending.append((node, self.scope))
         return state
 
     # -- compound statements -------------------------------------------------

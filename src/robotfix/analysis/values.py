@@ -38,6 +38,12 @@ class Value:
     default_of: tuple[int, str] | None = field(default=None, compare=False)
 
     @property
+    def known_term(self) -> A.Expr:
+        """The term of a value the caller knows has one (fresh unknowns always do)."""
+        assert self.term is not None, self
+        return self.term
+
+    @property
     def is_number(self) -> bool:
         return self.kind in NUMERIC
 

@@ -96,6 +96,12 @@ def _render(dims: tuple[tuple[str, int], ...], factor: float) -> str:
         return name if abs(exp) == 1 else f"{name}^{abs(exp)}"
 
     physical = [(d, e) for d, e in dims if ":" not in d]
+    angle = dict(physical).get("radian")
+    if angle and math.isclose(factor, (math.pi / 180) ** angle):
+        factor, physical = (
+            1.0,
+            [("degree" if d == "radian" else d, e) for d, e in physical],
+        )
     num = "*".join(part(d, e) for d, e in physical if e > 0) or "1"
     den = "*".join(part(d, e) for d, e in physical if e < 0)
     text = f"{num}/{den}" if den else num
@@ -111,6 +117,13 @@ def _render(dims: tuple[tuple[str, int], ...], factor: float) -> str:
                 else f"{text} in {kind} {name}{power}"
             )
     return text
+
+
+def named(unit: Unit) -> Unit:
+    """The same unit, its text rendered from its dimensions (after arithmetic)."""
+    if not unit.dims and math.isclose(unit.factor, 1.0) and not unit.offset:
+        return DIMENSIONLESS
+    return Unit(unit.dims, unit.factor, unit.offset, _render(unit.dims, unit.factor))
 
 
 def label(kind: str, text: str) -> Unit:

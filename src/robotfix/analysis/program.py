@@ -1,0 +1,192 @@
+"""What a file defines, found before any code is interpreted: functions and methods
+(with their signatures), classes and their refined attributes, and which functions
+are ROS callbacks of which interface.
+
+A syntactic pre-pass, so that a call or a callback registration resolves whatever
+order the definitions come in.
+"""
+
+from __future__ import annotations
+
+import ast
+from dataclasses import dataclass, field
+
+from robotfix.annotations.extract import Refinement
+from robotfix.analysis.context import FileContext, Scope, build_scope
+from robotfix.ros.api_model import REGISTRATIONS
+
+FunctionNode = ast.FunctionDef | ast.AsyncFunctionDef | ast.Lambda
+
+
+@dataclass
+class Function:
+    key: str  # "name", "Class.method", or "<lambda@line:col>"
+    node: FunctionNode
+    parent: Scope
+    class_name: str | None = None
+    scope: Scope | None = None
+    returns: Refinement | None = None
+    decorators: frozenset[str] = frozenset()
+
+    @property
+    def is_method(self) -> bool:
+        return self.class_name is not None and "staticmethod" not in self.decorators
+
+    @property
+    def name(self) -> str:
+        return getattr(self.node, "name", "<lambda>")
+
+
+@dataclass(frozen=True)
+class Callback:
+    kind: str  # subscription, service, service1, action, action1, timer
+    interface: str | None  # pkg/Name of the message, service or action
+    bound: int = 0  # leading positional arguments bound by functools.partial
+
+
+@dataclass
+class Program:
+    module: Scope
+    functions: dict[str, Function] = field(default_factory=dict)
+    classes: dict[str, Scope] = field(default_factory=dict)
+    attributes: dict[str, dict[str, Refinement]] = field(default_factory=dict)
+    callbacks: dict[str, Callback] = field(default_factory=dict)
+
+    def signature(self, ctx: FileContext, function: Function) -> Scope:
+        """The function's scope: parameters, their refinements, its locals."""
+        if function.scope is None:
+            function.scope = build_scope(
+                ctx, "function", function.name, function.node, function.parent
+            )
+            returns = getattr(function.node, "returns", None)
+            if returns is not None:
+                function.returns = ctx.refinement(returns, function.name)
+        return function.scope
+
+
+def collect(ctx: FileContext, tree: ast.Module, module: Scope) -> Program:
+    program = Program(module)
+    for node in tree.body:
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            _add_function(program, node, module, None)
+        elif isinstance(node, ast.ClassDef):
+            scope = build_scope(ctx, "class", node.name, node, module)
+            program.classes[node.name] = scope
+            program.attributes[node.name] = dict(scope.decls)
+            for item in node.body:
+                if isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                    _add_function(program, item, scope, node.name)
+    for function in list(program.functions.values()):
+        if function.class_name is not None:
+            _collect_attributes(ctx, program, function)
+    _collect_callbacks(ctx, program, tree)
+    return program
+
+
+def _add_function(
+    program: Program,
+    node: ast.FunctionDef | ast.AsyncFunctionDef,
+    parent: Scope,
+    class_name: str | None,
+) -> None:
+    key = f"{class_name}.{node.name}" if class_name else node.name
+    decorators = frozenset(
+        d.id if isinstance(d, ast.Name) else getattr(d, "attr", "")
+        for d in node.decorator_list
+    )
+    program.functions[key] = Function(
+        key, node, parent, class_name, decorators=decorators
+    )
+
+
+def _collect_attributes(ctx: FileContext, program: Program, function: Function) -> None:
+    """`self.x: Annotated[...] = ...` in a method refines attribute x of the class."""
+    node = function.node
+    if not function.is_method or isinstance(node, ast.Lambda) or not node.args.args:
+        return
+    self_name = node.args.args[0].arg
+    table = program.attributes.setdefault(function.class_name or "", {})
+    for child in ast.walk(node):
+        if (
+            isinstance(child, ast.AnnAssign)
+            and isinstance(child.target, ast.Attribute)
+            and isinstance(child.target.value, ast.Name)
+            and child.target.value.id == self_name
+            and child.target.attr not in table
+        ):
+            found = ctx.refinement(child.annotation, child.target.attr)
+            if found is not None:
+                table[child.target.attr] = found
+
+
+def _collect_callbacks(ctx: FileContext, program: Program, tree: ast.Module) -> None:
+    for class_name, call in _calls_by_class(tree):
+        name = (
+            call.func.attr
+            if isinstance(call.func, ast.Attribute)
+            else call.func.id
+            if isinstance(call.func, ast.Name)
+            else ""
+        )
+        registration = REGISTRATIONS.get(name)
+        if registration is None:
+            continue
+        callback = _argument(call, *registration.callback_arg)
+        interface = None
+        if registration.type_arg is not None:
+            type_node = _argument(call, *registration.type_arg)
+            interface = ctx.interface_of(type_node) if type_node is not None else None
+        resolved = _callback_key(program, callback, class_name)
+        if resolved is not None:
+            key, bound = resolved
+            program.callbacks[key] = Callback(registration.kind, interface, bound)
+
+
+def _calls_by_class(tree: ast.Module) -> list[tuple[str | None, ast.Call]]:
+    found: list[tuple[str | None, ast.Call]] = []
+    for node in tree.body:
+        owner = node.name if isinstance(node, ast.ClassDef) else None
+        found.extend((owner, c) for c in ast.walk(node) if isinstance(c, ast.Call))
+    return found
+
+
+def _argument(call: ast.Call, position: int, keyword: str) -> ast.expr | None:
+    for kw in call.keywords:
+        if kw.arg == keyword:
+            return kw.value
+    if position < len(call.args) and not any(
+        isinstance(a, ast.Starred) for a in call.args[: position + 1]
+    ):
+        return call.args[position]
+    return None
+
+
+def _callback_key(
+    program: Program, node: ast.expr | None, class_name: str | None
+) -> tuple[str, int] | None:
+    if node is None:
+        return None
+    if isinstance(node, ast.Call) and node.args:  # functools.partial(f, a, ...)
+        func = node.func
+        name = func.attr if isinstance(func, ast.Attribute) else getattr(func, "id", "")
+        if name == "partial":
+            inner = _callback_key(program, node.args[0], class_name)
+            return None if inner is None else (inner[0], inner[1] + len(node.args) - 1)
+        return None
+    if (
+        isinstance(node, ast.Attribute)
+        and isinstance(node.value, ast.Name)
+        and class_name
+    ):
+        key = f"{class_name}.{node.attr}"
+        return (key, 0) if key in program.functions else None
+    if isinstance(node, ast.Name) and node.id in program.functions:
+        return node.id, 0
+    if isinstance(node, ast.Lambda):
+        key = f"<lambda@{node.lineno}:{node.col_offset}>"
+        parent = program.classes.get(class_name or "", program.module)
+        program.functions[key] = Function(
+            key, node, parent.module() if class_name else parent, None
+        )
+        return key, 0
+    return None

@@ -1,0 +1,59 @@
+"""What rclpy and rospy calls mean to the checker: pure data, no logic.
+
+Registrations name where the interface type and the callback are among a call's
+arguments (position, keyword); the analysis finds them syntactically so every
+callback is analysed as an entry point that receives messages. Unit-typed
+parameters name the unit an argument must have.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class Registration:
+    kind: str  # subscription, service, action, timer
+    type_arg: tuple[int, str] | None  # (position, keyword) of the interface type
+    callback_arg: tuple[int, str]  # (position, keyword) of the callback
+
+
+# Keyed by the called name's last part; `rospy.Subscriber` and `Subscriber` alike.
+REGISTRATIONS: dict[str, Registration] = {
+    # ROS 2: Node methods
+    "create_subscription": Registration(
+        "subscription", (0, "msg_type"), (2, "callback")
+    ),
+    "create_service": Registration("service", (0, "srv_type"), (2, "callback")),
+    "create_timer": Registration("timer", None, (1, "callback")),
+    # ROS 2: rclpy.action
+    "ActionServer": Registration("action", (1, "action_type"), (3, "execute_callback")),
+    # ROS 1: rospy
+    "Subscriber": Registration("subscription", (1, "data_class"), (2, "callback")),
+    "Service": Registration("service1", (1, "service_class"), (2, "handler")),
+    "Timer": Registration("timer", None, (1, "callback")),
+    "SimpleActionServer": Registration("action1", (1, "ActionSpec"), (2, "execute_cb")),
+}
+
+# Parameters that carry a unit: called name -> ((position, keyword, unit), ...)
+UNIT_PARAMETERS: dict[str, tuple[tuple[int, str, str], ...]] = {
+    "create_timer": ((0, "timer_period_sec", "s"),),
+    "create_rate": ((0, "frequency", "Hz"),),
+    "Rate": ((0, "hz", "Hz"),),
+    "sleep": ((0, "duration", "s"),),
+    "Duration": ((0, "secs", "s"),),
+    "wait_for_service": ((0, "timeout", "s"),),
+    "wait_for_server": ((0, "timeout_sec", "s"),),
+    "spin_once": ((1, "timeout_sec", "s"),),
+    "spin_until_future_complete": ((2, "timeout_sec", "s"),),
+}
+
+# math functions: name -> (argument unit or None for "same as result", result unit)
+MATH_UNITS: dict[str, tuple[str | None, str | None]] = {
+    "sin": ("rad", "1"),
+    "cos": ("rad", "1"),
+    "tan": ("rad", "1"),
+    "asin": ("1", "rad"),
+    "acos": ("1", "rad"),
+    "atan": ("1", "rad"),
+}
