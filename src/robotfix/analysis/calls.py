@@ -11,13 +11,13 @@ import math
 from dataclasses import replace
 from fractions import Fraction
 
-from robotfix.annotations import ast as A
-from robotfix.annotations.units import Unit, named, resolve
 from robotfix.analysis import heap
 from robotfix.analysis.expressions import ExpressionEvaluator
 from robotfix.analysis.program import Function
 from robotfix.analysis.state import State
 from robotfix.analysis.values import NONE, Value
+from robotfix.annotations import ast as A
+from robotfix.annotations.units import Unit, named, resolve
 from robotfix.messages import Declared
 from robotfix.ros.api_model import MATH_UNITS, UNIT_PARAMETERS
 
@@ -119,10 +119,8 @@ class CallEvaluator(ExpressionEvaluator):
         callee: Value,
     ) -> None:
         """Unknown code may change the messages and instances it is handed."""
-        if (
-            callee.kind in ("msgclass", "builtin")
-            or callee.kind == "module"
-            and callee.name.startswith("math.")
+        if callee.kind in ("msgclass", "builtin") or (
+            callee.kind == "module" and callee.name.startswith("math.")
         ):
             return
         for value in [*args, *kwargs.values()]:

@@ -235,7 +235,7 @@ class Checker:
                     self.ctx, state, spec.msg_type or "", "unknown", owner=(ref, name)
                 )
             return
-        ok = self.base_fits(spec.kind, value, site, f"`{target}`")
+        ok = spec.loose or self.base_fits(spec.kind, value, site, f"`{target}`")
         if unit_decl is not None and owner is not None:
             decl = self._field_declared(owner, name, unit_decl)
             ok = self.units_agree(unit, value, site, f"`{target}`", decl) and ok

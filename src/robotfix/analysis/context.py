@@ -11,10 +11,12 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from robotfix import messages
+from robotfix.analysis.index import FileIndex
 from robotfix.analysis.values import Value, sort_of
 from robotfix.analysis.vc import VC, Verdict
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement, extract
+from robotfix.astwalk import children
 from robotfix.diagnostics import Diagnostic
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.source import SourceFile
@@ -53,6 +55,7 @@ class FileContext:
         self.diagnostics: list[Diagnostic] = []
         self.sym_names: dict[int, str | ast.AST] = {}  # text, or a node to quote
         self._next = 0
+        self.index = FileIndex()
         self.imports: dict[str, str] = {}  # local name -> qualified name
         self.star_import = False
         self._reported: set[tuple[object, ...]] = set()
@@ -91,23 +94,10 @@ class FileContext:
         self.diagnostics.append(diag)
 
     # -- names ---------------------------------------------------------------
-    def record_imports(self, tree: ast.Module) -> None:
-        for node in ast.walk(tree):
-            if isinstance(node, ast.Import):
-                for alias in node.names:
-                    if alias.asname:
-                        self.imports[alias.asname] = alias.name
-                    else:
-                        top = alias.name.split(".")[0]
-                        self.imports[top] = top
-            elif isinstance(node, ast.ImportFrom) and node.module and not node.level:
-                for alias in node.names:
-                    if alias.name == "*":
-                        self.star_import = True
-                    else:
-                        self.imports[alias.asname or alias.name] = (
-                            f"{node.module}.{alias.name}"
-                        )
+    def record_imports(self, index: FileIndex) -> None:
+        self.index = index
+        self.imports = index.imports
+        self.star_import = index.star_import
 
     def qualname(self, node: ast.expr) -> str | None:
         """`t.Annotated` -> `typing.Annotated`, when the names come from imports."""
@@ -160,7 +150,7 @@ class FileContext:
             return None
         module, _, name = qualified.rpartition(".")
         parts = module.split(".")
-        if len(parts) == 2 and parts[1] in MSG_MODULES or len(parts) == 1:
+        if (len(parts) == 2 and parts[1] in MSG_MODULES) or len(parts) == 1:
             return parts[0], name
         return None
 
@@ -205,32 +195,15 @@ def build_scope(
 ) -> Scope:
     """Collect the names a body binds and the refinements it declares."""
     scope = Scope(kind, name, node, parent)
-    body: list[ast.AST] = (
-        [] if isinstance(node, ast.Lambda) else list(getattr(node, "body", []))
-    )
-    annotated: list[tuple[ast.expr, str]] = []
-    if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
-        for arg in _all_args(node.args):
-            scope.local_names.add(arg.arg)
-            if getattr(arg, "annotation", None) is not None:
-                annotated.append((arg.annotation, arg.arg))  # type: ignore[arg-type]
-    for child in _own_nodes(body):
-        if isinstance(child, (ast.Global, ast.Nonlocal)):
-            scope.global_names.update(child.names)
-        elif isinstance(child, ast.Name) and isinstance(
-            child.ctx, (ast.Store, ast.Del)
-        ):
-            scope.local_names.add(child.id)
-        elif isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
-            scope.local_names.add(child.name)
-        elif isinstance(child, (ast.Import, ast.ImportFrom)):
-            for alias in child.names:
-                if alias.name != "*":
-                    scope.local_names.add(alias.asname or alias.name.split(".")[0])
-        elif isinstance(child, ast.ExceptHandler) and child.name:
-            scope.local_names.add(child.name)
-        elif isinstance(child, ast.AnnAssign) and isinstance(child.target, ast.Name):
-            annotated.append((child.annotation, child.target.id))
+    known = ctx.index.scopes.get(id(node))
+    if known is not None:
+        scope.local_names = set(known.local_names)
+        scope.global_names = set(known.global_names)
+        annotated = sorted(
+            known.annotated, key=lambda a: (a[0].lineno, a[0].col_offset)
+        )
+    else:
+        annotated = _scan(scope, node)
     scope.local_names -= scope.global_names
     for annotation, target in annotated:
         if target not in scope.decls:
@@ -249,6 +222,36 @@ def _in_scope(ctx: FileContext, scope: Scope, name: str) -> bool:
             return True
         current = current.parent
     return name in ctx.imports or ctx.star_import or hasattr(builtins, name)
+
+
+def _scan(scope: Scope, node: ast.AST) -> list[tuple[ast.expr, str]]:
+    """What a body binds, for a node the file index did not cover."""
+    annotated: list[tuple[ast.expr, str]] = []
+    body: list[ast.AST] = []
+    if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
+        body = [node.body] if isinstance(node, ast.Lambda) else list(node.body)
+        for arg in _all_args(node.args):
+            scope.local_names.add(arg.arg)
+            if arg.annotation is not None:
+                annotated.append((arg.annotation, arg.arg))
+    else:
+        body = list(getattr(node, "body", []))
+    for child in _own_nodes(body):
+        if isinstance(child, (ast.Global, ast.Nonlocal)):
+            scope.global_names.update(child.names)
+        elif isinstance(child, ast.Name) and not isinstance(child.ctx, ast.Load):
+            scope.local_names.add(child.id)
+        elif isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+            scope.local_names.add(child.name)
+        elif isinstance(child, (ast.Import, ast.ImportFrom)):
+            for alias in child.names:
+                if alias.name != "*":
+                    scope.local_names.add(alias.asname or alias.name.split(".")[0])
+        elif isinstance(child, ast.ExceptHandler) and child.name:
+            scope.local_names.add(child.name)
+        elif isinstance(child, ast.AnnAssign) and isinstance(child.target, ast.Name):
+            annotated.append((child.annotation, child.target.id))
+    return annotated
 
 
 def _all_args(args: ast.arguments) -> list[ast.arg]:
@@ -274,5 +277,5 @@ def _own_nodes(body: list[ast.AST]) -> list[ast.AST]:
         if isinstance(node, _COMPREHENSIONS):
             stack.append(node.generators[0].iter)  # the rest is the comprehension's own
             continue
-        stack.extend(reversed(list(ast.iter_child_nodes(node))))
+        stack.extend(reversed(children(node)))
     return out

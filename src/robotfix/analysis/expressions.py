@@ -15,7 +15,6 @@ from fractions import Fraction
 
 from robotfix import messages
 from robotfix.analysis import heap
-from robotfix.analysis import heap
 from robotfix.analysis.checks import Checker
 from robotfix.analysis.context import FileContext
 from robotfix.analysis.program import Program

@@ -15,13 +15,15 @@ from collections.abc import Callable
 from dataclasses import replace
 
 from robotfix.analysis import heap
-from robotfix.analysis.context import FileContext, Scope, build_scope
 from robotfix.analysis.calls import CallEvaluator
+from robotfix.analysis.context import FileContext, Scope, build_scope
+from robotfix.analysis.index import index_module
 from robotfix.analysis.program import Function, Program, collect
 from robotfix.analysis.state import MAYBE, State, join
 from robotfix.analysis.values import NONE, Uninit, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
+from robotfix.astwalk import walk
 
 BUILTINS = frozenset(dir(builtins)) | {"__file__", "__name__", "__doc__", "__spec__"}
 STATIC_KINDS = frozenset({"module", "msgclass", "interface", "function", "class"})
@@ -30,7 +32,7 @@ STATIC_KINDS = frozenset({"module", "msgclass", "interface", "function", "class"
 def analyze_module(ctx: FileContext) -> None:
     tree = ctx.source.tree
     assert tree is not None
-    ctx.record_imports(tree)
+    ctx.record_imports(index_module(tree))
     module = build_scope(ctx, "module", "<module>", tree, None)
     program = collect(ctx, tree, module)
     top = Interpreter(ctx, program, module, {})
@@ -288,7 +290,7 @@ class Interpreter(CallEvaluator):
     def havoc(self, state: State, nodes: list[ast.stmt]) -> None:
         """Forget what `nodes` may write: assigned names and mentioned messages."""
         for node in nodes:
-            for child in ast.walk(node):
+            for child in walk(node):
                 if (
                     isinstance(child, ast.Attribute)
                     and isinstance(child.ctx, ast.Store)
@@ -446,9 +448,13 @@ class Interpreter(CallEvaluator):
             else f"<nested {node.name}@{node.lineno}>"
         )
         state.env[node.name] = Value("function", name=key)
-        if self.scope.kind != "module":
-            if self.scope.kind == "function":
-                self.pending.append((node, self.scope))
+        top_level_method = (
+            self.scope.kind == "class"
+            and self.scope.parent is not None
+            and self.scope.parent.kind == "module"
+        )
+        if self.scope.kind != "module" and not top_level_method:
+            self.pending.append((node, self.scope))  # the pre-pass knows only top level
         return state
 
     visit_AsyncFunctionDef = visit_FunctionDef

@@ -11,8 +11,8 @@ from __future__ import annotations
 import ast
 from dataclasses import dataclass, field
 
-from robotfix.annotations.extract import Refinement
 from robotfix.analysis.context import FileContext, Scope, build_scope
+from robotfix.annotations.extract import Refinement
 from robotfix.ros.api_model import REGISTRATIONS
 
 FunctionNode = ast.FunctionDef | ast.AsyncFunctionDef | ast.Lambda
@@ -76,10 +76,15 @@ def collect(ctx: FileContext, tree: ast.Module, module: Scope) -> Program:
             for item in node.body:
                 if isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
                     _add_function(program, item, scope, node.name)
-    for function in list(program.functions.values()):
-        if function.class_name is not None:
-            _collect_attributes(ctx, program, function)
-    _collect_callbacks(ctx, program, tree)
+    for class_name, attribute, annotation in sorted(
+        ctx.index.attributes, key=lambda a: (a[2].lineno, a[2].col_offset)
+    ):
+        table = program.attributes.setdefault(class_name, {})
+        if attribute not in table:
+            found = ctx.refinement(annotation, attribute)
+            if found is not None:
+                table[attribute] = found
+    _collect_callbacks(ctx, program)
     return program
 
 
@@ -99,28 +104,8 @@ def _add_function(
     )
 
 
-def _collect_attributes(ctx: FileContext, program: Program, function: Function) -> None:
-    """`self.x: Annotated[...] = ...` in a method refines attribute x of the class."""
-    node = function.node
-    if not function.is_method or isinstance(node, ast.Lambda) or not node.args.args:
-        return
-    self_name = node.args.args[0].arg
-    table = program.attributes.setdefault(function.class_name or "", {})
-    for child in ast.walk(node):
-        if (
-            isinstance(child, ast.AnnAssign)
-            and isinstance(child.target, ast.Attribute)
-            and isinstance(child.target.value, ast.Name)
-            and child.target.value.id == self_name
-            and child.target.attr not in table
-        ):
-            found = ctx.refinement(child.annotation, child.target.attr)
-            if found is not None:
-                table[child.target.attr] = found
-
-
-def _collect_callbacks(ctx: FileContext, program: Program, tree: ast.Module) -> None:
-    for class_name, call in _calls_by_class(tree):
+def _collect_callbacks(ctx: FileContext, program: Program) -> None:
+    for class_name, call in ctx.index.calls:
         name = (
             call.func.attr
             if isinstance(call.func, ast.Attribute)
@@ -140,14 +125,6 @@ def _collect_callbacks(ctx: FileContext, program: Program, tree: ast.Module) -> 
         if resolved is not None:
             key, bound = resolved
             program.callbacks[key] = Callback(registration.kind, interface, bound)
-
-
-def _calls_by_class(tree: ast.Module) -> list[tuple[str | None, ast.Call]]:
-    found: list[tuple[str | None, ast.Call]] = []
-    for node in tree.body:
-        owner = node.name if isinstance(node, ast.ClassDef) else None
-        found.extend((owner, c) for c in ast.walk(node) if isinstance(c, ast.Call))
-    return found
 
 
 def _argument(call: ast.Call, position: int, keyword: str) -> ast.expr | None:

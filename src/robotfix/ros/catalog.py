@@ -67,6 +67,7 @@ class FieldSpec:
     kind: str  # int, float, bool, str, msg
     msg_type: str | None = None  # pkg/Name when kind == "msg"
     array: bool = False
+    loose: bool = False  # char/byte: ROS 1 takes str or int there; no base-type check
 
 
 @dataclass(frozen=True)
@@ -220,7 +221,7 @@ class MsgCatalog:
         self, name: str, type_: str, array: bool, package: str
     ) -> FieldSpec | None:
         if type_ in INT_TYPES:
-            return FieldSpec(name, "int", None, array)
+            return FieldSpec(name, "int", None, array, loose=type_ in ("char", "byte"))
         if type_ in FLOAT_TYPES:
             return FieldSpec(name, "float", None, array)
         if type_ in BASE_KINDS:

@@ -1,0 +1,152 @@
+"""One walk over a module's AST that records what every scope binds and declares,
+the imports, the calls (with the class they sit in) and `self.x: Annotated[...]`
+declarations. Everything else reads this index instead of walking the tree again.
+"""
+
+from __future__ import annotations
+
+import ast
+from dataclasses import dataclass, field
+
+FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef)
+COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
+
+
+@dataclass
+class ScopeNames:
+    local_names: set[str] = field(default_factory=set)
+    global_names: set[str] = field(default_factory=set)
+    annotated: list[tuple[ast.expr, str]] = field(
+        default_factory=list
+    )  # (annotation, target)
+
+
+@dataclass
+class FileIndex:
+    scopes: dict[int, ScopeNames] = field(default_factory=dict)  # id(scope node) ->
+    imports: dict[str, str] = field(default_factory=dict)  # local name -> qualified
+    star_import: bool = False
+    calls: list[tuple[str | None, ast.Call]] = field(
+        default_factory=list
+    )  # (class, call)
+    # (class name, attribute, annotation) for `self.x: Annotated[...]` in methods
+    attributes: list[tuple[str, str, ast.expr]] = field(default_factory=list)
+    class_scopes: set[int] = field(default_factory=set)
+
+
+def index_module(tree: ast.Module) -> FileIndex:
+    index = FileIndex()
+    index.scopes[id(tree)] = ScopeNames()
+    # (node, owning scope node id, enclosing top-level class, method's self name)
+    todo: list[tuple[ast.AST, int, str | None, str | None]] = [
+        (node, id(tree), None, None) for node in tree.body
+    ]
+    while todo:
+        node, owner, cls, self_name = todo.pop()
+        names = index.scopes[owner]
+        kind = type(node)
+        if kind is ast.Name:
+            if not isinstance(node.ctx, ast.Load):  # type: ignore[attr-defined]
+                names.local_names.add(node.id)  # type: ignore[attr-defined]
+            continue
+        if kind in FUNCTIONS or kind is ast.Lambda:
+            _enter_function(index, node, owner, cls, self_name, todo)  # type: ignore[arg-type]
+            continue
+        if kind is ast.ClassDef:
+            assert isinstance(node, ast.ClassDef)
+            names.local_names.add(node.name)
+            index.scopes[id(node)] = ScopeNames()
+            index.class_scopes.add(id(node))
+            top = node.name if owner == id(tree) else cls
+            todo.extend(
+                (d, owner, cls, self_name) for d in [*node.decorator_list, *node.bases]
+            )
+            todo.extend((d, owner, cls, self_name) for d in node.keywords)
+            todo.extend((s, id(node), top, None) for s in node.body)
+            continue
+        if kind in COMPREHENSIONS:
+            todo.append((node.generators[0].iter, owner, cls, self_name))  # type: ignore[attr-defined]
+            continue
+        if kind is ast.Import or kind is ast.ImportFrom:
+            _record_import(index, names, node)  # type: ignore[arg-type]
+        elif kind is ast.Global or kind is ast.Nonlocal:
+            names.global_names.update(node.names)  # type: ignore[attr-defined]
+        elif kind is ast.ExceptHandler and node.name:  # type: ignore[attr-defined]
+            names.local_names.add(node.name)  # type: ignore[attr-defined]
+        elif kind is ast.AnnAssign:
+            _record_annotation(index, names, node, cls, self_name)  # type: ignore[arg-type]
+        elif kind is ast.Call:
+            index.calls.append((cls, node))  # type: ignore[arg-type]
+        for name in node._fields:
+            value = getattr(node, name, None)
+            if value.__class__ is list:
+                todo.extend(
+                    (v, owner, cls, self_name) for v in value if isinstance(v, ast.AST)
+                )
+            elif isinstance(value, ast.AST):
+                todo.append((value, owner, cls, self_name))
+    return index
+
+
+def _enter_function(
+    index: FileIndex,
+    node: ast.FunctionDef | ast.AsyncFunctionDef | ast.Lambda,
+    owner: int,
+    cls: str | None,
+    self_name: str | None,
+    todo: list[tuple[ast.AST, int, str | None, str | None]],
+) -> None:
+    outer = index.scopes[owner]
+    inner = index.scopes[id(node)] = ScopeNames()
+    args = node.args
+    every = [*args.posonlyargs, *args.args, *args.kwonlyargs]
+    every += [a for a in (args.vararg, args.kwarg) if a is not None]
+    defaults = [*args.defaults, *[d for d in args.kw_defaults if d is not None]]
+    todo.extend((d, owner, cls, self_name) for d in defaults)
+    for arg in every:
+        inner.local_names.add(arg.arg)
+        if arg.annotation is not None:
+            inner.annotated.append((arg.annotation, arg.arg))
+    if isinstance(node, ast.Lambda):
+        todo.append((node.body, id(node), cls, None))
+        return
+    outer.local_names.add(node.name)
+    todo.extend((d, owner, cls, self_name) for d in node.decorator_list)
+    is_method = owner in index.class_scopes
+    method_self = args.args[0].arg if is_method and args.args else None
+    todo.extend((s, id(node), cls, method_self) for s in node.body)
+
+
+def _record_import(
+    index: FileIndex, names: ScopeNames, node: ast.Import | ast.ImportFrom
+) -> None:
+    for alias in node.names:
+        if alias.name == "*":
+            index.star_import = True
+            continue
+        local = alias.asname or alias.name.split(".")[0]
+        names.local_names.add(local)
+        if isinstance(node, ast.Import):
+            index.imports[local] = alias.name if alias.asname else local
+        elif node.module and not node.level:
+            index.imports[local] = f"{node.module}.{alias.name}"
+
+
+def _record_annotation(
+    index: FileIndex,
+    names: ScopeNames,
+    node: ast.AnnAssign,
+    cls: str | None,
+    self_name: str | None,
+) -> None:
+    target = node.target
+    if isinstance(target, ast.Name):
+        names.annotated.append((node.annotation, target.id))
+    elif (
+        isinstance(target, ast.Attribute)
+        and isinstance(target.value, ast.Name)
+        and self_name is not None
+        and target.value.id == self_name
+        and cls is not None
+    ):
+        index.attributes.append((cls, target.attr, node.annotation))
