@@ -12,7 +12,7 @@ import traceback
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from robotfix import messages
+from robotfix import messages, rules
 from robotfix.analysis.vc import VC, Verdict
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic, Severity
@@ -116,8 +116,18 @@ def catalog_problems(catalog: MsgCatalog) -> list[Diagnostic]:
 
 
 def _finish(diagnostics: list[Diagnostic]) -> list[Diagnostic]:
+    """Sorted, without exact duplicates, and one RF508 note per message type per run."""
     unique = {(d.sort_key(), d.notes): d for d in diagnostics}
-    return [unique[k] for k in sorted(unique, key=lambda k: k[0])]
+    result: list[Diagnostic] = []
+    noted: set[str] = set()
+    for key in sorted(unique, key=lambda k: k[0]):
+        diag = unique[key]
+        if diag.rule is rules.UNKNOWN_MESSAGE_CLASS:
+            if diag.message in noted:
+                continue
+            noted.add(diag.message)
+        result.append(diag)
+    return result
 
 
 def _save_caches(catalog: MsgCatalog) -> None:

@@ -14,6 +14,7 @@ DOCS_BASE = "https://robotfix.dev/docs"
 class Severity(enum.Enum):
     ERROR = "error"
     WARNING = "warning"
+    NOTE = "note"  # information only: never changes the exit status
 
 
 @dataclass(frozen=True)

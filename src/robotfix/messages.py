@@ -48,6 +48,22 @@ def annotation_problem(
     return Diagnostic(rule, path, Span.point(line, col), detail)
 
 
+def unknown_message_class(path: str, span: Span, qualified: str) -> Diagnostic:
+    package = qualified.split(".")[0]
+    return Diagnostic(
+        rules.UNKNOWN_MESSAGE_CLASS,
+        path,
+        span,
+        f"`{qualified}` is not a known message type: its fields are not checked",
+        (
+            Note(
+                f"pass the folder with {package}'s .msg files with --msg-path, or add "
+                "it to msg-paths in [tool.robotfix]"
+            ),
+        ),
+    )
+
+
 def refinement_violated(
     path: str,
     span: Span,

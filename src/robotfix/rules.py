@@ -60,6 +60,13 @@ MISPLACED_UNIT = Rule(
     "RF507", "misplaced-unit", "Unit(), Frame() or Tag() used where it has no meaning"
 )
 
+UNKNOWN_MESSAGE_CLASS = Rule(
+    "RF508",
+    "unknown-message-class",
+    "Code uses a message type whose definition was not found",
+    Severity.NOTE,
+)
+
 SOLVER_UNKNOWN = Rule("RF901", "solver-unknown", "Solver could not decide", W)
 
 ALL_RULES: dict[str, Rule] = {
@@ -82,6 +89,7 @@ ALL_RULES: dict[str, Rule] = {
         UNKNOWN_FIELD,
         MALFORMED_INTERFACE,
         MISPLACED_UNIT,
+        UNKNOWN_MESSAGE_CLASS,
         SOLVER_UNKNOWN,
     )
 }

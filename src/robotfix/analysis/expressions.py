@@ -280,12 +280,13 @@ class ExpressionEvaluator:
             return (right.unit if left.literal else left.unit), False
         if left.unit is None or right.unit is None:
             return None, False
-        if (
-            left.unit.same_as(right.unit)
-            or right.fits_unit(left.unit)
-            or left.fits_unit(right.unit)
-        ):
+        if left.unit.same_as(right.unit):
             return left.unit, False
+        if right.fits_unit(left.unit) or left.fits_unit(right.unit):
+            same = left.unit.same_dimension(right.unit)
+            return (
+                left.unit if left.scale == 1.0 else right.unit
+            ) if same else None, False
         text = self.ctx.source.segment(node) or op
         self.ctx.report(
             messages.operand_units(

@@ -21,11 +21,16 @@ from robotfix.analysis.index import index_module
 from robotfix.analysis.program import Function, Program, collect
 from robotfix.analysis.state import MAYBE, State, join
 from robotfix.analysis.values import NONE, Uninit, Value
+from robotfix import messages
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.astwalk import walk
 
 BUILTINS = frozenset(dir(builtins)) | {"__file__", "__name__", "__doc__", "__spec__"}
+# Python packages with a `msg`/`srv`/`action` module that is not an interface package.
+CLIENT_LIBRARIES = frozenset(
+    {"rclpy", "rospy", "actionlib", "tf", "tf2_ros", "rosbag", "launch", "launch_ros"}
+)
 STATIC_KINDS = frozenset({"module", "msgclass", "interface", "function", "class"})
 
 
@@ -430,8 +435,24 @@ class Interpreter(CallEvaluator):
                 value = Value("interface", name=interface)
             else:
                 value = Value("module", name=qualified)
+                self._note_unknown_interface(node, qualified)
             state.env[alias.asname or alias.name] = value
         return state
+
+    def _note_unknown_interface(self, node: ast.ImportFrom, qualified: str) -> None:
+        """RF508, only in files that use refinements: unannotated code stays silent."""
+        parts = qualified.split(".")
+        if (
+            len(parts) == 3
+            and parts[1] in ("msg", "srv", "action")
+            and parts[0] not in CLIENT_LIBRARIES
+            and "Annotated" in self.ctx.source.text
+        ):
+            self.ctx.report(
+                messages.unknown_message_class(
+                    self.ctx.source.path, self.ctx.source.span(node), qualified
+                )
+            )
 
     def visit_FunctionDef(
         self, node: ast.FunctionDef | ast.AsyncFunctionDef, state: State

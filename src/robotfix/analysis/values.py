@@ -51,12 +51,17 @@ class Value:
         return replace(self, unit=unit, literal=False, scale=1.0)
 
     def fits_unit(self, expected: Unit) -> bool:
-        """Same unit, or the same dimension after the literal factors it was scaled by
-        (`speed / 3.6` fits m/s when speed is in km/h)."""
+        """Same unit; or the same dimension after the literal factors it was scaled by
+        (`speed / 3.6` fits m/s when speed is in km/h); or, once scaled by a literal,
+        any other dimension (the literal may carry a unit)."""
         got = self.unit
         if got is None or got.same_as(expected):
             return True
-        if not got.same_dimension(expected) or got.offset or expected.offset:
+        if not got.same_dimension(expected):
+            # `v * 0.1` may be a speed times a literal time step: the literal can carry
+            # the missing unit, so only an unscaled value is surely a mismatch.
+            return self.scale != 1.0
+        if got.offset or expected.offset:
             return False
         return math.isclose(got.factor / self.scale, expected.factor, rel_tol=1e-3)
 

@@ -15,9 +15,9 @@ from dataclasses import dataclass
 
 from robotfix.diagnostics import Diagnostic
 
-_PREFIX = re.compile(r"#\s*(error|warning)\s*:")
+_PREFIX = re.compile(r"#\s*(error|warning|note)\s*:")
 _ASSERTION = re.compile(
-    r'#\s*(?P<kind>error|warning):\s*(?P<code>RF\d{3})(?:\s+"(?P<text>[^"]*)")?\s*'
+    r'#\s*(?P<kind>error|warning|note):\s*(?P<code>RF\d{3})(?:\s+"(?P<text>[^"]*)")?\s*'
 )
 _SKIP = (
     tokenize.NL,
