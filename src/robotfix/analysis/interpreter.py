@@ -14,6 +14,7 @@ import builtins
 from collections.abc import Callable
 from dataclasses import replace
 
+from robotfix import messages
 from robotfix.analysis import heap
 from robotfix.analysis.calls import CallEvaluator
 from robotfix.analysis.context import FileContext, Scope, build_scope
@@ -21,7 +22,6 @@ from robotfix.analysis.index import index_module
 from robotfix.analysis.program import Function, Program, collect
 from robotfix.analysis.state import MAYBE, State, join
 from robotfix.analysis.values import NONE, Uninit, Value
-from robotfix import messages
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.astwalk import walk
