@@ -7,8 +7,10 @@ diagnostics are filtered by suppressions, sorted and de-duplicated.
 
 from __future__ import annotations
 
+import ast
 import time
 import traceback
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -61,17 +63,101 @@ def check_source(
     return _finish(_check(SourceFile.from_text(path, text), catalog))
 
 
-def check_paths(paths: list[Path], config: Config) -> Result:
+def hover(text: str, path: str, line: int, col: int, catalog: MsgCatalog) -> str | None:
+    """Markdown for the innermost name or message field at (1-based line, 0-based
+    character column), as the analysis sees it there."""
+    from robotfix.analysis.context import FileContext
+    from robotfix.analysis.interpreter import analyze_module
+
+    source = SourceFile.from_text(path, text)
+    if source.problem is not None:
+        return None
+    ctx = FileContext(source, catalog, discharge)
+    ctx.hovers = []
+    analyze_module(ctx)
+    found = [
+        (span, markdown)
+        for span, markdown in ctx.hovers
+        if span.line == line == span.end_line and span.col <= col < span.end_col
+    ]
+    if not found:
+        return None
+    return min(found, key=lambda item: item[0].end_col - item[0].col)[1]
+
+
+def unit_suggestions(text: str, path: str, catalog: MsgCatalog) -> list[Suggestion]:
+    """Units the analysis can pin on unannotated variables from the flows they feed."""
+    from robotfix.analysis.context import FileContext
+    from robotfix.analysis.interpreter import analyze_module
+
+    source = SourceFile.from_text(path, text)
+    if source.problem is not None or source.tree is None:
+        return []
+    ctx = FileContext(source, catalog, discharge)
+    ctx.unit_flows = {}
+    analyze_module(ctx)
+    found = []
+    for (scope_id, name), (units, kinds) in sorted(
+        ctx.unit_flows.items(), key=lambda i: i[0][1]
+    ):
+        if len(units) != 1:
+            continue  # flows into several units: a bug, not something to annotate
+        first = _first_assignment(source.tree, scope_id, name)
+        if first is not None:
+            kind = "int" if kinds == {"int"} else "float"
+            found.append(
+                Suggestion(first.lineno, first.col_offset, name, units.pop(), kind)
+            )
+    return found
+
+
+@dataclass(frozen=True)
+class Suggestion:
+    line: int
+    col: int  # of the assigned name
+    name: str
+    unit: str
+    kind: str
+
+
+def _first_assignment(tree: ast.Module, scope_id: int, name: str) -> ast.Name | None:
+    from robotfix.astwalk import walk
+
+    scope = next((n for n in walk(tree) if id(n) == scope_id), None)
+    body = getattr(scope, "body", None)
+    if not isinstance(body, list):
+        return None
+    for statement in body:
+        if (
+            isinstance(statement, ast.Assign)
+            and len(statement.targets) == 1
+            and isinstance(statement.targets[0], ast.Name)
+            and statement.targets[0].id == name
+        ):
+            return statement.targets[0]
+    return None
+
+
+def check_paths(
+    paths: list[Path],
+    config: Config,
+    progress: Callable[[int, int, str], None] | None = None,
+) -> Result:
     """Check every Python file under `paths`; interface files come from the msg paths
     and from the msg/srv/action folders of ROS packages under `paths`."""
     started = time.perf_counter()
     result = Result()
     folders = list(config.msg_paths) + ros_interface_folders(paths)
-    catalog = MsgCatalog(interface_files(folders), rep103=config.rep103)
+    catalog = MsgCatalog(
+        interface_files(folders), rep103=config.rep103, distro=config.ros_distro
+    )
     for problem in catalog_problems(catalog):
         result.diagnostics.append(problem)
-    for file in python_files(paths):
+    files = python_files(paths, config)
+    for file in files:
         result.files += 1
+        if progress is not None:
+            progress(result.files, len(files), str(file))
         try:
             data = file.read_bytes()
         except OSError as err:
@@ -80,12 +166,11 @@ def check_paths(paths: list[Path], config: Config) -> Result:
             )
             continue
         try:
+            source = SourceFile.from_bytes(str(file), data)
             result.diagnostics.extend(
-                _check(SourceFile.from_bytes(str(file), data), catalog)
+                _check(source, catalog, config.ignored_codes(file))
             )
-        except (
-            Exception
-        ) as err:  # a fault of ours: report it, go on with the other files
+        except Exception as err:  # a fault of ours: report it, go on with the others
             summary = f"{type(err).__name__}: {err}"
             result.internal_errors.append(
                 InternalError(str(file), summary, traceback.format_exc())
@@ -96,7 +181,9 @@ def check_paths(paths: list[Path], config: Config) -> Result:
     return result
 
 
-def _check(source: SourceFile, catalog: MsgCatalog) -> list[Diagnostic]:
+def _check(
+    source: SourceFile, catalog: MsgCatalog, ignored: frozenset[str] = frozenset()
+) -> list[Diagnostic]:
     from robotfix.analysis.context import FileContext
     from robotfix.analysis.interpreter import analyze_module
 
@@ -104,7 +191,42 @@ def _check(source: SourceFile, catalog: MsgCatalog) -> list[Diagnostic]:
         return [source.problem]
     ctx = FileContext(source, catalog, discharge)
     analyze_module(ctx)
-    return [d for d in ctx.diagnostics if not source.is_suppressed(d)]
+    kept = [
+        d
+        for d in ctx.diagnostics
+        if not source.is_suppressed(d)
+        and d.code not in ignored
+        and d.rule.name not in ignored
+    ]
+    return kept + _unused_suppressions(source, ctx.diagnostics)
+
+
+def _unused_suppressions(
+    source: SourceFile, found: list[Diagnostic]
+) -> list[Diagnostic]:
+    """RF010: a `# robotfix: ignore[...]` that silences nothing, or names no rule."""
+    out = []
+    for line, (col, codes) in sorted(source.suppressions.items()):
+        on_line = [d for d in found if d.span.line == line]
+        listed = sorted(codes or ())
+        unknown = [
+            c
+            for c in listed
+            if c not in rules.ALL_RULES and c not in rules.RULES_BY_NAME
+        ]
+        used = [
+            c for c in listed if any(d.code == c or d.rule.name == c for d in on_line)
+        ]
+        if (
+            unknown
+            or (codes is None and not on_line)
+            or (codes is not None and not used)
+        ):
+            unused = [c for c in listed if c not in used and c not in unknown]
+            out.append(
+                messages.unused_suppression(source.path, line, col, unknown, unused)
+            )
+    return out
 
 
 def catalog_problems(catalog: MsgCatalog) -> list[Diagnostic]:
@@ -137,7 +259,8 @@ def _save_caches(catalog: MsgCatalog) -> None:
     catalog.save()
 
 
-def python_files(paths: list[Path]) -> list[Path]:
+def python_files(paths: list[Path], config: Config | None = None) -> list[Path]:
+    """Files named on the command line, and `*.py` under folders (less excludes)."""
     found: list[Path] = []
     for path in paths:
         if path.is_dir():
@@ -148,6 +271,9 @@ def python_files(paths: list[Path]) -> list[Path]:
             )
         else:
             found.append(path)
+    if config is not None and config.exclude:
+        named = set(paths)
+        found = [f for f in found if f in named or not config.excluded(f)]
     return sorted(dict.fromkeys(found))
 
 

@@ -1,7 +1,8 @@
-"""The command line: `robotfix check`, `robotfix rules`, `robotfix --version`.
+"""The command line: `check`, `rules`, `explain`, `suggest`, `lsp`, `--version`.
 
 Exit status: 0 no errors (warnings allowed unless --strict), 1 errors found,
-2 bad usage, unreadable input or an internal failure.
+2 bad usage, unreadable input or an internal failure. Heavy modules are imported
+inside the commands, so `robotfix --version` starts fast.
 """
 
 from __future__ import annotations
@@ -10,10 +11,16 @@ import argparse
 import os
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from robotfix import __version__
 
+if TYPE_CHECKING:
+    from robotfix.api import Result
+    from robotfix.config import Config
+
 EXIT_OK, EXIT_FOUND, EXIT_FAILURE = 0, 1, 2
+FORMATS = ("text", "concise", "json", "sarif", "github")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -41,7 +48,12 @@ def build_parser() -> argparse.ArgumentParser:
         metavar="DIR",
         help="a folder (or file) of .msg/.srv/.action files; repeatable",
     )
-    check.add_argument("--format", choices=("text", "json"), default=None)
+    check.add_argument(
+        "--format",
+        choices=FORMATS,
+        default=None,
+        help="text (default: with source lines), concise, json, sarif, github",
+    )
     check.add_argument(
         "--strict",
         action="store_true",
@@ -55,7 +67,32 @@ def build_parser() -> argparse.ArgumentParser:
         default=None,
         help="do not assume the REP 103 units of standard messages",
     )
+    check.add_argument(
+        "--exclude",
+        action="append",
+        default=[],
+        metavar="PATTERN",
+        help="gitignore-style pattern of files to skip; repeatable",
+    )
+    check.add_argument(
+        "--ros-distro",
+        default=None,
+        metavar="NAME",
+        help="standard message definitions: ros2 (default), ros1, jazzy, "
+        "humble, iron, kilted, rolling, noetic",
+    )
     commands.add_parser("rules", help="list every diagnostic code")
+    explain = commands.add_parser("explain", help="what a code means, and the fix")
+    explain.add_argument("code", metavar="CODE", help="a code (RF101) or a name")
+    suggest = commands.add_parser("suggest", help="propose Unit() annotations")
+    suggest.add_argument("paths", nargs="+", type=Path, metavar="PATH")
+    suggest.add_argument(
+        "--msg-path", action="append", type=Path, default=[], metavar="DIR"
+    )
+    suggest.add_argument(
+        "--apply", action="store_true", help="write the proposals into the files"
+    )
+    commands.add_parser("lsp", help="language server on stdin/stdout")
     return parser
 
 
@@ -66,6 +103,14 @@ def main(argv: list[str] | None = None) -> int:
             return run_check(args)
         if args.command == "rules":
             return run_rules()
+        if args.command == "explain":
+            return run_explain(args.code)
+        if args.command == "suggest":
+            from robotfix.suggest import run_suggest
+
+            return run_suggest(args.paths, args.msg_path, args.apply)
+        if args.command == "lsp":
+            return run_lsp()
     except KeyboardInterrupt:
         return EXIT_FAILURE
     build_parser().print_help()
@@ -76,39 +121,101 @@ def run_rules() -> int:
     from robotfix.rules import ALL_RULES
 
     for rule in ALL_RULES.values():
-        print(f"{rule.code}  {rule.name:<28} {rule.severity.value:<8} {rule.title}")
+        print(f"{rule.code}  {rule.name:<24} {rule.severity.value:<8} {rule.title}")
+    return EXIT_OK
+
+
+def run_explain(code: str) -> int:
+    from robotfix.rules import ALL_RULES, RULES_BY_NAME
+
+    rule = ALL_RULES.get(code.upper()) or RULES_BY_NAME.get(code)
+    if rule is None:
+        print(
+            f"robotfix: error: `{code}` is not a RobotFix code or rule name; "
+            "`robotfix rules` lists them",
+            file=sys.stderr,
+        )
+        return EXIT_FAILURE
+    page = rule_page(rule.code)
+    if page is None:
+        print(f"{rule.code} {rule.name}: {rule.title}\n{rule.docs_url}")
+    else:
+        sys.stdout.write(page)
+    return EXIT_OK
+
+
+def rule_page(code: str) -> str | None:
+    """The rule's page: shipped inside the wheel, or in the source tree's docs/."""
+    from importlib import resources
+
+    try:
+        shipped = resources.files("robotfix").joinpath("rule_docs", f"{code}.md")
+        if shipped.is_file():
+            return shipped.read_text(encoding="utf-8")
+    except (OSError, ModuleNotFoundError):
+        pass
+    source = Path(__file__).resolve().parents[2] / "docs" / "rules" / f"{code}.md"
+    return source.read_text(encoding="utf-8") if source.is_file() else None
+
+
+def run_lsp() -> int:
+    try:
+        from robotfix.lsp.server import serve
+    except ImportError as err:
+        print(
+            f"robotfix: error: the language server needs pygls ({err}); "
+            "install it with: pip install 'robotfix[lsp]'",
+            file=sys.stderr,
+        )
+        return EXIT_FAILURE
+    serve()
     return EXIT_OK
 
 
 def run_check(args: argparse.Namespace) -> int:
-    from dataclasses import replace
-
     from robotfix import api, config
-    from robotfix.diagnostics import Severity
 
     paths: list[Path] = args.paths or [Path(".")]
-    missing = [p for p in paths if not p.exists()]
+    missing = [p for p in paths if not p.exists() and not p.is_symlink()]
+    for path in missing:
+        print(f"robotfix: error: {path}: no such file or directory", file=sys.stderr)
     if missing:
-        for path in missing:
-            print(
-                f"robotfix: error: {path}: no such file or directory", file=sys.stderr
-            )
         return EXIT_FAILURE
     try:
-        settings = config.load(paths[0])
+        settings = merge_flags(config.load(paths[0]), args)
     except config.ConfigError as err:
         print(f"robotfix: error: {err}", file=sys.stderr)
         return EXIT_FAILURE
-    settings = replace(
+    progress = Progress() if sys.stderr.isatty() else None
+    result = api.check_paths(paths, settings, progress=progress)
+    if progress is not None:
+        progress.done()
+    return report(result, settings)
+
+
+def merge_flags(settings: Config, args: argparse.Namespace) -> Config:
+    from dataclasses import replace
+
+    from robotfix.config import DISTROS, ConfigError
+
+    if args.ros_distro is not None and args.ros_distro not in DISTROS:
+        raise ConfigError(f"--ros-distro must be one of {', '.join(DISTROS)}")
+    return replace(
         settings,
         msg_paths=tuple(args.msg_path) + settings.msg_paths,
         strict=settings.strict if args.strict is None else args.strict,
         rep103=settings.rep103 if args.rep103 is None else args.rep103,
         output_format=args.format or settings.output_format,
+        exclude=settings.exclude + tuple(args.exclude),
+        ros_distro=args.ros_distro or settings.ros_distro,
     )
-    result = api.check_paths(paths, settings)
+
+
+def report(result: Result, settings: Config) -> int:
+    from robotfix.diagnostics import Severity
+
     errors, warnings = result.count(Severity.ERROR), result.count(Severity.WARNING)
-    _print(result, settings.output_format, errors, warnings)
+    sys.stdout.write(render(result, settings.output_format, errors, warnings))
     for failure in result.internal_errors:
         print(
             f"robotfix: internal error while checking {failure.path}: "
@@ -123,44 +230,69 @@ def run_check(args: argparse.Namespace) -> int:
             "traceback, and please report it",
             file=sys.stderr,
         )
-    unreadable = any(d.code == "RF003" for d in result.diagnostics)
-    if result.internal_errors or unreadable:
+    if result.internal_errors or any(d.code == "RF003" for d in result.diagnostics):
         return EXIT_FAILURE
     if errors or (settings.strict and warnings):
         return EXIT_FOUND
     return EXIT_OK
 
 
-def _print(result: object, fmt: str, errors: int, warnings: int) -> None:
-    from robotfix.api import Result
+def render(result: Result, fmt: str, errors: int, warnings: int) -> str:
+    from robotfix.report import github, json_report, sarif, text
+    from robotfix.rules import ALL_RULES
 
-    assert isinstance(result, Result)
     if fmt == "json":
-        from robotfix.report import json as json_report
-
-        sys.stdout.write(
-            json_report.render(
-                result.diagnostics, result.files, errors, warnings, result.seconds
-            )
+        return json_report.render(
+            result.diagnostics, result.files, errors, warnings, result.seconds
         )
-        return
-    from robotfix.report import text
+    if fmt == "sarif":
+        return sarif.render(result.diagnostics, list(ALL_RULES.values()))
+    if fmt == "github":
+        return github.render(result.diagnostics)
+    # The summary is timed only on a terminal: piped output stays byte-identical.
+    seconds = result.seconds if sys.stdout.isatty() else None
+    summary = text.summary(result.files, errors, warnings, seconds)
+    if fmt == "concise":
+        return text.render_concise(result.diagnostics) + summary + "\n"
+    return text.render(result.diagnostics, SourceLines(), summary)
 
-    lines: dict[str, list[str]] = {}
 
-    def source_line(path: str, line: int) -> str | None:
-        if path not in lines:
+class SourceLines:
+    """Source lines for excerpts, read once per file."""
+
+    def __init__(self) -> None:
+        self._files: dict[str, list[str]] = {}
+
+    def __call__(self, path: str, line: int) -> str | None:
+        if path not in self._files:
             try:
-                lines[path] = (
-                    Path(path)
-                    .read_text(encoding="utf-8", errors="replace")
-                    .splitlines()
-                )
+                text = Path(path).read_text(encoding="utf-8", errors="replace")
+                self._files[path] = text.splitlines()
             except OSError:
-                lines[path] = []
-        found = lines[path]
+                self._files[path] = []
+        found = self._files[path]
         return found[line - 1] if 0 < line <= len(found) else None
 
-    sys.stdout.write(
-        text.render(result.diagnostics, source_line, result.files, errors, warnings)
-    )
+
+class Progress:
+    """A one-line progress bar on stderr, shown only when stderr is a terminal."""
+
+    def __init__(self) -> None:
+        self._shown = False
+
+    def __call__(self, done: int, total: int, path: str) -> None:
+        if total < 20:
+            return
+        width = 30
+        filled = width * done // total
+        name = path if len(path) < 40 else "..." + path[-37:]
+        sys.stderr.write(
+            f"\r[{'#' * filled}{'.' * (width - filled)}] {done}/{total} {name:<40}"
+        )
+        sys.stderr.flush()
+        self._shown = True
+
+    def done(self) -> None:
+        if self._shown:
+            sys.stderr.write("\r" + " " * 80 + "\r")
+            sys.stderr.flush()

@@ -34,6 +34,21 @@ def unreadable(path: str, detail: str) -> Diagnostic:
     return Diagnostic(rules.UNREADABLE_FILE, path, Span.point(1), detail)
 
 
+def unused_suppression(
+    path: str, line: int, col: int, unknown: list[str], unused: list[str]
+) -> Diagnostic:
+    if unknown:
+        detail = (
+            f"{', '.join(f'`{c}`' for c in unknown)} is not a RobotFix code or name"
+        )
+        detail += " (`robotfix rules` lists them)"
+    elif unused:
+        detail = f"nothing on this line is {', '.join(unused)}: remove the suppression"
+    else:
+        detail = "nothing on this line is reported: remove the suppression"
+    return Diagnostic(rules.UNUSED_SUPPRESSION, path, Span.point(line, col), detail)
+
+
 def syntax_error(path: str, span: Span, detail: str, rule: Rule) -> Diagnostic:
     if rule is rules.PYTHON2_SOURCE:
         message = f"this looks like Python 2 ({detail}); RobotFix checks Python 3 only"

@@ -16,6 +16,9 @@ PYTHON2_SOURCE = Rule(
     "RF002", "python2-source", "File is Python 2 and was not checked", W
 )
 UNREADABLE_FILE = Rule("RF003", "unreadable-file", "File cannot be read or decoded")
+UNUSED_SUPPRESSION = Rule(
+    "RF010", "unused-suppression", "A robotfix: ignore comment silences nothing", W
+)
 
 REFINEMENT_VIOLATED = Rule(
     "RF101", "refinement-violated", "Value violates its refinement on every execution"
@@ -75,6 +78,7 @@ ALL_RULES: dict[str, Rule] = {
         PYTHON_SYNTAX_ERROR,
         PYTHON2_SOURCE,
         UNREADABLE_FILE,
+        UNUSED_SUPPRESSION,
         REFINEMENT_VIOLATED,
         REFINEMENT_UNPROVEN,
         UNIT_MISMATCH,

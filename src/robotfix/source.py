@@ -39,7 +39,10 @@ class SourceFile:
     tree: ast.Module | None = None
     problem: Diagnostic | None = None
     lines: list[str] = field(default_factory=list)
-    suppressions: dict[int, frozenset[str] | None] = field(default_factory=dict)
+    # line -> (column of the comment, the codes or names listed; None for a bare ignore)
+    suppressions: dict[int, tuple[int, frozenset[str] | None]] = field(
+        default_factory=dict
+    )
 
     @staticmethod
     def from_bytes(path: str, data: bytes) -> SourceFile:
@@ -126,7 +129,7 @@ class SourceFile:
     def is_suppressed(self, diag: Diagnostic) -> bool:
         if diag.span.line not in self.suppressions:
             return False
-        codes = self.suppressions[diag.span.line]
+        codes = self.suppressions[diag.span.line][1]
         return codes is None or diag.code in codes or diag.rule.name in codes
 
 
@@ -158,8 +161,8 @@ def _syntax_problem(path: str, text: str, err: SyntaxError | ValueError) -> Diag
     return messages.syntax_error(path, Span.point(line, col), detail, rule)
 
 
-def _suppressions(text: str) -> dict[int, frozenset[str] | None]:
-    found: dict[int, frozenset[str] | None] = {}
+def _suppressions(text: str) -> dict[int, tuple[int, frozenset[str] | None]]:
+    found: dict[int, tuple[int, frozenset[str] | None]] = {}
     if "robotfix" not in text.lower():
         return found
     try:
@@ -168,11 +171,12 @@ def _suppressions(text: str) -> dict[int, frozenset[str] | None]:
                 match = _SUPPRESS.search(tok.string)
                 if match:
                     codes = match["codes"]
-                    found[tok.start[0]] = (
+                    listed = (
                         None
                         if codes is None
                         else frozenset(c.strip() for c in codes.split(",") if c.strip())
                     )
+                    found[tok.start[0]] = (tok.start[1] + match.start(), listed)
     except (tokenize.TokenError, SyntaxError):
         pass
     return found

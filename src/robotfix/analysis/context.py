@@ -17,7 +17,7 @@ from robotfix.analysis.vc import VC, Verdict
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement, extract
 from robotfix.astwalk import children
-from robotfix.diagnostics import Diagnostic
+from robotfix.diagnostics import Diagnostic, Span
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.source import SourceFile
 
@@ -59,6 +59,11 @@ class FileContext:
         self.imports: dict[str, str] = {}  # local name -> qualified name
         self.star_import = False
         self._reported: set[tuple[object, ...]] = set()
+        # (span, markdown) for names and fields, kept only for editor hovers
+        self.hovers: list[tuple[Span, str]] | None = None
+        # (scope node id, variable) -> (units it flows into, target base kinds), for
+        # `robotfix suggest`; None when not asked for
+        self.unit_flows: dict[tuple[int, str], tuple[set[str], set[str]]] | None = None
 
     # -- symbols and ids -----------------------------------------------------
     def fresh_id(self) -> int:

@@ -97,12 +97,41 @@ class ExpressionEvaluator:
         return Fraction(value)
 
     def eval_Name(self, node: ast.Name, state: State) -> Value:
-        return self.lookup_name(node.id, state, node)
+        value = self.lookup_name(node.id, state, node)
+        if self.ctx.hovers is not None:
+            self.ctx.hovers.append(
+                (self.ctx.source.span(node), self.describe_name(node.id, value))
+            )
+        return value
+
+    def describe_name(self, name: str, value: Value) -> str:
+        """Hover text for a variable: its type, unit and refinement."""
+        decl = self.decl_of(name)
+        kind = value.name if value.kind == "msg" else value.kind
+        if decl is not None and decl.base != "other":
+            kind = (decl.msg_type or "message") if decl.base == "msg" else decl.base
+        parts = [f"**{name}**: `{kind}`"]
+        unit = decl.unit if decl is not None and decl.unit is not None else value.unit
+        if unit is not None:
+            parts.append(f"in `{unit}`")
+        if decl is not None and decl.predicate != A.TRUE:
+            parts.append(f"— refinement `{A.show(decl.predicate)}` (line {decl.line})")
+        return " ".join(parts)
+
+    def decl_of(self, name: str) -> Refinement | None:
+        return None
 
     def eval_Attribute(self, node: ast.Attribute, state: State) -> Value:
         base = self.eval(node.value, state)
         if base.kind == "msg" and base.ref in state.heap:
             text = self.ctx.source.segment(node) or node.attr
+            if self.ctx.hovers is not None:
+                self.ctx.hovers.append(
+                    (
+                        self.ctx.source.span(node),
+                        self.describe_field(state, base.ref, node.attr),
+                    )
+                )
             return self.check.read_field(state, base.ref, node.attr, self.site, text)
         if base.kind == "module":
             return self._module_attribute(base.name, node)
@@ -118,6 +147,26 @@ class ExpressionEvaluator:
         ):
             return self.instance_attribute(base, node.value.id, node, state)
         return self.unknown(node)
+
+    def describe_field(self, state: State, ref: int, name: str) -> str:
+        """Hover text for a message field: type, unit and refinements."""
+        msg_type = state.heap[ref].type
+        spec = heap.field_spec(self.ctx, state, ref, name)
+        if spec is None:
+            return f"`{name}`: not a field of `{msg_type}`"
+        outer = heap.contexts(self.ctx, state, ref, name)
+        owner, path = (outer[0][0].name, outer[0][1]) if outer else (msg_type, name)
+        kind = spec.msg_type if spec.kind == "msg" else spec.kind
+        parts = [f"**{path}** of `{owner}`: `{kind}{'[]' if spec.array else ''}`"]
+        unit = heap.field_unit(self.ctx, state, ref, name)[0]
+        if unit is not None:
+            parts.append(f"in `{unit}`")
+        rules = [
+            inv.text for _, _, inv in heap.invariants_on(self.ctx, state, ref, name)
+        ]
+        if rules:
+            parts.append("— refinements: " + ", ".join(f"`{r}`" for r in rules))
+        return " ".join(parts)
 
     def _module_attribute(self, module: str, node: ast.Attribute) -> Value:
         qualified = f"{module}.{node.attr}"

@@ -174,6 +174,14 @@ class Interpreter(CallEvaluator):
             state, name, decl, self.refinement_lookup(decl, state)
         )
 
+    def decl_of(self, name: str) -> Refinement | None:
+        scope: Scope | None = self.scope
+        while scope is not None:
+            if name in scope.decls:
+                return scope.decls[name]
+            scope = scope.parent
+        return None
+
     def decl_for(self, name: str) -> Refinement | None:
         if name in self.scope.global_names:
             return self.scope.module().decls.get(name)
@@ -194,6 +202,13 @@ class Interpreter(CallEvaluator):
             if base.kind == "instance" and isinstance(target.value, ast.Name):
                 self.bind_attribute(base, target.value.id, target.attr, value, state)
             elif base.kind == "msg" and base.ref in state.heap:
+                if self.ctx.hovers is not None:
+                    self.ctx.hovers.append(
+                        (
+                            self.ctx.source.span(target),
+                            self.describe_field(state, base.ref, target.attr),
+                        )
+                    )
                 text = self.ctx.source.segment(target) or target.attr
                 self.check.write_field(
                     state, base.ref, target.attr, value, self.site, text
@@ -340,7 +355,38 @@ class Interpreter(CallEvaluator):
         value = self.eval(node.value, state)
         for target in node.targets:
             self.bind(target, value, state)
+            self._record_flow(node.value, target, state)
         return state
+
+    def _record_flow(self, source: ast.expr, target: ast.expr, state: State) -> None:
+        """For `robotfix suggest`: an unannotated variable assigned where a unit is
+        known (a refined variable, a message field with a unit)."""
+        flows = self.ctx.unit_flows
+        if (
+            flows is None
+            or not isinstance(source, ast.Name)
+            or self.decl_for(source.id)
+        ):
+            return
+        if source.id not in self.scope.local_names:
+            return
+        unit, kind = None, "float"
+        if isinstance(target, ast.Name):
+            decl = self.decl_for(target.id)
+            if decl is not None and decl.unit is not None:
+                unit, kind = decl.unit, decl.base
+        elif isinstance(target, ast.Attribute):
+            base = self.eval(target.value, state)
+            if base.kind == "msg" and base.ref in state.heap:
+                unit = heap.field_unit(self.ctx, state, base.ref, target.attr)[0]
+                spec = heap.field_spec(self.ctx, state, base.ref, target.attr)
+                kind = spec.kind if spec is not None else kind
+        if unit is not None and unit.text:
+            units, kinds = flows.setdefault(
+                (id(self.scope.node), source.id), (set(), set())
+            )
+            units.add(unit.text)
+            kinds.add(kind)
 
     def visit_AnnAssign(self, node: ast.AnnAssign, state: State) -> State:
         if node.value is not None:

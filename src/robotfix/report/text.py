@@ -8,13 +8,21 @@ from collections.abc import Callable
 from robotfix.diagnostics import Diagnostic
 
 
+def render_concise(diagnostics: list[Diagnostic]) -> str:
+    """One line per diagnostic, for editors, grep and quick scans."""
+    return "".join(
+        f"{d.path}:{d.span.line}:{d.span.col + 1}: {d.severity.value}[{d.code}]: "
+        f"{d.message}\n"
+        for d in diagnostics
+    )
+
+
 def render(
     diagnostics: list[Diagnostic],
     source_line: Callable[[str, int], str | None],
-    files: int,
-    errors: int,
-    warnings: int,
+    summary_line: str,
 ) -> str:
+    """The default: each diagnostic, its notes, and its source line with carets."""
     out: list[str] = []
     for d in diagnostics:
         out.append(
@@ -27,7 +35,7 @@ def render(
         line = source_line(d.path, d.span.line)
         if line is not None:
             out.extend(_excerpt(line, d))
-    out.append(summary(files, errors, warnings))
+    out.append(summary_line)
     return "\n".join(out) + "\n"
 
 
@@ -41,13 +49,16 @@ def _excerpt(line: str, d: Diagnostic) -> list[str]:
     return [f"  {number} | {text}", f"  {gutter} | {' ' * start}{'^' * width}"]
 
 
-def summary(files: int, errors: int, warnings: int) -> str:
+def summary(
+    files: int, errors: int, warnings: int, seconds: float | None = None
+) -> str:
     def plural(n: int, word: str) -> str:
         return f"{n} {word}{'' if n == 1 else 's'}"
 
+    timing = f" ({seconds:.2f} s)" if seconds is not None else ""
     if not errors and not warnings:
-        return f"No problems found in {plural(files, 'file')}."
+        return f"No problems found in {plural(files, 'file')}{timing}."
     return (
         f"Found {plural(errors, 'error')} and {plural(warnings, 'warning')} "
-        f"in {plural(files, 'file')}."
+        f"in {plural(files, 'file')}{timing}."
     )

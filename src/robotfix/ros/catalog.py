@@ -112,11 +112,14 @@ def normalize(name: str) -> str:
 
 
 class MsgCatalog:
-    def __init__(self, interface_files: list[Path], *, rep103: bool = True) -> None:
+    def __init__(
+        self, interface_files: list[Path], *, rep103: bool = True, distro: str = "ros2"
+    ) -> None:
         self._std: dict[str, Any] | None = None
         self._specs: dict[str, MsgSpec] = {}
         self._files = sorted(set(interface_files))
         self._rep103 = rep103
+        self._distro = distro
         self._loaded = False
         self.problems: list[CatalogProblem] = []
 
@@ -150,7 +153,7 @@ class MsgCatalog:
         return None
 
     def save(self) -> None:
-        _STD_CACHE.save()
+        _std_cache(self._distro).save()
 
     # -- loading -------------------------------------------------------------
     def _load(self) -> None:
@@ -361,7 +364,7 @@ class MsgCatalog:
     # -- standard definitions ------------------------------------------------
     def _standard(self) -> dict[str, Any]:
         if self._std is None:
-            self._std = _standard_definitions()
+            self._std = _standard_definitions(self._distro)
         return self._std
 
     def _from_standard(self, key: str) -> MsgSpec:
@@ -375,22 +378,43 @@ class MsgCatalog:
         return MsgSpec(key, fields, constants=consts)
 
 
-_STD_CACHE = JsonCache("ros-messages", install_key("rosbags", "msgs-v1"))
+# ros2 and ros1 are the newest LTS of each generation; the other store wins for
+# types one generation lacks, so ROS 1 code still knows ROS 2-only types and back.
+STORES = {
+    "ros2": ("ros2_jazzy", "ros1_noetic"),
+    "ros1": ("ros1_noetic", "ros2_jazzy"),
+    "jazzy": ("ros2_jazzy", "ros1_noetic"),
+    "humble": ("ros2_humble", "ros1_noetic"),
+    "iron": ("ros2_iron", "ros1_noetic"),
+    "kilted": ("ros2_kilted", "ros1_noetic"),
+    "rolling": ("latest", "ros1_noetic"),
+    "noetic": ("ros1_noetic", "ros2_jazzy"),
+}
+_STD_CACHES: dict[str, JsonCache] = {}
 
 
-def _standard_definitions() -> dict[str, Any]:
-    if not _STD_CACHE.entries:
-        for key, value in _convert_rosbags().items():
-            _STD_CACHE.put(key, value)
-    return _STD_CACHE.entries
+def _std_cache(distro: str) -> JsonCache:
+    if distro not in _STD_CACHES:
+        key = install_key("rosbags", f"msgs-v2-{distro}")
+        _STD_CACHES[distro] = JsonCache(f"ros-messages-{distro}", key)
+    return _STD_CACHES[distro]
 
 
-def _convert_rosbags() -> dict[str, Any]:
-    from rosbags.typesys.stores import ros1_noetic, ros2_jazzy
+def _standard_definitions(distro: str) -> dict[str, Any]:
+    cache = _std_cache(distro)
+    if not cache.entries:
+        for key, value in _convert_rosbags(STORES.get(distro, STORES["ros2"])).items():
+            cache.put(key, value)
+    return cache.entries
+
+
+def _convert_rosbags(stores: tuple[str, str]) -> dict[str, Any]:
+    import importlib
 
     out: dict[str, Any] = {}
-    for store in (ros1_noetic.FIELDDEFS, ros2_jazzy.FIELDDEFS):  # ROS 2 wins
-        for name, (consts, fields) in store.items():
+    for store in reversed(stores):  # the first store wins
+        fielddefs = importlib.import_module(f"rosbags.typesys.stores.{store}").FIELDDEFS
+        for name, (consts, fields) in fielddefs.items():
             out[normalize(name)] = {
                 "fields": [_rosbags_field(n, d) for n, d in fields],
                 "consts": [

@@ -135,8 +135,21 @@ def _split_comment(line: str) -> tuple[str, tuple[int, str] | None]:
         start = marker.end()
         while start < len(line) and line[start] in " \t":
             start += 1
-        return line[:hash_at], (start, line[start:].rstrip())
+        return line[:hash_at], (start, _until_comment(line[start:]).rstrip())
     return (line if hash_at < 0 else line[:hash_at]), None
+
+
+def _until_comment(text: str) -> str:
+    """A predicate ends where an ordinary `# comment` starts (outside quotes)."""
+    quote = ""
+    for index, char in enumerate(text):
+        if quote:
+            quote = "" if char == quote else quote
+        elif char in "'\"":
+            quote = char
+        elif char == "#":
+            return text[:index]
+    return text
 
 
 def _bad_line(code: str) -> str:

@@ -1,0 +1,1 @@
+"""The language server (optional extra `lsp`): the only package that imports pygls."""
