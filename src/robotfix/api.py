@@ -13,12 +13,16 @@ import traceback
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from robotfix import messages, rules
 from robotfix.analysis.vc import VC, Verdict
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic, Severity
 from robotfix.ros.catalog import MsgCatalog
+
+if TYPE_CHECKING:
+    from robotfix.analysis.context import FileContext
 from robotfix.source import SourceFile
 
 INTERFACE_SUFFIXES = (".msg", ".srv", ".action")
@@ -66,15 +70,12 @@ def check_source(
 def hover(text: str, path: str, line: int, col: int, catalog: MsgCatalog) -> str | None:
     """Markdown for the innermost name or message field at (1-based line, 0-based
     character column), as the analysis sees it there."""
-    from robotfix.analysis.context import FileContext
-    from robotfix.analysis.interpreter import analyze_module
 
     source = SourceFile.from_text(path, text)
     if source.problem is not None:
         return None
-    ctx = FileContext(source, catalog, discharge)
-    ctx.hovers = []
-    analyze_module(ctx)
+    ctx = _analyze(source, catalog, hovers=True)
+    assert ctx.hovers is not None
     found = [
         (span, markdown)
         for span, markdown in ctx.hovers
@@ -87,15 +88,12 @@ def hover(text: str, path: str, line: int, col: int, catalog: MsgCatalog) -> str
 
 def unit_suggestions(text: str, path: str, catalog: MsgCatalog) -> list[Suggestion]:
     """Units the analysis can pin on unannotated variables from the flows they feed."""
-    from robotfix.analysis.context import FileContext
-    from robotfix.analysis.interpreter import analyze_module
 
     source = SourceFile.from_text(path, text)
     if source.problem is not None or source.tree is None:
         return []
-    ctx = FileContext(source, catalog, discharge)
-    ctx.unit_flows = {}
-    analyze_module(ctx)
+    ctx = _analyze(source, catalog, flows=True)
+    assert ctx.unit_flows is not None
     found = []
     for (scope_id, name), (units, kinds) in sorted(
         ctx.unit_flows.items(), key=lambda i: i[0][1]
@@ -184,13 +182,10 @@ def check_paths(
 def _check(
     source: SourceFile, catalog: MsgCatalog, ignored: frozenset[str] = frozenset()
 ) -> list[Diagnostic]:
-    from robotfix.analysis.context import FileContext
-    from robotfix.analysis.interpreter import analyze_module
 
     if source.problem is not None:
         return [source.problem]
-    ctx = FileContext(source, catalog, discharge)
-    analyze_module(ctx)
+    ctx = _analyze(source, catalog)
     kept = [
         d
         for d in ctx.diagnostics
@@ -199,6 +194,28 @@ def _check(
         and d.rule.name not in ignored
     ]
     return kept + _unused_suppressions(source, ctx.diagnostics)
+
+
+def _analyze(
+    source: SourceFile, catalog: MsgCatalog, hovers: bool = False, flows: bool = False
+) -> FileContext:
+    """Run the analysis on a parsed file; a pathological file stops with RF902 and
+    keeps what was found before."""
+    from robotfix.analysis.context import BudgetExceeded, FileContext
+    from robotfix.analysis.interpreter import analyze_module
+
+    ctx = FileContext(source, catalog, discharge)
+    ctx.hovers = [] if hovers else None
+    ctx.unit_flows = {} if flows else None
+    try:
+        analyze_module(ctx)
+    except BudgetExceeded as stop:
+        ctx.report(
+            messages.analysis_budget(source.path, stop.line, "too much code to follow")
+        )
+    except RecursionError:
+        ctx.report(messages.analysis_budget(source.path, 1, "nested too deeply"))
+    return ctx
 
 
 def _unused_suppressions(

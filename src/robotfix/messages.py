@@ -34,6 +34,17 @@ def unreadable(path: str, detail: str) -> Diagnostic:
     return Diagnostic(rules.UNREADABLE_FILE, path, Span.point(1), detail)
 
 
+def analysis_budget(path: str, line: int, why: str) -> Diagnostic:
+    return Diagnostic(
+        rules.ANALYSIS_BUDGET,
+        path,
+        Span.point(line),
+        f"analysis of this file stopped early ({why}); what was found before is "
+        "reported, the rest of the file is not checked",
+        (Note("split very large or deeply nested code, or exclude generated files"),),
+    )
+
+
 def unused_suppression(
     path: str, line: int, col: int, unknown: list[str], unused: list[str]
 ) -> Diagnostic:

@@ -71,6 +71,9 @@ UNKNOWN_MESSAGE_CLASS = Rule(
 )
 
 SOLVER_UNKNOWN = Rule("RF901", "solver-unknown", "Solver could not decide", W)
+ANALYSIS_BUDGET = Rule(
+    "RF902", "analysis-budget-exceeded", "Analysis stopped early for this file", W
+)
 
 ALL_RULES: dict[str, Rule] = {
     r.code: r
@@ -95,6 +98,7 @@ ALL_RULES: dict[str, Rule] = {
         MISPLACED_UNIT,
         UNKNOWN_MESSAGE_CLASS,
         SOLVER_UNKNOWN,
+        ANALYSIS_BUDGET,
     )
 }
 RULES_BY_NAME: dict[str, Rule] = {r.name: r for r in ALL_RULES.values()}

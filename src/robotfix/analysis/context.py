@@ -42,6 +42,18 @@ class Scope:
         return self if self.parent is None else self.parent.module()
 
 
+# Deterministic limits (work counted, not time measured): a pathological file turns
+# into an RF902 warning instead of taking the run down.
+STEP_BUDGET = 2_000_000  # statements and expressions interpreted per file
+TERM_LIMIT = 400  # nodes in one solver term; beyond it the value becomes unknown
+
+
+class BudgetExceeded(Exception):
+    def __init__(self, line: int) -> None:
+        super().__init__(line)
+        self.line = line
+
+
 class FileContext:
     def __init__(
         self,
@@ -55,6 +67,7 @@ class FileContext:
         self.diagnostics: list[Diagnostic] = []
         self.sym_names: dict[int, str | ast.AST] = {}  # text, or a node to quote
         self._next = 0
+        self.steps = 0
         self.index = FileIndex()
         self.imports: dict[str, str] = {}  # local name -> qualified name
         self.star_import = False
@@ -89,6 +102,11 @@ class FileContext:
                 else "an expression"
             )
         return found or f"value #{ident}"
+
+    def step(self, node: ast.AST) -> None:
+        self.steps += 1
+        if self.steps > STEP_BUDGET:
+            raise BudgetExceeded(getattr(node, "lineno", 1))
 
     # -- reporting -----------------------------------------------------------
     def report(self, diag: Diagnostic, once: tuple[object, ...] | None = None) -> None:

@@ -16,7 +16,7 @@ from fractions import Fraction
 from robotfix import messages
 from robotfix.analysis import heap
 from robotfix.analysis.checks import Checker
-from robotfix.analysis.context import FileContext
+from robotfix.analysis.context import TERM_LIMIT, FileContext
 from robotfix.analysis.program import Program
 from robotfix.analysis.state import State
 from robotfix.analysis.values import NONE, Value
@@ -54,11 +54,17 @@ class ExpressionEvaluator:
 
     # -- dispatch ------------------------------------------------------------
     def eval(self, node: ast.expr, state: State) -> Value:
+        self.ctx.step(node)
         method = getattr(self, f"eval_{type(node).__name__}", None)
         if method is None:
             self.eval_children(node, state)
             return self.unknown(node)
         result: Value = method(node, state)
+        if result.term is not None and A.larger_than(result.term, TERM_LIMIT):
+            # e.g. `x = x + x` in a row: the term's tree doubles each time
+            return replace(
+                self.unknown(node, result.kind, result.unit), scale=result.scale
+            )
         return result
 
     def eval_children(self, node: ast.AST, state: State) -> None:

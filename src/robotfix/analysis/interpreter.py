@@ -118,6 +118,7 @@ class Interpreter(CallEvaluator):
         for stmt in body:
             if not state.reachable:
                 break
+            self.ctx.step(stmt)
             self.site = stmt
             method = getattr(self, f"visit_{type(stmt).__name__}", None)
             state = method(stmt, state) if method else self.generic(stmt, state)

@@ -125,6 +125,19 @@ def walk(expr: Expr) -> list[Expr]:
     return out
 
 
+def larger_than(expr: Expr, limit: int) -> bool:
+    """Whether the term has more than `limit` nodes, counting shared ones each time,
+    in at most `limit` steps (terms share subterms, so their trees can be huge)."""
+    todo = [expr]
+    count = 0
+    while todo:
+        count += 1
+        if count > limit:
+            return True
+        todo.extend(children(todo.pop()))
+    return False
+
+
 def names(expr: Expr) -> list[Name]:
     return [n for n in walk(expr) if isinstance(n, Name)]
 

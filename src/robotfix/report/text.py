@@ -39,14 +39,24 @@ def render(
     return "\n".join(out) + "\n"
 
 
-def _excerpt(line: str, d: Diagnostic) -> list[str]:
+def _excerpt(line: str, d: Diagnostic, width: int = 100) -> list[str]:
+    """The source line with carets under the span; a long line is cut to a window
+    around the span."""
     number = str(d.span.line)
     gutter = " " * len(number)
     text = line.rstrip().expandtabs(1)
     start = min(d.span.col, len(text))
     end = d.span.end_col if d.span.end_line == d.span.line else len(text)
-    width = max(1, min(end, len(text)) - start)
-    return [f"  {number} | {text}", f"  {gutter} | {' ' * start}{'^' * width}"]
+    end = max(start + 1, min(end, len(text)))
+    if len(text) > width:
+        left = max(0, min(start - 20, len(text) - width))
+        prefix = "..." if left else ""
+        suffix = "..." if left + width < len(text) else ""
+        shown = prefix + text[left : left + width] + suffix
+        start, end = start - left + len(prefix), min(end - left, width) + len(prefix)
+        text = shown
+    carets = "^" * max(1, end - start)
+    return [f"  {number} | {text}", f"  {gutter} | {' ' * start}{carets}"]
 
 
 def summary(
