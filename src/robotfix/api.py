@@ -201,7 +201,7 @@ def _analyze(
 ) -> FileContext:
     """Run the analysis on a parsed file; a pathological file stops with RF902 and
     keeps what was found before."""
-    from robotfix.analysis.context import BudgetExceeded, FileContext
+    from robotfix.analysis.context import BudgetExceededError, FileContext
     from robotfix.analysis.interpreter import analyze_module
 
     ctx = FileContext(source, catalog, discharge)
@@ -209,7 +209,7 @@ def _analyze(
     ctx.unit_flows = {} if flows else None
     try:
         analyze_module(ctx)
-    except BudgetExceeded as stop:
+    except BudgetExceededError as stop:
         ctx.report(
             messages.analysis_budget(source.path, stop.line, "too much code to follow")
         )

@@ -48,7 +48,7 @@ STEP_BUDGET = 2_000_000  # statements and expressions interpreted per file
 TERM_LIMIT = 400  # nodes in one solver term; beyond it the value becomes unknown
 
 
-class BudgetExceeded(Exception):
+class BudgetExceededError(Exception):
     def __init__(self, line: int) -> None:
         super().__init__(line)
         self.line = line
@@ -106,7 +106,7 @@ class FileContext:
     def step(self, node: ast.AST) -> None:
         self.steps += 1
         if self.steps > STEP_BUDGET:
-            raise BudgetExceeded(getattr(node, "lineno", 1))
+            raise BudgetExceededError(getattr(node, "lineno", 1))
 
     # -- reporting -----------------------------------------------------------
     def report(self, diag: Diagnostic, once: tuple[object, ...] | None = None) -> None:
