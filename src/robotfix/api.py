@@ -8,12 +8,10 @@ diagnostics are filtered by suppressions, sorted and de-duplicated.
 from __future__ import annotations
 
 import ast
-import time
-import traceback
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from robotfix import messages, rules
 from robotfix.analysis.vc import VC, Verdict
@@ -41,15 +39,26 @@ class Result:
     files: int = 0
     seconds: float = 0.0
     internal_errors: list[InternalError] = field(default_factory=list)
+    from_cache: int = 0  # files whose results came from .robotfix_cache/
 
     def count(self, severity: Severity) -> int:
         return sum(1 for d in self.diagnostics if d.severity is severity)
 
 
-def discharge(vc: VC) -> Verdict:
-    from robotfix.smt.solver import check  # z3 costs ~70 ms: only when needed
+class Discharger:
+    """The solver callback for one file: z3 is imported, and a solver session
+    started, only when the first VC arrives (z3 costs ~70 ms to import)."""
 
-    return check(vc)
+    def __init__(self) -> None:
+        self._session: Any = None
+
+    def __call__(self, vc: VC) -> Verdict:
+        if self._session is None:
+            from robotfix.smt.solver import Session
+
+            self._session = Session()
+        verdict: Verdict = self._session.check(vc)
+        return verdict
 
 
 def check_source(
@@ -64,7 +73,7 @@ def check_source(
         catalog = MsgCatalog(
             interface_files(list(config.msg_paths)), rep103=config.rep103
         )
-    return _finish(_check(SourceFile.from_text(path, text), catalog))
+    return finish(_check(SourceFile.from_text(path, text), catalog))
 
 
 def hover(text: str, path: str, line: int, col: int, catalog: MsgCatalog) -> str | None:
@@ -140,43 +149,20 @@ def check_paths(
     paths: list[Path],
     config: Config,
     progress: Callable[[int, int, str], None] | None = None,
+    jobs: int = 1,
+    use_cache: bool = False,
 ) -> Result:
-    """Check every Python file under `paths`; interface files come from the msg paths
-    and from the msg/srv/action folders of ROS packages under `paths`."""
-    started = time.perf_counter()
-    result = Result()
-    folders = list(config.msg_paths) + ros_interface_folders(paths)
-    catalog = MsgCatalog(
-        interface_files(folders), rep103=config.rep103, distro=config.ros_distro
-    )
-    for problem in catalog_problems(catalog):
-        result.diagnostics.append(problem)
-    files = python_files(paths, config)
-    for file in files:
-        result.files += 1
-        if progress is not None:
-            progress(result.files, len(files), str(file))
-        try:
-            data = file.read_bytes()
-        except OSError as err:
-            result.diagnostics.append(
-                messages.unreadable(str(file), f"cannot read: {err.strerror}")
-            )
-            continue
-        try:
-            source = SourceFile.from_bytes(str(file), data)
-            result.diagnostics.extend(
-                _check(source, catalog, config.ignored_codes(file))
-            )
-        except Exception as err:  # a fault of ours: report it, go on with the others
-            summary = f"{type(err).__name__}: {err}"
-            result.internal_errors.append(
-                InternalError(str(file), summary, traceback.format_exc())
-            )
-    result.diagnostics = _finish(result.diagnostics)
-    _save_caches(catalog)
-    result.seconds = time.perf_counter() - started
-    return result
+    """Check every Python file under `paths` (see `robotfix.run`)."""
+    from robotfix.run import check_paths as run
+
+    return run(paths, config, progress, jobs, use_cache)
+
+
+def check_file(
+    path: str, data: bytes, catalog: MsgCatalog, ignored: frozenset[str] = frozenset()
+) -> list[Diagnostic]:
+    """Diagnostics for one file's bytes (decoded, parsed, analysed)."""
+    return _check(SourceFile.from_bytes(path, data), catalog, ignored)
 
 
 def _check(
@@ -204,7 +190,7 @@ def _analyze(
     from robotfix.analysis.context import BudgetExceededError, FileContext
     from robotfix.analysis.interpreter import analyze_module
 
-    ctx = FileContext(source, catalog, discharge)
+    ctx = FileContext(source, catalog, Discharger())
     ctx.hovers = [] if hovers else None
     ctx.unit_flows = {} if flows else None
     try:
@@ -254,26 +240,19 @@ def catalog_problems(catalog: MsgCatalog) -> list[Diagnostic]:
     ]
 
 
-def _finish(diagnostics: list[Diagnostic]) -> list[Diagnostic]:
+def finish(diagnostics: list[Diagnostic]) -> list[Diagnostic]:
     """Sorted, without exact duplicates, and one RF508 note per message type per run."""
     unique = {(d.sort_key(), d.notes): d for d in diagnostics}
     result: list[Diagnostic] = []
     noted: set[str] = set()
     for key in sorted(unique, key=lambda k: k[0]):
         diag = unique[key]
-        if diag.rule is rules.UNKNOWN_MESSAGE_CLASS:
+        if diag.rule == rules.UNKNOWN_MESSAGE_CLASS:
             if diag.message in noted:
                 continue
             noted.add(diag.message)
         result.append(diag)
     return result
-
-
-def _save_caches(catalog: MsgCatalog) -> None:
-    from robotfix.annotations.units import save_cache
-
-    save_cache()
-    catalog.save()
 
 
 def python_files(paths: list[Path], config: Config | None = None) -> list[Path]:

@@ -81,6 +81,20 @@ def build_parser() -> argparse.ArgumentParser:
         help="standard message definitions: ros2 (default), ros1, jazzy, "
         "humble, iron, kilted, rolling, noetic",
     )
+    check.add_argument(
+        "-j",
+        "--jobs",
+        type=int,
+        default=None,
+        metavar="N",
+        help="check files in N processes (default: all cores)",
+    )
+    check.add_argument(
+        "--no-cache",
+        dest="cache",
+        action="store_false",
+        help="neither read nor write .robotfix_cache/",
+    )
     commands.add_parser("rules", help="list every diagnostic code")
     explain = commands.add_parser("explain", help="what a code means, and the fix")
     explain.add_argument("code", metavar="CODE", help="a code (RF101) or a name")
@@ -186,8 +200,19 @@ def run_check(args: argparse.Namespace) -> int:
     except config.ConfigError as err:
         print(f"robotfix: error: {err}", file=sys.stderr)
         return EXIT_FAILURE
+    from robotfix.run import default_jobs
+
+    if args.jobs is not None and args.jobs < 1:
+        print(
+            "robotfix: error: -j needs a number of processes, 1 or more",
+            file=sys.stderr,
+        )
+        return EXIT_FAILURE
     progress = Progress() if sys.stderr.isatty() else None
-    result = api.check_paths(paths, settings, progress=progress)
+    jobs = args.jobs or default_jobs()
+    result = api.check_paths(
+        paths, settings, progress=progress, jobs=jobs, use_cache=args.cache
+    )
     if progress is not None:
         progress.done()
     return report(result, settings)

@@ -61,7 +61,7 @@ def unused_suppression(
 
 
 def syntax_error(path: str, span: Span, detail: str, rule: Rule) -> Diagnostic:
-    if rule is rules.PYTHON2_SOURCE:
+    if rule == rules.PYTHON2_SOURCE:
         message = f"this looks like Python 2 ({detail}); RobotFix checks Python 3 only"
         notes = (Note("port it to Python 3, or exclude it from the check"),)
         return Diagnostic(rule, path, span, message, notes)

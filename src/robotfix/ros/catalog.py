@@ -14,6 +14,7 @@ never as exceptions.
 
 from __future__ import annotations
 
+import hashlib
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -122,11 +123,17 @@ class MsgCatalog:
         self._distro = distro
         self._loaded = False
         self.problems: list[CatalogProblem] = []
+        self.touched: set[str] | None = None  # names looked up, while a file is checked
+        self._defined_by: dict[
+            str, str
+        ] = {}  # type -> hash of the file that defines it
 
     # -- public --------------------------------------------------------------
     def lookup(self, name: str) -> MsgSpec | None:
         self._load()
         key = normalize(name)
+        if self.touched is not None:
+            self.touched.add(key)
         spec = self._specs.get(key)
         if spec is None and key in self._standard():
             spec = self._specs[key] = self._from_standard(key)
@@ -152,6 +159,14 @@ class MsgCatalog:
             spec = self.lookup(found.msg_type)
         return None
 
+    def fingerprint(self, name: str) -> str:
+        """What a type's definition depends on: its interface file's content, the
+        standard store, or its absence."""
+        self._load()
+        if name in self._defined_by:
+            return self._defined_by[name]
+        return "std" if name in self._standard() else "missing"
+
     def save(self) -> None:
         _std_cache(self._distro).save()
 
@@ -173,7 +188,11 @@ class MsgCatalog:
                     f"cannot read interface file: {err}",
                 )
                 continue
-            files.append(read_interface(path, text))
+            parsed = read_interface(path, text)
+            digest = hashlib.sha1(text.encode("utf-8")).hexdigest()
+            for section in parsed.sections:
+                self._defined_by[section.name] = digest
+            files.append(parsed)
         for file in files:  # declare every type before resolving any field
             for problem in file.problems:
                 self._problem(

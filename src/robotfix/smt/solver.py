@@ -14,6 +14,7 @@ from typing import Any
 import z3
 
 from robotfix.analysis.vc import VC, Proved, Undecided, Unproven, Verdict, Violated
+from robotfix.annotations import ast as A
 from robotfix.smt.encode import Encoder
 
 # A work budget, not wall-clock time: the same input stops at the same point on any
@@ -22,35 +23,78 @@ RLIMIT = 2_000_000
 
 
 def check(vc: VC, rlimit: int = RLIMIT) -> Verdict:
-    encoder = Encoder()
-    facts = [encoder.boolean(f) for f in vc.facts]
-    goal = encoder.boolean(vc.goal)
-    probes = [encoder.encode(p) for p in vc.probes]
-    solver = z3.Solver()
-    solver.set("random_seed", 0)
-    solver.set("rlimit", rlimit)
-    solver.add(*facts)
-    solver.push()
-    solver.add(z3.Not(goal))
-    first = solver.check()
-    if first == z3.unsat:
-        return Proved()
-    if first == z3.unknown:
-        return Undecided(solver.reason_unknown())
-    model = solver.model()
-    values = tuple(_show(model.eval(p, model_completion=True)) for p in probes)
-    syms = tuple(
-        (ident, _show(model.eval(s, model_completion=True)))
-        for ident, s in sorted(encoder.syms.items())
-    )
-    solver.pop()
-    solver.add(goal)
-    second = solver.check()
-    if second == z3.unsat:
-        return Violated(values)
-    if second == z3.unknown:
-        return Undecided(solver.reason_unknown())
-    return Unproven(values, syms)
+    """One VC on a fresh solver."""
+    return Session(rlimit).check(vc)
+
+
+class Session:
+    """Incremental solving for the VCs of one file: while each VC's facts extend
+    the previous VC's (the common case along a path), only the new facts are asserted,
+    and the goal is asked inside push/pop. The budget is per question."""
+
+    def __init__(self, rlimit: int = RLIMIT) -> None:
+        self.rlimit = rlimit
+        self._facts: tuple[object, ...] = ()
+        self._solver: Any = None
+        self._encoder = Encoder()
+
+    def check(self, vc: VC) -> Verdict:
+        self._assert_facts(vc.facts)
+        solver, encoder = self._solver, self._encoder
+        goal = encoder.boolean(vc.goal)
+        probes = [encoder.encode(p) for p in vc.probes]
+        solver.push()
+        try:
+            solver.add(z3.Not(goal))
+            first = solver.check()
+            if first == z3.unsat:
+                return Proved()
+            if first == z3.unknown:
+                return Undecided(solver.reason_unknown())
+            model = solver.model()
+            values = tuple(_show(model.eval(p, model_completion=True)) for p in probes)
+            wanted = {s.ident for s in _syms(vc)}
+            syms = tuple(
+                (ident, _show(model.eval(sym, model_completion=True)))
+                for ident, sym in sorted(encoder.syms.items())
+                if ident in wanted
+            )
+        finally:
+            solver.pop()
+        solver.push()
+        try:
+            solver.add(goal)
+            second = solver.check()
+        finally:
+            solver.pop()
+        if second == z3.unsat:
+            return Violated(values)
+        if second == z3.unknown:
+            return Undecided(solver.reason_unknown())
+        return Unproven(values, syms)
+
+    def _assert_facts(self, facts: tuple[object, ...]) -> None:
+        known = self._facts
+        extends = (
+            self._solver is not None
+            and len(facts) >= len(known)
+            and all(a is b for a, b in zip(known, facts, strict=False))
+        )
+        if not extends:
+            self._solver = z3.Solver()
+            self._solver.set("random_seed", 0)
+            self._solver.set("rlimit", self.rlimit)
+            known = ()
+        for fact in facts[len(known) :]:
+            self._solver.add(self._encoder.boolean(fact))  # type: ignore[arg-type]
+        self._facts = facts
+
+
+def _syms(vc: VC) -> set[A.Sym]:
+    found = A.syms(vc.goal)
+    for fact in vc.facts:
+        found |= A.syms(fact)
+    return found
 
 
 def _show(value: Any) -> str:
