@@ -28,45 +28,39 @@ def check(vc: VC, rlimit: int = RLIMIT) -> Verdict:
 
 
 class Session:
-    """Incremental solving for the VCs of one file: while each VC's facts extend
-    the previous VC's (the common case along a path), only the new facts are asserted,
-    and the goal is asked inside push/pop. The budget is per question."""
+    """Incremental solving for the VCs of one file. One solver holds the facts of
+    the current path, one push frame per fact: a VC whose facts share a prefix with
+    the previous VC's pops back to it and asserts only the rest. The goal is asked as
+    a check assumption. The budget (rlimit) is set once and bounds each question."""
 
     def __init__(self, rlimit: int = RLIMIT) -> None:
-        self.rlimit = rlimit
-        self._facts: tuple[object, ...] = ()
-        self._solver: Any = None
+        self._solver = z3.Solver()
+        self._solver.set("random_seed", 0)
+        self._solver.set("rlimit", rlimit)
+        self._facts: list[object] = []
         self._encoder = Encoder()
 
     def check(self, vc: VC) -> Verdict:
         self._assert_facts(vc.facts)
         solver, encoder = self._solver, self._encoder
         goal = encoder.boolean(vc.goal)
-        probes = [encoder.encode(p) for p in vc.probes]
-        solver.push()
-        try:
-            solver.add(z3.Not(goal))
-            first = solver.check()
-            if first == z3.unsat:
-                return Proved()
-            if first == z3.unknown:
-                return Undecided(solver.reason_unknown())
-            model = solver.model()
-            values = tuple(_show(model.eval(p, model_completion=True)) for p in probes)
-            wanted = {s.ident for s in _syms(vc)}
-            syms = tuple(
-                (ident, _show(model.eval(sym, model_completion=True)))
-                for ident, sym in sorted(encoder.syms.items())
-                if ident in wanted
-            )
-        finally:
-            solver.pop()
-        solver.push()
-        try:
-            solver.add(goal)
-            second = solver.check()
-        finally:
-            solver.pop()
+        first = solver.check(z3.Not(goal))
+        if first == z3.unsat:
+            return Proved()
+        if first == z3.unknown:
+            return Undecided(solver.reason_unknown())
+        model = solver.model()
+        values = tuple(
+            _show(model.eval(encoder.encode(p), model_completion=True))
+            for p in vc.probes
+        )
+        wanted = {s.ident for s in _syms(vc)}
+        syms = tuple(
+            (ident, _show(model.eval(sym, model_completion=True)))
+            for ident, sym in sorted(encoder.syms.items())
+            if ident in wanted
+        )
+        second = solver.check(goal)
         if second == z3.unsat:
             return Violated(values)
         if second == z3.unknown:
@@ -75,19 +69,16 @@ class Session:
 
     def _assert_facts(self, facts: tuple[object, ...]) -> None:
         known = self._facts
-        extends = (
-            self._solver is not None
-            and len(facts) >= len(known)
-            and all(a is b for a, b in zip(known, facts, strict=False))
-        )
-        if not extends:
-            self._solver = z3.Solver()
-            self._solver.set("random_seed", 0)
-            self._solver.set("rlimit", self.rlimit)
-            known = ()
-        for fact in facts[len(known) :]:
+        common = 0
+        while common < min(len(known), len(facts)) and known[common] is facts[common]:
+            common += 1
+        for _ in range(len(known) - common):
+            self._solver.pop()
+        del known[common:]
+        for fact in facts[common:]:
+            self._solver.push()
             self._solver.add(self._encoder.boolean(fact))  # type: ignore[arg-type]
-        self._facts = facts
+            known.append(fact)
 
 
 def _syms(vc: VC) -> set[A.Sym]:
