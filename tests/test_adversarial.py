@@ -115,7 +115,7 @@ def test_nonlinear_arithmetic_cannot_hang() -> None:
     code = (
         "from typing import Annotated\n"
         "def f(a: float, b: float, c: float, d: float) -> None:\n"
-        '    x: Annotated[float, "_ > 0"] = a * b * c * d - a * a * b * b + c * d * d * d\n'
+        '    x: Annotated[float, "_ > 0"] = a * b * c * d - a * a * b * b + c * d * d\n'
     )
     started = time.perf_counter()
     codes = [d.code for d in check_source(code, "f.py")]
