@@ -250,7 +250,8 @@ def base_type_mismatch(
         rules.BASE_TYPE_MISMATCH,
         path,
         span,
-        f"`{stmt}` gives {target} a {got}, but {target} is declared {expected}",
+        f"`{stmt}` gives {target} {_article(got)} {got}, but {target} is declared "
+        f"{expected}",
         (Note(f"convert explicitly, e.g. {expected}(...), if that is what you mean"),),
     )
 
@@ -261,3 +262,7 @@ def _owner(declared: Declared) -> str:
 
 def _join(items: list[str]) -> str:
     return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
+
+
+def _article(word: str) -> str:
+    return "an" if word[:1] in "aeiou" else "a"
