@@ -9,13 +9,12 @@ imports and caches are not counted), lines per second, the ratio, and peak memor
 
 from __future__ import annotations
 
-import ast
-import contextlib
 import resource
 import sys
 import time
-import warnings
 from pathlib import Path
+
+from peers import parse_seconds
 
 from robotfix.api import check_paths, python_files
 from robotfix.config import Config
@@ -25,13 +24,7 @@ def main(folders: list[Path]) -> None:
     files = python_files(folders)
     texts = [f.read_bytes() for f in files]
     lines = sum(t.count(b"\n") for t in texts)
-    started = time.perf_counter()
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        for text in texts:
-            with contextlib.suppress(SyntaxError, ValueError):
-                ast.parse(text)
-    parse = time.perf_counter() - started
+    parse = parse_seconds(texts)
     check_paths(folders, Config())  # warm-up: imports, unit and message caches
     started = time.perf_counter()
     result = check_paths(folders, Config())
