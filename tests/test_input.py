@@ -18,6 +18,8 @@ def test_python2_is_recognised() -> None:
 
 def test_plain_syntax_error() -> None:
     assert codes(b"def f(:\n") == ["RF001"]
+    assert codes(b'"""Drive at `speed` m/s."""\ndef f(:\n    pass\n') == ["RF001"]
+    assert codes(b"x = `1`\n") == ["RF002"]
     assert codes(b"x = 1\0\n") == ["RF001"]
 
 

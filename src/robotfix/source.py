@@ -156,7 +156,10 @@ def _syntax_problem(path: str, text: str, err: SyntaxError | ValueError) -> Diag
     line = err.lineno or 1
     col = max((err.offset or 1) - 1, 0)
     detail = err.msg
-    python2 = any(hint in detail for hint in _PY2_HINTS) or _PY2_TOKENS.search(text)
+    lines = text.splitlines()
+    failing = lines[line - 1] if 0 < line <= len(lines) else ""
+    # only the failing line: backticks in a docstring elsewhere say nothing
+    python2 = any(hint in detail for hint in _PY2_HINTS) or _PY2_TOKENS.search(failing)
     rule = rules.PYTHON2_SOURCE if python2 else rules.PYTHON_SYNTAX_ERROR
     return messages.syntax_error(path, Span.point(line, col), detail, rule)
 
