@@ -79,6 +79,7 @@ def check_paths(
         else:
             todo.append((file, data))
     done = len(files) - len(todo)
+    contents = dict(todo)
     for outcome in _check_all(todo, folders, config, catalog, jobs):
         done += 1
         if progress is not None:
@@ -89,7 +90,7 @@ def check_paths(
         elif cache is not None:
             cache.put(
                 Path(outcome.path),
-                dict(todo)[Path(outcome.path)],
+                contents[Path(outcome.path)],
                 config,
                 catalog,
                 outcome.diagnostics,

@@ -88,14 +88,12 @@ def _analyze_body(
 
 
 def _function_for(program: Program, node: ast.AST, parent: Scope) -> Function:
-    for function in program.functions.values():
-        if function.node is node:
-            return function
+    known = program.by_node.get(id(node))
+    if known is not None:
+        return known
     assert isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda))
     key = f"<nested {getattr(node, 'name', 'lambda')}@{node.lineno}>"
-    function = Function(key, node, parent, None)
-    program.functions[key] = function
-    return function
+    return program.add(Function(key, node, parent))
 
 
 class Interpreter(CallEvaluator):

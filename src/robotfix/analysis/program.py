@@ -51,6 +51,12 @@ class Program:
     classes: dict[str, Scope] = field(default_factory=dict)
     attributes: dict[str, dict[str, Refinement]] = field(default_factory=dict)
     callbacks: dict[str, Callback] = field(default_factory=dict)
+    by_node: dict[int, Function] = field(default_factory=dict)  # id(node) ->
+
+    def add(self, function: Function) -> Function:
+        self.functions[function.key] = function
+        self.by_node[id(function.node)] = function
+        return function
 
     def signature(self, ctx: FileContext, function: Function) -> Scope:
         """The function's scope: parameters, their refinements, its locals."""
@@ -99,9 +105,7 @@ def _add_function(
         d.id if isinstance(d, ast.Name) else getattr(d, "attr", "")
         for d in node.decorator_list
     )
-    program.functions[key] = Function(
-        key, node, parent, class_name, decorators=decorators
-    )
+    program.add(Function(key, node, parent, class_name, decorators=decorators))
 
 
 def _collect_callbacks(ctx: FileContext, program: Program) -> None:
@@ -162,8 +166,6 @@ def _callback_key(
     if isinstance(node, ast.Lambda):
         key = f"<lambda@{node.lineno}:{node.col_offset}>"
         parent = program.classes.get(class_name or "", program.module)
-        program.functions[key] = Function(
-            key, node, parent.module() if class_name else parent, None
-        )
+        program.add(Function(key, node, parent.module() if class_name else parent))
         return key, 0
     return None
