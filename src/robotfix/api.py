@@ -238,7 +238,7 @@ def _unused_suppressions(
 
 
 def catalog_problems(catalog: MsgCatalog) -> list[Diagnostic]:
-    catalog.lookup("std_msgs/Header")  # loads the interface files
+    catalog.load()
     return [
         messages.annotation_problem(p.path, p.line, p.col, p.rule, p.message)
         for p in catalog.problems

@@ -130,7 +130,7 @@ class MsgCatalog:
 
     # -- public --------------------------------------------------------------
     def lookup(self, name: str) -> MsgSpec | None:
-        self._load()
+        self.load()
         key = normalize(name)
         if self.touched is not None:
             self.touched.add(key)
@@ -140,7 +140,7 @@ class MsgCatalog:
         return spec
 
     def has_package(self, package: str) -> bool:
-        self._load()
+        self.load()
         prefix = package + "/"
         return any(k.startswith(prefix) for k in (*self._specs, *self._standard()))
 
@@ -162,7 +162,7 @@ class MsgCatalog:
     def fingerprint(self, name: str) -> str:
         """What a type's definition depends on: its interface file's content, the
         standard store, or its absence."""
-        self._load()
+        self.load()
         if name in self._defined_by:
             return self._defined_by[name]
         return "std" if name in self._standard() else "missing"
@@ -171,7 +171,8 @@ class MsgCatalog:
         _std_cache(self._distro).save()
 
     # -- loading -------------------------------------------------------------
-    def _load(self) -> None:
+    def load(self) -> None:
+        """Read the interface files (once); their problems land in `problems`."""
         if self._loaded:
             return
         self._loaded = True
