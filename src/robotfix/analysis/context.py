@@ -11,12 +11,11 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from robotfix import messages
-from robotfix.analysis.index import FileIndex
+from robotfix.analysis.index import FileIndex, index_scope
 from robotfix.analysis.values import Value, sort_of
 from robotfix.analysis.vc import VC, Verdict
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement, extract
-from robotfix.astwalk import children
 from robotfix.diagnostics import Diagnostic, Span
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.source import SourceFile
@@ -209,24 +208,15 @@ class FileContext:
         return found
 
 
-_SCOPE_NODES = (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)
-_COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
-
-
 def build_scope(
     ctx: FileContext, kind: str, name: str, node: ast.AST, parent: Scope | None
 ) -> Scope:
     """Collect the names a body binds and the refinements it declares."""
     scope = Scope(kind, name, node, parent)
-    known = ctx.index.scopes.get(id(node))
-    if known is not None:
-        scope.local_names = set(known.local_names)
-        scope.global_names = set(known.global_names)
-        annotated = sorted(
-            known.annotated, key=lambda a: (a[0].lineno, a[0].col_offset)
-        )
-    else:
-        annotated = _scan(scope, node)
+    known = ctx.index.scopes.get(id(node)) or index_scope(ctx.index, node)
+    scope.local_names = set(known.local_names)
+    scope.global_names = set(known.global_names)
+    annotated = sorted(known.annotated, key=lambda a: (a[0].lineno, a[0].col_offset))
     scope.local_names -= scope.global_names
     for annotation, target in annotated:
         if target not in scope.decls:
@@ -245,60 +235,3 @@ def _in_scope(ctx: FileContext, scope: Scope, name: str) -> bool:
             return True
         current = current.parent
     return name in ctx.imports or ctx.star_import or hasattr(builtins, name)
-
-
-def _scan(scope: Scope, node: ast.AST) -> list[tuple[ast.expr, str]]:
-    """What a body binds, for a node the file index did not cover."""
-    annotated: list[tuple[ast.expr, str]] = []
-    body: list[ast.AST] = []
-    if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
-        body = [node.body] if isinstance(node, ast.Lambda) else list(node.body)
-        for arg in _all_args(node.args):
-            scope.local_names.add(arg.arg)
-            if arg.annotation is not None:
-                annotated.append((arg.annotation, arg.arg))
-    else:
-        body = list(getattr(node, "body", []))
-    for child in _own_nodes(body):
-        if isinstance(child, (ast.Global, ast.Nonlocal)):
-            scope.global_names.update(child.names)
-        elif isinstance(child, ast.Name) and not isinstance(child.ctx, ast.Load):
-            scope.local_names.add(child.id)
-        elif isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
-            scope.local_names.add(child.name)
-        elif isinstance(child, (ast.Import, ast.ImportFrom)):
-            for alias in child.names:
-                if alias.name != "*":
-                    scope.local_names.add(alias.asname or alias.name.split(".")[0])
-        elif isinstance(child, ast.ExceptHandler) and child.name:
-            scope.local_names.add(child.name)
-        elif isinstance(child, ast.AnnAssign) and isinstance(child.target, ast.Name):
-            annotated.append((child.annotation, child.target.id))
-    return annotated
-
-
-def _all_args(args: ast.arguments) -> list[ast.arg]:
-    found = [*args.posonlyargs, *args.args, *args.kwonlyargs]
-    found += [a for a in (args.vararg, args.kwarg) if a is not None]
-    return found
-
-
-def _own_nodes(body: list[ast.AST]) -> list[ast.AST]:
-    """Nodes of a body, not descending into nested scopes (but naming them)."""
-    out: list[ast.AST] = []
-    stack = list(reversed(body))
-    while stack:
-        node = stack.pop()
-        out.append(node)
-        if isinstance(node, _SCOPE_NODES):
-            if not isinstance(node, ast.Lambda):
-                stack.extend(reversed(node.decorator_list))
-            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
-                stack.extend(reversed(node.args.defaults))
-                stack.extend(d for d in node.args.kw_defaults if d is not None)
-            continue
-        if isinstance(node, _COMPREHENSIONS):
-            stack.append(node.generators[0].iter)  # the rest is the comprehension's own
-            continue
-        stack.extend(reversed(children(node)))
-    return out

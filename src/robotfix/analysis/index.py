@@ -8,6 +8,8 @@ from __future__ import annotations
 import ast
 from dataclasses import dataclass, field
 
+from robotfix.astwalk import children
+
 FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef)
 COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
 
@@ -34,13 +36,27 @@ class FileIndex:
     class_scopes: set[int] = field(default_factory=set)
 
 
+Todo = list[tuple[ast.AST, int, str | None, str | None]]
+
+
 def index_module(tree: ast.Module) -> FileIndex:
     index = FileIndex()
     index.scopes[id(tree)] = ScopeNames()
     # (node, owning scope node id, enclosing top-level class, method's self name)
-    todo: list[tuple[ast.AST, int, str | None, str | None]] = [
-        (node, id(tree), None, None) for node in tree.body
-    ]
+    _drain(index, [(node, id(tree), None, None) for node in tree.body], id(tree))
+    return index
+
+
+def index_scope(index: FileIndex, node: ast.AST) -> ScopeNames:
+    """Index a scope the module walk did not reach (a lambda in a comprehension)."""
+    outside = -id(node)  # a throwaway owner for the node itself
+    index.scopes[outside] = ScopeNames()
+    _drain(index, [(node, outside, None, None)], outside)
+    del index.scopes[outside]
+    return index.scopes.get(id(node), ScopeNames())
+
+
+def _drain(index: FileIndex, todo: Todo, root: int) -> None:
     while todo:
         node, owner, cls, self_name = todo.pop()
         names = index.scopes[owner]
@@ -57,15 +73,21 @@ def index_module(tree: ast.Module) -> FileIndex:
             names.local_names.add(node.name)
             index.scopes[id(node)] = ScopeNames()
             index.class_scopes.add(id(node))
-            top = node.name if owner == id(tree) else cls
+            top = node.name if owner == root else cls
             todo.extend(
                 (d, owner, cls, self_name) for d in [*node.decorator_list, *node.bases]
             )
             todo.extend((d, owner, cls, self_name) for d in node.keywords)
             todo.extend((s, id(node), top, None) for s in node.body)
             continue
-        if kind in COMPREHENSIONS:
-            todo.append((node.generators[0].iter, owner, cls, self_name))  # type: ignore[attr-defined]
+        if kind in COMPREHENSIONS:  # a scope of its own; its first iterable is not
+            inner = id(node)
+            index.scopes[inner] = ScopeNames()
+            first = node.generators[0]  # type: ignore[attr-defined]
+            todo.append((first.iter, owner, cls, self_name))
+            rest = [first.target, *first.ifs, *node.generators[1:]]  # type: ignore[attr-defined]
+            rest += [c for c in children(node) if not isinstance(c, ast.comprehension)]
+            todo.extend((child, inner, cls, self_name) for child in rest)
             continue
         if kind is ast.Import or kind is ast.ImportFrom:
             _record_import(index, names, node)  # type: ignore[arg-type]
@@ -85,7 +107,6 @@ def index_module(tree: ast.Module) -> FileIndex:
                 )
             elif isinstance(value, ast.AST):
                 todo.append((value, owner, cls, self_name))
-    return index
 
 
 def _enter_function(
