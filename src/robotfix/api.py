@@ -14,7 +14,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from robotfix import messages, rules
-from robotfix.analysis.vc import VC, Proved, Verdict
+from robotfix.analysis.vc import VC, Proved, Verdict, Violated
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic, Severity
 from robotfix.ros.catalog import MsgCatalog
@@ -56,8 +56,11 @@ class Discharger:
     def __call__(self, vc: VC) -> Verdict:
         from robotfix.smt.fold import fold
 
-        if fold(vc.goal) is True:
+        folded = fold(vc.goal)
+        if folded is True:
             return Proved()
+        if folded is False and not vc.facts:  # no facts: no dead path to rule out
+            return Violated(tuple(_constant(p) for p in vc.probes))
         if self._session is None:
             from robotfix.smt.solver import Session
 
@@ -319,3 +322,10 @@ def _hidden(relative: Path) -> bool:
         part.startswith(".") or part in ("__pycache__", "node_modules")
         for part in relative.parts[:-1]
     )
+
+
+def _constant(term: Any) -> str | None:
+    from robotfix.annotations.ast import show
+    from robotfix.smt.fold import fold
+
+    return show(term) if fold(term) is not None else None
