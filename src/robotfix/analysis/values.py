@@ -66,7 +66,6 @@ class Value:
         return math.isclose(got.factor / self.scale, expected.factor, rel_tol=1e-3)
 
 
-UNKNOWN = Value("unknown")
 NONE = Value("none")
 
 
