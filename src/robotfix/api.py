@@ -112,12 +112,12 @@ def unit_suggestions(text: str, path: str, catalog: MsgCatalog) -> list[Suggesti
     ctx = _analyze(source, catalog, flows=True)
     assert ctx.unit_flows is not None
     found = []
-    for (scope_id, name), (units, kinds) in sorted(
+    for (scope, name), (units, kinds) in sorted(
         ctx.unit_flows.items(), key=lambda i: i[0][1]
     ):
         if len(units) != 1:
             continue  # flows into several units: a bug, not something to annotate
-        first = _first_assignment(source.tree, scope_id, name)
+        first = _first_assignment(scope, name)
         if first is not None:
             kind = "int" if kinds == {"int"} else "float"
             found.append(
@@ -135,10 +135,7 @@ class Suggestion:
     kind: str
 
 
-def _first_assignment(tree: ast.Module, scope_id: int, name: str) -> ast.Name | None:
-    from robotfix.astwalk import walk
-
-    scope = next((n for n in walk(tree) if id(n) == scope_id), None)
+def _first_assignment(scope: ast.AST, name: str) -> ast.Name | None:
     body = getattr(scope, "body", None)
     if not isinstance(body, list):
         return None

@@ -75,7 +75,9 @@ class FileContext:
         self.hovers: list[tuple[Span, str]] | None = None
         # (scope node id, variable) -> (units it flows into, target base kinds), for
         # `robotfix suggest`; None when not asked for
-        self.unit_flows: dict[tuple[int, str], tuple[set[str], set[str]]] | None = None
+        self.unit_flows: dict[tuple[ast.AST, str], tuple[set[str], set[str]]] | None = (
+            None
+        )
 
     # -- symbols and ids -----------------------------------------------------
     def fresh_id(self) -> int:

@@ -31,11 +31,14 @@ def new_message(
     origin: str,
     owner: tuple[int, str] | None = None,
     label: str = "the message",
+    assume: bool = True,
 ) -> Value:
-    """A message; `label` names it in counterexamples (`request` in `request.a`)."""
+    """A message; `label` names it in counterexamples (`request` in `request.a`).
+    A received one satisfies its invariants (`assume=False` for a sub-message, whose
+    invariants the enclosing message's assumption already covers)."""
     ref = ctx.fresh_id()
     state.heap[ref] = MsgObj(msg_type, origin, owner=owner)
-    if origin == "received":
+    if origin == "received" and assume:
         assume_invariants(ctx, state, ref, label)
     return Value("msg", ref=ref, name=msg_type)
 
@@ -109,15 +112,9 @@ def read_raw(
     if spec is None:
         return Value("unknown")
     if spec.kind == "msg" and not spec.array and spec.msg_type:
-        origin = obj.origin
         sub = new_message(
-            ctx,
-            state,
-            spec.msg_type,
-            "constructed" if origin == "constructed" else "unknown",
-            owner=(ref, name),
+            ctx, state, spec.msg_type, obj.origin, owner=(ref, name), assume=False
         )
-        state.heap[sub.ref].origin = origin  # type: ignore[index]
         obj.fields[name] = sub
         return sub
     unit = field_unit(ctx, state, ref, name)[0]

@@ -382,7 +382,7 @@ class Interpreter(CallEvaluator):
                 kind = spec.kind if spec is not None else kind
         if unit is not None and unit.text:
             units, kinds = flows.setdefault(
-                (id(self.scope.node), source.id), (set(), set())
+                (self.scope.node, source.id), (set(), set())
             )
             units.add(unit.text)
             kinds.add(kind)
