@@ -1,0 +1,134 @@
+"""The one place RobotFix touches the user's disk: bounded reads of regular files,
+atomic writes, and whether a path stays inside the checked folders.
+
+Every read of a file the user (or a repository) controls goes through
+`read_regular`: a FIFO, a device (`/dev/zero`) or a socket, reached directly or
+through a symlink, is refused at `open` without blocking, and no read takes more
+than `limit` bytes. Every write goes through `atomic_write`: a temporary file
+created exclusively beside the target (never through a planted symlink), fsync'd,
+then `os.replace`d, so a full disk or a kill leaves the original intact.
+"""
+
+from __future__ import annotations
+
+import os
+import stat
+import tempfile
+from collections.abc import Iterable
+from pathlib import Path
+
+MAX_FILE_BYTES = 32 * 1024 * 1024  # no source or interface file is near this
+_FLAGS = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0)
+_NOFOLLOW = getattr(os, "O_NOFOLLOW", 0)
+
+
+class NotReadable(Exception):
+    """A file that is not read, with the reason in words ("not a regular file")."""
+
+    def __init__(self, reason: str) -> None:
+        super().__init__(reason)
+        self.reason = reason
+
+
+def read_regular(
+    path: str | os.PathLike[str], limit: int = MAX_FILE_BYTES, follow: bool = True
+) -> bytes:
+    """The bytes of a regular file, at most `limit` of them; NotReadable otherwise.
+
+    O_NONBLOCK makes opening a FIFO return at once, and fstat on the open descriptor
+    (not the path) decides, so a file swapped after a check is still judged by what
+    was opened. With follow=False a symlink at `path` itself is refused."""
+    try:
+        fd = os.open(path, _FLAGS | (0 if follow else _NOFOLLOW))
+    except OSError as err:
+        raise NotReadable(_reason(err)) from None
+    try:
+        info = os.fstat(fd)
+        if not stat.S_ISREG(info.st_mode):
+            raise NotReadable("not a regular file")
+        if info.st_size > limit:
+            raise NotReadable(f"larger than {limit // (1024 * 1024)} MB")
+        chunks = []
+        size = 0
+        while size <= limit:
+            chunk = os.read(fd, min(1 << 20, limit + 1 - size))
+            if not chunk:
+                break
+            chunks.append(chunk)
+            size += len(chunk)
+        if size > limit:  # it grew while we read
+            raise NotReadable(f"larger than {limit // (1024 * 1024)} MB")
+        return b"".join(chunks)
+    except OSError as err:
+        raise NotReadable(_reason(err)) from None
+    finally:
+        os.close(fd)
+
+
+def read_text(path: str | os.PathLike[str], limit: int = MAX_FILE_BYTES) -> str:
+    """A regular file's text as UTF-8 (a BOM dropped); NotReadable otherwise."""
+    try:
+        return read_regular(path, limit).decode("utf-8-sig")
+    except UnicodeDecodeError as err:
+        raise NotReadable(f"not UTF-8 ({err.reason} at byte {err.start})") from None
+
+
+def atomic_write(path: str | os.PathLike[str], data: bytes) -> None:
+    """Replace the file at `path` with `data`, or leave it as it was.
+
+    The temporary file is created with O_EXCL in the same folder (mkstemp), written,
+    fsync'd and renamed over `path`: the rename replaces a symlink at `path` itself,
+    never its target. An existing file's permission bits are kept."""
+    target = Path(path)
+    try:
+        mode: int | None = stat.S_IMODE(os.stat(target, follow_symlinks=False).st_mode)
+    except FileNotFoundError:
+        mode = None
+    fd, tmp = tempfile.mkstemp(
+        dir=target.parent, prefix=f".{target.name}.", suffix=".tmp"
+    )
+    try:
+        with os.fdopen(fd, "wb") as out:
+            out.write(data)
+            out.flush()
+            os.fsync(out.fileno())
+        if mode is not None:
+            os.chmod(tmp, mode)
+        os.replace(tmp, target)
+    except BaseException:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        raise
+
+
+def create_exclusive(path: str | os.PathLike[str], data: bytes) -> bool:
+    """Write a new file only if nothing (not even a dangling symlink) is at `path`.
+    True when written; False when something was there or it could not be made."""
+    try:
+        fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL | _NOFOLLOW, 0o644)
+    except OSError:
+        return False
+    with os.fdopen(fd, "wb") as out:
+        out.write(data)
+    return True
+
+
+def within(
+    path: str | os.PathLike[str], roots: Iterable[str | os.PathLike[str]]
+) -> bool:
+    """Whether `path`, with every symlink resolved, lies inside one of `roots`
+    (also resolved). A path that cannot be resolved is not inside."""
+    try:
+        real = Path(os.path.realpath(path))
+        return any(
+            real == (root := Path(os.path.realpath(r))) or root in real.parents
+            for r in roots
+        )
+    except (OSError, ValueError):
+        return False
+
+
+def _reason(err: OSError) -> str:
+    return err.strerror or type(err).__name__

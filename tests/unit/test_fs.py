@@ -1,0 +1,106 @@
+"""robotfix.fs: reads that cannot block or balloon, writes that cannot truncate."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import pytest
+
+from robotfix import fs
+
+
+def test_reads_a_regular_file_and_through_a_symlink(tmp_path: Path) -> None:
+    (tmp_path / "a.py").write_bytes(b"x = 1\n")
+    (tmp_path / "link.py").symlink_to("a.py")
+    assert fs.read_regular(tmp_path / "a.py") == b"x = 1\n"
+    assert fs.read_regular(tmp_path / "link.py") == b"x = 1\n"
+    with pytest.raises(fs.NotReadable):
+        fs.read_regular(tmp_path / "link.py", follow=False)
+
+
+def test_a_fifo_is_refused_at_once(tmp_path: Path) -> None:
+    fifo = tmp_path / "fifo.py"
+    os.mkfifo(fifo)
+    (tmp_path / "to_fifo.py").symlink_to(fifo)
+    for path in (fifo, tmp_path / "to_fifo.py"):
+        with pytest.raises(fs.NotReadable, match="not a regular file"):
+            fs.read_regular(path)
+
+
+def test_devices_and_folders_are_refused(tmp_path: Path) -> None:
+    (tmp_path / "zero.py").symlink_to("/dev/zero")
+    with pytest.raises(fs.NotReadable, match="not a regular file"):
+        fs.read_regular(tmp_path / "zero.py")
+    with pytest.raises(fs.NotReadable):
+        fs.read_regular(tmp_path)
+    with pytest.raises(fs.NotReadable):
+        fs.read_regular(tmp_path / "missing.py")
+
+
+def test_reads_are_capped(tmp_path: Path) -> None:
+    (tmp_path / "big.msg").write_bytes(b"#" * 2048)
+    with pytest.raises(fs.NotReadable, match="larger than"):
+        fs.read_regular(tmp_path / "big.msg", limit=1024)
+
+
+def test_read_text_drops_a_bom_and_rejects_non_utf8(tmp_path: Path) -> None:
+    (tmp_path / "a.msg").write_bytes(b"\xef\xbb\xbffloat64 x\n")
+    assert fs.read_text(tmp_path / "a.msg") == "float64 x\n"
+    (tmp_path / "b.msg").write_bytes(b"\xff\xfe")
+    with pytest.raises(fs.NotReadable, match="not UTF-8"):
+        fs.read_text(tmp_path / "b.msg")
+
+
+def test_atomic_write_keeps_mode_and_replaces_a_link_not_its_target(
+    tmp_path: Path,
+) -> None:
+    target = tmp_path / "node.py"
+    target.write_text("old\n")
+    target.chmod(0o755)
+    fs.atomic_write(target, b"new\n")
+    assert target.read_text() == "new\n"
+    assert target.stat().st_mode & 0o777 == 0o755
+    victim = tmp_path / "victim.txt"
+    victim.write_text("precious\n")
+    link = tmp_path / "results.json"
+    link.symlink_to(victim)
+    fs.atomic_write(link, b"{}")
+    assert victim.read_text() == "precious\n"
+    assert not link.is_symlink() and link.read_text() == "{}"
+    assert [p.name for p in tmp_path.iterdir() if p.suffix == ".tmp"] == []
+
+
+def test_atomic_write_failure_leaves_the_original(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    target = tmp_path / "node.py"
+    target.write_text("original\n")
+
+    def disk_full(fd: int) -> None:
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(os, "fsync", disk_full)
+    with pytest.raises(OSError, match="No space"):
+        fs.atomic_write(target, b"new text\n")
+    assert target.read_text() == "original\n"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["node.py"]
+
+
+def test_create_exclusive_never_follows_a_dangling_link(tmp_path: Path) -> None:
+    (tmp_path / ".gitignore").symlink_to(tmp_path / "outside.txt")
+    assert not fs.create_exclusive(tmp_path / ".gitignore", b"*\n")
+    assert not (tmp_path / "outside.txt").exists()
+    assert fs.create_exclusive(tmp_path / "new", b"*\n")
+    assert not fs.create_exclusive(tmp_path / "new", b"again\n")
+
+
+def test_within_resolves_links(tmp_path: Path) -> None:
+    (tmp_path / "tree").mkdir()
+    (tmp_path / "elsewhere").mkdir()
+    (tmp_path / "elsewhere" / "theirs.py").write_text("")
+    (tmp_path / "tree" / "link.py").symlink_to("../elsewhere/theirs.py")
+    (tmp_path / "tree" / "mine.py").write_text("")
+    assert fs.within(tmp_path / "tree" / "mine.py", [tmp_path / "tree"])
+    assert not fs.within(tmp_path / "tree" / "link.py", [tmp_path / "tree"])
+    assert fs.within(tmp_path / "tree" / "link.py", [tmp_path])
