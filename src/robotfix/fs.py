@@ -11,6 +11,7 @@ then `os.replace`d, so a full disk or a kill leaves the original intact.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import stat
 import tempfile
@@ -22,7 +23,7 @@ _FLAGS = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0
 _NOFOLLOW = getattr(os, "O_NOFOLLOW", 0)
 
 
-class NotReadable(Exception):
+class UnreadableError(Exception):
     """A file that is not read, with the reason in words ("not a regular file")."""
 
     def __init__(self, reason: str) -> None:
@@ -33,7 +34,7 @@ class NotReadable(Exception):
 def read_regular(
     path: str | os.PathLike[str], limit: int = MAX_FILE_BYTES, follow: bool = True
 ) -> bytes:
-    """The bytes of a regular file, at most `limit` of them; NotReadable otherwise.
+    """The bytes of a regular file, at most `limit` of them; UnreadableError otherwise.
 
     O_NONBLOCK makes opening a FIFO return at once, and fstat on the open descriptor
     (not the path) decides, so a file swapped after a check is still judged by what
@@ -41,13 +42,13 @@ def read_regular(
     try:
         fd = os.open(path, _FLAGS | (0 if follow else _NOFOLLOW))
     except OSError as err:
-        raise NotReadable(_reason(err)) from None
+        raise UnreadableError(_reason(err)) from None
     try:
         info = os.fstat(fd)
         if not stat.S_ISREG(info.st_mode):
-            raise NotReadable("not a regular file")
+            raise UnreadableError("not a regular file")
         if info.st_size > limit:
-            raise NotReadable(f"larger than {limit // (1024 * 1024)} MB")
+            raise UnreadableError(f"larger than {limit // (1024 * 1024)} MB")
         chunks = []
         size = 0
         while size <= limit:
@@ -57,20 +58,20 @@ def read_regular(
             chunks.append(chunk)
             size += len(chunk)
         if size > limit:  # it grew while we read
-            raise NotReadable(f"larger than {limit // (1024 * 1024)} MB")
+            raise UnreadableError(f"larger than {limit // (1024 * 1024)} MB")
         return b"".join(chunks)
     except OSError as err:
-        raise NotReadable(_reason(err)) from None
+        raise UnreadableError(_reason(err)) from None
     finally:
         os.close(fd)
 
 
 def read_text(path: str | os.PathLike[str], limit: int = MAX_FILE_BYTES) -> str:
-    """A regular file's text as UTF-8 (a BOM dropped); NotReadable otherwise."""
+    """A regular file's text as UTF-8 (a BOM dropped); UnreadableError otherwise."""
     try:
         return read_regular(path, limit).decode("utf-8-sig")
     except UnicodeDecodeError as err:
-        raise NotReadable(f"not UTF-8 ({err.reason} at byte {err.start})") from None
+        raise UnreadableError(f"not UTF-8 ({err.reason} at byte {err.start})") from None
 
 
 def atomic_write(path: str | os.PathLike[str], data: bytes) -> None:
@@ -96,10 +97,8 @@ def atomic_write(path: str | os.PathLike[str], data: bytes) -> None:
             os.chmod(tmp, mode)
         os.replace(tmp, target)
     except BaseException:
-        try:
+        with contextlib.suppress(OSError):
             os.unlink(tmp)
-        except OSError:
-            pass
         raise
 
 

@@ -15,7 +15,7 @@ def test_reads_a_regular_file_and_through_a_symlink(tmp_path: Path) -> None:
     (tmp_path / "link.py").symlink_to("a.py")
     assert fs.read_regular(tmp_path / "a.py") == b"x = 1\n"
     assert fs.read_regular(tmp_path / "link.py") == b"x = 1\n"
-    with pytest.raises(fs.NotReadable):
+    with pytest.raises(fs.UnreadableError):
         fs.read_regular(tmp_path / "link.py", follow=False)
 
 
@@ -24,23 +24,23 @@ def test_a_fifo_is_refused_at_once(tmp_path: Path) -> None:
     os.mkfifo(fifo)
     (tmp_path / "to_fifo.py").symlink_to(fifo)
     for path in (fifo, tmp_path / "to_fifo.py"):
-        with pytest.raises(fs.NotReadable, match="not a regular file"):
+        with pytest.raises(fs.UnreadableError, match="not a regular file"):
             fs.read_regular(path)
 
 
 def test_devices_and_folders_are_refused(tmp_path: Path) -> None:
     (tmp_path / "zero.py").symlink_to("/dev/zero")
-    with pytest.raises(fs.NotReadable, match="not a regular file"):
+    with pytest.raises(fs.UnreadableError, match="not a regular file"):
         fs.read_regular(tmp_path / "zero.py")
-    with pytest.raises(fs.NotReadable):
+    with pytest.raises(fs.UnreadableError):
         fs.read_regular(tmp_path)
-    with pytest.raises(fs.NotReadable):
+    with pytest.raises(fs.UnreadableError):
         fs.read_regular(tmp_path / "missing.py")
 
 
 def test_reads_are_capped(tmp_path: Path) -> None:
     (tmp_path / "big.msg").write_bytes(b"#" * 2048)
-    with pytest.raises(fs.NotReadable, match="larger than"):
+    with pytest.raises(fs.UnreadableError, match="larger than"):
         fs.read_regular(tmp_path / "big.msg", limit=1024)
 
 
@@ -48,7 +48,7 @@ def test_read_text_drops_a_bom_and_rejects_non_utf8(tmp_path: Path) -> None:
     (tmp_path / "a.msg").write_bytes(b"\xef\xbb\xbffloat64 x\n")
     assert fs.read_text(tmp_path / "a.msg") == "float64 x\n"
     (tmp_path / "b.msg").write_bytes(b"\xff\xfe")
-    with pytest.raises(fs.NotReadable, match="not UTF-8"):
+    with pytest.raises(fs.UnreadableError, match="not UTF-8"):
         fs.read_text(tmp_path / "b.msg")
 
 
