@@ -7,6 +7,7 @@ Builders take source-level facts (statement text, names, units, values) and retu
 from __future__ import annotations
 
 import math
+import sys
 from dataclasses import dataclass
 
 from robotfix import rules
@@ -64,6 +65,14 @@ def syntax_error(path: str, span: Span, detail: str, rule: Rule) -> Diagnostic:
     if rule == rules.PYTHON2_SOURCE:
         message = f"this looks like Python 2 ({detail}); RobotFix checks Python 3 only"
         notes = (Note("port it to Python 3, or exclude it from the check"),)
+        return Diagnostic(rule, path, span, message, notes)
+    if rule == rules.NEWER_PYTHON_SOURCE:
+        running = f"{sys.version_info.major}.{sys.version_info.minor}"
+        message = (
+            f"this uses Python {detail} syntax, and RobotFix runs on Python {running}:"
+            " the file was not checked"
+        )
+        notes = (Note(f"run RobotFix with Python {detail} or newer to check it"),)
         return Diagnostic(rule, path, span, message, notes)
     return Diagnostic(rule, path, span, f"not valid Python 3: {detail}")
 

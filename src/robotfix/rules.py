@@ -16,6 +16,12 @@ PYTHON2_SOURCE = Rule(
     "RF002", "python2-source", "File is Python 2 and was not checked", W
 )
 UNREADABLE_FILE = Rule("RF003", "unreadable-file", "File cannot be read or decoded")
+NEWER_PYTHON_SOURCE = Rule(
+    "RF005",
+    "newer-python-source",
+    "File uses syntax newer than the Python running RobotFix and was not checked",
+    W,
+)
 UNUSED_SUPPRESSION = Rule(
     "RF010", "unused-suppression", "A robotfix: ignore comment silences nothing", W
 )
@@ -81,6 +87,7 @@ ALL_RULES: dict[str, Rule] = {
         PYTHON_SYNTAX_ERROR,
         PYTHON2_SOURCE,
         UNREADABLE_FILE,
+        NEWER_PYTHON_SOURCE,
         UNUSED_SUPPRESSION,
         REFINEMENT_VIOLATED,
         REFINEMENT_UNPROVEN,

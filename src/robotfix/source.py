@@ -9,6 +9,7 @@ from __future__ import annotations
 import ast
 import io
 import re
+import sys
 import tokenize
 import warnings
 from dataclasses import dataclass, field
@@ -22,13 +23,24 @@ _SUPPRESS = re.compile(
 # CPython's own words for Python 2 constructs (print and exec statements, `except
 # X, e`, `0777`, backticks, `<>`, `ur''`).
 _PY2_HINTS = (
-    "Missing parentheses in call to",
-    "multiple exception types must be parenthesized",
-    "leading zeros in decimal integer literals",
+    "Missing parentheses in call to",  # print x, exec "code"
+    "multiple exception types must be parenthesized",  # except X, e:
+    "leading zeros in decimal integer literals",  # 0777
     "invalid syntax. Perhaps you forgot a comma?",
+    "parameters cannot be parenthesized",  # def f(a, (x, y)), lambda (x, y): x
+)
+# Python 2 forms on the failing line that CPython reports only as "invalid syntax":
+# print/exec statements, `raise E, "why"`, backticks, `<>`, ur'' strings, 10L.
+# PEP 695 (Python 3.12, ROS 2 Jazzy's Python): `type X = ...`, `def f[T](...)`,
+# `class C[T]:`; an older parser stops at them.
+_PY312_FORMS = re.compile(
+    r"\s*(type\s+[A-Za-z_]\w*\s*(\[.*\])?\s*="
+    r"|(async\s+)?def\s+[A-Za-z_]\w*\s*\[|class\s+[A-Za-z_]\w*\s*\[)"
 )
 _PY2_TOKENS = re.compile(
-    r"^\s*(print\s+[\"'\w]|exec\s+[\"']|raise\s+\w+\s*,)|`|<>", re.M
+    r"^\s*(print\s+[\"'\w]|exec\s+[\"']|raise\s+[\w.]+\s*,)|`|<>"
+    r"|\b[uU][rR][\"']|\b\d+[lL]\b",
+    re.M,
 )
 
 
@@ -155,13 +167,44 @@ def _syntax_problem(path: str, text: str, err: SyntaxError | ValueError) -> Diag
         )
     line = err.lineno or 1
     col = max((err.offset or 1) - 1, 0)
-    detail = err.msg
-    lines = text.splitlines()
+    lines = _LINE_BREAK.split(text)
     failing = lines[line - 1] if 0 < line <= len(lines) else ""
-    # only the failing line: backticks in a docstring elsewhere say nothing
-    python2 = any(hint in detail for hint in _PY2_HINTS) or _PY2_TOKENS.search(failing)
-    rule = rules.PYTHON2_SOURCE if python2 else rules.PYTHON_SYNTAX_ERROR
-    return messages.syntax_error(path, Span.point(line, col), detail, rule)
+    if sys.version_info < (3, 12) and _PY312_FORMS.match(failing):
+        return messages.syntax_error(
+            path, Span.point(line, col), "3.12", rules.NEWER_PYTHON_SOURCE
+        )
+    rule = rules.PYTHON2_SOURCE if _is_python2(text, err) else rules.PYTHON_SYNTAX_ERROR
+    return messages.syntax_error(path, Span.point(line, col), err.msg, rule)
+
+
+def _is_python2(text: str, err: SyntaxError, retabbed: bool = False) -> bool:
+    """Whether the syntax error is Python 2 that CPython 3 rejects. Only the failing
+    line is looked at (backticks in a docstring elsewhere say nothing). Python 2 read a
+    tab as the next multiple of 8 columns: a TabError of a file that parses, or fails
+    for a Python 2 reason, once its indentation tabs are expanded is Python 2."""
+    if any(hint in err.msg for hint in _PY2_HINTS):
+        return True
+    lines = _LINE_BREAK.split(text)
+    line = err.lineno or 1
+    if 0 < line <= len(lines) and _PY2_TOKENS.search(lines[line - 1]):
+        return True
+    if not isinstance(err, TabError) or retabbed:
+        return False
+    expanded = "\n".join(_expand_indent(text_line) for text_line in lines)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            ast.parse(expanded)
+    except SyntaxError as again:
+        return _is_python2(expanded, again, retabbed=True)
+    except (ValueError, RecursionError, MemoryError):
+        return False
+    return True
+
+
+def _expand_indent(line: str) -> str:
+    body = line.lstrip(" \t")
+    return line[: len(line) - len(body)].expandtabs(8) + body
 
 
 def _suppressions(text: str) -> dict[int, tuple[int, frozenset[str] | None]]:
