@@ -1,11 +1,17 @@
 """Per-file results under `.robotfix_cache/`, as ruff and mypy keep them.
 
-An entry is reused only when the file's bytes, its per-file ignores, the run key
-(RobotFix's version, the settings that change results, the unit and message
-libraries) and the definition of every message type the file looked up are all
-unchanged: changing one `.msg` re-checks exactly the files that use it. A missing,
-corrupt or foreign cache is ignored and rebuilt; a cache that cannot be written only
-costs speed.
+An entry is reused only when the file's bytes, the path it was named by, its
+per-file ignores, the run key (RobotFix's version, the settings that change results,
+the unit and message libraries) and the resolved definition of every message type the
+file looked up (`MsgCatalog.fingerprint_types`) are all unchanged: changing,
+adding or moving one `.msg` re-checks exactly the files it can affect, and a cached
+run prints what an uncached one prints, byte for byte.
+
+A missing, corrupt, foreign or ill-typed cache is ignored and rebuilt; a cache that
+cannot be written only costs speed. `results.json` is read only if it is a regular
+file (`fs.read_regular`) and written atomically through a fresh temporary file
+(`fs.atomic_write`), never through a symlink. Entries of files that no longer exist,
+or that lie under the checked paths but were not checked, are dropped when saving.
 """
 
 from __future__ import annotations
@@ -14,16 +20,20 @@ import hashlib
 import json
 import os
 import sys
+from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
 
-from robotfix import __version__, rules
+from robotfix import __version__, fs, rules
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic, Note, Span
 from robotfix.disk_cache import install_key
 from robotfix.ros.catalog import MsgCatalog
 
-FORMAT = 1
+FORMAT = 2
+MAX_BYTES = 512 * 1024 * 1024  # results.json of ~4 million files
+MAX_INT = 2**31  # lines and columns; anything larger is not ours
+GITIGNORE = b"# Created by robotfix\n*\n"
 
 
 def run_key(config: Config) -> str:
@@ -40,6 +50,14 @@ def run_key(config: Config) -> str:
     return hashlib.sha256("\n".join(parts).encode()).hexdigest()
 
 
+def entry_key(path: Path) -> str:
+    """One entry per file, whatever the cwd or spelling it was named by."""
+    try:
+        return os.path.abspath(path)
+    except OSError:  # the cwd was deleted
+        return str(path)
+
+
 class ResultCache:
     def __init__(self, folder: Path, key: str) -> None:
         self.path = folder / "results.json"
@@ -47,63 +65,86 @@ class ResultCache:
         self._entries: dict[str, Any] = {}
         self._dirty = False
         try:
-            data = json.loads(self.path.read_text(encoding="utf-8"))
-            if isinstance(data, dict) and data.get("key") == key:
-                self._entries = dict(data["entries"])
-        except (OSError, ValueError, KeyError, TypeError):
-            pass
+            data = json.loads(fs.read_regular(self.path, MAX_BYTES, follow=False))
+        except (fs.UnreadableError, ValueError, RecursionError):
+            return
+        if (
+            isinstance(data, dict)
+            and data.get("key") == key
+            and isinstance(data.get("entries"), dict)
+        ):
+            self._entries = data["entries"]
 
     def get(
         self, path: Path, data: bytes, config: Config, catalog: MsgCatalog
     ) -> list[Diagnostic] | None:
-        entry = self._entries.get(str(path))
-        if not isinstance(entry, dict) or entry.get("file") != _file_key(
-            data, path, config
-        ):
+        """The cached diagnostics of this file, or None when they may differ from a
+        fresh check (or the entry is not exactly what `put` writes)."""
+        entry = self._entries.get(entry_key(path))
+        if not isinstance(entry, dict) or not _valid_entry(entry):
             return None
-        try:
-            deps = entry["types"]
-            if any(catalog.fingerprint(name) != fp for name, fp in deps.items()):
-                return None
-            return [_load(d) for d in entry["diagnostics"]]
-        except (KeyError, TypeError, ValueError, IndexError):
+        if entry["file"] != _file_key(data, path, config):
             return None
+        if entry["catalog"] != catalog.fingerprint_types(entry["types"]):
+            return None
+        return [_load(d) for d in entry["diagnostics"]]
 
     def put(
         self,
         path: Path,
         data: bytes,
         config: Config,
-        catalog: MsgCatalog,
         diagnostics: list[Diagnostic],
         types: list[str],
+        fingerprint: str,
     ) -> None:
-        self._entries[str(path)] = {
+        """Remember a fresh result; `fingerprint` is the catalog's
+        `fingerprint_types(types)` as seen by the check that found `diagnostics`."""
+        self._entries[entry_key(path)] = {
             "file": _file_key(data, path, config),
-            "types": {name: catalog.fingerprint(name) for name in types},
+            "types": sorted(types),
+            "catalog": fingerprint,
             "diagnostics": [_dump(d) for d in diagnostics],
         }
         self._dirty = True
 
+    def prune(self, checked: Iterable[Path], files: Iterable[Path]) -> None:
+        """Forget files that were not part of this run although they lie under one
+        of the `checked` paths (deleted, renamed, now excluded), and files that no
+        longer exist anywhere."""
+        roots = {entry_key(p) for p in checked}
+        prefixes = tuple(r.rstrip(os.sep) + os.sep for r in roots)
+        seen = {entry_key(f) for f in files}
+        stale = [
+            name
+            for name in self._entries
+            if name not in seen
+            and (name in roots or name.startswith(prefixes) or not os.path.isfile(name))
+        ]
+        for name in stale:
+            del self._entries[name]
+        self._dirty = self._dirty or bool(stale)
+
     def save(self) -> None:
         if not self._dirty:
             return
+        folder = self.path.parent
+        payload = {"key": self.key, "entries": self._entries}
         try:
-            self.path.parent.mkdir(parents=True, exist_ok=True)
-            gitignore = self.path.parent / ".gitignore"
-            if not gitignore.exists():
-                gitignore.write_text("# Created by robotfix\n*\n", encoding="utf-8")
-            tmp = self.path.with_name(f"results.{os.getpid()}.tmp")
-            payload = {"key": self.key, "entries": self._entries}
-            tmp.write_text(json.dumps(payload, sort_keys=True), encoding="utf-8")
-            tmp.replace(self.path)
-        except OSError:
+            folder.mkdir(parents=True, exist_ok=True)
+            fs.create_exclusive(folder / ".gitignore", GITIGNORE)
+            fs.atomic_write(self.path, json.dumps(payload, sort_keys=True).encode())
+            self._dirty = False
+        except (OSError, ValueError):
             pass
 
 
 def _file_key(data: bytes, path: Path, config: Config) -> str:
     ignored = ",".join(sorted(config.ignored_codes(path)))
-    return hashlib.sha256(data + b"\0" + ignored.encode()).hexdigest()
+    spelled = os.fsencode(path)
+    return hashlib.sha256(
+        b"\0".join([data, spelled, ignored.encode("utf-8", "surrogateescape")])
+    ).hexdigest()
 
 
 def _dump(d: Diagnostic) -> list[Any]:
@@ -126,3 +167,52 @@ def _load(raw: list[Any]) -> Diagnostic:
         message,
         tuple(Note(m, p, line) for m, p, line in notes),
     )
+
+
+# -- the schema of an entry: exactly what `put` writes, with the types it writes ---
+def _valid_entry(entry: Any) -> bool:
+    return (
+        isinstance(entry, dict)
+        and isinstance(entry.get("file"), str)
+        and isinstance(entry.get("catalog"), str)
+        and isinstance(entry.get("types"), list)
+        and all(isinstance(t, str) for t in entry["types"])
+        and isinstance(entry.get("diagnostics"), list)
+        and all(_valid_diagnostic(d) for d in entry["diagnostics"])
+    )
+
+
+def _valid_diagnostic(raw: Any) -> bool:
+    if not (isinstance(raw, list) and len(raw) == 5):
+        return False
+    code, path, span, message, notes = raw
+    return (
+        isinstance(code, str)
+        and code in rules.ALL_RULES
+        and isinstance(path, str)
+        and isinstance(span, list)
+        and len(span) == 4
+        and all(_number(n, 0) for n in span)
+        and span[0] >= 1
+        and span[2] >= span[0]
+        and isinstance(message, str)
+        and isinstance(notes, list)
+        and all(_valid_note(n) for n in notes)
+    )
+
+
+def _valid_note(raw: Any) -> bool:
+    if not (isinstance(raw, list) and len(raw) == 3):
+        return False
+    message, path, line = raw
+    return (
+        isinstance(message, str)
+        and (path is None or isinstance(path, str))
+        and (line is None or _number(line, 1))
+        and (path is None) == (line is None)  # a location, or none at all
+    )
+
+
+def _number(value: Any, least: int) -> bool:
+    """An int (not a bool) in [least, MAX_INT)."""
+    return type(value) is int and least <= value < MAX_INT

@@ -3,7 +3,9 @@
 The folder is `ROBOTFIX_CACHE_DIR`, else `$XDG_CACHE_HOME/robotfix` or
 `~/.cache/robotfix`. Each cache is one JSON file stamped with a key (the install of
 the library whose answers it stores); a missing, stale or corrupt file is ignored, and
-a folder that cannot be written only costs speed.
+a folder that cannot be written only costs speed. The file is read only when it is a
+regular file (a FIFO or a device there is ignored, never waited on) and replaced
+atomically through a fresh temporary file, never written through a symlink.
 """
 
 from __future__ import annotations
@@ -13,6 +15,10 @@ import os
 from importlib.util import find_spec
 from pathlib import Path
 from typing import Any
+
+from robotfix import fs
+
+MAX_BYTES = 64 * 1024 * 1024  # the standard message catalog is ~50 kB
 
 
 def cache_dir() -> Path:
@@ -54,11 +60,15 @@ class JsonCache:
         if self._entries is None:
             self._entries = {}
             try:
-                data = json.loads(self.path.read_text(encoding="utf-8"))
-                if isinstance(data, dict) and data.get("key") == self.key:
-                    self._entries = dict(data["entries"])
-            except (OSError, ValueError, KeyError, TypeError):
-                pass
+                data = json.loads(fs.read_regular(self.path, MAX_BYTES, follow=False))
+            except (fs.UnreadableError, ValueError, RecursionError):
+                data = None
+            if (
+                isinstance(data, dict)
+                and data.get("key") == self.key
+                and isinstance(data.get("entries"), dict)
+            ):
+                self._entries = data["entries"]
         return self._entries
 
     def put(self, key: str, value: Any) -> None:
@@ -69,12 +79,10 @@ class JsonCache:
         if not self._dirty:
             return
         path = self.path
+        payload = {"key": self.key, "entries": self._entries}
         try:
             path.parent.mkdir(parents=True, exist_ok=True)
-            tmp = path.with_name(f"{path.name}.{os.getpid()}.tmp")
-            payload = {"key": self.key, "entries": self._entries}
-            tmp.write_text(json.dumps(payload, sort_keys=True), encoding="utf-8")
-            tmp.replace(path)
+            fs.atomic_write(path, json.dumps(payload, sort_keys=True).encode())
             self._dirty = False
-        except OSError:
+        except (OSError, ValueError):
             pass

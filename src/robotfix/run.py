@@ -39,6 +39,7 @@ class FileResult:
     diagnostics: list[Diagnostic] = field(default_factory=list)
     error: InternalError | None = None
     types: list[str] = field(default_factory=list)  # message types it looked up
+    fingerprint: str = ""  # the catalog's fingerprint of `types`, as the check saw it
 
 
 def check_paths(
@@ -92,12 +93,13 @@ def check_paths(
                 Path(outcome.path),
                 contents[Path(outcome.path)],
                 config,
-                catalog,
                 outcome.diagnostics,
                 outcome.types,
+                outcome.fingerprint,
             )
     result.diagnostics = finish(result.diagnostics)
     if cache is not None:
+        cache.prune(paths, files)
         cache.save()
     catalog.save()
     save_unit_cache()
@@ -137,7 +139,11 @@ def _check_one(
     catalog.touched = set()
     try:
         found = check_file(str(path), data, catalog, config.ignored_codes(path))
-        return FileResult(str(path), found, None, sorted(catalog.touched))
+        types = sorted(catalog.touched)
+        catalog.touched = None
+        return FileResult(
+            str(path), found, None, types, catalog.fingerprint_types(types)
+        )
     except Exception as err:  # a fault of ours: report it, go on with the others
         summary = f"{type(err).__name__}: {err}"
         return FileResult(

@@ -167,6 +167,39 @@ class MsgCatalog:
             return self._defined_by[name]
         return "std" if name in self._standard() else "missing"
 
+    _resolved_digests: dict[str, str] | None = None  # fingerprint_types' memo
+
+    def fingerprint_types(self, names: list[str]) -> str:
+        """A digest of everything a check can read about the types `names`: each
+        type's resolved definition (fields with the types they resolve to, units,
+        invariants, constants, and the path and line each was declared at, from
+        every file that declares it), then the same for the message types of its
+        fields, transitively; a type that is not found counts as missing, so a file
+        that later resolves it changes the digest."""
+        self.load()
+        if self._resolved_digests is None:
+            self._resolved_digests = {}
+        digests = self._resolved_digests
+        saved, self.touched = self.touched, None  # not a lookup of the checked file
+        try:
+            seen: set[str] = set()
+            todo = sorted({normalize(n) for n in names})
+            while todo:
+                key = todo.pop()
+                if key in seen:
+                    continue
+                seen.add(key)
+                spec = self.lookup(key)
+                if key not in digests:
+                    text = "missing" if spec is None else _canonical(spec)
+                    digests[key] = hashlib.sha256(text.encode()).hexdigest()
+                if spec is not None:
+                    todo.extend(f.msg_type for f in spec.fields.values() if f.msg_type)
+        finally:
+            self.touched = saved
+        lines = sorted(f"{key} {digests[key]}" for key in seen)
+        return hashlib.sha256("\n".join(lines).encode()).hexdigest()
+
     def save(self) -> None:
         _std_cache(self._distro).save()
 
@@ -455,3 +488,44 @@ def _rosbags_field(name: str, desc: Any) -> list[Any]:
     if kind == 1:  # BASE: (type, string bound)
         return [name, str(detail[0]), False]
     return [name, normalize(str(detail)), False]  # NAME
+
+
+def _canonical(value: Any) -> str:
+    """A text that is equal for equal definitions, in every process: dataclasses field
+    by field, dicts in insertion order, sets sorted. Iterative, so deep predicates
+    cannot exhaust the stack."""
+    from dataclasses import fields, is_dataclass
+
+    out: list[str] = []
+    stack: list[Any] = [value]
+    while stack:
+        item = stack.pop()
+        if isinstance(item, _Literal):
+            out.append(item.text)
+        elif is_dataclass(item) and not isinstance(item, type):
+            stack.append(_Literal(")"))
+            for f in reversed(fields(item)):
+                stack.extend(
+                    [_Literal(","), getattr(item, f.name), _Literal(f.name + "=")]
+                )
+            stack.append(_Literal(type(item).__name__ + "("))
+        elif isinstance(item, dict):
+            stack.append(_Literal("}"))
+            for k, v in reversed(list(item.items())):
+                stack.extend([_Literal(","), v, _Literal(":"), k])
+            stack.append(_Literal("{"))
+        elif isinstance(item, (list, tuple)):
+            stack.append(_Literal("]"))
+            for v in reversed(item):
+                stack.extend([_Literal(","), v])
+            stack.append(_Literal("["))
+        elif isinstance(item, (set, frozenset)):
+            out.append("{" + ",".join(sorted(_canonical(v) for v in item)) + "}")
+        else:
+            out.append(f"{type(item).__name__}:{item!r}")
+    return "".join(out)
+
+
+@dataclass(frozen=True)
+class _Literal:
+    text: str

@@ -1,0 +1,441 @@
+"""The result cache and the machine caches are safe and never stale (issue 12).
+
+Built from the reliability report's reproducers: F5 (writes through planted
+symlinks), H6 (FIFOs and devices as cache files), C6 (well-formed entries with wrong
+types), W2 (stale after a .msg resolves a type or a duplicate changes), W3 (cached
+note paths replayed), W11 (entries never dropped).
+"""
+
+from __future__ import annotations
+
+import copy
+import json
+import os
+import shutil
+import subprocess
+import sys
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+import robotfix
+from robotfix import cli
+from robotfix.api import check_paths, interface_files
+from robotfix.cache import ResultCache
+from robotfix.config import Config
+from robotfix.ros.catalog import MsgCatalog
+
+NODE = (
+    "from pkg_a.msg import Outer\n"
+    "\n"
+    "def send(pub) -> None:\n"
+    "    o = Outer()\n"
+    "    o.inner.x = 5.0\n"
+    "    pub.publish(o)\n"
+)
+CMD_NODE = (
+    "from demo.msg import Cmd\n"
+    "\n"
+    "def send(pub) -> None:\n"
+    "    c = Cmd()\n"
+    "    c.speed = 3\n"
+    "    pub.publish(c)\n"
+)
+UNIT_NODE = (
+    "from typing import Annotated\n"
+    "from demo.msg import Cmd\n"
+    "\n"
+    "def send(pub, v: Annotated[float, \"Unit('km/h')\"]) -> None:\n"
+    "    c = Cmd()\n"
+    "    c.speed = v\n"
+    "    c.speed = 3.0\n"
+    "    pub.publish(c)\n"
+)
+FORMATS = ("text", "concise", "json", "sarif", "github")
+
+
+def write(path: Path, text: str) -> Path:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def package(root: Path, name: str) -> Path:
+    return write(root / name / "package.xml", f"<package><name>{name}</name></package>")
+
+
+def check(capsys: pytest.CaptureFixture[str], *args: str, fmt: str = "text") -> str:
+    """The stdout of `robotfix check <args>`, in-process (cwd set by the caller)."""
+    capsys.readouterr()
+    cli.main(["check", *args, "--format", fmt, "-j", "1"])
+    out = capsys.readouterr().out
+    if fmt == "json":  # everything but the timing
+        data = json.loads(out)
+        del data["summary"]["seconds"]
+        return json.dumps(data, sort_keys=True)
+    return out
+
+
+def same_cached_and_uncached(capsys: pytest.CaptureFixture[str], *args: str) -> str:
+    """Runs uncached, cached (twice: filling, then reusing) in every format; asserts
+    every output equals the uncached one and returns the text output."""
+    for fmt in FORMATS:
+        fresh = check(capsys, *args, "--no-cache", fmt=fmt)
+        assert check(capsys, *args, fmt=fmt) == fresh, fmt
+        assert check(capsys, *args, fmt=fmt) == fresh, fmt
+    return check(capsys, *args, "--no-cache")
+
+
+def entries(root: Path) -> dict[str, Any]:
+    data = json.loads((root / ".robotfix_cache" / "results.json").read_text())
+    found: dict[str, Any] = data["entries"]
+    return found
+
+
+@pytest.fixture
+def project(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[Path]:
+    write(tmp_path / "pyproject.toml", "")
+    monkeypatch.chdir(tmp_path)
+    yield tmp_path
+
+
+# -- W2: a cached result is keyed by resolved definitions ----------------------------
+def test_a_msg_that_resolves_a_missing_field_type_rechecks_its_users(
+    project: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    package(project, "pkg_a")
+    package(project, "pkg_b")
+    write(project / "pkg_a" / "msg" / "Outer.msg", "Inner inner\n")
+    write(project / "pkg_a" / "node.py", NODE)
+    assert "RF101" not in check(capsys, ".")
+    write(project / "pkg_b" / "msg" / "Inner.msg", "float64 x #RobotFix# _ < 1\n")
+    cached = check(capsys, ".")
+    assert "pkg_a/node.py:5:5: error[RF101]" in cached
+    assert cached == check(capsys, ".", "--no-cache")
+
+
+def test_a_change_to_either_copy_of_a_duplicated_type_rechecks(
+    project: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    write(project / "node.py", CMD_NODE)
+    for side in ("a", "b"):
+        write(project / side / "demo" / "msg" / "Cmd.msg", "int32 speed\n")
+    flags = ("node.py", "--msg-path", "a", "--msg-path", "b")
+    assert "RF101" not in check(capsys, *flags)
+    write(project / "a" / "demo" / "msg" / "Cmd.msg", "int32 speed #RobotFix# _ < 1\n")
+    cached = check(capsys, *flags)
+    assert "node.py:5:5: error[RF101]" in cached
+    assert cached == check(capsys, *flags, "--no-cache")
+
+
+def test_fingerprint_covers_field_types_transitively_and_missing_types(
+    tmp_path: Path,
+) -> None:
+    msgs = tmp_path / "msgs"
+    write(msgs / "p" / "msg" / "Outer.msg", "Mid mid\n")
+    write(msgs / "p" / "msg" / "Mid.msg", "Inner inner\n")
+
+    def fingerprint(*names: str) -> str:
+        return MsgCatalog(interface_files([msgs])).fingerprint_types(list(names))
+
+    missing = fingerprint("p/Outer", "q/Absent")
+    write(msgs / "p" / "msg" / "Inner.msg", "float64 x\n")
+    plain = fingerprint("p/Outer", "q/Absent")
+    assert plain != missing  # Mid's field now resolves
+    write(msgs / "p" / "msg" / "Inner.msg", "float64 x #RobotFix# _ < 1\n")
+    refined = fingerprint("p/Outer", "q/Absent")
+    assert refined != plain  # two levels down
+    write(msgs / "q" / "msg" / "Absent.msg", "int8 y\n")
+    assert fingerprint("p/Outer", "q/Absent") != refined  # no longer missing
+    assert fingerprint("p/Outer", "q/Absent") == fingerprint("q/Absent", "p/Outer")
+
+
+def test_fingerprint_is_the_same_in_every_process(tmp_path: Path) -> None:
+    msgs = tmp_path / "msgs"
+    write(
+        msgs / "p" / "msg" / "Pose.msg",
+        'float64 x #RobotFix# Unit(x) == "m" and _ < 10\n'
+        "float64 y #RobotFix# 0 <= _ + x <= x * 3\n",
+    )
+    code = (
+        "import sys\nfrom pathlib import Path\n"
+        "from robotfix.api import interface_files\n"
+        "from robotfix.ros.catalog import MsgCatalog\n"
+        "catalog = MsgCatalog(interface_files([Path(sys.argv[1])]))\n"
+        "print(catalog.fingerprint_types(['p/Pose', 'geometry_msgs/Twist']))\n"
+    )
+    prints = {
+        subprocess.run(
+            [sys.executable, "-c", code, str(msgs)],
+            env={**os.environ, "PYTHONHASHSEED": seed},
+            capture_output=True,
+            text=True,
+            timeout=120,
+            check=True,
+        ).stdout
+        for seed in ("0", "1", "4242")
+    }
+    assert len(prints) == 1
+
+
+# -- W3: cached output is uncached output, byte for byte -----------------------------
+def test_cached_notes_follow_the_msg_path_spelling_and_moves(
+    project: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    write(project / "src" / "node.py", UNIT_NODE)
+    write(
+        project / "ifaces" / "demo" / "msg" / "Cmd.msg",
+        'float64 speed #RobotFix# Unit(speed) == "m/s" and _ < 1\n',
+    )
+    relative = same_cached_and_uncached(capsys, "src/node.py", "--msg-path", "ifaces")
+    assert "--> ifaces/demo/msg/Cmd.msg:1" in relative
+    spelled = str(project / "ifaces")
+    absolute = same_cached_and_uncached(capsys, "src/node.py", "--msg-path", spelled)
+    assert f"--> {project}/ifaces/demo/msg/Cmd.msg:1" in absolute
+    shutil.move(project / "ifaces", project / "interfaces")
+    moved = same_cached_and_uncached(capsys, "src/node.py", "--msg-path", "interfaces")
+    assert "ifaces/" not in moved and "--> interfaces/demo/msg/Cmd.msg:1" in moved
+
+
+def test_cached_output_follows_the_spelling_of_the_checked_file(
+    project: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    write(project / "src" / "node.py", UNIT_NODE)
+    write(
+        project / "ifaces" / "demo" / "msg" / "Cmd.msg",
+        "float64 speed #RobotFix# _ < 1\n",
+    )
+    msg = ("--msg-path", str(project / "ifaces"))
+    assert "src/node.py:7:5" in same_cached_and_uncached(capsys, "src/node.py", *msg)
+    absolute = str(project / "src" / "node.py")
+    assert f"{absolute}:7:5" in same_cached_and_uncached(capsys, absolute, *msg)
+    monkeypatch.chdir(project / "src")
+    inside = same_cached_and_uncached(capsys, "node.py", *msg)
+    assert inside.startswith("node.py:") and "\nnode.py:7:5: error[RF101]" in inside
+    assert list(entries(project)) == [absolute]  # one entry, whatever the spelling
+
+
+# -- W11: entries of files that are gone are dropped ---------------------------------
+def test_the_cache_forgets_files_that_are_gone(project: Path) -> None:
+    config = Config(root=project)
+    outside = write(project.parent / f"{project.name}-other.py", "y = 2\n")
+    check_paths([outside], config, use_cache=True)
+    for generation in range(3):
+        for old in project.glob("gen*.py"):
+            old.unlink()
+        names = {f"gen{generation}_{i}.py" for i in range(5)}
+        for name in names:
+            write(project / name, "x = 1\n")
+        result = check_paths([project], config, use_cache=True)
+        assert result.from_cache == 0
+        assert {Path(k).name for k in entries(project)} == names | {outside.name}
+    excluded = Config(root=project, exclude=("gen2_0.py",))
+    check_paths([project], excluded, use_cache=True)
+    assert f"{project}/gen2_0.py" not in entries(project)  # not part of the run
+    outside.unlink()  # outside the checked paths: dropped once it no longer exists
+    check_paths([project / "gen2_1.py"], config, use_cache=True)
+    assert sorted(Path(k).name for k in entries(project)) == sorted(
+        names - {"gen2_0.py"}
+    )
+
+
+# -- C6: a well-formed cache with wrong types is ignored and rebuilt -----------------
+def leaves(value: Any, at: tuple[Any, ...] = ()) -> Iterator[tuple[Any, ...]]:
+    yield at
+    if isinstance(value, dict):
+        for key, item in value.items():
+            yield from leaves(item, (*at, key))
+    elif isinstance(value, list):
+        for index, item in enumerate(value):
+            yield from leaves(item, (*at, index))
+
+
+WRONG = [None, 0, 7, -1, True, 1.5, "x", "RF999", [], [1, 2], {}, {"a": 1}]
+
+
+def json_type(value: Any) -> str:
+    return "bool" if isinstance(value, bool) else type(value).__name__
+
+
+@pytest.fixture(scope="module")
+def filled(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, dict[str, Any]]:
+    root = tmp_path_factory.mktemp("c6")
+    write(root / "pyproject.toml", "")
+    write(root / "src" / "node.py", UNIT_NODE)
+    write(
+        root / "ifaces" / "demo" / "msg" / "Cmd.msg", "float64 speed #RobotFix# _ < 1\n"
+    )
+    config = Config(root=root, msg_paths=(root / "ifaces",))
+    check_paths([root / "src"], config, use_cache=True)
+    data = json.loads((root / ".robotfix_cache" / "results.json").read_text())
+    (entry,) = data["entries"].values()
+    assert entry["diagnostics"] and entry["diagnostics"][0][4]  # some notes to break
+    return root, data
+
+
+@settings(
+    max_examples=40,
+    deadline=None,
+    suppress_health_check=[HealthCheck.function_scoped_fixture],
+)
+@given(st.data())
+def test_an_entry_with_wrong_types_is_rebuilt_never_a_crash(
+    filled: tuple[Path, dict[str, Any]], data: st.DataObject
+) -> None:
+    root, pristine = filled
+    (name,) = pristine["entries"]
+    paths = sorted(leaves(pristine["entries"][name]))[1:]  # not the entry itself
+    at = data.draw(st.sampled_from(paths))
+    broken = copy.deepcopy(pristine)
+    parent = broken["entries"][name]
+    for step in at[:-1]:
+        parent = parent[step]
+    old = parent[at[-1]]
+    new = data.draw(
+        st.sampled_from([w for w in WRONG if json_type(w) != json_type(old)])
+    )
+    parent[at[-1]] = new
+    cache = root / ".robotfix_cache" / "results.json"
+    cache.write_text(json.dumps(broken))
+    config = Config(root=root, msg_paths=(root / "ifaces",))
+    result = check_paths([root / "src"], config, use_cache=True)
+    assert result.from_cache == 0  # rebuilt
+    for fmt in FORMATS:
+        cli.render(result, fmt, 1, 0)  # every renderer copes
+    assert json.loads(cache.read_text()) == pristine
+
+
+@pytest.mark.parametrize(
+    "content",
+    [
+        "[]",
+        '{"key": 1}',
+        '{"entries": [], "key": "%s"}',
+        '{"entries": {"/x.py": 5}, "key": "%s"}',
+        "[" * 100_000 + "]" * 100_000,
+        '{"key": "%s", "entries": {"/x.py": {"file": ' + "9" * 5000 + "}}}",
+    ],
+)
+def test_a_foreign_or_ill_shaped_results_file_is_ignored(
+    project: Path, content: str
+) -> None:
+    from robotfix.cache import run_key
+
+    config = Config(root=project)
+    write(project / "a.py", "x = 1\n")
+    cache = write(project / ".robotfix_cache" / "results.json", "")
+    cache.write_text(
+        content.replace("%s", run_key(config)) if "%s" in content else content
+    )
+    assert check_paths([project], config, use_cache=True).from_cache == 0
+    assert check_paths([project], config, use_cache=True).from_cache == 1
+
+
+# -- F5: never written through a symlink, temp files are exclusive -------------------
+def test_planted_symlinks_in_the_cache_folder_are_never_written_through(
+    project: Path,
+) -> None:
+    victim = write(project.parent / f"{project.name}-victim.txt", "precious\n")
+    created = project.parent / f"{project.name}-created.txt"
+    folder = project / ".robotfix_cache"
+    folder.mkdir()
+    (folder / ".gitignore").symlink_to(created)  # dangling
+    (folder / "results.json").symlink_to(victim)
+    pid = os.getpid()
+    for guess in ["results", ".results.json", "results.json"]:
+        for n in range(pid - 50, pid + 50):
+            (folder / f"{guess}.{n}.tmp").symlink_to(victim)
+    write(project / "a.py", "x = 1\n")
+    config = Config(root=project)
+    check_paths([project], config, use_cache=True)
+    assert victim.read_text() == "precious\n"
+    assert not created.exists()
+    assert (folder / "results.json").is_file() and not (
+        folder / "results.json"
+    ).is_symlink()
+    assert check_paths([project], config, use_cache=True).from_cache == 1
+
+
+def test_the_cache_folder_gets_a_gitignore_and_no_leftover_temp_files(
+    project: Path,
+) -> None:
+    write(project / "a.py", "x = 1\n")
+    check_paths([project], Config(root=project), use_cache=True)
+    folder = project / ".robotfix_cache"
+    assert (folder / ".gitignore").read_text() == "# Created by robotfix\n*\n"
+    assert sorted(p.name for p in folder.iterdir()) == [".gitignore", "results.json"]
+
+
+def test_a_cache_folder_that_cannot_be_made_only_costs_speed(project: Path) -> None:
+    write(project / ".robotfix_cache", "a file, not a folder\n")
+    write(
+        project / "a.py",
+        'from typing import Annotated\nx: Annotated[int, "_ < 1"] = 1\n',
+    )
+    for _ in range(2):
+        result = check_paths([project], Config(root=project), use_cache=True)
+        assert result.from_cache == 0 and [d.code for d in result.diagnostics] == [
+            "RF101"
+        ]
+
+
+def test_processes_sharing_one_cache_leave_it_whole(project: Path) -> None:
+    config = Config(root=project)
+    for i in range(4):
+        write(project / f"f{i}.py", "x = 1\n")
+    check_paths([project], config, use_cache=True)
+    first = ResultCache(project / ".robotfix_cache", "k")
+    second = ResultCache(project / ".robotfix_cache", "k")
+    catalog = MsgCatalog([])
+    for cache, name in ((first, "f0.py"), (second, "f1.py")):
+        cache.put(
+            project / name, b"x = 1\n", config, [], [], catalog.fingerprint_types([])
+        )
+    first.save()
+    second.save()  # the last writer wins; entries lost only cost speed
+    assert list(entries(project)) == [str(project / "f1.py")]
+    assert check_paths([project], config, use_cache=True).from_cache == 0
+    assert check_paths([project], config, use_cache=True).from_cache == 4
+
+
+# -- H6: FIFOs and devices as cache files are ignored, never waited on --------------
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="needs FIFOs")
+def test_fifos_and_devices_as_cache_files_never_hang(tmp_path: Path) -> None:
+    root = tmp_path / "proj"
+    write(root / "pyproject.toml", "")
+    write(root / "node.py", UNIT_NODE.replace("from demo.msg import Cmd\n", ""))
+    folder = root / ".robotfix_cache"
+    folder.mkdir()
+    os.mkfifo(folder / "results.json")
+    machine = tmp_path / "machine"
+    machine.mkdir()
+    os.mkfifo(machine / "units.json")
+    (machine / "ros-messages-ros2.json").symlink_to("/dev/zero")
+    env = {**os.environ, "ROBOTFIX_CACHE_DIR": str(machine)}
+    env["PYTHONPATH"] = str(Path(robotfix.__file__).parent.parent)  # this robotfix
+    run = subprocess.run(
+        [sys.executable, "-m", "robotfix", "check", "."],
+        cwd=root,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
+    assert run.returncode in (0, 1), run.stderr
+    assert "Traceback" not in run.stderr
+    assert run.stdout.rstrip().endswith("in 1 file.")
+    (folder / "results.json").unlink()
+    (folder / "results.json").symlink_to("/dev/zero")
+    again = subprocess.run(
+        [sys.executable, "-m", "robotfix", "check", "."],
+        cwd=root,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
+    assert again.stdout == run.stdout
