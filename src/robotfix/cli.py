@@ -8,10 +8,13 @@ inside the commands, so `robotfix --version` starts fast.
 from __future__ import annotations
 
 import argparse
+import functools
+import io
 import os
 import sys
+from collections.abc import Callable
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, TypeVar, cast
 
 from robotfix import __version__
 
@@ -110,6 +113,32 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+_Main = TypeVar("_Main", bound=Callable[..., int])
+
+
+def _guard_output(command: _Main) -> _Main:
+    """A closed, full or broken stdout ends the command with status 2: one line on
+    stderr (none for a broken pipe, as `cat` or `grep`), never a traceback."""
+
+    @functools.wraps(command)
+    def guarded(argv: list[str] | None = None) -> int:
+        try:
+            try:
+                return command(argv)
+            finally:
+                flush_stdout()
+        except BrokenPipeError:
+            _discard_stdout()
+            return EXIT_FAILURE
+        except OutputError as err:
+            _discard_stdout()
+            print(f"robotfix: error: cannot write the output: {err}", file=sys.stderr)
+            return EXIT_FAILURE
+
+    return cast("_Main", guarded)
+
+
+@_guard_output
 def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     try:
@@ -134,8 +163,12 @@ def main(argv: list[str] | None = None) -> int:
 def run_rules() -> int:
     from robotfix.rules import ALL_RULES
 
-    for rule in ALL_RULES.values():
-        print(f"{rule.code}  {rule.name:<24} {rule.severity.value:<8} {rule.title}")
+    write_stdout(
+        "".join(
+            f"{rule.code}  {rule.name:<24} {rule.severity.value:<8} {rule.title}\n"
+            for rule in ALL_RULES.values()
+        )
+    )
     return EXIT_OK
 
 
@@ -152,9 +185,9 @@ def run_explain(code: str) -> int:
         return EXIT_FAILURE
     page = rule_page(rule.code)
     if page is None:
-        print(f"{rule.code} {rule.name}: {rule.title}\n{rule.docs_url}")
+        write_stdout(f"{rule.code} {rule.name}: {rule.title}\n{rule.docs_url}\n")
     else:
-        sys.stdout.write(page)
+        write_stdout(page)
     return EXIT_OK
 
 
@@ -238,12 +271,13 @@ def merge_flags(settings: Config, args: argparse.Namespace) -> Config:
 
 def report(result: Result, settings: Config) -> int:
     from robotfix.diagnostics import Severity
+    from robotfix.report.escape import shown_path
 
     errors, warnings = result.count(Severity.ERROR), result.count(Severity.WARNING)
-    sys.stdout.write(render(result, settings.output_format, errors, warnings))
+    write_stdout(render(result, settings.output_format, errors, warnings))
     for failure in result.internal_errors:
         print(
-            f"robotfix: internal error while checking {failure.path}: "
+            f"robotfix: internal error while checking {shown_path(failure.path)}: "
             f"{failure.summary}",
             file=sys.stderr,
         )
@@ -266,37 +300,110 @@ def render(result: Result, fmt: str, errors: int, warnings: int) -> str:
     from robotfix.report import github, json_report, sarif, text
     from robotfix.rules import ALL_RULES
 
+    unchecked = len(result.internal_errors)
     if fmt == "json":
         return json_report.render(
-            result.diagnostics, result.files, errors, warnings, result.seconds
+            result.diagnostics,
+            result.files,
+            errors,
+            warnings,
+            result.seconds,
+            unchecked,
         )
     if fmt == "sarif":
-        return sarif.render(result.diagnostics, list(ALL_RULES.values()))
+        failed = [(f.path, f.summary) for f in result.internal_errors]
+        return sarif.render(result.diagnostics, list(ALL_RULES.values()), failed)
     if fmt == "github":
         return github.render(result.diagnostics)
     # The summary is timed only on a terminal: piped output stays byte-identical.
-    seconds = result.seconds if sys.stdout.isatty() else None
-    summary = text.summary(result.files, errors, warnings, seconds)
+    terminal = sys.stdout is not None and sys.stdout.isatty()
+    seconds = result.seconds if terminal else None
+    summary = text.summary(result.files, errors, warnings, seconds, unchecked)
     if fmt == "concise":
         return text.render_concise(result.diagnostics) + summary + "\n"
     return text.render(result.diagnostics, SourceLines(), summary)
 
 
 class SourceLines:
-    """Source lines for excerpts, read once per file."""
+    """Source lines for excerpts, read once per file and numbered as the checker
+    numbered them: Python files decoded and split as `ast` does (a PEP 263 cookie
+    is honoured; a form feed or U+2028 is not a line break), interface files as
+    `ros/msg.py` reads them."""
 
     def __init__(self) -> None:
         self._files: dict[str, list[str]] = {}
 
     def __call__(self, path: str, line: int) -> str | None:
         if path not in self._files:
-            try:
-                text = Path(path).read_text(encoding="utf-8", errors="replace")
-                self._files[path] = text.splitlines()
-            except OSError:
-                self._files[path] = []
+            self._files[path] = _lines_of(path)
         found = self._files[path]
         return found[line - 1] if 0 < line <= len(found) else None
+
+
+def _lines_of(path: str) -> list[str]:
+    from robotfix import fs, source
+    from robotfix.api import INTERFACE_SUFFIXES
+
+    try:
+        data = fs.read_regular(path)
+    except fs.UnreadableError:
+        return []
+    if path.endswith(INTERFACE_SUFFIXES):
+        return data.decode("utf-8", errors="replace").splitlines()
+    try:
+        return source.split_lines(source.decode(data))
+    except (SyntaxError, UnicodeDecodeError, LookupError):
+        return []
+
+
+class OutputError(Exception):
+    """Standard output is closed or cannot be written (a full disk)."""
+
+
+def write_stdout(text: str) -> None:
+    """Write and flush; OutputError when stdout is closed or fails, BrokenPipeError
+    when the reader went away. A character the terminal's encoding lacks is
+    written as an escape, never an error."""
+    stream = sys.stdout
+    if stream is None:
+        raise OutputError("standard output is closed")
+    if isinstance(stream, io.TextIOWrapper) and stream.errors == "strict":
+        stream.reconfigure(errors="backslashreplace")
+    try:
+        stream.write(text)
+        stream.flush()
+    except BrokenPipeError:
+        raise
+    except (OSError, ValueError) as err:  # ValueError: the stream object is closed
+        raise OutputError(_why(err)) from None
+
+
+def flush_stdout() -> None:
+    """Flush what print() left buffered; OutputError or BrokenPipeError as above."""
+    if sys.stdout is not None:
+        write_stdout("")
+
+
+def _why(err: BaseException) -> str:
+    if isinstance(err, OSError) and err.strerror:
+        return err.strerror
+    return str(err) or type(err).__name__
+
+
+def _discard_stdout() -> None:
+    """Point stdout at /dev/null, so the interpreter's flush at exit cannot fail
+    again (and print "Exception ignored")."""
+    stream = sys.stdout
+    if stream is None:
+        return
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        try:
+            os.dup2(devnull, stream.fileno())
+        finally:
+            os.close(devnull)
+    except (OSError, ValueError):
+        sys.stdout = None
 
 
 class Progress:

@@ -148,6 +148,17 @@ class SourceFile:
 _LINE_BREAK = re.compile(r"\r\n|\r|\n")  # the line breaks ast counts
 
 
+def split_lines(text: str) -> list[str]:
+    """The lines as `ast` numbers them: a form feed or U+2028 is not a line break."""
+    return _LINE_BREAK.split(text)
+
+
+def decode(data: bytes) -> str:
+    """A Python file's text as Python reads it (PEP 263 cookie, BOM); raises
+    SyntaxError, UnicodeDecodeError or LookupError when it cannot be decoded."""
+    return _decode(data)
+
+
 def _byte_slice(line: str, start: int, end: int | None) -> str:
     if line.isascii():
         return line[start:end]

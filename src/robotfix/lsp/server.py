@@ -2,18 +2,23 @@
 refinements, over stdio with pygls. A thin adapter over `api`: no analysis here.
 
 Interface files and settings come from the nearest `pyproject.toml` of each document
-and from ROS packages around it; the catalog is built once per settings.
+and from ROS packages around it; a catalog is rebuilt when an interface file is
+added, removed or changed (its path, size, times or inode), so an edited `.msg` counts
+without a restart. A document the editor never opened is read from disk only
+through `fs.read_regular` (a FIFO or `/dev/zero` gets no answer, not a hang).
 """
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
+from urllib.parse import unquote
 
 from lsprotocol import types
 from pygls.lsp.server import LanguageServer
 from pygls.uris import to_fs_path
 
-from robotfix import __version__, api, config
+from robotfix import __version__, api, config, fs, source
 from robotfix.diagnostics import Diagnostic, Severity
 from robotfix.ros.catalog import MsgCatalog
 
@@ -26,7 +31,8 @@ SEVERITIES = {
 server = LanguageServer(
     "robotfix", __version__, text_document_sync_kind=types.TextDocumentSyncKind.Full
 )
-_catalogs: dict[tuple[object, ...], MsgCatalog] = {}
+# settings -> (the interface files' stat stamps, the catalog built from them)
+_catalogs: dict[tuple[object, ...], tuple[tuple[object, ...], MsgCatalog]] = {}
 
 
 def serve() -> None:
@@ -40,22 +46,46 @@ def _catalog(path: Path) -> MsgCatalog:
         settings = config.Config()
     folders = list(settings.msg_paths) + api.ros_interface_folders([path])
     key = (tuple(folders), settings.rep103, settings.ros_distro)
-    if key not in _catalogs:
-        _catalogs[key] = MsgCatalog(
-            api.interface_files(folders),
-            rep103=settings.rep103,
-            distro=settings.ros_distro,
-        )
-    return _catalogs[key]
+    files = api.interface_files(folders)
+    stamp = tuple(_stamp(file) for file in files)
+    cached = _catalogs.get(key)
+    if cached is not None and cached[0] == stamp:
+        return cached[1]
+    catalog = MsgCatalog(files, rep103=settings.rep103, distro=settings.ros_distro)
+    _catalogs[key] = (stamp, catalog)
+    return catalog
 
 
-def _document(ls: LanguageServer, uri: str) -> tuple[str, Path]:
-    document = ls.workspace.get_text_document(uri)
-    return document.source, Path(to_fs_path(uri) or uri)
+def _stamp(file: Path) -> tuple[object, ...]:
+    """What changes when a file is edited or replaced (an editor's atomic save
+    changes the inode), without reading it."""
+    try:
+        info = os.stat(file)
+    except OSError:
+        return (str(file),)
+    return (str(file), info.st_mtime_ns, info.st_ctime_ns, info.st_size, info.st_ino)
+
+
+def _document(ls: LanguageServer, uri: str) -> tuple[str, Path] | None:
+    """The editor's text of an open document; else the file's text, read only if it
+    is a regular file of bounded size; None when there is none."""
+    fs_path = to_fs_path(uri)
+    opened = ls.workspace.text_documents.get(unquote(uri))
+    if opened is not None:
+        return opened.source, Path(fs_path or uri)
+    if fs_path is None:
+        return None
+    try:
+        return source.decode(fs.read_regular(fs_path)), Path(fs_path)
+    except (fs.UnreadableError, SyntaxError, UnicodeDecodeError, LookupError):
+        return None
 
 
 def _publish(ls: LanguageServer, uri: str) -> None:
-    text, path = _document(ls, uri)
+    document = _document(ls, uri)
+    if document is None:
+        return
+    text, path = document
     try:
         found = api.check_source(text, str(path), catalog=_catalog(path))
     except Exception as err:  # never take the editor session down
@@ -65,7 +95,7 @@ def _publish(ls: LanguageServer, uri: str) -> None:
             )
         )
         return
-    lines = text.splitlines()
+    lines = source.split_lines(text)
     diagnostics = [_diagnostic(d, lines) for d in found if d.path == str(path)]
     ls.text_document_publish_diagnostics(
         types.PublishDiagnosticsParams(uri=uri, diagnostics=diagnostics)
@@ -123,9 +153,12 @@ def did_save(ls: LanguageServer, params: types.DidSaveTextDocumentParams) -> Non
 
 @server.feature(types.TEXT_DOCUMENT_HOVER)
 def hover(ls: LanguageServer, params: types.HoverParams) -> types.Hover | None:
-    text, path = _document(ls, params.text_document.uri)
+    document = _document(ls, params.text_document.uri)
+    if document is None:
+        return None
+    text, path = document
     line = params.position.line + 1
-    col = _char(text.splitlines(), line, params.position.character)
+    col = _char(source.split_lines(text), line, params.position.character)
     try:
         markdown = api.hover(text, str(path), line, col, _catalog(path))
     except Exception:

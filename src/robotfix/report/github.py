@@ -4,6 +4,7 @@ pull request (`::error file=...,line=...::message`)."""
 from __future__ import annotations
 
 from robotfix.diagnostics import Diagnostic, Severity
+from robotfix.report.escape import clean_text, shown_path
 
 COMMANDS = {
     Severity.ERROR: "error",
@@ -17,7 +18,7 @@ def render(diagnostics: list[Diagnostic]) -> str:
     for d in diagnostics:
         props = ",".join(
             [
-                f"file={_property(d.path)}",
+                f"file={_property(shown_path(d.path))}",
                 f"line={d.span.line}",
                 f"col={d.span.col + 1}",
                 f"endLine={d.span.end_line}",
@@ -25,7 +26,9 @@ def render(diagnostics: list[Diagnostic]) -> str:
                 f"title={_property(f'{d.code} {d.rule.name}')}",
             ]
         )
-        lines.append(f"::{COMMANDS[d.severity]} {props}::{_data(d.message)}")
+        lines.append(
+            f"::{COMMANDS[d.severity]} {props}::{_data(clean_text(d.message))}"
+        )
     return "".join(line + "\n" for line in lines)
 
 

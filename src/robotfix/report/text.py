@@ -6,13 +6,14 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from robotfix.diagnostics import Diagnostic
+from robotfix.report.escape import clean_text, shown_path
 
 
 def render_concise(diagnostics: list[Diagnostic]) -> str:
     """One line per diagnostic, for editors, grep and quick scans."""
     return "".join(
-        f"{d.path}:{d.span.line}:{d.span.col + 1}: {d.severity.value}[{d.code}]: "
-        f"{d.message}\n"
+        f"{shown_path(d.path)}:{d.span.line}:{d.span.col + 1}: "
+        f"{d.severity.value}[{d.code}]: {clean_text(d.message)}\n"
         for d in diagnostics
     )
 
@@ -26,12 +27,12 @@ def render(
     out: list[str] = []
     for d in diagnostics:
         out.append(
-            f"{d.path}:{d.span.line}:{d.span.col + 1}: "
-            f"{d.severity.value}[{d.code}]: {d.message}"
+            f"{shown_path(d.path)}:{d.span.line}:{d.span.col + 1}: "
+            f"{d.severity.value}[{d.code}]: {clean_text(d.message)}"
         )
         for note in d.notes:
-            where = f" --> {note.path}:{note.line}" if note.path else ""
-            out.append(f"  note: {note.message}{where}")
+            where = f" --> {shown_path(note.path)}:{note.line}" if note.path else ""
+            out.append(f"  note: {clean_text(note.message)}{where}")
         line = source_line(d.path, d.span.line)
         if line is not None:
             out.extend(_excerpt(line, d))
@@ -44,7 +45,8 @@ def _excerpt(line: str, d: Diagnostic, width: int = 100) -> list[str]:
     around the span."""
     number = str(d.span.line)
     gutter = " " * len(number)
-    text = line.rstrip().expandtabs(1)
+    # one column per character: a form feed or U+2028 inside the line shows as a space
+    text = "".join(c if c.isprintable() else " " for c in line.rstrip())
     start = min(d.span.col, len(text))
     end = d.span.end_col if d.span.end_line == d.span.line else len(text)
     end = max(start + 1, min(end, len(text)))
@@ -60,12 +62,25 @@ def _excerpt(line: str, d: Diagnostic, width: int = 100) -> list[str]:
 
 
 def summary(
-    files: int, errors: int, warnings: int, seconds: float | None = None
+    files: int,
+    errors: int,
+    warnings: int,
+    seconds: float | None = None,
+    unchecked: int = 0,
 ) -> str:
+    """The last line. Files that had an internal error were not checked: then it
+    never says "No problems found"."""
+
     def plural(n: int, word: str) -> str:
         return f"{n} {word}{'' if n == 1 else 's'}"
 
     timing = f" ({seconds:.2f} s)" if seconds is not None else ""
+    if unchecked:
+        return (
+            f"Could not check {unchecked} of {plural(files, 'file')} (internal "
+            f"error); found {plural(errors, 'error')} and "
+            f"{plural(warnings, 'warning')}{timing}."
+        )
     if not errors and not warnings:
         return f"No problems found in {plural(files, 'file')}{timing}."
     return (
