@@ -21,13 +21,12 @@ from robotfix.api import (
     catalog_problems,
     check_file,
     finish,
-    interface_files,
-    python_files,
-    ros_interface_folders,
 )
 from robotfix.cache import ResultCache, run_key
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
+from robotfix.discovery import discover
+from robotfix.fs import UnreadableError, read_regular
 from robotfix.ros.catalog import MsgCatalog
 
 MIN_PARALLEL = 16  # fewer files are checked faster in one process than by a pool
@@ -52,10 +51,12 @@ def check_paths(
     and from the msg/srv/action folders of ROS packages under `paths`."""
     started = time.perf_counter()
     result = Result()
-    folders = list(config.msg_paths) + ros_interface_folders(paths)
-    catalog = _catalog(folders, config)
+    found = discover(paths, config)
+    result.diagnostics.extend(found.notices)
+    interfaces = found.interface_files
+    catalog = _catalog(interfaces, config)
     result.diagnostics.extend(catalog_problems(catalog))
-    files = python_files(paths, config)
+    files = found.python_files
     result.files = len(files)
     cache = (
         ResultCache(config.root / ".robotfix_cache", run_key(config))
@@ -65,9 +66,9 @@ def check_paths(
     todo: list[tuple[Path, bytes]] = []
     for index, file in enumerate(files, start=1):
         try:
-            data = file.read_bytes()
-        except OSError as err:
-            reason = f"cannot read: {err.strerror}"
+            data = read_regular(file)  # a FIFO or a device: refused, never blocks
+        except UnreadableError as err:
+            reason = f"cannot read: {err.reason}"
             result.diagnostics.append(messages.unreadable(str(file), reason))
             continue
         cached = cache.get(file, data, config, catalog) if cache else None
@@ -80,7 +81,7 @@ def check_paths(
             todo.append((file, data))
     done = len(files) - len(todo)
     contents = dict(todo)
-    for outcome in _check_all(todo, folders, config, catalog, jobs):
+    for outcome in _check_all(todo, interfaces, config, catalog, jobs):
         done += 1
         if progress is not None:
             progress(done, len(files), outcome.path)
@@ -105,15 +106,13 @@ def check_paths(
     return result
 
 
-def _catalog(folders: list[Path], config: Config) -> MsgCatalog:
-    return MsgCatalog(
-        interface_files(folders), rep103=config.rep103, distro=config.ros_distro
-    )
+def _catalog(interfaces: list[Path], config: Config) -> MsgCatalog:
+    return MsgCatalog(interfaces, rep103=config.rep103, distro=config.ros_distro)
 
 
 def _check_all(
     todo: list[tuple[Path, bytes]],
-    folders: list[Path],
+    interfaces: list[Path],
     config: Config,
     catalog: MsgCatalog,
     jobs: int,
@@ -125,7 +124,7 @@ def _check_all(
         max_workers=min(jobs, len(todo)),
         mp_context=multiprocessing.get_context(method),
         initializer=_start_worker,
-        initargs=(folders, config),
+        initargs=(interfaces, config),
     ) as pool:
         chunk = max(1, len(todo) // (jobs * 4))
         return list(pool.map(_worker_check, todo, chunksize=chunk))
@@ -150,9 +149,9 @@ def _check_one(
 _WORKER: tuple[MsgCatalog, Config] | None = None
 
 
-def _start_worker(folders: list[Path], config: Config) -> None:
+def _start_worker(interfaces: list[Path], config: Config) -> None:
     global _WORKER
-    _WORKER = (_catalog(folders, config), config)
+    _WORKER = (_catalog(interfaces, config), config)
 
 
 def _worker_check(item: tuple[Path, bytes]) -> FileResult:
