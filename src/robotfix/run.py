@@ -6,10 +6,12 @@ from __future__ import annotations
 
 import multiprocessing
 import os
+import signal
 import time
 import traceback
-from collections.abc import Callable
-from concurrent.futures import ProcessPoolExecutor
+from collections.abc import Callable, Iterator
+from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
+from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -30,6 +32,7 @@ from robotfix.fs import UnreadableError, read_regular
 from robotfix.ros.catalog import MsgCatalog
 
 MIN_PARALLEL = 16  # fewer files are checked faster in one process than by a pool
+MAX_CHUNK = 8  # files per task: Ctrl-C waits for at most one chunk per worker
 
 
 @dataclass
@@ -116,18 +119,65 @@ def _check_all(
     config: Config,
     catalog: MsgCatalog,
     jobs: int,
-) -> list[FileResult]:
+) -> Iterator[FileResult]:
+    """Each file's result, as it comes. With jobs > 1, in worker processes: at most
+    one per core and per file; if the pool cannot start (no process or file
+    descriptor left), the files are checked here instead."""
+    jobs = min(jobs, default_jobs(), len(todo))
     if jobs <= 1 or len(todo) < MIN_PARALLEL:
-        return [_check_one(path, data, catalog, config) for path, data in todo]
+        for path, data in todo:
+            yield _check_one(path, data, catalog, config)
+        return
+    size = max(1, min(MAX_CHUNK, len(todo) // (jobs * 4)))
+    chunks = [todo[i : i + size] for i in range(0, len(todo), size)]
     method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
-    with ProcessPoolExecutor(
-        max_workers=min(jobs, len(todo)),
-        mp_context=multiprocessing.get_context(method),
-        initializer=_start_worker,
-        initargs=(interfaces, config),
-    ) as pool:
-        chunk = max(1, len(todo) // (jobs * 4))
-        return list(pool.map(_worker_check, todo, chunksize=chunk))
+    pool: ProcessPoolExecutor | None = None
+    pending: dict[Future[list[FileResult]], list[tuple[Path, bytes]]] = {}
+    try:
+        pool = ProcessPoolExecutor(
+            max_workers=jobs,
+            mp_context=multiprocessing.get_context(method),
+            initializer=_start_worker,
+            initargs=(interfaces, config),
+        )
+        for chunk in chunks:
+            pending[pool.submit(_worker_check, chunk)] = chunk
+    except (OSError, BrokenProcessPool):  # EMFILE, EAGAIN: check here instead
+        _stop(pool)
+        for path, data in todo:
+            yield _check_one(path, data, catalog, config)
+        return
+    try:
+        while pending:
+            done, _ = wait(pending, return_when=FIRST_COMPLETED)
+            for future in sorted(done, key=lambda f: str(pending[f][0][0])):
+                chunk = pending.pop(future)
+                try:
+                    yield from future.result()
+                except BrokenProcessPool:
+                    yield from (_lost(path) for path, _ in chunk)
+    except BaseException:  # Ctrl-C, or the caller stopped: no waiting for chunks
+        _stop(pool)
+        raise
+    pool.shutdown(wait=True)
+
+
+def _stop(pool: ProcessPoolExecutor | None) -> None:
+    """Shut a pool down without waiting: pending chunks are cancelled and the
+    workers ended, so the process can exit at once."""
+    if pool is None:
+        return
+    # `_processes` is private: used only to end the workers sooner, if it is there
+    processes = list((getattr(pool, "_processes", None) or {}).values())
+    pool.shutdown(wait=False, cancel_futures=True)
+    for process in processes:
+        if process.is_alive():
+            process.terminate()
+
+
+def _lost(path: Path) -> FileResult:
+    summary = "the worker process checking it stopped (killed, or out of memory)"
+    return FileResult(str(path), [], InternalError(str(path), summary, summary))
 
 
 def _check_one(
@@ -150,14 +200,17 @@ _WORKER: tuple[MsgCatalog, Config] | None = None
 
 
 def _start_worker(interfaces: list[Path], config: Config) -> None:
+    """In a worker: the same interface files as the main process; Ctrl-C is the
+    main process's to handle (it ends the workers), so no traceback here."""
     global _WORKER
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
     _WORKER = (_catalog(interfaces, config), config)
 
 
-def _worker_check(item: tuple[Path, bytes]) -> FileResult:
+def _worker_check(chunk: list[tuple[Path, bytes]]) -> list[FileResult]:
     assert _WORKER is not None
     catalog, config = _WORKER
-    return _check_one(item[0], item[1], catalog, config)
+    return [_check_one(path, data, catalog, config) for path, data in chunk]
 
 
 def default_jobs() -> int:
