@@ -66,6 +66,8 @@ def summary(
         return f"{n} {word}{'' if n == 1 else 's'}"
 
     timing = f" ({seconds:.2f} s)" if seconds is not None else ""
+    if not files and not errors and not warnings:
+        return f"No Python files were found to check{timing}."
     if not errors and not warnings:
         return f"No problems found in {plural(files, 'file')}{timing}."
     return (
