@@ -17,13 +17,18 @@ from robotfix import messages, rules
 from robotfix.analysis.vc import VC, Proved, Verdict, Violated
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic, Severity
+from robotfix.discovery import (  # re-exported: the walk lives in discovery.py
+    INTERFACE_SUFFIXES as INTERFACE_SUFFIXES,
+)
+from robotfix.discovery import _hidden as _hidden
+from robotfix.discovery import interface_files as interface_files
+from robotfix.discovery import python_files as python_files
+from robotfix.discovery import ros_interface_folders as ros_interface_folders
 from robotfix.ros.catalog import MsgCatalog
 
 if TYPE_CHECKING:
     from robotfix.analysis.context import FileContext
 from robotfix.source import SourceFile
-
-INTERFACE_SUFFIXES = (".msg", ".srv", ".action")
 
 
 @dataclass
@@ -258,67 +263,6 @@ def finish(diagnostics: list[Diagnostic]) -> list[Diagnostic]:
             noted.add(diag.message)
         result.append(diag)
     return result
-
-
-def python_files(paths: list[Path], config: Config | None = None) -> list[Path]:
-    """Files named on the command line, and `*.py` under folders (less excludes)."""
-    found: list[Path] = []
-    for path in paths:
-        if path.is_dir():
-            found.extend(
-                p
-                for p in sorted(path.rglob("*.py"))
-                if (p.is_file() or p.is_symlink()) and not _hidden(p.relative_to(path))
-            )
-        else:
-            found.append(path)
-    if config is not None and config.exclude:
-        named = set(paths)
-        found = [f for f in found if f in named or not config.excluded(f)]
-    return sorted(dict.fromkeys(found))
-
-
-def interface_files(folders: list[Path]) -> list[Path]:
-    found: list[Path] = []
-    for folder in folders:
-        if folder.is_file() and folder.suffix in INTERFACE_SUFFIXES:
-            found.append(folder)
-        elif folder.is_dir():
-            found.extend(
-                p
-                for p in sorted(folder.rglob("*"))
-                if p.suffix in INTERFACE_SUFFIXES and p.is_file()
-            )
-    return found
-
-
-def ros_interface_folders(paths: list[Path]) -> list[Path]:
-    """The msg/, srv/, action/ folders of ROS packages (folders with package.xml)."""
-    folders: list[Path] = []
-    for path in paths:
-        root = path if path.is_dir() else path.parent
-        candidates = [root, *root.parents] if path.is_file() else [root]
-        packages = [c for c in candidates if (c / "package.xml").is_file()][:1]
-        if path.is_dir():
-            packages += [
-                p.parent
-                for p in sorted(path.rglob("package.xml"))
-                if not _hidden(p.relative_to(path))
-            ]
-        for package in packages:
-            folders.extend(
-                package / name
-                for name in ("msg", "srv", "action")
-                if (package / name).is_dir()
-            )
-    return sorted(dict.fromkeys(folders))
-
-
-def _hidden(relative: Path) -> bool:
-    return any(
-        part.startswith(".") or part in ("__pycache__", "node_modules")
-        for part in relative.parts[:-1]
-    )
 
 
 def _constant(term: Any) -> str | None:

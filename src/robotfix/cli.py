@@ -8,6 +8,7 @@ inside the commands, so `robotfix --version` starts fast.
 from __future__ import annotations
 
 import argparse
+import errno
 import functools
 import io
 import os
@@ -19,10 +20,13 @@ from typing import TYPE_CHECKING, TypeVar, cast
 from robotfix import __version__
 
 if TYPE_CHECKING:
+    from collections.abc import Callable
+
     from robotfix.api import Result
     from robotfix.config import Config
 
 EXIT_OK, EXIT_FOUND, EXIT_FAILURE = 0, 1, 2
+EXIT_INTERRUPTED = 130  # 128 + SIGINT, as shells report Ctrl-C
 FORMATS = ("text", "concise", "json", "sarif", "github")
 
 
@@ -155,7 +159,7 @@ def main(argv: list[str] | None = None) -> int:
         if args.command == "lsp":
             return run_lsp()
     except KeyboardInterrupt:
-        return EXIT_FAILURE
+        return EXIT_INTERRUPTED
     build_parser().print_help()
     return EXIT_FAILURE
 
@@ -223,9 +227,9 @@ def run_check(args: argparse.Namespace) -> int:
     from robotfix import api, config
 
     paths: list[Path] = args.paths or [Path(".")]
-    missing = [p for p in paths if not p.exists() and not p.is_symlink()]
-    for path in missing:
-        print(f"robotfix: error: {path}: no such file or directory", file=sys.stderr)
+    missing = [(p, why) for p in paths if (why := _missing(p))]
+    for path, why in missing:
+        print(f"robotfix: error: {path}: {why}", file=sys.stderr)
     if missing:
         return EXIT_FAILURE
     try:
@@ -233,6 +237,12 @@ def run_check(args: argparse.Namespace) -> int:
     except config.ConfigError as err:
         print(f"robotfix: error: {err}", file=sys.stderr)
         return EXIT_FAILURE
+    for folder in settings.msg_paths:
+        why = _missing(folder)
+        if why:
+            where = "--msg-path" if folder in args.msg_path else "msg-paths"
+            print(f"robotfix: error: {where} {folder}: {why}", file=sys.stderr)
+            return EXIT_FAILURE
     from robotfix.run import default_jobs
 
     if args.jobs is not None and args.jobs < 1:
@@ -248,7 +258,34 @@ def run_check(args: argparse.Namespace) -> int:
     )
     if progress is not None:
         progress.done()
+    if not result.files:
+        print(
+            f"robotfix: warning: no Python files found in {' '.join(map(str, paths))}",
+            file=sys.stderr,
+        )
     return report(result, settings)
+
+
+def _excerpts(
+    result: Result, lines: Callable[[str, int], str | None]
+) -> Callable[[str, int], str | None]:
+    """Source lines for excerpts, but none of a file that was not read (RF003) or
+    not checked (RF004): a FIFO would block, and the content of a symlink leaving
+    the checked paths must not be shown."""
+    unread = {d.path for d in result.diagnostics if d.code in ("RF003", "RF004")}
+    return lambda path, line: None if path in unread else lines(path, line)
+
+
+def _missing(path: Path) -> str | None:
+    """Why a path named by the user is not there (None when it is; a dangling
+    symlink is there, and gets RF003)."""
+    try:
+        os.lstat(path)
+    except OSError as err:
+        if err.errno == errno.ENOENT:
+            return "no such file or directory"
+        return err.strerror or type(err).__name__
+    return None
 
 
 def merge_flags(settings: Config, args: argparse.Namespace) -> Config:
@@ -321,7 +358,7 @@ def render(result: Result, fmt: str, errors: int, warnings: int) -> str:
     summary = text.summary(result.files, errors, warnings, seconds, unchecked)
     if fmt == "concise":
         return text.render_concise(result.diagnostics) + summary + "\n"
-    return text.render(result.diagnostics, SourceLines(), summary)
+    return text.render(result.diagnostics, _excerpts(result, SourceLines()), summary)
 
 
 class SourceLines:

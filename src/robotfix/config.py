@@ -7,11 +7,14 @@ flags' spelling: `msg-paths` (relative to that file), `strict`, `rep103`, `forma
 from __future__ import annotations
 
 import fnmatch
+import os
 import re
 import sys
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
+
+from robotfix.fs import UnreadableError, read_text
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -28,6 +31,7 @@ KEYS = {
     "ros-distro",
 }
 FORMATS = ("text", "concise", "json", "sarif", "github")
+MAX_PYPROJECT_BYTES = 4 * 1024 * 1024  # a real pyproject.toml is a few kB
 DISTROS = ("ros2", "ros1", "jazzy", "humble", "iron", "kilted", "rolling", "noetic")
 
 
@@ -49,8 +53,13 @@ class Config:
     )  # patterns are relative to it
     source: Path | None = field(default=None, compare=False)
 
-    def excluded(self, path: Path) -> bool:
-        return any(matches(pattern, self._relative(path)) for pattern in self.exclude)
+    def excluded(self, path: Path, folder: bool = False) -> bool:
+        """Whether an `exclude` pattern matches the file (or, with folder=True, the
+        folder and so everything below it)."""
+        if not self.exclude:
+            return False
+        relative = self._relative(path)
+        return any(matches(pattern, relative, folder) for pattern in self.exclude)
 
     def ignored_codes(self, path: Path) -> frozenset[str]:
         relative = self._relative(path)
@@ -61,38 +70,68 @@ class Config:
         return found
 
     def _relative(self, path: Path) -> str:
-        try:
-            return path.resolve().relative_to(self.root.resolve()).as_posix()
-        except ValueError:
-            return path.as_posix()
+        """The path as seen from the root: as spelled first (a folder reached
+        through a symlink keeps the link's name), else with symlinks resolved."""
+        for here, root in (
+            (os.path.abspath(path), os.path.abspath(self.root)),
+            (os.path.realpath(path), os.path.realpath(self.root)),
+        ):
+            try:
+                return Path(here).relative_to(root).as_posix()
+            except ValueError:
+                continue
+        return path.as_posix()
 
 
-def matches(pattern: str, relative: str) -> bool:
+def matches(pattern: str, relative: str, folder: bool = False) -> bool:
     """gitignore-style: `name` matches at any depth, `a/b` from the root, `dir/` a
-    folder and all below it, `*` within a name, `**` across folders."""
+    folder and all below it, `*` within a name, `**` across folders.
+
+    The pattern is matched segment by segment against the path's folders, keeping
+    the set of positions reached: linear in the number of segments whatever the
+    pattern (repeated `**/` cannot backtrack), and `*` within a segment is
+    fnmatch's, which does not backtrack either. `relative` is a file's path, or a
+    folder's with folder=True (then `dir/` matches the folder itself)."""
     pattern = pattern.strip()
     directory = pattern.endswith("/")
     pattern = pattern.strip("/")
+    if not pattern:
+        return False
     parts = relative.split("/")
-    candidates = ["/".join(parts[: i + 1]) for i in range(len(parts))]
-    if directory:
-        candidates = candidates[:-1] if len(candidates) > 1 else []
+    # how many leading segments may form a match: a `dir/` pattern needs a folder
+    last = len(parts) if folder or not directory else len(parts) - 1
     if "/" not in pattern:
-        return any(
-            fnmatch.fnmatchcase(c.rsplit("/", 1)[-1], pattern) for c in candidates
-        )
-    regex = re.escape(pattern).replace(r"\*\*/", "(?:.*/)?").replace(r"\*\*", ".*")
-    regex = regex.replace(r"\*", "[^/]*").replace(r"\?", "[^/]")
-    return any(re.fullmatch(regex, c) for c in candidates)
+        return any(fnmatch.fnmatchcase(part, pattern) for part in parts[:last])
+    segments = [s for s in pattern.split("/") if s]
+    collapsed = [
+        s
+        for i, s in enumerate(segments)
+        if not (s == "**" and segments[i - 1 : i] == ["**"])
+    ]
+    reached = {0}  # how many path segments the pattern's prefix can consume
+    for index, segment in enumerate(collapsed):
+        if segment == "**":
+            # across folders: zero or more, but a trailing `**` needs one at least
+            least = min(reached) + (1 if index == len(collapsed) - 1 else 0)
+            reached = set(range(least, len(parts) + 1))
+        else:
+            reached = {
+                at + 1
+                for at in reached
+                if at < len(parts) and fnmatch.fnmatchcase(parts[at], segment)
+            }
+        if not reached:
+            return False
+    return any(1 <= at <= last for at in reached)
 
 
 def find_pyproject(start: Path) -> Path | None:
-    here = start.resolve()
-    if here.is_file() or not here.exists():
+    here = Path(os.path.realpath(start))
+    if not os.path.isdir(here):  # os.path never raises (a path too long, a loop)
         here = here.parent
     for folder in (here, *here.parents):
         candidate = folder / "pyproject.toml"
-        if candidate.is_file():
+        if os.path.isfile(candidate):
             return candidate
     return None
 
@@ -104,14 +143,21 @@ def load(start: Path, base: Config | None = None) -> Config:
     if path is None:
         return config
     try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
+        data = tomllib.loads(read_text(path, MAX_PYPROJECT_BYTES))
     except tomllib.TOMLDecodeError as err:
         line = re.search(r"line (\d+)", str(err))
         where = f"{path}:{line.group(1)}" if line else str(path)
         raise ConfigError(f"{where}: cannot parse TOML: {err}") from None
-    except (OSError, UnicodeDecodeError) as err:
-        raise ConfigError(f"{path}: cannot read: {err}") from None
-    table = data.get("tool", {}).get("robotfix")
+    except RecursionError:
+        raise ConfigError(f"{path}: cannot parse TOML: nested too deeply") from None
+    except UnreadableError as err:
+        raise ConfigError(f"{path}: cannot read: {err.reason}") from None
+    tool = data.get("tool")
+    if tool is None:
+        return config
+    if not isinstance(tool, dict):
+        raise ConfigError(f"{path}: `tool` must be a table ([tool.robotfix])")
+    table = tool.get("robotfix")
     if table is None:
         return config
     return _apply(config, table, path)

@@ -35,6 +35,28 @@ def unreadable(path: str, detail: str) -> Diagnostic:
     return Diagnostic(rules.UNREADABLE_FILE, path, Span.point(1), detail)
 
 
+def outside_link(path: str, target: str) -> Diagnostic:
+    """RF004: a symlink under the checked paths whose target is outside them; it is
+    named with its target, and never read."""
+    return Diagnostic(
+        rules.PATH_NOT_CHECKED,
+        path,
+        Span.point(1),
+        f"not checked: a symlink to `{target}`, outside the checked paths",
+        (Note("name the target on the command line (or in msg-paths) to check it"),),
+    )
+
+
+def folder_not_read(path: str, reason: str) -> Diagnostic:
+    """RF004: a folder under the checked paths that could not be listed."""
+    return Diagnostic(
+        rules.PATH_NOT_CHECKED,
+        path,
+        Span.point(1),
+        f"folder not checked: cannot read it ({reason})",
+    )
+
+
 def analysis_budget(path: str, line: int, why: str) -> Diagnostic:
     return Diagnostic(
         rules.ANALYSIS_BUDGET,

@@ -16,6 +16,9 @@ PYTHON2_SOURCE = Rule(
     "RF002", "python2-source", "File is Python 2 and was not checked", W
 )
 UNREADABLE_FILE = Rule("RF003", "unreadable-file", "File cannot be read or decoded")
+PATH_NOT_CHECKED = Rule(
+    "RF004", "path-not-checked", "A file or folder was left out of the run", W
+)
 NEWER_PYTHON_SOURCE = Rule(
     "RF005",
     "newer-python-source",
@@ -87,6 +90,7 @@ ALL_RULES: dict[str, Rule] = {
         PYTHON_SYNTAX_ERROR,
         PYTHON2_SOURCE,
         UNREADABLE_FILE,
+        PATH_NOT_CHECKED,
         NEWER_PYTHON_SOURCE,
         UNUSED_SUPPRESSION,
         REFINEMENT_VIOLATED,

@@ -6,10 +6,12 @@ from __future__ import annotations
 
 import multiprocessing
 import os
+import signal
 import time
 import traceback
-from collections.abc import Callable
-from concurrent.futures import ProcessPoolExecutor
+from collections.abc import Callable, Iterator
+from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
+from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -21,16 +23,16 @@ from robotfix.api import (
     catalog_problems,
     check_file,
     finish,
-    interface_files,
-    python_files,
-    ros_interface_folders,
 )
 from robotfix.cache import ResultCache, run_key
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
+from robotfix.discovery import discover
+from robotfix.fs import UnreadableError, read_regular
 from robotfix.ros.catalog import MsgCatalog
 
 MIN_PARALLEL = 16  # fewer files are checked faster in one process than by a pool
+MAX_CHUNK = 8  # files per task: Ctrl-C waits for at most one chunk per worker
 
 
 @dataclass
@@ -53,10 +55,12 @@ def check_paths(
     and from the msg/srv/action folders of ROS packages under `paths`."""
     started = time.perf_counter()
     result = Result()
-    folders = list(config.msg_paths) + ros_interface_folders(paths)
-    catalog = _catalog(folders, config)
+    found = discover(paths, config)
+    result.diagnostics.extend(found.notices)
+    interfaces = found.interface_files
+    catalog = _catalog(interfaces, config)
     result.diagnostics.extend(catalog_problems(catalog))
-    files = python_files(paths, config)
+    files = found.python_files
     result.files = len(files)
     cache = (
         ResultCache(config.root / ".robotfix_cache", run_key(config))
@@ -66,9 +70,9 @@ def check_paths(
     todo: list[tuple[Path, bytes]] = []
     for index, file in enumerate(files, start=1):
         try:
-            data = file.read_bytes()
-        except OSError as err:
-            reason = f"cannot read: {err.strerror}"
+            data = read_regular(file)  # a FIFO or a device: refused, never blocks
+        except UnreadableError as err:
+            reason = f"cannot read: {err.reason}"
             result.diagnostics.append(messages.unreadable(str(file), reason))
             continue
         cached = cache.get(file, data, config, catalog) if cache else None
@@ -81,7 +85,7 @@ def check_paths(
             todo.append((file, data))
     done = len(files) - len(todo)
     contents = dict(todo)
-    for outcome in _check_all(todo, folders, config, catalog, jobs):
+    for outcome in _check_all(todo, interfaces, config, catalog, jobs):
         done += 1
         if progress is not None:
             progress(done, len(files), outcome.path)
@@ -107,30 +111,75 @@ def check_paths(
     return result
 
 
-def _catalog(folders: list[Path], config: Config) -> MsgCatalog:
-    return MsgCatalog(
-        interface_files(folders), rep103=config.rep103, distro=config.ros_distro
-    )
+def _catalog(interfaces: list[Path], config: Config) -> MsgCatalog:
+    return MsgCatalog(interfaces, rep103=config.rep103, distro=config.ros_distro)
 
 
 def _check_all(
     todo: list[tuple[Path, bytes]],
-    folders: list[Path],
+    interfaces: list[Path],
     config: Config,
     catalog: MsgCatalog,
     jobs: int,
-) -> list[FileResult]:
+) -> Iterator[FileResult]:
+    """Each file's result, as it comes. With jobs > 1, in worker processes: at most
+    one per core and per file; if the pool cannot start (no process or file
+    descriptor left), the files are checked here instead."""
+    jobs = min(jobs, default_jobs(), len(todo))
     if jobs <= 1 or len(todo) < MIN_PARALLEL:
-        return [_check_one(path, data, catalog, config) for path, data in todo]
+        for path, data in todo:
+            yield _check_one(path, data, catalog, config)
+        return
+    size = max(1, min(MAX_CHUNK, len(todo) // (jobs * 4)))
+    chunks = [todo[i : i + size] for i in range(0, len(todo), size)]
     method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
-    with ProcessPoolExecutor(
-        max_workers=min(jobs, len(todo)),
-        mp_context=multiprocessing.get_context(method),
-        initializer=_start_worker,
-        initargs=(folders, config),
-    ) as pool:
-        chunk = max(1, len(todo) // (jobs * 4))
-        return list(pool.map(_worker_check, todo, chunksize=chunk))
+    pool: ProcessPoolExecutor | None = None
+    pending: dict[Future[list[FileResult]], list[tuple[Path, bytes]]] = {}
+    try:
+        pool = ProcessPoolExecutor(
+            max_workers=jobs,
+            mp_context=multiprocessing.get_context(method),
+            initializer=_start_worker,
+            initargs=(interfaces, config),
+        )
+        for chunk in chunks:
+            pending[pool.submit(_worker_check, chunk)] = chunk
+    except (OSError, BrokenProcessPool):  # EMFILE, EAGAIN: check here instead
+        _stop(pool)
+        for path, data in todo:
+            yield _check_one(path, data, catalog, config)
+        return
+    try:
+        while pending:
+            done, _ = wait(pending, return_when=FIRST_COMPLETED)
+            for future in sorted(done, key=lambda f: str(pending[f][0][0])):
+                chunk = pending.pop(future)
+                try:
+                    yield from future.result()
+                except BrokenProcessPool:
+                    yield from (_lost(path) for path, _ in chunk)
+    except BaseException:  # Ctrl-C, or the caller stopped: no waiting for chunks
+        _stop(pool)
+        raise
+    pool.shutdown(wait=True)
+
+
+def _stop(pool: ProcessPoolExecutor | None) -> None:
+    """Shut a pool down without waiting: pending chunks are cancelled and the
+    workers ended, so the process can exit at once."""
+    if pool is None:
+        return
+    # `_processes` is private: used only to end the workers sooner, if it is there
+    processes = list((getattr(pool, "_processes", None) or {}).values())
+    pool.shutdown(wait=False, cancel_futures=True)
+    for process in processes:
+        if process.is_alive():
+            process.terminate()
+
+
+def _lost(path: Path) -> FileResult:
+    summary = "the worker process checking it stopped (killed, or out of memory)"
+    return FileResult(str(path), [], InternalError(str(path), summary, summary))
 
 
 def _check_one(
@@ -156,15 +205,18 @@ def _check_one(
 _WORKER: tuple[MsgCatalog, Config] | None = None
 
 
-def _start_worker(folders: list[Path], config: Config) -> None:
+def _start_worker(interfaces: list[Path], config: Config) -> None:
+    """In a worker: the same interface files as the main process; Ctrl-C is the
+    main process's to handle (it ends the workers), so no traceback here."""
     global _WORKER
-    _WORKER = (_catalog(folders, config), config)
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    _WORKER = (_catalog(interfaces, config), config)
 
 
-def _worker_check(item: tuple[Path, bytes]) -> FileResult:
+def _worker_check(chunk: list[tuple[Path, bytes]]) -> list[FileResult]:
     assert _WORKER is not None
     catalog, config = _WORKER
-    return _check_one(item[0], item[1], catalog, config)
+    return [_check_one(path, data, catalog, config) for path, data in chunk]
 
 
 def default_jobs() -> int:

@@ -81,6 +81,8 @@ def summary(
             f"error); found {plural(errors, 'error')} and "
             f"{plural(warnings, 'warning')}{timing}."
         )
+    if not files and not errors and not warnings:
+        return f"No Python files were found to check{timing}."
     if not errors and not warnings:
         return f"No problems found in {plural(files, 'file')}{timing}."
     return (

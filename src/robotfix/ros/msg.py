@@ -7,9 +7,12 @@ Pure text processing: no ROS install, no catalog. Field types stay as written
 
 from __future__ import annotations
 
+import os
 import re
 from dataclasses import dataclass
 from pathlib import Path
+
+from robotfix.ros.package import package_name
 
 MARKER = re.compile(r"#\s*robotfix\s*#", re.IGNORECASE)
 _HEADER_PATH = re.compile(
@@ -85,8 +88,9 @@ def read_interface(path: Path, text: str) -> InterfaceFile:
 
 
 def _name_of(path: Path, lines: list[str]) -> tuple[str, str, int]:
-    """Package and type name from a header line (`pkg/Name.msg`, `[pkg/Name]:`)
-    or from the path."""
+    """Package and type name from a header line (`pkg/Name.msg`, `[pkg/Name]:`),
+    else from the path: the package is the `<name>` in the package.xml of the
+    folder holding msg/ (or the file), else that folder's name."""
     for index, line in enumerate(lines):
         stripped = line.strip()
         if not stripped or (stripped.startswith("#") and not MARKER.match(stripped)):
@@ -95,10 +99,10 @@ def _name_of(path: Path, lines: list[str]) -> tuple[str, str, int]:
         if match:
             return match.group(1), match.group(2), index + 1
         break
-    parent = path.parent
+    parent = Path(os.path.abspath(path)).parent  # `.` has no name; its folder has
     if parent.name in ("msg", "srv", "action"):
         parent = parent.parent
-    return parent.name or "unknown", path.stem, 0
+    return package_name(parent) or parent.name or "unknown", path.stem, 0
 
 
 def _read_section(

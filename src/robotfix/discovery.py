@@ -1,0 +1,261 @@
+"""Which files a run reads: the Python files under the checked paths, the interface
+files of the msg paths and of the ROS packages there, and what was left out (RF004).
+
+The paths named on the command line (and the msg paths) are roots. Folders are
+walked with os.scandir, without recursion, so a folder that vanishes during the
+walk is skipped and one that cannot be read (no permission, a path longer than the
+system allows) is an RF004 warning, never a crash. A symlink is followed when its
+target lies inside a root, once: every real folder is walked once and every real
+file is listed once, whatever the spellings that reach it. A symlink whose target
+leaves every root is not read; an RF004 warning names it and its target. Files keep
+the spelling of the path that reached them (`ws/src/pkg/node.py`).
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable, Iterable, Iterator
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from robotfix import messages
+from robotfix.config import Config
+from robotfix.diagnostics import Diagnostic
+from robotfix.fs import within
+
+INTERFACE_SUFFIXES = (".msg", ".srv", ".action")
+INTERFACE_FOLDERS = ("msg", "srv", "action")
+SKIPPED_FOLDERS = ("__pycache__", "node_modules")  # and every hidden folder
+
+
+@dataclass
+class Discovery:
+    python_files: list[Path] = field(default_factory=list)
+    interface_files: list[Path] = field(default_factory=list)
+    notices: list[Diagnostic] = field(default_factory=list)  # RF004 warnings
+
+
+def discover(paths: list[Path], config: Config) -> Discovery:
+    """Everything a run over `paths` reads, and the RF004 notices of what it left
+    out. Interface files come from the msg paths and from the msg/, srv/, action/
+    folders of the ROS packages under `paths`, or around a path inside a package."""
+    found = Discovery()
+    files, packages = _python_files(paths, config, found.notices)
+    found.python_files = files
+    roots = [*paths, *config.msg_paths, *packages]
+    folders = list(config.msg_paths) + _interface_folders(packages)
+    found.interface_files = _interface_files(folders, roots, found.notices)
+    return found
+
+
+def python_files(paths: list[Path], config: Config | None = None) -> list[Path]:
+    """Files named on the command line, and `*.py` under folders (less excludes)."""
+    return _python_files(paths, config, [])[0]
+
+
+def ros_interface_folders(paths: list[Path]) -> list[Path]:
+    """The msg/, srv/, action/ folders of ROS packages (folders with package.xml)
+    under `paths`, or holding one of them."""
+    return _interface_folders(_python_files(paths, None, [])[1])
+
+
+def interface_files(folders: list[Path]) -> list[Path]:
+    """The .msg/.srv/.action files in `folders` (or named by them), each once; a
+    symlink leaving the folders is not followed."""
+    return _interface_files(folders, folders, [])
+
+
+def _hidden(relative: Path) -> bool:
+    return any(_skipped(part) for part in relative.parts[:-1])
+
+
+def _skipped(name: str) -> bool:
+    return name.startswith(".") or name in SKIPPED_FOLDERS
+
+
+# -- the walk ---------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class _Entry:
+    path: Path  # as reached: the root's spelling, then the names walked
+    real: str  # every symlink resolved
+    regular: bool  # a regular file, or a symlink to one
+    link: bool
+
+
+class _Walker:
+    """Walks folders under a set of roots; remembers the real folders it has
+    walked, so a loop or a second spelling is walked once."""
+
+    def __init__(self, roots: Iterable[Path], notices: list[Diagnostic]) -> None:
+        self.roots = [os.path.realpath(root) for root in roots]
+        self.notices = notices
+        self.walked: set[str] = set()
+
+    def inside(self, real: str) -> bool:
+        return within(real, self.roots)
+
+    def walk(
+        self,
+        tops: list[Path],
+        wanted: Callable[[str], bool],
+        pruned: Callable[[Path], bool],
+    ) -> Iterator[tuple[Path, list[_Entry]]]:
+        """Each folder under `tops` (themselves included) with its entries that are
+        not folders; `wanted` names the files whose leaving links deserve a notice,
+        `pruned` the folders not to enter. Folders reached through a symlink are
+        walked last, so a folder also reachable without one keeps that spelling."""
+        stack = [(top, os.path.realpath(top), False) for top in reversed(tops)]
+        linked: list[tuple[Path, str, bool]] = []
+        while stack or linked:
+            if not stack:
+                stack, linked = linked[::-1], []
+            folder, real, via_link = stack.pop()
+            if real in self.walked:
+                continue
+            self.walked.add(real)
+            try:
+                with os.scandir(folder) as listing:
+                    entries = sorted(listing, key=lambda e: e.name)
+            except (FileNotFoundError, NotADirectoryError):
+                continue  # gone while we walked (a concurrent build)
+            except OSError as err:
+                self.notices.append(messages.folder_not_read(str(folder), _reason(err)))
+                continue
+            files: list[_Entry] = []
+            below: list[tuple[Path, str, bool]] = []
+            for entry in entries:
+                path = folder / entry.name
+                link = _test(entry.is_symlink)
+                is_folder = _test(entry.is_dir)  # follows a symlink; False if broken
+                if is_folder and (_skipped(entry.name) or pruned(path)):
+                    continue
+                target = os.path.realpath(path) if link else ""
+                if link and not self.inside(target):
+                    if is_folder or wanted(entry.name):
+                        self.notices.append(messages.outside_link(str(path), target))
+                    continue
+                item_real = target or os.path.join(real, entry.name)
+                if is_folder:
+                    (linked if link else below).append(
+                        (path, item_real, via_link or link)
+                    )
+                else:
+                    regular = _test(entry.is_file)
+                    files.append(_Entry(path, item_real, regular, via_link or link))
+            yield folder, files
+            stack.extend(reversed(below))
+
+
+def _python_files(
+    paths: list[Path], config: Config | None, notices: list[Diagnostic]
+) -> tuple[list[Path], list[Path]]:
+    """Python files (each real file once) and ROS package folders under `paths`,
+    or holding one of them."""
+    walker = _Walker(paths, notices)
+    chosen = _OnePathEach()
+    packages: dict[str, Path] = {}
+
+    def pruned(folder: Path) -> bool:
+        return config is not None and config.excluded(folder, folder=True)
+
+    for path in paths:
+        package = _package_around(path)
+        if package is not None:
+            packages.setdefault(os.path.realpath(package), package)
+        if not os.path.isdir(path):
+            chosen.add(path, os.path.realpath(path), False)  # named: always checked
+    tops = [path for path in paths if os.path.isdir(path)]
+    for folder, entries in walker.walk(tops, _is_python, pruned):
+        for entry in entries:
+            if entry.path.name == "package.xml" and entry.regular:
+                packages.setdefault(os.path.realpath(folder), folder)
+            elif (
+                _is_python(entry.path.name)
+                and (entry.regular or entry.link)  # a broken link: RF003
+                and not (config is not None and config.excluded(entry.path))
+            ):
+                chosen.add(entry.path, entry.real, entry.link)
+    return chosen.paths(), sorted(packages.values())
+
+
+def _package_around(path: Path) -> Path | None:
+    """The ROS package a path lies in (its own folder included), found by walking
+    up; spelled relative to the current folder when `path` was relative."""
+    absolute = Path(os.path.abspath(path))
+    start = absolute if os.path.isdir(absolute) else absolute.parent
+    for folder in (start, *start.parents):
+        if os.path.isfile(folder / "package.xml"):
+            if path.is_absolute():
+                return folder
+            try:
+                return Path(os.path.relpath(folder))
+            except ValueError:  # another drive
+                return folder
+    return None
+
+
+def _interface_folders(packages: Iterable[Path]) -> list[Path]:
+    return [
+        package / name
+        for package in packages
+        for name in INTERFACE_FOLDERS
+        if os.path.isdir(package / name) or os.path.islink(package / name)
+    ]
+
+
+def _interface_files(
+    folders: list[Path], roots: Iterable[Path], notices: list[Diagnostic]
+) -> list[Path]:
+    walker = _Walker(roots, notices)
+    chosen = _OnePathEach()
+    tops = []
+    for folder in folders:
+        real = os.path.realpath(folder)
+        if not walker.inside(real):  # a package's msg/ linked elsewhere
+            notices.append(messages.outside_link(str(folder), real))
+        elif os.path.isdir(folder):
+            tops.append(folder)
+        elif _is_interface(folder.name) and os.path.isfile(folder):
+            chosen.add(folder, real, False)
+    for _, entries in walker.walk(tops, _is_interface, lambda _: False):
+        for entry in entries:
+            if _is_interface(entry.path.name) and entry.regular:
+                chosen.add(entry.path, entry.real, entry.link)
+    return chosen.paths()
+
+
+class _OnePathEach:
+    """One path per real file: the first reached without a symlink, if any."""
+
+    def __init__(self) -> None:
+        self._chosen: dict[str, tuple[bool, Path]] = {}
+
+    def add(self, path: Path, real: str, link: bool) -> None:
+        if real not in self._chosen or (self._chosen[real][0] and not link):
+            self._chosen[real] = (link, path)
+
+    def paths(self) -> list[Path]:
+        return sorted(path for _, path in self._chosen.values())
+
+
+def _is_python(name: str) -> bool:
+    return name.endswith(".py")
+
+
+def _is_interface(name: str) -> bool:
+    return name.endswith(INTERFACE_SUFFIXES)
+
+
+def _test(test: Callable[[], bool]) -> bool:
+    """A DirEntry test; an entry that cannot be looked at (a symlink loop, gone)
+    is none of the things tested."""
+    try:
+        return test()
+    except OSError:
+        return False
+
+
+def _reason(err: OSError) -> str:
+    return err.strerror or type(err).__name__

@@ -1,0 +1,35 @@
+"""A ROS package's name: the `<name>` of its package.xml (REP 127, 140, 149).
+
+The folder's name is only a fallback: a checkout or a symlink may call the folder
+anything, while ROS names the package's types after `<name>`.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+from xml.etree import ElementTree
+
+from robotfix.fs import UnreadableError, read_regular
+
+MAX_PACKAGE_XML_BYTES = 1024 * 1024  # real ones are a few kB
+_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")  # what a `pkg/Type` name can hold
+
+
+def package_name(folder: Path) -> str | None:
+    """`<name>` of `folder/package.xml`; None when there is no such file, it is not
+    a package manifest (not XML, no `<package>` root) or the name is not usable."""
+    try:
+        data = read_regular(folder / "package.xml", MAX_PACKAGE_XML_BYTES)
+    except UnreadableError:
+        return None
+    if b"<!DOCTYPE" in data or b"<!ENTITY" in data:
+        return None  # no manifest needs them; entities could make up any name
+    try:
+        root = ElementTree.fromstring(data)  # never fetches external entities
+    except (ElementTree.ParseError, ValueError, RecursionError):
+        return None
+    if root.tag != "package":
+        return None
+    name = (root.findtext("name") or "").strip()
+    return name if _NAME.fullmatch(name) else None
