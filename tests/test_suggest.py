@@ -44,4 +44,5 @@ def test_diff_then_apply(tmp_path: Path) -> None:
     assert run("suggest", "node.py", "--apply", cwd=tmp_path).returncode == 0
     assert "Unit('rad/s')" in node.read_text()
     assert run("check", "node.py", cwd=tmp_path).returncode == 0
-    assert run("suggest", "node.py", cwd=tmp_path).stdout == ""  # nothing left
+    again = run("suggest", "node.py", cwd=tmp_path)
+    assert again.stdout == "No suggestions in 1 file.\n"  # nothing left

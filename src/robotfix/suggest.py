@@ -1,60 +1,177 @@
 """`robotfix suggest`: propose `Annotated[..., "Unit('...')"]` for unannotated
 variables whose unit the analysis can pin down, as a unified diff; `--apply` writes
-it, only if the file has not changed since it was read.
+it.
+
+It never damages a file: the edited text must parse to the same program plus the
+annotations (and the import), or nothing is shown or written; lines are split where
+`ast` splits them; the import goes below a shebang, an encoding cookie, a licence
+header, the docstring and `__future__` imports; line endings and the encoding (a BOM,
+a PEP 263 cookie) are kept; the write is atomic (robotfix.fs), only if the file has
+not changed since it was read, and never through a symlink to a file outside the
+checked paths. A file that cannot be read or written gets one line on stderr, the
+others are still processed, and the exit status is then 2.
 """
 
 from __future__ import annotations
 
 import ast
 import difflib
+import io
+import os
+import stat
 import sys
+import tokenize
+import warnings
 from pathlib import Path
 
-from robotfix import api
+from robotfix import api, fs
 from robotfix.config import Config, ConfigError, load
 from robotfix.ros.catalog import MsgCatalog
+from robotfix.source import _LINE_BREAK
+
+EXIT_OK, EXIT_FAILURE = 0, 2
+_IMPORT = "from typing import Annotated"
+
+
+class UnsafeEditError(Exception):
+    """The suggestions cannot be applied safely; `reason` says why, in words."""
+
+    def __init__(self, reason: str) -> None:
+        super().__init__(reason)
+        self.reason = reason
 
 
 def run_suggest(paths: list[Path], msg_paths: list[Path], apply: bool) -> int:
-    missing = [p for p in paths if not p.exists()]
-    for path in missing:
-        print(f"robotfix: error: {path}: no such file or directory", file=sys.stderr)
-    if missing:
-        return 2
+    status = EXIT_OK
+    present = []
+    for path in paths:
+        if os.path.exists(path):
+            present.append(path)
+        else:
+            _say(f"robotfix: error: {path}: no such file or directory")
+            status = EXIT_FAILURE
+    if not present:
+        return EXIT_FAILURE
     try:
-        settings = load(paths[0])
-    except ConfigError as err:
-        print(f"robotfix: error: {err}", file=sys.stderr)
-        return 2
-    catalog = _catalog(paths, msg_paths, settings)
-    status = 0
-    for file in api.python_files(paths, settings):
-        original = file.read_bytes()
-        try:
-            text = original.decode("utf-8")
-        except UnicodeDecodeError:
-            continue
-        changed = annotate(text, str(file), catalog)
-        if changed == text:
-            continue
-        sys.stdout.writelines(
-            difflib.unified_diff(
-                text.splitlines(keepends=True),
-                changed.splitlines(keepends=True),
-                f"a/{file}",
-                f"b/{file}",
-            )
-        )
-        if apply:
-            if file.read_bytes() != original:
-                print(
-                    f"robotfix: {file} changed while it was read; not written",
-                    file=sys.stderr,
-                )
-                status = 1
-                continue
-            file.write_text(changed, encoding="utf-8")
+        settings = load(present[0])
+        catalog = _catalog(present, msg_paths, settings)
+        files = _unique(api.python_files(present, settings))
+    except (ConfigError, OSError) as err:
+        _say(f"robotfix: error: {err}")
+        return EXIT_FAILURE
+    changed_files = 0
+    for file in files:
+        outcome = _suggest_file(file, present, catalog, apply)
+        if outcome is None:
+            status = EXIT_FAILURE
+        elif outcome:
+            changed_files += 1
+    if not changed_files:
+        print(f"No suggestions in {_plural(len(files), 'file')}.")
     return status
+
+
+def _suggest_file(
+    file: Path, roots: list[Path], catalog: MsgCatalog, apply: bool
+) -> bool | None:
+    """Whether the file has suggestions (shown, and written with `apply`);
+    None when something could not be done (said on stderr)."""
+    try:
+        original = fs.read_regular(file)
+    except fs.UnreadableError as err:
+        _say(f"robotfix: {file}: cannot read: {err.reason}; skipped")
+        return None
+    try:
+        text, encoding = _decode(original)
+    except (SyntaxError, UnicodeError, LookupError) as err:
+        _say(f"robotfix: {file}: cannot decode: {err}; skipped")
+        return None
+    try:
+        changed = annotate(text, str(file), catalog)
+    except UnsafeEditError as err:
+        _say(f"robotfix: {file}: not annotated: {err.reason}")
+        return None
+    except Exception as err:  # one file's internal error never stops the run
+        _say(
+            f"robotfix: internal error while suggesting for {file}: "
+            f"{type(err).__name__}: {err}; skipped"
+        )
+        return None
+    if changed == text:
+        return False
+    _print_diff(file, text, changed)
+    if not apply:
+        return True
+    return True if _write(file, roots, original, changed, encoding) else None
+
+
+def _write(
+    file: Path, roots: list[Path], original: bytes, changed: str, encoding: str
+) -> bool:
+    """Write the edited text over the file's real path; False (said why) if not."""
+    real = Path(os.path.realpath(file))
+    if not fs.within(file, roots):
+        _say(
+            f"robotfix: {file}: links to {real}, outside the checked paths; not written"
+        )
+        return False
+    try:
+        data = changed.encode(encoding)
+    except UnicodeError:
+        _say(f"robotfix: {file}: the suggestions cannot be written in {encoding}")
+        return False
+    try:
+        mode = os.stat(real).st_mode
+    except OSError as err:
+        _say(f"robotfix: {file}: cannot write: {err.strerror or err}; left as it was")
+        return False
+    if not mode & (stat.S_IWUSR | stat.S_IWGRP | stat.S_IWOTH) or not os.access(
+        real, os.W_OK
+    ):
+        _say(f"robotfix: {file}: read-only; not written")
+        return False
+    try:
+        unchanged = fs.read_regular(real) == original
+    except fs.UnreadableError:
+        unchanged = False
+    if not unchanged:
+        _say(f"robotfix: {file} changed while it was read; not written")
+        return False
+    try:
+        fs.atomic_write(real, data)
+    except OSError as err:
+        _say(f"robotfix: {file}: cannot write: {err.strerror or err}; left as it was")
+        return False
+    return True
+
+
+def _unique(files: list[Path]) -> list[Path]:
+    """One path per real file (a symlink into the tree and its target are one file),
+    preferring a spelling that is not a symlink; in the given order."""
+    chosen: dict[str, Path] = {}
+    for file in files:
+        real = os.path.realpath(file)
+        if real not in chosen or (chosen[real].is_symlink() and not file.is_symlink()):
+            chosen[real] = file
+    kept = set(map(id, chosen.values()))
+    return [file for file in files if id(file) in kept]
+
+
+def _decode(data: bytes) -> tuple[str, str]:
+    """The text, decoded as Python does (BOM, PEP 263 cookie), and the codec that
+    encodes it back to the same bytes."""
+    encoding, _ = tokenize.detect_encoding(io.BytesIO(data).readline)
+    text = data.decode(encoding)
+    if text.encode(encoding) != data:
+        raise UnicodeError(f"{encoding} does not give back the same bytes")
+    return text, encoding
+
+
+def _print_diff(file: Path, text: str, changed: str) -> None:
+    before = [body for body, _ in _split(text)]
+    after = [body for body, _ in _split(changed)]
+    diff = difflib.unified_diff(before, after, f"a/{file}", f"b/{file}", lineterm="")
+    sys.stdout.writelines(line + "\n" for line in diff)
 
 
 def _catalog(paths: list[Path], msg_paths: list[Path], settings: Config) -> MsgCatalog:
@@ -67,50 +184,182 @@ def _catalog(paths: list[Path], msg_paths: list[Path], settings: Config) -> MsgC
 
 
 def annotate(text: str, path: str, catalog: MsgCatalog) -> str:
-    """The text with every suggestion applied, and `Annotated` imported if needed."""
+    """The text with every suggestion applied, and `Annotated` imported if needed.
+    UnsafeEditError if the result would not be the same program plus the annotations."""
     suggestions = api.unit_suggestions(text, path, catalog)
     if not suggestions:
         return text
-    lines = text.splitlines(keepends=True)
+    lines = _split(text)
+    applied = 0
     for s in sorted(suggestions, key=lambda s: (s.line, s.col), reverse=True):
-        line = lines[s.line - 1]
-        start = len(line.encode("utf-8")[: s.col].decode("utf-8", errors="replace"))
-        end = start + len(s.name)
-        if line[start:end] != s.name:
+        if not 1 <= s.line <= len(lines):
+            continue
+        body, end = lines[s.line - 1]
+        start = _char_col(body, s.col)
+        stop = start + len(s.name)
+        if not _whole_name(body, start, stop, s.name):
             continue
         annotation = f": Annotated[{s.kind}, \"Unit('{s.unit}')\"]"
-        lines[s.line - 1] = line[:end] + annotation + line[end:]
-    result = "".join(lines)
-    if "Annotated" not in _imported_names(text):
-        result = _add_import(result)
+        lines[s.line - 1] = (body[:stop] + annotation + body[stop:], end)
+        applied += 1
+    if not applied:
+        return text
+    tree = _parse(text)
+    if tree is None:
+        return text
+    imported = "Annotated" in _imported_names(tree)
+    if not imported:
+        at = _import_index(text, tree)
+        newline = _newline(text, lines, at)
+        if at > 0 and not lines[at - 1][1]:  # the last line, without a break
+            lines[at - 1] = (lines[at - 1][0], newline)
+        lines.insert(at, (_IMPORT, newline))
+    result = "".join(body + end for body, end in lines)
+    _verify(tree, result, applied, imported)
     return result
 
 
-def _imported_names(text: str) -> set[str]:
+def _split(text: str) -> list[tuple[str, str]]:
+    """(line, its break) at the breaks `ast` counts: not at a form feed or U+2028."""
+    lines = []
+    start = 0
+    for match in _LINE_BREAK.finditer(text):
+        lines.append((text[start : match.start()], match.group()))
+        start = match.end()
+    if start < len(text):
+        lines.append((text[start:], ""))
+    return lines
+
+
+def _char_col(line: str, byte_col: int) -> int:
+    if line.isascii():
+        return byte_col
+    return len(line.encode("utf-8")[:byte_col].decode("utf-8", errors="replace"))
+
+
+def _whole_name(line: str, start: int, stop: int, name: str) -> bool:
+    """`name` is at line[start:stop] as a whole name (not `speed` of `speed_limit`)."""
+    if line[start:stop] != name:
+        return False
+    before = line[start - 1] if start > 0 else ""
+    after = line[stop] if stop < len(line) else ""
+    return not (after and (name + after).isidentifier()) and not (
+        before and (before + name).isidentifier()
+    )
+
+
+def _parse(text: str) -> ast.Module | None:
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # SyntaxWarning in user code is theirs
+            return ast.parse(text)
+    except (SyntaxError, ValueError, RecursionError, MemoryError):
+        return None
+
+
+def _imported_names(tree: ast.Module) -> set[str]:
     names: set[str] = set()
-    for node in ast.parse(text).body:
+    for node in tree.body:
         if isinstance(node, ast.ImportFrom):
             names.update(a.asname or a.name for a in node.names)
     return names
 
 
-def _add_import(text: str) -> str:
-    """`from typing import Annotated` after the docstring and `__future__` imports."""
-    tree = ast.parse(text)
-    after = 0
+def _import_index(text: str, tree: ast.Module) -> int:
+    """The index in `_split(text)` where `from typing import Annotated` goes: after
+    the logical line that ends the docstring and `__future__` imports, or else just
+    before the first statement, so below a shebang, a coding cookie and a licence."""
+    header: list[ast.stmt] = []
     for node in tree.body:
         docstring = (
-            isinstance(node, ast.Expr)
+            not header
+            and node is tree.body[0]
+            and isinstance(node, ast.Expr)
             and isinstance(node.value, ast.Constant)
             and isinstance(node.value.value, str)
-            and after == 0
-            and node is tree.body[0]
         )
         future = isinstance(node, ast.ImportFrom) and node.module == "__future__"
-        if docstring or future:
-            after = node.end_lineno or after
-        else:
+        if not (docstring or future):
             break
-    lines = text.splitlines(keepends=True)
-    lines.insert(after, "from typing import Annotated\n")
-    return "".join(lines)
+        header.append(node)
+    try:
+        tokens = list(tokenize.generate_tokens(io.StringIO(_joined(text)).readline))
+    except (tokenize.TokenError, SyntaxError):
+        tokens = []
+    if header:
+        last = header[-1].end_lineno or header[-1].lineno
+        for tok in tokens:
+            if tok.type == tokenize.NEWLINE and tok.start[0] >= last:
+                return tok.start[0]  # after the logical line (`\` continuations too)
+        return last
+    skipped = {tokenize.COMMENT, tokenize.NL, tokenize.NEWLINE, tokenize.ENCODING}
+    for tok in tokens:
+        if tok.type not in skipped:
+            return tok.start[0] - 1
+    first = tree.body[0] if tree.body else None
+    return first.lineno - 1 if first is not None else 0
+
+
+def _joined(text: str) -> str:
+    """The text with every break `ast` counts made `\\n`, so tokenize's lines are
+    `ast`'s lines."""
+    return "".join(body + ("\n" if end else "") for body, end in _split(text))
+
+
+def _newline(text: str, lines: list[tuple[str, str]], at: int) -> str:
+    """The break of the line the import goes after (or before), else the file's."""
+    for index in (at - 1, at):
+        if 0 <= index < len(lines) and lines[index][1]:
+            return lines[index][1]
+    first = _LINE_BREAK.search(text)
+    return first.group() if first else "\n"
+
+
+def _verify(before: ast.Module, text: str, applied: int, imported: bool) -> None:
+    """The edited text is the same program plus `applied` annotations (and the
+    import): anything else raises UnsafeEditError, and nothing is shown or written.
+    `before` (the original's tree) is normalised in place."""
+    after = _parse(text)
+    if after is None:
+        try:
+            ast.parse(text)
+        except (SyntaxError, ValueError) as err:
+            raise UnsafeEditError(f"the edited file would not parse ({err})") from None
+        except (RecursionError, MemoryError):
+            pass
+        raise UnsafeEditError("the edited file would not parse")
+    if not imported and "Annotated" not in _imported_names(after):
+        raise UnsafeEditError("the import of `Annotated` could not be placed")
+    added = _count_annotated(after) - _count_annotated(before)
+    # the transformer edits in place: `before` is not used after this
+    if added != applied or ast.dump(_Unannotate().visit(after)) != ast.dump(
+        _Unannotate().visit(before)
+    ):
+        raise UnsafeEditError("the edit would change more than the annotations")
+
+
+def _count_annotated(tree: ast.Module) -> int:
+    return sum(isinstance(node, ast.AnnAssign) for node in ast.walk(tree))
+
+
+class _Unannotate(ast.NodeTransformer):
+    """`x: T = v` -> `x = v`, and `from typing import Annotated` dropped: what is
+    left must be the same before and after the edit."""
+
+    def visit_AnnAssign(self, node: ast.AnnAssign) -> ast.AST:
+        if node.value is None or not isinstance(node.target, ast.Name):
+            return node
+        return ast.Assign(targets=[node.target], value=node.value, type_comment=None)
+
+    def visit_ImportFrom(self, node: ast.ImportFrom) -> ast.AST | None:
+        if node.module == "typing" and [a.name for a in node.names] == ["Annotated"]:
+            return None
+        return node
+
+
+def _plural(n: int, word: str) -> str:
+    return f"{n} {word}" if n == 1 else f"{n} {word}s"
+
+
+def _say(message: str) -> None:
+    print(message, file=sys.stderr)
