@@ -302,13 +302,15 @@ def test_bad_files_get_a_line_each_and_the_others_are_written(tmp_path: Path) ->
     os.mkfifo(tmp_path / "named.py")
     result = run("suggest", "tree", "named.py", "--apply", cwd=tmp_path)
     assert result.returncode == 2
-    assert result.stderr.splitlines() == [
+    outside = "outside the checked paths; not written"
+    link = "not checked: a symlink to"
+    assert result.stderr.splitlines() == [  # links leaving the paths are named first
+        f"robotfix: tree/d_zero.py: {link} `/dev/zero`, {outside}",
+        f"robotfix: tree/e_folder.py: {link} `{tmp_path}`, {outside}",
         "robotfix: named.py: cannot read: not a regular file; skipped",
         "robotfix: tree/a_dangling.py: cannot read: No such file or directory; skipped",
         "robotfix: tree/b_readonly.py: read-only; not written",
         "robotfix: tree/c_fifo.py: cannot read: not a regular file; skipped",
-        "robotfix: tree/d_zero.py: cannot read: not a regular file; skipped",
-        "robotfix: tree/e_folder.py: cannot read: not a regular file; skipped",
     ]
     assert (tree / "b_readonly.py").read_text() == BODY
     assert ANNOTATED in (tree / "f_good.py").read_text()

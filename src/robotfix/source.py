@@ -68,7 +68,7 @@ class SourceFile:
 
     @staticmethod
     def from_text(path: str, text: str) -> SourceFile:
-        source = SourceFile(path, text, lines=_LINE_BREAK.split(text))
+        source = SourceFile(path, text, lines=LINE_BREAK.split(text))
         try:
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")  # SyntaxWarning in user code is theirs
@@ -145,12 +145,12 @@ class SourceFile:
         return codes is None or diag.code in codes or diag.rule.name in codes
 
 
-_LINE_BREAK = re.compile(r"\r\n|\r|\n")  # the line breaks ast counts
+LINE_BREAK = re.compile(r"\r\n|\r|\n")  # the line breaks ast counts
 
 
 def split_lines(text: str) -> list[str]:
     """The lines as `ast` numbers them: a form feed or U+2028 is not a line break."""
-    return _LINE_BREAK.split(text)
+    return LINE_BREAK.split(text)
 
 
 def decode(data: bytes) -> str:
@@ -178,7 +178,7 @@ def _syntax_problem(path: str, text: str, err: SyntaxError | ValueError) -> Diag
         )
     line = err.lineno or 1
     col = max((err.offset or 1) - 1, 0)
-    lines = _LINE_BREAK.split(text)
+    lines = LINE_BREAK.split(text)
     failing = lines[line - 1] if 0 < line <= len(lines) else ""
     if sys.version_info < (3, 12) and _PY312_FORMS.match(failing):
         return messages.syntax_error(
@@ -195,7 +195,7 @@ def _is_python2(text: str, err: SyntaxError, retabbed: bool = False) -> bool:
     for a Python 2 reason, once its indentation tabs are expanded is Python 2."""
     if any(hint in err.msg for hint in _PY2_HINTS):
         return True
-    lines = _LINE_BREAK.split(text)
+    lines = LINE_BREAK.split(text)
     line = err.lineno or 1
     if 0 < line <= len(lines) and _PY2_TOKENS.search(lines[line - 1]):
         return True

@@ -26,8 +26,9 @@ from pathlib import Path
 
 from robotfix import api, fs
 from robotfix.config import Config, ConfigError, load
+from robotfix.discovery import discover
 from robotfix.ros.catalog import MsgCatalog
-from robotfix.source import _LINE_BREAK
+from robotfix.source import LINE_BREAK
 
 EXIT_OK, EXIT_FAILURE = 0, 2
 _IMPORT = "from typing import Annotated"
@@ -55,10 +56,14 @@ def run_suggest(paths: list[Path], msg_paths: list[Path], apply: bool) -> int:
     try:
         settings = load(present[0])
         catalog = _catalog(present, msg_paths, settings)
-        files = _unique(api.python_files(present, settings))
+        found = discover(present, settings)
+        files = _unique(found.python_files)
     except (ConfigError, OSError) as err:
         _say(f"robotfix: error: {err}")
         return EXIT_FAILURE
+    for notice in found.notices:  # links leaving the paths, unreadable folders
+        _say(f"robotfix: {notice.path}: {notice.message}; not written")
+        status = EXIT_FAILURE
     changed_files = 0
     for file in files:
         outcome = _suggest_file(file, present, catalog, apply)
@@ -223,7 +228,7 @@ def _split(text: str) -> list[tuple[str, str]]:
     """(line, its break) at the breaks `ast` counts: not at a form feed or U+2028."""
     lines = []
     start = 0
-    for match in _LINE_BREAK.finditer(text):
+    for match in LINE_BREAK.finditer(text):
         lines.append((text[start : match.start()], match.group()))
         start = match.end()
     if start < len(text):
@@ -311,7 +316,7 @@ def _newline(text: str, lines: list[tuple[str, str]], at: int) -> str:
     for index in (at - 1, at):
         if 0 <= index < len(lines) and lines[index][1]:
             return lines[index][1]
-    first = _LINE_BREAK.search(text)
+    first = LINE_BREAK.search(text)
     return first.group() if first else "\n"
 
 
