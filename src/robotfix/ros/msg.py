@@ -11,6 +11,8 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
+from robotfix.annotations.ast import excerpt
+
 MARKER = re.compile(r"#\s*robotfix\s*#", re.IGNORECASE)
 _HEADER_PATH = re.compile(
     r"^\s*([A-Za-z_][\w]*)/([A-Za-z_]\w*)(?:\.(?:msg|srv|action))?\s*$"
@@ -67,7 +69,7 @@ class InterfaceFile:
 
 
 def read_interface(path: Path, text: str) -> InterfaceFile:
-    lines = text.splitlines()
+    lines = text.removeprefix("\ufeff").splitlines()
     package, name, first_body = _name_of(path, lines)
     suffixes = SECTIONS.get(path.suffix, ("",))
     problems: list[Problem] = []
@@ -156,4 +158,4 @@ def _bad_line(code: str) -> str:
     hint = ""
     if any(op in code for op in ("<", ">", "==", " and ", " or ")):
         hint = " (a #RobotFix# annotation must fit on one line)"
-    return f"cannot read `{code}` as a field `type name`{hint}"
+    return f"cannot read `{excerpt(code)}` as a field `type name`{hint}"
