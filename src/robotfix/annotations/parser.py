@@ -180,9 +180,25 @@ _TOO_DEEP = (
 )
 
 
-@lru_cache(maxsize=4096)
 def parse_predicate(text: str) -> A.Expr:
     """Parse one annotation. An empty or blank text means no refinement (`True`)."""
+    result = _parse(text)
+    if isinstance(result, tuple):
+        raise AnnotationSyntaxError(*result)
+    return result
+
+
+@lru_cache(maxsize=4096)
+def _parse(text: str) -> A.Expr | tuple[str, int]:
+    """The expression, or the (message, offset) of the error: errors are cached too,
+    since a bad annotation is met again in every file and run that reads it."""
+    try:
+        return _parse_uncached(text)
+    except AnnotationSyntaxError as err:
+        return err.message, err.offset
+
+
+def _parse_uncached(text: str) -> A.Expr:
     if not text.strip():
         return A.TRUE
     if len(text) > MAX_CHARS:
