@@ -245,7 +245,7 @@ def _unused_suppressions(
 def catalog_problems(catalog: MsgCatalog) -> list[Diagnostic]:
     catalog.load()
     return [
-        messages.annotation_problem(p.path, p.line, p.col, p.rule, p.message)
+        messages.annotation_problem(p.path, p.line, p.col, p.rule, p.message, p.notes)
         for p in catalog.problems
     ]
 

@@ -177,7 +177,7 @@ def _python_files(
                 and not (config is not None and config.excluded(entry.path))
             ):
                 chosen.add(entry.path, entry.real, entry.link)
-    return chosen.paths(), sorted(packages.values())
+    return chosen.paths(ordered=False), sorted(packages.values())
 
 
 def _package_around(path: Path) -> Path | None:
@@ -223,7 +223,7 @@ def _interface_files(
         for entry in entries:
             if _is_interface(entry.path.name) and entry.regular:
                 chosen.add(entry.path, entry.real, entry.link)
-    return chosen.paths()
+    return chosen.paths(ordered=False)
 
 
 class _OnePathEach:
@@ -236,8 +236,11 @@ class _OnePathEach:
         if real not in self._chosen or (self._chosen[real][0] and not link):
             self._chosen[real] = (link, path)
 
-    def paths(self) -> list[Path]:
-        return sorted(path for _, path in self._chosen.values())
+    def paths(self, ordered: bool = True) -> list[Path]:
+        """Sorted; or, with ordered=False, in the order first reached (msg-path
+        order, then path order: which of two definitions of a type wins)."""
+        found = [path for _, path in self._chosen.values()]
+        return sorted(found) if ordered else found
 
 
 def _is_python(name: str) -> bool:

@@ -100,9 +100,66 @@ def syntax_error(path: str, span: Span, detail: str, rule: Rule) -> Diagnostic:
 
 
 def annotation_problem(
-    path: str, line: int, col: int, rule: Rule, detail: str
+    path: str,
+    line: int,
+    col: int,
+    rule: Rule,
+    detail: str,
+    notes: tuple[Note, ...] = (),
 ) -> Diagnostic:
-    return Diagnostic(rule, path, Span.point(line, col), detail)
+    return Diagnostic(rule, path, Span.point(line, col), detail, notes)
+
+
+def duplicate_interface(path: str, type_name: str, first: str) -> Diagnostic:
+    return Diagnostic(
+        rules.DUPLICATE_INTERFACE,
+        path,
+        Span.point(1),
+        f"`{type_name}` is already defined by {first}: this definition is ignored",
+        (
+            Note(f"`{type_name}` first defined here", first, 1),
+            Note(
+                "the first file in msg-path order, then in path order, wins: remove "
+                "or rename the other"
+            ),
+        ),
+    )
+
+
+def conflicting_label(
+    path: str,
+    span: Span,
+    field: str,
+    kind: str,
+    first: tuple[str, int],
+    second: str,
+) -> Diagnostic:
+    """A second, different Unit/Frame/Tag for one message field."""
+    text, line = first
+    return Diagnostic(
+        rules.MISPLACED_UNIT,
+        path,
+        span,
+        f"`{field}` already has the {kind} `{text}` (line {line}), so `{second}` is "
+        f"not used: a field has one {kind}",
+    )
+
+
+def unprocessable_interface(
+    path: str, line: int, col: int, what: str, error: BaseException
+) -> Diagnostic:
+    """A failure of RobotFix itself on one interface file or annotation line."""
+    rule = (
+        rules.ANNOTATION_SYNTAX if what == "annotation" else rules.MALFORMED_INTERFACE
+    )
+    return Diagnostic(
+        rule,
+        path,
+        Span.point(line, col),
+        f"RobotFix could not process this {what} ({type(error).__name__}); it is "
+        "skipped",
+        (Note("this is a RobotFix bug: please report it with the file"),),
+    )
 
 
 def unknown_message_class(path: str, span: Span, qualified: str) -> Diagnostic:

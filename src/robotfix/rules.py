@@ -72,6 +72,13 @@ MISPLACED_UNIT = Rule(
     "RF507", "misplaced-unit", "Unit(), Frame() or Tag() used where it has no meaning"
 )
 
+DUPLICATE_INTERFACE = Rule(
+    "RF510",
+    "duplicate-interface-definition",
+    "Two interface files define the same message type",
+    W,
+)
+
 UNKNOWN_MESSAGE_CLASS = Rule(
     "RF508",
     "unknown-message-class",
@@ -108,6 +115,7 @@ ALL_RULES: dict[str, Rule] = {
         MALFORMED_INTERFACE,
         MISPLACED_UNIT,
         UNKNOWN_MESSAGE_CLASS,
+        DUPLICATE_INTERFACE,
         SOLVER_UNKNOWN,
         ANALYSIS_BUDGET,
     )

@@ -7,6 +7,8 @@ No lark types, no z3 types live here.
 
 from __future__ import annotations
 
+import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
 
@@ -93,16 +95,30 @@ TRUE = Bool(True)
 
 def conjuncts(expr: Expr) -> list[Expr]:
     """The top-level `and` operands of a predicate, left to right."""
-    if isinstance(expr, Binary) and expr.op == "and":
-        return conjuncts(expr.left) + conjuncts(expr.right)
-    return [expr]
+    out: list[Expr] = []
+    todo = [expr]
+    while todo:
+        node = todo.pop()
+        if isinstance(node, Binary) and node.op == "and":
+            todo += (node.right, node.left)
+        else:
+            out.append(node)
+    return out
 
 
 def conjoin(parts: list[Expr]) -> Expr:
-    result: Expr | None = None
-    for part in parts:
-        result = part if result is None else Binary("and", result, part)
-    return TRUE if result is None else result
+    """`a and b and ...`, balanced: 500 conjuncts nest 9 levels deep, not 500."""
+    return join("and", parts) if parts else TRUE
+
+
+def join(op: str, parts: Sequence[Expr]) -> Expr:
+    """`parts` joined by an associative `op` (and, or) as a balanced tree, in order.
+
+    Up to three parts this is the left-leaning chain a parser builds."""
+    if len(parts) == 1:
+        return parts[0]
+    middle = (len(parts) + 1) // 2
+    return Binary(op, join(op, parts[:middle]), join(op, parts[middle:]))
 
 
 def children(expr: Expr) -> tuple[Expr, ...]:
@@ -118,11 +134,25 @@ def children(expr: Expr) -> tuple[Expr, ...]:
 
 
 def walk(expr: Expr) -> list[Expr]:
-    """Every node of `expr`, parents before children."""
-    out = [expr]
-    for child in children(expr):
-        out.extend(walk(child))
+    """Every node of `expr`, parents before children, left to right."""
+    out: list[Expr] = []
+    todo = [expr]
+    while todo:
+        node = todo.pop()
+        out.append(node)
+        todo.extend(reversed(children(node)))
     return out
+
+
+def deeper_than(expr: Expr, limit: int) -> bool:
+    """Whether some path from the root has more than `limit` nodes."""
+    todo = [(expr, 1)]
+    while todo:
+        node, depth = todo.pop()
+        if depth > limit:
+            return True
+        todo.extend((child, depth + 1) for child in children(node))
+    return False
 
 
 def larger_than(expr: Expr, limit: int) -> bool:
@@ -237,6 +267,8 @@ def _operand(expr: Expr, minimum: int) -> str:
 
 def _show_number(num: Num) -> str:
     value = num.value
+    if max(value.numerator.bit_length(), value.denominator.bit_length()) > _EXACT_BITS:
+        return _scientific(value)
     if value.denominator == 1:
         return str(value.numerator) if num.is_int else f"{value.numerator}.0"
     decimal = _exact_decimal(value)
@@ -260,3 +292,30 @@ def _exact_decimal(value: Fraction) -> str | None:
     text = str(scaled).rjust(digits + 1, "0")
     sign = "-" if value < 0 else ""
     return f"{sign}{text[:-digits]}.{text[-digits:]}"
+
+
+_EXACT_BITS = 3000  # about 900 digits: shown exactly below, approximately above
+
+
+def _scientific(value: Fraction) -> str:
+    """`1.5e5000`: a number too long to show (or to convert with `str`) exactly."""
+    if value == 0:
+        return "0"
+    size = abs(value)
+    exponent = math.floor(math.log10(size.numerator) - math.log10(size.denominator))
+    scaled = size / Fraction(10) ** exponent  # within [0.1, 100) whatever the rounding
+    mantissa = float(scaled)
+    while mantissa >= 10:
+        mantissa, exponent = mantissa / 10, exponent + 1
+    while mantissa < 1:
+        mantissa, exponent = mantissa * 10, exponent - 1
+    sign = "-" if value < 0 else ""
+    return f"{sign}{mantissa:.6g}e{exponent}"
+
+
+def excerpt(text: str, limit: int = 40) -> str:
+    """The start of `text` for a message: at most `limit` characters, then `…`.
+
+    Diagnostics quote what they could not read by a short prefix, never whole: the
+    line may be long, or not meant to be shown at all."""
+    return text if len(text) <= limit else text[:limit].rstrip() + "…"

@@ -3,11 +3,19 @@
 Knows the Python AST and the refinement language, nothing of the analysis: how an
 expression names `typing.Annotated` or a message class is asked of the caller.
 Problems (RF5xx) come back with their file position; the caller reports them.
+
+Other libraries put strings in `Annotated` too (`Annotated[int, "const"]`), so a
+string is RobotFix's only when it is blank (no refinement), or parses and compares
+something, uses `Unit`/`Frame`/`Tag`, or names the annotated value (`_` or its own
+name); or, when it does not parse, when it looks like a refinement or code
+(`_looks_like`).
+The first such string of an `Annotated` is its refinement; other strings are ignored.
 """
 
 from __future__ import annotations
 
 import ast
+import re
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -20,6 +28,9 @@ from robotfix.diagnostics import Rule
 ANNOTATED = frozenset({"typing.Annotated", "typing_extensions.Annotated"})
 BASE_TYPES = {"int": "int", "float": "float", "bool": "bool", "str": "str"}
 SELF = "_"
+_HINT = re.compile(  # a comparison, a call, or `_`
+    r"[<>]|[=!]=|\b(?:Unit|Frame|Tag)\s*\(|[A-Za-z_]\w*\(|(?<![\w.])_(?!\w)"
+)
 
 
 @dataclass(frozen=True)
@@ -55,34 +66,68 @@ def extract(
     if not isinstance(node, ast.Subscript) or qualname(node.value) not in ANNOTATED:
         return None, []
     args = node.slice.elts if isinstance(node.slice, ast.Tuple) else [node.slice]
-    text_node = next(
-        (
-            a
-            for a in args[1:]
-            if isinstance(a, ast.Constant) and isinstance(a.value, str)
-        ),
-        None,
-    )
-    if text_node is None or not args:
-        return None, []
-    base, mtype = _base(args[0], msg_type)
-    text = str(text_node.value)
-    start = _text_start(text_node, source_segment, col_of)
-    problems: list[AnnotationProblem] = []
-    try:
-        predicate = parse_predicate(text)
-    except AnnotationSyntaxError as err:
-        line, col = _at(start, err.offset)
-        problems.append(
-            AnnotationProblem(rules.ANNOTATION_SYNTAX, line, col, err.message)
+    for text_node in args[1:]:
+        if not isinstance(text_node, ast.Constant) or not isinstance(
+            text_node.value, str
+        ):
+            continue
+        text = text_node.value
+        start = _text_start(text_node, source_segment, col_of)
+        try:
+            predicate = parse_predicate(text)
+        except AnnotationSyntaxError as err:
+            if not _looks_like(text, self_name):
+                continue
+            line, col = _at(start, err.offset)
+            problem = AnnotationProblem(rules.ANNOTATION_SYNTAX, line, col, err.message)
+            return None, [problem]
+        if text.strip() and not _is_refinement(predicate, self_name):
+            continue
+        base, mtype = _base(args[0], msg_type)
+        return _refinement(
+            predicate, base, mtype, text, node.lineno, self_name, start, known
         )
-        return None, problems
+    return None, []
+
+
+def _looks_like(text: str, self_name: str) -> bool:
+    """Whether text that does not parse was meant as a refinement: it compares,
+    calls a function (`Unit(`, `abs(`), or names `_` or the annotated value."""
+    if _HINT.search(text):
+        return True
+    return re.search(rf"(?<![\w.]){re.escape(self_name)}(?!\w)", text) is not None
+
+
+def _is_refinement(predicate: A.Expr, self_name: str) -> bool:
+    """Whether a parsed string says something RobotFix checks, rather than being a
+    word or phrase another library put there (`"const"`, `"positive and small"`)."""
+    for node in A.walk(predicate):
+        if isinstance(node, (A.UnitIs, A.Bool)):
+            return True
+        if isinstance(node, A.Binary) and node.op in A.COMPARE_OPS:
+            return True
+        if isinstance(node, A.Name) and node.name.split(".")[0] in (SELF, self_name):
+            return True
+    return False
+
+
+def _refinement(
+    predicate: A.Expr,
+    base: str,
+    mtype: str | None,
+    text: str,
+    line: int,
+    self_name: str,
+    start: tuple[int, int, bool],
+    known: Callable[[str], bool],
+) -> tuple[Refinement | None, list[AnnotationProblem]]:
+    problems: list[AnnotationProblem] = []
     unit, value_parts = _split(predicate, self_name, start, problems)
     value_parts = [
         p for p in value_parts if _names_known(p, self_name, known, start, problems)
     ]
     renamed = A.substitute(A.conjoin(value_parts), {self_name: A.Name(SELF)})
-    return Refinement(base, unit, renamed, text, node.lineno, mtype), problems
+    return Refinement(base, unit, renamed, text, line, mtype), problems
 
 
 def _base(

@@ -1,7 +1,15 @@
 """Parse refinement text into `annotations.ast`. The only module that imports lark.
 
-No lark object leaves this module: the parse tree is converted at once, and lark's
-errors become `AnnotationSyntaxError` with a 0-based character offset.
+No lark object leaves this module: the LALR parser calls `_ToAst` as it reduces, so
+no parse tree is built or walked recursively, and lark's errors become
+`AnnotationSyntaxError` with a 0-based character offset.
+
+Bounds, so that no annotation can hang or crash a later stage (`str()` of a huge
+integer, z3, recursive walks): the text is at most MAX_CHARS long, a number has at
+most MAX_DIGITS digits and an exponent within +-MAX_EXPONENT (every literal then fits
+a float), arithmetic on literals stays within MAX_CONSTANT_DIGITS, and the expression
+is at most MAX_DEPTH levels deep. `and`, `or` and
+`in (...)` are built balanced, so hundreds of conjuncts or options stay shallow.
 """
 
 from __future__ import annotations
@@ -11,18 +19,16 @@ from functools import lru_cache
 from typing import Any
 
 from lark import Lark, Token, Transformer, v_args
-from lark.exceptions import (
-    UnexpectedCharacters,
-    UnexpectedEOF,
-    UnexpectedInput,
-    VisitError,
-)
+from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput
 
 from robotfix.annotations import ast as A
 
-_PARSER = Lark.open(
-    "grammar.lark", rel_to=__file__, parser="lalr", propagate_positions=False
-)
+MAX_DIGITS = 100
+MAX_EXPONENT = 200
+MAX_DEPTH = 100
+MAX_CHARS = 100_000  # parsing takes about 1 s per 100,000 characters
+MAX_CONSTANT_DIGITS = 1000  # of a product of literals; Python's str(int) stops at 4300
+_MAX_CONSTANT_BITS = 3322  # 1000 decimal digits
 _LABEL_FUNCS = {"Unit": "unit", "Frame": "frame", "Tag": "tag"}
 _MATH_FUNCS = {"abs": 1, "min": 2, "max": 2}
 
@@ -47,6 +53,16 @@ class _ToAst(Transformer[Token, Any]):
 
     def number(self, tok: Token) -> A.Num:
         text = str(tok)
+        mantissa, _, exponent = text.lower().partition("e")
+        digits = sum(c.isdigit() for c in mantissa)
+        power = exponent.lstrip("+-").lstrip("0")
+        if digits > MAX_DIGITS or len(power) > 3 or int(power or 0) > MAX_EXPONENT:
+            raise AnnotationSyntaxError(
+                f"the number `{A.excerpt(text, 20)}` is out of range: a number in an "
+                f"annotation has at most {MAX_DIGITS} digits and an exponent from "
+                f"-{MAX_EXPONENT} to {MAX_EXPONENT}",
+                tok.start_pos or 0,
+            )
         return A.Num(Fraction(text), not any(c in text for c in ".eE"))
 
     def string(self, tok: Token) -> A.Str:
@@ -70,13 +86,15 @@ class _ToAst(Transformer[Token, Any]):
         return A.Unary("not", _value(operand))
 
     def arith(self, left: A.Expr, op: Token, right: A.Expr) -> A.Expr:
+        if str(op) == "/" and isinstance(right, A.Num) and right.value == 0:
+            raise AnnotationSyntaxError("division by zero", op.start_pos or 0)
         return A.Binary(str(op), _value(left), _value(right))
 
-    def and_(self, left: A.Expr, right: A.Expr) -> A.Expr:
-        return A.Binary("and", _value(left), _value(right))
+    def and_(self, *operands: A.Expr) -> A.Expr:
+        return A.join("and", [_value(o) for o in operands])
 
-    def or_(self, left: A.Expr, right: A.Expr) -> A.Expr:
-        return A.Binary("or", _value(left), _value(right))
+    def or_(self, *operands: A.Expr) -> A.Expr:
+        return A.join("or", [_value(o) for o in operands])
 
     def ite(self, cond: A.Expr, then: A.Expr, orelse: A.Expr) -> A.Expr:
         return A.Ite(_value(cond), _value(then), _value(orelse))
@@ -95,14 +113,8 @@ class _ToAst(Transformer[Token, Any]):
 
     def in_(self, item: A.Expr, *options: A.Expr | None) -> A.Expr:
         subject = _value(item)
-        result: A.Expr | None = None
-        for option in options:
-            if option is None:
-                continue
-            eq = A.Binary("==", subject, _value(option))
-            result = eq if result is None else A.Binary("or", result, eq)
-        assert result is not None  # the grammar requires one option
-        return result
+        equal = [A.Binary("==", subject, _value(o)) for o in options if o is not None]
+        return A.join("or", equal)  # the grammar requires one option
 
     def call(self, name: Token, *args: A.Expr | None) -> Any:
         given = [a for a in args if a is not None]
@@ -155,21 +167,81 @@ def _value(node: Any) -> A.Expr:
     return node  # type: ignore[no-any-return]
 
 
-@lru_cache(maxsize=4096)
+_PARSER = Lark.open(
+    "grammar.lark",
+    rel_to=__file__,
+    parser="lalr",
+    propagate_positions=False,
+    transformer=_ToAst(),
+)
+_TOO_DEEP = (
+    f"the annotation is nested more than {MAX_DEPTH} levels deep: split it into "
+    "simpler parts"
+)
+
+
 def parse_predicate(text: str) -> A.Expr:
     """Parse one annotation. An empty or blank text means no refinement (`True`)."""
+    result = _parse(text)
+    if isinstance(result, tuple):
+        raise AnnotationSyntaxError(*result)
+    return result
+
+
+@lru_cache(maxsize=4096)
+def _parse(text: str) -> A.Expr | tuple[str, int]:
+    """The expression, or the (message, offset) of the error: errors are cached too,
+    since a bad annotation is met again in every file and run that reads it."""
+    try:
+        return _parse_uncached(text)
+    except AnnotationSyntaxError as err:
+        return err.message, err.offset
+
+
+def _parse_uncached(text: str) -> A.Expr:
     if not text.strip():
         return A.TRUE
+    if len(text) > MAX_CHARS:
+        raise AnnotationSyntaxError(
+            f"the annotation is longer than {MAX_CHARS:,} characters", 0
+        )
     try:
-        tree = _PARSER.parse(text)
+        expr = _value(_PARSER.parse(text))
     except UnexpectedInput as err:
         raise AnnotationSyntaxError(_describe(err, text), _offset(err, text)) from None
-    try:
-        return _value(_ToAst().transform(tree))
-    except VisitError as err:
-        if isinstance(err.orig_exc, AnnotationSyntaxError):
-            raise err.orig_exc from None
-        raise
+    except (RecursionError, MemoryError):
+        raise AnnotationSyntaxError(_TOO_DEEP, 0) from None
+    if A.deeper_than(expr, MAX_DEPTH):
+        raise AnnotationSyntaxError(_TOO_DEEP, 0)
+    _constant_bits(expr)
+    return expr
+
+
+def _constant_bits(expr: A.Expr) -> tuple[int, int] | None:
+    """Bounds on the bits of numerator and denominator of a closed arithmetic term
+    (None when it names something); AnnotationSyntaxError when a constant grows past
+    MAX_CONSTANT_DIGITS, as `1e200 * 1e200 * ...` would. Recursive: depth is bounded."""
+    kids = [_constant_bits(child) for child in A.children(expr)]
+    size: tuple[int, int] | None = None
+    if isinstance(expr, A.Num):
+        size = expr.value.numerator.bit_length(), expr.value.denominator.bit_length()
+    elif isinstance(expr, A.Unary) and expr.op == "-":
+        size = kids[0]
+    elif isinstance(expr, A.Binary) and expr.op in A.ARITH_OPS:
+        left, right = kids
+        if left is not None and right is not None:
+            (na, da), (nb, db) = left, right
+            size = {
+                "*": (na + nb, da + db),
+                "/": (na + db, da + nb),
+            }.get(expr.op, (max(na + db, nb + da) + 1, da + db))
+    if size is not None and max(size) > _MAX_CONSTANT_BITS:
+        raise AnnotationSyntaxError(
+            "a constant in the annotation has more than "
+            f"{MAX_CONSTANT_DIGITS:,} digits",
+            0,
+        )
+    return size
 
 
 def _offset(err: UnexpectedInput, text: str) -> int:
@@ -190,4 +262,6 @@ def _describe(err: UnexpectedInput, text: str) -> str:
     token = getattr(err, "token", None)
     if token is not None and token.type == "$END":
         return "the annotation ends too early"
-    return f"unexpected {str(token)!r}" if token is not None else "syntax error"
+    if token is None:
+        return "syntax error"
+    return f"unexpected {A.excerpt(str(token), 20)!r}"

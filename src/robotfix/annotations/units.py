@@ -9,12 +9,20 @@ and `Tag(...)` become opaque base dimensions of their own, compared by name.
 Importing pint and building its registry costs about 0.5 s, more than a whole check of
 a small file, so resolutions are cached on disk, keyed by pint's install, and pint is
 imported only when a unit string is not in that cache.
+
+pint evaluates arithmetic in a unit string (`9**9**9` never returns), so a string is
+checked before pint sees it (`check_text`): at most MAX_UNIT_CHARS characters, no
+control characters, no digits but ASCII ones and single superscripts (`m²`), every
+`**`/`^` exponent a whole number from -MAX_UNIT_EXPONENT to MAX_UNIT_EXPONENT applied
+to a unit (never to a number), and no number but `1` (`1/s`) outside exponents and
+names (`utm-32N` stays a tag).
 """
 
 from __future__ import annotations
 
 import math
 import re
+import unicodedata
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -31,6 +39,16 @@ _SYMBOLS = {
     "candela": "cd",
 }
 _IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_\-]*")
+MAX_UNIT_CHARS = 100
+MAX_UNIT_EXPONENT = 9
+_MAX_DIMENSION = 99  # (m^9)^9 is allowed by the text check; m^81 is still a unit
+_SUPERSCRIPTS = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹⁻", "0123456789-")
+_SUPERSCRIPT_RUN = re.compile("⁻?[⁰¹²³⁴⁵⁶⁷⁸⁹]+")
+_POWER = re.compile(r"\*\*|\^")
+_DIGIT = r"\s*(?:\(\s*[+-]?\s*[0-9]\s*\)|[+-]?\s*[0-9])(?![\w.])"  # 2, -1, (-1)
+_EXPONENT = re.compile(_DIGIT)
+_POWER_OF = re.compile(r"(?:\*\*|\^)" + _DIGIT)
+_NUMBER = re.compile(r"(?<![\w.])[0-9.][\w.]*")
 
 
 @dataclass(frozen=True)
@@ -139,6 +157,7 @@ def resolve(text: str) -> Unit:
     Raises UnitError for a typo of a unit (`meterz`) or text that is not a unit
     expression and not a name.
     """
+    check_text(text)
     entry = _CACHE.entries.get(text)
     if entry is None:
         entry = _resolve_with_pint(text)
@@ -153,6 +172,59 @@ def resolve(text: str) -> Unit:
     raise UnitError(str(entry[1]), entry[2] if len(entry) > 2 else None)
 
 
+def check_text(text: str) -> None:
+    """UnitError unless `text` is safe to give pint (see the module docstring)."""
+    shown = _shown(text)
+    if len(text) > MAX_UNIT_CHARS:
+        raise UnitError(
+            f"the unit `{shown}` is too long: a unit has at most {MAX_UNIT_CHARS} "
+            "characters"
+        )
+    for char in text:
+        if unicodedata.category(char)[0] == "C":
+            raise UnitError(
+                f"the unit `{shown}` contains the control character U+{ord(char):04X}"
+            )
+        if char.isdigit() and not char.isascii() and char not in "⁰¹²³⁴⁵⁶⁷⁸⁹":
+            raise UnitError(
+                f"the unit `{shown}` contains `{char}`, which is not an ASCII digit"
+            )
+    for run in _SUPERSCRIPT_RUN.findall(text):
+        if len(run.lstrip("⁻")) > 1:
+            raise UnitError(
+                f"the unit `{shown}` has an exponent of more than one digit"
+            )
+    plain = _SUPERSCRIPT_RUN.sub(lambda m: "^" + m[0].translate(_SUPERSCRIPTS), text)
+    for power in _POWER.finditer(plain):
+        base = plain[: power.start()].rstrip()
+        if not base or base[-1].isdigit() or base[-1] in ".*/^":
+            raise UnitError(
+                f"the unit `{shown}` raises a number to a power: only units take an "
+                "exponent (`m/s^2`)"
+            )
+        if not _EXPONENT.match(plain, power.end()):
+            raise UnitError(
+                f"the unit `{shown}` has an exponent that is not a whole number from "
+                f"-{MAX_UNIT_EXPONENT} to {MAX_UNIT_EXPONENT} (`m/s^2`, `m**-1`)"
+            )
+    bare = _POWER.sub(" ", _POWER_OF.sub(" ", plain))
+    if not _IDENTIFIER.fullmatch(text) and any(
+        number != "1" for number in _NUMBER.findall(bare)
+    ):
+        raise UnitError(
+            f"the unit `{shown}` has a number in it: write a unit (`km`, not "
+            "`1000*m`); numbers appear only as exponents and in `1/s`"
+        )
+
+
+def _shown(text: str) -> str:
+    """The unit text for a message: short, with control characters escaped."""
+    short = text if len(text) <= 40 else text[:40] + "…"
+    return "".join(
+        f"\\u{ord(c):04x}" if unicodedata.category(c)[0] == "C" else c for c in short
+    )
+
+
 def save_cache() -> None:
     _CACHE.save()
 
@@ -164,14 +236,22 @@ def _resolve_with_pint(text: str) -> list[Any]:
         one = registry.Quantity(1, text).to_root_units()
     except Exception:  # pint raises many kinds for text that is not a unit
         return _not_a_unit(text, registry)
-    dims = sorted((str(name), int(exp)) for name, exp in one.unit_items())
+    exponents = [(str(name), exp) for name, exp in one.unit_items()]
     offset = float(zero.magnitude)
-    return ["unit", dims, float(one.magnitude) - offset, offset]
+    factor = float(one.magnitude) - offset
+    if (
+        any(exp != int(exp) or abs(exp) > _MAX_DIMENSION for _, exp in exponents)
+        or not all(math.isfinite(x) for x in (factor, offset))
+        or factor == 0
+    ):
+        return ["error", f"`{_shown(text)}` is not a unit RobotFix can compare"]
+    dims = sorted((name, int(exp)) for name, exp in exponents)
+    return ["unit", dims, factor, offset]
 
 
 def _not_a_unit(text: str, registry: Any) -> list[Any]:
     if not _IDENTIFIER.fullmatch(text):
-        return ["error", f"`{text}` is not a unit pint understands"]
+        return ["error", f"`{_shown(text)}` is not a unit pint understands"]
     suggestion = _near_unit(text, registry)
     if suggestion is not None:
         return [

@@ -8,24 +8,31 @@ Three sources, later ones adding to earlier ones:
    invariants. A user file that redeclares a standard message adds its refinements to
    it; its own field list wins where it has one.
 
+User files are taken in the order given (msg-paths first, then ROS packages; sorted
+within a folder). When two files define one type, the first wins and the other gets
+RF510, unless both say the same (a copy, as in a colcon install/ tree).
+
 Problems in interface files come back as `CatalogProblem`s (rule, path, line, col),
-never as exceptions.
+never as exceptions: one file or line RobotFix cannot process is reported there and
+skipped, and the run goes on.
 """
 
 from __future__ import annotations
 
 import hashlib
+import os
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from robotfix import rules
+from robotfix import messages, rules
 from robotfix.annotations import ast as A
 from robotfix.annotations.parser import AnnotationSyntaxError, parse_predicate
 from robotfix.annotations.units import UnitError, resolve
-from robotfix.diagnostics import Rule
+from robotfix.diagnostics import Diagnostic, Note, Rule, Span
 from robotfix.disk_cache import JsonCache, install_key
+from robotfix.fs import UnreadableError, read_text
 from robotfix.ros.msg import InterfaceFile, Section, read_interface
 
 if sys.version_info >= (3, 11):
@@ -102,6 +109,7 @@ class CatalogProblem:
     line: int
     col: int
     message: str
+    notes: tuple[Note, ...] = ()
 
 
 def normalize(name: str) -> str:
@@ -118,7 +126,7 @@ class MsgCatalog:
     ) -> None:
         self._std: dict[str, Any] | None = None
         self._specs: dict[str, MsgSpec] = {}
-        self._files = sorted(set(interface_files))
+        self._files = _distinct(interface_files)  # order decides duplicates
         self._rep103 = rep103
         self._distro = distro
         self._loaded = False
@@ -210,21 +218,14 @@ class MsgCatalog:
             return
         self._loaded = True
         files: list[InterfaceFile] = []
+        first: dict[str, tuple[InterfaceFile, tuple[Any, ...]]] = {}
         for path in self._files:
-            try:
-                text = path.read_text(encoding="utf-8")
-            except (OSError, UnicodeDecodeError) as err:
-                self._problem(
-                    rules.MALFORMED_INTERFACE,
-                    str(path),
-                    1,
-                    0,
-                    f"cannot read interface file: {err}",
-                )
+            read = self._read(path)
+            if read is None or self._duplicate(read[0], first):
                 continue
-            parsed = read_interface(path, text)
-            digest = hashlib.sha1(text.encode("utf-8")).hexdigest()
+            parsed, digest = read
             for section in parsed.sections:
+                first[section.name] = (parsed, _shape(section))
                 self._defined_by[section.name] = digest
             files.append(parsed)
         for file in files:  # declare every type before resolving any field
@@ -242,10 +243,55 @@ class MsgCatalog:
             self._add_rep103()
         for file in files:
             for section in file.sections:
-                self._resolve_fields(file, section)
+                try:
+                    self._resolve_fields(file, section)
+                except Exception as err:  # one file never takes the run down
+                    self._report(
+                        messages.unprocessable_interface(file.path, 1, 0, "file", err)
+                    )
         for file in files:
             for section in file.sections:
                 self._add_annotations(file.path, section)
+
+    def _read(self, path: Path) -> tuple[InterfaceFile, str] | None:
+        """The parsed file and a digest of its text; None after reporting why not."""
+        try:
+            text = read_text(path)
+        except UnreadableError as err:
+            self._problem(
+                rules.MALFORMED_INTERFACE,
+                str(path),
+                1,
+                0,
+                f"cannot read interface file: {err.reason}",
+            )
+            return None
+        try:
+            parsed = read_interface(path, text)
+        except Exception as err:  # one file never takes the run down
+            self._report(messages.unprocessable_interface(str(path), 1, 0, "file", err))
+            return None
+        return parsed, hashlib.sha1(text.encode("utf-8")).hexdigest()
+
+    def _duplicate(
+        self,
+        file: InterfaceFile,
+        first: dict[str, tuple[InterfaceFile, tuple[Any, ...]]],
+    ) -> bool:
+        """Whether `file` defines a type an earlier file defines (RF510 unless it
+        says the same); such a file is not used."""
+        clashes = [
+            (section, first[section.name])
+            for section in file.sections
+            if section.name in first
+        ]
+        if not clashes:
+            return False
+        if any(_shape(section) != shape for section, (_, shape) in clashes):
+            section, (earlier, _) = clashes[0]
+            name = _type_name(file, section.name)
+            self._report(messages.duplicate_interface(file.path, name, earlier.path))
+        return True
 
     def _declare(self, section: Section) -> None:
         base = self._specs.get(section.name)
@@ -317,8 +363,23 @@ class MsgCatalog:
                     err.message,
                 )
                 continue
+            except Exception as err:  # one line never takes the run down
+                self._report(
+                    messages.unprocessable_interface(
+                        path, note.line, note.col, "annotation", err
+                    )
+                )
+                continue
             own = field_lines.get(note.line)
-            self._add_predicate(spec, predicate, own, Origin(path, note.line), note)
+            origin = Origin(path, note.line)
+            try:
+                self._add_predicate(spec, predicate, own, origin, note)
+            except Exception as err:  # one line never takes the run down
+                self._report(
+                    messages.unprocessable_interface(
+                        path, note.line, note.col, "annotation", err
+                    )
+                )
 
     def _add_predicate(
         self,
@@ -381,7 +442,21 @@ class MsgCatalog:
                     err.message,
                 )
                 return
-        spec.units[target] = FieldUnit(text, origin)
+        old = spec.units.get(target)
+        if old is None or old.origin is None or _kind(old.text) != part.kind:
+            spec.units[target] = FieldUnit(text, origin)  # REP 103 is overridden
+        elif not _same_label(old.text, text):
+            shown = old.text if part.kind == "unit" else old.text.partition(":")[2]
+            self._report(
+                messages.conflicting_label(
+                    origin.path,
+                    Span.point(origin.line, col + part.pos),
+                    target,
+                    part.kind,
+                    (shown, old.origin.line),
+                    part.text,
+                )
+            )
 
     def _check_path(self, spec: MsgSpec, path: str, origin: Origin, col: int) -> bool:
         found = self.field_at(spec.name, path)
@@ -414,6 +489,18 @@ class MsgCatalog:
     ) -> None:
         self.problems.append(CatalogProblem(rule, path, line, col, message))
 
+    def _report(self, diag: Diagnostic) -> None:
+        self.problems.append(
+            CatalogProblem(
+                diag.rule,
+                diag.path,
+                diag.span.line,
+                diag.span.col,
+                diag.message,
+                diag.notes,
+            )
+        )
+
     # -- standard definitions ------------------------------------------------
     def _standard(self) -> dict[str, Any]:
         if self._std is None:
@@ -429,6 +516,46 @@ class MsgCatalog:
             fields[name] = fs or FieldSpec(name, "unknown", None, array)
         consts = {name: (type_, value) for name, type_, value in entry["consts"]}
         return MsgSpec(key, fields, constants=consts)
+
+
+def _distinct(paths: list[Path]) -> list[Path]:
+    """`paths` in order, each file once however it is spelled (a package found both
+    under a msg-path and as a checked folder)."""
+    seen: set[str] = set()
+    out: list[Path] = []
+    for path in paths:
+        key = os.path.realpath(path)
+        if key not in seen:
+            seen.add(key)
+            out.append(path)
+    return out
+
+
+def _shape(section: Section) -> tuple[Any, ...]:
+    """What a definition says, without its line numbers: equal for copies."""
+    fields = tuple((f.name, f.type, f.array) for f in section.fields)
+    return fields, tuple(note.text for note in section.annotations)
+
+
+def _type_name(file: InterfaceFile, section: str) -> str:
+    """`pkg/Name` of a file from one of its sections (`pkg/Name_Request`)."""
+    for suffix in ("_Request", "_Response", "_Goal", "_Result", "_Feedback"):
+        if file.path.endswith((".srv", ".action")) and section.endswith(suffix):
+            return section.removesuffix(suffix)
+    return section
+
+
+def _same_label(a: str, b: str) -> bool:
+    """Two FieldUnit texts of one kind that mean the same (`m` and `meter`)."""
+    if a == b:
+        return True
+    return _kind(a) == "unit" and resolve(a).same_as(resolve(b))
+
+
+def _kind(text: str) -> str:
+    """unit, frame or tag, for the text of a FieldUnit."""
+    kind, sep, _ = text.partition(":")
+    return kind if sep and kind in ("frame", "tag") else "unit"
 
 
 # ros2 and ros1 are the newest LTS of each generation; the other store wins for

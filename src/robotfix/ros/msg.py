@@ -12,6 +12,7 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
+from robotfix.annotations.ast import excerpt
 from robotfix.ros.package import package_name
 
 MARKER = re.compile(r"#\s*robotfix\s*#", re.IGNORECASE)
@@ -70,7 +71,7 @@ class InterfaceFile:
 
 
 def read_interface(path: Path, text: str) -> InterfaceFile:
-    lines = text.splitlines()
+    lines = text.removeprefix("\ufeff").splitlines()
     package, name, first_body = _name_of(path, lines)
     suffixes = SECTIONS.get(path.suffix, ("",))
     problems: list[Problem] = []
@@ -160,4 +161,4 @@ def _bad_line(code: str) -> str:
     hint = ""
     if any(op in code for op in ("<", ">", "==", " and ", " or ")):
         hint = " (a #RobotFix# annotation must fit on one line)"
-    return f"cannot read `{code}` as a field `type name`{hint}"
+    return f"cannot read `{excerpt(code)}` as a field `type name`{hint}"
