@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import hashlib
 import sys
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -114,11 +115,18 @@ def normalize(name: str) -> str:
 
 class MsgCatalog:
     def __init__(
-        self, interface_files: list[Path], *, rep103: bool = True, distro: str = "ros2"
+        self,
+        interface_files: list[Path],
+        *,
+        rep103: bool = True,
+        distro: str = "ros2",
+        texts: Mapping[Path, str] | None = None,
     ) -> None:
+        """`texts`: the content of files an editor has open, for those files."""
         self._std: dict[str, Any] | None = None
         self._specs: dict[str, MsgSpec] = {}
         self._files = sorted(set(interface_files))
+        self._texts = dict(texts or {})
         self._rep103 = rep103
         self._distro = distro
         self._loaded = False
@@ -212,7 +220,11 @@ class MsgCatalog:
         files: list[InterfaceFile] = []
         for path in self._files:
             try:
-                text = path.read_text(encoding="utf-8")
+                text = (
+                    self._texts[path]
+                    if path in self._texts
+                    else path.read_text(encoding="utf-8")
+                )
             except (OSError, UnicodeDecodeError) as err:
                 self._problem(
                     rules.MALFORMED_INTERFACE,
