@@ -399,3 +399,20 @@ def test_a_saved_module_rechecks_the_open_documents_that_import_it(
     assert steps["typed"] == {"helper.py": []}  # unsaved: importers see the disk
     assert steps["saved"] == {"helper.py": [], "user.py": []}
     assert steps["on_disk"] == {"user.py": []}  # helper.py's buffer is the editor's
+
+
+NODES = sorted((Path(__file__).parent / "cases" / "nodes").glob("*.py"))
+
+
+@settings(max_examples=30, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.sampled_from(NODES), st.data())
+def test_hover_anywhere_in_a_whole_node_answers_text_or_nothing(
+    path: Path, data: Any
+) -> None:
+    text = path.read_text(encoding="utf-8")
+    lines = text.splitlines()
+    line = data.draw(st.integers(1, len(lines)))
+    col = data.draw(st.integers(0, len(lines[line - 1])))
+    catalog = MsgCatalog(api.interface_files([path.parent / "msg"]))
+    found = api.hover(text, str(path), line, col, catalog)
+    assert found is None or (found.startswith(("**", "`")) and found.strip())
