@@ -12,6 +12,7 @@ import keyword
 import sys
 from pathlib import Path
 from typing import Any
+from urllib.parse import unquote
 
 import pytest
 from hypothesis import HealthCheck, given, settings
@@ -252,7 +253,7 @@ class Session:
             types.HoverParams(types.TextDocumentIdentifier(uri), types.Position(0, 0))
         )
         found = {
-            p.uri.rsplit("/", 1)[1]: sorted(str(d.code) for d in p.diagnostics)
+            unquote(p.uri).rsplit("/", 1)[1]: sorted(str(d.code) for d in p.diagnostics)
             for p in self.published
         }
         self.published.clear()
@@ -299,6 +300,7 @@ def make_package(root: Path) -> tuple[Path, Path, Path]:
 
 
 async def interface_session(root: Path) -> dict[str, Any]:
+    root = root / "my ws"  # URIs that need quoting
     reading, node, other = make_package(root)
     session = Session(dynamic_watchers=True)
     await session.start(root)

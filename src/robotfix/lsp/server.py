@@ -80,17 +80,16 @@ def _open_texts(ls: LanguageServer, files: list[Path]) -> dict[Path, str]:
     """The editor's text of those `files` it has open."""
     wanted = set(files)
     return {
-        path: ls.workspace.text_documents[uri].source
+        path: ls.workspace.text_documents[unquote(uri)].source
         for uri, path in _open_documents(ls)
         if path in wanted
     }
 
 
 def _open_documents(ls: LanguageServer) -> list[tuple[str, Path]]:
-    return [
-        (uri, Path(to_fs_path(uri) or uri))
-        for uri in sorted(ls.workspace.text_documents)
-    ]
+    """(URI as the client wrote it, path) of every open document."""
+    uris = sorted(doc.uri for doc in ls.workspace.text_documents.values())
+    return [(uri, Path(to_fs_path(uri) or uri)) for uri in uris]
 
 
 def _is_interface(path: Path) -> bool:
@@ -177,7 +176,7 @@ def _text_of(ls: LanguageServer, path: Path) -> str:
     """The editor's text of a file, else its text on disk, else "" (gone)."""
     for uri, opened in _open_documents(ls):
         if opened == path:
-            text: str = ls.workspace.text_documents[uri].source
+            text: str = ls.workspace.text_documents[unquote(uri)].source
             return text
     try:
         return fs.read_regular(path).decode("utf-8")
