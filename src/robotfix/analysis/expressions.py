@@ -10,11 +10,12 @@ from __future__ import annotations
 import ast
 import math
 import re
+from collections.abc import Callable
 from dataclasses import replace
 from fractions import Fraction
 
 from robotfix import messages
-from robotfix.analysis import heap
+from robotfix.analysis import heap, hover
 from robotfix.analysis.checks import Checker
 from robotfix.analysis.context import TERM_LIMIT, FileContext
 from robotfix.analysis.program import Program
@@ -23,6 +24,7 @@ from robotfix.analysis.values import NONE, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.units import DIMENSIONLESS, Unit
+from robotfix.diagnostics import Span
 
 ARITH = {ast.Add: "+", ast.Sub: "-", ast.Mult: "*", ast.Div: "/"}
 COMPARE = {
@@ -104,25 +106,18 @@ class ExpressionEvaluator:
 
     def eval_Name(self, node: ast.Name, state: State) -> Value:
         value = self.lookup_name(node.id, state, node)
-        if self.ctx.hovers is not None:
-            self.ctx.hovers.append(
-                (self.ctx.source.span(node), self.describe_name(node.id, value))
-            )
+        self.note_hover(node, lambda: self.describe_name(node.id, value, state))
         return value
 
-    def describe_name(self, name: str, value: Value) -> str:
+    def note_hover(self, node: ast.AST | Span, describe: Callable[[], str]) -> None:
+        """Remember what the editor shows over `node` (only when it asks)."""
+        if self.ctx.hovers is not None:
+            span = node if isinstance(node, Span) else self.ctx.source.span(node)
+            self.ctx.hovers.append((span, describe()))
+
+    def describe_name(self, name: str, value: Value, state: State) -> str:
         """Hover text for a variable: its type, unit and refinement."""
-        decl = self.decl_of(name)
-        kind = value.name if value.kind == "msg" else value.kind
-        if decl is not None and decl.base != "other":
-            kind = (decl.msg_type or "message") if decl.base == "msg" else decl.base
-        parts = [f"**{name}**: `{kind}`"]
-        unit = decl.unit if decl is not None and decl.unit is not None else value.unit
-        if unit is not None:
-            parts.append(f"in `{unit}`")
-        if decl is not None and decl.predicate != A.TRUE:
-            parts.append(f"— refinement `{A.show(decl.predicate)}` (line {decl.line})")
-        return " ".join(parts)
+        return hover.variable(self.ctx, state, name, value, self.decl_of(name))
 
     def decl_of(self, name: str) -> Refinement | None:
         return None
@@ -131,13 +126,8 @@ class ExpressionEvaluator:
         base = self.eval(node.value, state)
         if base.kind == "msg" and base.ref in state.heap:
             text = self.ctx.source.segment(node) or node.attr
-            if self.ctx.hovers is not None:
-                self.ctx.hovers.append(
-                    (
-                        self.ctx.source.span(node),
-                        self.describe_field(state, base.ref, node.attr),
-                    )
-                )
+            ref = base.ref
+            self.note_hover(node, lambda: hover.field(self.ctx, state, ref, node.attr))
             return self.check.read_field(state, base.ref, node.attr, self.site, text)
         if base.kind == "module":
             return self._module_attribute(base.name, node)
@@ -151,28 +141,25 @@ class ExpressionEvaluator:
         if base.kind in ("instance", "goal_handle") and isinstance(
             node.value, ast.Name
         ):
-            return self.instance_attribute(base, node.value.id, node, state)
+            var = node.value.id
+            value = self.instance_attribute(base, var, node, state)
+            self.note_hover(
+                node,
+                lambda: self.describe_attribute(base, var, node.attr, value, state),
+            )
+            return value
         return self.unknown(node)
 
-    def describe_field(self, state: State, ref: int, name: str) -> str:
-        """Hover text for a message field: type, unit and refinements."""
-        msg_type = state.heap[ref].type
-        spec = heap.field_spec(self.ctx, state, ref, name)
-        if spec is None:
-            return f"`{name}`: not a field of `{msg_type}`"
-        outer = heap.contexts(self.ctx, state, ref, name)
-        owner, path = (outer[0][0].name, outer[0][1]) if outer else (msg_type, name)
-        kind = spec.msg_type if spec.kind == "msg" else spec.kind
-        parts = [f"**{path}** of `{owner}`: `{kind}{'[]' if spec.array else ''}`"]
-        unit = heap.field_unit(self.ctx, state, ref, name)[0]
-        if unit is not None:
-            parts.append(f"in `{unit}`")
-        rules = [
-            inv.text for _, _, inv in heap.invariants_on(self.ctx, state, ref, name)
-        ]
-        if rules:
-            parts.append("— refinements: " + ", ".join(f"`{r}`" for r in rules))
-        return " ".join(parts)
+    def describe_attribute(
+        self, base: Value, var: str, attr: str, value: Value, state: State
+    ) -> str:
+        """Hover text for `self.x`: its value and the class's refinement of `x`."""
+        decl = (
+            self.program.attributes.get(base.name, {}).get(attr)
+            if base.kind == "instance"
+            else None
+        )
+        return hover.variable(self.ctx, state, f"{var}.{attr}", value, decl)
 
     def _module_attribute(self, module: str, node: ast.Attribute) -> Value:
         qualified = f"{module}.{node.attr}"

@@ -15,7 +15,7 @@ from collections.abc import Callable
 from dataclasses import replace
 
 from robotfix import messages
-from robotfix.analysis import heap
+from robotfix.analysis import heap, hover
 from robotfix.analysis.calls import CallEvaluator
 from robotfix.analysis.context import FileContext, Scope, build_scope
 from robotfix.analysis.index import index_module
@@ -25,6 +25,7 @@ from robotfix.analysis.values import NONE, Uninit, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.astwalk import walk
+from robotfix.diagnostics import Span
 
 BUILTINS = frozenset(dir(builtins)) | {"__file__", "__name__", "__doc__", "__spec__"}
 # Python packages with a `msg`/`srv`/`action` module that is not an interface package.
@@ -195,19 +196,26 @@ class Interpreter(CallEvaluator):
                 value = self.check.assign_refined(
                     state, target.id, decl, value, self.site, lookup
                 )
-            state.env[target.id] = replace(value, uninit=None, default_of=None)
+            bound = state.env[target.id] = replace(value, uninit=None, default_of=None)
+            self.note_hover(target, lambda: self.describe_name(target.id, bound, state))
         elif isinstance(target, ast.Attribute):
             base = self.eval(target.value, state)
             if base.kind == "instance" and isinstance(target.value, ast.Name):
-                self.bind_attribute(base, target.value.id, target.attr, value, state)
+                var = target.value.id
+                self.bind_attribute(base, var, target.attr, value, state)
+                stored = state.env[f"{var}.{target.attr}"]
+                assert isinstance(stored, Value)
+                self.note_hover(
+                    target,
+                    lambda: self.describe_attribute(
+                        base, var, target.attr, stored, state
+                    ),
+                )
             elif base.kind == "msg" and base.ref in state.heap:
-                if self.ctx.hovers is not None:
-                    self.ctx.hovers.append(
-                        (
-                            self.ctx.source.span(target),
-                            self.describe_field(state, base.ref, target.attr),
-                        )
-                    )
+                ref = base.ref
+                self.note_hover(
+                    target, lambda: hover.field(self.ctx, state, ref, target.attr)
+                )
                 text = self.ctx.source.segment(target) or target.attr
                 self.check.write_field(
                     state, base.ref, target.attr, value, self.site, text
@@ -266,6 +274,15 @@ class Interpreter(CallEvaluator):
                     "unknown", f"parameter `{arg.arg}` of {function.name}()"
                 )
             state.env[arg.arg] = value
+            self.note_hover(
+                self._name_span(arg),
+                lambda: self.describe_name(arg.arg, value, state),  # noqa: B023
+            )
+
+    def _name_span(self, arg: ast.arg) -> Span:
+        """Where a parameter's name is written (not its annotation)."""
+        col = self.ctx.source.char_col(arg.lineno, arg.col_offset)
+        return Span(arg.lineno, col, arg.lineno, col + len(arg.arg))
 
     def _arriving(self, params: list[ast.arg]) -> dict[str, Callable[[State], Value]]:
         """What a ROS callback's parameters hold, by the registration that names it."""
@@ -390,6 +407,11 @@ class Interpreter(CallEvaluator):
     def visit_AnnAssign(self, node: ast.AnnAssign, state: State) -> State:
         if node.value is not None:
             self.bind(node.target, self.eval(node.value, state), state)
+        elif isinstance(node.target, ast.Name):  # a declaration: what it will hold
+            name, declared = node.target.id, Value("unknown")
+            self.note_hover(
+                node.target, lambda: self.describe_name(name, declared, state)
+            )
         return state
 
     def visit_AugAssign(self, node: ast.AugAssign, state: State) -> State:

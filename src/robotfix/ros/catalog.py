@@ -22,6 +22,7 @@ from __future__ import annotations
 import hashlib
 import os
 import sys
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -122,11 +123,18 @@ def normalize(name: str) -> str:
 
 class MsgCatalog:
     def __init__(
-        self, interface_files: list[Path], *, rep103: bool = True, distro: str = "ros2"
+        self,
+        interface_files: list[Path],
+        *,
+        rep103: bool = True,
+        distro: str = "ros2",
+        texts: Mapping[Path, str] | None = None,
     ) -> None:
+        """`texts`: the content of files an editor has open, for those files."""
         self._std: dict[str, Any] | None = None
         self._specs: dict[str, MsgSpec] = {}
         self._files = _distinct(interface_files)  # order decides duplicates
+        self._texts = dict(texts or {})
         self._rep103 = rep103
         self._distro = distro
         self._loaded = False
@@ -256,7 +264,7 @@ class MsgCatalog:
     def _read(self, path: Path) -> tuple[InterfaceFile, str] | None:
         """The parsed file and a digest of its text; None after reporting why not."""
         try:
-            text = read_text(path)
+            text = self._texts[path] if path in self._texts else read_text(path)
         except UnreadableError as err:
             self._problem(
                 rules.MALFORMED_INTERFACE,

@@ -1,0 +1,137 @@
+"""Which documents depend on a changed file, for the language server: a Python
+module that imports a changed module, a Python module that uses a type of a changed
+interface file.
+
+A syntactic scan of `import` statements, with the catalog to follow message fields
+into nested types. Over-approximate on purpose (an extra re-check costs time, a
+missing one shows stale diagnostics); whole-package analysis will replace
+`imports_module`.
+"""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+from robotfix.ros.catalog import MsgCatalog, normalize
+from robotfix.ros.msg import read_interface
+from robotfix.source import SourceFile
+
+INTERFACE_MODULES = ("msg", "srv", "action")
+SECTIONS = ("", "_Request", "_Response", "_Goal", "_Result", "_Feedback")
+ROS1_SUFFIXES = ("Request", "Response", "Goal", "Result", "Feedback", "Action")
+MAX_TYPES = 2000  # nested types followed per document
+
+
+def interface_types(path: Path, text: str) -> set[str]:
+    """The types an interface file defines (`pkg/Name`, `pkg/Name_Request`, ...);
+    from its path alone when the file is gone (`text` empty)."""
+    return {section.name for section in read_interface(path, text).sections}
+
+
+def uses_interface(text: str, path: Path, catalog: MsgCatalog, types: set[str]) -> bool:
+    """Whether Python `text` imports one of `types`, a message that contains one,
+    or the whole interface module of their package (`import pkg.msg`)."""
+    tree = SourceFile.from_text(str(path), text).tree
+    if tree is None:
+        return False
+    packages = {t.split("/")[0] for t in types}
+    named: set[str] = set()
+    for package, name in _imported_interfaces(tree):
+        if name == "*":
+            if package in packages:
+                return True
+            continue
+        named.update(f"{package}/{base}{s}" for base in _bases(name) for s in SECTIONS)
+    return not types.isdisjoint(_closure(catalog, named))
+
+
+def imports_module(text: str, path: Path, module: Path) -> bool:
+    """Whether Python `text` (the file at `path`) imports the module file `module`:
+    relative imports from the file's package, absolute ones from its folder or any
+    folder above it (the script folder and the package roots Python may search)."""
+    tree = SourceFile.from_text(str(path), text).tree
+    if tree is None:
+        return False
+    here = path.parent
+    every_root = (here, *here.parents)
+    for node in ast.walk(tree):
+        roots, package = every_root, []
+        if isinstance(node, ast.Import):
+            names = [alias.name for alias in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            base = node.module or ""
+            names = [base] + [f"{base}.{a.name}".lstrip(".") for a in node.names]
+            if node.level:
+                if node.level - 1 > len(here.parents):
+                    continue
+                roots = (here if node.level == 1 else here.parents[node.level - 2],)
+                package = [""]  # the package's own __init__ runs too
+        else:
+            continue
+        for name in names:
+            for root in roots:
+                if any(module in _files(root, p) for p in package + _prefixes(name)):
+                    return True
+    return False
+
+
+def _files(root: Path, dotted: str) -> tuple[Path, ...]:
+    """The files a dotted module name may be under `root` ("" is the folder's own
+    package)."""
+    folder = root.joinpath(*dotted.split(".")) if dotted else root
+    return (folder / "__init__.py",) + ((folder.with_suffix(".py"),) if dotted else ())
+
+
+def _prefixes(dotted: str) -> list[str]:
+    """`a.b.c` imports `a`, `a.b` and `a.b.c`."""
+    parts = dotted.split(".")
+    return [".".join(parts[: i + 1]) for i in range(len(parts)) if parts[i]]
+
+
+def _imported_interfaces(tree: ast.Module) -> list[tuple[str, str]]:
+    """(package, name) for `from pkg.msg import Name` and the seed's bare
+    `from pkg import Name`; (package, "*") for a whole interface module."""
+    found: list[tuple[str, str]] = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            for alias in node.names:
+                parts = alias.name.split(".")
+                if len(parts) >= 2 and parts[1] in INTERFACE_MODULES:
+                    found.append((parts[0], "*"))
+        elif isinstance(node, ast.ImportFrom) and node.module and not node.level:
+            parts = node.module.split(".")
+            interface = len(parts) == 2 and parts[1] in INTERFACE_MODULES
+            if not interface and len(parts) != 1:
+                continue
+            for alias in node.names:
+                whole = alias.name == "*" or (
+                    len(parts) == 1 and alias.name in INTERFACE_MODULES
+                )
+                found.append((parts[0], "*" if whole else alias.name))
+    return found
+
+
+def _bases(name: str) -> set[str]:
+    """`AddTwoInts`, and the ROS 1 and action class names it may stand for
+    (`AddTwoIntsRequest`, `FibonacciAction`)."""
+    found = {name}
+    for suffix in ROS1_SUFFIXES:
+        if name.endswith(suffix) and len(name) > len(suffix):
+            found.add(name[: -len(suffix)].rstrip("_"))
+    return found
+
+
+def _closure(catalog: MsgCatalog, names: set[str]) -> set[str]:
+    """`names` and the message types of their fields, transitively."""
+    seen = {normalize(n) for n in names}
+    todo = sorted(seen)
+    while todo and len(seen) < MAX_TYPES:
+        spec = catalog.lookup(todo.pop())
+        if spec is None:
+            continue
+        for info in spec.fields.values():
+            if info.msg_type and normalize(info.msg_type) not in seen:
+                seen.add(normalize(info.msg_type))
+                todo.append(normalize(info.msg_type))
+    return seen
