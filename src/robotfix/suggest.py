@@ -12,6 +12,7 @@ from pathlib import Path
 
 from robotfix import api
 from robotfix.config import Config, ConfigError, load
+from robotfix.discovery import install_space
 from robotfix.ros.catalog import MsgCatalog
 
 
@@ -62,7 +63,10 @@ def _catalog(paths: list[Path], msg_paths: list[Path], settings: Config) -> MsgC
         list(msg_paths) + list(settings.msg_paths) + api.ros_interface_folders(paths)
     )
     return MsgCatalog(
-        api.interface_files(folders), rep103=settings.rep103, distro=settings.ros_distro
+        api.interface_files(folders),
+        rep103=settings.rep103,
+        distro=settings.ros_distro,
+        installed=install_space(),
     )
 
 

@@ -18,7 +18,7 @@ from lsprotocol import types
 from pygls.lsp.server import LanguageServer
 from pygls.uris import to_fs_path
 
-from robotfix import __version__, api, config, fs, source
+from robotfix import __version__, api, config, discovery, fs, source
 from robotfix.diagnostics import Diagnostic, Severity
 from robotfix.ros.catalog import MsgCatalog
 
@@ -33,6 +33,7 @@ server = LanguageServer(
 )
 # settings -> (the interface files' stat stamps, the catalog built from them)
 _catalogs: dict[tuple[object, ...], tuple[tuple[object, ...], MsgCatalog]] = {}
+_INSTALLED = discovery.install_space()
 
 
 def serve() -> None:
@@ -51,7 +52,12 @@ def _catalog(path: Path) -> MsgCatalog:
     cached = _catalogs.get(key)
     if cached is not None and cached[0] == stamp:
         return cached[1]
-    catalog = MsgCatalog(files, rep103=settings.rep103, distro=settings.ros_distro)
+    catalog = MsgCatalog(
+        files,
+        rep103=settings.rep103,
+        distro=settings.ros_distro,
+        installed=_INSTALLED,  # the install space the editor's environment sourced
+    )
     _catalogs[key] = (stamp, catalog)
     return catalog
 

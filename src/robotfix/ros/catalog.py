@@ -8,6 +8,13 @@ Three sources, later ones adding to earlier ones:
    invariants. A user file that redeclares a standard message adds its refinements to
    it; its own field list wins where it has one.
 
+A type is taken from the first source that defines it: the interface files of the
+checked packages (`preferred`), then the other user files (msg paths), then the
+sourced install space (`InstallSpace`, read when a type is looked up), then the
+bundled standard definitions. A user file shadows the install space's copy of its
+type; problems in installed files are kept apart (`installed_problems`), and an
+installed file with a line that does not parse is not used at all.
+
 Problems in interface files come back as `CatalogProblem`s (rule, path, line, col),
 never as exceptions.
 """
@@ -16,6 +23,7 @@ from __future__ import annotations
 
 import hashlib
 import sys
+from collections.abc import Collection
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -26,6 +34,8 @@ from robotfix.annotations.parser import AnnotationSyntaxError, parse_predicate
 from robotfix.annotations.units import UnitError, resolve
 from robotfix.diagnostics import Rule
 from robotfix.disk_cache import JsonCache, install_key
+from robotfix.fs import UnreadableError, read_text
+from robotfix.ros.install import InstallSpace
 from robotfix.ros.msg import InterfaceFile, Section, read_interface
 
 if sys.version_info >= (3, 11):
@@ -33,6 +43,7 @@ if sys.version_info >= (3, 11):
 else:  # pragma: no cover
     import tomli as tomllib
 
+MAX_INTERFACE_BYTES = 4 * 1024 * 1024  # installed files are a few kB
 INT_TYPES = frozenset(
     [
         "byte",
@@ -114,7 +125,13 @@ def normalize(name: str) -> str:
 
 class MsgCatalog:
     def __init__(
-        self, interface_files: list[Path], *, rep103: bool = True, distro: str = "ros2"
+        self,
+        interface_files: list[Path],
+        *,
+        rep103: bool = True,
+        distro: str = "ros2",
+        installed: InstallSpace | None = None,
+        preferred: Collection[Path] = (),
     ) -> None:
         self._std: dict[str, Any] | None = None
         self._specs: dict[str, MsgSpec] = {}
@@ -127,6 +144,12 @@ class MsgCatalog:
         self._defined_by: dict[
             str, str
         ] = {}  # type -> hash of the file that defines it
+        self._installed = installed
+        self._preferred = {str(path) for path in preferred}  # win over other files
+        self._installed_keys: set[str] = set()  # types read from the install space
+        self._installed_tried: set[str] = set()  # installed files read (or refused)
+        self.installed_problems: list[CatalogProblem] = []  # never reported
+        self._types_of: dict[str, tuple[str, ...]] = {}  # user file -> its types
 
     # -- public --------------------------------------------------------------
     def lookup(self, name: str) -> MsgSpec | None:
@@ -135,14 +158,23 @@ class MsgCatalog:
         if self.touched is not None:
             self.touched.add(key)
         spec = self._specs.get(key)
+        if spec is None:
+            spec = self._from_installed(key)
         if spec is None and key in self._standard():
             spec = self._specs[key] = self._from_standard(key)
         return spec
 
+    def types_in(self, path: str) -> tuple[str, ...]:
+        """The types a user interface file defines (as spelled in `problems`)."""
+        self.load()
+        return self._types_of.get(path, ())
+
     def has_package(self, package: str) -> bool:
         self.load()
         prefix = package + "/"
-        return any(k.startswith(prefix) for k in (*self._specs, *self._standard()))
+        return any(k.startswith(prefix) for k in (*self._specs, *self._standard())) or (
+            self._installed is not None and self._installed.has_package(package)
+        )
 
     def field_at(self, msg_type: str, path: str) -> FieldSpec | None:
         """The field at a dotted path (`linear.x`) inside `msg_type`."""
@@ -163,6 +195,8 @@ class MsgCatalog:
         """What a type's definition depends on: its interface file's content, the
         standard store, or its absence."""
         self.load()
+        if name not in self._specs:
+            self._from_installed(name)
         if name in self._defined_by:
             return self._defined_by[name]
         return "std" if name in self._standard() else "missing"
@@ -227,6 +261,9 @@ class MsgCatalog:
             for section in parsed.sections:
                 self._defined_by[section.name] = digest
             files.append(parsed)
+        files = self._shadow(files)
+        for file in files:
+            self._types_of[file.path] = tuple(s.name for s in file.sections)
         for file in files:  # declare every type before resolving any field
             for problem in file.problems:
                 self._problem(
@@ -249,9 +286,73 @@ class MsgCatalog:
 
     def _declare(self, section: Section) -> None:
         base = self._specs.get(section.name)
+        if section.name in self._installed_keys:  # a user file replaces it
+            self._installed_keys.discard(section.name)
+            base = None
+            if not section.fields:  # refinements only: added to the installed type
+                base = self._specs[section.name]
         if base is None and section.name in self._standard():
             base = self._from_standard(section.name)
+        if base is None and not section.fields:
+            base = self._from_installed(section.name)
+            self._installed_keys.discard(section.name)
         self._specs[section.name] = base or MsgSpec(section.name, {})
+
+    def _shadow(self, files: list[InterfaceFile]) -> list[InterfaceFile]:
+        """The files without those that define a type a preferred file (one of the
+        checked packages) defines too: there, the checked package's file wins."""
+        if not self._preferred:
+            return files
+        preferred = {
+            section.name
+            for file in files
+            if file.path in self._preferred
+            for section in file.sections
+        }
+        return [
+            file
+            for file in files
+            if file.path in self._preferred
+            or not any(section.name in preferred for section in file.sections)
+        ]
+
+    def _from_installed(self, key: str) -> MsgSpec | None:
+        """The type `key` from the install space's file that defines it, read now;
+        None when there is none, or it cannot be read or has a malformed line."""
+        path = None if self._installed is None else self._installed.find(key)
+        if path is None or str(path) in self._installed_tried:
+            return None
+        self._installed_tried.add(str(path))
+        try:
+            text = read_text(path, MAX_INTERFACE_BYTES)
+        except UnreadableError:
+            return None
+        parsed = read_interface(path, text)
+        names = [section.name for section in parsed.sections]
+        if parsed.problems or key not in names:
+            return None
+        digest = hashlib.sha1(text.encode("utf-8")).hexdigest()
+        saved, self.problems = self.problems, []
+        try:
+            for section in parsed.sections:
+                name = section.name
+                if name not in self._specs:  # a user file's type stays the user's
+                    self._defined_by[name] = digest
+                    self._installed_keys.add(name)
+                    standard = name in self._standard()
+                    self._specs[name] = (
+                        self._from_standard(name) if standard else MsgSpec(name, {})
+                    )
+            for section in parsed.sections:
+                if section.name in self._installed_keys:
+                    self._resolve_fields(parsed, section)
+            for section in parsed.sections:
+                if section.name in self._installed_keys:
+                    self._add_annotations(parsed.path, section)
+        finally:
+            self.installed_problems.extend(self.problems)
+            self.problems = saved
+        return self._specs.get(key)
 
     def _resolve_fields(self, file: InterfaceFile, section: Section) -> None:
         if not section.fields:
@@ -300,7 +401,11 @@ class MsgCatalog:
         return matches[0] if matches else None
 
     def _known(self, key: str) -> bool:
-        return key in self._specs or key in self._standard()
+        return (
+            key in self._specs
+            or key in self._standard()
+            or (self._installed is not None and self._installed.find(key) is not None)
+        )
 
     def _add_annotations(self, path: str, section: Section) -> None:
         spec = self._specs[section.name]
