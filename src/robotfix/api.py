@@ -250,6 +250,21 @@ def catalog_problems(catalog: MsgCatalog) -> list[Diagnostic]:
     ]
 
 
+def interface_problems(catalog: MsgCatalog, used: set[str]) -> list[Diagnostic]:
+    """The problems of the user's interface files: with their rule's severity when
+    a checked file used (looked up) a type that file defines, else as notes, so an
+    interface file the checked code never uses cannot fail the run."""
+    catalog.load()
+    return [
+        (
+            messages.annotation_problem
+            if used.intersection(catalog.types_in(p.path))
+            else messages.unused_interface_problem
+        )(p.path, p.line, p.col, p.rule, p.message)
+        for p in catalog.problems
+    ]
+
+
 def finish(diagnostics: list[Diagnostic]) -> list[Diagnostic]:
     """Sorted, without exact duplicates, and one RF508 note per message type per run."""
     unique = {(d.sort_key(), d.notes): d for d in diagnostics}

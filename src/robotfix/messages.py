@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 from robotfix import rules
 from robotfix.annotations.units import Unit
-from robotfix.diagnostics import Diagnostic, Note, Rule, Span
+from robotfix.diagnostics import Diagnostic, Note, Rule, Severity, Span
 
 
 @dataclass(frozen=True)
@@ -105,6 +105,25 @@ def annotation_problem(
     return Diagnostic(rule, path, Span.point(line, col), detail)
 
 
+def unused_interface_problem(
+    path: str, line: int, col: int, rule: Rule, detail: str
+) -> Diagnostic:
+    """A problem of an interface file whose types no checked file uses: a note."""
+    return Diagnostic(
+        rule,
+        path,
+        Span.point(line, col),
+        detail,
+        (
+            Note(
+                "no checked Python file uses a type of this file, so this is a note; "
+                "it is an error when one does"
+            ),
+        ),
+        Severity.NOTE,
+    )
+
+
 def unknown_message_class(path: str, span: Span, qualified: str) -> Diagnostic:
     package = qualified.split(".")[0]
     return Diagnostic(
@@ -114,8 +133,9 @@ def unknown_message_class(path: str, span: Span, qualified: str) -> Diagnostic:
         f"`{qualified}` is not a known message type: its fields are not checked",
         (
             Note(
-                f"pass the folder with {package}'s .msg files with --msg-path, or add "
-                "it to msg-paths in [tool.robotfix]"
+                f"pass the folder with {package}'s .msg files with --msg-path, add "
+                "it to msg-paths in [tool.robotfix], or source the install space "
+                "that has it"
             ),
         ),
     )
