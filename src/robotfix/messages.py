@@ -105,23 +105,38 @@ def annotation_problem(
     return Diagnostic(rule, path, Span.point(line, col), detail)
 
 
-def unused_interface_problem(
-    path: str, line: int, col: int, rule: Rule, detail: str
+def interface_problem(
+    path: str,
+    line: int,
+    col: int,
+    rule: Rule,
+    detail: str,
+    used: bool,
+    absent_package: str | None = None,
 ) -> Diagnostic:
-    """A problem of an interface file whose types no checked file uses: a note."""
-    return Diagnostic(
-        rule,
-        path,
-        Span.point(line, col),
-        detail,
-        (
+    """A problem of one of the user's interface files. When a checked file uses a
+    type of that file: the rule's severity, but a warning when a field names a
+    package of which no type is known (the field is not checked, not wrong). When
+    none does: a note, which never changes the exit status."""
+    notes = []
+    level = None
+    if absent_package is not None:
+        level = Severity.WARNING
+        notes.append(
             Note(
-                "no checked Python file uses a type of this file, so this is a note; "
-                "it is an error when one does"
-            ),
-        ),
-        Severity.NOTE,
-    )
+                f"no interface files of {absent_package} were found: pass them with "
+                "--msg-path, or source an install space that has them"
+            )
+        )
+    if not used:
+        level = Severity.NOTE
+        notes.append(
+            Note(
+                "no checked Python file uses a type of this file, so this does not "
+                "fail the run"
+            )
+        )
+    return Diagnostic(rule, path, Span.point(line, col), detail, tuple(notes), level)
 
 
 def unknown_message_class(path: str, span: Span, qualified: str) -> Diagnostic:

@@ -24,7 +24,7 @@ from __future__ import annotations
 import hashlib
 import sys
 from collections.abc import Collection
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -113,6 +113,7 @@ class CatalogProblem:
     line: int
     col: int
     message: str
+    absent_package: str | None = None  # RF504: a package with no type known at all
 
 
 def normalize(name: str) -> str:
@@ -370,6 +371,11 @@ class MsgCatalog:
                     0,
                     f"unknown message type `{decl.type}` of field `{decl.name}`",
                 )
+                named = normalize(decl.type).split("/")
+                if len(named) == 2 and not self.has_package(named[0]):
+                    self.problems[-1] = replace(
+                        self.problems[-1], absent_package=named[0]
+                    )
                 fs = FieldSpec(decl.name, "unknown", None, decl.array)
             resolved[decl.name] = fs
         spec.fields = resolved
