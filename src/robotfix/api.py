@@ -250,6 +250,26 @@ def catalog_problems(catalog: MsgCatalog) -> list[Diagnostic]:
     ]
 
 
+def interface_problems(catalog: MsgCatalog, used: set[str]) -> list[Diagnostic]:
+    """The problems of the user's interface files: with their rule's severity when
+    a checked file used (looked up) a type that file defines, else as notes, so an
+    interface file the checked code never uses cannot fail the run; a field of a
+    package that is nowhere to be found is a warning (`messages.interface_problem`)."""
+    catalog.load()
+    return [
+        messages.interface_problem(
+            p.path,
+            p.line,
+            p.col,
+            p.rule,
+            p.message,
+            used=bool(used.intersection(catalog.types_in(p.path))),
+            absent_package=p.absent_package,
+        )
+        for p in catalog.problems
+    ]
+
+
 def finish(diagnostics: list[Diagnostic]) -> list[Diagnostic]:
     """Sorted, without exact duplicates, and one RF508 note per message type per run."""
     unique = {(d.sort_key(), d.notes): d for d in diagnostics}

@@ -89,6 +89,15 @@ class ResultCache:
             return None
         return [_load(d) for d in entry["diagnostics"]]
 
+    def types(self, path: Path) -> list[str]:
+        """The message types the cached check of this file looked up."""
+        entry = self._entries.get(entry_key(path))
+        return (
+            list(entry["types"])
+            if isinstance(entry, dict) and _valid_entry(entry)
+            else []
+        )
+
     def put(
         self,
         path: Path,

@@ -61,6 +61,7 @@ class Diagnostic:
     span: Span
     message: str
     notes: tuple[Note, ...] = ()
+    level: Severity | None = None  # when not the rule's own severity
 
     @property
     def code(self) -> str:
@@ -68,7 +69,7 @@ class Diagnostic:
 
     @property
     def severity(self) -> Severity:
-        return self.rule.severity
+        return self.rule.severity if self.level is None else self.level
 
     def sort_key(self) -> tuple[str, Span, str, str]:
         return (self.path, self.span, self.code, self.message)

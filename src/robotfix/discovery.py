@@ -9,23 +9,51 @@ target lies inside a root, once: every real folder is walked once and every real
 file is listed once, whatever the spellings that reach it. A symlink whose target
 leaves every root is not read; an RF004 warning names it and its target. Files keep
 the spelling of the path that reached them (`ws/src/pkg/node.py`).
+
+Below the roots, hidden folders, `__pycache__` and `node_modules` are skipped, and
+so are build and install output (`build/`, `install/`, `log/`, `devel/`, `dist/`,
+`venv/`, ... as ruff skips them) unless the folder is a Python package of that name
+(it holds `__init__.py`), and every folder holding COLCON_IGNORE, AMENT_IGNORE or
+CATKIN_IGNORE. At a colcon or catkin workspace root (a folder with `src/` beside
+`build/`, `install/`, `log/` or `devel/`) those are skipped whatever they hold, so
+a workspace's packages are checked once, from `src/`. Python files are `*.py` and
+files without an extension whose first line is a Python shebang (ROS 1 `scripts/`
+and `nodes/`). The install space the environment has sourced is where interface
+files missing from the run are looked up (`ros/install.py`).
 """
 
 from __future__ import annotations
 
 import os
-from collections.abc import Callable, Iterable, Iterator
+import re
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from robotfix import messages
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
-from robotfix.fs import within
+from robotfix.fs import UnreadableError, read_head, within
+from robotfix.ros.install import IGNORE_MARKERS, InstallSpace
 
 INTERFACE_SUFFIXES = (".msg", ".srv", ".action")
 INTERFACE_FOLDERS = ("msg", "srv", "action")
 SKIPPED_FOLDERS = ("__pycache__", "node_modules")  # and every hidden folder
+WORKSPACE_OUTPUT = ("build", "install", "log", "logs", "devel")  # colcon, catkin
+OUTPUT_FOLDERS = (  # skipped unless they hold __init__.py (ruff's defaults, and ROS's)
+    *WORKSPACE_OUTPUT,
+    "dist",
+    "venv",
+    "_build",
+    "buck-out",
+    "__pypackages__",
+    "site-packages",
+)
+WORKSPACE_MARKERS = (".catkin_workspace", ".catkin_tools")
+SHEBANG_BYTES = 256  # a kernel reads at most this much of a `#!` line
+_SHEBANG = re.compile(
+    rb"#![ \t]*(?:\S*/)?(?:env[ \t]+(?:-\S+[ \t]+)*)?python[0-9.]*(?:[ \t]|\r|\n|$)"
+)
 
 
 @dataclass
@@ -33,19 +61,35 @@ class Discovery:
     python_files: list[Path] = field(default_factory=list)
     interface_files: list[Path] = field(default_factory=list)
     notices: list[Diagnostic] = field(default_factory=list)  # RF004 warnings
+    package_interface_files: list[Path] = field(default_factory=list)  # they win
+    installed: InstallSpace | None = None  # where other types are looked up
 
 
-def discover(paths: list[Path], config: Config) -> Discovery:
+def discover(
+    paths: list[Path], config: Config, environ: Mapping[str, str] | None = None
+) -> Discovery:
     """Everything a run over `paths` reads, and the RF004 notices of what it left
     out. Interface files come from the msg paths and from the msg/, srv/, action/
-    folders of the ROS packages under `paths`, or around a path inside a package."""
+    folders of the ROS packages under `paths`, or around a path inside a package;
+    those of the packages win over the msg paths' (`package_interface_files`), and
+    both over the install space of `environ` (by default the process's)."""
     found = Discovery()
     files, packages = _python_files(paths, config, found.notices)
     found.python_files = files
     roots = [*paths, *config.msg_paths, *packages]
     folders = list(config.msg_paths) + _interface_folders(packages)
     found.interface_files = _interface_files(folders, roots, found.notices)
+    found.package_interface_files = [
+        file for file in found.interface_files if within(file, packages)
+    ]
+    found.installed = install_space(environ)
     return found
+
+
+def install_space(environ: Mapping[str, str] | None = None) -> InstallSpace | None:
+    """The install space sourced in `environ` (by default the process's): where
+    types that no checked package or msg path defines are looked up."""
+    return InstallSpace.from_environment(environ)
 
 
 def python_files(paths: list[Path], config: Config | None = None) -> list[Path]:
@@ -71,6 +115,21 @@ def _hidden(relative: Path) -> bool:
 
 def _skipped(name: str) -> bool:
     return name.startswith(".") or name in SKIPPED_FOLDERS
+
+
+def _output(folder: Path, in_workspace: bool) -> bool:
+    """Build or install output: at a workspace root by name alone, elsewhere unless
+    it is a Python package of that name (`mypkg/log/__init__.py`)."""
+    if in_workspace and folder.name in WORKSPACE_OUTPUT:
+        return True
+    return folder.name in OUTPUT_FOLDERS and not os.path.isfile(folder / "__init__.py")
+
+
+def _workspace_root(names: set[str]) -> bool:
+    """Whether a folder holding `names` is a colcon or catkin workspace root."""
+    return ("src" in names and not names.isdisjoint(WORKSPACE_OUTPUT)) or not (
+        names.isdisjoint(WORKSPACE_MARKERS)
+    )
 
 
 # -- the walk ---------------------------------------------------------------
@@ -106,12 +165,12 @@ class _Walker:
         not folders; `wanted` names the files whose leaving links deserve a notice,
         `pruned` the folders not to enter. Folders reached through a symlink are
         walked last, so a folder also reachable without one keeps that spelling."""
-        stack = [(top, os.path.realpath(top), False) for top in reversed(tops)]
-        linked: list[tuple[Path, str, bool]] = []
+        stack = [(top, os.path.realpath(top), False, True) for top in reversed(tops)]
+        linked: list[tuple[Path, str, bool, bool]] = []
         while stack or linked:
             if not stack:
                 stack, linked = linked[::-1], []
-            folder, real, via_link = stack.pop()
+            folder, real, via_link, top = stack.pop()
             if real in self.walked:
                 continue
             self.walked.add(real)
@@ -123,13 +182,20 @@ class _Walker:
             except OSError as err:
                 self.notices.append(messages.folder_not_read(str(folder), _reason(err)))
                 continue
+            names = {entry.name for entry in entries}
+            if not top and not names.isdisjoint(IGNORE_MARKERS):
+                self.walked.discard(real)  # still walked if named as a root
+                continue  # COLCON_IGNORE, AMENT_IGNORE, CATKIN_IGNORE
+            workspace = _workspace_root(names)
             files: list[_Entry] = []
-            below: list[tuple[Path, str, bool]] = []
+            below: list[tuple[Path, str, bool, bool]] = []
             for entry in entries:
                 path = folder / entry.name
                 link = _test(entry.is_symlink)
                 is_folder = _test(entry.is_dir)  # follows a symlink; False if broken
-                if is_folder and (_skipped(entry.name) or pruned(path)):
+                if is_folder and (
+                    _skipped(entry.name) or _output(path, workspace) or pruned(path)
+                ):
                     continue
                 target = os.path.realpath(path) if link else ""
                 if link and not self.inside(target):
@@ -139,7 +205,7 @@ class _Walker:
                 item_real = target or os.path.join(real, entry.name)
                 if is_folder:
                     (linked if link else below).append(
-                        (path, item_real, via_link or link)
+                        (path, item_real, via_link or link, False)
                     )
                 else:
                     regular = _test(entry.is_file)
@@ -172,8 +238,10 @@ def _python_files(
             if entry.path.name == "package.xml" and entry.regular:
                 packages.setdefault(os.path.realpath(folder), folder)
             elif (
-                _is_python(entry.path.name)
-                and (entry.regular or entry.link)  # a broken link: RF003
+                (
+                    (_is_python(entry.path.name) and (entry.regular or entry.link))
+                    or (entry.regular and _is_script(entry.path))
+                )  # a broken link to a `.py`: RF003
                 and not (config is not None and config.excluded(entry.path))
             ):
                 chosen.add(entry.path, entry.real, entry.link)
@@ -245,6 +313,18 @@ class _OnePathEach:
 
 def _is_python(name: str) -> bool:
     return name.endswith(".py")
+
+
+def _is_script(path: Path) -> bool:
+    """A file without an extension whose first line is a Python shebang
+    (`#!/usr/bin/env python3`, `#!/usr/bin/python2.7`); only that line is read."""
+    if "." in path.name:
+        return False
+    try:
+        head = read_head(path, SHEBANG_BYTES)
+    except UnreadableError:
+        return False
+    return _SHEBANG.match(head) is not None
 
 
 def _is_interface(name: str) -> bool:

@@ -66,6 +66,23 @@ def read_regular(
         os.close(fd)
 
 
+def read_head(path: str | os.PathLike[str], size: int) -> bytes:
+    """The first `size` bytes of a regular file (all of it when shorter), without
+    blocking on a FIFO or a device; UnreadableError otherwise."""
+    try:
+        fd = os.open(path, _FLAGS)
+    except OSError as err:
+        raise UnreadableError(_reason(err)) from None
+    try:
+        if not stat.S_ISREG(os.fstat(fd).st_mode):
+            raise UnreadableError("not a regular file")
+        return os.read(fd, size)
+    except OSError as err:
+        raise UnreadableError(_reason(err)) from None
+    finally:
+        os.close(fd)
+
+
 def read_text(path: str | os.PathLike[str], limit: int = MAX_FILE_BYTES) -> str:
     """A regular file's text as UTF-8 (a BOM dropped); UnreadableError otherwise."""
     try:

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 from robotfix import rules
 from robotfix.annotations.units import Unit
-from robotfix.diagnostics import Diagnostic, Note, Rule, Span
+from robotfix.diagnostics import Diagnostic, Note, Rule, Severity, Span
 
 
 @dataclass(frozen=True)
@@ -162,6 +162,40 @@ def unprocessable_interface(
     )
 
 
+def interface_problem(
+    path: str,
+    line: int,
+    col: int,
+    rule: Rule,
+    detail: str,
+    used: bool,
+    absent_package: str | None = None,
+) -> Diagnostic:
+    """A problem of one of the user's interface files. When a checked file uses a
+    type of that file: the rule's severity, but a warning when a field names a
+    package of which no type is known (the field is not checked, not wrong). When
+    none does: a note, which never changes the exit status."""
+    notes = []
+    level = None
+    if absent_package is not None:
+        level = Severity.WARNING
+        notes.append(
+            Note(
+                f"no interface files of {absent_package} were found: pass them with "
+                "--msg-path, or source an install space that has them"
+            )
+        )
+    if not used:
+        level = Severity.NOTE
+        notes.append(
+            Note(
+                "no checked Python file uses a type of this file, so this does not "
+                "fail the run"
+            )
+        )
+    return Diagnostic(rule, path, Span.point(line, col), detail, tuple(notes), level)
+
+
 def unknown_message_class(path: str, span: Span, qualified: str) -> Diagnostic:
     package = qualified.split(".")[0]
     return Diagnostic(
@@ -171,8 +205,9 @@ def unknown_message_class(path: str, span: Span, qualified: str) -> Diagnostic:
         f"`{qualified}` is not a known message type: its fields are not checked",
         (
             Note(
-                f"pass the folder with {package}'s .msg files with --msg-path, or add "
-                "it to msg-paths in [tool.robotfix]"
+                f"pass the folder with {package}'s .msg files with --msg-path, add "
+                "it to msg-paths in [tool.robotfix], or source the install space "
+                "that has it"
             ),
         ),
     )

@@ -20,9 +20,9 @@ from robotfix.annotations.units import save_cache as save_unit_cache
 from robotfix.api import (
     InternalError,
     Result,
-    catalog_problems,
     check_file,
     finish,
+    interface_problems,
 )
 from robotfix.cache import ResultCache, run_key
 from robotfix.config import Config
@@ -30,6 +30,7 @@ from robotfix.diagnostics import Diagnostic
 from robotfix.discovery import discover
 from robotfix.fs import UnreadableError, read_regular
 from robotfix.ros.catalog import MsgCatalog
+from robotfix.ros.install import InstallSpace
 
 MIN_PARALLEL = 16  # fewer files are checked faster in one process than by a pool
 MAX_CHUNK = 8  # files per task: Ctrl-C waits for at most one chunk per worker
@@ -52,14 +53,18 @@ def check_paths(
     use_cache: bool = False,
 ) -> Result:
     """Check every Python file under `paths`; interface files come from the msg paths
-    and from the msg/srv/action folders of ROS packages under `paths`."""
+    and from the msg/srv/action folders of ROS packages under `paths`, then from
+    the sourced install space. A problem in an interface file fails the run only
+    when a checked file uses a type of that file (`api.interface_problems`)."""
     started = time.perf_counter()
     result = Result()
     found = discover(paths, config)
     result.diagnostics.extend(found.notices)
-    interfaces = found.interface_files
+    interfaces = _Interfaces(
+        found.interface_files, found.package_interface_files, found.installed
+    )
     catalog = _catalog(interfaces, config)
-    result.diagnostics.extend(catalog_problems(catalog))
+    used: set[str] = set()  # the message types the checked files looked up
     files = found.python_files
     result.files = len(files)
     cache = (
@@ -78,6 +83,7 @@ def check_paths(
         cached = cache.get(file, data, config, catalog) if cache else None
         if cached is not None:
             result.diagnostics.extend(cached)
+            used.update(cache.types(file) if cache else ())
             result.from_cache += 1
             if progress is not None:
                 progress(index, len(files), str(file))
@@ -90,6 +96,7 @@ def check_paths(
         if progress is not None:
             progress(done, len(files), outcome.path)
         result.diagnostics.extend(outcome.diagnostics)
+        used.update(outcome.types)
         if outcome.error is not None:
             result.internal_errors.append(outcome.error)
         elif cache is not None:
@@ -101,6 +108,7 @@ def check_paths(
                 outcome.types,
                 outcome.fingerprint,
             )
+    result.diagnostics.extend(interface_problems(catalog, used))
     result.diagnostics = finish(result.diagnostics)
     if cache is not None:
         cache.prune(paths, files)
@@ -111,13 +119,28 @@ def check_paths(
     return result
 
 
-def _catalog(interfaces: list[Path], config: Config) -> MsgCatalog:
-    return MsgCatalog(interfaces, rep103=config.rep103, distro=config.ros_distro)
+@dataclass(frozen=True)
+class _Interfaces:
+    """What a catalog is built from, in the main process and in every worker."""
+
+    files: list[Path]
+    preferred: list[Path]  # the checked packages' files: they win over msg paths'
+    installed: InstallSpace | None
+
+
+def _catalog(interfaces: _Interfaces, config: Config) -> MsgCatalog:
+    return MsgCatalog(
+        interfaces.files,
+        rep103=config.rep103,
+        distro=config.ros_distro,
+        installed=interfaces.installed,
+        preferred=interfaces.preferred,
+    )
 
 
 def _check_all(
     todo: list[tuple[Path, bytes]],
-    interfaces: list[Path],
+    interfaces: _Interfaces,
     config: Config,
     catalog: MsgCatalog,
     jobs: int,
@@ -205,7 +228,7 @@ def _check_one(
 _WORKER: tuple[MsgCatalog, Config] | None = None
 
 
-def _start_worker(interfaces: list[Path], config: Config) -> None:
+def _start_worker(interfaces: _Interfaces, config: Config) -> None:
     """In a worker: the same interface files as the main process; Ctrl-C is the
     main process's to handle (it ends the workers), so no traceback here."""
     global _WORKER

@@ -26,7 +26,7 @@ from pathlib import Path
 
 from robotfix import api, fs
 from robotfix.config import Config, ConfigError, load
-from robotfix.discovery import discover
+from robotfix.discovery import discover, install_space
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.source import LINE_BREAK
 
@@ -184,7 +184,10 @@ def _catalog(paths: list[Path], msg_paths: list[Path], settings: Config) -> MsgC
         list(msg_paths) + list(settings.msg_paths) + api.ros_interface_folders(paths)
     )
     return MsgCatalog(
-        api.interface_files(folders), rep103=settings.rep103, distro=settings.ros_distro
+        api.interface_files(folders),
+        rep103=settings.rep103,
+        distro=settings.ros_distro,
+        installed=install_space(),
     )
 
 

@@ -24,7 +24,7 @@ from lsprotocol import types
 from pygls.lsp.server import LanguageServer
 from pygls.uris import to_fs_path
 
-from robotfix import __version__, api, config, dependents, fs, source
+from robotfix import __version__, api, config, dependents, discovery, fs, source
 from robotfix.diagnostics import Diagnostic, Severity
 from robotfix.ros.catalog import MsgCatalog
 
@@ -41,6 +41,7 @@ server = LanguageServer(
 )
 # interface files and settings -> (their stat stamps and open buffers, the catalog)
 _catalogs: dict[tuple[object, ...], tuple[tuple[object, ...], MsgCatalog]] = {}
+_INSTALLED = discovery.install_space()
 
 
 def serve() -> None:
@@ -68,7 +69,11 @@ def _catalog(ls: LanguageServer, path: Path) -> MsgCatalog:
     if cached is not None and cached[0] == stamp:
         return cached[1]
     catalog = MsgCatalog(
-        files, rep103=settings.rep103, distro=settings.ros_distro, texts=texts
+        files,
+        rep103=settings.rep103,
+        distro=settings.ros_distro,
+        texts=texts,
+        installed=_INSTALLED,  # the install space the editor's environment sourced
     )
     if len(_catalogs) >= MAX_CATALOGS:
         _catalogs.clear()

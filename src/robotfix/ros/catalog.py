@@ -8,8 +8,13 @@ Three sources, later ones adding to earlier ones:
    invariants. A user file that redeclares a standard message adds its refinements to
    it; its own field list wins where it has one.
 
-User files are taken in the order given (msg-paths first, then ROS packages; sorted
-within a folder). When two files define one type, the first wins and the other gets
+A type is taken from the first source that defines it: the interface files of the
+checked packages (`preferred`), then the other user files (msg paths), then the
+sourced install space (`InstallSpace`, read when a type is looked up), then the
+bundled standard definitions. A user file shadows the install space's copy of its
+type; problems in installed files are kept apart (`installed_problems`), and an
+installed file with a line that does not parse is not used at all.
+When two user files define one type, the first in that order wins and the other gets
 RF510, unless both say the same (a copy, as in a colcon install/ tree).
 
 Problems in interface files come back as `CatalogProblem`s (rule, path, line, col),
@@ -22,8 +27,8 @@ from __future__ import annotations
 import hashlib
 import os
 import sys
-from collections.abc import Mapping
-from dataclasses import dataclass, field
+from collections.abc import Collection, Mapping
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
@@ -34,6 +39,7 @@ from robotfix.annotations.units import UnitError, resolve
 from robotfix.diagnostics import Diagnostic, Note, Rule, Span
 from robotfix.disk_cache import JsonCache, install_key
 from robotfix.fs import UnreadableError, read_text
+from robotfix.ros.install import InstallSpace
 from robotfix.ros.msg import InterfaceFile, Section, read_interface
 
 if sys.version_info >= (3, 11):
@@ -41,6 +47,7 @@ if sys.version_info >= (3, 11):
 else:  # pragma: no cover
     import tomli as tomllib
 
+MAX_INTERFACE_BYTES = 4 * 1024 * 1024  # installed files are a few kB
 INT_TYPES = frozenset(
     [
         "byte",
@@ -111,6 +118,7 @@ class CatalogProblem:
     col: int
     message: str
     notes: tuple[Note, ...] = ()
+    absent_package: str | None = None  # RF504: a package with no type known at all
 
 
 def normalize(name: str) -> str:
@@ -129,11 +137,19 @@ class MsgCatalog:
         rep103: bool = True,
         distro: str = "ros2",
         texts: Mapping[Path, str] | None = None,
+        installed: InstallSpace | None = None,
+        preferred: Collection[Path] = (),
     ) -> None:
         """`texts`: the content of files an editor has open, for those files."""
         self._std: dict[str, Any] | None = None
         self._specs: dict[str, MsgSpec] = {}
-        self._files = _distinct(interface_files)  # order decides duplicates
+        # order decides duplicates: the checked packages' files first, then the rest
+        # in the order given (msg paths, then path order)
+        chosen = {str(path) for path in preferred}
+        self._files = _distinct(
+            [p for p in interface_files if str(p) in chosen]
+            + [p for p in interface_files if str(p) not in chosen]
+        )
         self._texts = dict(texts or {})
         self._rep103 = rep103
         self._distro = distro
@@ -143,6 +159,11 @@ class MsgCatalog:
         self._defined_by: dict[
             str, str
         ] = {}  # type -> hash of the file that defines it
+        self._installed = installed
+        self._installed_keys: set[str] = set()  # types read from the install space
+        self._installed_tried: set[str] = set()  # installed files read (or refused)
+        self.installed_problems: list[CatalogProblem] = []  # never reported
+        self._types_of: dict[str, tuple[str, ...]] = {}  # user file -> its types
 
     # -- public --------------------------------------------------------------
     def lookup(self, name: str) -> MsgSpec | None:
@@ -151,14 +172,23 @@ class MsgCatalog:
         if self.touched is not None:
             self.touched.add(key)
         spec = self._specs.get(key)
+        if spec is None:
+            spec = self._from_installed(key)
         if spec is None and key in self._standard():
             spec = self._specs[key] = self._from_standard(key)
         return spec
 
+    def types_in(self, path: str) -> tuple[str, ...]:
+        """The types a user interface file defines (as spelled in `problems`)."""
+        self.load()
+        return self._types_of.get(path, ())
+
     def has_package(self, package: str) -> bool:
         self.load()
         prefix = package + "/"
-        return any(k.startswith(prefix) for k in (*self._specs, *self._standard()))
+        return any(k.startswith(prefix) for k in (*self._specs, *self._standard())) or (
+            self._installed is not None and self._installed.has_package(package)
+        )
 
     def field_at(self, msg_type: str, path: str) -> FieldSpec | None:
         """The field at a dotted path (`linear.x`) inside `msg_type`."""
@@ -179,6 +209,8 @@ class MsgCatalog:
         """What a type's definition depends on: its interface file's content, the
         standard store, or its absence."""
         self.load()
+        if name not in self._specs:
+            self._from_installed(name)
         if name in self._defined_by:
             return self._defined_by[name]
         return "std" if name in self._standard() else "missing"
@@ -236,6 +268,8 @@ class MsgCatalog:
                 first[section.name] = (parsed, _shape(section))
                 self._defined_by[section.name] = digest
             files.append(parsed)
+        for file in files:
+            self._types_of[file.path] = tuple(s.name for s in file.sections)
         for file in files:  # declare every type before resolving any field
             for problem in file.problems:
                 self._problem(
@@ -303,9 +337,55 @@ class MsgCatalog:
 
     def _declare(self, section: Section) -> None:
         base = self._specs.get(section.name)
+        if section.name in self._installed_keys:  # a user file replaces it
+            self._installed_keys.discard(section.name)
+            base = None
+            if not section.fields:  # refinements only: added to the installed type
+                base = self._specs[section.name]
         if base is None and section.name in self._standard():
             base = self._from_standard(section.name)
+        if base is None and not section.fields:
+            base = self._from_installed(section.name)
+            self._installed_keys.discard(section.name)
         self._specs[section.name] = base or MsgSpec(section.name, {})
+
+    def _from_installed(self, key: str) -> MsgSpec | None:
+        """The type `key` from the install space's file that defines it, read now;
+        None when there is none, or it cannot be read or has a malformed line."""
+        path = None if self._installed is None else self._installed.find(key)
+        if path is None or str(path) in self._installed_tried:
+            return None
+        self._installed_tried.add(str(path))
+        try:
+            text = read_text(path, MAX_INTERFACE_BYTES)
+        except UnreadableError:
+            return None
+        parsed = read_interface(path, text)
+        names = [section.name for section in parsed.sections]
+        if parsed.problems or key not in names:
+            return None
+        digest = hashlib.sha1(text.encode("utf-8")).hexdigest()
+        saved, self.problems = self.problems, []
+        try:
+            for section in parsed.sections:
+                name = section.name
+                if name not in self._specs:  # a user file's type stays the user's
+                    self._defined_by[name] = digest
+                    self._installed_keys.add(name)
+                    standard = name in self._standard()
+                    self._specs[name] = (
+                        self._from_standard(name) if standard else MsgSpec(name, {})
+                    )
+            for section in parsed.sections:
+                if section.name in self._installed_keys:
+                    self._resolve_fields(parsed, section)
+            for section in parsed.sections:
+                if section.name in self._installed_keys:
+                    self._add_annotations(parsed.path, section)
+        finally:
+            self.installed_problems.extend(self.problems)
+            self.problems = saved
+        return self._specs.get(key)
 
     def _resolve_fields(self, file: InterfaceFile, section: Section) -> None:
         if not section.fields:
@@ -323,6 +403,11 @@ class MsgCatalog:
                     0,
                     f"unknown message type `{decl.type}` of field `{decl.name}`",
                 )
+                named = normalize(decl.type).split("/")
+                if len(named) == 2 and not self.has_package(named[0]):
+                    self.problems[-1] = replace(
+                        self.problems[-1], absent_package=named[0]
+                    )
                 fs = FieldSpec(decl.name, "unknown", None, decl.array)
             resolved[decl.name] = fs
         spec.fields = resolved
@@ -354,7 +439,11 @@ class MsgCatalog:
         return matches[0] if matches else None
 
     def _known(self, key: str) -> bool:
-        return key in self._specs or key in self._standard()
+        return (
+            key in self._specs
+            or key in self._standard()
+            or (self._installed is not None and self._installed.find(key) is not None)
+        )
 
     def _add_annotations(self, path: str, section: Section) -> None:
         spec = self._specs[section.name]
