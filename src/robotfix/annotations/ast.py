@@ -10,6 +10,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from fractions import Fraction
 
+from robotfix.annotations.numbers import INFINITY
+
 
 @dataclass(frozen=True)
 class Num:
@@ -237,6 +239,8 @@ def _operand(expr: Expr, minimum: int) -> str:
 
 def _show_number(num: Num) -> str:
     value = num.value
+    if abs(value) == INFINITY:
+        return "inf" if value > 0 else "-inf"
     if value.denominator == 1:
         return str(value.numerator) if num.is_int else f"{value.numerator}.0"
     decimal = _exact_decimal(value)

@@ -1,0 +1,29 @@
+"""Named numbers that code and annotations may use: `math.pi`, `math.tau`, `math.e`,
+`math.inf` and numpy's, as exact fractions.
+
+`pi` is the double Python computes with (3.141592653589793...), not the real number:
+that is the value a program compares against, and what `math.atan2` stays within.
+Infinity is a number above every double (10**400): the solver's reals have none, and
+every finite float is below it.
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+INFINITY = Fraction(10) ** 400
+NUMBERS = {
+    "pi": Fraction(math.pi),
+    "tau": Fraction(math.tau),
+    "e": Fraction(math.e),
+    "inf": INFINITY,
+}
+# Modules whose attributes of those names are those numbers (`np.pi`, `numpy.inf`).
+MODULES = frozenset({"math", "numpy"})
+
+
+def named_number(qualified: str) -> Fraction | None:
+    """`math.pi` -> its value; None for any other name."""
+    module, _, name = qualified.rpartition(".")
+    return NUMBERS.get(name) if module in MODULES else None
