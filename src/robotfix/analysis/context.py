@@ -11,6 +11,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from robotfix import messages
+from robotfix.analysis.constants import ConstantNames
 from robotfix.analysis.index import FileIndex, index_scope
 from robotfix.analysis.values import Value, sort_of
 from robotfix.analysis.vc import VC, Verdict
@@ -73,6 +74,7 @@ class FileContext:
         self.imports: dict[str, str] = {}  # local name -> qualified name
         self.star_import = False
         self.ros1 = False  # ROS 1 code: standard messages have no default values
+        self.constants = ConstantNames()  # which names are constants, and their values
         self._reported: set[tuple[object, ...]] = set()
         # (span, markdown) for names and fields, kept only for editor hovers
         self.hovers: list[tuple[Span, str]] | None = None

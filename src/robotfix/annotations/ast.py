@@ -107,6 +107,13 @@ def conjoin(parts: list[Expr]) -> Expr:
     return TRUE if result is None else result
 
 
+def disjoin(parts: list[Expr]) -> Expr:
+    result: Expr | None = None
+    for part in parts:
+        result = part if result is None else Binary("or", result, part)
+    return Bool(False) if result is None else result
+
+
 def children(expr: Expr) -> tuple[Expr, ...]:
     if isinstance(expr, Unary):
         return (expr.operand,)

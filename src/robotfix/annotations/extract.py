@@ -18,6 +18,12 @@ from robotfix.annotations.units import Unit, UnitError, label, resolve
 from robotfix.diagnostics import Rule
 
 ANNOTATED = frozenset({"typing.Annotated", "typing_extensions.Annotated"})
+# Qualifiers around (or inside) `Annotated`: `Final[Annotated[float, "..."]]`.
+QUALIFIERS = frozenset(
+    f"{module}.{name}"
+    for module in ("typing", "typing_extensions")
+    for name in ("Final", "ClassVar")
+)
 BASE_TYPES = {"int": "int", "float": "float", "bool": "bool", "str": "str"}
 SELF = "_"
 
@@ -51,7 +57,9 @@ def extract(
     col_of: Callable[[int, int], int],
     known: Callable[[str], bool] = lambda name: True,
 ) -> tuple[Refinement | None, list[AnnotationProblem]]:
-    """The refinement in `node`, if it is `Annotated[base, "predicate", ...]`."""
+    """The refinement in `node`, if it is `Annotated[base, "predicate", ...]`
+    (possibly inside `Final[...]` or `ClassVar[...]`)."""
+    node = _unqualified(node, qualname)
     if not isinstance(node, ast.Subscript) or qualname(node.value) not in ANNOTATED:
         return None, []
     args = node.slice.elts if isinstance(node.slice, ast.Tuple) else [node.slice]
@@ -65,7 +73,7 @@ def extract(
     )
     if text_node is None or not args:
         return None, []
-    base, mtype = _base(args[0], msg_type)
+    base, mtype = _base(_unqualified(args[0], qualname), msg_type)
     text = str(text_node.value)
     start = _text_start(text_node, source_segment, col_of)
     problems: list[AnnotationProblem] = []
@@ -83,6 +91,14 @@ def extract(
     ]
     renamed = A.substitute(A.conjoin(value_parts), {self_name: A.Name(SELF)})
     return Refinement(base, unit, renamed, text, node.lineno, mtype), problems
+
+
+def _unqualified(
+    node: ast.expr, qualname: Callable[[ast.expr], str | None]
+) -> ast.expr:
+    while isinstance(node, ast.Subscript) and qualname(node.value) in QUALIFIERS:
+        node = node.slice
+    return node
 
 
 def _base(
