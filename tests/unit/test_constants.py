@@ -2,12 +2,20 @@
 
 from __future__ import annotations
 
+import ast
+import textwrap
 from fractions import Fraction
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from robotfix import rules
+from robotfix.analysis.constants import ConstantNames, scan
+from robotfix.analysis.index import index_module
+from robotfix.api import check_source
+from robotfix.config import Config
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.ros.msg import literal_of, read_interface
 
@@ -108,3 +116,222 @@ def test_standard_constants_and_ros2_defaults() -> None:
     # ROS 1 has no default values
     noetic = MsgCatalog([], distro="noetic").lookup("geometry_msgs/Quaternion")
     assert noetic.fields["w"].default is None
+
+
+# -- constants in code ------------------------------------------------------------
+
+
+def check(source: str) -> list[tuple[int, str]]:
+    found = check_source(textwrap.dedent(source), "node.py", Config())
+    return [(d.span.line, d.code) for d in found]
+
+
+def names(source: str) -> ConstantNames:
+    tree = ast.parse(textwrap.dedent(source))
+    index = index_module(tree)
+    return scan(tree, index, lambda node: index.imports.get(getattr(node, "id", "")))
+
+
+def test_scan_keeps_names_bound_once_and_never_changed() -> None:
+    found = names(
+        """
+        from typing import Final
+        A = 1
+        B = 1
+        B = 2
+        C = 0
+        D = {"k": 1}
+        E = {"k": 1}
+        F = [1, 2]
+        G = {"k": 1}
+        alias = G
+        for i in range(3):
+            H = i
+
+        def bump():
+            global C
+            C += 1
+
+        def change():
+            E["k"] = 2
+            F.append(3)
+
+        def read(key):
+            return D[key] + D.get(key, 0) + len(D) + (key in D)
+
+        class Base:
+            MAX = 1.0
+            SHARED = 2.0
+            STORED = 3.0
+            LIMIT: Final = 4.0
+
+            def __init__(self):
+                self.STORED = 0.0
+
+        class Sub(Base):
+            SHARED = 5.0
+            LIMIT: Final = 6.0
+        """
+    )
+    assert {"A", "D", "H"} <= found.module
+    assert not {"B", "C"} & found.module
+    assert found.changed_globals == {"C"}
+    assert found.read_only == {"D"}
+    # SHARED is overridden, STORED is set on instances; Final forbids overriding
+    assert found.classes["Base"] - {"__init__"} == {"MAX", "LIMIT"}
+    assert found.classes["Sub"] == {"LIMIT"}
+
+
+def test_setattr_with_a_computed_name_keeps_no_class_constant() -> None:
+    found = names(
+        """
+        class Node:
+            MAX = 1.0
+            def load(self, name, value):
+                setattr(self, name, value)
+        """
+    )
+    assert found.classes == {}
+
+
+@pytest.mark.parametrize(
+    "limit",
+    [
+        "LIMIT",  # a constant
+        "PARAM",  # a module name read from the parameter server
+        "self.limit",  # an attribute
+        "Node.MAX",  # a class constant
+        "limit",  # a parameter
+    ],
+)
+def test_min_of_a_limit_is_below_the_limit(limit: str) -> None:
+    source = f"""
+        from typing import Annotated
+        import rospy
+        LIMIT = 0.5
+        PARAM = rospy.get_param("~limit", 0.5)
+
+        class Node:
+            MAX = 2.0
+            def __init__(self, limit: float):
+                self.limit = limit
+
+            def go(self, x: float, limit: float):
+                v: Annotated[float, "_ <= {limit}"] = min({limit}, x)
+                w: Annotated[float, "_ <= {limit}"] = max(x, {limit})  # RF102
+        """
+    assert check(source) == [(14, "RF102")]
+
+
+def test_a_local_shadows_a_constant_in_refinements() -> None:
+    source = """
+        from typing import Annotated
+        LIMIT = 1.0
+
+        def f():
+            LIMIT = 5.0
+            v: Annotated[float, "_ <= LIMIT"] = 4.0
+
+        def g():
+            v: Annotated[float, "_ <= LIMIT"] = 4.0
+        """
+    assert check(source) == [(10, "RF101")]
+
+
+def test_infinity_is_above_every_float_and_shown_as_inf() -> None:
+    source = """
+        import math
+        from typing import Annotated
+
+        def f(x: Annotated[float, "abs(_) <= 1e300"]):
+            finite: Annotated[float, "_ < math.inf"] = x
+            low: Annotated[float, "_ > -math.inf"] = float("-inf")
+            big: Annotated[float, "_ <= 1e308"] = math.inf
+        """
+    found = check_source(textwrap.dedent(source), "node.py", Config())
+    assert [(d.span.line, d.code) for d in found] == [(7, "RF101"), (8, "RF101")]
+    assert any(n.message == "here `low` = -inf" for n in found[0].notes)
+
+
+ENTRY = st.fractions(min_value=-5, max_value=5, max_denominator=4)
+
+
+@settings(max_examples=25, deadline=None)
+@given(
+    table=st.dictionaries(
+        st.sampled_from("ijklm,."), st.tuples(ENTRY, ENTRY), min_size=1, max_size=5
+    ),
+    bounds=st.tuples(ENTRY, ENTRY).map(sorted),
+    column=st.integers(0, 1),
+)
+def test_a_lookup_with_an_unknown_key_is_one_of_the_entries(
+    table: dict[str, tuple[Fraction, Fraction]],
+    bounds: list[Fraction],
+    column: int,
+) -> None:
+    low, high = bounds
+    shown = ", ".join(f"{k!r}: ({_dec(a)}, {_dec(b)})" for k, (a, b) in table.items())
+    key = next(iter(table))
+    refined = f'Annotated[float, "{_dec(low)} <= _ <= {_dec(high)}"]'
+    source = f"""
+        from typing import Annotated
+        BINDINGS = {{{shown}}}
+
+        def on_key(key: str):
+            v: {refined} = BINDINGS[key][{column}]
+
+        def on_known_key():
+            w: {refined} = BINDINGS[{key!r}][{column}]
+        """
+    entries = [entry[column] for entry in table.values()]
+    expected = [(6, code) for code in _verdict(entries, low, high)]
+    expected += [(9, code) for code in _verdict([table[key][column]], low, high)]
+    assert check(source) == expected
+
+
+def _verdict(values: list[Fraction], low: Fraction, high: Fraction) -> list[str]:
+    """What checking `low <= _ <= high` part by part reports for a value that may
+    be any of `values`: an error for a part none keeps, a warning for one some keep."""
+    for keeps in (lambda v: low <= v, lambda v: v <= high):
+        kept = [keeps(v) for v in values]
+        if not any(kept):
+            return ["RF101"]
+        if not all(kept):
+            return ["RF102"]
+    return []
+
+
+def _dec(value: Fraction) -> str:
+    """An exact decimal literal (denominators are powers of 2 here)."""
+    return str(value.numerator) if value.denominator == 1 else repr(float(value))
+
+
+DECIMAL = st.decimals(min_value=-100, max_value=100, places=2, allow_nan=False)
+
+
+@settings(max_examples=25, deadline=None)
+@given(
+    first=DECIMAL,
+    steps=st.lists(st.tuples(st.sampled_from("+-*"), DECIMAL), min_size=1, max_size=4),
+)
+def test_module_arithmetic_of_constants_is_exact_in_functions(
+    first: object, steps: list[tuple[str, object]]
+) -> None:
+    lines = [f"C0 = {first}"]
+    value = Fraction(str(first))
+    for index, (op, operand) in enumerate(steps, start=1):
+        lines.append(f"C{index} = C{index - 1} {op} {operand}")
+        right = Fraction(str(operand))
+        value = {"+": value + right, "-": value - right, "*": value * right}[op]
+    last = f"C{len(steps)}"
+    exact = f"{value.numerator} / {value.denominator}"
+    source = "\n".join(
+        [
+            "from typing import Annotated",
+            *lines,
+            "def f():",
+            f'    same: Annotated[float, "_ == {exact}"] = {last}',
+            f'    other: Annotated[float, "_ != {exact}"] = {last}',
+        ]
+    )
+    assert check(source) == [(len(lines) + 4, "RF101")]

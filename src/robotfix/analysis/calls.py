@@ -171,8 +171,9 @@ class CallEvaluator(ExpressionEvaluator):
     def _callee_names(
         self, decl: object, function: Function, state: State
     ) -> dict[str, A.Expr]:
-        """Terms for the names a callee's refinement mentions: constants, else fresh
-        unknowns (the callee's own parameters are filled in by the caller)."""
+        """Terms for the names a callee's refinement mentions: constants and module
+        names (which hold one value during the call), else fresh unknowns (the
+        callee's own parameters are filled in by the caller)."""
         predicate = getattr(decl, "predicate", A.TRUE)
         own = function.scope.local_names if function.scope is not None else set()
         found: dict[str, A.Expr] = {}
@@ -180,15 +181,15 @@ class CallEvaluator(ExpressionEvaluator):
             name = ref.name
             if name == "_" or name in found:
                 continue
-            constant = (
-                None
-                if name.split(".")[0] in own
-                else self.scoped_constant(name, state, function.class_name)
-            )
-            if constant is not None and constant.term is not None:
-                found[name] = constant.term
-            else:
-                found[name] = self.ctx.fresh("unknown", f"`{name}`").known_term
+            term: A.Expr | None = None
+            if name.split(".")[0] not in own:
+                constant = self.scoped_constant(name, state, function.class_name)
+                term = constant.term if constant is not None else None
+                if term is None and "." not in name:
+                    term = self.global_term(name, state)
+            if term is None:
+                term = self.ctx.fresh("unknown", f"`{name}`").known_term
+            found[name] = term
         return found
 
     # -- messages ------------------------------------------------------------
@@ -328,7 +329,9 @@ class CallEvaluator(ExpressionEvaluator):
                 if kind is None:
                     return None
                 term = A.Func(name, (result.known_term, other.known_term))
-                result = Value(kind, term, unit, literal)
+                # the literal factors of the side that gave the unit (as for +)
+                scale = result.scale if unit == result.unit else other.scale
+                result = Value(kind, term, unit, literal, scale=scale)
             return result
         if (
             name == "float"

@@ -63,6 +63,10 @@ class ExpressionEvaluator:
         bound = state.env.get(name)
         return bound.term if isinstance(bound, Value) else None
 
+    def global_term(self, name: str, state: State) -> A.Expr | None:
+        """The term of a module name that no function rebinds, as read here."""
+        return None
+
     def is_read_only_table(self, node: ast.expr) -> bool:
         """Whether `node` names a module dict or list that no code changes."""
         return False

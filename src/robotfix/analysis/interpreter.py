@@ -217,15 +217,17 @@ class Interpreter(CallEvaluator):
         constant = self.scoped_constant(name, state, self._class_name())
         if constant is not None:
             return constant.term
+        return None if rest else self.global_term(name, state)
+
+    def global_term(self, name: str, state: State) -> A.Expr | None:
         module = self.scope.module()
         if (
-            not rest
-            and self.scope is not module
-            and head in module.local_names
-            and head not in self.ctx.constants.changed_globals
+            self.scope is module
+            or name not in module.local_names
+            or name in self.ctx.constants.changed_globals
         ):
-            return self._global(head, state).term
-        return None
+            return None  # module code: the name's binding on this path, if any
+        return self._global(name, state).term
 
     def _class_name(self) -> str | None:
         if self.function is not None:
