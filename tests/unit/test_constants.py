@@ -126,13 +126,15 @@ def check(source: str) -> list[tuple[int, str]]:
     return [(d.span.line, d.code) for d in found]
 
 
-def names(source: str) -> ConstantNames:
+def names(source: str, walrus: bool = True) -> ConstantNames:
     tree = ast.parse(textwrap.dedent(source))
     index = index_module(tree)
-    return scan(tree, index, lambda node: index.imports.get(getattr(node, "id", "")))
+    qualname = lambda node: index.imports.get(getattr(node, "id", ""))  # noqa: E731
+    return scan(tree, index, qualname, walrus)
 
 
-def test_scan_keeps_names_bound_once_and_never_changed() -> None:
+@pytest.mark.parametrize("walrus", [True, False])
+def test_scan_keeps_names_bound_once_and_never_changed(walrus: bool) -> None:
     found = names(
         """
         from typing import Final
@@ -171,15 +173,29 @@ def test_scan_keeps_names_bound_once_and_never_changed() -> None:
         class Sub(Base):
             SHARED = 5.0
             LIMIT: Final = 6.0
-        """
+
+        try:
+            import numpy as np
+        except ImportError:
+            np = None
+        with open("f") as handle:
+            K, (L, *M) = 1, (2, 3)
+        """,
+        walrus,
     )
-    assert {"A", "D", "H"} <= found.module
+    assert {"A", "D", "H", "handle", "K", "L", "M"} <= found.module
+    assert "np" not in found.module
     assert not {"B", "C"} & found.module
     assert found.changed_globals == {"C"}
     assert found.read_only == {"D"}
     # SHARED is overridden, STORED is set on instances; Final forbids overriding
     assert found.classes["Base"] - {"__init__"} == {"MAX", "LIMIT"}
     assert found.classes["Sub"] == {"LIMIT"}
+
+
+def test_a_walrus_rebinds() -> None:
+    found = names("W = 1\nif (W := 2) > 1:\n    pass\n")
+    assert "W" not in found.module
 
 
 def test_setattr_with_a_computed_name_keeps_no_class_constant() -> None:

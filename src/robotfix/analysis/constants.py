@@ -83,13 +83,17 @@ def is_constant(value: Value) -> bool:
 
 
 def scan(
-    tree: ast.Module, index: FileIndex, qualname: Callable[[ast.expr], str | None]
+    tree: ast.Module,
+    index: FileIndex,
+    qualname: Callable[[ast.expr], str | None],
+    walrus: bool = True,
 ) -> ConstantNames:
+    """`walrus`: whether the source may contain `:=` (False makes the scan cheaper)."""
     found = ConstantNames()
     for scope_id, names in index.scopes.items():
         if scope_id != id(tree):
             found.changed_globals |= names.global_names
-    counts = _bindings(tree.body)
+    counts = _bindings(tree.body, walrus)
     found.module = {n for n, c in counts.items() if c == 1} - found.changed_globals
     tables = {
         target.id
@@ -100,7 +104,7 @@ def scan(
         found.read_only = _only_read(tree, tables)
     classes = [n for n in tree.body if isinstance(n, ast.ClassDef)]
     if classes:
-        _scan_classes(found, classes, index, qualname)
+        _scan_classes(found, classes, index, qualname, walrus)
     return found
 
 
@@ -109,8 +113,9 @@ def _scan_classes(
     classes: list[ast.ClassDef],
     index: FileIndex,
     qualname: Callable[[ast.expr], str | None],
+    walrus: bool,
 ) -> None:
-    per_class = {id(c): _bindings(c.body) for c in classes}
+    per_class = {id(c): _bindings(c.body, walrus) for c in classes}
     everywhere: Counter[str] = Counter()
     for counts in per_class.values():
         everywhere.update(counts.keys())
@@ -152,9 +157,68 @@ def _setattr_names(index: FileIndex) -> set[str] | None:
     return names
 
 
-def _bindings(body: Iterable[ast.AST]) -> Counter[str]:
+def _bindings(body: list[ast.stmt], walrus: bool) -> Counter[str]:
     """How often each name is bound in a module or class body (not counting what
-    functions and classes inside it bind in their own bodies)."""
+    functions and classes inside it bind in their own bodies). Only statements bind,
+    but for `:=`, which only a walk of every expression finds."""
+    if walrus:
+        return _bindings_everywhere(body)
+    counts: Counter[str] = Counter()
+    todo: list[ast.stmt] = list(body)
+    while todo:
+        node = todo.pop()
+        kind = type(node)
+        if kind is ast.Expr or kind is ast.Pass or kind is ast.Return:
+            continue
+        if kind is ast.Assign:
+            for target in node.targets:  # type: ignore[attr-defined]
+                _count_targets(target, counts)
+        elif kind is ast.AnnAssign:
+            if node.value is not None:  # type: ignore[attr-defined]
+                _count_targets(node.target, counts)  # type: ignore[attr-defined]
+        elif kind is ast.AugAssign or kind is ast.For or kind is ast.AsyncFor:
+            _count_targets(node.target, counts)  # type: ignore[attr-defined]
+        elif kind is ast.Delete:
+            for target in node.targets:  # type: ignore[attr-defined]
+                _count_targets(target, counts)
+        elif kind is ast.With or kind is ast.AsyncWith:
+            for item in node.items:  # type: ignore[attr-defined]
+                if item.optional_vars is not None:
+                    _count_targets(item.optional_vars, counts)
+        elif kind in (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef):
+            counts[node.name] += 1  # type: ignore[attr-defined]
+            continue
+        elif kind is ast.Import or kind is ast.ImportFrom:
+            for alias in node.names:  # type: ignore[attr-defined]
+                counts[alias.asname or alias.name.split(".")[0]] += 1
+            continue
+        elif kind is ast.Match:
+            for case in node.cases:  # type: ignore[attr-defined]
+                counts.update(_bindings_everywhere([case.pattern]))
+                todo.extend(case.body)
+            continue
+        elif isinstance(getattr(node, "name", None), ast.Name):  # type X = ...
+            counts[node.name.id] += 1  # type: ignore[attr-defined]
+        for block in ("body", "orelse", "finalbody"):
+            todo.extend(getattr(node, block, ()))
+        for handler in getattr(node, "handlers", ()):
+            if handler.name:
+                counts[handler.name] += 1
+            todo.extend(handler.body)
+    return counts
+
+
+def _count_targets(target: ast.expr, counts: Counter[str]) -> None:
+    if isinstance(target, ast.Name):
+        counts[target.id] += 1
+    elif isinstance(target, (ast.Tuple, ast.List)):
+        for element in target.elts:
+            _count_targets(element, counts)
+    elif isinstance(target, ast.Starred):
+        _count_targets(target.value, counts)
+
+
+def _bindings_everywhere(body: Iterable[ast.AST]) -> Counter[str]:
     counts: Counter[str] = Counter()
     todo = list(body)
     while todo:

@@ -40,7 +40,7 @@ def analyze_module(ctx: FileContext) -> None:
     tree = ctx.source.tree
     assert tree is not None
     ctx.record_imports(index_module(tree))
-    ctx.constants = scan(tree, ctx.index, ctx.qualname)
+    ctx.constants = scan(tree, ctx.index, ctx.qualname, ":=" in ctx.source.text)
     module = build_scope(ctx, "module", "<module>", tree, None)
     program = collect(ctx, tree, module)
     top = Interpreter(ctx, program, module, {})
