@@ -351,3 +351,34 @@ def test_module_arithmetic_of_constants_is_exact_in_functions(
         ]
     )
     assert check(source) == [(len(lines) + 4, "RF101")]
+
+
+def test_class_tables_are_not_looked_up() -> None:
+    # `self.TABLE[k] = v` would change it, which the scan does not follow
+    source = """
+        from typing import Annotated
+
+        class Teleop:
+            TABLE = {"a": (1,), "b": (2,)}
+            SPEEDS = (0.1, 0.2)
+
+            def on_key(self, key: str, i: int):
+                x: Annotated[int, "_ <= 2"] = self.TABLE[key][0]
+                v: Annotated[float, "_ <= 0.2"] = self.SPEEDS[i]
+        """
+    assert check(source) == [(9, "RF102")]
+
+
+def test_a_tuple_is_not_a_number_but_fills_an_array_field() -> None:
+    source = """
+        from typing import Annotated
+        from sensor_msgs.msg import LaserScan
+
+        def f():
+            x: Annotated[float, "_ > 0"] = (1.0, 2.0)
+            scan = LaserScan()
+            scan.ranges = [1.0, 2.0]
+            scan.intensities = (1.0,)
+            scan.range_max = (5.0,)
+        """
+    assert check(source) == [(6, "RF401"), (10, "RF401")]

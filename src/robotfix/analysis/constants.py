@@ -62,11 +62,20 @@ class ConstantNames:
             self.class_values.setdefault(scope_name, {}).setdefault(name, value)
 
     def module_constants(self) -> dict[str, Value]:
-        return {n: v for n, v in self.values.items() if is_constant(v)}
+        return {
+            name: value
+            for name, value in self.values.items()
+            if is_constant(value)
+            and (value.kind not in ("list", "dict") or name in self.read_only)
+        }
 
     def class_constant(self, class_name: str, attr: str) -> Value | None:
+        """A scalar or tuple (a class's dicts and lists may be changed through
+        `self.table[k] = v`, which `scan` does not follow)."""
         found = self.class_values.get(class_name, {}).get(attr)
-        return found if found is not None and is_constant(found) else None
+        if found is None or found.kind in ("list", "dict"):
+            return None
+        return found if is_constant(found) else None
 
 
 def is_constant(value: Value) -> bool:
