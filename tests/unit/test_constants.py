@@ -269,6 +269,22 @@ def test_infinity_is_above_every_float_and_shown_as_inf() -> None:
     assert any(n.message == "here `low` = -inf" for n in found[0].notes)
 
 
+def test_numbers_near_infinity_neither_crash_nor_print_400_digits() -> None:
+    source = """
+        import math
+        from typing import Annotated
+
+        def f(v: Annotated[float, "Unit('m')"], w: Annotated[float, "_ >= 1"]):
+            scaled = v * math.inf
+            third: Annotated[float, "_ <= 10"] = math.inf / 3
+            above: Annotated[float, "_ <= 10"] = math.inf / w
+        """
+    found = check_source(textwrap.dedent(source), "node.py", Config())
+    assert [(d.span.line, d.code) for d in found] == [(7, "RF101"), (8, "RF102")]
+    notes = [n.message for d in found for n in d.notes]
+    assert "here `third` = inf" in notes and len(" ".join(notes)) < 1000
+
+
 ENTRY = st.fractions(min_value=-5, max_value=5, max_denominator=4)
 
 

@@ -633,9 +633,12 @@ def _literal(term: A.Expr | None) -> Fraction | str | None:
 
 
 def constant_value(term: A.Expr | None) -> float | None:
-    """The value of a term built from number literals only."""
+    """The value of a term built from number literals only (None beyond floats)."""
     if isinstance(term, A.Num):
-        return float(term.value)
+        try:
+            return float(term.value)
+        except OverflowError:  # math.inf, or near it
+            return None
     if isinstance(term, A.Unary) and term.op == "-":
         inner = constant_value(term.operand)
         return None if inner is None else -inner

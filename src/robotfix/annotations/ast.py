@@ -10,7 +10,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from fractions import Fraction
 
-from robotfix.annotations.numbers import INFINITY
+from robotfix.annotations.numbers import shown_as_infinity
 
 
 @dataclass(frozen=True)
@@ -246,8 +246,9 @@ def _operand(expr: Expr, minimum: int) -> str:
 
 def _show_number(num: Num) -> str:
     value = num.value
-    if abs(value) == INFINITY:
-        return "inf" if value > 0 else "-inf"
+    infinite = shown_as_infinity(value)
+    if infinite is not None:
+        return infinite
     if value.denominator == 1:
         return str(value.numerator) if num.is_int else f"{value.numerator}.0"
     decimal = _exact_decimal(value)

@@ -10,9 +10,11 @@ every finite float is below it.
 from __future__ import annotations
 
 import math
+import sys
 from fractions import Fraction
 
 INFINITY = Fraction(10) ** 400
+LARGEST_FLOAT = Fraction(sys.float_info.max)  # beyond it, a double is inf
 NUMBERS = {
     "pi": Fraction(math.pi),
     "tau": Fraction(math.tau),
@@ -21,6 +23,13 @@ NUMBERS = {
 }
 # Modules whose attributes of those names are those numbers (`np.pi`, `numpy.inf`).
 MODULES = frozenset({"math", "numpy"})
+
+
+def shown_as_infinity(value: Fraction) -> str | None:
+    """ "inf" or "-inf" for a number no double reaches (what the program holds)."""
+    if abs(value) > LARGEST_FLOAT:
+        return "inf" if value > 0 else "-inf"
+    return None
 
 
 def named_number(qualified: str) -> Fraction | None:
