@@ -41,6 +41,11 @@ READING_CALLS = frozenset(
     | {"sum", "enumerate", "reversed", "iter", "any", "all", "zip", "print", "str"}
 )
 SCALARS = frozenset({"int", "float", "bool", "str"})
+# Statements with statement bodies (`try` also has handlers).
+_BLOCK_NAMES = "If For AsyncFor While With AsyncWith Try TryStar"  # TryStar: 3.11
+BLOCKS = frozenset(
+    getattr(ast, name) for name in _BLOCK_NAMES.split() if hasattr(ast, name)
+)
 
 
 @dataclass
@@ -53,6 +58,7 @@ class ConstantNames:
     classes: dict[str, set[str]] = field(default_factory=dict)  # class -> attributes
     values: dict[str, Value] = field(default_factory=dict)  # module name -> value
     class_values: dict[str, dict[str, Value]] = field(default_factory=dict)
+    class_attrs: set[str] = field(default_factory=set)  # names in class_values
 
     def record(self, scope_kind: str, scope_name: str, name: str, value: Value) -> None:
         """The interpreter binds `name` in a module or top-level class body."""
@@ -60,6 +66,7 @@ class ConstantNames:
             self.values.setdefault(name, value)
         elif scope_kind == "class" and name in self.classes.get(scope_name, ()):
             self.class_values.setdefault(scope_name, {}).setdefault(name, value)
+            self.class_attrs.add(name)
 
     def module_constants(self) -> dict[str, Value]:
         return {
@@ -107,7 +114,9 @@ def scan(
     tables = {
         target.id
         for target, value in _simple_assignments(tree.body)
-        if isinstance(value, (ast.Dict, ast.List)) and target.id in found.module
+        if isinstance(value, (ast.Dict, ast.List))
+        and target.id in found.module
+        and _literal_display(value)
     }
     if tables:
         found.read_only = _only_read(tree, tables)
@@ -206,14 +215,15 @@ def _bindings(body: list[ast.stmt], walrus: bool) -> Counter[str]:
                 counts.update(_bindings_everywhere([case.pattern]))
                 todo.extend(case.body)
             continue
-        elif isinstance(getattr(node, "name", None), ast.Name):  # type X = ...
+        elif kind.__name__ == "TypeAlias":  # type X = ... (Python 3.12)
             counts[node.name.id] += 1  # type: ignore[attr-defined]
-        for block in ("body", "orelse", "finalbody"):
-            todo.extend(getattr(node, block, ()))
-        for handler in getattr(node, "handlers", ()):
-            if handler.name:
-                counts[handler.name] += 1
-            todo.extend(handler.body)
+        if kind in BLOCKS:
+            for block in ("body", "orelse", "finalbody"):
+                todo.extend(getattr(node, block, ()))
+            for handler in getattr(node, "handlers", ()):
+                if handler.name:
+                    counts[handler.name] += 1
+                todo.extend(handler.body)
     return counts
 
 
@@ -265,6 +275,32 @@ def _simple_assignments(
             continue
         if isinstance(target, ast.Name):
             yield target, value
+
+
+def _literal_display(node: ast.expr) -> bool:
+    """Whether a display may be a constant: made of literals, names, arithmetic and
+    nested displays (no calls, lambdas or comprehensions), so that no walk of the
+    file is spent on a table of callbacks."""
+    todo: list[ast.AST] = [node]
+    while todo:
+        current = todo.pop()
+        kind = type(current)
+        if kind is ast.Constant or kind is ast.Name:
+            continue
+        if kind is ast.Dict:
+            todo.extend(k for k in current.keys if k is not None)  # type: ignore[attr-defined]
+            todo.extend(current.values)  # type: ignore[attr-defined]
+        elif kind in (ast.Tuple, ast.List):
+            todo.extend(current.elts)  # type: ignore[attr-defined]
+        elif kind is ast.UnaryOp:
+            todo.append(current.operand)  # type: ignore[attr-defined]
+        elif kind is ast.BinOp:
+            todo += [current.left, current.right]  # type: ignore[attr-defined]
+        elif kind is ast.Attribute:
+            todo.append(current.value)  # type: ignore[attr-defined]
+        else:
+            return False
+    return True
 
 
 def _only_read(tree: ast.Module, names: set[str]) -> set[str]:

@@ -23,7 +23,7 @@ from robotfix.analysis.state import State
 from robotfix.analysis.values import NONE, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
-from robotfix.annotations.numbers import named_number
+from robotfix.annotations.numbers import NUMBERS, named_number
 from robotfix.annotations.units import DIMENSIONLESS, Unit
 from robotfix.ros.catalog import constant_term
 
@@ -187,6 +187,8 @@ class ExpressionEvaluator:
     def class_constant(self, class_name: str, attr: str) -> Value | None:
         """A constant class attribute (`MAX_SPEED = 0.22` in the class body), also
         one inherited from a class of this file."""
+        if attr not in self.ctx.constants.class_attrs:
+            return None
         seen: set[str] = set()
         todo = [class_name]
         while todo:
@@ -224,7 +226,7 @@ class ExpressionEvaluator:
 
     def _module_attribute(self, module: str, attr: str) -> Value:
         qualified = f"{module}.{attr}"
-        number = named_number(qualified)
+        number = named_number(qualified) if attr in NUMBERS else None
         if number is not None:
             return Value("float", A.Num(number, False), literal=True)
         msg_type = self.ctx.msg_type_named(qualified)
@@ -506,16 +508,19 @@ class ExpressionEvaluator:
                 return found
         return self.unknown(node, unit=base.unit if not base.literal else None)
 
-    def _modelled(self, values: list[Value]) -> bool:
-        return all(v.term is not None or v.elements is not None for v in values)
-
     def eval_Tuple(self, node: ast.Tuple | ast.List, state: State) -> Value:
-        values = [self.eval(e, state) for e in node.elts]
-        if any(isinstance(e, ast.Starred) for e in node.elts) or not self._modelled(
-            values
-        ):
+        values = []
+        modelled = True
+        for element in node.elts:
+            value = self.eval(element, state)
+            values.append(value)
+            if element.__class__ is ast.Starred or (
+                value.term is None and value.elements is None
+            ):
+                modelled = False
+        if not modelled:
             return self.unknown(node)
-        kind = "tuple" if isinstance(node, ast.Tuple) else "list"
+        kind = "tuple" if node.__class__ is ast.Tuple else "list"
         return Value(kind, elements=tuple(values))
 
     eval_List = eval_Tuple
@@ -523,7 +528,9 @@ class ExpressionEvaluator:
     def eval_Dict(self, node: ast.Dict, state: State) -> Value:
         keys = [self.eval(k, state) if k is not None else NONE for k in node.keys]
         values = [self.eval(v, state) for v in node.values]
-        if any(k is None for k in node.keys) or not self._modelled(keys + values):
+        if any(k is None for k in node.keys) or any(
+            v.term is None and v.elements is None for v in keys + values
+        ):
             return self.unknown(node)
         return Value("dict", elements=tuple(values), keys=tuple(keys))
 
