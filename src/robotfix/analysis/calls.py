@@ -17,6 +17,7 @@ from robotfix.analysis.program import Function
 from robotfix.analysis.state import State
 from robotfix.analysis.values import NONE, Value
 from robotfix.annotations import ast as A
+from robotfix.annotations.numbers import INFINITY, NUMBERS
 from robotfix.annotations.units import Unit, named, resolve
 from robotfix.messages import Declared
 from robotfix.ros.api_model import MATH_UNITS, UNIT_PARAMETERS
@@ -35,7 +36,8 @@ LEAVING = frozenset(
         "send_goal_async",
     }
 )
-PI_BOUND = A.Num(Fraction(355, 113), False)  # > pi: a sound bound for angles
+# atan2, asin, acos... return at most math.pi (the double, below the real pi)
+PI_BOUND = A.Num(NUMBERS["pi"], False)
 ONE = A.Num(Fraction(1), True)
 ZERO = A.Num(Fraction(0), True)
 
@@ -159,20 +161,35 @@ class CallEvaluator(ExpressionEvaluator):
         for name, value in given.items():
             decl = scope.decls.get(name)
             if decl is not None:
-                lookup = {**self._fresh_names(decl), **terms}
+                lookup = {**self._callee_names(decl, function, state), **terms}
                 self.check.assign_refined(state, name, decl, value, self.site, lookup)
         if function.returns is None:
             return self.unknown(node)
-        lookup = {**self._fresh_names(function.returns), **terms}
+        lookup = {**self._callee_names(function.returns, function, state), **terms}
         return self.check.assumed(state, f"{function.name}()", function.returns, lookup)
 
-    def _fresh_names(self, decl: object) -> dict[str, A.Expr]:
+    def _callee_names(
+        self, decl: object, function: Function, state: State
+    ) -> dict[str, A.Expr]:
+        """Terms for the names a callee's refinement mentions: constants and module
+        names (which hold one value during the call), else fresh unknowns (the
+        callee's own parameters are filled in by the caller)."""
         predicate = getattr(decl, "predicate", A.TRUE)
+        own = function.scope.local_names if function.scope is not None else set()
         found: dict[str, A.Expr] = {}
-        for name in A.names(predicate):
-            if name.name != "_" and name.name not in found:
-                value = self.ctx.fresh("unknown", f"`{name.name}`")
-                found[name.name] = value.known_term
+        for ref in A.names(predicate):
+            name = ref.name
+            if name == "_" or name in found:
+                continue
+            term: A.Expr | None = None
+            if name.split(".")[0] not in own:
+                constant = self.scoped_constant(name, state, function.class_name)
+                term = constant.term if constant is not None else None
+                if term is None and "." not in name:
+                    term = self.global_term(name, state)
+            if term is None:
+                term = self.ctx.fresh("unknown", f"`{name}`").known_term
+            found[name] = term
         return found
 
     # -- messages ------------------------------------------------------------
@@ -312,7 +329,9 @@ class CallEvaluator(ExpressionEvaluator):
                 if kind is None:
                     return None
                 term = A.Func(name, (result.known_term, other.known_term))
-                result = Value(kind, term, unit, literal)
+                # the literal factors of the side that gave the unit (as for +)
+                scale = result.scale if unit == result.unit else other.scale
+                result = Value(kind, term, unit, literal, scale=scale)
             return result
         if (
             name == "float"
@@ -320,11 +339,25 @@ class CallEvaluator(ExpressionEvaluator):
             and first.kind in ("int", "float", "bool")
         ):
             return replace(first, kind="float")
+        if name == "float" and len(args) == 1 and isinstance(first.term, A.Str):
+            return _float_of(first.term.value)
         if name in ("int", "round") and len(args) == 1 and first.kind != "str":
             return self.unknown(node, "int", first.unit)
         if name == "bool" and len(args) == 1:
             return Value("bool", self.truthy(first, node))
         return None if name != "print" else NONE
+
+
+def _float_of(text: str) -> Value | None:
+    """`float('inf')`, `float('0.5')`: the number, exactly."""
+    cleaned = text.strip().lower()
+    sign = -1 if cleaned.startswith("-") else 1
+    if cleaned.lstrip("+-") in ("inf", "infinity"):
+        return Value("float", A.Num(sign * INFINITY, False), literal=True)
+    try:
+        return Value("float", A.Num(Fraction(cleaned), False), literal=True)
+    except (ValueError, ZeroDivisionError):
+        return None
 
 
 def _root(unit: Unit) -> Unit | None:

@@ -29,6 +29,9 @@ KIND_NAMES = {
     "bool": "bool",
     "str": "str",
     "msg": "message",
+    "tuple": "tuple",
+    "list": "list",
+    "dict": "dict",
 }
 
 
@@ -235,7 +238,11 @@ class Checker:
                     self.ctx, state, spec.msg_type or "", "unknown", owner=(ref, name)
                 )
             return
-        ok = spec.loose or self.base_fits(spec.kind, value, site, f"`{target}`")
+        ok = (
+            spec.loose
+            or spec.array  # the kind is the elements'
+            or self.base_fits(spec.kind, value, site, f"`{target}`")
+        )
         if unit_decl is not None and owner is not None:
             decl = self._field_declared(owner, name, unit_decl)
             ok = self.units_agree(unit, value, site, f"`{target}`", decl) and ok

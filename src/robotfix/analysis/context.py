@@ -11,6 +11,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from robotfix import messages
+from robotfix.analysis.constants import ConstantNames
 from robotfix.analysis.index import FileIndex, index_scope
 from robotfix.analysis.values import Value, sort_of
 from robotfix.analysis.vc import VC, Verdict
@@ -21,6 +22,8 @@ from robotfix.ros.catalog import MsgCatalog
 from robotfix.source import SourceFile
 
 MSG_MODULES = ("msg", "srv", "action")
+# Python packages only ROS 1 has: a file importing one (and not rclpy) is ROS 1 code.
+ROS1_PACKAGES = frozenset({"rospy", "roslib", "actionlib", "rosbag", "tf"})
 # ROS 1 generates AddTwoIntsRequest, FibonacciGoal...; ROS 2 nests AddTwoInts.Request.
 SECTION_SUFFIXES = ("Request", "Response", "Goal", "Result", "Feedback")
 
@@ -70,6 +73,8 @@ class FileContext:
         self.index = FileIndex()
         self.imports: dict[str, str] = {}  # local name -> qualified name
         self.star_import = False
+        self.ros1 = False  # ROS 1 code: standard messages have no default values
+        self.constants = ConstantNames()  # which names are constants, and their values
         self._reported: set[tuple[object, ...]] = set()
         # (span, markdown) for names and fields, kept only for editor hovers
         self.hovers: list[tuple[Span, str]] | None = None
@@ -122,6 +127,8 @@ class FileContext:
         self.index = index
         self.imports = index.imports
         self.star_import = index.star_import
+        roots = {q.split(".")[0] for q in self.imports.values()}
+        self.ros1 = bool(roots & ROS1_PACKAGES) and "rclpy" not in roots
 
     def qualname(self, node: ast.expr) -> str | None:
         """`t.Annotated` -> `typing.Annotated`, when the names come from imports."""

@@ -17,14 +17,17 @@ from fractions import Fraction
 from robotfix import messages
 from robotfix.analysis import heap, hover
 from robotfix.analysis.checks import Checker
+from robotfix.analysis.constants import is_constant
 from robotfix.analysis.context import TERM_LIMIT, FileContext
 from robotfix.analysis.program import Program
 from robotfix.analysis.state import State
 from robotfix.analysis.values import NONE, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
+from robotfix.annotations.numbers import NUMBERS, named_number
 from robotfix.annotations.units import DIMENSIONLESS, Unit
 from robotfix.diagnostics import Span
+from robotfix.ros.catalog import constant_term
 
 ARITH = {ast.Add: "+", ast.Sub: "-", ast.Mult: "*", ast.Div: "/"}
 COMPARE = {
@@ -36,7 +39,6 @@ COMPARE = {
     ast.GtE: ">=",
 }
 _DECIMAL = re.compile(r"[0-9_]*\.?[0-9_]*([eE][+-]?[0-9_]+)?")
-MATH_CONSTANTS = {"pi": math.pi, "e": math.e, "tau": math.tau}
 KIND_ORDER = ("bool", "int", "float")
 
 
@@ -53,6 +55,23 @@ class ExpressionEvaluator:
 
     def bind(self, target: ast.expr, value: Value, state: State) -> None:
         raise NotImplementedError
+
+    def static_value(self, name: str) -> Value | None:
+        """What a module-level name surely holds here (a module, class, constant)."""
+        return None
+
+    def refinement_term(self, name: str, state: State) -> A.Expr | None:
+        """The term for a name a refinement mentions, if it is known here."""
+        bound = state.env.get(name)
+        return bound.term if isinstance(bound, Value) else None
+
+    def global_term(self, name: str, state: State) -> A.Expr | None:
+        """The term of a module name that no function rebinds, as read here."""
+        return None
+
+    def is_read_only_table(self, node: ast.expr) -> bool:
+        """Whether `node` names a module dict or list that no code changes."""
+        return False
 
     # -- dispatch ------------------------------------------------------------
     def eval(self, node: ast.expr, state: State) -> Value:
@@ -125,19 +144,13 @@ class ExpressionEvaluator:
     def eval_Attribute(self, node: ast.Attribute, state: State) -> Value:
         base = self.eval(node.value, state)
         if base.kind == "msg" and base.ref in state.heap:
+            constant = self.member(base, node.attr, state)
+            if constant is not None:  # `msg.ULTRASOUND`
+                return constant
             text = self.ctx.source.segment(node) or node.attr
             ref = base.ref
             self.note_hover(node, lambda: hover.field(self.ctx, state, ref, node.attr))
             return self.check.read_field(state, base.ref, node.attr, self.site, text)
-        if base.kind == "module":
-            return self._module_attribute(base.name, node)
-        if base.kind == "msgclass":
-            return self._constant(base.name, node)
-        if base.kind == "interface":
-            found = self.ctx.msg_type_named(
-                f"{base.name.replace('/', '.msg.')}_{node.attr}"
-            )
-            return Value("msgclass", name=found) if found else self.unknown(node)
         if base.kind in ("instance", "goal_handle") and isinstance(
             node.value, ast.Name
         ):
@@ -148,7 +161,44 @@ class ExpressionEvaluator:
                 lambda: self.describe_attribute(base, var, node.attr, value, state),
             )
             return value
-        return self.unknown(node)
+        found = self.member(base, node.attr, state)
+        return found if found is not None else self.unknown(node)
+
+    def member(self, base: Value, attr: str, state: State) -> Value | None:
+        """`base.attr` when `base` is a module, an interface or message class, a
+        message (its constants), or a class or instance (its class constants)."""
+        if base.kind == "module":
+            return self._module_attribute(base.name, attr)
+        if base.kind == "msgclass":
+            return self._constant(base.name, attr)
+        if base.kind == "msg" and base.ref in state.heap:
+            return self._constant(state.heap[base.ref].type, attr)
+        if base.kind == "interface":
+            found = self.ctx.msg_type_named(f"{base.name.replace('/', '.msg.')}_{attr}")
+            return Value("msgclass", name=found) if found else None
+        if base.kind in ("class", "instance"):
+            return self.class_constant(base.name, attr)
+        return None
+
+    def class_constant(self, class_name: str, attr: str) -> Value | None:
+        """A constant class attribute (`MAX_SPEED = 0.22` in the class body), also
+        one inherited from a class of this file."""
+        if attr not in self.ctx.constants.class_attrs:
+            return None
+        seen: set[str] = set()
+        todo = [class_name]
+        while todo:
+            name = todo.pop(0)
+            if name in seen:
+                continue
+            seen.add(name)
+            found = self.ctx.constants.class_constant(name, attr)
+            if found is not None:
+                return found
+            scope = self.program.classes.get(name)
+            if scope is not None and isinstance(scope.node, ast.ClassDef):
+                todo += [b.id for b in scope.node.bases if isinstance(b, ast.Name)]
+        return None
 
     def describe_attribute(
         self, base: Value, var: str, attr: str, value: Value, state: State
@@ -161,11 +211,11 @@ class ExpressionEvaluator:
         )
         return hover.variable(self.ctx, state, f"{var}.{attr}", value, decl)
 
-    def _module_attribute(self, module: str, node: ast.Attribute) -> Value:
-        qualified = f"{module}.{node.attr}"
-        if module == "math" and node.attr in MATH_CONSTANTS:
-            exact = Fraction(MATH_CONSTANTS[node.attr])
-            return Value("float", A.Num(exact, False), literal=True)
+    def _module_attribute(self, module: str, attr: str) -> Value:
+        qualified = f"{module}.{attr}"
+        number = named_number(qualified) if attr in NUMBERS else None
+        if number is not None:
+            return Value("float", A.Num(number, False), literal=True)
         msg_type = self.ctx.msg_type_named(qualified)
         if msg_type is not None:
             return Value("msgclass", name=msg_type)
@@ -186,6 +236,9 @@ class ExpressionEvaluator:
         method = f"{base.name}.{node.attr}"
         if base.kind == "instance" and method in self.program.functions:
             return Value("method", name=method)
+        constant = self.class_constant(base.name, node.attr)
+        if base.kind == "instance" and constant is not None:
+            return constant
         if base.kind == "goal_handle" and node.attr == "request":
             value = heap.new_message(
                 self.ctx, state, f"{base.name}_Goal", "received", label=key
@@ -203,32 +256,56 @@ class ExpressionEvaluator:
         return value
 
     def refinement_lookup(self, decl: Refinement, state: State) -> dict[str, A.Expr]:
-        """Terms for the other variables a refinement names (`y == x`)."""
+        """Terms for the other names a refinement mentions (`y == x`, `MAX_SPEED`,
+        `math.pi`); a name not known here is a fresh unknown."""
         found: dict[str, A.Expr] = {}
         for ref_name in A.names(decl.predicate):
             name = ref_name.name
             if name == "_" or name in found:
                 continue
-            bound = state.env.get(name)
-            if isinstance(bound, Value) and bound.term is not None:
-                found[name] = bound.term
-            else:
-                found[name] = self.ctx.fresh("unknown", f"`{name}`").term  # type: ignore[assignment]
+            term = self.refinement_term(name, state)
+            if term is None:
+                term = self.ctx.fresh("unknown", f"`{name}`").known_term
+            found[name] = term
         return found
 
-    def _constant(self, msg_type: str, node: ast.Attribute) -> Value:
+    def constant_named(self, dotted: str, state: State) -> Value | None:
+        """The value of `MAX_SPEED`, `math.pi`, `Range.ULTRASOUND`, `Node.LIMIT` where
+        the name is a constant (not shadowed by a local: the caller checks)."""
+        head, *rest = dotted.split(".")
+        value = self.static_value(head)
+        for attr in rest:
+            if value is None:
+                return None
+            value = self.member(value, attr, state)
+        return value if value is not None and is_constant(value) else None
+
+    def scoped_constant(
+        self, name: str, state: State, class_name: str | None
+    ) -> Value | None:
+        """`constant_named`, and a bare name of a constant of `class_name` (as a
+        class-level annotation names one); None if the two disagree."""
+        found = self.constant_named(name, state)
+        in_class = (
+            self.class_constant(class_name, name)
+            if class_name and "." not in name
+            else None
+        )
+        if in_class is None:
+            return found
+        return in_class if found is None or found.term == in_class.term else None
+
+    def _constant(self, msg_type: str, attr: str) -> Value | None:
         spec = self.ctx.catalog.lookup(msg_type)
-        if spec is None or node.attr not in spec.constants:
-            return self.unknown(node)
-        type_, value = spec.constants[node.attr]
-        if isinstance(value, bool):
-            return Value("bool", A.Bool(value))
-        if isinstance(value, (int, float)):
-            kind = "float" if type_ in ("float32", "float64") else "int"
-            return Value(kind, A.Num(Fraction(value), kind == "int"), literal=True)
-        if isinstance(value, str):
-            return Value("str", A.Str(value))
-        return self.unknown(node)
+        if spec is None or attr not in spec.constants or attr in spec.fields:
+            return None
+        type_, value = spec.constants[attr]
+        term = constant_term(type_, value)
+        if isinstance(term, A.Num):
+            return Value("int" if term.is_int else "float", term, literal=True)
+        if isinstance(term, A.Bool):
+            return Value("bool", term)
+        return None if term is None else Value("str", term)
 
     # -- arithmetic ----------------------------------------------------------
     def eval_UnaryOp(self, node: ast.UnaryOp, state: State) -> Value:
@@ -409,8 +486,96 @@ class ExpressionEvaluator:
 
     def eval_Subscript(self, node: ast.Subscript, state: State) -> Value:
         base = self.eval(node.value, state)
-        self.eval(node.slice, state)
+        key = self.eval(node.slice, state)
+        if base.elements is not None and (
+            base.kind == "tuple" or self.is_read_only_table(node.value)
+        ):
+            found = self._look_up(base, key, node, state)
+            if found is not None:
+                return found
         return self.unknown(node, unit=base.unit if not base.literal else None)
+
+    def eval_Tuple(self, node: ast.Tuple | ast.List, state: State) -> Value:
+        values = []
+        modelled = True
+        for element in node.elts:
+            value = self.eval(element, state)
+            values.append(value)
+            if element.__class__ is ast.Starred or (
+                value.term is None and value.elements is None
+            ):
+                modelled = False
+        if not modelled:
+            return self.unknown(node)
+        kind = "tuple" if node.__class__ is ast.Tuple else "list"
+        return Value(kind, elements=tuple(values))
+
+    eval_List = eval_Tuple
+
+    def eval_Dict(self, node: ast.Dict, state: State) -> Value:
+        keys = [self.eval(k, state) if k is not None else NONE for k in node.keys]
+        values = [self.eval(v, state) for v in node.values]
+        if any(k is None for k in node.keys) or any(
+            v.term is None and v.elements is None for v in keys + values
+        ):
+            return self.unknown(node)
+        return Value("dict", elements=tuple(values), keys=tuple(keys))
+
+    def _look_up(
+        self, table: Value, key: Value, node: ast.Subscript, state: State
+    ) -> Value | None:
+        """`table[key]`: the entry when the key is known, else one of the entries
+        (a value bounded by them); None when it is not modelled (a slice)."""
+        assert table.elements is not None
+        wanted = _literal(key.term)
+        if table.kind == "dict":
+            keys = [_literal(k.term) for k in table.keys or ()]
+            if None in keys:
+                return None
+            entries = dict(zip(keys, table.elements, strict=True))
+            if wanted is not None:
+                return entries.get(wanted)
+            return self._one_of(list(entries.values()), node, state)
+        if isinstance(node.slice, ast.Slice) or key.kind not in (
+            "int",
+            "bool",
+            "unknown",
+        ):
+            return None
+        if wanted is not None:
+            index = int(wanted)
+            inside = -len(table.elements) <= index < len(table.elements)
+            return table.elements[index] if inside else None
+        return self._one_of(list(table.elements), node, state)
+
+    def _one_of(
+        self, options: list[Value], node: ast.AST, state: State
+    ) -> Value | None:
+        """A value that is one of `options` (tuples element by element)."""
+        if not options:
+            return None
+        if all(o == options[0] for o in options):
+            return options[0]
+        sizes = {len(o.elements) for o in options if o.elements is not None}
+        if all(o.kind == "tuple" for o in options) and len(sizes) == 1:
+            parts = [
+                self._one_of([o.elements[i] for o in options], node, state)  # type: ignore[index]
+                for i in range(sizes.pop())
+            ]
+            if any(p is None for p in parts):
+                return None
+            return Value("tuple", elements=tuple(parts))  # type: ignore[arg-type]
+        kinds = {o.kind for o in options}
+        if any(o.term is None for o in options) or not (
+            kinds <= {"int", "float", "bool"} or kinds == {"str"}
+        ):
+            return None
+        kind = max(kinds, key=KIND_ORDER.index) if kinds != {"str"} else "str"
+        units = {o.unit for o in options if not o.literal}
+        value = self.ctx.fresh(kind, node, units.pop() if len(units) == 1 else None)
+        terms = list(dict.fromkeys(o.known_term for o in options))
+        state.assume(A.disjoin([A.Binary("==", value.known_term, t) for t in terms]))
+        return replace(value, literal=all(o.literal for o in options))
 
     def eval_NamedExpr(self, node: ast.NamedExpr, state: State) -> Value:
         value = self.eval(node.value, state)
@@ -448,10 +613,26 @@ class ExpressionEvaluator:
         return self.unknown(node, "bool").term  # type: ignore[return-value]
 
 
-def constant_value(term: A.Expr | None) -> float | None:
-    """The value of a term built from number literals only."""
+def _literal(term: A.Expr | None) -> Fraction | str | None:
+    """A dict key or index as Python compares it (`1 == 1.0 == True`)."""
     if isinstance(term, A.Num):
-        return float(term.value)
+        return term.value
+    if isinstance(term, A.Bool):
+        return Fraction(int(term.value))
+    if isinstance(term, A.Str):
+        return term.value
+    if isinstance(term, A.Unary) and term.op == "-" and isinstance(term.operand, A.Num):
+        return -term.operand.value
+    return None
+
+
+def constant_value(term: A.Expr | None) -> float | None:
+    """The value of a term built from number literals only (None beyond floats)."""
+    if isinstance(term, A.Num):
+        try:
+            return float(term.value)
+        except OverflowError:  # math.inf, or near it
+            return None
     if isinstance(term, A.Unary) and term.op == "-":
         inner = constant_value(term.operand)
         return None if inner is None else -inner

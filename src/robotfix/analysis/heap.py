@@ -14,7 +14,13 @@ from robotfix.analysis.state import State
 from robotfix.analysis.values import MsgObj, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.units import Unit, UnitError, label, resolve
-from robotfix.ros.catalog import FieldSpec, FieldUnit, Invariant, MsgSpec
+from robotfix.ros.catalog import (
+    FieldSpec,
+    FieldUnit,
+    Invariant,
+    MsgSpec,
+    constant_term,
+)
 
 DEFAULTS: dict[str, A.Expr] = {
     "int": A.Num(Fraction(0), True),
@@ -123,10 +129,20 @@ def read_raw(
         obj.fields[name] = value
         return value
     if obj.origin == "constructed" and name not in obj.reported:
-        return Value(spec.kind, DEFAULTS[spec.kind], unit, default_of=(ref, name))
+        return Value(spec.kind, default_of(ctx, spec), unit, default_of=(ref, name))
     value = ctx.fresh(spec.kind, description, unit)
     obj.fields[name] = value
     return value
+
+
+def default_of(ctx: FileContext, spec: FieldSpec) -> A.Expr:
+    """What a field never set holds: its interface file's default (`float64 w 1`;
+    ROS 1 has none for standard messages), else 0, 0.0, False or ""."""
+    if spec.default is not None and not (spec.std_default and ctx.ros1):
+        term = constant_term("float64" if spec.kind == "float" else "", spec.default)
+        if term is not None:
+            return term
+    return DEFAULTS[spec.kind]
 
 
 def assume_invariants(

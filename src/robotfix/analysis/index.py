@@ -34,6 +34,8 @@ class FileIndex:
     # (class name, attribute, annotation) for `self.x: Annotated[...]` in methods
     attributes: list[tuple[str, str, ast.expr]] = field(default_factory=list)
     class_scopes: set[int] = field(default_factory=set)
+    # names `x` of attributes stored or deleted anywhere (`obj.x = ...`, `del obj.x`)
+    attribute_stores: set[str] = field(default_factory=set)
 
 
 Todo = list[tuple[ast.AST, int, str | None, str | None]]
@@ -99,6 +101,8 @@ def _drain(index: FileIndex, todo: Todo, root: int) -> None:
             _record_annotation(index, names, node, cls, self_name)  # type: ignore[arg-type]
         elif kind is ast.Call:
             index.calls.append((cls, node))  # type: ignore[arg-type]
+        elif kind is ast.Attribute and node.ctx.__class__ is not ast.Load:  # type: ignore[attr-defined]
+            index.attribute_stores.add(node.attr)  # type: ignore[attr-defined]
         for name in node._fields:
             value = getattr(node, name, None)
             if value.__class__ is list:

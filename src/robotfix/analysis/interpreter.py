@@ -17,13 +17,15 @@ from dataclasses import replace
 from robotfix import messages
 from robotfix.analysis import heap, hover
 from robotfix.analysis.calls import CallEvaluator
+from robotfix.analysis.constants import scan
 from robotfix.analysis.context import FileContext, Scope, build_scope
 from robotfix.analysis.index import index_module
 from robotfix.analysis.program import Function, Program, collect
 from robotfix.analysis.state import MAYBE, State, join
-from robotfix.analysis.values import NONE, Uninit, Value
+from robotfix.analysis.values import CONTAINERS, NONE, Uninit, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
+from robotfix.annotations.numbers import named_number
 from robotfix.astwalk import walk
 from robotfix.diagnostics import Span
 
@@ -39,6 +41,7 @@ def analyze_module(ctx: FileContext) -> None:
     tree = ctx.source.tree
     assert tree is not None
     ctx.record_imports(index_module(tree))
+    ctx.constants = scan(tree, ctx.index, ctx.qualname, ":=" in ctx.source.text)
     module = build_scope(ctx, "module", "<module>", tree, None)
     program = collect(ctx, tree, module)
     top = Interpreter(ctx, program, module, {})
@@ -48,6 +51,7 @@ def analyze_module(ctx: FileContext) -> None:
         for k, v in state.env.items()
         if isinstance(v, Value) and v.kind in STATIC_KINDS
     }
+    statics.update(ctx.constants.module_constants())
     pending: list[tuple[ast.AST, Scope]] = list(top.pending)
     for statement in tree.body:
         if isinstance(statement, ast.ClassDef):
@@ -111,6 +115,9 @@ class Interpreter(CallEvaluator):
         self.statics = statics
         self.function = function
         self.pending: list[tuple[ast.AST, Scope]] = []
+        # module names read in this function, which no function rebinds: one value
+        # (and the fact its refinement gives) for the whole run of the function
+        self.globals_read: dict[str, tuple[Value, A.Expr | None]] = {}
 
     # -- blocks --------------------------------------------------------------
     def exec_block(self, body: list[ast.stmt], state: State) -> State:
@@ -154,7 +161,10 @@ class Interpreter(CallEvaluator):
         if name in self.statics:
             return self.statics[name]
         if scope is not module and name in module.local_names:
-            return self._assumed_or_unknown(module.decls.get(name), name, state, node)
+            if name in self.ctx.constants.changed_globals:
+                decl = module.decls.get(name)
+                return self._assumed_or_unknown(decl, name, state, node)
+            return self._global(name, state)
         if name in BUILTINS:
             return Value("builtin", name=name)
         closure = self.function is not None and (
@@ -164,6 +174,83 @@ class Interpreter(CallEvaluator):
         if self.ctx.star_import or closure or name in module.global_names:
             return self.unknown(node)
         return Value("unknown", uninit=Uninit(name, False))
+
+    def _global(self, name: str, state: State) -> Value:
+        """A module name no function rebinds: the same value at every read in this
+        function, satisfying its refinement."""
+        if name in self.globals_read:
+            value, fact = self.globals_read[name]
+            if fact is not None and not any(f is fact for f in state.facts):
+                state.assume(fact)
+            return value
+        decl = self.scope.module().decls.get(name)
+        value = self.ctx.fresh(
+            decl.base if decl else "unknown", f"`{name}`", decl.unit if decl else None
+        )
+        self.globals_read[name] = (value, None)  # before the lookup: it may cycle
+        if decl is not None and value.term is not None:
+            fact = A.substitute(
+                decl.predicate,
+                {**self.refinement_lookup(decl, state), "_": value.term},
+            )
+            self.globals_read[name] = (value, fact)
+            state.assume(fact)
+        return value
+
+    def static_value(self, name: str) -> Value | None:
+        return self.statics.get(name)
+
+    def refinement_term(self, name: str, state: State) -> A.Expr | None:
+        """Names in refinements resolve as in code: a local, a constant, a module
+        name; `self.LIMIT` and `Node.LIMIT` to class constants."""
+        bound = state.env.get(name)
+        if isinstance(bound, Value) and bound.term is not None:
+            return bound.term
+        head, _, rest = name.partition(".")
+        local = self._is_local(head)
+        if local and rest:
+            owner = state.env.get(head)
+            if isinstance(owner, Value) and owner.kind == "instance":
+                found = self.class_constant(owner.name, rest)
+                return found.term if found is not None else None
+        if local:
+            return None
+        constant = self.scoped_constant(name, state, self._class_name())
+        if constant is not None:
+            return constant.term
+        return None if rest else self.global_term(name, state)
+
+    def global_term(self, name: str, state: State) -> A.Expr | None:
+        module = self.scope.module()
+        if (
+            self.scope is module
+            or name not in module.local_names
+            or name in self.ctx.constants.changed_globals
+        ):
+            return None  # module code: the name's binding on this path, if any
+        return self._global(name, state).term
+
+    def _class_name(self) -> str | None:
+        if self.function is not None:
+            return self.function.class_name
+        return self.scope.name if self.scope.kind == "class" else None
+
+    def _is_local(self, name: str) -> bool:
+        """Bound in this function (or an enclosing one), not a module name."""
+        scope: Scope | None = self.scope
+        while scope is not None and scope.parent is not None:
+            visible = scope.kind != "class" or scope is self.scope
+            if visible and name in scope.local_names:
+                return True
+            scope = scope.parent
+        return False
+
+    def is_read_only_table(self, node: ast.expr) -> bool:
+        return (
+            isinstance(node, ast.Name)
+            and node.id in self.ctx.constants.read_only
+            and not self._is_local(node.id)
+        )
 
     def _assumed_or_unknown(
         self, decl: Refinement | None, name: str, state: State, node: ast.AST
@@ -198,6 +285,12 @@ class Interpreter(CallEvaluator):
                 )
             bound = state.env[target.id] = replace(value, uninit=None, default_of=None)
             self.note_hover(target, lambda: self.describe_name(target.id, bound, state))
+            if self.scope.kind == "module" or (
+                self.scope.kind == "class" and self.scope.parent is self.scope.module()
+            ):
+                self.ctx.constants.record(
+                    self.scope.kind, self.scope.name, target.id, bound
+                )
         elif isinstance(target, ast.Attribute):
             base = self.eval(target.value, state)
             if base.kind == "instance" and isinstance(target.value, ast.Name):
@@ -221,9 +314,16 @@ class Interpreter(CallEvaluator):
                     state, base.ref, target.attr, value, self.site, text
                 )
         elif isinstance(target, (ast.Tuple, ast.List)):
-            for element in target.elts:
+            parts = value.elements if value.kind == "tuple" else None
+            if parts is None or len(parts) != len(target.elts):
+                parts = None
+            for index, element in enumerate(target.elts):
                 inner = element.value if isinstance(element, ast.Starred) else element
-                self.bind(inner, self.unknown(inner), state)
+                if parts is not None and inner is element:
+                    self.bind(inner, parts[index], state)
+                else:
+                    parts = None  # after a starred target the positions shift
+                    self.bind(inner, self.unknown(inner), state)
         elif isinstance(target, ast.Subscript):
             self.eval(target.value, state)
             self.eval(target.slice, state)
@@ -496,7 +596,10 @@ class Interpreter(CallEvaluator):
             )
             msg_type = self.ctx.msg_type_named(qualified) if not node.level else None
             interface = self.ctx.interface_named(qualified) if not node.level else None
-            if msg_type:
+            number = named_number(qualified) if not node.level else None
+            if number is not None:  # from math import pi
+                value = Value("float", A.Num(number, False), literal=True)
+            elif msg_type:
                 value = Value("msgclass", name=msg_type)
             elif interface:
                 value = Value("interface", name=interface)
@@ -504,6 +607,10 @@ class Interpreter(CallEvaluator):
                 value = Value("module", name=qualified)
                 self._note_unknown_interface(node, qualified)
             state.env[alias.asname or alias.name] = value
+            if number is not None:
+                self.ctx.constants.record(
+                    self.scope.kind, self.scope.name, alias.asname or alias.name, value
+                )
         return state
 
     def _note_unknown_interface(self, node: ast.ImportFrom, qualified: str) -> None:
@@ -573,6 +680,8 @@ class Interpreter(CallEvaluator):
             else ("float" if kinds <= {"int", "float", "bool"} else "unknown")
         )
         unit = x.unit if x.unit == y.unit else None
+        if kind in CONTAINERS:  # different tables on the two paths
+            return Value("unknown")
         if (
             x.kind == "msg"
             or y.kind == "msg"

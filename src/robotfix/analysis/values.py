@@ -1,7 +1,8 @@
 """Abstract values: numbers and booleans as solver terms with a unit, and messages.
 
 Values are immutable. A message is a reference into the state's heap, so that
-aliases (`m = move`) see the same fields, as in Python.
+aliases (`m = move`) see the same fields, as in Python. A tuple, list or dict display
+keeps its elements (and keys), so a constant table can be looked up.
 """
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ from robotfix.annotations import ast as A
 from robotfix.annotations.units import Unit
 
 NUMERIC = frozenset({"int", "float", "bool"})
+CONTAINERS = frozenset({"tuple", "list", "dict"})
 
 
 @dataclass(frozen=True)
@@ -25,12 +27,14 @@ class Uninit:
 
 @dataclass(frozen=True)
 class Value:
-    kind: str  # int float bool str msg msgclass module none unknown
+    kind: str  # int float bool str msg msgclass module none unknown tuple list dict
     term: A.Expr | None = None  # the solver term, for int/float/bool/str
     unit: Unit | None = None  # None: no unit known
     literal: bool = False  # a number literal: takes the unit of its context
     ref: int | None = None  # heap id, for messages
     name: str = ""  # msgclass: pkg/Name; module: dotted name
+    elements: tuple[Value, ...] | None = None  # tuple, list, dict (its values)
+    keys: tuple[Value, ...] | None = None  # dict
     uninit: Uninit | None = None
     # The product of the number literals this value was multiplied by since it got its
     # unit: `speed / 3.6` is km/h scaled by 1/3.6, which is a conversion to m/s.

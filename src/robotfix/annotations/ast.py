@@ -12,6 +12,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from fractions import Fraction
 
+from robotfix.annotations.numbers import shown_as_infinity
+
 
 @dataclass(frozen=True)
 class Num:
@@ -119,6 +121,13 @@ def join(op: str, parts: Sequence[Expr]) -> Expr:
         return parts[0]
     middle = (len(parts) + 1) // 2
     return Binary(op, join(op, parts[:middle]), join(op, parts[middle:]))
+
+
+def disjoin(parts: list[Expr]) -> Expr:
+    result: Expr | None = None
+    for part in parts:
+        result = part if result is None else Binary("or", result, part)
+    return Bool(False) if result is None else result
 
 
 def children(expr: Expr) -> tuple[Expr, ...]:
@@ -267,6 +276,9 @@ def _operand(expr: Expr, minimum: int) -> str:
 
 def _show_number(num: Num) -> str:
     value = num.value
+    infinite = None if num.is_int else shown_as_infinity(value)  # ints never overflow
+    if infinite is not None:
+        return infinite
     if max(value.numerator.bit_length(), value.denominator.bit_length()) > _EXACT_BITS:
         return _scientific(value)
     if value.denominator == 1:

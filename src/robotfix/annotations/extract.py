@@ -32,6 +32,13 @@ _HINT = re.compile(  # a comparison, a call, or `_`
     r"[<>]|[=!]=|\b(?:Unit|Frame|Tag)\s*\(|[A-Za-z_]\w*\(|(?<![\w.])_(?!\w)"
 )
 
+# Qualifiers around (or inside) `Annotated`: `Final[Annotated[float, "..."]]`.
+QUALIFIERS = frozenset(
+    f"{module}.{name}"
+    for module in ("typing", "typing_extensions")
+    for name in ("Final", "ClassVar")
+)
+
 
 @dataclass(frozen=True)
 class Refinement:
@@ -62,7 +69,9 @@ def extract(
     col_of: Callable[[int, int], int],
     known: Callable[[str], bool] = lambda name: True,
 ) -> tuple[Refinement | None, list[AnnotationProblem]]:
-    """The refinement in `node`, if it is `Annotated[base, "predicate", ...]`."""
+    """The refinement in `node`, if it is `Annotated[base, "predicate", ...]`
+    (possibly inside `Final[...]` or `ClassVar[...]`)."""
+    node = _unqualified(node, qualname)
     if not isinstance(node, ast.Subscript) or qualname(node.value) not in ANNOTATED:
         return None, []
     args = node.slice.elts if isinstance(node.slice, ast.Tuple) else [node.slice]
@@ -83,7 +92,7 @@ def extract(
             return None, [problem]
         if text.strip() and not _is_refinement(predicate, self_name):
             continue
-        base, mtype = _base(args[0], msg_type)
+        base, mtype = _base(_unqualified(args[0], qualname), msg_type)
         return _refinement(
             predicate, base, mtype, text, node.lineno, self_name, start, known
         )
@@ -222,3 +231,11 @@ def _text_start(
 def _at(start: tuple[int, int, bool], offset: int) -> tuple[int, int]:
     line, col, exact = start
     return line, col + offset if exact else col
+
+
+def _unqualified(
+    node: ast.expr, qualname: Callable[[ast.expr], str | None]
+) -> ast.expr:
+    while isinstance(node, ast.Subscript) and qualname(node.value) in QUALIFIERS:
+        node = node.slice
+    return node

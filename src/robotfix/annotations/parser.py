@@ -6,8 +6,9 @@ no parse tree is built or walked recursively, and lark's errors become
 
 Bounds, so that no annotation can hang or crash a later stage (`str()` of a huge
 integer, z3, recursive walks): the text is at most MAX_CHARS long, a number has at
-most MAX_DIGITS digits and an exponent within +-MAX_EXPONENT (every literal then fits
-a float), arithmetic on literals stays within MAX_CONSTANT_DIGITS, and the expression
+most MAX_DIGITS digits and an exponent within +-MAX_EXPONENT (every double fits,
+and no literal is far beyond one), arithmetic on literals stays within
+MAX_CONSTANT_DIGITS, and the expression
 is at most MAX_DEPTH levels deep. `and`, `or` and
 `in (...)` are built balanced, so hundreds of conjuncts or options stay shallow.
 """
@@ -24,7 +25,7 @@ from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput
 from robotfix.annotations import ast as A
 
 MAX_DIGITS = 100
-MAX_EXPONENT = 200
+MAX_EXPONENT = 400  # doubles reach 1.8e308 and 5e-324
 MAX_DEPTH = 100
 MAX_CHARS = 100_000  # parsing takes about 1 s per 100,000 characters
 MAX_CONSTANT_DIGITS = 1000  # of a product of literals; Python's str(int) stops at 4300

@@ -16,6 +16,10 @@ type; problems in installed files are kept apart (`installed_problems`), and an
 installed file with a line that does not parse is not used at all.
 When two user files define one type, the first in that order wins and the other gets
 RF510, unless both say the same (a copy, as in a colcon install/ tree).
+Constants (`uint8 ULTRASOUND=0`) come from rosbags and from user files; default values
+(`float64 w 1`) from user files and, for the standard messages, from `defaults.toml`
+(rosbags drops them). `#RobotFix#` lines may name the message's constants and `pi`,
+`math.pi`, `math.inf`...; their values are put in when the line is read.
 
 Problems in interface files come back as `CatalogProblem`s (rule, path, line, col),
 never as exceptions: one file or line RobotFix cannot process is reported there and
@@ -29,11 +33,14 @@ import os
 import sys
 from collections.abc import Collection, Mapping
 from dataclasses import dataclass, field, replace
+from fractions import Fraction
+from functools import cache
 from pathlib import Path
 from typing import Any
 
 from robotfix import messages, rules
 from robotfix.annotations import ast as A
+from robotfix.annotations.numbers import NUMBERS, named_number
 from robotfix.annotations.parser import AnnotationSyntaxError, parse_predicate
 from robotfix.annotations.units import UnitError, resolve
 from robotfix.diagnostics import Diagnostic, Note, Rule, Span
@@ -84,6 +91,8 @@ class FieldSpec:
     msg_type: str | None = None  # pkg/Name when kind == "msg"
     array: bool = False
     loose: bool = False  # char/byte: ROS 1 takes str or int there; no base-type check
+    default: Any = None  # the value of the field never set, when not 0/False/""
+    std_default: bool = False  # from a ROS 2 standard definition: ROS 1 has none
 
 
 @dataclass(frozen=True)
@@ -119,6 +128,18 @@ class CatalogProblem:
     message: str
     notes: tuple[Note, ...] = ()
     absent_package: str | None = None  # RF504: a package with no type known at all
+
+
+def constant_term(type_: str, value: Any) -> A.Expr | None:
+    """The solver term of a constant or default value of a field type."""
+    if isinstance(value, bool):
+        return A.Bool(value)
+    if isinstance(value, (int, float, Fraction)) and not isinstance(value, bool):
+        exact = Fraction(value)
+        return A.Num(exact, type_ not in FLOAT_TYPES and exact.denominator == 1)
+    if isinstance(value, str):
+        return A.Str(value)
+    return None
 
 
 def normalize(name: str) -> str:
@@ -388,10 +409,11 @@ class MsgCatalog:
         return self._specs.get(key)
 
     def _resolve_fields(self, file: InterfaceFile, section: Section) -> None:
+        spec = self._specs[section.name]
+        spec.constants.update({c.name: (c.type, c.value) for c in section.constants})
         if not section.fields:
             return
         package = section.name.split("/")[0]
-        spec = self._specs[section.name]
         resolved: dict[str, FieldSpec] = {}
         for decl in section.fields:
             fs = self._field(decl.name, decl.type, decl.array, package)
@@ -409,6 +431,8 @@ class MsgCatalog:
                         self.problems[-1], absent_package=named[0]
                     )
                 fs = FieldSpec(decl.name, "unknown", None, decl.array)
+            elif decl.default is not None and fs.kind != "msg":
+                fs = replace(fs, default=decl.default)
             resolved[decl.name] = fs
         spec.fields = resolved
 
@@ -513,15 +537,34 @@ class MsgCatalog:
                 )
                 continue
             part = A.substitute(part, {k: A.Name(v) for k, v in rename.items() if v})
+            text = A.show(part)  # as written, with the constants' names
+            part = self._put_constants(spec, part)
             paths = {n.name for n in A.names(part)}
+            if not paths:
+                continue  # names no field (`MODE_A < MODE_B`): nothing to check
             if all(
                 self._check_path(spec, p, origin, note.col + n.pos)
                 for n in A.names(part)
                 for p in [n.name]
             ):
-                spec.invariants.append(
-                    Invariant(part, frozenset(paths), A.show(part), origin)
-                )
+                spec.invariants.append(Invariant(part, frozenset(paths), text, origin))
+
+    def _put_constants(self, spec: MsgSpec, predicate: A.Expr) -> A.Expr:
+        """The message's constants and `pi`, `math.pi`... by value, where no field
+        has that name."""
+        values: dict[str, A.Expr] = {}
+        for ref in A.names(predicate):
+            name = ref.name
+            if name in values or self.field_at(spec.name, name) is not None:
+                continue
+            term: A.Expr | None = None
+            if name in spec.constants:
+                term = constant_term(*spec.constants[name])
+            elif name == "pi" or named_number(name) is not None:
+                term = A.Num(named_number(name) or NUMBERS["pi"], False)
+            if term is not None:
+                values[name] = term
+        return A.substitute(predicate, values) if values else predicate
 
     def _add_unit(
         self, spec: MsgSpec, target: str, part: A.UnitIs, origin: Origin, col: int
@@ -611,6 +654,11 @@ class MsgCatalog:
             package = key.split("/")[0]
             fs = self._field(name, type_, array, package)
             fields[name] = fs or FieldSpec(name, "unknown", None, array)
+        for name, value in (
+            _standard_defaults(STORES.get(self._distro, ("",))[0]).get(key, {}).items()
+        ):
+            if name in fields:
+                fields[name] = replace(fields[name], default=value, std_default=True)
         consts = {name: (type_, value) for name, type_, value in entry["consts"]}
         return MsgSpec(key, fields, constants=consts)
 
@@ -668,6 +716,21 @@ STORES = {
     "noetic": ("ros1_noetic", "ros2_jazzy"),
 }
 _STD_CACHES: dict[str, JsonCache] = {}
+
+
+@cache
+def _standard_defaults(store: str) -> dict[str, dict[str, Any]]:
+    """type -> field -> the default a ROS 2 standard definition in `store` gives it."""
+    data = tomllib.loads(
+        (Path(__file__).with_name("defaults.toml")).read_text(encoding="utf-8")
+    )
+    found: dict[str, dict[str, Any]] = {}
+    for entry in data["default"]:
+        if store in entry["stores"]:
+            value = entry["value"]
+            exact = Fraction(str(value)) if isinstance(value, float) else value
+            found.setdefault(entry["type"], {})[entry["field"]] = exact
+    return found
 
 
 def _std_cache(distro: str) -> JsonCache:

@@ -1,15 +1,18 @@
 """Read `.msg`, `.srv`, `.action` text into `InterfaceFile`, with `#RobotFix#` lines.
 
 Pure text processing: no ROS install, no catalog. Field types stay as written
-(`Vector3`, `float64[]`); the catalog resolves them. Problems are returned as
-`Problem`s with 1-based lines and 0-based columns, never raised.
+(`Vector3`, `float64[]`); the catalog resolves them. Constants (`uint8 MODE_A=1`) and
+default values (`float64 w 1`) are read into Python values here, by the rules rosidl
+applies to them. Problems are returned as `Problem`s with 1-based lines and 0-based
+columns, never raised.
 """
 
 from __future__ import annotations
 
 import os
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from fractions import Fraction
 from pathlib import Path
 
 from robotfix.annotations.ast import excerpt
@@ -31,11 +34,23 @@ SECTIONS = {
 }
 
 
+Literal = bool | int | Fraction | str
+
+
 @dataclass(frozen=True)
 class FieldDecl:
     name: str
     type: str  # as written: float64, Vector3, geometry_msgs/Vector3
     array: bool
+    line: int
+    default: Literal | None = None  # `float64 w 1`: the value of a field never set
+
+
+@dataclass(frozen=True)
+class ConstantDecl:
+    name: str
+    type: str  # a primitive type: uint8, float64, string, bool, ...
+    value: Literal
     line: int
 
 
@@ -53,6 +68,7 @@ class Section:
     name: str  # pkg/Name, pkg/Name_Request, ...
     fields: tuple[FieldDecl, ...]
     annotations: tuple[AnnotationLine, ...]
+    constants: tuple[ConstantDecl, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -111,6 +127,7 @@ def _read_section(
 ) -> Section:
     fields: list[FieldDecl] = []
     notes: list[AnnotationLine] = []
+    constants: list[ConstantDecl] = []
     for number, raw in chunk:
         code, annotation = _split_comment(raw)
         if annotation is not None:
@@ -118,18 +135,73 @@ def _read_section(
         code = code.strip()
         if not code:
             continue
+        column = len(raw) - len(raw.lstrip())
         match = _FIELD.match(code)
         if match is None:
-            problems.append(
-                Problem(number, len(raw) - len(raw.lstrip()), _bad_line(code))
-            )
+            problems.append(Problem(number, column, _bad_line(code)))
             continue
-        if match["rest"].startswith("="):
-            continue  # a constant
-        fields.append(
-            FieldDecl(match["name"], match["type"], match["array"] is not None, number)
-        )
-    return Section(name, tuple(fields), tuple(notes))
+        rest, array = match["rest"].strip(), match["array"] is not None
+        if rest.startswith("="):
+            value = _value(match["type"], rest[1:].strip(), code, "constant")
+            if isinstance(value, Problem):
+                problems.append(replace(value, line=number, col=column))
+            elif value is not None and not array:
+                constants.append(
+                    ConstantDecl(match["name"], match["type"], value, number)
+                )
+            continue
+        default = None
+        if rest and not array:  # array defaults are not modelled (arrays are unknown)
+            found = _value(match["type"], rest, code, "default")
+            if isinstance(found, Problem):
+                problems.append(replace(found, line=number, col=column))
+            else:
+                default = found
+        fields.append(FieldDecl(match["name"], match["type"], array, number, default))
+    return Section(name, tuple(fields), tuple(notes), tuple(constants))
+
+
+INTEGERS = frozenset(
+    {"byte", "char", "int8", "uint8", "int16", "uint16", "int32", "uint32"}
+    | {"int64", "uint64"}
+)
+FLOATS = frozenset({"float32", "float64"})
+PRIMITIVES = INTEGERS | FLOATS | {"bool", "string", "wstring"}
+
+
+def literal_of(type_: str, text: str) -> Literal | None:
+    """The value of a constant or default written `text`, for a primitive `type_`:
+    None when `type_` is not primitive or the value is not modelled (`inf`); raises
+    ValueError when the text is not a value of the type. Reals are read exactly
+    (`0.1` is 1/10, as in annotations)."""
+    if type_ in INTEGERS:
+        try:
+            return int(text)
+        except ValueError:
+            return int(text, 0)  # 0x1F
+    if type_ in FLOATS:
+        try:
+            return Fraction(text)
+        except (ValueError, ZeroDivisionError):
+            float(text)  # inf and nan are valid, but not modelled
+            return None
+    if type_ == "bool":
+        found = {"true": True, "1": True, "false": False, "0": False}.get(text.lower())
+        if found is None:
+            raise ValueError(text)
+        return found
+    if type_ in ("string", "wstring"):
+        if len(text) >= 2 and text[0] == text[-1] and text[0] in "'\"":
+            return text[1:-1]
+        return text  # ROS 1 writes string constants unquoted
+    return None
+
+
+def _value(type_: str, text: str, code: str, what: str) -> Literal | Problem | None:
+    try:
+        return literal_of(type_, text)
+    except ValueError:
+        return Problem(0, 0, f"cannot read the {what} value of `{code}` as {type_}")
 
 
 def _split_comment(line: str) -> tuple[str, tuple[int, str] | None]:

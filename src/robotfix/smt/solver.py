@@ -15,6 +15,7 @@ import z3
 
 from robotfix.analysis.vc import VC, Proved, Undecided, Unproven, Verdict, Violated
 from robotfix.annotations import ast as A
+from robotfix.annotations.numbers import shown_as_infinity
 from robotfix.smt.encode import Encoder
 
 # A work budget, not wall-clock time: the same input stops at the same point on any
@@ -104,6 +105,9 @@ def _show(value: Any) -> str:
 
 
 def _decimal(value: Fraction) -> str:
+    infinite = shown_as_infinity(value)
+    if infinite is not None:
+        return infinite
     if value.denominator == 1:
         return str(value.numerator)
     as_float = float(value)

@@ -29,7 +29,8 @@ def send(pub: rospy.Publisher, requested: float) -> None:
     cmd = Twist()
     cmd.linear.x = clamp(requested, MAX)
     safe: Annotated[float, "abs(_) <= 1"] = clamp(requested, 1.0)
-    unsure: Annotated[float, "abs(_) <= 1"] = clamp(requested, MAX)  # warning: RF102
+    known: Annotated[float, "abs(_) <= 1"] = clamp(requested, MAX)  # MAX is 1.0
+    unsure: Annotated[float, "abs(_) <= 1"] = clamp(requested, 2 * MAX)  # warning: RF102
     cmd.linear.y = clamp(requested, 0)  # error: RF101
     cmd.linear.z = clamp(limit=MAX, v=requested)
     pub.publish(cmd)
