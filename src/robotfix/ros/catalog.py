@@ -24,6 +24,7 @@ skipped, and the run goes on.
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import os
 import sys
@@ -99,6 +100,18 @@ class FieldUnit:
     text: str
     origin: Origin | None  # None for REP 103 (see `source`)
     source: str = ""
+
+
+COMMENT = "comment"  # FieldUnit.source of a unit from a user file's comment
+
+
+def is_comment_unit(text: str) -> bool:
+    """Whether the text of a `[...]` in a comment is a unit pint reads (not a tag,
+    not a typo, nothing pint should not evaluate)."""
+    try:
+        return not resolve(text).is_label
+    except UnitError:
+        return False
 
 
 @dataclass
@@ -293,6 +306,7 @@ class MsgCatalog:
                     )
         for file in files:
             for section in file.sections:
+                self._add_comment_units(file.path, section)
                 self._add_annotations(file.path, section)
 
     def _read(self, path: Path) -> tuple[InterfaceFile, str] | None:
@@ -381,6 +395,7 @@ class MsgCatalog:
                     self._resolve_fields(parsed, section)
             for section in parsed.sections:
                 if section.name in self._installed_keys:
+                    self._add_comment_units(parsed.path, section)
                     self._add_annotations(parsed.path, section)
         finally:
             self.installed_problems.extend(self.problems)
@@ -444,6 +459,17 @@ class MsgCatalog:
             or key in self._standard()
             or (self._installed is not None and self._installed.find(key) is not None)
         )
+
+    def _add_comment_units(self, path: str, section: Section) -> None:
+        """Units in the comments of the section's number fields (rosidl's `[m]`),
+        where pint reads them as a unit; a `#RobotFix#` Unit() replaces them."""
+        spec = self._specs[section.name]
+        for found in section.units:
+            field = spec.fields.get(found.field)
+            if field is not None and field.kind in ("int", "float"):
+                if is_comment_unit(found.text):
+                    origin = Origin(path, found.line)
+                    spec.units[found.field] = FieldUnit(found.text, origin, COMMENT)
 
     def _add_annotations(self, path: str, section: Section) -> None:
         spec = self._specs[section.name]
@@ -540,7 +566,12 @@ class MsgCatalog:
                 )
                 return
         old = spec.units.get(target)
-        if old is None or old.origin is None or _kind(old.text) != part.kind:
+        if (
+            old is None
+            or old.origin is None
+            or old.source == COMMENT
+            or _kind(old.text) != part.kind
+        ):
             spec.units[target] = FieldUnit(text, origin)  # REP 103 is overridden
         elif not _same_label(old.text, text):
             shown = old.text if part.kind == "unit" else old.text.partition(":")[2]
@@ -612,7 +643,26 @@ class MsgCatalog:
             fs = self._field(name, type_, array, package)
             fields[name] = fs or FieldSpec(name, "unknown", None, array)
         consts = {name: (type_, value) for name, type_, value in entry["consts"]}
-        return MsgSpec(key, fields, constants=consts)
+        units = {
+            name: FieldUnit(unit, None, note)
+            for name, (unit, note) in _standard_comment_units().get(key, {}).items()
+            if name in fields and fields[name].kind in ("int", "float")
+        }
+        return MsgSpec(key, fields, units, constants=consts)
+
+
+@functools.cache
+def _standard_comment_units() -> dict[str, dict[str, tuple[str, str]]]:
+    """type -> field -> (unit, where it is written) from `comment_units.toml`: the
+    units rosidl reads from the comments of the standard interface files."""
+    text = Path(__file__).with_name("comment_units.toml").read_text("utf-8")
+    return {
+        entry["type"]: {
+            name: (unit, f"{entry['file']} comment: `{entry['comments'][name]}`")
+            for name, unit in entry["units"].items()
+        }
+        for entry in tomllib.loads(text)["message"]
+    }
 
 
 def _distinct(paths: list[Path]) -> list[Path]:

@@ -9,10 +9,11 @@ from __future__ import annotations
 
 import os
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 from robotfix.annotations.ast import excerpt
+from robotfix.ros.comments import CommentUnit, comment_units
 from robotfix.ros.package import package_name
 
 MARKER = re.compile(r"#\s*robotfix\s*#", re.IGNORECASE)
@@ -24,6 +25,7 @@ _FIELD = re.compile(
     r"^(?P<type>[A-Za-z_][\w/]*)(?P<bound><=\d+)?(?P<array>\[(?:<=)?\d*\])?"
     r"\s+(?P<name>[A-Za-z_]\w*)\s*(?P<rest>.*)$"
 )
+_OPTIONAL = re.compile(r"^\s*@optional\s+(?=[A-Za-z_])")
 SECTIONS = {
     ".msg": ("",),
     ".srv": ("_Request", "_Response"),
@@ -53,6 +55,7 @@ class Section:
     name: str  # pkg/Name, pkg/Name_Request, ...
     fields: tuple[FieldDecl, ...]
     annotations: tuple[AnnotationLine, ...]
+    units: tuple[CommentUnit, ...] = ()  # `[m]` in comments, by rosidl's rule
 
 
 @dataclass(frozen=True)
@@ -82,10 +85,25 @@ def read_interface(path: Path, text: str) -> InterfaceFile:
         else:
             chunks[-1].append((number, line))
     sections = tuple(
-        _read_section(f"{package}/{name}{suffix}", chunk, problems)
+        replace(
+            _read_section(f"{package}/{name}{suffix}", _plain(chunk), problems),
+            units=comment_units(chunk),
+        )
         for suffix, chunk in zip(suffixes, chunks, strict=False)
     )
     return InterfaceFile(str(path), package, sections, tuple(problems))
+
+
+def _plain(chunk: list[tuple[int, str]]) -> list[tuple[int, str]]:
+    """The lines with what a field line may carry before its type blanked out
+    (rosidl's `@optional string s`), so columns stay where they are."""
+    out = []
+    for number, line in chunk:
+        match = _OPTIONAL.match(line)
+        if match is not None:
+            line = " " * match.end() + line[match.end() :]
+        out.append((number, line))
+    return out
 
 
 def _name_of(path: Path, lines: list[str]) -> tuple[str, str, int]:
