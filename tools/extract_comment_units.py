@@ -84,7 +84,12 @@ def _render(
         if not fields:
             continue
         first = next(iter(fields.values()))
-        out += ["", "[[message]]", f"type = {_quote(name)}", f"file = {_quote(first[1])}"]
+        out += [
+            "",
+            "[[message]]",
+            f"type = {_quote(name)}",
+            f"file = {_quote(first[1])}",
+        ]
         units = ", ".join(f"{_quote(k)} = {_quote(v[0])}" for k, v in fields.items())
         out.append(f"units = {{ {units} }}")
         out.append("[message.comments]")

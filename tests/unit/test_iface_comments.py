@@ -8,7 +8,7 @@ message's; exactly one `[...]` without a comma is the unit.
 
 from __future__ import annotations
 
-import tomllib
+import sys
 from pathlib import Path
 
 import pytest
@@ -20,6 +20,11 @@ from robotfix.annotations.units import resolve
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.ros.comments import comment_units, unit_in
 from robotfix.ros.msg import read_interface
+
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # pragma: no cover
+    import tomli as tomllib
 
 ROS = Path(__file__).resolve().parents[2] / "src" / "robotfix" / "ros"
 

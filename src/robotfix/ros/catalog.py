@@ -103,6 +103,32 @@ class FieldUnit:
 
 
 COMMENT = "comment"  # FieldUnit.source of a unit from a user file's comment
+SUFFIX = "suffix"  # ... and of one from a field name's suffix (`unit_suffixes`)
+# Autoware's message guidelines: the suffix of a field in a unit that is not SI's.
+# `_min` (minute) and `_nm` (nanometre) are left out: `range_min` is a minimum and
+# `torque_nm` is in newton metres far more often.
+UNIT_SUFFIXES = {
+    "_um": "um",
+    "_mm": "mm",
+    "_km": "km",
+    "_deg": "degree",
+    "_ns": "ns",
+    "_us": "us",
+    "_ms": "ms",
+    "_hour": "hour",
+    "_kmph": "km/h",
+}
+
+
+NUMBERS = ("int", "float")
+
+
+def suffix_unit(name: str) -> str | None:
+    """The unit a field's name ends in by Autoware's guidelines (`timeout_ms`)."""
+    for suffix, unit in UNIT_SUFFIXES.items():
+        if name.endswith(suffix) and len(name) > len(suffix):
+            return unit
+    return None
 
 
 def is_comment_unit(text: str) -> bool:
@@ -152,8 +178,10 @@ class MsgCatalog:
         texts: Mapping[Path, str] | None = None,
         installed: InstallSpace | None = None,
         preferred: Collection[Path] = (),
+        unit_suffixes: bool = False,
     ) -> None:
-        """`texts`: the content of files an editor has open, for those files."""
+        """`texts`: the content of files an editor has open, for those files;
+        `unit_suffixes`: a number field named `*_ms`, `*_deg`, ... has that unit."""
         self._std: dict[str, Any] | None = None
         self._specs: dict[str, MsgSpec] = {}
         # order decides duplicates: the checked packages' files first, then the rest
@@ -165,6 +193,7 @@ class MsgCatalog:
         )
         self._texts = dict(texts or {})
         self._rep103 = rep103
+        self._unit_suffixes = unit_suffixes
         self._distro = distro
         self._loaded = False
         self.problems: list[CatalogProblem] = []
@@ -461,15 +490,26 @@ class MsgCatalog:
         )
 
     def _add_comment_units(self, path: str, section: Section) -> None:
-        """Units in the comments of the section's number fields (rosidl's `[m]`),
-        where pint reads them as a unit; a `#RobotFix#` Unit() replaces them."""
+        """Units of the section's number fields from their names' suffixes (if
+        `unit_suffixes`), replaced by those in their comments (rosidl's `[m]`, where
+        pint reads them as a unit); a `#RobotFix#` Unit() replaces both."""
         spec = self._specs[section.name]
+        if self._unit_suffixes:
+            for decl in section.fields:
+                unit = suffix_unit(decl.name)
+                field = spec.fields.get(decl.name)
+                if unit is not None and field is not None and field.kind in NUMBERS:
+                    origin = Origin(path, decl.line)
+                    spec.units[decl.name] = FieldUnit(unit, origin, SUFFIX)
         for found in section.units:
             field = spec.fields.get(found.field)
-            if field is not None and field.kind in ("int", "float"):
-                if is_comment_unit(found.text):
-                    origin = Origin(path, found.line)
-                    spec.units[found.field] = FieldUnit(found.text, origin, COMMENT)
+            if (
+                field is not None
+                and field.kind in NUMBERS
+                and is_comment_unit(found.text)
+            ):
+                origin = Origin(path, found.line)
+                spec.units[found.field] = FieldUnit(found.text, origin, COMMENT)
 
     def _add_annotations(self, path: str, section: Section) -> None:
         spec = self._specs[section.name]
@@ -569,7 +609,7 @@ class MsgCatalog:
         if (
             old is None
             or old.origin is None
-            or old.source == COMMENT
+            or old.source in (COMMENT, SUFFIX)
             or _kind(old.text) != part.kind
         ):
             spec.units[target] = FieldUnit(text, origin)  # REP 103 is overridden
@@ -646,7 +686,7 @@ class MsgCatalog:
         units = {
             name: FieldUnit(unit, None, note)
             for name, (unit, note) in _standard_comment_units().get(key, {}).items()
-            if name in fields and fields[name].kind in ("int", "float")
+            if name in fields and fields[name].kind in NUMBERS
         }
         return MsgSpec(key, fields, units, constants=consts)
 
