@@ -40,6 +40,7 @@ from robotfix.annotations.units import UnitError, resolve
 from robotfix.diagnostics import Diagnostic, Note, Rule, Span
 from robotfix.disk_cache import JsonCache, install_key
 from robotfix.fs import UnreadableError, read_text
+from robotfix.ros.comments import CommentUnit
 from robotfix.ros.install import InstallSpace
 from robotfix.ros.msg import InterfaceFile, Section, read_interface
 
@@ -187,9 +188,11 @@ class MsgCatalog:
         # order decides duplicates: the checked packages' files first, then the rest
         # in the order given (msg paths, then path order)
         chosen = {str(path) for path in preferred}
-        self._files = _distinct(
-            [p for p in interface_files if str(p) in chosen]
-            + [p for p in interface_files if str(p) not in chosen]
+        self._files = _without_twins(
+            _distinct(
+                [p for p in interface_files if str(p) in chosen]
+                + [p for p in interface_files if str(p) not in chosen]
+            )
         )
         self._texts = dict(texts or {})
         self._rep103 = rep103
@@ -503,6 +506,8 @@ class MsgCatalog:
                     spec.units[decl.name] = FieldUnit(unit, origin, SUFFIX)
         for found in section.units:
             field = spec.fields.get(found.field)
+            if found.strict and not self._unit_ok(path, found):
+                continue
             if (
                 field is not None
                 and field.kind in NUMBERS
@@ -510,6 +515,16 @@ class MsgCatalog:
             ):
                 origin = Origin(path, found.line)
                 spec.units[found.field] = FieldUnit(found.text, origin, COMMENT)
+
+    def _unit_ok(self, path: str, found: CommentUnit) -> bool:
+        """An IDL `@unit` that is a typo of a unit (or unsafe for pint) is RF502;
+        a word that is no unit at all (rosidl copies `[enum]`) is only ignored."""
+        try:
+            resolve(found.text)
+        except UnitError as err:
+            self._problem(rules.UNKNOWN_UNIT, path, found.line, found.col, err.message)
+            return False
+        return True
 
     def _add_annotations(self, path: str, section: Section) -> None:
         spec = self._specs[section.name]
@@ -533,7 +548,7 @@ class MsgCatalog:
                     )
                 )
                 continue
-            own = field_lines.get(note.line)
+            own = note.field or field_lines.get(note.line)
             origin = Origin(path, note.line)
             try:
                 self._add_predicate(spec, predicate, own, origin, note)
@@ -716,6 +731,22 @@ def _distinct(paths: list[Path]) -> list[Path]:
             seen.add(key)
             out.append(path)
     return out
+
+
+def _without_twins(paths: list[Path]) -> list[Path]:
+    """`paths` less each `.idl` that has a `.msg`/`.srv`/`.action` of its name in
+    its folder (rosidl's output beside its input, as in an install space): they
+    define one type, and the file the user writes is the one read."""
+    given = {os.path.normcase(os.path.abspath(p)) for p in paths}
+
+    def twin(path: Path) -> bool:
+        stem = os.path.abspath(path.with_suffix(""))
+        return any(
+            os.path.normcase(stem + suffix) in given
+            for suffix in (".msg", ".srv", ".action")
+        )
+
+    return [p for p in paths if p.suffix != ".idl" or not twin(p)]
 
 
 def _shape(section: Section) -> tuple[Any, ...]:

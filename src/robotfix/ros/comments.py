@@ -35,6 +35,8 @@ class CommentUnit:
     field: str
     text: str  # between the brackets, stripped
     line: int  # the line holding the brackets
+    col: int = 0
+    strict: bool = False  # written as a unit (IDL `@unit`): a typo is reported
 
 
 @dataclass

@@ -46,6 +46,7 @@ class AnnotationLine:
     text: str  # the predicate after the marker
     line: int
     col: int  # where the predicate starts on its line
+    field: str | None = None  # the field `_` names, when not the one on `line`
 
 
 @dataclass(frozen=True)
@@ -56,6 +57,7 @@ class Section:
     fields: tuple[FieldDecl, ...]
     annotations: tuple[AnnotationLine, ...]
     units: tuple[CommentUnit, ...] = ()  # `[m]` in comments, by rosidl's rule
+    defaults: tuple[tuple[str, str], ...] = ()  # (field, value as in .msg): IDL's
 
 
 @dataclass(frozen=True)
@@ -74,6 +76,10 @@ class InterfaceFile:
 
 
 def read_interface(path: Path, text: str) -> InterfaceFile:
+    if path.suffix == ".idl":
+        from robotfix.ros.idl import read_idl  # idl builds on this module
+
+        return read_idl(path, text)
     lines = text.removeprefix("\ufeff").splitlines()
     package, name, first_body = _name_of(path, lines)
     suffixes = SECTIONS.get(path.suffix, ("",))
