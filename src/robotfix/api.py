@@ -84,7 +84,9 @@ def check_source(
     config = config or Config()
     if catalog is None:
         catalog = MsgCatalog(
-            interface_files(list(config.msg_paths)), rep103=config.rep103
+            interface_files(list(config.msg_paths)),
+            rep103=config.rep103,
+            unit_suffixes=config.unit_suffixes,
         )
     return finish(_check(SourceFile.from_text(path, text), catalog))
 

@@ -42,6 +42,7 @@ def run_key(config: Config) -> str:
         f"format {FORMAT}",
         f"python {sys.version_info[0]}.{sys.version_info[1]}",
         f"rep103 {config.rep103}",
+        f"unit suffixes {config.unit_suffixes}",
         f"distro {config.ros_distro}",
         install_key("pint", ""),
         install_key("rosbags", ""),

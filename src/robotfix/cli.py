@@ -75,6 +75,12 @@ def build_parser() -> argparse.ArgumentParser:
         help="do not assume the REP 103 units of standard messages",
     )
     check.add_argument(
+        "--unit-suffixes",
+        action="store_true",
+        default=None,
+        help="interface fields named *_ms, *_deg, *_kmph, ... have those units",
+    )
+    check.add_argument(
         "--exclude",
         action="append",
         default=[],
@@ -303,6 +309,8 @@ def merge_flags(settings: Config, args: argparse.Namespace) -> Config:
         output_format=args.format or settings.output_format,
         exclude=settings.exclude + tuple(args.exclude),
         ros_distro=args.ros_distro or settings.ros_distro,
+        unit_suffixes=settings.unit_suffixes
+        or bool(getattr(args, "unit_suffixes", None)),
     )
 
 

@@ -1,7 +1,8 @@
 """Config: the settings of a run, from flags and `[tool.robotfix]` in pyproject.toml.
 
 `pyproject.toml` is found by walking up from the first checked path. Keys use the
-flags' spelling: `msg-paths` (relative to that file), `strict`, `rep103`, `format`.
+flags' spelling: `msg-paths` (relative to that file), `strict`, `rep103`, `format`,
+`unit-suffixes`.
 """
 
 from __future__ import annotations
@@ -29,6 +30,7 @@ KEYS = {
     "exclude",
     "per-file-ignores",
     "ros-distro",
+    "unit-suffixes",
 }
 FORMATS = ("text", "concise", "json", "sarif", "github")
 MAX_PYPROJECT_BYTES = 4 * 1024 * 1024  # a real pyproject.toml is a few kB
@@ -48,6 +50,7 @@ class Config:
     exclude: tuple[str, ...] = ()  # gitignore-style patterns
     per_file_ignores: tuple[tuple[str, frozenset[str]], ...] = ()  # (pattern, codes)
     ros_distro: str = "ros2"
+    unit_suffixes: bool = False  # interface fields named `*_ms`, `*_deg` have units
     root: Path = field(
         default_factory=Path.cwd, compare=False
     )  # patterns are relative to it
@@ -174,7 +177,7 @@ def _apply(config: Config, table: Any, path: Path) -> Config:
         )
     msg_paths = _strings(table, "msg-paths", path)
     exclude = _strings(table, "exclude", path)
-    for key in ("strict", "rep103"):
+    for key in ("strict", "rep103", "unit-suffixes"):
         if key in table and not isinstance(table[key], bool):
             raise ConfigError(f"{path}: `{key}` must be true or false")
     fmt = table.get("format", config.output_format)
@@ -202,6 +205,7 @@ def _apply(config: Config, table: Any, path: Path) -> Config:
         per_file_ignores=config.per_file_ignores
         + tuple((k, frozenset(v)) for k, v in ignores.items()),
         ros_distro=distro,
+        unit_suffixes=table.get("unit-suffixes", config.unit_suffixes),
         root=path.parent,
         source=path,
     )

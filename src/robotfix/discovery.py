@@ -36,7 +36,7 @@ from robotfix.diagnostics import Diagnostic
 from robotfix.fs import UnreadableError, read_head, within
 from robotfix.ros.install import IGNORE_MARKERS, InstallSpace
 
-INTERFACE_SUFFIXES = (".msg", ".srv", ".action")
+INTERFACE_SUFFIXES = (".msg", ".srv", ".action", ".idl")
 INTERFACE_FOLDERS = ("msg", "srv", "action")
 SKIPPED_FOLDERS = ("__pycache__", "node_modules")  # and every hidden folder
 WORKSPACE_OUTPUT = ("build", "install", "log", "logs", "devel")  # colcon, catkin

@@ -132,6 +132,7 @@ def _catalog(interfaces: _Interfaces, config: Config) -> MsgCatalog:
     return MsgCatalog(
         interfaces.files,
         rep103=config.rep103,
+        unit_suffixes=config.unit_suffixes,
         distro=config.ros_distro,
         installed=interfaces.installed,
         preferred=interfaces.preferred,

@@ -186,6 +186,7 @@ def _catalog(paths: list[Path], msg_paths: list[Path], settings: Config) -> MsgC
     return MsgCatalog(
         api.interface_files(folders),
         rep103=settings.rep103,
+        unit_suffixes=settings.unit_suffixes,
         distro=settings.ros_distro,
         installed=install_space(),
     )

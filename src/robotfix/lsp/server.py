@@ -63,7 +63,7 @@ def _catalog(ls: LanguageServer, path: Path) -> MsgCatalog:
     if _is_interface(path) and path not in files:
         files.append(path)  # a loose interface file still shows its own problems
     texts = _open_texts(ls, files)
-    key = (tuple(files), settings.rep103, settings.ros_distro)
+    key = (tuple(files), settings.rep103, settings.ros_distro, settings.unit_suffixes)
     stamp = (tuple(_stamp(file) for file in files), tuple(sorted(texts.items())))
     cached = _catalogs.get(key)
     if cached is not None and cached[0] == stamp:
@@ -71,6 +71,7 @@ def _catalog(ls: LanguageServer, path: Path) -> MsgCatalog:
     catalog = MsgCatalog(
         files,
         rep103=settings.rep103,
+        unit_suffixes=settings.unit_suffixes,
         distro=settings.ros_distro,
         texts=texts,
         installed=_INSTALLED,  # the install space the editor's environment sourced

@@ -28,6 +28,7 @@ skipped, and the run goes on.
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import os
 import sys
@@ -46,6 +47,7 @@ from robotfix.annotations.units import UnitError, resolve
 from robotfix.diagnostics import Diagnostic, Note, Rule, Span
 from robotfix.disk_cache import JsonCache, install_key
 from robotfix.fs import UnreadableError, read_text
+from robotfix.ros.comments import CommentUnit
 from robotfix.ros.install import InstallSpace
 from robotfix.ros.msg import InterfaceFile, Section, read_interface
 
@@ -110,6 +112,44 @@ class FieldUnit:
     source: str = ""
 
 
+COMMENT = "comment"  # FieldUnit.source of a unit from a user file's comment
+SUFFIX = "suffix"  # ... and of one from a field name's suffix (`unit_suffixes`)
+# Autoware's message guidelines: the suffix of a field in a unit that is not SI's.
+# `_min` (minute) and `_nm` (nanometre) are left out: `range_min` is a minimum and
+# `torque_nm` is in newton metres far more often.
+UNIT_SUFFIXES = {
+    "_um": "um",
+    "_mm": "mm",
+    "_km": "km",
+    "_deg": "degree",
+    "_ns": "ns",
+    "_us": "us",
+    "_ms": "ms",
+    "_hour": "hour",
+    "_kmph": "km/h",
+}
+
+
+NUMBER_KINDS = ("int", "float")
+
+
+def suffix_unit(name: str) -> str | None:
+    """The unit a field's name ends in by Autoware's guidelines (`timeout_ms`)."""
+    for suffix, unit in UNIT_SUFFIXES.items():
+        if name.endswith(suffix) and len(name) > len(suffix):
+            return unit
+    return None
+
+
+def is_comment_unit(text: str) -> bool:
+    """Whether the text of a `[...]` in a comment is a unit pint reads (not a tag,
+    not a typo, nothing pint should not evaluate)."""
+    try:
+        return not resolve(text).is_label
+    except UnitError:
+        return False
+
+
 @dataclass
 class MsgSpec:
     name: str
@@ -160,19 +200,24 @@ class MsgCatalog:
         texts: Mapping[Path, str] | None = None,
         installed: InstallSpace | None = None,
         preferred: Collection[Path] = (),
+        unit_suffixes: bool = False,
     ) -> None:
-        """`texts`: the content of files an editor has open, for those files."""
+        """`texts`: the content of files an editor has open, for those files;
+        `unit_suffixes`: a number field named `*_ms`, `*_deg`, ... has that unit."""
         self._std: dict[str, Any] | None = None
         self._specs: dict[str, MsgSpec] = {}
         # order decides duplicates: the checked packages' files first, then the rest
         # in the order given (msg paths, then path order)
         chosen = {str(path) for path in preferred}
-        self._files = _distinct(
-            [p for p in interface_files if str(p) in chosen]
-            + [p for p in interface_files if str(p) not in chosen]
+        self._files = _without_twins(
+            _distinct(
+                [p for p in interface_files if str(p) in chosen]
+                + [p for p in interface_files if str(p) not in chosen]
+            )
         )
         self._texts = dict(texts or {})
         self._rep103 = rep103
+        self._unit_suffixes = unit_suffixes
         self._distro = distro
         self._loaded = False
         self.problems: list[CatalogProblem] = []
@@ -314,6 +359,7 @@ class MsgCatalog:
                     )
         for file in files:
             for section in file.sections:
+                self._add_comment_units(file.path, section)
                 self._add_annotations(file.path, section)
 
     def _read(self, path: Path) -> tuple[InterfaceFile, str] | None:
@@ -402,6 +448,7 @@ class MsgCatalog:
                     self._resolve_fields(parsed, section)
             for section in parsed.sections:
                 if section.name in self._installed_keys:
+                    self._add_comment_units(parsed.path, section)
                     self._add_annotations(parsed.path, section)
         finally:
             self.installed_problems.extend(self.problems)
@@ -469,6 +516,44 @@ class MsgCatalog:
             or (self._installed is not None and self._installed.find(key) is not None)
         )
 
+    def _add_comment_units(self, path: str, section: Section) -> None:
+        """Units of the section's number fields from their names' suffixes (if
+        `unit_suffixes`), replaced by those in their comments (rosidl's `[m]`, where
+        pint reads them as a unit); a `#RobotFix#` Unit() replaces both."""
+        spec = self._specs[section.name]
+        if self._unit_suffixes:
+            for decl in section.fields:
+                unit = suffix_unit(decl.name)
+                field = spec.fields.get(decl.name)
+                if (
+                    unit is not None
+                    and field is not None
+                    and field.kind in NUMBER_KINDS
+                ):
+                    origin = Origin(path, decl.line)
+                    spec.units[decl.name] = FieldUnit(unit, origin, SUFFIX)
+        for found in section.units:
+            field = spec.fields.get(found.field)
+            if found.strict and not self._unit_ok(path, found):
+                continue
+            if (
+                field is not None
+                and field.kind in NUMBER_KINDS
+                and is_comment_unit(found.text)
+            ):
+                origin = Origin(path, found.line)
+                spec.units[found.field] = FieldUnit(found.text, origin, COMMENT)
+
+    def _unit_ok(self, path: str, found: CommentUnit) -> bool:
+        """An IDL `@unit` that is a typo of a unit (or unsafe for pint) is RF502;
+        a word that is no unit at all (rosidl copies `[enum]`) is only ignored."""
+        try:
+            resolve(found.text)
+        except UnitError as err:
+            self._problem(rules.UNKNOWN_UNIT, path, found.line, found.col, err.message)
+            return False
+        return True
+
     def _add_annotations(self, path: str, section: Section) -> None:
         spec = self._specs[section.name]
         field_lines = {decl.line: decl.name for decl in section.fields}
@@ -491,7 +576,7 @@ class MsgCatalog:
                     )
                 )
                 continue
-            own = field_lines.get(note.line)
+            own = note.field or field_lines.get(note.line)
             origin = Origin(path, note.line)
             try:
                 self._add_predicate(spec, predicate, own, origin, note)
@@ -583,7 +668,12 @@ class MsgCatalog:
                 )
                 return
         old = spec.units.get(target)
-        if old is None or old.origin is None or _kind(old.text) != part.kind:
+        if (
+            old is None
+            or old.origin is None
+            or old.source in (COMMENT, SUFFIX)
+            or _kind(old.text) != part.kind
+        ):
             spec.units[target] = FieldUnit(text, origin)  # REP 103 is overridden
         elif not _same_label(old.text, text):
             shown = old.text if part.kind == "unit" else old.text.partition(":")[2]
@@ -660,7 +750,26 @@ class MsgCatalog:
             if name in fields:
                 fields[name] = replace(fields[name], default=value, std_default=True)
         consts = {name: (type_, value) for name, type_, value in entry["consts"]}
-        return MsgSpec(key, fields, constants=consts)
+        units = {
+            name: FieldUnit(unit, None, note)
+            for name, (unit, note) in _standard_comment_units().get(key, {}).items()
+            if name in fields and fields[name].kind in NUMBER_KINDS
+        }
+        return MsgSpec(key, fields, units, constants=consts)
+
+
+@functools.cache
+def _standard_comment_units() -> dict[str, dict[str, tuple[str, str]]]:
+    """type -> field -> (unit, where it is written) from `comment_units.toml`: the
+    units rosidl reads from the comments of the standard interface files."""
+    text = Path(__file__).with_name("comment_units.toml").read_text("utf-8")
+    return {
+        entry["type"]: {
+            name: (unit, f"{entry['file']} comment: `{entry['comments'][name]}`")
+            for name, unit in entry["units"].items()
+        }
+        for entry in tomllib.loads(text)["message"]
+    }
 
 
 def _distinct(paths: list[Path]) -> list[Path]:
@@ -674,6 +783,22 @@ def _distinct(paths: list[Path]) -> list[Path]:
             seen.add(key)
             out.append(path)
     return out
+
+
+def _without_twins(paths: list[Path]) -> list[Path]:
+    """`paths` less each `.idl` that has a `.msg`/`.srv`/`.action` of its name in
+    its folder (rosidl's output beside its input, as in an install space): they
+    define one type, and the file the user writes is the one read."""
+    given = {os.path.normcase(os.path.abspath(p)) for p in paths}
+
+    def twin(path: Path) -> bool:
+        stem = os.path.abspath(path.with_suffix(""))
+        return any(
+            os.path.normcase(stem + suffix) in given
+            for suffix in (".msg", ".srv", ".action")
+        )
+
+    return [p for p in paths if p.suffix != ".idl" or not twin(p)]
 
 
 def _shape(section: Section) -> tuple[Any, ...]:

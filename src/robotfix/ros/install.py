@@ -93,6 +93,10 @@ class InstallSpace:
             path = folder / kind / f"{stem}.{kind}"
             if os.path.isfile(path):
                 return path
+        for kind, stem in candidates:  # a package written in IDL
+            path = folder / kind / f"{stem}.idl"
+            if os.path.isfile(path):
+                return path
         return None
 
     def _package(self, package: str) -> Path | None:

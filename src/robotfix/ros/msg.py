@@ -16,6 +16,7 @@ from fractions import Fraction
 from pathlib import Path
 
 from robotfix.annotations.ast import excerpt
+from robotfix.ros.comments import CommentUnit, comment_units
 from robotfix.ros.package import package_name
 
 MARKER = re.compile(r"#\s*robotfix\s*#", re.IGNORECASE)
@@ -27,6 +28,7 @@ _FIELD = re.compile(
     r"^(?P<type>[A-Za-z_][\w/]*)(?P<bound><=\d+)?(?P<array>\[(?:<=)?\d*\])?"
     r"\s+(?P<name>[A-Za-z_]\w*)\s*(?P<rest>.*)$"
 )
+_OPTIONAL = re.compile(r"^\s*@optional\s+(?=[A-Za-z_])")
 SECTIONS = {
     ".msg": ("",),
     ".srv": ("_Request", "_Response"),
@@ -59,6 +61,7 @@ class AnnotationLine:
     text: str  # the predicate after the marker
     line: int
     col: int  # where the predicate starts on its line
+    field: str | None = None  # the field `_` names, when not the one on `line`
 
 
 @dataclass(frozen=True)
@@ -69,6 +72,7 @@ class Section:
     fields: tuple[FieldDecl, ...]
     annotations: tuple[AnnotationLine, ...]
     constants: tuple[ConstantDecl, ...] = ()
+    units: tuple[CommentUnit, ...] = ()  # `[m]` in comments, by rosidl's rule
 
 
 @dataclass(frozen=True)
@@ -87,6 +91,10 @@ class InterfaceFile:
 
 
 def read_interface(path: Path, text: str) -> InterfaceFile:
+    if path.suffix == ".idl":
+        from robotfix.ros.idl import read_idl  # idl builds on this module
+
+        return read_idl(path, text)
     lines = text.removeprefix("\ufeff").splitlines()
     package, name, first_body = _name_of(path, lines)
     suffixes = SECTIONS.get(path.suffix, ("",))
@@ -98,10 +106,25 @@ def read_interface(path: Path, text: str) -> InterfaceFile:
         else:
             chunks[-1].append((number, line))
     sections = tuple(
-        _read_section(f"{package}/{name}{suffix}", chunk, problems)
+        replace(
+            _read_section(f"{package}/{name}{suffix}", _plain(chunk), problems),
+            units=comment_units(chunk),
+        )
         for suffix, chunk in zip(suffixes, chunks, strict=False)
     )
     return InterfaceFile(str(path), package, sections, tuple(problems))
+
+
+def _plain(chunk: list[tuple[int, str]]) -> list[tuple[int, str]]:
+    """The lines with what a field line may carry before its type blanked out
+    (rosidl's `@optional string s`), so columns stay where they are."""
+    out = []
+    for number, line in chunk:
+        match = _OPTIONAL.match(line)
+        if match is not None:
+            line = " " * match.end() + line[match.end() :]
+        out.append((number, line))
+    return out
 
 
 def _name_of(path: Path, lines: list[str]) -> tuple[str, str, int]:
