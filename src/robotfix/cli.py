@@ -20,7 +20,7 @@ if TYPE_CHECKING:
     from robotfix.config import Config
 
 EXIT_OK, EXIT_FOUND, EXIT_FAILURE = 0, 1, 2
-FORMATS = ("text", "concise", "json", "sarif", "github")
+FORMATS = ("text", "concise", "json", "sarif", "github", "junit")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -52,7 +52,8 @@ def build_parser() -> argparse.ArgumentParser:
         "--format",
         choices=FORMATS,
         default=None,
-        help="text (default: with source lines), concise, json, sarif, github",
+        help="text (default: with source lines), concise, json, sarif, github, "
+        "junit (xUnit XML: a test case per file)",
     )
     check.add_argument(
         "--strict",
@@ -94,6 +95,14 @@ def build_parser() -> argparse.ArgumentParser:
         dest="cache",
         action="store_false",
         help="neither read nor write .robotfix_cache/",
+    )
+    check.add_argument(
+        "--cache-dir",
+        type=Path,
+        default=None,
+        metavar="DIR",
+        help="keep the per-file cache in DIR instead of .robotfix_cache/ "
+        "(e.g. a build folder)",
     )
     commands.add_parser("rules", help="list every diagnostic code")
     explain = commands.add_parser("explain", help="what a code means, and the fix")
@@ -233,6 +242,7 @@ def merge_flags(settings: Config, args: argparse.Namespace) -> Config:
         output_format=args.format or settings.output_format,
         exclude=settings.exclude + tuple(args.exclude),
         ros_distro=args.ros_distro or settings.ros_distro,
+        cache_dir=args.cache_dir or settings.cache_dir,
     )
 
 
@@ -240,7 +250,9 @@ def report(result: Result, settings: Config) -> int:
     from robotfix.diagnostics import Severity
 
     errors, warnings = result.count(Severity.ERROR), result.count(Severity.WARNING)
-    sys.stdout.write(render(result, settings.output_format, errors, warnings))
+    sys.stdout.write(
+        render(result, settings.output_format, errors, warnings, settings.strict)
+    )
     for failure in result.internal_errors:
         print(
             f"robotfix: internal error while checking {failure.path}: "
@@ -262,7 +274,9 @@ def report(result: Result, settings: Config) -> int:
     return EXIT_OK
 
 
-def render(result: Result, fmt: str, errors: int, warnings: int) -> str:
+def render(
+    result: Result, fmt: str, errors: int, warnings: int, strict: bool = False
+) -> str:
     from robotfix.report import github, json_report, sarif, text
     from robotfix.rules import ALL_RULES
 
@@ -274,6 +288,16 @@ def render(result: Result, fmt: str, errors: int, warnings: int) -> str:
         return sarif.render(result.diagnostics, list(ALL_RULES.values()))
     if fmt == "github":
         return github.render(result.diagnostics)
+    if fmt == "junit":
+        from robotfix.report import junit
+
+        return junit.render(
+            result.diagnostics,
+            result.checked,
+            strict,
+            result.seconds,
+            internal_errors=[(e.path, e.summary) for e in result.internal_errors],
+        )
     # The summary is timed only on a terminal: piped output stays byte-identical.
     seconds = result.seconds if sys.stdout.isatty() else None
     summary = text.summary(result.files, errors, warnings, seconds)

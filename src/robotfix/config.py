@@ -27,7 +27,7 @@ KEYS = {
     "per-file-ignores",
     "ros-distro",
 }
-FORMATS = ("text", "concise", "json", "sarif", "github")
+FORMATS = ("text", "concise", "json", "sarif", "github", "junit")
 DISTROS = ("ros2", "ros1", "jazzy", "humble", "iron", "kilted", "rolling", "noetic")
 
 
@@ -48,6 +48,8 @@ class Config:
         default_factory=Path.cwd, compare=False
     )  # patterns are relative to it
     source: Path | None = field(default=None, compare=False)
+    # where per-file results are cached (None: `.robotfix_cache/` in `root`)
+    cache_dir: Path | None = field(default=None, compare=False)
 
     def excluded(self, path: Path) -> bool:
         return any(matches(pattern, self._relative(path)) for pattern in self.exclude)
@@ -103,6 +105,13 @@ def load(start: Path, base: Config | None = None) -> Config:
     path = find_pyproject(start)
     if path is None:
         return config
+    return load_file(path, config)
+
+
+def load_file(path: Path, base: Config | None = None) -> Config:
+    """Settings from the [tool.robotfix] table of one TOML file (`--config FILE`);
+    patterns and msg-paths are relative to its folder."""
+    config = base or Config()
     try:
         data = tomllib.loads(path.read_text(encoding="utf-8"))
     except tomllib.TOMLDecodeError as err:

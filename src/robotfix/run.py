@@ -58,8 +58,11 @@ def check_paths(
     result.diagnostics.extend(catalog_problems(catalog))
     files = python_files(paths, config)
     result.files = len(files)
+    result.checked = [str(file) for file in files]
     cache = (
-        ResultCache(config.root / ".robotfix_cache", run_key(config))
+        ResultCache(
+            config.cache_dir or config.root / ".robotfix_cache", run_key(config)
+        )
         if use_cache
         else None
     )
