@@ -187,7 +187,8 @@ def run_lsp() -> int:
     except ImportError as err:
         print(
             f"robotfix: error: the language server needs pygls ({err}); "
-            "install it with: pip install 'robotfix[lsp]'",
+            "install RobotFix with its lsp extra: "
+            "python -m pip install '/path/to/robotfix[lsp]' (a checkout or a wheel)",
             file=sys.stderr,
         )
         return EXIT_FAILURE
