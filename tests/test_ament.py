@@ -273,6 +273,12 @@ def test_module_and_template(package: Path) -> None:
     assert not list(package.rglob(".robotfix_cache"))
 
 
+def test_docs_show_the_template_as_shipped() -> None:
+    code = ament.template().split("\n\n", 1)[1]  # without the comment header
+    assert code.startswith("import pytest\n")
+    assert f"```python\n{code}```" in (ROOT / "docs" / "ros.md").read_text()
+
+
 def test_cache_dir_option_of_check(project: Path, tmp_path: Path) -> None:
     cache = tmp_path / "elsewhere"
     out = robotfix("check", "--cache-dir", str(cache), ".", cwd=project)
