@@ -1,10 +1,10 @@
 """Fresh virtual environments for the slow tests (`-m slow`), built once per session.
 
-`tools`: build, twine, colcon-common-extensions, pytest, pre-commit and flake8 from the
-package index, plus RobotFix from the wheel built here. `fresh`: nothing but
-`robotfix[lsp]` from that wheel, so a dependency or a data file missing from the wheel
-shows. When the index cannot be reached the slow tests are skipped, except under CI
-(`CI` set), where they must run.
+`tools`: build, twine, colcon-common-extensions, pytest, pre-commit, flake8 and
+ament-lint from the package index, plus RobotFix from the wheel built here. `fresh`:
+nothing but `robotfix[lsp]` from that wheel, so a dependency or a data file missing
+from the wheel shows. When the index cannot be reached the slow tests are skipped,
+except under CI (`CI` set), where they must run.
 """
 
 from __future__ import annotations
@@ -28,6 +28,7 @@ TOOLS = [
     "flake8",
     "flake8-quotes",
     "flake8-import-order",
+    "ament-lint",  # ament's own `linter` marker plugin, beside ours
 ]
 
 
