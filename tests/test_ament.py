@@ -179,6 +179,10 @@ def test_exclude_takes_names_like_the_ament_linters(package: Path) -> None:
     assert ament.main_with_errors(["--exclude", "node.py"]) == (0, [])
     assert ament.main(["--exclude", "drive_check/"]) == 0
     assert ament.main(["--exclude", "setup.py", "--exclude", "other.py"]) == 1
+    # as in the CMake module: paths after `--`, even after --exclude's patterns
+    rc, errors = ament.main_with_errors(["--exclude", "x.py", "--", "drive_check"])
+    assert rc == 1 and errors[0].startswith("drive_check/node.py:7:5:")
+    assert ament.main(["setup.py", "--exclude", "node.py"]) == 0
 
 
 def test_folders_with_ament_ignore_are_skipped(
