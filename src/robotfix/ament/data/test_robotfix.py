@@ -1,6 +1,7 @@
 # RobotFix for `colcon test`, beside test_flake8.py and test_pep257.py: copy this file into
 # your ament_python package's test/ folder (`ament_robotfix --template > test/test_robotfix.py`,
-# and your copyright header if ament_copyright checks it) and keep `pytest` in tests_require.
+# and your copyright header if ament_copyright checks it); setup.py lists pytest in
+# extras_require={'test': ['pytest']} (recent setuptools ignore tests_require).
 #
 # colcon runs the tests in the package's source folder, so this checks the package's Python
 # files against its msg/, srv/ and action/ interfaces: units, frames and refinements. Settings
