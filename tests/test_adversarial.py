@@ -4,6 +4,7 @@ an exception, and the run goes on with the other files."""
 from __future__ import annotations
 
 import os
+import sys
 from pathlib import Path
 
 import pytest
@@ -38,11 +39,10 @@ def test_deep_nesting(tmp_path: Path) -> None:
         },
         tmp_path,
     )
-    assert found == {
-        "parens.py": ["RF001"],
-        "chain.py": ["RF001"],
-        "calls.py": ["RF001"],
-    }
+    # Python 3.10's parser builds the 10,000-term chain (3.11 and later refuse it), so
+    # there the analysis is what stops, with RF902
+    chain = ["RF902"] if sys.version_info < (3, 11) else ["RF001"]
+    assert found == {"parens.py": ["RF001"], "chain.py": chain, "calls.py": ["RF001"]}
 
 
 def test_deep_but_parseable(tmp_path: Path) -> None:

@@ -475,3 +475,29 @@ def test_lsp_picks_up_an_edited_msg_without_a_restart(tmp_path: Path) -> None:
     assert [d.code for d in before.diagnostics] == []
     assert [d.code for d in after.diagnostics] == ["RF101"]
     assert "speed <= 1" in after.diagnostics[0].message
+
+
+def test_the_language_server_exits_0_after_shutdown_and_exit() -> None:
+    """pygls closes stdout on `exit`: the final flush must not turn that into 2."""
+    pytest.importorskip("pygls")
+
+    server = subprocess.Popen(
+        [sys.executable, "-m", "robotfix", "lsp"],
+        stdin=subprocess.PIPE,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+    )
+
+    def frame(method: str, params: object, ident: int | None = None) -> bytes:
+        message: dict[str, object] = {"jsonrpc": "2.0", "method": method}
+        message["params"] = params
+        if ident is not None:
+            message["id"] = ident
+        body = json.dumps(message).encode()
+        return b"Content-Length: %d\r\n\r\n" % len(body) + body
+
+    start = {"processId": None, "rootUri": None, "capabilities": {}}
+    stream = frame("initialize", start, 1) + frame("initialized", {})
+    stream += frame("shutdown", None, 2) + frame("exit", None)
+    _, err = server.communicate(stream, timeout=60)
+    assert (server.returncode, err.decode()) == (0, "")

@@ -45,6 +45,9 @@ class Result:
     seconds: float = 0.0
     internal_errors: list[InternalError] = field(default_factory=list)
     from_cache: int = 0  # files whose results came from .robotfix_cache/
+    checked: list[str] = field(
+        default_factory=list
+    )  # the files, as diagnostics spell them
 
     def count(self, severity: Severity) -> int:
         return sum(1 for d in self.diagnostics if d.severity is severity)

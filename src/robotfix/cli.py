@@ -18,6 +18,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, TypeVar, cast
 
 from robotfix import __version__
+from robotfix.config import FORMATS  # light: stdlib only, tomllib imported there
 
 if TYPE_CHECKING:
     from collections.abc import Callable
@@ -27,7 +28,6 @@ if TYPE_CHECKING:
 
 EXIT_OK, EXIT_FOUND, EXIT_FAILURE = 0, 1, 2
 EXIT_INTERRUPTED = 130  # 128 + SIGINT, as shells report Ctrl-C
-FORMATS = ("text", "concise", "json", "sarif", "github")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -59,7 +59,8 @@ def build_parser() -> argparse.ArgumentParser:
         "--format",
         choices=FORMATS,
         default=None,
-        help="text (default: with source lines), concise, json, sarif, github",
+        help="text (default: with source lines), concise, json, sarif, github, "
+        "junit (xUnit XML: a test case per file)",
     )
     check.add_argument(
         "--strict",
@@ -107,6 +108,14 @@ def build_parser() -> argparse.ArgumentParser:
         dest="cache",
         action="store_false",
         help="neither read nor write .robotfix_cache/",
+    )
+    check.add_argument(
+        "--cache-dir",
+        type=Path,
+        default=None,
+        metavar="DIR",
+        help="keep the per-file cache in DIR instead of .robotfix_cache/ "
+        "(e.g. a build folder)",
     )
     commands.add_parser("rules", help="list every diagnostic code")
     explain = commands.add_parser("explain", help="what a code means, and the fix")
@@ -221,7 +230,8 @@ def run_lsp() -> int:
     except ImportError as err:
         print(
             f"robotfix: error: the language server needs pygls ({err}); "
-            "install it with: pip install 'robotfix[lsp]'",
+            "install RobotFix with its lsp extra: "
+            "python -m pip install '/path/to/robotfix[lsp]' (a checkout or a wheel)",
             file=sys.stderr,
         )
         return EXIT_FAILURE
@@ -311,6 +321,7 @@ def merge_flags(settings: Config, args: argparse.Namespace) -> Config:
         ros_distro=args.ros_distro or settings.ros_distro,
         unit_suffixes=settings.unit_suffixes
         or bool(getattr(args, "unit_suffixes", None)),
+        cache_dir=args.cache_dir or settings.cache_dir,
     )
 
 
@@ -319,7 +330,9 @@ def report(result: Result, settings: Config) -> int:
     from robotfix.report.escape import shown_path
 
     errors, warnings = result.count(Severity.ERROR), result.count(Severity.WARNING)
-    write_stdout(render(result, settings.output_format, errors, warnings))
+    write_stdout(
+        render(result, settings.output_format, errors, warnings, settings.strict)
+    )
     for failure in result.internal_errors:
         print(
             f"robotfix: internal error while checking {shown_path(failure.path)}: "
@@ -341,7 +354,9 @@ def report(result: Result, settings: Config) -> int:
     return EXIT_OK
 
 
-def render(result: Result, fmt: str, errors: int, warnings: int) -> str:
+def render(
+    result: Result, fmt: str, errors: int, warnings: int, strict: bool = False
+) -> str:
     from robotfix.report import github, json_report, sarif, text
     from robotfix.rules import ALL_RULES
 
@@ -360,6 +375,16 @@ def render(result: Result, fmt: str, errors: int, warnings: int) -> str:
         return sarif.render(result.diagnostics, list(ALL_RULES.values()), failed)
     if fmt == "github":
         return github.render(result.diagnostics)
+    if fmt == "junit":
+        from robotfix.report import junit
+
+        return junit.render(
+            result.diagnostics,
+            result.checked,
+            strict,
+            result.seconds,
+            internal_errors=[(e.path, e.summary) for e in result.internal_errors],
+        )
     # The summary is timed only on a terminal: piped output stays byte-identical.
     terminal = sys.stdout is not None and sys.stdout.isatty()
     seconds = result.seconds if terminal else None
@@ -424,8 +449,10 @@ def write_stdout(text: str) -> None:
 
 
 def flush_stdout() -> None:
-    """Flush what print() left buffered; OutputError or BrokenPipeError as above."""
-    if sys.stdout is not None:
+    """Flush what print() left buffered; OutputError or BrokenPipeError as above.
+    A stream our own code closed (the language server closes stdout when the client
+    says `exit`) has nothing left to flush."""
+    if sys.stdout is not None and not sys.stdout.closed:
         write_stdout("")
 
 

@@ -32,7 +32,7 @@ KEYS = {
     "ros-distro",
     "unit-suffixes",
 }
-FORMATS = ("text", "concise", "json", "sarif", "github")
+FORMATS = ("text", "concise", "json", "sarif", "github", "junit")
 MAX_PYPROJECT_BYTES = 4 * 1024 * 1024  # a real pyproject.toml is a few kB
 DISTROS = ("ros2", "ros1", "jazzy", "humble", "iron", "kilted", "rolling", "noetic")
 
@@ -55,6 +55,8 @@ class Config:
         default_factory=Path.cwd, compare=False
     )  # patterns are relative to it
     source: Path | None = field(default=None, compare=False)
+    # where per-file results are cached (None: `.robotfix_cache/` in `root`)
+    cache_dir: Path | None = field(default=None, compare=False)
 
     def excluded(self, path: Path, folder: bool = False) -> bool:
         """Whether an `exclude` pattern matches the file (or, with folder=True, the
@@ -145,6 +147,13 @@ def load(start: Path, base: Config | None = None) -> Config:
     path = find_pyproject(start)
     if path is None:
         return config
+    return load_file(path, config)
+
+
+def load_file(path: Path, base: Config | None = None) -> Config:
+    """Settings from the [tool.robotfix] table of one TOML file (`--config FILE`);
+    patterns and msg-paths are relative to its folder."""
+    config = base or Config()
     try:
         data = tomllib.loads(read_text(path, MAX_PYPROJECT_BYTES))
     except tomllib.TOMLDecodeError as err:

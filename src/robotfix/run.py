@@ -67,8 +67,11 @@ def check_paths(
     used: set[str] = set()  # the message types the checked files looked up
     files = found.python_files
     result.files = len(files)
+    result.checked = [str(file) for file in files]
     cache = (
-        ResultCache(config.root / ".robotfix_cache", run_key(config))
+        ResultCache(
+            config.cache_dir or config.root / ".robotfix_cache", run_key(config)
+        )
         if use_cache
         else None
     )

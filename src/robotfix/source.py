@@ -42,6 +42,11 @@ _PY2_TOKENS = re.compile(
     r"|\b[uU][rR][\"']|\b\d+[lL]\b",
     re.M,
 )
+# Python 3.10 says only "invalid syntax" at the `(` of a tuple parameter
+# (`def f(a, (x, y))`, `lambda (k, v): v`); 3.11 and later name it (_PY2_HINTS).
+_BEFORE_TUPLE_PARAMETER = re.compile(
+    r"(\bdef\s+\w+\s*\((?:[^()=]*,)?|\blambda(?:[^():=]*,)?)\s*$"
+)
 
 
 @dataclass
@@ -199,6 +204,8 @@ def _is_python2(text: str, err: SyntaxError, retabbed: bool = False) -> bool:
     line = err.lineno or 1
     if 0 < line <= len(lines) and _PY2_TOKENS.search(lines[line - 1]):
         return True
+    if 0 < line <= len(lines) and _tuple_parameter(lines[line - 1], err.offset):
+        return True
     if not isinstance(err, TabError) or retabbed:
         return False
     expanded = "\n".join(_expand_indent(text_line) for text_line in lines)
@@ -211,6 +218,16 @@ def _is_python2(text: str, err: SyntaxError, retabbed: bool = False) -> bool:
     except (ValueError, RecursionError, MemoryError):
         return False
     return True
+
+
+def _tuple_parameter(line: str, offset: int | None) -> bool:
+    """Whether the error is at the `(` that opens a tuple parameter."""
+    at = (offset or 0) - 1
+    return (
+        0 <= at < len(line)
+        and line[at] == "("
+        and _BEFORE_TUPLE_PARAMETER.search(line[:at]) is not None
+    )
 
 
 def _expand_indent(line: str) -> str:
