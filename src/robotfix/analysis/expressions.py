@@ -25,7 +25,7 @@ from robotfix.analysis.values import NONE, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import NUMBERS, named_number
-from robotfix.annotations.units import DIMENSIONLESS, Unit
+from robotfix.annotations.units import DIMENSIONLESS, Unit, effective
 from robotfix.diagnostics import Span
 from robotfix.ros.catalog import constant_term
 
@@ -449,8 +449,8 @@ class ExpressionEvaluator:
                 self.ctx.source.span(node),
                 text,
                 op,
-                left.unit,
-                right.unit,
+                effective(left.unit, left.scale),  # `t * 1000` is in ms
+                effective(right.unit, right.scale),
             ),
             once=("operands", id(node)),
         )

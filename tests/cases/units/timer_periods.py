@@ -27,6 +27,8 @@ def timing(
     seconds = now_ns  # error: RF201
     timeout: Annotated[float, "Unit('s')"] = 2 * t
     timeout = 2 * x  # error: RF201
+    late = now_ns + t * 1000  # error: RF202
+    late = now_ns + t * 1e9
 
 
 class Ticker(Node):
