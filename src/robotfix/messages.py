@@ -286,13 +286,58 @@ def unit_mismatch(
     expected: Unit,
     got: Unit,
     declared: Declared,
+    aligned: Unit | None = None,
 ) -> Diagnostic:
+    """`aligned`: the value's unit over the expected dimensions, when only the
+    scale differs once the radian cancels (`omega_deg * r`)."""
     message = f"`{stmt}` gives {target} a value in {got}, but {target} is in {expected}"
-    fix = conversion(got, expected)
+    fix = conversion(got if aligned is None else aligned, expected)
+    if aligned is not None and fix:
+        ratio = aligned.factor / expected.factor
+        if dict(got.dims).get("radian") and math.isclose(ratio, math.pi / 180):
+            fix = f"use math.radians() on the angle to convert {got} to {expected}"
+        fix = fix.replace(f"convert {aligned} to", f"convert {got} to")
     notes = [declared.note()]
     if fix:
         message += f": {fix}"
     return Diagnostic(rules.UNIT_MISMATCH, path, span, message, tuple(notes))
+
+
+def implicit_unit_change(
+    path: str,
+    span: Span,
+    stmt: str,
+    target: str,
+    expected: Unit,
+    got: Unit,
+    seconds: int,
+    declared: Declared | None,
+) -> Diagnostic:
+    """RF203: the value is `seconds` powers of s away from its target's unit."""
+    if seconds > 0:
+        kind, unit, example = "a gain", "1/s", "K_P: Annotated[float, \"Unit('1/s')\"]"
+    else:
+        kind, unit, example = "a time step", "s", "DT: Annotated[float, \"Unit('s')\"]"
+    message = (
+        f"`{stmt}` gives {target} a value in {got}, but {target} is in {expected}: "
+        f"an implicit {kind[2:]} in {unit}; multiply by {kind} declared with its unit "
+        f"(`{example} = ...`)"
+    )
+    notes = (declared.note(),) if declared is not None else ()
+    return Diagnostic(rules.IMPLICIT_UNIT_CHANGE, path, span, message, notes)
+
+
+def implicit_operand_change(
+    path: str, span: Span, expr: str, stepped: Unit, kept: Unit, seconds: int
+) -> Diagnostic:
+    """RF203 in `+`, `-` or a comparison: `x + vx * 0.1` (a literal time step)."""
+    what, unit = ("gain", "1/s") if seconds > 0 else ("time step", "s")
+    message = (
+        f"`{expr}` combines {kept} with a value in {stepped}: the literal factor is "
+        f"an implicit {what} in {unit}; name it and declare its unit "
+        f"(`Annotated[float, \"Unit('{unit}')\"]`)"
+    )
+    return Diagnostic(rules.IMPLICIT_UNIT_CHANGE, path, span, message)
 
 
 def operand_units(
@@ -308,8 +353,10 @@ def operand_units(
 
 def conversion(got: Unit, expected: Unit) -> str:
     """How to turn a value in `got` into `expected`, when only the scale differs."""
-    if not got.same_dimension(expected) or expected.is_label:
+    if expected.is_label:
         return ""
+    if not got.same_dimension(expected):
+        return _revolutions(got, expected)
     ratio = got.factor / expected.factor
     if math.isclose(ratio, 1.0) and math.isclose(got.offset, expected.offset):
         return ""
@@ -327,6 +374,27 @@ def conversion(got: Unit, expected: Unit) -> str:
     if ratio < 1:
         return f"divide by {1 / ratio:.6g} to convert {got} to {expected}"
     return f"multiply by {ratio:.6g} to convert {got} to {expected}"
+
+
+def _revolutions(got: Unit, expected: Unit) -> str:
+    """Hz (cycles per second) against rad/s: the missing factor is 2*pi."""
+    ours, theirs = dict(got.dims), dict(expected.dims)
+    angle = ours.get("radian", 0) - theirs.get("radian", 0)
+    rest = {d: e for d, e in ours.items() if d != "radian"}
+    if (
+        abs(angle) != 1
+        or rest != {d: e for d, e in theirs.items() if d != "radian"}
+        or rest != {"second": -1}
+    ):
+        return ""
+    factor = got.factor * (2 * math.pi if angle < 0 else 1 / (2 * math.pi))
+    ratio = factor / expected.factor
+    how = "multiply by" if ratio > 1 else "divide by"
+    shown = "2*math.pi" if math.isclose(ratio, 2 * math.pi) else None
+    if shown is None and math.isclose(ratio, 1 / (2 * math.pi)):
+        shown = "2*math.pi"
+    number = shown or f"{ratio if ratio > 1 else 1 / ratio:.6g}"
+    return f"{how} {number} to convert {got} (a revolution is 2*pi rad) to {expected}"
 
 
 def used_before_assignment(

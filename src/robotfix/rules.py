@@ -42,6 +42,12 @@ UNIT_MISMATCH = Rule(
 OPERAND_UNIT_MISMATCH = Rule(
     "RF202", "operand-unit-mismatch", "Operands of +, - or a comparison differ in unit"
 )
+IMPLICIT_UNIT_CHANGE = Rule(
+    "RF203",
+    "implicit-unit-change",
+    "Value changes its unit by a time step or gain the code does not name",
+    W,
+)
 
 USED_BEFORE_ASSIGNMENT = Rule(
     "RF301", "used-before-assignment", "Variable read before it is assigned"
@@ -104,6 +110,7 @@ ALL_RULES: dict[str, Rule] = {
         REFINEMENT_UNPROVEN,
         UNIT_MISMATCH,
         OPERAND_UNIT_MISMATCH,
+        IMPLICIT_UNIT_CHANGE,
         USED_BEFORE_ASSIGNMENT,
         UNSET_FIELD_DEFAULT,
         BASE_TYPE_MISMATCH,

@@ -331,7 +331,8 @@ class CallEvaluator(ExpressionEvaluator):
                 term = A.Func(name, (result.known_term, other.known_term))
                 # the literal factors of the side that gave the unit (as for +)
                 scale = result.scale if unit == result.unit else other.scale
-                result = Value(kind, term, unit, literal, scale=scale)
+                free = result.rad_free or other.rad_free
+                result = Value(kind, term, unit, literal, scale=scale, rad_free=free)
             return result
         if (
             name == "float"
@@ -341,8 +342,10 @@ class CallEvaluator(ExpressionEvaluator):
             return replace(first, kind="float")
         if name == "float" and len(args) == 1 and isinstance(first.term, A.Str):
             return _float_of(first.term.value)
-        if name in ("int", "round") and len(args) == 1 and first.kind != "str":
-            return self.unknown(node, "int", first.unit)
+        if name in ("int", "round") and first.kind != "str":
+            # `int(t * 1e9)` keeps its conversion: ns
+            value = self.unknown(node, "int" if len(args) == 1 else "float", first.unit)
+            return replace(value, scale=first.scale, rad_free=first.rad_free)
         if name == "bool" and len(args) == 1:
             return Value("bool", self.truthy(first, node))
         return None if name != "print" else NONE

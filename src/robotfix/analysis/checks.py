@@ -121,18 +121,34 @@ class Checker:
         target: str,
         declared: Declared,
     ) -> bool:
-        got = value.unit
-        if (
-            expected is None
-            or got is None
-            or value.literal
-            or value.fits_unit(expected)
-        ):
+        found = None if expected is None else value.fit(expected)
+        if expected is None or found is None or found.kind == "ok":
             return True
         span, stmt = self.where(site)
+        if found.kind == "time":  # a P-controller's gain, a literal time step
+            self.ctx.report(
+                messages.implicit_unit_change(
+                    self.path,
+                    span,
+                    stmt,
+                    target,
+                    expected,
+                    found.got,
+                    found.seconds,
+                    declared,
+                )
+            )
+            return True
         self.ctx.report(
             messages.unit_mismatch(
-                self.path, span, stmt, target, expected, got, declared
+                self.path,
+                span,
+                stmt,
+                target,
+                expected,
+                found.got,
+                declared,
+                found.aligned,
             )
         )
         return False

@@ -25,7 +25,7 @@ from robotfix.analysis.values import NONE, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import NUMBERS, named_number
-from robotfix.annotations.units import DIMENSIONLESS, Unit
+from robotfix.annotations.units import DIMENSIONLESS, Unit, effective
 from robotfix.diagnostics import Span
 from robotfix.ros.catalog import constant_term
 
@@ -336,6 +336,7 @@ class ExpressionEvaluator:
         if op is None:
             return replace(self._other_binop(node, left, right), uninit=uninit)
         scale = 1.0
+        rad_free = left.rad_free or right.rad_free
         if op in "+-":
             unit, literal = self.unit_of_sum(left, right, node, op)
             scale = (
@@ -344,11 +345,22 @@ class ExpressionEvaluator:
         else:
             unit, literal = self.unit_of_product(left, right, op)
             scale = self.scale_of_product(left, right, op)
+            rad_free = rad_free or any(
+                v.unit is not None and not v.literal and _has_length(v.unit)
+                for v in (left, right)
+            )
         kind = self.numeric_kind(left, right, op)
         if kind is None or left.term is None or right.term is None:
-            return replace(self.unknown(node, unit=unit), uninit=uninit, scale=scale)
+            return replace(
+                self.unknown(node, unit=unit),
+                uninit=uninit,
+                scale=scale,
+                rad_free=rad_free,
+            )
         term = A.Binary(op, left.term, right.term)
-        return Value(kind, term, unit, literal, uninit=uninit, scale=scale)
+        return Value(
+            kind, term, unit, literal, uninit=uninit, scale=scale, rad_free=rad_free
+        )
 
     def _other_binop(self, node: ast.BinOp, left: Value, right: Value) -> Value:
         if isinstance(node.op, ast.Mod):
@@ -378,7 +390,8 @@ class ExpressionEvaluator:
             return 1.0
         if right.literal:
             return left.scale * (number if op == "*" else 1 / number)
-        return right.scale * number if op == "*" else 1.0
+        # `1000.0 / hz`: a period (1/Hz) scaled by 1000, i.e. in ms
+        return right.scale * number if op == "*" else number / right.scale
 
     def numeric_kind(self, left: Value, right: Value, op: str) -> str | None:
         kinds = {left.kind, right.kind}
@@ -401,20 +414,43 @@ class ExpressionEvaluator:
             return None, False
         if left.unit.same_as(right.unit):
             return left.unit, False
-        if right.fits_unit(left.unit) or left.fits_unit(right.unit):
-            same = left.unit.same_dimension(right.unit)
-            return (
-                left.unit if left.scale == 1.0 else right.unit
-            ) if same else None, False
+        there, back = right.fit(left.unit), left.fit(right.unit)
+        if (there is not None and there.kind == "ok") or (
+            back is not None and back.kind == "ok"
+        ):
+            # the unit of a side its literal factors did not convert
+            plain = [v for v in (left, right) if v.scale == 1.0 and not v.rad_free]
+            return (plain[0] if plain else left).unit, False
         text = self.ctx.source.segment(node) or op
+        if (
+            there is not None
+            and there.kind == "time"
+            and (left.scale != 1.0 or right.scale != 1.0)
+        ):  # `x + vx * 0.1`: a literal time step (RF203)
+            stepped = right if right.scale != 1.0 else left
+            kept = left if stepped is right else right
+            found = stepped.fit(kept.unit)  # type: ignore[arg-type]
+            assert found is not None
+            self.ctx.report(
+                messages.implicit_operand_change(
+                    self.ctx.source.path,
+                    self.ctx.source.span(node),
+                    text,
+                    found.got,
+                    kept.unit,  # type: ignore[arg-type]
+                    found.seconds,
+                ),
+                once=("operands", id(node)),
+            )
+            return kept.unit, False
         self.ctx.report(
             messages.operand_units(
                 self.ctx.source.path,
                 self.ctx.source.span(node),
                 text,
                 op,
-                left.unit,
-                right.unit,
+                effective(left.unit, left.scale),  # `t * 1000` is in ms
+                effective(right.unit, right.scale),
             ),
             once=("operands", id(node)),
         )
@@ -611,6 +647,10 @@ class ExpressionEvaluator:
         if value.kind == "none":
             return A.Bool(False)
         return self.unknown(node, "bool").term  # type: ignore[return-value]
+
+
+def _has_length(unit: Unit) -> bool:
+    return dict(unit.dims).get("meter", 0) != 0
 
 
 def _literal(term: A.Expr | None) -> Fraction | str | None:

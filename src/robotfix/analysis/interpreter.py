@@ -423,8 +423,35 @@ class Interpreter(CallEvaluator):
             self.ctx, state, type_, origin, label=label
         )
 
-    def havoc(self, state: State, nodes: list[ast.stmt]) -> None:
-        """Forget what `nodes` may write: assigned names and mentioned messages."""
+    def _forgotten(
+        self,
+        name: ast.Name,
+        before: object,
+        keeps_unit: set[str],
+        after: State | None,
+    ) -> Value:
+        """The unknown value of a name a loop or `try` may change: a sum keeps its
+        unit; one that started as a literal (`total = 0.0`) takes the unit the loop
+        body gave it, and until then, as a literal, the unit of its context."""
+        if not isinstance(before, Value) or name.id not in keeps_unit:
+            return self.unknown(name)
+        if not before.literal:
+            return self.unknown(name, unit=before.unit)
+        found = (
+            after.env.get(name.id) if after is not None and after.reachable else None
+        )
+        if isinstance(found, Value) and found.unit is not None and not found.literal:
+            return self.unknown(name, unit=found.unit)
+        return replace(self.unknown(name), literal=True)
+
+    def havoc(
+        self, state: State, nodes: list[ast.stmt], after: State | None = None
+    ) -> None:
+        """Forget what `nodes` may write: assigned names and mentioned messages.
+
+        An unannotated name only ever changed by `+=`/`-=` keeps its unit (`+` and
+        `-` need equal units, so every path that does not report one keeps it)."""
+        keeps_unit = _accumulated(nodes)
         for node in nodes:
             for child in walk(node):
                 if (
@@ -449,7 +476,9 @@ class Interpreter(CallEvaluator):
                             state, child.id, decl, lookup
                         )
                     else:
-                        state.env[child.id] = self.unknown(child)
+                        state.env[child.id] = self._forgotten(
+                            child, state.env.get(child.id), keeps_unit, after
+                        )
 
     # -- simple statements ---------------------------------------------------
     def visit_Expr(self, node: ast.Expr, state: State) -> State:
@@ -680,6 +709,8 @@ class Interpreter(CallEvaluator):
             else ("float" if kinds <= {"int", "float", "bool"} else "unknown")
         )
         unit = x.unit if x.unit == y.unit else None
+        if x.literal != y.literal:  # `d = 0.0`, then `d = scan.range_min`: m
+            unit = y.unit if x.literal else x.unit
         if kind in CONTAINERS:  # different tables on the two paths
             return Value("unknown")
         if (
@@ -689,14 +720,17 @@ class Interpreter(CallEvaluator):
         ):
             return x if x.kind == y.kind and x.ref == y.ref else Value("unknown")
         merged = self.ctx.fresh(kind, "a value set on several paths", unit)
+        source = y if x.literal else x  # the side that gave the unit
+        if unit is not None and (x.literal != y.literal or x.scale == y.scale):
+            merged = replace(merged, scale=source.scale, rad_free=source.rad_free)
         return replace(merged, literal=x.literal and y.literal)
 
     def visit_While(self, node: ast.While, state: State) -> State:
         self.havoc(state, [node])
         body_state = state.fork()
         body_state.assume(self.condition(node.test, body_state))
-        self.exec_block(node.body, body_state)
-        self.havoc(state, [node])
+        end = self.exec_block(node.body, body_state)
+        self.havoc(state, [node], after=end)
         return self.exec_block(node.orelse, state)
 
     def visit_For(self, node: ast.For | ast.AsyncFor, state: State) -> State:
@@ -704,8 +738,8 @@ class Interpreter(CallEvaluator):
         self.havoc(state, [node])
         body_state = state.fork()
         self.bind(node.target, self.unknown(node.target), body_state)
-        self.exec_block(node.body, body_state)
-        self.havoc(state, [node])
+        end = self.exec_block(node.body, body_state)
+        self.havoc(state, [node], after=end)
         return self.exec_block(node.orelse, state)
 
     visit_AsyncFor = visit_For
@@ -741,3 +775,23 @@ class Interpreter(CallEvaluator):
         return result
 
     visit_TryStar = visit_Try
+
+
+def _accumulated(nodes: list[ast.stmt]) -> set[str]:
+    """Names whose every store under `nodes` is `name += e` or `name -= e`."""
+    summed: set[str] = set()
+    targets: set[int] = set()
+    stores: list[ast.Name] = []
+    for child in walk(nodes):
+        if (
+            isinstance(child, ast.AugAssign)
+            and isinstance(child.target, ast.Name)
+            and isinstance(child.op, (ast.Add, ast.Sub))
+        ):
+            summed.add(child.target.id)
+            targets.add(id(child.target))
+        elif isinstance(child, ast.Name) and isinstance(child.ctx, ast.Store):
+            stores.append(child)
+    if not summed:
+        return summed
+    return summed - {n.id for n in stores if id(n) not in targets}

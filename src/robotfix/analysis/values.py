@@ -7,11 +7,10 @@ keeps its elements (and keys), so a constant table can be looked up.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field, replace
 
 from robotfix.annotations import ast as A
-from robotfix.annotations.units import Unit
+from robotfix.annotations.units import Fit, Unit, fit
 
 NUMERIC = frozenset({"int", "float", "bool"})
 CONTAINERS = frozenset({"tuple", "list", "dict"})
@@ -40,6 +39,9 @@ class Value:
     # unit: `speed / 3.6` is km/h scaled by 1/3.6, which is a conversion to m/s.
     scale: float = 1.0
     default_of: tuple[int, str] | None = field(default=None, compare=False)
+    # Computed by a product or quotient with a length: one power of radian may cancel
+    # or appear, as the radian is a ratio of lengths (`omega * r` is m/s).
+    rad_free: bool = False
 
     @property
     def known_term(self) -> A.Expr:
@@ -52,22 +54,20 @@ class Value:
         return self.kind in NUMERIC
 
     def with_unit(self, unit: Unit | None) -> Value:
-        return replace(self, unit=unit, literal=False, scale=1.0)
+        return replace(self, unit=unit, literal=False, scale=1.0, rad_free=False)
 
     def fits_unit(self, expected: Unit) -> bool:
-        """Same unit; or the same dimension after the literal factors it was scaled by
-        (`speed / 3.6` fits m/s when speed is in km/h); or, once scaled by a literal,
-        any other dimension (the literal may carry a unit)."""
-        got = self.unit
-        if got is None or got.same_as(expected):
-            return True
-        if not got.same_dimension(expected):
-            # `v * 0.1` may be a speed times a literal time step: the literal can carry
-            # the missing unit, so only an unscaled value is surely a mismatch.
-            return self.scale != 1.0
-        if got.offset or expected.offset:
-            return False
-        return math.isclose(got.factor / self.scale, expected.factor, rel_tol=1e-3)
+        """Same unit, after the literal factors it was scaled by (`speed / 3.6` fits
+        m/s when speed is in km/h) and the radian cancelling (see `units.fit`)."""
+        found = self.fit(expected)
+        return found is None or found.kind == "ok"
+
+    def fit(self, expected: Unit) -> Fit | None:
+        """How this value's unit meets `expected`; None when there is nothing to
+        compare (no unit known, or a literal, which takes the unit of its context)."""
+        if self.unit is None or self.literal:
+            return None
+        return fit(self.unit, expected, self.scale, self.rad_free)
 
 
 NONE = Value("none")

@@ -88,6 +88,101 @@ class Unit:
 
 
 DIMENSIONLESS = Unit((), text="1")
+TWO_PI = 2 * math.pi
+
+
+@dataclass(frozen=True)
+class Fit:
+    """How a value's unit meets the unit expected of it (`fit`).
+
+    kind: "ok"; "time" (the dimensions differ by one power of seconds: an implicit
+    gain or time step, RF203); "mismatch". `got` is the unit the value really has
+    (its literal factors applied, frames the target does not name dropped); `aligned`
+    is that unit over the expected dimensions when only the scale differs (for the
+    conversion advice), else None.
+    """
+
+    kind: str
+    got: Unit
+    aligned: Unit | None = None
+    seconds: int = 0  # "time": the power of s the value has in excess
+
+
+def is_frame(dim: str) -> bool:
+    return dim.startswith("frame:")
+
+
+def effective(unit: Unit, scale: float) -> Unit:
+    """`unit` after literal factors: `1000.0 / hz` is 1/Hz scaled by 1000, i.e. ms."""
+    if math.isclose(scale, 1.0):
+        return unit
+    return named(Unit(unit.dims, unit.factor / scale, unit.offset))
+
+
+def fit(got: Unit, expected: Unit, scale: float = 1.0, rad_free: bool = False) -> Fit:
+    """Does a value in `got` (scaled by literal `scale`) fit `expected`?
+
+    The radian is a ratio of lengths: a value computed by a product or quotient with a
+    length (`rad_free`) may gain or lose one power of radian (`omega * r` is m/s,
+    `v / r` is rad/s). A literal factor of 2*pi turns revolutions (Hz) into radians and
+    back. A frame only one side names is not a mismatch (in ROS the frame of a
+    message's numbers lives in its header).
+    """
+    has_frame = any(is_frame(d) for d, _ in expected.dims)
+    got_frame = any(is_frame(d) for d, _ in got.dims)
+    if has_frame != got_frame:
+        got = Unit(
+            tuple(x for x in got.dims if not is_frame(x[0])), got.factor, got.offset
+        )
+        expected = Unit(
+            tuple(x for x in expected.dims if not is_frame(x[0])),
+            expected.factor,
+            expected.offset,
+        )
+    raw = got if got.text else named(got)
+    shown = effective(got, scale) if scale != 1.0 else raw
+    factor = got.factor / scale
+    if got.dims == expected.dims and not got.offset and not expected.offset:
+        # `speed * 2` keeps m/s; `speed / 3.6` converts km/h to m/s
+        if math.isclose(factor, expected.factor, rel_tol=1e-3) or got.same_as(expected):
+            return Fit("ok", shown)
+        return Fit("mismatch", shown, Unit(expected.dims, factor))
+    if got.dims == expected.dims:
+        same = got.same_as(expected) and math.isclose(scale, 1.0)
+        return Fit("ok" if same else "mismatch", shown)
+    ours, theirs = dict(got.dims), dict(expected.dims)
+    diff = {
+        d: ours.get(d, 0) - theirs.get(d, 0)
+        for d in ours.keys() | theirs.keys()
+        if ours.get(d, 0) != theirs.get(d, 0)
+    }
+    angle = diff.get("radian", 0)
+    if abs(angle) == 1 and (rad_free or not math.isclose(scale, 1.0)):
+        if not rad_free:  # a revolution is 2*pi radians: `2 * math.pi * f`
+            factor = factor * TWO_PI if angle < 0 else factor / TWO_PI
+            if not math.isclose(factor, expected.factor, rel_tol=1e-3):
+                return _other(diff, raw, scale)  # not a revolution: a plain factor
+        del diff["radian"]
+    if not diff:
+        if got.offset or expected.offset:
+            return Fit("mismatch", shown)
+        if math.isclose(factor, expected.factor, rel_tol=1e-3) or (
+            rad_free and math.isclose(got.factor, expected.factor, rel_tol=1e-3)
+        ):  # a conversion, or a plain factor (`(left + right) * r / 2`)
+            return Fit("ok", shown)
+        return Fit("mismatch", shown, Unit(expected.dims, factor))
+    return _other(diff, raw, scale)
+
+
+def _other(diff: dict[str, int], raw: Unit, scale: float) -> Fit:
+    """Dimensions differ. One power of s is an implicit gain (`angular.z = yaw_error`,
+    unit gain P-control) or, with a literal factor, an implicit time step
+    (`x += vx * 0.1`): RF203. A velocity given as a position with no factor at all
+    has no step to hide in, and anything else is a mismatch."""
+    seconds = diff.get("second", 0) if set(diff) == {"second"} else 0
+    if seconds == 1 or (seconds == -1 and not math.isclose(scale, 1.0)):
+        return Fit("time", raw, seconds=seconds)
+    return Fit("mismatch", raw)
 
 
 class UnitError(Exception):
@@ -108,7 +203,20 @@ def _compose(a: Unit, b: Unit, sign: int) -> Unit:
     return Unit(dims, factor, text=_render(dims, factor))
 
 
+_PREFIXES = {1e3: "k", 1e-2: "c", 1e-3: "m", 1e-6: "u", 1e-9: "n"}
+_NAMED = {("second", 60.0): "min", ("second", 3600.0): "h"}
+
+
 def _render(dims: tuple[tuple[str, int], ...], factor: float) -> str:
+    if len(dims) == 1 and dims[0][1] == 1 and dims[0][0] in ("meter", "second"):
+        dim = dims[0][0]
+        for value, prefix in _PREFIXES.items():
+            if math.isclose(factor, value, rel_tol=1e-9):
+                return prefix + _SYMBOLS[dim]
+        for (d, value), name in _NAMED.items():
+            if d == dim and math.isclose(factor, value, rel_tol=1e-9):
+                return name
+
     def part(dim: str, exp: int) -> str:
         name = _SYMBOLS.get(dim, dim)
         return name if abs(exp) == 1 else f"{name}^{abs(exp)}"

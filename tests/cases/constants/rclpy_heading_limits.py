@@ -59,7 +59,7 @@ class HeadingController(Node):
         heading = math.atan2(2.0 * (q.w * q.z), 1.0 - 2.0 * (q.z * q.z))
         error = normalize(self.goal - heading)
         rate = self.KP * error
-        self.turn_rate = max(-self.MAX_ANG_VEL, min(self.MAX_ANG_VEL, rate))
+        self.turn_rate = max(-self.MAX_ANG_VEL, min(self.MAX_ANG_VEL, rate))  # warning: RF203
         self.turn_rate = self.MAX_ANG_VEL + 0.01  # error: RF101
         lin, ang = LIMITS
         self.turn_rate = ang

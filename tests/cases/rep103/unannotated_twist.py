@@ -19,4 +19,4 @@ def stamp(odom: Odometry, node) -> None:
     odom.header.stamp = node.get_clock().now().to_msg()
     odom.header.stamp.sec = 5
     odom.pose.pose.position.x = odom.twist.twist.linear.x  # error: RF201
-    odom.pose.pose.position.x = odom.twist.twist.linear.x * 0.1  # a literal time step
+    odom.pose.pose.position.x = odom.twist.twist.linear.x * 0.1  # warning: RF203

@@ -1,0 +1,93 @@
+"""`units.fit`: literal factors convert within a dimension but never change one, the
+radian cancels only against a length, and Hz meets rad/s only through 2*pi."""
+
+from __future__ import annotations
+
+import math
+
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from robotfix.annotations.units import fit, resolve
+from robotfix.messages import conversion
+
+UNITS = [
+    "m",
+    "km",
+    "cm",
+    "s",
+    "ms",
+    "ns",
+    "m/s",
+    "km/h",
+    "rad",
+    "degree",
+    "rad/s",
+    "degree/s",
+    "rpm",
+    "Hz",
+    "m/s^2",
+    "1",
+]
+scales = st.sampled_from([0.1, 0.5, 2.0, 3.6, 1 / 3.6, 100.0, 1e-9, 1e9])
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.sampled_from(UNITS), st.sampled_from(UNITS), scales)
+def test_a_literal_factor_never_bridges_dimensions_but_time(
+    got: str, expected: str, scale: float
+) -> None:
+    a, b = resolve(got), resolve(expected)
+    found = fit(a, b, scale)
+    ours, theirs = dict(a.dims), dict(b.dims)
+    diff = {
+        d: ours.get(d, 0) - theirs.get(d, 0)
+        for d in ours.keys() | theirs.keys()
+        if ours.get(d, 0) != theirs.get(d, 0)
+    }
+    if not diff:
+        converts = math.isclose(a.factor / scale, b.factor, rel_tol=1e-3)
+        assert (found.kind == "ok") == (converts or a.same_as(b))
+    elif found.kind == "ok":  # only a revolution: 2*pi between Hz and rad/s
+        assert set(diff) == {"radian"}
+    elif found.kind == "time":
+        assert set(diff) == {"second"} and abs(diff["second"]) == 1
+
+
+@settings(max_examples=30, deadline=None)
+@given(st.sampled_from(["rad/s", "degree/s", "rpm"]), st.sampled_from(["m", "cm"]))
+def test_the_radian_cancels_against_a_length_with_its_scale(
+    angular: str, length: str
+) -> None:
+    product = resolve(angular) * resolve(length)
+    found = fit(product, resolve("m/s"), rad_free=True)
+    natural = angular == "rad/s" and length == "m"
+    assert (found.kind == "ok") == natural
+    assert fit(product, resolve("m/s")).kind == "mismatch"  # no length involved
+
+
+def test_hz_and_rad_per_second() -> None:
+    hz, rad_s = resolve("Hz"), resolve("rad/s")
+    plain = fit(hz, rad_s)
+    assert plain.kind == "mismatch"
+    assert "2*math.pi" in conversion(hz, rad_s)
+    assert fit(hz, rad_s, scale=2 * math.pi).kind == "ok"
+    assert fit(rad_s, hz, scale=1 / (2 * math.pi)).kind == "ok"
+    assert fit(hz, rad_s, scale=0.5).kind == "mismatch"
+    assert conversion(resolve("rad"), resolve("1")) == ""
+
+
+def test_conversions_are_named_in_the_unit_the_value_has() -> None:
+    assert str(fit(resolve("s"), resolve("ns"), scale=1e6).got) == "us"
+    assert fit(resolve("1/Hz"), resolve("ms"), scale=1000.0).kind == "ok"
+    assert fit(resolve("ns"), resolve("s"), scale=1e-9).kind == "ok"
+
+
+def test_frames_only_one_side_names_do_not_clash() -> None:
+    from robotfix.annotations.units import label
+
+    in_map = resolve("m") * label("frame", "map")
+    in_odom = resolve("m") * label("frame", "odom")
+    assert fit(in_map, resolve("m")).kind == "ok"
+    assert fit(resolve("m"), in_map).kind == "ok"
+    assert fit(in_map, in_odom).kind == "mismatch"
