@@ -253,17 +253,18 @@ class _Reader:
     ) -> tuple[str, ast.Constant, Names] | None:
         """A metadata string, also through a name bound to a string constant; other
         metadata RobotFix cannot use is RF511 (a note the caller may drop)."""
+        written, written_names = meta, names  # where the note points
         if isinstance(meta, ast.Name):
             found = names.alias(meta)
             if found is not None:
                 meta, names = found.node, found.names
         if isinstance(meta, ast.Constant) and isinstance(meta.value, str):
             return meta.value, meta, names
-        shown = self.segment(meta, names) or "this metadata"
+        shown = self.segment(written, written_names) or "this metadata"
         if len(shown) > 60:
             shown = shown[:57] + "..."
-        line = meta.lineno
-        col = names.col_of(line, meta.col_offset)
+        line = written.lineno
+        col = written_names.col_of(line, written.col_offset)
         self.problems.append(AnnotationProblem(rules.UNUSED_METADATA, line, col, shown))
         return None
 

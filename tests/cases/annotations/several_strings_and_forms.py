@@ -41,3 +41,7 @@ def send(cmd: "Annotated[float, 'Unit(\"m/s\")']") -> Final[Annotated[float, "_ 
     msg = Twist()
     msg.angular.z = cmd  # error: RF201
     return -cmd  # warning: RF102
+
+
+Meters = Annotated[float, "Unit('m')"]
+not_a_string: Annotated[float, Meters] = 1.0  # note: RF511
