@@ -110,6 +110,22 @@ def annotation_problem(
     return Diagnostic(rule, path, Span.point(line, col), detail, notes)
 
 
+def unused_metadata(path: str, line: int, col: int, shown: str) -> Diagnostic:
+    return Diagnostic(
+        rules.UNUSED_METADATA,
+        path,
+        Span.point(line, col),
+        f"`{shown}` in `Annotated` is not checked: RobotFix reads only string "
+        "refinements",
+        (
+            Note(
+                "write the refinement as a string (`\"Unit('m') and 0 <= _ <= 1\"`), "
+                "or bind a module name to one and use that name"
+            ),
+        ),
+    )
+
+
 def duplicate_interface(path: str, type_name: str, first: str) -> Diagnostic:
     return Diagnostic(
         rules.DUPLICATE_INTERFACE,

@@ -92,6 +92,13 @@ UNKNOWN_MESSAGE_CLASS = Rule(
     Severity.NOTE,
 )
 
+UNUSED_METADATA = Rule(
+    "RF511",
+    "unused-annotated-metadata",
+    "Annotated metadata RobotFix cannot use (not a string)",
+    Severity.NOTE,
+)
+
 SOLVER_UNKNOWN = Rule("RF901", "solver-unknown", "Solver could not decide", W)
 ANALYSIS_BUDGET = Rule(
     "RF902", "analysis-budget-exceeded", "Analysis stopped early for this file", W
@@ -122,6 +129,7 @@ ALL_RULES: dict[str, Rule] = {
         MALFORMED_INTERFACE,
         MISPLACED_UNIT,
         UNKNOWN_MESSAGE_CLASS,
+        UNUSED_METADATA,
         DUPLICATE_INTERFACE,
         SOLVER_UNKNOWN,
         ANALYSIS_BUDGET,

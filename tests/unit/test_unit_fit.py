@@ -91,3 +91,12 @@ def test_frames_only_one_side_names_do_not_clash() -> None:
     assert fit(in_map, resolve("m")).kind == "ok"
     assert fit(resolve("m"), in_map).kind == "ok"
     assert fit(in_map, in_odom).kind == "mismatch"
+
+
+def test_an_implicit_gain_needs_the_same_scale() -> None:
+    """rad into rad/s is a unit gain (RF203); degrees into rad/s are degrees for
+    radians first, an error whatever the gain (the alias case's HEADING)."""
+    assert fit(resolve("rad"), resolve("rad/s")).kind == "time"
+    assert fit(resolve("m"), resolve("m/s")).kind == "time"
+    assert fit(resolve("degree"), resolve("rad/s")).kind == "mismatch"
+    assert fit(resolve("cm"), resolve("m/s")).kind == "mismatch"

@@ -17,6 +17,7 @@ from robotfix.analysis.program import Function
 from robotfix.analysis.state import State
 from robotfix.analysis.values import NONE, Value
 from robotfix.annotations import ast as A
+from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import INFINITY, NUMBERS
 from robotfix.annotations.units import Unit, named, resolve
 from robotfix.messages import Declared
@@ -174,10 +175,10 @@ class CallEvaluator(ExpressionEvaluator):
         """Terms for the names a callee's refinement mentions: constants and module
         names (which hold one value during the call), else fresh unknowns (the
         callee's own parameters are filled in by the caller)."""
-        predicate = getattr(decl, "predicate", A.TRUE)
+        predicates = decl.predicates() if isinstance(decl, Refinement) else []
         own = function.scope.local_names if function.scope is not None else set()
         found: dict[str, A.Expr] = {}
-        for ref in A.names(predicate):
+        for ref in [n for p in predicates for n in A.names(p)]:
             name = ref.name
             if name == "_" or name in found:
                 continue

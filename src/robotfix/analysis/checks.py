@@ -186,8 +186,10 @@ class Checker:
     ) -> Value:
         """Check `name = value` against its refinement; return what `name` holds."""
         declared = Declared(f"annotation of `{name}`", self.path, decl.line)
-        if value.kind == "msg":
+        if value.kind == "msg" or (decl.optional and value.kind == "none"):
             return value
+        if decl.elements is not None:
+            return self._assign_elements(state, name, decl, value, site, lookup)
         if self.report_uninit(value, site):
             return self.assumed(state, name, decl, lookup)
         fits = self.base_fits(decl.base, value, site, f"`{name}`")
@@ -211,11 +213,47 @@ class Checker:
     def assumed(
         self, state: State, name: str, decl: Refinement, lookup: dict[str, A.Expr]
     ) -> Value:
-        """A fresh value of `name` that satisfies its refinement."""
+        """A fresh value of `name` that satisfies its refinement (an optional one's
+        may be None: nothing is assumed; a tuple's elements each satisfy theirs)."""
+        if decl.elements is not None:
+            return Value(
+                "tuple",
+                elements=tuple(
+                    self.assumed(state, f"{name}[{i}]", part, lookup)
+                    if part is not None
+                    else self.ctx.fresh("unknown", f"`{name}[{i}]`")
+                    for i, part in enumerate(decl.elements)
+                ),
+            )
         value = self.ctx.fresh(decl.base, f"`{name}`", decl.unit)
         if value.term is not None:
-            state.assume(A.substitute(decl.predicate, {**lookup, "_": value.term}))
+            state.assume(A.substitute(decl.assumable, {**lookup, "_": value.term}))
         return value
+
+    def _assign_elements(
+        self,
+        state: State,
+        name: str,
+        decl: Refinement,
+        value: Value,
+        site: ast.AST,
+        lookup: dict[str, A.Expr],
+    ) -> Value:
+        """`name = (a, b)` against `tuple[Annotated[...], ...]`: element-wise. A value
+        whose elements are not known is not checked (and keeps what it is)."""
+        assert decl.elements is not None
+        parts = value.elements if value.kind == "tuple" else None
+        if parts is None or len(parts) != len(decl.elements):
+            return value
+        return replace(
+            value,
+            elements=tuple(
+                self.assign_refined(state, f"{name}[{i}]", part, got, site, lookup)
+                if part is not None
+                else got
+                for i, (part, got) in enumerate(zip(decl.elements, parts, strict=True))
+            ),
+        )
 
     def _stored(self, value: Value, decl: Refinement) -> Value:
         if decl.unit is not None:

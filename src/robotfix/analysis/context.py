@@ -10,13 +10,13 @@ import builtins
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
-from robotfix import messages
+from robotfix import messages, rules
 from robotfix.analysis.constants import ConstantNames
 from robotfix.analysis.index import FileIndex, index_scope
 from robotfix.analysis.values import Value, sort_of
 from robotfix.analysis.vc import VC, Verdict
 from robotfix.annotations import ast as A
-from robotfix.annotations.extract import Refinement, extract
+from robotfix.annotations.extract import Alias, Names, Refinement, extract
 from robotfix.diagnostics import Diagnostic, Span
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.source import SourceFile
@@ -76,6 +76,9 @@ class FileContext:
         self.ros1 = False  # ROS 1 code: standard messages have no default values
         self.constants = ConstantNames()  # which names are constants, and their values
         self._reported: set[tuple[object, ...]] = set()
+        # RF511 notes, kept only if the file turns out RobotFix-like (`metadata_notes`)
+        self._metadata_notes: list[Diagnostic] = []
+        self.uses_refinements = False  # some annotation of the file is a refinement
         # (span, markdown) for names and fields, kept only for editor hovers
         self.hovers: list[tuple[Span, str]] | None = None
         # (scope node id, variable) -> (units it flows into, target base kinds), for
@@ -202,8 +205,17 @@ class FileContext:
             self.source.segment,
             self.source.char_col,
             known,
+            self.alias_of,
         )
+        self.uses_refinements = self.uses_refinements or found is not None
         for problem in problems:
+            if problem.rule is rules.UNUSED_METADATA:
+                self._metadata_notes.append(
+                    messages.unused_metadata(
+                        self.source.path, problem.line, problem.col, problem.message
+                    )
+                )
+                continue
             self.report(
                 messages.annotation_problem(
                     self.source.path,
@@ -215,6 +227,37 @@ class FileContext:
                 once=("annotation", problem.line, problem.col, problem.message),
             )
         return found
+
+    def alias_of(self, node: ast.expr) -> Alias | None:
+        """A type alias or string constant of this module (a module summary could
+        hand over another module's, with that module's `Names`)."""
+        if not isinstance(node, ast.Name):
+            return None
+        found = self.index.aliases.get(node.id)
+        if found is None or node.id in self.constants.changed_globals:
+            return None
+        return Alias(found, self.names())
+
+    def names(self) -> Names:
+        return Names(
+            self.qualname,
+            self.msg_type_of,
+            self.source.segment,
+            self.source.char_col,
+            self.alias_of,
+        )
+
+    def metadata_notes(self) -> None:
+        """RF511, only in files that are RobotFix's business: they import a ROS
+        interface package or use refinements. Plain Python stays silent."""
+        ros = any(
+            len(parts) >= 3 and parts[1] in MSG_MODULES
+            for parts in (q.split(".") for q in self.imports.values())
+        )
+        if ros or self.uses_refinements:
+            for diag in self._metadata_notes:
+                self.report(diag, once=("metadata", diag.span.line, diag.span.col))
+        self._metadata_notes.clear()
 
 
 def build_scope(

@@ -259,7 +259,8 @@ class ExpressionEvaluator:
         """Terms for the other names a refinement mentions (`y == x`, `MAX_SPEED`,
         `math.pi`); a name not known here is a fresh unknown."""
         found: dict[str, A.Expr] = {}
-        for ref_name in A.names(decl.predicate):
+        mentioned = [n for p in decl.predicates() for n in A.names(p)]
+        for ref_name in mentioned:
             name = ref_name.name
             if name == "_" or name in found:
                 continue

@@ -36,6 +36,10 @@ class FileIndex:
     class_scopes: set[int] = field(default_factory=set)
     # names `x` of attributes stored or deleted anywhere (`obj.x = ...`, `del obj.x`)
     attribute_stores: set[str] = field(default_factory=set)
+    # module names bound once, at top level, to a type form or a string: type aliases
+    # (`Speed = Annotated[...]`, `Speed: TypeAlias = ...`, `type Speed = ...`) and
+    # metadata strings (`SPEC = "Unit('m')"`)
+    aliases: dict[str, ast.expr] = field(default_factory=dict)
 
 
 Todo = list[tuple[ast.AST, int, str | None, str | None]]
@@ -46,7 +50,63 @@ def index_module(tree: ast.Module) -> FileIndex:
     index.scopes[id(tree)] = ScopeNames()
     # (node, owning scope node id, enclosing top-level class, method's self name)
     _drain(index, [(node, id(tree), None, None) for node in tree.body], id(tree))
+    index.aliases = _aliases(tree)
     return index
+
+
+ALIAS_FORMS = (ast.Subscript, ast.BinOp, ast.Name, ast.Attribute, ast.Constant)
+
+
+def _aliases(tree: ast.Module) -> dict[str, ast.expr]:
+    """Top-level `Name = <type form or string>`, kept only when the name is bound by
+    no other top-level statement (a rebound name is no alias)."""
+    found: dict[str, ast.expr] = {}
+    seen: set[str] = set()
+    for statement in tree.body:
+        target: ast.expr | None = None
+        value: ast.expr | None = None
+        if isinstance(statement, ast.Assign) and len(statement.targets) == 1:
+            target, value = statement.targets[0], statement.value
+        elif isinstance(statement, ast.AnnAssign):
+            target, value = statement.target, statement.value
+        elif type(statement).__name__ == "TypeAlias":  # 3.12 `type X = ...`
+            target = getattr(statement, "name", None)
+            value = getattr(statement, "value", None)
+        else:
+            for name in _bound(statement):
+                seen.add(name)
+                found.pop(name, None)
+            continue
+        if not isinstance(target, ast.Name):
+            continue
+        name = target.id
+        if name in seen:
+            found.pop(name, None)
+        elif isinstance(value, ALIAS_FORMS) and _type_like(value):
+            found[name] = value
+        seen.add(name)
+    return found
+
+
+def _bound(statement: ast.stmt) -> set[str]:
+    """Module names another top-level statement binds."""
+    if isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+        return {statement.name}
+    if isinstance(statement, (ast.Import, ast.ImportFrom)):
+        return {(a.asname or a.name).split(".")[0] for a in statement.names}
+    return {
+        child.id
+        for child in ast.walk(statement)
+        if isinstance(child, ast.Name) and not isinstance(child.ctx, ast.Load)
+    }
+
+
+def _type_like(node: ast.expr) -> bool:
+    if isinstance(node, ast.Constant):
+        return isinstance(node.value, str)
+    if isinstance(node, ast.BinOp):
+        return isinstance(node.op, ast.BitOr)
+    return True
 
 
 def index_scope(index: FileIndex, node: ast.AST) -> ScopeNames:

@@ -64,6 +64,7 @@ def analyze_module(ctx: FileContext) -> None:
         if id(node) not in seen:
             seen.add(id(node))
             pending.extend(_analyze_body(ctx, program, node, parent, statics))
+    ctx.metadata_notes()
 
 
 def _analyze_body(
@@ -184,13 +185,19 @@ class Interpreter(CallEvaluator):
                 state.assume(fact)
             return value
         decl = self.scope.module().decls.get(name)
+        if decl is not None and decl.elements is not None:
+            value = self.check.assumed(
+                state, name, decl, self.refinement_lookup(decl, state)
+            )
+            self.globals_read[name] = (value, None)
+            return value
         value = self.ctx.fresh(
             decl.base if decl else "unknown", f"`{name}`", decl.unit if decl else None
         )
         self.globals_read[name] = (value, None)  # before the lookup: it may cycle
         if decl is not None and value.term is not None:
             fact = A.substitute(
-                decl.predicate,
+                decl.assumable,
                 {**self.refinement_lookup(decl, state), "_": value.term},
             )
             self.globals_read[name] = (value, fact)

@@ -9,7 +9,9 @@ string is RobotFix's only when it is blank (no refinement), or parses and compar
 something, uses `Unit`/`Frame`/`Tag`, or names the annotated value (`_` or its own
 name); or, when it does not parse, when it looks like a refinement or code
 (`_looks_like`).
-The first such string of an `Annotated` is its refinement; other strings are ignored.
+Every such string of an `Annotated` counts: together they are one conjunction.
+Metadata that is not a string (`ValueRange(0, 1)`, a name bound to no string
+constant) is reported as RF511, which the caller keeps only in RobotFix-like files.
 """
 
 from __future__ import annotations
@@ -17,7 +19,7 @@ from __future__ import annotations
 import ast
 import re
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from robotfix import rules
 from robotfix.annotations import ast as A
@@ -50,6 +52,21 @@ class Refinement:
     text: str  # the annotation string as written
     line: int
     msg_type: str | None = None
+    optional: bool = False  # `Optional[...]`: it holds when the value is not None
+    # `tuple[...]`: each element's refinement (None: unrefined); base is "tuple"
+    elements: tuple[Refinement | None, ...] | None = None
+
+    def predicates(self) -> list[A.Expr]:
+        """Its predicate and its elements': where the names it mentions are."""
+        found = [self.predicate]
+        for part in self.elements or ():
+            found += part.predicates() if part is not None else []
+        return found
+
+    @property
+    def assumable(self) -> A.Expr:
+        """What a read may assume: nothing when the value may be None."""
+        return A.TRUE if self.optional else self.predicate
 
 
 @dataclass(frozen=True)
@@ -60,6 +77,29 @@ class AnnotationProblem:
     message: str
 
 
+@dataclass(frozen=True)
+class Names:
+    """How one module's annotations name things: its imports (`qualname`), its
+    message classes, its type aliases, and where its source text is. An alias carries
+    the `Names` of the module that defines it, so a module summary can hand one
+    module's aliases to another."""
+
+    qualname: Callable[[ast.expr], str | None]
+    msg_type: Callable[[ast.expr], str | None]
+    source_segment: Callable[[ast.AST], str | None]
+    col_of: Callable[[int, int], int]
+    alias: Callable[[ast.expr], Alias | None] = lambda node: None
+
+
+@dataclass(frozen=True)
+class Alias:
+    """What a type alias (`Speed = Annotated[...]`, `Speed: TypeAlias = ...`,
+    `type Speed = ...`) or a string constant used as metadata stands for."""
+
+    node: ast.expr
+    names: Names
+
+
 def extract(
     node: ast.expr,
     self_name: str,
@@ -68,35 +108,218 @@ def extract(
     source_segment: Callable[[ast.AST], str | None],
     col_of: Callable[[int, int], int],
     known: Callable[[str], bool] = lambda name: True,
+    alias: Callable[[ast.expr], Alias | None] = lambda node: None,
 ) -> tuple[Refinement | None, list[AnnotationProblem]]:
-    """The refinement in `node`, if it is `Annotated[base, "predicate", ...]`
-    (possibly inside `Final[...]` or `ClassVar[...]`)."""
-    node = _unqualified(node, qualname)
-    if not isinstance(node, ast.Subscript) or qualname(node.value) not in ANNOTATED:
-        return None, []
-    args = node.slice.elts if isinstance(node.slice, ast.Tuple) else [node.slice]
-    for text_node in args[1:]:
-        if not isinstance(text_node, ast.Constant) or not isinstance(
-            text_node.value, str
-        ):
-            continue
-        text = text_node.value
-        start = _text_start(text_node, source_segment, col_of)
-        try:
-            predicate = parse_predicate(text)
-        except AnnotationSyntaxError as err:
-            if not _looks_like(text, self_name):
+    """The refinement in `node`: `Annotated[base, "predicate", ...]`, possibly inside
+    `Final[...]`/`ClassVar[...]`, `Optional[...]`/`Union[..., None]`/`... | None`, a
+    `tuple[...]` (per element), a string annotation, or behind a type alias."""
+    names = Names(qualname, msg_type, source_segment, col_of, alias)
+    reader = _Reader(self_name, known)
+    found = reader.read(node, names)
+    return found, reader.problems
+
+
+MAX_ALIAS_HOPS = 20  # `A = B`, `B = Optional[A]`...: a cycle ends here
+MAX_STRING_ANNOTATION = 2000  # characters of a string annotation worth parsing
+
+
+class _Reader:
+    def __init__(self, self_name: str, known: Callable[[str], bool]) -> None:
+        self.self_name = self_name
+        self.known = known
+        self.problems: list[AnnotationProblem] = []
+        self.hops = 0
+        self.synthetic: set[int] = set()  # nodes parsed from a string annotation
+
+    def read(self, node: ast.expr, names: Names) -> Refinement | None:
+        node, names = self.form(node, names)
+        inner = _optional_inner(node, names, self)
+        if inner is not None:
+            found = self.read(inner[0], inner[1])
+            return replace(found, optional=True) if found is not None else None
+        elements = _tuple_elements(node, names)
+        if elements is not None:
+            parts = tuple(self.read(e, names) for e in elements)
+            if all(p is None for p in parts):
+                return None
+            text = self.segment(node, names) or "tuple"
+            return Refinement("tuple", None, A.TRUE, text, node.lineno, elements=parts)
+        if isinstance(node, ast.Subscript) and names.qualname(node.value) in ANNOTATED:
+            return self.annotated(node, names)
+        return None
+
+    def form(self, node: ast.expr, names: Names) -> tuple[ast.expr, Names]:
+        """Strip qualifiers, parse a string annotation, follow aliases."""
+        while self.hops < MAX_ALIAS_HOPS:
+            if (
+                isinstance(node, ast.Subscript)
+                and names.qualname(node.value) in QUALIFIERS
+            ):
+                node = node.slice
                 continue
-            line, col = _at(start, err.offset)
-            problem = AnnotationProblem(rules.ANNOTATION_SYNTAX, line, col, err.message)
-            return None, [problem]
-        if text.strip() and not _is_refinement(predicate, self_name):
-            continue
-        base, mtype = _base(_unqualified(args[0], qualname), msg_type)
-        return _refinement(
-            predicate, base, mtype, text, node.lineno, self_name, start, known
+            if isinstance(node, ast.Constant) and isinstance(node.value, str):
+                parsed = self.parse_string(node, node.value)
+                if parsed is None:
+                    break
+                node = parsed
+                self.hops += 1
+                continue
+            found = names.alias(node) if isinstance(node, ast.Name) else None
+            if found is None:
+                break
+            node, names = found.node, found.names
+            self.hops += 1
+        return node, names
+
+    def parse_string(self, node: ast.Constant, text: str) -> ast.expr | None:
+        """`"Annotated[float, 'Unit(\\'m\\')']"` as an expression (parsed, never
+        evaluated); every node of it sits at the string, so problems point there."""
+        if len(text) > MAX_STRING_ANNOTATION or not (
+            "[" in text or text.strip().isidentifier()
+        ):
+            return None
+        try:
+            parsed = ast.parse(text.strip(), mode="eval").body
+        except (SyntaxError, ValueError, RecursionError, MemoryError):
+            return None
+        for child in ast.walk(parsed):
+            if isinstance(child, ast.expr):
+                ast.copy_location(child, node)
+                self.synthetic.add(id(child))
+        return parsed
+
+    def segment(self, node: ast.AST, names: Names) -> str | None:
+        return None if id(node) in self.synthetic else names.source_segment(node)
+
+    def annotated(self, node: ast.Subscript, names: Names) -> Refinement | None:
+        args = node.slice.elts if isinstance(node.slice, ast.Tuple) else [node.slice]
+        if not args:
+            return None
+        base_node, base_names = self.form(args[0], names)
+        nested = (
+            self.annotated(base_node, base_names)
+            if isinstance(base_node, ast.Subscript)
+            and base_names.qualname(base_node.value) in ANNOTATED
+            else None
         )
-    return None, []
+        used: list[tuple[A.Expr, str, tuple[int, int, bool]]] = []
+        for meta in args[1:]:
+            found_text = self.metadata(meta, names)
+            if found_text is None:
+                continue
+            text, text_node, text_names = found_text
+            start = self.text_start(text_node, text_names)
+            try:
+                predicate = parse_predicate(text)
+            except AnnotationSyntaxError as err:
+                if not _looks_like(text, self.self_name):
+                    continue
+                line, col = _at(start, err.offset)
+                self.problems.append(
+                    AnnotationProblem(rules.ANNOTATION_SYNTAX, line, col, err.message)
+                )
+                return None
+            if text.strip() and not _is_refinement(predicate, self.self_name):
+                continue
+            used.append((predicate, text, start))
+        if not used:
+            return nested
+        if nested is not None:
+            base, mtype = nested.base, nested.msg_type
+        else:
+            base, mtype = _base(_strip(base_node, base_names), base_names.msg_type)
+        unit = nested.unit if nested is not None else None
+        parts = [nested.predicate] if nested is not None else []
+        texts = [nested.text] if nested is not None else []
+        for predicate, text, start in used:
+            found, values = _split(predicate, self.self_name, start, self.problems)
+            if found is not None:
+                unit = found if unit is None else unit * found
+            parts += [
+                A.substitute(p, {self.self_name: A.Name(SELF)})
+                for p in values
+                if _names_known(p, self.self_name, self.known, start, self.problems)
+            ]
+            texts.append(text)
+        shown = (
+            " and ".join(texts)
+            if len(texts) == 1
+            else " and ".join(f"({t})" for t in texts)
+        )
+        return Refinement(base, unit, A.conjoin(parts), shown, node.lineno, mtype)
+
+    def metadata(
+        self, meta: ast.expr, names: Names
+    ) -> tuple[str, ast.Constant, Names] | None:
+        """A metadata string, also through a name bound to a string constant; other
+        metadata RobotFix cannot use is RF511 (a note the caller may drop)."""
+        written, written_names = meta, names  # where the note points
+        if isinstance(meta, ast.Name):
+            found = names.alias(meta)
+            if found is not None:
+                meta, names = found.node, found.names
+        if isinstance(meta, ast.Constant) and isinstance(meta.value, str):
+            return meta.value, meta, names
+        shown = self.segment(written, written_names) or "this metadata"
+        if len(shown) > 60:
+            shown = shown[:57] + "..."
+        line = written.lineno
+        col = written_names.col_of(line, written.col_offset)
+        self.problems.append(AnnotationProblem(rules.UNUSED_METADATA, line, col, shown))
+        return None
+
+    def text_start(self, node: ast.Constant, names: Names) -> tuple[int, int, bool]:
+        if id(node) in self.synthetic:
+            return node.lineno, names.col_of(node.lineno, node.col_offset), False
+        return _text_start(node, names.source_segment, names.col_of)
+
+
+OPTIONAL = frozenset({"typing.Optional", "typing_extensions.Optional"})
+UNION = frozenset({"typing.Union", "typing_extensions.Union"})
+TUPLE = frozenset({"typing.Tuple", "typing_extensions.Tuple"})
+
+
+def _optional_inner(
+    node: ast.expr, names: Names, reader: _Reader
+) -> tuple[ast.expr, Names] | None:
+    """`X` of `Optional[X]`, `Union[X, None]`, `X | None` (either order)."""
+    if isinstance(node, ast.Subscript):
+        head = names.qualname(node.value)
+        if head in OPTIONAL:
+            return node.slice, names
+        if head not in UNION or not isinstance(node.slice, ast.Tuple):
+            return None
+        options = list(node.slice.elts)
+    elif isinstance(node, ast.BinOp) and isinstance(node.op, ast.BitOr):
+        options = [node.left, node.right]
+    else:
+        return None
+    if len(options) != 2:
+        return None
+    rest = [o for o in options if not _is_none(reader.form(o, names)[0])]
+    return (rest[0], names) if len(rest) == 1 else None
+
+
+def _is_none(node: ast.expr) -> bool:
+    return isinstance(node, ast.Constant) and node.value is None
+
+
+def _tuple_elements(node: ast.expr, names: Names) -> list[ast.expr] | None:
+    """The element types of a fixed-length `tuple[A, B]` / `Tuple[A, B]`."""
+    if not isinstance(node, ast.Subscript):
+        return None
+    head = node.value
+    builtin = isinstance(head, ast.Name) and head.id == "tuple"
+    if not builtin and names.qualname(head) not in TUPLE:
+        return None
+    elements = node.slice.elts if isinstance(node.slice, ast.Tuple) else [node.slice]
+    if any(isinstance(e, ast.Constant) and e.value is Ellipsis for e in elements):
+        return None  # tuple[X, ...]: any length
+    return list(elements)
+
+
+def _strip(node: ast.expr, names: Names) -> ast.expr:
+    return _unqualified(node, names.qualname)
 
 
 def _looks_like(text: str, self_name: str) -> bool:
@@ -118,25 +341,6 @@ def _is_refinement(predicate: A.Expr, self_name: str) -> bool:
         if isinstance(node, A.Name) and node.name.split(".")[0] in (SELF, self_name):
             return True
     return False
-
-
-def _refinement(
-    predicate: A.Expr,
-    base: str,
-    mtype: str | None,
-    text: str,
-    line: int,
-    self_name: str,
-    start: tuple[int, int, bool],
-    known: Callable[[str], bool],
-) -> tuple[Refinement | None, list[AnnotationProblem]]:
-    problems: list[AnnotationProblem] = []
-    unit, value_parts = _split(predicate, self_name, start, problems)
-    value_parts = [
-        p for p in value_parts if _names_known(p, self_name, known, start, problems)
-    ]
-    renamed = A.substitute(A.conjoin(value_parts), {self_name: A.Name(SELF)})
-    return Refinement(base, unit, renamed, text, line, mtype), problems
 
 
 def _base(

@@ -161,7 +161,7 @@ def fit(got: Unit, expected: Unit, scale: float = 1.0, rad_free: bool = False) -
         if not rad_free:  # a revolution is 2*pi radians: `2 * math.pi * f`
             factor = factor * TWO_PI if angle < 0 else factor / TWO_PI
             if not math.isclose(factor, expected.factor, rel_tol=1e-3):
-                return _other(diff, raw, scale)  # not a revolution: a plain factor
+                return _other(diff, raw, scale, got, expected)  # a plain factor
         del diff["radian"]
     if not diff:
         if got.offset or expected.offset:
@@ -171,15 +171,20 @@ def fit(got: Unit, expected: Unit, scale: float = 1.0, rad_free: bool = False) -
         ):  # a conversion, or a plain factor (`(left + right) * r / 2`)
             return Fit("ok", shown)
         return Fit("mismatch", shown, Unit(expected.dims, factor))
-    return _other(diff, raw, scale)
+    return _other(diff, raw, scale, got, expected)
 
 
-def _other(diff: dict[str, int], raw: Unit, scale: float) -> Fit:
+def _other(
+    diff: dict[str, int], raw: Unit, scale: float, got: Unit, expected: Unit
+) -> Fit:
     """Dimensions differ. One power of s is an implicit gain (`angular.z = yaw_error`,
     unit gain P-control) or, with a literal factor, an implicit time step
     (`x += vx * 0.1`): RF203. A velocity given as a position with no factor at all
-    has no step to hide in, and anything else is a mismatch."""
+    has no step to hide in, and anything else is a mismatch: so is another scale of
+    the same quantity (degrees into rad/s), whatever the gain."""
     seconds = diff.get("second", 0) if set(diff) == {"second"} else 0
+    if not math.isclose(got.factor, expected.factor, rel_tol=1e-3):
+        return Fit("mismatch", raw)
     if seconds == 1 or (seconds == -1 and not math.isclose(scale, 1.0)):
         return Fit("time", raw, seconds=seconds)
     return Fit("mismatch", raw)

@@ -32,14 +32,17 @@ class Session:
     """Incremental solving for the VCs of one file. One solver holds the facts of
     the current path, one push frame per fact: a VC whose facts share a prefix with
     the previous VC's pops back to it and asserts only the rest. The goal is asked as
-    a check assumption. The budget (rlimit) is set once and bounds each question."""
+    a check assumption. The budget (rlimit) is set once and bounds each question.
+    Each session has a z3 context of its own, so a file's models (the counterexamples
+    shown) do not depend on which files the same process checked before (`-j`)."""
 
     def __init__(self, rlimit: int = RLIMIT) -> None:
-        self._solver = z3.Solver()
+        context = z3.Context()
+        self._solver = z3.Solver(ctx=context)
         self._solver.set("random_seed", 0)
         self._solver.set("rlimit", rlimit)
         self._facts: list[object] = []
-        self._encoder = Encoder()
+        self._encoder = Encoder(context)
 
     def check(self, vc: VC) -> Verdict:
         self._assert_facts(vc.facts)

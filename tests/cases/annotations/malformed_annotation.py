@@ -12,4 +12,4 @@ limit = 4
 in_scope: Annotated[float, "_ < limit"] = 3
 still_checked: Annotated[int, "_ < 200"] = 200  # error: RF101
 aliased: t.Annotated[int, "_ > 0"] = 0  # error: RF101
-not_ours: Annotated[float, 3.5] = 2
+not_ours: Annotated[float, 3.5] = 2  # note: RF511
