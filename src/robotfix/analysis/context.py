@@ -9,6 +9,7 @@ import ast
 import builtins
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 from robotfix import messages
 from robotfix.analysis.index import FileIndex, index_scope
@@ -19,6 +20,9 @@ from robotfix.annotations.extract import Refinement, extract
 from robotfix.diagnostics import Diagnostic, Span
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.source import SourceFile
+
+if TYPE_CHECKING:
+    from robotfix.analysis.parameters import ParamContext
 
 MSG_MODULES = ("msg", "srv", "action")
 # ROS 1 generates AddTwoIntsRequest, FibonacciGoal...; ROS 2 nests AddTwoInts.Request.
@@ -71,6 +75,7 @@ class FileContext:
         self.imports: dict[str, str] = {}  # local name -> qualified name
         self.star_import = False
         self._reported: set[tuple[object, ...]] = set()
+        self.parameters: ParamContext | None = None  # built at the first ROS call
         # (span, markdown) for names and fields, kept only for editor hovers
         self.hovers: list[tuple[Span, str]] | None = None
         # (scope node id, variable) -> (units it flows into, target base kinds), for
