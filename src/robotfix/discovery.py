@@ -88,7 +88,13 @@ def discover(
     python_paths = [p for p in paths if p not in named_yaml]
     files, packages = _python_files(python_paths, config, found.notices)
     found.python_files = files
-    _parameter_files(found, named_yaml, packages, [*paths, *packages])
+    folders = [p for p in python_paths if os.path.isdir(p)]
+    scanned = [
+        package
+        for package in packages
+        if within(package, folders) or any(within(f, [package]) for f in folders)
+    ]
+    _parameter_files(found, named_yaml, scanned, [*paths, *packages])
     roots = [*paths, *config.msg_paths, *packages]
     folders = list(config.msg_paths) + _interface_folders(packages)
     found.interface_files = _interface_files(folders, roots, found.notices)
@@ -103,13 +109,14 @@ def _parameter_files(
     found: Discovery, named: list[Path], packages: list[Path], roots: list[Path]
 ) -> None:
     """Parameter YAML files: those named, and those in the config/, params/ and
-    param/ folders of the packages; generate_parameter_library definitions named
-    by the packages' CMakeLists.txt or setup.py; and the Python files of the
+    param/ folders of the packages under (or around) the folders named;
+    generate_parameter_library definitions named by those packages' (and named
+    files' packages') CMakeLists.txt or setup.py; and the Python files of the
     packages around named files, whose declarations they are checked against."""
     around = [p for p in (_package_around(n) for n in named) if p is not None]
     folders = [
         package / name
-        for package in [*packages, *around]
+        for package in packages
         for name in PARAMETER_FOLDERS
         if os.path.isdir(package / name)
     ]

@@ -242,20 +242,36 @@ class _Table:
                 continue
             nodes = summary.node_names.get(ROSPY, [])
             head, _, rest = entry.name.partition("/")
-            wanted = {f"/{entry.name}", entry.name, f"~{entry.name}"}
+            wanted = {f"/{entry.name}", f"~{entry.name}"}
             if rest and head in nodes:
                 wanted.add(f"~{rest}")
             for name in sorted(wanted):
-                decls = [
+                sites = [
                     d
                     for d in summary.decls
-                    if d.ros == 1 and d.owner == ROSPY and d.name == name
+                    if d.ros == 1 and ros1_name(d.name, nodes) == name
                 ]
-                if decls:
+                if sites:
                     candidate = _Parameter(name, 1)
-                    candidate.refinements = summary.refinements(ROSPY, name, False)
+                    candidate.refinements = [
+                        a
+                        for a in summary.attached
+                        if a.owner == ROSPY and ros1_name(a.name, nodes) == name
+                    ]
                     found.append(candidate)
         return found
+
+
+def ros1_name(name: str, nodes: list[str]) -> str:
+    """A rospy parameter name resolved for a node in the root namespace: `rate`
+    is `/rate`, and `/node/rate` is the node's private `~rate`."""
+    if name.startswith("~"):
+        return name
+    absolute = name if name.startswith("/") else f"/{name}"
+    for node in nodes:
+        if absolute.startswith(f"/{node}/"):
+            return "~" + absolute[len(node) + 2 :]
+    return absolute
 
 
 def _owners(summary: Summary) -> list[str]:
@@ -441,6 +457,8 @@ def _report(
     col = getattr(value, "col", entry.col)
     typed = (P.ros2_value if layout == "ros2" else P.ros1_value)(value, [Y.WALK_BUDGET])
     shown = typed.text if typed is not None else "..."
+    if isinstance(value, Y.Scalar) and not value.plain:
+        shown = f'"{shown}"'
     if len(shown) > 40:
         shown = shown[:37] + "..."
     node = f" (node `{entry.node}`)" if entry.node else ""

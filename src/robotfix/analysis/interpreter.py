@@ -578,7 +578,8 @@ class Interpreter(CallEvaluator):
             or y.kind == "msg"
             or kind not in ("int", "float", "bool", "str", "unknown")
         ):
-            return x if x.kind == y.kind and x.ref == y.ref else Value("unknown")
+            same = x.kind == y.kind and x.ref == y.ref and x.name == y.name
+            return x if same else Value("unknown")
         merged = self.ctx.fresh(kind, "a value set on several paths", unit)
         return replace(merged, literal=x.literal and y.literal)
 

@@ -112,6 +112,14 @@ class Summary:
     bases: dict[str, list[str]] = field(default_factory=dict)  # class -> bases here
     listeners: dict[str, list[str]] = field(default_factory=dict)  # owner -> gpl ns
     by_node: dict[int, ParamDecl] = field(default_factory=dict)
+    constants: dict[str, object] = field(default_factory=dict)  # module constants
+    imports: dict[str, str] = field(default_factory=dict)
+
+    def constant(self, node: ast.expr | None) -> object:
+        """A constant argument as this pass reads it (UNKNOWN if it is not one)."""
+        if node is None:
+            return UNKNOWN
+        return constant_of(node, self.constants, self.imports)
 
     def lineage(self, owner: str) -> list[str]:
         """`owner` and the classes of this file it inherits from, nearest first."""
@@ -160,7 +168,9 @@ def summarize(source: SourceFile, index: FileIndex | None = None) -> Summary:
     if tree is None:
         return summary
     index = index or index_module(tree)
-    walker = _Walker(source, index, summary, _module_constants(tree, index))
+    summary.constants = _module_constants(tree, index)
+    summary.imports = index.imports
+    walker = _Walker(source, index, summary, summary.constants)
     module_body: list[ast.stmt] = []
     for statement in tree.body:
         if isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef)):
