@@ -94,7 +94,7 @@ def discover(
         for package in packages
         if within(package, folders) or any(within(f, [package]) for f in folders)
     ]
-    _parameter_files(found, named_yaml, scanned, [*paths, *packages])
+    _parameter_files(found, named_yaml, scanned, [*paths, *packages], config)
     roots = [*paths, *config.msg_paths, *packages]
     folders = list(config.msg_paths) + _interface_folders(packages)
     found.interface_files = _interface_files(folders, roots, found.notices)
@@ -106,7 +106,11 @@ def discover(
 
 
 def _parameter_files(
-    found: Discovery, named: list[Path], packages: list[Path], roots: list[Path]
+    found: Discovery,
+    named: list[Path],
+    packages: list[Path],
+    roots: list[Path],
+    config: Config,
 ) -> None:
     """Parameter YAML files: those named, and those in the config/, params/ and
     param/ folders of the packages under (or around) the folders named;
@@ -124,9 +128,14 @@ def _parameter_files(
     chosen = _OnePathEach()
     for path in named:
         chosen.add(path, os.path.realpath(path), False)
-    for _, entries in walker.walk(folders, _is_yaml, lambda _: False):
+    pruned = lambda folder: config.excluded(folder, folder=True)  # noqa: E731
+    for _, entries in walker.walk(folders, _is_yaml, pruned):
         for entry in entries:
-            if _is_yaml(entry.path.name) and entry.regular:
+            if (
+                _is_yaml(entry.path.name)
+                and entry.regular
+                and not config.excluded(entry.path)
+            ):
                 chosen.add(entry.path, entry.real, entry.link)
     found.parameter_files = chosen.paths()
     found.named_parameter_files = list(named)

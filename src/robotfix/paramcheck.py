@@ -34,8 +34,9 @@ from pathlib import Path
 from robotfix import messages
 from robotfix.analysis.parameters import ROSPY, Attached, ParamDecl, Summary, summarize
 from robotfix.annotations import ast as A
+from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic, Span
-from robotfix.fs import UnreadableError, read_regular
+from robotfix.fs import UnreadableError, read_regular, read_text
 from robotfix.messages import Declared
 from robotfix.ros import paramfile as P
 from robotfix.ros import yamlfile as Y
@@ -44,6 +45,9 @@ from robotfix.source import SourceFile
 
 # A Python file is summarised only if it mentions one of these (bytes, quick).
 MENTIONS = (b"declare_parameter", b"get_param", b"ParamListener")
+_SUPPRESS = re.compile(
+    r"#\s*robotfix:\s*ignore(?:\[(?P<codes>[^\]]*)\])?", re.IGNORECASE
+)
 _DECIMAL = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
 TYPE_WHY = (
     "a ROS 2 parameter keeps the type it was declared with: rclpy refuses "
@@ -102,13 +106,16 @@ def check_parameter_files(
     definition_files: list[Path],
     python_files: Iterable[Path],
     named: Iterable[Path] = (),
+    config: Config | None = None,
 ) -> list[Diagnostic]:
     """Diagnostics for the parameter files and generate_parameter_library
     definitions of a run; `python_files` are those whose declarations count. A
     file that is not valid YAML is RF003 when it was `named` on the command line
     or is a definitions file; found in a package's config folder, it is skipped
-    (it may be a template or another tool's file)."""
+    (it may be a template or another tool's file). A YAML line ending in
+    `# robotfix: ignore[RF101]` and `per-file-ignores` silence as in Python."""
     loud = {str(p) for p in [*named, *definition_files]}
+    texts: dict[str, str] = {}
     out: list[Diagnostic] = []
     summaries = _summaries(python_files)
     definitions: dict[str, list[tuple[P.Definition, str]]] = {}
@@ -117,7 +124,7 @@ def check_parameter_files(
         key = str(path)
         if key in read:
             continue
-        loaded = _load(path, key in loud, out)
+        loaded = _load(path, key in loud, out, texts)
         if loaded is None:
             continue
         read[key] = loaded
@@ -145,7 +152,23 @@ def check_parameter_files(
                 first = failures[0]
                 assert first is not None
                 out.append(_report(str(path), entry, first, loaded.layout, budget))
-    return out
+    return [d for d in out if not _silenced(d, texts.get(d.path, ""), config)]
+
+
+def _silenced(diag: Diagnostic, text: str, config: Config | None) -> bool:
+    if config is not None and (
+        {diag.code, diag.rule.name} & config.ignored_codes(Path(diag.path))
+    ):
+        return True
+    lines = text.splitlines()
+    if not 0 < diag.span.line <= len(lines):
+        return False
+    match = _SUPPRESS.search(lines[diag.span.line - 1])
+    if match is None:
+        return False
+    codes = match["codes"]
+    listed = {c.strip() for c in codes.split(",")} if codes is not None else None
+    return listed is None or bool({diag.code, diag.rule.name} & listed)
 
 
 def _summaries(python_files: Iterable[Path]) -> list[Summary]:
@@ -168,10 +191,21 @@ def _summaries(python_files: Iterable[Path]) -> list[Summary]:
     return found
 
 
-def _load(path: Path, named: bool, out: list[Diagnostic]) -> P.ParamFile | None:
+def _load(
+    path: Path, named: bool, out: list[Diagnostic], texts: dict[str, str]
+) -> P.ParamFile | None:
     """A parameter file's layout and entries; a file that cannot be read or is not
     valid YAML is RF003 (ROS could not load it either)."""
-    root = Y.read(path)
+    try:
+        text = read_text(path, Y.MAX_YAML_BYTES)
+    except UnreadableError as err:
+        text = ""
+        root: Y.Node | Y.YamlProblem | None = Y.YamlProblem(
+            f"cannot read: {err.reason}", 1, 0
+        )
+    else:
+        texts[str(path)] = text
+        root = Y.parse(text)
     if isinstance(root, Y.YamlProblem):
         if named:
             out.append(

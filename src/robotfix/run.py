@@ -109,7 +109,7 @@ def check_paths(
                 outcome.fingerprint,
             )
     result.diagnostics.extend(interface_problems(catalog, used))
-    result.diagnostics.extend(_parameter_problems(found, files))
+    result.diagnostics.extend(_parameter_problems(found, files, config))
     result.files += len(found.parameter_files)
     result.diagnostics = finish(result.diagnostics)
     if cache is not None:
@@ -121,7 +121,9 @@ def check_paths(
     return result
 
 
-def _parameter_problems(found: Discovery, files: list[Path]) -> list[Diagnostic]:
+def _parameter_problems(
+    found: Discovery, files: list[Path], config: Config
+) -> list[Diagnostic]:
     """Parameter files against the parameters the code declares (not cached:
     they depend on every checked file)."""
     if not found.parameter_files and not found.parameter_definitions:
@@ -133,6 +135,7 @@ def _parameter_problems(found: Discovery, files: list[Path]) -> list[Diagnostic]
         found.parameter_definitions,
         [*files, *found.summary_files],
         found.named_parameter_files,
+        config,
     )
 
 

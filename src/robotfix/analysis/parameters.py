@@ -84,9 +84,12 @@ class ParamDecl:
     ignore_override: bool = False
     node_id: int = 0  # id() of the call or tuple, for the analysis
 
-    @property
-    def has_default(self) -> bool:
-        return self.default is not None
+    def meaning(self) -> tuple[object, ...]:
+        """What a read of it may assume: two declarations with the same meaning
+        (on two paths) are as good as one."""
+        rng = self.range
+        bounds = (rng.integer, rng.from_value, rng.to_value, rng.step) if rng else None
+        return (self.type, bounds, self.dynamic, self.ignore_override)
 
 
 @dataclass(frozen=True)
@@ -133,10 +136,17 @@ class Summary:
         return found
 
     def declaration(self, owner: str, name: str) -> ParamDecl | None:
+        """The declaration of `name` nearest in `owner`'s lineage; None when there
+        is none, or several that disagree (declared on different paths)."""
         for current in self.lineage(owner):
-            for decl in self.decls:
-                if decl.owner == current and decl.name == name and decl.ros == 2:
-                    return decl
+            found = [
+                d
+                for d in self.decls
+                if d.owner == current and d.name == name and d.ros == 2
+            ]
+            if found:
+                same = len({d.meaning() for d in found}) == 1
+                return found[0] if same else None
         return None
 
     def refinements(

@@ -4,6 +4,7 @@ from typing import Annotated
 import rclpy
 from geometry_msgs.msg import Twist
 from rclpy.node import Node
+from rclpy.parameter import Parameter
 from rcl_interfaces.msg import FloatingPointRange, IntegerRange, ParameterDescriptor
 
 
@@ -25,6 +26,7 @@ class Driver(Node):
             ),
         )
         self.declare_parameter("wheel_base", 0.3)
+        self.declare_parameter("odom_rate", Parameter.Type.DOUBLE)  # no default
         self.declare_parameter("frame_id", "base_link")
         self.declare_parameter("holonomic", False)
         self.declare_parameter("gains", [1.0, 0.1, 0.0])
