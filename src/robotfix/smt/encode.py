@@ -15,9 +15,10 @@ from robotfix.annotations import ast as A
 
 
 class Encoder:
-    def __init__(self) -> None:
+    def __init__(self, ctx: Any = None) -> None:
         self.syms: dict[int, Any] = {}
         self._fresh = 0
+        self.ctx = ctx  # the z3 context terms are made in (None: z3's global one)
 
     def sym(self, node: A.Sym) -> Any:
         if node.ident not in self.syms:
@@ -25,29 +26,31 @@ class Encoder:
             make = {"int": z3.Int, "bool": z3.Bool, "str": z3.String}.get(
                 node.sort, z3.Real
             )
-            self.syms[node.ident] = make(name)
+            self.syms[node.ident] = make(name, self.ctx)
         return self.syms[node.ident]
 
     def fresh(self, sort: str) -> Any:
         self._fresh += 1
         make = {"bool": z3.Bool, "real": z3.Real}[sort]
-        return make(f"_f{self._fresh}")
+        return make(f"_f{self._fresh}", self.ctx)
 
     def encode(self, node: A.Expr) -> Any:
         if isinstance(node, A.Num):
             if node.is_int and node.value.denominator == 1:
-                return z3.IntVal(node.value.numerator)
-            return z3.Q(node.value.numerator, node.value.denominator)
+                return z3.IntVal(node.value.numerator, self.ctx)
+            return z3.Q(node.value.numerator, node.value.denominator, self.ctx)
         if isinstance(node, A.Bool):
-            return z3.BoolVal(node.value)
+            return z3.BoolVal(node.value, self.ctx)
         if isinstance(node, A.Str):
-            return z3.StringVal(node.value)
+            return z3.StringVal(node.value, self.ctx)
         if isinstance(node, A.Sym):
             return self.sym(node)
         if isinstance(node, A.Name):  # an unresolved name: nothing is known of it
             return self.fresh("real")
         if isinstance(node, A.UnitIs):
-            return z3.BoolVal(True)  # units are checked by the analysis, not here
+            return z3.BoolVal(
+                True, self.ctx
+            )  # units are checked by the analysis, not here
         if isinstance(node, A.Unary):
             if node.op == "not":
                 return z3.Not(self.boolean(node.operand))

@@ -31,14 +31,18 @@ class Session:
     """Incremental solving for the VCs of one file. One solver holds the facts of
     the current path, one push frame per fact: a VC whose facts share a prefix with
     the previous VC's pops back to it and asserts only the rest. The goal is asked as
-    a check assumption. The budget (rlimit) is set once and bounds each question."""
+    a check assumption. The budget (rlimit) is set once and bounds each question.
+    Each session has a z3 context of its own: in z3's global context, the models
+    (the values a note shows) depend on what the process solved before, so a file
+    checked in another worker (`-j`) could show other values."""
 
     def __init__(self, rlimit: int = RLIMIT) -> None:
-        self._solver = z3.Solver()
+        self._ctx = z3.Context()
+        self._solver = z3.Solver(ctx=self._ctx)
         self._solver.set("random_seed", 0)
         self._solver.set("rlimit", rlimit)
         self._facts: list[object] = []
-        self._encoder = Encoder()
+        self._encoder = Encoder(self._ctx)
 
     def check(self, vc: VC) -> Verdict:
         self._assert_facts(vc.facts)
