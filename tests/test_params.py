@@ -307,3 +307,110 @@ def test_generate_parameter_library_validators() -> None:
     assert broken("element_bounds", "[0, 1]", "[0.5, 2.0]") == "element_bounds<> [0, 1]"
     assert broken("subset_of", "[[1, 2]]", "[1, 3]") == "subset_of<> [1, 2]"
     assert broken("custom::check", "null", "3") is None
+
+
+# -- nothing crashes --------------------------------------------------------------
+
+DRIVER = PACKAGES / "ros2_driver" / "ros2_driver" / "driver.py"
+SCALARS = st.one_of(
+    st.none(),
+    st.booleans(),
+    st.integers(min_value=-(2**70), max_value=2**70),
+    st.floats(),
+    st.text(max_size=8),
+)
+TREES = st.recursive(
+    SCALARS,
+    lambda inner: st.one_of(
+        st.lists(inner, max_size=4),
+        st.dictionaries(
+            st.sampled_from(
+                ["driver", "/**", "ros__parameters", "max_speed", "limits", "type"]
+            )
+            | st.text(max_size=5),
+            inner,
+            max_size=4,
+        ),
+    ),
+    max_leaves=25,
+)
+
+
+@settings(max_examples=40, deadline=None)
+@given(TREES)
+def test_any_yaml_tree_is_checked_without_crashing(tree: object) -> None:
+    import tempfile
+
+    import yaml
+
+    text = yaml.safe_dump(tree)
+    with tempfile.TemporaryDirectory() as folder:
+        path = write(Path(folder) / "p.yaml", text)
+        for found in paramcheck.check_parameter_files([path], [], [DRIVER], [path]):
+            assert found.code in ("RF101", "RF401", "RF003")
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.text(max_size=60))
+def test_any_text_parses_or_is_a_yaml_problem(text: str) -> None:
+    found = Y.parse(text)
+    if not isinstance(found, Y.YamlProblem):
+        P.classify(found)
+
+
+ARGUMENTS = st.lists(
+    st.sampled_from(
+        [
+            "'a'",
+            "1",
+            "1.5",
+            "-2",
+            "None",
+            "x",
+            "[1, 2.0]",
+            "('b', 1.0, d)",
+            "[('c', 2)]",
+            "d",
+            "ParameterDescriptor(integer_range=[IntegerRange(to_value=3)])",
+            "ParameterDescriptor(floating_point_range=[FloatingPointRange("
+            "from_value=1.0, to_value=-1.0, step=0.3)])",
+            "name='b'",
+            "value=2.0",
+            "descriptor=d",
+            "*a",
+            "**k",
+            "Parameter.Type.DOUBLE",
+            "float('nan')",
+            "1e308 * 10",
+        ]
+    ),
+    max_size=4,
+)
+CALL_SITES = (
+    "self.declare_parameter({})",
+    "v: Annotated[float, '0 < _ <= 1'] = self.declare_parameter({}).value",
+    "w: Annotated[int, '_ > 0'] = self.get_parameter({}).value",
+    "u: Annotated[str, \"_ == 'a'\"] = rospy.get_param({})",
+    "self.declare_parameters({})",
+    "t = self.get_parameter({}).get_parameter_value().double_value",
+)
+
+
+@settings(max_examples=60, deadline=None)
+@given(ARGUMENTS, ARGUMENTS, st.sampled_from(CALL_SITES), st.sampled_from(CALL_SITES))
+def test_any_parameter_call_is_analysed_without_crashing(
+    first: list[str], second: list[str], site_a: str, site_b: str
+) -> None:
+    from robotfix.api import check_source
+
+    source = (
+        "from typing import Annotated\nimport rospy\nfrom rclpy.node import Node\n"
+        "d = ParameterDescriptor(floating_point_range=[FloatingPointRange("
+        "from_value=0.0, to_value=1.0)])\n"
+        "class N(Node):\n    def __init__(self, x, *a, **k):\n"
+        "        super().__init__('n')\n"
+        f"        {site_a.format(', '.join(first))}\n"
+        f"        {site_b.format(', '.join(second))}\n"
+    )
+    for found in check_source(source, "fuzz.py"):
+        assert found.code in ("RF101", "RF102", "RF301", "RF401", "RF001"), found
