@@ -44,7 +44,10 @@ from robotfix.smt.fold import fold
 from robotfix.source import SourceFile
 
 # A Python file is summarised only if it mentions one of these (bytes, quick).
-MENTIONS = (b"declare_parameter", b"get_param", b"ParamListener")
+MENTIONS = {
+    "ros2": (b"declare_parameter", b"get_parameter", b"ParamListener"),
+    "ros1": (b"rospy",),
+}
 _SUPPRESS = re.compile(
     r"#\s*robotfix:\s*ignore(?:\[(?P<codes>[^\]]*)\])?", re.IGNORECASE
 )
@@ -117,7 +120,6 @@ def check_parameter_files(
     loud = {str(p) for p in [*named, *definition_files]}
     texts: dict[str, str] = {}
     out: list[Diagnostic] = []
-    summaries = _summaries(python_files)
     definitions: dict[str, list[tuple[P.Definition, str]]] = {}
     read: dict[str, P.ParamFile] = {}
     for path in [*definition_files, *files]:
@@ -134,7 +136,9 @@ def check_parameter_files(
                     (definition, key)
                 )
             out.extend(_definition_defaults(loaded, key))
-    table = _Table(summaries, definitions)
+    layouts = {f.layout for f in read.values() if f.entries}
+    words = tuple(w for layout in sorted(layouts) for w in MENTIONS.get(layout, ()))
+    table = _Table(_summaries(python_files, words) if words else [], definitions)
     for path in files:
         loaded = read.get(str(path))
         if loaded is None or loaded.layout == "definitions":
@@ -171,7 +175,8 @@ def _silenced(diag: Diagnostic, text: str, config: Config | None) -> bool:
     return listed is None or bool({diag.code, diag.rule.name} & listed)
 
 
-def _summaries(python_files: Iterable[Path]) -> list[Summary]:
+def _summaries(python_files: Iterable[Path], words: tuple[bytes, ...]) -> list[Summary]:
+    """The summaries of the files that mention one of `words` (a quick filter)."""
     found: list[Summary] = []
     seen: set[str] = set()
     for path in python_files:
@@ -183,7 +188,7 @@ def _summaries(python_files: Iterable[Path]) -> list[Summary]:
             data = read_regular(path)
         except UnreadableError:
             continue
-        if not any(word in data for word in MENTIONS):
+        if not any(word in data for word in words):
             continue
         source = SourceFile.from_bytes(str(path), data)
         if source.tree is not None:
@@ -228,24 +233,27 @@ class _Table:
         self.summaries = summaries
         self.definitions = definitions
         self.packages = {s.path: _package_of(Path(s.path)) for s in summaries}
+        # ROS 2 owners whose parameters a file may set: (summary, owner, names)
+        self.owners = [
+            (summary, owner, summary.names_of(owner))
+            for summary in summaries
+            for owner in _owners(summary)
+            if not any(o in summary.auto_declare for o in summary.lineage(owner))
+        ]
 
     def ros2(self, entry: P.Entry, package: Path | None) -> list[_Parameter]:
         node = entry.node_name
         wildcard = node in ("*", "**")
         found: list[_Parameter] = []
-        for summary in self.summaries:
-            for owner in _owners(summary):
-                names = summary.names_of(owner)
-                if wildcard:
-                    if package is None or self.packages[summary.path] != package:
-                        continue
-                elif node not in names:
+        for summary, owner, names in self.owners:
+            if wildcard:
+                if package is None or self.packages[summary.path] != package:
                     continue
-                if any(o in summary.auto_declare for o in summary.lineage(owner)):
-                    continue
-                candidate = self._ros2_parameter(summary, owner, entry.name)
-                if candidate is not None:
-                    found.append(candidate)
+            elif node not in names:
+                continue
+            candidate = self._ros2_parameter(summary, owner, entry.name)
+            if candidate is not None:
+                found.append(candidate)
         if not wildcard:
             for definition, path in self.definitions.get(node, []):
                 if definition.matches(entry.name):

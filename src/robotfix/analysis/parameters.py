@@ -184,13 +184,16 @@ def summarize(source: SourceFile, index: FileIndex | None = None) -> Summary:
     module_body: list[ast.stmt] = []
     for statement in tree.body:
         if isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef)):
-            walker.unit(statement.name, None, statement, statement.body)
+            if _mentions(source, statement):
+                walker.unit(statement.name, None, statement, statement.body)
         elif isinstance(statement, ast.ClassDef):
             summary.bases[statement.name] = [
                 b.id for b in statement.bases if isinstance(b, ast.Name)
             ]
             for item in statement.body:
-                if isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                if isinstance(
+                    item, (ast.FunctionDef, ast.AsyncFunctionDef)
+                ) and _mentions(source, item):
                     walker.unit(
                         f"{statement.name}.{item.name}", statement, item, item.body
                     )
@@ -199,6 +202,16 @@ def summarize(source: SourceFile, index: FileIndex | None = None) -> Summary:
     walker.unit(MODULE, None, None, module_body)
     summary.by_node = {d.node_id: d for d in summary.decls}
     return summary
+
+
+# A function whose text has none of these declares, reads and names nothing.
+WORDS = ("_param", "ParamListener", "init_node", "__init__", "Node", "node")
+
+
+def _mentions(source: SourceFile, node: ast.stmt) -> bool:
+    end = getattr(node, "end_lineno", None) or node.lineno
+    text = "\n".join(source.lines[node.lineno - 1 : end])
+    return any(word in text for word in WORDS)
 
 
 def owner_of(
@@ -360,7 +373,8 @@ class _Walker:
         args = function.args.args if function is not None else []
         self.self_name = args[0].arg if cls is not None and args else None
         self.function = function
-        self.locals = self._locals(body)
+        self.body = body
+        self._bound: dict[str, _Local] | None = None
         nodes = list(walk(body)) if function is not None else self._module_nodes(body)
         for node in sorted(
             (n for n in nodes if isinstance(n, (ast.Call, ast.Assign, ast.AnnAssign))),
@@ -780,8 +794,10 @@ class _Walker:
         made on the local before line `before`."""
         if isinstance(node, ast.Call):
             return node, []
-        if isinstance(node, ast.Name) and node.id in self.locals:
-            local = self.locals[node.id]
+        if self._bound is None:
+            self._bound = self._locals(self.body)
+        if isinstance(node, ast.Name) and node.id in self._bound:
+            local = self._bound[node.id]
             if isinstance(local.value, ast.Call):
                 stores = [(a, v) for line, a, v in local.stores if line < before]
                 return local.value, stores
