@@ -195,14 +195,20 @@ class ParameterEvaluator(ExpressionEvaluator):
         self, handle: Handle, node: ast.Attribute, state: State, type_: str | None
     ) -> Value:
         kind = PARAMETER_KINDS.get(type_ or "", "unknown")
+        decl = handle.decl
+        fixed = self.parameters().fixed
+        key = (handle.owner, handle.name)
+        if decl is not None and decl.read_only and handle.value is None:
+            handle.value = fixed.get(key)  # every read sees the declared value
         value = handle.value
         if value is None or value.kind != kind:
             value = self.ctx.fresh(
                 kind, f"parameter `{handle.name}`", name_unit(handle.name)
             )
             handle.value = value
+        if decl is not None and decl.read_only:
+            fixed[key] = value
         term = value.known_term
-        decl = handle.decl
         if decl is not None and decl.range is not None and kind in ("int", "float"):
             integer = kind == "int"
             state.assume(A.Binary("<=", A.Num(decl.range.low, integer), term))
@@ -274,9 +280,9 @@ def _constant(value: object) -> Value:
 
 def name_unit(name: str) -> Unit | None:
     """HOOK(unit-suffixes): the unit a parameter's name gives its value (`_deg`,
-    `_ms`, `speed_kmph`) under the opt-in naming setting of issue 10 item 1
-    (`unit-suffixes`, being added for interface fields). Until that setting is
-    merged, names give no unit; when it is, read it from the config here and in
-    `paramcheck` (a value in a parameter file has no unit to compare, so only the
-    analysis needs it)."""
+    `_ms`, `speed_kmph`) under the opt-in naming setting of issue 10 item 1. That
+    setting (`Config.unit_suffixes`, `ros.catalog.suffix_unit(name)`) is on main
+    but not on this branch: once merged, return `resolve(suffix_unit(name))` here
+    when the run's config turns it on. Until then names give no unit. (A value in
+    a parameter file has no unit to compare, so `paramcheck` needs nothing.)"""
     return None

@@ -82,6 +82,7 @@ class ParamDecl:
     dynamic: bool = False  # dynamic_typing, or not known not to be
     range: Range | None = None
     ignore_override: bool = False
+    read_only: bool = False  # never changes after its declaration
     node_id: int = 0  # id() of the call or tuple, for the analysis
 
     def meaning(self) -> tuple[object, ...]:
@@ -89,7 +90,7 @@ class ParamDecl:
         (on two paths) are as good as one."""
         rng = self.range
         bounds = (rng.integer, rng.from_value, rng.to_value, rng.step) if rng else None
-        return (self.type, bounds, self.dynamic, self.ignore_override)
+        return (self.type, bounds, self.dynamic, self.ignore_override, self.read_only)
 
 
 @dataclass(frozen=True)
@@ -722,6 +723,7 @@ class _Walker:
             )
             decl.type = python_type(default) if default is not UNKNOWN else None
         decl.dynamic = decl.type is None or described.dynamic is not False
+        decl.read_only = described.read_only
         rng = described.range
         if rng is not None and decl.type == ("integer" if rng.integer else "double"):
             decl.range = rng
@@ -785,7 +787,8 @@ class _Walker:
             ranges = fields.get(key)
             if isinstance(ranges, (ast.List, ast.Tuple)) and ranges.elts:
                 found = self._range(ranges.elts[0], integer, before) or found
-        return _Described(found, dynamic)
+        read_only = self.const(fields.get("read_only")) is True
+        return _Described(found, dynamic, read_only)
 
     def _resolved(
         self, node: ast.expr, before: int
@@ -834,6 +837,7 @@ class _Walker:
 class _Described:
     range: Range | None
     dynamic: bool | None  # None: not known
+    read_only: bool = False
 
 
 def read_call(
@@ -900,6 +904,7 @@ class ParamContext:
     summary: Summary
     handles: dict[str, Handle] = field(default_factory=dict)
     reads: dict[int, ParamRead] = field(default_factory=dict)  # Sym ident ->
+    fixed: dict[tuple[str, str], Value] = field(default_factory=dict)  # read_only
 
 
 def read_of(check: Checker, value: Value, site: ast.AST) -> ParamRead | None:

@@ -52,3 +52,18 @@ class Controller(Node):
         radius: Annotated[float, "_ <= 1"] = self.get_parameter("radius").value  # warning: RF102
         limit: Annotated[float, "_ <= 2"] = self.get_parameter("limit").value  # attached where declared
         other: Annotated[float, "_ < 1"] = self.get_parameter("undeclared").value  # warning: RF102
+
+
+class ReadOnly(Node):
+    def __init__(self):
+        super().__init__("read_only")
+        self.declare_parameter("wheels", 4, ParameterDescriptor(read_only=True))
+        self.declare_parameter("axles", 2)
+
+    def step(self) -> None:
+        first = self.get_parameter("wheels").value
+        # a read-only parameter never changes: every read is the same value
+        same: Annotated[int, "_ == first"] = self.get_parameter("wheels").value
+        before = self.get_parameter("axles").value
+        # warning: RF102
+        again: Annotated[int, "_ == before"] = self.get_parameter("axles").value
