@@ -387,6 +387,20 @@ def parameter_file_unreadable(
     return Diagnostic(rules.UNREADABLE_FILE, path, Span.point(line, col), detail)
 
 
+def parameter_file_not_checked(
+    path: str, line: int, col: int, detail: str
+) -> Diagnostic:
+    """RF004 for a parameter file found in a package's config folder that cannot
+    be read or parsed: a warning, since it may be a template or another tool's."""
+    return Diagnostic(
+        rules.PATH_NOT_CHECKED,
+        path,
+        Span.point(line, col),
+        f"parameter file not checked: {detail}",
+        (Note("ROS cannot load it either, unless it is not a parameter file"),),
+    )
+
+
 def parameter_value_violated(
     path: str, span: Span, subject: str, rule: str, declared: Declared, why: str = ""
 ) -> Diagnostic:

@@ -114,8 +114,8 @@ def check_parameter_files(
     """Diagnostics for the parameter files and generate_parameter_library
     definitions of a run; `python_files` are those whose declarations count. A
     file that is not valid YAML is RF003 when it was `named` on the command line
-    or is a definitions file; found in a package's config folder, it is skipped
-    (it may be a template or another tool's file). A YAML line ending in
+    or is a definitions file; found in a package's config folder, it is an RF004
+    warning (it may be a template or another tool's file). A YAML line ending in
     `# robotfix: ignore[RF101]` and `per-file-ignores` silence as in Python."""
     loud = {str(p) for p in [*named, *definition_files]}
     texts: dict[str, str] = {}
@@ -212,12 +212,12 @@ def _load(
         texts[str(path)] = text
         root = Y.parse(text)
     if isinstance(root, Y.YamlProblem):
-        if named:
-            out.append(
-                messages.parameter_file_unreadable(
-                    str(path), root.line, root.col, root.message
-                )
-            )
+        report = (
+            messages.parameter_file_unreadable
+            if named
+            else messages.parameter_file_not_checked
+        )
+        out.append(report(str(path), root.line, root.col, root.message))
         return None
     return P.classify(root)
 
