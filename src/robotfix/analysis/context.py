@@ -75,7 +75,7 @@ class FileContext:
         self.imports: dict[str, str] = {}  # local name -> qualified name
         self.star_import = False
         self._reported: set[tuple[object, ...]] = set()
-        self.parameters: ParamContext | None = None  # built at the first ROS call
+        self.parameters: ParamContext | None = None  # at the first parameter call
         # (span, markdown) for names and fields, kept only for editor hovers
         self.hovers: list[tuple[Span, str]] | None = None
         # (scope node id, variable) -> (units it flows into, target base kinds), for
