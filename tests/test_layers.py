@@ -12,6 +12,7 @@ GATES = {
     "pint": ("annotations/units.py",),
     "rosbags": ("ros/catalog.py",),
     "pygls": ("lsp/",),
+    "yaml": ("ros/yamlfile.py",),
 }
 # module prefix -> what it must not import
 FORBIDDEN = {

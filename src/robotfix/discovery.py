@@ -33,11 +33,16 @@ from pathlib import Path
 from robotfix import messages
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
-from robotfix.fs import UnreadableError, read_head, within
+from robotfix.fs import UnreadableError, read_head, read_text, within
 from robotfix.ros.install import IGNORE_MARKERS, InstallSpace
 
 INTERFACE_SUFFIXES = (".msg", ".srv", ".action", ".idl")
 INTERFACE_FOLDERS = ("msg", "srv", "action")
+YAML_SUFFIXES = (".yaml", ".yml")
+PARAMETER_FOLDERS = ("config", "params", "param")  # a package's parameter files
+MAX_BUILD_FILE_BYTES = 1024 * 1024  # CMakeLists.txt, setup.py
+_GPL_CMAKE = re.compile(r"generate_parameter_library\s*\(([^)]*)\)")
+_YAML_NAME = re.compile(r"""["']?([^\s"'()]+\.ya?ml)["']?""")
 SKIPPED_FOLDERS = ("__pycache__", "node_modules")  # and every hidden folder
 WORKSPACE_OUTPUT = ("build", "install", "log", "logs", "devel")  # colcon, catkin
 OUTPUT_FOLDERS = (  # skipped unless they hold __init__.py (ruff's defaults, and ROS's)
@@ -63,6 +68,11 @@ class Discovery:
     notices: list[Diagnostic] = field(default_factory=list)  # RF004 warnings
     package_interface_files: list[Path] = field(default_factory=list)  # they win
     installed: InstallSpace | None = None  # where other types are looked up
+    # parameter files: found in packages' config/, params/, param/, or named
+    parameter_files: list[Path] = field(default_factory=list)
+    named_parameter_files: list[Path] = field(default_factory=list)
+    parameter_definitions: list[Path] = field(default_factory=list)  # gen. param lib
+    summary_files: list[Path] = field(default_factory=list)  # their packages' code
 
 
 def discover(
@@ -74,8 +84,17 @@ def discover(
     those of the packages win over the msg paths' (`package_interface_files`), and
     both over the install space of `environ` (by default the process's)."""
     found = Discovery()
-    files, packages = _python_files(paths, config, found.notices)
+    named_yaml = [p for p in paths if _is_yaml(p.name) and not os.path.isdir(p)]
+    python_paths = [p for p in paths if p not in named_yaml]
+    files, packages = _python_files(python_paths, config, found.notices)
     found.python_files = files
+    folders = [p for p in python_paths if os.path.isdir(p)]
+    scanned = [
+        package
+        for package in packages
+        if within(package, folders) or any(within(f, [package]) for f in folders)
+    ]
+    _parameter_files(found, named_yaml, scanned, [*paths, *packages], config)
     roots = [*paths, *config.msg_paths, *packages]
     folders = list(config.msg_paths) + _interface_folders(packages)
     found.interface_files = _interface_files(folders, roots, found.notices)
@@ -84,6 +103,76 @@ def discover(
     ]
     found.installed = install_space(environ)
     return found
+
+
+def _parameter_files(
+    found: Discovery,
+    named: list[Path],
+    packages: list[Path],
+    roots: list[Path],
+    config: Config,
+) -> None:
+    """Parameter YAML files: those named, and those in the config/, params/ and
+    param/ folders of the packages under (or around) the folders named;
+    generate_parameter_library definitions named by those packages' (and named
+    files' packages') CMakeLists.txt or setup.py; and the Python files of the
+    packages around named files, whose declarations they are checked against."""
+    around = [p for p in (_package_around(n) for n in named) if p is not None]
+    folders = [
+        package / name
+        for package in packages
+        for name in PARAMETER_FOLDERS
+        if os.path.isdir(package / name)
+    ]
+    walker = _Walker(roots + around, found.notices)
+    chosen = _OnePathEach()
+    for path in named:
+        chosen.add(path, os.path.realpath(path), False)
+    pruned = lambda folder: config.excluded(folder, folder=True)  # noqa: E731
+    for _, entries in walker.walk(folders, _is_yaml, pruned):
+        for entry in entries:
+            if (
+                _is_yaml(entry.path.name)
+                and entry.regular
+                and not config.excluded(entry.path)
+            ):
+                chosen.add(entry.path, entry.real, entry.link)
+    found.parameter_files = chosen.paths()
+    found.named_parameter_files = list(named)
+    found.parameter_definitions = sorted(
+        {d for package in [*packages, *around] for d in _definitions_of(package)}
+    )
+    if around:
+        found.summary_files = _python_files(sorted(set(around)), None, [])[0]
+
+
+def _definitions_of(package: Path) -> list[Path]:
+    """generate_parameter_library definition files a package's build names:
+    `generate_parameter_library(name path.yaml)` in CMakeLists.txt, or a `.yaml`
+    string in a setup.py that calls generate_parameter_module."""
+    names: list[str] = []
+    for build in ("CMakeLists.txt", "setup.py"):
+        try:
+            text = read_text(package / build, MAX_BUILD_FILE_BYTES)
+        except UnreadableError:
+            continue
+        if build == "setup.py":
+            if "generate_parameter_module" in text:
+                names += re.findall(r"""["']([^"'\n]+\.ya?ml)["']""", text)
+            continue
+        for call in _GPL_CMAKE.finditer(text):
+            names += _YAML_NAME.findall(call.group(1))
+    found = []
+    for name in names:
+        name = name.replace("${CMAKE_CURRENT_SOURCE_DIR}/", "")
+        path = package / name
+        if "$" not in name and os.path.isfile(path) and within(path, [package]):
+            found.append(path)
+    return found
+
+
+def _is_yaml(name: str) -> bool:
+    return name.endswith(YAML_SUFFIXES)
 
 
 def install_space(environ: Mapping[str, str] | None = None) -> InstallSpace | None:

@@ -463,6 +463,63 @@ def base_type_mismatch(
     )
 
 
+def parameter_file_unreadable(
+    path: str, line: int, col: int, detail: str
+) -> Diagnostic:
+    """RF003 for a parameter file named on the command line (or a
+    generate_parameter_library definitions file) that cannot be read or parsed."""
+    return Diagnostic(rules.UNREADABLE_FILE, path, Span.point(line, col), detail)
+
+
+def parameter_file_not_checked(
+    path: str, line: int, col: int, detail: str
+) -> Diagnostic:
+    """RF004 for a parameter file found in a package's config folder that cannot
+    be read or parsed: a warning, since it may be a template or another tool's."""
+    return Diagnostic(
+        rules.PATH_NOT_CHECKED,
+        path,
+        Span.point(line, col),
+        f"parameter file not checked: {detail}",
+        (Note("ROS cannot load it either, unless it is not a parameter file"),),
+    )
+
+
+def parameter_value_violated(
+    path: str, span: Span, subject: str, rule: str, declared: Declared, why: str = ""
+) -> Diagnostic:
+    """RF101 for a parameter's value: a default in code, or a value in a parameter
+    file, outside the declared range or refinement."""
+    notes = [declared.note()] + ([Note(why)] if why else [])
+    return Diagnostic(
+        rules.REFINEMENT_VIOLATED,
+        path,
+        span,
+        f"{subject} violates {rule}{_owner(declared)}",
+        tuple(notes),
+    )
+
+
+def parameter_value_type(
+    path: str,
+    span: Span,
+    subject: str,
+    got: str,
+    expected: str,
+    declared: Declared,
+    why: str = "",
+) -> Diagnostic:
+    """RF401 for a value in a parameter file of another type than declared."""
+    notes = [declared.note()] + ([Note(why)] if why else [])
+    return Diagnostic(
+        rules.BASE_TYPE_MISMATCH,
+        path,
+        span,
+        f"{subject} is {got}, but the parameter is declared {expected}",
+        tuple(notes),
+    )
+
+
 def _owner(declared: Declared) -> str:
     return f" ({declared.owner})" if declared.owner else ""
 

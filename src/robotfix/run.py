@@ -27,7 +27,7 @@ from robotfix.api import (
 from robotfix.cache import ResultCache, run_key
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
-from robotfix.discovery import discover
+from robotfix.discovery import Discovery, discover
 from robotfix.fs import UnreadableError, read_regular
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.ros.install import InstallSpace
@@ -112,6 +112,8 @@ def check_paths(
                 outcome.fingerprint,
             )
     result.diagnostics.extend(interface_problems(catalog, used))
+    result.diagnostics.extend(_parameter_problems(found, files, config))
+    result.files += len(found.parameter_files)
     result.diagnostics = finish(result.diagnostics)
     if cache is not None:
         cache.prune(paths, files)
@@ -120,6 +122,24 @@ def check_paths(
     save_unit_cache()
     result.seconds = time.perf_counter() - started
     return result
+
+
+def _parameter_problems(
+    found: Discovery, files: list[Path], config: Config
+) -> list[Diagnostic]:
+    """Parameter files against the parameters the code declares (not cached:
+    they depend on every checked file)."""
+    if not found.parameter_files and not found.parameter_definitions:
+        return []
+    from robotfix.paramcheck import check_parameter_files
+
+    return check_parameter_files(
+        found.parameter_files,
+        found.parameter_definitions,
+        [*files, *found.summary_files],
+        found.named_parameter_files,
+        config,
+    )
 
 
 @dataclass(frozen=True)

@@ -112,3 +112,20 @@ def test_the_setting_and_the_flag(msg_folder: Path, tmp_path: Path) -> None:
     (tmp_path / "pyproject.toml").write_text('[tool.robotfix]\nunit-suffixes = "y"\n')
     with pytest.raises(ConfigError, match="unit-suffixes"):
         load(tmp_path / "node.py")
+
+
+def test_parameter_names_follow_the_setting_too() -> None:
+    node = (
+        "from typing import Annotated\n"
+        "from rclpy.node import Node\n\n\n"
+        "class Stepper(Node):\n"
+        "    def __init__(self) -> None:\n"
+        "        super().__init__('stepper')\n"
+        "        self.declare_parameter('period_ms', 100.0)\n"
+        "        period = self.get_parameter('period_ms').value\n"
+        "        wait: Annotated[float, \"Unit('s')\"] = period\n"
+    )
+    flagged = check_source(node, "stepper.py", Config(unit_suffixes=True))
+    assert [(d.code, d.span.line) for d in flagged] == [("RF201", 10)]
+    assert "ms" in flagged[0].message
+    assert check_source(node, "stepper.py", Config()) == []

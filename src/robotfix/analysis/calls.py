@@ -12,7 +12,7 @@ from dataclasses import replace
 from fractions import Fraction
 
 from robotfix.analysis import heap
-from robotfix.analysis.expressions import ExpressionEvaluator
+from robotfix.analysis.param_eval import ParameterEvaluator
 from robotfix.analysis.program import Function
 from robotfix.analysis.state import State
 from robotfix.analysis.values import NONE, Value
@@ -21,7 +21,7 @@ from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import INFINITY, NUMBERS
 from robotfix.annotations.units import Unit, named, resolve
 from robotfix.messages import Declared
-from robotfix.ros.api_model import MATH_UNITS, UNIT_PARAMETERS
+from robotfix.ros.api_model import MATH_UNITS, PARAMETER_CALLS, UNIT_PARAMETERS
 
 # Methods whose first argument leaves the node: it must satisfy its refinements.
 LEAVING = frozenset(
@@ -43,7 +43,7 @@ ONE = A.Num(Fraction(1), True)
 ZERO = A.Num(Fraction(0), True)
 
 
-class CallEvaluator(ExpressionEvaluator):
+class CallEvaluator(ParameterEvaluator):
     def eval_Call(self, node: ast.Call, state: State) -> Value:
         func = node.func
         method = func.attr if isinstance(func, ast.Attribute) else None
@@ -71,6 +71,8 @@ class CallEvaluator(ExpressionEvaluator):
     ) -> Value:
         if callee.kind == "msgclass":
             return self.construct(callee.name, args, kwargs, state)
+        if callee.kind == "parameter_method":  # p.get_parameter_value()
+            return Value("parameter_value", name=callee.name)
         if (
             callee.kind in ("function", "method")
             and callee.name in self.program.functions
@@ -109,6 +111,10 @@ class CallEvaluator(ExpressionEvaluator):
             if isinstance(node.func, ast.Attribute)
             else ""
         )
+        if name in PARAMETER_CALLS:
+            found = self.parameter_call(name, callee, node, args, kwargs, state)
+            if found is not None:
+                return found
         if name in UNIT_PARAMETERS:
             self._check_api_units(name, node, args, kwargs)
         return self.unknown(node)
@@ -122,10 +128,12 @@ class CallEvaluator(ExpressionEvaluator):
         callee: Value,
     ) -> None:
         """Unknown code may change the messages and instances it is handed."""
-        if callee.kind in ("msgclass", "builtin") or (
+        if callee.kind in ("msgclass", "builtin", "parameter_method") or (
             callee.kind == "module" and callee.name.startswith("math.")
         ):
             return
+        if isinstance(node.func, ast.Attribute) and node.func.attr in PARAMETER_CALLS:
+            return  # rclpy and rospy change no attribute of the node's class
         for value in [*args, *kwargs.values()]:
             if value.kind == "msg" and value.ref is not None:
                 heap.havoc(state, value.ref)

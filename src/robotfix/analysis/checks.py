@@ -10,7 +10,7 @@ import ast
 from dataclasses import replace
 
 from robotfix import messages
-from robotfix.analysis import heap
+from robotfix.analysis import heap, parameters
 from robotfix.analysis.context import FileContext
 from robotfix.analysis.state import State
 from robotfix.analysis.values import Value
@@ -188,6 +188,9 @@ class Checker:
         declared = Declared(f"annotation of `{name}`", self.path, decl.line)
         if value.kind == "msg" or (decl.optional and value.kind == "none"):
             return value
+        read = parameters.read_of(self, value, site)
+        if read is not None:  # a parameter read: the refinement becomes its own
+            return parameters.attach(self, state, name, decl, value, site, lookup, read)
         if decl.elements is not None:
             return self._assign_elements(state, name, decl, value, site, lookup)
         if self.report_uninit(value, site):

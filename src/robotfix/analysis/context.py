@@ -9,6 +9,7 @@ import ast
 import builtins
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 from robotfix import messages, rules
 from robotfix.analysis.constants import ConstantNames
@@ -20,6 +21,9 @@ from robotfix.annotations.extract import Alias, Names, Refinement, extract
 from robotfix.diagnostics import Diagnostic, Span
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.source import SourceFile
+
+if TYPE_CHECKING:
+    from robotfix.analysis.parameters import ParamContext
 
 MSG_MODULES = ("msg", "srv", "action")
 # Python packages only ROS 1 has: a file importing one (and not rclpy) is ROS 1 code.
@@ -79,6 +83,7 @@ class FileContext:
         # RF511 notes, kept only if the file turns out RobotFix-like (`metadata_notes`)
         self._metadata_notes: list[Diagnostic] = []
         self.uses_refinements = False  # some annotation of the file is a refinement
+        self.parameters: ParamContext | None = None  # at the first parameter call
         # (span, markdown) for names and fields, kept only for editor hovers
         self.hovers: list[tuple[Span, str]] | None = None
         # (scope node id, variable) -> (units it flows into, target base kinds), for

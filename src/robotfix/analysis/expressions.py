@@ -141,8 +141,16 @@ class ExpressionEvaluator:
     def decl_of(self, name: str) -> Refinement | None:
         return None
 
+    def parameter_attribute(
+        self, base: Value, node: ast.Attribute, state: State
+    ) -> Value:
+        """`.value` of a parameter handle (see `analysis/param_eval.py`)."""
+        return self.unknown(node)
+
     def eval_Attribute(self, node: ast.Attribute, state: State) -> Value:
         base = self.eval(node.value, state)
+        if base.kind in ("parameter", "parameter_value"):
+            return self.parameter_attribute(base, node, state)
         if base.kind == "msg" and base.ref in state.heap:
             constant = self.member(base, node.attr, state)
             if constant is not None:  # `msg.ULTRASOUND`

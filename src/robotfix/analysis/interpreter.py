@@ -725,7 +725,8 @@ class Interpreter(CallEvaluator):
             or y.kind == "msg"
             or kind not in ("int", "float", "bool", "str", "unknown")
         ):
-            return x if x.kind == y.kind and x.ref == y.ref else Value("unknown")
+            same = x.kind == y.kind and x.ref == y.ref and x.name == y.name
+            return x if same else Value("unknown")
         merged = self.ctx.fresh(kind, "a value set on several paths", unit)
         source = y if x.literal else x  # the side that gave the unit
         if unit is not None and (x.literal != y.literal or x.scale == y.scale):

@@ -57,3 +57,38 @@ MATH_UNITS: dict[str, tuple[str | None, str | None]] = {
     "acos": ("1", "rad"),
     "atan": ("1", "rad"),
 }
+
+# Parameters (robotfix.analysis.parameters): what builds a node, rclpy's
+# Parameter.Type names, and the fields of a ParameterValue by the type they hold.
+NODE_CONSTRUCTORS = frozenset({"Node", "LifecycleNode", "create_node"})
+PARAMETER_TYPES: dict[str, str] = {
+    "BOOL": "bool",
+    "INTEGER": "integer",
+    "DOUBLE": "double",
+    "STRING": "string",
+    "BYTE_ARRAY": "byte_array",
+    "BOOL_ARRAY": "bool_array",
+    "INTEGER_ARRAY": "integer_array",
+    "DOUBLE_ARRAY": "double_array",
+    "STRING_ARRAY": "string_array",
+}
+PARAMETER_VALUE_FIELDS: dict[str, str] = {
+    f"{name}_value": name for name in PARAMETER_TYPES.values()
+}
+# The analysis' value kind for a parameter of each scalar type
+PARAMETER_KINDS: dict[str, str] = {
+    "bool": "bool",
+    "integer": "int",
+    "double": "float",
+    "string": "str",
+}
+# The ParameterValue field a type's value is not in holds its message default
+PARAMETER_FIELD_DEFAULTS: dict[str, object] = {
+    "bool": False,
+    "integer": 0,
+    "double": 0.0,
+    "string": "",
+}
+PARAMETER_CALLS = frozenset(
+    {"declare_parameter", "declare_parameters", "get_parameter", "get_param"}
+)

@@ -217,7 +217,7 @@ class MsgCatalog:
         )
         self._texts = dict(texts or {})
         self._rep103 = rep103
-        self._unit_suffixes = unit_suffixes
+        self.unit_suffixes = unit_suffixes  # the analysis reads it for parameter names
         self._distro = distro
         self._loaded = False
         self.problems: list[CatalogProblem] = []
@@ -521,7 +521,7 @@ class MsgCatalog:
         `unit_suffixes`), replaced by those in their comments (rosidl's `[m]`, where
         pint reads them as a unit); a `#RobotFix#` Unit() replaces both."""
         spec = self._specs[section.name]
-        if self._unit_suffixes:
+        if self.unit_suffixes:
             for decl in section.fields:
                 unit = suffix_unit(decl.name)
                 field = spec.fields.get(decl.name)

@@ -1,0 +1,987 @@
+"""Parameters in Python: what a file declares and reads, found syntactically.
+
+One pass over a module's AST (`summarize`) finds, per *owner* (the node object the
+calls are made on: a Node subclass `C` for `self.declare_parameter`, `C#attr` for
+`self.attr.declare_parameter`, `f#node` for a local `node` in function `f`, `rospy`
+for ROS 1):
+
+- ROS 2 declarations: `declare_parameter(name, default, descriptor)` and each tuple
+  of `declare_parameters(namespace, [...])`, with the type rclpy infers from the
+  default (or `Parameter.Type.X`), and the ParameterDescriptor's
+  `floating_point_range`/`integer_range` and `dynamic_typing`, written inline or
+  built in a local variable of the same function;
+- ROS 1 reads `rospy.get_param(name, default)`;
+- refinements attached where a read is assigned to an `Annotated` variable or
+  attribute (`self.v: Annotated[float, "0 < _ <= 1"] = self.declare_parameter(
+  'v', 0.5).value`);
+- node names (`super().__init__('name')`, `Node('name')`, `rclpy.create_node`,
+  `rospy.init_node`) and generate_parameter_library listeners
+  (`ns.ParamListener(self)`).
+
+Names and numbers are matched as constants: literals, `math.pi`, and module-level
+constants; anything else is unknown and stays silent. The analysis uses the summary
+for the reads it interprets (`ParamContext`), and a run uses the summaries of all
+checked files to check parameter files (`robotfix.paramcheck`).
+"""
+
+from __future__ import annotations
+
+import ast
+import math
+from collections.abc import Callable
+from dataclasses import dataclass, field, replace
+from fractions import Fraction
+from typing import TYPE_CHECKING
+
+from robotfix import messages
+from robotfix.analysis.index import FileIndex, index_module
+from robotfix.analysis.values import Value
+from robotfix.analysis.vc import VC, Violated
+from robotfix.annotations import ast as A
+from robotfix.annotations.extract import Refinement, extract
+from robotfix.astwalk import walk
+from robotfix.messages import Declared
+from robotfix.ros.api_model import (
+    NODE_CONSTRUCTORS,
+    PARAMETER_TYPES,
+    PARAMETER_VALUE_FIELDS,
+)
+from robotfix.ros.paramfile import Range, python_type
+from robotfix.source import SourceFile
+
+if TYPE_CHECKING:
+    from robotfix.analysis.checks import Checker
+    from robotfix.analysis.state import State
+
+MODULE = "<module>"
+ROSPY = "rospy"
+MATH = {"math.pi": math.pi, "math.e": math.e, "math.tau": math.tau}
+
+
+class _Unknown:
+    def __repr__(self) -> str:
+        return "<unknown>"
+
+
+UNKNOWN = _Unknown()  # a default that is there but not a constant
+
+
+@dataclass
+class ParamDecl:
+    """A parameter declared (ROS 2) or read with a default (ROS 1)."""
+
+    owner: str
+    name: str
+    ros: int  # 1 or 2
+    path: str
+    line: int
+    col: int
+    default: object = None  # a constant, None (no default) or UNKNOWN
+    default_at: tuple[int, int] | None = None  # (line, col) of the default
+    type: str | None = None  # ROS 2 type name; None: unknown or dynamic
+    dynamic: bool = False  # dynamic_typing, or not known not to be
+    range: Range | None = None
+    ignore_override: bool = False
+    read_only: bool = False  # never changes after its declaration
+    node_id: int = 0  # id() of the call or tuple, for the analysis
+
+    def meaning(self) -> tuple[object, ...]:
+        """What a read of it may assume: two declarations with the same meaning
+        (on two paths) are as good as one."""
+        rng = self.range
+        bounds = (rng.integer, rng.from_value, rng.to_value, rng.step) if rng else None
+        return (self.type, bounds, self.dynamic, self.ignore_override, self.read_only)
+
+
+@dataclass(frozen=True)
+class Attached:
+    """A refinement written where a parameter's value is assigned."""
+
+    owner: str
+    name: str
+    refinement: Refinement
+    target: str
+    path: str
+    line: int
+    declaration: bool  # at the declaration (ROS 2) or at a get_param with default
+
+
+@dataclass
+class Summary:
+    path: str
+    decls: list[ParamDecl] = field(default_factory=list)
+    attached: list[Attached] = field(default_factory=list)
+    node_names: dict[str, list[str]] = field(default_factory=dict)  # owner ->
+    auto_declare: set[str] = field(default_factory=set)  # owners: overrides declare
+    bases: dict[str, list[str]] = field(default_factory=dict)  # class -> bases here
+    listeners: dict[str, list[str]] = field(default_factory=dict)  # owner -> gpl ns
+    by_node: dict[int, ParamDecl] = field(default_factory=dict)
+    constants: dict[str, object] = field(default_factory=dict)  # module constants
+    imports: dict[str, str] = field(default_factory=dict)
+
+    def constant(self, node: ast.expr | None) -> object:
+        """A constant argument as this pass reads it (UNKNOWN if it is not one)."""
+        if node is None:
+            return UNKNOWN
+        return constant_of(node, self.constants, self.imports)
+
+    def lineage(self, owner: str) -> list[str]:
+        """`owner` and the classes of this file it inherits from, nearest first."""
+        found: list[str] = []
+        todo = [owner]
+        while todo and len(found) < 50:
+            current = todo.pop(0)
+            if current not in found:
+                found.append(current)
+                todo.extend(self.bases.get(current, []))
+        return found
+
+    def declaration(self, owner: str, name: str) -> ParamDecl | None:
+        """The declaration of `name` nearest in `owner`'s lineage; None when there
+        is none, or several that disagree (declared on different paths)."""
+        for current in self.lineage(owner):
+            found = [
+                d
+                for d in self.decls
+                if d.owner == current and d.name == name and d.ros == 2
+            ]
+            if found:
+                same = len({d.meaning() for d in found}) == 1
+                return found[0] if same else None
+        return None
+
+    def refinements(
+        self, owner: str, name: str, declaration_only: bool
+    ) -> list[Attached]:
+        lineage = self.lineage(owner)
+        return [
+            a
+            for a in self.attached
+            if a.owner in lineage
+            and a.name == name
+            and (a.declaration or not declaration_only)
+        ]
+
+    def names_of(self, owner: str) -> list[str]:
+        for current in self.lineage(owner):
+            if self.node_names.get(current):
+                return self.node_names[current]
+        return []
+
+
+# -- the syntactic pass --------------------------------------------------------
+
+
+def summarize(source: SourceFile, index: FileIndex | None = None) -> Summary:
+    """What `source` declares and reads; an empty summary for a file with no tree."""
+    summary = Summary(source.path)
+    tree = source.tree
+    if tree is None:
+        return summary
+    index = index or index_module(tree)
+    summary.constants = _module_constants(tree, index)
+    summary.imports = index.imports
+    walker = _Walker(source, index, summary, summary.constants)
+    module_body: list[ast.stmt] = []
+    for statement in tree.body:
+        if isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            if _mentions(source, statement):
+                walker.unit(statement.name, None, statement, statement.body)
+        elif isinstance(statement, ast.ClassDef):
+            summary.bases[statement.name] = [
+                b.id for b in statement.bases if isinstance(b, ast.Name)
+            ]
+            for item in statement.body:
+                if isinstance(
+                    item, (ast.FunctionDef, ast.AsyncFunctionDef)
+                ) and _mentions(source, item):
+                    walker.unit(
+                        f"{statement.name}.{item.name}", statement, item, item.body
+                    )
+        else:
+            module_body.append(statement)
+    walker.unit(MODULE, None, None, module_body)
+    summary.by_node = {d.node_id: d for d in summary.decls}
+    return summary
+
+
+# A function whose text has none of these declares, reads and names nothing.
+WORDS = ("_param", "ParamListener", "init_node", "__init__", "Node", "node")
+
+
+def _mentions(source: SourceFile, node: ast.stmt) -> bool:
+    end = getattr(node, "end_lineno", None) or node.lineno
+    text = "\n".join(source.lines[node.lineno - 1 : end])
+    return any(word in text for word in WORDS)
+
+
+def owner_of(
+    receiver: ast.expr, unit: str, class_name: str | None, self_name: str | None
+) -> str | None:
+    """Who a parameter call is made on (see the module docstring); None when the
+    receiver is not a name or `self.attr`."""
+    if isinstance(receiver, ast.Name):
+        if class_name is not None and receiver.id == self_name:
+            return class_name
+        return f"{unit}#{receiver.id}"
+    if (
+        isinstance(receiver, ast.Attribute)
+        and isinstance(receiver.value, ast.Name)
+        and class_name is not None
+        and receiver.value.id == self_name
+    ):
+        return f"{class_name}#{receiver.attr}"
+    return None
+
+
+def _module_constants(tree: ast.Module, index: FileIndex) -> dict[str, object]:
+    """Module-level names bound once, to a constant (`MAX_SPEED = 0.5`)."""
+    counts: dict[str, int] = {}
+    for node in walk(tree):
+        if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
+            counts[node.id] = counts.get(node.id, 0) + 1
+    found: dict[str, object] = {}
+    for statement in tree.body:
+        target, value = None, None
+        if isinstance(statement, ast.Assign) and len(statement.targets) == 1:
+            target, value = statement.targets[0], statement.value
+        elif isinstance(statement, ast.AnnAssign) and statement.value is not None:
+            target, value = statement.target, statement.value
+        if isinstance(target, ast.Name) and counts.get(target.id) == 1 and value:
+            constant = constant_of(value, found, index.imports)
+            if constant is not UNKNOWN:
+                found[target.id] = constant
+    return found
+
+
+def constant_of(
+    node: ast.expr, names: dict[str, object], imports: dict[str, str]
+) -> object:
+    """A constant expression's value (numbers, strings, bools, None, lists of
+    them, `-x`, `+ - * /` of numbers, `math.pi`, module constants), else UNKNOWN."""
+    if isinstance(node, ast.Constant):
+        if isinstance(node.value, (int, float, str, bool, bytes)) or node.value is None:
+            return node.value
+        return UNKNOWN
+    if isinstance(node, ast.Name):
+        return names.get(node.id, UNKNOWN)
+    if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name):
+        qualified = f"{imports.get(node.value.id, node.value.id)}.{node.attr}"
+        return MATH.get(qualified, UNKNOWN)
+    if isinstance(node, (ast.List, ast.Tuple)):
+        items = [constant_of(e, names, imports) for e in node.elts]
+        return UNKNOWN if any(i is UNKNOWN for i in items) else items
+    if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
+        inner = constant_of(node.operand, names, imports)
+        if isinstance(inner, (int, float)) and not isinstance(inner, bool):
+            return -inner if isinstance(node.op, ast.USub) else inner
+        return UNKNOWN
+    if isinstance(node, ast.BinOp) and isinstance(
+        node.op, (ast.Add, ast.Sub, ast.Mult, ast.Div)
+    ):
+        left = constant_of(node.left, names, imports)
+        right = constant_of(node.right, names, imports)
+        if not all(
+            isinstance(v, (int, float)) and not isinstance(v, bool)
+            for v in (left, right)
+        ):
+            return UNKNOWN
+        a, b = left, right
+        assert isinstance(a, (int, float)) and isinstance(b, (int, float))
+        if abs(a) > 1e300 or abs(b) > 1e300:
+            return UNKNOWN
+        if isinstance(node.op, ast.Add):
+            return a + b
+        if isinstance(node.op, ast.Sub):
+            return a - b
+        if isinstance(node.op, ast.Mult):
+            return a * b
+        return UNKNOWN if b == 0 else a / b
+    return UNKNOWN
+
+
+def exact(value: int | float) -> Fraction:
+    """The decimal a float was most likely written as (`0.1` is 1/10)."""
+    return Fraction(value) if isinstance(value, int) else Fraction(repr(float(value)))
+
+
+def _argument(call: ast.Call, position: int, keyword: str) -> ast.expr | None:
+    for kw in call.keywords:
+        if kw.arg == keyword:
+            return kw.value
+    if position < len(call.args) and not any(
+        isinstance(a, ast.Starred) for a in call.args[: position + 1]
+    ):
+        return call.args[position]
+    return None
+
+
+def _called(call: ast.Call) -> str:
+    func = call.func
+    return func.attr if isinstance(func, ast.Attribute) else getattr(func, "id", "")
+
+
+@dataclass
+class _Local:
+    """A local variable bound once, by a direct statement: the value it was bound
+    to and the attribute stores on it (`d.read_only = True`) with their lines."""
+
+    value: ast.expr
+    stores: list[tuple[int, str, ast.expr]] = field(default_factory=list)
+
+
+class _Walker:
+    def __init__(
+        self,
+        source: SourceFile,
+        index: FileIndex,
+        summary: Summary,
+        constants: dict[str, object],
+    ) -> None:
+        self.source = source
+        self.index = index
+        self.summary = summary
+        self.constants = constants
+
+    # -- names ------------------------------------------------------------------
+    def qualname(self, node: ast.expr) -> str | None:
+        if isinstance(node, ast.Name):
+            return self.index.imports.get(node.id)
+        if isinstance(node, ast.Attribute):
+            base = self.qualname(node.value)
+            return f"{base}.{node.attr}" if base else None
+        return None
+
+    def const(self, node: ast.expr | None) -> object:
+        if node is None:
+            return UNKNOWN
+        return constant_of(node, self.constants, self.index.imports)
+
+    def text(self, node: ast.expr | None) -> str | None:
+        found = self.const(node)
+        return found if isinstance(found, str) else None
+
+    # -- one function (or the module's statements) ------------------------------------
+    def unit(
+        self,
+        key: str,
+        cls: ast.ClassDef | None,
+        function: ast.FunctionDef | ast.AsyncFunctionDef | None,
+        body: list[ast.stmt],
+    ) -> None:
+        self.key = key
+        self.cls = cls.name if cls is not None else None
+        args = function.args.args if function is not None else []
+        self.self_name = args[0].arg if cls is not None and args else None
+        self.function = function
+        self.body = body
+        self._bound: dict[str, _Local] | None = None
+        nodes = list(walk(body)) if function is not None else self._module_nodes(body)
+        for node in sorted(
+            (n for n in nodes if isinstance(n, (ast.Call, ast.Assign, ast.AnnAssign))),
+            key=lambda n: (n.lineno, n.col_offset),
+        ):
+            if isinstance(node, ast.Call):
+                self.call(node)
+            else:
+                self.assignment(node)
+
+    def _module_nodes(self, body: list[ast.stmt]) -> list[ast.AST]:
+        found: list[ast.AST] = []
+        todo: list[ast.AST] = list(body)
+        while todo:
+            node = todo.pop()
+            if isinstance(
+                node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)
+            ):
+                continue
+            found.append(node)
+            todo.extend(ast.iter_child_nodes(node))
+        return found
+
+    def _locals(self, body: list[ast.stmt]) -> dict[str, _Local]:
+        """Names bound exactly once in the body, by a direct statement, whose
+        attribute stores are direct statements too and that no call mutates."""
+        stores: dict[str, int] = {}
+        mutated: set[str] = set()
+        for node in walk(body):
+            if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
+                stores[node.id] = stores.get(node.id, 0) + 1
+            elif isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute):
+                root = node.func.value
+                while isinstance(root, ast.Attribute):
+                    root = root.value
+                if isinstance(root, ast.Name) and node.func.value is not root:
+                    mutated.add(root.id)
+            elif (
+                isinstance(node, ast.Attribute)
+                and isinstance(node.ctx, ast.Store)
+                and isinstance(node.value, ast.Name)
+            ):
+                stores.setdefault(f"{node.value.id}.", 0)
+                stores[f"{node.value.id}."] += 1
+        found: dict[str, _Local] = {}
+        direct_attr: dict[str, int] = {}
+        for statement in body:
+            if (
+                isinstance(statement, ast.Assign)
+                and len(statement.targets) == 1
+                and isinstance(statement.targets[0], ast.Name)
+            ):
+                found[statement.targets[0].id] = _Local(statement.value)
+            elif (
+                isinstance(statement, ast.Assign)
+                and len(statement.targets) == 1
+                and isinstance(statement.targets[0], ast.Attribute)
+                and isinstance(statement.targets[0].value, ast.Name)
+            ):
+                target = statement.targets[0]
+                assert isinstance(target.value, ast.Name)
+                name = target.value.id
+                direct_attr[name] = direct_attr.get(name, 0) + 1
+                if name in found:
+                    found[name].stores.append(
+                        (statement.lineno, target.attr, statement.value)
+                    )
+        return {
+            name: local
+            for name, local in found.items()
+            if stores.get(name) == 1
+            and name not in mutated
+            and stores.get(f"{name}.", 0) == direct_attr.get(name, 0)
+        }
+
+    # -- calls ------------------------------------------------------------------
+    def call(self, call: ast.Call) -> None:
+        name = _called(call)
+        func = call.func
+        qualified = self.qualname(func) or ""
+        if qualified in ("rospy.get_param",) or qualified.endswith(".rospy.get_param"):
+            self.ros1_read(call)
+        elif qualified == "rospy.init_node":
+            self.node_name(ROSPY, _argument(call, 0, "name"))
+        elif isinstance(func, ast.Attribute) and name in (
+            "declare_parameter",
+            "declare_parameters",
+        ):
+            owner = owner_of(func.value, self.key, self.cls, self.self_name)
+            if owner is not None:
+                if name == "declare_parameter":
+                    self.declare(owner, call, call, *self._declare_args(call))
+                else:
+                    self.declare_many(owner, call)
+        elif name == "__init__" and self.cls is not None and self._on_self(call):
+            self.init(call)
+        elif name == "ParamListener" and isinstance(func, ast.Attribute):
+            self.listener(call, func)
+
+    def _on_self(self, call: ast.Call) -> bool:
+        """`super().__init__(...)` or `Base.__init__(self, ...)`."""
+        func = call.func
+        assert isinstance(func, ast.Attribute)
+        if isinstance(func.value, ast.Call) and _called(func.value) == "super":
+            return True
+        return bool(
+            call.args
+            and isinstance(call.args[0], ast.Name)
+            and call.args[0].id == self.self_name
+        )
+
+    def init(self, call: ast.Call) -> None:
+        assert self.cls is not None and isinstance(call.func, ast.Attribute)
+        shift = 0 if isinstance(call.func.value, ast.Call) else 1
+        self.node_name(self.cls, _argument(call, shift, "node_name"))
+        self._auto_declare(self.cls, call)
+
+    def _auto_declare(self, owner: str, call: ast.Call) -> None:
+        for kw in call.keywords:
+            if kw.arg == "automatically_declare_parameters_from_overrides" and (
+                self.const(kw.value) is not False
+            ):
+                self.summary.auto_declare.add(owner)
+
+    def node_name(self, owner: str, node: ast.expr | None) -> None:
+        name = self.text(node)
+        if name is None and isinstance(node, ast.Name) and self.function is not None:
+            name = self._parameter_default(node.id)
+        if name:
+            names = self.summary.node_names.setdefault(owner, [])
+            if name not in names:
+                names.append(name)
+
+    def _parameter_default(self, name: str) -> str | None:
+        """`def __init__(self, node_name='talker')`: the default of a parameter."""
+        assert self.function is not None
+        args = self.function.args
+        positional = [*args.posonlyargs, *args.args]
+        defaults = dict(
+            zip(
+                [a.arg for a in positional[len(positional) - len(args.defaults) :]],
+                args.defaults,
+                strict=True,
+            )
+        )
+        defaults.update(
+            {
+                a.arg: d
+                for a, d in zip(args.kwonlyargs, args.kw_defaults, strict=True)
+                if d is not None
+            }
+        )
+        return self.text(defaults.get(name))
+
+    def listener(self, call: ast.Call, func: ast.Attribute) -> None:
+        """`admittance_controller.ParamListener(self)`: the node uses the
+        generate_parameter_library definitions whose root key is
+        `admittance_controller`."""
+        namespace = func.value
+        if not call.args:
+            return
+        if isinstance(namespace, ast.Attribute):
+            key = namespace.attr
+        elif isinstance(namespace, ast.Name):
+            key = namespace.id
+        else:
+            return
+        owner = owner_of(call.args[0], self.key, self.cls, self.self_name)
+        if owner is not None:
+            found = self.summary.listeners.setdefault(owner, [])
+            if key not in found:
+                found.append(key)
+
+    def assignment(self, node: ast.Assign | ast.AnnAssign) -> None:
+        value = node.value
+        targets = node.targets if isinstance(node, ast.Assign) else [node.target]
+        if value is None or len(targets) != 1:
+            return
+        target = targets[0]
+        if isinstance(value, ast.Call) and _called(value) in NODE_CONSTRUCTORS:
+            owner = self._target_owner(target)
+            if owner is not None:
+                self.node_name(owner, _argument(value, 0, "node_name"))
+                self._auto_declare(owner, value)
+            return
+        read = read_call(value, self.qualname)
+        if read is None:
+            return
+        call, declaration = read
+        annotation = node.annotation if isinstance(node, ast.AnnAssign) else None
+        refinement, label = self._refinement_of(target, annotation)
+        if refinement is None:
+            return
+        owner, pname = self._read_owner(call)
+        if owner is None or pname is None:
+            return
+        with_default = declaration and (
+            _argument(call, 1, "default" if owner == ROSPY else "value") is not None
+        )
+        self.summary.attached.append(
+            Attached(
+                owner,
+                pname,
+                refinement,
+                label,
+                self.source.path,
+                node.lineno,
+                with_default,
+            )
+        )
+
+    def _target_owner(self, target: ast.expr) -> str | None:
+        if isinstance(target, ast.Name):
+            return f"{self.key}#{target.id}"
+        return owner_of(target, self.key, self.cls, self.self_name)
+
+    def _read_owner(self, call: ast.Call) -> tuple[str | None, str | None]:
+        if isinstance(call.func, ast.Attribute) and _called(call) in (
+            "declare_parameter",
+            "get_parameter",
+        ):
+            owner = owner_of(call.func.value, self.key, self.cls, self.self_name)
+            return owner, self.text(_argument(call, 0, "name"))
+        return ROSPY, self.text(_argument(call, 0, "param_name"))
+
+    def _refinement_of(
+        self, target: ast.expr, annotation: ast.expr | None
+    ) -> tuple[Refinement | None, str]:
+        if isinstance(target, ast.Name):
+            label = target.id
+            if annotation is None:
+                scope = self.function if self.function is not None else self.module
+                names = self.index.scopes.get(id(scope))
+                found = [a for a, t in (names.annotated if names else []) if t == label]
+                annotation = found[0] if found else None
+        elif (
+            isinstance(target, ast.Attribute)
+            and isinstance(target.value, ast.Name)
+            and self.cls is not None
+            and target.value.id == self.self_name
+        ):
+            label = f"{target.value.id}.{target.attr}"
+            if annotation is None:
+                annotation = self._attribute_annotation(target.attr)
+        else:
+            return None, ""
+        if annotation is None:
+            return None, label
+        short = label.rsplit(".", 1)[-1]
+        found_refinement, _ = extract(
+            annotation,
+            short,
+            self.qualname,
+            lambda node: None,
+            self.source.segment,
+            self.source.char_col,
+        )
+        return found_refinement, label
+
+    @property
+    def module(self) -> ast.AST | None:
+        return self.source.tree
+
+    def _attribute_annotation(self, attr: str) -> ast.expr | None:
+        for cls, name, annotation in self.index.attributes:
+            if cls == self.cls and name == attr:
+                return annotation
+        tree = self.source.tree
+        assert tree is not None
+        for statement in tree.body:
+            if isinstance(statement, ast.ClassDef) and statement.name == self.cls:
+                for item in statement.body:
+                    if (
+                        isinstance(item, ast.AnnAssign)
+                        and isinstance(item.target, ast.Name)
+                        and item.target.id == attr
+                    ):
+                        return item.annotation
+        return None
+
+    # -- declarations -------------------------------------------------------------
+    def _declare_args(
+        self, call: ast.Call
+    ) -> tuple[ast.expr | None, ast.expr | None, ast.expr | None, bool]:
+        ignore = self.const(_argument(call, 3, "ignore_override")) is True
+        return (
+            _argument(call, 0, "name"),
+            _argument(call, 1, "value"),
+            _argument(call, 2, "descriptor"),
+            ignore,
+        )
+
+    def declare_many(self, owner: str, call: ast.Call) -> None:
+        namespace = self.text(_argument(call, 0, "namespace"))
+        listed = _argument(call, 1, "parameters")
+        if namespace is None or not isinstance(listed, (ast.List, ast.Tuple)):
+            return
+        ignore = self.const(_argument(call, 2, "ignore_override")) is True
+        for item in listed.elts:
+            if not isinstance(item, ast.Tuple) or not 1 <= len(item.elts) <= 3:
+                continue
+            parts: list[ast.expr | None] = [*item.elts, None, None][:3]
+            self.declare(
+                owner, call, item, parts[0], parts[1], parts[2], ignore, namespace
+            )
+
+    def declare(
+        self,
+        owner: str,
+        call: ast.Call,
+        site: ast.AST,
+        name_node: ast.expr | None,
+        value_node: ast.expr | None,
+        descriptor_node: ast.expr | None,
+        ignore_override: bool,
+        namespace: str = "",
+    ) -> None:
+        name = self.text(name_node)
+        if name is None:
+            return
+        if namespace:
+            name = f"{namespace}.{name}"
+        decl = ParamDecl(
+            owner,
+            name,
+            2,
+            self.source.path,
+            site.lineno,  # type: ignore[attr-defined]
+            self.source.char_col(site.lineno, site.col_offset),  # type: ignore[attr-defined]
+            ignore_override=ignore_override,
+            node_id=id(site),
+        )
+        described = self.descriptor(descriptor_node, call.lineno)
+        typed = self._parameter_type(value_node)
+        if typed is not None:
+            decl.type = typed
+        elif value_node is not None and not (
+            isinstance(value_node, ast.Constant) and value_node.value is None
+        ):
+            default = self.const(value_node)
+            decl.default = default
+            decl.default_at = (
+                value_node.lineno,
+                self.source.char_col(value_node.lineno, value_node.col_offset),
+            )
+            decl.type = python_type(default) if default is not UNKNOWN else None
+        decl.dynamic = decl.type is None or described.dynamic is not False
+        decl.read_only = described.read_only
+        rng = described.range
+        if rng is not None and decl.type == ("integer" if rng.integer else "double"):
+            decl.range = rng
+        self.summary.decls.append(decl)
+
+    def _parameter_type(self, node: ast.expr | None) -> str | None:
+        """`Parameter.Type.DOUBLE` -> double."""
+        if (
+            isinstance(node, ast.Attribute)
+            and isinstance(node.value, ast.Attribute)
+            and node.value.attr == "Type"
+        ):
+            return PARAMETER_TYPES.get(node.attr)
+        return None
+
+    def ros1_read(self, call: ast.Call) -> None:
+        name = self.text(_argument(call, 0, "param_name"))
+        if name is None:
+            return
+        default_node = _argument(call, 1, "default")
+        decl = ParamDecl(
+            ROSPY,
+            name,
+            1,
+            self.source.path,
+            call.lineno,
+            self.source.char_col(call.lineno, call.col_offset),
+            node_id=id(call),
+            dynamic=True,
+        )
+        if default_node is not None:
+            decl.default = self.const(default_node)
+            decl.default_at = (
+                default_node.lineno,
+                self.source.char_col(default_node.lineno, default_node.col_offset),
+            )
+        self.summary.decls.append(decl)
+
+    # -- descriptors ------------------------------------------------------------------
+    def descriptor(self, node: ast.expr | None, before: int) -> _Described:
+        """A ParameterDescriptor's range and dynamic_typing; what cannot be read
+        is unknown (no range, typing not known to be static)."""
+        if node is None:
+            return _Described(None, False)
+        call, stores = self._resolved(node, before)
+        if (
+            call is None
+            or not _called(call).endswith("ParameterDescriptor")
+            or call.args
+            or any(kw.arg is None for kw in call.keywords)
+        ):
+            return _Described(None, None)
+        fields = {kw.arg: kw.value for kw in call.keywords if kw.arg is not None}
+        fields.update(dict(stores))
+        dynamic: bool | None = False
+        if "dynamic_typing" in fields:
+            flag = self.const(fields["dynamic_typing"])
+            dynamic = flag if isinstance(flag, bool) else None
+        found: Range | None = None
+        for key, integer in (("floating_point_range", False), ("integer_range", True)):
+            ranges = fields.get(key)
+            if isinstance(ranges, (ast.List, ast.Tuple)) and ranges.elts:
+                found = self._range(ranges.elts[0], integer, before) or found
+        read_only = self.const(fields.get("read_only")) is True
+        return _Described(found, dynamic, read_only)
+
+    def _resolved(
+        self, node: ast.expr, before: int
+    ) -> tuple[ast.Call | None, list[tuple[str, ast.expr]]]:
+        """A constructor call, inline or bound to a local, with the attribute stores
+        made on the local before line `before`."""
+        if isinstance(node, ast.Call):
+            return node, []
+        if self._bound is None:
+            self._bound = self._locals(self.body)
+        if isinstance(node, ast.Name) and node.id in self._bound:
+            local = self._bound[node.id]
+            if isinstance(local.value, ast.Call):
+                stores = [(a, v) for line, a, v in local.stores if line < before]
+                return local.value, stores
+        return None, []
+
+    def _range(self, node: ast.expr, integer: bool, before: int) -> Range | None:
+        call, stores = self._resolved(node, before)
+        expected = "IntegerRange" if integer else "FloatingPointRange"
+        if call is None or not _called(call).endswith(expected) or call.args:
+            return None
+        fields: dict[str | None, ast.expr] = {kw.arg: kw.value for kw in call.keywords}
+        fields.update(dict(stores))
+        numbers: list[int | float] = []
+        for key in ("from_value", "to_value", "step"):
+            number = self.const(fields[key]) if key in fields else 0
+            if not isinstance(number, (int, float)) or isinstance(number, bool):
+                return None
+            if not math.isfinite(number):
+                return None
+            numbers.append(int(number) if integer else float(number))
+        low, high = sorted(numbers[:2])
+        return Range(
+            integer,
+            numbers[0],
+            numbers[1],
+            numbers[2],
+            exact(low),
+            exact(high),
+            call.lineno,
+        )
+
+
+@dataclass(frozen=True)
+class _Described:
+    range: Range | None
+    dynamic: bool | None  # None: not known
+    read_only: bool = False
+
+
+def read_call(
+    node: ast.expr, qualname: Callable[[ast.expr], str | None]
+) -> tuple[ast.Call, bool] | None:
+    """The parameter call whose value `node` reads, and whether it is a declaration
+    (`declare_parameter(...)` or `rospy.get_param(...)`) rather than a
+    `get_parameter(...)`: `X.value`, `X.get_parameter_value().double_value`, or a
+    `rospy.get_param(...)` call."""
+    if isinstance(node, ast.Call):
+        if _called(node) == "get_param" and qualname(node.func) == "rospy.get_param":
+            return node, True
+        return None
+    if not isinstance(node, ast.Attribute):
+        return None
+    inner = node.value
+    if node.attr in PARAMETER_VALUE_FIELDS and isinstance(inner, ast.Call):
+        if _called(inner) == "get_parameter_value" and isinstance(
+            inner.func, ast.Attribute
+        ):
+            inner = inner.func.value
+        else:
+            return None
+    elif node.attr != "value":
+        return None
+    if isinstance(inner, ast.Call) and isinstance(inner.func, ast.Attribute):
+        called = _called(inner)
+        if called in ("declare_parameter", "get_parameter"):
+            return inner, called == "declare_parameter"
+    return None
+
+
+# -- the analysis' view ----------------------------------------------------------
+
+
+@dataclass
+class Handle:
+    """A Parameter object in the analysed code (what declare/get_parameter return)."""
+
+    owner: str
+    name: str
+    decl: ParamDecl | None
+    declaration: bool  # returned by declare_parameter: its `.value` may attach
+    default: Value | None = None
+    default_node: ast.expr | None = None
+    call: ast.Call | None = None
+    value: Value | None = None  # the value read, once read
+
+
+@dataclass(frozen=True)
+class ParamRead:
+    """A value read from a parameter: where (the expression) and what attaches."""
+
+    name: str
+    ros: int
+    node: ast.expr  # the expression that read it
+    attach: bool  # assigned to a refined target right there: the refinement holds
+    default: Value | None
+    default_node: ast.expr | None
+
+
+@dataclass
+class ParamContext:
+    summary: Summary
+    handles: dict[str, Handle] = field(default_factory=dict)
+    reads: dict[int, ParamRead] = field(default_factory=dict)  # Sym ident ->
+    fixed: dict[tuple[str, str], Value] = field(default_factory=dict)  # read_only
+
+
+def read_of(check: Checker, value: Value, site: ast.AST) -> ParamRead | None:
+    """The parameter read `value` comes from, when it is assigned right where it
+    was read (`x: Annotated[...] = self.declare_parameter(...).value`) and so the
+    target's refinement becomes the parameter's."""
+    params = check.ctx.parameters
+    term = value.term
+    if params is None or not isinstance(term, A.Sym):
+        return None
+    read = params.reads.get(term.ident)
+    if read is None or not read.attach:
+        return None
+    if getattr(site, "value", None) is not read.node:
+        return None
+    return read
+
+
+def attach(
+    check: Checker,
+    state: State,
+    name: str,
+    decl: Refinement,
+    value: Value,
+    site: ast.AST,
+    lookup: dict[str, A.Expr],
+    read: ParamRead,
+) -> Value:
+    """A parameter read assigned to a refined target: the default is checked
+    against the refinement (RF101 naming the default), and the value is assumed to
+    satisfy it (parameter files are checked against it, `robotfix.paramcheck`)."""
+    target = f"`{name}`"
+    if not check.base_fits(decl.base, value, site, target):
+        return check.assumed(state, name, decl, lookup)
+    default = read.default
+    if (
+        default is not None
+        and default.term is not None
+        and read.default_node is not None
+        and check.base_fits(decl.base, default, read.default_node, target)
+    ):
+        _check_default(check, state, name, decl, default, read, lookup)
+    if value.kind == decl.base or (value.kind == "int" and decl.base == "float"):
+        stored = value
+    else:
+        stored = check.ctx.fresh(decl.base, f"parameter `{read.name}`")
+    if stored.term is not None:
+        state.assume(A.substitute(decl.predicate, {**lookup, "_": stored.term}))
+    return replace(stored, unit=decl.unit, literal=False) if decl.unit else stored
+
+
+def _check_default(
+    check: Checker,
+    state: State,
+    name: str,
+    decl: Refinement,
+    default: Value,
+    read: ParamRead,
+    lookup: dict[str, A.Expr],
+) -> None:
+    assert default.term is not None and read.default_node is not None
+    declared = Declared(f"annotation of `{name}`", check.path, decl.line)
+    for part in A.conjuncts(decl.predicate):
+        goal = A.substitute(part, {**lookup, "_": default.term})
+        verdict = check.ctx.discharge(VC(tuple(state.facts), goal, (default.term,)))
+        if isinstance(verdict, Violated):
+            shown = A.show(A.substitute(part, {"_": A.Name(name)}))
+            text = check.ctx.source.segment(read.default_node) or A.show(default.term)
+            check.ctx.report(
+                messages.parameter_value_violated(
+                    check.path,
+                    check.ctx.source.span(read.default_node),
+                    f"the default `{text}` of parameter `{read.name}`",
+                    f"`{shown}`",
+                    declared,
+                    "ROS uses the default when no parameter file or launch "
+                    "argument sets the parameter",
+                )
+            )
+            return

@@ -1,0 +1,521 @@
+"""Parameter files checked against what the code declares.
+
+For a run: the parameters each node declares or reads (`analysis.parameters`,
+from the checked Python files and those of the packages around named YAML files),
+the generate_parameter_library definitions of the checked packages, and then every
+parameter file: a value outside a declared range or refinement is RF101, a value of
+another type than declared is RF401, both at the value's line and column.
+
+A parameter file can only be matched to code by names, so where a key could mean
+several parameters (two nodes with one name, `/**`, the flat ROS 1 layout) a value
+is reported only when it is wrong for every one of them; a key for a node or a
+parameter nobody declares is silent.
+
+- ROS 2: `node: ros__parameters:` matches the nodes of that name (`Node('name')`,
+  `super().__init__('name')`); `/**` and `*` the nodes of the file's own package.
+  A declared type is the default's type (rclpy refuses another, unless
+  `dynamic_typing`), the range is the descriptor's, the refinements those written
+  where the parameter's value is assigned; a generate_parameter_library definition
+  applies to the nodes whose code calls `<root key>.ParamListener(...)`, and to
+  nodes named like its root key.
+- ROS 1: a flat file's `a/b` is the global `/a/b`, the private `~a/b` of a node of
+  the file's package (loaded inside its `<node>`), or the private `~b` of node `a`.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from fractions import Fraction
+from pathlib import Path
+
+from robotfix import messages
+from robotfix.analysis.parameters import ROSPY, Attached, ParamDecl, Summary, summarize
+from robotfix.annotations import ast as A
+from robotfix.config import Config
+from robotfix.diagnostics import Diagnostic, Span
+from robotfix.fs import UnreadableError, read_regular, read_text
+from robotfix.messages import Declared
+from robotfix.ros import paramfile as P
+from robotfix.ros import yamlfile as Y
+from robotfix.smt.fold import fold
+from robotfix.source import SourceFile
+
+# A Python file is summarised only if it mentions one of these (bytes, quick).
+MENTIONS = {
+    "ros2": (b"declare_parameter", b"get_parameter", b"ParamListener"),
+    "ros1": (b"rospy",),
+}
+_SUPPRESS = re.compile(
+    r"#\s*robotfix:\s*ignore(?:\[(?P<codes>[^\]]*)\])?", re.IGNORECASE
+)
+_DECIMAL = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
+TYPE_WHY = (
+    "a ROS 2 parameter keeps the type it was declared with: rclpy refuses "
+    "another (InvalidParameterTypeException) unless it is declared with "
+    "dynamic_typing"
+)
+RANGE_WHY = "rclpy refuses the value (InvalidParameterValueException)"
+
+
+@dataclass(frozen=True)
+class Failure:
+    type_error: bool
+    rule: str  # what is broken, in words
+    got: str = ""  # type errors: the value's type
+    expected: str = ""  # type errors: the declared type
+    declared: Declared = field(default_factory=lambda: Declared("", None, None))
+    why: str = ""
+
+
+@dataclass
+class _Parameter:
+    """One parameter a YAML key may name, with everything that constrains it."""
+
+    name: str
+    ros: int
+    decls: list[ParamDecl] = field(default_factory=list)
+    refinements: list[Attached] = field(default_factory=list)
+    definitions: list[P.Definition] = field(default_factory=list)
+    definitions_path: dict[int, str] = field(default_factory=dict)
+
+    def failure(self, value: Y.Node, budget: list[int]) -> Failure | None:
+        typed = (P.ros2_value if self.ros == 2 else P.ros1_value)(value, budget)
+        if typed is None:
+            return None
+        if any(d.ignore_override for d in self.decls):
+            return None
+        for decl in self.decls:
+            found = _declaration_failure(decl, typed)
+            if found is not None:
+                return found
+        for attached in self.refinements:
+            found = _refinement_failure(attached, typed, self.name)
+            if found is not None:
+                return found
+        for definition in self.definitions:
+            found = _definition_failure(
+                definition, typed, self.definitions_path[id(definition)], budget
+            )
+            if found is not None:
+                return found
+        return None
+
+
+def check_parameter_files(
+    files: list[Path],
+    definition_files: list[Path],
+    python_files: Iterable[Path],
+    named: Iterable[Path] = (),
+    config: Config | None = None,
+) -> list[Diagnostic]:
+    """Diagnostics for the parameter files and generate_parameter_library
+    definitions of a run; `python_files` are those whose declarations count. A
+    file that is not valid YAML is RF003 when it was `named` on the command line
+    or is a definitions file; found in a package's config folder, it is an RF004
+    warning (it may be a template or another tool's file). A YAML line ending in
+    `# robotfix: ignore[RF101]` and `per-file-ignores` silence as in Python."""
+    loud = {str(p) for p in [*named, *definition_files]}
+    texts: dict[str, str] = {}
+    out: list[Diagnostic] = []
+    definitions: dict[str, list[tuple[P.Definition, str]]] = {}
+    read: dict[str, P.ParamFile] = {}
+    for path in [*definition_files, *files]:
+        key = str(path)
+        if key in read:
+            continue
+        loaded = _load(path, key in loud, out, texts)
+        if loaded is None:
+            continue
+        read[key] = loaded
+        if loaded.layout == "definitions":
+            for definition in loaded.definitions:
+                definitions.setdefault(definition.namespace, []).append(
+                    (definition, key)
+                )
+            out.extend(_definition_defaults(loaded, key))
+    layouts = {f.layout for f in read.values() if f.entries}
+    words = tuple(w for layout in sorted(layouts) for w in MENTIONS.get(layout, ()))
+    table = _Table(_summaries(python_files, words) if words else [], definitions)
+    for path in files:
+        loaded = read.get(str(path))
+        if loaded is None or loaded.layout == "definitions":
+            continue
+        package = _package_of(path)
+        budget = [Y.WALK_BUDGET]
+        for entry in loaded.entries:
+            candidates = (
+                table.ros2(entry, package)
+                if loaded.layout == "ros2"
+                else table.ros1(entry, package)
+            )
+            failures = [c.failure(entry.value, budget) for c in candidates]
+            if candidates and all(f is not None for f in failures):
+                first = failures[0]
+                assert first is not None
+                out.append(_report(str(path), entry, first, loaded.layout, budget))
+    return [d for d in out if not _silenced(d, texts.get(d.path, ""), config)]
+
+
+def _silenced(diag: Diagnostic, text: str, config: Config | None) -> bool:
+    if config is not None and (
+        {diag.code, diag.rule.name} & config.ignored_codes(Path(diag.path))
+    ):
+        return True
+    lines = text.splitlines()
+    if not 0 < diag.span.line <= len(lines):
+        return False
+    match = _SUPPRESS.search(lines[diag.span.line - 1])
+    if match is None:
+        return False
+    codes = match["codes"]
+    listed = {c.strip() for c in codes.split(",")} if codes is not None else None
+    return listed is None or bool({diag.code, diag.rule.name} & listed)
+
+
+def _summaries(python_files: Iterable[Path], words: tuple[bytes, ...]) -> list[Summary]:
+    """The summaries of the files that mention one of `words` (a quick filter)."""
+    found: list[Summary] = []
+    seen: set[str] = set()
+    for path in python_files:
+        real = os.path.realpath(path)
+        if real in seen:
+            continue
+        seen.add(real)
+        try:
+            data = read_regular(path)
+        except UnreadableError:
+            continue
+        if not any(word in data for word in words):
+            continue
+        source = SourceFile.from_bytes(str(path), data)
+        if source.tree is not None:
+            found.append(summarize(source))
+    return found
+
+
+def _load(
+    path: Path, named: bool, out: list[Diagnostic], texts: dict[str, str]
+) -> P.ParamFile | None:
+    """A parameter file's layout and entries; a file that cannot be read or is not
+    valid YAML is RF003 (ROS could not load it either)."""
+    try:
+        text = read_text(path, Y.MAX_YAML_BYTES)
+    except UnreadableError as err:
+        text = ""
+        root: Y.Node | Y.YamlProblem | None = Y.YamlProblem(
+            f"cannot read: {err.reason}", 1, 0
+        )
+    else:
+        texts[str(path)] = text
+        root = Y.parse(text)
+    if isinstance(root, Y.YamlProblem):
+        report = (
+            messages.parameter_file_unreadable
+            if named
+            else messages.parameter_file_not_checked
+        )
+        out.append(report(str(path), root.line, root.col, root.message))
+        return None
+    return P.classify(root)
+
+
+class _Table:
+    """The parameters of the run's nodes, by node name and package."""
+
+    def __init__(
+        self,
+        summaries: list[Summary],
+        definitions: dict[str, list[tuple[P.Definition, str]]],
+    ) -> None:
+        self.summaries = summaries
+        self.definitions = definitions
+        self.packages = {s.path: _package_of(Path(s.path)) for s in summaries}
+        # ROS 2 owners whose parameters a file may set: (summary, owner, names)
+        self.owners = [
+            (summary, owner, summary.names_of(owner))
+            for summary in summaries
+            for owner in _owners(summary)
+            if not any(o in summary.auto_declare for o in summary.lineage(owner))
+        ]
+
+    def ros2(self, entry: P.Entry, package: Path | None) -> list[_Parameter]:
+        node = entry.node_name
+        wildcard = node in ("*", "**")
+        found: list[_Parameter] = []
+        for summary, owner, names in self.owners:
+            if wildcard:
+                if package is None or self.packages[summary.path] != package:
+                    continue
+            elif node not in names:
+                continue
+            candidate = self._ros2_parameter(summary, owner, entry.name)
+            if candidate is not None:
+                found.append(candidate)
+        if not wildcard:
+            for definition, path in self.definitions.get(node, []):
+                if definition.matches(entry.name):
+                    found.append(_gpl(entry.name, definition, path))
+        return found
+
+    def _ros2_parameter(
+        self, summary: Summary, owner: str, name: str
+    ) -> _Parameter | None:
+        candidate = _Parameter(name, 2)
+        decl = summary.declaration(owner, name)
+        if decl is not None:
+            candidate.decls.append(decl)
+        candidate.refinements = summary.refinements(owner, name, False)
+        for namespace in summary.listeners.get(owner, []):
+            for definition, path in self.definitions.get(namespace, []):
+                if definition.matches(name):
+                    candidate.definitions.append(definition)
+                    candidate.definitions_path[id(definition)] = path
+        if candidate.decls or candidate.refinements or candidate.definitions:
+            return candidate
+        return None
+
+    def ros1(self, entry: P.Entry, package: Path | None) -> list[_Parameter]:
+        found: list[_Parameter] = []
+        for summary in self.summaries:
+            if package is not None and self.packages[summary.path] != package:
+                continue
+            nodes = summary.node_names.get(ROSPY, [])
+            head, _, rest = entry.name.partition("/")
+            wanted = {f"/{entry.name}", f"~{entry.name}"}
+            if rest and head in nodes:
+                wanted.add(f"~{rest}")
+            for name in sorted(wanted):
+                sites = [
+                    d
+                    for d in summary.decls
+                    if d.ros == 1 and ros1_name(d.name, nodes) == name
+                ]
+                if sites:
+                    candidate = _Parameter(name, 1)
+                    candidate.refinements = [
+                        a
+                        for a in summary.attached
+                        if a.owner == ROSPY and ros1_name(a.name, nodes) == name
+                    ]
+                    found.append(candidate)
+        return found
+
+
+def ros1_name(name: str, nodes: list[str]) -> str:
+    """A rospy parameter name resolved for a node in the root namespace: `rate`
+    is `/rate`, and `/node/rate` is the node's private `~rate`."""
+    if name.startswith("~"):
+        return name
+    absolute = name if name.startswith("/") else f"/{name}"
+    for node in nodes:
+        if absolute.startswith(f"/{node}/"):
+            return "~" + absolute[len(node) + 2 :]
+    return absolute
+
+
+def _owners(summary: Summary) -> list[str]:
+    owners = {d.owner for d in summary.decls if d.ros == 2}
+    owners |= {a.owner for a in summary.attached if a.owner != ROSPY}
+    owners |= set(summary.listeners)
+    return sorted(owners)
+
+
+def _gpl(name: str, definition: P.Definition, path: str) -> _Parameter:
+    candidate = _Parameter(name, 2, definitions=[definition])
+    candidate.definitions_path[id(definition)] = path
+    return candidate
+
+
+def _package_of(path: Path) -> Path | None:
+    folder = Path(os.path.abspath(path)).parent
+    for candidate in (folder, *folder.parents):
+        if os.path.isfile(candidate / "package.xml"):
+            return candidate
+    return None
+
+
+# -- the rules ------------------------------------------------------------------
+
+
+def _declaration_failure(decl: ParamDecl, typed: P.Typed) -> Failure | None:
+    declared = Declared(f"parameter `{decl.name}`", decl.path, decl.line)
+    if decl.dynamic or decl.type is None:
+        return None
+    if typed.type != decl.type:
+        return Failure(
+            True,
+            "",
+            P.type_words(typed.type),
+            P.type_words(decl.type),
+            declared,
+            TYPE_WHY,
+        )
+    value = typed.value
+    if (
+        decl.range is not None
+        and isinstance(value, (int, float))
+        and not isinstance(value, bool)
+        and not decl.range.accepts(value)
+    ):
+        ranged = Declared(
+            f"range of parameter `{decl.name}`", decl.path, decl.range.line
+        )
+        return Failure(
+            False,
+            f"its declared range {decl.range.text()}",
+            declared=ranged,
+            why=RANGE_WHY,
+        )
+    return None
+
+
+BASES = {
+    "int": {"integer", "bool"},
+    "float": {"integer", "double", "bool"},
+    "bool": {"bool"},
+    "str": {"string"},
+}
+
+
+def _refinement_failure(
+    attached: Attached, typed: P.Typed, name: str
+) -> Failure | None:
+    refinement = attached.refinement
+    declared = Declared(
+        f"annotation of `{attached.target}`", attached.path, attached.line
+    )
+    allowed = BASES.get(refinement.base)
+    if allowed is not None and typed.type not in allowed and "_array" not in typed.type:
+        expected = {
+            "int": "an integer",
+            "float": "a double",
+            "bool": "a bool",
+            "str": "a string",
+        }[refinement.base]
+        return Failure(True, "", P.type_words(typed.type), expected, declared)
+    term = _term(typed)
+    if term is None:
+        return None
+    short = name.rsplit("/", 1)[-1].rsplit(".", 1)[-1].lstrip("~")
+    for part in A.conjuncts(refinement.predicate):
+        if fold(A.substitute(part, {"_": term})) is False:
+            shown = A.show(A.substitute(part, {"_": A.Name(short)}))
+            return Failure(False, f"`{shown}`", declared=declared)
+    return None
+
+
+def _term(typed: P.Typed) -> A.Expr | None:
+    value = typed.value
+    if isinstance(value, bool):
+        return A.Bool(value)
+    if isinstance(value, int):
+        return A.Num(Fraction(value), True)
+    if isinstance(value, float):
+        if value != value or value in (float("inf"), float("-inf")):
+            return None
+        text = typed.text
+        exact = Fraction(text) if _DECIMAL.fullmatch(text) else Fraction(value)
+        return A.Num(exact, False)
+    if isinstance(value, str):
+        return A.Str(value)
+    return None
+
+
+def _definition_failure(
+    definition: P.Definition, typed: P.Typed, path: str, budget: list[int]
+) -> Failure | None:
+    name = f"{definition.namespace}.{definition.name}"
+    expected = definition.ros_type
+    if expected is not None and typed.type != expected:
+        declared = Declared(f"parameter `{name}`", path, definition.line)
+        return Failure(
+            True,
+            "",
+            P.type_words(typed.type),
+            P.type_words(expected),
+            declared,
+            TYPE_WHY,
+        )
+    for validator, args, line, _ in definition.validations:
+        broken = P.gpl_violation(validator, args, typed, budget)
+        if broken is not None:
+            declared = Declared(f"validation of parameter `{name}`", path, line)
+            return Failure(
+                False,
+                broken,
+                declared=declared,
+                why="the generated parameter code refuses it",
+            )
+    return None
+
+
+def _definition_defaults(loaded: P.ParamFile, path: str) -> list[Diagnostic]:
+    """A definition whose default_value breaks its own validation (read as
+    generate_parameter_library reads it: YAML 1.1)."""
+    out = []
+    budget = [Y.WALK_BUDGET]
+    for definition in loaded.definitions:
+        default = Y.resolve(definition.default, budget)
+        if default is None:
+            continue
+        typed = (
+            P.ros2_value(default, budget)
+            if isinstance(default, Y.Sequence)
+            else P.ros1_value(default, budget)
+        )
+        if typed is None:
+            continue
+        for validator, args, line, _ in definition.validations:
+            broken = P.gpl_violation(validator, args, typed, budget)
+            if broken is not None:
+                name = f"{definition.namespace}.{definition.name}"
+                where = (
+                    default
+                    if isinstance(default, (Y.Scalar, Y.Sequence))
+                    else definition
+                )
+                out.append(
+                    messages.parameter_value_violated(
+                        path,
+                        Span.point(where.line, where.col),
+                        f"the default_value `{typed.text}` of parameter `{name}`",
+                        broken,
+                        Declared(f"validation of parameter `{name}`", path, line),
+                        "the generated parameter code refuses its own default",
+                    )
+                )
+                break
+    return out
+
+
+def _report(
+    path: str, entry: P.Entry, failure: Failure, layout: str, budget: list[int]
+) -> Diagnostic:
+    value = Y.resolve(entry.value, budget) or entry.value
+    line = getattr(value, "line", entry.line)
+    col = getattr(value, "col", entry.col)
+    typed = (P.ros2_value if layout == "ros2" else P.ros1_value)(value, [Y.WALK_BUDGET])
+    shown = typed.text if typed is not None else "..."
+    if isinstance(value, Y.Scalar) and not value.plain:
+        shown = f'"{shown}"'
+    if len(shown) > 40:
+        shown = shown[:37] + "..."
+    node = f" (node `{entry.node}`)" if entry.node else ""
+    subject = f"`{entry.name}: {shown}`{node}"
+    span = Span.point(line, col)
+    if failure.type_error:
+        return messages.parameter_value_type(
+            path,
+            span,
+            subject,
+            failure.got,
+            failure.expected,
+            failure.declared,
+            failure.why,
+        )
+    return messages.parameter_value_violated(
+        path, span, subject, failure.rule, failure.declared, failure.why
+    )

@@ -1,0 +1,33 @@
+"""`declare_parameters(namespace, [(name, default, descriptor), ...])`: each tuple is
+a declaration named `namespace.name`, its default checked against its range, and
+reads of it assume the range."""
+from typing import Annotated
+
+from rclpy.node import Node
+from rcl_interfaces.msg import FloatingPointRange, ParameterDescriptor
+
+PERCENT = ParameterDescriptor(
+    floating_point_range=[FloatingPointRange(from_value=0.0, to_value=100.0)]
+)
+
+
+class Battery(Node):
+    def __init__(self):
+        super().__init__("battery_monitor")
+        ratio = ParameterDescriptor(
+            floating_point_range=[FloatingPointRange(from_value=0.0, to_value=1.0)]
+        )
+        self.declare_parameters(
+            namespace="thresholds",
+            parameters=[
+                ("low", 0.2, ratio),
+                ("critical", 1.5, ratio),  # error: RF101 "parameter `thresholds.critical`"
+                ("warn_percent", 120.0, PERCENT),  # a module-level descriptor: not read
+                ("cells", 4),
+            ],
+        )
+        self.declare_parameters("", [("topic", "battery")])
+
+    def check(self) -> None:
+        low: Annotated[float, "0 <= _ <= 1"] = self.get_parameter("thresholds.low").value
+        cells: Annotated[int, "_ > 0"] = self.get_parameter("thresholds.cells").value  # warning: RF102

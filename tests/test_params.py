@@ -1,0 +1,419 @@
+"""Parameters are checked values (issue 10 item 3): parameter files of realistic
+packages checked against the nodes' declarations (inline `# error:` comments in the
+YAML files, strict), the rcl and rosparam typing of YAML scalars, rclpy's range
+rules, and hostile YAML (aliases, depth, size) that must never hang or crash.
+The Python side (defaults, reads) is in tests/cases/params/."""
+
+from __future__ import annotations
+
+import math
+import re
+import time
+from pathlib import Path
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from robotfix import cli, paramcheck
+from robotfix.api import check_paths
+from robotfix.config import Config
+from robotfix.diagnostics import Diagnostic
+from robotfix.ros import paramfile as P
+from robotfix.ros import yamlfile as Y
+from robotfix.testing.expectations import Expectation, compare
+
+PACKAGES = Path(__file__).parent / "cases" / "params" / "packages"
+_ASSERTION = re.compile(
+    r'#\s*(?P<kind>error|warning):\s*(?P<code>RF\d{3})(?:\s+"(?P<text>[^"]*)")?\s*$'
+)
+
+
+def yaml_expectations(path: Path) -> list[Expectation]:
+    """`key: value  # error: RF101 "text"` at the end of a YAML line."""
+    found = []
+    for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
+        match = _ASSERTION.search(line)
+        if match is not None:
+            found.append(
+                Expectation(number, match["kind"], match["code"], match["text"])
+            )
+    return found
+
+
+def run(paths: list[Path], **kwargs: object) -> list[Diagnostic]:
+    config = Config(root=paths[0].parent)
+    return check_paths(paths, config, **kwargs).diagnostics  # type: ignore[arg-type]
+
+
+def yaml_files(package: Path) -> list[Path]:
+    return sorted([*package.rglob("*.yaml"), *package.rglob("*.yml")])
+
+
+@pytest.mark.parametrize(
+    "package", sorted(p for p in PACKAGES.iterdir() if p.is_dir()), ids=lambda p: p.name
+)
+def test_parameter_files_of_a_package(package: Path) -> None:
+    found = run([package])
+    problems = []
+    for path in yaml_files(package):
+        mine = [d for d in found if Path(d.path) == path]
+        problems += [
+            f"{path.name}: {p}" for p in compare(yaml_expectations(path), mine)
+        ]
+    assert not problems, "\n".join(problems)
+
+
+def test_a_named_parameter_file_is_checked_against_its_package(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """`robotfix check config/driver.yaml`: the package's nodes are read (not
+    checked) to know the declarations; the same findings as the whole package."""
+    package = PACKAGES / "ros2_driver"
+    monkeypatch.chdir(package)
+    named = Path("config") / "driver.yaml"
+    found = run([named])
+    assert not compare(yaml_expectations(package / named), found)
+    assert {d.path for d in found} == {str(named)}
+
+
+def test_cli_reports_yaml_lines_and_fails_the_run(
+    capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(PACKAGES / "ros2_driver")
+    status = cli.main(
+        ["check", "--no-cache", "--format", "concise", "config/driver.yaml"]
+    )
+    out = capsys.readouterr().out
+    assert status == 1
+    assert (
+        "config/driver.yaml:4:16: error[RF101]: `max_speed: 2.0` (node `driver`)" in out
+    )
+    near = cli.main(["check", "--no-cache", "config/near_misses.yaml"])
+    assert near == 0
+
+
+def test_results_are_the_same_with_the_cache_and_workers(tmp_path: Path) -> None:
+    """Parameter files are checked on every run (they depend on every node), so a
+    cached or parallel run reports exactly what a plain one does."""
+    package = PACKAGES / "ros1_tracker"
+    plain = run([package])
+    first = check_paths([package], Config(root=tmp_path), use_cache=True).diagnostics
+    second = check_paths([package], Config(root=tmp_path), use_cache=True)
+    assert second.from_cache > 0
+    assert plain == first == second.diagnostics
+    assert check_paths([package], Config(root=tmp_path), jobs=2).diagnostics == plain
+
+
+# -- the two packages' nodes are unknown to each other ---------------------------
+
+
+def write(path: Path, text: str) -> Path:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+NODE = """
+from rclpy.node import Node
+
+class N(Node):
+    def __init__(self):
+        super().__init__("{name}")
+        self.declare_parameter("rate", {default})
+"""
+
+
+def package(root: Path, name: str, node: str, default: str) -> Path:
+    folder = root / name
+    write(folder / "package.xml", f"<package><name>{name}</name></package>")
+    write(folder / name / "node.py", NODE.format(name=node, default=default))
+    return folder
+
+
+def test_an_ambiguous_key_is_reported_only_when_wrong_for_every_node(
+    tmp_path: Path,
+) -> None:
+    """Two nodes named `talker` in two packages: `rate: 5` is an integer for one
+    (fine) and not a double for the other: which node gets the file is decided at
+    launch, so it is not an error. A `/**` key only concerns the file's package."""
+    a = package(tmp_path, "pkg_a", "talker", "10")
+    package(tmp_path, "pkg_b", "talker", "10.0")
+    params = write(
+        a / "config" / "p.yaml",
+        "talker:\n  ros__parameters:\n    rate: 5\n"
+        "/**:\n  ros__parameters:\n    rate: 5.0\n",
+    )
+    found = [d for d in run([tmp_path]) if d.path == str(params)]
+    assert [(d.span.line, d.code) for d in found] == [(6, "RF401")]
+
+
+def test_a_node_that_declares_from_overrides_is_silent(tmp_path: Path) -> None:
+    folder = tmp_path / "auto"
+    write(folder / "package.xml", "<package><name>auto</name></package>")
+    write(
+        folder / "auto" / "node.py",
+        "from rclpy.node import Node\n"
+        "class A(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('auto', "
+        "automatically_declare_parameters_from_overrides=True)\n"
+        "        self.declare_parameter('rate', 1.0)\n",
+    )
+    write(folder / "config" / "a.yaml", "auto:\n  ros__parameters:\n    rate: 1\n")
+    assert run([folder]) == []
+
+
+# -- hostile and broken files ---------------------------------------------------
+
+LAUGHS = "a: &a [1, 1, 1, 1, 1, 1, 1, 1, 1]\n" + "".join(
+    f"{c}: &{c} [{', '.join([f'*{p}'] * 9)}]\n"
+    for p, c in zip("abcdefgh", "bcdefghi", strict=True)
+)
+
+
+def test_billion_laughs_is_neither_expanded_nor_fatal(tmp_path: Path) -> None:
+    """9**9 leaves behind aliases: read as a graph, walked within a budget."""
+    started = time.process_time()
+    parsed = Y.parse(LAUGHS)
+    assert isinstance(parsed, Y.Mapping)
+    found = P.classify(parsed)
+    assert found is not None and found.layout == "ros1"
+    cyclic = Y.parse("a: &x [*x, *x]\nb: &y {k: *y}\n")
+    assert P.classify(cyclic) is not None
+    path = write(tmp_path / "laughs.yaml", LAUGHS)
+    assert paramcheck.check_parameter_files([path], [], [], [path]) == []
+    assert time.process_time() - started < 30  # a generous bound: it takes ms
+
+
+def test_too_deep_too_large_or_broken_files_are_rf003_when_named(
+    tmp_path: Path,
+) -> None:
+    deep = write(tmp_path / "deep.yaml", "[" * 500 + "]" * 500 + "\n")
+    broken = write(tmp_path / "broken.yaml", "node:\n  ros__parameters: [\n")
+    large = write(tmp_path / "large.yaml", "x: 1\n" * (Y.MAX_YAML_BYTES // 5 + 1))
+    named = [deep, broken, large]
+    found = paramcheck.check_parameter_files(named, [], [], named)
+    assert [(Path(d.path).name, d.code, d.span.line) for d in found] == [
+        ("deep.yaml", "RF003", 1),
+        ("broken.yaml", "RF003", 3),
+        ("large.yaml", "RF003", 1),
+    ]
+    assert "larger than" in found[2].message
+    found_in_config = paramcheck.check_parameter_files(named, [], [], [])
+    assert [(d.code, d.severity.value) for d in found_in_config] == [
+        ("RF004", "warning")
+    ] * 3
+
+
+# -- typing of YAML scalars -------------------------------------------------------
+
+
+def scalar(text: str, plain: bool = True, tag: str | None = None) -> Y.Scalar:
+    return Y.Scalar(text, plain, tag, 1, 0)
+
+
+@pytest.mark.parametrize(
+    ("text", "expected"),
+    [
+        ("true", ("bool", True)),
+        ("Off", ("bool", False)),
+        ("y", ("bool", True)),
+        ("42", ("integer", 42)),
+        ("-0x1F", ("integer", -31)),
+        ("017", ("integer", 15)),  # strtoll with base 0: octal
+        ("08", ("double", 8.0)),  # not octal, so strtod reads it
+        ("9223372036854775808", ("double", 9.223372036854775808e18)),
+        ("1e3", ("double", 1000.0)),
+        (".5", ("double", 0.5)),
+        ("-.inf", ("double", -math.inf)),
+        ("1_000", ("string", "1_000")),
+        ("0.5m", ("string", "0.5m")),
+        ("1e999", ("string", "1e999")),  # ERANGE: rcl keeps the text
+    ],
+)
+def test_ros2_scalars_are_typed_as_rcl_types_them(
+    text: str, expected: tuple[str, object]
+) -> None:
+    typed = P.ros2_scalar(scalar(text))
+    assert typed is not None
+    assert (typed.type, typed.value) == expected
+
+
+def test_quoted_and_str_tagged_scalars_are_strings() -> None:
+    assert P.ros2_scalar(scalar("5", plain=False)) == P.Typed("string", "5", "5")
+    assert P.ros2_scalar(scalar("true", tag=Y.STR_TAG)) == P.Typed(
+        "string", "true", "true"
+    )
+    assert P.ros2_scalar(scalar("")) is None
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.integers(min_value=-(2**63), max_value=2**63 - 1))
+def test_every_int64_is_an_integer(number: int) -> None:
+    assert P.ros2_scalar(scalar(str(number))) == P.Typed("integer", number, str(number))
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.floats(allow_nan=False, allow_infinity=False))
+def test_every_float_repr_is_a_double(number: float) -> None:
+    text = repr(number)
+    typed = P.ros2_scalar(scalar(text))
+    assert typed is not None and typed.type == "double" and typed.value == number
+
+
+def test_ros1_scalars_follow_yaml_1_1() -> None:
+    def typed(text: str) -> tuple[str, object] | None:
+        found = P.ros1_value(scalar(text), [100])
+        return None if found is None else (found.type, found.value)
+
+    assert typed("1_000") == ("integer", 1000)
+    assert typed("yes") == ("bool", True)
+    assert typed("1e3") == ("string", "1e3")  # YAML 1.1 needs a dot and a sign
+    assert typed("1.0e+3") == ("double", 1000.0)
+    assert typed("rad(pi/2)") is None  # rosparam evaluates it
+
+
+# -- rclpy's range rules ------------------------------------------------------------
+
+
+def rng(low: float, high: float, step: float = 0, integer: bool = False) -> P.Range:
+    return P.Range(integer, low, high, step, 0, 0, 1)  # type: ignore[arg-type]
+
+
+def test_ranges_accept_what_rclpy_accepts() -> None:
+    assert rng(0.0, 1.0).accepts(1.0000005)  # within 1e-6 relative of a bound
+    assert not rng(0.0, 1.0).accepts(1.00001)
+    assert rng(1.0, 0.0).accepts(0.5)  # bounds in either order
+    assert rng(0.0, 1.0, 0.25).accepts(0.75)
+    assert not rng(0.0, 1.0, 0.25).accepts(0.8)
+    assert not rng(0.0, 1.0).accepts(math.nan)
+    assert rng(0, 10, 3, integer=True).accepts(10)  # a bound is always fine
+    assert not rng(0, 10, 3, integer=True).accepts(5)
+    assert rng(0, 10, 3, integer=True).accepts(6)
+
+
+def test_generate_parameter_library_validators() -> None:
+    def broken(name: str, args: str, value: str) -> str | None:
+        node = Y.parse(f"v: {value}\na: {args}\n")
+        assert isinstance(node, Y.Mapping)
+        typed = P.ros2_value(node.get("v"), [100])
+        assert typed is not None
+        return P.gpl_violation(name, node.get("a"), typed, [100])
+
+    assert broken("bounds", "[0, 1]", "1.5") == "bounds<> [0, 1]"
+    assert broken("bounds", "[0, 1]", "1") is None
+    assert broken("gt", "[0]", "0") == "gt<> [0]"
+    assert broken("lt_eq", "2.0", "2.0") is None  # one argument without brackets
+    assert broken("one_of", '[["a", "b"]]', "c") == 'one_of<> ["a", "b"]'
+    assert broken("size_gt", "[1]", "[a]") == "size_gt<> [1]"
+    assert broken("element_bounds", "[0, 1]", "[0.5, 2.0]") == "element_bounds<> [0, 1]"
+    assert broken("subset_of", "[[1, 2]]", "[1, 3]") == "subset_of<> [1, 2]"
+    assert broken("custom::check", "null", "3") is None
+
+
+# -- nothing crashes --------------------------------------------------------------
+
+DRIVER = PACKAGES / "ros2_driver" / "ros2_driver" / "driver.py"
+SCALARS = st.one_of(
+    st.none(),
+    st.booleans(),
+    st.integers(min_value=-(2**70), max_value=2**70),
+    st.floats(),
+    st.text(max_size=8),
+)
+TREES = st.recursive(
+    SCALARS,
+    lambda inner: st.one_of(
+        st.lists(inner, max_size=4),
+        st.dictionaries(
+            st.sampled_from(
+                ["driver", "/**", "ros__parameters", "max_speed", "limits", "type"]
+            )
+            | st.text(max_size=5),
+            inner,
+            max_size=4,
+        ),
+    ),
+    max_leaves=25,
+)
+
+
+@settings(max_examples=40, deadline=None)
+@given(TREES)
+def test_any_yaml_tree_is_checked_without_crashing(tree: object) -> None:
+    import tempfile
+
+    import yaml
+
+    text = yaml.safe_dump(tree)
+    with tempfile.TemporaryDirectory() as folder:
+        path = write(Path(folder) / "p.yaml", text)
+        for found in paramcheck.check_parameter_files([path], [], [DRIVER], [path]):
+            assert found.code in ("RF101", "RF401", "RF003")
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.text(max_size=60))
+def test_any_text_parses_or_is_a_yaml_problem(text: str) -> None:
+    found = Y.parse(text)
+    if not isinstance(found, Y.YamlProblem):
+        P.classify(found)
+
+
+ARGUMENTS = st.lists(
+    st.sampled_from(
+        [
+            "'a'",
+            "1",
+            "1.5",
+            "-2",
+            "None",
+            "x",
+            "[1, 2.0]",
+            "('b', 1.0, d)",
+            "[('c', 2)]",
+            "d",
+            "ParameterDescriptor(integer_range=[IntegerRange(to_value=3)])",
+            "ParameterDescriptor(floating_point_range=[FloatingPointRange("
+            "from_value=1.0, to_value=-1.0, step=0.3)])",
+            "name='b'",
+            "value=2.0",
+            "descriptor=d",
+            "*a",
+            "**k",
+            "Parameter.Type.DOUBLE",
+            "float('nan')",
+            "1e308 * 10",
+        ]
+    ),
+    max_size=4,
+)
+CALL_SITES = (
+    "self.declare_parameter({})",
+    "v: Annotated[float, '0 < _ <= 1'] = self.declare_parameter({}).value",
+    "w: Annotated[int, '_ > 0'] = self.get_parameter({}).value",
+    "u: Annotated[str, \"_ == 'a'\"] = rospy.get_param({})",
+    "self.declare_parameters({})",
+    "t = self.get_parameter({}).get_parameter_value().double_value",
+)
+
+
+@settings(max_examples=60, deadline=None)
+@given(ARGUMENTS, ARGUMENTS, st.sampled_from(CALL_SITES), st.sampled_from(CALL_SITES))
+def test_any_parameter_call_is_analysed_without_crashing(
+    first: list[str], second: list[str], site_a: str, site_b: str
+) -> None:
+    from robotfix.api import check_source
+
+    source = (
+        "from typing import Annotated\nimport rospy\nfrom rclpy.node import Node\n"
+        "d = ParameterDescriptor(floating_point_range=[FloatingPointRange("
+        "from_value=0.0, to_value=1.0)])\n"
+        "class N(Node):\n    def __init__(self, x, *a, **k):\n"
+        "        super().__init__('n')\n"
+        f"        {site_a.format(', '.join(first))}\n"
+        f"        {site_b.format(', '.join(second))}\n"
+    )
+    for found in check_source(source, "fuzz.py"):
+        assert found.code in ("RF101", "RF102", "RF301", "RF401", "RF001"), found
