@@ -155,6 +155,18 @@ def solver_unknown(
     )
 
 
+def solver_budget(path: str, span: Span, stmt: str, predicate: str) -> Diagnostic:
+    return Diagnostic(
+        rules.SOLVER_UNKNOWN,
+        path,
+        span,
+        f"could not decide whether `{stmt}` keeps `{predicate}`: the solver budget "
+        "of this file is used up, so this and every later refinement check in the "
+        "file is left undecided",
+        (Note("split the file, or simplify nonlinear refinements and expressions"),),
+    )
+
+
 def unit_mismatch(
     path: str,
     span: Span,

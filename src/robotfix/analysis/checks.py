@@ -90,6 +90,12 @@ class Checker:
             )
             return WARNED
         assert isinstance(verdict, Undecided)
+        if verdict.out_of_budget:  # one report: every later question is undecided
+            self.ctx.report(
+                messages.solver_budget(self.path, span, stmt, predicate),
+                once=("solver budget",),
+            )
+            return FAILED
         self.ctx.report(
             messages.solver_unknown(self.path, span, stmt, predicate, verdict.reason)
         )
