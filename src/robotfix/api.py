@@ -241,8 +241,29 @@ def catalog_problems(catalog: MsgCatalog) -> list[Diagnostic]:
     catalog.load()
     return [
         messages.annotation_problem(p.path, p.line, p.col, p.rule, p.message)
-        for p in catalog.problems
-    ]
+        for p in catalog.problems + catalog.self_containing()
+    ] + _contradictions(catalog)
+
+
+def _contradictions(catalog: MsgCatalog) -> list[Diagnostic]:
+    """RF509: interface-file refinements that no message satisfies (the analysis of
+    each file leaves the same ones out)."""
+    import itertools
+
+    from robotfix.analysis.consistency import consistent_invariants
+
+    found = []
+    discharge = Discharger()
+    idents = itertools.count(-1, -1)
+    for spec in catalog.refined_specs():
+        for bad in consistent_invariants(discharge, catalog, spec, idents)[1]:
+            earlier = (bad.earlier.path, bad.earlier.line) if bad.earlier else None
+            found.append(
+                messages.contradictory_invariant(
+                    bad.origin.path, bad.origin.line, spec.name, bad.text, earlier
+                )
+            )
+    return found
 
 
 def finish(diagnostics: list[Diagnostic]) -> list[Diagnostic]:

@@ -74,6 +74,44 @@ def annotation_problem(
     return Diagnostic(rule, path, Span.point(line, col), detail)
 
 
+def contradictory_refinement(
+    path: str, line: int, col: int, predicate: str, subject: str
+) -> Diagnostic:
+    return Diagnostic(
+        rules.CONTRADICTORY_REFINEMENT,
+        path,
+        Span.point(line, col),
+        f"no value satisfies `{predicate}`: the refinement of {subject} contradicts "
+        "itself, and is ignored",
+        (Note("fix the bounds (a typo such as `>` for `<`?)"),),
+    )
+
+
+def contradictory_invariant(
+    path: str,
+    line: int,
+    msg_type: str,
+    predicate: str,
+    earlier: tuple[str, int] | None,
+) -> Diagnostic:
+    if earlier is None:
+        detail = f"no {msg_type} satisfies `{predicate}`: it contradicts itself"
+        notes: tuple[Note, ...] = ()
+    else:
+        detail = (
+            f"no {msg_type} satisfies `{predicate}` together with the refinements "
+            "declared before it"
+        )
+        notes = (Note(f"refinement of {msg_type} declared here", *earlier),)
+    return Diagnostic(
+        rules.CONTRADICTORY_REFINEMENT,
+        path,
+        Span.point(line),
+        f"{detail}; it is ignored",
+        (*notes, Note("fix the bounds (a typo such as `>` for `<`?)")),
+    )
+
+
 def unknown_message_class(path: str, span: Span, qualified: str) -> Diagnostic:
     package = qualified.split(".")[0]
     return Diagnostic(

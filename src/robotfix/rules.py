@@ -69,6 +69,9 @@ UNKNOWN_MESSAGE_CLASS = Rule(
     "Code uses a message type whose definition was not found",
     Severity.NOTE,
 )
+CONTRADICTORY_REFINEMENT = Rule(
+    "RF509", "contradictory-refinement", "Refinement that no value can satisfy"
+)
 
 SOLVER_UNKNOWN = Rule("RF901", "solver-unknown", "Solver could not decide", W)
 ANALYSIS_BUDGET = Rule(
@@ -97,6 +100,7 @@ ALL_RULES: dict[str, Rule] = {
         MALFORMED_INTERFACE,
         MISPLACED_UNIT,
         UNKNOWN_MESSAGE_CLASS,
+        CONTRADICTORY_REFINEMENT,
         SOLVER_UNKNOWN,
         ANALYSIS_BUDGET,
     )
