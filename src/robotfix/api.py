@@ -8,6 +8,7 @@ diagnostics are filtered by suppressions, sorted and de-duplicated.
 from __future__ import annotations
 
 import ast
+import itertools
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -248,8 +249,6 @@ def catalog_problems(catalog: MsgCatalog) -> list[Diagnostic]:
 def _contradictions(catalog: MsgCatalog) -> list[Diagnostic]:
     """RF509: interface-file refinements that no message satisfies (the analysis of
     each file leaves the same ones out)."""
-    import itertools
-
     from robotfix.analysis.consistency import consistent_invariants
 
     found = []

@@ -103,13 +103,15 @@ class Session:
     def _ask(self, assumption: Any) -> Any:
         """One question, within what is left of the file's budget."""
         self._limit = min(self._rlimit, self._budget - self._used)
+        if self._limit <= 0:  # never ask with rlimit 0: to z3 that means no limit
+            return z3.unknown
         self._solver.set("rlimit", self._limit)
         result = self._solver.check(assumption)
         self._used = max(self._used, _work_done(self._solver))
         return result
 
     def _undecided(self) -> Undecided:
-        if self._limit < self._rlimit or self.exhausted:
+        if self._limit <= 0 or self.exhausted:  # stopped by the file's budget
             return _out_of_budget()
         return Undecided(self._solver.reason_unknown())
 
