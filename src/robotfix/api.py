@@ -8,6 +8,7 @@ diagnostics are filtered by suppressions, sorted and de-duplicated.
 from __future__ import annotations
 
 import ast
+import itertools
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -248,31 +249,49 @@ def _unused_suppressions(
 
 
 def catalog_problems(catalog: MsgCatalog) -> list[Diagnostic]:
+    """Every problem of the user's interface files, at its rule's severity: what
+    does not read, a type that contains itself, contradictory refinements (RF509)."""
     catalog.load()
     return [
         messages.annotation_problem(p.path, p.line, p.col, p.rule, p.message, p.notes)
-        for p in catalog.problems
-    ]
+        for p in catalog.problems + catalog.self_containing()
+    ] + _contradictions(catalog)
 
 
 def interface_problems(catalog: MsgCatalog, used: set[str]) -> list[Diagnostic]:
-    """The problems of the user's interface files: with their rule's severity when
-    a checked file used (looked up) a type that file defines, else as notes, so an
-    interface file the checked code never uses cannot fail the run; a field of a
-    package that is nowhere to be found is a warning (`messages.interface_problem`)."""
-    catalog.load()
+    """The problems of the user's interface files, as a run reports them: with
+    their rule's severity when a checked file used (looked up) a type that file
+    defines, else as notes, so an interface file the checked code never uses cannot
+    fail the run; a field of a package that is nowhere to be found is a warning
+    (`messages.interface_problem`)."""
+    absent = {(p.path, p.line, p.col): p.absent_package for p in catalog.problems}
     return [
         messages.interface_problem(
-            p.path,
-            p.line,
-            p.col,
-            p.rule,
-            p.message,
-            used=bool(used.intersection(catalog.types_in(p.path))),
-            absent_package=p.absent_package,
+            found,
+            used=bool(used.intersection(catalog.types_in(found.path))),
+            absent_package=absent.get((found.path, found.span.line, found.span.col)),
         )
-        for p in catalog.problems
+        for found in catalog_problems(catalog)
     ]
+
+
+def _contradictions(catalog: MsgCatalog) -> list[Diagnostic]:
+    """RF509: interface-file refinements that no message satisfies (the analysis of
+    each file leaves the same ones out)."""
+    from robotfix.analysis.consistency import consistent_invariants
+
+    found = []
+    discharge = Discharger()
+    idents = itertools.count(-1, -1)
+    for spec in catalog.refined_specs():
+        for bad in consistent_invariants(discharge, catalog, spec, idents)[1]:
+            earlier = (bad.earlier.path, bad.earlier.line) if bad.earlier else None
+            found.append(
+                messages.contradictory_invariant(
+                    bad.origin.path, bad.origin.line, spec.name, bad.text, earlier
+                )
+            )
+    return found
 
 
 def finish(diagnostics: list[Diagnostic]) -> list[Diagnostic]:

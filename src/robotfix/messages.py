@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 import sys
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from robotfix import rules
 from robotfix.annotations.units import Unit
@@ -179,20 +179,14 @@ def unprocessable_interface(
 
 
 def interface_problem(
-    path: str,
-    line: int,
-    col: int,
-    rule: Rule,
-    detail: str,
-    used: bool,
-    absent_package: str | None = None,
+    found: Diagnostic, used: bool, absent_package: str | None = None
 ) -> Diagnostic:
     """A problem of one of the user's interface files. When a checked file uses a
     type of that file: the rule's severity, but a warning when a field names a
     package of which no type is known (the field is not checked, not wrong). When
     none does: a note, which never changes the exit status."""
-    notes = []
-    level = None
+    notes = list(found.notes)
+    level = found.level
     if absent_package is not None:
         level = Severity.WARNING
         notes.append(
@@ -209,7 +203,45 @@ def interface_problem(
                 "fail the run"
             )
         )
-    return Diagnostic(rule, path, Span.point(line, col), detail, tuple(notes), level)
+    return replace(found, notes=tuple(notes), level=level)
+
+
+def contradictory_refinement(
+    path: str, line: int, col: int, predicate: str, subject: str
+) -> Diagnostic:
+    return Diagnostic(
+        rules.CONTRADICTORY_REFINEMENT,
+        path,
+        Span.point(line, col),
+        f"no value satisfies `{predicate}`: the refinement of {subject} contradicts "
+        "itself, and is ignored",
+        (Note("fix the bounds (a typo such as `>` for `<`?)"),),
+    )
+
+
+def contradictory_invariant(
+    path: str,
+    line: int,
+    msg_type: str,
+    predicate: str,
+    earlier: tuple[str, int] | None,
+) -> Diagnostic:
+    if earlier is None:
+        detail = f"no {msg_type} satisfies `{predicate}`: it contradicts itself"
+        notes: tuple[Note, ...] = ()
+    else:
+        detail = (
+            f"no {msg_type} satisfies `{predicate}` together with the refinements "
+            "declared before it"
+        )
+        notes = (Note(f"refinement of {msg_type} declared here", *earlier),)
+    return Diagnostic(
+        rules.CONTRADICTORY_REFINEMENT,
+        path,
+        Span.point(line),
+        f"{detail}; it is ignored",
+        (*notes, Note("fix the bounds (a typo such as `>` for `<`?)")),
+    )
 
 
 def unknown_message_class(path: str, span: Span, qualified: str) -> Diagnostic:
@@ -291,6 +323,18 @@ def solver_unknown(
         path,
         span,
         f"could not decide whether `{stmt}` keeps `{predicate}` (solver: {reason})",
+    )
+
+
+def solver_budget(path: str, span: Span, stmt: str, predicate: str) -> Diagnostic:
+    return Diagnostic(
+        rules.SOLVER_UNKNOWN,
+        path,
+        span,
+        f"could not decide whether `{stmt}` keeps `{predicate}`: the solver budget "
+        "of this file is used up, so this and every later refinement check in the "
+        "file is left undecided",
+        (Note("split the file, or simplify nonlinear refinements and expressions"),),
     )
 
 

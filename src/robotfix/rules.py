@@ -91,6 +91,9 @@ UNKNOWN_MESSAGE_CLASS = Rule(
     "Code uses a message type whose definition was not found",
     Severity.NOTE,
 )
+CONTRADICTORY_REFINEMENT = Rule(
+    "RF509", "contradictory-refinement", "Refinement that no value can satisfy"
+)
 
 UNUSED_METADATA = Rule(
     "RF511",
@@ -129,6 +132,7 @@ ALL_RULES: dict[str, Rule] = {
         MALFORMED_INTERFACE,
         MISPLACED_UNIT,
         UNKNOWN_MESSAGE_CLASS,
+        CONTRADICTORY_REFINEMENT,
         UNUSED_METADATA,
         DUPLICATE_INTERFACE,
         SOLVER_UNKNOWN,

@@ -81,7 +81,8 @@ class SourceFile:
         except (SyntaxError, ValueError) as err:
             source.problem = _syntax_problem(path, text, err)
             return source
-        except RecursionError:
+        except (RecursionError, MemoryError):
+            # CPython 3.11 reports "parser stack overflow" as a MemoryError
             source.problem = messages.syntax_error(
                 path,
                 Span.point(1),

@@ -7,7 +7,7 @@ refinement held, so one bug gives one diagnostic, not a cascade.
 from __future__ import annotations
 
 import ast
-from dataclasses import replace
+from dataclasses import dataclass, field, replace
 
 from robotfix import messages
 from robotfix.analysis import heap, parameters
@@ -23,6 +23,9 @@ from robotfix.messages import Declared
 from robotfix.ros.catalog import FieldUnit, Invariant, MsgSpec
 
 PROVED, WARNED, FAILED = "proved", "warned", "failed"
+# Sub-messages one check may create before it checks only one of each type: the
+# unset sub-messages of one type all hold the same defaults.
+EXPANSION_LIMIT = 16
 KIND_NAMES = {
     "int": "int",
     "float": "float",
@@ -93,6 +96,12 @@ class Checker:
             )
             return WARNED
         assert isinstance(verdict, Undecided)
+        if verdict.out_of_budget:  # one report: every later question is undecided
+            self.ctx.report(
+                messages.solver_budget(self.path, span, stmt, predicate),
+                once=("solver budget",),
+            )
+            return FAILED
         self.ctx.report(
             messages.solver_unknown(self.path, span, stmt, predicate, verdict.reason)
         )
@@ -273,6 +282,7 @@ class Checker:
         site: ast.AST,
         target: str,
     ) -> None:
+        heap.settle(self.ctx, state, ref)
         obj = state.heap[ref]
         spec = heap.field_spec(self.ctx, state, ref, name)
         if spec is None:
@@ -287,7 +297,8 @@ class Checker:
             return
         if spec.kind == "msg":
             if value.ref is not None and value.ref in state.heap:
-                state.heap[value.ref].owner = (ref, name)
+                if not heap.owns(state, ref, value.ref):  # `m.a = m`: no owner loop
+                    state.heap[value.ref].owner = (ref, name)
                 obj.fields[name] = value
                 self.check_whole(state, value.ref, site, publishing=False, single=True)
             else:
@@ -347,6 +358,7 @@ class Checker:
     def read_field(
         self, state: State, ref: int, name: str, site: ast.AST, target: str
     ) -> Value:
+        heap.settle(self.ctx, state, ref)
         value = heap.read_raw(self.ctx, state, ref, name, target)
         if value.default_of is None:
             return value
@@ -406,22 +418,50 @@ class Checker:
         """A message leaves the node (or is stored into another): every field whose
         refinement its ROS default breaks must be set, and invariants over several
         fields must hold. Single-field invariants of set fields held when set."""
+        label = prefix or self._name_of(site)
+        self._check_tree(state, ref, site, publishing, single, label, _Walk(), ())
+
+    def _check_tree(
+        self,
+        state: State,
+        ref: int,
+        site: ast.AST,
+        publishing: bool,
+        single: bool,
+        label: str,
+        walk: _Walk,
+        enclosing: tuple[str, ...],
+    ) -> None:
         obj = state.heap.get(ref)
         spec = self.ctx.catalog.lookup(obj.type) if obj else None
-        if obj is None or spec is None:
+        # a received message the code never touched holds all its invariants
+        if obj is None or spec is None or obj.pending or ref in walk.seen:
             return
-        label = prefix or self._name_of(site)
-        for inv in spec.invariants:
+        walk.seen.add(ref)
+        for inv in self.ctx.invariants(spec):
             self._check_invariant(
                 state, ref, spec, inv, site, label, publishing, single
             )
+        enclosing = (*enclosing, spec.name)
         for fname, fs in spec.fields.items():
-            if fs.kind == "msg" and not fs.array:
-                sub = heap.read_raw(self.ctx, state, ref, fname, f"{label}.{fname}")
-                if sub.ref is not None:
-                    self.check_whole(
-                        state, sub.ref, site, publishing, single, f"{label}.{fname}"
-                    )
+            if fs.kind != "msg" or fs.array or fs.msg_type is None:
+                continue
+            if fname not in obj.fields and not walk.expand(
+                obj.origin, fs.msg_type, enclosing
+            ):
+                continue
+            sub = heap.read_raw(self.ctx, state, ref, fname, f"{label}.{fname}")
+            if sub.ref is not None:
+                self._check_tree(
+                    state,
+                    sub.ref,
+                    site,
+                    publishing,
+                    single,
+                    f"{label}.{fname}",
+                    walk,
+                    enclosing,
+                )
 
     def _check_invariant(
         self,
@@ -435,7 +475,7 @@ class Checker:
         single: bool,
     ) -> None:
         values = {
-            p: heap.resolve_path(self.ctx, state, ref, p, label)
+            p: heap.resolve_path(self.ctx, state, ref, p, label, settled=True)
             for p in sorted(inv.paths)
         }
         if any(v.term is None for v in values.values()):
@@ -480,3 +520,25 @@ class Checker:
         ):
             return self.ctx.source.segment(site.value.args[0]) or "the message"
         return "the message"
+
+
+@dataclass
+class _Walk:
+    """What one `check_whole` visited, so that a message that holds itself or a
+    fan-out of sub-messages costs a bounded amount."""
+
+    seen: set[int] = field(default_factory=set)  # messages checked
+    created: int = 0
+    types: set[tuple[str, str]] = field(default_factory=set)
+
+    def expand(self, origin: str, msg_type: str, enclosing: tuple[str, ...]) -> bool:
+        """Whether to create, and check, a sub-message the code never read. A
+        received one holds its invariants; one of a type that encloses it (a type
+        that contains itself, invalid in ROS) would never end."""
+        if origin == "received" or msg_type in enclosing:
+            return False
+        self.created += 1
+        if self.created > EXPANSION_LIMIT and (msg_type, origin) in self.types:
+            return False
+        self.types.add((msg_type, origin))
+        return True

@@ -7,11 +7,13 @@ from __future__ import annotations
 
 import ast
 import builtins
+import itertools
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
 from robotfix import messages, rules
+from robotfix.analysis.consistency import consistent_invariants, contradictory
 from robotfix.analysis.constants import ConstantNames
 from robotfix.analysis.index import FileIndex, index_scope
 from robotfix.analysis.values import Value, sort_of
@@ -19,7 +21,7 @@ from robotfix.analysis.vc import VC, Verdict
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Alias, Names, Refinement, extract
 from robotfix.diagnostics import Diagnostic, Span
-from robotfix.ros.catalog import MsgCatalog
+from robotfix.ros.catalog import Invariant, MsgCatalog, MsgSpec
 from robotfix.source import SourceFile
 
 if TYPE_CHECKING:
@@ -84,6 +86,9 @@ class FileContext:
         self._metadata_notes: list[Diagnostic] = []
         self.uses_refinements = False  # some annotation of the file is a refinement
         self.parameters: ParamContext | None = None  # at the first parameter call
+        # symbols of satisfiability questions: never those of `fresh`
+        self._question_ids = itertools.count(-1, -1)
+        self._invariants: dict[str, list[Invariant]] = {}
         # (span, markdown) for names and fields, kept only for editor hovers
         self.hovers: list[tuple[Span, str]] | None = None
         # (scope node id, variable) -> (units it flows into, target base kinds), for
@@ -231,6 +236,19 @@ class FileContext:
                 ),
                 once=("annotation", problem.line, problem.col, problem.message),
             )
+        if found is not None and self._contradictory(found):
+            text = _text_node(annotation)
+            self.report(
+                messages.contradictory_refinement(
+                    self.source.path,
+                    text.lineno,
+                    self.source.char_col(text.lineno, text.col_offset),
+                    A.show(A.substitute(found.predicate, {"_": A.Name(self_name)})),
+                    f"`{self_name}`",
+                ),
+                once=("contradictory", text.lineno, text.col_offset),
+            )
+            found = replace(found, predicate=A.TRUE)  # as if it had none
         return found
 
     def alias_of(self, node: ast.expr) -> Alias | None:
@@ -264,6 +282,24 @@ class FileContext:
                 self.report(diag, once=("metadata", diag.span.line, diag.span.col))
         self._metadata_notes.clear()
 
+    def _contradictory(self, found: Refinement) -> bool:
+        own = sort_of(found.base)
+        return contradictory(
+            self.discharge,
+            found.predicate,
+            lambda name: own if name == "_" else "real",
+            self._question_ids,
+        )
+
+    def invariants(self, spec: MsgSpec) -> list[Invariant]:
+        """The invariants of a message type that can hold together (the others are
+        RF509, reported once on the interface file)."""
+        if spec.name not in self._invariants:
+            self._invariants[spec.name] = consistent_invariants(
+                self.discharge, self.catalog, spec, self._question_ids
+            )[0]
+        return self._invariants[spec.name]
+
 
 def build_scope(
     ctx: FileContext, kind: str, name: str, node: ast.AST, parent: Scope | None
@@ -283,6 +319,16 @@ def build_scope(
             if found is not None:
                 scope.decls[target] = found
     return scope
+
+
+def _text_node(annotation: ast.expr) -> ast.expr:
+    """The refinement string in `Annotated[T, "..."]` (the annotation if none)."""
+    if isinstance(annotation, ast.Subscript):
+        args = annotation.slice
+        for arg in args.elts[1:] if isinstance(args, ast.Tuple) else []:
+            if isinstance(arg, ast.Constant) and isinstance(arg.value, str):
+                return arg
+    return annotation
 
 
 def _in_scope(ctx: FileContext, scope: Scope, name: str) -> bool:

@@ -39,6 +39,9 @@ COMPARE = {
     ast.GtE: ">=",
 }
 _DECIMAL = re.compile(r"[0-9_]*\.?[0-9_]*([eE][+-]?[0-9_]+)?")
+# A literal this large (or this finely divided) is an unknown number of its kind:
+# folded with others it would overflow floats, z3's input and the texts shown.
+MAX_NUMBER: int = 10**100
 KIND_ORDER = ("bool", "int", "float")
 
 
@@ -103,10 +106,14 @@ class ExpressionEvaluator:
         value = node.value
         if isinstance(value, bool):
             return Value("bool", A.Bool(value))
-        if isinstance(value, int):
-            return Value("int", A.Num(Fraction(value), True), literal=True)
-        if isinstance(value, float) and math.isfinite(value):
-            return Value("float", A.Num(self._exact(node, value), False), literal=True)
+        if isinstance(value, int) or (
+            isinstance(value, float) and math.isfinite(value)
+        ):
+            kind = "int" if isinstance(value, int) else "float"
+            exact = Fraction(value) if kind == "int" else self._exact(node, value)
+            if _too_large(exact):
+                return replace(self.unknown(node, kind), literal=True)
+            return Value(kind, A.Num(exact, kind == "int"), literal=True)
         if isinstance(value, str):
             return Value("str", A.Str(value))
         if value is None:
@@ -116,7 +123,9 @@ class ExpressionEvaluator:
     def _exact(self, node: ast.Constant, value: float) -> Fraction:
         """Reals are exact: `3.141592653589793238` is read from the source text."""
         text = self.ctx.source.segment(node) or ""
-        if text and _DECIMAL.fullmatch(text):
+        match = _DECIMAL.fullmatch(text) if text else None
+        # the exponent bounded: Fraction("1e-999999999") computes 10**999999999
+        if match and len(match.group(1) or "") < 6:
             try:
                 return Fraction(text.replace("_", ""))
             except (ValueError, ZeroDivisionError):
@@ -675,18 +684,28 @@ def _literal(term: A.Expr | None) -> Fraction | str | None:
     return None
 
 
+def _too_large(value: Fraction) -> bool:
+    return abs(value.numerator) >= MAX_NUMBER or value.denominator >= MAX_NUMBER
+
+
 def constant_value(term: A.Expr | None) -> float | None:
-    """The value of a term built from number literals only (None beyond floats)."""
+    """The value of a term built from number literals only, if a float holds it
+    (None beyond floats: math.inf, or a literal near it)."""
+    try:
+        found = _constant_value(term)
+    except OverflowError:
+        return None
+    return found if found is None or math.isfinite(found) else None
+
+
+def _constant_value(term: A.Expr | None) -> float | None:
     if isinstance(term, A.Num):
-        try:
-            return float(term.value)
-        except OverflowError:  # math.inf, or near it
-            return None
+        return float(term.value)
     if isinstance(term, A.Unary) and term.op == "-":
-        inner = constant_value(term.operand)
+        inner = _constant_value(term.operand)
         return None if inner is None else -inner
     if isinstance(term, A.Binary) and term.op in "+-*/":
-        left, right = constant_value(term.left), constant_value(term.right)
+        left, right = _constant_value(term.left), _constant_value(term.right)
         if left is None or right is None or (term.op == "/" and right == 0):
             return None
         return {"+": left + right, "-": left - right, "*": left * right}.get(

@@ -37,16 +37,32 @@ def new_message(
     origin: str,
     owner: tuple[int, str] | None = None,
     label: str = "the message",
-    assume: bool = True,
 ) -> Value:
     """A message; `label` names it in counterexamples (`request` in `request.a`).
-    A received one satisfies its invariants (`assume=False` for a sub-message, whose
-    invariants the enclosing message's assumption already covers)."""
+    A received one satisfies its invariants: they are assumed when the code first
+    reads or writes one of its fields (`settle`), and its sub-messages exist only
+    once read, so a type with a fan-out of sub-messages costs what the code reads."""
     ref = ctx.fresh_id()
-    state.heap[ref] = MsgObj(msg_type, origin, owner=owner)
-    if origin == "received" and assume:
-        assume_invariants(ctx, state, ref, label)
+    state.heap[ref] = MsgObj(
+        msg_type, origin, owner=owner, pending=origin == "received", label=label
+    )
     return Value("msg", ref=ref, name=msg_type)
+
+
+def settle(ctx: FileContext, state: State, ref: int) -> None:
+    """Assume the invariants of a received message's type, once, before the code
+    touches its fields (the values they constrain are then still those received)."""
+    obj = state.heap.get(ref)
+    if obj is None or not obj.pending:
+        return
+    obj.pending = False
+    spec = ctx.catalog.lookup(obj.type)
+    if obj.origin != "received" or spec is None:
+        return
+    for inv in ctx.invariants(spec):
+        terms = {p: resolve_path(ctx, state, ref, p, obj.label).term for p in inv.paths}
+        if all(t is not None for t in terms.values()):
+            state.assume(A.substitute(inv.predicate, terms))  # type: ignore[arg-type]
 
 
 def contexts(
@@ -57,7 +73,9 @@ def contexts(
     out: list[tuple[MsgSpec, str]] = []
     path = name
     current: int | None = ref
-    while current is not None and current in state.heap:
+    seen: set[int] = set()
+    while current is not None and current in state.heap and current not in seen:
+        seen.add(current)
         obj = state.heap[current]
         spec = ctx.catalog.lookup(obj.type)
         if spec is not None:
@@ -67,6 +85,19 @@ def contexts(
         current, path = obj.owner[0], f"{obj.owner[1]}.{path}"
     out.reverse()
     return out
+
+
+def owns(state: State, ref: int, inner: int) -> bool:
+    """Whether message `inner` is `ref` or encloses it."""
+    current: int | None = ref
+    seen: set[int] = set()
+    while current is not None and current in state.heap and current not in seen:
+        if current == inner:
+            return True
+        seen.add(current)
+        owner = state.heap[current].owner
+        current = owner[0] if owner is not None else None
+    return False
 
 
 def field_spec(ctx: FileContext, state: State, ref: int, name: str) -> FieldSpec | None:
@@ -100,7 +131,7 @@ def invariants_on(
     """Invariants that mention only field `name` (and what lies below it)."""
     found = []
     for spec, path in contexts(ctx, state, ref, name):
-        for inv in spec.invariants:
+        for inv in ctx.invariants(spec):
             if all(p == path or p.startswith(path + ".") for p in inv.paths):
                 found.append((spec, path, inv))
     return found
@@ -119,7 +150,7 @@ def read_raw(
         return Value("unknown")
     if spec.kind == "msg" and not spec.array and spec.msg_type:
         sub = new_message(
-            ctx, state, spec.msg_type, obj.origin, owner=(ref, name), assume=False
+            ctx, state, spec.msg_type, obj.origin, (ref, name), f"{obj.label}.{name}"
         )
         obj.fields[name] = sub
         return sub
@@ -145,47 +176,39 @@ def default_of(ctx: FileContext, spec: FieldSpec) -> A.Expr:
     return DEFAULTS[spec.kind]
 
 
-def assume_invariants(
-    ctx: FileContext, state: State, ref: int, prefix: str = "m"
-) -> None:
-    """A received message satisfies every invariant of its type and its sub-messages."""
-    obj = state.heap[ref]
-    spec = ctx.catalog.lookup(obj.type)
-    if spec is None:
-        return
-    for inv in spec.invariants:
-        terms = {p: resolve_path(ctx, state, ref, p, prefix).term for p in inv.paths}
-        if all(t is not None for t in terms.values()):
-            state.assume(A.substitute(inv.predicate, terms))  # type: ignore[arg-type]
-    for fname, fs in spec.fields.items():
-        if fs.kind == "msg" and not fs.array:
-            sub = read_raw(ctx, state, ref, fname, f"{prefix}.{fname}")
-            if sub.ref is not None:
-                assume_invariants(ctx, state, sub.ref, f"{prefix}.{fname}")
-
-
 def resolve_path(
-    ctx: FileContext, state: State, ref: int, path: str, prefix: str
+    ctx: FileContext,
+    state: State,
+    ref: int,
+    path: str,
+    prefix: str,
+    settled: bool = False,
 ) -> Value:
-    """Follow a dotted field path from message `ref`, reading raw values."""
+    """Follow a dotted field path from message `ref`, reading raw values; with
+    `settled`, as the code would (each message's invariants assumed first)."""
     parts = path.split(".")
     value = Value("msg", ref=ref)
     for index, part in enumerate(parts):
         if value.ref is None or value.ref not in state.heap:
             return Value("unknown")
+        if settled:
+            settle(ctx, state, value.ref)
         value = read_raw(
             ctx, state, value.ref, part, f"{prefix}.{'.'.join(parts[: index + 1])}"
         )
     return value
 
 
-def havoc(state: State, ref: int) -> None:
+def havoc(state: State, ref: int, seen: set[int] | None = None) -> None:
     """Unknown code may have changed any field of this message and its sub-messages."""
     obj = state.heap.get(ref)
-    if obj is None:
+    seen = set() if seen is None else seen
+    if obj is None or ref in seen:
         return
+    seen.add(ref)
     for value in obj.fields.values():
-        if value.ref is not None and value.ref != ref:
-            havoc(state, value.ref)
+        if value.ref is not None:
+            havoc(state, value.ref, seen)
     obj.origin = "unknown"
+    obj.pending = False
     obj.fields = {k: v for k, v in obj.fields.items() if v.ref is not None}

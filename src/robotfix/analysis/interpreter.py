@@ -706,7 +706,16 @@ class Interpreter(CallEvaluator):
         else_state.assume(A.Unary("not", cond))
         then_state = self.exec_block(node.body, then_state)
         else_state = self.exec_block(node.orelse, else_state)
-        return join(then_state, else_state, self._merged)
+        return self._join(then_state, else_state)
+
+    def _join(self, a: State, b: State) -> State:
+        """`join`, after a received message read on one path only has had its
+        invariants assumed on the other one too (its values are the same)."""
+        if a.reachable and b.reachable:
+            for ref in sorted(a.heap.keys() & b.heap.keys()):
+                if a.heap[ref].pending != b.heap[ref].pending:
+                    heap.settle(self.ctx, a if a.heap[ref].pending else b, ref)
+        return join(a, b, self._merged)
 
     def _merged(self, x: Value, y: Value) -> Value:
         kinds = {x.kind, y.kind}
@@ -771,9 +780,7 @@ class Interpreter(CallEvaluator):
                 self.eval(handler.type, handler_state)
             if handler.name:
                 handler_state.env[handler.name] = self.unknown(handler)
-            result = join(
-                result, self.exec_block(handler.body, handler_state), self._merged
-            )
+            result = self._join(result, self.exec_block(handler.body, handler_state))
         if node.finalbody:
             if not result.reachable:
                 self.havoc(entry, node.handlers)  # type: ignore[arg-type]

@@ -82,6 +82,9 @@ def join(a: State, b: State, fresh: Callable[[Value, Value], Value]) -> State:
             origin,
             owner=x_obj.owner,
             reported=x_obj.reported | y_obj.reported,
+            # settled on one path: its facts hold there only, and stay there
+            pending=x_obj.pending and y_obj.pending,
+            label=x_obj.label,
         )
         for fname in sorted(x_obj.fields.keys() | y_obj.fields.keys()):
             fx, fy = x_obj.fields.get(fname), y_obj.fields.get(fname)

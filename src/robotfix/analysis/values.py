@@ -86,8 +86,18 @@ class MsgObj:
     fields: dict[str, Value] = field(default_factory=dict)
     owner: tuple[int, str] | None = None  # (parent ref, field name)
     reported: set[str] = field(default_factory=set)  # unset fields already reported
+    # received, and its type's invariants not assumed yet: they are, when the code
+    # first reads or writes one of its fields (`heap.settle`)
+    pending: bool = False
+    label: str = ""  # how counterexamples name it: `msg`, `msg.linear`
 
     def copy(self) -> MsgObj:
         return MsgObj(
-            self.type, self.origin, dict(self.fields), self.owner, set(self.reported)
+            self.type,
+            self.origin,
+            dict(self.fields),
+            self.owner,
+            set(self.reported),
+            self.pending,
+            self.label,
         )

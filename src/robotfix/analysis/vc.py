@@ -42,6 +42,7 @@ class Unproven:
 @dataclass(frozen=True)
 class Undecided:
     reason: str
+    out_of_budget: bool = False  # the file's solver budget was used up
 
 
 Verdict = Proved | Violated | Unproven | Undecided

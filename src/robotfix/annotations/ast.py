@@ -282,7 +282,11 @@ def _show_number(num: Num) -> str:
     if max(value.numerator.bit_length(), value.denominator.bit_length()) > _EXACT_BITS:
         return _scientific(value)
     if value.denominator == 1:
-        return str(value.numerator) if num.is_int else f"{value.numerator}.0"
+        if num.is_int:
+            return str(value.numerator)
+        if value.numerator.bit_length() > _SHOWN_FLOAT_BITS:  # `1e308`, not 309 digits
+            return _scientific(value)
+        return f"{value.numerator}.0"
     decimal = _exact_decimal(value)
     return decimal if decimal is not None else f"{float(value):g}"
 
@@ -307,6 +311,7 @@ def _exact_decimal(value: Fraction) -> str | None:
 
 
 _EXACT_BITS = 3000  # about 900 digits: shown exactly below, approximately above
+_SHOWN_FLOAT_BITS = 70  # a whole float beyond about 1e21 is shown as 1e+22, as Python
 
 
 def _scientific(value: Fraction) -> str:

@@ -157,6 +157,7 @@ class MsgSpec:
     units: dict[str, FieldUnit] = field(default_factory=dict)
     invariants: list[Invariant] = field(default_factory=list)
     constants: dict[str, tuple[str, Any]] = field(default_factory=dict)
+    declared_at: dict[str, Origin] = field(default_factory=dict)  # user files' fields
 
 
 @dataclass(frozen=True)
@@ -316,6 +317,54 @@ class MsgCatalog:
 
     def save(self) -> None:
         _std_cache(self._distro).save()
+
+    def refined_specs(self) -> list[MsgSpec]:
+        """The message types with invariants (all from interface files), by name."""
+        self.load()
+        return [spec for _, spec in sorted(self._specs.items()) if spec.invariants]
+
+    def self_containing(self) -> list[CatalogProblem]:
+        """Fields of interface files that make a type contain itself by value (not
+        through an array): ROS rejects such a type, its size would be infinite."""
+        self.load()
+        found = []
+        for name, spec in sorted(self._specs.items()):
+            for fname, origin in sorted(spec.declared_at.items()):
+                fs = spec.fields.get(fname)
+                if fs is None or fs.kind != "msg" or fs.array or fs.msg_type is None:
+                    continue
+                loop = self._path_to(fs.msg_type, name, set())
+                if loop is None:
+                    continue
+                chain = " -> ".join([name, *loop])
+                short = fs.msg_type.split("/")[-1]
+                found.append(
+                    CatalogProblem(
+                        rules.MALFORMED_INTERFACE,
+                        origin.path,
+                        origin.line,
+                        0,
+                        f"field `{fname}` makes {name} contain itself ({chain}): ROS "
+                        f"cannot build such a type; hold it in an array "
+                        f"(`{short}[] {fname}`)",
+                    )
+                )
+        return found
+
+    def _path_to(self, start: str, target: str, seen: set[str]) -> list[str] | None:
+        """The types from `start` to `target` through fields held by value."""
+        if start == target:
+            return [start]
+        if start in seen:
+            return None
+        seen.add(start)
+        spec = self.lookup(start)
+        for fs in spec.fields.values() if spec is not None else ():
+            if fs.kind == "msg" and not fs.array and fs.msg_type is not None:
+                rest = self._path_to(fs.msg_type, target, seen)
+                if rest is not None:
+                    return [start, *rest]
+        return None
 
     # -- loading -------------------------------------------------------------
     def load(self) -> None:
@@ -481,6 +530,7 @@ class MsgCatalog:
             elif decl.default is not None and fs.kind != "msg":
                 fs = replace(fs, default=decl.default)
             resolved[decl.name] = fs
+            spec.declared_at[decl.name] = Origin(file.path, decl.line)
         spec.fields = resolved
 
     def _field(

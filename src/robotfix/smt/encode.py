@@ -13,12 +13,25 @@ import z3
 
 from robotfix.annotations import ast as A
 
+# Digits beyond which a number is not handed to z3: z3 takes numbers as decimal
+# text, and Python refuses to write an int of more than 4,300 digits.
+MAX_DIGITS = 1_000
+_TOO_LONG: int = 10**MAX_DIGITS
+MAX_DEGREE = 3
+
 
 class Encoder:
-    def __init__(self, ctx: Any = None) -> None:
-        self.ctx = ctx  # the z3 context of the session (None: z3's main one)
+    def __init__(self, ctx: Any) -> None:
+        self.ctx = ctx  # the z3 context of the session
         self.syms: dict[int, Any] = {}
         self._fresh = 0
+        self._degrees: dict[int, int] = {}  # id(term) -> degree, for one question
+        self.approximated = False  # a term became a fresh constant
+
+    def start(self) -> None:
+        """A new question: forget the terms seen and whether any was approximated."""
+        self._degrees.clear()
+        self.approximated = False
 
     def sym(self, node: A.Sym) -> Any:
         if node.ident not in self.syms:
@@ -30,15 +43,14 @@ class Encoder:
         return self.syms[node.ident]
 
     def fresh(self, sort: str) -> Any:
+        self.approximated = True
         self._fresh += 1
         make = {"bool": z3.Bool, "real": z3.Real}[sort]
         return make(f"_f{self._fresh}", self.ctx)
 
     def encode(self, node: A.Expr) -> Any:
         if isinstance(node, A.Num):
-            if node.is_int and node.value.denominator == 1:
-                return z3.IntVal(node.value.numerator, self.ctx)
-            return z3.Q(node.value.numerator, node.value.denominator, self.ctx)
+            return self._number(node)
         if isinstance(node, A.Bool):
             return z3.BoolVal(node.value, self.ctx)
         if isinstance(node, A.Str):
@@ -64,6 +76,14 @@ class Encoder:
             return self._func(node)
         raise TypeError(f"cannot encode {node!r}")
 
+    def _number(self, node: A.Num) -> Any:
+        value = node.value
+        if _too_long(value.numerator) or _too_long(value.denominator):
+            return self.fresh("real")
+        if node.is_int and value.denominator == 1:
+            return z3.IntVal(value.numerator, self.ctx)
+        return z3.Q(value.numerator, value.denominator, self.ctx)
+
     def boolean(self, node: A.Expr) -> Any:
         value = self.encode(node)
         return value if z3.is_bool(value) else self.fresh("bool")
@@ -83,6 +103,8 @@ class Encoder:
                 return self.fresh("bool")
             left, right = self._same_sort(left, right)
             return left == right if op == "==" else left != right
+        if op in ("*", "/") and self._product_degree(node) > MAX_DEGREE:
+            return self.fresh("real")
         left, right = self.arith(node.left), self.arith(node.right)
         if op == "/":
             return (
@@ -101,6 +123,26 @@ class Encoder:
             ">=": lambda: left >= right,
         }[op]()
 
+    def _product_degree(self, node: A.Binary) -> int:
+        return self._degree(node.left) + self._degree(node.right)
+
+    def _degree(self, node: A.Expr) -> int:
+        """The polynomial degree of a term as encoded (a capped product counts 1)."""
+        found = self._degrees.get(id(node))
+        if found is not None:
+            return found
+        if isinstance(node, (A.Sym, A.Name)):
+            found = 1
+        elif isinstance(node, A.Binary) and node.op in ("*", "/"):
+            found = self._product_degree(node)
+            found = 1 if found > MAX_DEGREE else found
+        elif isinstance(node, A.Ite):
+            found = max(self._degree(node.then), self._degree(node.orelse))
+        else:
+            found = max((self._degree(c) for c in A.children(node)), default=0)
+        self._degrees[id(node)] = found
+        return found
+
     def _func(self, node: A.Func) -> Any:
         args = [self.arith(a) for a in node.args]
         if node.name == "abs":
@@ -118,6 +160,10 @@ class Encoder:
         if left.sort() != right.sort():
             return left, left  # incomparable branches: the Ite is as good as unknown
         return left, right
+
+
+def _too_long(number: int) -> bool:
+    return abs(number) >= _TOO_LONG
 
 
 def _is_int(value: Any) -> bool:

@@ -4,10 +4,15 @@ Two questions (SPEC §4 "Certainty"): can the goal fail under the facts (if not:
 Proved)? If it can, can it also hold? If not, it fails on every execution that
 reaches it along that path: Violated (an error). If it can: Unproven (a warning).
 `unknown` from z3 is Undecided, never a pass.
+
+Every session has a z3 context of its own, so the answers for a file never depend on
+what was checked before in the same process, and a budget of work for all its
+questions, so no file can keep the solver busy for long.
 """
 
 from __future__ import annotations
 
+import math
 from fractions import Fraction
 from typing import Any
 
@@ -18,9 +23,20 @@ from robotfix.annotations import ast as A
 from robotfix.annotations.numbers import shown_as_infinity
 from robotfix.smt.encode import Encoder
 
-# A work budget, not wall-clock time: the same input stops at the same point on any
-# machine. Linear problems of a node take a few thousand units; a million is ample.
+# Work budgets, not wall-clock time: the same input stops at the same point on any
+# machine. Linear problems of a node take a few thousand units. RLIMIT bounds one
+# question, FILE_RLIMIT all the questions of one file (a few seconds of z3 at most).
 RLIMIT = 2_000_000
+FILE_RLIMIT = 20_000_000
+# Two of z3's nonlinear heuristics hardly count their work: Groebner bases and Horner
+# schemes ran for minutes within a small rlimit. Without them (and with products of
+# high degree left out by the encoder) nonlinear questions stay bounded, and the ones
+# real code asks (v * t + v * v / (2 * a) < d) are still decided.
+SETTINGS = {
+    "random_seed": 0,
+    "smt.arith.nl.grobner": False,
+    "smt.arith.nl.horner": False,
+}
 
 
 def check(vc: VC, rlimit: int = RLIMIT) -> Verdict:
@@ -32,44 +48,73 @@ class Session:
     """Incremental solving for the VCs of one file. One solver holds the facts of
     the current path, one push frame per fact: a VC whose facts share a prefix with
     the previous VC's pops back to it and asserts only the rest. The goal is asked as
-    a check assumption. The budget (rlimit) is set once and bounds each question.
-    Each session has a z3 context of its own, so a file's models (the counterexamples
-    shown) do not depend on which files the same process checked before (`-j`)."""
+    a check assumption. Each question may use `rlimit` units of work, and all of them
+    together `budget`; once that is spent, every question is Undecided."""
 
-    def __init__(self, rlimit: int = RLIMIT) -> None:
-        context = z3.Context()
-        self._solver = z3.Solver(ctx=context)
-        self._solver.set("random_seed", 0)
-        self._solver.set("rlimit", rlimit)
+    def __init__(self, rlimit: int = RLIMIT, budget: int | None = None) -> None:
+        self._ctx = z3.Context()
+        self._solver = z3.Solver(ctx=self._ctx)
+        for name, value in SETTINGS.items():
+            self._solver.set(name, value)
+        self._rlimit = rlimit
+        self._budget = FILE_RLIMIT if budget is None else budget
+        self._used = 0
+        self._limit = rlimit
         self._facts: list[object] = []
-        self._encoder = Encoder(context)
+        self._approximated: list[bool] = []  # per fact asserted
+        self._encoder = Encoder(self._ctx)
+
+    @property
+    def exhausted(self) -> bool:
+        return self._used >= self._budget
 
     def check(self, vc: VC) -> Verdict:
+        if self.exhausted:
+            return _out_of_budget()
+        self._encoder.start()
         self._assert_facts(vc.facts)
         solver, encoder = self._solver, self._encoder
         goal = encoder.boolean(vc.goal)
-        first = solver.check(z3.Not(goal))
+        first = self._ask(z3.Not(goal))
         if first == z3.unsat:
             return Proved()
         if first == z3.unknown:
-            return Undecided(solver.reason_unknown())
+            return self._undecided()
         model = solver.model()
+        probes = [encoder.encode(p) for p in vc.probes]
+        # A term z3 saw as a fresh constant makes the model no execution's values.
+        exact = not encoder.approximated and not any(self._approximated)
         values = tuple(
-            _show(model.eval(encoder.encode(p), model_completion=True))
-            for p in vc.probes
+            _show(model.eval(p, model_completion=True)) if exact else None
+            for p in probes
         )
-        wanted = {s.ident for s in _syms(vc)}
+        wanted = {s.ident for s in _syms(vc)} if exact else set()
         syms = tuple(
             (ident, _show(model.eval(sym, model_completion=True)))
             for ident, sym in sorted(encoder.syms.items())
             if ident in wanted
         )
-        second = solver.check(goal)
+        second = self._ask(goal)
         if second == z3.unsat:
             return Violated(values)
         if second == z3.unknown:
-            return Undecided(solver.reason_unknown())
+            return self._undecided()
         return Unproven(values, syms)
+
+    def _ask(self, assumption: Any) -> Any:
+        """One question, within what is left of the file's budget."""
+        self._limit = min(self._rlimit, self._budget - self._used)
+        if self._limit <= 0:  # never ask with rlimit 0: to z3 that means no limit
+            return z3.unknown
+        self._solver.set("rlimit", self._limit)
+        result = self._solver.check(assumption)
+        self._used = max(self._used, _work_done(self._solver))
+        return result
+
+    def _undecided(self) -> Undecided:
+        if self._limit <= 0 or self.exhausted:  # stopped by the file's budget
+            return _out_of_budget()
+        return Undecided(self._solver.reason_unknown())
 
     def _assert_facts(self, facts: tuple[object, ...]) -> None:
         known = self._facts
@@ -79,10 +124,26 @@ class Session:
         for _ in range(len(known) - common):
             self._solver.pop()
         del known[common:]
+        del self._approximated[common:]
+        encoder = self._encoder
         for fact in facts[common:]:
+            encoder.approximated = False
             self._solver.push()
-            self._solver.add(self._encoder.boolean(fact))  # type: ignore[arg-type]
+            self._solver.add(encoder.boolean(fact))  # type: ignore[arg-type]
             known.append(fact)
+            self._approximated.append(encoder.approximated)
+        encoder.approximated = False
+
+
+def _out_of_budget() -> Undecided:
+    return Undecided("the file's solver budget is used up", out_of_budget=True)
+
+
+def _work_done(solver: Any) -> int:
+    """The units of work the session's context has spent so far."""
+    stats = solver.statistics()
+    names = stats.keys()
+    return int(stats.get_key_value("rlimit count")) if "rlimit count" in names else 0
 
 
 def _syms(vc: VC) -> set[A.Sym]:
@@ -94,10 +155,15 @@ def _syms(vc: VC) -> set[A.Sym]:
 
 def _show(value: Any) -> str:
     if z3.is_int_value(value):
-        return str(value.as_long())
+        return _integer(value.as_string())
     if z3.is_rational_value(value):
-        exact = Fraction(value.numerator_as_long(), value.denominator_as_long())
-        return _decimal(exact)
+        numerator = value.numerator().as_string()
+        denominator = value.denominator().as_string()
+        if len(numerator) + len(denominator) > SHOWN_DIGITS:
+            if len(numerator.lstrip("-")) - len(denominator) > 309:  # beyond a double
+                return "-inf" if numerator.startswith("-") else "inf"
+            return _scientific(numerator, denominator)
+        return _decimal(Fraction(int(numerator), int(denominator)))
     if z3.is_algebraic_value(value):
         return str(value.as_decimal(6)).rstrip("?")
     if z3.is_true(value) or z3.is_false(value):
@@ -105,6 +171,29 @@ def _show(value: Any) -> str:
     if z3.is_string_value(value):
         return repr(value.as_string())
     return str(value)
+
+
+SHOWN_DIGITS = 40  # longer model values are shown rounded
+
+
+def _integer(digits: str) -> str:
+    return digits if len(digits) <= SHOWN_DIGITS else _scientific(digits, "1")
+
+
+def _scientific(numerator: str, denominator: str) -> str:
+    """numerator/denominator (decimal texts, of any length) as 1.23457e+400."""
+    sign = "-" if numerator.startswith("-") else ""
+    numerator = numerator.lstrip("-")
+    if numerator == "0":
+        return "0"
+    log = (
+        math.log10(int(numerator[:17]))
+        + len(numerator[17:])
+        - math.log10(int(denominator[:17]))
+        - len(denominator[17:])
+    )
+    exponent = math.floor(log)
+    return f"{sign}{10 ** (log - exponent):.6g}e{exponent:+d}"
 
 
 def _decimal(value: Fraction) -> str:
