@@ -617,3 +617,38 @@ def test_a_catalog_without_an_install_space_is_unchanged(tmp_path: Path) -> None
     assert catalog.lookup("my_msgs/Cmd") is not None
     assert catalog.lookup("my_msgs/Absent") is None
     assert catalog.types_in(str(tmp_path / "my_msgs/msg/Cmd.msg")) == ("my_msgs/Cmd",)
+
+
+def test_interface_problem_levels_are_the_same_with_workers(tmp_path: Path) -> None:
+    """With -j the main process loads its catalog only for the interface problems:
+    their levels (a missing package is a warning) must not depend on that."""
+    pkg = package(tmp_path / "nav_like", "nav_like")
+    write(pkg / "action" / "Go.action", "geographic_msgs/GeoPose[] poses\n---\n---\n")
+    for index in range(40):  # enough files for a worker pool
+        write(pkg / "nav_like" / f"m{index}.py", "from nav_like.action import Go\n")
+    levels = {
+        jobs: [
+            (d.code, d.severity.value)
+            for d in check_paths([pkg], Config(root=tmp_path), jobs=jobs).diagnostics
+        ]
+        for jobs in (1, 2)
+    }
+    assert levels[1] == levels[2] == [("RF504", "warning")]
+
+
+def test_a_standard_package_type_of_a_newer_distribution_is_a_warning(
+    tmp_path: Path,
+) -> None:
+    """nav2 names nav_msgs/Goals, newer than the bundled definitions: not a typo
+    (nothing in nav_msgs is spelled like it), so a warning; PoseStampd stays one."""
+    pkg = package(tmp_path / "nav_like", "nav_like")
+    write(
+        pkg / "msg" / "Plan.msg", "nav_msgs/Goals goals\ngeometry_msgs/PoseStampd p\n"
+    )
+    write(pkg / "nav_like" / "node.py", "from nav_like.msg import Plan\n")
+    levels = [
+        (d.span.line, d.severity.value)
+        for d in check(pkg, root=tmp_path).diagnostics
+        if d.code == "RF504"
+    ]
+    assert levels == [(1, "warning"), (2, "error")]

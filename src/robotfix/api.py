@@ -264,6 +264,7 @@ def interface_problems(catalog: MsgCatalog, used: set[str]) -> list[Diagnostic]:
     defines, else as notes, so an interface file the checked code never uses cannot
     fail the run; a field of a package that is nowhere to be found is a warning
     (`messages.interface_problem`)."""
+    found_all = catalog_problems(catalog)  # loads the catalog
     absent = {(p.path, p.line, p.col): p.absent_package for p in catalog.problems}
     return [
         messages.interface_problem(
@@ -271,7 +272,7 @@ def interface_problems(catalog: MsgCatalog, used: set[str]) -> list[Diagnostic]:
             used=bool(used.intersection(catalog.types_in(found.path))),
             absent_package=absent.get((found.path, found.span.line, found.span.col)),
         )
-        for found in catalog_problems(catalog)
+        for found in found_all
     ]
 
 

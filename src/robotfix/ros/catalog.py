@@ -28,6 +28,7 @@ skipped, and the run goes on.
 
 from __future__ import annotations
 
+import difflib
 import functools
 import hashlib
 import os
@@ -249,6 +250,24 @@ class MsgCatalog:
         """The types a user interface file defines (as spelled in `problems`)."""
         self.load()
         return self._types_of.get(path, ())
+
+    def _user_package(self, package: str) -> bool:
+        """Whether the user's interface files (or the install space) define types
+        of `package`, as opposed to the bundled standard definitions only."""
+        prefix = package + "/"
+        return any(k.startswith(prefix) for k in self._defined_by) or (
+            self._installed is not None and self._installed.has_package(package)
+        )
+
+    def _near_miss(self, package: str, name: str) -> bool:
+        """Whether a type of `package` is spelled almost like `name` (a typo)."""
+        prefix = package + "/"
+        names = [
+            k[len(prefix) :]
+            for k in (*self._specs, *self._standard())
+            if k.startswith(prefix)
+        ]
+        return bool(difflib.get_close_matches(name, names, n=1, cutoff=0.8))
 
     def has_package(self, package: str) -> bool:
         self.load()
@@ -525,6 +544,17 @@ class MsgCatalog:
                 if len(named) == 2 and not self.has_package(named[0]):
                     self.problems[-1] = replace(
                         self.problems[-1], absent_package=named[0]
+                    )
+                elif (
+                    len(named) == 2
+                    and not self._user_package(named[0])
+                    and not self._near_miss(named[0], named[1])
+                ):
+                    # a standard package without that type, and nothing in it is
+                    # spelled like it: a newer distribution's type (nav_msgs/Goals),
+                    # so a warning; `PoseStampd` stays an error (a typo)
+                    self.problems[-1] = replace(
+                        self.problems[-1], absent_package="/".join(named)
                     )
                 fs = FieldSpec(decl.name, "unknown", None, decl.array)
             elif decl.default is not None and fs.kind != "msg":
