@@ -25,6 +25,7 @@ from robotfix.analysis.parameters import (
     owner_of,
     summarize,
 )
+from robotfix.analysis.program import call_argument
 from robotfix.analysis.state import State
 from robotfix.analysis.values import Value
 from robotfix.annotations import ast as A
@@ -83,7 +84,7 @@ class ParameterEvaluator(ExpressionEvaluator):
             decl = summary.by_node.get(id(node))
             if decl is None:
                 return None
-            default_node = _argument(node, 1, "value")
+            default_node = call_argument(node, 1, "value")
             default = _given(args, kwargs, 1, "value")
             if default_node is not None:
                 self._check_range(decl, default_node)
@@ -118,7 +119,7 @@ class ParameterEvaluator(ExpressionEvaluator):
         given = _given(args, kwargs, 0, keyword)
         if given is not None and isinstance(given.term, A.Str):
             return given.term.value
-        found = self.parameters().summary.constant(_argument(node, 0, keyword))
+        found = self.parameters().summary.constant(call_argument(node, 0, keyword))
         return found if isinstance(found, str) else None
 
     def _owner(self, receiver: ast.expr) -> str | None:
@@ -244,20 +245,9 @@ class ParameterEvaluator(ExpressionEvaluator):
             node,
             True,
             _given(args, kwargs, 1, "default"),
-            _argument(node, 1, "default"),
+            call_argument(node, 1, "default"),
         )
         return value
-
-
-def _argument(call: ast.Call, position: int, keyword: str) -> ast.expr | None:
-    for kw in call.keywords:
-        if kw.arg == keyword:
-            return kw.value
-    if position < len(call.args) and not any(
-        isinstance(a, ast.Starred) for a in call.args[: position + 1]
-    ):
-        return call.args[position]
-    return None
 
 
 def _given(

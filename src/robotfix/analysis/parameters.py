@@ -35,6 +35,7 @@ from typing import TYPE_CHECKING
 
 from robotfix import messages
 from robotfix.analysis.index import FileIndex, index_module
+from robotfix.analysis.program import call_argument
 from robotfix.analysis.values import Value
 from robotfix.analysis.vc import VC, Violated
 from robotfix.annotations import ast as A
@@ -305,17 +306,6 @@ def exact(value: int | float) -> Fraction:
     return Fraction(value) if isinstance(value, int) else Fraction(repr(float(value)))
 
 
-def _argument(call: ast.Call, position: int, keyword: str) -> ast.expr | None:
-    for kw in call.keywords:
-        if kw.arg == keyword:
-            return kw.value
-    if position < len(call.args) and not any(
-        isinstance(a, ast.Starred) for a in call.args[: position + 1]
-    ):
-        return call.args[position]
-    return None
-
-
 def _called(call: ast.Call) -> str:
     func = call.func
     return func.attr if isinstance(func, ast.Attribute) else getattr(func, "id", "")
@@ -459,7 +449,7 @@ class _Walker:
         if qualified in ("rospy.get_param",) or qualified.endswith(".rospy.get_param"):
             self.ros1_read(call)
         elif qualified == "rospy.init_node":
-            self.node_name(ROSPY, _argument(call, 0, "name"))
+            self.node_name(ROSPY, call_argument(call, 0, "name"))
         elif isinstance(func, ast.Attribute) and name in (
             "declare_parameter",
             "declare_parameters",
@@ -490,7 +480,7 @@ class _Walker:
     def init(self, call: ast.Call) -> None:
         assert self.cls is not None and isinstance(call.func, ast.Attribute)
         shift = 0 if isinstance(call.func.value, ast.Call) else 1
-        self.node_name(self.cls, _argument(call, shift, "node_name"))
+        self.node_name(self.cls, call_argument(call, shift, "node_name"))
         self._auto_declare(self.cls, call)
 
     def _auto_declare(self, owner: str, call: ast.Call) -> None:
@@ -558,7 +548,7 @@ class _Walker:
         if isinstance(value, ast.Call) and _called(value) in NODE_CONSTRUCTORS:
             owner = self._target_owner(target)
             if owner is not None:
-                self.node_name(owner, _argument(value, 0, "node_name"))
+                self.node_name(owner, call_argument(value, 0, "node_name"))
                 self._auto_declare(owner, value)
             return
         read = read_call(value, self.qualname)
@@ -573,7 +563,7 @@ class _Walker:
         if owner is None or pname is None:
             return
         with_default = declaration and (
-            _argument(call, 1, "default" if owner == ROSPY else "value") is not None
+            call_argument(call, 1, "default" if owner == ROSPY else "value") is not None
         )
         self.summary.attached.append(
             Attached(
@@ -598,8 +588,8 @@ class _Walker:
             "get_parameter",
         ):
             owner = owner_of(call.func.value, self.key, self.cls, self.self_name)
-            return owner, self.text(_argument(call, 0, "name"))
-        return ROSPY, self.text(_argument(call, 0, "param_name"))
+            return owner, self.text(call_argument(call, 0, "name"))
+        return ROSPY, self.text(call_argument(call, 0, "param_name"))
 
     def _refinement_of(
         self, target: ast.expr, annotation: ast.expr | None
@@ -660,20 +650,20 @@ class _Walker:
     def _declare_args(
         self, call: ast.Call
     ) -> tuple[ast.expr | None, ast.expr | None, ast.expr | None, bool]:
-        ignore = self.const(_argument(call, 3, "ignore_override")) is True
+        ignore = self.const(call_argument(call, 3, "ignore_override")) is True
         return (
-            _argument(call, 0, "name"),
-            _argument(call, 1, "value"),
-            _argument(call, 2, "descriptor"),
+            call_argument(call, 0, "name"),
+            call_argument(call, 1, "value"),
+            call_argument(call, 2, "descriptor"),
             ignore,
         )
 
     def declare_many(self, owner: str, call: ast.Call) -> None:
-        namespace = self.text(_argument(call, 0, "namespace"))
-        listed = _argument(call, 1, "parameters")
+        namespace = self.text(call_argument(call, 0, "namespace"))
+        listed = call_argument(call, 1, "parameters")
         if namespace is None or not isinstance(listed, (ast.List, ast.Tuple)):
             return
-        ignore = self.const(_argument(call, 2, "ignore_override")) is True
+        ignore = self.const(call_argument(call, 2, "ignore_override")) is True
         for item in listed.elts:
             if not isinstance(item, ast.Tuple) or not 1 <= len(item.elts) <= 3:
                 continue
@@ -740,10 +730,10 @@ class _Walker:
         return None
 
     def ros1_read(self, call: ast.Call) -> None:
-        name = self.text(_argument(call, 0, "param_name"))
+        name = self.text(call_argument(call, 0, "param_name"))
         if name is None:
             return
-        default_node = _argument(call, 1, "default")
+        default_node = call_argument(call, 1, "default")
         decl = ParamDecl(
             ROSPY,
             name,

@@ -120,10 +120,10 @@ def _collect_callbacks(ctx: FileContext, program: Program) -> None:
         registration = REGISTRATIONS.get(name)
         if registration is None:
             continue
-        callback = _argument(call, *registration.callback_arg)
+        callback = call_argument(call, *registration.callback_arg)
         interface = None
         if registration.type_arg is not None:
-            type_node = _argument(call, *registration.type_arg)
+            type_node = call_argument(call, *registration.type_arg)
             interface = ctx.interface_of(type_node) if type_node is not None else None
         resolved = _callback_key(program, callback, class_name)
         if resolved is not None:
@@ -131,7 +131,9 @@ def _collect_callbacks(ctx: FileContext, program: Program) -> None:
             program.callbacks[key] = Callback(registration.kind, interface, bound)
 
 
-def _argument(call: ast.Call, position: int, keyword: str) -> ast.expr | None:
+def call_argument(call: ast.Call, position: int, keyword: str) -> ast.expr | None:
+    """The argument given by `keyword`, or at `position` when no `*args` comes
+    before it; None when it is not given."""
     for kw in call.keywords:
         if kw.arg == keyword:
             return kw.value
