@@ -47,14 +47,7 @@ def build_parser() -> argparse.ArgumentParser:
         metavar="PATH",
         help="files or folders (default: the current folder)",
     )
-    check.add_argument(
-        "--msg-path",
-        action="append",
-        type=Path,
-        default=[],
-        metavar="DIR",
-        help="a folder (or file) of .msg/.srv/.action files; repeatable",
-    )
+    add_msg_path_argument(check)
     check.add_argument(
         "--format",
         choices=FORMATS,
@@ -122,14 +115,24 @@ def build_parser() -> argparse.ArgumentParser:
     explain.add_argument("code", metavar="CODE", help="a code (RF101) or a name")
     suggest = commands.add_parser("suggest", help="propose Unit() annotations")
     suggest.add_argument("paths", nargs="+", type=Path, metavar="PATH")
-    suggest.add_argument(
-        "--msg-path", action="append", type=Path, default=[], metavar="DIR"
-    )
+    add_msg_path_argument(suggest)
     suggest.add_argument(
         "--apply", action="store_true", help="write the proposals into the files"
     )
     commands.add_parser("lsp", help="language server on stdin/stdout")
     return parser
+
+
+def add_msg_path_argument(parser: argparse.ArgumentParser) -> None:
+    """`--msg-path DIR`, the same for `check`, `suggest` and `ament_robotfix`."""
+    parser.add_argument(
+        "--msg-path",
+        action="append",
+        type=Path,
+        default=[],
+        metavar="DIR",
+        help="a folder (or file) of .msg/.srv/.action files; repeatable",
+    )
 
 
 _Main = TypeVar("_Main", bound=Callable[..., int])

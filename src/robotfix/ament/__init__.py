@@ -63,6 +63,8 @@ def template() -> str:
 
 
 def _parser() -> argparse.ArgumentParser:
+    from robotfix.cli import add_msg_path_argument
+
     parser = argparse.ArgumentParser(
         prog="ament_robotfix",
         description="Check units, frames and refinements in ROS Python code "
@@ -99,14 +101,7 @@ def _parser() -> argparse.ArgumentParser:
         metavar="FILE",
         help="also write the results as xUnit XML (a test case per file)",
     )
-    parser.add_argument(
-        "--msg-path",
-        action="append",
-        type=Path,
-        default=[],
-        metavar="DIR",
-        help="a folder (or file) of .msg/.srv/.action files; repeatable",
-    )
+    add_msg_path_argument(parser)
     parser.add_argument(
         "--strict", action="store_true", help="warnings fail the check too"
     )

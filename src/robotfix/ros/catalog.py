@@ -291,16 +291,6 @@ class MsgCatalog:
             spec = self.lookup(found.msg_type)
         return None
 
-    def fingerprint(self, name: str) -> str:
-        """What a type's definition depends on: its interface file's content, the
-        standard store, or its absence."""
-        self.load()
-        if name not in self._specs:
-            self._from_installed(name)
-        if name in self._defined_by:
-            return self._defined_by[name]
-        return "std" if name in self._standard() else "missing"
-
     _resolved_digests: dict[str, str] | None = None  # fingerprint_types' memo
 
     def fingerprint_types(self, names: list[str]) -> str:
