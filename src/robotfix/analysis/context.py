@@ -89,6 +89,10 @@ class FileContext:
         self._next += 1
         return self._next
 
+    def last_id(self) -> int:
+        """The newest symbol or heap id: those made later have larger ids."""
+        return self._next
+
     def fresh(
         self, kind: str, description: str | ast.AST, unit: object = None
     ) -> Value:

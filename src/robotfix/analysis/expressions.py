@@ -15,13 +15,13 @@ from dataclasses import replace
 from fractions import Fraction
 
 from robotfix import messages
-from robotfix.analysis import heap, hover
+from robotfix.analysis import containers, heap, hover
 from robotfix.analysis.checks import Checker
 from robotfix.analysis.constants import is_constant
 from robotfix.analysis.context import TERM_LIMIT, FileContext
 from robotfix.analysis.program import Program
 from robotfix.analysis.state import State
-from robotfix.analysis.values import NONE, Value
+from robotfix.analysis.values import NONE, SEQUENCES, Items, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import NUMBERS, named_number
@@ -142,7 +142,10 @@ class ExpressionEvaluator:
         return None
 
     def eval_Attribute(self, node: ast.Attribute, state: State) -> Value:
-        base = self.eval(node.value, state)
+        return self.attribute(self.eval(node.value, state), node, state)
+
+    def attribute(self, base: Value, node: ast.Attribute, state: State) -> Value:
+        """`base.attr`, where `base` is the value of `node.value`."""
         if base.kind == "msg" and base.ref in state.heap:
             constant = self.member(base, node.attr, state)
             if constant is not None:  # `msg.ULTRASOUND`
@@ -331,6 +334,8 @@ class ExpressionEvaluator:
 
     def eval_BinOp(self, node: ast.BinOp, state: State) -> Value:
         left, right = self.eval(node.left, state), self.eval(node.right, state)
+        if left.kind in SEQUENCES or right.kind in SEQUENCES:
+            return self._sequence_binop(node, left, right)
         uninit = left.uninit or right.uninit
         op = ARITH.get(type(node.op))
         if op is None:
@@ -349,6 +354,26 @@ class ExpressionEvaluator:
             return replace(self.unknown(node, unit=unit), uninit=uninit, scale=scale)
         term = A.Binary(op, left.term, right.term)
         return Value(kind, term, unit, literal, uninit=uninit, scale=scale)
+
+    def _sequence_binop(self, node: ast.BinOp, left: Value, right: Value) -> Value:
+        """`xs + ys` and `[0.0] * n` of lists and tuples."""
+        found: Value | None = None
+        both = left.kind in SEQUENCES and right.kind in SEQUENCES
+        if (
+            isinstance(node.op, ast.Add)
+            and both
+            and "generator"
+            not in (
+                left.kind,
+                right.kind,
+            )
+        ):
+            found = containers.concatenated(left, right)
+        elif isinstance(node.op, ast.Mult) and not both:
+            sequence, times = (left, right) if left.kind in SEQUENCES else (right, left)
+            if sequence.kind != "generator":
+                found = containers.repeated(sequence, times)
+        return found if found is not None else self.unknown(node)
 
     def _other_binop(self, node: ast.BinOp, left: Value, right: Value) -> Value:
         if isinstance(node.op, ast.Mod):
@@ -488,12 +513,34 @@ class ExpressionEvaluator:
         base = self.eval(node.value, state)
         key = self.eval(node.slice, state)
         if base.elements is not None and (
-            base.kind == "tuple" or self.is_read_only_table(node.value)
-        ):
+            base.kind in ("tuple", "list") or self.is_read_only_table(node.value)
+        ):  # a list keeps its elements only while nothing else can change it
             found = self._look_up(base, key, node, state)
             if found is not None:
                 return found
+        if base.kind in SEQUENCES:
+            if isinstance(node.slice, ast.Slice):
+                return containers.sliced(base)
+            return self.element(base, node, state)
         return self.unknown(node, unit=base.unit if not base.literal else None)
+
+    def element(self, sequence: Value, node: ast.AST, state: State) -> Value:
+        """One element of `sequence`: what holds of every element holds of it."""
+        if sequence.keys is not None and sequence.name in ("zip", "enumerate"):
+            parts = tuple(self.element(k, node, state) for k in sequence.keys)
+            return Value("tuple", elements=parts)
+        if sequence.elements:
+            found = self._one_of(list(sequence.elements), node, state)
+            if found is not None:
+                return found
+        kind = containers.item_kind(sequence)
+        if kind not in ("int", "float", "bool", "str"):
+            kind = "unknown"
+        value = self.unknown(node, kind, sequence.unit)
+        each = containers.each_of(sequence)
+        if each != A.TRUE:
+            state.assume(containers.at(each, value.known_term))
+        return value
 
     def eval_Tuple(self, node: ast.Tuple | ast.List, state: State) -> Value:
         values = []
@@ -506,9 +553,17 @@ class ExpressionEvaluator:
             ):
                 modelled = False
         if not modelled:
+            if node.__class__ is ast.List:  # still a list, of elements not followed
+                return Value("list", items=Items())
             return self.unknown(node)
         kind = "tuple" if node.__class__ is ast.Tuple else "list"
-        return Value(kind, elements=tuple(values))
+        elements = tuple(values)
+        return Value(
+            kind,
+            unit=containers.common_unit(elements),
+            elements=elements,
+            sites=tuple(node.elts),
+        )
 
     eval_List = eval_Tuple
 
@@ -585,7 +640,19 @@ class ExpressionEvaluator:
     def eval_Lambda(self, node: ast.Lambda, state: State) -> Value:
         return self.unknown(node)
 
-    eval_ListComp = eval_SetComp = eval_DictComp = eval_GeneratorExp = eval_Lambda
+    eval_SetComp = eval_DictComp = eval_Lambda
+
+    def eval_ListComp(self, node: ast.ListComp, state: State) -> Value:
+        return self.comprehension(node, "list", state)
+
+    def eval_GeneratorExp(self, node: ast.GeneratorExp, state: State) -> Value:
+        return self.comprehension(node, "generator", state)
+
+    def comprehension(
+        self, node: ast.ListComp | ast.GeneratorExp, kind: str, state: State
+    ) -> Value:
+        """A list or generator of the values of a comprehension."""
+        return Value(kind, items=Items())
 
     # -- conditions ----------------------------------------------------------
     def condition(self, node: ast.expr, state: State) -> A.Expr:

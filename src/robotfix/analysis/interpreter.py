@@ -15,14 +15,14 @@ from collections.abc import Callable
 from dataclasses import replace
 
 from robotfix import messages
-from robotfix.analysis import heap, hover
+from robotfix.analysis import containers, heap, hover
 from robotfix.analysis.calls import CallEvaluator
 from robotfix.analysis.constants import scan
 from robotfix.analysis.context import FileContext, Scope, build_scope
 from robotfix.analysis.index import index_module
 from robotfix.analysis.program import Function, Program, collect
 from robotfix.analysis.state import MAYBE, State, join
-from robotfix.analysis.values import CONTAINERS, NONE, Uninit, Value
+from robotfix.analysis.values import CONTAINERS, NONE, SEQUENCES, Items, Uninit, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import named_number
@@ -118,6 +118,7 @@ class Interpreter(CallEvaluator):
         # module names read in this function, which no function rebinds: one value
         # (and the fact its refinement gives) for the whole run of the function
         self.globals_read: dict[str, tuple[Value, A.Expr | None]] = {}
+        self._shared: set[str] | None = None  # names whose lists may be shared
 
     # -- blocks --------------------------------------------------------------
     def exec_block(self, body: list[ast.stmt], state: State) -> State:
@@ -184,6 +185,11 @@ class Interpreter(CallEvaluator):
                 state.assume(fact)
             return value
         decl = self.scope.module().decls.get(name)
+        if decl is not None and decl.item is not None:  # a refined list or tuple
+            lookup = self.refinement_lookup(decl, state)
+            value = self.check.assumed(state, name, decl, lookup)
+            self.globals_read[name] = (value, None)
+            return value
         value = self.ctx.fresh(
             decl.base if decl else "unknown", f"`{name}`", decl.unit if decl else None
         )
@@ -283,6 +289,8 @@ class Interpreter(CallEvaluator):
                 value = self.check.assign_refined(
                     state, target.id, decl, value, self.site, lookup
                 )
+            if value.kind == "list" and self.is_shared(target.id):
+                value = containers.stripped(value)
             bound = state.env[target.id] = replace(value, uninit=None, default_of=None)
             self.note_hover(target, lambda: self.describe_name(target.id, bound, state))
             if self.scope.kind == "module" or (
@@ -314,7 +322,10 @@ class Interpreter(CallEvaluator):
                     state, base.ref, target.attr, value, self.site, text
                 )
         elif isinstance(target, (ast.Tuple, ast.List)):
-            parts = value.elements if value.kind == "tuple" else None
+            parts = value.elements if value.kind in SEQUENCES else None
+            starred = any(isinstance(e, ast.Starred) for e in target.elts)
+            if parts is None and value.kind in SEQUENCES and not starred:
+                parts = tuple(self.element(value, e, state) for e in target.elts)
             if parts is None or len(parts) != len(target.elts):
                 parts = None
             for index, element in enumerate(target.elts):
@@ -325,8 +336,10 @@ class Interpreter(CallEvaluator):
                     parts = None  # after a starred target the positions shift
                     self.bind(inner, self.unknown(inner), state)
         elif isinstance(target, ast.Subscript):
-            self.eval(target.value, state)
-            self.eval(target.slice, state)
+            receiver = self.receiver(target.value, state)
+            key = self.eval(target.slice, state)
+            if receiver.kind == "list":
+                self._assign_element(target, receiver, key, value, state)
         elif isinstance(target, ast.Starred):
             self.bind(target.value, self.unknown(target), state)
 
@@ -340,7 +353,153 @@ class Interpreter(CallEvaluator):
             value = self.check.assign_refined(
                 state, key, decl, value, self.site, lookup
             )
+        value = containers.stripped(value)  # an attribute's list is shared
         state.env[key] = replace(value, uninit=None, default_of=None)
+
+    # -- lists ---------------------------------------------------------------
+    def is_shared(self, name: str) -> bool:
+        """Whether the list a name holds may also be held elsewhere (so that what
+        it holds element by element cannot be trusted)."""
+        if self.scope.kind == "class":
+            return True
+        if self._shared is None:
+            self._shared = containers.shared_names(self.scope.node)
+        return name in self._shared
+
+    def _assign_element(
+        self,
+        target: ast.Subscript,
+        receiver: Value,
+        key: Value,
+        value: Value,
+        state: State,
+    ) -> None:
+        """`xs[i] = v` (or `xs[a:b] = ys`): the new elements keep the list's
+        declaration; the list is stored back."""
+        kept = receiver.items.kept if receiver.items is not None else None
+        ok = True
+        if isinstance(target.slice, ast.Slice):
+            if kept is not None:
+                ok = self.check.check_items(
+                    state, value, replace(kept, size=A.TRUE), self.site
+                )
+            updated = containers.forgetting(receiver)
+        else:
+            if kept is not None:
+                index = self.ctx.source.segment(target.slice) or "i"
+                element = Value("list", elements=(value,))
+                ok = self.check.check_items(
+                    state,
+                    element,
+                    replace(kept, size=A.TRUE),
+                    self.site,
+                    labels=(f"{kept.label}[{index}]",),
+                )
+            position = key.term
+            index_value = (
+                int(position.value)
+                if isinstance(position, A.Num) and position.is_int
+                else None
+            )
+            updated = containers.with_element(
+                receiver, value, index=index_value, grows=False
+            )
+        if not ok and kept is not None:  # reported: from here on, its declaration
+            updated = containers.declared(receiver.kind, kept)
+        self.store(target.value, updated, state)
+
+    def store(self, target: ast.expr, value: Value, state: State) -> None:
+        """Put a list that changed back where it lives: a local name, `self.x`, or a
+        message's array field (as its declaration)."""
+        if isinstance(target, ast.Name):
+            if target.id in self.scope.local_names:
+                shared = self.is_shared(target.id)
+                state.env[target.id] = containers.stripped(value) if shared else value
+            return
+        if not isinstance(target, ast.Attribute):
+            return
+        base = self.eval(target.value, state)
+        if base.kind == "instance" and isinstance(target.value, ast.Name):
+            state.env[f"{target.value.id}.{target.attr}"] = containers.stripped(value)
+        elif base.kind == "msg" and base.ref in state.heap:
+            assert base.ref is not None
+            obj = state.heap[base.ref]
+            kept = value.items.kept if value.items is not None else None
+            obj.fields[target.attr] = (
+                containers.declared("list", kept)
+                if kept is not None
+                else containers.stripped(value)
+            )
+            obj.reported.discard(target.attr)
+
+    def comprehension(
+        self, node: ast.ListComp | ast.GeneratorExp, kind: str, state: State
+    ) -> Value:
+        """`[r for r in ranges if r > 0.1]`: its elements are what the iteration
+        and the conditions say of one element (facts about one element's own
+        symbols only, so that they hold of every element)."""
+        if any(g.is_async for g in node.generators):
+            return Value(kind, items=Items())
+        inner = state.fork()
+        mark, known = self.ctx.last_id(), len(inner.facts)
+        saved = self.scope
+        names = self.ctx.index.scopes.get(id(node))
+        own = set(names.local_names) if names is not None else set()
+        self.scope = Scope(
+            saved.kind,
+            saved.name,
+            saved.node,
+            saved.parent,
+            {k: v for k, v in saved.decls.items() if k not in own},
+            saved.local_names | own,
+            saved.global_names - own,
+        )
+        try:
+            for generator in node.generators:
+                iterable = self.eval(generator.iter, inner)
+                element = (
+                    self.element(iterable, generator.target, inner)
+                    if iterable.kind in SEQUENCES
+                    else self.unknown(generator.target)
+                )
+                self._bind_plain(generator.target, element, inner)
+                for test in generator.ifs:
+                    inner.assume(self.condition(test, inner))
+            value = self.eval(node.elt, inner)
+        finally:
+            self.scope = saved
+        each: A.Expr = A.TRUE
+        term = value.term
+        if term is not None and value.kind in ("int", "float", "bool", "str"):
+            if isinstance(term, A.Sym) and term.ident > mark:
+                facts = [
+                    f
+                    for f in inner.facts[known:]
+                    if containers.newer_syms(f, mark) <= {term.ident}
+                ]
+                each = containers.without_sym(
+                    A.conjoin(facts), term.ident, containers.SELF
+                )
+            elif not containers.newer_syms(term, mark):
+                each = A.Binary("==", containers.SELF, term)
+        item = (
+            value.kind if value.kind in ("int", "float", "bool", "str") else "unknown"
+        )
+        unit = None if value.literal else value.unit
+        return Value(kind, unit=unit, items=Items(item, each))
+
+    def _bind_plain(self, target: ast.expr, value: Value, state: State) -> None:
+        """Bind a comprehension's target (its own names: no refinement applies)."""
+        if isinstance(target, ast.Name):
+            state.env[target.id] = value
+        elif isinstance(target, (ast.Tuple, ast.List)):
+            parts = value.elements if value.kind == "tuple" else None
+            if parts is None or len(parts) != len(target.elts):
+                parts = tuple(self.unknown(e) for e in target.elts)
+            for element, part in zip(target.elts, parts, strict=True):
+                self._bind_plain(element, part, state)
+        elif isinstance(target, ast.Starred):
+            self._bind_plain(target.value, Value("list", items=Items()), state)
 
     def bind_parameters(self, state: State) -> None:
         """Parameters: `self`, messages that arrive at a callback, refined values."""
@@ -424,9 +583,16 @@ class Interpreter(CallEvaluator):
         )
 
     def havoc(self, state: State, nodes: list[ast.stmt]) -> None:
-        """Forget what `nodes` may write: assigned names and mentioned messages."""
+        """Forget what `nodes` may write: assigned names and mentioned messages, and
+        what lists they change (`xs.append(v)`, `xs[i] = v`) hold."""
         for node in nodes:
             for child in walk(node):
+                kind = child.__class__
+                if kind is ast.Call and child.func.__class__ is ast.Attribute:  # type: ignore[attr-defined]
+                    if child.func.attr in containers.MUTATORS:  # type: ignore[attr-defined]
+                        self._forget_list(child.func.value, state)  # type: ignore[attr-defined]
+                elif kind is ast.Subscript and child.ctx.__class__ is not ast.Load:  # type: ignore[attr-defined]
+                    self._forget_list(child.value, state)  # type: ignore[attr-defined]
                 if (
                     isinstance(child, ast.Attribute)
                     and isinstance(child.ctx, ast.Store)
@@ -450,6 +616,14 @@ class Interpreter(CallEvaluator):
                         )
                     else:
                         state.env[child.id] = self.unknown(child)
+
+    def _forget_list(self, node: ast.expr, state: State) -> None:
+        if isinstance(node, ast.Name):
+            bound = state.env.get(node.id)
+            if isinstance(bound, Value) and bound.kind in SEQUENCES:
+                state.env[node.id] = containers.forgetting(bound)
+        elif isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name):
+            state.env.pop(f"{node.value.id}.{node.attr}", None)
 
     # -- simple statements ---------------------------------------------------
     def visit_Expr(self, node: ast.Expr, state: State) -> State:
@@ -520,6 +694,8 @@ class Interpreter(CallEvaluator):
             load = ast.Name(node.target.id, ast.Load())
         elif isinstance(node.target, ast.Attribute):
             load = ast.Attribute(node.target.value, node.target.attr, ast.Load())
+        elif isinstance(node.target, ast.Subscript):  # `ranges[i] += d`
+            load = ast.Subscript(node.target.value, node.target.slice, ast.Load())
         else:
             return self.generic(node, state)
         combined = ast.BinOp(ast.copy_location(load, node.target), node.op, node.value)
@@ -680,6 +856,8 @@ class Interpreter(CallEvaluator):
             else ("float" if kinds <= {"int", "float", "bool"} else "unknown")
         )
         unit = x.unit if x.unit == y.unit else None
+        if x.kind in SEQUENCES and y.kind in SEQUENCES:
+            return containers.joined(x, y)
         if kind in CONTAINERS:  # different tables on the two paths
             return Value("unknown")
         if (
@@ -700,10 +878,15 @@ class Interpreter(CallEvaluator):
         return self.exec_block(node.orelse, state)
 
     def visit_For(self, node: ast.For | ast.AsyncFor, state: State) -> State:
-        self.eval(node.iter, state)
+        iterable = self.eval(node.iter, state)
         self.havoc(state, [node])
         body_state = state.fork()
-        self.bind(node.target, self.unknown(node.target), body_state)
+        element = (
+            self.element(iterable, node.target, body_state)
+            if iterable.kind in SEQUENCES and isinstance(node, ast.For)
+            else self.unknown(node.target)
+        )
+        self.bind(node.target, element, body_state)
         self.exec_block(node.body, body_state)
         self.havoc(state, [node])
         return self.exec_block(node.orelse, state)

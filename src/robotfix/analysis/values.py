@@ -12,9 +12,44 @@ from dataclasses import dataclass, field, replace
 
 from robotfix.annotations import ast as A
 from robotfix.annotations.units import Unit
+from robotfix.messages import Declared
 
 NUMERIC = frozenset({"int", "float", "bool"})
 CONTAINERS = frozenset({"tuple", "list", "dict"})
+# Values whose elements a refinement speaks of: lists (also message array fields),
+# tuples, and generators (`min(r for r in ranges)`).
+SEQUENCES = frozenset({"list", "tuple", "generator"})
+
+
+@dataclass(frozen=True)
+class Items:
+    """What holds of every element of a sequence, beyond the `elements` a display
+    names: their kind, a predicate `each` over `_`, and a predicate `size` over `_`
+    that the sequence's length satisfies."""
+
+    kind: str = "unknown"
+    each: A.Expr = A.TRUE
+    size: A.Expr = A.TRUE
+    kept: Kept | None = None  # the declaration every change must keep
+
+
+@dataclass(frozen=True)
+class Kept:
+    """A sequence's declaration (a refined variable or attribute, a message array
+    field), which every change must keep, also one made through another name: its
+    elements' base type, unit and predicate (over `_`), its length's predicate, how
+    diagnostics name the sequence, and where it was declared."""
+
+    item: str
+    unit: Unit | None
+    each: A.Expr
+    size: A.Expr
+    label: str
+    declared: Declared
+    unit_declared: Declared | None = None  # where the unit was, if elsewhere
+    # a message array's fixed size or bound: its type's, not a refinement, so only
+    # a length known to break it is reported
+    shape: A.Expr = A.TRUE
 
 
 @dataclass(frozen=True)
@@ -40,6 +75,9 @@ class Value:
     # unit: `speed / 3.6` is km/h scaled by 1/3.6, which is a conversion to m/s.
     scale: float = 1.0
     default_of: tuple[int, str] | None = field(default=None, compare=False)
+    items: Items | None = None  # a sequence: what holds of its elements
+    # a display's element nodes, where an element's diagnostic points
+    sites: tuple[object, ...] | None = field(default=None, compare=False)
 
     @property
     def known_term(self) -> A.Expr:

@@ -17,7 +17,8 @@ from __future__ import annotations
 import ast
 import re
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
+from fractions import Fraction
 
 from robotfix import rules
 from robotfix.annotations import ast as A
@@ -40,16 +41,32 @@ QUALIFIERS = frozenset(
 )
 
 
+# `list[float]`, `Sequence[float]`, `tuple[float, ...]`: a refinement on one of these
+# is on its elements; `len(_)` in it is on the container's length.
+CONTAINER_NAMES = {"list": "list", "tuple": "tuple"}
+CONTAINER_TYPES = {
+    **{f"typing.{n}": "list" for n in ("List", "Sequence", "MutableSequence")},
+    **{f"collections.abc.{n}": "list" for n in ("Sequence", "MutableSequence")},
+    "typing.Tuple": "tuple",
+    "typing_extensions.Sequence": "list",
+}
+
+
 @dataclass(frozen=True)
 class Refinement:
-    """What an annotation says of one variable, parameter or attribute."""
+    """What an annotation says of one variable, parameter or attribute.
 
-    base: str  # int float bool str msg other
+    For a container (`base` list or tuple), `item` is its elements' base type, `unit`
+    and `predicate` are theirs, and `size` is what its length (`_`) satisfies."""
+
+    base: str  # int float bool str msg list tuple other
     unit: Unit | None
     predicate: A.Expr  # the value part; the annotated thing itself is `_`
     text: str  # the annotation string as written
     line: int
     msg_type: str | None = None
+    item: str | None = None  # a container's element base type
+    size: A.Expr = A.TRUE  # a container's length, as `_`
 
 
 @dataclass(frozen=True)
@@ -92,11 +109,125 @@ def extract(
             return None, [problem]
         if text.strip() and not _is_refinement(predicate, self_name):
             continue
-        base, mtype = _base(_unqualified(args[0], qualname), msg_type)
-        return _refinement(
+        typed = _unqualified(args[0], qualname)
+        container = _container(typed, qualname)
+        if container is not None:
+            kind, element, fixed = container
+            found, problems = _refinement(
+                predicate, kind, None, text, node.lineno, self_name, start, known
+            )
+            if found is None:
+                return found, problems
+            return _on_elements(found, element, fixed, self_name, start, problems)
+        base, mtype = _base(typed, msg_type)
+        found, problems = _refinement(
             predicate, base, mtype, text, node.lineno, self_name, start, known
         )
+        length = A.Name("len(_)")
+        parts = A.conjuncts(found.predicate) if found is not None else []
+        kept = [p for p in parts if _lengths_replaced(p, length) is p]
+        if found is not None and len(kept) < len(parts):
+            line, col = _at(start, 0)
+            problems.append(
+                AnnotationProblem(
+                    rules.ANNOTATION_SYNTAX,
+                    line,
+                    col,
+                    "len(_) is the length of a list, tuple or array: annotate the "
+                    'container, e.g. Annotated[list[float], "len(_) <= 10"]',
+                )
+            )
+            found = replace(found, predicate=A.conjoin(kept))
+        return found, problems
     return None, []
+
+
+def _container(
+    node: ast.expr, qualname: Callable[[ast.expr], str | None]
+) -> tuple[str, str, int | None] | None:
+    """(list or tuple, the elements' base type, a fixed length) for `list[float]`,
+    `Sequence[int]`, `tuple[float, ...]`, `tuple[float, float]`, bare `list`."""
+    head = node.value if isinstance(node, ast.Subscript) else node
+    kind = (
+        CONTAINER_NAMES.get(head.id) if isinstance(head, ast.Name) else None
+    ) or CONTAINER_TYPES.get(qualname(head) or "")
+    if kind is None:
+        return None
+    if not isinstance(node, ast.Subscript):
+        return kind, "other", None
+    parts = node.slice.elts if isinstance(node.slice, ast.Tuple) else [node.slice]
+    fixed: int | None = None
+    if kind == "tuple" and not (
+        len(parts) == 2
+        and isinstance(parts[1], ast.Constant)
+        and parts[1].value is Ellipsis
+    ):
+        fixed = len(parts)
+    elif len(parts) != 1 and kind != "tuple":
+        return kind, "other", None
+    names = {p.id if isinstance(p, ast.Name) else "" for p in parts[: fixed or 1]}
+    element = BASE_TYPES.get(names.pop(), "other") if len(names) == 1 else "other"
+    return kind, element, fixed
+
+
+def _on_elements(
+    found: Refinement,
+    element: str,
+    fixed: int | None,
+    self_name: str,
+    start: tuple[int, int, bool],
+    problems: list[AnnotationProblem],
+) -> tuple[Refinement | None, list[AnnotationProblem]]:
+    """Split a container's refinement: parts with `len(_)` are on its length, the
+    others on every element; a part that mixes the two is RF501."""
+    each: list[A.Expr] = []
+    size: list[A.Expr] = (
+        []
+        if fixed is None
+        else [A.Binary("==", A.Name(SELF), A.Num(Fraction(fixed), True))]
+    )
+    length = A.Name("len(_)")
+    for part in A.conjuncts(found.predicate):
+        lengths = _lengths_replaced(part, length)
+        if lengths is part:
+            each.append(part)
+        elif any(n.name == SELF for n in A.names(lengths)):
+            line, col = _at(start, 0)
+            problems.append(
+                AnnotationProblem(
+                    rules.ANNOTATION_SYNTAX,
+                    line,
+                    col,
+                    "a part of a container's refinement is on its elements (`_`) or "
+                    "on its length (`len(_)`), not both: split it with `and`",
+                )
+            )
+        else:
+            size.append(A.substitute(lengths, {length.name: A.Name(SELF)}))
+    refined = Refinement(
+        found.base,
+        found.unit,
+        A.conjoin(each),
+        found.text,
+        found.line,
+        item=element,
+        size=A.conjoin(size),
+    )
+    return refined, problems
+
+
+def _lengths_replaced(expr: A.Expr, length: A.Name) -> A.Expr:
+    """`expr` with every `len(_)` replaced by `length` (the same object when there is
+    none)."""
+    if isinstance(expr, A.Func) and expr.name == "len" and expr.args == (A.Name(SELF),):
+        return length
+    kids = A.children(expr)
+    if not kids:
+        return expr
+    new = tuple(_lengths_replaced(k, length) for k in kids)
+    if all(a is b for a, b in zip(new, kids, strict=True)):
+        return expr
+    return A.rebuild(expr, new)
 
 
 def _looks_like(text: str, self_name: str) -> bool:
