@@ -426,6 +426,8 @@ class CallEvaluator(ExpressionEvaluator):
         """`len(xs)`: its length when known, else a number its size allows."""
         term = containers.length_term(sequence)
         if term is not None:
+            if A.syms(term):  # what else its size says of it
+                state.assume(containers.at(containers.size_of(sequence), term))
             return Value("int", term)
         value = self.unknown(node, "int")
         size = containers.size_of(sequence)
@@ -611,13 +613,16 @@ class CallEvaluator(ExpressionEvaluator):
             return result
         else:
             return self.unknown(node)
-        ok = True
+        ok, reports = True, len(self.ctx.diagnostics)
         if kept is not None and new is not None:
             ok = self._check_new(state, new, kept, method, site)
-        if ok and kept is not None and updated is not None and kept.size != A.TRUE:
+        quiet = len(self.ctx.diagnostics) == reports  # one report per statement
+        if ok and quiet and kept is not None and kept.size != A.TRUE and updated:
             ok = self.check.check_size(state, updated, kept, self.site)
         if not ok and kept is not None:  # reported: from here on, its declaration
             updated = containers.declared(receiver.kind, kept)
+        elif updated is not None:
+            updated = containers.holding(updated)
         if updated is not None:
             self.store(func.value, updated, state)
         return result
@@ -626,9 +631,11 @@ class CallEvaluator(ExpressionEvaluator):
         self, state: State, new: Value, kept: Kept, method: str, site: ast.AST
     ) -> bool:
         """The elements `append`, `insert` or `extend` add keep the declaration."""
-        one = replace(kept, size=A.TRUE)
-        if method == "extend":
-            return self.check.check_items(state, new, one, site)
+        one = containers.each_only(kept)
+        if method == "extend":  # its elements end the list: name them from the end
+            count = len(new.elements) if new.elements is not None else 0
+            labels = tuple(f"{kept.label}[{i - count}]" for i in range(count))
+            return self.check.check_items(state, new, one, site, labels or None)
         label = f"{kept.label}[-1]" if method == "append" else f"{kept.label}[i]"
         element = Value("list", elements=(new,), sites=(site,))
         return self.check.check_items(state, element, one, site, labels=(label,))

@@ -201,7 +201,8 @@ class Checker:
     ) -> Value:
         """A fresh value of `name` that satisfies its refinement."""
         if decl.item is not None:
-            return containers.declared(decl.base, self.kept(name, decl, lookup))
+            found = containers.declared(decl.base, self.kept(name, decl, lookup))
+            return self.with_length(found, name)
         value = self.ctx.fresh(decl.base, f"`{name}`", decl.unit)
         if value.term is not None:
             state.assume(A.substitute(decl.predicate, {**lookup, "_": value.term}))
@@ -223,6 +224,21 @@ class Checker:
             name,
             Declared(f"annotation of `{name}`", self.path, decl.line),
         )
+
+    def with_length(self, value: Value, name: str) -> Value:
+        """`value` with its length a symbol of its own, so that every `len()` and
+        truth test of it in a path speak of the same number."""
+        if value.items is None or containers.length_term(value) is not None:
+            return value
+        length = self.ctx.fresh("int", f"`len({name})`").known_term
+        pinned = A.conjoin(
+            [
+                A.Binary("==", containers.SELF, length),
+                A.Binary(">=", containers.SELF, containers.number(0)),
+                *([value.items.size] if value.items.size != A.TRUE else []),
+            ]
+        )
+        return replace(value, items=replace(value.items, size=pinned))
 
     def assign_sequence(
         self,
@@ -297,10 +313,16 @@ class Checker:
                 self._check_every(state, value, kept, site)
         if ok and kept.size != A.TRUE:
             ok = self.check_size(state, value, kept, site)
+        return ok and self.check_shape(state, value, kept, site)
+
+    def check_shape(
+        self, state: State, value: Value, kept: Kept, site: ast.AST
+    ) -> bool:
+        """A message array's fixed size or bound, when the length is known."""
         length = containers.length_term(value) if value.kind in SEQUENCES else None
-        if ok and kept.shape != A.TRUE and length is not None and not A.syms(length):
-            ok = self.check_size(state, value, replace(kept, size=kept.shape), site)
-        return ok
+        if kept.shape == A.TRUE or length is None or A.syms(length):
+            return True
+        return self.check_size(state, value, replace(kept, size=kept.shape), site)
 
     def _check_item(
         self,
@@ -364,7 +386,7 @@ class Checker:
         if length is not None:
             goal = containers.at(kept.size, length)
         else:
-            fresh = self.ctx.fresh("int", f"len({kept.label})").known_term
+            fresh = self.ctx.fresh("int", f"`len({kept.label})`").known_term
             have = containers.at(
                 A.conjoin(
                     [
@@ -396,12 +418,13 @@ class Checker:
         size = containers.size_of(value)
         if kept.size != A.TRUE:
             size = A.conjoin([size, kept.size]) if size != A.TRUE else kept.size
-        return Value(
+        stored = Value(
             value.kind,
             unit=kept.unit or value.unit,
             elements=elements,
             items=Items(kept.item, each, size, kept),
         )
+        return self.with_length(stored, kept.label)
 
     # -- message fields ------------------------------------------------------
     def write_field(
@@ -497,7 +520,10 @@ class Checker:
         ):
             self.sequence_fits(value, site, f"`{target}`", "array")
         elif spec.kind != "msg" and not spec.loose:
-            self.check_items(state, value, kept, site)
+            # rclpy's setters assert a fixed size or bound; ROS 1 only minds it when
+            # the message is serialized, and code may fix the length before that
+            shaped = replace(kept, shape=A.TRUE) if self.ctx.ros1 else kept
+            self.check_items(state, value, shaped, site)
         # the field's declaration, which holds its fixed size too
         stored = containers.declared("list", kept)
         obj.fields[name] = stored

@@ -124,6 +124,11 @@ def declared(kind: str, kept: Kept) -> Value:
     )
 
 
+def each_only(kept: Kept) -> Kept:
+    """A declaration's parts on each element (to check elements being added)."""
+    return replace(kept, size=A.TRUE, shape=A.TRUE)
+
+
 def stripped(value: Value) -> Value:
     """What stays true of a list that something else may change: its declaration
     (or only its elements' kind and unit). Tuples never change."""
@@ -139,7 +144,8 @@ def with_element(
     value: Value, element: Value, index: int | None = None, grows: bool = True
 ) -> Value:
     """`value` after `append(element)` (`grows`), or after one element is replaced
-    (at `index` when known). A declaration's parts were checked by the caller."""
+    (at `index` when known). The caller checks a declaration against it (and then
+    adds what the declaration says of the length, `holding`)."""
     items = value.items or Items(item_kind(value))
     elements = value.elements
     if elements is not None and element.term is not None and grows:
@@ -175,8 +181,6 @@ def with_element(
             if length is not None
             else A.Binary(">=", SELF, number(1))
         )
-    if kept is not None and kept.size != A.TRUE:
-        size = A.conjoin([size, kept.size])
     kind = _joint_kind(item_kind(value), element.kind)
     unit = value.unit if value.unit == element.unit or element.literal else None
     if kept is not None:
@@ -186,6 +190,16 @@ def with_element(
     return Value(
         value.kind, unit=unit, elements=elements, items=Items(kind, each, size, kept)
     )
+
+
+def holding(value: Value) -> Value:
+    """`value` once it was checked against its declaration: its length also keeps
+    what the declaration says."""
+    kept = value.items.kept if value.items is not None else None
+    if kept is None or kept.size == A.TRUE or value.items is None:
+        return value
+    size = A.conjoin([value.items.size, kept.size])
+    return replace(value, items=replace(value.items, size=size))
 
 
 def _joint_kind(a: str, b: str) -> str:
@@ -394,7 +408,7 @@ def shared_names(scope: ast.AST) -> set[str]:
     nested function or class counts as shared (it may run at any time)."""
     shared: set[str] = set()
     body = getattr(scope, "body", [])
-    todo: list[tuple[ast.AST, bool]] = [(n, False) for n in body]
+    todo: list[tuple[ast.AST, bool]] = [(n, isinstance(n, _NESTED)) for n in body]
     while todo:
         node, nested = todo.pop()
         for child in _children(node):

@@ -516,9 +516,9 @@ class ExpressionEvaluator:
             base.kind in ("tuple", "list") or self.is_read_only_table(node.value)
         ):  # a list keeps its elements only while nothing else can change it
             found = self._look_up(base, key, node, state)
-            if found is not None:
-                return found
-        if base.kind in SEQUENCES:
+            if found is not None:  # a list inside a table is shared with it
+                return containers.stripped(found)
+        if base.kind in SEQUENCES and key.kind in ("int", "bool", "unknown"):
             if isinstance(node.slice, ast.Slice):
                 return containers.sliced(base)
             return self.element(base, node, state)
@@ -532,7 +532,7 @@ class ExpressionEvaluator:
         if sequence.elements:
             found = self._one_of(list(sequence.elements), node, state)
             if found is not None:
-                return found
+                return containers.stripped(found)
         kind = containers.item_kind(sequence)
         if kind not in ("int", "float", "bool", "str"):
             kind = "unknown"
@@ -677,6 +677,11 @@ class ExpressionEvaluator:
             return A.Binary("!=", value.term, A.Str(""))
         if value.kind == "none":
             return A.Bool(False)
+        length = containers.length_term(value) if value.kind in SEQUENCES else None
+        if (
+            length is not None and value.kind != "generator"
+        ):  # a list is true if not empty
+            return A.Binary(">", length, A.Num(Fraction(0), True))
         return self.unknown(node, "bool").term  # type: ignore[return-value]
 
 

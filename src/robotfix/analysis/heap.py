@@ -157,7 +157,7 @@ def _array(
     if spec.size is not None:
         size: A.Expr = A.Binary("==", containers.SELF, containers.number(spec.size))
     else:
-        length = ctx.fresh("int", f"len({description})").known_term
+        length = ctx.fresh("int", f"`len({description})`").known_term
         size = A.conjoin(
             [
                 A.Binary("==", containers.SELF, length),

@@ -330,8 +330,8 @@ class Interpreter(CallEvaluator):
                 parts = None
             for index, element in enumerate(target.elts):
                 inner = element.value if isinstance(element, ast.Starred) else element
-                if parts is not None and inner is element:
-                    self.bind(inner, parts[index], state)
+                if parts is not None and inner is element:  # a list inside is shared
+                    self.bind(inner, containers.stripped(parts[index]), state)
                 else:
                     parts = None  # after a starred target the positions shift
                     self.bind(inner, self.unknown(inner), state)
@@ -381,7 +381,7 @@ class Interpreter(CallEvaluator):
         if isinstance(target.slice, ast.Slice):
             if kept is not None:
                 ok = self.check.check_items(
-                    state, value, replace(kept, size=A.TRUE), self.site
+                    state, value, containers.each_only(kept), self.site
                 )
             updated = containers.forgetting(receiver)
         else:
@@ -391,7 +391,7 @@ class Interpreter(CallEvaluator):
                 ok = self.check.check_items(
                     state,
                     element,
-                    replace(kept, size=A.TRUE),
+                    containers.each_only(kept),
                     self.site,
                     labels=(f"{kept.label}[{index}]",),
                 )
@@ -406,7 +406,7 @@ class Interpreter(CallEvaluator):
             )
         if not ok and kept is not None:  # reported: from here on, its declaration
             updated = containers.declared(receiver.kind, kept)
-        self.store(target.value, updated, state)
+        self.store(target.value, containers.holding(updated), state)
 
     def store(self, target: ast.expr, value: Value, state: State) -> None:
         """Put a list that changed back where it lives: a local name, `self.x`, or a
