@@ -298,6 +298,28 @@ def test_fraction_bounds_are_kept_exact() -> None:
     assert found == []
 
 
+def test_a_module_list_only_read_is_a_constant_table() -> None:
+    found = check(
+        "GAINS = [0.5, 1.0, 2.0]\n"
+        "def f(i: int) -> None:\n"
+        "    g: Annotated[float, '_ <= 2'] = GAINS[i]\n"
+        "    h: Annotated[float, '_ == 2'] = max(GAINS)\n"
+        "    k: Annotated[float, '_ < 2'] = GAINS[2]\n"
+    )
+    assert codes(found) == [("RF101", 5)]
+
+
+def test_comprehensions_keep_what_they_compute() -> None:
+    found = check(
+        "def f(xs: Annotated[list[float], '_ >= 0']) -> None:\n"
+        "    a: Annotated[list[float], '_ >= 0'] = [2 * x for x in xs]\n"
+        "    b: Annotated[list[float], '_ > 1'] = [x for x in xs if x > 1]\n"
+        "    c: Annotated[list[float], '_ > 0'] = [x - 1 for x in xs]\n"
+        "    d: Annotated[float, '_ >= 1'] = min(x + 1 for x in xs)\n"
+    )
+    assert codes(found) == [("RF102", 4)]
+
+
 def test_rule_codes_used_exist() -> None:
     assert {"RF101", "RF102", "RF302", "RF401", "RF501", "RF505"} <= set(
         rules.ALL_RULES

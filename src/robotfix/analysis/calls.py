@@ -559,7 +559,6 @@ class CallEvaluator(ExpressionEvaluator):
         updated: Value | None = None
         result: Value = NONE
         new: Value | None = None
-        site: ast.AST = self.site
         if method in ("append", "insert") and len(args) == (
             1 if method == "append" else 2
         ):
@@ -595,16 +594,12 @@ class CallEvaluator(ExpressionEvaluator):
                 elements=(),
                 items=Items(containers.item_kind(receiver), A.TRUE, A.TRUE, kept),
             )
-        elif method in ("sort", "reverse", "remove") and receiver.kind == "list":
-            grows = False if method == "remove" else None
-            updated = containers.forgetting(receiver, grows=grows)
-            if method != "remove":
-                updated = replace(
-                    containers.copied(receiver),
-                    items=replace(
-                        containers.copied(receiver).items or Items(), kept=kept
-                    ),
-                )
+        elif method == "remove" and receiver.kind == "list":
+            updated = containers.forgetting(receiver, grows=False)
+        elif method in ("sort", "reverse") and receiver.kind == "list":
+            reordered = containers.copied(receiver)  # the same elements
+            items = reordered.items or Items()
+            updated = replace(reordered, items=replace(items, kept=kept))
         elif method == "copy" and not args:
             return containers.copied(receiver)
         elif method in ("index", "count"):
@@ -615,7 +610,7 @@ class CallEvaluator(ExpressionEvaluator):
             return self.unknown(node)
         ok, reports = True, len(self.ctx.diagnostics)
         if kept is not None and new is not None:
-            ok = self._check_new(state, new, kept, method, site)
+            ok = self._check_new(state, new, kept, method, self.site)
         quiet = len(self.ctx.diagnostics) == reports  # one report per statement
         if ok and quiet and kept is not None and kept.size != A.TRUE and updated:
             ok = self.check.check_size(state, updated, kept, self.site)

@@ -368,7 +368,7 @@ class Checker:
         when not proved: an element that breaks it may not exist)."""
         kind = kept.item if kept.item in ("int", "float", "bool", "str") else "unknown"
         element = self.ctx.fresh(kind, f"an element of `{kept.label}`")
-        have = containers.at(containers.each_of(value), element.known_term)
+        have = self.instantiate(containers.each_of(value), element.known_term)
         label = f"{kept.label}[i]"
         for part in A.conjuncts(kept.each):
             goal = A.Binary(
@@ -381,7 +381,18 @@ class Checker:
             if outcome != PROVED:
                 return
 
+    def instantiate(self, each: A.Expr, term: A.Expr) -> A.Expr:
+        """What holds of every element, for the element `term` (with symbols of its
+        own for the values each element has of its own)."""
+        return containers.instantiate(each, term, self._bound_symbol)
+
+    def _bound_symbol(self, name: str) -> A.Expr:
+        """A fresh symbol for a bound name `#<id>`, described as the one it was."""
+        described = self.ctx.sym_names.get(int(name[1:]), "an element")
+        return self.ctx.fresh("unknown", described).known_term
+
     def check_size(self, state: State, value: Value, kept: Kept, site: ast.AST) -> bool:
+        """The length of `value` keeps `kept.size` (a warning when not provable)."""
         length = containers.length_term(value) if value.kind in SEQUENCES else None
         if length is not None:
             goal = containers.at(kept.size, length)

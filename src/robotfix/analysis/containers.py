@@ -14,6 +14,7 @@ checks are in checks.py, the evaluation in expressions.py and calls.py.
 from __future__ import annotations
 
 import ast
+from collections.abc import Callable
 from dataclasses import replace
 from fractions import Fraction
 
@@ -30,10 +31,6 @@ MUTATORS = frozenset(
     {"append", "extend", "insert", "pop", "remove", "clear", "sort", "reverse"}
 )
 READERS = frozenset({"index", "count", "copy"})
-
-
-def is_sequence(value: Value) -> bool:
-    return value.kind in SEQUENCES
 
 
 def each_of(value: Value) -> A.Expr:
@@ -112,6 +109,33 @@ def number(value: int) -> A.Num:
 def at(predicate: A.Expr, term: A.Expr) -> A.Expr:
     """`predicate` with `_` standing for `term`."""
     return A.substitute(predicate, {"_": term})
+
+
+# What holds of every element may speak of values of its own (`[r * 100 for r in
+# ranges]`: each element is `r * 100` for some `r >= 0`): these are names `#<id>`,
+# which every use of the predicate replaces by symbols of its own.
+BOUND = "#"
+
+
+def bound(term: A.Expr, since: int) -> A.Expr:
+    """`term` with the symbols newer than `since` made bound names."""
+    if isinstance(term, A.Sym):
+        return A.Name(f"{BOUND}{term.ident}") if term.ident > since else term
+    kids = A.children(term)
+    if not kids:
+        return term
+    return A.rebuild(term, tuple(bound(k, since) for k in kids))
+
+
+def instantiate(
+    predicate: A.Expr, term: A.Expr, fresh: Callable[[str], A.Expr]
+) -> A.Expr:
+    """`at(predicate, term)`, its bound names replaced by fresh symbols (one per
+    name), so that each element has values of its own."""
+    names = {
+        n.name: fresh(n.name) for n in A.names(predicate) if n.name.startswith(BOUND)
+    }
+    return A.substitute(predicate, {**names, "_": term})
 
 
 def declared(kind: str, kept: Kept) -> Value:
@@ -264,7 +288,8 @@ def concatenated(x: Value, y: Value) -> Value:
         elements = (*x.elements, *y.elements)
         return Value(kind, unit=unit, elements=elements)
     lx, ly = length_term(x), length_term(y)
-    size = A.Binary("==", SELF, A.Binary("+", lx, ly)) if lx and ly else A.TRUE
+    both = lx is not None and ly is not None
+    size = A.Binary("==", SELF, A.Binary("+", lx, ly)) if both else A.TRUE  # type: ignore[arg-type]
     each = A.Binary("or", each_of(x), each_of(y))
     kinds = {item_kind(x), item_kind(y)}
     item = kinds.pop() if len(kinds) == 1 else "unknown"
@@ -379,26 +404,12 @@ def lengths_as(expr: A.Expr, path: str, replacement: A.Expr) -> A.Expr:
     return A.rebuild(expr, new)
 
 
-def without_sym(expr: A.Expr, ident: int, replacement: A.Expr) -> A.Expr:
-    """`expr` with the solver symbol `ident` replaced."""
-    if isinstance(expr, A.Sym):
-        return replacement if expr.ident == ident else expr
-    kids = A.children(expr)
-    if not kids:
-        return expr
-    return A.rebuild(expr, tuple(without_sym(k, ident, replacement) for k in kids))
-
-
-def newer_syms(expr: A.Expr, since: int) -> set[int]:
-    return {s.ident for s in A.syms(expr) if s.ident > since}
-
-
 # Calls that only read the list they are given (or copy it).
 READING_CALLS = frozenset(
     {"len", "min", "max", "sum", "sorted", "list", "tuple", "set", "frozenset"}
     | {"enumerate", "reversed", "iter", "any", "all", "zip", "print", "str", "repr"}
 )
-_NESTED = (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef)
+_NESTED = frozenset({ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef})
 
 
 def shared_names(scope: ast.AST) -> set[str]:
@@ -408,28 +419,22 @@ def shared_names(scope: ast.AST) -> set[str]:
     nested function or class counts as shared (it may run at any time)."""
     shared: set[str] = set()
     body = getattr(scope, "body", [])
-    todo: list[tuple[ast.AST, bool]] = [(n, isinstance(n, _NESTED)) for n in body]
+    todo: list[tuple[ast.AST, bool]] = [(n, n.__class__ in _NESTED) for n in body]
+    name_class, load_class = ast.Name, ast.Load
     while todo:
         node, nested = todo.pop()
-        for child in _children(node):
-            if isinstance(child, ast.Name):
-                load = child.ctx.__class__ is ast.Load
-                if load and (nested or not _plain_use(node, child)):
-                    shared.add(child.id)
-            else:
-                todo.append((child, nested or isinstance(child, _NESTED)))
+        for field in node._fields:
+            value = getattr(node, field, None)
+            for child in value if value.__class__ is list else (value,):
+                kind = child.__class__
+                if kind is name_class:
+                    if child.ctx.__class__ is load_class and (  # type: ignore[union-attr]
+                        nested or not _plain_use(node, child)  # type: ignore[arg-type]
+                    ):
+                        shared.add(child.id)  # type: ignore[union-attr]
+                elif isinstance(child, ast.AST):
+                    todo.append((child, nested or kind in _NESTED))
     return shared
-
-
-def _children(node: ast.AST) -> list[ast.AST]:
-    found: list[ast.AST] = []
-    for name in node._fields:
-        value = getattr(node, name, None)
-        if value.__class__ is list:
-            found.extend(v for v in value if isinstance(v, ast.AST))
-        elif isinstance(value, ast.AST):
-            found.append(value)
-    return found
 
 
 def _plain_use(parent: ast.AST, name: ast.Name) -> bool:

@@ -536,10 +536,10 @@ class ExpressionEvaluator:
         kind = containers.item_kind(sequence)
         if kind not in ("int", "float", "bool", "str"):
             kind = "unknown"
-        value = self.unknown(node, kind, sequence.unit)
+        value = replace(self.unknown(node, kind, sequence.unit), scale=sequence.scale)
         each = containers.each_of(sequence)
         if each != A.TRUE:
-            state.assume(containers.at(each, value.known_term))
+            state.assume(self.check.instantiate(each, value.known_term))
         return value
 
     def eval_Tuple(self, node: ast.Tuple | ast.List, state: State) -> Value:
@@ -558,11 +558,14 @@ class ExpressionEvaluator:
             return self.unknown(node)
         kind = "tuple" if node.__class__ is ast.Tuple else "list"
         elements = tuple(values)
+        unit = containers.common_unit(elements)
+        scales = {v.scale for v in elements if not v.literal and v.unit == unit}
         return Value(
             kind,
-            unit=containers.common_unit(elements),
+            unit=unit,
             elements=elements,
             sites=tuple(node.elts),
+            scale=scales.pop() if unit is not None and len(scales) == 1 else 1.0,
         )
 
     eval_List = eval_Tuple

@@ -153,7 +153,7 @@ def _array(
     obj = state.heap[ref]
     kept = array_rule(ctx, state, ref, name, spec, description)
     if obj.origin == "constructed" and name not in obj.reported:
-        return replace(default_array(ctx, spec, kept), default_of=(ref, name))
+        return replace(default_array(spec, kept), default_of=(ref, name))
     if spec.size is not None:
         size: A.Expr = A.Binary("==", containers.SELF, containers.number(spec.size))
     else:
@@ -170,7 +170,7 @@ def _array(
     return value
 
 
-def default_array(ctx: FileContext, spec: FieldSpec, kept: Kept) -> Value:
+def default_array(spec: FieldSpec, kept: Kept) -> Value:
     """What an array field never set holds: no element, or `size` zeros."""
     count = spec.size or 0
     zero = DEFAULTS.get(spec.kind)

@@ -289,15 +289,19 @@ class Interpreter(CallEvaluator):
                 value = self.check.assign_refined(
                     state, target.id, decl, value, self.site, lookup
                 )
+            whole = value
             if value.kind == "list" and self.is_shared(target.id):
                 value = containers.stripped(value)
             bound = state.env[target.id] = replace(value, uninit=None, default_of=None)
             self.note_hover(target, lambda: self.describe_name(target.id, bound, state))
             if self.scope.kind == "module" or (
                 self.scope.kind == "class" and self.scope.parent is self.scope.module()
-            ):
+            ):  # a list table only read anywhere is a constant, shared or not
+                recorded = bound
+                if whole is not value:
+                    recorded = replace(whole, uninit=None, default_of=None)
                 self.ctx.constants.record(
-                    self.scope.kind, self.scope.name, target.id, bound
+                    self.scope.kind, self.scope.name, target.id, recorded
                 )
         elif isinstance(target, ast.Attribute):
             base = self.eval(target.value, state)
@@ -470,23 +474,29 @@ class Interpreter(CallEvaluator):
             self.scope = saved
         each: A.Expr = A.TRUE
         term = value.term
-        if term is not None and value.kind in ("int", "float", "bool", "str"):
-            if isinstance(term, A.Sym) and term.ident > mark:
-                facts = [
-                    f
-                    for f in inner.facts[known:]
-                    if containers.newer_syms(f, mark) <= {term.ident}
-                ]
-                each = containers.without_sym(
-                    A.conjoin(facts), term.ident, containers.SELF
-                )
-            elif not containers.newer_syms(term, mark):
-                each = A.Binary("==", containers.SELF, term)
+        if term is not None and value.kind in (
+            "int",
+            "float",
+            "bool",
+            "str",
+            "unknown",
+        ):
+            # each element is the value for some iteration: the symbols this one
+            # made are its own (bound names), the facts it added hold of them
+            each = containers.bound(
+                A.conjoin(
+                    [A.Binary("==", containers.SELF, term), *inner.facts[known:]]
+                ),
+                mark,
+            )
+            if A.larger_than(each, 300):
+                each = A.TRUE
         item = (
             value.kind if value.kind in ("int", "float", "bool", "str") else "unknown"
         )
         unit = None if value.literal else value.unit
-        return Value(kind, unit=unit, items=Items(item, each))
+        scale = 1.0 if value.literal else value.scale  # `[r * 100 for r in ranges]`
+        return Value(kind, unit=unit, items=Items(item, each), scale=scale)
 
     def _bind_plain(self, target: ast.expr, value: Value, state: State) -> None:
         """Bind a comprehension's target (its own names: no refinement applies)."""
