@@ -140,6 +140,26 @@ def test_unset_array_default_breaks_a_length_refinement(tmp_path: Path) -> None:
     assert codes(found) == [("RF302", 3)]
 
 
+def test_lengths_of_two_arrays_are_assumed_where_a_message_arrives(
+    tmp_path: Path,
+) -> None:
+    catalog = catalog_with(
+        tmp_path,
+        "Scan.msg",
+        "robot_msgs/Scan.msg\nfloat32[] ranges\nfloat32[] intensities\n"
+        "#RobotFix# len(ranges) == len(intensities)\n",
+    )
+    assert catalog_problems(catalog) == []
+    found = check(
+        "from robot_msgs.msg import Scan\n"
+        "def f(s: Scan) -> None:\n"
+        "    a: Annotated[int, '_ == 0'] = len(s.ranges) - len(s.intensities)\n"
+        "    b: Annotated[int, '_ == 1'] = len(s.ranges) - len(s.intensities)\n",
+        catalog,
+    )
+    assert codes(found) == [("RF101", 4)]
+
+
 def test_array_annotation_problems(tmp_path: Path) -> None:
     catalog = catalog_with(
         tmp_path,

@@ -153,6 +153,14 @@ def each_only(kept: Kept) -> Kept:
     return replace(kept, size=A.TRUE, shape=A.TRUE)
 
 
+def followed(value: Value) -> bool:
+    """Whether RobotFix knows more of a list than its elements' kind and unit."""
+    items = value.items
+    return value.elements is not None or (
+        items is not None and (items.each != A.TRUE or items.size != A.TRUE)
+    )
+
+
 def stripped(value: Value) -> Value:
     """What stays true of a list that something else may change: its declaration
     (or only its elements' kind and unit). Tuples never change."""

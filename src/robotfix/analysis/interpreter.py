@@ -141,6 +141,8 @@ class Interpreter(CallEvaluator):
         if name in scope.local_names:
             bound = state.env.get(name)
             if isinstance(bound, Value):
+                if bound.kind == "list" and containers.followed(bound):
+                    return self._unshared(name, bound)
                 return bound
             decl = scope.decls.get(name)
             if bound is MAYBE:
@@ -289,19 +291,13 @@ class Interpreter(CallEvaluator):
                 value = self.check.assign_refined(
                     state, target.id, decl, value, self.site, lookup
                 )
-            whole = value
-            if value.kind == "list" and self.is_shared(target.id):
-                value = containers.stripped(value)
             bound = state.env[target.id] = replace(value, uninit=None, default_of=None)
             self.note_hover(target, lambda: self.describe_name(target.id, bound, state))
             if self.scope.kind == "module" or (
                 self.scope.kind == "class" and self.scope.parent is self.scope.module()
-            ):  # a list table only read anywhere is a constant, shared or not
-                recorded = bound
-                if whole is not value:
-                    recorded = replace(whole, uninit=None, default_of=None)
+            ):
                 self.ctx.constants.record(
-                    self.scope.kind, self.scope.name, target.id, recorded
+                    self.scope.kind, self.scope.name, target.id, bound
                 )
         elif isinstance(target, ast.Attribute):
             base = self.eval(target.value, state)
@@ -361,14 +357,15 @@ class Interpreter(CallEvaluator):
         state.env[key] = replace(value, uninit=None, default_of=None)
 
     # -- lists ---------------------------------------------------------------
-    def is_shared(self, name: str) -> bool:
-        """Whether the list a name holds may also be held elsewhere (so that what
-        it holds element by element cannot be trusted)."""
-        if self.scope.kind == "class":
-            return True
-        if self._shared is None:
-            self._shared = containers.shared_names(self.scope.node)
-        return name in self._shared
+    def _unshared(self, name: str, value: Value) -> Value:
+        """A local list as read: what it holds element by element only if no other
+        name, attribute or callee can change it (else what its declaration says)."""
+        if self.scope.kind != "class":
+            if self._shared is None:  # one walk of the body, at the first such read
+                self._shared = containers.shared_names(self.scope.node)
+            if name not in self._shared:
+                return value
+        return containers.stripped(value)
 
     def _assign_element(
         self,
@@ -415,10 +412,9 @@ class Interpreter(CallEvaluator):
     def store(self, target: ast.expr, value: Value, state: State) -> None:
         """Put a list that changed back where it lives: a local name, `self.x`, or a
         message's array field (as its declaration)."""
-        if isinstance(target, ast.Name):
+        if isinstance(target, ast.Name):  # (a read strips it if it is shared)
             if target.id in self.scope.local_names:
-                shared = self.is_shared(target.id)
-                state.env[target.id] = containers.stripped(value) if shared else value
+                state.env[target.id] = value
             return
         if not isinstance(target, ast.Attribute):
             return

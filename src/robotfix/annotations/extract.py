@@ -124,7 +124,8 @@ def extract(
             predicate, base, mtype, text, node.lineno, self_name, start, known
         )
         length = A.Name("len(_)")
-        parts = A.conjuncts(found.predicate) if found is not None else []
+        mentioned = found is not None and "len" in text  # (cheap: most never do)
+        parts = A.conjuncts(found.predicate) if mentioned and found else []
         kept = [p for p in parts if _lengths_replaced(p, length) is p]
         if found is not None and len(kept) < len(parts):
             line, col = _at(start, 0)
