@@ -17,7 +17,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from robotfix import rules
-from robotfix.api import catalog_problems, check_source, interface_files
+from robotfix.api import catalog_problems, check_source, hover, interface_files
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
 from robotfix.ros.catalog import MsgCatalog
@@ -338,6 +338,18 @@ def test_comprehensions_keep_what_they_compute() -> None:
         "    d: Annotated[float, '_ >= 1'] = min(x + 1 for x in xs)\n"
     )
     assert codes(found) == [("RF102", 4)]
+
+
+def test_hover_shows_a_list_refinement_as_on_each_element() -> None:
+    text = (
+        HEADER
+        + "ranges: Annotated[list[float], \"Unit('m') and _ >= 0 and len(_) <= 5\"]"
+        " = [1.0]\n"
+    )
+    shown = hover(text, "node.py", 3, 1, _plain())
+    assert shown is not None
+    assert "`list[float]` of `m`" in shown
+    assert "each element `_ >= 0`" in shown and "length `_ <= 5`" in shown
 
 
 def test_rule_codes_used_exist() -> None:

@@ -35,6 +35,7 @@ KIND_NAMES = {
     "generator": "generator",
 }
 SCALAR_KINDS = frozenset({"int", "float", "bool", "str", "msg", "dict"})
+MAX_CHECKED = 256  # elements of a display checked one by one
 
 
 class Checker:
@@ -288,6 +289,8 @@ class Checker:
         Returns False after an error (the caller then assumes the declaration)."""
         ok = True
         known = value.elements if value.kind in SEQUENCES else None
+        if known is not None and len(known) > MAX_CHECKED:
+            known = None  # a long table: through what holds of every element
         if known is not None:
             sites = value.sites or ()
             warned = False

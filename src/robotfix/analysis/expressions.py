@@ -529,7 +529,7 @@ class ExpressionEvaluator:
         if sequence.keys is not None and sequence.name in ("zip", "enumerate"):
             parts = tuple(self.element(k, node, state) for k in sequence.keys)
             return Value("tuple", elements=parts)
-        if sequence.elements:
+        if sequence.elements and len(sequence.elements) <= containers.MAX_SPELLED:
             found = self._one_of(list(sequence.elements), node, state)
             if found is not None:
                 return containers.stripped(found)
