@@ -63,7 +63,7 @@ class CallEvaluator(ExpressionEvaluator):
                 isinstance(a, ast.Starred) for a in node.args
             ):
                 return self.sequence_method(func, receiver, args, node, state)
-            callee = self.attribute(receiver, func, state)
+            callee = self.eval_Attribute(func, state, receiver)
         else:
             callee = self.eval(func, state)
             args = [self.eval(a, state) for a in node.args]
@@ -382,7 +382,7 @@ class CallEvaluator(ExpressionEvaluator):
                 if spec is not None and spec.array:
                     text = self.ctx.source.segment(node) or node.attr
                     return heap.read_raw(self.ctx, state, base.ref, node.attr, text)
-            return self.attribute(base, node, state)
+            return self.eval_Attribute(node, state, base)
         return self.eval(node, state)
 
     def sequence_builtin(
@@ -632,7 +632,7 @@ class CallEvaluator(ExpressionEvaluator):
             labels = tuple(f"{kept.label}[{i - count}]" for i in range(count))
             return self.check.check_items(state, new, one, site, labels or None)
         label = f"{kept.label}[-1]" if method == "append" else f"{kept.label}[i]"
-        element = Value("list", elements=(new,), sites=(site,))
+        element = Value("list", elements=(new,), items=Items(sites=(site,)))
         return self.check.check_items(state, element, one, site, labels=(label,))
 
     def store(self, target: ast.expr, value: Value, state: State) -> None:

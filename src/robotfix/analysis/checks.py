@@ -292,7 +292,7 @@ class Checker:
         if known is not None and len(known) > MAX_CHECKED:
             known = None  # a long table: through what holds of every element
         if known is not None:
-            sites = value.sites or ()
+            sites = (value.items.sites if value.items else None) or ()
             warned = False
             for index, element in enumerate(known):
                 where = sites[index] if index < len(sites) else site

@@ -197,7 +197,7 @@ def with_element(
     if element.term is not None:
         each = A.Binary(
             "or",
-            each_of(replace(value, sites=None)),
+            each_of(value),
             A.Binary("==", SELF, element.term),
         )
     if A.larger_than(each, 200):
@@ -316,7 +316,7 @@ def repeated(value: Value, times: Value) -> Value | None:
         and known.denominator == 1
         and 0 <= known * len(value.elements) <= MAX_SPELLED
     ):
-        return replace(value, elements=value.elements * int(known), sites=None)
+        return replace(value, elements=value.elements * int(known), items=None)
     length = length_term(value)
     size = (
         A.Binary(
@@ -420,13 +420,13 @@ READING_CALLS = frozenset(
 _NESTED = frozenset({ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef})
 
 
-def shared_names(scope: ast.AST) -> set[str]:
-    """Names of a function or module body that may share their list with another
-    name, attribute, field or callee: used other than by a read, a change RobotFix
-    follows (`xs.append(v)`, `xs[i] = v`), unpacking, or `return`. A use inside a
-    nested function or class counts as shared (it may run at any time)."""
+def shared_names(body: list[ast.stmt], changes: bool = False) -> set[str]:
+    """Names in statements `body` (a function's or module's) that may share their
+    list with another name, attribute, field or callee: used other than by a read,
+    a change RobotFix follows (`xs.append(v)`, `xs[i] = v`), unpacking, or
+    `return`. A use inside a nested function or class counts as shared (it may run
+    at any time). With `changes`, a change it follows counts too (for a loop)."""
     shared: set[str] = set()
-    body = getattr(scope, "body", [])
     todo: list[tuple[ast.AST, bool]] = [(n, n.__class__ in _NESTED) for n in body]
     name_class, load_class = ast.Name, ast.Load
     while todo:
@@ -437,12 +437,22 @@ def shared_names(scope: ast.AST) -> set[str]:
                 kind = child.__class__
                 if kind is name_class:
                     if child.ctx.__class__ is load_class and (  # type: ignore[union-attr]
-                        nested or not _plain_use(node, child)  # type: ignore[arg-type]
+                        nested
+                        or not _plain_use(node, child)  # type: ignore[arg-type]
+                        or (changes and _change(node))
                     ):
                         shared.add(child.id)  # type: ignore[union-attr]
                 elif isinstance(child, ast.AST):
                     todo.append((child, nested or kind in _NESTED))
     return shared
+
+
+def _change(parent: ast.AST) -> bool:
+    """Whether a name used under `parent` has its list changed in place."""
+    kind = parent.__class__
+    if kind is ast.Subscript:
+        return parent.ctx.__class__ is not ast.Load  # type: ignore[attr-defined]
+    return kind is ast.Attribute and parent.attr in MUTATORS  # type: ignore[attr-defined]
 
 
 def _plain_use(parent: ast.AST, name: ast.Name) -> bool:

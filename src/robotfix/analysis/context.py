@@ -75,6 +75,9 @@ class FileContext:
         self.star_import = False
         self.ros1 = False  # ROS 1 code: standard messages have no default values
         self.constants = ConstantNames()  # which names are constants, and their values
+        # whether to keep what local lists hold element by element (decided once,
+        # when first needed)
+        self.follow_lists: bool | None = None
         self._reported: set[tuple[object, ...]] = set()
         # (span, markdown) for names and fields, kept only for editor hovers
         self.hovers: list[tuple[Span, str]] | None = None

@@ -48,6 +48,7 @@ class ExpressionEvaluator:
         self.program = program
         self.check = Checker(ctx)
         self.site: ast.AST = ast.Pass()  # the statement being interpreted
+        self.lists_seen = False  # whether a list was stored in a name or attribute
 
     # -- to be provided by the statement interpreter --------------------------
     def lookup_name(self, name: str, state: State, node: ast.AST) -> Value:
@@ -141,11 +142,12 @@ class ExpressionEvaluator:
     def decl_of(self, name: str) -> Refinement | None:
         return None
 
-    def eval_Attribute(self, node: ast.Attribute, state: State) -> Value:
-        return self.attribute(self.eval(node.value, state), node, state)
-
-    def attribute(self, base: Value, node: ast.Attribute, state: State) -> Value:
-        """`base.attr`, where `base` is the value of `node.value`."""
+    def eval_Attribute(
+        self, node: ast.Attribute, state: State, base: Value | None = None
+    ) -> Value:
+        """`base.attr`; `base`, the value of `node.value`, when already known."""
+        if base is None:
+            base = self.eval(node.value, state)
         if base.kind == "msg" and base.ref in state.heap:
             constant = self.member(base, node.attr, state)
             if constant is not None:  # `msg.ULTRASOUND`
@@ -255,6 +257,7 @@ class ExpressionEvaluator:
                     state, key, decl, self.refinement_lookup(decl, state)
                 )
             )
+            self.lists_seen = self.lists_seen or value.kind == "list"
         state.env[key] = value
         return value
 
@@ -564,7 +567,7 @@ class ExpressionEvaluator:
             kind,
             unit=unit,
             elements=elements,
-            sites=tuple(node.elts),
+            items=Items(sites=tuple(node.elts)),
             scale=scales.pop() if unit is not None and len(scales) == 1 else 1.0,
         )
 

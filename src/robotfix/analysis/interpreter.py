@@ -66,6 +66,32 @@ def analyze_module(ctx: FileContext) -> None:
             pending.extend(_analyze_body(ctx, program, node, parent, statics))
 
 
+def _refined_types(ctx: FileContext) -> bool:
+    """Whether a message, service or action type the file imports (or a message
+    inside one) has refinements. Only imported types are looked up, so the answer
+    depends on what the file's cache entry already depends on."""
+    todo: list[str] = []
+    for qualified in ctx.imports.values():
+        found = ctx.msg_type_named(qualified)
+        interface = None if found else ctx.interface_named(qualified)
+        if found:
+            todo.append(found)
+        elif interface:
+            todo += [f"{interface}_{s}" for s in ("Request", "Response", "Goal")]
+            todo += [f"{interface}_{s}" for s in ("Result", "Feedback")]
+    seen: set[str] = set()
+    while todo and len(seen) < 200:
+        name = todo.pop()
+        spec = None if name in seen else ctx.catalog.lookup(name)
+        seen.add(name)
+        if spec is None:
+            continue
+        if spec.invariants:
+            return True
+        todo += [f.msg_type for f in spec.fields.values() if f.msg_type]
+    return False
+
+
 def _analyze_body(
     ctx: FileContext,
     program: Program,
@@ -292,6 +318,7 @@ class Interpreter(CallEvaluator):
                     state, target.id, decl, value, self.site, lookup
                 )
             bound = state.env[target.id] = replace(value, uninit=None, default_of=None)
+            self.lists_seen = self.lists_seen or value.kind == "list"
             self.note_hover(target, lambda: self.describe_name(target.id, bound, state))
             if self.scope.kind == "module" or (
                 self.scope.kind == "class" and self.scope.parent is self.scope.module()
@@ -354,15 +381,27 @@ class Interpreter(CallEvaluator):
                 state, key, decl, value, self.site, lookup
             )
         value = containers.stripped(value)  # an attribute's list is shared
+        self.lists_seen = self.lists_seen or value.kind == "list"
         state.env[key] = replace(value, uninit=None, default_of=None)
 
     # -- lists ---------------------------------------------------------------
+    def follows_lists(self) -> bool:
+        """Whether what local lists hold element by element can matter in this
+        file: it has refinements, or a type it imports has (decided once)."""
+        if self.ctx.follow_lists is None:
+            self.ctx.follow_lists = "Annotated" in self.ctx.source.text or (
+                _refined_types(self.ctx)
+            )
+        return self.ctx.follow_lists
+
     def _unshared(self, name: str, value: Value) -> Value:
         """A local list as read: what it holds element by element only if no other
         name, attribute or callee can change it (else what its declaration says)."""
-        if self.scope.kind != "class":
+        if self.scope.kind != "class" and self.follows_lists():
             if self._shared is None:  # one walk of the body, at the first such read
-                self._shared = containers.shared_names(self.scope.node)
+                self._shared = containers.shared_names(
+                    getattr(self.scope.node, "body", [])
+                )
             if name not in self._shared:
                 return value
         return containers.stripped(value)
@@ -412,6 +451,7 @@ class Interpreter(CallEvaluator):
     def store(self, target: ast.expr, value: Value, state: State) -> None:
         """Put a list that changed back where it lives: a local name, `self.x`, or a
         message's array field (as its declaration)."""
+        self.lists_seen = True
         if isinstance(target, ast.Name):  # (a read strips it if it is shared)
             if target.id in self.scope.local_names:
                 state.env[target.id] = value
@@ -539,6 +579,7 @@ class Interpreter(CallEvaluator):
                     "unknown", f"parameter `{arg.arg}` of {function.name}()"
                 )
             state.env[arg.arg] = value
+            self.lists_seen = self.lists_seen or value.kind == "list"
             self.note_hover(
                 self._name_span(arg),
                 lambda: self.describe_name(arg.arg, value, state),  # noqa: B023
@@ -591,25 +632,27 @@ class Interpreter(CallEvaluator):
     def havoc(self, state: State, nodes: list[ast.stmt]) -> None:
         """Forget what `nodes` may write: assigned names and mentioned messages, and
         what lists they change (`xs.append(v)`, `xs[i] = v`) hold."""
+        lists: set[str] = set()  # names of lists that `nodes` mention
         for node in nodes:
             for child in walk(node):
-                kind = child.__class__
-                if kind is ast.Call and child.func.__class__ is ast.Attribute:  # type: ignore[attr-defined]
-                    if child.func.attr in containers.MUTATORS:  # type: ignore[attr-defined]
-                        self._forget_list(child.func.value, state)  # type: ignore[attr-defined]
-                elif kind is ast.Subscript and child.ctx.__class__ is not ast.Load:  # type: ignore[attr-defined]
-                    self._forget_list(child.value, state)  # type: ignore[attr-defined]
                 if (
                     isinstance(child, ast.Attribute)
-                    and isinstance(child.ctx, ast.Store)
                     and isinstance(child.value, ast.Name)
+                    and (isinstance(child.ctx, ast.Store) or self.lists_seen)
                 ):
-                    state.env.pop(f"{child.value.id}.{child.attr}", None)
+                    key = f"{child.value.id}.{child.attr}"
+                    kept = state.env.get(key)
+                    if isinstance(child.ctx, ast.Store) or (
+                        isinstance(kept, Value) and kept.kind == "list"
+                    ):  # `self.xs.append(v)`: forget what it held
+                        state.env.pop(key, None)
                 if not isinstance(child, ast.Name):
                     continue
                 bound = state.env.get(child.id)
                 if isinstance(bound, Value) and bound.ref is not None:
                     heap.havoc(state, bound.ref)
+                elif isinstance(bound, Value) and bound.kind == "list":
+                    lists.add(child.id)
                 if (
                     isinstance(child.ctx, ast.Store)
                     and child.id in self.scope.local_names
@@ -622,14 +665,13 @@ class Interpreter(CallEvaluator):
                         )
                     else:
                         state.env[child.id] = self.unknown(child)
-
-    def _forget_list(self, node: ast.expr, state: State) -> None:
-        if isinstance(node, ast.Name):
-            bound = state.env.get(node.id)
-            if isinstance(bound, Value) and bound.kind in SEQUENCES:
-                state.env[node.id] = containers.forgetting(bound)
-        elif isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name):
-            state.env.pop(f"{node.value.id}.{node.attr}", None)
+        if lists:  # those `nodes` may change (`xs.append(v)`, `xs[i] = v`, `b = xs`)
+            if self.follows_lists():
+                lists &= containers.shared_names(nodes, changes=True)
+            for name in lists:
+                bound = state.env.get(name)
+                if isinstance(bound, Value):
+                    state.env[name] = containers.forgetting(bound)
 
     # -- simple statements ---------------------------------------------------
     def visit_Expr(self, node: ast.Expr, state: State) -> State:

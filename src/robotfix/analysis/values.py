@@ -31,6 +31,8 @@ class Items:
     each: A.Expr = A.TRUE
     size: A.Expr = A.TRUE
     kept: Kept | None = None  # the declaration every change must keep
+    # a display's element nodes, where an element's diagnostic points
+    sites: tuple[object, ...] | None = field(default=None, compare=False)
 
 
 @dataclass(frozen=True)
@@ -76,8 +78,6 @@ class Value:
     scale: float = 1.0
     default_of: tuple[int, str] | None = field(default=None, compare=False)
     items: Items | None = None  # a sequence: what holds of its elements
-    # a display's element nodes, where an element's diagnostic points
-    sites: tuple[object, ...] | None = field(default=None, compare=False)
 
     @property
     def known_term(self) -> A.Expr:
