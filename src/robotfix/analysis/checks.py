@@ -511,7 +511,9 @@ class Checker:
             stored = self.ctx.fresh(spec.kind, f"`{target}`", unit)
             for _, path, inv in invariants:
                 state.assume(A.substitute(inv.predicate, {path: stored.known_term}))
-        obj.fields[name] = replace(stored, default_of=None)
+        obj.fields[name] = (
+            stored if stored.default_of is None else replace(stored, default_of=None)
+        )
         obj.reported.discard(name)
 
     def _write_array(

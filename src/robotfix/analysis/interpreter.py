@@ -317,7 +317,7 @@ class Interpreter(CallEvaluator):
                 value = self.check.assign_refined(
                     state, target.id, decl, value, self.site, lookup
                 )
-            bound = state.env[target.id] = replace(value, uninit=None, default_of=None)
+            bound = state.env[target.id] = value.settled()
             self.lists_seen = self.lists_seen or value.kind == "list"
             self.note_hover(target, lambda: self.describe_name(target.id, bound, state))
             if self.scope.kind == "module" or (
@@ -382,7 +382,7 @@ class Interpreter(CallEvaluator):
             )
         value = containers.stripped(value)  # an attribute's list is shared
         self.lists_seen = self.lists_seen or value.kind == "list"
-        state.env[key] = replace(value, uninit=None, default_of=None)
+        state.env[key] = value.settled()
 
     # -- lists ---------------------------------------------------------------
     def follows_lists(self) -> bool:

@@ -90,7 +90,15 @@ class Value:
         return self.kind in NUMERIC
 
     def with_unit(self, unit: Unit | None) -> Value:
+        if self.unit == unit and not self.literal and self.scale == 1.0:
+            return self
         return replace(self, unit=unit, literal=False, scale=1.0)
+
+    def settled(self) -> Value:
+        """The value as a name or field holds it: set, and not a default."""
+        if self.uninit is None and self.default_of is None:
+            return self  # (the common case: no copy)
+        return replace(self, uninit=None, default_of=None)
 
     def fits_unit(self, expected: Unit) -> bool:
         """Same unit; or the same dimension after the literal factors it was scaled by

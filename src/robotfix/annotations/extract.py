@@ -110,7 +110,8 @@ def extract(
         if text.strip() and not _is_refinement(predicate, self_name):
             continue
         typed = _unqualified(args[0], qualname)
-        container = _container(typed, qualname)
+        scalar = isinstance(typed, ast.Name) and typed.id in BASE_TYPES
+        container = None if scalar else _container(typed, qualname)
         if container is not None:
             kind, element, fixed = container
             found, problems = _refinement(
@@ -123,11 +124,12 @@ def extract(
         found, problems = _refinement(
             predicate, base, mtype, text, node.lineno, self_name, start, known
         )
+        if found is None or "len" not in text:  # (most never mention it)
+            return found, problems
         length = A.Name("len(_)")
-        mentioned = found is not None and "len" in text  # (cheap: most never do)
-        parts = A.conjuncts(found.predicate) if mentioned and found else []
+        parts = A.conjuncts(found.predicate)
         kept = [p for p in parts if _lengths_replaced(p, length) is p]
-        if found is not None and len(kept) < len(parts):
+        if len(kept) < len(parts):
             line, col = _at(start, 0)
             problems.append(
                 AnnotationProblem(
