@@ -81,6 +81,9 @@ class FileContext:
         self.star_import = False
         self.ros1 = False  # ROS 1 code: standard messages have no default values
         self.constants = ConstantNames()  # which names are constants, and their values
+        # whether to keep what local lists hold element by element (decided once,
+        # when first needed)
+        self.follow_lists: bool | None = None
         self._reported: set[tuple[object, ...]] = set()
         # RF511 notes, kept only if the file turns out RobotFix-like (`metadata_notes`)
         self._metadata_notes: list[Diagnostic] = []
@@ -100,6 +103,10 @@ class FileContext:
     # -- symbols and ids -----------------------------------------------------
     def fresh_id(self) -> int:
         self._next += 1
+        return self._next
+
+    def last_id(self) -> int:
+        """The newest symbol or heap id: those made later have larger ids."""
         return self._next
 
     def fresh(

@@ -15,14 +15,14 @@ from collections.abc import Callable
 from dataclasses import replace
 
 from robotfix import messages
-from robotfix.analysis import heap, hover
+from robotfix.analysis import containers, heap, hover
 from robotfix.analysis.calls import CallEvaluator
 from robotfix.analysis.constants import scan
 from robotfix.analysis.context import FileContext, Scope, build_scope
 from robotfix.analysis.index import index_module
 from robotfix.analysis.program import Function, Program, collect
 from robotfix.analysis.state import MAYBE, State, join
-from robotfix.analysis.values import CONTAINERS, NONE, Uninit, Value
+from robotfix.analysis.values import CONTAINERS, NONE, SEQUENCES, Items, Uninit, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import named_number
@@ -65,6 +65,32 @@ def analyze_module(ctx: FileContext) -> None:
             seen.add(id(node))
             pending.extend(_analyze_body(ctx, program, node, parent, statics))
     ctx.metadata_notes()
+
+
+def _refined_types(ctx: FileContext) -> bool:
+    """Whether a message, service or action type the file imports (or a message
+    inside one) has refinements. Only imported types are looked up, so the answer
+    depends on what the file's cache entry already depends on."""
+    todo: list[str] = []
+    for qualified in ctx.imports.values():
+        found = ctx.msg_type_named(qualified)
+        interface = None if found else ctx.interface_named(qualified)
+        if found:
+            todo.append(found)
+        elif interface:
+            todo += [f"{interface}_{s}" for s in ("Request", "Response", "Goal")]
+            todo += [f"{interface}_{s}" for s in ("Result", "Feedback")]
+    seen: set[str] = set()
+    while todo and len(seen) < 200:
+        name = todo.pop()
+        spec = None if name in seen else ctx.catalog.lookup(name)
+        seen.add(name)
+        if spec is None:
+            continue
+        if spec.invariants:
+            return True
+        todo += [f.msg_type for f in spec.fields.values() if f.msg_type]
+    return False
 
 
 def _analyze_body(
@@ -119,6 +145,7 @@ class Interpreter(CallEvaluator):
         # module names read in this function, which no function rebinds: one value
         # (and the fact its refinement gives) for the whole run of the function
         self.globals_read: dict[str, tuple[Value, A.Expr | None]] = {}
+        self._shared: set[str] | None = None  # names whose lists may be shared
 
     # -- blocks --------------------------------------------------------------
     def exec_block(self, body: list[ast.stmt], state: State) -> State:
@@ -141,6 +168,8 @@ class Interpreter(CallEvaluator):
         if name in scope.local_names:
             bound = state.env.get(name)
             if isinstance(bound, Value):
+                if bound.kind == "list" and containers.followed(bound):
+                    return self._unshared(name, bound)
                 return bound
             decl = scope.decls.get(name)
             if bound is MAYBE:
@@ -185,7 +214,8 @@ class Interpreter(CallEvaluator):
                 state.assume(fact)
             return value
         decl = self.scope.module().decls.get(name)
-        if decl is not None and decl.elements is not None:
+        if decl is not None and (decl.elements is not None or decl.item is not None):
+            # a tuple of refined elements, or a refined list or tuple
             value = self.check.assumed(
                 state, name, decl, self.refinement_lookup(decl, state)
             )
@@ -290,7 +320,8 @@ class Interpreter(CallEvaluator):
                 value = self.check.assign_refined(
                     state, target.id, decl, value, self.site, lookup
                 )
-            bound = state.env[target.id] = replace(value, uninit=None, default_of=None)
+            bound = state.env[target.id] = value.settled()
+            self.lists_seen = self.lists_seen or value.kind == "list"
             self.note_hover(target, lambda: self.describe_name(target.id, bound, state))
             if self.scope.kind == "module" or (
                 self.scope.kind == "class" and self.scope.parent is self.scope.module()
@@ -321,19 +352,24 @@ class Interpreter(CallEvaluator):
                     state, base.ref, target.attr, value, self.site, text
                 )
         elif isinstance(target, (ast.Tuple, ast.List)):
-            parts = value.elements if value.kind == "tuple" else None
+            parts = value.elements if value.kind in SEQUENCES else None
+            starred = any(isinstance(e, ast.Starred) for e in target.elts)
+            if parts is None and value.kind in SEQUENCES and not starred:
+                parts = tuple(self.element(value, e, state) for e in target.elts)
             if parts is None or len(parts) != len(target.elts):
                 parts = None
             for index, element in enumerate(target.elts):
                 inner = element.value if isinstance(element, ast.Starred) else element
-                if parts is not None and inner is element:
-                    self.bind(inner, parts[index], state)
+                if parts is not None and inner is element:  # a list inside is shared
+                    self.bind(inner, containers.stripped(parts[index]), state)
                 else:
                     parts = None  # after a starred target the positions shift
                     self.bind(inner, self.unknown(inner), state)
         elif isinstance(target, ast.Subscript):
-            self.eval(target.value, state)
-            self.eval(target.slice, state)
+            receiver = self.receiver(target.value, state)
+            key = self.eval(target.slice, state)
+            if receiver.kind == "list":
+                self._assign_element(target, receiver, key, value, state)
         elif isinstance(target, ast.Starred):
             self.bind(target.value, self.unknown(target), state)
 
@@ -347,7 +383,172 @@ class Interpreter(CallEvaluator):
             value = self.check.assign_refined(
                 state, key, decl, value, self.site, lookup
             )
-        state.env[key] = replace(value, uninit=None, default_of=None)
+        value = containers.stripped(value)  # an attribute's list is shared
+        self.lists_seen = self.lists_seen or value.kind == "list"
+        state.env[key] = value.settled()
+
+    # -- lists ---------------------------------------------------------------
+    def follows_lists(self) -> bool:
+        """Whether what local lists hold element by element can matter in this
+        file: it has refinements, or a type it imports has (decided once)."""
+        if self.ctx.follow_lists is None:
+            self.ctx.follow_lists = "Annotated" in self.ctx.source.text or (
+                _refined_types(self.ctx)
+            )
+        return self.ctx.follow_lists
+
+    def _unshared(self, name: str, value: Value) -> Value:
+        """A local list as read: what it holds element by element only if no other
+        name, attribute or callee can change it (else what its declaration says)."""
+        if self.scope.kind != "class" and self.follows_lists():
+            if self._shared is None:  # one walk of the body, at the first such read
+                self._shared = containers.shared_names(
+                    getattr(self.scope.node, "body", [])
+                )
+            if name not in self._shared:
+                return value
+        return containers.stripped(value)
+
+    def _assign_element(
+        self,
+        target: ast.Subscript,
+        receiver: Value,
+        key: Value,
+        value: Value,
+        state: State,
+    ) -> None:
+        """`xs[i] = v` (or `xs[a:b] = ys`): the new elements keep the list's
+        declaration; the list is stored back."""
+        kept = receiver.items.kept if receiver.items is not None else None
+        ok = True
+        if isinstance(target.slice, ast.Slice):
+            if kept is not None:
+                ok = self.check.check_items(
+                    state, value, containers.each_only(kept), self.site
+                )
+            updated = containers.forgetting(receiver)
+        else:
+            if kept is not None:
+                index = self.ctx.source.segment(target.slice) or "i"
+                element = Value("list", elements=(value,))
+                ok = self.check.check_items(
+                    state,
+                    element,
+                    containers.each_only(kept),
+                    self.site,
+                    labels=(f"{kept.label}[{index}]",),
+                )
+            position = key.term
+            index_value = (
+                int(position.value)
+                if isinstance(position, A.Num) and position.is_int
+                else None
+            )
+            updated = containers.with_element(
+                receiver, value, index=index_value, grows=False
+            )
+        if not ok and kept is not None:  # reported: from here on, its declaration
+            updated = containers.declared(receiver.kind, kept)
+        self.store(target.value, containers.holding(updated), state)
+
+    def store(self, target: ast.expr, value: Value, state: State) -> None:
+        """Put a list that changed back where it lives: a local name, `self.x`, or a
+        message's array field (as its declaration)."""
+        self.lists_seen = True
+        if isinstance(target, ast.Name):  # (a read strips it if it is shared)
+            if target.id in self.scope.local_names:
+                state.env[target.id] = value
+            return
+        if not isinstance(target, ast.Attribute):
+            return
+        base = self.eval(target.value, state)
+        if base.kind == "instance" and isinstance(target.value, ast.Name):
+            state.env[f"{target.value.id}.{target.attr}"] = containers.stripped(value)
+        elif base.kind == "msg" and base.ref in state.heap:
+            assert base.ref is not None
+            obj = state.heap[base.ref]
+            kept = value.items.kept if value.items is not None else None
+            obj.fields[target.attr] = (
+                containers.declared("list", kept)
+                if kept is not None
+                else containers.stripped(value)
+            )
+            obj.reported.discard(target.attr)
+
+    def comprehension(
+        self, node: ast.ListComp | ast.GeneratorExp, kind: str, state: State
+    ) -> Value:
+        """`[r for r in ranges if r > 0.1]`: its elements are what the iteration
+        and the conditions say of one element (facts about one element's own
+        symbols only, so that they hold of every element)."""
+        if any(g.is_async for g in node.generators):
+            return Value(kind, items=Items())
+        inner = state.fork()
+        mark, known = self.ctx.last_id(), len(inner.facts)
+        saved = self.scope
+        names = self.ctx.index.scopes.get(id(node))
+        own = set(names.local_names) if names is not None else set()
+        self.scope = Scope(
+            saved.kind,
+            saved.name,
+            saved.node,
+            saved.parent,
+            {k: v for k, v in saved.decls.items() if k not in own},
+            saved.local_names | own,
+            saved.global_names - own,
+        )
+        try:
+            for generator in node.generators:
+                iterable = self.eval(generator.iter, inner)
+                element = (
+                    self.element(iterable, generator.target, inner)
+                    if iterable.kind in SEQUENCES
+                    else self.unknown(generator.target)
+                )
+                self._bind_plain(generator.target, element, inner)
+                for test in generator.ifs:
+                    inner.assume(self.condition(test, inner))
+            value = self.eval(node.elt, inner)
+        finally:
+            self.scope = saved
+        each: A.Expr = A.TRUE
+        term = value.term
+        if term is not None and value.kind in (
+            "int",
+            "float",
+            "bool",
+            "str",
+            "unknown",
+        ):
+            # each element is the value for some iteration: the symbols this one
+            # made are its own (bound names), the facts it added hold of them
+            each = containers.bound(
+                A.conjoin(
+                    [A.Binary("==", containers.SELF, term), *inner.facts[known:]]
+                ),
+                mark,
+            )
+            if A.larger_than(each, 300):
+                each = A.TRUE
+        item = (
+            value.kind if value.kind in ("int", "float", "bool", "str") else "unknown"
+        )
+        unit = None if value.literal else value.unit
+        scale = 1.0 if value.literal else value.scale  # `[r * 100 for r in ranges]`
+        return Value(kind, unit=unit, items=Items(item, each), scale=scale)
+
+    def _bind_plain(self, target: ast.expr, value: Value, state: State) -> None:
+        """Bind a comprehension's target (its own names: no refinement applies)."""
+        if isinstance(target, ast.Name):
+            state.env[target.id] = value
+        elif isinstance(target, (ast.Tuple, ast.List)):
+            parts = value.elements if value.kind == "tuple" else None
+            if parts is None or len(parts) != len(target.elts):
+                parts = tuple(self.unknown(e) for e in target.elts)
+            for element, part in zip(target.elts, parts, strict=True):
+                self._bind_plain(element, part, state)
+        elif isinstance(target, ast.Starred):
+            self._bind_plain(target.value, Value("list", items=Items()), state)
 
     def bind_parameters(self, state: State) -> None:
         """Parameters: `self`, messages that arrive at a callback, refined values."""
@@ -381,6 +582,7 @@ class Interpreter(CallEvaluator):
                     "unknown", f"parameter `{arg.arg}` of {function.name}()"
                 )
             state.env[arg.arg] = value
+            self.lists_seen = self.lists_seen or value.kind == "list"
             self.note_hover(
                 self._name_span(arg),
                 lambda: self.describe_name(arg.arg, value, state),  # noqa: B023
@@ -454,24 +656,33 @@ class Interpreter(CallEvaluator):
     def havoc(
         self, state: State, nodes: list[ast.stmt], after: State | None = None
     ) -> None:
-        """Forget what `nodes` may write: assigned names and mentioned messages.
+        """Forget what `nodes` may write: assigned names and mentioned messages, and
+        what lists they change (`xs.append(v)`, `xs[i] = v`) hold.
 
         An unannotated name only ever changed by `+=`/`-=` keeps its unit (`+` and
         `-` need equal units, so every path that does not report one keeps it)."""
         keeps_unit = _accumulated(nodes)
+        lists: set[str] = set()  # names of lists that `nodes` mention
         for node in nodes:
             for child in walk(node):
                 if (
                     isinstance(child, ast.Attribute)
-                    and isinstance(child.ctx, ast.Store)
                     and isinstance(child.value, ast.Name)
+                    and (isinstance(child.ctx, ast.Store) or self.lists_seen)
                 ):
-                    state.env.pop(f"{child.value.id}.{child.attr}", None)
+                    key = f"{child.value.id}.{child.attr}"
+                    kept = state.env.get(key)
+                    if isinstance(child.ctx, ast.Store) or (
+                        isinstance(kept, Value) and kept.kind == "list"
+                    ):  # `self.xs.append(v)`: forget what it held
+                        state.env.pop(key, None)
                 if not isinstance(child, ast.Name):
                     continue
                 bound = state.env.get(child.id)
                 if isinstance(bound, Value) and bound.ref is not None:
                     heap.havoc(state, bound.ref)
+                elif isinstance(bound, Value) and bound.kind == "list":
+                    lists.add(child.id)
                 if (
                     isinstance(child.ctx, ast.Store)
                     and child.id in self.scope.local_names
@@ -486,6 +697,13 @@ class Interpreter(CallEvaluator):
                         state.env[child.id] = self._forgotten(
                             child, state.env.get(child.id), keeps_unit, after
                         )
+        if lists:  # those `nodes` may change (`xs.append(v)`, `xs[i] = v`, `b = xs`)
+            if self.follows_lists():
+                lists &= containers.shared_names(nodes, changes=True)
+            for name in lists:
+                bound = state.env.get(name)
+                if isinstance(bound, Value):
+                    state.env[name] = containers.forgetting(bound)
 
     # -- simple statements ---------------------------------------------------
     def visit_Expr(self, node: ast.Expr, state: State) -> State:
@@ -556,6 +774,8 @@ class Interpreter(CallEvaluator):
             load = ast.Name(node.target.id, ast.Load())
         elif isinstance(node.target, ast.Attribute):
             load = ast.Attribute(node.target.value, node.target.attr, ast.Load())
+        elif isinstance(node.target, ast.Subscript):  # `ranges[i] += d`
+            load = ast.Subscript(node.target.value, node.target.slice, ast.Load())
         else:
             return self.generic(node, state)
         combined = ast.BinOp(ast.copy_location(load, node.target), node.op, node.value)
@@ -727,6 +947,8 @@ class Interpreter(CallEvaluator):
         unit = x.unit if x.unit == y.unit else None
         if x.literal != y.literal:  # `d = 0.0`, then `d = scan.range_min`: m
             unit = y.unit if x.literal else x.unit
+        if x.kind in SEQUENCES and y.kind in SEQUENCES:
+            return containers.joined(x, y)
         if kind in CONTAINERS:  # different tables on the two paths
             return Value("unknown")
         if (
@@ -751,10 +973,15 @@ class Interpreter(CallEvaluator):
         return self.exec_block(node.orelse, state)
 
     def visit_For(self, node: ast.For | ast.AsyncFor, state: State) -> State:
-        self.eval(node.iter, state)
+        iterable = self.eval(node.iter, state)
         self.havoc(state, [node])
         body_state = state.fork()
-        self.bind(node.target, self.unknown(node.target), body_state)
+        element = (
+            self.element(iterable, node.target, body_state)
+            if iterable.kind in SEQUENCES and isinstance(node, ast.For)
+            else self.unknown(node.target)
+        )
+        self.bind(node.target, element, body_state)
         end = self.exec_block(node.body, body_state)
         self.havoc(state, [node], after=end)
         return self.exec_block(node.orelse, state)
