@@ -198,6 +198,15 @@ class Checker:
     ) -> Value:
         """Check `name = value` against its refinement; return what `name` holds."""
         if decl.item is not None:
+            if decl.optional and value.kind == "none":
+                return value
+            read = parameters.read_of(self, value, site)
+            if read is not None:  # a parameter read: its default is checked
+                if read.default is not None and read.default_node is not None:
+                    self.assign_sequence(
+                        state, name, decl, read.default, read.default_node, lookup
+                    )
+                return self.assumed(state, name, decl, lookup)
             return self.assign_sequence(state, name, decl, value, site, lookup)
         declared = Declared(f"annotation of `{name}`", self.path, decl.line)
         if value.kind == "msg" or (decl.optional and value.kind == "none"):
