@@ -333,19 +333,69 @@ def repeated(value: Value, times: Value) -> Value | None:
     return Value(value.kind, unit=value.unit, items=items)
 
 
-def sliced(value: Value) -> Value:
-    """`xs[a:b]`: a new sequence of some of the elements."""
+def sliced(value: Value, at_most: int | None = None) -> Value:
+    """`xs[a:b]`: a new sequence of some of the elements; `at_most` of them when
+    the slice's constant bounds say so (`xs[0:360]`, `xs[-90:]`)."""
     length = length_term(value)
-    size = (
-        A.Binary("and", A.Binary(">=", SELF, number(0)), A.Binary("<=", SELF, length))
-        if length is not None
-        else A.TRUE
-    )
+    parts: list[A.Expr] = [A.Binary(">=", SELF, number(0))]
+    if length is not None:
+        parts.append(A.Binary("<=", SELF, length))
+    if at_most is not None:
+        parts.append(A.Binary("<=", SELF, number(at_most)))
+    size = A.conjoin(parts) if len(parts) > 1 else A.TRUE
     return Value(
         "tuple" if value.kind == "tuple" else "list",
         unit=value.unit,
         items=Items(item_kind(value), each_of(value), size),
     )
+
+
+def comprehension_size(value: Value, filtered: bool) -> A.Expr:
+    """The length of `[f(x) for x in value]` (one `for`): that of `value`; with an
+    `if`, at most that (its upper bounds)."""
+    size = size_of(value)
+    if not filtered or size == A.TRUE:
+        return size
+    length = length_term(value)
+    if length is not None:
+        return A.Binary(
+            "and", A.Binary(">=", SELF, number(0)), A.Binary("<=", SELF, length)
+        )
+    return A.conjoin(
+        [
+            part
+            for part in A.conjuncts(size)
+            if isinstance(part, A.Binary)
+            and part.op in ("<", "<=")
+            and part.left == SELF
+            and SELF not in A.walk(part.right)
+        ]
+    )
+
+
+def slice_length(node: ast.Slice) -> int | None:
+    """The most elements `xs[a:b]` can have whatever `xs` is, from constant bounds:
+    `b - a` for `0 <= a`, `0 <= b` (`a` may be left out), `k` for `xs[-k:]`."""
+    if node.step is not None:
+        return None
+    low = 0 if node.lower is None else _int_constant(node.lower)
+    high = None if node.upper is None else _int_constant(node.upper)
+    if low is None:
+        return None
+    if low < 0 and node.upper is None:
+        return -low
+    if high is None or low < 0 or high < 0:
+        return None
+    return max(0, high - low)
+
+
+def _int_constant(node: ast.expr) -> int | None:
+    if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub):
+        found = _int_constant(node.operand)
+        return None if found is None else -found
+    if isinstance(node, ast.Constant) and type(node.value) is int:
+        return node.value
+    return None
 
 
 def copied(value: Value) -> Value:

@@ -577,7 +577,7 @@ class ExpressionEvaluator:
                 return containers.stripped(found)
         if base.kind in SEQUENCES and key.kind in ("int", "bool", "unknown"):
             if isinstance(node.slice, ast.Slice):
-                return containers.sliced(base)
+                return containers.sliced(base, containers.slice_length(node.slice))
             return self.element(base, node, state)
         return self.unknown(node, unit=base.unit if not base.literal else None)
 

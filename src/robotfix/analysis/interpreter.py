@@ -497,9 +497,12 @@ class Interpreter(CallEvaluator):
             saved.local_names | own,
             saved.global_names - own,
         )
+        size: A.Expr = A.TRUE
         try:
             for generator in node.generators:
                 iterable = self.eval(generator.iter, inner)
+                if len(node.generators) == 1 and iterable.kind in SEQUENCES:
+                    size = containers.comprehension_size(iterable, bool(generator.ifs))
                 element = (
                     self.element(iterable, generator.target, inner)
                     if iterable.kind in SEQUENCES
@@ -535,7 +538,7 @@ class Interpreter(CallEvaluator):
         )
         unit = None if value.literal else value.unit
         scale = 1.0 if value.literal else value.scale  # `[r * 100 for r in ranges]`
-        return Value(kind, unit=unit, items=Items(item, each), scale=scale)
+        return Value(kind, unit=unit, items=Items(item, each, size), scale=scale)
 
     def _bind_plain(self, target: ast.expr, value: Value, state: State) -> None:
         """Bind a comprehension's target (its own names: no refinement applies)."""
