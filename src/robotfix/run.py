@@ -4,16 +4,14 @@ processes with -j), and gather the diagnostics in a deterministic order.
 
 from __future__ import annotations
 
-import multiprocessing
 import os
 import signal
 import time
 import traceback
 from collections.abc import Callable, Iterator
-from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
-from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from robotfix import messages
 from robotfix.annotations.units import save_cache as save_unit_cache
@@ -31,6 +29,9 @@ from robotfix.discovery import Discovery, discover
 from robotfix.fs import UnreadableError, read_regular
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.ros.install import InstallSpace
+
+if TYPE_CHECKING:
+    from concurrent.futures import Future, ProcessPoolExecutor
 
 MIN_PARALLEL = 16  # fewer files are checked faster in one process than by a pool
 MAX_CHUNK = 8  # files per task: Ctrl-C waits for at most one chunk per worker
@@ -177,6 +178,10 @@ def _check_all(
         for path, data in todo:
             yield _check_one(path, data, catalog, config)
         return
+    import multiprocessing  # only with a pool: about 10 ms of start-up otherwise
+    from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+    from concurrent.futures.process import BrokenProcessPool
+
     size = max(1, min(MAX_CHUNK, len(todo) // (jobs * 4)))
     chunks = [todo[i : i + size] for i in range(0, len(todo), size)]
     method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
