@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import concurrent.futures
 import errno
 import multiprocessing
 import os
@@ -493,7 +494,8 @@ def test_jobs_are_clamped_and_a_failing_pool_falls_back(
             workers.append(max_workers)
             raise OSError(errno.EMFILE, "Too many open files")
 
-    monkeypatch.setattr(run, "ProcessPoolExecutor", NoPool)
+    # run.py imports the pool class when it starts one
+    monkeypatch.setattr(concurrent.futures, "ProcessPoolExecutor", NoPool)
     result = check_paths([many], Config(root=many), jobs=500)
     assert codes(result) == expected and not result.internal_errors
     assert workers == [min(run.default_jobs(), 40)]

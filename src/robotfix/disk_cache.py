@@ -2,14 +2,18 @@
 
 The folder is `ROBOTFIX_CACHE_DIR`, else `$XDG_CACHE_HOME/robotfix` or
 `~/.cache/robotfix`. Each cache is one JSON file stamped with a key (the install of
-the library whose answers it stores); a missing, stale or corrupt file is ignored, and
-a folder that cannot be written only costs speed. The file is read only when it is a
-regular file (a FIFO or a device there is ignored, never waited on) and replaced
-atomically through a fresh temporary file, never written through a symlink.
+the library whose answers it stores), and the file's name carries a hash of that key,
+so two installs on one machine (two venvs, a venv and pipx) each keep their own file
+instead of overwriting each other's on every run. A missing, stale or corrupt file
+is ignored, and a folder that cannot be written only costs speed. The file is read
+only when it is a regular file (a FIFO or a device there is ignored, never waited
+on) and replaced atomically through a fresh temporary file, never written through a
+symlink.
 """
 
 from __future__ import annotations
 
+import hashlib
 import json
 import os
 from importlib.util import find_spec
@@ -43,7 +47,8 @@ def install_key(module: str, version: str) -> str:
 
 
 class JsonCache:
-    """A dict persisted as `<cache_dir>/<name>.json`, valid while `key` matches."""
+    """A dict persisted as `<cache_dir>/<name>-<hash of key>.json`, valid while `key`
+    matches (the key is stored in the file too)."""
 
     def __init__(self, name: str, key: str) -> None:
         self.name = name
@@ -53,7 +58,8 @@ class JsonCache:
 
     @property
     def path(self) -> Path:
-        return cache_dir() / f"{self.name}.json"
+        digest = hashlib.sha256(self.key.encode("utf-8", "replace")).hexdigest()
+        return cache_dir() / f"{self.name}-{digest[:16]}.json"
 
     @property
     def entries(self) -> dict[str, Any]:

@@ -4,16 +4,14 @@ processes with -j), and gather the diagnostics in a deterministic order.
 
 from __future__ import annotations
 
-import multiprocessing
 import os
 import signal
 import time
 import traceback
 from collections.abc import Callable, Iterator
-from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
-from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from robotfix import messages
 from robotfix.annotations.units import save_cache as save_unit_cache
@@ -32,7 +30,13 @@ from robotfix.fs import UnreadableError, read_regular
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.ros.install import InstallSpace
 
+if TYPE_CHECKING:
+    from concurrent.futures import Future, ProcessPoolExecutor
+
 MIN_PARALLEL = 16  # fewer files are checked faster in one process than by a pool
+# and so is less source: starting a pool costs about 0.1-0.2 s, what one process
+# spends on about 5,000 lines of real code (12,000 lines, 0.5 MB, take 0.3 s)
+MIN_PARALLEL_BYTES = 512 * 1024
 MAX_CHUNK = 8  # files per task: Ctrl-C waits for at most one chunk per worker
 
 
@@ -173,29 +177,42 @@ def _check_all(
     one per core and per file; if the pool cannot start (no process or file
     descriptor left), the files are checked here instead."""
     jobs = min(jobs, default_jobs(), len(todo))
-    if jobs <= 1 or len(todo) < MIN_PARALLEL:
+    size = sum(len(data) for _, data in todo)
+    if jobs <= 1 or len(todo) < MIN_PARALLEL or size < MIN_PARALLEL_BYTES:
         for path, data in todo:
             yield _check_one(path, data, catalog, config)
         return
-    size = max(1, min(MAX_CHUNK, len(todo) // (jobs * 4)))
-    chunks = [todo[i : i + size] for i in range(0, len(todo), size)]
+    import multiprocessing  # only with a pool: about 10 ms of start-up otherwise
+    from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
+    from concurrent.futures.process import BrokenProcessPool
+
+    per_task = max(1, min(MAX_CHUNK, len(todo) // (jobs * 4)))
+    chunks = [todo[i : i + per_task] for i in range(0, len(todo), per_task)]
     method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
     pool: ProcessPoolExecutor | None = None
     pending: dict[Future[list[FileResult]], list[tuple[Path, bytes]]] = {}
+    global _WORKER
     try:
+        if method == "fork":  # read the interface files once: the workers share them
+            catalog.prepare()
+            _WORKER = (catalog, config)
         pool = ProcessPoolExecutor(
             max_workers=jobs,
             mp_context=multiprocessing.get_context(method),
             initializer=_start_worker,
-            initargs=(interfaces, config),
+            initargs=(None, config) if method == "fork" else (interfaces, config),
         )
         for chunk in chunks:
             pending[pool.submit(_worker_check, chunk)] = chunk
     except (OSError, BrokenProcessPool):  # EMFILE, EAGAIN: check here instead
         _stop(pool)
+        _WORKER = None
         for path, data in todo:
             yield _check_one(path, data, catalog, config)
         return
+    finally:
+        if method == "fork":
+            _WORKER = None  # the workers have their copy; the parent needs none
     try:
         while pending:
             done, _ = wait(pending, return_when=FIRST_COMPLETED)
@@ -252,12 +269,14 @@ def _check_one(
 _WORKER: tuple[MsgCatalog, Config] | None = None
 
 
-def _start_worker(interfaces: _Interfaces, config: Config) -> None:
-    """In a worker: the same interface files as the main process; Ctrl-C is the
+def _start_worker(interfaces: _Interfaces | None, config: Config) -> None:
+    """In a worker: the same interface files as the main process (a forked worker
+    has the main process's catalog already: `interfaces` is None); Ctrl-C is the
     main process's to handle (it ends the workers), so no traceback here."""
     global _WORKER
     signal.signal(signal.SIGINT, signal.SIG_IGN)
-    _WORKER = (_catalog(interfaces, config), config)
+    if interfaces is not None:
+        _WORKER = (_catalog(interfaces, config), config)
 
 
 def _worker_check(chunk: list[tuple[Path, bytes]]) -> list[FileResult]:

@@ -15,14 +15,17 @@ is at most MAX_DEPTH levels deep. `and`, `or` and
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from fractions import Fraction
 from functools import lru_cache
-from typing import Any
-
-from lark import Lark, Token, Transformer, v_args
-from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 from robotfix.annotations import ast as A
+
+if TYPE_CHECKING:
+    from lark import Lark, Token
+    from lark.exceptions import UnexpectedInput
 
 MAX_DIGITS = 100
 MAX_EXPONENT = 400  # doubles reach 1.8e308 and 5e-324
@@ -48,9 +51,9 @@ class _LabelOf:
         self.kind, self.target, self.pos = kind, target, pos
 
 
-@v_args(inline=True)
-class _ToAst(Transformer[Token, Any]):
-    """One method per grammar alias; each returns a node of our own AST."""
+class _ToAst:
+    """One method per grammar alias; each returns a node of our own AST. Lark calls
+    them through `_Inline`, with a rule's children as the arguments."""
 
     def number(self, tok: Token) -> A.Num:
         text = str(tok)
@@ -169,13 +172,34 @@ def _value(node: Any) -> A.Expr:
     return node  # type: ignore[no-any-return]
 
 
-_PARSER = Lark.open(
-    "grammar.lark",
-    rel_to=__file__,
-    parser="lalr",
-    propagate_positions=False,
-    transformer=_ToAst(),
-)
+class _Inline:
+    """What lark's LALR parser calls as it reduces: `_ToAst`'s method of the rule's
+    alias, given the children as arguments (lark's `v_args(inline=True)`, without
+    making `_ToAst` a lark class, so that lark is imported only when needed)."""
+
+    def __init__(self, target: _ToAst) -> None:
+        self._target = target
+
+    def __getattr__(self, name: str) -> Callable[[list[Any]], Any]:
+        method = getattr(type(self._target), name)  # AttributeError: lark's default
+        target = self._target
+        return lambda children: method(target, *children)
+
+
+@lru_cache(maxsize=1)
+def _parser() -> Lark:
+    """Built on the first annotation a process parses (about 50 ms with the lark
+    import), not when the module is imported: most files have no annotation."""
+    from lark import Lark
+
+    return Lark(
+        (Path(__file__).parent / "grammar.lark").read_text(encoding="utf-8"),
+        parser="lalr",
+        propagate_positions=False,
+        transformer=_Inline(_ToAst()),
+    )
+
+
 _TOO_DEEP = (
     f"the annotation is nested more than {MAX_DEPTH} levels deep: split it into "
     "simpler parts"
@@ -207,8 +231,11 @@ def _parse_uncached(text: str) -> A.Expr:
         raise AnnotationSyntaxError(
             f"the annotation is longer than {MAX_CHARS:,} characters", 0
         )
+    parser = _parser()
+    from lark.exceptions import UnexpectedInput
+
     try:
-        expr = _value(_PARSER.parse(text))
+        expr = _value(parser.parse(text))
     except UnexpectedInput as err:
         raise AnnotationSyntaxError(_describe(err, text), _offset(err, text)) from None
     except (RecursionError, MemoryError):
@@ -247,6 +274,8 @@ def _constant_bits(expr: A.Expr) -> tuple[int, int] | None:
 
 
 def _offset(err: UnexpectedInput, text: str) -> int:
+    from lark.exceptions import UnexpectedEOF
+
     pos = getattr(err, "pos_in_stream", None)
     if isinstance(pos, int) and pos >= 0:
         return min(pos, len(text))
@@ -256,6 +285,8 @@ def _offset(err: UnexpectedInput, text: str) -> int:
 
 
 def _describe(err: UnexpectedInput, text: str) -> str:
+    from lark.exceptions import UnexpectedCharacters, UnexpectedEOF
+
     if isinstance(err, UnexpectedCharacters):
         at = err.pos_in_stream or 0
         return f"unexpected character {text[at : at + 1]!r}"

@@ -377,6 +377,12 @@ class MsgCatalog:
                     return [start, *rest]
         return None
 
+    def prepare(self) -> None:
+        """Read the interface files and the standard definitions now, before worker
+        processes are forked, so that they share them instead of each reading them."""
+        self.load()
+        self._standard()
+
     # -- loading -------------------------------------------------------------
     def load(self) -> None:
         """Read the interface files (once); their problems land in `problems`."""

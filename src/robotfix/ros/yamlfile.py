@@ -12,8 +12,8 @@ from __future__ import annotations
 
 import os
 from dataclasses import dataclass, field
-
-import yaml
+from functools import lru_cache
+from typing import Any
 
 from robotfix.fs import UnreadableError, read_text
 
@@ -22,8 +22,6 @@ MAX_NODES = 200_000
 MAX_DEPTH = 200
 WALK_BUDGET = 400_000  # nodes a reader may visit, aliases counted each time
 
-_LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
-_RESOLVER = yaml.resolver.Resolver()
 STR_TAG = "tag:yaml.org,2002:str"
 
 
@@ -39,7 +37,9 @@ class Scalar:
         """The type YAML 1.1 (PyYAML, rosparam) gives this scalar."""
         if self.tag is not None:
             return self.tag
-        return str(_RESOLVER.resolve(yaml.ScalarNode, self.text, (self.plain, True)))
+        import yaml
+
+        return str(_resolver().resolve(yaml.ScalarNode, self.text, (self.plain, True)))
 
 
 @dataclass(frozen=True)
@@ -90,9 +90,19 @@ def read(path: str | os.PathLike[str]) -> Node | YamlProblem | None:
     return parse(text)
 
 
+@lru_cache(maxsize=1)
+def _resolver() -> Any:
+    import yaml
+
+    return yaml.resolver.Resolver()
+
+
 def parse(text: str) -> Node | YamlProblem | None:
+    import yaml  # here, not at the top: most runs read no YAML (about 15 ms)
+
     try:
-        return _build(yaml.parse(text, Loader=_LOADER))
+        loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+        return _build(yaml.parse(text, Loader=loader))
     except yaml.MarkedYAMLError as err:
         mark = err.problem_mark or err.context_mark
         line, col = (mark.line + 1, mark.column) if mark is not None else (1, 0)
@@ -111,6 +121,8 @@ class _TooLargeError(Exception):
 
 def _build(events: object) -> Node | None:
     """Nodes from the event stream, iteratively; stops after the first document."""
+    import yaml
+
     anchors: dict[str, Node] = {}
     stack: list[tuple[Sequence | Mapping, list[Node]]] = []
     count = 0
@@ -174,6 +186,8 @@ def yaml11_value(node: Scalar, tag: str) -> object:
     (int, float, bool, null); None for any other tag or a value it refuses."""
     if tag not in _YAML11:
         return None
+    import yaml
+
     try:
         return yaml.constructor.SafeConstructor().construct_object(
             yaml.ScalarNode(tag, node.text)

@@ -53,9 +53,8 @@ class Session:
 
     def __init__(self, rlimit: int = RLIMIT, budget: int | None = None) -> None:
         self._ctx = z3.Context()
-        self._solver = z3.Solver(ctx=self._ctx)
-        for name, value in SETTINGS.items():
-            self._solver.set(name, value)
+        self._solver = self._new_solver()
+        self._scratch: Any = None  # for questions without facts
         self._rlimit = rlimit
         self._budget = FILE_RLIMIT if budget is None else budget
         self._used = 0
@@ -72,7 +71,26 @@ class Session:
         if self.exhausted:
             return _out_of_budget()
         self._encoder.start()
+        if not vc.facts:
+            # a question without facts (RF509's: can a refinement hold?) is asked of
+            # a solver of its own, so it leaves the path's facts asserted and the
+            # answers on the path the same whether it was asked or not
+            self._scratch = self._scratch or self._new_solver()
+            solver, self._solver = self._solver, self._scratch
+            try:
+                return self._decide(vc)
+            finally:
+                self._solver = solver
         self._assert_facts(vc.facts)
+        return self._decide(vc)
+
+    def _new_solver(self) -> Any:
+        solver = z3.Solver(ctx=self._ctx)
+        for name, value in SETTINGS.items():
+            solver.set(name, value)
+        return solver
+
+    def _decide(self, vc: VC) -> Verdict:
         solver, encoder = self._solver, self._encoder
         goal = encoder.boolean(vc.goal)
         first = self._ask(z3.Not(goal))
@@ -83,7 +101,8 @@ class Session:
         model = solver.model()
         probes = [encoder.encode(p) for p in vc.probes]
         # A term z3 saw as a fresh constant makes the model no execution's values.
-        exact = not encoder.approximated and not any(self._approximated)
+        facts_approximated = bool(vc.facts) and any(self._approximated)
+        exact = not encoder.approximated and not facts_approximated
         values = tuple(
             _show(model.eval(p, model_completion=True)) if exact else None
             for p in probes
