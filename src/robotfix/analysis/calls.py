@@ -70,7 +70,10 @@ class CallEvaluator(ParameterEvaluator):
         state: State,
     ) -> Value:
         if callee.kind == "msgclass":
-            return self.construct(callee.name, args, kwargs, state)
+            message = self.construct(callee.name, args, kwargs, state)
+            if self.ctx.unit_flows is not None:
+                self._constructor_flows(message, node, args, kwargs, state)
+            return message
         if callee.kind == "parameter_method":  # p.get_parameter_value()
             return Value("parameter_value", name=callee.name)
         if (
@@ -167,11 +170,19 @@ class CallEvaluator(ParameterEvaluator):
         given: dict[str, Value] = dict(zip(params, args, strict=False))
         given.update({k: v for k, v in kwargs.items() if k is not None})
         terms = {k: v.term for k, v in given.items() if v.term is not None}
+        exprs = dict(zip(params, node.args, strict=False))
+        exprs.update({k.arg: k.value for k in node.keywords if k.arg is not None})
+        log, where = self.ctx.unit_flows, self.flow_where()
         for name, value in given.items():
             decl = scope.decls.get(name)
             if decl is not None:
                 lookup = {**self._callee_names(decl, function, state), **terms}
                 self.check.assign_refined(state, name, decl, value, self.site, lookup)
+            if log is not None and where is not None and name in exprs:
+                if decl is not None:
+                    log.sink(where, exprs[name], decl.unit, value)
+                else:
+                    log.call(where, function.key, name, exprs[name])
         if function.returns is None:
             return self.unknown(node)
         lookup = {**self._callee_names(function.returns, function, state), **terms}
@@ -221,6 +232,28 @@ class CallEvaluator(ParameterEvaluator):
             )
         return message
 
+    def _constructor_flows(
+        self,
+        message: Value,
+        node: ast.Call,
+        args: list[Value],
+        kwargs: dict[str | None, Value],
+        state: State,
+    ) -> None:
+        """For `robotfix suggest`: `Twist(linear=...)`, `Vector3(x=speed)`."""
+        spec = self.ctx.catalog.lookup(message.name or "")
+        if message.ref is None or message.ref not in state.heap or spec is None:
+            return
+        given = list(zip(spec.fields, node.args, args, strict=False))
+        given += [
+            (k.arg, k.value, kwargs[k.arg])
+            for k in node.keywords
+            if k.arg is not None and k.arg in kwargs
+        ]
+        for name, expr, value in given:
+            unit = heap.field_unit(self.ctx, state, message.ref, name)[0]
+            self.note_sink(expr, unit, value)
+
     # -- ROS API and math ----------------------------------------------------
     def _check_api_units(
         self,
@@ -235,6 +268,11 @@ class CallEvaluator(ParameterEvaluator):
             )
             if value is None:
                 continue
+            expr = next((k.value for k in node.keywords if k.arg == keyword), None)
+            if expr is None and keyword not in kwargs:
+                expr = node.args[position]
+            if expr is not None:
+                self.note_sink(expr, resolve(unit_text), value)
             declared = Declared(
                 f"ROS API: the `{keyword}` argument of {name}() is in {unit_text}",
                 None,
