@@ -116,7 +116,7 @@ def hover(text: str, path: str, line: int, col: int, catalog: MsgCatalog) -> str
 def unit_suggestions(text: str, path: str, catalog: MsgCatalog) -> list[Suggestion]:
     """Units the analysis can pin on unannotated names from the flows they feed
     (see analysis/flows.py)."""
-    from robotfix.analysis.flows import FlowLog, suggestions
+    from robotfix.analysis.flows import FlowLog, path_unit, suggestions
 
     source = SourceFile.from_text(path, text)
     if source.problem is not None or source.tree is None:
@@ -126,6 +126,9 @@ def unit_suggestions(text: str, path: str, catalog: MsgCatalog) -> list[Suggesti
     if log is None or log.program is None:
         return []
     assert isinstance(log, FlowLog)
+    log.settle_attribute_fields(
+        ctx.msg_type_of, lambda msg_type, path: path_unit(catalog, msg_type, path)
+    )
     return [
         Suggestion(f.line, f.col, f.name, f.unit, "float")
         for f in suggestions(log, log.program)

@@ -9,6 +9,8 @@ CRUISE = 0.4  # suggest: CRUISE m/s
 
 
 class Patrol(Node):
+    BACKUP = -0.1  # suggest: BACKUP m/s
+
     def __init__(self, turn_speed=0.6):  # suggest: turn_speed rad/s
         super().__init__("patrol")
         self.turn_speed = turn_speed  # suggest: turn_speed rad/s
@@ -27,10 +29,19 @@ class Patrol(Node):
         if seconds is not None:
             self.create_timer(seconds, self.tick)
 
+    def wait(self, seconds):  # near miss: also given None
+        if seconds is not None:
+            self.create_timer(seconds, self.tick)
+
+    def start(self):
+        self.wait(None)
+        self.wait(2.0)
+
     def tick(self):
         self.drive(CRUISE, 0.0)
         self.drive(self.slow, self.turn_speed)
         self.drive(self.both, self.both)
+        self.drive(self.BACKUP, 0.0)
 
 
 def main():

@@ -296,6 +296,7 @@ class CallEvaluator(ParameterEvaluator):
         if name in ("radians", "degrees"):
             factor = math.pi / 180 if name == "radians" else 180 / math.pi
             source = resolve("degree" if name == "radians" else "rad")
+            self.note_sink(node.args[0], source, first)
             if first.unit is not None and not first.literal:
                 source = first.unit
             result_unit = Unit(source.dims, source.factor / factor, text="")
@@ -306,6 +307,7 @@ class CallEvaluator(ParameterEvaluator):
         if name in MATH_UNITS:
             argument, result = MATH_UNITS[name]
             if argument is not None:
+                self.note_sink(node.args[0], resolve(argument), first)
                 self.check.units_agree(
                     resolve(argument),
                     first,

@@ -8,29 +8,34 @@ went to which parameter), and an assignment to an unannotated name or `self.attr
 
 `suggestions` then follows the flows backwards, syntactically, through what keeps a
 unit: `+`, `-`, a literal factor that is not a unit conversion (`speed * 0.5` but not
-`speed / 3.6`), `min`, `max`, `abs`, `float`, `round`, a conditional expression; an
-assignment (`v = speed`), a parameter of the enclosing function and the arguments
-of its calls, `self.x` and its assignments in any method. A product or quotient of
-two names carries nothing. A name gets a unit only when all its flows agree and it
-can be annotated where it is first bound (a plain `x = ...`, an unannotated
-parameter, `self.x = ...` in `__init__`); a name that reaches two different units
-gets no suggestion (that is a bug for `robotfix check`, not an annotation).
+`speed / 3.6`) nor a placeholder gain (`error * 1.0`), `min`, `max`, `abs`, `float`,
+`round`, a conditional expression; an assignment (`v = speed`), a parameter of the
+enclosing function and the arguments of its calls, `self.x` and its assignments in
+any method. A product or quotient of two names carries nothing. Units that values
+are known to have (`math.atan2` gives rad) go forwards through the same flows. A
+name gets a unit only when all the units it meets agree and it can be annotated
+where it is first bound (a plain `x = ...`, an unannotated parameter, `self.x = ...`
+in `__init__`, a class constant); a name that meets two different units gets no
+suggestion (that is a bug for `robotfix check`, or a controller's implicit gain,
+not an annotation).
 """
 
 from __future__ import annotations
 
 import ast
 import math
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
+from robotfix.analysis import heap
 from robotfix.analysis.values import NUMERIC, Value
 from robotfix.annotations.units import Unit
 
 if TYPE_CHECKING:
     from robotfix.analysis.context import Scope
     from robotfix.analysis.program import Function, Program
+    from robotfix.ros.catalog import MsgCatalog, MsgSpec
 
 # Literal factors that may be a unit conversion (`speed / 3.6` is km/h -> m/s,
 # `deg * math.pi / 180` degrees -> radians): a flow through one says nothing sure.
@@ -58,6 +63,9 @@ _CONVERSIONS = (
     9.80665,
     1024.0,
 )
+# what a name is: ("local", id(scope node), name), ("param", id(function node),
+# function key, name), ("attr", class name, attribute)
+Entity = tuple[object, ...]
 _KEEPING_CALLS = frozenset({"min", "max", "abs", "float", "round"})
 _KEEPING_MATH = frozenset({"fabs"})  # math.copysign keeps its first argument's
 
@@ -88,14 +96,22 @@ class FlowLog:
     binds: dict[tuple[object, ...], list[tuple[Where, ast.expr]]] = field(
         default_factory=dict
     )
+    # (entity, a unit a value assigned to it has)
+    held: list[tuple[tuple[object, ...], Unit]] = field(default_factory=list)
     program: Program | None = None  # set when the file's program is collected
+    # `self.cmd.linear.x = speed` where the analysis does not know `self.cmd` (set
+    # in another method): (where, attribute entity, field path, value expression)
+    attribute_fields: list[tuple[Where, tuple[object, ...], str, ast.expr, Value]] = (
+        field(default_factory=list)
+    )
     _seen: set[tuple[object, ...]] = field(default_factory=set)
 
     def sink(
         self, where: Where, expr: ast.expr, unit: Unit | None, value: Value | None
     ) -> None:
-        """`expr` (holding `value`) reached a place of `unit`."""
-        if unit is None or not unit.text or unit.is_label:
+        """`expr` (holding `value`) reached a place of `unit` (a dimensionless one
+        only tells a name apart from one with a unit: it is never suggested)."""
+        if unit is None or unit.is_label:
             return
         if value is not None:
             if value.kind not in NUMERIC and value.kind != "unknown":
@@ -103,18 +119,66 @@ class FlowLog:
             found = value.fit(unit)
             if found is not None and found.kind != "ok":
                 return  # a bug `check` reports: nothing to learn from it
-        if self._once("sink", id(expr), unit.text):
+        if self._once("sink", id(expr), str(unit)):
             self.sinks.append((where, expr, unit))
 
     def call(self, where: Where, key: str, param: str, expr: ast.expr) -> None:
         if self._once("call", id(expr), key, param):
             self.calls.setdefault(key, []).append((where, param, expr))
 
-    def bind(self, where: Where, target: ast.expr, expr: ast.expr) -> None:
-        """`target = expr` (or `target += expr`) for an unannotated target."""
+    def bind(
+        self, where: Where, target: ast.expr, expr: ast.expr, value: Value
+    ) -> None:
+        """`target = expr` (or `target += expr`) for an unannotated target; a unit
+        the value is known to have (`math.atan2(...)` is rad) is kept to find names
+        that hold two units (never a suggestion by itself)."""
         entity = _target_entity(where, target)
-        if entity is not None and self._once("bind", id(expr), entity):
+        if entity is None:
+            return
+        if self._once("bind", id(expr), entity):
             self.binds.setdefault(entity, []).append((where, expr))
+        unit = value.unit
+        kept = unit is not None and not value.literal and value.scale == 1.0
+        if kept and unit is not None and not unit.is_label:
+            self.held.append((entity, unit))
+
+    def attribute_field(
+        self, where: Where, target: ast.Attribute, expr: ast.expr, value: Value
+    ) -> None:
+        """`self.cmd.linear.x = expr`, `self.cmd` unknown here: its type is looked
+        for in the class's assignments at the end (`settle_attribute_fields`)."""
+        if value.kind not in NUMERIC and value.kind != "unknown":
+            return
+        path: list[str] = []
+        node: ast.expr = target
+        while isinstance(node, ast.Attribute):
+            entity = _target_entity(where, node)
+            if entity is not None:
+                if path and self._once("field", id(expr)):
+                    self.attribute_fields.append(
+                        (where, entity, ".".join(reversed(path)), expr, value)
+                    )
+                return
+            path.append(node.attr)
+            node = node.value
+
+    def settle_attribute_fields(
+        self,
+        msg_type_of: Callable[[ast.expr], str | None],
+        unit_of: Callable[[str, str], Unit | None],
+    ) -> None:
+        """The writes into fields of messages held in attributes become sinks when
+        every assignment of the attribute constructs the same message type."""
+        for where, entity, path, expr, value in self.attribute_fields:
+            types = {
+                msg_type_of(value.func) if isinstance(value, ast.Call) else None
+                for _, value in self.binds.get(entity, [])
+            }
+            if len(types) != 1 or None in types:
+                continue
+            msg_type = types.pop()
+            assert msg_type is not None
+            self.sink(where, expr, unit_of(msg_type, path), value)
 
     def _once(self, *key: object) -> bool:
         if key in self._seen:
@@ -147,48 +211,109 @@ def _target_entity(where: Where, target: ast.expr) -> tuple[object, ...] | None:
     return None
 
 
+def path_unit(catalog: MsgCatalog, msg_type: str, path: str) -> Unit | None:
+    """The unit of the number at `path` (`linear.x`) of a `msg_type` message, by
+    the same rule as the analysis's (`heap.field_unit`): the outermost message
+    that declares one."""
+    parts = path.split(".")
+    chain: list[tuple[MsgSpec, str]] = []
+    current = msg_type
+    for index, part in enumerate(parts):
+        spec = catalog.lookup(current)
+        found = spec.fields.get(part) if spec is not None else None
+        if spec is None or found is None or found.array:
+            return None
+        chain.append((spec, ".".join(parts[index:])))
+        if index == len(parts) - 1:
+            if found.kind not in ("int", "float"):
+                return None
+        elif found.kind != "msg" or not found.msg_type:
+            return None
+        else:
+            current = found.msg_type
+    for spec, rest in chain:
+        declared = spec.units.get(rest)
+        if declared is not None:
+            return heap.unit_of(declared.text)
+    return None
+
+
 def suggestions(log: FlowLog, program: Program) -> list[Found]:
-    """One unit for each name whose flows all agree and that can be annotated."""
-    units: dict[tuple[object, ...], list[Unit]] = {}
+    """One unit for each name whose flows all agree and that can be annotated.
+
+    The unit of a place goes backwards, to the names whose values reach it
+    (`cmd.linear.x = v`, `v = speed * 0.5`: both m/s); a unit a value is known to
+    have (`math.atan2(...)` is rad) goes forwards, to the names that take it
+    (`error = heading - yaw`), so that a name holding rad that reaches rad/s (a
+    controller's implicit gain) gets no suggestion. A name gets one when all the
+    units it meets agree."""
+    sources: dict[tuple[object, ...], list[tuple[Where, ast.expr]]] = {}
+    for entity, assigned in log.binds.items():
+        sources.setdefault(entity, []).extend(assigned)
+    for key, calls in log.calls.items():
+        function = program.functions.get(key)
+        for where, param, expr in calls if function is not None else []:
+            assert function is not None
+            entity = ("param", id(function.node), key, param)
+            sources.setdefault(entity, []).append((where, expr))
+    carried: dict[tuple[object, ...], list[tuple[tuple[object, ...], Where]]] = {}
     places: dict[tuple[object, ...], Where] = {}
-    todo: list[tuple[tuple[object, ...], Where, Unit]] = []
-    done: set[tuple[tuple[object, ...], str]] = set()
+
+    def carriers(
+        expr: ast.expr, where: Where
+    ) -> list[tuple[tuple[object, ...], Where]]:
+        found = carried.get((id(expr),))
+        if found is None:
+            found = carried[(id(expr),)] = list(_carriers(expr, where))
+            for entity, at in found:
+                places.setdefault(entity, at)
+        return found
+
+    reached: dict[tuple[object, ...], list[Unit]] = {}
+    todo: list[tuple[tuple[object, ...], Unit]] = []
     for where, expr, unit in log.sinks:
-        todo.extend((e, w, unit) for e, w in _carriers(expr, where))
-    while todo:
-        entity, where, unit = todo.pop()
-        key = (entity, unit.text)
-        if key in done:
+        todo.extend((entity, unit) for entity, _ in carriers(expr, where))
+    done: set[tuple[tuple[object, ...], str]] = set()
+    while todo:  # backwards, from the places
+        entity, unit = todo.pop()
+        if (entity, str(unit)) in done:
             continue
-        done.add(key)
-        places.setdefault(entity, where)
-        known = units.setdefault(entity, [])
-        if not any(u.same_as(unit) for u in known):
-            known.append(unit)
-        for source_where, expr in _sources(log, entity):
-            todo.extend((e, w, unit) for e, w in _carriers(expr, source_where))
+        done.add((entity, str(unit)))
+        _add(reached.setdefault(entity, []), unit)
+        for where, expr in sources.get(entity, []):
+            todo.extend((e, unit) for e, _ in carriers(expr, where))
+    takers: dict[tuple[object, ...], list[tuple[object, ...]]] = {}
+    for entity, assigned in sources.items():
+        for where, expr in assigned:
+            for carrier, _ in carriers(expr, where):
+                takers.setdefault(carrier, []).append(entity)
+    held: dict[tuple[object, ...], list[Unit]] = {}
+    forward = list(log.held)
+    seen: set[tuple[tuple[object, ...], str]] = set()
+    while forward:  # forwards, from the values
+        entity, unit = forward.pop()
+        if (entity, str(unit)) in seen:
+            continue
+        seen.add((entity, str(unit)))
+        _add(held.setdefault(entity, []), unit)
+        forward.extend((taker, unit) for taker in takers.get(entity, []))
     found = []
-    shapes = _Shapes(program)
-    for entity, known in units.items():
-        if len(known) != 1:
-            continue  # flows into different units: not for an annotation
-        spot = shapes.spot(entity, places[entity])
+    shapes = _Shapes(program, log)
+    for entity, units in reached.items():
+        met = list(units)
+        for unit in held.get(entity, []):
+            _add(met, unit)
+        if len(met) != 1 or not met[0].dims or not met[0].text:
+            continue  # several units: a bug for `check`, not an annotation
+        spot = shapes.spot(entity, places.get(entity))
         if spot is not None:
-            found.append(Found(spot[0], spot[1], spot[2], known[0].text))
+            found.append(Found(spot[0], spot[1], spot[2], met[0].text))
     return sorted(set(found), key=lambda f: (f.line, f.col))
 
 
-def _sources(
-    log: FlowLog, entity: tuple[object, ...]
-) -> Iterator[tuple[Where, ast.expr]]:
-    """The expressions whose value an entity takes: its assignments, and for a
-    parameter the arguments of its calls."""
-    yield from log.binds.get(entity, [])
-    if entity[0] == "param":
-        key, name = entity[2], entity[3]
-        for where, param, expr in log.calls.get(str(key), []):
-            if param == name:
-                yield where, expr
+def _add(units: list[Unit], unit: Unit) -> None:
+    if not any(u.same_as(unit) for u in units):
+        units.append(unit)
 
 
 def _carriers(
@@ -213,14 +338,15 @@ def _carriers(
             yield from _carriers(expr.left, where, factor)
             yield from _carriers(expr.right, where, factor)
         elif isinstance(expr.op, ast.Mult):
+            # `error * 1.0`: a factor of one is written as a gain's placeholder
             right, left = _literal(expr.right), _literal(expr.left)
-            if right is not None:
+            if right is not None and right != 1:
                 yield from _carriers(expr.left, where, factor * right)
-            elif left is not None:
+            elif left is not None and left != 1:
                 yield from _carriers(expr.right, where, factor * left)
         elif isinstance(expr.op, ast.Div):
             right = _literal(expr.right)
-            if right:
+            if right and right != 1:
                 yield from _carriers(expr.left, where, factor / right)
     elif isinstance(expr, ast.IfExp):
         yield from _carriers(expr.body, where, factor)
@@ -312,19 +438,20 @@ class _Shapes:
     """Where an entity can be annotated, read from the syntax: the first plain
     `name = ...` of a scope, a bare parameter, `self.x = ...` in `__init__`."""
 
-    def __init__(self, program: Program) -> None:
+    def __init__(self, program: Program, log: FlowLog) -> None:
         self.program = program
+        self.log = log
         self._scans: dict[int, _Scan] = {}
 
     def spot(
-        self, entity: tuple[object, ...], where: Where
+        self, entity: tuple[object, ...], where: Where | None
     ) -> tuple[int, int, str] | None:
         kind = entity[0]
         if kind == "param":
-            return self._parameter(entity, where)
+            return self._parameter(entity)
         if kind == "local":
             name = str(entity[2])
-            node = self._scope_node(entity, where)
+            node = self._scope_node(entity, where) if where is not None else None
             if node is None:
                 return None
             scan = self._scan(node)
@@ -347,9 +474,7 @@ class _Shapes:
         module = where.scope.module().node
         return module if id(module) == entity[1] else None
 
-    def _parameter(
-        self, entity: tuple[object, ...], where: Where
-    ) -> tuple[int, int, str] | None:
+    def _parameter(self, entity: tuple[object, ...]) -> tuple[int, int, str] | None:
         fn = self.program.functions.get(str(entity[2]))
         if fn is None or isinstance(fn.node, ast.Lambda):
             return None
@@ -362,6 +487,11 @@ class _Shapes:
                     return None
                 if default is not None and _not_a_number(default):
                     return None  # `period=None`: not a float
+                if any(
+                    param == name and _not_a_number(expr)
+                    for _, param, expr in self.log.calls.get(fn.key, [])
+                ):
+                    return None  # `self.hold(None)`
                 scan = self._scan(fn.node)
                 if name in scan.bad:
                     return None
@@ -382,14 +512,22 @@ class _Shapes:
             ):
                 return None
         first: ast.Attribute | None = None
+        assigned = False
         for fn in self.program.functions.values():
             if fn.class_name != class_name or isinstance(fn.node, ast.Lambda):
                 continue
             scan = self._scan(fn.node)
             if attr in scan.bad_attrs:
                 return None
+            assigned = assigned or attr in scan.attrs
             if fn.name == "__init__" and first is None:
                 first = scan.attrs.get(attr)
+        if not assigned:  # a class constant: `MAX_SPEED = 0.22` in the class body
+            body = self._scan(cls.node)
+            if attr in body.bad or attr not in body.plain:
+                return None
+            target = body.plain[attr]
+            return target.lineno, target.col_offset, attr
         if first is None or first.end_lineno != first.lineno:
             return None
         col = (first.end_col_offset or 0) - len(attr.encode("utf-8"))
@@ -418,6 +556,8 @@ class _Scan:
             first = [*scope.args.posonlyargs, *scope.args.args][:1]
             self.me = first[0].arg if first else None
             body: list[ast.stmt] = scope.body
+        elif isinstance(scope, ast.ClassDef):
+            body = scope.body
         elif isinstance(scope, ast.Module):
             body = scope.body
             for node in ast.walk(scope):

@@ -536,10 +536,11 @@ class Interpreter(CallEvaluator):
                 log.sink(self.flow_where(), source, unit, value)
                 return
             if base.kind != "instance":
+                log.attribute_field(self.flow_where(), target, source, value)
                 return
             decl = self.program.attributes.get(base.name, {}).get(target.attr)
         if decl is None:
-            log.bind(self.flow_where(), target, source)
+            log.bind(self.flow_where(), target, source, value)
         else:
             log.sink(self.flow_where(), source, decl.unit, value)
 
