@@ -125,6 +125,8 @@ def unit_suggestions(text: str, path: str, catalog: MsgCatalog) -> list[Suggesti
     log = ctx.unit_flows
     if log is None or log.program is None:
         return []
+    if any(d.rule is rules.ANALYSIS_BUDGET for d in ctx.diagnostics):
+        return []  # flows not seen could disagree with those seen
     assert isinstance(log, FlowLog)
     log.settle_attribute_fields(
         ctx.msg_type_of, lambda msg_type, path: path_unit(catalog, msg_type, path)
