@@ -10,7 +10,8 @@ STEPS = 50  # near miss: a loop bound
 
 
 def wait_for_simulator(timeout):  # suggest: timeout s
-    rospy.wait_for_service("gazebo/reset_world", timeout=timeout)
+    name = rospy.get_param("~reset_service", "gazebo/reset_world")  # near miss
+    rospy.wait_for_service(name, timeout)
 
 
 def connect(robot):
@@ -23,7 +24,8 @@ def main():
     pub = rospy.Publisher("cmd_vel", Twist, queue_size=1)
     wait_for_simulator(5.0)
     connect("robot1")
-    rospy.sleep(SETTLE)
+    pause = rospy.Duration(SETTLE)  # near miss: a Duration, not a float
+    rospy.sleep(pause)
     rate = rospy.Rate(RATE_HZ)
     forward = rospy.get_param("~forward", 0.2)  # suggest: forward m/s
     for step in range(STEPS):  # near miss: `step` is a loop variable

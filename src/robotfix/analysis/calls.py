@@ -21,7 +21,7 @@ from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import INFINITY, NUMBERS
 from robotfix.annotations.units import Unit, named, resolve
 from robotfix.messages import Declared
-from robotfix.ros.api_model import MATH_UNITS, PARAMETER_CALLS, UNIT_PARAMETERS
+from robotfix.ros.api_model import MATH_UNITS, PARAMETER_CALLS, unit_parameters
 
 # Methods whose first argument leaves the node: it must satisfy its refinements.
 LEAVING = frozenset(
@@ -118,7 +118,7 @@ class CallEvaluator(ParameterEvaluator):
             found = self.parameter_call(name, callee, node, args, kwargs, state)
             if found is not None:
                 return found
-        if name in UNIT_PARAMETERS:
+        if unit_parameters(name, self.ctx.ros1):
             self._check_api_units(name, node, args, kwargs)
         return self.unknown(node)
 
@@ -262,7 +262,7 @@ class CallEvaluator(ParameterEvaluator):
         args: list[Value],
         kwargs: dict[str | None, Value],
     ) -> None:
-        for position, keyword, unit_text in UNIT_PARAMETERS[name]:
+        for position, keyword, unit_text in unit_parameters(name, self.ctx.ros1):
             value = kwargs.get(keyword) or (
                 args[position] if position < len(args) else None
             )

@@ -31,6 +31,7 @@ from typing import TYPE_CHECKING
 from robotfix.analysis import heap
 from robotfix.analysis.values import NUMERIC, Value
 from robotfix.annotations.units import Unit
+from robotfix.ros.api_model import TIME_OBJECTS
 
 if TYPE_CHECKING:
     from robotfix.analysis.context import Scope
@@ -633,7 +634,17 @@ def _not_a_number(expr: ast.expr) -> bool:
     if isinstance(expr, ast.IfExp):
         return _not_a_number(expr.body) or _not_a_number(expr.orelse)
     if isinstance(expr, ast.Call):
-        return isinstance(expr.func, ast.Name) and expr.func.id in {"str", "repr"}
+        func = expr.func
+        name = (
+            func.id
+            if isinstance(func, ast.Name)
+            else func.attr
+            if isinstance(func, ast.Attribute)
+            else ""
+        )
+        return name in TIME_OBJECTS or (
+            isinstance(func, ast.Name) and name in {"str", "repr"}
+        )
     return isinstance(expr, _NOT_NUMBERS)
 
 
