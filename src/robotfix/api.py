@@ -7,7 +7,6 @@ diagnostics are filtered by suppressions, sorted and de-duplicated.
 
 from __future__ import annotations
 
-import ast
 import itertools
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -121,50 +120,36 @@ def hover(text: str, path: str, line: int, col: int, catalog: MsgCatalog) -> str
 
 
 def unit_suggestions(text: str, path: str, catalog: MsgCatalog) -> list[Suggestion]:
-    """Units the analysis can pin on unannotated variables from the flows they feed."""
+    """Units the analysis can pin on unannotated names from the flows they feed
+    (see analysis/flows.py)."""
+    from robotfix.analysis.flows import FlowLog, path_unit, suggestions
 
     source = SourceFile.from_text(path, text)
     if source.problem is not None or source.tree is None:
         return []
     ctx = _analyze(source, catalog, flows=True)
-    assert ctx.unit_flows is not None
-    found = []
-    for (scope, name), (units, kinds) in sorted(
-        ctx.unit_flows.items(), key=lambda i: i[0][1]
-    ):
-        if len(units) != 1:
-            continue  # flows into several units: a bug, not something to annotate
-        first = _first_assignment(scope, name)
-        if first is not None:
-            kind = "int" if kinds == {"int"} else "float"
-            found.append(
-                Suggestion(first.lineno, first.col_offset, name, units.pop(), kind)
-            )
-    return found
+    log = ctx.unit_flows
+    if log is None or log.program is None:
+        return []
+    if any(d.rule is rules.ANALYSIS_BUDGET for d in ctx.diagnostics):
+        return []  # flows not seen could disagree with those seen
+    assert isinstance(log, FlowLog)
+    log.settle_attribute_fields(
+        ctx.msg_type_of, lambda msg_type, path: path_unit(catalog, msg_type, path)
+    )
+    return [
+        Suggestion(f.line, f.col, f.name, f.unit, "float")
+        for f in suggestions(log, log.program)
+    ]
 
 
 @dataclass(frozen=True)
 class Suggestion:
     line: int
-    col: int  # of the assigned name
+    col: int  # byte column of the name
     name: str
     unit: str
     kind: str
-
-
-def _first_assignment(scope: ast.AST, name: str) -> ast.Name | None:
-    body = getattr(scope, "body", None)
-    if not isinstance(body, list):
-        return None
-    for statement in body:
-        if (
-            isinstance(statement, ast.Assign)
-            and len(statement.targets) == 1
-            and isinstance(statement.targets[0], ast.Name)
-            and statement.targets[0].id == name
-        ):
-            return statement.targets[0]
-    return None
 
 
 def check_paths(
@@ -214,7 +199,10 @@ def _analyze(
 
     ctx = FileContext(source, catalog, Discharger())
     ctx.hovers = [] if hovers else None
-    ctx.unit_flows = {} if flows else None
+    if flows:
+        from robotfix.analysis.flows import FlowLog
+
+        ctx.unit_flows = FlowLog()
     try:
         analyze_module(ctx)
     except BudgetExceededError as stop:

@@ -209,7 +209,10 @@ def annotate(text: str, path: str, catalog: MsgCatalog) -> str:
         if not _whole_name(body, start, stop, s.name):
             continue
         annotation = f": Annotated[{s.kind}, \"Unit('{s.unit}')\"]"
-        lines[s.line - 1] = (body[:stop] + annotation + body[stop:], end)
+        rest = body[stop:]
+        if rest.startswith("=") and not rest.startswith("=="):
+            rest = " = " + rest[1:].lstrip(" ")  # a default: `speed: T = 0.5`
+        lines[s.line - 1] = (body[:stop] + annotation + rest, end)
         applied += 1
     if not applied:
         return text
@@ -348,17 +351,41 @@ def _verify(before: ast.Module, text: str, applied: int, imported: bool) -> None
 
 
 def _count_annotated(tree: ast.Module) -> int:
-    return sum(isinstance(node, ast.AnnAssign) for node in ast.walk(tree))
+    return sum(
+        isinstance(node, ast.AnnAssign)
+        or (isinstance(node, ast.arg) and _is_suggested(node.annotation))
+        for node in ast.walk(tree)
+    )
+
+
+def _is_suggested(annotation: ast.expr | None) -> bool:
+    """`Annotated[float, "Unit('...')"]`, as `annotate` writes it."""
+    return (
+        isinstance(annotation, ast.Subscript)
+        and isinstance(annotation.value, ast.Name)
+        and annotation.value.id == "Annotated"
+        and isinstance(annotation.slice, ast.Tuple)
+        and len(annotation.slice.elts) == 2
+        and isinstance(annotation.slice.elts[1], ast.Constant)
+        and isinstance(annotation.slice.elts[1].value, str)
+        and annotation.slice.elts[1].value.startswith("Unit('")
+    )
 
 
 class _Unannotate(ast.NodeTransformer):
-    """`x: T = v` -> `x = v`, and `from typing import Annotated` dropped: what is
-    left must be the same before and after the edit."""
+    """`x: T = v` and `self.x: T = v` -> `x = v`, a parameter's
+    `Annotated[float, "Unit(...)"]` dropped, and `from typing import Annotated`
+    dropped: what is left must be the same before and after the edit."""
 
     def visit_AnnAssign(self, node: ast.AnnAssign) -> ast.AST:
-        if node.value is None or not isinstance(node.target, ast.Name):
+        if node.value is None or not isinstance(node.target, (ast.Name, ast.Attribute)):
             return node
         return ast.Assign(targets=[node.target], value=node.value, type_comment=None)
+
+    def visit_arg(self, node: ast.arg) -> ast.AST:
+        if _is_suggested(node.annotation):
+            node.annotation = None
+        return node
 
     def visit_ImportFrom(self, node: ast.ImportFrom) -> ast.AST | None:
         if node.module == "typing" and [a.name for a in node.names] == ["Annotated"]:

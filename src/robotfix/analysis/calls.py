@@ -21,7 +21,7 @@ from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import INFINITY, NUMBERS
 from robotfix.annotations.units import Unit, named, resolve
 from robotfix.messages import Declared
-from robotfix.ros.api_model import MATH_UNITS, PARAMETER_CALLS, UNIT_PARAMETERS
+from robotfix.ros.api_model import MATH_UNITS, PARAMETER_CALLS, unit_parameters
 
 # Methods whose first argument leaves the node: it must satisfy its refinements.
 LEAVING = frozenset(
@@ -82,7 +82,10 @@ class CallEvaluator(ParameterEvaluator):
         state: State,
     ) -> Value:
         if callee.kind == "msgclass":
-            return self.construct(callee.name, args, kwargs, state)
+            message = self.construct(callee.name, args, kwargs, state)
+            if self.ctx.unit_flows is not None:
+                self._constructor_flows(message, node, args, kwargs, state)
+            return message
         if callee.kind == "parameter_method":  # p.get_parameter_value()
             return Value("parameter_value", name=callee.name)
         if (
@@ -127,7 +130,7 @@ class CallEvaluator(ParameterEvaluator):
             found = self.parameter_call(name, callee, node, args, kwargs, state)
             if found is not None:
                 return found
-        if name in UNIT_PARAMETERS:
+        if unit_parameters(name, self.ctx.ros1):
             self._check_api_units(name, node, args, kwargs)
         return self.unknown(node)
 
@@ -179,11 +182,19 @@ class CallEvaluator(ParameterEvaluator):
         given: dict[str, Value] = dict(zip(params, args, strict=False))
         given.update({k: v for k, v in kwargs.items() if k is not None})
         terms = {k: v.term for k, v in given.items() if v.term is not None}
+        exprs = dict(zip(params, node.args, strict=False))
+        exprs.update({k.arg: k.value for k in node.keywords if k.arg is not None})
+        log, where = self.ctx.unit_flows, self.flow_where()
         for name, value in given.items():
             decl = scope.decls.get(name)
             if decl is not None:
                 lookup = {**self._callee_names(decl, function, state), **terms}
                 self.check.assign_refined(state, name, decl, value, self.site, lookup)
+            if log is not None and where is not None and name in exprs:
+                if decl is not None:
+                    log.sink(where, exprs[name], decl.unit, value)
+                else:
+                    log.call(where, function.key, name, exprs[name])
         if function.returns is None:
             return self.unknown(node)
         lookup = {**self._callee_names(function.returns, function, state), **terms}
@@ -233,6 +244,28 @@ class CallEvaluator(ParameterEvaluator):
             )
         return message
 
+    def _constructor_flows(
+        self,
+        message: Value,
+        node: ast.Call,
+        args: list[Value],
+        kwargs: dict[str | None, Value],
+        state: State,
+    ) -> None:
+        """For `robotfix suggest`: `Twist(linear=...)`, `Vector3(x=speed)`."""
+        spec = self.ctx.catalog.lookup(message.name or "")
+        if message.ref is None or message.ref not in state.heap or spec is None:
+            return
+        given = list(zip(spec.fields, node.args, args, strict=False))
+        given += [
+            (k.arg, k.value, kwargs[k.arg])
+            for k in node.keywords
+            if k.arg is not None and k.arg in kwargs
+        ]
+        for name, expr, value in given:
+            unit = heap.field_unit(self.ctx, state, message.ref, name)[0]
+            self.note_sink(expr, unit, value)
+
     # -- ROS API and math ----------------------------------------------------
     def _check_api_units(
         self,
@@ -241,12 +274,17 @@ class CallEvaluator(ParameterEvaluator):
         args: list[Value],
         kwargs: dict[str | None, Value],
     ) -> None:
-        for position, keyword, unit_text in UNIT_PARAMETERS[name]:
+        for position, keyword, unit_text in unit_parameters(name, self.ctx.ros1):
             value = kwargs.get(keyword) or (
                 args[position] if position < len(args) else None
             )
             if value is None:
                 continue
+            expr = next((k.value for k in node.keywords if k.arg == keyword), None)
+            if expr is None and keyword not in kwargs:
+                expr = node.args[position]
+            if expr is not None:
+                self.note_sink(expr, resolve(unit_text), value)
             declared = Declared(
                 f"ROS API: the `{keyword}` argument of {name}() is in {unit_text}",
                 None,
@@ -270,6 +308,7 @@ class CallEvaluator(ParameterEvaluator):
         if name in ("radians", "degrees"):
             factor = math.pi / 180 if name == "radians" else 180 / math.pi
             source = resolve("degree" if name == "radians" else "rad")
+            self.note_sink(node.args[0], source, first)
             if first.unit is not None and not first.literal:
                 source = first.unit
             result_unit = Unit(source.dims, source.factor / factor, text="")
@@ -280,6 +319,7 @@ class CallEvaluator(ParameterEvaluator):
         if name in MATH_UNITS:
             argument, result = MATH_UNITS[name]
             if argument is not None:
+                self.note_sink(node.args[0], resolve(argument), first)
                 self.check.units_agree(
                     resolve(argument),
                     first,

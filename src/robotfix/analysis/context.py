@@ -25,6 +25,7 @@ from robotfix.ros.catalog import Invariant, MsgCatalog, MsgSpec
 from robotfix.source import SourceFile
 
 if TYPE_CHECKING:
+    from robotfix.analysis.flows import FlowLog
     from robotfix.analysis.parameters import ParamContext
 
 MSG_MODULES = ("msg", "srv", "action")
@@ -94,11 +95,9 @@ class FileContext:
         self._invariants: dict[str, list[Invariant]] = {}
         # (span, markdown) for names and fields, kept only for editor hovers
         self.hovers: list[tuple[Span, str]] | None = None
-        # (scope node id, variable) -> (units it flows into, target base kinds), for
-        # `robotfix suggest`; None when not asked for
-        self.unit_flows: dict[tuple[ast.AST, str], tuple[set[str], set[str]]] | None = (
-            None
-        )
+        # where unannotated names flow (analysis/flows.py), for `robotfix suggest`;
+        # None when not asked for
+        self.unit_flows: FlowLog | None = None
 
     # -- symbols and ids -----------------------------------------------------
     def fresh_id(self) -> int:

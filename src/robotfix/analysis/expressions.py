@@ -19,6 +19,7 @@ from robotfix.analysis import containers, heap, hover
 from robotfix.analysis.checks import Checker
 from robotfix.analysis.constants import is_constant
 from robotfix.analysis.context import TERM_LIMIT, FileContext
+from robotfix.analysis.flows import Where
 from robotfix.analysis.program import Program
 from robotfix.analysis.state import State
 from robotfix.analysis.values import NONE, SEQUENCES, Items, Value
@@ -76,6 +77,17 @@ class ExpressionEvaluator:
     def is_read_only_table(self, node: ast.expr) -> bool:
         """Whether `node` names a module dict or list that no code changes."""
         return False
+
+    def flow_where(self) -> Where | None:
+        """Where the code being interpreted is, for the flows `robotfix suggest`
+        follows (provided by the statement interpreter)."""
+        return None
+
+    def note_sink(self, expr: ast.expr, unit: Unit | None, value: Value | None) -> None:
+        """For `robotfix suggest`: `expr`, holding `value`, reached `unit`'s place."""
+        log, where = self.ctx.unit_flows, self.flow_where()
+        if log is not None and where is not None:
+            log.sink(where, expr, unit, value)
 
     # -- dispatch ------------------------------------------------------------
     def eval(self, node: ast.expr, state: State) -> Value:

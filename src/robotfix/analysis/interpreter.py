@@ -19,6 +19,7 @@ from robotfix.analysis import containers, heap, hover
 from robotfix.analysis.calls import CallEvaluator
 from robotfix.analysis.constants import scan
 from robotfix.analysis.context import FileContext, Scope, build_scope
+from robotfix.analysis.flows import Where
 from robotfix.analysis.index import index_module
 from robotfix.analysis.program import Function, Program, collect
 from robotfix.analysis.state import MAYBE, State, join
@@ -44,6 +45,8 @@ def analyze_module(ctx: FileContext) -> None:
     ctx.constants = scan(tree, ctx.index, ctx.qualname, ":=" in ctx.source.text)
     module = build_scope(ctx, "module", "<module>", tree, None)
     program = collect(ctx, tree, module)
+    if ctx.unit_flows is not None:
+        ctx.unit_flows.program = program
     top = Interpreter(ctx, program, module, {})
     state = top.exec_block(tree.body, State())
     statics = {
@@ -728,42 +731,45 @@ class Interpreter(CallEvaluator):
         value = self.eval(node.value, state)
         for target in node.targets:
             self.bind(target, value, state)
-            self._record_flow(node.value, target, state)
+            if len(node.targets) == 1:
+                self._record_flow(node.value, target, value, state)
         return state
 
-    def _record_flow(self, source: ast.expr, target: ast.expr, state: State) -> None:
-        """For `robotfix suggest`: an unannotated variable assigned where a unit is
-        known (a refined variable, a message field with a unit)."""
-        flows = self.ctx.unit_flows
-        if (
-            flows is None
-            or not isinstance(source, ast.Name)
-            or self.decl_for(source.id)
-        ):
+    def flow_where(self) -> Where:
+        return Where(self.scope, self.function)
+
+    def _record_flow(
+        self, source: ast.expr, target: ast.expr, value: Value, state: State
+    ) -> None:
+        """For `robotfix suggest` (analysis/flows.py): `source` reached a place with
+        a unit (a refined name or attribute, a message field with a unit), or an
+        unannotated name or attribute takes its value."""
+        log = self.ctx.unit_flows
+        if log is None:
             return
-        if source.id not in self.scope.local_names:
-            return
-        unit, kind = None, "float"
+        decl: Refinement | None = None
         if isinstance(target, ast.Name):
             decl = self.decl_for(target.id)
-            if decl is not None and decl.unit is not None:
-                unit, kind = decl.unit, decl.base
         elif isinstance(target, ast.Attribute):
             base = self.eval(target.value, state)
             if base.kind == "msg" and base.ref in state.heap:
                 unit = heap.field_unit(self.ctx, state, base.ref, target.attr)[0]
-                spec = heap.field_spec(self.ctx, state, base.ref, target.attr)
-                kind = spec.kind if spec is not None else kind
-        if unit is not None and unit.text:
-            units, kinds = flows.setdefault(
-                (self.scope.node, source.id), (set(), set())
-            )
-            units.add(unit.text)
-            kinds.add(kind)
+                log.sink(self.flow_where(), source, unit, value)
+                return
+            if base.kind != "instance":
+                log.attribute_field(self.flow_where(), target, source, value)
+                return
+            decl = self.program.attributes.get(base.name, {}).get(target.attr)
+        if decl is None:
+            log.bind(self.flow_where(), target, source, value)
+        else:
+            log.sink(self.flow_where(), source, decl.unit, value)
 
     def visit_AnnAssign(self, node: ast.AnnAssign, state: State) -> State:
         if node.value is not None:
-            self.bind(node.target, self.eval(node.value, state), state)
+            value = self.eval(node.value, state)
+            self.bind(node.target, value, state)
+            self._record_flow(node.value, node.target, value, state)
         elif isinstance(node.target, ast.Name):  # a declaration: what it will hold
             name, declared = node.target.id, Value("unknown")
             self.note_hover(
@@ -782,9 +788,10 @@ class Interpreter(CallEvaluator):
         else:
             return self.generic(node, state)
         combined = ast.BinOp(ast.copy_location(load, node.target), node.op, node.value)
-        self.bind(
-            node.target, self.eval(ast.copy_location(combined, node), state), state
-        )
+        value = self.eval(ast.copy_location(combined, node), state)
+        self.bind(node.target, value, state)
+        if isinstance(node.op, (ast.Add, ast.Sub)):  # `x += d`: d has x's unit
+            self._record_flow(node.value, node.target, value, state)
         return state
 
     def visit_Assert(self, node: ast.Assert, state: State) -> State:
@@ -799,6 +806,8 @@ class Interpreter(CallEvaluator):
             self.check.assign_refined(
                 state, f"{function.name}()", function.returns, value, node, lookup
             )
+            if node.value is not None:
+                self.note_sink(node.value, function.returns.unit, value)
         callback = self.program.callbacks.get(function.key) if function else None
         leaves = callback is not None and callback.kind in (
             "service",

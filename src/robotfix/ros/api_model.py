@@ -47,6 +47,23 @@ UNIT_PARAMETERS: dict[str, tuple[tuple[int, str, str], ...]] = {
     "spin_once": ((1, "timeout_sec", "s"),),
     "spin_until_future_complete": ((2, "timeout_sec", "s"),),
 }
+# Where ROS 1 differs: rospy.wait_for_service(service, timeout) and actionlib's
+# wait_for_server(timeout=rospy.Duration()) take the name first, a Duration.
+UNIT_PARAMETERS_ROS1: dict[str, tuple[tuple[int, str, str], ...]] = {
+    "wait_for_service": ((1, "timeout", "s"),),
+    "wait_for_server": (),
+}
+# Calls that make a time object, not a number of seconds (`rospy.Duration(5)`).
+TIME_OBJECTS = frozenset({"Duration", "Time"})
+
+
+def unit_parameters(name: str, ros1: bool) -> tuple[tuple[int, str, str], ...]:
+    """The arguments of a ROS API call `name` that carry a unit: the one place
+    the analysis reads them."""
+    if ros1 and name in UNIT_PARAMETERS_ROS1:
+        return UNIT_PARAMETERS_ROS1[name]
+    return UNIT_PARAMETERS.get(name, ())
+
 
 # math functions: name -> (argument unit or None for "same as result", result unit)
 MATH_UNITS: dict[str, tuple[str | None, str | None]] = {

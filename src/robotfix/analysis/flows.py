@@ -1,0 +1,663 @@
+"""Where unannotated names flow, for `robotfix suggest`.
+
+While a file is interpreted (only when suggestions are asked for), the interpreter
+logs three kinds of events here: an expression reaching a place whose unit is known
+(a message field, an annotated variable or attribute, a refined parameter or return
+value, a unit parameter of a ROS API), a call of a user function (which argument
+went to which parameter), and an assignment to an unannotated name or `self.attr`.
+
+`suggestions` then follows the flows backwards, syntactically, through what keeps a
+unit: `+`, `-`, a literal factor that is not a unit conversion (`speed * 0.5` but not
+`speed / 3.6`) nor a placeholder gain (`error * 1.0`), `min`, `max`, `abs`, `float`,
+`round`, a conditional expression; an assignment (`v = speed`), a parameter of the
+enclosing function and the arguments of its calls, `self.x` and its assignments in
+any method. A product or quotient of two names carries nothing. Units that values
+are known to have (`math.atan2` gives rad) go forwards through the same flows. A
+name gets a unit only when all the units it meets agree and it can be annotated
+where it is first bound (a plain `x = ...`, an unannotated parameter, `self.x = ...`
+in `__init__`, a class constant); a name that meets two different units gets no
+suggestion (that is a bug for `robotfix check`, or a controller's implicit gain,
+not an annotation).
+"""
+
+from __future__ import annotations
+
+import ast
+import math
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
+
+from robotfix.analysis import heap
+from robotfix.analysis.values import NUMERIC, Value
+from robotfix.annotations.units import Unit
+from robotfix.ros.api_model import TIME_OBJECTS
+
+if TYPE_CHECKING:
+    from robotfix.analysis.context import Scope
+    from robotfix.analysis.program import Function, Program
+    from robotfix.ros.catalog import MsgCatalog, MsgSpec
+
+# Literal factors that may be a unit conversion (`speed / 3.6` is km/h -> m/s,
+# `deg * math.pi / 180` degrees -> radians): a flow through one says nothing sure.
+_CONVERSIONS = (
+    10.0,
+    100.0,
+    1000.0,
+    1e4,
+    1e5,
+    1e6,
+    1e9,
+    3.6,
+    60.0,
+    3600.0,
+    86400.0,
+    math.pi,
+    2 * math.pi,
+    math.pi / 180,
+    0.3048,
+    0.0254,
+    1.609344,
+    0.44704,
+    0.514444,
+    1.852,
+    9.80665,
+    1024.0,
+)
+# what a name is: ("local", id(scope node), name), ("param", id(function node),
+# function key, name), ("attr", class name, attribute)
+Entity = tuple[object, ...]
+_KEEPING_CALLS = frozenset({"min", "max", "abs", "float", "round"})
+_KEEPING_MATH = frozenset({"fabs"})  # math.copysign keeps its first argument's
+
+
+@dataclass
+class Where:
+    """The code an event was seen in: a scope and, for a function, the function."""
+
+    scope: Scope
+    function: Function | None
+
+    @property
+    def self_name(self) -> str | None:
+        """The name of `self` in a method, else None."""
+        fn = self.function
+        if fn is None or not fn.is_method or isinstance(fn.node, ast.Lambda):
+            return None
+        first = [*fn.node.args.posonlyargs, *fn.node.args.args][:1]
+        return first[0].arg if first else None
+
+
+@dataclass
+class FlowLog:
+    sinks: list[tuple[Where, ast.expr, Unit]] = field(default_factory=list)
+    # function key -> (caller, parameter, argument)
+    calls: dict[str, list[tuple[Where, str, ast.expr]]] = field(default_factory=dict)
+    # ("local", id(scope node), name) / ("attr", class, attr) -> (where, value)
+    binds: dict[tuple[object, ...], list[tuple[Where, ast.expr]]] = field(
+        default_factory=dict
+    )
+    # (entity, a unit a value assigned to it has)
+    held: list[tuple[tuple[object, ...], Unit]] = field(default_factory=list)
+    program: Program | None = None  # set when the file's program is collected
+    # `self.cmd.linear.x = speed` where the analysis does not know `self.cmd` (set
+    # in another method): (where, attribute entity, field path, value expression)
+    attribute_fields: list[tuple[Where, tuple[object, ...], str, ast.expr, Value]] = (
+        field(default_factory=list)
+    )
+    _seen: set[tuple[object, ...]] = field(default_factory=set)
+
+    def sink(
+        self, where: Where, expr: ast.expr, unit: Unit | None, value: Value | None
+    ) -> None:
+        """`expr` (holding `value`) reached a place of `unit` (a dimensionless one
+        only tells a name apart from one with a unit: it is never suggested)."""
+        if unit is None or unit.is_label:
+            return
+        if value is not None:
+            if value.kind not in NUMERIC and value.kind != "unknown":
+                return
+            found = value.fit(unit)
+            if found is not None and found.kind != "ok":
+                return  # a bug `check` reports: nothing to learn from it
+        if self._once("sink", id(expr), str(unit)):
+            self.sinks.append((where, expr, unit))
+
+    def call(self, where: Where, key: str, param: str, expr: ast.expr) -> None:
+        if self._once("call", id(expr), key, param):
+            self.calls.setdefault(key, []).append((where, param, expr))
+
+    def bind(
+        self, where: Where, target: ast.expr, expr: ast.expr, value: Value
+    ) -> None:
+        """`target = expr` (or `target += expr`) for an unannotated target; a unit
+        the value is known to have (`math.atan2(...)` is rad) is kept to find names
+        that hold two units (never a suggestion by itself)."""
+        entity = _target_entity(where, target)
+        if entity is None:
+            return
+        if self._once("bind", id(expr), entity):
+            self.binds.setdefault(entity, []).append((where, expr))
+        unit = value.unit
+        kept = unit is not None and not value.literal and value.scale == 1.0
+        if kept and unit is not None and not unit.is_label:
+            self.held.append((entity, unit))
+
+    def attribute_field(
+        self, where: Where, target: ast.Attribute, expr: ast.expr, value: Value
+    ) -> None:
+        """`self.cmd.linear.x = expr`, `self.cmd` unknown here: its type is looked
+        for in the class's assignments at the end (`settle_attribute_fields`)."""
+        if value.kind not in NUMERIC and value.kind != "unknown":
+            return
+        path: list[str] = []
+        node: ast.expr = target
+        while isinstance(node, ast.Attribute):
+            entity = _target_entity(where, node)
+            if entity is not None:
+                if path and self._once("field", id(expr)):
+                    self.attribute_fields.append(
+                        (where, entity, ".".join(reversed(path)), expr, value)
+                    )
+                return
+            path.append(node.attr)
+            node = node.value
+
+    def settle_attribute_fields(
+        self,
+        msg_type_of: Callable[[ast.expr], str | None],
+        unit_of: Callable[[str, str], Unit | None],
+    ) -> None:
+        """The writes into fields of messages held in attributes become sinks when
+        every assignment of the attribute constructs the same message type."""
+        for where, entity, path, expr, value in self.attribute_fields:
+            types = {
+                msg_type_of(value.func) if isinstance(value, ast.Call) else None
+                for _, value in self.binds.get(entity, [])
+            }
+            if len(types) != 1 or None in types:
+                continue
+            msg_type = types.pop()
+            assert msg_type is not None
+            self.sink(where, expr, unit_of(msg_type, path), value)
+
+    def _once(self, *key: object) -> bool:
+        if key in self._seen:
+            return False
+        self._seen.add(key)
+        return True
+
+
+@dataclass(frozen=True)
+class Found:
+    line: int
+    col: int  # byte column of the name
+    name: str
+    unit: str
+
+
+def _target_entity(where: Where, target: ast.expr) -> tuple[object, ...] | None:
+    if isinstance(target, ast.Name):
+        return ("local", id(where.scope.node), target.id)
+    me = where.self_name
+    fn = where.function
+    if (
+        me is not None
+        and fn is not None
+        and isinstance(target, ast.Attribute)
+        and isinstance(target.value, ast.Name)
+        and target.value.id == me
+    ):
+        return ("attr", fn.class_name, target.attr)
+    return None
+
+
+def path_unit(catalog: MsgCatalog, msg_type: str, path: str) -> Unit | None:
+    """The unit of the number at `path` (`linear.x`) of a `msg_type` message, by
+    the same rule as the analysis's (`heap.field_unit`): the outermost message
+    that declares one."""
+    parts = path.split(".")
+    chain: list[tuple[MsgSpec, str]] = []
+    current = msg_type
+    for index, part in enumerate(parts):
+        spec = catalog.lookup(current)
+        found = spec.fields.get(part) if spec is not None else None
+        if spec is None or found is None or found.array:
+            return None
+        chain.append((spec, ".".join(parts[index:])))
+        if index == len(parts) - 1:
+            if found.kind not in ("int", "float"):
+                return None
+        elif found.kind != "msg" or not found.msg_type:
+            return None
+        else:
+            current = found.msg_type
+    for spec, rest in chain:
+        declared = spec.units.get(rest)
+        if declared is not None:
+            return heap.unit_of(declared.text)
+    return None
+
+
+def suggestions(log: FlowLog, program: Program) -> list[Found]:
+    """One unit for each name whose flows all agree and that can be annotated.
+
+    The unit of a place goes backwards, to the names whose values reach it
+    (`cmd.linear.x = v`, `v = speed * 0.5`: both m/s); a unit a value is known to
+    have (`math.atan2(...)` is rad) goes forwards, to the names that take it
+    (`error = heading - yaw`), so that a name holding rad that reaches rad/s (a
+    controller's implicit gain) gets no suggestion. A name gets one when all the
+    units it meets agree."""
+    sources: dict[tuple[object, ...], list[tuple[Where, ast.expr]]] = {}
+    for entity, assigned in log.binds.items():
+        sources.setdefault(entity, []).extend(assigned)
+    for key, calls in log.calls.items():
+        function = program.functions.get(key)
+        for where, param, expr in calls if function is not None else []:
+            assert function is not None
+            entity = ("param", id(function.node), key, param)
+            sources.setdefault(entity, []).append((where, expr))
+    carried: dict[tuple[object, ...], list[tuple[tuple[object, ...], Where]]] = {}
+    places: dict[tuple[object, ...], Where] = {}
+
+    def carriers(
+        expr: ast.expr, where: Where
+    ) -> list[tuple[tuple[object, ...], Where]]:
+        found = carried.get((id(expr),))
+        if found is None:
+            found = carried[(id(expr),)] = list(_carriers(expr, where))
+            for entity, at in found:
+                places.setdefault(entity, at)
+        return found
+
+    reached: dict[tuple[object, ...], list[Unit]] = {}
+    todo: list[tuple[tuple[object, ...], Unit]] = []
+    for where, expr, unit in log.sinks:
+        todo.extend((entity, unit) for entity, _ in carriers(expr, where))
+    done: set[tuple[tuple[object, ...], str]] = set()
+    while todo:  # backwards, from the places
+        entity, unit = todo.pop()
+        if (entity, str(unit)) in done:
+            continue
+        done.add((entity, str(unit)))
+        _add(reached.setdefault(entity, []), unit)
+        for where, expr in sources.get(entity, []):
+            todo.extend((e, unit) for e, _ in carriers(expr, where))
+    takers: dict[tuple[object, ...], list[tuple[object, ...]]] = {}
+    for entity, assigned in sources.items():
+        for where, expr in assigned:
+            for carrier, _ in carriers(expr, where):
+                takers.setdefault(carrier, []).append(entity)
+    held: dict[tuple[object, ...], list[Unit]] = {}
+    forward = list(log.held)
+    seen: set[tuple[tuple[object, ...], str]] = set()
+    while forward:  # forwards, from the values
+        entity, unit = forward.pop()
+        if (entity, str(unit)) in seen:
+            continue
+        seen.add((entity, str(unit)))
+        _add(held.setdefault(entity, []), unit)
+        forward.extend((taker, unit) for taker in takers.get(entity, []))
+    found = []
+    shapes = _Shapes(program, log)
+    for entity, units in reached.items():
+        met = list(units)
+        for unit in held.get(entity, []):
+            _add(met, unit)
+        if len(met) != 1 or not met[0].dims or not met[0].text:
+            continue  # several units: a bug for `check`, not an annotation
+        spot = shapes.spot(entity, places.get(entity))
+        if spot is not None:
+            found.append(Found(spot[0], spot[1], spot[2], met[0].text))
+    return sorted(set(found), key=lambda f: (f.line, f.col))
+
+
+def _add(units: list[Unit], unit: Unit) -> None:
+    if not any(u.same_as(unit) for u in units):
+        units.append(unit)
+
+
+def _carriers(
+    expr: ast.expr, where: Where, factor: float = 1.0
+) -> Iterator[tuple[tuple[object, ...], Where]]:
+    """The names in `expr` whose unit the whole value has."""
+    if _not_a_number(expr):  # `"/" + robot + "/reset"` reaching a timeout's place
+        return
+    if isinstance(expr, ast.Name):
+        if not _conversion(factor):
+            entity = _name_entity(expr.id, where)
+            if entity is not None:
+                yield entity, where
+    elif isinstance(expr, ast.Attribute):
+        entity = _target_entity(where, expr)
+        if entity is not None and not _conversion(factor):
+            yield entity, where
+    elif isinstance(expr, ast.UnaryOp) and isinstance(expr.op, (ast.USub, ast.UAdd)):
+        yield from _carriers(expr.operand, where, factor)
+    elif isinstance(expr, ast.BinOp):
+        if isinstance(expr.op, (ast.Add, ast.Sub)):
+            yield from _carriers(expr.left, where, factor)
+            yield from _carriers(expr.right, where, factor)
+        elif isinstance(expr.op, ast.Mult):
+            # `error * 1.0`: a factor of one is written as a gain's placeholder
+            right, left = _literal(expr.right), _literal(expr.left)
+            if right is not None and right != 1:
+                yield from _carriers(expr.left, where, factor * right)
+            elif left is not None and left != 1:
+                yield from _carriers(expr.right, where, factor * left)
+        elif isinstance(expr.op, ast.Div):
+            right = _literal(expr.right)
+            if right and right != 1:
+                yield from _carriers(expr.left, where, factor / right)
+    elif isinstance(expr, ast.IfExp):
+        yield from _carriers(expr.body, where, factor)
+        yield from _carriers(expr.orelse, where, factor)
+    elif isinstance(expr, ast.NamedExpr):
+        yield from _carriers(expr.target, where, factor)
+        yield from _carriers(expr.value, where, factor)
+    elif isinstance(expr, ast.Call) and not expr.keywords:
+        func = expr.func
+        keeps = (
+            isinstance(func, ast.Name)
+            and func.id in _KEEPING_CALLS
+            and func.id not in where.scope.module().local_names
+        ) or (
+            isinstance(func, ast.Attribute)
+            and isinstance(func.value, ast.Name)
+            and func.value.id == "math"
+            and func.attr in _KEEPING_MATH
+        )
+        if keeps:
+            args = expr.args[:1] if getattr(func, "id", "") == "round" else expr.args
+            for arg in args:
+                yield from _carriers(arg, where, factor)
+
+
+def _name_entity(name: str, where: Where) -> tuple[object, ...] | None:
+    fn = where.function
+    scope = where.scope
+    if fn is not None:
+        if isinstance(fn.node, ast.Lambda):
+            return None
+        if name in _parameters(fn):
+            return ("param", id(fn.node), fn.key, name)
+        if name in scope.local_names:
+            return ("local", id(scope.node), name)
+    elif scope.kind == "module" and name in scope.local_names:
+        return ("local", id(scope.node), name)
+    module = scope.module()
+    if scope.kind == "function" and name in module.local_names:
+        return ("local", id(module.node), name)
+    return None
+
+
+def _default_of(args: ast.arguments, arg: ast.arg) -> ast.expr | None:
+    positional = [*args.posonlyargs, *args.args]
+    if arg in positional:
+        index = positional.index(arg) - (len(positional) - len(args.defaults))
+        return args.defaults[index] if index >= 0 else None
+    if arg in args.kwonlyargs:
+        return args.kw_defaults[args.kwonlyargs.index(arg)]
+    return None
+
+
+def _parameters(fn: Function) -> list[str]:
+    """The parameters an annotation can be given (not `self`, `*args`)."""
+    args = fn.node.args
+    names = [a.arg for a in [*args.posonlyargs, *args.args, *args.kwonlyargs]]
+    return names[1:] if fn.is_method else names
+
+
+def _literal(expr: ast.expr) -> float | None:
+    sign = 1.0
+    if isinstance(expr, ast.UnaryOp) and isinstance(expr.op, (ast.USub, ast.UAdd)):
+        sign = -1.0 if isinstance(expr.op, ast.USub) else 1.0
+        expr = expr.operand
+    if (
+        isinstance(expr, ast.Constant)
+        and isinstance(expr.value, (int, float))
+        and not isinstance(expr.value, bool)
+        and math.isfinite(expr.value)
+        and expr.value != 0
+    ):
+        return sign * float(expr.value)
+    return None
+
+
+def _conversion(factor: float) -> bool:
+    size = abs(factor)
+    if size == 0 or not math.isfinite(size):
+        return True
+    for known in _CONVERSIONS:
+        for candidate in (known, 1 / known):
+            if math.isclose(size, candidate, rel_tol=2e-3):
+                return True
+    return False
+
+
+class _Shapes:
+    """Where an entity can be annotated, read from the syntax: the first plain
+    `name = ...` of a scope, a bare parameter, `self.x = ...` in `__init__`."""
+
+    def __init__(self, program: Program, log: FlowLog) -> None:
+        self.program = program
+        self.log = log
+        self._scans: dict[int, _Scan] = {}
+
+    def spot(
+        self, entity: tuple[object, ...], where: Where | None
+    ) -> tuple[int, int, str] | None:
+        kind = entity[0]
+        if kind == "param":
+            return self._parameter(entity)
+        if kind == "local":
+            name = str(entity[2])
+            node = self._scope_node(entity, where) if where is not None else None
+            if node is None:
+                return None
+            scan = self._scan(node)
+            if name in scan.bad or name not in scan.plain:
+                return None
+            if (
+                isinstance(node, ast.Module)
+                and name in self._scan(node).declared_global
+            ):
+                return None
+            target = scan.plain[name]
+            return target.lineno, target.col_offset, name
+        if kind == "attr":
+            return self._attribute(str(entity[1]), str(entity[2]))
+        return None
+
+    def _scope_node(self, entity: tuple[object, ...], where: Where) -> ast.AST | None:
+        if id(where.scope.node) == entity[1]:
+            return where.scope.node
+        module = where.scope.module().node
+        return module if id(module) == entity[1] else None
+
+    def _parameter(self, entity: tuple[object, ...]) -> tuple[int, int, str] | None:
+        fn = self.program.functions.get(str(entity[2]))
+        if fn is None or isinstance(fn.node, ast.Lambda):
+            return None
+        name = str(entity[3])
+        args = fn.node.args
+        for arg in [*args.posonlyargs, *args.args, *args.kwonlyargs]:
+            if arg.arg == name:
+                default = _default_of(fn.node.args, arg)
+                if arg.annotation is not None or arg.type_comment:
+                    return None
+                if default is not None and _not_a_number(default):
+                    return None  # `period=None`: not a float
+                if any(
+                    param == name and _not_a_number(expr)
+                    for _, param, expr in self.log.calls.get(fn.key, [])
+                ):
+                    return None  # `self.hold(None)`
+                scan = self._scan(fn.node)
+                if name in scan.bad:
+                    return None
+                return arg.lineno, arg.col_offset, name
+        return None
+
+    def _attribute(self, class_name: str, attr: str) -> tuple[int, int, str] | None:
+        if attr in self.program.attributes.get(class_name, {}):
+            return None
+        cls = self.program.classes.get(class_name)
+        if cls is None or not isinstance(cls.node, ast.ClassDef):
+            return None
+        for statement in cls.node.body:  # `speed: float` in the class body
+            if (
+                isinstance(statement, ast.AnnAssign)
+                and isinstance(statement.target, ast.Name)
+                and statement.target.id == attr
+            ):
+                return None
+        first: ast.Attribute | None = None
+        assigned = False
+        for fn in self.program.functions.values():
+            if fn.class_name != class_name or isinstance(fn.node, ast.Lambda):
+                continue
+            scan = self._scan(fn.node)
+            if attr in scan.bad_attrs:
+                return None
+            assigned = assigned or attr in scan.attrs
+            if fn.name == "__init__" and first is None:
+                first = scan.attrs.get(attr)
+        if not assigned:  # a class constant: `MAX_SPEED = 0.22` in the class body
+            body = self._scan(cls.node)
+            if attr in body.bad or attr not in body.plain:
+                return None
+            target = body.plain[attr]
+            return target.lineno, target.col_offset, attr
+        if first is None or first.end_lineno != first.lineno:
+            return None
+        col = (first.end_col_offset or 0) - len(attr.encode("utf-8"))
+        return first.lineno, col, attr
+
+    def _scan(self, node: ast.AST) -> _Scan:
+        found = self._scans.get(id(node))
+        if found is None:
+            found = self._scans[id(node)] = _Scan(node)
+        return found
+
+
+class _Scan:
+    """How a scope binds its names (not looking into nested functions and classes):
+    the first plain `name = ...` target of each, and the names bound any other way
+    (annotated, unpacked, a loop or `with` target, `global`, deleted...)."""
+
+    def __init__(self, scope: ast.AST) -> None:
+        self.plain: dict[str, ast.Name] = {}
+        self.bad: set[str] = set()
+        self.attrs: dict[str, ast.Attribute] = {}  # `self.x = ...`, first of each
+        self.bad_attrs: set[str] = set()
+        self.declared_global: set[str] = set()
+        self.me: str | None = None
+        if isinstance(scope, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            first = [*scope.args.posonlyargs, *scope.args.args][:1]
+            self.me = first[0].arg if first else None
+            body: list[ast.stmt] = scope.body
+        elif isinstance(scope, ast.ClassDef):
+            body = scope.body
+        elif isinstance(scope, ast.Module):
+            body = scope.body
+            for node in ast.walk(scope):
+                if isinstance(node, ast.Global):
+                    self.declared_global.update(node.names)
+        else:
+            body = []
+        plain: set[int] = set()
+        for node in _walk_scope(body):
+            if isinstance(node, ast.Assign) and len(node.targets) == 1:
+                target = node.targets[0]
+                if _not_a_number(node.value):  # `x = None`, `x = "/" + name`
+                    continue
+                plain.add(id(target))
+                if isinstance(target, ast.Name):
+                    self.plain.setdefault(target.id, target)
+                elif self._is_self(target):
+                    assert isinstance(target, ast.Attribute)
+                    self.attrs.setdefault(target.attr, target)
+            elif isinstance(node, ast.AugAssign):
+                plain.add(id(node.target))
+            elif isinstance(node, (ast.Global, ast.Nonlocal)):
+                self.bad.update(node.names)
+        for node in _walk_scope(body):
+            if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
+                if id(node) not in plain:
+                    self.bad.add(node.id)
+            elif (
+                isinstance(node, ast.Attribute)
+                and not isinstance(node.ctx, ast.Load)
+                and self._is_self(node)
+                and id(node) not in plain
+            ):
+                self.bad_attrs.add(node.attr)
+            elif isinstance(node, ast.ExceptHandler) and node.name:
+                self.bad.add(node.name)
+            elif isinstance(node, (ast.Import, ast.ImportFrom)):
+                self.bad.update((a.asname or a.name).split(".")[0] for a in node.names)
+
+    def _is_self(self, node: ast.expr) -> bool:
+        return (
+            self.me is not None
+            and isinstance(node, ast.Attribute)
+            and isinstance(node.value, ast.Name)
+            and node.value.id == self.me
+        )
+
+
+_NOT_NUMBERS = (
+    ast.JoinedStr,
+    ast.List,
+    ast.Tuple,
+    ast.Dict,
+    ast.Set,
+    ast.ListComp,
+    ast.DictComp,
+    ast.SetComp,
+    ast.GeneratorExp,
+    ast.Lambda,
+)
+
+
+def _not_a_number(expr: ast.expr) -> bool:
+    """Whether `expr` is surely not a plain number: `None`, a string or a
+    concatenation with one, a container, a comprehension, a lambda (a call's
+    arguments say nothing of what it returns)."""
+    if isinstance(expr, ast.Constant):
+        return not isinstance(expr.value, (int, float)) or isinstance(expr.value, bool)
+    if isinstance(expr, ast.BinOp):
+        return _not_a_number(expr.left) or _not_a_number(expr.right)
+    if isinstance(expr, ast.UnaryOp):
+        return _not_a_number(expr.operand)
+    if isinstance(expr, ast.IfExp):
+        return _not_a_number(expr.body) or _not_a_number(expr.orelse)
+    if isinstance(expr, ast.Call):
+        func = expr.func
+        name = (
+            func.id
+            if isinstance(func, ast.Name)
+            else func.attr
+            if isinstance(func, ast.Attribute)
+            else ""
+        )
+        return name in TIME_OBJECTS or (
+            isinstance(func, ast.Name) and name in {"str", "repr"}
+        )
+    return isinstance(expr, _NOT_NUMBERS)
+
+
+def _walk_scope(body: list[ast.stmt]) -> Iterator[ast.AST]:
+    """Every node of a scope's body, not entering nested functions, lambdas and
+    classes (their names are theirs; a definition binds its own name)."""
+    todo: list[ast.AST] = list(reversed(body))
+    while todo:
+        node = todo.pop()
+        yield node
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+            yield ast.Name(node.name, ast.Store())  # binds the name: not plain
+            continue
+        if isinstance(node, ast.Lambda):
+            continue
+        todo.extend(reversed(list(ast.iter_child_nodes(node))))

@@ -1,0 +1,111 @@
+"""`robotfix suggest` follows flows (issue 11, item 6): every program under
+tests/suggest_cases/ is a small correct node whose `# suggest: name unit[, ...]`
+comments list exactly the suggestions on that line (the others are near misses that
+must get none); the suggestions applied must parse, add no diagnostic, and leave
+nothing more to suggest."""
+
+from __future__ import annotations
+
+import io
+import re
+import tokenize
+from pathlib import Path
+
+import pytest
+
+from robotfix import api
+from robotfix.api import check_source
+from robotfix.config import Config
+from robotfix.ros.catalog import MsgCatalog
+from robotfix.suggest import annotate
+from tests.test_cli import run
+
+CASES = Path(__file__).parent / "suggest_cases"
+_EXPECTED = re.compile(r"#\s*suggest:\s*(.*)$")
+
+
+@pytest.fixture(scope="module")
+def catalog() -> MsgCatalog:
+    return MsgCatalog([])
+
+
+def expected(source: str) -> set[tuple[int, str, str]]:
+    found = set()
+    for tok in tokenize.generate_tokens(io.StringIO(source).readline):
+        match = _EXPECTED.match(tok.string) if tok.type == tokenize.COMMENT else None
+        if match:
+            for part in match.group(1).split(","):
+                name, unit = part.split()
+                found.add((tok.start[0], name, unit))
+    return found
+
+
+CASE_FILES = sorted(CASES.glob("*.py"))
+
+
+@pytest.mark.parametrize("path", CASE_FILES, ids=lambda p: p.stem)
+def test_suggestions_are_exactly_the_expected(path: Path, catalog: MsgCatalog) -> None:
+    source = path.read_text(encoding="utf-8")
+    got = {
+        (s.line, s.name, s.unit)
+        for s in api.unit_suggestions(source, str(path), catalog)
+    }
+    assert got == expected(source)
+
+
+@pytest.mark.parametrize("path", CASE_FILES, ids=lambda p: p.stem)
+def test_applied_suggestions_check_clean(path: Path, catalog: MsgCatalog) -> None:
+    source = path.read_text(encoding="utf-8")
+    assert check_source(source, str(path), Config(), catalog) == []
+    changed = annotate(source, str(path), catalog)
+    assert changed != source
+    assert check_source(changed, str(path), Config(), catalog) == []
+    assert annotate(changed, str(path), catalog) == changed  # nothing left
+
+
+def test_the_annotations_catch_a_later_bug(catalog: MsgCatalog) -> None:
+    source = (CASES / "drive_helper.py").read_text(encoding="utf-8")
+    bug = ("self.drive(self.slow, self.turn_speed)", "self.drive(self.turn_speed, 0.0)")
+    assert check_source(source.replace(*bug), "node.py", Config(), catalog) == []
+    annotated = annotate(source, "node.py", catalog).replace(*bug)
+    found = check_source(annotated, "node.py", Config(), catalog)
+    assert [d.code for d in found] == ["RF201"]
+
+
+def test_each_kind_of_place_is_written_where_it_belongs(catalog: MsgCatalog) -> None:
+    source = (CASES / "drive_helper.py").read_text(encoding="utf-8")
+    changed = annotate(source, "node.py", catalog)
+    unit = "Annotated[float, \"Unit('{}')\"]"
+    assert f"CRUISE: {unit.format('m/s')} = 0.4" in changed  # a module constant
+    assert (  # a parameter with a default
+        f"def __init__(self, turn_speed: {unit.format('rad/s')} = 0.6):" in changed
+    )
+    assert f"self.slow: {unit.format('m/s')} = CRUISE * 0.5" in changed  # __init__
+    assert (  # parameters
+        f"def drive(self, speed: {unit.format('m/s')}, turn: {unit.format('rad/s')}):"
+        in changed
+    )
+
+
+def test_apply_from_the_command_line(tmp_path: Path) -> None:
+    node = tmp_path / "patrol.py"
+    node.write_bytes((CASES / "rospy_patrol.py").read_bytes())
+    assert run("suggest", "patrol.py", "--apply", cwd=tmp_path).returncode == 0
+    text = node.read_text()
+    assert text.startswith("#!/usr/bin/env python\n")
+    assert "def wait_for_simulator(timeout: Annotated[float, \"Unit('s')\"]):" in text
+    assert run("check", "patrol.py", cwd=tmp_path).returncode == 0
+    again = run("suggest", "patrol.py", cwd=tmp_path)
+    assert again.stdout == "No suggestions in 1 file.\n"
+
+
+def test_no_suggestion_when_the_analysis_stopped_early(
+    catalog: MsgCatalog, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from robotfix.analysis import context
+
+    source = (CASES / "drive_helper.py").read_text(encoding="utf-8")
+    assert api.unit_suggestions(source, "node.py", catalog)
+    # stopped before `self.wait(None)`: `seconds` would look like a time
+    monkeypatch.setattr(context, "STEP_BUDGET", 100)
+    assert api.unit_suggestions(source, "node.py", catalog) == []
