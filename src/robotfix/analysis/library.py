@@ -15,6 +15,7 @@ from collections.abc import Sequence
 from dataclasses import replace
 from fractions import Fraction
 
+from robotfix import messages
 from robotfix.analysis import heap
 from robotfix.analysis.param_eval import ParameterEvaluator
 from robotfix.analysis.state import State
@@ -194,7 +195,11 @@ class LibraryEvaluator(ParameterEvaluator):
             for name, found in given.items()
             if found and found[0].term is not None
         }
-        return self.library_result(function, terms, node, state)
+        result = self.library_result(function, terms, node, state)
+        if values and all(v.literal for v in values) and _pure_number(result):
+            # `math.sin(math.radians(45))`: a number, taking the unit of its context
+            return replace(result, unit=None, literal=True)
+        return result
 
     def _check_argument(
         self,
@@ -208,11 +213,15 @@ class LibraryEvaluator(ParameterEvaluator):
             return
         target = f"the `{param.name}` argument of {function.short}()"
         unit = f" is in {decl.unit.text}" if decl.unit is not None else ""
-        declared = Declared(
-            f"{target}{unit}",
-            function.path,
-            function.line if function.path else None,
-            f"by the stub {function.origin} shipped with RobotFix",
+        declared = (
+            Declared(f"annotation of {target}", function.path, function.line)
+            if function.path is not None
+            else Declared(
+                f"{target}{unit}",
+                None,
+                None,
+                f"by the stub {function.origin} shipped with RobotFix",
+            )
         )
         if not self.check.units_agree(decl.unit, value, self.site, target, declared):
             return
@@ -336,7 +345,24 @@ class LibraryEvaluator(ParameterEvaluator):
             and not math.isclose(param.unit.factor, result.unit.factor)
         )
         if converted:
-            self._check_argument(function, function.params[0], first, state)
+            span, stmt = self.check.where(self.site)
+            name = function.params[0].name
+            declared = Declared(
+                f"the `{name}` argument of {function.short}() is in {param.unit.text}",
+                function.path,
+                function.line if function.path else None,
+                f"by the stub {function.origin} shipped with RobotFix",
+            )
+            self.ctx.report(
+                messages.converted_twice(
+                    self.ctx.source.path,
+                    span,
+                    stmt,
+                    function.short,
+                    first.unit,
+                    declared,
+                )
+            )
             return Value("float", term, result.unit)
         unit = named(Unit(first.unit.dims, first.unit.factor / factor, text=""))
         return Value("float", term, unit)
@@ -344,6 +370,10 @@ class LibraryEvaluator(ParameterEvaluator):
     def _stubs(self) -> stubs.StubSet:
         found: stubs.StubSet = getattr(self.ctx, "stubs", None) or stubs.stub_set()
         return found
+
+
+def _pure_number(value: Value) -> bool:
+    return value.is_number and (value.unit is None or not value.unit.dims)
 
 
 def _signature(function: stubs.Function) -> tuple[object, ...]:

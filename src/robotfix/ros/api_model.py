@@ -2,8 +2,8 @@
 
 Registrations name where the interface type and the callback are among a call's
 arguments (position, keyword); the analysis finds them syntactically so every
-callback is analysed as an entry point that receives messages. Unit-typed
-parameters name the unit an argument must have.
+callback is analysed as an entry point that receives messages. The units of
+parameters and results are not here: they are in the stubs (`robotfix/stubs/data`).
 """
 
 from __future__ import annotations

@@ -29,14 +29,18 @@ from __future__ import annotations
 import ast
 import functools
 import hashlib
+import re
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from robotfix.annotations.extract import Refinement, extract
+from robotfix.annotations import ast as A
+from robotfix.annotations.extract import ANNOTATED, BASE_TYPES, Refinement, extract
+from robotfix.annotations.units import UnitError, resolve
 from robotfix.fs import UnreadableError, read_regular
 
 DATA = Path(__file__).parent / "data"
+_UNIT_ONLY = re.compile(r"Unit\('([A-Za-z0-9_/*^ .]+)'\)")
 UNIT_RULES = frozenset({"same", "root", "scale", "agree"})
 MAX_STUB_BYTES = 1024 * 1024
 MAX_USER_STUBS = 10_000  # files under the stub paths that a run looks at
@@ -112,6 +116,8 @@ class StubSet:
     def __init__(self, paths: tuple[Path, ...] = ()) -> None:
         self.paths = paths
         self._modules: dict[str, Module | None] = {}
+        self._methods: dict[str, tuple[Function, ...]] = {}
+        self._files: dict[str, tuple[Path, str, bool] | None] = {}
 
     # -- modules -------------------------------------------------------------
     def module(self, name: str) -> Module | None:
@@ -120,6 +126,16 @@ class StubSet:
         return self._modules[name]
 
     def _load(self, name: str) -> Module | None:
+        found = self._file_of(name)
+        return read_module(name, *found) if found is not None else None
+
+    def _file_of(self, name: str) -> tuple[Path, str, bool] | None:
+        """The stub file of a module: (path, as messages show it, shipped)."""
+        if name not in self._files:
+            self._files[name] = self._find_file(name)
+        return self._files[name]
+
+    def _find_file(self, name: str) -> tuple[Path, str, bool] | None:
         if not name or not all(part.isidentifier() for part in name.split(".")):
             return None
         relative = name.replace(".", "/")
@@ -127,8 +143,7 @@ class StubSet:
             for candidate in (f"{relative}.pyi", f"{relative}/__init__.pyi"):
                 path = root / candidate
                 if path.is_file():
-                    shown = candidate if shipped else str(path)
-                    return read_module(name, path, shown, shipped)
+                    return path, candidate if shipped else str(path), shipped
         return None
 
     # -- names ---------------------------------------------------------------
@@ -189,18 +204,26 @@ class StubSet:
         of unknown type (`self.client.wait_for_service(timeout_sec=1.0)`)."""
         return [
             f
-            for module in self._all_modules()
+            for module in self._modules_defining(name)
             for cls in module.classes.values()
             for f in [cls.members.get(name)]
             if f is not None and f.kind == "method"
         ]
 
-    def _all_modules(self) -> list[Module]:
+    def _modules_defining(self, name: str) -> list[Module]:
+        """The stub modules whose text has `def name(`: only those are parsed."""
         names: set[str] = set()
         for root in [*self.paths, DATA]:
             names |= set(_module_names(root))
-        found = [self.module(n) for n in sorted(names)]
-        return [m for m in found if m is not None]
+        found = []
+        for module_name in sorted(names):
+            where = self._file_of(module_name)
+            if where is None or f"def {name}(" not in _text_of(where[0]):
+                continue
+            module = self.module(module_name)
+            if module is not None:
+                found.append(module)
+        return found
 
     def problems(self) -> list[Problem]:
         """Every problem of the user's stubs (read all at once, for a run)."""
@@ -231,13 +254,12 @@ def stub_set(paths: tuple[Path, ...] = ()) -> StubSet:
     return StubSet(paths)
 
 
-@functools.lru_cache(maxsize=8)
-def _method_index(stubs: StubSet, name: str) -> tuple[Function, ...]:
-    return tuple(stubs.methods_named(name))
-
-
 def methods_named(stubs: StubSet, name: str) -> tuple[Function, ...]:
-    return _method_index(stubs, name)
+    """`StubSet.methods_named`, once per name and process."""
+    found = stubs._methods.get(name)
+    if found is None:
+        found = stubs._methods[name] = tuple(stubs.methods_named(name))
+    return found
 
 
 def _stub_files(root: Path) -> Iterable[Path]:
@@ -249,6 +271,14 @@ def _stub_files(root: Path) -> Iterable[Path]:
         if len(found) >= MAX_USER_STUBS:
             break
     return found
+
+
+@functools.lru_cache(maxsize=256)
+def _text_of(path: Path) -> str:
+    try:
+        return read_regular(path, MAX_STUB_BYTES).decode("utf-8", "replace")
+    except UnreadableError:
+        return ""
 
 
 @functools.lru_cache(maxsize=16)
@@ -448,13 +478,16 @@ class _Reader:
     def annotation(self, node: ast.expr | None, name: str) -> Refinement | None:
         if node is None:
             return None
+        plain = self._unit_only(node)
+        if plain is not None:
+            return plain
         try:
             found, problems = extract(
                 node,
                 name,
                 self.qualname,
                 lambda _: None,
-                lambda n: ast.get_source_segment(self.text, n),
+                self.segment,
                 self.col_of,
             )
         except (RecursionError, MemoryError):
@@ -465,6 +498,52 @@ class _Reader:
                 Problem(self.shown, problem.line, problem.col, problem.message)
             )
         return None if problems else found
+
+    def segment(self, node: ast.AST) -> str | None:
+        """`ast.get_source_segment`, without splitting the whole text each time."""
+        line, end = getattr(node, "lineno", None), getattr(node, "end_lineno", None)
+        col, end_col = (
+            getattr(node, "col_offset", None),
+            getattr(node, "end_col_offset", None),
+        )
+        if line is None or end is None or col is None or end_col is None:
+            return None
+        if not 0 < line <= end <= len(self.lines):
+            return None
+        parts = [s.encode("utf-8") for s in self.lines[line - 1 : end]]
+        if len(parts) == 1:
+            return parts[0][col:end_col].decode("utf-8", "replace")
+        parts[0], parts[-1] = parts[0][col:], parts[-1][:end_col]
+        return b"\n".join(parts).decode("utf-8", "replace")
+
+    def _unit_only(self, node: ast.expr) -> Refinement | None:
+        """`Annotated[float, "Unit('s')"]`, most of a stub, read without the
+        refinement parser (what `extract` gives for it; a test compares the two)."""
+        if not (
+            isinstance(node, ast.Subscript)
+            and self.qualname(node.value) in ANNOTATED
+            and isinstance(node.slice, ast.Tuple)
+            and len(node.slice.elts) == 2
+        ):
+            return None
+        base, meta = node.slice.elts
+        if not (
+            isinstance(base, ast.Name)
+            and base.id in BASE_TYPES
+            and isinstance(meta, ast.Constant)
+            and isinstance(meta.value, str)
+        ):
+            return None
+        match = _UNIT_ONLY.fullmatch(meta.value)
+        if match is None:
+            return None
+        try:
+            unit = resolve(match.group(1))
+        except UnitError:
+            return None  # `extract` reports it where it is
+        if any(":" in dim for dim, _ in unit.dims):
+            return None  # a tag or frame: let `extract` read it
+        return Refinement(BASE_TYPES[base.id], unit, A.TRUE, meta.value, node.lineno)
 
     def problem(self, node: ast.AST, message: str) -> None:
         line = getattr(node, "lineno", 1)
