@@ -30,7 +30,7 @@ import ast
 import functools
 import hashlib
 import re
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -91,6 +91,20 @@ class Class:
     bases: tuple[str, ...]
     members: dict[str, Function] = field(default_factory=dict)
     attributes: dict[str, Attribute] = field(default_factory=dict)
+    # methods not read yet: a method's annotations are read when it is first asked for
+    pending: dict[str, Callable[[], Function | None]] = field(default_factory=dict)
+
+    def method(self, name: str) -> Function | None:
+        build = self.pending.pop(name, None)
+        if build is not None:
+            found = build()
+            if found is not None:
+                self.members[name] = found
+        return self.members.get(name)
+
+    def force(self) -> None:
+        for name in list(self.pending):
+            self.method(name)
 
 
 @dataclass(frozen=True)
@@ -108,6 +122,22 @@ class Module:
     classes: dict[str, Class] = field(default_factory=dict)
     exports: dict[str, str] = field(default_factory=dict)  # name -> qualified
     problems: list[Problem] = field(default_factory=list)
+    pending: dict[str, Callable[[], Function | None]] = field(default_factory=dict)
+
+    def function(self, name: str) -> Function | None:
+        build = self.pending.pop(name, None)
+        if build is not None:
+            found = build()
+            if found is not None:
+                self.functions[name] = found
+        return self.functions.get(name)
+
+    def force(self) -> None:
+        """Read every function and method (for the problems of a user stub)."""
+        for name in list(self.pending):
+            self.function(name)
+        for cls in self.classes.values():
+            cls.force()
 
 
 class StubSet:
@@ -161,7 +191,7 @@ class StubSet:
             if module is None:
                 continue
             head, rest = parts[cut], parts[cut + 1 :]
-            found: Function | Class | None = module.functions.get(head)
+            found: Function | Class | None = module.function(head)
             if found is None:
                 found = module.classes.get(head)
             if found is None and head in module.exports and hops < 8:
@@ -181,8 +211,9 @@ class StubSet:
             if here.qualname in seen:
                 continue
             seen.add(here.qualname)
-            if attr in here.members:
-                return here.members[attr]
+            found = here.method(attr)
+            if found is not None:
+                return found
             todo += [b for b in map(self.lookup, here.bases) if isinstance(b, Class)]
         return None
 
@@ -206,7 +237,7 @@ class StubSet:
             f
             for module in self._modules_defining(name)
             for cls in module.classes.values()
-            for f in [cls.members.get(name)]
+            for f in [cls.method(name)]
             if f is not None and f.kind == "method"
         ]
 
@@ -232,6 +263,7 @@ class StubSet:
             for name in sorted(_module_names(root)):
                 module = self.module(name)
                 if module is not None:
+                    module.force()
                     found += module.problems
         return found
 
@@ -348,9 +380,9 @@ class _Reader:
                 self.imports[node.name] = f"{self.module.name}.{node.name}"
         for node in tree.body:
             if isinstance(node, ast.FunctionDef | ast.AsyncFunctionDef):
-                found = self.function(node, self.module.name, False)
-                if found is not None:
-                    self.module.functions[node.name] = found
+                self.module.pending[node.name] = self._later(
+                    node, self.module.name, False
+                )
             elif isinstance(node, ast.ClassDef):
                 self.module.classes[node.name] = self.cls(node)
 
@@ -379,15 +411,18 @@ class _Reader:
         found = Class(qualname, bases)
         for item in node.body:
             if isinstance(item, ast.FunctionDef | ast.AsyncFunctionDef):
-                function = self.function(item, qualname, True)
-                if function is not None:
-                    found.members[item.name] = function
+                found.pending[item.name] = self._later(item, qualname, True)
             elif isinstance(item, ast.AnnAssign) and isinstance(item.target, ast.Name):
                 decl = self.annotation(item.annotation, item.target.id)
                 found.attributes[item.target.id] = Attribute(
                     decl, self._type_of(item.annotation)
                 )
         return found
+
+    def _later(
+        self, node: ast.FunctionDef | ast.AsyncFunctionDef, owner: str, in_class: bool
+    ) -> Callable[[], Function | None]:
+        return lambda: self.function(node, owner, in_class)
 
     def function(
         self, node: ast.FunctionDef | ast.AsyncFunctionDef, owner: str, in_class: bool
@@ -478,6 +513,8 @@ class _Reader:
     def annotation(self, node: ast.expr | None, name: str) -> Refinement | None:
         if node is None:
             return None
+        if isinstance(node, ast.Name | ast.Attribute):
+            return None  # `float`, `Node`, `rclpy.time.Time`: no refinement
         plain = self._unit_only(node)
         if plain is not None:
             return plain
