@@ -69,6 +69,9 @@ def test_the_wheel_carries_data_and_entry_points(built: Release) -> None:
         "robotfix/annotations/grammar.lark",
         "robotfix/ament/data/test_robotfix.py",
         "robotfix/ament/pytest_marker.py",
+        "robotfix/stubs/data/rospy.pyi",
+        "robotfix/stubs/data/rclpy/node.pyi",
+        "robotfix/stubs/data/tf/transformations.pyi",
     ):
         assert needed in names, needed
     assert "ament_robotfix = robotfix.ament:main" in declared

@@ -4,7 +4,8 @@ In a page, the `## Example` and `## Use instead` sections are separate worlds: t
 ```msg blocks become interface files, their ```python blocks are checked against them
 with inline `# error: RFxxx` markers (strict, as in tests/cases), markers in msg lines
 are matched against interface-file problems, and a ```python-bad block must produce
-exactly the page's own code.
+exactly the page's own code. A ```pyi block is a stub named by its first line
+(`# my_lib.pyi`) in the section's stub path; its markers are matched against RF512.
 """
 
 from __future__ import annotations
@@ -15,7 +16,7 @@ from pathlib import Path
 import pytest
 
 from robotfix import rules
-from robotfix.api import catalog_problems, check_source
+from robotfix.api import catalog_problems, check_source, stub_problems
 from robotfix.config import Config
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.testing.expectations import compare, read_expectations
@@ -64,11 +65,28 @@ def check_section(code: str, section: str, folder: Path) -> None:
         if m is not None
     ]
     assert sorted(problems) == sorted(expected), section
+    config = Config(stub_paths=(folder / "stubs",))
+    stubs = []
+    for language, body in blocks:
+        if language == "pyi":
+            path = folder / "stubs" / body.splitlines()[0].lstrip("# ").strip()
+            path.parent.mkdir(parents=True, exist_ok=True)
+            path.write_text(body, encoding="utf-8")
+            stubs.append((path, body))
+    found_stubs = [(d.path, d.span.line, d.code) for d in stub_problems(config)]
+    expected_stubs = [
+        (str(path), line, m.group(2))
+        for path, body in stubs
+        for line, content in enumerate(body.splitlines(), start=1)
+        for m in [MARKER.search(content)]
+        if m is not None
+    ]
+    assert sorted(found_stubs) == sorted(expected_stubs), section
     for language, body in blocks:
         if language == "python":
-            found = check_source(body, "example.py", Config(), catalog)
+            found = check_source(body, "example.py", config, catalog)
             mismatches = compare(read_expectations(body), found)
             assert not mismatches, f"{code}: {mismatches}\n{body}"
         elif language == "python-bad":
-            found = check_source(body, "example.py", Config(), catalog)
+            found = check_source(body, "example.py", config, catalog)
             assert [d.code for d in found] == [code], body

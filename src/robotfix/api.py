@@ -25,6 +25,7 @@ from robotfix.discovery import interface_files as interface_files
 from robotfix.discovery import python_files as python_files
 from robotfix.discovery import ros_interface_folders as ros_interface_folders
 from robotfix.ros.catalog import MsgCatalog
+from robotfix.stubs.load import StubSet, stub_set
 
 if TYPE_CHECKING:
     from robotfix.analysis.context import FileContext
@@ -97,7 +98,8 @@ def check_source(
             rep103=config.rep103,
             unit_suffixes=config.unit_suffixes,
         )
-    return finish(_check(SourceFile.from_text(path, text), catalog))
+    stubs = stub_set(config.stub_paths)
+    return finish(_check(SourceFile.from_text(path, text), catalog, stubs=stubs))
 
 
 def hover(text: str, path: str, line: int, col: int, catalog: MsgCatalog) -> str | None:
@@ -166,19 +168,26 @@ def check_paths(
 
 
 def check_file(
-    path: str, data: bytes, catalog: MsgCatalog, ignored: frozenset[str] = frozenset()
+    path: str,
+    data: bytes,
+    catalog: MsgCatalog,
+    ignored: frozenset[str] = frozenset(),
+    stubs: StubSet | None = None,
 ) -> list[Diagnostic]:
     """Diagnostics for one file's bytes (decoded, parsed, analysed)."""
-    return _check(SourceFile.from_bytes(path, data), catalog, ignored)
+    return _check(SourceFile.from_bytes(path, data), catalog, ignored, stubs)
 
 
 def _check(
-    source: SourceFile, catalog: MsgCatalog, ignored: frozenset[str] = frozenset()
+    source: SourceFile,
+    catalog: MsgCatalog,
+    ignored: frozenset[str] = frozenset(),
+    stubs: StubSet | None = None,
 ) -> list[Diagnostic]:
 
     if source.problem is not None:
         return [source.problem]
-    ctx = _analyze(source, catalog)
+    ctx = _analyze(source, catalog, stubs=stubs)
     kept = [
         d
         for d in ctx.diagnostics
@@ -190,7 +199,11 @@ def _check(
 
 
 def _analyze(
-    source: SourceFile, catalog: MsgCatalog, hovers: bool = False, flows: bool = False
+    source: SourceFile,
+    catalog: MsgCatalog,
+    hovers: bool = False,
+    flows: bool = False,
+    stubs: StubSet | None = None,
 ) -> FileContext:
     """Run the analysis on a parsed file; a pathological file stops with RF902 and
     keeps what was found before."""
@@ -198,6 +211,7 @@ def _analyze(
     from robotfix.analysis.interpreter import analyze_module
 
     ctx = FileContext(source, catalog, Discharger())
+    ctx.stubs = stubs or stub_set()
     ctx.hovers = [] if hovers else None
     if flows:
         from robotfix.analysis.flows import FlowLog
@@ -240,6 +254,14 @@ def _unused_suppressions(
                 messages.unused_suppression(source.path, line, col, unknown, unused)
             )
     return out
+
+
+def stub_problems(config: Config) -> list[Diagnostic]:
+    """RF512: what does not read in the user's stubs (`stub-paths`), once per run."""
+    return [
+        messages.malformed_stub(p.path, p.line, p.col, p.message)
+        for p in stub_set(config.stub_paths).problems()
+    ]
 
 
 def catalog_problems(catalog: MsgCatalog) -> list[Diagnostic]:

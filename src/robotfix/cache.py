@@ -29,6 +29,7 @@ from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic, Note, Span
 from robotfix.disk_cache import install_key
 from robotfix.ros.catalog import MsgCatalog
+from robotfix.stubs.load import stub_set
 
 FORMAT = 2
 MAX_BYTES = 512 * 1024 * 1024  # results.json of ~4 million files
@@ -48,6 +49,8 @@ def run_key(config: Config) -> str:
         install_key("rosbags", ""),
         install_key("z3", ""),
     ]
+    if config.stub_paths:  # results depend on what the user's stubs say
+        parts.append(f"stubs {stub_set(config.stub_paths).fingerprint()}")
     return hashlib.sha256("\n".join(parts).encode()).hexdigest()
 
 

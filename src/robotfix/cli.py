@@ -49,6 +49,15 @@ def build_parser() -> argparse.ArgumentParser:
     )
     add_msg_path_argument(check)
     check.add_argument(
+        "--stub-path",
+        action="append",
+        type=Path,
+        default=[],
+        metavar="DIR",
+        help="a folder of .pyi stubs with Annotated signatures (before the shipped "
+        "ones); repeatable",
+    )
+    check.add_argument(
         "--format",
         choices=FORMATS,
         default=None,
@@ -262,6 +271,12 @@ def run_check(args: argparse.Namespace) -> int:
             where = "--msg-path" if folder in args.msg_path else "msg-paths"
             print(f"robotfix: error: {where} {folder}: {why}", file=sys.stderr)
             return EXIT_FAILURE
+    for folder in settings.stub_paths:
+        why = _missing(folder)
+        if why:
+            where = "--stub-path" if folder in args.stub_path else "stub-paths"
+            print(f"robotfix: error: {where} {folder}: {why}", file=sys.stderr)
+            return EXIT_FAILURE
     from robotfix.run import default_jobs
 
     if args.jobs is not None and args.jobs < 1:
@@ -317,6 +332,7 @@ def merge_flags(settings: Config, args: argparse.Namespace) -> Config:
     return replace(
         settings,
         msg_paths=tuple(args.msg_path) + settings.msg_paths,
+        stub_paths=tuple(getattr(args, "stub_path", ())) + settings.stub_paths,
         strict=settings.strict if args.strict is None else args.strict,
         rep103=settings.rep103 if args.rep103 is None else args.rep103,
         output_format=args.format or settings.output_format,

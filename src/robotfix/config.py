@@ -1,8 +1,8 @@
 """Config: the settings of a run, from flags and `[tool.robotfix]` in pyproject.toml.
 
 `pyproject.toml` is found by walking up from the first checked path. Keys use the
-flags' spelling: `msg-paths` (relative to that file), `strict`, `rep103`, `format`,
-`unit-suffixes`.
+flags' spelling: `msg-paths` and `stub-paths` (relative to that file), `strict`,
+`rep103`, `format`, `unit-suffixes`.
 """
 
 from __future__ import annotations
@@ -24,6 +24,7 @@ else:  # pragma: no cover
 
 KEYS = {
     "msg-paths",
+    "stub-paths",
     "strict",
     "rep103",
     "format",
@@ -44,6 +45,8 @@ class ConfigError(Exception):
 @dataclass(frozen=True)
 class Config:
     msg_paths: tuple[Path, ...] = ()
+    # folders of `.pyi` stubs (`robotfix.stubs`), searched before the shipped ones
+    stub_paths: tuple[Path, ...] = ()
     strict: bool = False
     rep103: bool = True
     output_format: str = "text"
@@ -185,6 +188,7 @@ def _apply(config: Config, table: Any, path: Path) -> Config:
             f"(known: {', '.join(sorted(KEYS))})"
         )
     msg_paths = _strings(table, "msg-paths", path)
+    stub_paths = _strings(table, "stub-paths", path)
     exclude = _strings(table, "exclude", path)
     for key in ("strict", "rep103", "unit-suffixes"):
         if key in table and not isinstance(table[key], bool):
@@ -207,6 +211,7 @@ def _apply(config: Config, table: Any, path: Path) -> Config:
     return replace(
         config,
         msg_paths=config.msg_paths + tuple(path.parent / p for p in msg_paths),
+        stub_paths=config.stub_paths + tuple(path.parent / p for p in stub_paths),
         strict=table.get("strict", config.strict),
         rep103=table.get("rep103", config.rep103),
         output_format=fmt,

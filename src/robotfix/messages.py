@@ -110,6 +110,17 @@ def annotation_problem(
     return Diagnostic(rule, path, Span.point(line, col), detail, notes)
 
 
+def malformed_stub(path: str, line: int, col: int, detail: str) -> Diagnostic:
+    """RF512: a user stub (`stub-paths`) that does not read; what it spoils is
+    treated as unannotated."""
+    return Diagnostic(
+        rules.MALFORMED_STUB,
+        path,
+        Span.point(line, col),
+        f"{detail}; this part of the stub is not used",
+    )
+
+
 def unused_metadata(path: str, line: int, col: int, shown: str) -> Diagnostic:
     return Diagnostic(
         rules.UNUSED_METADATA,
@@ -361,6 +372,18 @@ def unit_mismatch(
     if fix:
         message += f": {fix}"
     return Diagnostic(rules.UNIT_MISMATCH, path, span, message, tuple(notes))
+
+
+def converted_twice(
+    path: str, span: Span, stmt: str, function: str, got: Unit, declared: Declared
+) -> Diagnostic:
+    """RF201: a conversion (`math.radians`) of a value already in its result's unit;
+    the fix is to drop it, not to convert back."""
+    message = (
+        f"`{stmt}` applies {function}() to a value already in {got}: drop the call, "
+        "it would convert a second time"
+    )
+    return Diagnostic(rules.UNIT_MISMATCH, path, span, message, (declared.note(),))
 
 
 def implicit_unit_change(

@@ -101,6 +101,9 @@ UNUSED_METADATA = Rule(
     "Annotated metadata RobotFix cannot use (not a string)",
     Severity.NOTE,
 )
+MALFORMED_STUB = Rule(
+    "RF512", "malformed-stub", "Stub file or stub annotation that does not read"
+)
 
 SOLVER_UNKNOWN = Rule("RF901", "solver-unknown", "Solver could not decide", W)
 ANALYSIS_BUDGET = Rule(
@@ -134,6 +137,7 @@ ALL_RULES: dict[str, Rule] = {
         UNKNOWN_MESSAGE_CLASS,
         CONTRADICTORY_REFINEMENT,
         UNUSED_METADATA,
+        MALFORMED_STUB,
         DUPLICATE_INTERFACE,
         SOLVER_UNKNOWN,
         ANALYSIS_BUDGET,

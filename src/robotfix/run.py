@@ -21,6 +21,7 @@ from robotfix.api import (
     check_file,
     finish,
     interface_problems,
+    stub_problems,
 )
 from robotfix.cache import ResultCache, run_key
 from robotfix.config import Config
@@ -29,6 +30,7 @@ from robotfix.discovery import Discovery, discover
 from robotfix.fs import UnreadableError, read_regular
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.ros.install import InstallSpace
+from robotfix.stubs.load import stub_set
 
 if TYPE_CHECKING:
     from concurrent.futures import Future, ProcessPoolExecutor
@@ -64,6 +66,7 @@ def check_paths(
     result = Result()
     found = discover(paths, config)
     result.diagnostics.extend(found.notices)
+    result.diagnostics.extend(stub_problems(config))
     interfaces = _Interfaces(
         found.interface_files, found.package_interface_files, found.installed
     )
@@ -251,7 +254,13 @@ def _check_one(
 ) -> FileResult:
     catalog.touched = set()
     try:
-        found = check_file(str(path), data, catalog, config.ignored_codes(path))
+        found = check_file(
+            str(path),
+            data,
+            catalog,
+            config.ignored_codes(path),
+            stub_set(config.stub_paths),
+        )
         types = sorted(catalog.touched)
         catalog.touched = None
         return FileResult(

@@ -7,21 +7,18 @@ forget what they may change in the messages and instances they are handed.
 from __future__ import annotations
 
 import ast
-import math
 from dataclasses import replace
 from fractions import Fraction
 
 from robotfix.analysis import containers, heap
-from robotfix.analysis.param_eval import ParameterEvaluator
+from robotfix.analysis.library import LibraryEvaluator
 from robotfix.analysis.program import Function
 from robotfix.analysis.state import State
 from robotfix.analysis.values import NONE, SEQUENCES, Items, Kept, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import INFINITY, NUMBERS
-from robotfix.annotations.units import Unit, named, resolve
-from robotfix.messages import Declared
-from robotfix.ros.api_model import MATH_UNITS, PARAMETER_CALLS, unit_parameters
+from robotfix.ros.api_model import PARAMETER_CALLS
 
 # Methods whose first argument leaves the node: it must satisfy its refinements.
 LEAVING = frozenset(
@@ -45,7 +42,7 @@ ONE = A.Num(Fraction(1), True)
 ZERO = A.Num(Fraction(0), True)
 
 
-class CallEvaluator(ParameterEvaluator):
+class CallEvaluator(LibraryEvaluator):
     def eval_Call(self, node: ast.Call, state: State) -> Value:
         func = node.func
         method = func.attr if isinstance(func, ast.Attribute) else None
@@ -115,10 +112,6 @@ class CallEvaluator(ParameterEvaluator):
             found = self.builtin(callee.name, args, node, state, kwargs)
             if found is not None:
                 return found
-        if callee.kind == "module" and callee.name.startswith("math."):
-            found = self.math_call(callee.name[5:], args, node, state)
-            if found is not None:
-                return found
         name = (
             callee.name.rsplit(".", 1)[-1]
             if callee.kind == "module"
@@ -130,9 +123,8 @@ class CallEvaluator(ParameterEvaluator):
             found = self.parameter_call(name, callee, node, args, kwargs, state)
             if found is not None:
                 return found
-        if unit_parameters(name, self.ctx.ros1):
-            self._check_api_units(name, node, args, kwargs)
-        return self.unknown(node)
+        found = self.library_call(callee, node, args, kwargs, state)
+        return found if found is not None else self.unknown(node)
 
     def _forget_after_call(
         self,
@@ -266,106 +258,7 @@ class CallEvaluator(ParameterEvaluator):
             unit = heap.field_unit(self.ctx, state, message.ref, name)[0]
             self.note_sink(expr, unit, value)
 
-    # -- ROS API and math ----------------------------------------------------
-    def _check_api_units(
-        self,
-        name: str,
-        node: ast.Call,
-        args: list[Value],
-        kwargs: dict[str | None, Value],
-    ) -> None:
-        for position, keyword, unit_text in unit_parameters(name, self.ctx.ros1):
-            value = kwargs.get(keyword) or (
-                args[position] if position < len(args) else None
-            )
-            if value is None:
-                continue
-            expr = next((k.value for k in node.keywords if k.arg == keyword), None)
-            if expr is None and keyword not in kwargs:
-                expr = node.args[position]
-            if expr is not None:
-                self.note_sink(expr, resolve(unit_text), value)
-            declared = Declared(
-                f"ROS API: the `{keyword}` argument of {name}() is in {unit_text}",
-                None,
-                None,
-                "by the API's definition",
-            )
-            self.check.units_agree(
-                resolve(unit_text),
-                value,
-                self.site,
-                f"the `{keyword}` argument of {name}()",
-                declared,
-            )
-
-    def math_call(
-        self, name: str, args: list[Value], node: ast.Call, state: State
-    ) -> Value | None:
-        if not args:
-            return None
-        first = args[0]
-        if name in ("radians", "degrees"):
-            factor = math.pi / 180 if name == "radians" else 180 / math.pi
-            source = resolve("degree" if name == "radians" else "rad")
-            self.note_sink(node.args[0], source, first)
-            if first.unit is not None and not first.literal:
-                source = first.unit
-            result_unit = Unit(source.dims, source.factor / factor, text="")
-            if first.term is None:
-                return None
-            term = A.Binary("*", first.term, A.Num(Fraction(factor), False))
-            return Value("float", term, named(result_unit), first.literal)
-        if name in MATH_UNITS:
-            argument, result = MATH_UNITS[name]
-            if argument is not None:
-                self.note_sink(node.args[0], resolve(argument), first)
-                self.check.units_agree(
-                    resolve(argument),
-                    first,
-                    self.site,
-                    f"the argument of math.{name}()",
-                    Declared(
-                        f"math.{name}() takes {argument}",
-                        None,
-                        None,
-                        "by its definition",
-                    ),
-                )
-            value = self.unknown(node, "float", resolve(result) if result else None)
-            bound = (
-                ONE if name in ("sin", "cos") else PI_BOUND if name != "tan" else None
-            )
-            if bound is not None and value.term is not None:
-                state.assume(A.Binary("<=", A.Unary("-", bound), value.known_term))
-                state.assume(A.Binary("<=", value.known_term, bound))
-            return value
-        if name == "atan2" and len(args) == 2:
-            self.unit_of_sum(args[0], args[1], node, "atan2")
-            value = self.unknown(node, "float", resolve("rad"))
-            state.assume(A.Binary("<=", A.Unary("-", PI_BOUND), value.known_term))
-            state.assume(A.Binary("<=", value.known_term, PI_BOUND))
-            return value
-        if name in ("sqrt", "hypot"):
-            unit: Unit | None = first.unit
-            if name == "sqrt":
-                unit = (
-                    _root(first.unit)
-                    if first.unit is not None and not first.literal
-                    else None
-                )
-            else:
-                for other in args[1:]:
-                    self.unit_of_sum(first, other, node, "hypot")
-            value = self.unknown(node, "float", unit)
-            state.assume(A.Binary(">=", value.known_term, ZERO))
-            return replace(value, literal=first.literal and name == "sqrt")
-        if name == "fabs" and first.term is not None:
-            return replace(first, kind="float", term=A.Func("abs", (first.known_term,)))
-        if name in ("floor", "ceil", "trunc"):
-            return self.unknown(node, "int", first.unit)
-        return None
-
+    # -- builtins ------------------------------------------------------------
     def builtin(
         self,
         name: str,
@@ -708,10 +601,3 @@ def _float_of(text: str) -> Value | None:
         return Value("float", A.Num(Fraction(cleaned), False), literal=True)
     except (ValueError, ZeroDivisionError):
         return None
-
-
-def _root(unit: Unit) -> Unit | None:
-    if any(exp % 2 for _, exp in unit.dims) or unit.offset:
-        return None
-    dims = tuple((d, e // 2) for d, e in unit.dims)
-    return named(Unit(dims, math.sqrt(unit.factor)))

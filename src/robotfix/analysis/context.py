@@ -23,6 +23,7 @@ from robotfix.annotations.extract import Alias, Names, Refinement, extract
 from robotfix.diagnostics import Diagnostic, Span
 from robotfix.ros.catalog import Invariant, MsgCatalog, MsgSpec
 from robotfix.source import SourceFile
+from robotfix.stubs.load import StubSet
 
 if TYPE_CHECKING:
     from robotfix.analysis.flows import FlowLog
@@ -89,6 +90,7 @@ class FileContext:
         # RF511 notes, kept only if the file turns out RobotFix-like (`metadata_notes`)
         self._metadata_notes: list[Diagnostic] = []
         self.uses_refinements = False  # some annotation of the file is a refinement
+        self.stubs: StubSet | None = None  # the run's stubs (None: the shipped ones)
         self.parameters: ParamContext | None = None  # at the first parameter call
         # symbols of satisfiability questions: never those of `fresh`
         self._question_ids = itertools.count(-1, -1)

@@ -2,8 +2,8 @@
 
 Registrations name where the interface type and the callback are among a call's
 arguments (position, keyword); the analysis finds them syntactically so every
-callback is analysed as an entry point that receives messages. Unit-typed
-parameters name the unit an argument must have.
+callback is analysed as an entry point that receives messages. The units of
+parameters and results are not here: they are in the stubs (`robotfix/stubs/data`).
 """
 
 from __future__ import annotations
@@ -35,45 +35,9 @@ REGISTRATIONS: dict[str, Registration] = {
     "SimpleActionServer": Registration("action1", (1, "ActionSpec"), (2, "execute_cb")),
 }
 
-# Parameters that carry a unit: called name -> ((position, keyword, unit), ...)
-UNIT_PARAMETERS: dict[str, tuple[tuple[int, str, str], ...]] = {
-    "create_timer": ((0, "timer_period_sec", "s"),),
-    "create_rate": ((0, "frequency", "Hz"),),
-    "Rate": ((0, "hz", "Hz"),),
-    "sleep": ((0, "duration", "s"),),
-    "Duration": ((0, "secs", "s"),),
-    "wait_for_service": ((0, "timeout", "s"),),
-    "wait_for_server": ((0, "timeout_sec", "s"),),
-    "spin_once": ((1, "timeout_sec", "s"),),
-    "spin_until_future_complete": ((2, "timeout_sec", "s"),),
-}
-# Where ROS 1 differs: rospy.wait_for_service(service, timeout) and actionlib's
-# wait_for_server(timeout=rospy.Duration()) take the name first, a Duration.
-UNIT_PARAMETERS_ROS1: dict[str, tuple[tuple[int, str, str], ...]] = {
-    "wait_for_service": ((1, "timeout", "s"),),
-    "wait_for_server": (),
-}
 # Calls that make a time object, not a number of seconds (`rospy.Duration(5)`).
 TIME_OBJECTS = frozenset({"Duration", "Time"})
 
-
-def unit_parameters(name: str, ros1: bool) -> tuple[tuple[int, str, str], ...]:
-    """The arguments of a ROS API call `name` that carry a unit: the one place
-    the analysis reads them."""
-    if ros1 and name in UNIT_PARAMETERS_ROS1:
-        return UNIT_PARAMETERS_ROS1[name]
-    return UNIT_PARAMETERS.get(name, ())
-
-
-# math functions: name -> (argument unit or None for "same as result", result unit)
-MATH_UNITS: dict[str, tuple[str | None, str | None]] = {
-    "sin": ("rad", "1"),
-    "cos": ("rad", "1"),
-    "tan": ("rad", "1"),
-    "asin": ("1", "rad"),
-    "acos": ("1", "rad"),
-    "atan": ("1", "rad"),
-}
 
 # Parameters (robotfix.analysis.parameters): what builds a node, rclpy's
 # Parameter.Type names, and the fields of a ParameterValue by the type they hold.

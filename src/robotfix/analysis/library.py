@@ -1,0 +1,443 @@
+"""Calls into libraries RobotFix cannot see into, as their stubs describe them
+(`robotfix/stubs/`): arguments are checked against the parameters' units and
+refinements, results get the return's unit and refinement, or become objects of a
+stub class whose properties and methods are known in turn (`self.get_clock().now()
+.nanoseconds` is in ns). A subclass of a stub class (`class Ticker(Node)`) inherits
+its methods. A method called on a value of unknown type is looked up by its name
+among the stubs' methods, and used only as far as they all agree.
+"""
+
+from __future__ import annotations
+
+import ast
+import math
+from collections.abc import Sequence
+from dataclasses import replace
+from fractions import Fraction
+
+from robotfix import messages
+from robotfix.analysis import heap
+from robotfix.analysis.param_eval import ParameterEvaluator
+from robotfix.analysis.state import State
+from robotfix.analysis.values import Value
+from robotfix.annotations import ast as A
+from robotfix.annotations.extract import Refinement
+from robotfix.annotations.numbers import NUMBERS, named_number
+from robotfix.annotations.units import Unit, named
+from robotfix.messages import Declared
+from robotfix.stubs import load as stubs
+
+ZERO = A.Num(Fraction(0), True)
+
+
+def resolve_library(ctx: object, qualified: str) -> stubs.Function | stubs.Class | None:
+    """What an imported name stands for outside the checked code: today its stub
+    (the user's `stub-paths`, then the shipped ones), else None (unknown). The one
+    place to join with the modules of the checked tree (searched before stubs)."""
+    found: stubs.StubSet = getattr(ctx, "stubs", None) or stubs.stub_set()
+    return found.lookup(qualified)
+
+
+class LibraryEvaluator(ParameterEvaluator):
+    # -- names ---------------------------------------------------------------
+    def member(self, base: Value, attr: str, state: State) -> Value | None:
+        if base.kind == "object":
+            return self.object_member(base.name, attr, state)
+        return super().member(base, attr, state)
+
+    def object_member(self, cls_name: str, attr: str, state: State) -> Value | None:
+        """`t.nanoseconds`, `d.to_sec` of an object of a stub class."""
+        cls = resolve_library(self.ctx, cls_name)
+        if not isinstance(cls, stubs.Class):
+            return None
+        set_ = self._stubs()
+        function = set_.member(cls, attr)
+        if function is not None:
+            if function.kind == "property":
+                return self.library_result(function, {}, f"`.{attr}`", state)
+            return Value("libmethod", name=function.qualname)
+        found = set_.attribute(cls, attr)
+        if found is None:
+            return None
+        if found.decl is not None:
+            lookup = self._lookup(found.decl, {})
+            return self.check.assumed(state, f".{attr}", found.decl, lookup)
+        return self._object(found.type, state, f"`.{attr}`")
+
+    def instance_attribute(
+        self, base: Value, var: str, node: ast.Attribute, state: State
+    ) -> Value:
+        """`self.create_timer` in a class derived from a stub class (`Node`)."""
+        attr = node.attr
+        if (
+            base.kind == "instance"
+            and f"{var}.{attr}" not in state.env
+            and f"{base.name}.{attr}" not in self.program.functions
+            and attr not in self.program.attributes.get(base.name, {})
+            and self.class_constant(base.name, attr) is None
+        ):
+            for cls in self._library_bases(base.name):
+                function = self._stubs().member(cls, attr)
+                if function is not None and function.kind == "method":
+                    return Value("libmethod", name=function.qualname)
+        return super().instance_attribute(base, var, node, state)
+
+    def _library_bases(self, class_name: str) -> list[stubs.Class]:
+        """The stub classes a class of this file derives from, nearest first."""
+        found: list[stubs.Class] = []
+        seen: set[str] = set()
+        todo = [class_name]
+        while todo:
+            name = todo.pop(0)
+            if name in seen:
+                continue
+            seen.add(name)
+            scope = self.program.classes.get(name)
+            if scope is None or not isinstance(scope.node, ast.ClassDef):
+                continue
+            for base in scope.node.bases:
+                if isinstance(base, ast.Name) and base.id in self.program.classes:
+                    todo.append(base.id)
+                    continue
+                qualified = self.ctx.qualname(base)
+                cls = resolve_library(self.ctx, qualified) if qualified else None
+                if isinstance(cls, stubs.Class):
+                    found.append(cls)
+        return found
+
+    # -- calls ---------------------------------------------------------------
+    def library_call(
+        self,
+        callee: Value,
+        node: ast.Call,
+        args: list[Value],
+        kwargs: dict[str | None, Value],
+        state: State,
+    ) -> Value | None:
+        """The value of a call of a stubbed function, method or class; None when
+        no stub speaks of it."""
+        if any(isinstance(a, ast.Starred) for a in node.args) or None in kwargs:
+            args = []  # positions unknown: only keywords are checked
+        if callee.kind == "libmethod":
+            found = resolve_library(self.ctx, callee.name)
+            if isinstance(found, stubs.Function):
+                return self.call_function(found, args, kwargs, node, state, 0)
+            return None
+        if callee.kind == "module":
+            found = resolve_library(self.ctx, callee.name)
+            if isinstance(found, stubs.Class):
+                init = self._stubs().member(found, "__init__")
+                if init is not None:
+                    self.call_function(init, args, kwargs, node, state, 0)
+                return Value("object", name=found.qualname)
+            if isinstance(found, stubs.Function):
+                # `Duration.to_sec(d)`: a method through its class takes self first
+                shift = 1 if found.kind == "method" else 0
+                return self.call_function(found, args, kwargs, node, state, shift)
+            return None
+        if callee.kind == "unknown" and isinstance(node.func, ast.Attribute):
+            return self._by_method_name(node.func.attr, node, args, kwargs, state)
+        return None
+
+    def _by_method_name(
+        self,
+        name: str,
+        node: ast.Call,
+        args: list[Value],
+        kwargs: dict[str | None, Value],
+        state: State,
+    ) -> Value | None:
+        candidates = stubs.methods_named(self._stubs(), name)
+        if not candidates:
+            return None
+        if len({_signature(f) for f in candidates}) == 1:
+            return self.call_function(candidates[0], args, kwargs, node, state, 0)
+        # they differ: check only the arguments every candidate gives one unit
+        for index, value in enumerate(args):
+            params = [_param_at(f, index, None) for f in candidates]
+            if all(p is not None for p in params) and _one_unit(params):
+                self._check_argument(candidates[0], params[0], value, state)  # type: ignore[arg-type]
+        for key, value in kwargs.items():
+            params = [_param_at(f, None, key) for f in candidates]
+            given = [p for p in params if p is not None]
+            if given and _one_unit(given):
+                self._check_argument(candidates[0], given[0], value, state)
+        return None
+
+    def call_function(
+        self,
+        function: stubs.Function,
+        args: list[Value],
+        kwargs: dict[str | None, Value],
+        node: ast.Call,
+        state: State,
+        shift: int,
+    ) -> Value:
+        given: dict[str, list[Value]] = {}
+        for param in function.params:
+            if param.keyword and param.name in kwargs:
+                given[param.name] = [kwargs[param.name]]
+            elif param.positional is not None:
+                at = param.positional + shift
+                given[param.name] = args[at:] if param.variadic else args[at : at + 1]
+        for param in function.params:
+            for value in given.get(param.name, []):
+                if function.rule != "scale":  # see `_scaled`
+                    self._check_argument(function, param, value, state)
+        self._argument_flows(function, node, args, kwargs, shift)
+        first = [v for p in function.params for v in given.get(p.name, [])[:1]]
+        values = [v for p in function.params for v in given.get(p.name, [])]
+        if function.rule is not None and values:
+            found = self._unit_rule(function, first[0], values, node, state)
+            if found is not None:
+                return found
+        terms = {
+            name: found[0].term
+            for name, found in given.items()
+            if found and found[0].term is not None
+        }
+        result = self.library_result(function, terms, node, state)
+        if values and all(v.literal for v in values) and _pure_number(result):
+            # `math.sin(math.radians(45))`: a number, taking the unit of its context
+            return replace(result, unit=None, literal=True)
+        return result
+
+    def _argument_flows(
+        self,
+        function: stubs.Function,
+        node: ast.Call,
+        args: list[Value],
+        kwargs: dict[str | None, Value],
+        shift: int,
+    ) -> None:
+        """For `robotfix suggest`: an argument reached a parameter with a unit."""
+        if self.ctx.unit_flows is None:
+            return
+        keywords = {k.arg: k.value for k in node.keywords if k.arg is not None}
+        for param in function.params:
+            unit = param.decl.unit if param.decl is not None else None
+            if unit is None:
+                continue
+            if param.keyword and param.name in kwargs and param.name in keywords:
+                self.note_sink(keywords[param.name], unit, kwargs[param.name])
+            elif param.positional is not None and not param.variadic and args:
+                at = param.positional + shift
+                if at < len(node.args) and at < len(args):
+                    self.note_sink(node.args[at], unit, args[at])
+
+    def _check_argument(
+        self,
+        function: stubs.Function,
+        param: stubs.Param,
+        value: Value,
+        state: State,
+    ) -> None:
+        decl = param.decl
+        if decl is None:
+            return
+        target = f"the `{param.name}` argument of {function.short}()"
+        unit = f" is in {decl.unit.text}" if decl.unit is not None else ""
+        declared = (
+            Declared(f"annotation of {target}", function.path, function.line)
+            if function.path is not None
+            else Declared(
+                f"{target}{unit}",
+                None,
+                None,
+                f"by the stub {function.origin} shipped with RobotFix",
+            )
+        )
+        if not self.check.units_agree(decl.unit, value, self.site, target, declared):
+            return
+        if value.term is None or decl.predicate == A.TRUE or value.kind == "object":
+            return
+        lookup = self._lookup(decl, {})
+        for part in A.conjuncts(decl.predicate):
+            goal = A.substitute(part, {**lookup, "_": value.term})
+            shown = A.show(A.substitute(part, {"_": A.Name(param.name)}))
+            outcome = self.check.goal_holds(
+                state, goal, value.term, self.site, shown, target, declared
+            )
+            if outcome != "proved":
+                break
+
+    def library_result(
+        self,
+        function: stubs.Function,
+        terms: dict[str, A.Expr],
+        node: ast.AST | str,
+        state: State,
+    ) -> Value:
+        if function.returns is not None:
+            lookup = self._lookup(function.returns, terms)
+            return self.check.assumed(
+                state, f"{function.short}()", function.returns, lookup
+            )
+        if function.returns_type is not None:
+            return self._object(function.returns_type, state, node)
+        return self.ctx.fresh(function.returns_kind or "unknown", node)
+
+    def _object(
+        self, qualified: str | None, state: State, node: ast.AST | str
+    ) -> Value:
+        if qualified is None:
+            return self.ctx.fresh("unknown", node)
+        msg_type = self.ctx.msg_type_named(qualified)
+        if msg_type is not None:
+            label = node if isinstance(node, str) else self.ctx.source.segment(node)
+            return heap.new_message(
+                self.ctx, state, msg_type, "received", label=label or "result"
+            )
+        if isinstance(resolve_library(self.ctx, qualified), stubs.Class):
+            return Value("object", name=qualified)
+        return self.ctx.fresh("unknown", node)
+
+    def _lookup(self, decl: Refinement, terms: dict[str, A.Expr]) -> dict[str, A.Expr]:
+        """Terms for the names a stub's refinement mentions: the call's arguments,
+        `math.pi` and its kin (the doubles), else fresh unknowns."""
+        found: dict[str, A.Expr] = {}
+        for ref in [n for p in decl.predicates() for n in A.names(p)]:
+            name = ref.name
+            if name == "_" or name in found:
+                continue
+            number = named_number(name) if name.rsplit(".", 1)[-1] in NUMBERS else None
+            if name in terms:
+                found[name] = terms[name]
+            elif number is not None:
+                found[name] = A.Num(number, False)
+            else:
+                found[name] = self.ctx.fresh("unknown", f"`{name}`").known_term
+        return found
+
+    # -- results whose unit follows the arguments' ---------------------------
+    def _unit_rule(
+        self,
+        function: stubs.Function,
+        first: Value,
+        values: list[Value],
+        node: ast.Call,
+        state: State,
+    ) -> Value | None:
+        rule, short = function.rule, function.qualname.rsplit(".", 1)[-1]
+        if rule == "agree":
+            for other in values[1:]:
+                self.unit_of_sum(values[0], other, node, short)
+            return None  # the result is as annotated
+        if rule == "scale":
+            return self._scaled(function, first, state)
+        if rule == "root":
+            root = (
+                _root(first.unit)
+                if first.unit is not None and not first.literal
+                else None
+            )
+            value = self.ctx.fresh("float", node, root)
+            state.assume(A.Binary(">=", value.known_term, ZERO))
+            return replace(value, literal=first.literal)
+        # same: the arguments' common unit
+        units = [self.unit_of_sum(first, other, node, short)[0] for other in values[1:]]
+        unit: Unit | None = first.unit if not first.literal else None
+        if unit is None:
+            unit = next((u for u in units if u is not None), None)
+        if function.returns_kind == "int":
+            return self.ctx.fresh("int", node, unit)
+        value = self.library_result(function, {}, node, state)
+        if short in ("fabs", "abs", "absolute") and first.term is not None:
+            return replace(first, kind="float", term=A.Func("abs", (first.known_term,)))
+        return value.with_unit(unit) if value.term is not None else value
+
+    def _scaled(
+        self, function: stubs.Function, first: Value, state: State
+    ) -> Value | None:
+        """`radians(x)`: x times the ratio of the parameter's unit to the result's.
+        The argument may carry more than the angle (`radians(deg_s)` is in rad/s);
+        one already in the result's unit (`radians(yaw)`, yaw in rad) is a bug."""
+        param = function.params[0].decl if function.params else None
+        result = function.returns
+        if param is None or param.unit is None or result is None:
+            return None
+        if result.unit is None or first.term is None:
+            return None
+        factor = param.unit.factor / result.unit.factor
+        term = A.Binary("*", first.term, A.Num(Fraction(factor), False))
+        if first.unit is None or first.literal:
+            return Value("float", term, result.unit, first.literal)
+        angle = {d for d, _ in result.unit.dims}
+        converted = (
+            angle <= {d for d, _ in first.unit.dims}
+            and math.isclose(first.unit.factor, result.unit.factor)
+            and not math.isclose(param.unit.factor, result.unit.factor)
+        )
+        if converted:
+            span, stmt = self.check.where(self.site)
+            name = function.params[0].name
+            declared = Declared(
+                f"the `{name}` argument of {function.short}() is in {param.unit.text}",
+                function.path,
+                function.line if function.path else None,
+                f"by the stub {function.origin} shipped with RobotFix",
+            )
+            self.ctx.report(
+                messages.converted_twice(
+                    self.ctx.source.path,
+                    span,
+                    stmt,
+                    function.short,
+                    first.unit,
+                    declared,
+                )
+            )
+            return Value("float", term, result.unit)
+        unit = named(Unit(first.unit.dims, first.unit.factor / factor, text=""))
+        return Value("float", term, unit)
+
+    def _stubs(self) -> stubs.StubSet:
+        found: stubs.StubSet = getattr(self.ctx, "stubs", None) or stubs.stub_set()
+        return found
+
+
+def _pure_number(value: Value) -> bool:
+    return value.is_number and (value.unit is None or not value.unit.dims)
+
+
+def _signature(function: stubs.Function) -> tuple[object, ...]:
+    return (
+        tuple(
+            (p.name, p.positional, p.keyword, _unit_text(p.decl))
+            for p in function.params
+        ),
+        _unit_text(function.returns),
+        function.returns_type,
+    )
+
+
+def _unit_text(decl: Refinement | None) -> str | None:
+    return None if decl is None else f"{decl.text}"
+
+
+def _param_at(
+    function: stubs.Function, index: int | None, key: str | None
+) -> stubs.Param | None:
+    for param in function.params:
+        if key is not None and param.keyword and param.name == key:
+            return param
+        if index is not None and param.positional == index and not param.variadic:
+            return param
+    return None
+
+
+def _one_unit(params: Sequence[stubs.Param | None]) -> bool:
+    units = {
+        (p.decl.unit.dims, p.decl.unit.factor)
+        if p is not None and p.decl is not None and p.decl.unit is not None
+        else None
+        for p in params
+    }
+    return len(units) == 1 and None not in units
+
+
+def _root(unit: Unit) -> Unit | None:
+    if any(exp % 2 for _, exp in unit.dims) or unit.offset:
+        return None
+    dims = tuple((d, e // 2) for d, e in unit.dims)
+    return named(Unit(dims, math.sqrt(unit.factor)))

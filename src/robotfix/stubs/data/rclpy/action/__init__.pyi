@@ -1,0 +1,1 @@
+from rclpy.action.client import ActionClient as ActionClient

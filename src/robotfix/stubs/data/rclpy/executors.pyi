@@ -1,0 +1,13 @@
+# rclpy.executors (ROS 2): the Executor's own spin_once and spin_until_future_complete
+from typing import Annotated
+
+from rclpy.task import Future
+
+class Executor:
+    def spin_once(self, timeout_sec: Annotated[float, "Unit('s')"] = None) -> None: ...
+    def spin_until_future_complete(
+        self, future: Future, timeout_sec: Annotated[float, "Unit('s')"] = None
+    ) -> None: ...
+
+class SingleThreadedExecutor(Executor): ...
+class MultiThreadedExecutor(Executor): ...

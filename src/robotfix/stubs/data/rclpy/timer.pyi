@@ -1,0 +1,6 @@
+# rclpy.timer (ROS 2): Rate comes from Node.create_rate.
+class Rate:
+    def sleep(self) -> None: ...
+
+class Timer:
+    def cancel(self) -> None: ...
