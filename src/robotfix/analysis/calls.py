@@ -11,7 +11,7 @@ import math
 from dataclasses import replace
 from fractions import Fraction
 
-from robotfix.analysis import heap
+from robotfix.analysis import frames, heap
 from robotfix.analysis.param_eval import ParameterEvaluator
 from robotfix.analysis.program import Function
 from robotfix.analysis.state import State
@@ -117,6 +117,10 @@ class CallEvaluator(ParameterEvaluator):
                 return found
         if name in UNIT_PARAMETERS:
             self._check_api_units(name, node, args, kwargs)
+        if frames.is_tf2(name):
+            found = frames.tf2_call(self.ctx, name, node, args, kwargs, state)
+            if found is not None:
+                return found
         return self.unknown(node)
 
     def _forget_after_call(
@@ -134,6 +138,8 @@ class CallEvaluator(ParameterEvaluator):
             return
         if isinstance(node.func, ast.Attribute) and node.func.attr in PARAMETER_CALLS:
             return  # rclpy and rospy change no attribute of the node's class
+        if frames.followed(self.ctx, node):
+            return  # tf2 reads the stamped values and transforms it is given
         for value in [*args, *kwargs.values()]:
             if value.kind == "msg" and value.ref is not None:
                 heap.havoc(state, value.ref)
@@ -305,6 +311,7 @@ class CallEvaluator(ParameterEvaluator):
             else:
                 for other in args[1:]:
                     self.unit_of_sum(first, other, node, "hypot")
+                unit = frames.norm(unit)  # a length is the same in every frame
             value = self.unknown(node, "float", unit)
             state.assume(A.Binary(">=", value.known_term, ZERO))
             return replace(value, literal=first.literal and name == "sqrt")

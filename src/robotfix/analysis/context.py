@@ -25,6 +25,7 @@ from robotfix.ros.catalog import Invariant, MsgCatalog, MsgSpec
 from robotfix.source import SourceFile
 
 if TYPE_CHECKING:
+    from robotfix.analysis.frames import FrameFacts
     from robotfix.analysis.parameters import ParamContext
 
 MSG_MODULES = ("msg", "srv", "action")
@@ -86,6 +87,7 @@ class FileContext:
         self._metadata_notes: list[Diagnostic] = []
         self.uses_refinements = False  # some annotation of the file is a refinement
         self.parameters: ParamContext | None = None  # at the first parameter call
+        self.frame_facts: FrameFacts | None = None  # analysis/frames.py, when asked
         # symbols of satisfiability questions: never those of `fresh`
         self._question_ids = itertools.count(-1, -1)
         self._invariants: dict[str, list[Invariant]] = {}

@@ -15,7 +15,7 @@ from dataclasses import replace
 from fractions import Fraction
 
 from robotfix import messages
-from robotfix.analysis import heap, hover
+from robotfix.analysis import frames, heap, hover
 from robotfix.analysis.checks import Checker
 from robotfix.analysis.constants import is_constant
 from robotfix.analysis.context import TERM_LIMIT, FileContext
@@ -167,7 +167,8 @@ class ExpressionEvaluator:
             text = self.ctx.source.segment(node) or node.attr
             ref = base.ref
             self.note_hover(node, lambda: hover.field(self.ctx, state, ref, node.attr))
-            return self.check.read_field(state, base.ref, node.attr, self.site, text)
+            value = self.check.read_field(state, base.ref, node.attr, self.site, text)
+            return frames.framed_read(state, base.ref, node.attr, value)
         if base.kind in ("instance", "goal_handle") and isinstance(
             node.value, ast.Name
         ):
@@ -262,8 +263,9 @@ class ExpressionEvaluator:
             )
         else:
             decl = self.program.attributes.get(base.name, {}).get(node.attr)
+            remembered = frames.recall(self.ctx, base.name, node.attr)
             value = (
-                self.unknown(node)
+                (remembered or self.unknown(node))
                 if decl is None
                 else self.check.assumed(
                     state, key, decl, self.refinement_lookup(decl, state)

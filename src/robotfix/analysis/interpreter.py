@@ -15,7 +15,7 @@ from collections.abc import Callable
 from dataclasses import replace
 
 from robotfix import messages
-from robotfix.analysis import heap, hover
+from robotfix.analysis import frames, heap, hover
 from robotfix.analysis.calls import CallEvaluator
 from robotfix.analysis.constants import scan
 from robotfix.analysis.context import FileContext, Scope, build_scope
@@ -348,6 +348,8 @@ class Interpreter(CallEvaluator):
                 state, key, decl, value, self.site, lookup
             )
         state.env[key] = replace(value, uninit=None, default_of=None)
+        if base.kind == "instance":
+            frames.remember(self.ctx, base.name, attr, value)
 
     def bind_parameters(self, state: State) -> None:
         """Parameters: `self`, messages that arrive at a callback, refined values."""

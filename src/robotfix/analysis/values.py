@@ -42,6 +42,9 @@ class Value:
     # Computed by a product or quotient with a length: one power of radian may cancel
     # or appear, as the radian is a ratio of lengths (`omega * r` is m/s).
     rad_free: bool = False
+    # A string the analysis does not know exactly but knows the frame name of (a
+    # parameter's default, `analysis/frames.py`); None: no frame known.
+    frame: str | None = None
 
     @property
     def known_term(self) -> A.Expr:
