@@ -128,13 +128,74 @@ def _within(prefix: str, path: str) -> bool:
 
 
 def framed_read(state: State, ref: int, name: str, value: Value) -> Value:
-    """A number read from a field of a message in a known frame carries it."""
+    """A number read from a field of a message in a known frame carries it (or, in
+    a message whose frame is not known, the frame of the data stored there)."""
     if not value.is_number or value.unit is None or value.literal:
         return value
     found = frame_at(state, ref, name)
-    if found is None:
+    frame = found[0] if found is not None else value.frame
+    if frame is None:
         return value
-    return replace(value, unit=with_frame(value.unit, found[0]))
+    return replace(value, unit=with_frame(value.unit, frame))
+
+
+def stored(value: Value, given: Value) -> Value:
+    """The value a field keeps: a number remembers the frame of the data stored
+    (its unit becomes the field's), so naming another frame later is found."""
+    if not value.is_number:
+        return value
+    return replace(value, frame=frame_of(given.unit) or given.frame)
+
+
+def check_named(
+    ctx: FileContext, state: State, ref: int, name: str, site: ast.AST
+) -> None:
+    """`p.header.frame_id = 'map'` (or `p.header = h`) after data in another frame
+    was stored into `p`: RF201 at the statement that names the frame."""
+    current: int | None = ref
+    path = name
+    seen: set[int] = set()
+    while current is not None and current in state.heap and current not in seen:
+        seen.add(current)
+        obj = state.heap[current]
+        for prefix, frame_path in FRAMED_FIELDS.get(obj.type, ()):
+            if frame_path != path and not frame_path.startswith(path + "."):
+                continue
+            frame = known_frame(peek(state, current, frame_path))
+            if frame is None:
+                continue
+            other = _other_frame(state, peek(state, current, prefix), frame)
+            if other is not None:
+                stmt = ctx.source.segment(site) or name
+                ctx.report(
+                    messages.frame_mismatch(
+                        ctx.source.path, ctx.source.span(site), stmt, other, frame
+                    ),
+                    once=("frames", id(site)),
+                )
+                return
+        if obj.owner is None:
+            return
+        current, path = obj.owner[0], f"{obj.owner[1]}.{path}"
+
+
+def _other_frame(state: State, data: Value | None, frame: str) -> str | None:
+    """A frame other than `frame` of the numbers stored below `data`."""
+    todo = [data]
+    seen: set[int] = set()
+    while todo:
+        value = todo.pop()
+        if value is None:
+            continue
+        if value.is_number and value.frame is not None and value.frame != frame:
+            return value.frame
+        if value.ref is not None and value.ref in state.heap and value.ref not in seen:
+            seen.add(value.ref)
+            todo.extend(
+                state.heap[value.ref].fields[k]
+                for k in sorted(state.heap[value.ref].fields)
+            )
+    return None
 
 
 def expected_unit(

@@ -40,6 +40,11 @@ FRAMED_FIELDS: dict[str, tuple[tuple[str, str], ...]] = {
         ("pose.pose", "header.frame_id"),
         ("twist.twist", "child_frame_id"),
     ),
+    # "Pose of the object with respect the frame_id specified in the header."
+    "visualization_msgs/Marker": (("pose", "header.frame_id"),),
+    "visualization_msgs/InteractiveMarker": (("pose", "header.frame_id"),),
+    # MapMetaData.origin: "the real-world pose of the cell (0,0) in the map"
+    "nav_msgs/OccupancyGrid": (("info.origin", "header.frame_id"),),
 }
 
 
@@ -55,6 +60,9 @@ class Tf2Call:
     data: tuple[int, str] | None = None  # the stamped value
     transform: tuple[int, str] | None = None
 
+
+# The string fields that name frames (setting one checks the data already stored).
+FRAME_FIELDS = frozenset({"frame_id", "child_frame_id"})
 
 # Keyed by the called name's last part (a method of tf2_ros.Buffer, or a function of
 # tf2_geometry_msgs, however imported).

@@ -6,6 +6,7 @@ from typing import Annotated
 import rclpy
 from geometry_msgs.msg import PointStamped, PoseStamped
 from rclpy.node import Node
+from visualization_msgs.msg import Marker
 
 MAP_FRAME = "map"
 
@@ -70,3 +71,36 @@ class GoalPublisher(Node):
 
 def robot_x(p: PointStamped) -> float:
     return p.point.x
+
+
+class LateFrames(Node):
+    """The frame named after the data was stored: checked when it is named."""
+
+    def __init__(self) -> None:
+        super().__init__("late_frames")
+        self.timer = self.create_timer(1.0, self.tick)
+
+    def tick(self) -> None:
+        x_odom: Annotated[float, "Unit('m') and Frame('odom')"] = 1.0
+        p = PointStamped()
+        p.point.x = x_odom
+        p.header.frame_id = "map"  # error: RF201
+        q = PointStamped()
+        q.point.x = x_odom
+        q.header.frame_id = "odom"  # the data's own frame: clean
+        r = PointStamped()
+        r.point.x = x_odom
+        r.point.x = 0.0  # overwritten before the frame is named
+        r.header.frame_id = "map"
+        s = PointStamped()
+        s.point.y = x_odom
+        gap = s.point.y - p.point.x  # error: RF202
+        m = PointStamped()
+        m.header.frame_id = "map"
+        out = PointStamped()
+        out.point.x = x_odom
+        out.header = m.header  # error: RF201
+        marker = Marker()
+        marker.header.frame_id = "base_link"
+        marker.pose.position.x = m.point.x  # error: RF201
+        marker.pose.position.y = gap
