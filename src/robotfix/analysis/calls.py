@@ -311,7 +311,7 @@ class CallEvaluator(ParameterEvaluator):
             else:
                 for other in args[1:]:
                     self.unit_of_sum(first, other, node, "hypot")
-                unit = frames.norm(unit)  # a length is the same in every frame
+                unit = frames.unframed(unit)  # a length is the same in every frame
             value = self.unknown(node, "float", unit)
             state.assume(A.Binary(">=", value.known_term, ZERO))
             return replace(value, literal=first.literal and name == "sqrt")

@@ -485,10 +485,12 @@ class ExpressionEvaluator:
         ru = DIMENSIONLESS if right.literal else right.unit
         if lu is None or ru is None:
             return None, False
+        # a number that is not a literal (`math.cos(yaw)`) may rotate a coordinate
+        # into another frame: the product's frame is not known
         if ru == DIMENSIONLESS:
-            return lu, False
+            return (lu if right.literal else frames.unframed(lu)), False
         if lu == DIMENSIONLESS and op == "*":
-            return ru, False
+            return (ru if left.literal else frames.unframed(ru)), False
         return (lu * ru if op == "*" else lu / ru), False
 
     def eval_Compare(self, node: ast.Compare, state: State) -> Value:

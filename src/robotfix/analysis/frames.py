@@ -77,8 +77,9 @@ def with_frame(unit: Unit, frame: str) -> Unit:
     return Unit(framed.dims, framed.factor, framed.offset, f"{unit} in frame {frame}")
 
 
-def norm(unit: Unit | None) -> Unit | None:
-    """The unit of a norm (`math.hypot(dx, dy)`): the same in every frame."""
+def unframed(unit: Unit | None) -> Unit | None:
+    """`unit` without its frame: a norm (`math.hypot(dx, dy)`) is the same in every
+    frame; a coordinate times a number (`dx * math.cos(yaw)`) may be in another."""
     if unit is None or not any(is_frame(d) for d, _ in unit.dims):
         return unit
     dims = tuple(d for d in unit.dims if not is_frame(d[0]))

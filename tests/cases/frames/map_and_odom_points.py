@@ -48,7 +48,7 @@ class GoalPublisher(Node):
         late.header.frame_id = "map"
         ok = late.point.x - a.point.x
         blank = PointStamped()  # no frame_id: unknown, compared with nothing
-        free = blank.point.x - robot_x(a)
+        free = blank.point.x - robot_x(b)  # b may change in there: unknown after
         offset: Annotated[float, "Unit('m')"] = 0.3  # no frame: fits any
         a.point.z = offset
         shifted = a.point.x + offset
@@ -58,6 +58,12 @@ class GoalPublisher(Node):
         clearance = math.sqrt(obstacle.point.x**2 + obstacle.point.y**2)
         closer = clearance < reach  # a length is the same in every frame
         area = obstacle.point.x * obstacle.point.y < a.point.x * a.point.y
+        yaw = math.atan2(a.point.y, a.point.x)
+        ahead = a.point.x * math.cos(yaw) + a.point.y * math.sin(yaw)
+        local = PointStamped()
+        local.header.frame_id = "base_link"
+        local.point.x = ahead  # rotated into the robot's frame: not known, clean
+        local.point.y = a.point.x * 0.5  # error: RF201
 
     def on_click(self, msg: PointStamped) -> None:
         here = PointStamped()
