@@ -424,11 +424,14 @@ def _axes(a: str, b: str) -> str:
 
 
 def frame_mismatch(
-    path: str, span: Span, stmt: str, got: str, expected: str
+    path: str, span: Span, stmt: str, got: str, expected: str, leaving: bool = False
 ) -> Diagnostic:
-    """RF201: data of one frame stored into a message whose header names another."""
+    """RF201: data of one frame stored into a message whose header names another
+    (`leaving`: found when the message leaves the node)."""
+    verb = "sends" if leaving else "stores"
+    into = "in a message whose header names" if leaving else "into a message in"
     message = (
-        f"`{stmt}` stores data in frame `{got}` into a message in frame `{expected}`"
+        f"`{stmt}` {verb} data in frame `{got}` {into} frame `{expected}`"
         f"{_axes(got, expected)}: transform it with tf2 first"
     )
     return Diagnostic(rules.UNIT_MISMATCH, path, span, message)

@@ -53,6 +53,7 @@ class CallEvaluator(ParameterEvaluator):
             for value in values[:1]:
                 if value.kind == "msg" and value.ref is not None:
                     self.check.check_whole(state, value.ref, self.site, publishing=True)
+                    frames.check_leaving(self.ctx, state, value.ref, self.site)
             return self.unknown(node)
         callee = self.eval(func, state)
         args = [self.eval(a, state) for a in node.args]

@@ -21,7 +21,6 @@ from robotfix.annotations.units import Unit
 from robotfix.diagnostics import Span
 from robotfix.messages import Declared
 from robotfix.ros.catalog import FieldUnit, Invariant, MsgSpec
-from robotfix.ros.frames_model import FRAME_FIELDS
 
 PROVED, WARNED, FAILED = "proved", "warned", "failed"
 # Sub-messages one check may create before it checks only one of each type: the
@@ -302,7 +301,6 @@ class Checker:
                 if not heap.owns(state, ref, value.ref):  # `m.a = m`: no owner loop
                     state.heap[value.ref].owner = (ref, name)
                 obj.fields[name] = value
-                frames.check_named(self.ctx, state, ref, name, site)
                 self.check_whole(state, value.ref, site, publishing=False, single=True)
             else:
                 obj.fields[name] = heap.new_message(
@@ -348,10 +346,9 @@ class Checker:
             stored = self.ctx.fresh(spec.kind, f"`{target}`", unit)
             for _, path, inv in invariants:
                 state.assume(A.substitute(inv.predicate, {path: stored.known_term}))
-        obj.fields[name] = replace(frames.stored(stored, value), default_of=None)
+        kept = frames.stored(state, ref, name, stored, value)
+        obj.fields[name] = replace(kept, default_of=None)
         obj.reported.discard(name)
-        if name in FRAME_FIELDS:
-            frames.check_named(self.ctx, state, ref, name, site)
 
     def _field_declared(
         self, owner: MsgSpec, name: str, unit_decl: FieldUnit

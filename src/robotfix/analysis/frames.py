@@ -140,44 +140,52 @@ def framed_read(state: State, ref: int, name: str, value: Value) -> Value:
     return replace(value, unit=with_frame(value.unit, frame))
 
 
-def stored(value: Value, given: Value) -> Value:
-    """The value a field keeps: a number remembers the frame of the data stored
-    (its unit becomes the field's), so naming another frame later is found."""
+def stored(state: State, ref: int, name: str, value: Value, given: Value) -> Value:
+    """The value field `name` keeps: a number remembers the frame of the data stored
+    (its unit becomes the field's), so naming another frame before the message
+    leaves is found; not a frame the message already contradicts (reported)."""
     if not value.is_number:
         return value
-    return replace(value, frame=frame_of(given.unit) or given.frame)
+    frame = frame_of(given.unit) or given.frame
+    found = frame_at(state, ref, name)
+    if found is not None and found[0] != frame:
+        frame = None
+    return replace(value, frame=frame)
 
 
-def check_named(
-    ctx: FileContext, state: State, ref: int, name: str, site: ast.AST
-) -> None:
-    """`p.header.frame_id = 'map'` (or `p.header = h`) after data in another frame
-    was stored into `p`: RF201 at the statement that names the frame."""
-    current: int | None = ref
-    path = name
+def check_leaving(ctx: FileContext, state: State, ref: int, site: ast.AST) -> None:
+    """A message leaves the node (`pub.publish(p)`) with data stored in one frame
+    below a header that names another (`p.point.x = x_odom`, then
+    `p.header.frame_id = 'map'`): RF201 there. Checked when it leaves, not when the
+    frame is named, as a message reused for several frames is rewritten in between."""
+    todo = [ref]
     seen: set[int] = set()
-    while current is not None and current in state.heap and current not in seen:
+    while todo:
+        current = todo.pop()
+        if current in seen or current not in state.heap:
+            continue
         seen.add(current)
         obj = state.heap[current]
         for prefix, frame_path in FRAMED_FIELDS.get(obj.type, ()):
-            if frame_path != path and not frame_path.startswith(path + "."):
-                continue
             frame = known_frame(peek(state, current, frame_path))
             if frame is None:
                 continue
             other = _other_frame(state, peek(state, current, prefix), frame)
             if other is not None:
-                stmt = ctx.source.segment(site) or name
+                stmt = ctx.source.segment(site) or "publish"
                 ctx.report(
                     messages.frame_mismatch(
-                        ctx.source.path, ctx.source.span(site), stmt, other, frame
+                        ctx.source.path,
+                        ctx.source.span(site),
+                        stmt,
+                        other,
+                        frame,
+                        leaving=True,
                     ),
                     once=("frames", id(site)),
                 )
                 return
-        if obj.owner is None:
-            return
-        current, path = obj.owner[0], f"{obj.owner[1]}.{path}"
+        todo.extend(v.ref for _, v in sorted(obj.fields.items()) if v.ref is not None)
 
 
 def _other_frame(state: State, data: Value | None, frame: str) -> str | None:

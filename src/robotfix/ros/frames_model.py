@@ -61,9 +61,6 @@ class Tf2Call:
     transform: tuple[int, str] | None = None
 
 
-# The string fields that name frames (setting one checks the data already stored).
-FRAME_FIELDS = frozenset({"frame_id", "child_frame_id"})
-
 # Keyed by the called name's last part (a method of tf2_ros.Buffer, or a function of
 # tf2_geometry_msgs, however imported).
 TF2_CALLS: dict[str, Tf2Call] = {

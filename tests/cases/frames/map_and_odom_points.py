@@ -80,33 +80,54 @@ def robot_x(p: PointStamped) -> float:
 
 
 class LateFrames(Node):
-    """The frame named after the data was stored: checked when it is named."""
+    """The frame named after the data was stored: checked when the message leaves
+    the node (a message reused for several frames is rewritten in between)."""
 
     def __init__(self) -> None:
         super().__init__("late_frames")
+        self.pub = self.create_publisher(PointStamped, "point", 10)
+        self.markers = self.create_publisher(Marker, "marker", 10)
         self.timer = self.create_timer(1.0, self.tick)
 
     def tick(self) -> None:
         x_odom: Annotated[float, "Unit('m') and Frame('odom')"] = 1.0
         p = PointStamped()
         p.point.x = x_odom
-        p.header.frame_id = "map"  # error: RF201
+        p.header.frame_id = "map"
+        self.pub.publish(p)  # error: RF201
         q = PointStamped()
         q.point.x = x_odom
         q.header.frame_id = "odom"  # the data's own frame: clean
+        self.pub.publish(q)
         r = PointStamped()
         r.point.x = x_odom
         r.point.x = 0.0  # overwritten before the frame is named
         r.header.frame_id = "map"
+        self.pub.publish(r)
         s = PointStamped()
         s.point.y = x_odom
         gap = s.point.y - p.point.x  # error: RF202
+        reused = PointStamped()
+        reused.header.frame_id = "odom"
+        reused.point.x = x_odom
+        self.pub.publish(reused)
+        reused.header.frame_id = "map"  # rewritten below before it leaves: clean
+        reused.point.x = p.point.x
+        self.pub.publish(reused)
+        renamed = PointStamped()
+        renamed.header.frame_id = "odom"
+        renamed.point.x = x_odom
+        self.pub.publish(renamed)
+        renamed.header.frame_id = "map"  # the odom data is still there
+        self.pub.publish(renamed)  # error: RF201
         m = PointStamped()
         m.header.frame_id = "map"
         out = PointStamped()
         out.point.x = x_odom
-        out.header = m.header  # error: RF201
+        out.header = m.header
+        self.pub.publish(out)  # error: RF201
         marker = Marker()
         marker.header.frame_id = "base_link"
         marker.pose.position.x = m.point.x  # error: RF201
         marker.pose.position.y = gap
+        self.markers.publish(marker)
