@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import pytest
 
+from robotfix import api
 from robotfix.analysis.frames import known_frame, normalize
 from robotfix.analysis.values import Value
 from robotfix.annotations import ast as A
@@ -74,3 +75,19 @@ def test_one_leading_slash_is_stripped_as_tf2_does() -> None:
 )
 def test_known_frames(value: Value, frame: str | None) -> None:
     assert known_frame(value) == frame
+
+
+STAMPED = """from geometry_msgs.msg import PointStamped
+
+p = PointStamped()
+p.header.frame_id = "/odom"
+x = p.point.x
+"""
+
+
+def test_hover_on_a_field_of_a_stamped_message_names_its_frame() -> None:
+
+    col = STAMPED.splitlines()[4].index(".x") + 1
+    found = api.hover(STAMPED, "p.py", 5, col, CATALOG)
+    assert found is not None
+    assert "in `m` in frame `odom` (its message's `header.frame_id`)" in found
