@@ -131,7 +131,7 @@ def _within(prefix: str, path: str) -> bool:
 def framed_read(state: State, ref: int, name: str, value: Value) -> Value:
     """A number read from a field of a message in a known frame carries it (or, in
     a message whose frame is not known, the frame of the data stored there)."""
-    if not value.is_number or value.unit is None or value.literal:
+    if not _numeric(value) or value.unit is None or value.literal:
         return value
     found = frame_at(state, ref, name)
     frame = found[0] if found is not None else value.frame
@@ -140,11 +140,16 @@ def framed_read(state: State, ref: int, name: str, value: Value) -> Value:
     return replace(value, unit=with_frame(value.unit, frame))
 
 
+def _numeric(value: Value) -> bool:
+    """A number, or a value of a kind not known stored in a numeric field."""
+    return value.is_number or (value.kind == "unknown" and value.ref is None)
+
+
 def stored(state: State, ref: int, name: str, value: Value, given: Value) -> Value:
     """The value field `name` keeps: a number remembers the frame of the data stored
     (its unit becomes the field's), so naming another frame before the message
     leaves is found; not a frame the message already contradicts (reported)."""
-    if not value.is_number:
+    if not _numeric(value):
         return value
     frame = frame_of(given.unit) or given.frame
     found = frame_at(state, ref, name)
@@ -196,7 +201,7 @@ def _other_frame(state: State, data: Value | None, frame: str) -> str | None:
         value = todo.pop()
         if value is None:
             continue
-        if value.is_number and value.frame is not None and value.frame != frame:
+        if _numeric(value) and value.frame is not None and value.frame != frame:
             return value.frame
         if value.ref is not None and value.ref in state.heap and value.ref not in seen:
             seen.add(value.ref)
