@@ -299,6 +299,8 @@ def tf2_call(
     assert data.ref is not None
     data_type = state.heap[data.ref].type
     if call.kind == "transform":
+        # tf2 looks the transform up from the value's own frame: a `/` fails there
+        _check_slashes(ctx, name, node, [peek(state, data.ref, "header.frame_id")])
         target = given(call.target)
         if target is None or target.kind not in ("str", "unknown"):
             return None

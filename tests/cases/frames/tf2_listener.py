@@ -31,6 +31,10 @@ class ObstacleLocator(Node):
         odom = self.tf_buffer.transform(seen, "odom")
         mixed = goal.point.y - odom.point.y  # error: RF202
         slash = self.tf_buffer.lookup_transform("/map", "base_link", rclpy.time.Time())  # error: RF204
+        old_style = PointStamped()
+        old_style.header.frame_id = "/base_link"
+        same = old_style.point.x - seen.point.x  # `/base_link` is `base_link`: clean
+        fails = self.tf_buffer.transform(old_style, "map")  # error: RF204
 
     def on_obstacle(self, msg: PointStamped) -> None:
         # the frame of a received point is not known: any transform may fit it
