@@ -434,6 +434,57 @@ def operand_units(
     return Diagnostic(rules.OPERAND_UNIT_MISMATCH, path, span, message)
 
 
+def _axes(a: str, b: str) -> str:
+    """Why two frames that differ only by a REP 103 suffix are not the same."""
+    for suffix, axes in (
+        ("_optical", "an `_optical` frame has z forward, x right, y down"),
+        ("_ned", "an `_ned` frame has x north (forward), y east (right), z down"),
+        ("_enu", "an `_enu` frame has x east, y north, z up"),
+    ):
+        if a + suffix == b or b + suffix == a:
+            return f" (REP 103: {axes})"
+    return ""
+
+
+def frame_mismatch(
+    path: str, span: Span, stmt: str, got: str, expected: str, leaving: bool = False
+) -> Diagnostic:
+    """RF201: data of one frame stored into a message whose header names another
+    (`leaving`: found when the message leaves the node)."""
+    verb = "sends" if leaving else "stores"
+    into = "in a message whose header names" if leaving else "into a message in"
+    message = (
+        f"`{stmt}` {verb} data in frame `{got}` {into} frame `{expected}`"
+        f"{_axes(got, expected)}: transform it with tf2 first"
+    )
+    return Diagnostic(rules.UNIT_MISMATCH, path, span, message)
+
+
+def transform_frame_mismatch(
+    path: str, span: Span, stmt: str, frame: str, source: str, target: str | None
+) -> Diagnostic:
+    """RF204: do_transform_*(stamped, transform) with stamped not in the source."""
+    into = f" to `{target}`" if target is not None else ""
+    message = (
+        f"`{stmt}` applies the transform from `{source}`{into} to data in frame "
+        f"`{frame}`{_axes(frame, source)}: look up the transform with source frame "
+        f"`{frame}` (`lookup_transform(target, '{frame}', time)`), or use "
+        "`buffer.transform(stamped, target)`"
+    )
+    return Diagnostic(rules.TRANSFORM_FRAME_MISMATCH, path, span, message)
+
+
+def frame_with_slash(
+    path: str, span: Span, stmt: str, call: str, frame: str
+) -> Diagnostic:
+    """RF204: a tf2 lookup given a frame id with a leading `/` (tf2 throws)."""
+    message = (
+        f"`{stmt}` gives {call}() the frame `{frame}`: tf2 frame ids cannot start "
+        f"with a '/' (it raises InvalidArgumentException); write `{frame[1:]}`"
+    )
+    return Diagnostic(rules.TRANSFORM_FRAME_MISMATCH, path, span, message)
+
+
 def conversion(got: Unit, expected: Unit) -> str:
     """How to turn a value in `got` into `expected`, when only the scale differs."""
     if expected.is_label:

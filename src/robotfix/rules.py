@@ -48,6 +48,11 @@ IMPLICIT_UNIT_CHANGE = Rule(
     "Value changes its unit by a time step or gain the code does not name",
     W,
 )
+TRANSFORM_FRAME_MISMATCH = Rule(
+    "RF204",
+    "transform-frame-mismatch",
+    "A tf2 transform is applied to data in another frame, or given a frame it refuses",
+)
 
 USED_BEFORE_ASSIGNMENT = Rule(
     "RF301", "used-before-assignment", "Variable read before it is assigned"
@@ -124,6 +129,7 @@ ALL_RULES: dict[str, Rule] = {
         UNIT_MISMATCH,
         OPERAND_UNIT_MISMATCH,
         IMPLICIT_UNIT_CHANGE,
+        TRANSFORM_FRAME_MISMATCH,
         USED_BEFORE_ASSIGNMENT,
         UNSET_FIELD_DEFAULT,
         BASE_TYPE_MISMATCH,

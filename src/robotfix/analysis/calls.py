@@ -10,7 +10,7 @@ import ast
 from dataclasses import replace
 from fractions import Fraction
 
-from robotfix.analysis import containers, heap
+from robotfix.analysis import containers, frames, heap
 from robotfix.analysis.library import LibraryEvaluator
 from robotfix.analysis.program import Function
 from robotfix.analysis.state import State
@@ -52,6 +52,7 @@ class CallEvaluator(LibraryEvaluator):
             for value in values[:1]:
                 if value.kind == "msg" and value.ref is not None:
                     self.check.check_whole(state, value.ref, self.site, publishing=True)
+                    frames.check_leaving(self.ctx, state, value.ref, self.site)
             return self.unknown(node)
         if isinstance(func, ast.Attribute) and func.attr in SEQUENCE_METHODS:
             receiver = self.receiver(func.value, state)
@@ -124,6 +125,10 @@ class CallEvaluator(LibraryEvaluator):
             if found is not None:
                 return found
         found = self.library_call(callee, node, args, kwargs, state)
+        if frames.is_tf2(name):  # the stub checked the arguments; frames follow
+            moved = frames.tf2_call(self.ctx, name, node, args, kwargs, state)
+            if moved is not None:
+                return moved
         return found if found is not None else self.unknown(node)
 
     def _forget_after_call(
@@ -141,6 +146,8 @@ class CallEvaluator(LibraryEvaluator):
             return
         if isinstance(node.func, ast.Attribute) and node.func.attr in PARAMETER_CALLS:
             return  # rclpy and rospy change no attribute of the node's class
+        if frames.followed(self.ctx, node):
+            return  # tf2 reads the stamped values and transforms it is given
         for value in [*args, *kwargs.values()]:
             if value.kind == "msg" and value.ref is not None:
                 heap.havoc(state, value.ref)

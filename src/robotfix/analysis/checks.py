@@ -10,7 +10,7 @@ import ast
 from dataclasses import dataclass, field, replace
 
 from robotfix import messages
-from robotfix.analysis import containers, heap, parameters
+from robotfix.analysis import containers, frames, heap, parameters
 from robotfix.analysis.context import FileContext
 from robotfix.analysis.state import State
 from robotfix.analysis.values import SEQUENCES, Items, Kept, Value
@@ -544,6 +544,7 @@ class Checker:
             return
         if spec.kind == "msg":
             if value.ref is not None and value.ref in state.heap:
+                frames.check_moved(self.ctx, state, ref, name, value.ref, site)
                 if not heap.owns(state, ref, value.ref):  # `m.a = m`: no owner loop
                     state.heap[value.ref].owner = (ref, name)
                 obj.fields[name] = value
@@ -560,7 +561,10 @@ class Checker:
         )
         if unit_decl is not None and owner is not None:
             decl = self._field_declared(owner, name, unit_decl)
-            ok = self.units_agree(unit, value, site, f"`{target}`", decl) and ok
+            framed, frame_decl = frames.expected_unit(self.ctx, state, ref, name, unit)
+            if frame_decl is not None and frames.frame_of(value.unit) is not None:
+                decl = frame_decl  # the frame is what can differ
+            ok = self.units_agree(framed, value, site, f"`{target}`", decl) and ok
         stored = value.with_unit(unit) if unit is not None else value
         if stored.term is None:
             stored = self.ctx.fresh(spec.kind, f"`{target}`", unit)
@@ -589,8 +593,9 @@ class Checker:
             stored = self.ctx.fresh(spec.kind, f"`{target}`", unit)
             for _, path, inv in invariants:
                 state.assume(A.substitute(inv.predicate, {path: stored.known_term}))
+        kept = frames.stored(state, ref, name, stored, value)
         obj.fields[name] = (
-            stored if stored.default_of is None else replace(stored, default_of=None)
+            kept if kept.default_of is None else replace(kept, default_of=None)
         )
         obj.reported.discard(name)
 

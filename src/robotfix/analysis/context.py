@@ -27,6 +27,7 @@ from robotfix.stubs.load import StubSet
 
 if TYPE_CHECKING:
     from robotfix.analysis.flows import FlowLog
+    from robotfix.analysis.frames import FrameFacts
     from robotfix.analysis.parameters import ParamContext
 
 MSG_MODULES = ("msg", "srv", "action")
@@ -92,6 +93,7 @@ class FileContext:
         self.uses_refinements = False  # some annotation of the file is a refinement
         self.stubs: StubSet | None = None  # the run's stubs (None: the shipped ones)
         self.parameters: ParamContext | None = None  # at the first parameter call
+        self.frame_facts: FrameFacts | None = None  # analysis/frames.py, when asked
         # symbols of satisfiability questions: never those of `fresh`
         self._question_ids = itertools.count(-1, -1)
         self._invariants: dict[str, list[Invariant]] = {}

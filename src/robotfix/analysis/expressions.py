@@ -15,7 +15,7 @@ from dataclasses import replace
 from fractions import Fraction
 
 from robotfix import messages
-from robotfix.analysis import containers, heap, hover
+from robotfix.analysis import containers, frames, heap, hover
 from robotfix.analysis.checks import Checker
 from robotfix.analysis.constants import is_constant
 from robotfix.analysis.context import TERM_LIMIT, FileContext
@@ -184,7 +184,8 @@ class ExpressionEvaluator:
             text = self.ctx.source.segment(node) or node.attr
             ref = base.ref
             self.note_hover(node, lambda: hover.field(self.ctx, state, ref, node.attr))
-            return self.check.read_field(state, base.ref, node.attr, self.site, text)
+            value = self.check.read_field(state, base.ref, node.attr, self.site, text)
+            return frames.framed_read(state, base.ref, node.attr, value)
         if base.kind in ("instance", "goal_handle") and isinstance(
             node.value, ast.Name
         ):
@@ -279,8 +280,9 @@ class ExpressionEvaluator:
             )
         else:
             decl = self.program.attributes.get(base.name, {}).get(node.attr)
+            remembered = frames.recall(self.ctx, base.name, node.attr)
             value = (
-                self.unknown(node)
+                (remembered or self.unknown(node))
                 if decl is None
                 else self.check.assumed(
                     state, key, decl, self.refinement_lookup(decl, state)
@@ -523,10 +525,12 @@ class ExpressionEvaluator:
         ru = DIMENSIONLESS if right.literal else right.unit
         if lu is None or ru is None:
             return None, False
+        # a number that is not a literal (`math.cos(yaw)`) may rotate a coordinate
+        # into another frame: the product's frame is not known
         if ru == DIMENSIONLESS:
-            return lu, False
+            return (lu if right.literal else frames.unframed(lu)), False
         if lu == DIMENSIONLESS and op == "*":
-            return ru, False
+            return (ru if left.literal else frames.unframed(ru)), False
         return (lu * ru if op == "*" else lu / ru), False
 
     def eval_Compare(self, node: ast.Compare, state: State) -> Value:

@@ -8,7 +8,7 @@ fields below it, as its enclosing messages declare them (REP 103, interface file
 
 from __future__ import annotations
 
-from robotfix.analysis import heap
+from robotfix.analysis import frames, heap
 from robotfix.analysis.context import FileContext
 from robotfix.analysis.state import State
 from robotfix.analysis.values import Value
@@ -69,6 +69,9 @@ def field(ctx: FileContext, state: State, ref: int, name: str) -> str:
     unit = heap.field_unit(ctx, state, ref, name)[0]
     if unit is not None:
         parts.append(f"in `{unit}`")
+    framed = frames.frame_at(state, ref, name)
+    if framed is not None:
+        parts.append(f"in frame `{framed[0]}` (its message's `{framed[2]}`)")
     rules = [inv.text for _, _, inv in heap.invariants_on(ctx, state, ref, name)]
     if rules:
         parts.append("— refinements: " + ", ".join(f"`{r}`" for r in rules))

@@ -15,7 +15,7 @@ from collections.abc import Callable
 from dataclasses import replace
 
 from robotfix import messages
-from robotfix.analysis import containers, heap, hover
+from robotfix.analysis import containers, frames, heap, hover
 from robotfix.analysis.calls import CallEvaluator
 from robotfix.analysis.constants import scan
 from robotfix.analysis.context import FileContext, Scope, build_scope
@@ -389,6 +389,8 @@ class Interpreter(CallEvaluator):
         value = containers.stripped(value)  # an attribute's list is shared
         self.lists_seen = self.lists_seen or value.kind == "list"
         state.env[key] = value.settled()
+        if base.kind == "instance":
+            frames.remember(self.ctx, base.name, attr, value)
 
     # -- lists ---------------------------------------------------------------
     def follows_lists(self) -> bool:

@@ -16,7 +16,7 @@ from dataclasses import replace
 from fractions import Fraction
 
 from robotfix import messages
-from robotfix.analysis import heap
+from robotfix.analysis import frames, heap
 from robotfix.analysis.param_eval import ParameterEvaluator
 from robotfix.analysis.state import State
 from robotfix.analysis.values import Value
@@ -339,6 +339,8 @@ class LibraryEvaluator(ParameterEvaluator):
         unit: Unit | None = first.unit if not first.literal else None
         if unit is None:
             unit = next((u for u in units if u is not None), None)
+        if short == "hypot":
+            unit = frames.unframed(unit)  # a length is the same in every frame
         if function.returns_kind == "int":
             return self.ctx.fresh("int", node, unit)
         value = self.library_result(function, {}, node, state)

@@ -12,6 +12,7 @@ refinement is assumed (`parameters.attach`).
 from __future__ import annotations
 
 import ast
+from dataclasses import replace
 from fractions import Fraction
 
 from robotfix import messages
@@ -206,6 +207,8 @@ class ParameterEvaluator(ExpressionEvaluator):
         if value is None or value.kind != kind:
             unit = name_unit(handle.name) if self.ctx.catalog.unit_suffixes else None
             value = self.ctx.fresh(kind, f"parameter `{handle.name}`", unit)
+            if kind == "str" and decl is not None and isinstance(decl.default, str):
+                value = replace(value, frame=decl.default)  # analysis/frames.py
             handle.value = value
         if decl is not None and decl.read_only:
             fixed[key] = value
@@ -238,6 +241,9 @@ class ParameterEvaluator(ExpressionEvaluator):
         if name is None:
             return None
         value = self.ctx.fresh("unknown", f"parameter `{name}`")
+        default = _given(args, kwargs, 1, "default")
+        if default is not None and isinstance(default.term, A.Str):
+            value = replace(value, frame=default.term.value)  # analysis/frames.py
         assert isinstance(value.term, A.Sym)
         self.parameters().reads[value.term.ident] = ParamRead(
             name,

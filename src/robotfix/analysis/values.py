@@ -80,6 +80,9 @@ class Value:
     # or appear, as the radian is a ratio of lengths (`omega * r` is m/s).
     rad_free: bool = False
     items: Items | None = None  # a sequence: what holds of its elements
+    # A string the analysis does not know exactly but knows the frame name of (a
+    # parameter's default, `analysis/frames.py`); None: no frame known.
+    frame: str | None = None
 
     @property
     def known_term(self) -> A.Expr:

@@ -75,7 +75,11 @@ class Unit:
         )
 
     def power(self, exponent: int) -> Unit:
-        dims = tuple((d, e * exponent) for d, e in self.dims if e * exponent)
+        dims = tuple(
+            (d, e * exponent)
+            for d, e in self.dims
+            if e * exponent and (e * exponent == 1 or not is_frame(d))
+        )
         factor = self.factor**exponent
         return Unit(dims, factor, text=_render(dims, factor))
 
@@ -203,7 +207,11 @@ def _compose(a: Unit, b: Unit, sign: int) -> Unit:
     exps: dict[str, int] = dict(a.dims)
     for dim, exp in b.dims:
         exps[dim] = exps.get(dim, 0) + sign * exp
-    dims = tuple(sorted((d, e) for d, e in exps.items() if e))
+    # A product of two values in a frame (`dx * dx`) is no longer a coordinate in it:
+    # a squared or inverted frame is dropped (so are norms, `analysis/frames.py`).
+    dims = tuple(
+        sorted((d, e) for d, e in exps.items() if e and (e == 1 or not is_frame(d)))
+    )
     factor = a.factor * (b.factor if sign > 0 else 1 / b.factor)
     return Unit(dims, factor, text=_render(dims, factor))
 
