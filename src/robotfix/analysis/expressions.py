@@ -597,6 +597,22 @@ class ExpressionEvaluator:
             return self.element(base, node, state)
         return self.unknown(node, unit=base.unit if not base.literal else None)
 
+    def message_element(
+        self, message: tuple[str, str], node: ast.AST, state: State
+    ) -> Value:
+        """An element of a message array field (`path.poses[i]`, `for p in
+        msg.poses`): a message of the element type, received (its type's
+        invariants hold) when the array arrived, else unknown-but-typed."""
+        msg_type, origin = message
+        label = self.ctx.source.segment(node) or "an element"
+        return heap.new_message(
+            self.ctx,
+            state,
+            msg_type,
+            "received" if origin == "received" else "unknown",
+            label=label,
+        )
+
     def element(self, sequence: Value, node: ast.AST, state: State) -> Value:
         """One element of `sequence`: what holds of every element holds of it."""
         if sequence.keys is not None and sequence.name in ("zip", "enumerate"):
@@ -606,6 +622,8 @@ class ExpressionEvaluator:
             found = self._one_of(list(sequence.elements), node, state)
             if found is not None:
                 return containers.stripped(found)
+        if sequence.items is not None and sequence.items.message is not None:
+            return self.message_element(sequence.items.message, node, state)
         kind = containers.item_kind(sequence)
         if kind not in ("int", "float", "bool", "str"):
             kind = "unknown"

@@ -198,7 +198,11 @@ def _array(
             ]
         )
     size = A.conjoin([size, kept.size]) if kept.size != A.TRUE else size
-    value = Value("list", unit=kept.unit, items=Items(kept.item, kept.each, size, kept))
+    message = (
+        (spec.msg_type, obj.origin) if spec.kind == "msg" and spec.msg_type else None
+    )
+    items = Items(kept.item, kept.each, size, kept, message=message)
+    value = Value("list", unit=kept.unit, items=items)
     obj.fields[name] = value
     return value
 

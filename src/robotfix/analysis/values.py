@@ -32,6 +32,8 @@ class Items:
     kept: Kept | None = None  # the declaration every change must keep
     # a display's element nodes, where an element's diagnostic points
     sites: tuple[object, ...] | None = field(default=None, compare=False)
+    # a message array field's (element type, origin of the message that holds it)
+    message: tuple[str, str] | None = None
 
 
 @dataclass(frozen=True)

@@ -93,6 +93,11 @@ class Unit:
 
 DIMENSIONLESS = Unit((), text="1")
 TWO_PI = 2 * math.pi
+# Literal factors that only ever convert an angle, never scale one: 180/pi (radians
+# and degrees) and 30/pi (rad/s and rpm). On a value already in its target's unit,
+# such a factor is a conversion done by mistake (`current_pos * 180 / math.pi` into
+# a position in rad), not a gain.
+ANGLE_FACTORS = (180 / math.pi, 30 / math.pi)
 
 
 @dataclass(frozen=True)
@@ -148,7 +153,9 @@ def fit(got: Unit, expected: Unit, scale: float = 1.0, rad_free: bool = False) -
     factor = got.factor / scale
     if got.dims == expected.dims and not got.offset and not expected.offset:
         # `speed * 2` keeps m/s; `speed / 3.6` converts km/h to m/s
-        if math.isclose(factor, expected.factor, rel_tol=1e-3) or got.same_as(expected):
+        if math.isclose(factor, expected.factor, rel_tol=1e-3) or (
+            got.same_as(expected) and not _converts_angle(got, scale)
+        ):
             return Fit("ok", shown)
         return Fit("mismatch", shown, Unit(expected.dims, factor))
     if got.dims == expected.dims:
@@ -176,6 +183,17 @@ def fit(got: Unit, expected: Unit, scale: float = 1.0, rad_free: bool = False) -
             return Fit("ok", shown)
         return Fit("mismatch", shown, Unit(expected.dims, factor))
     return _other(diff, raw, scale, got, expected)
+
+
+def _converts_angle(unit: Unit, scale: float) -> bool:
+    """Whether `scale` is one of the `ANGLE_FACTORS` (or its inverse) on an angle."""
+    if math.isclose(scale, 1.0) or not any(d == "radian" for d, _ in unit.dims):
+        return False
+    return any(
+        math.isclose(scale, f, rel_tol=1e-3)
+        or math.isclose(scale * f, 1.0, rel_tol=1e-3)
+        for f in ANGLE_FACTORS
+    )
 
 
 def _other(
