@@ -20,10 +20,13 @@ names (`utm-32N` stays a tag).
 
 from __future__ import annotations
 
+import functools
+import json
 import math
 import re
 import unicodedata
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 from robotfix.disk_cache import JsonCache, cache_dir, install_key
@@ -273,6 +276,8 @@ def resolve(text: str) -> Unit:
     check_text(text)
     entry = _CACHE.entries.get(text)
     if entry is None:
+        entry = _shipped().get(text)
+    if entry is None:
         entry = _resolve_with_pint(text)
         _CACHE.put(text, entry)
     kind = entry[0]
@@ -336,6 +341,19 @@ def _shown(text: str) -> str:
     return "".join(
         f"\\u{ord(c):04x}" if unicodedata.category(c)[0] == "C" else c for c in short
     )
+
+
+@functools.cache
+def _shipped() -> dict[str, Any]:
+    """pint's reading of the units of REP 103 and the standard messages, shipped in
+    the package (`units.json`, written by tools/build_package_data.py), so that a
+    first run need not import pint for them."""
+    try:
+        data = json.loads(Path(__file__).with_name("units.json").read_text("utf-8"))
+    except (OSError, ValueError):
+        return {}
+    entries = data.get("entries") if isinstance(data, dict) else None
+    return entries if isinstance(entries, dict) else {}
 
 
 def save_cache() -> None:

@@ -31,6 +31,7 @@ from __future__ import annotations
 import difflib
 import functools
 import hashlib
+import json
 import os
 import sys
 from collections.abc import Collection, Mapping
@@ -941,7 +942,22 @@ def _std_cache(distro: str) -> JsonCache:
     return _STD_CACHES[distro]
 
 
+@functools.cache
+def _shipped_standard(distro: str) -> dict[str, Any] | None:
+    """The converted definitions shipped in the package (`standard/<distro>.json`,
+    written by tools/build_package_data.py), so that a first run converts nothing."""
+    path = Path(__file__).with_name("standard") / f"{distro}.json"
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+    return data if isinstance(data, dict) else None
+
+
 def _standard_definitions(distro: str) -> dict[str, Any]:
+    shipped = _shipped_standard(distro)
+    if shipped is not None:
+        return shipped
     cache = _std_cache(distro)
     if not cache.entries:
         for key, value in _convert_rosbags(STORES.get(distro, STORES["ros2"])).items():
