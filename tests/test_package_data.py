@@ -88,3 +88,27 @@ def test_a_first_run_imports_neither_pint_nor_rosbags(
         check=False,
     )
     assert done.stdout.strip().endswith("[]"), done.stdout + done.stderr
+
+
+def test_data_of_another_conversion_version_is_ignored(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """After a change to the conversion (a new cache key version), stale shipped
+    data is not used: the first run converts, as without it."""
+    from robotfix.annotations import units
+    from robotfix.ros import catalog
+
+    catalog._shipped_standard.cache_clear()
+    units._shipped.cache_clear()
+    try:
+        assert catalog._shipped_standard("ros2")
+        assert units._shipped()
+        catalog._shipped_standard.cache_clear()
+        units._shipped.cache_clear()
+        monkeypatch.setattr(catalog, "standard_format", lambda d: f"msgs-v99-{d}")
+        monkeypatch.setattr(units, "units_format", lambda: "units-v99")
+        assert catalog._shipped_standard("ros2") is None
+        assert units._shipped() == {}
+    finally:
+        catalog._shipped_standard.cache_clear()
+        units._shipped.cache_clear()

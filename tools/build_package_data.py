@@ -6,8 +6,10 @@
   and the standard messages' comment units use.
 
 Without them, a first run on a fresh machine imports pint and converts rosbags' stores
-(about 0.5 s) before its machine cache exists. tests/test_package_data.py fails when
-the shipped files differ from what this script writes with the installed libraries.
+(about 0.5 s) before its machine cache exists. Each file names the version of the
+conversion that wrote it (the machine cache's key without the library's install), and
+is ignored by another. tests/test_package_data.py fails when the shipped files differ
+from what this script writes with the installed libraries: run it again then.
 Run: python tools/build_package_data.py
 """
 
@@ -27,9 +29,17 @@ UNITS = ROOT / "src/robotfix/annotations/units.json"
 
 def standard_messages() -> dict[str, str]:
     """distro -> the JSON text of its converted standard definitions."""
-    from robotfix.ros.catalog import STORES, _convert_rosbags
+    from robotfix.ros.catalog import STORES, _convert_rosbags, standard_format
 
-    return {distro: _dump(_convert_rosbags(STORES[distro])) for distro in STORES}
+    return {
+        distro: _dump(
+            {
+                "format": standard_format(distro),
+                "entries": _convert_rosbags(STORES[distro]),
+            }
+        )
+        for distro in STORES
+    }
 
 
 def unit_texts() -> list[str]:
@@ -45,9 +55,10 @@ def unit_texts() -> list[str]:
 
 
 def units() -> str:
-    from robotfix.annotations.units import _resolve_with_pint
+    from robotfix.annotations.units import _resolve_with_pint, units_format
 
-    return _dump({"entries": {text: _resolve_with_pint(text) for text in unit_texts()}})
+    entries = {text: _resolve_with_pint(text) for text in unit_texts()}
+    return _dump({"format": units_format(), "entries": entries})
 
 
 def _dump(data: Any) -> str:

@@ -352,8 +352,16 @@ def _shipped() -> dict[str, Any]:
         data = json.loads(Path(__file__).with_name("units.json").read_text("utf-8"))
     except (OSError, ValueError):
         return {}
-    entries = data.get("entries") if isinstance(data, dict) else None
+    if not isinstance(data, dict) or data.get("format") != units_format():
+        return {}  # written by another version of the resolution
+    entries = data.get("entries")
     return entries if isinstance(entries, dict) else {}
+
+
+def units_format() -> str:
+    """The version of the resolution (`units-vN`): the machine cache's key without
+    the install of pint."""
+    return _CACHE.key.rsplit(":", 1)[-1]
 
 
 def save_cache() -> None:
