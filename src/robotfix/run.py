@@ -4,6 +4,7 @@ processes with -j), and gather the diagnostics in a deterministic order.
 
 from __future__ import annotations
 
+import gc
 import os
 import signal
 import time
@@ -62,6 +63,30 @@ def check_paths(
     and from the msg/srv/action folders of ROS packages under `paths`, then from
     the sourced install space. A problem in an interface file fails the run only
     when a checked file uses a type of that file (`api.interface_problems`)."""
+    # As mypy does: the analysis makes millions of short-lived objects while large
+    # ASTs stay alive, so the collector runs less often and skips what start-up made
+    # (-7% CPU on real code in the performance report; -3% to -18% here, on a busy
+    # machine); restored when the run ends.
+    threshold = gc.get_threshold()
+    gc.freeze()
+    gc.set_threshold(GC_THRESHOLD, 50, 1000)
+    try:
+        return _check_paths(paths, config, progress, jobs, use_cache)
+    finally:
+        gc.set_threshold(*threshold)
+        gc.unfreeze()
+
+
+GC_THRESHOLD = 50_000  # allocations before a young collection (Python's: 700)
+
+
+def _check_paths(
+    paths: list[Path],
+    config: Config,
+    progress: Callable[[int, int, str], None] | None,
+    jobs: int,
+    use_cache: bool,
+) -> Result:
     started = time.perf_counter()
     result = Result()
     found = discover(paths, config)

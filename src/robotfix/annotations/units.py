@@ -20,10 +20,13 @@ names (`utm-32N` stays a tag).
 
 from __future__ import annotations
 
+import functools
+import json
 import math
 import re
 import unicodedata
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 from robotfix.disk_cache import JsonCache, cache_dir, install_key
@@ -299,6 +302,8 @@ def resolve(text: str) -> Unit:
     check_text(text)
     entry = _CACHE.entries.get(text)
     if entry is None:
+        entry = _shipped().get(text)
+    if entry is None:
         entry = _resolve_with_pint(text)
         _CACHE.put(text, entry)
     kind = entry[0]
@@ -362,6 +367,27 @@ def _shown(text: str) -> str:
     return "".join(
         f"\\u{ord(c):04x}" if unicodedata.category(c)[0] == "C" else c for c in short
     )
+
+
+@functools.cache
+def _shipped() -> dict[str, Any]:
+    """pint's reading of the units of REP 103 and the standard messages, shipped in
+    the package (`units.json`, written by tools/build_package_data.py), so that a
+    first run need not import pint for them."""
+    try:
+        data = json.loads(Path(__file__).with_name("units.json").read_text("utf-8"))
+    except (OSError, ValueError):
+        return {}
+    if not isinstance(data, dict) or data.get("format") != units_format():
+        return {}  # written by another version of the resolution
+    entries = data.get("entries")
+    return entries if isinstance(entries, dict) else {}
+
+
+def units_format() -> str:
+    """The version of the resolution (`units-vN`): the machine cache's key without
+    the install of pint."""
+    return _CACHE.key.rsplit(":", 1)[-1]
 
 
 def save_cache() -> None:

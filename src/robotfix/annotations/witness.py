@@ -14,6 +14,7 @@ from __future__ import annotations
 import itertools
 from collections.abc import Callable
 from fractions import Fraction
+from functools import lru_cache
 
 from robotfix.annotations import ast as A
 
@@ -28,9 +29,15 @@ def has_witness(predicate: A.Expr, sort: Callable[[str], str]) -> bool:
     names = sorted({n.name for n in A.names(predicate)})
     if not names or len(names) > MAX_NAMES:
         return False
-    sorts = [sort(name) for name in names]
+    sorts = tuple(sort(name) for name in names)
     if any(s not in ("int", "real") for s in sorts):
         return False
+    return _search(predicate, tuple(names), sorts)
+
+
+@lru_cache(maxsize=4096)
+def _search(predicate: A.Expr, names: tuple[str, ...], sorts: tuple[str, ...]) -> bool:
+    """Memoised: a refinement is met again at every use of its name or type."""
     constants = _constants(predicate)
     if constants is None:
         return False

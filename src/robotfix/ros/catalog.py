@@ -31,6 +31,7 @@ from __future__ import annotations
 import difflib
 import functools
 import hashlib
+import json
 import os
 import sys
 from collections.abc import Collection, Mapping
@@ -986,7 +987,32 @@ def _std_cache(distro: str) -> JsonCache:
     return _STD_CACHES[distro]
 
 
+def standard_format(distro: str) -> str:
+    """The version of the conversion (`msgs-vN-<distro>`): the machine cache's key
+    without the install of rosbags."""
+    return _std_cache(distro).key.rsplit(":", 1)[-1]
+
+
+@functools.cache
+def _shipped_standard(distro: str) -> dict[str, Any] | None:
+    """The converted definitions shipped in the package (`standard/<distro>.json`,
+    written by tools/build_package_data.py), so that a first run converts nothing;
+    ignored when written by another version of the conversion."""
+    path = Path(__file__).with_name("standard") / f"{distro}.json"
+    try:
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+    if not isinstance(data, dict) or data.get("format") != standard_format(distro):
+        return None
+    entries = data.get("entries")
+    return entries if isinstance(entries, dict) else None
+
+
 def _standard_definitions(distro: str) -> dict[str, Any]:
+    shipped = _shipped_standard(distro)
+    if shipped is not None:
+        return shipped
     cache = _std_cache(distro)
     if not cache.entries:
         for key, value in _convert_rosbags(STORES.get(distro, STORES["ros2"])).items():

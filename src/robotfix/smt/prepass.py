@@ -29,6 +29,7 @@ from robotfix.analysis.vc import VC
 from robotfix.annotations import ast as A
 from robotfix.smt.fold import fold
 
+_ZERO, _ONE, _MINUS_ONE = Fraction(0), Fraction(1), Fraction(-1)
 _TOO_LONG = 10**1_000  # the encoder's MAX_DIGITS: longer numbers are fresh to z3
 _FLIP = {"<": ">", "<=": ">=", ">": "<", ">=": "<=", "==": "==", "!=": "!="}
 _ORDER = frozenset({"<", "<=", ">", ">=", "==", "!="})
@@ -276,12 +277,12 @@ def _linear(
     if isinstance(expr, A.Sym):
         if expr.sort not in ("int", "real"):
             return None
-        return {expr: Fraction(1)}, Fraction(0)
+        return {expr: _ONE}, _ZERO
     if isinstance(expr, A.Unary):
         if expr.op != "-":
             return None
         inner = _linear(expr.operand, bounds)
-        return None if inner is None else _scale(inner, Fraction(-1))
+        return None if inner is None else _scale(inner, _MINUS_ONE)
     if isinstance(expr, A.Func):
         if expr.name != "abs" or len(expr.args) != 1:
             return None
@@ -293,14 +294,14 @@ def _linear(
             if span.low.value is not None and span.low.value >= 0:
                 return inner
             if span.high.value is not None and span.high.value <= 0:
-                return _scale(inner, Fraction(-1))
-        return {expr: Fraction(1)}, Fraction(0)
+                return _scale(inner, _MINUS_ONE)
+        return {expr: _ONE}, _ZERO
     if isinstance(expr, A.Binary) and expr.op in A.ARITH_OPS:
         left, right = _linear(expr.left, bounds), _linear(expr.right, bounds)
         if left is None or right is None:
             return None
         if expr.op == "+":
-            return _minus(left, _scale(right, Fraction(-1)))
+            return _minus(left, _scale(right, _MINUS_ONE))
         if expr.op == "-":
             return _minus(left, right)
         if expr.op == "*":
@@ -317,14 +318,14 @@ def _linear(
 def _scale(term: _Linear, factor: Fraction) -> _Linear:
     coeffs, constant = term
     if factor == 0:
-        return {}, Fraction(0)
+        return {}, _ZERO
     return {k: v * factor for k, v in coeffs.items()}, constant * factor
 
 
 def _minus(left: _Linear, right: _Linear) -> _Linear:
     coeffs = dict(left[0])
     for atom, value in right[0].items():
-        total = coeffs.get(atom, Fraction(0)) - value
+        total = coeffs.get(atom, _ZERO) - value
         if total:
             coeffs[atom] = total
         else:
@@ -349,12 +350,12 @@ def _atom_interval(atom: A.Expr, bounds: dict[A.Expr, _Interval]) -> _Interval:
     if isinstance(atom, A.Func):  # abs(t), t's sign not fixed: [0, max(|lo|, |hi|)]
         inner = _linear(atom.args[0], bounds)
         if inner is None:
-            return _Interval(_Bound(Fraction(0)))
+            return _Interval(_Bound(_ZERO))
         span = _interval_of(inner[0], inner[1], bounds)
         if span.low.value is None or span.high.value is None:
-            return _Interval(_Bound(Fraction(0)))
+            return _Interval(_Bound(_ZERO))
         top = max(-span.low.value, span.high.value)
-        return _Interval(_Bound(Fraction(0)), _Bound(top))
+        return _Interval(_Bound(_ZERO), _Bound(top))
     return bounds.get(atom, _Interval())
 
 

@@ -1,0 +1,114 @@
+"""The data shipped so that a first run computes nothing (issue 13, item 4): fresh,
+and used."""
+
+from __future__ import annotations
+
+import importlib.util
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+TOOL = ROOT / "tools" / "build_package_data.py"
+
+
+def tool():  # type: ignore[no-untyped-def]
+    spec = importlib.util.spec_from_file_location("build_package_data", TOOL)
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_the_shipped_standard_messages_are_what_rosbags_gives() -> None:
+    build = tool()
+    for distro, text in build.standard_messages().items():
+        shipped = build.STANDARD / f"{distro}.json"
+        assert shipped.read_text(encoding="utf-8") == text, (
+            f"{shipped} is stale: run python tools/build_package_data.py"
+        )
+
+
+def test_the_shipped_units_are_what_pint_gives() -> None:
+    build = tool()
+    assert build.UNITS.read_text(encoding="utf-8") == build.units(), (
+        "units.json is stale: run python tools/build_package_data.py"
+    )
+
+
+NODE = """import rclpy
+from rclpy.node import Node
+from geometry_msgs.msg import Twist
+from sensor_msgs.msg import LaserScan
+
+
+class Driver(Node):
+    def __init__(self):
+        super().__init__("driver")
+        self.pub = self.create_publisher(Twist, "cmd_vel", 10)
+        self.create_subscription(LaserScan, "scan", self.on_scan, 10)
+
+    def on_scan(self, scan):
+        cmd = Twist()
+        cmd.linear.x = 0.2 if scan.range_min > 0.5 else 0.0
+        cmd.angular.z = scan.angle_increment
+        self.pub.publish(cmd)
+"""
+
+
+@pytest.mark.parametrize("distro", ["ros2", "ros1"])
+def test_a_first_run_imports_neither_pint_nor_rosbags(
+    tmp_path: Path, distro: str
+) -> None:
+    node = tmp_path / "driver.py"
+    node.write_text(NODE)
+    (tmp_path / "pyproject.toml").write_text(
+        f'[tool.robotfix]\nros-distro = "{distro}"\n'
+    )
+    probe = (
+        "import sys\n"
+        "from robotfix.cli import main\n"
+        f"status = main(['check', '--no-cache', {str(node)!r}])\n"
+        "print(sorted(m for m in ('pint', 'rosbags') if m in sys.modules))\n"
+    )
+    env = {
+        **os.environ,
+        "ROBOTFIX_CACHE_DIR": str(tmp_path / "empty-cache"),
+        "PYTHONPATH": str(ROOT / "src"),
+    }
+    done = subprocess.run(
+        [sys.executable, "-c", probe],
+        capture_output=True,
+        text=True,
+        env=env,
+        cwd=tmp_path,
+        check=False,
+    )
+    assert done.stdout.strip().endswith("[]"), done.stdout + done.stderr
+
+
+def test_data_of_another_conversion_version_is_ignored(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """After a change to the conversion (a new cache key version), stale shipped
+    data is not used: the first run converts, as without it."""
+    from robotfix.annotations import units
+    from robotfix.ros import catalog
+
+    catalog._shipped_standard.cache_clear()
+    units._shipped.cache_clear()
+    try:
+        assert catalog._shipped_standard("ros2")
+        assert units._shipped()
+        catalog._shipped_standard.cache_clear()
+        units._shipped.cache_clear()
+        monkeypatch.setattr(catalog, "standard_format", lambda d: f"msgs-v99-{d}")
+        monkeypatch.setattr(units, "units_format", lambda: "units-v99")
+        assert catalog._shipped_standard("ros2") is None
+        assert units._shipped() == {}
+    finally:
+        catalog._shipped_standard.cache_clear()
+        units._shipped.cache_clear()

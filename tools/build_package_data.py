@@ -1,0 +1,77 @@
+"""Write the data a first run would otherwise compute, shipped in the wheel:
+
+- src/robotfix/ros/standard/<distro>.json: the standard message definitions of each
+  distribution RobotFix knows (`catalog.STORES`), converted from rosbags' type stores;
+- src/robotfix/annotations/units.json: pint's reading of every unit the REP 103 table
+  and the standard messages' comment units use.
+
+Without them, a first run on a fresh machine imports pint and converts rosbags' stores
+(about 0.5 s) before its machine cache exists. Each file names the version of the
+conversion that wrote it (the machine cache's key without the library's install), and
+is ignored by another. tests/test_package_data.py fails when the shipped files differ
+from what this script writes with the installed libraries: run it again then.
+Run: python tools/build_package_data.py
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+from typing import Any
+
+import tomllib
+
+ROOT = Path(__file__).resolve().parent.parent
+STANDARD = ROOT / "src/robotfix/ros/standard"
+UNITS = ROOT / "src/robotfix/annotations/units.json"
+
+
+def standard_messages() -> dict[str, str]:
+    """distro -> the JSON text of its converted standard definitions."""
+    from robotfix.ros.catalog import STORES, _convert_rosbags, standard_format
+
+    return {
+        distro: _dump(
+            {
+                "format": standard_format(distro),
+                "entries": _convert_rosbags(STORES[distro]),
+            }
+        )
+        for distro in STORES
+    }
+
+
+def unit_texts() -> list[str]:
+    ros = ROOT / "src/robotfix/ros"
+    found: set[str] = set()
+    rep103 = tomllib.loads((ros / "rep103.toml").read_text(encoding="utf-8"))
+    for entry in rep103["message"]:
+        found.update(entry["units"].values())
+    comments = tomllib.loads((ros / "comment_units.toml").read_text(encoding="utf-8"))
+    for entry in comments["message"]:
+        found.update(entry["units"].values())
+    return sorted(found)
+
+
+def units() -> str:
+    from robotfix.annotations.units import _resolve_with_pint, units_format
+
+    entries = {text: _resolve_with_pint(text) for text in unit_texts()}
+    return _dump({"format": units_format(), "entries": entries})
+
+
+def _dump(data: Any) -> str:
+    return json.dumps(data, sort_keys=True, separators=(",", ":")) + "\n"
+
+
+def main() -> None:
+    STANDARD.mkdir(exist_ok=True)
+    for distro, text in standard_messages().items():
+        (STANDARD / f"{distro}.json").write_text(text, encoding="utf-8")
+    UNITS.write_text(units(), encoding="utf-8")
+    print(f"wrote {STANDARD} and {UNITS}", file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main()
