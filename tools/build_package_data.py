@@ -16,6 +16,7 @@ Run: python tools/build_package_data.py
 from __future__ import annotations
 
 import json
+import re
 import sys
 from pathlib import Path
 from typing import Any
@@ -42,6 +43,9 @@ def standard_messages() -> dict[str, str]:
     }
 
 
+STUB_UNIT = re.compile(r"Unit\('([^']*)'\)")
+
+
 def unit_texts() -> list[str]:
     ros = ROOT / "src/robotfix/ros"
     found: set[str] = set()
@@ -51,6 +55,10 @@ def unit_texts() -> list[str]:
     comments = tomllib.loads((ros / "comment_units.toml").read_text(encoding="utf-8"))
     for entry in comments["message"]:
         found.update(entry["units"].values())
+    # the shipped stubs' units (`Unit('rad/s')`), read when a library call is met
+    stubs = ROOT / "src/robotfix/stubs/data"
+    for stub in sorted(stubs.rglob("*.pyi")):
+        found.update(STUB_UNIT.findall(stub.read_text(encoding="utf-8")))
     return sorted(found)
 
 
