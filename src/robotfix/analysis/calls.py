@@ -13,7 +13,7 @@ from fractions import Fraction
 
 from robotfix.analysis import heap
 from robotfix.analysis.expressions import ExpressionEvaluator
-from robotfix.analysis.program import Function
+from robotfix.analysis.program import Function, attribute_key
 from robotfix.analysis.state import State
 from robotfix.analysis.values import NONE, Value
 from robotfix.annotations import ast as A
@@ -126,13 +126,25 @@ class CallEvaluator(ExpressionEvaluator):
         for value in [*args, *kwargs.values()]:
             if value.kind == "msg" and value.ref is not None:
                 heap.havoc(state, value.ref)
+            state.changed(value)
         names = [a for a in node.args if isinstance(a, ast.Name)]
-        if isinstance(node.func, ast.Attribute) and isinstance(
-            node.func.value, ast.Name
-        ):
-            names.append(node.func.value)
+        if isinstance(node.func, ast.Attribute):
+            # a method of this file's class may change `self.x`; rclpy's and
+            # rospy's own (`self.get_clock()`) do not touch the node's attributes
+            receiver = state.env.get(getattr(node.func.value, "id", ""))
+            library = (
+                isinstance(receiver, Value)
+                and receiver.kind == "instance"
+                and callee.kind != "method"
+            )
+            if isinstance(node.func.value, ast.Name) and not library:
+                names.append(node.func.value)
+            elif isinstance(node.func.value, ast.Attribute):  # self.x.reset()
+                state.env.pop(attribute_key(node.func.value) or "", None)
         for name in names:
             bound = state.env.get(name.id)
+            if isinstance(bound, Value):
+                state.changed(bound)
             if isinstance(bound, Value) and bound.kind == "instance":
                 prefix = name.id + "."
                 for key in [k for k in state.env if k.startswith(prefix)]:

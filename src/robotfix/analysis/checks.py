@@ -60,6 +60,8 @@ class Checker:
         span, stmt = self.where(site)
         if isinstance(verdict, Proved):
             return PROVED
+        if isinstance(verdict, Unproven):
+            verdict = self._arm_violated(state, goal, probes) or verdict
         if isinstance(verdict, Violated):
             value = verdict.probe_values[0] if verdict.probe_values else None
             self.ctx.report(
@@ -95,6 +97,20 @@ class Checker:
         )
         return FAILED
 
+    def _arm_violated(
+        self, state: State, goal: A.Expr, probes: tuple[A.Expr, ...]
+    ) -> Violated | None:
+        """`a if c else b` is two paths: the goal fails on every execution of one
+        of them (a reachable one), which is an error."""
+        arms = [e for e in A.walk(goal) if isinstance(e, A.Ite)][:2]
+        for arm in arms:
+            for cond in (arm.cond, A.Unary("not", arm.cond)):
+                facts = (*state.facts, cond)
+                verdict = self.ctx.discharge(VC(facts, goal, probes))
+                if isinstance(verdict, Violated):
+                    return verdict
+        return None
+
     def _describe(self, ident: int) -> str:
         return self.ctx.describe(ident)
 
@@ -108,6 +124,28 @@ class Checker:
             ),
             once=("uninit", span.line, value.uninit.name),
         )
+        return True
+
+    def possible(self, state: State, condition: A.Expr) -> bool:
+        """Can `condition` hold on this path? (Undecided counts as no.)"""
+        verdict = self.ctx.discharge(VC(tuple(state.facts), A.Unary("not", condition)))
+        return isinstance(verdict, (Violated, Unproven))
+
+    def unbound_here(
+        self, state: State, when: A.Expr, name: str, site: ast.AST
+    ) -> bool:
+        """RF301 if `name` is unbound on some path to this read (`when` holds)."""
+        span, stmt = self.where(site)
+        once = ("uninit", span.line, name)
+        if self.ctx.already(once) or not self.possible(state, when):
+            return False
+        self.ctx.report(
+            messages.used_before_assignment(
+                self.path, span, stmt, name, False, some_paths=when != A.TRUE
+            ),
+            once=once,
+        )
+        state.assume(A.Unary("not", when))  # that path raised here
         return True
 
     def units_agree(
@@ -267,7 +305,7 @@ class Checker:
             stored = self.ctx.fresh(spec.kind, f"`{target}`", unit)
             for _, path, inv in invariants:
                 state.assume(A.substitute(inv.predicate, {path: stored.known_term}))
-        obj.fields[name] = replace(stored, default_of=None)
+        obj.fields[name] = replace(stored, default_of=None, unset=None)
         obj.reported.discard(name)
 
     def _field_declared(
@@ -329,6 +367,51 @@ class Checker:
             )
         )
         return True
+
+    def _unset_on_some_path(
+        self,
+        state: State,
+        spec: MsgSpec,
+        inv: Invariant,
+        value: Value,
+        site: ast.AST,
+        label: str,
+    ) -> None:
+        """RF302 for a field left unset on some path to a publish, where its
+        default breaks its refinement."""
+        unset = value.unset
+        assert unset is not None
+        owner_ref, fname = unset.owner
+        owner = state.heap.get(owner_ref)
+        if owner is None or fname in owner.reported:
+            return
+        path = next(iter(inv.paths))
+        goal = A.substitute(inv.predicate, {path: unset.default})
+        if not isinstance(self.ctx.discharge(VC((), goal)), Violated):
+            return
+        if not self.possible(state, unset.when):
+            return
+        span, stmt = self.where(site)
+        declared = Declared(
+            f"refinement of {spec.name}",
+            inv.origin.path,
+            inv.origin.line,
+            owner=spec.name,
+        )
+        self.ctx.report(
+            messages.unset_field(
+                self.path,
+                span,
+                stmt,
+                f"{label}.{path}",
+                A.show(unset.default),
+                inv.text,
+                declared,
+                True,
+                some_paths=True,
+            )
+        )
+        owner.reported.add(fname)
 
     def check_whole(
         self,
@@ -397,8 +480,12 @@ class Checker:
             ):
                 state.heap[owner_ref].reported.add(fname)
             return
-        if len(inv.paths) == 1 and not single:
-            return
+        if len(inv.paths) == 1:
+            value = next(iter(values.values()))
+            if value.unset is not None and publishing:
+                self._unset_on_some_path(state, spec, inv, value, site, label)
+            if not single:
+                return
         goal = A.substitute(inv.predicate, terms)  # type: ignore[arg-type]
         declared = Declared(
             f"refinement of {spec.name}",

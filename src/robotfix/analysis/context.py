@@ -66,6 +66,8 @@ class FileContext:
         self.diagnostics: list[Diagnostic] = []
         self.sym_names: dict[int, str | ast.AST] = {}  # text, or a node to quote
         self._next = 0
+        self._sub_ids: dict[tuple[int, str], int] = {}
+        self._derived: dict[tuple[object, ...], Value] = {}
         self.steps = 0
         self.index = FileIndex()
         self.imports: dict[str, str] = {}  # local name -> qualified name
@@ -83,6 +85,24 @@ class FileContext:
     def fresh_id(self) -> int:
         self._next += 1
         return self._next
+
+    def derived(
+        self, key: tuple[object, ...], kind: str, description: str | ast.AST
+    ) -> Value:
+        """An unknown value that is a function of `key` (`x is None` for one value
+        of x): the same symbol wherever it is asked for."""
+        found = self._derived.get(key)
+        if found is None:
+            found = self._derived[key] = self.fresh(kind, description)
+        return found
+
+    def sub_id(self, parent: int, name: str) -> int:
+        """The id of the sub-message in field `name` of message `parent`: the same on
+        every path, so that paths that each touched it join field by field."""
+        found = self._sub_ids.get((parent, name))
+        if found is None:
+            found = self._sub_ids[(parent, name)] = self.fresh_id()
+        return found
 
     def fresh(
         self, kind: str, description: str | ast.AST, unit: object = None
@@ -110,6 +130,9 @@ class FileContext:
             raise BudgetExceededError(getattr(node, "lineno", 1))
 
     # -- reporting -----------------------------------------------------------
+    def already(self, once: tuple[object, ...]) -> bool:
+        return once in self._reported
+
     def report(self, diag: Diagnostic, once: tuple[object, ...] | None = None) -> None:
         if once is not None:
             if once in self._reported:

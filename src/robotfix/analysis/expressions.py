@@ -36,6 +36,20 @@ COMPARE = {
 _DECIMAL = re.compile(r"[0-9_]*\.?[0-9_]*([eE][+-]?[0-9_]+)?")
 MATH_CONSTANTS = {"pi": math.pi, "e": math.e, "tau": math.tau}
 KIND_ORDER = ("bool", "int", "float")
+# Values that are never None.
+STATIC_VALUES = frozenset(
+    {
+        "module",
+        "msgclass",
+        "interface",
+        "function",
+        "class",
+        "method",
+        "builtin",
+        "instance",
+        "goal_handle",
+    }
+)
 
 
 class ExpressionEvaluator:
@@ -152,6 +166,11 @@ class ExpressionEvaluator:
             node.value, ast.Name
         ):
             return self.instance_attribute(base, node.value.id, node, state)
+        if base.kind == "unknown" and base.term is not None:
+            # `args.verbose` twice is one value, until something may change args
+            version = state.versions.get(base.term, 0)
+            key = ("attribute", base.term, node.attr, version)
+            return self.ctx.derived(key, "unknown", node)
         return self.unknown(node)
 
     def describe_field(self, state: State, ref: int, name: str) -> str:
@@ -377,6 +396,12 @@ class ExpressionEvaluator:
         ]
         parts: list[A.Expr] = []
         for op, left, right in zip(node.ops, operands, operands[1:], strict=False):
+            if isinstance(op, (ast.Is, ast.IsNot)):
+                fact = self._is_none(left, right, state)
+                if fact is None:
+                    return self.unknown(node, "bool")
+                parts.append(fact if isinstance(op, ast.Is) else A.Unary("not", fact))
+                continue
             name = COMPARE.get(type(op))
             if (name is not None and name not in ("==", "!=")) or (
                 left.is_number and right.is_number
@@ -384,8 +409,35 @@ class ExpressionEvaluator:
                 self.unit_of_sum(left, right, node, name or "==")
             if name is None or left.term is None or right.term is None:
                 return self.unknown(node, "bool")
+            if name in ("==", "!=") and _sorts_differ(left, right):
+                # `command == "slow"` of an unknown: the solver cannot compare
+                # them, but the same test of the same values is the same
+                key = ("==", left.term, right.term)
+                same = self.ctx.derived(key, "bool", node).known_term
+                parts.append(same if name == "==" else A.Unary("not", same))
+                continue
             parts.append(A.Binary(name, left.term, right.term))
         return Value("bool", A.conjoin(parts))
+
+    def _is_none(self, left: Value, right: Value, state: State) -> A.Expr | None:
+        """`x is None`: known for None and built messages, else the same unknown
+        for the same value of x (so that two tests of it agree)."""
+        if right.kind != "none":
+            left, right = right, left
+        if right.kind != "none":
+            return None
+        if left.kind == "none":
+            return A.TRUE
+        if left.kind == "msg" and left.ref is not None:
+            obj = state.heap.get(left.ref)
+            if obj is not None and obj.origin == "constructed":
+                return A.Bool(False)
+            return self.ctx.derived(("is None", left.ref), "bool", "`is None`").term
+        if left.term is not None:
+            return self.ctx.derived(("is None", left.term), "bool", "`is None`").term
+        if left.kind in STATIC_VALUES:
+            return A.Bool(False)
+        return None
 
     def eval_BoolOp(self, node: ast.BoolOp, state: State) -> Value:
         values = [self.eval(v, state) for v in node.values]
@@ -458,7 +510,15 @@ class ExpressionEvaluator:
             return A.Binary("!=", value.term, A.Str(""))
         if value.kind == "none":
             return A.Bool(False)
+        if value.term is not None:  # the same for the same value
+            return self.ctx.derived(("truthy", value.term), "bool", node).known_term
         return self.unknown(node, "bool").term  # type: ignore[return-value]
+
+
+def _sorts_differ(left: Value, right: Value) -> bool:
+    """An unknown (a real in the solver) against a str or a bool."""
+    kinds = {left.kind, right.kind}
+    return "unknown" in kinds and bool(kinds & {"str", "bool"})
 
 
 def constant_value(term: A.Expr | None) -> float | None:

@@ -32,11 +32,13 @@ def new_message(
     owner: tuple[int, str] | None = None,
     label: str = "the message",
     assume: bool = True,
+    stable: bool = False,
 ) -> Value:
     """A message; `label` names it in counterexamples (`request` in `request.a`).
     A received one satisfies its invariants (`assume=False` for a sub-message, whose
-    invariants the enclosing message's assumption already covers)."""
-    ref = ctx.fresh_id()
+    invariants the enclosing message's assumption already covers). A `stable`
+    sub-message, one that was there all along, has the same id on every path."""
+    ref = ctx.sub_id(*owner) if stable and owner else ctx.fresh_id()
     state.heap[ref] = MsgObj(msg_type, origin, owner=owner)
     if origin == "received" and assume:
         assume_invariants(ctx, state, ref, label)
@@ -113,7 +115,13 @@ def read_raw(
         return Value("unknown")
     if spec.kind == "msg" and not spec.array and spec.msg_type:
         sub = new_message(
-            ctx, state, spec.msg_type, obj.origin, owner=(ref, name), assume=False
+            ctx,
+            state,
+            spec.msg_type,
+            obj.origin,
+            owner=(ref, name),
+            assume=False,
+            stable=True,
         )
         obj.fields[name] = sub
         return sub

@@ -13,14 +13,15 @@ import ast
 import builtins
 from collections.abc import Callable
 from dataclasses import replace
+from fractions import Fraction
 
 from robotfix import messages
 from robotfix.analysis import heap
 from robotfix.analysis.calls import CallEvaluator
 from robotfix.analysis.context import FileContext, Scope, build_scope
 from robotfix.analysis.index import index_module
-from robotfix.analysis.program import Function, Program, collect
-from robotfix.analysis.state import MAYBE, State, join
+from robotfix.analysis.program import Function, Program, attribute_key, collect
+from robotfix.analysis.state import MAYBE, MaybeUnbound, State, join
 from robotfix.analysis.values import NONE, Uninit, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
@@ -110,6 +111,7 @@ class Interpreter(CallEvaluator):
         self.statics = statics
         self.function = function
         self.pending: list[tuple[ast.AST, Scope]] = []
+        self.guarded = 0  # inside a `try` body whose handlers catch NameError
 
     # -- blocks --------------------------------------------------------------
     def exec_block(self, body: list[ast.stmt], state: State) -> State:
@@ -134,13 +136,24 @@ class Interpreter(CallEvaluator):
             if isinstance(bound, Value):
                 return bound
             decl = scope.decls.get(name)
-            if bound is MAYBE:
+            if isinstance(bound, MaybeUnbound):
+                if (
+                    bound.when is not None
+                    and self._unbound_is_error(name)
+                    and self.check.unbound_here(state, bound.when, name, self.site)
+                ):
+                    state.env[name] = MAYBE  # one bug, one diagnostic
+                    return Value("unknown", uninit=Uninit(name, decl is not None))
                 return self.unknown(
                     node, decl.base if decl else "unknown", decl.unit if decl else None
                 )
             value = Value("unknown", uninit=Uninit(name, decl is not None))
             if decl is not None:
                 self.check.report_uninit(value, self.site)
+            elif self._unbound_is_error(name) and self.check.unbound_here(
+                state, A.TRUE, name, self.site
+            ):
+                state.env[name] = MAYBE
             return value
         outer = scope.parent
         while outer is not None and outer.parent is not None:
@@ -163,6 +176,18 @@ class Interpreter(CallEvaluator):
         if self.ctx.star_import or closure or name in module.global_names:
             return self.unknown(node)
         return Value("unknown", uninit=Uninit(name, False))
+
+    def _unbound_is_error(self, name: str) -> bool:
+        """Reading an unbound local raises, unless a handler of the enclosing `try`
+        catches NameError, or (outside functions) the name falls back to a builtin
+        or, in a class body, to a module name."""
+        if self.guarded:
+            return False
+        if self.scope.kind == "function":
+            return True
+        if name in BUILTINS:
+            return False
+        return self.scope.kind != "class" or name not in self.scope.module().local_names
 
     def _assumed_or_unknown(
         self, decl: Refinement | None, name: str, state: State, node: ast.AST
@@ -195,7 +220,9 @@ class Interpreter(CallEvaluator):
                 value = self.check.assign_refined(
                     state, target.id, decl, value, self.site, lookup
                 )
-            state.env[target.id] = replace(value, uninit=None, default_of=None)
+            state.env[target.id] = replace(
+                value, uninit=None, default_of=None, unset=None
+            )
         elif isinstance(target, ast.Attribute):
             base = self.eval(target.value, state)
             if base.kind == "instance" and isinstance(target.value, ast.Name):
@@ -212,6 +239,8 @@ class Interpreter(CallEvaluator):
                 self.check.write_field(
                     state, base.ref, target.attr, value, self.site, text
                 )
+            else:
+                state.changed(base)
         elif isinstance(target, (ast.Tuple, ast.List)):
             for element in target.elts:
                 inner = element.value if isinstance(element, ast.Starred) else element
@@ -232,7 +261,7 @@ class Interpreter(CallEvaluator):
             value = self.check.assign_refined(
                 state, key, decl, value, self.site, lookup
             )
-        state.env[key] = replace(value, uninit=None, default_of=None)
+        state.env[key] = replace(value, uninit=None, default_of=None, unset=None)
 
     def bind_parameters(self, state: State) -> None:
         """Parameters: `self`, messages that arrive at a callback, refined values."""
@@ -307,32 +336,54 @@ class Interpreter(CallEvaluator):
         )
 
     def havoc(self, state: State, nodes: list[ast.stmt]) -> None:
-        """Forget what `nodes` may write: assigned names and mentioned messages."""
+        """Forget what `nodes` may write: bound names and mentioned messages. A
+        name only ever set to constants of the kind it has keeps that kind (a flag
+        stays a bool), so that tests of it agree with what was set."""
+        bound_at: dict[str, ast.AST] = {}
+        constant: dict[str, set[str]] = {}
         for node in nodes:
             for child in walk(node):
-                if (
-                    isinstance(child, ast.Attribute)
-                    and isinstance(child.ctx, ast.Store)
-                    and isinstance(child.value, ast.Name)
-                ):
-                    state.env.pop(f"{child.value.id}.{child.attr}", None)
-                if not isinstance(child, ast.Name):
-                    continue
-                bound = state.env.get(child.id)
-                if isinstance(bound, Value) and bound.ref is not None:
-                    heap.havoc(state, bound.ref)
-                if (
-                    isinstance(child.ctx, ast.Store)
-                    and child.id in self.scope.local_names
-                ):
-                    decl = self.decl_for(child.id)
-                    if decl is not None:
-                        lookup = self.refinement_lookup(decl, state)
-                        state.env[child.id] = self.check.assumed(
-                            state, child.id, decl, lookup
-                        )
-                    else:
-                        state.env[child.id] = self.unknown(child)
+                if isinstance(child, ast.Attribute):
+                    if isinstance(child.ctx, ast.Store):
+                        state.env.pop(attribute_key(child) or "", None)
+                        self._changed_root(child, state)
+                elif isinstance(child, ast.Call):
+                    for arg in [child.func, *child.args, *child.keywords]:
+                        self._changed_root(arg, state)
+                elif isinstance(child, ast.Name):
+                    bound = state.env.get(child.id)
+                    if isinstance(bound, Value) and bound.ref is not None:
+                        heap.havoc(state, bound.ref)
+                    if not isinstance(child.ctx, ast.Load):
+                        bound_at.setdefault(child.id, child)
+                elif isinstance(child, (ast.Assign, ast.AugAssign)):
+                    _constant_stores(child, constant)
+                else:
+                    for name in _binds(child):
+                        bound_at.setdefault(name, child)
+        for name, child in bound_at.items():
+            if name not in self.scope.local_names:
+                continue
+            decl = self.decl_for(name)
+            before = state.env.get(name)
+            if decl is not None:
+                lookup = self.refinement_lookup(decl, state)
+                state.env[name] = self.check.assumed(state, name, decl, lookup)
+            elif isinstance(before, Value) and constant.get(name, {"?"}) <= _KEEPS.get(
+                before.kind, set()
+            ):
+                state.env[name] = self.unknown(child, before.kind, before.unit)
+            else:
+                state.env[name] = self.unknown(child)
+
+    def _changed_root(self, node: ast.AST, state: State) -> None:
+        """The object at the root of `x.a.b` (or a call's argument `x`) may change."""
+        while isinstance(node, (ast.Attribute, ast.keyword, ast.Starred)):
+            node = node.value
+        if isinstance(node, ast.Name):
+            bound = state.env.get(node.id)
+            if isinstance(bound, Value):
+                state.changed(bound)
 
     # -- simple statements ---------------------------------------------------
     def visit_Expr(self, node: ast.Expr, state: State) -> State:
@@ -449,7 +500,7 @@ class Interpreter(CallEvaluator):
     def visit_Delete(self, node: ast.Delete, state: State) -> State:
         for target in node.targets:
             if isinstance(target, ast.Name):
-                state.env.pop(target.id, None)
+                state.env[target.id] = MAYBE  # deleted: unknown, never an error
             else:
                 self.eval_children(target, state)
         return state
@@ -541,9 +592,10 @@ class Interpreter(CallEvaluator):
         else_state.assume(A.Unary("not", cond))
         then_state = self.exec_block(node.body, then_state)
         else_state = self.exec_block(node.orelse, else_state)
-        return join(then_state, else_state, self._merged)
+        return join(then_state, else_state, self)
 
-    def _merged(self, x: Value, y: Value) -> Value:
+    # The Joiner hooks (see state.join).
+    def merged(self, x: Value, y: Value) -> Value:
         kinds = {x.kind, y.kind}
         kind = (
             x.kind
@@ -560,24 +612,107 @@ class Interpreter(CallEvaluator):
         merged = self.ctx.fresh(kind, "a value set on several paths", unit)
         return replace(merged, literal=x.literal and y.literal)
 
+    def selector(self) -> A.Expr:
+        return self.ctx.fresh("bool", "the path taken").known_term
+
+    def complete(self, state: State, ref: int, name: str) -> Value:
+        return heap.read_raw(self.ctx, state, ref, name, f"`{name}`")
+
+    # -- loops ---------------------------------------------------------------
     def visit_While(self, node: ast.While, state: State) -> State:
-        self.havoc(state, [node])
-        body_state = state.fork()
+        entry = state
+        loop = entry.fork()
+        self.havoc(loop, [node])
+        body_state = loop.fork()
         body_state.assume(self.condition(node.test, body_state))
         self.exec_block(node.body, body_state)
-        self.havoc(state, [node])
-        return self.exec_block(node.orelse, state)
+        breaks = _breaks(node.body)
+        # Normal exits: the condition is false, after some iterations or none.
+        normal = loop.fork()
+        cond = self.condition(node.test, normal)
+        if _constant_true(cond):
+            normal.reachable = False
+        elif not breaks:  # (with a break, `normal` stands for those exits too)
+            normal.assume(A.Unary("not", cond))
+        if self._binds_new_names(node.body, entry):
+            zero = entry.fork()
+            cond = self.condition(node.test, zero)
+            zero.reachable = not _constant_true(cond)
+            zero.assume(A.Unary("not", cond))
+            normal = join(zero, normal, self)
+        return self._after_loop(node, normal, loop, breaks)
 
     def visit_For(self, node: ast.For | ast.AsyncFor, state: State) -> State:
-        self.eval(node.iter, state)
-        self.havoc(state, [node])
-        body_state = state.fork()
+        empty = self._empty_when(node.iter, state)
+        entry = state
+        loop = entry.fork()
+        self.havoc(loop, [node])
+        body_state = loop.fork()
         self.bind(node.target, self.unknown(node.target), body_state)
         self.exec_block(node.body, body_state)
-        self.havoc(state, [node])
-        return self.exec_block(node.orelse, state)
+        normal = loop.fork()
+        if (
+            empty is not None
+            and empty != A.Bool(False)
+            and self._binds_new_names(node.body, entry)
+        ):
+            zero = entry.fork()
+            zero.assume(empty)
+            for target in walk(node.target):
+                if isinstance(target, ast.Name) and target.id not in zero.env:
+                    zero.env[target.id] = MAYBE  # a loop variable: never an error
+            normal = join(zero, normal, self)
+        return self._after_loop(node, normal, loop, _breaks(node.body))
+
+    def _empty_when(self, iterable: ast.expr, state: State) -> A.Expr | None:
+        """Evaluate a `for` loop's iterable; when is it empty? Known for `range()`
+        of numbers and for literals; None for anything else (a list that arrived
+        is empty or not: no iteration is then not taken for a path)."""
+        call = iterable
+        if (
+            isinstance(call, ast.Call)
+            and isinstance(call.func, ast.Name)
+            and 1 <= len(call.args) <= 2
+            and not call.keywords
+            and not any(isinstance(a, ast.Starred) for a in call.args)
+            and self.eval(call.func, state) == Value("builtin", name="range")
+        ):
+            bounds = [self.eval(a, state) for a in call.args]
+            if len(bounds) == 1:
+                bounds.insert(0, Value("int", A.Num(Fraction(0), True)))
+            low, high = bounds
+            if {low.kind, high.kind} <= {"int", "unknown"} and low.term and high.term:
+                return A.Binary("<=", high.term, low.term)
+            return None
+        self.eval(iterable, state)
+        if isinstance(iterable, (ast.List, ast.Tuple, ast.Set, ast.Dict)):
+            return A.Bool(not _surely_nonempty(iterable))
+        return None
 
     visit_AsyncFor = visit_For
+
+    def _after_loop(
+        self,
+        node: ast.For | ast.AsyncFor | ast.While,
+        normal: State,
+        loop: State,
+        breaks: bool,
+    ) -> State:
+        """`else` runs on normal exits; a `break` leaves with what the body may have
+        changed (the havocked loop state)."""
+        if not node.orelse:
+            return normal  # it already stands for the exits by `break`
+        result = self.exec_block(node.orelse, normal)
+        return join(result, loop, self) if breaks else result
+
+    def _binds_new_names(self, body: list[ast.stmt], entry: State) -> bool:
+        """Do these statements bind a local that is unbound on entry? Only then can
+        skipping them (no iteration, an early exception) leave a name unbound."""
+        return any(
+            name in self.scope.local_names
+            and not isinstance(entry.env.get(name), Value)
+            for name in _stored_names(body)
+        )
 
     def visit_With(self, node: ast.With | ast.AsyncWith, state: State) -> State:
         for item in node.items:
@@ -590,23 +725,177 @@ class Interpreter(CallEvaluator):
 
     def visit_Try(self, node: ast.Try, state: State) -> State:
         entry = state.fork()
-        self.havoc(entry, node.body)
-        result = self.exec_block(node.orelse, self.exec_block(node.body, state))
+        raised = entry.fork()  # an exception somewhere in the body
+        self.havoc(raised, node.body)
+        if node.handlers and self._binds_new_names(node.body, entry):
+            raised = join(entry, raised, self)  # ... or before its first binding
+        guards = any(_catches_name_error(h.type) for h in node.handlers)
+        self.guarded += guards
+        state = self.exec_block(node.body, state)
+        self.guarded -= guards
+        result = self.exec_block(node.orelse, state)
         for handler in node.handlers:
-            handler_state = entry.fork()
-            if handler.type is not None:
+            handler_state = raised.fork()
+            if handler.type is not None:  # evaluated only if no earlier one matched
+                self.guarded += 1
                 self.eval(handler.type, handler_state)
+                self.guarded -= 1
             if handler.name:
                 handler_state.env[handler.name] = self.unknown(handler)
-            result = join(
-                result, self.exec_block(handler.body, handler_state), self._merged
-            )
+            result = join(result, self.exec_block(handler.body, handler_state), self)
         if node.finalbody:
             if not result.reachable:
-                self.havoc(entry, node.handlers)  # type: ignore[arg-type]
-                self.exec_block(node.finalbody, entry)
+                self.havoc(raised, node.handlers)  # type: ignore[arg-type]
+                self.exec_block(node.finalbody, raised)
                 return result
             result = self.exec_block(node.finalbody, result)
         return result
 
     visit_TryStar = visit_Try
+
+
+NAME_ERRORS = frozenset(
+    {"NameError", "UnboundLocalError", "Exception", "BaseException"}
+)
+
+
+def _catches_name_error(kind: ast.expr | None) -> bool:
+    if kind is None:
+        return True
+    if isinstance(kind, ast.Tuple):
+        return any(_catches_name_error(e) for e in kind.elts)
+    return isinstance(kind, ast.Name) and kind.id in NAME_ERRORS
+
+
+def _constant_true(cond: A.Expr) -> bool:
+    """`while True:`, or `while 1:` (`1 != 0`)."""
+    return cond == A.TRUE or (
+        isinstance(cond, A.Binary)
+        and cond.op == "!="
+        and isinstance(cond.left, A.Num)
+        and isinstance(cond.right, A.Num)
+        and cond.left.value != cond.right.value
+    )
+
+
+# Constant kinds a store may have and keep a variable's kind.
+_KEEPS = {
+    "bool": {"bool"},
+    "int": {"int"},
+    "float": {"int", "float"},
+    "str": {"str"},
+}
+
+
+def _constant_stores(
+    node: ast.Assign | ast.AugAssign, found: dict[str, set[str]]
+) -> None:
+    """The kind of constant each plain name target gets (`?` when not a constant)."""
+    value = node.value
+    kind = "?"
+    if isinstance(value, ast.Constant) and not isinstance(value.value, complex):
+        kind = {bool: "bool", int: "int", float: "float", str: "str"}.get(
+            type(value.value), "?"
+        )
+    if isinstance(node, ast.AugAssign) and kind == "str":
+        kind = "?"
+    targets = node.targets if isinstance(node, ast.Assign) else [node.target]
+    for target in targets:
+        if isinstance(target, ast.Name):
+            found.setdefault(target.id, set()).add(kind)
+        else:
+            for inner in walk(target):
+                if isinstance(inner, ast.Name):
+                    found.setdefault(inner.id, set()).add("?")
+
+
+BINDERS = (
+    ast.Import,
+    ast.ImportFrom,
+    ast.FunctionDef,
+    ast.AsyncFunctionDef,
+    ast.ClassDef,
+    ast.ExceptHandler,
+    ast.MatchAs,
+    ast.MatchStar,
+    ast.MatchMapping,
+)
+
+
+def _binds(node: ast.AST) -> list[str]:
+    """Names a node binds other than by an `ast.Name` target: imports, definitions,
+    exception and pattern names."""
+    if not isinstance(node, BINDERS):
+        return []
+    if isinstance(node, (ast.Import, ast.ImportFrom)):
+        return [a.asname or a.name.split(".")[0] for a in node.names if a.name != "*"]
+    name = node.rest if isinstance(node, ast.MatchMapping) else node.name
+    return [name] if name else []
+
+
+def _stored_names(nodes: list[ast.stmt]) -> set[str]:
+    """Every name these statements may bind."""
+    found: set[str] = set()
+    for node in nodes:
+        for child in walk(node):
+            if isinstance(child, ast.Name):
+                if not isinstance(child.ctx, ast.Load):
+                    found.add(child.id)
+            else:
+                found.update(_binds(child))
+    return found
+
+
+def _breaks(body: list[ast.stmt]) -> bool:
+    """Does a `break` in `body` leave this loop (not a nested one)?"""
+    todo: list[ast.AST] = list(body)
+    while todo:
+        node = todo.pop()
+        if isinstance(node, ast.Break):
+            return True
+        if isinstance(node, (ast.For, ast.AsyncFor, ast.While)):
+            todo.extend(node.orelse)
+        elif not isinstance(
+            node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.expr)
+        ):
+            todo.extend(ast.iter_child_nodes(node))
+    return False
+
+
+def _surely_nonempty(node: ast.expr) -> bool:
+    """An iterable that has an element on every path: a non-empty literal, or
+    `range`, `enumerate`, `reversed`... of one."""
+    if isinstance(node, (ast.List, ast.Tuple, ast.Set)):
+        return any(not isinstance(e, ast.Starred) for e in node.elts)
+    if isinstance(node, ast.Dict):
+        return any(k is not None for k in node.keys)
+    if isinstance(node, ast.Constant):
+        return isinstance(node.value, (str, bytes)) and len(node.value) > 0
+    if isinstance(node, ast.Call) and isinstance(node.func, ast.Name):
+        name, args = node.func.id, node.args
+        if node.keywords or any(isinstance(a, ast.Starred) for a in args):
+            return False
+        if name == "range" and 1 <= len(args) <= 2:
+            bounds = [_int_constant(a) for a in args]
+            if any(b is None for b in bounds):
+                return False
+            low, high = (0, bounds[0]) if len(bounds) == 1 else bounds
+            return low is not None and high is not None and low < high
+        if name in ("enumerate", "reversed", "sorted", "list", "tuple") and args:
+            return _surely_nonempty(args[0])
+        if name == "zip" and args:
+            return all(_surely_nonempty(a) for a in args)
+    return False
+
+
+def _int_constant(node: ast.expr) -> int | None:
+    if isinstance(node, ast.Constant) and type(node.value) is int:
+        return node.value
+    if (
+        isinstance(node, ast.UnaryOp)
+        and isinstance(node.op, ast.USub)
+        and isinstance(node.operand, ast.Constant)
+        and type(node.operand.value) is int
+    ):
+        return -node.operand.value
+    return None

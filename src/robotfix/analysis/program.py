@@ -70,6 +70,14 @@ class Program:
         return function.scope
 
 
+def attribute_key(node: ast.Attribute) -> str | None:
+    """`self.x` for `self.x`, `self.x.y` or `self.x.y.z`: the cached attribute a
+    store to (or a call on) that target may change."""
+    while isinstance(node.value, ast.Attribute):
+        node = node.value
+    return f"{node.value.id}.{node.attr}" if isinstance(node.value, ast.Name) else None
+
+
 def collect(ctx: FileContext, tree: ast.Module, module: Scope) -> Program:
     program = Program(module)
     for node in tree.body:

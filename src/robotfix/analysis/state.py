@@ -8,15 +8,20 @@ whose common prefix is shared, so a join only has to disjoin what the branches a
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
+from typing import Protocol
 
-from robotfix.analysis.values import MsgObj, Value
+from robotfix.analysis.values import MaybeDefault, MsgObj, Value
 from robotfix.annotations import ast as A
 
 
 @dataclass(frozen=True)
 class MaybeUnbound:
-    """A name bound on some paths only: reading it is unknown, not an error."""
+    """A name bound on some paths only. `when` is the condition, over the selectors
+    of the joins it went through, under which it is unbound; None when that is not
+    known (a `del`, a loop variable): reading it is then unknown, never an error."""
+
+    when: A.Expr | None = None
 
 
 MAYBE = MaybeUnbound()
@@ -29,6 +34,9 @@ class State:
     heap: dict[int, MsgObj] = field(default_factory=dict)
     facts: list[A.Expr] = field(default_factory=list)
     reachable: bool = True
+    # How often an unknown object (by its term) may have been changed on this path:
+    # its attributes read at one version are the same values.
+    versions: dict[A.Expr, int] = field(default_factory=dict)
 
     def fork(self) -> State:
         return State(
@@ -36,18 +44,38 @@ class State:
             {k: v.copy() for k, v in self.heap.items()},
             list(self.facts),
             self.reachable,
+            dict(self.versions),
         )
+
+    def changed(self, value: Value) -> None:
+        """Code may have changed this object: its attributes are read anew."""
+        if value.term is not None and value.kind == "unknown":
+            self.versions[value.term] = self.versions.get(value.term, 0) + 1
 
     def assume(self, fact: A.Expr | None) -> None:
         if fact is not None and fact != A.TRUE:
             self.facts.append(fact)
 
 
-def join(a: State, b: State, fresh: Callable[[Value, Value], Value]) -> State:
-    """Merge two paths; `fresh(x, y)` makes the value for a name they disagree on.
+class Joiner(Protocol):
+    def merged(self, x: Value, y: Value) -> Value:
+        """A fresh value for two that differ (tied to each by a fact)."""
 
-    The merged value `s` is tied to each side by a fact (`s == x` on the first path,
-    `s == y` on the second) inside the disjunction of what the paths assumed.
+    def selector(self) -> A.Expr:
+        """A fresh boolean: true on the first path of a join, false on the second."""
+
+    def complete(self, state: State, ref: int, name: str) -> Value:
+        """What `state` holds in field `name` of message `ref`, which it never
+        touched (its default, an unknown, or the sub-message of the same id)."""
+
+
+def join(a: State, b: State, joiner: Joiner) -> State:
+    """Merge two paths.
+
+    A merged value `s` is tied to each side by a fact (`s == x` on the first path,
+    `s == y` on the second) inside the disjunction of what the paths assumed. Where
+    the paths differ in what is bound or set, a selector `p` names the first path,
+    so that "unbound when not p" can be asked later under the facts of a read.
     """
     if not a.reachable:
         return b
@@ -55,46 +83,133 @@ def join(a: State, b: State, fresh: Callable[[Value, Value], Value]) -> State:
         return a
     extra_a: list[A.Expr] = []
     extra_b: list[A.Expr] = []
+    chosen: list[A.Expr] = []
+
+    def selector() -> A.Expr:
+        if not chosen:
+            chosen.append(joiner.selector())
+        return chosen[0]
 
     def merge(x: Value, y: Value) -> Value:
-        if x == y:
+        ux, uy = _unset(x), _unset(y)
+        if x == y and ux == uy:
             return x
-        value = fresh(x, y)
-        if value.term is not None and x.term is not None and y.term is not None:
-            extra_a.append(A.Binary("==", value.term, x.term))
-            extra_b.append(A.Binary("==", value.term, y.term))
+        value = x
+        if x != y:
+            value = joiner.merged(x, y)
+            if value.term is not None and x.term is not None and y.term is not None:
+                extra_a.append(A.Binary("==", value.term, x.term))
+                extra_b.append(A.Binary("==", value.term, y.term))
+        known = ux or uy
+        if known is not None:
+            when = _either(
+                selector(),
+                None if ux is None else ux.when,
+                None if uy is None else uy.when,
+            )
+            unset = MaybeDefault(when, known.default, known.owner)
+            value = replace(value, default_of=None, unset=unset)
         return value
 
     env: dict[str, Binding] = {}
     for name in sorted(a.env.keys() | b.env.keys()):
-        x, y = a.env.get(name, MAYBE), b.env.get(name, MAYBE)
-        both = isinstance(x, Value) and isinstance(y, Value)
-        env[name] = merge(x, y) if both else (x if x == y else MAYBE)  # type: ignore[arg-type]
+        x, y = a.env.get(name), b.env.get(name)
+        if isinstance(x, Value) and isinstance(y, Value):
+            env[name] = merge(x, y)
+        elif x == y:
+            env[name] = x  # type: ignore[assignment]
+        elif "." in name:  # a cached `self.x`: read again
+            env[name] = MAYBE
+        else:
+            (known_a, wa), (known_b, wb) = _unbound(x), _unbound(y)
+            known = known_a and known_b
+            env[name] = MaybeUnbound(_either(selector(), wa, wb) if known else None)
+    heap = _join_heaps(a, b, joiner, merge)
+    rest_a = extra_a
+    rest_b = extra_b
+    if chosen:
+        rest_a = [chosen[0], *extra_a]
+        rest_b = [A.Unary("not", chosen[0]), *extra_b]
+    facts = _join_facts(a.facts + rest_a, b.facts + rest_b)
+    versions = dict(a.versions)
+    for term, version in b.versions.items():
+        if versions.get(term, 0) != version:
+            versions[term] = max(versions.get(term, 0), version) + 1
+    return State(env, heap, facts, True, versions)
+
+
+def _join_heaps(
+    a: State, b: State, joiner: Joiner, merge: Callable[[Value, Value], Value]
+) -> dict[int, MsgObj]:
+    # A field one path touched and the other did not: the other reads it now.
+    done: set[int] = set()
+    while True:
+        todo = sorted((a.heap.keys() & b.heap.keys()) - done)
+        if not todo:
+            break
+        for ref in todo:
+            done.add(ref)
+            x_obj, y_obj = a.heap[ref], b.heap[ref]
+            for fname in sorted(x_obj.fields.keys() - y_obj.fields.keys()):
+                if x_obj.fields[fname].ref is not None:
+                    joiner.complete(b, ref, fname)
+            for fname in sorted(y_obj.fields.keys() - x_obj.fields.keys()):
+                if y_obj.fields[fname].ref is not None:
+                    joiner.complete(a, ref, fname)
     heap: dict[int, MsgObj] = {}
     for ref in sorted(a.heap.keys() | b.heap.keys()):
-        x_obj, y_obj = a.heap.get(ref), b.heap.get(ref)
-        if x_obj is None or y_obj is None:
-            heap[ref] = (x_obj or y_obj).copy()  # type: ignore[union-attr]
+        if ref not in a.heap or ref not in b.heap:
+            heap[ref] = (a.heap.get(ref) or b.heap[ref]).copy()
             continue
+        x_obj, y_obj = a.heap[ref], b.heap[ref]
         origin = x_obj.origin if x_obj.origin == y_obj.origin else "unknown"
         merged = MsgObj(
             x_obj.type,
             origin,
             owner=x_obj.owner,
             reported=x_obj.reported | y_obj.reported,
+            extra=x_obj.extra + tuple(e for e in y_obj.extra if e not in x_obj.extra),
         )
         for fname in sorted(x_obj.fields.keys() | y_obj.fields.keys()):
             fx, fy = x_obj.fields.get(fname), y_obj.fields.get(fname)
-            if fx is not None and fy is not None:
-                merged.fields[fname] = merge(fx, fy)
-            else:  # set on one path only: neither its value nor its default is sure
-                only = fx or fy
-                assert only is not None
-                merged.fields[fname] = fresh(only, only)
-                merged.reported.add(fname)
+            if fx is None:  # never read on that path, so nothing ties the two
+                fx = joiner.complete(a, ref, fname)
+            if fy is None:
+                fy = joiner.complete(b, ref, fname)
+            merged.fields[fname] = merge(fx, fy)
         heap[ref] = merged
-    facts = _join_facts(a.facts + extra_a, b.facts + extra_b)
-    return State(env, heap, facts, True)
+    return heap
+
+
+def _unset(value: Value) -> MaybeDefault | None:
+    """When a field value is still its ROS default (None: never)."""
+    if value.default_of is not None and value.term is not None:
+        return MaybeDefault(A.TRUE, value.term, value.default_of)
+    return value.unset
+
+
+def _unbound(binding: Binding | None) -> tuple[bool, A.Expr | None]:
+    """Whether it is known when a binding is unbound, and when: never (None), always
+    (TRUE, an absent name), or under a condition."""
+    if binding is None:
+        return True, A.TRUE
+    if isinstance(binding, MaybeUnbound):
+        return binding.when is not None, binding.when
+    return True, None
+
+
+def _either(p: A.Expr, on_a: A.Expr | None, on_b: A.Expr | None) -> A.Expr:
+    """`on_a` on the path where `p` holds, `on_b` on the other (None: false)."""
+    parts = []
+    if on_a is not None:
+        parts.append(p if on_a == A.TRUE else A.Binary("and", p, on_a))
+    if on_b is not None:
+        not_p = A.Unary("not", p)
+        parts.append(not_p if on_b == A.TRUE else A.Binary("and", not_p, on_b))
+    result = parts[0]
+    for part in parts[1:]:
+        result = A.Binary("or", result, part)
+    return result
 
 
 def _join_facts(a: list[A.Expr], b: list[A.Expr]) -> list[A.Expr]:

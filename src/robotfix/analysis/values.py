@@ -24,6 +24,16 @@ class Uninit:
 
 
 @dataclass(frozen=True)
+class MaybeDefault:
+    """A message field set on some paths only: on the paths where `when` holds (a
+    condition over join selectors) it still has its ROS default."""
+
+    when: A.Expr
+    default: A.Expr
+    owner: tuple[int, str]  # (message ref, field name)
+
+
+@dataclass(frozen=True)
 class Value:
     kind: str  # int float bool str msg msgclass module none unknown
     term: A.Expr | None = None  # the solver term, for int/float/bool/str
@@ -36,6 +46,7 @@ class Value:
     # unit: `speed / 3.6` is km/h scaled by 1/3.6, which is a conversion to m/s.
     scale: float = 1.0
     default_of: tuple[int, str] | None = field(default=None, compare=False)
+    unset: MaybeDefault | None = field(default=None, compare=False)
 
     @property
     def known_term(self) -> A.Expr:
@@ -73,6 +84,19 @@ def sort_of(kind: str) -> str:
     return {"int": "int", "bool": "bool", "str": "str"}.get(kind, "real")
 
 
+@dataclass(frozen=True)
+class ObjInvariant:
+    """A refinement on one message value, from an annotation such as
+    `Annotated[Twist, "abs(linear.x) <= 0.22"]`: paths are relative to the value."""
+
+    predicate: A.Expr
+    paths: frozenset[str]
+    text: str
+    what: str  # "annotation of `cmd`"
+    path: str
+    line: int
+
+
 @dataclass
 class MsgObj:
     """A message instance. `fields` holds what was set (or, if received, read)."""
@@ -82,8 +106,14 @@ class MsgObj:
     fields: dict[str, Value] = field(default_factory=dict)
     owner: tuple[int, str] | None = None  # (parent ref, field name)
     reported: set[str] = field(default_factory=set)  # unset fields already reported
+    extra: tuple[ObjInvariant, ...] = ()  # refinements of the variables it reached
 
     def copy(self) -> MsgObj:
         return MsgObj(
-            self.type, self.origin, dict(self.fields), self.owner, set(self.reported)
+            self.type,
+            self.origin,
+            dict(self.fields),
+            self.owner,
+            set(self.reported),
+            self.extra,
         )
