@@ -172,7 +172,9 @@ class CallEvaluator(ExpressionEvaluator):
             decl = scope.decls.get(name)
             if decl is not None:
                 lookup = {**self._fresh_names(decl), **terms}
-                self.check.assign_refined(state, name, decl, value, self.site, lookup)
+                self.check.assign_refined(
+                    state, name, decl, value, self.site, lookup, leaving=True
+                )
         if function.returns is None:
             return self.unknown(node)
         lookup = {**self._fresh_names(function.returns), **terms}

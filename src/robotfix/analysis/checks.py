@@ -8,12 +8,13 @@ from __future__ import annotations
 
 import ast
 from dataclasses import replace
+from typing import NamedTuple
 
 from robotfix import messages
 from robotfix.analysis import heap
 from robotfix.analysis.context import FileContext
 from robotfix.analysis.state import State
-from robotfix.analysis.values import Value
+from robotfix.analysis.values import ObjInvariant, Value
 from robotfix.analysis.vc import VC, Proved, Undecided, Unproven, Violated
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
@@ -202,10 +203,15 @@ class Checker:
         value: Value,
         site: ast.AST,
         lookup: dict[str, A.Expr],
+        leaving: bool = False,
     ) -> Value:
-        """Check `name = value` against its refinement; return what `name` holds."""
+        """Check `name = value` against its refinement; return what `name` holds.
+        (`leaving`: an argument, whose unset message fields count too.)"""
         declared = Declared(f"annotation of `{name}`", self.path, decl.line)
         if value.kind == "msg":
+            if decl.base == "msg" and value.ref is not None:
+                rules = self.message_rules(decl, name, lookup)
+                self.reach(state, value.ref, rules, site, name, leaving)
             return value
         if self.report_uninit(value, site):
             return self.assumed(state, name, decl, lookup)
@@ -231,6 +237,14 @@ class Checker:
         self, state: State, name: str, decl: Refinement, lookup: dict[str, A.Expr]
     ) -> Value:
         """A fresh value of `name` that satisfies its refinement."""
+        if decl.base == "msg" and decl.msg_type is not None:
+            message = heap.new_message(
+                self.ctx, state, decl.msg_type, "received", label=name
+            )
+            assert message.ref is not None
+            rules = self.message_rules(decl, name, lookup)
+            self.assume_rules(state, message.ref, rules, name)
+            return message
         value = self.ctx.fresh(decl.base, f"`{name}`", decl.unit)
         if value.term is not None:
             state.assume(A.substitute(decl.predicate, {**lookup, "_": value.term}))
@@ -242,6 +256,28 @@ class Checker:
         return value
 
     # -- message fields ------------------------------------------------------
+    def rules_on(
+        self, state: State, ref: int, name: str
+    ) -> list[tuple[FieldRule, str]]:
+        """Refinements that mention only field `name` of `ref` (and what lies below
+        it), with the path of the field relative to where each was declared."""
+        found = [
+            (_catalog_rule(spec, inv), path)
+            for spec, path, inv in heap.invariants_on(self.ctx, state, ref, name)
+        ]
+        found += [
+            (_object_rule(inv), path) for inv, path in heap.extras_on(state, ref, name)
+        ]
+        return found
+
+    def rules_of(self, state: State, ref: int) -> list[FieldRule]:
+        """Every refinement declared on message `ref` itself: its type's and those
+        of the variables it reached."""
+        obj = state.heap[ref]
+        spec = self.ctx.catalog.lookup(obj.type)
+        found = [_catalog_rule(spec, inv) for inv in spec.invariants] if spec else []
+        return found + [_object_rule(inv) for inv in obj.extra]
+
     def write_field(
         self,
         state: State,
@@ -257,17 +293,21 @@ class Checker:
             obj.fields[name] = value
             return
         unit, unit_decl, owner = heap.field_unit(self.ctx, state, ref, name)
-        invariants = heap.invariants_on(self.ctx, state, ref, name)
-        refined = unit is not None or bool(invariants)
+        rules = self.rules_on(state, ref, name)
+        refined = unit is not None or bool(rules)
         if refined and self.report_uninit(value, site):
             obj.fields[name] = self.ctx.fresh(spec.kind, target, unit)
             obj.reported.discard(name)
             return
         if spec.kind == "msg":
-            if value.ref is not None and value.ref in state.heap:
-                state.heap[value.ref].owner = (ref, name)
-                obj.fields[name] = value
-                self.check_whole(state, value.ref, site, publishing=False, single=True)
+            sub = state.heap.get(value.ref) if value.ref is not None else None
+            if (
+                sub is not None
+                and not spec.array
+                and sub.type == spec.msg_type
+                and value.ref not in {r for r, _ in heap.chain(state, ref, name)}
+            ):
+                self.adopt(state, ref, name, value, site, target)
             else:
                 obj.fields[name] = heap.new_message(
                     self.ctx, state, spec.msg_type or "", "unknown", owner=(ref, name)
@@ -281,21 +321,21 @@ class Checker:
         if stored.term is None:
             stored = self.ctx.fresh(spec.kind, f"`{target}`", unit)
         warned = False
-        for owner_spec, path, inv in invariants:
+        for rule, path in rules:
             if not ok:
                 break
-            goal = A.substitute(inv.predicate, {path: stored.known_term})
+            goal = A.substitute(rule.predicate, {path: stored.known_term})
             if warned:  # one report per statement; the rest is assumed
                 state.assume(goal)
                 continue
-            declared = Declared(
-                f"refinement of {owner_spec.name}",
-                inv.origin.path,
-                inv.origin.line,
-                owner=owner_spec.name,
-            )
             outcome = self.goal_holds(
-                state, goal, stored.term, site, inv.text, f"`{target}`", declared
+                state,
+                goal,
+                stored.term,
+                site,
+                rule.text,
+                f"`{target}`",
+                rule.declared,
             )
             ok = outcome != FAILED
             warned = outcome == WARNED
@@ -303,10 +343,62 @@ class Checker:
                 state.assume(goal)
         if not ok:
             stored = self.ctx.fresh(spec.kind, f"`{target}`", unit)
-            for _, path, inv in invariants:
-                state.assume(A.substitute(inv.predicate, {path: stored.known_term}))
+            for rule, path in rules:
+                state.assume(A.substitute(rule.predicate, {path: stored.known_term}))
         obj.fields[name] = replace(stored, default_of=None, unset=None)
         obj.reported.discard(name)
+
+    def adopt(
+        self,
+        state: State,
+        ref: int,
+        name: str,
+        value: Value,
+        site: ast.AST,
+        target: str,
+    ) -> None:
+        """A message stored into field `name` of `ref` (`cmd.linear = Vector3(...)`,
+        `odom.header = msg.header`, a nested constructor): what it holds must fit
+        the units and refinements of its new place, exactly as if it had been
+        written there field by field. (A field it leaves at its default is
+        checked when the message is sent, as any unset field.)"""
+        sub_ref = value.ref
+        assert sub_ref is not None
+        held: dict[str, Value] = {}
+        for path in sorted(heap.below(self.ctx, state, ref, name)):
+            found = heap.resolve_path(
+                self.ctx, state, sub_ref, path, f"{target}.{path}"
+            )
+            if found.default_of is None and found.unset is None and found.ref is None:
+                held[path] = found
+        state.heap[sub_ref].owner = (ref, name)
+        state.heap[ref].fields[name] = value
+        reported = len(self.ctx.diagnostics)
+        for path, found in held.items():
+            inner, _, leaf = path.rpartition(".")
+            holder = (
+                heap.resolve_path(self.ctx, state, sub_ref, inner, target)
+                if inner
+                else value
+            )
+            if holder.ref is None or holder.ref not in state.heap:
+                continue
+            # one statement, one diagnostic: `cmd.linear = odom...angular` is one
+            # unit mix-up, not one per axis
+            muted = len(self.ctx.diagnostics) > reported
+            self.ctx.muted += muted
+            self.write_field(state, holder.ref, leaf, found, site, f"{target}.{path}")
+            self.ctx.muted -= muted
+        for owner_ref, path in heap.chain(state, ref, name):
+            label = target[: -len(path) - 1] if target.endswith("." + path) else ""
+            for rule in self.rules_of(state, owner_ref):
+                if len(rule.paths) > 1 and all(
+                    p.startswith(path + ".") for p in rule.paths
+                ):
+                    self._check_invariant(
+                        state, owner_ref, rule, site, label or target, False, True
+                    )
+        self.check_whole(state, sub_ref, site, publishing=False, single=True)
 
     def _field_declared(
         self, owner: MsgSpec, name: str, unit_decl: FieldUnit
@@ -324,36 +416,27 @@ class Checker:
         value = heap.read_raw(self.ctx, state, ref, name, target)
         if value.default_of is None:
             return value
-        for spec, path, inv in heap.invariants_on(self.ctx, state, ref, name):
-            if inv.paths == {path} and value.term is not None:
-                self._default_breaks(
-                    state, spec, inv, path, value.term, site, target, False
-                )
+        for rule, path in self.rules_on(state, ref, name):
+            if rule.paths == {path} and value.term is not None:
+                self._default_breaks(rule, path, value.term, site, target, False)
         state.heap[ref].reported.add(name)
         return value
 
     def _default_breaks(
         self,
-        state: State,
-        spec: MsgSpec,
-        inv: Invariant,
+        rule: FieldRule,
         path: str,
         default: A.Expr,
         site: ast.AST,
         target: str,
         publishing: bool,
+        some_paths: bool = False,
     ) -> bool:
-        goal = A.substitute(inv.predicate, {path: default})
+        goal = A.substitute(rule.predicate, {path: default})
         verdict = self.ctx.discharge(VC((), goal))
         if not isinstance(verdict, Violated):
             return False
         span, stmt = self.where(site)
-        declared = Declared(
-            f"refinement of {spec.name}",
-            inv.origin.path,
-            inv.origin.line,
-            owner=spec.name,
-        )
         self.ctx.report(
             messages.unset_field(
                 self.path,
@@ -361,21 +444,16 @@ class Checker:
                 stmt,
                 target,
                 A.show(default),
-                inv.text,
-                declared,
+                rule.text,
+                rule.declared,
                 publishing,
+                some_paths=some_paths,
             )
         )
         return True
 
     def _unset_on_some_path(
-        self,
-        state: State,
-        spec: MsgSpec,
-        inv: Invariant,
-        value: Value,
-        site: ast.AST,
-        label: str,
+        self, state: State, rule: FieldRule, value: Value, site: ast.AST, label: str
     ) -> None:
         """RF302 for a field left unset on some path to a publish, where its
         default breaks its refinement."""
@@ -385,31 +463,14 @@ class Checker:
         owner = state.heap.get(owner_ref)
         if owner is None or fname in owner.reported:
             return
-        path = next(iter(inv.paths))
-        goal = A.substitute(inv.predicate, {path: unset.default})
+        path = next(iter(rule.paths))
+        goal = A.substitute(rule.predicate, {path: unset.default})
         if not isinstance(self.ctx.discharge(VC((), goal)), Violated):
             return
         if not self.possible(state, unset.when):
             return
-        span, stmt = self.where(site)
-        declared = Declared(
-            f"refinement of {spec.name}",
-            inv.origin.path,
-            inv.origin.line,
-            owner=spec.name,
-        )
-        self.ctx.report(
-            messages.unset_field(
-                self.path,
-                span,
-                stmt,
-                f"{label}.{path}",
-                A.show(unset.default),
-                inv.text,
-                declared,
-                True,
-                some_paths=True,
-            )
+        self._default_breaks(
+            rule, path, unset.default, site, f"{label}.{path}", True, some_paths=True
         )
         owner.reported.add(fname)
 
@@ -430,10 +491,8 @@ class Checker:
         if obj is None or spec is None:
             return
         label = prefix or self._name_of(site)
-        for inv in spec.invariants:
-            self._check_invariant(
-                state, ref, spec, inv, site, label, publishing, single
-            )
+        for rule in self.rules_of(state, ref):
+            self._check_invariant(state, ref, rule, site, label, publishing, single)
         for fname, fs in spec.fields.items():
             if fs.kind == "msg" and not fs.array:
                 sub = heap.read_raw(self.ctx, state, ref, fname, f"{label}.{fname}")
@@ -446,16 +505,16 @@ class Checker:
         self,
         state: State,
         ref: int,
-        spec: MsgSpec,
-        inv: Invariant,
+        rule: FieldRule,
         site: ast.AST,
         label: str,
         publishing: bool,
         single: bool,
+        defaults: bool = True,
     ) -> None:
         values = {
             p: heap.resolve_path(self.ctx, state, ref, p, label)
-            for p in sorted(inv.paths)
+            for p in sorted(rule.paths)
         }
         if any(v.term is None for v in values.values()):
             return
@@ -466,34 +525,90 @@ class Checker:
             default = terms[path]
             assert default is not None
             owner_ref, fname = values[path].default_of  # type: ignore[misc]
-            if fname in state.heap[owner_ref].reported:
+            if not defaults or fname in state.heap[owner_ref].reported:
                 return
             if self._default_breaks(
-                state,
-                spec,
-                inv,
-                path,
-                default,
-                site,
-                f"{label}.{path}",
-                publishing,
+                rule, path, default, site, f"{label}.{path}", publishing
             ):
                 state.heap[owner_ref].reported.add(fname)
             return
-        if len(inv.paths) == 1:
+        if len(rule.paths) == 1:
             value = next(iter(values.values()))
             if value.unset is not None and publishing:
-                self._unset_on_some_path(state, spec, inv, value, site, label)
+                self._unset_on_some_path(state, rule, value, site, label)
             if not single:
                 return
-        goal = A.substitute(inv.predicate, terms)  # type: ignore[arg-type]
-        declared = Declared(
-            f"refinement of {spec.name}",
-            inv.origin.path,
-            inv.origin.line,
-            owner=spec.name,
-        )
-        self.goal_holds(state, goal, None, site, inv.text, label, declared)
+        goal = A.substitute(rule.predicate, terms)  # type: ignore[arg-type]
+        self.goal_holds(state, goal, None, site, rule.text, label, rule.declared)
+
+    # -- refinements on message values ----------------------------------------
+    def message_rules(
+        self, decl: Refinement, name: str, lookup: dict[str, A.Expr]
+    ) -> tuple[ObjInvariant, ...]:
+        """`Annotated[Twist, "abs(linear.x) <= limit"]` as invariants of the value:
+        field paths stay names, other names become their current terms."""
+        if decl.msg_type is None:
+            return ()
+        found = []
+        for part in A.conjuncts(decl.predicate):
+            paths = {
+                n.name
+                for n in A.names(part)
+                if self.ctx.catalog.field_at(decl.msg_type, n.name) is not None
+            }
+            if not paths:
+                continue
+            others = {k: v for k, v in lookup.items() if k not in paths}
+            found.append(
+                ObjInvariant(
+                    A.substitute(part, others),
+                    frozenset(paths),
+                    A.show(part),
+                    f"annotation of `{name}`",
+                    self.path,
+                    decl.line,
+                )
+            )
+        return tuple(found)
+
+    def reach(
+        self,
+        state: State,
+        ref: int,
+        rules: tuple[ObjInvariant, ...],
+        site: ast.AST,
+        label: str,
+        leaving: bool,
+    ) -> None:
+        """A message reaches a variable, parameter or attribute refined with
+        `Annotated[Msg, "..."]`: what it holds must satisfy the refinement now
+        (and, when it leaves as an argument, its unset fields too); from here on
+        it keeps that refinement, checked at every field write and when sent."""
+        obj = state.heap.get(ref)
+        if obj is None or not rules:
+            return
+        for inv in rules:
+            self._check_invariant(
+                state, ref, _object_rule(inv), site, label, leaving, True, leaving
+            )
+        obj.extra += tuple(inv for inv in rules if inv not in obj.extra)
+
+    def assume_rules(
+        self, state: State, ref: int, rules: tuple[ObjInvariant, ...], label: str
+    ) -> None:
+        """A refined message that is read (a parameter, an attribute): its
+        refinement holds, and keeps holding."""
+        obj = state.heap.get(ref)
+        if obj is None:
+            return
+        for inv in rules:
+            values = {
+                p: heap.resolve_path(self.ctx, state, ref, p, label) for p in inv.paths
+            }
+            if all(v.term is not None for v in values.values()):
+                terms = {p: v.known_term for p, v in values.items()}
+                state.assume(A.substitute(inv.predicate, terms))
+        obj.extra += tuple(inv for inv in rules if inv not in obj.extra)
 
     def _name_of(self, site: ast.AST) -> str:
         if (
@@ -503,3 +618,28 @@ class Checker:
         ):
             return self.ctx.source.segment(site.value.args[0]) or "the message"
         return "the message"
+
+
+class FieldRule(NamedTuple):
+    """A refinement over message fields, wherever it was declared."""
+
+    predicate: A.Expr  # names are field paths relative to where it was declared
+    paths: frozenset[str]
+    text: str
+    declared: Declared
+
+
+def _catalog_rule(spec: MsgSpec, inv: Invariant) -> FieldRule:
+    declared = Declared(
+        f"refinement of {spec.name}",
+        inv.origin.path,
+        inv.origin.line,
+        owner=spec.name,
+    )
+    return FieldRule(inv.predicate, inv.paths, inv.text, declared)
+
+
+def _object_rule(inv: ObjInvariant) -> FieldRule:
+    return FieldRule(
+        inv.predicate, inv.paths, inv.text, Declared(inv.what, inv.path, inv.line)
+    )

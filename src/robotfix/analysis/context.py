@@ -73,6 +73,7 @@ class FileContext:
         self.imports: dict[str, str] = {}  # local name -> qualified name
         self.star_import = False
         self._reported: set[tuple[object, ...]] = set()
+        self.muted = 0  # > 0: checks go on, their reports are dropped
         # (span, markdown) for names and fields, kept only for editor hovers
         self.hovers: list[tuple[Span, str]] | None = None
         # (scope node id, variable) -> (units it flows into, target base kinds), for
@@ -134,6 +135,8 @@ class FileContext:
         return once in self._reported
 
     def report(self, diag: Diagnostic, once: tuple[object, ...] | None = None) -> None:
+        if self.muted:
+            return
         if once is not None:
             if once in self._reported:
                 return
@@ -218,6 +221,7 @@ class FileContext:
             self.source.segment,
             self.source.char_col,
             known,
+            self._field_kind,
         )
         for problem in problems:
             self.report(
@@ -231,6 +235,10 @@ class FileContext:
                 once=("annotation", problem.line, problem.col, problem.message),
             )
         return found
+
+    def _field_kind(self, msg_type: str, path: str) -> str | None:
+        found = self.catalog.field_at(msg_type, path)
+        return None if found is None else ("msg" if found.kind == "msg" else "value")
 
 
 def build_scope(

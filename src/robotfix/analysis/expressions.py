@@ -224,13 +224,22 @@ class ExpressionEvaluator:
             )
         else:
             decl = self.program.attributes.get(base.name, {}).get(node.attr)
-            value = (
-                self.unknown(node)
-                if decl is None
-                else self.check.assumed(
-                    state, key, decl, self.refinement_lookup(decl, state)
-                )
+            msg_type = (
+                self.program.message_attribute(base.name, node.attr)
+                if base.kind == "instance" and decl is None
+                else None
             )
+            if decl is not None:
+                lookup = self.refinement_lookup(decl, state)
+                value = self.check.assumed(state, key, decl, lookup)
+            elif msg_type is not None:
+                # a message kept on self: its fields are unknown but refined, as
+                # any attribute is in a method that did not set it
+                value = heap.new_message(
+                    self.ctx, state, msg_type, "received", label=key
+                )
+            else:
+                value = self.unknown(node)
         state.env[key] = value
         return value
 

@@ -11,7 +11,7 @@ from fractions import Fraction
 
 from robotfix.analysis.context import FileContext
 from robotfix.analysis.state import State
-from robotfix.analysis.values import MsgObj, Value
+from robotfix.analysis.values import MsgObj, ObjInvariant, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.units import Unit, UnitError, label, resolve
 from robotfix.ros.catalog import FieldSpec, FieldUnit, Invariant, MsgSpec
@@ -45,24 +45,60 @@ def new_message(
     return Value("msg", ref=ref, name=msg_type)
 
 
+def chain(state: State, ref: int, name: str) -> list[tuple[int, str]]:
+    """(message ref, path of field `name` relative to it) for `ref` and each message
+    that holds it, outermost first."""
+    out: list[tuple[int, str]] = []
+    path = name
+    current: int | None = ref
+    while current is not None and current in state.heap and len(out) < 32:
+        out.append((current, path))
+        owner = state.heap[current].owner
+        if owner is None:
+            break
+        current, path = owner[0], f"{owner[1]}.{path}"
+    out.reverse()
+    return out
+
+
 def contexts(
     ctx: FileContext, state: State, ref: int, name: str
 ) -> list[tuple[MsgSpec, str]]:
     """(message spec, path relative to it) for field `name` of `ref`, outermost
     first."""
     out: list[tuple[MsgSpec, str]] = []
-    path = name
-    current: int | None = ref
-    while current is not None and current in state.heap:
-        obj = state.heap[current]
-        spec = ctx.catalog.lookup(obj.type)
+    for current, path in chain(state, ref, name):
+        spec = ctx.catalog.lookup(state.heap[current].type)
         if spec is not None:
             out.append((spec, path))
-        if obj.owner is None:
-            break
-        current, path = obj.owner[0], f"{obj.owner[1]}.{path}"
-    out.reverse()
     return out
+
+
+def extras_on(state: State, ref: int, name: str) -> list[tuple[ObjInvariant, str]]:
+    """Refinements of variables that a message reached (`Annotated[Twist, ...]`)
+    that mention only field `name` of `ref` (and what lies below it)."""
+    found = []
+    for current, path in chain(state, ref, name):
+        for inv in state.heap[current].extra:
+            if all(p == path or p.startswith(path + ".") for p in inv.paths):
+                found.append((inv, path))
+    return found
+
+
+def below(ctx: FileContext, state: State, ref: int, name: str) -> set[str]:
+    """Paths inside the message in field `name` of `ref` that have a unit or a
+    refinement there: what a sub-message stored into that field must satisfy."""
+    found: set[str] = set()
+    for current, path in chain(state, ref, name):
+        prefix = path + "."
+        spec = ctx.catalog.lookup(state.heap[current].type)
+        paths = [inv.paths for inv in state.heap[current].extra]
+        if spec is not None:
+            found.update(k[len(prefix) :] for k in spec.units if k.startswith(prefix))
+            paths += [inv.paths for inv in spec.invariants]
+        for group in paths:
+            found.update(p[len(prefix) :] for p in group if p.startswith(prefix))
+    return found
 
 
 def field_spec(ctx: FileContext, state: State, ref: int, name: str) -> FieldSpec | None:

@@ -283,6 +283,9 @@ class Interpreter(CallEvaluator):
                 value = Value("instance", name=function.class_name or "")
             elif arg.arg in arriving:
                 value = arriving[arg.arg](state)
+            elif decl is not None and decl.base == "msg":
+                lookup = self.refinement_lookup(decl, state)
+                value = self.check.assumed(state, arg.arg, decl, lookup)
             elif msg_type is not None:
                 value = heap.new_message(
                     self.ctx, state, msg_type, "received", label=arg.arg

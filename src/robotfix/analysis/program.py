@@ -52,6 +52,25 @@ class Program:
     attributes: dict[str, dict[str, Refinement]] = field(default_factory=dict)
     callbacks: dict[str, Callback] = field(default_factory=dict)
     by_node: dict[int, Function] = field(default_factory=dict)  # id(node) ->
+    # class -> attribute -> message type, for messages kept on `self` (None: the
+    # attribute holds messages of several types)
+    messages: dict[str, dict[str, str | None]] = field(default_factory=dict)
+    bases: dict[str, list[str]] = field(default_factory=dict)  # classes of this file
+
+    def message_attribute(self, class_name: str, attribute: str) -> str | None:
+        """The message type `self.<attribute>` holds in methods of the class."""
+        seen: set[str] = set()
+        todo = [class_name]
+        while todo:
+            current = todo.pop(0)
+            if current in seen:
+                continue
+            seen.add(current)
+            table = self.messages.get(current, {})
+            if attribute in table:
+                return table[attribute]
+            todo.extend(self.bases.get(current, []))
+        return None
 
     def add(self, function: Function) -> Function:
         self.functions[function.key] = function
@@ -87,6 +106,12 @@ def collect(ctx: FileContext, tree: ast.Module, module: Scope) -> Program:
             scope = build_scope(ctx, "class", node.name, node, module)
             program.classes[node.name] = scope
             program.attributes[node.name] = dict(scope.decls)
+            program.bases[node.name] = [
+                b.id for b in node.bases if isinstance(b, ast.Name)
+            ]
+            known = ctx.index.scopes.get(id(node))
+            for annotation, target in known.annotated if known else []:
+                _add_message(program, node.name, target, ctx.msg_type_of(annotation))
             for item in node.body:
                 if isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
                     _add_function(program, item, scope, node.name)
@@ -98,8 +123,37 @@ def collect(ctx: FileContext, tree: ast.Module, module: Scope) -> Program:
             found = ctx.refinement(annotation, attribute)
             if found is not None:
                 table[attribute] = found
+    for class_name, attribute, annotation in ctx.index.attributes:
+        _add_message(program, class_name, attribute, ctx.msg_type_of(annotation))
+    for class_name, attribute, called in ctx.index.constructed:
+        _add_message(program, class_name, attribute, _constructed_type(ctx, called))
     _collect_callbacks(ctx, program)
     return program
+
+
+def _constructed_type(ctx: FileContext, called: ast.expr) -> str | None:
+    """`Twist`, `AddTwoInts.Request`, `NavigateToPose.Goal` -> the message type."""
+    found = ctx.msg_type_of(called)
+    if found is None and isinstance(called, ast.Attribute):
+        interface = ctx.interface_of(called.value)
+        if interface is not None:
+            found = ctx.msg_type_named(
+                f"{interface.replace('/', '.msg.')}_{called.attr}"
+            )
+    return found
+
+
+def _add_message(
+    program: Program, class_name: str, attribute: str, msg_type: str | None
+) -> None:
+    """A message type seen for `self.<attribute>`: kept when all agree."""
+    if msg_type is None:
+        return
+    table = program.messages.setdefault(class_name, {})
+    if attribute not in table:
+        table[attribute] = msg_type
+    elif table[attribute] != msg_type:
+        table[attribute] = None
 
 
 def _add_function(

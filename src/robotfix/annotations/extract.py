@@ -50,8 +50,14 @@ def extract(
     source_segment: Callable[[ast.AST], str | None],
     col_of: Callable[[int, int], int],
     known: Callable[[str], bool] = lambda name: True,
+    field_kind: Callable[[str, str], str | None] = lambda msg, path: None,
 ) -> tuple[Refinement | None, list[AnnotationProblem]]:
-    """The refinement in `node`, if it is `Annotated[base, "predicate", ...]`."""
+    """The refinement in `node`, if it is `Annotated[base, "predicate", ...]`.
+
+    On a message (`Annotated[Twist, "abs(linear.x) <= 0.22"]`) names are field
+    paths relative to the value, as in interface files (`_.linear.x` and
+    `t.linear.x`, for `t` the annotated name, mean the same); `field_kind` says what
+    a path of a message type is (None: not a field)."""
     if not isinstance(node, ast.Subscript) or qualname(node.value) not in ANNOTATED:
         return None, []
     args = node.slice.elts if isinstance(node.slice, ast.Tuple) else [node.slice]
@@ -78,9 +84,16 @@ def extract(
         )
         return None, problems
     unit, value_parts = _split(predicate, self_name, start, problems)
-    value_parts = [
-        p for p in value_parts if _names_known(p, self_name, known, start, problems)
-    ]
+    if mtype is not None:
+        value_parts = [
+            _relative(p, self_name)
+            for p in value_parts
+            if _fields_known(p, self_name, mtype, known, field_kind, start, problems)
+        ]
+    else:
+        value_parts = [
+            p for p in value_parts if _names_known(p, self_name, known, start, problems)
+        ]
     renamed = A.substitute(A.conjoin(value_parts), {self_name: A.Name(SELF)})
     return Refinement(base, unit, renamed, text, node.lineno, mtype), problems
 
@@ -132,6 +145,48 @@ def _split(
         else:
             values.append(part)
     return unit, values
+
+
+def _relative(part: A.Expr, self_name: str) -> A.Expr:
+    """`_.linear.x` and `t.linear.x` -> `linear.x`."""
+    renames: dict[str, A.Expr] = {}
+    for name in A.names(part):
+        root, dot, rest = name.name.partition(".")
+        if dot and root in (SELF, self_name):
+            renames[name.name] = A.Name(rest, name.pos)
+    return A.substitute(part, renames) if renames else part
+
+
+def _fields_known(
+    part: A.Expr,
+    self_name: str,
+    msg_type: str,
+    known: Callable[[str], bool],
+    field_kind: Callable[[str, str], str | None],
+    start: tuple[int, int, bool],
+    problems: list[AnnotationProblem],
+) -> bool:
+    """Names in a message's refinement are its fields or names in scope."""
+    for name in A.names(part):
+        root, dot, rest = name.name.partition(".")
+        path = rest if dot and root in (SELF, self_name) else name.name
+        kind = field_kind(msg_type, path)
+        if kind is not None and kind != "msg":
+            continue
+        if kind is None and path == name.name and known(root):
+            continue
+        line, col = _at(start, name.pos)
+        what = "is a message, not a value" if kind == "msg" else "is not a field"
+        problems.append(
+            AnnotationProblem(
+                rules.UNKNOWN_FIELD,
+                line,
+                col,
+                f"`{path}` {what} of {msg_type}",
+            )
+        )
+        return False
+    return True
 
 
 def _names_known(
