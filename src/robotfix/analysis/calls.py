@@ -126,7 +126,8 @@ class CallEvaluator(ExpressionEvaluator):
         for value in [*args, *kwargs.values()]:
             if value.kind == "msg" and value.ref is not None:
                 heap.havoc(state, value.ref)
-            state.changed(value)
+            elif value.kind == "unknown":
+                state.changed(value)
         names = [a for a in node.args if isinstance(a, ast.Name)]
         if isinstance(node.func, ast.Attribute):
             # a method of this file's class may change `self.x`; rclpy's and

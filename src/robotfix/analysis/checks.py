@@ -136,10 +136,10 @@ class Checker:
         self, state: State, when: A.Expr, name: str, site: ast.AST
     ) -> bool:
         """RF301 if `name` is unbound on some path to this read (`when` holds)."""
-        span, stmt = self.where(site)
-        once = ("uninit", span.line, name)
+        once = ("uninit", getattr(site, "lineno", 1), name)
         if self.ctx.already(once) or not self.possible(state, when):
             return False
+        span, stmt = self.where(site)
         self.ctx.report(
             messages.used_before_assignment(
                 self.path, span, stmt, name, False, some_paths=when != A.TRUE

@@ -36,6 +36,7 @@ COMPARE = {
 _DECIMAL = re.compile(r"[0-9_]*\.?[0-9_]*([eE][+-]?[0-9_]+)?")
 MATH_CONSTANTS = {"pi": math.pi, "e": math.e, "tau": math.tau}
 KIND_ORDER = ("bool", "int", "float")
+LEAVES = (A.Sym, A.Str, A.Bool, A.Num)
 # Values that are never None.
 STATIC_VALUES = frozenset(
     {
@@ -166,7 +167,7 @@ class ExpressionEvaluator:
             node.value, ast.Name
         ):
             return self.instance_attribute(base, node.value.id, node, state)
-        if base.kind == "unknown" and base.term is not None:
+        if base.kind == "unknown" and isinstance(base.term, A.Sym):
             # `args.verbose` twice is one value, until something may change args
             version = state.versions.get(base.term, 0)
             key = ("attribute", base.term, node.attr, version)
@@ -442,7 +443,7 @@ class ExpressionEvaluator:
             if obj is not None and obj.origin == "constructed":
                 return A.Bool(False)
             return self.ctx.derived(("is None", left.ref), "bool", "`is None`").term
-        if left.term is not None:
+        if isinstance(left.term, A.Sym):
             return self.ctx.derived(("is None", left.term), "bool", "`is None`").term
         if left.kind in STATIC_VALUES:
             return A.Bool(False)
@@ -519,15 +520,20 @@ class ExpressionEvaluator:
             return A.Binary("!=", value.term, A.Str(""))
         if value.kind == "none":
             return A.Bool(False)
-        if value.term is not None:  # the same for the same value
+        if isinstance(value.term, A.Sym):  # the same for the same value
             return self.ctx.derived(("truthy", value.term), "bool", node).known_term
         return self.unknown(node, "bool").term  # type: ignore[return-value]
 
 
 def _sorts_differ(left: Value, right: Value) -> bool:
-    """An unknown (a real in the solver) against a str or a bool."""
+    """An unknown (a real in the solver) against a str or a bool, both leaves."""
     kinds = {left.kind, right.kind}
-    return "unknown" in kinds and bool(kinds & {"str", "bool"})
+    return (
+        "unknown" in kinds
+        and bool(kinds & {"str", "bool"})
+        and isinstance(left.term, LEAVES)
+        and isinstance(right.term, LEAVES)
+    )
 
 
 def constant_value(term: A.Expr | None) -> float | None:

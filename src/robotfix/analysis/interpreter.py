@@ -338,30 +338,33 @@ class Interpreter(CallEvaluator):
             self.ctx, state, type_, origin, label=label
         )
 
-    def havoc(self, state: State, nodes: list[ast.stmt]) -> None:
+    def havoc(self, state: State, nodes: list[ast.stmt]) -> set[str]:
         """Forget what `nodes` may write: bound names and mentioned messages. A
         name only ever set to constants of the kind it has keeps that kind (a flag
-        stays a bool), so that tests of it agree with what was set."""
+        stays a bool), so that tests of it agree with what was set. Returns the
+        names they may bind."""
         bound_at: dict[str, ast.AST] = {}
         constant: dict[str, set[str]] = {}
         for node in nodes:
             for child in walk(node):
-                if isinstance(child, ast.Attribute):
-                    if isinstance(child.ctx, ast.Store):
-                        state.env.pop(attribute_key(child) or "", None)
-                        self._changed_root(child, state)
-                elif isinstance(child, ast.Call):
-                    for arg in [child.func, *child.args, *child.keywords]:
-                        self._changed_root(arg, state)
-                elif isinstance(child, ast.Name):
-                    bound = state.env.get(child.id)
+                kind = type(child)
+                if kind is ast.Name:
+                    bound = state.env.get(child.id)  # type: ignore[attr-defined]
                     if isinstance(bound, Value) and bound.ref is not None:
                         heap.havoc(state, bound.ref)
-                    if not isinstance(child.ctx, ast.Load):
-                        bound_at.setdefault(child.id, child)
-                elif isinstance(child, (ast.Assign, ast.AugAssign)):
-                    _constant_stores(child, constant)
-                else:
+                    if type(child.ctx) is not ast.Load:  # type: ignore[attr-defined]
+                        bound_at.setdefault(child.id, child)  # type: ignore[attr-defined]
+                elif kind is ast.Attribute:
+                    if type(child.ctx) is ast.Store:  # type: ignore[attr-defined]
+                        key = attribute_key(child)  # type: ignore[arg-type]
+                        state.env.pop(key or "", None)
+                        self._changed_root(child, state)
+                elif kind is ast.Call:
+                    for arg in [child.func, *child.args, *child.keywords]:  # type: ignore[attr-defined]
+                        self._changed_root(arg, state)
+                elif kind is ast.Assign or kind is ast.AugAssign:
+                    _constant_stores(child, constant)  # type: ignore[arg-type]
+                elif kind in BINDER_KINDS:
                     for name in _binds(child):
                         bound_at.setdefault(name, child)
         for name, child in bound_at.items():
@@ -378,6 +381,7 @@ class Interpreter(CallEvaluator):
                 state.env[name] = self.unknown(child, before.kind, before.unit)
             else:
                 state.env[name] = self.unknown(child)
+        return set(bound_at)
 
     def _changed_root(self, node: ast.AST, state: State) -> None:
         """The object at the root of `x.a.b` (or a call's argument `x`) may change."""
@@ -625,7 +629,7 @@ class Interpreter(CallEvaluator):
     def visit_While(self, node: ast.While, state: State) -> State:
         entry = state
         loop = entry.fork()
-        self.havoc(loop, [node])
+        stored = self.havoc(loop, [node])
         body_state = loop.fork()
         body_state.assume(self.condition(node.test, body_state))
         self.exec_block(node.body, body_state)
@@ -637,7 +641,7 @@ class Interpreter(CallEvaluator):
             normal.reachable = False
         elif not breaks:  # (with a break, `normal` stands for those exits too)
             normal.assume(A.Unary("not", cond))
-        if self._binds_new_names(node.body, entry):
+        if self._binds_new_names(stored, entry):
             zero = entry.fork()
             cond = self.condition(node.test, zero)
             zero.reachable = not _constant_true(cond)
@@ -649,21 +653,22 @@ class Interpreter(CallEvaluator):
         empty = self._empty_when(node.iter, state)
         entry = state
         loop = entry.fork()
-        self.havoc(loop, [node])
+        stored = self.havoc(loop, [node])
         body_state = loop.fork()
         self.bind(node.target, self.unknown(node.target), body_state)
         self.exec_block(node.body, body_state)
         normal = loop.fork()
+        targets = {t.id for t in walk(node.target) if isinstance(t, ast.Name)}
         if (
             empty is not None
             and empty != A.Bool(False)
-            and self._binds_new_names(node.body, entry)
+            and self._binds_new_names(stored - targets, entry)
         ):
             zero = entry.fork()
             zero.assume(empty)
-            for target in walk(node.target):
-                if isinstance(target, ast.Name) and target.id not in zero.env:
-                    zero.env[target.id] = MAYBE  # a loop variable: never an error
+            for target in targets:
+                if target not in zero.env:
+                    zero.env[target] = MAYBE  # a loop variable: never an error
             normal = join(zero, normal, self)
         return self._after_loop(node, normal, loop, _breaks(node.body))
 
@@ -708,13 +713,14 @@ class Interpreter(CallEvaluator):
         result = self.exec_block(node.orelse, normal)
         return join(result, loop, self) if breaks else result
 
-    def _binds_new_names(self, body: list[ast.stmt], entry: State) -> bool:
-        """Do these statements bind a local that is unbound on entry? Only then can
-        skipping them (no iteration, an early exception) leave a name unbound."""
+    def _binds_new_names(self, stored: set[str], entry: State) -> bool:
+        """Is one of these names a local unbound on entry? Only then can skipping
+        the statements that bind them (no iteration, an early exception) leave a
+        name unbound."""
         return any(
             name in self.scope.local_names
             and not isinstance(entry.env.get(name), Value)
-            for name in _stored_names(body)
+            for name in stored
         )
 
     def visit_With(self, node: ast.With | ast.AsyncWith, state: State) -> State:
@@ -729,8 +735,8 @@ class Interpreter(CallEvaluator):
     def visit_Try(self, node: ast.Try, state: State) -> State:
         entry = state.fork()
         raised = entry.fork()  # an exception somewhere in the body
-        self.havoc(raised, node.body)
-        if node.handlers and self._binds_new_names(node.body, entry):
+        stored = self.havoc(raised, node.body)
+        if node.handlers and self._binds_new_names(stored, entry):
             raised = join(entry, raised, self)  # ... or before its first binding
         guards = any(_catches_name_error(h.type) for h in node.handlers)
         self.guarded += guards
@@ -825,6 +831,9 @@ BINDERS = (
 )
 
 
+BINDER_KINDS = frozenset(BINDERS)
+
+
 def _binds(node: ast.AST) -> list[str]:
     """Names a node binds other than by an `ast.Name` target: imports, definitions,
     exception and pattern names."""
@@ -834,19 +843,6 @@ def _binds(node: ast.AST) -> list[str]:
         return [a.asname or a.name.split(".")[0] for a in node.names if a.name != "*"]
     name = node.rest if isinstance(node, ast.MatchMapping) else node.name
     return [name] if name else []
-
-
-def _stored_names(nodes: list[ast.stmt]) -> set[str]:
-    """Every name these statements may bind."""
-    found: set[str] = set()
-    for node in nodes:
-        for child in walk(node):
-            if isinstance(child, ast.Name):
-                if not isinstance(child.ctx, ast.Load):
-                    found.add(child.id)
-            else:
-                found.update(_binds(child))
-    return found
 
 
 def _breaks(body: list[ast.stmt]) -> bool:

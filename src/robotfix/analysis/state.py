@@ -49,7 +49,7 @@ class State:
 
     def changed(self, value: Value) -> None:
         """Code may have changed this object: its attributes are read anew."""
-        if value.term is not None and value.kind == "unknown":
+        if value.kind == "unknown" and isinstance(value.term, A.Sym):
             self.versions[value.term] = self.versions.get(value.term, 0) + 1
 
     def assume(self, fact: A.Expr | None) -> None:
@@ -91,6 +91,8 @@ def join(a: State, b: State, joiner: Joiner) -> State:
         return chosen[0]
 
     def merge(x: Value, y: Value) -> Value:
+        if x is y and x.default_of is None and x.unset is None:
+            return x
         ux, uy = _unset(x), _unset(y)
         if x == y and ux == uy:
             return x
@@ -114,7 +116,9 @@ def join(a: State, b: State, joiner: Joiner) -> State:
     env: dict[str, Binding] = {}
     for name in sorted(a.env.keys() | b.env.keys()):
         x, y = a.env.get(name), b.env.get(name)
-        if isinstance(x, Value) and isinstance(y, Value):
+        if x is y:
+            env[name] = x  # type: ignore[assignment]
+        elif isinstance(x, Value) and isinstance(y, Value):
             env[name] = merge(x, y)
         elif x == y:
             env[name] = x  # type: ignore[assignment]
@@ -141,6 +145,8 @@ def join(a: State, b: State, joiner: Joiner) -> State:
 def _join_heaps(
     a: State, b: State, joiner: Joiner, merge: Callable[[Value, Value], Value]
 ) -> dict[int, MsgObj]:
+    if not a.heap and not b.heap:
+        return {}
     # A field one path touched and the other did not: the other reads it now.
     done: set[int] = set()
     while True:
