@@ -176,14 +176,13 @@ def _fields_known(
         if kind is None and path == name.name and known(root):
             continue
         line, col = _at(start, name.pos)
-        what = "is a message, not a value" if kind == "msg" else "is not a field"
+        what = (
+            f"is a message in {msg_type}, not a value"
+            if kind == "msg"
+            else f"is not a field of {msg_type}"
+        )
         problems.append(
-            AnnotationProblem(
-                rules.UNKNOWN_FIELD,
-                line,
-                col,
-                f"`{path}` {what} of {msg_type}",
-            )
+            AnnotationProblem(rules.UNKNOWN_FIELD, line, col, f"`{path}` {what}")
         )
         return False
     return True

@@ -47,3 +47,10 @@ class Limiter(Node):
 
 def helper(t: Annotated[Twist, "t.linear.x <= 0.22 and t.linear.y == 0"]) -> None:
     t.linear.y = 0.0
+
+
+def bad_paths(
+    a: Annotated[Twist, "linear.q <= 1"],  # error: RF505
+    b: Annotated[Twist, "abs(linear) <= 1"],  # error: RF505
+) -> None:
+    pass
