@@ -637,14 +637,14 @@ class Interpreter(CallEvaluator):
         # Normal exits: the condition is false, after some iterations or none.
         normal = loop.fork()
         cond = self.condition(node.test, normal)
-        if _constant_true(cond):
+        if _truth(cond) is True:
             normal.reachable = False
         elif not breaks:  # (with a break, `normal` stands for those exits too)
             normal.assume(A.Unary("not", cond))
         if self._binds_new_names(stored, entry):
             zero = entry.fork()
             cond = self.condition(node.test, zero)
-            zero.reachable = not _constant_true(cond)
+            zero.reachable = _truth(cond) is not True  # `done = False; while not done`
             zero.assume(A.Unary("not", cond))
             normal = join(zero, normal, self)
         return self._after_loop(node, normal, loop, breaks)
@@ -776,15 +776,32 @@ def _catches_name_error(kind: ast.expr | None) -> bool:
     return isinstance(kind, ast.Name) and kind.id in NAME_ERRORS
 
 
-def _constant_true(cond: A.Expr) -> bool:
-    """`while True:`, or `while 1:` (`1 != 0`)."""
-    return cond == A.TRUE or (
-        isinstance(cond, A.Binary)
-        and cond.op == "!="
-        and isinstance(cond.left, A.Num)
-        and isinstance(cond.right, A.Num)
-        and cond.left.value != cond.right.value
-    )
+def _truth(cond: A.Expr) -> bool | None:
+    """The value of a condition made of constants (`True`, `1 != 0`, `not False`),
+    or None."""
+    if isinstance(cond, A.Bool):
+        return cond.value
+    if isinstance(cond, A.Unary) and cond.op == "not":
+        inner = _truth(cond.operand)
+        return None if inner is None else not inner
+    if isinstance(cond, A.Binary):
+        if cond.op in ("and", "or"):
+            left, right = _truth(cond.left), _truth(cond.right)
+            decisive = cond.op == "or"  # True decides an `or`, False an `and`
+            if decisive in (left, right):
+                return decisive
+            return None if left is None or right is None else not decisive
+        if isinstance(cond.left, A.Num) and isinstance(cond.right, A.Num):
+            a, b = cond.left.value, cond.right.value
+            return {
+                "==": a == b,
+                "!=": a != b,
+                "<": a < b,
+                "<=": a <= b,
+                ">": a > b,
+                ">=": a >= b,
+            }.get(cond.op)
+    return None
 
 
 # Constant kinds a store may have and keep a variable's kind.

@@ -66,3 +66,11 @@ def drain(queue) -> None:
     while (item := queue.get()) is not None:
         rospy.loginfo(f"{item}")
     rospy.loginfo(f"stopped at {item}")
+
+
+def wait_until_done() -> None:
+    done = False
+    while not done:
+        reply = rospy.wait_for_message("status", Twist, 1.0)
+        done = reply is not None
+    rospy.loginfo(f"done: {reply}")
