@@ -130,18 +130,19 @@ class CallEvaluator(ExpressionEvaluator):
                 state.changed(value)
         names = [a for a in node.args if isinstance(a, ast.Name)]
         if isinstance(node.func, ast.Attribute):
-            # a method of this file's class may change `self.x`; rclpy's and
-            # rospy's own (`self.get_clock()`) do not touch the node's attributes
-            receiver = state.env.get(getattr(node.func.value, "id", ""))
-            library = (
-                isinstance(receiver, Value)
-                and receiver.kind == "instance"
-                and callee.kind != "method"
-            )
-            if isinstance(node.func.value, ast.Name) and not library:
-                names.append(node.func.value)
-            elif isinstance(node.func.value, ast.Attribute):  # self.x.reset()
-                state.env.pop(attribute_key(node.func.value) or "", None)
+            owner = node.func.value
+            if isinstance(owner, ast.Name):
+                # a method of this file's class may change `self.x`; rclpy's and
+                # rospy's own (`self.get_clock()`) do not touch its attributes
+                receiver = state.env.get(owner.id)
+                if (
+                    callee.kind == "method"
+                    or not isinstance(receiver, Value)
+                    or receiver.kind != "instance"
+                ):
+                    names.append(owner)
+            elif isinstance(owner, ast.Attribute):  # self.x.reset()
+                state.env.pop(attribute_key(owner) or "", None)
         for name in names:
             bound = state.env.get(name.id)
             if isinstance(bound, Value):

@@ -635,11 +635,14 @@ class Interpreter(CallEvaluator):
         self.exec_block(node.body, body_state)
         breaks = _breaks(node.body)
         # Normal exits: the condition is false, after some iterations or none.
-        normal = loop.fork()
-        cond = self.condition(node.test, normal)
-        if _truth(cond) is True:
-            normal.reachable = False
-        elif not breaks:  # (with a break, `normal` stands for those exits too)
+        # (With a break, `normal` stands for the exits by break too.)
+        normal = loop.fork() if breaks and node.orelse else loop
+        if isinstance(node.test, ast.Constant):
+            normal.reachable = not node.test.value and normal.reachable
+        elif not breaks:
+            cond = self.condition(node.test, normal)
+            if _truth(cond) is True:
+                normal.reachable = False
             normal.assume(A.Unary("not", cond))
         if self._binds_new_names(stored, entry):
             zero = entry.fork()
@@ -657,7 +660,8 @@ class Interpreter(CallEvaluator):
         body_state = loop.fork()
         self.bind(node.target, self.unknown(node.target), body_state)
         self.exec_block(node.body, body_state)
-        normal = loop.fork()
+        breaks = _breaks(node.body)
+        normal = loop.fork() if breaks and node.orelse else loop
         targets = {t.id for t in walk(node.target) if isinstance(t, ast.Name)}
         if (
             empty is not None
@@ -670,7 +674,7 @@ class Interpreter(CallEvaluator):
                 if target not in zero.env:
                     zero.env[target] = MAYBE  # a loop variable: never an error
             normal = join(zero, normal, self)
-        return self._after_loop(node, normal, loop, _breaks(node.body))
+        return self._after_loop(node, normal, loop, breaks)
 
     def _empty_when(self, iterable: ast.expr, state: State) -> A.Expr | None:
         """Evaluate a `for` loop's iterable; when is it empty? Known for `range()`
