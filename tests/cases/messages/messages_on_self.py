@@ -4,8 +4,11 @@ from typing import Annotated
 
 import rclpy
 from geometry_msgs.msg import Twist
+from rclpy.action import ActionClient
 from rclpy.node import Node
 
+from robot_pkg.action import BackUp
+from robot_pkg.msg import BackUpGoal
 from robot_pkg.srv import AddTwoInts
 
 
@@ -41,6 +44,20 @@ class AdderClient(Node):
         self.req.a = 41
         self.req.b = 1
         self.future = self.cli.call_async(self.req)
+
+
+class Recovery(Node):
+    def __init__(self) -> None:
+        super().__init__("recovery")
+        self.client = ActionClient(self, BackUp, "backup")
+        self.goal_msg = BackUp.Goal()
+        self.ros1_goal = BackUpGoal()
+
+    def back_up(self, distance: float) -> None:
+        self.goal_msg.speed = 0.8  # error: RF101
+        self.goal_msg.speed = 0.25
+        self.ros1_goal.target.x = -1.0  # error: RF101
+        self.client.send_goal_async(self.goal_msg)
 
 
 class Inherited(Driver):
