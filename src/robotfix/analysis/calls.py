@@ -308,7 +308,19 @@ class CallEvaluator(ExpressionEvaluator):
         self, name: str, args: list[Value], node: ast.Call, state: State
     ) -> Value | None:
         if name == "len" and len(args) == 1:
-            value = self.unknown(node, "int")
+            # the same length for the same object until something may change it
+            # (`if len(sys.argv) > 1:` twice agrees)
+            of = args[0]
+            key: tuple[object, ...] | None = None
+            if isinstance(of.term, A.Sym):
+                key = ("len", of.term, state.versions.get(of.term, 0))
+            elif of.kind == "module":
+                key = ("len", of.name)
+            value = (
+                self.unknown(node, "int")
+                if key is None
+                else self.ctx.derived(key, "int", node)
+            )
             state.assume(A.Binary(">=", value.known_term, ZERO))
             return value
         if not args:

@@ -27,6 +27,7 @@ from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.astwalk import walk
 
+NO_RETURN = frozenset({"sys.exit", "os._exit", "os.abort"})
 BUILTINS = frozenset(dir(builtins)) | {"__file__", "__name__", "__doc__", "__spec__"}
 # Python packages with a `msg`/`srv`/`action` module that is not an interface package.
 CLIENT_LIBRARIES = frozenset(
@@ -385,7 +386,9 @@ class Interpreter(CallEvaluator):
 
     def _changed_root(self, node: ast.AST, state: State) -> None:
         """The object at the root of `x.a.b` (or a call's argument `x`) may change."""
-        while isinstance(node, (ast.Attribute, ast.keyword, ast.Starred)):
+        while isinstance(
+            node, (ast.Attribute, ast.keyword, ast.Starred, ast.Subscript)
+        ):
             node = node.value
         if isinstance(node, ast.Name):
             bound = state.env.get(node.id)
@@ -395,7 +398,18 @@ class Interpreter(CallEvaluator):
     # -- simple statements ---------------------------------------------------
     def visit_Expr(self, node: ast.Expr, state: State) -> State:
         self.eval(node.value, state)
+        if isinstance(node.value, ast.Call) and self._never_returns(node.value.func):
+            state.reachable = False  # sys.exit(1) ends this path
         return state
+
+    def _never_returns(self, func: ast.expr) -> bool:
+        if isinstance(func, ast.Name) and func.id in ("exit", "quit"):
+            module = self.scope.module()
+            return not any(
+                func.id in names
+                for names in (self.scope.local_names, module.local_names)
+            )
+        return self.ctx.qualname(func) in NO_RETURN
 
     def visit_Assign(self, node: ast.Assign, state: State) -> State:
         if (
@@ -510,6 +524,7 @@ class Interpreter(CallEvaluator):
                 state.env[target.id] = MAYBE  # deleted: unknown, never an error
             else:
                 self.eval_children(target, state)
+                self._changed_root(target, state)
         return state
 
     def visit_Import(self, node: ast.Import, state: State) -> State:
