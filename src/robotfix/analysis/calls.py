@@ -326,6 +326,14 @@ class CallEvaluator(ExpressionEvaluator):
         if not args:
             return None
         first = args[0]
+        if name in ("isinstance", "hasattr") and len(node.args) == 2:
+            # one answer for one object and one class (or attribute name)
+            if not isinstance(first.term, A.Sym):
+                return None
+            version = state.versions.get(first.term, 0)
+            second = self.ctx.source.segment(node.args[1])
+            key = (name, first.term, second, version)
+            return self.ctx.derived(key, "bool", node)
         if name in ("min", "max") and len(args) == 1:  # of an iterable: its unit
             return self.unknown(node, "unknown", first.unit)
         if any(a.term is None for a in args):

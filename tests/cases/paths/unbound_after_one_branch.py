@@ -76,6 +76,14 @@ class Follower(Node):
         if last is not None:
             self.get_logger().info(f"dt {dt}")
 
+    def on_value(self, value) -> None:
+        if isinstance(value, float):
+            scaled = value * 2.0
+        if isinstance(value, float):
+            self.get_logger().info(f"{scaled}")
+        if isinstance(value, int):
+            self.get_logger().info(f"{scaled}")  # error: RF301
+
     def on_scan_deleted(self, scan: LaserScan) -> None:
         ranges = list(scan.ranges)
         del ranges
