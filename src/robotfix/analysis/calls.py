@@ -359,7 +359,7 @@ class CallEvaluator(ExpressionEvaluator):
         if name in ("int", "round") and len(args) == 1 and first.kind != "str":
             return self.unknown(node, "int", first.unit)
         if name == "bool" and len(args) == 1:
-            return Value("bool", self.truthy(first, node))
+            return Value("bool", self.truthy(first, node, state))
         return None if name != "print" else NONE
 
 

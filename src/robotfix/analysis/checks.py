@@ -137,8 +137,13 @@ class Checker:
     ) -> bool:
         """RF301 if `name` is unbound on some path to this read (`when` holds)."""
         once = ("uninit", getattr(site, "lineno", 1), name)
+        cause = ("unbound", name, when)  # one bug, one diagnostic, however many reads
+        if when != A.TRUE and self.ctx.already(cause):
+            return False
         if self.ctx.already(once) or not self.possible(state, when):
             return False
+        if when != A.TRUE:
+            self.ctx.report_once(cause)
         span, stmt = self.where(site)
         self.ctx.report(
             messages.used_before_assignment(

@@ -134,6 +134,10 @@ class FileContext:
     def already(self, once: tuple[object, ...]) -> bool:
         return once in self._reported
 
+    def report_once(self, once: tuple[object, ...]) -> None:
+        """Mark `once` as reported (for a diagnostic keyed by something else)."""
+        self._reported.add(once)
+
     def report(self, diag: Diagnostic, once: tuple[object, ...] | None = None) -> None:
         if self.muted:
             return

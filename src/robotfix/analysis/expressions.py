@@ -10,8 +10,11 @@ from __future__ import annotations
 import ast
 import math
 import re
+from collections.abc import Callable
 from dataclasses import replace
 from fractions import Fraction
+from functools import partial
+from typing import TypeVar
 
 from robotfix import messages
 from robotfix.analysis import heap
@@ -24,6 +27,7 @@ from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.units import DIMENSIONLESS, Unit
 
+T = TypeVar("T")
 ARITH = {ast.Add: "+", ast.Sub: "-", ast.Mult: "*", ast.Div: "/"}
 COMPARE = {
     ast.Eq: "==",
@@ -276,7 +280,8 @@ class ExpressionEvaluator:
     def eval_UnaryOp(self, node: ast.UnaryOp, state: State) -> Value:
         operand = self.eval(node.operand, state)
         if isinstance(node.op, ast.Not):
-            return Value("bool", A.Unary("not", self.truthy(operand, node.operand)))
+            truth = self.truthy(operand, node.operand, state)
+            return Value("bool", A.Unary("not", truth))
         if (
             isinstance(node.op, (ast.USub, ast.UAdd))
             and operand.term is not None
@@ -450,7 +455,17 @@ class ExpressionEvaluator:
         return None
 
     def eval_BoolOp(self, node: ast.BoolOp, state: State) -> Value:
-        values = [self.eval(v, state) for v in node.values]
+        values = [self.eval(node.values[0], state)]
+        so_far: A.Expr = self.truthy(values[0], node.values[0], state)
+        for operand in node.values[1:]:  # evaluated only where the others let it
+            fact = self._goes_on(node, so_far)
+            value = self.under(state, fact, partial(self.eval, operand, state))
+            values.append(value)
+            so_far = A.Binary(
+                "and" if isinstance(node.op, ast.And) else "or",
+                so_far,
+                self.truthy(value, operand, state),
+            )
         if any(v.kind != "bool" or v.term is None for v in values):
             return self.unknown(node)
         op = "and" if isinstance(node.op, ast.And) else "or"
@@ -461,7 +476,10 @@ class ExpressionEvaluator:
 
     def eval_IfExp(self, node: ast.IfExp, state: State) -> Value:
         cond = self.condition(node.test, state)
-        then, orelse = self.eval(node.body, state), self.eval(node.orelse, state)
+        then = self.under(state, cond, partial(self.eval, node.body, state))
+        orelse = self.under(
+            state, A.Unary("not", cond), partial(self.eval, node.orelse, state)
+        )
         kinds = {then.kind, orelse.kind}
         if (
             then.term is None
@@ -481,6 +499,21 @@ class ExpressionEvaluator:
             unit,
             then.literal and orelse.literal,
         )
+
+    def eval_List(self, node: ast.List | ast.Set | ast.Dict, state: State) -> Value:
+        """A container display: unknown, but its length and truth are known."""
+        self.eval_children(node, state)
+        value = self.unknown(node)
+        items = node.keys if isinstance(node, ast.Dict) else node.elts
+        if not any(i is None or isinstance(i, ast.Starred) for i in items):
+            size = len(items)
+            truth = self.truthy(value, node, state)
+            state.assume(truth if size else A.Unary("not", truth))
+            length = self.ctx.derived(("len", value.term, 0), "int", node)
+            state.assume(A.Binary("==", length.known_term, A.Num(Fraction(size), True)))
+        return value
+
+    eval_Set = eval_Dict = eval_List
 
     def eval_Subscript(self, node: ast.Subscript, state: State) -> Value:
         base = self.eval(node.value, state)
@@ -502,16 +535,37 @@ class ExpressionEvaluator:
         """The fact that holds when `node` is truthy (unknown parts: fresh booleans)."""
         if isinstance(node, ast.BoolOp):
             op = "and" if isinstance(node.op, ast.And) else "or"
-            parts = [self.condition(v, state) for v in node.values]
-            result = parts[0]
-            for part in parts[1:]:
+            result = self.condition(node.values[0], state)
+            for operand in node.values[1:]:  # `x and x.y`: y read only if x holds
+                fact = self._goes_on(node, result)
+                part = self.under(state, fact, partial(self.condition, operand, state))
                 result = A.Binary(op, result, part)
             return result
         if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.Not):
             return A.Unary("not", self.condition(node.operand, state))
-        return self.truthy(self.eval(node, state), node)
+        return self.truthy(self.eval(node, state), node, state)
 
-    def truthy(self, value: Value, node: ast.AST) -> A.Expr:
+    @staticmethod
+    def _goes_on(node: ast.BoolOp, so_far: A.Expr) -> A.Expr:
+        """When `a and b` (`a or b`) evaluates b: a is true (false)."""
+        return so_far if isinstance(node.op, ast.And) else A.Unary("not", so_far)
+
+    def under(self, state: State, fact: A.Expr, evaluate: Callable[[], T]) -> T:
+        """Evaluate on the path where `fact` holds (the right side of `and`, an arm
+        of `a if c else b`); the fact is dropped afterwards."""
+        if fact == A.TRUE:
+            return evaluate()
+        at = len(state.facts)
+        state.facts.append(fact)
+        try:
+            return evaluate()
+        finally:
+            if len(state.facts) > at and state.facts[at] is fact:
+                del state.facts[at]
+
+    def truthy(self, value: Value, node: ast.AST, state: State | None = None) -> A.Expr:
+        """The fact that `value` is true. An unknown object's truth is the same
+        until something may change it (an empty list filled)."""
         if value.term is not None and value.kind == "bool":
             return value.term
         if value.term is not None and value.kind in ("int", "float"):
@@ -520,8 +574,14 @@ class ExpressionEvaluator:
             return A.Binary("!=", value.term, A.Str(""))
         if value.kind == "none":
             return A.Bool(False)
-        if isinstance(value.term, A.Sym):  # the same for the same value
-            return self.ctx.derived(("truthy", value.term), "bool", node).known_term
+        if isinstance(value.term, A.Sym):
+            version = state.versions.get(value.term, 0) if state else 0
+            key = ("truthy", value.term, version)
+            return self.ctx.derived(key, "bool", node).known_term
+        if value.kind == "module":  # `if TYPE_CHECKING:`, `if sys.flags.debug:`
+            if value.name.endswith("TYPE_CHECKING"):
+                return A.Bool(False)
+            return self.ctx.derived(("truthy", value.name), "bool", node).known_term
         return self.unknown(node, "bool").term  # type: ignore[return-value]
 
 

@@ -20,14 +20,35 @@ from robotfix.analysis import heap
 from robotfix.analysis.calls import CallEvaluator
 from robotfix.analysis.context import FileContext, Scope, build_scope
 from robotfix.analysis.index import index_module
-from robotfix.analysis.program import Function, Program, attribute_key, collect
+from robotfix.analysis.program import (
+    Function,
+    Program,
+    attribute_key,
+    collect,
+    never_returns,
+)
 from robotfix.analysis.state import MAYBE, MaybeUnbound, State, join
 from robotfix.analysis.values import NONE, Uninit, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.astwalk import walk
 
-NO_RETURN = frozenset({"sys.exit", "os._exit", "os.abort"})
+NO_RETURN = frozenset(
+    {
+        "sys.exit",
+        "os._exit",
+        "os.abort",
+        "pytest.fail",
+        "pytest.skip",
+        "pytest.exit",
+        "pytest.xfail",
+        "typing.assert_never",
+        "typing_extensions.assert_never",
+        "_pytest.outcomes.fail",
+        "_pytest.outcomes.skip",
+        "_pytest.outcomes.exit",
+    }
+)
 BUILTINS = frozenset(dir(builtins)) | {"__file__", "__name__", "__doc__", "__spec__"}
 # Python packages with a `msg`/`srv`/`action` module that is not an interface package.
 CLIENT_LIBRARIES = frozenset(
@@ -113,6 +134,7 @@ class Interpreter(CallEvaluator):
         self.function = function
         self.pending: list[tuple[ast.AST, Scope]] = []
         self.guarded = 0  # inside a `try` body whose handlers catch NameError
+        self.nested: dict[str, ast.AST] = {}  # functions defined in this body
 
     # -- blocks --------------------------------------------------------------
     def exec_block(self, body: list[ast.stmt], state: State) -> State:
@@ -339,11 +361,16 @@ class Interpreter(CallEvaluator):
             self.ctx, state, type_, origin, label=label
         )
 
-    def havoc(self, state: State, nodes: list[ast.stmt]) -> set[str]:
+    def havoc(
+        self, state: State, nodes: list[ast.stmt], loop: bool = False
+    ) -> set[str]:
         """Forget what `nodes` may write: bound names and mentioned messages. A
         name only ever set to constants of the kind it has keeps that kind (a flag
-        stays a bool), so that tests of it agree with what was set. Returns the
-        names they may bind."""
+        stays a bool), so that tests of it agree with what was set. A loop that
+        calls anything (`rospy.sleep`, `spin_once`) lets callbacks run: the node's
+        attributes and the globals that functions set may change there too.
+        Returns the names they may bind."""
+        calls = False
         bound_at: dict[str, ast.AST] = {}
         constant: dict[str, set[str]] = {}
         for node in nodes:
@@ -361,6 +388,7 @@ class Interpreter(CallEvaluator):
                         state.env.pop(key or "", None)
                         self._changed_root(child, state)
                 elif kind is ast.Call:
+                    calls = True
                     for arg in [child.func, *child.args, *child.keywords]:  # type: ignore[attr-defined]
                         self._changed_root(arg, state)
                 elif kind is ast.Assign or kind is ast.AugAssign:
@@ -368,6 +396,11 @@ class Interpreter(CallEvaluator):
                 elif kind in BINDER_KINDS:
                     for name in _binds(child):
                         bound_at.setdefault(name, child)
+        if loop and calls:
+            for key in [k for k in state.env if "." in k]:
+                del state.env[key]  # `while self.scan is None: rospy.sleep(0.1)`
+            for name in sorted(self.program.shared_globals):
+                bound_at.setdefault(name, nodes[0])  # `while not received: ...`
         for name, child in bound_at.items():
             if name not in self.scope.local_names:
                 continue
@@ -403,13 +436,41 @@ class Interpreter(CallEvaluator):
         return state
 
     def _never_returns(self, func: ast.expr) -> bool:
+        """`sys.exit()`, `pytest.fail()`, or a function of this file that can only
+        raise: the path ends there."""
+        module = self.scope.module()
+        known: Function | None = None
+        if isinstance(func, ast.Name):
+            if func.id in self.nested:  # a helper defined in this function
+                return never_returns(self.nested[func.id], self._ends_path)
+            if func.id in self.scope.local_names:  # `from pytest import fail` here
+                return _no_return(self.ctx.qualname(func))
+            if func.id in ("exit", "quit") and func.id not in module.local_names:
+                return True
+            known = self.program.functions.get(func.id)
+        elif (
+            isinstance(func, ast.Attribute)
+            and isinstance(func.value, ast.Name)
+            and self.function is not None
+            and self.function.is_method
+            and func.value.id == _first_parameter(self.function)
+        ):
+            method = f"{self.function.class_name}.{func.attr}"
+            known = self.program.functions.get(method)
+        if known is not None:
+            return never_returns(known.node, self._ends_path)
+        return _no_return(self.ctx.qualname(func))
+
+    def _ends_path(self, stmt: ast.stmt) -> bool:
+        """A last statement after which a function cannot go on."""
+        if isinstance(stmt, ast.Raise):
+            return True
+        if not isinstance(stmt, ast.Expr) or not isinstance(stmt.value, ast.Call):
+            return False
+        func = stmt.value.func
         if isinstance(func, ast.Name) and func.id in ("exit", "quit"):
-            module = self.scope.module()
-            return not any(
-                func.id in names
-                for names in (self.scope.local_names, module.local_names)
-            )
-        return self.ctx.qualname(func) in NO_RETURN
+            return True
+        return _no_return(self.ctx.qualname(func))
 
     def visit_Assign(self, node: ast.Assign, state: State) -> State:
         if (
@@ -587,6 +648,8 @@ class Interpreter(CallEvaluator):
             else f"<nested {node.name}@{node.lineno}>"
         )
         state.env[node.name] = Value("function", name=key)
+        if self.scope.kind == "function":
+            self.nested[node.name] = node
         top_level_method = (
             self.scope.kind == "class"
             and self.scope.parent is not None
@@ -640,11 +703,41 @@ class Interpreter(CallEvaluator):
     def complete(self, state: State, ref: int, name: str) -> Value:
         return heap.read_raw(self.ctx, state, ref, name, f"`{name}`")
 
+    def ties(self, merged: Value, side: Value, state: State) -> list[A.Expr]:
+        found: list[A.Expr] = []
+        is_none = self._none_test(merged)
+        side_none = self._none_test(side)
+        if is_none is not None and side_none is not None:
+            found.append(A.Binary("==", is_none, side_none))
+        truth = self.truthy(merged, self.site)
+        side_truth = self._truth_of(side, state)
+        if side_truth is not None:
+            found.append(A.Binary("==", truth, side_truth))
+        return found
+
+    def _none_test(self, value: Value) -> A.Expr | None:
+        if value.kind == "none":
+            return A.TRUE
+        if isinstance(value.term, A.Sym) and value.kind == "unknown":
+            return self.ctx.derived(("is None", value.term), "bool", "`is None`").term
+        if value.kind in ("int", "float", "bool", "str", "instance"):
+            return A.Bool(False)
+        return None
+
+    def _truth_of(self, value: Value, state: State) -> A.Expr | None:
+        if value.kind == "none":
+            return A.Bool(False)
+        if value.term is not None and value.kind in ("int", "float", "bool", "str"):
+            return self.truthy(value, self.site, state)
+        if isinstance(value.term, A.Sym) and value.kind == "unknown":
+            return self.truthy(value, self.site, state)
+        return None
+
     # -- loops ---------------------------------------------------------------
     def visit_While(self, node: ast.While, state: State) -> State:
         entry = state
         loop = entry.fork()
-        stored = self.havoc(loop, [node])
+        stored = self.havoc(loop, [node], loop=True)
         body_state = loop.fork()
         body_state.assume(self.condition(node.test, body_state))
         self.exec_block(node.body, body_state)
@@ -668,11 +761,12 @@ class Interpreter(CallEvaluator):
         return self._after_loop(node, normal, loop, breaks)
 
     def visit_For(self, node: ast.For | ast.AsyncFor, state: State) -> State:
-        empty = self._empty_when(node.iter, state)
+        empty, nonempty = self._empty_when(node.iter, state)
         entry = state
         loop = entry.fork()
-        stored = self.havoc(loop, [node])
+        stored = self.havoc(loop, [node], loop=True)
         body_state = loop.fork()
+        body_state.assume(nonempty)  # an iteration: the iterable had an element
         self.bind(node.target, self.unknown(node.target), body_state)
         self.exec_block(node.body, body_state)
         breaks = _breaks(node.body)
@@ -691,10 +785,13 @@ class Interpreter(CallEvaluator):
             normal = join(zero, normal, self)
         return self._after_loop(node, normal, loop, breaks)
 
-    def _empty_when(self, iterable: ast.expr, state: State) -> A.Expr | None:
-        """Evaluate a `for` loop's iterable; when is it empty? Known for `range()`
-        of numbers and for literals; None for anything else (a list that arrived
-        is empty or not: no iteration is then not taken for a path)."""
+    def _empty_when(
+        self, iterable: ast.expr, state: State
+    ) -> tuple[A.Expr | None, A.Expr | None]:
+        """Evaluate a `for` loop's iterable: when is it empty (a path with no
+        iteration), and what holds in an iteration? The first is known for
+        `range()` of numbers and for literals only: that a list that arrived may
+        be empty is not taken for a path."""
         call = iterable
         if (
             isinstance(call, ast.Call)
@@ -709,12 +806,17 @@ class Interpreter(CallEvaluator):
                 bounds.insert(0, Value("int", A.Num(Fraction(0), True)))
             low, high = bounds
             if {low.kind, high.kind} <= {"int", "unknown"} and low.term and high.term:
-                return A.Binary("<=", high.term, low.term)
-            return None
-        self.eval(iterable, state)
+                empty = A.Binary("<=", high.term, low.term)
+                return empty, A.Unary("not", empty)
+            return None, None
+        value = self.eval(iterable, state)
         if isinstance(iterable, (ast.List, ast.Tuple, ast.Set, ast.Dict)):
-            return A.Bool(not _surely_nonempty(iterable))
-        return None
+            nonempty = _surely_nonempty(iterable)
+            return A.Bool(not nonempty), A.Bool(nonempty)
+        if isinstance(value.term, A.Sym) and value.kind == "unknown":
+            # `if items: first = ...` then `for x in items: use(first)`
+            return None, self.truthy(value, iterable, state)
+        return None, None
 
     visit_AsyncFor = visit_For
 
@@ -793,6 +895,18 @@ def _catches_name_error(kind: ast.expr | None) -> bool:
     if isinstance(kind, ast.Tuple):
         return any(_catches_name_error(e) for e in kind.elts)
     return isinstance(kind, ast.Name) and kind.id in NAME_ERRORS
+
+
+def _no_return(qualified: str | None) -> bool:
+    return qualified is not None and (
+        qualified in NO_RETURN or qualified.endswith(".assert_never")
+    )
+
+
+def _first_parameter(function: Function) -> str | None:
+    args = function.node.args
+    every = [*args.posonlyargs, *args.args]
+    return every[0].arg if every else None
 
 
 def _truth(cond: A.Expr) -> bool | None:

@@ -9,6 +9,7 @@ order the definitions come in.
 from __future__ import annotations
 
 import ast
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from robotfix.analysis.context import FileContext, Scope, build_scope
@@ -56,6 +57,8 @@ class Program:
     # attribute holds messages of several types)
     messages: dict[str, dict[str, str | None]] = field(default_factory=dict)
     bases: dict[str, list[str]] = field(default_factory=dict)  # classes of this file
+    # module names that functions declare `global` (callbacks may set them)
+    shared_globals: set[str] = field(default_factory=set)
 
     def message_attribute(self, class_name: str, attribute: str) -> str | None:
         """The message type `self.<attribute>` holds in methods of the class."""
@@ -87,6 +90,29 @@ class Program:
             if returns is not None:
                 function.returns = ctx.refinement(returns, function.name)
         return function.scope
+
+
+def never_returns(node: ast.AST, ends: Callable[[ast.stmt], bool]) -> bool:
+    """A function whose body can only end by raising (`def fail(msg): raise
+    X(msg)`, or a last statement for which `ends` holds, `sys.exit(1)`), or one
+    annotated `NoReturn`/`Never`."""
+    if not isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+        return False
+    returns = node.returns
+    if getattr(returns, "id", getattr(returns, "attr", "")) in ("NoReturn", "Never"):
+        return True
+    if not node.body or not ends(node.body[-1]):
+        return False
+    todo: list[ast.AST] = list(node.body)
+    while todo:
+        child = todo.pop()
+        if isinstance(child, (ast.Return, ast.Yield, ast.YieldFrom)):
+            return False
+        if not isinstance(
+            child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef)
+        ):
+            todo.extend(ast.iter_child_nodes(child))
+    return True
 
 
 def attribute_key(node: ast.Attribute) -> str | None:
@@ -128,6 +154,9 @@ def collect(ctx: FileContext, tree: ast.Module, module: Scope) -> Program:
     for class_name, attribute, called in ctx.index.constructed:
         _add_message(program, class_name, attribute, _constructed_type(ctx, called))
     _collect_callbacks(ctx, program)
+    for scope_id, names in ctx.index.scopes.items():
+        if scope_id != id(tree):
+            program.shared_globals |= names.global_names
     return program
 
 

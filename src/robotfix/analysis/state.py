@@ -64,6 +64,11 @@ class Joiner(Protocol):
     def selector(self) -> A.Expr:
         """A fresh boolean: true on the first path of a join, false on the second."""
 
+    def ties(self, merged: Value, side: Value, state: State) -> list[A.Expr]:
+        """Facts that hold of a merged value of unknown kind on the path where it
+        is `side`: whether it is None, whether it is true (`x = None` on one
+        path, an object on the other, and `if x:` after)."""
+
     def complete(self, state: State, ref: int, name: str) -> Value:
         """What `state` holds in field `name` of message `ref`, which it never
         touched (its default, an unknown, or the sub-message of the same id)."""
@@ -102,6 +107,9 @@ def join(a: State, b: State, joiner: Joiner) -> State:
             if value.term is not None and x.term is not None and y.term is not None:
                 extra_a.append(A.Binary("==", value.term, x.term))
                 extra_b.append(A.Binary("==", value.term, y.term))
+            if value.kind == "unknown" and value.term is not None:
+                extra_a.extend(joiner.ties(value, x, a))
+                extra_b.extend(joiner.ties(value, y, b))
         known = ux or uy
         if known is not None:
             when = _either(
