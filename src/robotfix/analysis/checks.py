@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import ast
 from dataclasses import replace
+from fractions import Fraction
 from typing import NamedTuple
 
 from robotfix import messages
@@ -61,10 +62,15 @@ class Checker:
         span, stmt = self.where(site)
         if isinstance(verdict, Proved):
             return PROVED
+        facts = tuple(state.facts)
         if isinstance(verdict, Unproven):
-            verdict = self._arm_violated(state, goal, probes) or verdict
+            arm = self._arm_violated(state, goal, probes)
+            if arm is not None:
+                verdict, facts = arm
         if isinstance(verdict, Violated):
             value = verdict.probe_values[0] if verdict.probe_values else None
+            if value is not None and probe is not None:
+                value = self._only_value(facts, probe, value)
             self.ctx.report(
                 messages.refinement_violated(
                     self.path, span, stmt, predicate, subject, value, declared
@@ -98,18 +104,31 @@ class Checker:
         )
         return FAILED
 
+    def _only_value(
+        self, facts: tuple[A.Expr, ...], probe: A.Expr, value: str
+    ) -> str | None:
+        """The value that breaks the refinement, if it is the only one possible
+        there; when paths that joined give several (`5` or `7`), naming one would
+        be arbitrary."""
+        shown = _term_of(value)
+        if shown is None or isinstance(probe, A.Num):
+            return value
+        goal = A.Binary("==", probe, shown)
+        unique = self.ctx.discharge(VC(facts, goal))
+        return value if isinstance(unique, Proved) else None
+
     def _arm_violated(
         self, state: State, goal: A.Expr, probes: tuple[A.Expr, ...]
-    ) -> Violated | None:
+    ) -> tuple[Violated, tuple[A.Expr, ...]] | None:
         """`a if c else b` is two paths: the goal fails on every execution of one
-        of them (a reachable one), which is an error."""
+        of them (a reachable one), which is an error. The verdict and that path."""
         arms = [e for e in A.walk(goal) if isinstance(e, A.Ite)][:2]
         for arm in arms:
             for cond in (arm.cond, A.Unary("not", arm.cond)):
                 facts = (*state.facts, cond)
                 verdict = self.ctx.discharge(VC(facts, goal, probes))
                 if isinstance(verdict, Violated):
-                    return verdict
+                    return verdict, facts
         return None
 
     def _describe(self, ident: int) -> str:
@@ -623,6 +642,19 @@ class Checker:
         ):
             return self.ctx.source.segment(site.value.args[0]) or "the message"
         return "the message"
+
+
+def _term_of(shown: str) -> A.Expr | None:
+    """A solver value as printed (`5`, `2.5`, `1/3`, `True`, `'a'`) as a term."""
+    if shown in ("True", "False"):
+        return A.Bool(shown == "True")
+    if len(shown) >= 2 and shown[0] == shown[-1] == "'":
+        return A.Str(shown[1:-1])
+    try:
+        number = Fraction(shown)
+    except (ValueError, ZeroDivisionError):
+        return None
+    return A.Num(number, number.denominator == 1 and "." not in shown)
 
 
 class FieldRule(NamedTuple):
