@@ -294,11 +294,13 @@ class Checker:
         ]
         return found
 
-    def rules_of(self, state: State, ref: int) -> list[FieldRule]:
+    def rules_of(
+        self, state: State, ref: int, spec: MsgSpec | None = None
+    ) -> list[FieldRule]:
         """Every refinement declared on message `ref` itself: its type's and those
         of the variables it reached."""
         obj = state.heap[ref]
-        spec = self.ctx.catalog.lookup(obj.type)
+        spec = spec or self.ctx.catalog.lookup(obj.type)
         found = [_catalog_rule(spec, inv) for inv in spec.invariants] if spec else []
         return found + [_object_rule(inv) for inv in obj.extra]
 
@@ -515,7 +517,7 @@ class Checker:
         if obj is None or spec is None:
             return
         label = prefix or self._name_of(site)
-        for rule in self.rules_of(state, ref):
+        for rule in self.rules_of(state, ref, spec):
             self._check_invariant(state, ref, rule, site, label, publishing, single)
         for fname, fs in spec.fields.items():
             if fs.kind == "msg" and not fs.array:

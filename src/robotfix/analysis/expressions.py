@@ -219,7 +219,7 @@ class ExpressionEvaluator:
         key = f"{var}.{node.attr}"
         bound = state.env.get(key)
         if isinstance(bound, Value):
-            return bound
+            return state.use(bound)
         method = f"{base.name}.{node.attr}"
         if base.kind == "instance" and method in self.program.functions:
             return Value("method", name=method)
@@ -257,7 +257,7 @@ class ExpressionEvaluator:
                 continue
             bound = state.env.get(name)
             if isinstance(bound, Value) and bound.term is not None:
-                found[name] = bound.term
+                found[name] = state.use(bound).known_term
             else:
                 found[name] = self.ctx.fresh("unknown", f"`{name}`").term  # type: ignore[assignment]
         return found

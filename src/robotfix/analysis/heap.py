@@ -78,10 +78,18 @@ def extras_on(state: State, ref: int, name: str) -> list[tuple[ObjInvariant, str
     """Refinements of variables that a message reached (`Annotated[Twist, ...]`)
     that mention only field `name` of `ref` (and what lies below it)."""
     found = []
-    for current, path in chain(state, ref, name):
-        for inv in state.heap[current].extra:
+    current: int | None = ref
+    path = name
+    for _ in range(32):
+        obj = state.heap.get(current) if current is not None else None
+        if obj is None:
+            break
+        for inv in obj.extra:
             if all(p == path or p.startswith(path + ".") for p in inv.paths):
                 found.append((inv, path))
+        if obj.owner is None:
+            break
+        current, path = obj.owner[0], f"{obj.owner[1]}.{path}"
     return found
 
 
@@ -145,7 +153,7 @@ def read_raw(
     marked with `default_of`."""
     obj = state.heap[ref]
     if name in obj.fields:
-        return obj.fields[name]
+        return state.use(obj.fields[name])
     spec = field_spec(ctx, state, ref, name)
     if spec is None:
         return Value("unknown")

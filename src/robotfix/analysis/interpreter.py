@@ -157,7 +157,7 @@ class Interpreter(CallEvaluator):
         if name in scope.local_names:
             bound = state.env.get(name)
             if isinstance(bound, Value):
-                return bound
+                return state.use(bound)
             decl = scope.decls.get(name)
             if isinstance(bound, MaybeUnbound):
                 if (
@@ -435,9 +435,25 @@ class Interpreter(CallEvaluator):
             state.reachable = False  # sys.exit(1) ends this path
         return state
 
+    def _may_not_return(self, func: ast.expr) -> bool:
+        """A cheap first look: a name that could be one of the calls below."""
+        name = func.id if isinstance(func, ast.Name) else getattr(func, "attr", "")
+        return (
+            name in NO_RETURN_NAMES
+            or (isinstance(func, ast.Name) and name in self.ctx.imports)
+            or name in self.program.functions
+            or name in self.nested
+            or (
+                self.function is not None
+                and f"{self.function.class_name}.{name}" in self.program.functions
+            )
+        )
+
     def _never_returns(self, func: ast.expr) -> bool:
         """`sys.exit()`, `pytest.fail()`, or a function of this file that can only
         raise: the path ends there."""
+        if not self._may_not_return(func):
+            return False
         module = self.scope.module()
         known: Function | None = None
         if isinstance(func, ast.Name):
@@ -895,6 +911,11 @@ def _catches_name_error(kind: ast.expr | None) -> bool:
     if isinstance(kind, ast.Tuple):
         return any(_catches_name_error(e) for e in kind.elts)
     return isinstance(kind, ast.Name) and kind.id in NAME_ERRORS
+
+
+NO_RETURN_NAMES = frozenset(
+    {q.rsplit(".", 1)[-1] for q in NO_RETURN} | {"exit", "quit", "assert_never"}
+)
 
 
 def _no_return(qualified: str | None) -> bool:

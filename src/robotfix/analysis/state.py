@@ -11,7 +11,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from typing import Protocol
 
-from robotfix.analysis.values import MaybeDefault, MsgObj, Value
+from robotfix.analysis.values import Defs, MaybeDefault, MsgObj, Value
 from robotfix.annotations import ast as A
 
 
@@ -37,6 +37,12 @@ class State:
     # How often an unknown object (by its term) may have been changed on this path:
     # its attributes read at one version are the same values.
     versions: dict[A.Expr, int] = field(default_factory=dict)
+    defined: set[int] = field(default_factory=set)  # keys of the Defs in `facts`
+    # What the values merged at joins are, by symbol: the facts (keyed, to be added
+    # once) that tie each to what each path held. They join a path's facts only
+    # where the value is read (`use`), so that a merge nobody reads costs the solver
+    # nothing. One table for the states of one function (symbols are unique).
+    defs: dict[int, Defs] = field(default_factory=dict)
 
     def fork(self) -> State:
         return State(
@@ -45,7 +51,27 @@ class State:
             list(self.facts),
             self.reachable,
             dict(self.versions),
+            set(self.defined),
+            self.defs,
         )
+
+    def use(self, value: Value) -> Value:
+        """A value is read: if it was merged at a join, what it is holds from here."""
+        term = value.term
+        if type(term) is A.Sym and term.ident in self.defs:
+            for key, fact in self.defs[term.ident]:
+                if key not in self.defined:
+                    self.defined.add(key)
+                    self.facts.append(fact)
+        return value
+
+    def defs_of(self, value: Value) -> Defs:
+        term = value.term
+        return self.defs.get(term.ident, ()) if isinstance(term, A.Sym) else ()
+
+    def pending(self, defs: Defs) -> list[A.Expr]:
+        """The facts of `defs` this path does not hold yet."""
+        return [fact for key, fact in defs if key not in self.defined]
 
     def changed(self, value: Value) -> None:
         """Code may have changed this object: its attributes are read anew."""
@@ -77,22 +103,32 @@ class Joiner(Protocol):
 def join(a: State, b: State, joiner: Joiner) -> State:
     """Merge two paths.
 
-    A merged value `s` is tied to each side by a fact (`s == x` on the first path,
-    `s == y` on the second) inside the disjunction of what the paths assumed. Where
-    the paths differ in what is bound or set, a selector `p` names the first path,
-    so that "unbound when not p" can be asked later under the facts of a read.
+    The facts become the common prefix and the disjunction `A or B` of what each
+    path added. A merged value `s` gets a selector `p` for the join, defined by
+    `(p and A) or (not p and B)`, and `(p and s == x) or (not p and s == y)`: both
+    are added to a path's facts only where `s` is read (`State.use`). The same
+    selector says when a name is unbound or a field unset ("when not p"), for a
+    read to ask under its own facts.
     """
     if not a.reachable:
         return b
     if not b.reachable:
         return a
-    extra_a: list[A.Expr] = []
-    extra_b: list[A.Expr] = []
-    chosen: list[A.Expr] = []
+    common = _common(a.facts, b.facts)
+    rest_a, rest_b = a.facts[common:], b.facts[common:]
+    chosen: list[tuple[A.Expr, Defs]] = []
 
-    def selector() -> A.Expr:
+    def selector() -> tuple[A.Expr, Defs]:
+        """The join's selector and the fact that defines it."""
         if not chosen:
-            chosen.append(joiner.selector())
+            p = joiner.selector()
+            assert isinstance(p, A.Sym)
+            defines = A.Binary(
+                "or",
+                A.Binary("and", p, A.conjoin(rest_a)),
+                A.Binary("and", A.Unary("not", p), A.conjoin(rest_b)),
+            )
+            chosen.append((p, ((p.ident, defines),)))
         return chosen[0]
 
     def merge(x: Value, y: Value) -> Value:
@@ -104,12 +140,11 @@ def join(a: State, b: State, joiner: Joiner) -> State:
         value = x
         if x != y:
             value = joiner.merged(x, y)
-            if value.term is not None and x.term is not None and y.term is not None:
-                extra_a.append(A.Binary("==", value.term, x.term))
-                extra_b.append(A.Binary("==", value.term, y.term))
-            if value.kind == "unknown" and value.term is not None:
-                extra_a.extend(joiner.ties(value, x, a))
-                extra_b.extend(joiner.ties(value, y, b))
+            if isinstance(value.term, A.Sym):
+                p, defines = selector()
+                tie = _tie(value, x, y, a, b, p, joiner)
+                if tie is not None:
+                    a.defs[value.term.ident] = (*defines, (value.term.ident, tie))
         known = ux or uy
         if known is not None:
             when = _either(
@@ -137,17 +172,16 @@ def join(a: State, b: State, joiner: Joiner) -> State:
             known = known_a and known_b
             env[name] = MaybeUnbound(_either(selector(), wa, wb) if known else None)
     heap = _join_heaps(a, b, joiner, merge)
-    rest_a = extra_a
-    rest_b = extra_b
-    if chosen:
-        rest_a = [chosen[0], *extra_a]
-        rest_b = [A.Unary("not", chosen[0]), *extra_b]
-    facts = _join_facts(a.facts + rest_a, b.facts + rest_b)
+    facts = a.facts[:common]
+    if rest_a and rest_b:
+        facts.append(A.Binary("or", A.conjoin(rest_a), A.conjoin(rest_b)))
     versions = dict(a.versions)
     for term, version in b.versions.items():
         if versions.get(term, 0) != version:
             versions[term] = max(versions.get(term, 0), version) + 1
-    return State(env, heap, facts, True, versions)
+    if b.defs is not a.defs:
+        a.defs.update(b.defs)
+    return State(env, heap, facts, True, versions, a.defined & b.defined, a.defs)
 
 
 def _join_heaps(
@@ -164,6 +198,8 @@ def _join_heaps(
         for ref in todo:
             done.add(ref)
             x_obj, y_obj = a.heap[ref], b.heap[ref]
+            if x_obj.fields.keys() == y_obj.fields.keys():
+                continue
             for fname in sorted(x_obj.fields.keys() - y_obj.fields.keys()):
                 if x_obj.fields[fname].ref is not None:
                     joiner.complete(b, ref, fname)
@@ -195,6 +231,35 @@ def _join_heaps(
     return heap
 
 
+def _tie(
+    merged: Value,
+    x: Value,
+    y: Value,
+    a: State,
+    b: State,
+    p: A.Expr,
+    joiner: Joiner,
+) -> A.Expr | None:
+    """`merged` is x where p holds, y where it does not (and what x and y are, if
+    they were merged earlier and their paths never read them)."""
+    sides: list[list[A.Expr]] = []
+    for side, state in ((x, a), (y, b)):
+        parts: list[A.Expr] = []
+        if merged.term is not None and side.term is not None:
+            parts.append(A.Binary("==", merged.term, side.term))
+        if merged.kind == "unknown":
+            parts += joiner.ties(merged, side, state)
+        parts += state.pending(state.defs_of(side))
+        sides.append(parts)
+    if not sides[0] and not sides[1]:
+        return None
+    return A.Binary(
+        "or",
+        A.Binary("and", p, A.conjoin(sides[0])),
+        A.Binary("and", A.Unary("not", p), A.conjoin(sides[1])),
+    )
+
+
 def _unset(value: Value) -> MaybeDefault | None:
     """When a field value is still its ROS default (None: never)."""
     if value.default_of is not None and value.term is not None:
@@ -212,8 +277,12 @@ def _unbound(binding: Binding | None) -> tuple[bool, A.Expr | None]:
     return True, None
 
 
-def _either(p: A.Expr, on_a: A.Expr | None, on_b: A.Expr | None) -> A.Expr:
-    """`on_a` on the path where `p` holds, `on_b` on the other (None: false)."""
+def _either(
+    chosen: tuple[A.Expr, Defs], on_a: A.Expr | None, on_b: A.Expr | None
+) -> A.Expr:
+    """`on_a` on the path where the selector holds, `on_b` on the other (None:
+    false), with the selector's definition: a condition a read can ask alone."""
+    p, defines = chosen
     parts = []
     if on_a is not None:
         parts.append(p if on_a == A.TRUE else A.Binary("and", p, on_a))
@@ -223,14 +292,11 @@ def _either(p: A.Expr, on_a: A.Expr | None, on_b: A.Expr | None) -> A.Expr:
     result = parts[0]
     for part in parts[1:]:
         result = A.Binary("or", result, part)
-    return result
+    return A.conjoin([fact for _, fact in defines] + [result])
 
 
-def _join_facts(a: list[A.Expr], b: list[A.Expr]) -> list[A.Expr]:
+def _common(a: list[A.Expr], b: list[A.Expr]) -> int:
     common = 0
     while common < min(len(a), len(b)) and a[common] is b[common]:
         common += 1
-    rest_a, rest_b = a[common:], b[common:]
-    if not rest_a or not rest_b:
-        return a[:common]
-    return [*a[:common], A.Binary("or", A.conjoin(rest_a), A.conjoin(rest_b))]
+    return common

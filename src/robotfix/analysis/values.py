@@ -23,6 +23,9 @@ class Uninit:
     declared: bool  # declared with an annotation but never assigned, vs never bound
 
 
+Defs = tuple[tuple[int, A.Expr], ...]
+
+
 @dataclass(frozen=True)
 class MaybeDefault:
     """A message field set on some paths only: on the paths where `when` holds (a
