@@ -35,6 +35,8 @@ LEAVING = frozenset(
         "send_goal_async",
     }
 )
+# Methods after which a container holds an element.
+FILLING = frozenset({"append", "appendleft", "insert", "add"})
 PI_BOUND = A.Num(Fraction(355, 113), False)  # > pi: a sound bound for angles
 ONE = A.Num(Fraction(1), True)
 ZERO = A.Num(Fraction(0), True)
@@ -126,7 +128,7 @@ class CallEvaluator(ExpressionEvaluator):
         for value in [*args, *kwargs.values()]:
             if value.kind == "msg" and value.ref is not None:
                 heap.havoc(state, value.ref)
-            elif value.kind == "unknown":
+            elif value.kind == "unknown" and type(value.term) is A.Sym:
                 state.changed(value)
         names = [a for a in node.args if isinstance(a, ast.Name)]
         if isinstance(node.func, ast.Attribute):
@@ -145,8 +147,13 @@ class CallEvaluator(ExpressionEvaluator):
                 state.env.pop(attribute_key(owner) or "", None)
         for name in names:
             bound = state.env.get(name.id)
-            if isinstance(bound, Value):
+            if isinstance(bound, Value) and bound.kind == "unknown":
                 state.changed(bound)
+                if (
+                    isinstance(bound.term, A.Sym)
+                    and getattr(node.func, "attr", "") in FILLING
+                ):  # `xs.append(v)`: xs is not empty now
+                    state.assume(self.truthy(bound, node, state))
             if isinstance(bound, Value) and bound.kind == "instance":
                 prefix = name.id + "."
                 for key in [k for k in state.env if k.startswith(prefix)]:
@@ -313,7 +320,11 @@ class CallEvaluator(ExpressionEvaluator):
             of = args[0]
             key: tuple[object, ...] | None = None
             if isinstance(of.term, A.Sym):
-                key = ("len", of.term, state.versions.get(of.term, 0))
+                version = state.version(of.term)
+                size = self.ctx.sizes.get(of.term.ident) if not version else None
+                if size is not None:  # a display: `len([])` is 0
+                    return Value("int", A.Num(Fraction(size), True))
+                key = ("len", of.term.ident, version)
             elif of.kind == "module":
                 key = ("len", of.name)
             value = (
@@ -330,9 +341,9 @@ class CallEvaluator(ExpressionEvaluator):
             # one answer for one object and one class (or attribute name)
             if not isinstance(first.term, A.Sym):
                 return None
-            version = state.versions.get(first.term, 0)
+            version = state.version(first.term)
             second = self.ctx.source.segment(node.args[1])
-            key = (name, first.term, second, version)
+            key = (name, first.term.ident, second, version)
             return self.ctx.derived(key, "bool", node)
         if name in ("min", "max") and len(args) == 1:  # of an iterable: its unit
             return self.unknown(node, "unknown", first.unit)

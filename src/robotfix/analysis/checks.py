@@ -15,7 +15,7 @@ from robotfix import messages
 from robotfix.analysis import heap
 from robotfix.analysis.context import FileContext
 from robotfix.analysis.state import State
-from robotfix.analysis.values import ObjInvariant, Value
+from robotfix.analysis.values import MaybeDefault, ObjInvariant, Value
 from robotfix.analysis.vc import VC, Proved, Undecided, Unproven, Violated
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
@@ -371,7 +371,8 @@ class Checker:
             stored = self.ctx.fresh(spec.kind, f"`{target}`", unit)
             for rule, path in rules:
                 state.assume(A.substitute(rule.predicate, {path: stored.known_term}))
-        obj.fields[name] = replace(stored, default_of=None, unset=None)
+        obj.fields[name] = replace(stored, default_of=None)
+        obj.set_on_all_paths(name)
         obj.reported.discard(name)
 
     def adopt(
@@ -395,7 +396,11 @@ class Checker:
             found = heap.resolve_path(
                 self.ctx, state, sub_ref, path, f"{target}.{path}"
             )
-            if found.default_of is None and found.unset is None and found.ref is None:
+            if (
+                found.default_of is None
+                and found.ref is None
+                and heap.unset_at(self.ctx, state, sub_ref, path) is None
+            ):
                 held[path] = found
         state.heap[sub_ref].owner = (ref, name)
         state.heap[ref].fields[name] = value
@@ -479,12 +484,15 @@ class Checker:
         return True
 
     def _unset_on_some_path(
-        self, state: State, rule: FieldRule, value: Value, site: ast.AST, label: str
+        self,
+        state: State,
+        rule: FieldRule,
+        unset: MaybeDefault,
+        site: ast.AST,
+        label: str,
     ) -> None:
         """RF302 for a field left unset on some path to a publish, where its
         default breaks its refinement."""
-        unset = value.unset
-        assert unset is not None
         owner_ref, fname = unset.owner
         owner = state.heap.get(owner_ref)
         if owner is None or fname in owner.reported:
@@ -559,9 +567,11 @@ class Checker:
                 state.heap[owner_ref].reported.add(fname)
             return
         if len(rule.paths) == 1:
-            value = next(iter(values.values()))
-            if value.unset is not None and publishing:
-                self._unset_on_some_path(state, rule, value, site, label)
+            if publishing:
+                path = next(iter(rule.paths))
+                maybe = heap.unset_at(self.ctx, state, ref, path)
+                if maybe is not None:
+                    self._unset_on_some_path(state, rule, maybe, site, label)
             if not single:
                 return
         goal = A.substitute(rule.predicate, terms)  # type: ignore[arg-type]
@@ -618,6 +628,7 @@ class Checker:
                 state, ref, _object_rule(inv), site, label, leaving, True, leaving
             )
         obj.extra += tuple(inv for inv in rules if inv not in obj.extra)
+        state.shared.extras = True
 
     def assume_rules(
         self, state: State, ref: int, rules: tuple[ObjInvariant, ...], label: str
@@ -635,6 +646,7 @@ class Checker:
                 terms = {p: v.known_term for p, v in values.items()}
                 state.assume(A.substitute(inv.predicate, terms))
         obj.extra += tuple(inv for inv in rules if inv not in obj.extra)
+        state.shared.extras = state.shared.extras or bool(rules)
 
     def _name_of(self, site: ast.AST) -> str:
         if (

@@ -68,6 +68,7 @@ class FileContext:
         self._next = 0
         self._sub_ids: dict[tuple[int, str], int] = {}
         self._derived: dict[tuple[object, ...], Value] = {}
+        self.sizes: dict[int, int] = {}  # symbol of a list, set or dict display -> len
         self.steps = 0
         self.index = FileIndex()
         self.imports: dict[str, str] = {}  # local name -> qualified name

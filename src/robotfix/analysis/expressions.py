@@ -173,8 +173,8 @@ class ExpressionEvaluator:
             return self.instance_attribute(base, node.value.id, node, state)
         if base.kind == "unknown" and isinstance(base.term, A.Sym):
             # `args.verbose` twice is one value, until something may change args
-            version = state.versions.get(base.term, 0)
-            key = ("attribute", base.term, node.attr, version)
+            version = state.version(base.term)
+            key = ("attribute", base.term.ident, node.attr, version)
             return self.ctx.derived(key, "unknown", node)
         return self.unknown(node)
 
@@ -449,7 +449,8 @@ class ExpressionEvaluator:
                 return A.Bool(False)
             return self.ctx.derived(("is None", left.ref), "bool", "`is None`").term
         if isinstance(left.term, A.Sym):
-            return self.ctx.derived(("is None", left.term), "bool", "`is None`").term
+            key = ("is None", left.term.ident)
+            return self.ctx.derived(key, "bool", "`is None`").term
         if left.kind in STATIC_VALUES:
             return A.Bool(False)
         return None
@@ -505,12 +506,12 @@ class ExpressionEvaluator:
         self.eval_children(node, state)
         value = self.unknown(node)
         items = node.keys if isinstance(node, ast.Dict) else node.elts
-        if not any(i is None or isinstance(i, ast.Starred) for i in items):
-            size = len(items)
-            truth = self.truthy(value, node, state)
-            state.assume(truth if size else A.Unary("not", truth))
-            length = self.ctx.derived(("len", value.term, 0), "int", node)
-            state.assume(A.Binary("==", length.known_term, A.Num(Fraction(size), True)))
+        term = value.term
+        if isinstance(term, A.Sym) and not any(
+            i is None or isinstance(i, ast.Starred) for i in items
+        ):
+            self.ctx.sizes[term.ident] = len(items)
+            state.shared.watched.add(term.ident)  # `xs = []; xs.append(1)` changes it
         return value
 
     eval_Set = eval_Dict = eval_List
@@ -574,9 +575,13 @@ class ExpressionEvaluator:
             return A.Binary("!=", value.term, A.Str(""))
         if value.kind == "none":
             return A.Bool(False)
-        if isinstance(value.term, A.Sym):
-            version = state.versions.get(value.term, 0) if state else 0
-            key = ("truthy", value.term, version)
+        term = value.term
+        if type(term) is A.Sym:
+            version = state.version(term) if state else 0
+            size = self.ctx.sizes.get(term.ident) if not version else None
+            if size is not None:  # a display: `[]` is false
+                return A.Bool(size > 0)
+            key = ("truthy", term.ident, version)
             return self.ctx.derived(key, "bool", node).known_term
         if value.kind == "module":  # `if TYPE_CHECKING:`, `if sys.flags.debug:`
             if value.name.endswith("TYPE_CHECKING"):

@@ -11,7 +11,7 @@ from fractions import Fraction
 
 from robotfix.analysis.context import FileContext
 from robotfix.analysis.state import State
-from robotfix.analysis.values import MsgObj, ObjInvariant, Value
+from robotfix.analysis.values import MaybeDefault, MsgObj, ObjInvariant, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.units import Unit, UnitError, label, resolve
 from robotfix.ros.catalog import FieldSpec, FieldUnit, Invariant, MsgSpec
@@ -67,17 +67,26 @@ def contexts(
     """(message spec, path relative to it) for field `name` of `ref`, outermost
     first."""
     out: list[tuple[MsgSpec, str]] = []
-    for current, path in chain(state, ref, name):
-        spec = ctx.catalog.lookup(state.heap[current].type)
+    path = name
+    current: int | None = ref
+    while current is not None and current in state.heap and len(out) < 32:
+        obj = state.heap[current]
+        spec = ctx.catalog.lookup(obj.type)
         if spec is not None:
             out.append((spec, path))
+        if obj.owner is None:
+            break
+        current, path = obj.owner[0], f"{obj.owner[1]}.{path}"
+    out.reverse()
     return out
 
 
 def extras_on(state: State, ref: int, name: str) -> list[tuple[ObjInvariant, str]]:
     """Refinements of variables that a message reached (`Annotated[Twist, ...]`)
     that mention only field `name` of `ref` (and what lies below it)."""
-    found = []
+    found: list[tuple[ObjInvariant, str]] = []
+    if not state.shared.extras:
+        return found
     current: int | None = ref
     path = name
     for _ in range(32):
@@ -215,6 +224,19 @@ def resolve_path(
     return value
 
 
+def unset_at(
+    ctx: FileContext, state: State, ref: int, path: str
+) -> MaybeDefault | None:
+    """When the field at `path` inside message `ref` still has its default, if it
+    was set on some paths only."""
+    inner, _, leaf = path.rpartition(".")
+    holder: int | None = ref
+    if inner:
+        holder = resolve_path(ctx, state, ref, inner, "").ref
+    obj = state.heap.get(holder) if holder is not None else None
+    return obj.unset.get(leaf) if obj is not None and obj.unset else None
+
+
 def havoc(state: State, ref: int) -> None:
     """Unknown code may have changed any field of this message and its sub-messages."""
     obj = state.heap.get(ref)
@@ -225,3 +247,4 @@ def havoc(state: State, ref: int) -> None:
             havoc(state, value.ref)
     obj.origin = "unknown"
     obj.fields = {k: v for k, v in obj.fields.items() if v.ref is not None}
+    obj.unset = None

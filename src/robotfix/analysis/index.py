@@ -33,8 +33,6 @@ class FileIndex:
     )  # (class, call)
     # (class name, attribute, annotation) for `self.x: Annotated[...]` in methods
     attributes: list[tuple[str, str, ast.expr]] = field(default_factory=list)
-    # (class name, attribute, called) for `self.x = Called(...)` in methods
-    constructed: list[tuple[str, str, ast.expr]] = field(default_factory=list)
     class_scopes: set[int] = field(default_factory=set)
 
 
@@ -99,8 +97,6 @@ def _drain(index: FileIndex, todo: Todo, root: int) -> None:
             names.local_names.add(node.name)  # type: ignore[attr-defined]
         elif kind is ast.AnnAssign:
             _record_annotation(index, names, node, cls, self_name)  # type: ignore[arg-type]
-        elif kind is ast.Assign and self_name is not None and cls is not None:
-            _record_construction(index, node, cls, self_name)  # type: ignore[arg-type]
         elif kind is ast.Call:
             index.calls.append((cls, node))  # type: ignore[arg-type]
         for name in node._fields:
@@ -175,17 +171,3 @@ def _record_annotation(
         and cls is not None
     ):
         index.attributes.append((cls, target.attr, node.annotation))
-
-
-def _record_construction(
-    index: FileIndex, node: ast.Assign, cls: str, self_name: str
-) -> None:
-    if not isinstance(node.value, ast.Call):
-        return
-    for target in node.targets:
-        if (
-            isinstance(target, ast.Attribute)
-            and isinstance(target.value, ast.Name)
-            and target.value.id == self_name
-        ):
-            index.constructed.append((cls, target.attr, node.value.func))

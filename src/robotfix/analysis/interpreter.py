@@ -31,7 +31,7 @@ from robotfix.analysis.state import MAYBE, MaybeUnbound, State, join
 from robotfix.analysis.values import NONE, Uninit, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
-from robotfix.astwalk import walk
+from robotfix.astwalk import children, walk
 
 NO_RETURN = frozenset(
     {
@@ -157,7 +157,7 @@ class Interpreter(CallEvaluator):
         if name in scope.local_names:
             bound = state.env.get(name)
             if isinstance(bound, Value):
-                return state.use(bound)
+                return state.use(bound) if state.shared.defs else bound
             decl = scope.decls.get(name)
             if isinstance(bound, MaybeUnbound):
                 if (
@@ -243,9 +243,7 @@ class Interpreter(CallEvaluator):
                 value = self.check.assign_refined(
                     state, target.id, decl, value, self.site, lookup
                 )
-            state.env[target.id] = replace(
-                value, uninit=None, default_of=None, unset=None
-            )
+            state.env[target.id] = replace(value, uninit=None, default_of=None)
         elif isinstance(target, ast.Attribute):
             base = self.eval(target.value, state)
             if base.kind == "instance" and isinstance(target.value, ast.Name):
@@ -284,7 +282,7 @@ class Interpreter(CallEvaluator):
             value = self.check.assign_refined(
                 state, key, decl, value, self.site, lookup
             )
-        state.env[key] = replace(value, uninit=None, default_of=None, unset=None)
+        state.env[key] = replace(value, uninit=None, default_of=None)
 
     def bind_parameters(self, state: State) -> None:
         """Parameters: `self`, messages that arrive at a callback, refined values."""
@@ -371,6 +369,7 @@ class Interpreter(CallEvaluator):
         attributes and the globals that functions set may change there too.
         Returns the names they may bind."""
         calls = False
+        watched = state.shared.watched  # only their changes need a new version
         bound_at: dict[str, ast.AST] = {}
         constant: dict[str, set[str]] = {}
         for node in nodes:
@@ -386,11 +385,14 @@ class Interpreter(CallEvaluator):
                     if type(child.ctx) is ast.Store:  # type: ignore[attr-defined]
                         key = attribute_key(child)  # type: ignore[arg-type]
                         state.env.pop(key or "", None)
-                        self._changed_root(child, state)
+                        if watched:
+                            self._changed_root(child, state)
                 elif kind is ast.Call:
                     calls = True
-                    for arg in [child.func, *child.args, *child.keywords]:  # type: ignore[attr-defined]
-                        self._changed_root(arg, state)
+                    if watched:
+                        call: ast.Call = child  # type: ignore[assignment]
+                        for arg in [call.func, *call.args, *call.keywords]:
+                            self._changed_root(arg, state)
                 elif kind is ast.Assign or kind is ast.AugAssign:
                     _constant_stores(child, constant)  # type: ignore[arg-type]
                 elif kind in BINDER_KINDS:
@@ -425,7 +427,7 @@ class Interpreter(CallEvaluator):
             node = node.value
         if isinstance(node, ast.Name):
             bound = state.env.get(node.id)
-            if isinstance(bound, Value):
+            if isinstance(bound, Value) and bound.kind == "unknown":
                 state.changed(bound)
 
     # -- simple statements ---------------------------------------------------
@@ -437,16 +439,22 @@ class Interpreter(CallEvaluator):
 
     def _may_not_return(self, func: ast.expr) -> bool:
         """A cheap first look: a name that could be one of the calls below."""
-        name = func.id if isinstance(func, ast.Name) else getattr(func, "attr", "")
-        return (
-            name in NO_RETURN_NAMES
-            or (isinstance(func, ast.Name) and name in self.ctx.imports)
-            or name in self.program.functions
-            or name in self.nested
-            or (
-                self.function is not None
-                and f"{self.function.class_name}.{name}" in self.program.functions
+        if isinstance(func, ast.Name):
+            name = func.id
+            return (
+                name in NO_RETURN_NAMES
+                or name in self.ctx.imports
+                or name in self.program.functions
+                or name in self.nested
             )
+        name = getattr(func, "attr", "")
+        if name in NO_RETURN_NAMES:
+            return True
+        return (
+            self.function is not None
+            and self.function.class_name is not None
+            and isinstance(getattr(func, "value", None), ast.Name)
+            and f"{self.function.class_name}.{name}" in self.program.functions
         )
 
     def _never_returns(self, func: ast.expr) -> bool:
@@ -458,7 +466,7 @@ class Interpreter(CallEvaluator):
         known: Function | None = None
         if isinstance(func, ast.Name):
             if func.id in self.nested:  # a helper defined in this function
-                return never_returns(self.nested[func.id], self._ends_path)
+                return self._function_never_returns(self.nested[func.id])
             if func.id in self.scope.local_names:  # `from pytest import fail` here
                 return _no_return(self.ctx.qualname(func))
             if func.id in ("exit", "quit") and func.id not in module.local_names:
@@ -474,8 +482,14 @@ class Interpreter(CallEvaluator):
             method = f"{self.function.class_name}.{func.attr}"
             known = self.program.functions.get(method)
         if known is not None:
-            return never_returns(known.node, self._ends_path)
+            return self._function_never_returns(known.node)
         return _no_return(self.ctx.qualname(func))
+
+    def _function_never_returns(self, node: ast.AST) -> bool:
+        known = self.program.ends.get(id(node))
+        if known is None:
+            known = self.program.ends[id(node)] = never_returns(node, self._ends_path)
+        return known
 
     def _ends_path(self, stmt: ast.stmt) -> bool:
         """A last statement after which a function cannot go on."""
@@ -484,8 +498,11 @@ class Interpreter(CallEvaluator):
         if not isinstance(stmt, ast.Expr) or not isinstance(stmt.value, ast.Call):
             return False
         func = stmt.value.func
-        if isinstance(func, ast.Name) and func.id in ("exit", "quit"):
+        name = func.id if isinstance(func, ast.Name) else getattr(func, "attr", "")
+        if name in ("exit", "quit") and isinstance(func, ast.Name):
             return True
+        if name not in NO_RETURN_NAMES and name not in self.ctx.imports:
+            return False
         return _no_return(self.ctx.qualname(func))
 
     def visit_Assign(self, node: ast.Assign, state: State) -> State:
@@ -735,7 +752,8 @@ class Interpreter(CallEvaluator):
         if value.kind == "none":
             return A.TRUE
         if isinstance(value.term, A.Sym) and value.kind == "unknown":
-            return self.ctx.derived(("is None", value.term), "bool", "`is None`").term
+            key = ("is None", value.term.ident)
+            return self.ctx.derived(key, "bool", "`is None`").term
         if value.kind in ("int", "float", "bool", "str", "instance"):
             return A.Bool(False)
         return None
@@ -1021,15 +1039,22 @@ def _breaks(body: list[ast.stmt]) -> bool:
     todo: list[ast.AST] = list(body)
     while todo:
         node = todo.pop()
-        if isinstance(node, ast.Break):
+        kind = type(node)
+        if kind is ast.Break:
             return True
-        if isinstance(node, (ast.For, ast.AsyncFor, ast.While)):
-            todo.extend(node.orelse)
-        elif not isinstance(
-            node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.expr)
-        ):
-            todo.extend(ast.iter_child_nodes(node))
+        if kind in LOOPS:
+            todo.extend(node.orelse)  # type: ignore[attr-defined]
+        elif kind in COMPOUND:
+            todo.extend(children(node))
     return False
+
+
+LOOPS = frozenset({ast.For, ast.AsyncFor, ast.While})
+# Statements with statements inside (a `break` cannot hide in an expression).
+COMPOUND = frozenset(
+    {ast.If, ast.With, ast.AsyncWith, ast.Try, ast.TryStar, ast.Match, ast.match_case}
+    | {ast.ExceptHandler}
+)
 
 
 def _surely_nonempty(node: ast.expr) -> bool:

@@ -59,9 +59,12 @@ class Program:
     bases: dict[str, list[str]] = field(default_factory=dict)  # classes of this file
     # module names that functions declare `global` (callbacks may set them)
     shared_globals: set[str] = field(default_factory=set)
+    ends: dict[int, bool] = field(default_factory=dict)  # id(def node) -> never returns
 
     def message_attribute(self, class_name: str, attribute: str) -> str | None:
         """The message type `self.<attribute>` holds in methods of the class."""
+        if not self.messages:
+            return None
         seen: set[str] = set()
         todo = [class_name]
         while todo:
@@ -151,13 +154,67 @@ def collect(ctx: FileContext, tree: ast.Module, module: Scope) -> Program:
                 table[attribute] = found
     for class_name, attribute, annotation in ctx.index.attributes:
         _add_message(program, class_name, attribute, ctx.msg_type_of(annotation))
-    for class_name, attribute, called in ctx.index.constructed:
-        _add_message(program, class_name, attribute, _constructed_type(ctx, called))
+    for node in tree.body:
+        if isinstance(node, ast.ClassDef):
+            for attribute, called in _constructions(node):
+                msg_type = _constructed_type(ctx, called)
+                _add_message(program, node.name, attribute, msg_type)
     _collect_callbacks(ctx, program)
     for scope_id, names in ctx.index.scopes.items():
         if scope_id != id(tree):
             program.shared_globals |= names.global_names
     return program
+
+
+def _constructions(cls: ast.ClassDef) -> list[tuple[str, ast.expr]]:
+    """(attribute, callee) for each `self.x = Callee(...)` in the methods of a
+    class, found through statements only (a message is not built in an
+    expression)."""
+    found: list[tuple[str, ast.expr]] = []
+    for method in cls.body:
+        if type(method) not in (ast.FunctionDef, ast.AsyncFunctionDef):
+            continue
+        params = [*method.args.posonlyargs, *method.args.args]  # type: ignore[attr-defined]
+        if not params:
+            continue
+        self_name = params[0].arg
+        todo: list[ast.stmt] = list(method.body)  # type: ignore[attr-defined]
+        while todo:
+            stmt = todo.pop()
+            kind = type(stmt)
+            if kind is ast.Assign:
+                value = stmt.value  # type: ignore[attr-defined]
+                if type(value) is ast.Call:
+                    for target in stmt.targets:  # type: ignore[attr-defined]
+                        if (
+                            type(target) is ast.Attribute
+                            and type(target.value) is ast.Name
+                            and target.value.id == self_name
+                        ):
+                            found.append((target.attr, value.func))
+            elif kind in _BLOCKS:
+                todo.extend(stmt.body)  # type: ignore[attr-defined]
+                todo.extend(getattr(stmt, "orelse", ()))
+                if kind is ast.Try or kind is ast.TryStar:
+                    todo.extend(stmt.finalbody)  # type: ignore[attr-defined]
+                    for handler in stmt.handlers:  # type: ignore[attr-defined]
+                        todo.extend(handler.body)
+    found.reverse()
+    return found
+
+
+_BLOCKS = frozenset(
+    {
+        ast.If,
+        ast.For,
+        ast.AsyncFor,
+        ast.While,
+        ast.With,
+        ast.AsyncWith,
+        ast.Try,
+        ast.TryStar,
+    }
+)
 
 
 def _constructed_type(ctx: FileContext, called: ast.expr) -> str | None:

@@ -29,20 +29,31 @@ Binding = Value | MaybeUnbound
 
 
 @dataclass
+class Shared:
+    """What the states of one function share (symbols are unique to it)."""
+
+    # What the values merged at joins are, by symbol: the facts (keyed, to be added
+    # once) that tie each to what each path held. They join a path's facts only
+    # where the value is read (`State.use`), so that a merge nobody reads costs the
+    # solver nothing.
+    defs: dict[int, Defs] = field(default_factory=dict)
+    extras: bool = False  # some message carries a variable's refinement
+    # Unknown objects whose attributes, truth or length were read: only their
+    # changes need a new version.
+    watched: set[int] = field(default_factory=set)
+
+
+@dataclass
 class State:
     env: dict[str, Binding] = field(default_factory=dict)
     heap: dict[int, MsgObj] = field(default_factory=dict)
     facts: list[A.Expr] = field(default_factory=list)
     reachable: bool = True
-    # How often an unknown object (by its term) may have been changed on this path:
-    # its attributes read at one version are the same values.
-    versions: dict[A.Expr, int] = field(default_factory=dict)
-    defined: set[int] = field(default_factory=set)  # keys of the Defs in `facts`
-    # What the values merged at joins are, by symbol: the facts (keyed, to be added
-    # once) that tie each to what each path held. They join a path's facts only
-    # where the value is read (`use`), so that a merge nobody reads costs the solver
-    # nothing. One table for the states of one function (symbols are unique).
-    defs: dict[int, Defs] = field(default_factory=dict)
+    # How often an unknown object (by its symbol) may have been changed on this
+    # path: what was read of it at one version is the same value.
+    versions: dict[int, int] | None = None
+    defined: set[int] | None = None  # keys of the Shared.defs in `facts`
+    shared: Shared = field(default_factory=Shared)
 
     def fork(self) -> State:
         return State(
@@ -50,16 +61,19 @@ class State:
             {k: v.copy() for k, v in self.heap.items()},
             list(self.facts),
             self.reachable,
-            dict(self.versions),
-            set(self.defined),
-            self.defs,
+            dict(self.versions) if self.versions else None,
+            set(self.defined) if self.defined else None,
+            self.shared,
         )
 
     def use(self, value: Value) -> Value:
         """A value is read: if it was merged at a join, what it is holds from here."""
         term = value.term
-        if type(term) is A.Sym and term.ident in self.defs:
-            for key, fact in self.defs[term.ident]:
+        defs = self.shared.defs
+        if type(term) is A.Sym and term.ident in defs:
+            if self.defined is None:
+                self.defined = set()
+            for key, fact in defs[term.ident]:
                 if key not in self.defined:
                     self.defined.add(key)
                     self.facts.append(fact)
@@ -67,16 +81,27 @@ class State:
 
     def defs_of(self, value: Value) -> Defs:
         term = value.term
-        return self.defs.get(term.ident, ()) if isinstance(term, A.Sym) else ()
+        if isinstance(term, A.Sym):
+            return self.shared.defs.get(term.ident, ())
+        return ()
 
     def pending(self, defs: Defs) -> list[A.Expr]:
         """The facts of `defs` this path does not hold yet."""
-        return [fact for key, fact in defs if key not in self.defined]
+        defined = self.defined or set()
+        return [fact for key, fact in defs if key not in defined]
 
     def changed(self, value: Value) -> None:
         """Code may have changed this object: its attributes are read anew."""
-        if value.kind == "unknown" and isinstance(value.term, A.Sym):
-            self.versions[value.term] = self.versions.get(value.term, 0) + 1
+        term = value.term
+        if type(term) is A.Sym and term.ident in self.shared.watched:
+            if self.versions is None:
+                self.versions = {}
+            self.versions[term.ident] = self.versions.get(term.ident, 0) + 1
+
+    def version(self, term: A.Sym) -> int:
+        """The version of an unknown object, which from now on is watched."""
+        self.shared.watched.add(term.ident)
+        return self.versions.get(term.ident, 0) if self.versions else 0
 
     def assume(self, fact: A.Expr | None) -> None:
         if fact is not None and fact != A.TRUE:
@@ -116,6 +141,7 @@ def join(a: State, b: State, joiner: Joiner) -> State:
         return a
     common = _common(a.facts, b.facts)
     rest_a, rest_b = a.facts[common:], b.facts[common:]
+    path_a, path_b = A.conjoin(rest_a), A.conjoin(rest_b)
     chosen: list[tuple[A.Expr, Defs]] = []
 
     def selector() -> tuple[A.Expr, Defs]:
@@ -125,36 +151,35 @@ def join(a: State, b: State, joiner: Joiner) -> State:
             assert isinstance(p, A.Sym)
             defines = A.Binary(
                 "or",
-                A.Binary("and", p, A.conjoin(rest_a)),
-                A.Binary("and", A.Unary("not", p), A.conjoin(rest_b)),
+                A.Binary("and", p, path_a),
+                A.Binary("and", A.Unary("not", p), path_b),
             )
             chosen.append((p, ((p.ident, defines),)))
         return chosen[0]
 
     def merge(x: Value, y: Value) -> Value:
-        if x is y and x.default_of is None and x.unset is None:
+        if x is y or x == y:
             return x
-        ux, uy = _unset(x), _unset(y)
-        if x == y and ux == uy:
-            return x
-        value = x
-        if x != y:
-            value = joiner.merged(x, y)
-            if isinstance(value.term, A.Sym):
-                p, defines = selector()
-                tie = _tie(value, x, y, a, b, p, joiner)
-                if tie is not None:
-                    a.defs[value.term.ident] = (*defines, (value.term.ident, tie))
-        known = ux or uy
-        if known is not None:
-            when = _either(
-                selector(),
-                None if ux is None else ux.when,
-                None if uy is None else uy.when,
-            )
-            unset = MaybeDefault(when, known.default, known.owner)
-            value = replace(value, default_of=None, unset=unset)
+        value = joiner.merged(x, y)
+        if isinstance(value.term, A.Sym):
+            p, defines = selector()
+            tie = _tie(value, x, y, a, b, p, joiner)
+            if tie is not None:
+                a.shared.defs[value.term.ident] = (*defines, (value.term.ident, tie))
         return value
+
+    def unset(ux: MaybeDefault | None, uy: MaybeDefault | None) -> MaybeDefault | None:
+        """A field default on the paths where `ux` (`uy`) holds, if any."""
+        if ux == uy:
+            return ux
+        known = ux or uy
+        assert known is not None
+        when = _either(
+            selector(),
+            None if ux is None else ux.when,
+            None if uy is None else uy.when,
+        )
+        return MaybeDefault(when, known.default, known.owner)
 
     env: dict[str, Binding] = {}
     for name in sorted(a.env.keys() | b.env.keys()):
@@ -171,35 +196,47 @@ def join(a: State, b: State, joiner: Joiner) -> State:
             (known_a, wa), (known_b, wb) = _unbound(x), _unbound(y)
             known = known_a and known_b
             env[name] = MaybeUnbound(_either(selector(), wa, wb) if known else None)
-    heap = _join_heaps(a, b, joiner, merge)
+    heap = _join_heaps(a, b, joiner, merge, unset)
     facts = a.facts[:common]
     if rest_a and rest_b:
-        facts.append(A.Binary("or", A.conjoin(rest_a), A.conjoin(rest_b)))
-    versions = dict(a.versions)
-    for term, version in b.versions.items():
+        facts.append(A.Binary("or", path_a, path_b))
+    versions = dict(a.versions) if a.versions else None
+    for term, version in (b.versions or {}).items():
+        versions = versions or {}
         if versions.get(term, 0) != version:
             versions[term] = max(versions.get(term, 0), version) + 1
-    if b.defs is not a.defs:
-        a.defs.update(b.defs)
-    return State(env, heap, facts, True, versions, a.defined & b.defined, a.defs)
+    defined = a.defined & b.defined if a.defined and b.defined else None
+    return State(env, heap, facts, True, versions, defined, a.shared)
 
 
 def _join_heaps(
-    a: State, b: State, joiner: Joiner, merge: Callable[[Value, Value], Value]
+    a: State,
+    b: State,
+    joiner: Joiner,
+    merge: Callable[[Value, Value], Value],
+    unset: Callable[[MaybeDefault | None, MaybeDefault | None], MaybeDefault | None],
 ) -> dict[int, MsgObj]:
     if not a.heap and not b.heap:
         return {}
-    # A field one path touched and the other did not: the other reads it now.
+    # A sub-message one path touched and the other did not: the other reads it
+    # now (it gets the same id), so that its fields join one by one.
     done: set[int] = set()
     while True:
-        todo = sorted((a.heap.keys() & b.heap.keys()) - done)
+        todo = []
+        for ref, x_obj in a.heap.items():
+            y_obj = b.heap.get(ref)
+            if (
+                y_obj is not None
+                and x_obj.fields.keys() != y_obj.fields.keys()
+                and ref not in done
+            ):
+                todo.append(ref)
         if not todo:
             break
+        todo.sort()
         for ref in todo:
             done.add(ref)
             x_obj, y_obj = a.heap[ref], b.heap[ref]
-            if x_obj.fields.keys() == y_obj.fields.keys():
-                continue
             for fname in sorted(x_obj.fields.keys() - y_obj.fields.keys()):
                 if x_obj.fields[fname].ref is not None:
                     joiner.complete(b, ref, fname)
@@ -218,7 +255,9 @@ def _join_heaps(
             origin,
             owner=x_obj.owner,
             reported=x_obj.reported | y_obj.reported,
-            extra=x_obj.extra + tuple(e for e in y_obj.extra if e not in x_obj.extra),
+            extra=x_obj.extra
+            if not y_obj.extra or y_obj.extra == x_obj.extra
+            else x_obj.extra + tuple(e for e in y_obj.extra if e not in x_obj.extra),
         )
         for fname in sorted(x_obj.fields.keys() | y_obj.fields.keys()):
             fx, fy = x_obj.fields.get(fname), y_obj.fields.get(fname)
@@ -226,7 +265,17 @@ def _join_heaps(
                 fx = joiner.complete(a, ref, fname)
             if fy is None:
                 fy = joiner.complete(b, ref, fname)
-            merged.fields[fname] = merge(fx, fy)
+            ux, uy = _unset(x_obj, fname, fx), _unset(y_obj, fname, fy)
+            if ux is None and uy is None:
+                merged.fields[fname] = merge(fx, fy)
+                continue
+            if fx.default_of is not None and fy.default_of is not None:
+                continue  # its default on both paths: unset, as it was
+            found = unset(ux, uy)
+            if found is not None:
+                merged.unset = merged.unset or {}
+                merged.unset[fname] = found
+            merged.fields[fname] = replace(merge(fx, fy), default_of=None)
         heap[ref] = merged
     return heap
 
@@ -260,11 +309,11 @@ def _tie(
     )
 
 
-def _unset(value: Value) -> MaybeDefault | None:
-    """When a field value is still its ROS default (None: never)."""
+def _unset(obj: MsgObj, name: str, value: Value) -> MaybeDefault | None:
+    """When field `name` of `obj` (holding `value`) still has its ROS default."""
     if value.default_of is not None and value.term is not None:
         return MaybeDefault(A.TRUE, value.term, value.default_of)
-    return value.unset
+    return obj.unset.get(name) if obj.unset else None
 
 
 def _unbound(binding: Binding | None) -> tuple[bool, A.Expr | None]:

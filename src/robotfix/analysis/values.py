@@ -49,7 +49,6 @@ class Value:
     # unit: `speed / 3.6` is km/h scaled by 1/3.6, which is a conversion to m/s.
     scale: float = 1.0
     default_of: tuple[int, str] | None = field(default=None, compare=False)
-    unset: MaybeDefault | None = field(default=None, compare=False)
 
     @property
     def known_term(self) -> A.Expr:
@@ -110,6 +109,8 @@ class MsgObj:
     owner: tuple[int, str] | None = None  # (parent ref, field name)
     reported: set[str] = field(default_factory=set)  # unset fields already reported
     extra: tuple[ObjInvariant, ...] = ()  # refinements of the variables it reached
+    # Fields set on some paths only, with when they still hold their default.
+    unset: dict[str, MaybeDefault] | None = None
 
     def copy(self) -> MsgObj:
         return MsgObj(
@@ -119,4 +120,9 @@ class MsgObj:
             self.owner,
             set(self.reported),
             self.extra,
+            dict(self.unset) if self.unset else None,
         )
+
+    def set_on_all_paths(self, name: str) -> None:
+        if self.unset:
+            self.unset.pop(name, None)

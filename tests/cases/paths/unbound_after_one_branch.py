@@ -105,3 +105,17 @@ def main() -> None:
     rclpy.init()
     node = Follower()
     rclpy.spin(node)
+
+
+def collect(scan: LaserScan) -> None:
+    close = []
+    close.append(scan.range_min)
+    if close:
+        nearest = close[0]
+    rclpy.logging.get_logger("collect").info(f"{nearest}")
+    hits = []
+    if scan.range_min < 0.5:
+        hits = [scan.range_min]
+        first = scan.range_min
+    if hits:
+        rclpy.logging.get_logger("collect").info(f"{first}")
