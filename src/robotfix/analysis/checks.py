@@ -134,15 +134,20 @@ class Checker:
     def _describe(self, ident: int) -> str:
         return self.ctx.describe(ident)
 
-    def report_uninit(self, value: Value, site: ast.AST) -> bool:
+    def report_uninit(self, value: Value, site: ast.AST, state: State) -> bool:
+        """Is `value` a read of a name that holds nothing? RF301 if that path can
+        run."""
         if value.uninit is None:
             return False
+        once = ("uninit", getattr(site, "lineno", 1), value.uninit.name)
+        if self.ctx.already(once) or (state.facts and not self.possible(state, A.TRUE)):
+            return True
         span, stmt = self.where(site)
         self.ctx.report(
             messages.used_before_assignment(
                 self.path, span, stmt, value.uninit.name, value.uninit.declared
             ),
-            once=("uninit", span.line, value.uninit.name),
+            once=once,
         )
         return True
 
@@ -237,7 +242,7 @@ class Checker:
                 rules = self.message_rules(decl, name, lookup)
                 self.reach(state, value.ref, rules, site, name, leaving)
             return value
-        if self.report_uninit(value, site):
+        if self.report_uninit(value, site, state):
             return self.assumed(state, name, decl, lookup)
         fits = self.base_fits(decl.base, value, site, f"`{name}`")
         fits = self.units_agree(decl.unit, value, site, f"`{name}`", declared) and fits
@@ -321,7 +326,7 @@ class Checker:
         unit, unit_decl, owner = heap.field_unit(self.ctx, state, ref, name)
         rules = self.rules_on(state, ref, name)
         refined = unit is not None or bool(rules)
-        if refined and self.report_uninit(value, site):
+        if refined and self.report_uninit(value, site, state):
             obj.fields[name] = self.ctx.fresh(spec.kind, target, unit)
             obj.reported.discard(name)
             return
@@ -449,12 +454,13 @@ class Checker:
             return value
         for rule, path in self.rules_on(state, ref, name):
             if rule.paths == {path} and value.term is not None:
-                self._default_breaks(rule, path, value.term, site, target, False)
+                self._default_breaks(state, rule, path, value.term, site, target, False)
         state.heap[ref].reported.add(name)
         return value
 
     def _default_breaks(
         self,
+        state: State,
         rule: FieldRule,
         path: str,
         default: A.Expr,
@@ -463,10 +469,13 @@ class Checker:
         publishing: bool,
         some_paths: bool = False,
     ) -> bool:
+        """RF302 if the default breaks the refinement, on a path that can run."""
         goal = A.substitute(rule.predicate, {path: default})
         verdict = self.ctx.discharge(VC((), goal))
         if not isinstance(verdict, Violated):
             return False
+        if state.facts and not some_paths and not self.possible(state, A.TRUE):
+            return False  # a path no execution takes (`if c: ... if not c: send`)
         span, stmt = self.where(site)
         self.ctx.report(
             messages.unset_field(
@@ -504,7 +513,14 @@ class Checker:
         if not self.possible(state, unset.when):
             return
         self._default_breaks(
-            rule, path, unset.default, site, f"{label}.{path}", True, some_paths=True
+            state,
+            rule,
+            path,
+            unset.default,
+            site,
+            f"{label}.{path}",
+            True,
+            some_paths=True,
         )
         owner.reported.add(fname)
 
@@ -562,7 +578,7 @@ class Checker:
             if not defaults or fname in state.heap[owner_ref].reported:
                 return
             if self._default_breaks(
-                rule, path, default, site, f"{label}.{path}", publishing
+                state, rule, path, default, site, f"{label}.{path}", publishing
             ):
                 state.heap[owner_ref].reported.add(fname)
             return

@@ -172,7 +172,7 @@ class Interpreter(CallEvaluator):
                 )
             value = Value("unknown", uninit=Uninit(name, decl is not None))
             if decl is not None:
-                self.check.report_uninit(value, self.site)
+                self.check.report_uninit(value, self.site, state)
             elif self._unbound_is_error(name) and self.check.unbound_here(
                 state, A.TRUE, name, self.site
             ):

@@ -37,3 +37,10 @@ def send_guarded(pub: rospy.Publisher, command: str) -> None:
         msg.mode = 1
     if command == "slow":
         pub.publish(msg)
+
+
+def send_dead(pub: rospy.Publisher, fast: bool) -> None:
+    msg = DriveMode()
+    if fast:
+        if not fast:
+            pub.publish(msg)  # no execution gets here
