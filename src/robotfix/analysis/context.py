@@ -75,6 +75,9 @@ class FileContext:
         self.diagnostics: list[Diagnostic] = []
         self.sym_names: dict[int, str | ast.AST] = {}  # text, or a node to quote
         self._next = 0
+        self._sub_ids: dict[tuple[int, str], int] = {}
+        self._derived: dict[tuple[object, ...], Value] = {}
+        self.sizes: dict[int, int] = {}  # symbol of a list, set or dict display -> len
         self.steps = 0
         self.index = FileIndex()
         self.imports: dict[str, str] = {}  # local name -> qualified name
@@ -89,6 +92,7 @@ class FileContext:
         # symbols of satisfiability questions: never those of `fresh`
         self._question_ids = itertools.count(-1, -1)
         self._invariants: dict[str, list[Invariant]] = {}
+        self.muted = 0  # > 0: checks go on, their reports are dropped
         # (span, markdown) for names and fields, kept only for editor hovers
         self.hovers: list[tuple[Span, str]] | None = None
         # (scope node id, variable) -> (units it flows into, target base kinds), for
@@ -101,6 +105,24 @@ class FileContext:
     def fresh_id(self) -> int:
         self._next += 1
         return self._next
+
+    def derived(
+        self, key: tuple[object, ...], kind: str, description: str | ast.AST
+    ) -> Value:
+        """An unknown value that is a function of `key` (`x is None` for one value
+        of x): the same symbol wherever it is asked for."""
+        found = self._derived.get(key)
+        if found is None:
+            found = self._derived[key] = self.fresh(kind, description)
+        return found
+
+    def sub_id(self, parent: int, name: str) -> int:
+        """The id of the sub-message in field `name` of message `parent`: the same on
+        every path, so that paths that each touched it join field by field."""
+        found = self._sub_ids.get((parent, name))
+        if found is None:
+            found = self._sub_ids[(parent, name)] = self.fresh_id()
+        return found
 
     def fresh(
         self, kind: str, description: str | ast.AST, unit: object = None
@@ -128,7 +150,16 @@ class FileContext:
             raise BudgetExceededError(getattr(node, "lineno", 1))
 
     # -- reporting -----------------------------------------------------------
+    def already(self, once: tuple[object, ...]) -> bool:
+        return once in self._reported
+
+    def report_once(self, once: tuple[object, ...]) -> None:
+        """Mark `once` as reported (for a diagnostic keyed by something else)."""
+        self._reported.add(once)
+
     def report(self, diag: Diagnostic, once: tuple[object, ...] | None = None) -> None:
+        if self.muted:
+            return
         if once is not None:
             if once in self._reported:
                 return
@@ -216,6 +247,7 @@ class FileContext:
             self.source.char_col,
             known,
             self.alias_of,
+            self._field_kind,
         )
         self.uses_refinements = self.uses_refinements or found is not None
         for problem in problems:
@@ -299,6 +331,10 @@ class FileContext:
                 self.discharge, self.catalog, spec, self._question_ids
             )[0]
         return self._invariants[spec.name]
+
+    def _field_kind(self, msg_type: str, path: str) -> str | None:
+        found = self.catalog.field_at(msg_type, path)
+        return None if found is None else ("msg" if found.kind == "msg" else "value")
 
 
 def build_scope(
