@@ -39,6 +39,20 @@ LEAVING = frozenset(
 )
 # Methods after which a container holds an element.
 FILLING = frozenset({"append", "appendleft", "insert", "add"})
+# Methods that change a container (not only code the analysis cannot see).
+MUTATORS = FILLING | {
+    "extend",
+    "update",
+    "remove",
+    "discard",
+    "clear",
+    "pop",
+    "popitem",
+    "popleft",
+    "setdefault",
+    "sort",
+    "reverse",
+}
 # atan2, asin, acos... return at most math.pi (the double, below the real pi)
 PI_BOUND = A.Num(NUMBERS["pi"], False)
 ONE = A.Num(Fraction(1), True)
@@ -119,7 +133,15 @@ class CallEvaluator(ParameterEvaluator):
                 return found
         if name in UNIT_PARAMETERS:
             self._check_api_units(name, node, args, kwargs)
-        return self.unknown(node)
+        value = self.unknown(node)
+        if (
+            callee.kind == "module"
+            and isinstance(value.term, A.Sym)
+            and all(isinstance(a, ast.Constant) for a in node.args)
+            and all(isinstance(k.value, ast.Constant) for k in node.keywords)
+        ):  # `platform.system()` twice: the same answer, for all the analysis knows
+            self.ctx.first_read(("call", self.ctx.source.segment(node)), value.term)
+        return value
 
     def _forget_after_call(
         self,
@@ -159,7 +181,7 @@ class CallEvaluator(ParameterEvaluator):
         for name in names:
             bound = state.env.get(name.id)
             if isinstance(bound, Value) and bound.kind in MUTABLE:
-                state.changed(bound)
+                state.changed(bound, getattr(node.func, "attr", "") in MUTATORS)
                 if (
                     isinstance(bound.term, A.Sym)
                     and getattr(node.func, "attr", "") in FILLING

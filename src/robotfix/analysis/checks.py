@@ -165,7 +165,28 @@ class Checker:
 
     def possible(self, state: State, condition: A.Expr) -> bool:
         """Can `condition` hold on this path? (Undecided counts as no.)"""
-        verdict = self.ctx.discharge(VC(tuple(state.facts), A.Unary("not", condition)))
+        goal = A.Unary("not", condition)
+        verdict = self.ctx.discharge(VC(tuple(state.facts), goal, question=True))
+        return isinstance(verdict, (Violated, Unproven))
+
+    def surely_possible(self, state: State, condition: A.Expr) -> bool:
+        """`possible`, also if no call changed the objects they were handed: two
+        tests of `self.flag` with a call between agree, for all the analysis
+        can tell, so a path on which they differ is not surely one a run takes."""
+        if not self.possible(state, condition):
+            return False
+        firm = state.shared.firm
+        unchanged = {
+            ident: first
+            for ident, (first, read) in self.ctx.unchanged.items()
+            if read not in firm
+        }
+        if not unchanged:
+            return True
+        memo: dict[int, A.Expr] = {}
+        facts = [_first_reads(f, unchanged, memo) for f in state.facts]
+        goal = A.Unary("not", _first_reads(condition, unchanged, memo))
+        verdict = self.ctx.discharge(VC(tuple(facts), goal, question=True))
         return isinstance(verdict, (Violated, Unproven))
 
     def unbound_here(
@@ -176,7 +197,7 @@ class Checker:
         cause = ("unbound", name, when)  # one bug, one diagnostic, however many reads
         if when != A.TRUE and self.ctx.already(cause):
             return False
-        if self.ctx.already(once) or not self.possible(state, when):
+        if self.ctx.already(once) or not self.surely_possible(state, when):
             return False
         if when != A.TRUE:
             self.ctx.report_once(cause)
@@ -592,7 +613,7 @@ class Checker:
         goal = A.substitute(rule.predicate, {path: unset.default})
         if not isinstance(self.ctx.discharge(VC((), goal)), Violated):
             return
-        if not self.possible(state, unset.when):
+        if not self.surely_possible(state, unset.when):
             return
         self._default_breaks(
             state,
@@ -782,6 +803,26 @@ class Checker:
         ):
             return self.ctx.source.segment(site.value.args[0]) or "the message"
         return "the message"
+
+
+def _first_reads(
+    expr: A.Expr, unchanged: dict[int, A.Sym], memo: dict[int, A.Expr]
+) -> A.Expr:
+    """`expr` with each read of a changed object replaced by its first read."""
+    found = memo.get(id(expr))
+    if found is not None:
+        return found
+    if type(expr) is A.Sym:
+        result: A.Expr = unchanged.get(expr.ident, expr)
+    else:
+        kids = A.children(expr)
+        result = (
+            A.rebuild(expr, tuple(_first_reads(k, unchanged, memo) for k in kids))
+            if kids
+            else expr
+        )
+    memo[id(expr)] = result
+    return result
 
 
 def _term_of(shown: str) -> A.Expr | None:

@@ -77,6 +77,11 @@ class FileContext:
         self._next = 0
         self._sub_ids: dict[tuple[int, str], int] = {}
         self._derived: dict[tuple[object, ...], Value] = {}
+        # symbol of a read of an object that code may have changed -> the same read
+        # before any change (`possible_unchanged` asks as if nothing changed)
+        # (and the id of the object read)
+        self.unchanged: dict[int, tuple[A.Sym, object]] = {}
+        self._first_reads: dict[object, A.Sym] = {}
         self.sizes: dict[int, int] = {}  # symbol of a list, set or dict display -> len
         self.steps = 0
         self.index = FileIndex()
@@ -114,7 +119,19 @@ class FileContext:
         found = self._derived.get(key)
         if found is None:
             found = self._derived[key] = self.fresh(kind, description)
+            first, read = _first_version(key, self.unchanged)
+            if first != key and isinstance(found.term, A.Sym):
+                base = self.derived(first, kind, description)
+                if isinstance(base.term, A.Sym):
+                    self.unchanged[found.term.ident] = (base.term, read)
         return found
+
+    def first_read(self, read: object, sym: A.Sym) -> None:
+        """`sym` is a read of `read` (`self.flag`), maybe again after a call that
+        may have changed it: `unchanged` maps it to the first read."""
+        first = self._first_reads.setdefault(read, sym)
+        if first != sym:
+            self.unchanged[sym.ident] = (first, read)
 
     def sub_id(self, parent: int, name: str) -> int:
         """The id of the sub-message in field `name` of message `parent`: the same on
@@ -335,6 +352,31 @@ class FileContext:
     def _field_kind(self, msg_type: str, path: str) -> str | None:
         found = self.catalog.field_at(msg_type, path)
         return None if found is None else ("msg" if found.kind == "msg" else "value")
+
+
+# Keys of `derived` values whose last element is the version of the object read.
+VERSIONED = frozenset({"attribute", "truthy", "len", "isinstance", "hasattr"})
+
+
+def _first_version(
+    key: tuple[object, ...], unchanged: dict[int, tuple[A.Sym, object]]
+) -> tuple[tuple[object, ...], object]:
+    """The key of the same read of the object as it first was (`self.flag` before
+    calls that may have changed it)."""
+    if len(key) < 2:
+        return key, None
+    head = key[1]  # an object's symbol, or its id
+    ident = head.ident if isinstance(head, A.Sym) else head
+    if not isinstance(ident, int):
+        return key, None
+    rest, changed = key[2:], False
+    read: object = ident
+    if ident in unchanged:
+        (first, read), changed = unchanged[ident], True
+        head = first if isinstance(head, A.Sym) else first.ident
+    if key[0] in VERSIONED and rest and isinstance(rest[-1], int) and rest[-1]:
+        rest, changed = (*rest[:-1], 0), True
+    return ((key[0], head, *rest) if changed else key), read
 
 
 def build_scope(

@@ -303,6 +303,8 @@ class ExpressionEvaluator:
                 )
             else:
                 value = self.unknown(node)
+                if isinstance(value.term, A.Sym):
+                    self.ctx.first_read(("attribute", key), value.term)
         state.env[key] = value
         return value
 

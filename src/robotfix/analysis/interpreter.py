@@ -17,7 +17,7 @@ from fractions import Fraction
 
 from robotfix import messages
 from robotfix.analysis import heap, hover
-from robotfix.analysis.calls import CallEvaluator
+from robotfix.analysis.calls import MUTATORS, CallEvaluator
 from robotfix.analysis.constants import scan
 from robotfix.analysis.context import FileContext, Scope, build_scope
 from robotfix.analysis.index import index_module
@@ -51,6 +51,11 @@ NO_RETURN = frozenset(
         "_pytest.outcomes.skip",
         "_pytest.outcomes.exit",
     }
+)
+# Python 2's builtins: `raw_input = raw_input` in a module's Python 2 branch.
+PY2_BUILTINS = frozenset(
+    {"raw_input", "unicode", "basestring", "long", "xrange", "unichr", "file"}
+    | {"execfile", "reload", "cmp", "buffer", "apply", "intern", "coerce"}
 )
 BUILTINS = frozenset(dir(builtins)) | {"__file__", "__name__", "__doc__", "__spec__"}
 # Python packages with a `msg`/`srv`/`action` module that is not an interface package.
@@ -142,6 +147,7 @@ class Interpreter(CallEvaluator):
         # module names read in this function, which no function rebinds: one value
         # (and the fact its refinement gives) for the whole run of the function
         self.globals_read: dict[str, tuple[Value, A.Expr | None]] = {}
+        self.elifs: set[int] = set()  # `if` statements that are an `elif`
         self.guarded = 0  # inside a `try` body whose handlers catch NameError
         self.nested: dict[str, ast.AST] = {}  # functions defined in this body
 
@@ -171,7 +177,7 @@ class Interpreter(CallEvaluator):
             if isinstance(bound, MaybeUnbound):
                 if (
                     bound.when is not None
-                    and self._unbound_is_error(name)
+                    and self._unbound_is_error(name, bound.when != A.TRUE)
                     and self.check.unbound_here(state, bound.when, name, self.site)
                 ):
                     state.env[name] = MAYBE  # one bug, one diagnostic
@@ -182,8 +188,9 @@ class Interpreter(CallEvaluator):
             value = Value("unknown", uninit=Uninit(name, decl is not None))
             if decl is not None:
                 self.check.report_uninit(value, self.site, state)
-            elif self._unbound_is_error(name) and self.check.unbound_here(
-                state, A.TRUE, name, self.site
+            elif self.guarded or (  # `try: X` read it: past this, X exists
+                self._unbound_is_error(name)
+                and self.check.unbound_here(state, A.TRUE, name, self.site)
             ):
                 state.env[name] = MAYBE
             return value
@@ -295,15 +302,19 @@ class Interpreter(CallEvaluator):
             and not self._is_local(node.id)
         )
 
-    def _unbound_is_error(self, name: str) -> bool:
+    def _unbound_is_error(self, name: str, some_paths: bool = False) -> bool:
         """Reading an unbound local raises, unless a handler of the enclosing `try`
         catches NameError, or (outside functions) the name falls back to a builtin
-        or, in a class body, to a module name."""
+        or, in a class body, to a module name. Module and class code that binds a
+        name on some paths only mostly tests the platform or Python version, which
+        the analysis cannot tell; a star import may bind any name."""
         if self.guarded:
             return False
         if self.scope.kind == "function":
             return True
-        if name in BUILTINS:
+        if some_paths or name in BUILTINS or name in PY2_BUILTINS:
+            return False
+        if self.ctx.star_import:
             return False
         return self.scope.kind != "class" or name not in self.scope.module().local_names
 
@@ -369,7 +380,7 @@ class Interpreter(CallEvaluator):
                     state, base.ref, target.attr, value, self.site, text
                 )
             else:
-                state.changed(base)
+                state.changed(base, firm=True)
         elif isinstance(target, (ast.Tuple, ast.List)):
             parts = value.elements if value.kind == "tuple" else None
             if parts is None or len(parts) != len(target.elts):
@@ -384,7 +395,9 @@ class Interpreter(CallEvaluator):
         elif isinstance(target, ast.Subscript):
             self.eval(target.value, state)
             self.eval(target.slice, state)
-            self._changed_root(target, state)  # `d[k] = v`: d is not empty now
+            self._changed_root(
+                target, state, firm=True
+            )  # `d[k] = v`: d is not empty now
         elif isinstance(target, ast.Starred):
             self.bind(target.value, self.unknown(target), state)
 
@@ -392,6 +405,7 @@ class Interpreter(CallEvaluator):
         self, base: Value, var: str, attr: str, value: Value, state: State
     ) -> None:
         key = f"{var}.{attr}"
+        state.shared.firm.add(("attribute", key))
         decl = self.program.attributes.get(base.name, {}).get(attr)
         if decl is not None:
             lookup = self.refinement_lookup(decl, state)
@@ -549,15 +563,17 @@ class Interpreter(CallEvaluator):
                         key = attribute_key(child)  # type: ignore[arg-type]
                         state.env.pop(key or "", None)
                         if watched:
-                            self._changed_root(child, state)
+                            self._changed_root(child, state, firm=True)
                 elif kind is ast.Subscript:
                     if watched and type(child.ctx) is not ast.Load:  # type: ignore[attr-defined]
-                        self._changed_root(child, state)
+                        self._changed_root(child, state, firm=True)
                 elif kind is ast.Call:
                     calls = True
                     if watched:
                         call: ast.Call = child  # type: ignore[assignment]
-                        for arg in [call.func, *call.args, *call.keywords]:
+                        method = getattr(call.func, "attr", "")
+                        self._changed_root(call.func, state, method in MUTATORS)
+                        for arg in [*call.args, *call.keywords]:
                             self._changed_root(arg, state)
                 elif kind is ast.Assign or kind is ast.AugAssign:
                     _constant_stores(child, constant)  # type: ignore[arg-type]
@@ -585,8 +601,9 @@ class Interpreter(CallEvaluator):
                 state.env[name] = self._forgotten(name, child, before, keeps_unit, None)
         return set(bound_at)
 
-    def _changed_root(self, node: ast.AST, state: State) -> None:
-        """The object at the root of `x.a.b` (or a call's argument `x`) may change."""
+    def _changed_root(self, node: ast.AST, state: State, firm: bool = False) -> None:
+        """The object at the root of `x.a.b` (or a call's argument `x`) may change
+        (`firm`: the code stores into it)."""
         while isinstance(
             node, (ast.Attribute, ast.keyword, ast.Starred, ast.Subscript)
         ):
@@ -594,14 +611,55 @@ class Interpreter(CallEvaluator):
         if isinstance(node, ast.Name):
             bound = state.env.get(node.id)
             if isinstance(bound, Value) and bound.kind in MUTABLE:
-                state.changed(bound)
+                state.changed(bound, firm)
 
     # -- simple statements ---------------------------------------------------
     def visit_Expr(self, node: ast.Expr, state: State) -> State:
         self.eval(node.value, state)
-        if isinstance(node.value, ast.Call) and self._never_returns(node.value.func):
-            state.reachable = False  # sys.exit(1) ends this path
+        if isinstance(node.value, ast.Call):
+            if self._never_returns(node.value.func):
+                state.reachable = False  # sys.exit(1) ends this path
+            elif self._may_stop(node.value.func):
+                state.exits += 1
         return state
+
+    def _may_stop(self, func: ast.expr) -> bool:
+        """A call whose result is dropped, which may never return for all the
+        analysis can tell: a function of this file that can raise, or one it
+        cannot see (`self.fail(msg)`, `parser.exit(1)`), unless its name says it
+        returns (`print`, `logger.error`, `pub.publish`)."""
+        name = func.id if isinstance(func, ast.Name) else getattr(func, "attr", "")
+        if name in RETURNS:
+            return False
+        if name in LOGGING and isinstance(func, ast.Attribute):
+            # `self.get_logger().error(...)`, `logger.error(...)`; not `parser.error`
+            receiver = self.ctx.source.segment(func.value) or ""
+            return "log" not in receiver.lower()
+        known: Function | None = None
+        if isinstance(func, ast.Name):
+            if func.id in self.nested:
+                return self._function_may_raise(self.nested[func.id])
+            if func.id in BUILTINS and func.id not in self.scope.module().local_names:
+                return False
+            known = self.program.functions.get(func.id)
+        elif (
+            isinstance(func, ast.Attribute)
+            and self.function is not None
+            and self.function.class_name is not None
+            and isinstance(func.value, ast.Name)
+        ):
+            method = f"{self.function.class_name}.{func.attr}"
+            known = self.program.functions.get(method)
+        if known is not None:
+            return self._function_may_raise(known.node)
+        return True
+
+    def _function_may_raise(self, node: ast.AST) -> bool:
+        key = -id(node)  # `ends` holds never-returns by id(node); this by -id(node)
+        found = self.program.ends.get(key)
+        if found is None:
+            found = self.program.ends[key] = _may_raise(node)
+        return found
 
     def _may_not_return(self, func: ast.expr) -> bool:
         """A cheap first look: a name that could be one of the calls below."""
@@ -789,7 +847,7 @@ class Interpreter(CallEvaluator):
                 state.env[target.id] = MAYBE  # deleted: unknown, never an error
             else:
                 self.eval_children(target, state)
-                self._changed_root(target, state)
+                self._changed_root(target, state, firm=True)
         return state
 
     def visit_Import(self, node: ast.Import, state: State) -> State:
@@ -886,13 +944,27 @@ class Interpreter(CallEvaluator):
         then_state, else_state = state.fork(), state.fork()
         then_state.assume(cond)
         else_state.assume(A.Unary("not", cond))
+        if len(node.orelse) == 1 and type(node.orelse[0]) is ast.If:
+            self.elifs.add(id(node.orelse[0]))
+        elif not node.orelse and id(node) in self.elifs and _is_case(node.test):
+            # past `if m == A: ... elif m == B: ...` its author may know no case
+            # is left (an enum, a closed set of strings)
+            else_state.exits += 1
+        since = state.exits
         then_state = self.exec_block(node.body, then_state)
         else_state = self.exec_block(node.orelse, else_state)
-        return self._join(then_state, else_state)
+        return self._join(then_state, else_state, since)
 
-    def _join(self, a: State, b: State) -> State:
+    def _join(self, a: State, b: State, since: int | None = None) -> State:
         """`join`, after a received message read on one path only has had its
-        invariants assumed on the other one too (its values are the same)."""
+        invariants assumed on the other one too (its values are the same). With
+        `since` (the exits of the state where the paths split): a name bound on
+        one path only, where the other may have ended since (`exits`), is not
+        surely unbound there; reading it is never an error."""
+        if since is not None and a.reachable and b.reachable:
+            for side, other in ((a, b), (b, a)):
+                if side.exits > since:
+                    _excuse(side, other)
         if a.reachable and b.reachable:
             for ref in sorted(a.heap.keys() & b.heap.keys()):
                 if a.heap[ref].pending != b.heap[ref].pending:
@@ -999,6 +1071,13 @@ class Interpreter(CallEvaluator):
         stored = self.havoc(loop, [node], loop=True)
         body_state = loop.fork()
         body_state.assume(nonempty)  # an iteration: the iterable had an element
+        if empty is None:
+            # `if ... in kwargs.values(): hints = ...`, then a loop over the
+            # `...` of kwargs: that it runs may imply the earlier test, for all
+            # the analysis can tell
+            for name, bound in list(body_state.env.items()):
+                if isinstance(bound, MaybeUnbound) and bound.when is not None:
+                    body_state.env[name] = MAYBE
         self.bind(node.target, self.unknown(node.target), body_state)
         end = self.exec_block(node.body, body_state)
         self._loop_units(loop, end, [node])
@@ -1087,25 +1166,34 @@ class Interpreter(CallEvaluator):
     visit_AsyncWith = visit_With
 
     def visit_Try(self, node: ast.Try, state: State) -> State:
+        body = node.body
+        safe = 0  # `try: final = None` binds before anything can raise
+        while safe < len(body) and _cannot_raise(body[safe]):
+            safe += 1
+        if safe and node.handlers:
+            state = self.exec_block(body[:safe], state)
+            body = body[safe:]
         entry = state.fork()
         raised = entry.fork()  # an exception somewhere in the body
-        stored = self.havoc(raised, node.body)
+        stored = self.havoc(raised, body)
         if node.handlers and self._binds_new_names(stored, entry):
             raised = self._join(entry, raised)  # ... or before its first binding
         guards = any(_catches_name_error(h.type) for h in node.handlers)
         self.guarded += guards
-        state = self.exec_block(node.body, state)
+        state = self.exec_block(body, state)
         self.guarded -= guards
         result = self.exec_block(node.orelse, state)
         for handler in node.handlers:
             handler_state = raised.fork()
+            since = handler_state.exits
             if handler.type is not None:  # evaluated only if no earlier one matched
                 self.guarded += 1
                 self.eval(handler.type, handler_state)
                 self.guarded -= 1
             if handler.name:
                 handler_state.env[handler.name] = self.unknown(handler)
-            result = self._join(result, self.exec_block(handler.body, handler_state))
+            handled = self.exec_block(handler.body, handler_state)
+            result = self._join(result, handled, since)
         if node.finalbody:
             if not result.reachable:
                 self.havoc(raised, node.handlers)  # type: ignore[arg-type]
@@ -1115,6 +1203,117 @@ class Interpreter(CallEvaluator):
         return result
 
     visit_TryStar = visit_Try
+
+
+# Calls whose result is dropped and which return: logging, output, containers,
+# ROS publishing and sleeping (a call may still raise; these are not written to).
+RETURNS = frozenset(
+    {
+        "print",
+        "log",
+        "loginfo",
+        "logwarn",
+        "logerr",
+        "logdebug",
+        "logfatal",
+        "loginfo_throttle",
+        "logwarn_throttle",
+        "logerr_throttle",
+        "write",
+        "flush",
+        "append",
+        "extend",
+        "insert",
+        "add",
+        "update",
+        "remove",
+        "discard",
+        "clear",
+        "pop",
+        "sort",
+        "reverse",
+        "setdefault",
+        "publish",
+        "sleep",
+        "spin_once",
+        "spin_until_future_complete",
+        "destroy_node",
+        "shutdown",
+        "close",
+        "join",
+        "start",
+        "put",
+        "send",
+        "set",
+        "wait",
+        "acquire",
+        "release",
+    }
+)
+
+
+# Logging methods: they return when called on a logger, not on any object
+# (`parser.error(msg)` exits).
+LOGGING = frozenset(
+    {"debug", "info", "warn", "warning", "error", "exception", "critical", "fatal"}
+)
+
+
+def _may_raise(node: ast.AST) -> bool:
+    """A function with a `raise` or an `assert` in its own body."""
+    todo: list[ast.AST] = list(getattr(node, "body", []))
+    while todo:
+        child = todo.pop()
+        if isinstance(child, (ast.Raise, ast.Assert)):
+            return True
+        if not isinstance(
+            child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef)
+        ):
+            todo.extend(ast.iter_child_nodes(child))
+    return False
+
+
+def _is_case(test: ast.expr) -> bool:
+    """`m == A`, `m is A`, `m in (A, B)`, `isinstance(m, A)`: one case of a case
+    analysis, which may cover every value the subject can have."""
+    if isinstance(test, ast.Compare):
+        return len(test.ops) == 1 and isinstance(test.ops[0], (ast.Eq, ast.Is, ast.In))
+    if isinstance(test, ast.BoolOp) and isinstance(test.op, ast.Or):
+        return all(_is_case(v) for v in test.values)
+    return (
+        isinstance(test, ast.Call)
+        and isinstance(test.func, ast.Name)
+        and test.func.id in ("isinstance", "issubclass", "hasattr", "callable")
+    )
+
+
+def _cannot_raise(stmt: ast.stmt) -> bool:
+    """`x = None`, `n = 0`, `a = b = ""`, `pass`: a statement that never raises."""
+    if isinstance(stmt, ast.Pass):
+        return True
+    if not isinstance(stmt, ast.Assign) or not all(
+        isinstance(t, ast.Name) for t in stmt.targets
+    ):
+        return False
+    value = stmt.value
+    if isinstance(value, ast.UnaryOp) and isinstance(value.op, ast.USub):
+        value = value.operand
+    if isinstance(value, ast.Dict):
+        return not value.keys
+    if isinstance(value, (ast.List, ast.Tuple)):
+        return not value.elts
+    return isinstance(value, ast.Constant)
+
+
+def _excuse(side: State, other: State) -> None:
+    """Names bound on `other` but not on `side`, which may have ended: unbound
+    there only if it went on, which the analysis cannot tell."""
+    for name, bound in other.env.items():
+        if "." in name or not isinstance(bound, Value):
+            continue
+        mine = side.env.get(name)
+        if not isinstance(mine, Value) or mine.uninit is not None:
+            side.env[name] = MAYBE
 
 
 def _accumulated(nodes: list[ast.stmt]) -> set[str]:

@@ -41,6 +41,9 @@ class Shared:
     # Unknown objects whose attributes, truth or length were read: only their
     # changes need a new version.
     watched: set[int] = field(default_factory=set)
+    # Objects the code itself changed (`xs.append(v)`, `d[k] = v`), not only
+    # handed to code the analysis cannot see.
+    firm: set[object] = field(default_factory=set)
 
 
 @dataclass
@@ -54,6 +57,10 @@ class State:
     versions: dict[int, int] | None = None
     defined: set[int] | None = None  # keys of the Shared.defs in `facts`
     shared: Shared = field(default_factory=Shared)
+    # Points on this path after which it may not go on, for all the analysis can
+    # tell: a call it cannot see (`self.fail(...)`, `parser.exit(...)`), the
+    # implicit `else` of an `elif` chain its author may have made exhaustive.
+    exits: int = 0
 
     def fork(self) -> State:
         return State(
@@ -64,6 +71,7 @@ class State:
             dict(self.versions) if self.versions else None,
             set(self.defined) if self.defined else None,
             self.shared,
+            self.exits,
         )
 
     def use(self, value: Value) -> Value:
@@ -90,9 +98,12 @@ class State:
         defined = self.defined or set()
         return [fact for key, fact in defs if key not in defined]
 
-    def changed(self, value: Value) -> None:
-        """Code may have changed this object: its attributes are read anew."""
+    def changed(self, value: Value, firm: bool = False) -> None:
+        """Code may have changed this object: its attributes are read anew.
+        (`firm`: this code surely changed it.)"""
         term = value.term
+        if firm and type(term) is A.Sym:
+            self.shared.firm.add(term.ident)
         if type(term) is A.Sym and term.ident in self.shared.watched:
             if self.versions is None:
                 self.versions = {}
@@ -206,7 +217,8 @@ def join(a: State, b: State, joiner: Joiner) -> State:
         if versions.get(term, 0) != version:
             versions[term] = max(versions.get(term, 0), version) + 1
     defined = a.defined & b.defined if a.defined and b.defined else None
-    return State(env, heap, facts, True, versions, defined, a.shared)
+    exits = max(a.exits, b.exits)
+    return State(env, heap, facts, True, versions, defined, a.shared, exits)
 
 
 def _join_heaps(
