@@ -12,10 +12,17 @@ from fractions import Fraction
 from typing import NamedTuple
 
 from robotfix import messages
-from robotfix.analysis import heap, parameters
+from robotfix.analysis import containers, heap, parameters
 from robotfix.analysis.context import FileContext
 from robotfix.analysis.state import State
-from robotfix.analysis.values import MaybeDefault, ObjInvariant, Value
+from robotfix.analysis.values import (
+    SEQUENCES,
+    Items,
+    Kept,
+    MaybeDefault,
+    ObjInvariant,
+    Value,
+)
 from robotfix.analysis.vc import VC, Proved, Undecided, Unproven, Violated
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
@@ -37,7 +44,10 @@ KIND_NAMES = {
     "tuple": "tuple",
     "list": "list",
     "dict": "dict",
+    "generator": "generator",
 }
+SCALAR_KINDS = frozenset({"int", "float", "bool", "str", "msg", "dict"})
+MAX_CHECKED = 256  # elements of a display checked one by one
 
 
 class Checker:
@@ -285,6 +295,8 @@ class Checker:
     ) -> Value:
         """Check `name = value` against its refinement; return what `name` holds.
         (`leaving`: an argument, whose unset message fields count too.)"""
+        if decl.item is not None:
+            return self.assign_sequence(state, name, decl, value, site, lookup)
         declared = Declared(f"annotation of `{name}`", self.path, decl.line)
         if decl.optional and value.kind == "none":
             return value
@@ -322,7 +334,8 @@ class Checker:
         self, state: State, name: str, decl: Refinement, lookup: dict[str, A.Expr]
     ) -> Value:
         """A fresh value of `name` that satisfies its refinement (an optional one's
-        may be None: nothing is assumed; a tuple's elements each satisfy theirs)."""
+        may be None: nothing is assumed; a tuple's elements each satisfy theirs; a
+        container's elements and length satisfy its refinement)."""
         if decl.elements is not None:
             return Value(
                 "tuple",
@@ -333,6 +346,9 @@ class Checker:
                     for i, part in enumerate(decl.elements)
                 ),
             )
+        if decl.item is not None:
+            found = containers.declared(decl.base, self.kept(name, decl, lookup))
+            return self.with_length(found, name)
         if decl.base == "msg" and decl.msg_type is not None:
             message = heap.new_message(
                 self.ctx, state, decl.msg_type, "received", label=name
@@ -375,6 +391,232 @@ class Checker:
         if decl.unit is not None:
             return value.with_unit(decl.unit)
         return value
+
+    # -- sequences -----------------------------------------------------------
+    def kept(self, name: str, decl: Refinement, lookup: dict[str, A.Expr]) -> Kept:
+        """What a refined list or tuple variable, parameter or attribute keeps."""
+        return Kept(
+            decl.item or "unknown",
+            decl.unit,
+            A.substitute(decl.predicate, lookup),
+            A.substitute(decl.size, lookup),
+            name,
+            Declared(f"annotation of `{name}`", self.path, decl.line),
+        )
+
+    def with_length(self, value: Value, name: str) -> Value:
+        """`value` with its length a symbol of its own, so that every `len()` and
+        truth test of it in a path speak of the same number."""
+        if value.items is None or containers.length_term(value) is not None:
+            return value
+        length = self.ctx.fresh("int", f"`len({name})`").known_term
+        pinned = A.conjoin(
+            [
+                A.Binary("==", containers.SELF, length),
+                A.Binary(">=", containers.SELF, containers.number(0)),
+                *([value.items.size] if value.items.size != A.TRUE else []),
+            ]
+        )
+        return replace(value, items=replace(value.items, size=pinned))
+
+    def assign_sequence(
+        self,
+        state: State,
+        name: str,
+        decl: Refinement,
+        value: Value,
+        site: ast.AST,
+        lookup: dict[str, A.Expr],
+    ) -> Value:
+        """`name = value` where `name` is a refined list or tuple: the refinement is
+        on every element (its `len(_)` parts on the length)."""
+        kept = self.kept(name, decl, lookup)
+        if self.report_uninit(value, site, state):
+            return containers.declared(decl.base, kept)
+        if not self.sequence_fits(value, site, f"`{name}`", decl.base):
+            return containers.declared(decl.base, kept)
+        if not self.check_items(state, value, kept, site):
+            return containers.declared(decl.base, kept)
+        return self.stored(value, kept, decl.base)
+
+    def sequence_fits(
+        self, value: Value, site: ast.AST, target: str, expected: str
+    ) -> bool:
+        """A number, string or message where a list belongs is RF401."""
+        if value.kind not in SCALAR_KINDS:
+            return True
+        span, stmt = self.where(site)
+        self.ctx.report(
+            messages.base_type_mismatch(
+                self.path, span, stmt, target, expected, KIND_NAMES[value.kind]
+            )
+        )
+        return False
+
+    def check_items(
+        self,
+        state: State,
+        value: Value,
+        kept: Kept,
+        site: ast.AST,
+        labels: tuple[str, ...] | None = None,
+    ) -> bool:
+        """Do the elements of `value` (and its length) satisfy `kept`? Elements known
+        one by one are checked one by one, where they are written; others through
+        what holds of every element, which can only warn (the list may be empty).
+        Returns False after an error (the caller then assumes the declaration)."""
+        ok = True
+        known = value.elements if value.kind in SEQUENCES else None
+        if known is not None and len(known) > MAX_CHECKED:
+            known = None  # a long table: through what holds of every element
+        if known is not None:
+            sites = (value.items.sites if value.items else None) or ()
+            warned = False
+            for index, element in enumerate(known):
+                where = sites[index] if index < len(sites) else site
+                assert isinstance(where, ast.AST)
+                label = labels[index] if labels else f"{kept.label}[{index}]"
+                outcome = self._check_item(
+                    state,
+                    element,
+                    kept,
+                    where,
+                    label,
+                    warned,
+                )
+                ok = ok and outcome != FAILED
+                warned = warned or outcome == WARNED
+        else:
+            unit_declared = kept.unit_declared or kept.declared
+            target = f"the elements of `{kept.label}`"
+            ok = self.units_agree(kept.unit, value, site, target, unit_declared)
+            if ok and kept.each != A.TRUE:
+                self._check_every(state, value, kept, site)
+        if ok and kept.size != A.TRUE:
+            ok = self.check_size(state, value, kept, site)
+        return ok and self.check_shape(state, value, kept, site)
+
+    def check_shape(
+        self, state: State, value: Value, kept: Kept, site: ast.AST
+    ) -> bool:
+        """A message array's fixed size or bound, when the length is known."""
+        length = containers.length_term(value) if value.kind in SEQUENCES else None
+        if kept.shape == A.TRUE or length is None or A.syms(length):
+            return True
+        return self.check_size(state, value, replace(kept, size=kept.shape), site)
+
+    def _check_item(
+        self,
+        state: State,
+        element: Value,
+        kept: Kept,
+        site: ast.AST,
+        label: str,
+        warned: bool,
+    ) -> str:
+        """One element against the declaration's base type, unit and predicate."""
+        target = f"`{label}`"
+        fits = kept.item not in KIND_NAMES or self.base_fits(
+            kept.item, element, site, target
+        )
+        unit_declared = kept.unit_declared or kept.declared
+        fits = (
+            self.units_agree(kept.unit, element, site, target, unit_declared) and fits
+        )
+        if not fits:
+            return FAILED
+        if element.term is None:
+            return PROVED  # not a number: nothing RobotFix can say of it
+        outcome = PROVED
+        for part in A.conjuncts(kept.each):
+            goal = containers.at(part, element.known_term)
+            if warned or outcome == WARNED:
+                state.assume(goal)
+                continue
+            shown = A.show(A.substitute(part, {"_": A.Name(label)}))
+            outcome = self.goal_holds(
+                state, goal, element.term, site, shown, target, kept.declared
+            )
+            if outcome == FAILED:
+                return FAILED
+            state.assume(goal)
+        return outcome
+
+    def _check_every(
+        self, state: State, value: Value, kept: Kept, site: ast.AST
+    ) -> None:
+        """Every element that `value` may have satisfies `kept.each` (a warning
+        when not proved: an element that breaks it may not exist)."""
+        kind = kept.item if kept.item in ("int", "float", "bool", "str") else "unknown"
+        element = self.ctx.fresh(kind, f"an element of `{kept.label}`")
+        have = self.instantiate(containers.each_of(value), element.known_term)
+        label = f"{kept.label}[i]"
+        for part in A.conjuncts(kept.each):
+            goal = A.Binary(
+                "or", A.Unary("not", have), containers.at(part, element.known_term)
+            )
+            shown = A.show(A.substitute(part, {"_": A.Name(label)}))
+            outcome = self.goal_holds(
+                state, goal, None, site, shown, f"`{label}`", kept.declared
+            )
+            if outcome != PROVED:
+                return
+
+    def instantiate(self, each: A.Expr, term: A.Expr) -> A.Expr:
+        """What holds of every element, for the element `term` (with symbols of its
+        own for the values each element has of its own)."""
+        return containers.instantiate(each, term, self._bound_symbol)
+
+    def _bound_symbol(self, name: str) -> A.Expr:
+        """A fresh symbol for a bound name `#<id>`, described as the one it was."""
+        described = self.ctx.sym_names.get(int(name[1:]), "an element")
+        return self.ctx.fresh("unknown", described).known_term
+
+    def check_size(self, state: State, value: Value, kept: Kept, site: ast.AST) -> bool:
+        """The length of `value` keeps `kept.size` (a warning when not provable)."""
+        length = containers.length_term(value) if value.kind in SEQUENCES else None
+        if length is not None:
+            goal = containers.at(kept.size, length)
+        else:
+            fresh = self.ctx.fresh("int", f"`len({kept.label})`").known_term
+            have = containers.at(
+                A.conjoin(
+                    [
+                        containers.size_of(value),
+                        A.Binary(">=", containers.SELF, containers.number(0)),
+                    ]
+                ),
+                fresh,
+            )
+            goal = A.Binary("or", A.Unary("not", have), containers.at(kept.size, fresh))
+        shown = A.show(A.substitute(kept.size, {"_": A.Name(f"len({kept.label})")}))
+        outcome = self.goal_holds(
+            state, goal, length, site, shown, f"`len({kept.label})`", kept.declared
+        )
+        return outcome != FAILED
+
+    def stored(self, value: Value, kept: Kept, base: str) -> Value:
+        """What a refined sequence holds after a value passed its checks."""
+        if value.kind not in SEQUENCES:
+            return containers.declared(base, kept)
+        elements = value.elements
+        if elements is not None and kept.unit is not None:
+            elements = tuple(
+                e.with_unit(kept.unit) if e.term is not None else e for e in elements
+            )
+        each = kept.each
+        if value.items is not None and value.items.each not in (A.TRUE, kept.each):
+            each = A.conjoin([kept.each, value.items.each])
+        size = containers.size_of(value)
+        if kept.size != A.TRUE:
+            size = A.conjoin([size, kept.size]) if size != A.TRUE else kept.size
+        stored = Value(
+            value.kind,
+            unit=kept.unit or value.unit,
+            elements=elements,
+            items=Items(kept.item, each, size, kept),
+        )
+        return self.with_length(stored, kept.label)
 
     # -- message fields ------------------------------------------------------
     def rules_on(
@@ -426,6 +668,9 @@ class Checker:
         if refined and self.report_uninit(value, site, state):
             obj.fields[name] = self.ctx.fresh(spec.kind, target, unit)
             obj.reported.discard(name)
+            return
+        if spec.array:
+            self._write_array(state, ref, name, value, site, target)
             return
         if spec.kind == "msg":
             sub = state.heap.get(value.ref) if value.ref is not None else None
@@ -480,6 +725,35 @@ class Checker:
                 state.assume(A.substitute(rule.predicate, {path: stored.known_term}))
         obj.fields[name] = replace(stored, default_of=None)
         obj.set_on_all_paths(name)
+        obj.reported.discard(name)
+
+    def _write_array(
+        self,
+        state: State,
+        ref: int,
+        name: str,
+        value: Value,
+        site: ast.AST,
+        target: str,
+    ) -> None:
+        """`msg.ranges = ...`: every element keeps the field's refinements; what the
+        field then holds is what they say (a list stored in a message is shared)."""
+        obj = state.heap[ref]
+        spec = heap.field_spec(self.ctx, state, ref, name)
+        assert spec is not None
+        kept = heap.array_rule(self.ctx, state, ref, name, spec, target)
+        if value.kind in ("int", "float", "bool") or (
+            value.kind == "msg" and spec.kind != "msg"
+        ):
+            self.sequence_fits(value, site, f"`{target}`", "array")
+        elif spec.kind != "msg" and not spec.loose:
+            # rclpy's setters assert a fixed size or bound; ROS 1 only minds it when
+            # the message is serialized, and code may fix the length before that
+            shaped = replace(kept, shape=A.TRUE) if self.ctx.ros1 else kept
+            self.check_items(state, value, shaped, site)
+        # the field's declaration, which holds its fixed size too
+        stored = containers.declared("list", kept)
+        obj.fields[name] = stored
         obj.reported.discard(name)
 
     def adopt(
@@ -555,6 +829,10 @@ class Checker:
         value = heap.read_raw(self.ctx, state, ref, name, target)
         if value.default_of is None:
             return value
+        if value.kind == "list":  # reading an empty array is fine (no RF302 yet)
+            if self._array_default_breaks(state, ref, name, value, site, target, False):
+                state.heap[ref].reported.add(name)
+            return value
         for rule, path in self.rules_on(state, ref, name):
             if rule.paths == {path} and value.term is not None:
                 self._default_breaks(state, rule, path, value.term, site, target, False)
@@ -627,6 +905,52 @@ class Checker:
         )
         owner.reported.add(fname)
 
+    def _array_default_breaks(
+        self,
+        state: State,
+        ref: int,
+        name: str,
+        value: Value,
+        site: ast.AST,
+        target: str,
+        publishing: bool,
+    ) -> bool:
+        """RF302 for an array field never set whose default (empty, or zeros) breaks
+        a refinement of its elements or its length."""
+        count = containers.length_term(value)
+        spec = heap.field_spec(self.ctx, state, ref, name)
+        if count is None or spec is None:
+            return False
+        zero = heap.DEFAULTS.get(spec.kind)
+        has_elements = count != containers.number(0)
+        for owner, path, inv in heap.invariants_on(self.ctx, state, ref, name):
+            each, size = heap.array_parts(inv.predicate, path)
+            goals = [containers.at(size, count)] if size != A.TRUE else []
+            if each != A.TRUE and zero is not None and has_elements:
+                goals.append(containers.at(each, zero))
+            if not goals:
+                continue
+            verdict = self.ctx.discharge(VC((), A.conjoin(goals)))
+            if not isinstance(verdict, Violated):
+                continue
+            span, stmt = self.where(site)
+            shown = (
+                f"[{A.show(zero)}] * {A.show(count)}" if has_elements and zero else "[]"
+            )
+            declared = Declared(
+                f"refinement of {owner.name}",
+                inv.origin.path,
+                inv.origin.line,
+                owner=owner.name,
+            )
+            self.ctx.report(
+                messages.unset_field(
+                    self.path, span, stmt, target, shown, inv.text, declared, publishing
+                )
+            )
+            return True
+        return False
+
     def check_whole(
         self,
         state: State,
@@ -663,6 +987,12 @@ class Checker:
             self._check_invariant(state, ref, rule, site, label, publishing, single)
         enclosing = (*enclosing, spec.name)
         for fname, fs in spec.fields.items():
+            if fs.array and fname not in obj.reported:
+                value = heap.read_raw(self.ctx, state, ref, fname, f"{label}.{fname}")
+                if value.default_of is not None and self._array_default_breaks(
+                    state, ref, fname, value, site, f"{label}.{fname}", publishing
+                ):
+                    obj.reported.add(fname)
             if fs.kind != "msg" or fs.array or fs.msg_type is None:
                 continue
             if fname not in obj.fields and not walk.expand(
@@ -693,9 +1023,10 @@ class Checker:
         single: bool,
         defaults: bool = True,
     ) -> None:
+        predicate = heap.lengths_resolved(self.ctx, state, ref, rule.predicate, label)
         values = {
             p: heap.resolve_path(self.ctx, state, ref, p, label, settled=True)
-            for p in sorted(rule.paths)
+            for p in sorted({n.name for n in A.names(predicate)})
         }
         if any(v.term is None for v in values.values()):
             return
@@ -721,7 +1052,7 @@ class Checker:
                     self._unset_on_some_path(state, rule, maybe, site, label)
             if not single:
                 return
-        goal = A.substitute(rule.predicate, terms)  # type: ignore[arg-type]
+        goal = A.substitute(predicate, terms)  # type: ignore[arg-type]
         self.goal_holds(state, goal, None, site, rule.text, label, rule.declared)
 
     # -- refinements on message values ----------------------------------------

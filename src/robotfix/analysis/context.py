@@ -89,6 +89,9 @@ class FileContext:
         self.star_import = False
         self.ros1 = False  # ROS 1 code: standard messages have no default values
         self.constants = ConstantNames()  # which names are constants, and their values
+        # whether to keep what local lists hold element by element (decided once,
+        # when first needed)
+        self.follow_lists: bool | None = None
         self._reported: set[tuple[object, ...]] = set()
         # RF511 notes, kept only if the file turns out RobotFix-like (`metadata_notes`)
         self._metadata_notes: list[Diagnostic] = []
@@ -140,6 +143,10 @@ class FileContext:
         if found is None:
             found = self._sub_ids[(parent, name)] = self.fresh_id()
         return found
+
+    def last_id(self) -> int:
+        """The newest symbol or heap id: those made later have larger ids."""
+        return self._next
 
     def fresh(
         self, kind: str, description: str | ast.AST, unit: object = None

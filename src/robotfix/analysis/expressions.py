@@ -17,13 +17,13 @@ from functools import partial
 from typing import TypeVar
 
 from robotfix import messages
-from robotfix.analysis import heap, hover
+from robotfix.analysis import containers, heap, hover
 from robotfix.analysis.checks import Checker
 from robotfix.analysis.constants import is_constant
 from robotfix.analysis.context import TERM_LIMIT, FileContext
 from robotfix.analysis.program import Program
 from robotfix.analysis.state import State
-from robotfix.analysis.values import NONE, Value
+from robotfix.analysis.values import NONE, SEQUENCES, Items, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import NUMBERS, named_number
@@ -69,6 +69,7 @@ class ExpressionEvaluator:
         self.program = program
         self.check = Checker(ctx)
         self.site: ast.AST = ast.Pass()  # the statement being interpreted
+        self.lists_seen = False  # whether a list was stored in a name or attribute
 
     # -- to be provided by the statement interpreter --------------------------
     def lookup_name(self, name: str, state: State, node: ast.AST) -> Value:
@@ -174,8 +175,12 @@ class ExpressionEvaluator:
         """`.value` of a parameter handle (see `analysis/param_eval.py`)."""
         return self.unknown(node)
 
-    def eval_Attribute(self, node: ast.Attribute, state: State) -> Value:
-        base = self.eval(node.value, state)
+    def eval_Attribute(
+        self, node: ast.Attribute, state: State, base: Value | None = None
+    ) -> Value:
+        """`base.attr`; `base`, the value of `node.value`, when already known."""
+        if base is None:
+            base = self.eval(node.value, state)
         if base.kind in ("parameter", "parameter_value"):
             return self.parameter_attribute(base, node, state)
         if base.kind == "msg" and base.ref in state.heap:
@@ -305,6 +310,7 @@ class ExpressionEvaluator:
                 value = self.unknown(node)
                 if isinstance(value.term, A.Sym):
                     self.ctx.first_read(("attribute", key), value.term)
+            self.lists_seen = self.lists_seen or value.kind == "list"
         state.env[key] = value
         return value
 
@@ -386,6 +392,8 @@ class ExpressionEvaluator:
 
     def eval_BinOp(self, node: ast.BinOp, state: State) -> Value:
         left, right = self.eval(node.left, state), self.eval(node.right, state)
+        if left.kind in SEQUENCES or right.kind in SEQUENCES:
+            return self._sequence_binop(node, left, right)
         uninit = left.uninit or right.uninit
         op = ARITH.get(type(node.op))
         if op is None:
@@ -416,6 +424,26 @@ class ExpressionEvaluator:
         return Value(
             kind, term, unit, literal, uninit=uninit, scale=scale, rad_free=rad_free
         )
+
+    def _sequence_binop(self, node: ast.BinOp, left: Value, right: Value) -> Value:
+        """`xs + ys` and `[0.0] * n` of lists and tuples."""
+        found: Value | None = None
+        both = left.kind in SEQUENCES and right.kind in SEQUENCES
+        if (
+            isinstance(node.op, ast.Add)
+            and both
+            and "generator"
+            not in (
+                left.kind,
+                right.kind,
+            )
+        ):
+            found = containers.concatenated(left, right)
+        elif isinstance(node.op, ast.Mult) and not both:
+            sequence, times = (left, right) if left.kind in SEQUENCES else (right, left)
+            if sequence.kind != "generator":
+                found = containers.repeated(sequence, times)
+        return found if found is not None else self.unknown(node)
 
     def _other_binop(self, node: ast.BinOp, left: Value, right: Value) -> Value:
         if isinstance(node.op, ast.Mod):
@@ -649,12 +677,34 @@ class ExpressionEvaluator:
         base = self.eval(node.value, state)
         key = self.eval(node.slice, state)
         if base.elements is not None and (
-            base.kind == "tuple" or self.is_read_only_table(node.value)
-        ):
+            base.kind in ("tuple", "list") or self.is_read_only_table(node.value)
+        ):  # a list keeps its elements only while nothing else can change it
             found = self._look_up(base, key, node, state)
-            if found is not None:
-                return found
+            if found is not None:  # a list inside a table is shared with it
+                return containers.stripped(found)
+        if base.kind in SEQUENCES and key.kind in ("int", "bool", "unknown"):
+            if isinstance(node.slice, ast.Slice):
+                return containers.sliced(base)
+            return self.element(base, node, state)
         return self.unknown(node, unit=base.unit if not base.literal else None)
+
+    def element(self, sequence: Value, node: ast.AST, state: State) -> Value:
+        """One element of `sequence`: what holds of every element holds of it."""
+        if sequence.keys is not None and sequence.name in ("zip", "enumerate"):
+            parts = tuple(self.element(k, node, state) for k in sequence.keys)
+            return Value("tuple", elements=parts)
+        if sequence.elements and len(sequence.elements) <= containers.MAX_SPELLED:
+            found = self._one_of(list(sequence.elements), node, state)
+            if found is not None:
+                return containers.stripped(found)
+        kind = containers.item_kind(sequence)
+        if kind not in ("int", "float", "bool", "str"):
+            kind = "unknown"
+        value = replace(self.unknown(node, kind, sequence.unit), scale=sequence.scale)
+        each = containers.each_of(sequence)
+        if each != A.TRUE:
+            state.assume(self.check.instantiate(each, value.known_term))
+        return value
 
     def eval_Tuple(self, node: ast.Tuple | ast.List, state: State) -> Value:
         values = []
@@ -666,12 +716,21 @@ class ExpressionEvaluator:
                 value.term is None and value.elements is None
             ):
                 modelled = False
-        if node.__class__ is not ast.Tuple:
-            shown = Value("list", elements=tuple(values)) if modelled else None
-            return self.sized(node, state, shown)  # type: ignore[arg-type]
         if not modelled:
+            if node.__class__ is ast.List:  # still a list, of elements not followed
+                return Value("list", items=Items())
             return self.unknown(node)
-        return Value("tuple", elements=tuple(values))
+        kind = "tuple" if node.__class__ is ast.Tuple else "list"
+        elements = tuple(values)
+        unit = containers.common_unit(elements)
+        scales = {v.scale for v in elements if not v.literal and v.unit == unit}
+        return Value(
+            kind,
+            unit=unit,
+            elements=elements,
+            items=Items(sites=tuple(node.elts)),
+            scale=scales.pop() if unit is not None and len(scales) == 1 else 1.0,
+        )
 
     eval_List = eval_Tuple
 
@@ -749,7 +808,19 @@ class ExpressionEvaluator:
     def eval_Lambda(self, node: ast.Lambda, state: State) -> Value:
         return self.unknown(node)
 
-    eval_ListComp = eval_SetComp = eval_DictComp = eval_GeneratorExp = eval_Lambda
+    eval_SetComp = eval_DictComp = eval_Lambda
+
+    def eval_ListComp(self, node: ast.ListComp, state: State) -> Value:
+        return self.comprehension(node, "list", state)
+
+    def eval_GeneratorExp(self, node: ast.GeneratorExp, state: State) -> Value:
+        return self.comprehension(node, "generator", state)
+
+    def comprehension(
+        self, node: ast.ListComp | ast.GeneratorExp, kind: str, state: State
+    ) -> Value:
+        """A list or generator of the values of a comprehension."""
+        return Value(kind, items=Items())
 
     # -- conditions ----------------------------------------------------------
     def condition(self, node: ast.expr, state: State) -> A.Expr:
@@ -795,6 +866,11 @@ class ExpressionEvaluator:
             return A.Binary("!=", value.term, A.Str(""))
         if value.kind == "none":
             return A.Bool(False)
+        length = containers.length_term(value) if value.kind in SEQUENCES else None
+        if (
+            length is not None and value.kind != "generator"
+        ):  # a list is true if not empty
+            return A.Binary(">", length, A.Num(Fraction(0), True))
         if value.kind == "tuple" and value.elements is not None:
             return A.Bool(len(value.elements) > 0)
         term = value.term

@@ -7,13 +7,23 @@ not to a free-standing `Vector3`.
 
 from __future__ import annotations
 
+from dataclasses import replace
 from fractions import Fraction
 
+from robotfix.analysis import containers
 from robotfix.analysis.context import FileContext
 from robotfix.analysis.state import State
-from robotfix.analysis.values import MaybeDefault, MsgObj, ObjInvariant, Value
+from robotfix.analysis.values import (
+    Items,
+    Kept,
+    MaybeDefault,
+    MsgObj,
+    ObjInvariant,
+    Value,
+)
 from robotfix.annotations import ast as A
 from robotfix.annotations.units import Unit, UnitError, label, resolve
+from robotfix.messages import Declared
 from robotfix.ros.catalog import (
     FieldSpec,
     FieldUnit,
@@ -63,9 +73,11 @@ def settle(ctx: FileContext, state: State, ref: int) -> None:
     if obj.origin != "received" or spec is None:
         return
     for inv in ctx.invariants(spec):
-        terms = {p: resolve_path(ctx, state, ref, p, obj.label).term for p in inv.paths}
+        predicate = lengths_resolved(ctx, state, ref, inv.predicate, obj.label)
+        paths = {n.name for n in A.names(predicate)}
+        terms = {p: resolve_path(ctx, state, ref, p, obj.label).term for p in paths}
         if all(t is not None for t in terms.values()):
-            state.assume(A.substitute(inv.predicate, terms))  # type: ignore[arg-type]
+            state.assume(A.substitute(predicate, terms))  # type: ignore[arg-type]
 
 
 def chain(state: State, ref: int, name: str) -> list[tuple[int, str]]:
@@ -204,6 +216,8 @@ def read_raw(
     spec = field_spec(ctx, state, ref, name)
     if spec is None:
         return Value("unknown")
+    if spec.array:
+        return _array(ctx, state, ref, name, spec, description)
     if spec.kind == "msg" and not spec.array and spec.msg_type:
         sub = new_message(
             ctx,
@@ -217,7 +231,7 @@ def read_raw(
         obj.fields[name] = sub
         return sub
     unit = field_unit(ctx, state, ref, name)[0]
-    if spec.array or spec.kind not in DEFAULTS:
+    if spec.kind not in DEFAULTS:
         value = Value("unknown", unit=unit)
         obj.fields[name] = value
         return value
@@ -226,6 +240,148 @@ def read_raw(
     value = ctx.fresh(spec.kind, description, unit)
     obj.fields[name] = value
     return value
+
+
+def _array(
+    ctx: FileContext,
+    state: State,
+    ref: int,
+    name: str,
+    spec: FieldSpec,
+    description: str,
+) -> Value:
+    """An array field: a sequence whose elements satisfy the field's refinements.
+    Never set, it is its default: empty, or `size` zeros for a fixed-size array."""
+    obj = state.heap[ref]
+    kept = array_rule(ctx, state, ref, name, spec, description)
+    if obj.origin == "constructed" and name not in obj.reported:
+        return replace(default_array(spec, kept), default_of=(ref, name))
+    if spec.size is not None:
+        size: A.Expr = A.Binary("==", containers.SELF, containers.number(spec.size))
+    else:
+        length = ctx.fresh("int", f"`len({description})`").known_term
+        size = A.conjoin(
+            [
+                A.Binary("==", containers.SELF, length),
+                A.Binary(">=", containers.SELF, containers.number(0)),
+            ]
+        )
+    size = A.conjoin([size, kept.size]) if kept.size != A.TRUE else size
+    value = Value("list", unit=kept.unit, items=Items(kept.item, kept.each, size, kept))
+    obj.fields[name] = value
+    return value
+
+
+def default_array(spec: FieldSpec, kept: Kept) -> Value:
+    """What an array field never set holds: no element, or `size` zeros."""
+    count = spec.size or 0
+    zero = DEFAULTS.get(spec.kind)
+    size = A.Binary("==", containers.SELF, containers.number(count))
+    if zero is not None and count <= containers.MAX_SPELLED:
+        element = Value(spec.kind, zero, kept.unit)
+        return Value(
+            "list",
+            unit=kept.unit,
+            elements=(element,) * count,
+            items=Items(kept.item, kept.each, size, kept),
+        )
+    each = A.Binary("==", containers.SELF, zero) if zero is not None else A.TRUE
+    return Value("list", unit=kept.unit, items=Items(kept.item, each, size, kept))
+
+
+def array_rule(
+    ctx: FileContext,
+    state: State,
+    ref: int,
+    name: str,
+    spec: FieldSpec,
+    label: str,
+) -> Kept:
+    """What every value of array field `name` must satisfy: its elements' kind and
+    unit, the `#RobotFix#` parts on its elements and on its length (`len(...)`),
+    and its fixed size or bound."""
+    each: list[A.Expr] = []
+    size: list[A.Expr] = []
+    declared: Declared | None = None
+    for owner, path, inv in invariants_on(ctx, state, ref, name):
+        on_each, on_size = array_parts(inv.predicate, path)
+        each += [on_each] if on_each != A.TRUE else []
+        size += [on_size] if on_size != A.TRUE else []
+        if declared is None:
+            declared = Declared(
+                f"refinement of {owner.name}",
+                inv.origin.path,
+                inv.origin.line,
+                owner=owner.name,
+            )
+    shape: list[A.Expr] = []
+    if spec.size is not None:
+        shape.append(A.Binary("==", containers.SELF, containers.number(spec.size)))
+    if spec.bound is not None:
+        shape.append(A.Binary("<=", containers.SELF, containers.number(spec.bound)))
+    unit, unit_decl, unit_owner = field_unit(ctx, state, ref, name)
+    unit_declared: Declared | None = None
+    if unit_decl is not None and unit_owner is not None:
+        what = f"unit of {unit_owner.name}"
+        unit_declared = (
+            Declared(what, None, None, unit_decl.source, unit_owner.name)
+            if unit_decl.origin is None
+            else Declared(
+                what,
+                unit_decl.origin.path,
+                unit_decl.origin.line,
+                owner=unit_owner.name,
+            )
+        )
+    msg_type = state.heap[ref].type
+    declared = (
+        declared
+        or unit_declared
+        or Declared(
+            f"definition of {msg_type}", None, None, "its interface file", msg_type
+        )
+    )
+    kind = spec.kind if spec.kind in DEFAULTS else "unknown"
+    return Kept(
+        kind,
+        unit,
+        A.conjoin(each),
+        A.conjoin(size),
+        label,
+        declared,
+        unit_declared,
+        A.conjoin(shape),
+    )
+
+
+def array_parts(predicate: A.Expr, path: str) -> tuple[A.Expr, A.Expr]:
+    """(on each element, on the length) of an invariant of array field `path`, both
+    over `_`: `ranges >= 0` is on each element, `len(ranges) <= 10` on the length."""
+    marker = A.Name("len(_)")
+    lengths = containers.lengths_as(predicate, path, marker)
+    if lengths is predicate:
+        return A.substitute(predicate, {path: containers.SELF}), A.TRUE
+    if any(n.name == path for n in A.names(lengths)):
+        return A.TRUE, A.TRUE  # both at once: the catalog reported it
+    return A.TRUE, A.substitute(lengths, {marker.name: containers.SELF})
+
+
+def lengths_resolved(
+    ctx: FileContext, state: State, ref: int, predicate: A.Expr, prefix: str
+) -> A.Expr:
+    """`predicate` with `len(path)` of each array field replaced by its length."""
+    found: dict[str, A.Expr] = {}
+    for node in A.walk(predicate):
+        if isinstance(node, A.Func) and node.name == "len":
+            arg = node.args[0]
+            if isinstance(arg, A.Name) and arg.name not in found:
+                value = resolve_path(ctx, state, ref, arg.name, prefix)
+                length = containers.length_term(value)
+                if length is not None:
+                    found[arg.name] = length
+    for path, length in found.items():
+        predicate = containers.lengths_as(predicate, path, length)
+    return predicate
 
 
 def default_of(ctx: FileContext, spec: FieldSpec) -> A.Expr:

@@ -33,12 +33,20 @@ def variable(
     )
     if decl is not None and decl.base != "other":
         kind = (decl.msg_type or "message") if decl.base == "msg" else decl.base
+        if decl.item is not None:
+            kind = f"{decl.base}[{decl.item if decl.item != 'other' else 'Any'}]"
     parts = [f"**{name}**: `{kind}`"]
     unit = decl.unit if decl is not None and decl.unit is not None else value.unit
     if unit is not None:
-        parts.append(f"in `{unit}`")
+        parts.append(
+            f"in `{unit}`" if decl is None or decl.item is None else f"of `{unit}`"
+        )
     if decl is not None and decl.predicate != A.TRUE:
-        parts.append(f"— refinement `{A.show(decl.predicate)}` (line {decl.line})")
+        shown = A.show(decl.predicate)
+        what = "each element" if decl.item is not None else "refinement"
+        parts.append(f"— {what} `{shown}` (line {decl.line})")
+    if decl is not None and decl.item is not None and decl.size != A.TRUE:
+        parts.append(f"— length `{A.show(decl.size)}`")
     text = " ".join(parts)
     if value.kind == "msg" and value.ref in state.heap:
         assert value.ref is not None

@@ -16,7 +16,7 @@ from dataclasses import replace
 from fractions import Fraction
 
 from robotfix import messages
-from robotfix.analysis import heap, hover
+from robotfix.analysis import containers, heap, hover
 from robotfix.analysis.calls import MUTATORS, CallEvaluator
 from robotfix.analysis.constants import scan
 from robotfix.analysis.context import FileContext, Scope, build_scope
@@ -29,7 +29,15 @@ from robotfix.analysis.program import (
     never_returns,
 )
 from robotfix.analysis.state import MAYBE, MaybeUnbound, State, join
-from robotfix.analysis.values import CONTAINERS, MUTABLE, NONE, Uninit, Value
+from robotfix.analysis.values import (
+    CONTAINERS,
+    MUTABLE,
+    NONE,
+    SEQUENCES,
+    Items,
+    Uninit,
+    Value,
+)
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import named_number
@@ -95,6 +103,32 @@ def analyze_module(ctx: FileContext) -> None:
     ctx.metadata_notes()
 
 
+def _refined_types(ctx: FileContext) -> bool:
+    """Whether a message, service or action type the file imports (or a message
+    inside one) has refinements. Only imported types are looked up, so the answer
+    depends on what the file's cache entry already depends on."""
+    todo: list[str] = []
+    for qualified in ctx.imports.values():
+        found = ctx.msg_type_named(qualified)
+        interface = None if found else ctx.interface_named(qualified)
+        if found:
+            todo.append(found)
+        elif interface:
+            todo += [f"{interface}_{s}" for s in ("Request", "Response", "Goal")]
+            todo += [f"{interface}_{s}" for s in ("Result", "Feedback")]
+    seen: set[str] = set()
+    while todo and len(seen) < 200:
+        name = todo.pop()
+        spec = None if name in seen else ctx.catalog.lookup(name)
+        seen.add(name)
+        if spec is None:
+            continue
+        if spec.invariants:
+            return True
+        todo += [f.msg_type for f in spec.fields.values() if f.msg_type]
+    return False
+
+
 def _analyze_body(
     ctx: FileContext,
     program: Program,
@@ -150,6 +184,7 @@ class Interpreter(CallEvaluator):
         self.elifs: set[int] = set()  # `if` statements that are an `elif`
         self.guarded = 0  # inside a `try` body whose handlers catch NameError
         self.nested: dict[str, ast.AST] = {}  # functions defined in this body
+        self._shared: set[str] | None = None  # names whose lists may be shared
 
     # -- blocks --------------------------------------------------------------
     def exec_block(self, body: list[ast.stmt], state: State) -> State:
@@ -172,6 +207,8 @@ class Interpreter(CallEvaluator):
         if name in scope.local_names:
             bound = state.env.get(name)
             if isinstance(bound, Value):
+                if bound.kind == "list" and containers.followed(bound):
+                    return self._unshared(name, bound)
                 return state.use(bound) if state.shared.defs else bound
             decl = scope.decls.get(name)
             if isinstance(bound, MaybeUnbound):
@@ -228,7 +265,8 @@ class Interpreter(CallEvaluator):
                 state.assume(fact)
             return value
         decl = self.scope.module().decls.get(name)
-        if decl is not None and decl.elements is not None:
+        if decl is not None and (decl.elements is not None or decl.item is not None):
+            # a tuple of refined elements, or a refined list or tuple
             value = self.check.assumed(
                 state, name, decl, self.refinement_lookup(decl, state)
             )
@@ -349,7 +387,8 @@ class Interpreter(CallEvaluator):
                 value = self.check.assign_refined(
                     state, target.id, decl, value, self.site, lookup
                 )
-            bound = state.env[target.id] = replace(value, uninit=None, default_of=None)
+            bound = state.env[target.id] = value.settled()
+            self.lists_seen = self.lists_seen or value.kind == "list"
             self.note_hover(target, lambda: self.describe_name(target.id, bound, state))
             if self.scope.kind == "module" or (
                 self.scope.kind == "class" and self.scope.parent is self.scope.module()
@@ -382,22 +421,26 @@ class Interpreter(CallEvaluator):
             else:
                 state.changed(base, firm=True)
         elif isinstance(target, (ast.Tuple, ast.List)):
-            parts = value.elements if value.kind == "tuple" else None
+            parts = value.elements if value.kind in SEQUENCES else None
+            starred = any(isinstance(e, ast.Starred) for e in target.elts)
+            if parts is None and value.kind in SEQUENCES and not starred:
+                parts = tuple(self.element(value, e, state) for e in target.elts)
             if parts is None or len(parts) != len(target.elts):
                 parts = None
             for index, element in enumerate(target.elts):
                 inner = element.value if isinstance(element, ast.Starred) else element
-                if parts is not None and inner is element:
-                    self.bind(inner, parts[index], state)
+                if parts is not None and inner is element:  # a list inside is shared
+                    self.bind(inner, containers.stripped(parts[index]), state)
                 else:
                     parts = None  # after a starred target the positions shift
                     self.bind(inner, self.unknown(inner), state)
         elif isinstance(target, ast.Subscript):
-            self.eval(target.value, state)
-            self.eval(target.slice, state)
-            self._changed_root(
-                target, state, firm=True
-            )  # `d[k] = v`: d is not empty now
+            receiver = self.receiver(target.value, state)
+            key = self.eval(target.slice, state)
+            if receiver.kind == "list":
+                self._assign_element(target, receiver, key, value, state)
+            else:  # `d[k] = v`: d is not empty now
+                self._changed_root(target, state, firm=True)
         elif isinstance(target, ast.Starred):
             self.bind(target.value, self.unknown(target), state)
 
@@ -412,7 +455,178 @@ class Interpreter(CallEvaluator):
             value = self.check.assign_refined(
                 state, key, decl, value, self.site, lookup
             )
-        state.env[key] = replace(value, uninit=None, default_of=None)
+        value = containers.stripped(value)  # an attribute's list is shared
+        self.lists_seen = self.lists_seen or value.kind == "list"
+        state.env[key] = value.settled()
+
+    # -- lists ---------------------------------------------------------------
+    def follows_lists(self) -> bool:
+        """Whether what local lists hold element by element can matter in this
+        file: it has refinements, or a type it imports has (decided once)."""
+        if self.ctx.follow_lists is None:
+            self.ctx.follow_lists = "Annotated" in self.ctx.source.text or (
+                _refined_types(self.ctx)
+            )
+        return self.ctx.follow_lists
+
+    def _unshared(self, name: str, value: Value) -> Value:
+        """A local list as read: what it holds element by element only if no other
+        name, attribute or callee can change it (else what its declaration says)."""
+        if self.scope.kind != "class":
+            if self._shared is None:  # one walk of the body, at the first such read
+                self._shared = containers.shared_names(
+                    getattr(self.scope.node, "body", [])
+                )
+            if name not in self._shared:
+                if self.follows_lists():
+                    return value
+                # its elements do not matter here, its length (truth) may
+                stripped = containers.stripped(value)
+                items = stripped.items or Items(containers.item_kind(value))
+                size = containers.size_of(value)
+                return replace(stripped, items=replace(items, size=size))
+        return containers.stripped(value)
+
+    def _assign_element(
+        self,
+        target: ast.Subscript,
+        receiver: Value,
+        key: Value,
+        value: Value,
+        state: State,
+    ) -> None:
+        """`xs[i] = v` (or `xs[a:b] = ys`): the new elements keep the list's
+        declaration; the list is stored back."""
+        kept = receiver.items.kept if receiver.items is not None else None
+        ok = True
+        if isinstance(target.slice, ast.Slice):
+            if kept is not None:
+                ok = self.check.check_items(
+                    state, value, containers.each_only(kept), self.site
+                )
+            updated = containers.forgetting(receiver)
+        else:
+            if kept is not None:
+                index = self.ctx.source.segment(target.slice) or "i"
+                element = Value("list", elements=(value,))
+                ok = self.check.check_items(
+                    state,
+                    element,
+                    containers.each_only(kept),
+                    self.site,
+                    labels=(f"{kept.label}[{index}]",),
+                )
+            position = key.term
+            index_value = (
+                int(position.value)
+                if isinstance(position, A.Num) and position.is_int
+                else None
+            )
+            updated = containers.with_element(
+                receiver, value, index=index_value, grows=False
+            )
+        if not ok and kept is not None:  # reported: from here on, its declaration
+            updated = containers.declared(receiver.kind, kept)
+        self.store(target.value, containers.holding(updated), state)
+
+    def store(self, target: ast.expr, value: Value, state: State) -> None:
+        """Put a list that changed back where it lives: a local name, `self.x`, or a
+        message's array field (as its declaration)."""
+        self.lists_seen = True
+        if isinstance(target, ast.Name):  # (a read strips it if it is shared)
+            if target.id in self.scope.local_names:
+                state.env[target.id] = value
+            return
+        if not isinstance(target, ast.Attribute):
+            return
+        base = self.eval(target.value, state)
+        if base.kind == "instance" and isinstance(target.value, ast.Name):
+            state.env[f"{target.value.id}.{target.attr}"] = containers.stripped(value)
+        elif base.kind == "msg" and base.ref in state.heap:
+            assert base.ref is not None
+            obj = state.heap[base.ref]
+            kept = value.items.kept if value.items is not None else None
+            obj.fields[target.attr] = (
+                containers.declared("list", kept)
+                if kept is not None
+                else containers.stripped(value)
+            )
+            obj.reported.discard(target.attr)
+
+    def comprehension(
+        self, node: ast.ListComp | ast.GeneratorExp, kind: str, state: State
+    ) -> Value:
+        """`[r for r in ranges if r > 0.1]`: its elements are what the iteration
+        and the conditions say of one element (facts about one element's own
+        symbols only, so that they hold of every element)."""
+        if any(g.is_async for g in node.generators):
+            return Value(kind, items=Items())
+        inner = state.fork()
+        mark, known = self.ctx.last_id(), len(inner.facts)
+        saved = self.scope
+        names = self.ctx.index.scopes.get(id(node))
+        own = set(names.local_names) if names is not None else set()
+        self.scope = Scope(
+            saved.kind,
+            saved.name,
+            saved.node,
+            saved.parent,
+            {k: v for k, v in saved.decls.items() if k not in own},
+            saved.local_names | own,
+            saved.global_names - own,
+        )
+        try:
+            for generator in node.generators:
+                iterable = self.eval(generator.iter, inner)
+                element = (
+                    self.element(iterable, generator.target, inner)
+                    if iterable.kind in SEQUENCES
+                    else self.unknown(generator.target)
+                )
+                self._bind_plain(generator.target, element, inner)
+                for test in generator.ifs:
+                    inner.assume(self.condition(test, inner))
+            value = self.eval(node.elt, inner)
+        finally:
+            self.scope = saved
+        each: A.Expr = A.TRUE
+        term = value.term
+        if term is not None and value.kind in (
+            "int",
+            "float",
+            "bool",
+            "str",
+            "unknown",
+        ):
+            # each element is the value for some iteration: the symbols this one
+            # made are its own (bound names), the facts it added hold of them
+            each = containers.bound(
+                A.conjoin(
+                    [A.Binary("==", containers.SELF, term), *inner.facts[known:]]
+                ),
+                mark,
+            )
+            if A.larger_than(each, 300):
+                each = A.TRUE
+        item = (
+            value.kind if value.kind in ("int", "float", "bool", "str") else "unknown"
+        )
+        unit = None if value.literal else value.unit
+        scale = 1.0 if value.literal else value.scale  # `[r * 100 for r in ranges]`
+        return Value(kind, unit=unit, items=Items(item, each), scale=scale)
+
+    def _bind_plain(self, target: ast.expr, value: Value, state: State) -> None:
+        """Bind a comprehension's target (its own names: no refinement applies)."""
+        if isinstance(target, ast.Name):
+            state.env[target.id] = value
+        elif isinstance(target, (ast.Tuple, ast.List)):
+            parts = value.elements if value.kind == "tuple" else None
+            if parts is None or len(parts) != len(target.elts):
+                parts = tuple(self.unknown(e) for e in target.elts)
+            for element, part in zip(target.elts, parts, strict=True):
+                self._bind_plain(element, part, state)
+        elif isinstance(target, ast.Starred):
+            self._bind_plain(target.value, Value("list", items=Items()), state)
 
     def bind_parameters(self, state: State) -> None:
         """Parameters: `self`, messages that arrive at a callback, refined values."""
@@ -449,6 +663,7 @@ class Interpreter(CallEvaluator):
                     "unknown", f"parameter `{arg.arg}` of {function.name}()"
                 )
             state.env[arg.arg] = value
+            self.lists_seen = self.lists_seen or value.kind == "list"
             self.note_hover(
                 self._name_span(arg),
                 lambda: self.describe_name(arg.arg, value, state),  # noqa: B023
@@ -543,8 +758,10 @@ class Interpreter(CallEvaluator):
         stays a bool), so that tests of it agree with what was set. A loop that
         calls anything (`rospy.sleep`, `spin_once`) lets callbacks run: the node's
         attributes and the globals that functions set may change there too.
+        What lists they change (`xs.append(v)`, `xs[i] = v`) hold is forgotten.
         Returns the names they may bind."""
         calls = False
+        lists: set[str] = set()  # names of lists that `nodes` mention
         keeps_unit = _accumulated(nodes)
         watched = state.shared.watched  # only their changes need a new version
         bound_at: dict[str, ast.AST] = {}
@@ -556,6 +773,8 @@ class Interpreter(CallEvaluator):
                     bound = state.env.get(child.id)  # type: ignore[attr-defined]
                     if isinstance(bound, Value) and bound.ref is not None:
                         heap.havoc(state, bound.ref)
+                    elif isinstance(bound, Value) and bound.kind == "list":
+                        lists.add(child.id)  # type: ignore[attr-defined]
                     if type(child.ctx) is not ast.Load:  # type: ignore[attr-defined]
                         bound_at.setdefault(child.id, child)  # type: ignore[attr-defined]
                 elif kind is ast.Attribute:
@@ -564,6 +783,11 @@ class Interpreter(CallEvaluator):
                         state.env.pop(key or "", None)
                         if watched:
                             self._changed_root(child, state, firm=True)
+                    elif self.lists_seen:  # `self.xs.append(v)`: forget what it held
+                        key = attribute_key(child) or ""  # type: ignore[arg-type]
+                        kept = state.env.get(key)
+                        if isinstance(kept, Value) and kept.kind == "list":
+                            state.env.pop(key, None)
                 elif kind is ast.Subscript:
                     if watched and type(child.ctx) is not ast.Load:  # type: ignore[attr-defined]
                         self._changed_root(child, state, firm=True)
@@ -580,6 +804,13 @@ class Interpreter(CallEvaluator):
                 elif kind in BINDER_KINDS:
                     for name in _binds(child):
                         bound_at.setdefault(name, child)
+        if lists:  # those `nodes` may change (`xs.append(v)`, `xs[i] = v`, `b = xs`)
+            if self.follows_lists():
+                lists &= containers.shared_names(nodes, changes=True)
+            for name in lists:
+                bound = state.env.get(name)
+                if isinstance(bound, Value):
+                    state.env[name] = containers.forgetting(bound)
         if loop and calls:
             for key in [k for k in state.env if "." in k]:
                 del state.env[key]  # `while self.scan is None: rospy.sleep(0.1)`
@@ -793,6 +1024,8 @@ class Interpreter(CallEvaluator):
             load = ast.Name(node.target.id, ast.Load())
         elif isinstance(node.target, ast.Attribute):
             load = ast.Attribute(node.target.value, node.target.attr, ast.Load())
+        elif isinstance(node.target, ast.Subscript):  # `ranges[i] += d`
+            load = ast.Subscript(node.target.value, node.target.slice, ast.Load())
         else:
             return self.generic(node, state)
         combined = ast.BinOp(ast.copy_location(load, node.target), node.op, node.value)
@@ -966,10 +1199,43 @@ class Interpreter(CallEvaluator):
                 if side.exits > since:
                     _excuse(side, other)
         if a.reachable and b.reachable:
+            self._tie_lengths(a, b)
+        if a.reachable and b.reachable:
             for ref in sorted(a.heap.keys() & b.heap.keys()):
                 if a.heap[ref].pending != b.heap[ref].pending:
                     heap.settle(self.ctx, a if a.heap[ref].pending else b, ref)
         return join(a, b, self)
+
+    def _tie_lengths(self, a: State, b: State) -> None:
+        """A list of a known length on each path (`hits = []`, `hits = [r]`): one
+        length symbol, equal to each on its path, so that a later `if hits:` agrees
+        with the path that filled it."""
+        for name in sorted(a.env.keys() & b.env.keys()):
+            x, y = a.env[name], b.env[name]
+            if (
+                not isinstance(x, Value)
+                or not isinstance(y, Value)
+                or x.kind != "list"
+                or y.kind != "list"
+                or x == y
+                or any(v.items is not None and v.items.kept for v in (x, y))
+            ):
+                continue
+            lx, ly = containers.length_term(x), containers.length_term(y)
+            if lx is None or ly is None or lx == ly:
+                continue
+            length = self.ctx.fresh("int", f"`len({name})`").known_term
+            a.assume(A.Binary("==", length, lx))
+            b.assume(A.Binary("==", length, ly))
+            kind = containers.item_kind(x)
+            items = Items(
+                kind if kind == containers.item_kind(y) else "unknown",
+                A.Binary("or", containers.each_of(x), containers.each_of(y)),
+                A.Binary("==", containers.SELF, length),
+            )
+            unit = x.unit if x.unit == y.unit else None
+            a.env[name] = Value("list", unit=unit, items=items)
+            b.env[name] = Value("list", unit=unit, items=items)
 
     # The Joiner hooks (see state.join).
     def merged(self, x: Value, y: Value) -> Value:
@@ -982,6 +1248,8 @@ class Interpreter(CallEvaluator):
         unit = x.unit if x.unit == y.unit else None
         if x.literal != y.literal:  # `d = 0.0`, then `d = scan.range_min`: m
             unit = y.unit if x.literal else x.unit
+        if x.kind in SEQUENCES and y.kind in SEQUENCES:
+            return containers.joined(x, y)
         if kind in CONTAINERS:  # different tables on the two paths: one of them
             kind = "unknown"
         if (
@@ -1065,7 +1333,7 @@ class Interpreter(CallEvaluator):
         return self._after_loop(node, normal, loop, breaks)
 
     def visit_For(self, node: ast.For | ast.AsyncFor, state: State) -> State:
-        empty, nonempty = self._empty_when(node.iter, state)
+        empty, nonempty, iterable = self._empty_when(node.iter, state)
         entry = state
         loop = entry.fork()
         stored = self.havoc(loop, [node], loop=True)
@@ -1078,7 +1346,14 @@ class Interpreter(CallEvaluator):
             for name, bound in list(body_state.env.items()):
                 if isinstance(bound, MaybeUnbound) and bound.when is not None:
                     body_state.env[name] = MAYBE
-        self.bind(node.target, self.unknown(node.target), body_state)
+        element = (
+            self.element(iterable, node.target, body_state)
+            if iterable is not None
+            and iterable.kind in SEQUENCES
+            and isinstance(node, ast.For)
+            else self.unknown(node.target)
+        )
+        self.bind(node.target, element, body_state)
         end = self.exec_block(node.body, body_state)
         self._loop_units(loop, end, [node])
         breaks = _breaks(node.body)
@@ -1099,11 +1374,11 @@ class Interpreter(CallEvaluator):
 
     def _empty_when(
         self, iterable: ast.expr, state: State
-    ) -> tuple[A.Expr | None, A.Expr | None]:
+    ) -> tuple[A.Expr | None, A.Expr | None, Value | None]:
         """Evaluate a `for` loop's iterable: when is it empty (a path with no
-        iteration), and what holds in an iteration? The first is known for
-        `range()` of numbers and for literals only: that a list that arrived may
-        be empty is not taken for a path."""
+        iteration), what holds in an iteration, and its value (None for `range`)?
+        The first is known for `range()` of numbers and for literals only: that a
+        list that arrived may be empty is not taken for a path."""
         call = iterable
         if (
             isinstance(call, ast.Call)
@@ -1119,16 +1394,16 @@ class Interpreter(CallEvaluator):
             low, high = bounds
             if {low.kind, high.kind} <= {"int", "unknown"} and low.term and high.term:
                 empty = A.Binary("<=", high.term, low.term)
-                return empty, A.Unary("not", empty)
-            return None, None
+                return empty, A.Unary("not", empty), None
+            return None, None, None
         value = self.eval(iterable, state)
         if isinstance(iterable, (ast.List, ast.Tuple, ast.Set, ast.Dict)):
             nonempty = _surely_nonempty(iterable)
-            return A.Bool(not nonempty), A.Bool(nonempty)
+            return A.Bool(not nonempty), A.Bool(nonempty), value
         if isinstance(value.term, A.Sym) and value.kind in MUTABLE:
             # `if items: first = ...` then `for x in items: use(first)`
-            return None, self.truthy(value, iterable, state)
-        return None, None
+            return None, self.truthy(value, iterable, state), value
+        return None, None, value
 
     visit_AsyncFor = visit_For
 
@@ -1274,17 +1549,14 @@ def _may_raise(node: ast.AST) -> bool:
 
 
 def _is_case(test: ast.expr) -> bool:
-    """`m == A`, `m is A`, `m in (A, B)`, `isinstance(m, A)`: one case of a case
-    analysis, which may cover every value the subject can have."""
+    """`m == A`, `m is A`, `m in (A, B)`, `isinstance(m, A)`, `is_array(m)`: one
+    case of a case analysis, which may cover every value the subject can have."""
     if isinstance(test, ast.Compare):
         return len(test.ops) == 1 and isinstance(test.ops[0], (ast.Eq, ast.Is, ast.In))
     if isinstance(test, ast.BoolOp) and isinstance(test.op, ast.Or):
         return all(_is_case(v) for v in test.values)
-    return (
-        isinstance(test, ast.Call)
-        and isinstance(test.func, ast.Name)
-        and test.func.id in ("isinstance", "issubclass", "hasattr", "callable")
-    )
+    # a predicate call: `isinstance(x, A)`, `is_array(v)`, `self.check_event(E)`
+    return isinstance(test, ast.Call)
 
 
 def _cannot_raise(stmt: ast.stmt) -> bool:

@@ -11,11 +11,48 @@ from dataclasses import dataclass, field, replace
 
 from robotfix.annotations import ast as A
 from robotfix.annotations.units import Fit, Unit, fit
+from robotfix.messages import Declared
 
 NUMERIC = frozenset({"int", "float", "bool"})
 CONTAINERS = frozenset({"tuple", "list", "dict"})
 # Kinds of objects code may change in place (`xs.append(v)`, `d[k] = v`).
 MUTABLE = frozenset({"unknown", "list", "dict"})
+# Values whose elements a refinement speaks of: lists (also message array fields),
+# tuples, and generators (`min(r for r in ranges)`).
+SEQUENCES = frozenset({"list", "tuple", "generator"})
+
+
+@dataclass(frozen=True)
+class Items:
+    """What holds of every element of a sequence, beyond the `elements` a display
+    names: their kind, a predicate `each` over `_`, and a predicate `size` over `_`
+    that the sequence's length satisfies."""
+
+    kind: str = "unknown"
+    each: A.Expr = A.TRUE
+    size: A.Expr = A.TRUE
+    kept: Kept | None = None  # the declaration every change must keep
+    # a display's element nodes, where an element's diagnostic points
+    sites: tuple[object, ...] | None = field(default=None, compare=False)
+
+
+@dataclass(frozen=True)
+class Kept:
+    """A sequence's declaration (a refined variable or attribute, a message array
+    field), which every change must keep, also one made through another name: its
+    elements' base type, unit and predicate (over `_`), its length's predicate, how
+    diagnostics name the sequence, and where it was declared."""
+
+    item: str
+    unit: Unit | None
+    each: A.Expr
+    size: A.Expr
+    label: str
+    declared: Declared
+    unit_declared: Declared | None = None  # where the unit was, if elsewhere
+    # a message array's fixed size or bound: its type's, not a refinement, so only
+    # a length known to break it is reported
+    shape: A.Expr = A.TRUE
 
 
 @dataclass(frozen=True)
@@ -57,6 +94,7 @@ class Value:
     # Computed by a product or quotient with a length: one power of radian may cancel
     # or appear, as the radian is a ratio of lengths (`omega * r` is m/s).
     rad_free: bool = False
+    items: Items | None = None  # a sequence: what holds of its elements
 
     @property
     def known_term(self) -> A.Expr:
@@ -69,7 +107,20 @@ class Value:
         return self.kind in NUMERIC
 
     def with_unit(self, unit: Unit | None) -> Value:
+        if (
+            self.unit == unit
+            and not self.literal
+            and self.scale == 1.0
+            and not self.rad_free
+        ):
+            return self
         return replace(self, unit=unit, literal=False, scale=1.0, rad_free=False)
+
+    def settled(self) -> Value:
+        """The value as a name or field holds it: set, and not a default."""
+        if self.uninit is None and self.default_of is None:
+            return self  # (the common case: no copy)
+        return replace(self, uninit=None, default_of=None)
 
     def fits_unit(self, expected: Unit) -> bool:
         """Same unit, after the literal factors it was scaled by (`speed / 3.6` fits

@@ -20,6 +20,7 @@ import ast
 import re
 from collections.abc import Callable
 from dataclasses import dataclass, replace
+from fractions import Fraction
 
 from robotfix import rules
 from robotfix.annotations import ast as A
@@ -42,11 +43,25 @@ QUALIFIERS = frozenset(
 )
 
 
+# `list[float]`, `Sequence[float]`, `tuple[float, ...]`: a refinement on one of these
+# is on its elements; `len(_)` in it is on the container's length.
+CONTAINER_NAMES = {"list": "list", "tuple": "tuple"}
+CONTAINER_TYPES = {
+    **{f"typing.{n}": "list" for n in ("List", "Sequence", "MutableSequence")},
+    **{f"collections.abc.{n}": "list" for n in ("Sequence", "MutableSequence")},
+    "typing.Tuple": "tuple",
+    "typing_extensions.Sequence": "list",
+}
+
+
 @dataclass(frozen=True)
 class Refinement:
-    """What an annotation says of one variable, parameter or attribute."""
+    """What an annotation says of one variable, parameter or attribute.
 
-    base: str  # int float bool str msg other
+    For a container (`base` list or tuple), `item` is its elements' base type, `unit`
+    and `predicate` are theirs, and `size` is what its length (`_`) satisfies."""
+
+    base: str  # int float bool str msg list tuple other
     unit: Unit | None
     predicate: A.Expr  # the value part; the annotated thing itself is `_`
     text: str  # the annotation string as written
@@ -55,6 +70,8 @@ class Refinement:
     optional: bool = False  # `Optional[...]`: it holds when the value is not None
     # `tuple[...]`: each element's refinement (None: unrefined); base is "tuple"
     elements: tuple[Refinement | None, ...] | None = None
+    item: str | None = None  # a container's element base type
+    size: A.Expr = A.TRUE  # a container's length, as `_`
 
     def predicates(self) -> list[A.Expr]:
         """Its predicate and its elements': where the names it mentions are."""
@@ -236,10 +253,25 @@ class _Reader:
             used.append((predicate, text, start))
         if not used:
             return nested
+        item: str | None = None  # a container's elements' base type
+        size: list[A.Expr] = []  # what a container's length satisfies
         if nested is not None:
             base, mtype = nested.base, nested.msg_type
+            item = nested.item
+            size.append(nested.size)
         else:
-            base, mtype = _base(_strip(base_node, base_names), base_names.msg_type)
+            typed = _strip(base_node, base_names)
+            scalar = isinstance(typed, ast.Name) and typed.id in BASE_TYPES
+            container = None if scalar else _container(typed, base_names.qualname)
+            if container is not None:
+                base, mtype = container[0], None
+                item, fixed = container[1], container[2]
+                if fixed is not None:
+                    size.append(
+                        A.Binary("==", A.Name(SELF), A.Num(Fraction(fixed), True))
+                    )
+            else:
+                base, mtype = _base(typed, base_names.msg_type)
         unit = nested.unit if nested is not None else None
         parts = [nested.predicate] if nested is not None else []
         texts = [nested.text] if nested is not None else []
@@ -247,17 +279,30 @@ class _Reader:
             found, values = _split(predicate, self.self_name, start, self.problems)
             if found is not None:
                 unit = found if unit is None else unit * found
-            parts += [
-                A.substitute(p, {self.self_name: A.Name(SELF)})
-                for p in self.known_parts(values, mtype, start)
-            ]
+            for value in self.known_parts(values, mtype, start):
+                value = A.substitute(value, {self.self_name: A.Name(SELF)})
+                if "len" not in text:  # (most never mention it)
+                    parts.append(value)
+                    continue
+                on = _length_part(value, item is not None, start, self.problems)
+                if on is not None:
+                    (parts if on[0] == "each" else size).append(on[1])
             texts.append(text)
         shown = (
             " and ".join(texts)
             if len(texts) == 1
             else " and ".join(f"({t})" for t in texts)
         )
-        return Refinement(base, unit, A.conjoin(parts), shown, node.lineno, mtype)
+        return Refinement(
+            base,
+            unit,
+            A.conjoin(parts),
+            shown,
+            node.lineno,
+            mtype,
+            item=item,
+            size=A.conjoin([s for s in size if s != A.TRUE]),
+        )
 
     def known_parts(
         self, values: list[A.Expr], mtype: str | None, start: tuple[int, int, bool]
@@ -356,6 +401,78 @@ def _tuple_elements(node: ast.expr, names: Names) -> list[ast.expr] | None:
 
 def _strip(node: ast.expr, names: Names) -> ast.expr:
     return _unqualified(node, names.qualname)
+
+
+def _container(
+    node: ast.expr, qualname: Callable[[ast.expr], str | None]
+) -> tuple[str, str, int | None] | None:
+    """(list or tuple, the elements' base type, a fixed length) for `list[float]`,
+    `Sequence[int]`, `tuple[float, ...]`, `tuple[float, float]`, bare `list`."""
+    head = node.value if isinstance(node, ast.Subscript) else node
+    kind = (
+        CONTAINER_NAMES.get(head.id) if isinstance(head, ast.Name) else None
+    ) or CONTAINER_TYPES.get(qualname(head) or "")
+    if kind is None:
+        return None
+    if not isinstance(node, ast.Subscript):
+        return kind, "other", None
+    parts = node.slice.elts if isinstance(node.slice, ast.Tuple) else [node.slice]
+    fixed: int | None = None
+    if kind == "tuple" and not (
+        len(parts) == 2
+        and isinstance(parts[1], ast.Constant)
+        and parts[1].value is Ellipsis
+    ):
+        fixed = len(parts)
+    elif len(parts) != 1 and kind != "tuple":
+        return kind, "other", None
+    names = {p.id if isinstance(p, ast.Name) else "" for p in parts[: fixed or 1]}
+    element = BASE_TYPES.get(names.pop(), "other") if len(names) == 1 else "other"
+    return kind, element, fixed
+
+
+def _length_part(
+    part: A.Expr,
+    container: bool,
+    start: tuple[int, int, bool],
+    problems: list[AnnotationProblem],
+) -> tuple[str, A.Expr] | None:
+    """Where one part of a refinement goes: ("each", part) on a container's elements
+    or a scalar, ("size", over `_`) when it is on a container's length (`len(_)`).
+    A part that mixes the two, or `len(_)` of a scalar, is RF501 (None)."""
+    length = A.Name("len(_)")
+    lengths = _lengths_replaced(part, length)
+    if lengths is part:
+        return "each", part
+    if not container:
+        message = (
+            "len(_) is the length of a list, tuple or array: annotate the "
+            'container, e.g. Annotated[list[float], "len(_) <= 10"]'
+        )
+    elif any(n.name == SELF for n in A.names(lengths)):
+        message = (
+            "a part of a container's refinement is on its elements (`_`) or "
+            "on its length (`len(_)`), not both: split it with `and`"
+        )
+    else:
+        return "size", A.substitute(lengths, {length.name: A.Name(SELF)})
+    line, col = _at(start, 0)
+    problems.append(AnnotationProblem(rules.ANNOTATION_SYNTAX, line, col, message))
+    return None
+
+
+def _lengths_replaced(expr: A.Expr, length: A.Name) -> A.Expr:
+    """`expr` with every `len(_)` replaced by `length` (the same object when there is
+    none)."""
+    if isinstance(expr, A.Func) and expr.name == "len" and expr.args == (A.Name(SELF),):
+        return length
+    kids = A.children(expr)
+    if not kids:
+        return expr
+    new = tuple(_lengths_replaced(k, length) for k in kids)
+    if all(a is b for a, b in zip(new, kids, strict=True)):
+        return expr
+    return A.rebuild(expr, new)
 
 
 def _looks_like(text: str, self_name: str) -> bool:

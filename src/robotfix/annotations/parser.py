@@ -31,7 +31,7 @@ MAX_CHARS = 100_000  # parsing takes about 1 s per 100,000 characters
 MAX_CONSTANT_DIGITS = 1000  # of a product of literals; Python's str(int) stops at 4300
 _MAX_CONSTANT_BITS = 3322  # 1000 decimal digits
 _LABEL_FUNCS = {"Unit": "unit", "Frame": "frame", "Tag": "tag"}
-_MATH_FUNCS = {"abs": 1, "min": 2, "max": 2}
+_MATH_FUNCS = {"abs": 1, "min": 2, "max": 2, "len": 1}
 
 
 class AnnotationSyntaxError(Exception):
@@ -124,7 +124,8 @@ class _ToAst(Transformer[Token, Any]):
             return _label(_LABEL_FUNCS[fname], given, pos)
         if fname in _MATH_FUNCS:
             arity = _MATH_FUNCS[fname]
-            if len(given) != arity and not (fname != "abs" and len(given) >= 2):
+            fixed = fname in ("abs", "len")
+            if len(given) != arity and not (not fixed and len(given) >= 2):
                 raise AnnotationSyntaxError(
                     f"{fname}() takes {arity} argument{'s' * (arity > 1)}", pos
                 )

@@ -96,6 +96,8 @@ class FieldSpec:
     loose: bool = False  # char/byte: ROS 1 takes str or int there; no base-type check
     default: Any = None  # the value of the field never set, when not 0/False/""
     std_default: bool = False  # from a ROS 2 standard definition: ROS 1 has none
+    size: int | None = None  # an array of this fixed size (`float64[9]`)
+    bound: int | None = None  # an array of at most this many elements (`[<=9]`)
 
 
 @dataclass(frozen=True)
@@ -549,6 +551,8 @@ class MsgCatalog:
                 fs = FieldSpec(decl.name, "unknown", None, decl.array)
             elif decl.default is not None and fs.kind != "msg":
                 fs = replace(fs, default=decl.default)
+            if decl.size is not None or decl.bound is not None:
+                fs = replace(fs, size=decl.size, bound=decl.bound)
             resolved[decl.name] = fs
             spec.declared_at[decl.name] = Origin(file.path, decl.line)
         spec.fields = resolved
@@ -697,12 +701,45 @@ class MsgCatalog:
             paths = {n.name for n in A.names(part)}
             if not paths:
                 continue  # names no field (`MODE_A < MODE_B`): nothing to check
+            problem = self._array_problem(spec, part)
+            if problem is not None:
+                rule, message = problem
+                self._problem(rule, origin.path, origin.line, note.col, message)
+                continue
             if all(
                 self._check_path(spec, p, origin, note.col + n.pos)
                 for n in A.names(part)
                 for p in [n.name]
             ):
                 spec.invariants.append(Invariant(part, frozenset(paths), text, origin))
+
+    def _array_problem(self, spec: MsgSpec, part: A.Expr) -> tuple[Rule, str] | None:
+        """An annotation that names an array field is on its elements (the field's
+        name, or `_` on its line) or on its length (`len(field)`); a part on the
+        elements names no other field."""
+        in_len: set[int] = set()
+        for node in A.walk(part):
+            if isinstance(node, A.Func) and node.name == "len":
+                arg = node.args[0]
+                found = (
+                    self.field_at(spec.name, arg.name)
+                    if isinstance(arg, A.Name)
+                    else None
+                )
+                if found is None or not found.array:
+                    shown = A.show(arg)
+                    return rules.ANNOTATION_SYNTAX, (
+                        f"len() takes an array field of {spec.name}, not `{shown}`"
+                    )
+                in_len.add(id(arg))
+        bare = {n.name for n in A.names(part) if id(n) not in in_len}
+        arrays = sorted(p for p in bare if _is_array(self.field_at(spec.name, p)))
+        if arrays and len(bare) > 1:
+            return rules.UNKNOWN_FIELD, (
+                f"`{arrays[0]}` is an array: an annotation on its elements names no "
+                "other field (write len(...) for its length)"
+            )
+        return None
 
     def _put_constants(self, spec: MsgSpec, predicate: A.Expr) -> A.Expr:
         """The message's constants and `pi`, `math.pi`... by value, where no field
@@ -810,10 +847,14 @@ class MsgCatalog:
     def _from_standard(self, key: str) -> MsgSpec:
         entry = self._standard()[key]
         fields = {}
-        for name, type_, array in entry["fields"]:
+        for name, type_, array, *size in entry["fields"]:
             package = key.split("/")[0]
             fs = self._field(name, type_, array, package)
             fields[name] = fs or FieldSpec(name, "unknown", None, array)
+            if size and size[0]:  # [fixed size, bound]
+                fields[name] = replace(fields[name], size=size[0])
+            if len(size) > 1 and size[1]:
+                fields[name] = replace(fields[name], bound=size[1])
         for name, value in (
             _standard_defaults(STORES.get(self._distro, ("",))[0]).get(key, {}).items()
         ):
@@ -840,6 +881,10 @@ def _standard_comment_units() -> dict[str, dict[str, tuple[str, str]]]:
         }
         for entry in tomllib.loads(text)["message"]
     }
+
+
+def _is_array(found: FieldSpec | None) -> bool:
+    return found is not None and found.array
 
 
 def _distinct(paths: list[Path]) -> list[Path]:
@@ -930,7 +975,7 @@ def _standard_defaults(store: str) -> dict[str, dict[str, Any]]:
 
 def _std_cache(distro: str) -> JsonCache:
     if distro not in _STD_CACHES:
-        key = install_key("rosbags", f"msgs-v2-{distro}")
+        key = install_key("rosbags", f"msgs-v3-{distro}")
         _STD_CACHES[distro] = JsonCache(f"ros-messages-{distro}", key)
     return _STD_CACHES[distro]
 
@@ -964,9 +1009,12 @@ def _convert_rosbags(stores: tuple[str, str]) -> dict[str, Any]:
 def _rosbags_field(name: str, desc: Any) -> list[Any]:
     nodetype, detail = desc
     kind = int(nodetype)
-    if kind in (3, 4):  # ARRAY, SEQUENCE: detail is (element, size)
+    if kind in (3, 4):  # ARRAY, SEQUENCE: detail is (element, size or bound)
         element = _rosbags_field(name, detail[0])
-        return [name, element[1], True]
+        count = detail[1] if isinstance(detail[1], int) and detail[1] > 0 else 0
+        if kind == 3:
+            return [name, element[1], True, count, 0]
+        return [name, element[1], True, 0, count]
     if kind == 1:  # BASE: (type, string bound)
         return [name, str(detail[0]), False]
     return [name, normalize(str(detail)), False]  # NAME

@@ -46,6 +46,8 @@ class FieldDecl:
     array: bool
     line: int
     default: Literal | None = None  # `float64 w 1`: the value of a field never set
+    size: int | None = None  # `float64[9]`: a fixed-size array
+    bound: int | None = None  # `float64[<=9]`: an array of at most that many
 
 
 @dataclass(frozen=True)
@@ -180,8 +182,19 @@ def _read_section(
                 problems.append(replace(found, line=number, col=column))
             else:
                 default = found
-        fields.append(FieldDecl(match["name"], match["type"], array, number, default))
+        size, bound = _array_size(match["array"])
+        fields.append(
+            FieldDecl(match["name"], match["type"], array, number, default, size, bound)
+        )
     return Section(name, tuple(fields), tuple(notes), tuple(constants))
+
+
+def _array_size(text: str | None) -> tuple[int | None, int | None]:
+    """(fixed size, upper bound) of `[9]`, `[<=9]`, `[]`."""
+    digits = (text or "").strip("[]<=")
+    if not digits:
+        return None, None
+    return (None, int(digits)) if "<=" in (text or "") else (int(digits), None)
 
 
 INTEGERS = frozenset(

@@ -45,7 +45,7 @@ class Encoder:
     def fresh(self, sort: str) -> Any:
         self.approximated = True
         self._fresh += 1
-        make = {"bool": z3.Bool, "real": z3.Real}[sort]
+        make = {"bool": z3.Bool, "real": z3.Real, "int": z3.Int}[sort]
         return make(f"_f{self._fresh}", self.ctx)
 
     def encode(self, node: A.Expr) -> Any:
@@ -144,6 +144,8 @@ class Encoder:
         return found
 
     def _func(self, node: A.Func) -> Any:
+        if node.name == "len":  # a length the analysis did not resolve: unknown
+            return self.fresh("int")
         args = [self.arith(a) for a in node.args]
         if node.name == "abs":
             return z3.If(args[0] >= 0, args[0], -args[0])

@@ -169,3 +169,11 @@ if platform_speed() > 0.1:
     FAST = True
 if platform_speed() > 0.1:  # module code: the platform or version, mostly
     print(FAST)
+
+
+def describe(event: object) -> str:
+    if isinstance(event, Twist):
+        kind = "twist"
+    elif callable(event):
+        kind = "callback"
+    return kind  # a case analysis its author may have made exhaustive
