@@ -14,7 +14,8 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from robotfix import messages, rules
-from robotfix.analysis.vc import VC, Proved, Verdict, Violated
+from robotfix.analysis.vc import VC, Proved, Unproven, Verdict, Violated
+from robotfix.annotations import ast as A
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic, Severity
 from robotfix.discovery import (  # re-exported: the walk lives in discovery.py
@@ -76,12 +77,29 @@ class Discharger:
             return Violated(tuple(_constant(p) for p in vc.probes))
         if self.prepass and proves(vc):
             return Proved()
-        if self._session is None:
+        if self._session is None:  # until z3 is needed, it may not be
+            decided = _without_solver(vc)
+            if decided is not None:
+                return decided
             from robotfix.smt.solver import Session
 
             self._session = Session()
         verdict: Verdict = self._session.check(vc)
         return verdict
+
+
+def _without_solver(vc: VC) -> Verdict | None:
+    """A VC whose boolean skeleton decides it (`smt.propositional`): most questions
+    of whether a path can run, so that z3 is loaded for a file only when a VC
+    needs numbers."""
+    from robotfix.smt.propositional import satisfiable
+
+    negated = satisfiable([*vc.facts, A.Unary("not", vc.goal)])
+    if negated is False:
+        return Proved()
+    if negated is True and vc.question:
+        return Unproven((), ())
+    return None
 
 
 def check_source(

@@ -532,18 +532,29 @@ def _revolutions(got: Unit, expected: Unit) -> str:
 
 
 def used_before_assignment(
-    path: str, span: Span, stmt: str, name: str, declared: bool
+    path: str,
+    span: Span,
+    stmt: str,
+    name: str,
+    declared: bool,
+    some_paths: bool = False,
 ) -> Diagnostic:
-    if declared:
+    if some_paths:
+        detail = (
+            f"`{name}`, which is not assigned on every path to this line: "
+            "on the others it raises UnboundLocalError or NameError"
+        )
+    elif declared:
         detail = f"`{name}`, which is declared but not assigned on this path"
     else:
         detail = f"`{name}`, which is not defined here"
+    advice = "on every path to" if some_paths else "before"
     return Diagnostic(
         rules.USED_BEFORE_ASSIGNMENT,
         path,
         span,
         f"`{stmt}` reads {detail}",
-        (Note(f"assign `{name}` before this line"),),
+        (Note(f"assign `{name}` {advice} this line"),),
     )
 
 
@@ -556,15 +567,18 @@ def unset_field(
     predicate: str,
     declared: Declared,
     publishing: bool,
+    some_paths: bool = False,
 ) -> Diagnostic:
     verb = "sends" if publishing else "reads"
+    where = "not set on every path to this line" if some_paths else "never set"
+    advice = "on every path before" if some_paths else "before"
     return Diagnostic(
         rules.UNSET_FIELD_DEFAULT,
         path,
         span,
-        f"`{stmt}` {verb} `{field}`, which is never set: its ROS default {default} "
+        f"`{stmt}` {verb} `{field}`, which is {where}: its ROS default {default} "
         f"violates `{predicate}`{_owner(declared)}",
-        (declared.note(), Note(f"set `{field}` before this line")),
+        (declared.note(), Note(f"set `{field}` {advice} this line")),
     )
 
 

@@ -12,9 +12,9 @@ from fractions import Fraction
 
 from robotfix.analysis import containers, frames, heap
 from robotfix.analysis.library import LibraryEvaluator
-from robotfix.analysis.program import Function
+from robotfix.analysis.program import Function, attribute_key
 from robotfix.analysis.state import State
-from robotfix.analysis.values import NONE, SEQUENCES, Items, Kept, Value
+from robotfix.analysis.values import MUTABLE, NONE, SEQUENCES, Items, Kept, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import INFINITY, NUMBERS
@@ -34,6 +34,22 @@ LEAVING = frozenset(
         "send_goal_async",
     }
 )
+# Methods after which a container holds an element.
+FILLING = frozenset({"append", "appendleft", "insert", "add"})
+# Methods that change a container (not only code the analysis cannot see).
+MUTATORS = FILLING | {
+    "extend",
+    "update",
+    "remove",
+    "discard",
+    "clear",
+    "pop",
+    "popitem",
+    "popleft",
+    "setdefault",
+    "sort",
+    "reverse",
+}
 # Methods of lists that RobotFix follows (others give unknown values).
 SEQUENCE_METHODS = containers.MUTATORS | containers.READERS
 # atan2, asin, acos... return at most math.pi (the double, below the real pi)
@@ -129,7 +145,17 @@ class CallEvaluator(LibraryEvaluator):
             moved = frames.tf2_call(self.ctx, name, node, args, kwargs, state)
             if moved is not None:
                 return moved
-        return found if found is not None else self.unknown(node)
+        if found is not None:
+            return found
+        value = self.unknown(node)
+        if (
+            callee.kind == "module"
+            and isinstance(value.term, A.Sym)
+            and all(isinstance(a, ast.Constant) for a in node.args)
+            and all(isinstance(k.value, ast.Constant) for k in node.keywords)
+        ):  # `platform.system()` twice: the same answer, for all the analysis knows
+            self.ctx.first_read(("call", self.ctx.source.segment(node)), value.term)
+        return value
 
     def _forget_after_call(
         self,
@@ -151,13 +177,32 @@ class CallEvaluator(LibraryEvaluator):
         for value in [*args, *kwargs.values()]:
             if value.kind == "msg" and value.ref is not None:
                 heap.havoc(state, value.ref)
+            elif value.kind in MUTABLE and type(value.term) is A.Sym:
+                state.changed(value)
         names = [a for a in node.args if isinstance(a, ast.Name)]
-        if isinstance(node.func, ast.Attribute) and isinstance(
-            node.func.value, ast.Name
-        ):
-            names.append(node.func.value)
+        if isinstance(node.func, ast.Attribute):
+            owner = node.func.value
+            if isinstance(owner, ast.Name):
+                # a method of this file's class may change `self.x`; rclpy's and
+                # rospy's own (`self.get_clock()`) do not touch its attributes
+                receiver = state.env.get(owner.id)
+                if (
+                    callee.kind == "method"
+                    or not isinstance(receiver, Value)
+                    or receiver.kind != "instance"
+                ):
+                    names.append(owner)
+            elif isinstance(owner, ast.Attribute):  # self.x.reset()
+                state.env.pop(attribute_key(owner) or "", None)
         for name in names:
             bound = state.env.get(name.id)
+            if isinstance(bound, Value) and bound.kind in MUTABLE:
+                state.changed(bound, getattr(node.func, "attr", "") in MUTATORS)
+                if (
+                    isinstance(bound.term, A.Sym)
+                    and getattr(node.func, "attr", "") in FILLING
+                ):  # `xs.append(v)`: xs is not empty now
+                    state.assume(self.truthy(bound, node, state))
             if isinstance(bound, Value) and bound.kind == "instance":
                 prefix = name.id + "."
                 for key in [k for k in state.env if k.startswith(prefix)]:
@@ -188,7 +233,9 @@ class CallEvaluator(LibraryEvaluator):
             decl = scope.decls.get(name)
             if decl is not None:
                 lookup = {**self._callee_names(decl, function, state), **terms}
-                self.check.assign_refined(state, name, decl, value, self.site, lookup)
+                self.check.assign_refined(
+                    state, name, decl, value, self.site, lookup, leaving=True
+                )
             if log is not None and where is not None and name in exprs:
                 if decl is not None:
                     log.sink(where, exprs[name], decl.unit, value)
@@ -282,12 +329,38 @@ class CallEvaluator(LibraryEvaluator):
             if found is not None:
                 return found
         if name == "len" and len(args) == 1:
-            value = self.unknown(node, "int")
+            # the same length for the same object until something may change it
+            # (`if len(sys.argv) > 1:` twice agrees)
+            of = args[0]
+            key: tuple[object, ...] | None = None
+            if of.kind == "tuple" and of.elements is not None:
+                return Value("int", A.Num(Fraction(len(of.elements)), True))
+            if isinstance(of.term, A.Sym):
+                version = state.version(of.term)
+                size = self.ctx.sizes.get(of.term.ident) if not version else None
+                if size is not None:  # a display: `len([])` is 0
+                    return Value("int", A.Num(Fraction(size), True))
+                key = ("len", of.term.ident, version)
+            elif of.kind == "module":
+                key = ("len", of.name)
+            value = (
+                self.unknown(node, "int")
+                if key is None
+                else self.ctx.derived(key, "int", node)
+            )
             state.assume(A.Binary(">=", value.known_term, ZERO))
             return value
         if not args:
             return None
         first = args[0]
+        if name in ("isinstance", "hasattr") and len(node.args) == 2:
+            # one answer for one object and one class (or attribute name)
+            if not isinstance(first.term, A.Sym):
+                return None
+            version = state.version(first.term)
+            second = self.ctx.source.segment(node.args[1])
+            key = (name, first.term.ident, second, version)
+            return self.ctx.derived(key, "bool", node)
         if name in ("min", "max") and len(args) == 1:  # of an iterable: its unit
             return self.unknown(node, "unknown", first.unit)
         if any(a.term is None for a in args):
@@ -320,7 +393,7 @@ class CallEvaluator(LibraryEvaluator):
             value = self.unknown(node, "int" if len(args) == 1 else "float", first.unit)
             return replace(value, scale=first.scale, rad_free=first.rad_free)
         if name == "bool" and len(args) == 1:
-            return Value("bool", self.truthy(first, node))
+            return Value("bool", self.truthy(first, node, state))
         return None if name != "print" else NONE
 
     # -- sequences -----------------------------------------------------------

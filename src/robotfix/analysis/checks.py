@@ -8,12 +8,21 @@ from __future__ import annotations
 
 import ast
 from dataclasses import dataclass, field, replace
+from fractions import Fraction
+from typing import NamedTuple
 
 from robotfix import messages
 from robotfix.analysis import containers, frames, heap, parameters
 from robotfix.analysis.context import FileContext
 from robotfix.analysis.state import State
-from robotfix.analysis.values import SEQUENCES, Items, Kept, Value
+from robotfix.analysis.values import (
+    SEQUENCES,
+    Items,
+    Kept,
+    MaybeDefault,
+    ObjInvariant,
+    Value,
+)
 from robotfix.analysis.vc import VC, Proved, Undecided, Unproven, Violated
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
@@ -69,8 +78,15 @@ class Checker:
         span, stmt = self.where(site)
         if isinstance(verdict, Proved):
             return PROVED
+        facts = tuple(state.facts)
+        if isinstance(verdict, Unproven):
+            arm = self._arm_violated(state, goal, probes)
+            if arm is not None:
+                verdict, facts = arm
         if isinstance(verdict, Violated):
             value = verdict.probe_values[0] if verdict.probe_values else None
+            if value is not None and probe is not None:
+                value = self._only_value(facts, probe, value)
             self.ctx.report(
                 messages.refinement_violated(
                     self.path, span, stmt, predicate, subject, value, declared
@@ -110,19 +126,99 @@ class Checker:
         )
         return FAILED
 
+    def _only_value(
+        self, facts: tuple[A.Expr, ...], probe: A.Expr, value: str
+    ) -> str | None:
+        """The value that breaks the refinement, if it is the only one possible
+        there; when paths that joined give several (`5` or `7`), naming one would
+        be arbitrary."""
+        shown = _term_of(value)
+        if shown is None or isinstance(probe, A.Num):
+            return value
+        goal = A.Binary("==", probe, shown)
+        unique = self.ctx.discharge(VC(facts, goal))
+        return value if isinstance(unique, Proved) else None
+
+    def _arm_violated(
+        self, state: State, goal: A.Expr, probes: tuple[A.Expr, ...]
+    ) -> tuple[Violated, tuple[A.Expr, ...]] | None:
+        """`a if c else b` is two paths: the goal fails on every execution of one
+        of them (a reachable one), which is an error. The verdict and that path."""
+        arms = [e for e in A.walk(goal) if isinstance(e, A.Ite)][:2]
+        for arm in arms:
+            for cond in (arm.cond, A.Unary("not", arm.cond)):
+                facts = (*state.facts, cond)
+                verdict = self.ctx.discharge(VC(facts, goal, probes))
+                if isinstance(verdict, Violated):
+                    return verdict, facts
+        return None
+
     def _describe(self, ident: int) -> str:
         return self.ctx.describe(ident)
 
-    def report_uninit(self, value: Value, site: ast.AST) -> bool:
+    def report_uninit(self, value: Value, site: ast.AST, state: State) -> bool:
+        """Is `value` a read of a name that holds nothing? RF301 if that path can
+        run."""
         if value.uninit is None:
             return False
+        once = ("uninit", getattr(site, "lineno", 1), value.uninit.name)
+        if self.ctx.already(once) or (state.facts and not self.possible(state, A.TRUE)):
+            return True
         span, stmt = self.where(site)
         self.ctx.report(
             messages.used_before_assignment(
                 self.path, span, stmt, value.uninit.name, value.uninit.declared
             ),
-            once=("uninit", span.line, value.uninit.name),
+            once=once,
         )
+        return True
+
+    def possible(self, state: State, condition: A.Expr) -> bool:
+        """Can `condition` hold on this path? (Undecided counts as no.)"""
+        goal = A.Unary("not", condition)
+        verdict = self.ctx.discharge(VC(tuple(state.facts), goal, question=True))
+        return isinstance(verdict, (Violated, Unproven))
+
+    def surely_possible(self, state: State, condition: A.Expr) -> bool:
+        """`possible`, also if no call changed the objects they were handed: two
+        tests of `self.flag` with a call between agree, for all the analysis
+        can tell, so a path on which they differ is not surely one a run takes."""
+        if not self.possible(state, condition):
+            return False
+        firm = state.shared.firm
+        unchanged = {
+            ident: first
+            for ident, (first, read) in self.ctx.unchanged.items()
+            if read not in firm
+        }
+        if not unchanged:
+            return True
+        memo: dict[int, A.Expr] = {}
+        facts = [_first_reads(f, unchanged, memo) for f in state.facts]
+        goal = A.Unary("not", _first_reads(condition, unchanged, memo))
+        verdict = self.ctx.discharge(VC(tuple(facts), goal, question=True))
+        return isinstance(verdict, (Violated, Unproven))
+
+    def unbound_here(
+        self, state: State, when: A.Expr, name: str, site: ast.AST
+    ) -> bool:
+        """RF301 if `name` is unbound on some path to this read (`when` holds)."""
+        once = ("uninit", getattr(site, "lineno", 1), name)
+        cause = ("unbound", name, when)  # one bug, one diagnostic, however many reads
+        if when != A.TRUE and self.ctx.already(cause):
+            return False
+        if self.ctx.already(once) or not self.surely_possible(state, when):
+            return False
+        if when != A.TRUE:
+            self.ctx.report_once(cause)
+        span, stmt = self.where(site)
+        self.ctx.report(
+            messages.used_before_assignment(
+                self.path, span, stmt, name, False, some_paths=when != A.TRUE
+            ),
+            once=once,
+        )
+        state.assume(A.Unary("not", when))  # that path raised here
         return True
 
     def units_agree(
@@ -195,8 +291,10 @@ class Checker:
         value: Value,
         site: ast.AST,
         lookup: dict[str, A.Expr],
+        leaving: bool = False,
     ) -> Value:
-        """Check `name = value` against its refinement; return what `name` holds."""
+        """Check `name = value` against its refinement; return what `name` holds.
+        (`leaving`: an argument, whose unset message fields count too.)"""
         if decl.item is not None:
             if decl.optional and value.kind == "none":
                 return value
@@ -209,14 +307,19 @@ class Checker:
                 return self.assumed(state, name, decl, lookup)
             return self.assign_sequence(state, name, decl, value, site, lookup)
         declared = Declared(f"annotation of `{name}`", self.path, decl.line)
-        if value.kind == "msg" or (decl.optional and value.kind == "none"):
+        if decl.optional and value.kind == "none":
+            return value
+        if value.kind == "msg":
+            if decl.base == "msg" and value.ref is not None:
+                rules = self.message_rules(decl, name, lookup)
+                self.reach(state, value.ref, rules, site, name, leaving)
             return value
         read = parameters.read_of(self, value, site)
         if read is not None:  # a parameter read: the refinement becomes its own
             return parameters.attach(self, state, name, decl, value, site, lookup, read)
         if decl.elements is not None:
             return self._assign_elements(state, name, decl, value, site, lookup)
-        if self.report_uninit(value, site):
+        if self.report_uninit(value, site, state):
             return self.assumed(state, name, decl, lookup)
         fits = self.base_fits(decl.base, value, site, f"`{name}`")
         fits = self.units_agree(decl.unit, value, site, f"`{name}`", declared) and fits
@@ -255,6 +358,14 @@ class Checker:
         if decl.item is not None:
             found = containers.declared(decl.base, self.kept(name, decl, lookup))
             return self.with_length(found, name)
+        if decl.base == "msg" and decl.msg_type is not None:
+            message = heap.new_message(
+                self.ctx, state, decl.msg_type, "received", label=name
+            )
+            assert message.ref is not None
+            rules = self.message_rules(decl, name, lookup)
+            self.assume_rules(state, message.ref, rules, name)
+            return message
         value = self.ctx.fresh(decl.base, f"`{name}`", decl.unit)
         if value.term is not None:
             state.assume(A.substitute(decl.assumable, {**lookup, "_": value.term}))
@@ -329,7 +440,7 @@ class Checker:
         """`name = value` where `name` is a refined list or tuple: the refinement is
         on every element (its `len(_)` parts on the length)."""
         kept = self.kept(name, decl, lookup)
-        if self.report_uninit(value, site):
+        if self.report_uninit(value, site, state):
             return containers.declared(decl.base, kept)
         if not self.sequence_fits(value, site, f"`{name}`", decl.base):
             return containers.declared(decl.base, kept)
@@ -517,6 +628,34 @@ class Checker:
         return self.with_length(stored, kept.label)
 
     # -- message fields ------------------------------------------------------
+    def rules_on(
+        self, state: State, ref: int, name: str
+    ) -> list[tuple[FieldRule, str]]:
+        """Refinements that mention only field `name` of `ref` (and what lies below
+        it), with the path of the field relative to where each was declared."""
+        found = [
+            (_catalog_rule(spec, inv), path)
+            for spec, path, inv in heap.invariants_on(self.ctx, state, ref, name)
+        ]
+        found += [
+            (_object_rule(inv), path) for inv, path in heap.extras_on(state, ref, name)
+        ]
+        return found
+
+    def rules_of(
+        self, state: State, ref: int, spec: MsgSpec | None = None
+    ) -> list[FieldRule]:
+        """Every refinement declared on message `ref` itself: its type's and those
+        of the variables it reached."""
+        obj = state.heap[ref]
+        spec = spec or self.ctx.catalog.lookup(obj.type)
+        found = (
+            [_catalog_rule(spec, inv) for inv in self.ctx.invariants(spec)]
+            if spec
+            else []
+        )
+        return found + [_object_rule(inv) for inv in obj.extra]
+
     def write_field(
         self,
         state: State,
@@ -533,9 +672,9 @@ class Checker:
             obj.fields[name] = value
             return
         unit, unit_decl, owner = heap.field_unit(self.ctx, state, ref, name)
-        invariants = heap.invariants_on(self.ctx, state, ref, name)
-        refined = unit is not None or bool(invariants)
-        if refined and self.report_uninit(value, site):
+        rules = self.rules_on(state, ref, name)
+        refined = unit is not None or bool(rules)
+        if refined and self.report_uninit(value, site, state):
             obj.fields[name] = self.ctx.fresh(spec.kind, target, unit)
             obj.reported.discard(name)
             return
@@ -543,12 +682,16 @@ class Checker:
             self._write_array(state, ref, name, value, site, target)
             return
         if spec.kind == "msg":
-            if value.ref is not None and value.ref in state.heap:
+            sub = state.heap.get(value.ref) if value.ref is not None else None
+            if (
+                sub is not None
+                and value.ref is not None
+                and not spec.array
+                and sub.type == spec.msg_type
+                and not heap.owns(state, ref, value.ref)  # `m.a = m`: no owner loop
+            ):
                 frames.check_moved(self.ctx, state, ref, name, value.ref, site)
-                if not heap.owns(state, ref, value.ref):  # `m.a = m`: no owner loop
-                    state.heap[value.ref].owner = (ref, name)
-                obj.fields[name] = value
-                self.check_whole(state, value.ref, site, publishing=False, single=True)
+                self.adopt(state, ref, name, value, site, target)
             else:
                 obj.fields[name] = heap.new_message(
                     self.ctx, state, spec.msg_type or "", "unknown", owner=(ref, name)
@@ -569,21 +712,21 @@ class Checker:
         if stored.term is None:
             stored = self.ctx.fresh(spec.kind, f"`{target}`", unit)
         warned = False
-        for owner_spec, path, inv in invariants:
+        for rule, path in rules:
             if not ok:
                 break
-            goal = A.substitute(inv.predicate, {path: stored.known_term})
+            goal = A.substitute(rule.predicate, {path: stored.known_term})
             if warned:  # one report per statement; the rest is assumed
                 state.assume(goal)
                 continue
-            declared = Declared(
-                f"refinement of {owner_spec.name}",
-                inv.origin.path,
-                inv.origin.line,
-                owner=owner_spec.name,
-            )
             outcome = self.goal_holds(
-                state, goal, stored.term, site, inv.text, f"`{target}`", declared
+                state,
+                goal,
+                stored.term,
+                site,
+                rule.text,
+                f"`{target}`",
+                rule.declared,
             )
             ok = outcome != FAILED
             warned = outcome == WARNED
@@ -591,12 +734,11 @@ class Checker:
                 state.assume(goal)
         if not ok:
             stored = self.ctx.fresh(spec.kind, f"`{target}`", unit)
-            for _, path, inv in invariants:
-                state.assume(A.substitute(inv.predicate, {path: stored.known_term}))
+            for rule, path in rules:
+                state.assume(A.substitute(rule.predicate, {path: stored.known_term}))
         kept = frames.stored(state, ref, name, stored, value)
-        obj.fields[name] = (
-            kept if kept.default_of is None else replace(kept, default_of=None)
-        )
+        obj.fields[name] = replace(kept, default_of=None)
+        obj.set_on_all_paths(name)
         obj.reported.discard(name)
 
     def _write_array(
@@ -628,6 +770,62 @@ class Checker:
         obj.fields[name] = stored
         obj.reported.discard(name)
 
+    def adopt(
+        self,
+        state: State,
+        ref: int,
+        name: str,
+        value: Value,
+        site: ast.AST,
+        target: str,
+    ) -> None:
+        """A message stored into field `name` of `ref` (`cmd.linear = Vector3(...)`,
+        `odom.header = msg.header`, a nested constructor): what it holds must fit
+        the units and refinements of its new place, exactly as if it had been
+        written there field by field. (A field it leaves at its default is
+        checked when the message is sent, as any unset field.)"""
+        sub_ref = value.ref
+        assert sub_ref is not None
+        held: dict[str, Value] = {}
+        for path in sorted(heap.below(self.ctx, state, ref, name)):
+            found = heap.resolve_path(
+                self.ctx, state, sub_ref, path, f"{target}.{path}", settled=True
+            )
+            if (
+                found.default_of is None
+                and found.ref is None
+                and heap.unset_at(self.ctx, state, sub_ref, path) is None
+            ):
+                held[path] = found
+        state.heap[sub_ref].owner = (ref, name)
+        state.heap[ref].fields[name] = value
+        reported = len(self.ctx.diagnostics)
+        for path, found in held.items():
+            inner, _, leaf = path.rpartition(".")
+            holder = (
+                heap.resolve_path(self.ctx, state, sub_ref, inner, target)
+                if inner
+                else value
+            )
+            if holder.ref is None or holder.ref not in state.heap:
+                continue
+            # one statement, one diagnostic: `cmd.linear = odom...angular` is one
+            # unit mix-up, not one per axis
+            muted = len(self.ctx.diagnostics) > reported
+            self.ctx.muted += muted
+            self.write_field(state, holder.ref, leaf, found, site, f"{target}.{path}")
+            self.ctx.muted -= muted
+        for owner_ref, path in heap.chain(state, ref, name):
+            label = target[: -len(path) - 1] if target.endswith("." + path) else ""
+            for rule in self.rules_of(state, owner_ref):
+                if len(rule.paths) > 1 and all(
+                    p.startswith(path + ".") for p in rule.paths
+                ):
+                    self._check_invariant(
+                        state, owner_ref, rule, site, label or target, False, True
+                    )
+        self.check_whole(state, sub_ref, site, publishing=False, single=True)
+
     def _field_declared(
         self, owner: MsgSpec, name: str, unit_decl: FieldUnit
     ) -> Declared:
@@ -649,36 +847,31 @@ class Checker:
             if self._array_default_breaks(state, ref, name, value, site, target, False):
                 state.heap[ref].reported.add(name)
             return value
-        for spec, path, inv in heap.invariants_on(self.ctx, state, ref, name):
-            if inv.paths == {path} and value.term is not None:
-                self._default_breaks(
-                    state, spec, inv, path, value.term, site, target, False
-                )
+        for rule, path in self.rules_on(state, ref, name):
+            if rule.paths == {path} and value.term is not None:
+                self._default_breaks(state, rule, path, value.term, site, target, False)
         state.heap[ref].reported.add(name)
         return value
 
     def _default_breaks(
         self,
         state: State,
-        spec: MsgSpec,
-        inv: Invariant,
+        rule: FieldRule,
         path: str,
         default: A.Expr,
         site: ast.AST,
         target: str,
         publishing: bool,
+        some_paths: bool = False,
     ) -> bool:
-        goal = A.substitute(inv.predicate, {path: default})
+        """RF302 if the default breaks the refinement, on a path that can run."""
+        goal = A.substitute(rule.predicate, {path: default})
         verdict = self.ctx.discharge(VC((), goal))
         if not isinstance(verdict, Violated):
             return False
+        if state.facts and not some_paths and not self.possible(state, A.TRUE):
+            return False  # a path no execution takes (`if c: ... if not c: send`)
         span, stmt = self.where(site)
-        declared = Declared(
-            f"refinement of {spec.name}",
-            inv.origin.path,
-            inv.origin.line,
-            owner=spec.name,
-        )
         self.ctx.report(
             messages.unset_field(
                 self.path,
@@ -686,12 +879,45 @@ class Checker:
                 stmt,
                 target,
                 A.show(default),
-                inv.text,
-                declared,
+                rule.text,
+                rule.declared,
                 publishing,
+                some_paths=some_paths,
             )
         )
         return True
+
+    def _unset_on_some_path(
+        self,
+        state: State,
+        rule: FieldRule,
+        unset: MaybeDefault,
+        site: ast.AST,
+        label: str,
+    ) -> None:
+        """RF302 for a field left unset on some path to a publish, where its
+        default breaks its refinement."""
+        owner_ref, fname = unset.owner
+        owner = state.heap.get(owner_ref)
+        if owner is None or fname in owner.reported:
+            return
+        path = next(iter(rule.paths))
+        goal = A.substitute(rule.predicate, {path: unset.default})
+        if not isinstance(self.ctx.discharge(VC((), goal)), Violated):
+            return
+        if not self.surely_possible(state, unset.when):
+            return
+        self._default_breaks(
+            state,
+            rule,
+            path,
+            unset.default,
+            site,
+            f"{label}.{path}",
+            True,
+            some_paths=True,
+        )
+        owner.reported.add(fname)
 
     def _array_default_breaks(
         self,
@@ -771,10 +997,8 @@ class Checker:
         if obj is None or spec is None or obj.pending or ref in walk.seen:
             return
         walk.seen.add(ref)
-        for inv in self.ctx.invariants(spec):
-            self._check_invariant(
-                state, ref, spec, inv, site, label, publishing, single
-            )
+        for rule in self.rules_of(state, ref, spec):
+            self._check_invariant(state, ref, rule, site, label, publishing, single)
         enclosing = (*enclosing, spec.name)
         for fname, fs in spec.fields.items():
             if fs.array and fname not in obj.reported:
@@ -806,14 +1030,14 @@ class Checker:
         self,
         state: State,
         ref: int,
-        spec: MsgSpec,
-        inv: Invariant,
+        rule: FieldRule,
         site: ast.AST,
         label: str,
         publishing: bool,
         single: bool,
+        defaults: bool = True,
     ) -> None:
-        predicate = heap.lengths_resolved(self.ctx, state, ref, inv.predicate, label)
+        predicate = heap.lengths_resolved(self.ctx, state, ref, rule.predicate, label)
         values = {
             p: heap.resolve_path(self.ctx, state, ref, p, label, settled=True)
             for p in sorted({n.name for n in A.names(predicate)})
@@ -827,30 +1051,94 @@ class Checker:
             default = terms[path]
             assert default is not None
             owner_ref, fname = values[path].default_of  # type: ignore[misc]
-            if fname in state.heap[owner_ref].reported:
+            if not defaults or fname in state.heap[owner_ref].reported:
                 return
             if self._default_breaks(
-                state,
-                spec,
-                inv,
-                path,
-                default,
-                site,
-                f"{label}.{path}",
-                publishing,
+                state, rule, path, default, site, f"{label}.{path}", publishing
             ):
                 state.heap[owner_ref].reported.add(fname)
             return
-        if len(inv.paths) == 1 and not single:
-            return
+        if len(rule.paths) == 1:
+            if publishing:
+                path = next(iter(rule.paths))
+                maybe = heap.unset_at(self.ctx, state, ref, path)
+                if maybe is not None:
+                    self._unset_on_some_path(state, rule, maybe, site, label)
+            if not single:
+                return
         goal = A.substitute(predicate, terms)  # type: ignore[arg-type]
-        declared = Declared(
-            f"refinement of {spec.name}",
-            inv.origin.path,
-            inv.origin.line,
-            owner=spec.name,
-        )
-        self.goal_holds(state, goal, None, site, inv.text, label, declared)
+        self.goal_holds(state, goal, None, site, rule.text, label, rule.declared)
+
+    # -- refinements on message values ----------------------------------------
+    def message_rules(
+        self, decl: Refinement, name: str, lookup: dict[str, A.Expr]
+    ) -> tuple[ObjInvariant, ...]:
+        """`Annotated[Twist, "abs(linear.x) <= limit"]` as invariants of the value:
+        field paths stay names, other names become their current terms."""
+        if decl.msg_type is None:
+            return ()
+        found = []
+        for part in A.conjuncts(decl.predicate):
+            paths = {
+                n.name
+                for n in A.names(part)
+                if self.ctx.catalog.field_at(decl.msg_type, n.name) is not None
+            }
+            if not paths:
+                continue
+            others = {k: v for k, v in lookup.items() if k not in paths}
+            found.append(
+                ObjInvariant(
+                    A.substitute(part, others),
+                    frozenset(paths),
+                    A.show(part),
+                    f"annotation of `{name}`",
+                    self.path,
+                    decl.line,
+                )
+            )
+        return tuple(found)
+
+    def reach(
+        self,
+        state: State,
+        ref: int,
+        rules: tuple[ObjInvariant, ...],
+        site: ast.AST,
+        label: str,
+        leaving: bool,
+    ) -> None:
+        """A message reaches a variable, parameter or attribute refined with
+        `Annotated[Msg, "..."]`: what it holds must satisfy the refinement now
+        (and, when it leaves as an argument, its unset fields too); from here on
+        it keeps that refinement, checked at every field write and when sent."""
+        obj = state.heap.get(ref)
+        if obj is None or not rules:
+            return
+        for inv in rules:
+            self._check_invariant(
+                state, ref, _object_rule(inv), site, label, leaving, True, leaving
+            )
+        obj.extra += tuple(inv for inv in rules if inv not in obj.extra)
+        state.shared.extras = True
+
+    def assume_rules(
+        self, state: State, ref: int, rules: tuple[ObjInvariant, ...], label: str
+    ) -> None:
+        """A refined message that is read (a parameter, an attribute): its
+        refinement holds, and keeps holding."""
+        obj = state.heap.get(ref)
+        if obj is None:
+            return
+        for inv in rules:
+            values = {
+                p: heap.resolve_path(self.ctx, state, ref, p, label) for p in inv.paths
+            }
+            if all(v.term is not None for v in values.values()):
+                terms = {p: v.known_term for p, v in values.items()}
+                state.assume(A.substitute(inv.predicate, terms))
+        obj.extra += tuple(inv for inv in rules if inv not in obj.extra)
+        state.shared.extras = state.shared.extras or bool(rules)
 
     def _name_of(self, site: ast.AST) -> str:
         if (
@@ -860,6 +1148,64 @@ class Checker:
         ):
             return self.ctx.source.segment(site.value.args[0]) or "the message"
         return "the message"
+
+
+def _first_reads(
+    expr: A.Expr, unchanged: dict[int, A.Sym], memo: dict[int, A.Expr]
+) -> A.Expr:
+    """`expr` with each read of a changed object replaced by its first read."""
+    found = memo.get(id(expr))
+    if found is not None:
+        return found
+    if type(expr) is A.Sym:
+        result: A.Expr = unchanged.get(expr.ident, expr)
+    else:
+        kids = A.children(expr)
+        result = (
+            A.rebuild(expr, tuple(_first_reads(k, unchanged, memo) for k in kids))
+            if kids
+            else expr
+        )
+    memo[id(expr)] = result
+    return result
+
+
+def _term_of(shown: str) -> A.Expr | None:
+    """A solver value as printed (`5`, `2.5`, `1/3`, `True`, `'a'`) as a term."""
+    if shown in ("True", "False"):
+        return A.Bool(shown == "True")
+    if len(shown) >= 2 and shown[0] == shown[-1] == "'":
+        return A.Str(shown[1:-1])
+    try:
+        number = Fraction(shown)
+    except (ValueError, ZeroDivisionError):
+        return None
+    return A.Num(number, number.denominator == 1 and "." not in shown)
+
+
+class FieldRule(NamedTuple):
+    """A refinement over message fields, wherever it was declared."""
+
+    predicate: A.Expr  # names are field paths relative to where it was declared
+    paths: frozenset[str]
+    text: str
+    declared: Declared
+
+
+def _catalog_rule(spec: MsgSpec, inv: Invariant) -> FieldRule:
+    declared = Declared(
+        f"refinement of {spec.name}",
+        inv.origin.path,
+        inv.origin.line,
+        owner=spec.name,
+    )
+    return FieldRule(inv.predicate, inv.paths, inv.text, declared)
+
+
+def _object_rule(inv: ObjInvariant) -> FieldRule:
+    return FieldRule(
+        inv.predicate, inv.paths, inv.text, Declared(inv.what, inv.path, inv.line)
+    )
 
 
 @dataclass

@@ -78,6 +78,14 @@ class FileContext:
         self.diagnostics: list[Diagnostic] = []
         self.sym_names: dict[int, str | ast.AST] = {}  # text, or a node to quote
         self._next = 0
+        self._sub_ids: dict[tuple[int, str], int] = {}
+        self._derived: dict[tuple[object, ...], Value] = {}
+        # symbol of a read of an object that code may have changed -> the same read
+        # before any change (`possible_unchanged` asks as if nothing changed)
+        # (and the id of the object read)
+        self.unchanged: dict[int, tuple[A.Sym, object]] = {}
+        self._first_reads: dict[object, A.Sym] = {}
+        self.sizes: dict[int, int] = {}  # symbol of a list, set or dict display -> len
         self.steps = 0
         self.index = FileIndex()
         self.imports: dict[str, str] = {}  # local name -> qualified name
@@ -97,6 +105,7 @@ class FileContext:
         # symbols of satisfiability questions: never those of `fresh`
         self._question_ids = itertools.count(-1, -1)
         self._invariants: dict[str, list[Invariant]] = {}
+        self.muted = 0  # > 0: checks go on, their reports are dropped
         # (span, markdown) for names and fields, kept only for editor hovers
         self.hovers: list[tuple[Span, str]] | None = None
         # where unannotated names flow (analysis/flows.py), for `robotfix suggest`;
@@ -107,6 +116,36 @@ class FileContext:
     def fresh_id(self) -> int:
         self._next += 1
         return self._next
+
+    def derived(
+        self, key: tuple[object, ...], kind: str, description: str | ast.AST
+    ) -> Value:
+        """An unknown value that is a function of `key` (`x is None` for one value
+        of x): the same symbol wherever it is asked for."""
+        found = self._derived.get(key)
+        if found is None:
+            found = self._derived[key] = self.fresh(kind, description)
+            first, read = _first_version(key, self.unchanged)
+            if first != key and isinstance(found.term, A.Sym):
+                base = self.derived(first, kind, description)
+                if isinstance(base.term, A.Sym):
+                    self.unchanged[found.term.ident] = (base.term, read)
+        return found
+
+    def first_read(self, read: object, sym: A.Sym) -> None:
+        """`sym` is a read of `read` (`self.flag`), maybe again after a call that
+        may have changed it: `unchanged` maps it to the first read."""
+        first = self._first_reads.setdefault(read, sym)
+        if first != sym:
+            self.unchanged[sym.ident] = (first, read)
+
+    def sub_id(self, parent: int, name: str) -> int:
+        """The id of the sub-message in field `name` of message `parent`: the same on
+        every path, so that paths that each touched it join field by field."""
+        found = self._sub_ids.get((parent, name))
+        if found is None:
+            found = self._sub_ids[(parent, name)] = self.fresh_id()
+        return found
 
     def last_id(self) -> int:
         """The newest symbol or heap id: those made later have larger ids."""
@@ -138,7 +177,16 @@ class FileContext:
             raise BudgetExceededError(getattr(node, "lineno", 1))
 
     # -- reporting -----------------------------------------------------------
+    def already(self, once: tuple[object, ...]) -> bool:
+        return once in self._reported
+
+    def report_once(self, once: tuple[object, ...]) -> None:
+        """Mark `once` as reported (for a diagnostic keyed by something else)."""
+        self._reported.add(once)
+
     def report(self, diag: Diagnostic, once: tuple[object, ...] | None = None) -> None:
+        if self.muted:
+            return
         if once is not None:
             if once in self._reported:
                 return
@@ -226,6 +274,7 @@ class FileContext:
             self.source.char_col,
             known,
             self.alias_of,
+            self._field_kind,
         )
         self.uses_refinements = self.uses_refinements or found is not None
         for problem in problems:
@@ -309,6 +358,35 @@ class FileContext:
                 self.discharge, self.catalog, spec, self._question_ids
             )[0]
         return self._invariants[spec.name]
+
+    def _field_kind(self, msg_type: str, path: str) -> str | None:
+        found = self.catalog.field_at(msg_type, path)
+        return None if found is None else ("msg" if found.kind == "msg" else "value")
+
+
+# Keys of `derived` values whose last element is the version of the object read.
+VERSIONED = frozenset({"attribute", "truthy", "len", "isinstance", "hasattr"})
+
+
+def _first_version(
+    key: tuple[object, ...], unchanged: dict[int, tuple[A.Sym, object]]
+) -> tuple[tuple[object, ...], object]:
+    """The key of the same read of the object as it first was (`self.flag` before
+    calls that may have changed it)."""
+    if len(key) < 2:
+        return key, None
+    head = key[1]  # an object's symbol, or its id
+    ident = head.ident if isinstance(head, A.Sym) else head
+    if not isinstance(ident, int):
+        return key, None
+    rest, changed = key[2:], False
+    read: object = ident
+    if ident in unchanged:
+        (first, read), changed = unchanged[ident], True
+        head = first if isinstance(head, A.Sym) else first.ident
+    if key[0] in VERSIONED and rest and isinstance(rest[-1], int) and rest[-1]:
+        rest, changed = (*rest[:-1], 0), True
+    return ((key[0], head, *rest) if changed else key), read
 
 
 def build_scope(

@@ -13,6 +13,8 @@ import re
 from collections.abc import Callable
 from dataclasses import replace
 from fractions import Fraction
+from functools import partial
+from typing import TypeVar
 
 from robotfix import messages
 from robotfix.analysis import containers, frames, heap, hover
@@ -30,6 +32,7 @@ from robotfix.annotations.units import DIMENSIONLESS, Unit, effective
 from robotfix.diagnostics import Span
 from robotfix.ros.catalog import constant_term
 
+T = TypeVar("T")
 ARITH = {ast.Add: "+", ast.Sub: "-", ast.Mult: "*", ast.Div: "/"}
 COMPARE = {
     ast.Eq: "==",
@@ -44,6 +47,21 @@ _DECIMAL = re.compile(r"[0-9_]*\.?[0-9_]*([eE][+-]?[0-9_]+)?")
 # folded with others it would overflow floats, z3's input and the texts shown.
 MAX_NUMBER: int = 10**100
 KIND_ORDER = ("bool", "int", "float")
+LEAVES = (A.Sym, A.Str, A.Bool, A.Num)
+# Values that are never None.
+STATIC_VALUES = frozenset(
+    {
+        "module",
+        "msgclass",
+        "interface",
+        "function",
+        "class",
+        "method",
+        "builtin",
+        "instance",
+        "goal_handle",
+    }
+)
 
 
 class ExpressionEvaluator:
@@ -68,7 +86,7 @@ class ExpressionEvaluator:
     def refinement_term(self, name: str, state: State) -> A.Expr | None:
         """The term for a name a refinement mentions, if it is known here."""
         bound = state.env.get(name)
-        return bound.term if isinstance(bound, Value) else None
+        return state.use(bound).term if isinstance(bound, Value) else None
 
     def global_term(self, name: str, state: State) -> A.Expr | None:
         """The term of a module name that no function rebinds, as read here."""
@@ -197,7 +215,14 @@ class ExpressionEvaluator:
             )
             return value
         found = self.member(base, node.attr, state)
-        return found if found is not None else self.unknown(node)
+        if found is not None:
+            return found
+        if base.kind == "unknown" and isinstance(base.term, A.Sym):
+            # `args.verbose` twice is one value, until something may change args
+            version = state.version(base.term)
+            key = ("attribute", base.term.ident, node.attr, version)
+            return self.ctx.derived(key, "unknown", node)
+        return self.unknown(node)
 
     def member(self, base: Value, attr: str, state: State) -> Value | None:
         """`base.attr` when `base` is a module, an interface or message class, a
@@ -267,7 +292,7 @@ class ExpressionEvaluator:
         key = f"{var}.{node.attr}"
         bound = state.env.get(key)
         if isinstance(bound, Value):
-            return bound
+            return state.use(bound)
         method = f"{base.name}.{node.attr}"
         if base.kind == "instance" and method in self.program.functions:
             return Value("method", name=method)
@@ -280,14 +305,25 @@ class ExpressionEvaluator:
             )
         else:
             decl = self.program.attributes.get(base.name, {}).get(node.attr)
-            remembered = frames.recall(self.ctx, base.name, node.attr)
-            value = (
-                (remembered or self.unknown(node))
-                if decl is None
-                else self.check.assumed(
-                    state, key, decl, self.refinement_lookup(decl, state)
-                )
+            msg_type = (
+                self.program.message_attribute(base.name, node.attr)
+                if base.kind == "instance" and decl is None
+                else None
             )
+            if decl is not None:
+                lookup = self.refinement_lookup(decl, state)
+                value = self.check.assumed(state, key, decl, lookup)
+            elif msg_type is not None:
+                # a message kept on self: its fields are unknown but refined, as
+                # any attribute is in a method that did not set it
+                value = heap.new_message(
+                    self.ctx, state, msg_type, "received", label=key
+                )
+            else:
+                remembered = frames.recall(self.ctx, base.name, node.attr)
+                value = remembered or self.unknown(node)
+                if remembered is None and isinstance(value.term, A.Sym):
+                    self.ctx.first_read(("attribute", key), value.term)
             self.lists_seen = self.lists_seen or value.kind == "list"
         state.env[key] = value
         return value
@@ -349,7 +385,8 @@ class ExpressionEvaluator:
     def eval_UnaryOp(self, node: ast.UnaryOp, state: State) -> Value:
         operand = self.eval(node.operand, state)
         if isinstance(node.op, ast.Not):
-            return Value("bool", A.Unary("not", self.truthy(operand, node.operand)))
+            truth = self.truthy(operand, node.operand, state)
+            return Value("bool", A.Unary("not", truth))
         if (
             isinstance(node.op, (ast.USub, ast.UAdd))
             and operand.term is not None
@@ -539,6 +576,12 @@ class ExpressionEvaluator:
         ]
         parts: list[A.Expr] = []
         for op, left, right in zip(node.ops, operands, operands[1:], strict=False):
+            if isinstance(op, (ast.Is, ast.IsNot)):
+                fact = self._is_none(left, right, state)
+                if fact is None:
+                    return self.unknown(node, "bool")
+                parts.append(fact if isinstance(op, ast.Is) else A.Unary("not", fact))
+                continue
             name = COMPARE.get(type(op))
             if (name is not None and name not in ("==", "!=")) or (
                 left.is_number and right.is_number
@@ -546,11 +589,49 @@ class ExpressionEvaluator:
                 self.unit_of_sum(left, right, node, name or "==")
             if name is None or left.term is None or right.term is None:
                 return self.unknown(node, "bool")
+            if name in ("==", "!=") and _sorts_differ(left, right):
+                # `command == "slow"` of an unknown: the solver cannot compare
+                # them, but the same test of the same values is the same
+                key = ("==", left.term, right.term)
+                same = self.ctx.derived(key, "bool", node).known_term
+                parts.append(same if name == "==" else A.Unary("not", same))
+                continue
             parts.append(A.Binary(name, left.term, right.term))
         return Value("bool", A.conjoin(parts))
 
+    def _is_none(self, left: Value, right: Value, state: State) -> A.Expr | None:
+        """`x is None`: known for None and built messages, else the same unknown
+        for the same value of x (so that two tests of it agree)."""
+        if right.kind != "none":
+            left, right = right, left
+        if right.kind != "none":
+            return None
+        if left.kind == "none":
+            return A.TRUE
+        if left.kind == "msg" and left.ref is not None:
+            obj = state.heap.get(left.ref)
+            if obj is not None and obj.origin == "constructed":
+                return A.Bool(False)
+            return self.ctx.derived(("is None", left.ref), "bool", "`is None`").term
+        if isinstance(left.term, A.Sym):
+            key = ("is None", left.term.ident)
+            return self.ctx.derived(key, "bool", "`is None`").term
+        if left.kind in STATIC_VALUES:
+            return A.Bool(False)
+        return None
+
     def eval_BoolOp(self, node: ast.BoolOp, state: State) -> Value:
-        values = [self.eval(v, state) for v in node.values]
+        values = [self.eval(node.values[0], state)]
+        so_far: A.Expr = self.truthy(values[0], node.values[0], state)
+        for operand in node.values[1:]:  # evaluated only where the others let it
+            fact = self._goes_on(node, so_far)
+            value = self.under(state, fact, partial(self.eval, operand, state))
+            values.append(value)
+            so_far = A.Binary(
+                "and" if isinstance(node.op, ast.And) else "or",
+                so_far,
+                self.truthy(value, operand, state),
+            )
         if any(v.kind != "bool" or v.term is None for v in values):
             return self.unknown(node)
         op = "and" if isinstance(node.op, ast.And) else "or"
@@ -561,7 +642,10 @@ class ExpressionEvaluator:
 
     def eval_IfExp(self, node: ast.IfExp, state: State) -> Value:
         cond = self.condition(node.test, state)
-        then, orelse = self.eval(node.body, state), self.eval(node.orelse, state)
+        then = self.under(state, cond, partial(self.eval, node.body, state))
+        orelse = self.under(
+            state, A.Unary("not", cond), partial(self.eval, node.orelse, state)
+        )
         kinds = {then.kind, orelse.kind}
         if (
             then.term is None
@@ -581,6 +665,29 @@ class ExpressionEvaluator:
             unit,
             then.literal and orelse.literal,
         )
+
+    def sized(
+        self,
+        node: ast.List | ast.Set | ast.Dict,
+        state: State,
+        value: Value | None = None,
+    ) -> Value:
+        """A list, set or dict display (`value`, if its elements are modelled): its
+        length and truth are known until something may change it."""
+        sym = self.unknown(node)
+        items = node.keys if isinstance(node, ast.Dict) else node.elts
+        term = sym.term
+        if not isinstance(term, A.Sym) or any(
+            i is None or isinstance(i, ast.Starred) for i in items
+        ):
+            return value if value is not None else sym
+        self.ctx.sizes[term.ident] = len(items)
+        state.shared.watched.add(term.ident)  # `xs = []; xs.append(1)` changes it
+        return sym if value is None else replace(value, term=term)
+
+    def eval_Set(self, node: ast.Set, state: State) -> Value:
+        self.eval_children(node, state)
+        return self.sized(node, state)
 
     def eval_Subscript(self, node: ast.Subscript, state: State) -> Value:
         base = self.eval(node.value, state)
@@ -667,8 +774,9 @@ class ExpressionEvaluator:
         if any(k is None for k in node.keys) or any(
             v.term is None and v.elements is None for v in keys + values
         ):
-            return self.unknown(node)
-        return Value("dict", elements=tuple(values), keys=tuple(keys))
+            return self.sized(node, state)
+        table = Value("dict", elements=tuple(values), keys=tuple(keys))
+        return self.sized(node, state, table)
 
     def _look_up(
         self, table: Value, key: Value, node: ast.Subscript, state: State
@@ -753,16 +861,37 @@ class ExpressionEvaluator:
         """The fact that holds when `node` is truthy (unknown parts: fresh booleans)."""
         if isinstance(node, ast.BoolOp):
             op = "and" if isinstance(node.op, ast.And) else "or"
-            parts = [self.condition(v, state) for v in node.values]
-            result = parts[0]
-            for part in parts[1:]:
+            result = self.condition(node.values[0], state)
+            for operand in node.values[1:]:  # `x and x.y`: y read only if x holds
+                fact = self._goes_on(node, result)
+                part = self.under(state, fact, partial(self.condition, operand, state))
                 result = A.Binary(op, result, part)
             return result
         if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.Not):
             return A.Unary("not", self.condition(node.operand, state))
-        return self.truthy(self.eval(node, state), node)
+        return self.truthy(self.eval(node, state), node, state)
 
-    def truthy(self, value: Value, node: ast.AST) -> A.Expr:
+    @staticmethod
+    def _goes_on(node: ast.BoolOp, so_far: A.Expr) -> A.Expr:
+        """When `a and b` (`a or b`) evaluates b: a is true (false)."""
+        return so_far if isinstance(node.op, ast.And) else A.Unary("not", so_far)
+
+    def under(self, state: State, fact: A.Expr, evaluate: Callable[[], T]) -> T:
+        """Evaluate on the path where `fact` holds (the right side of `and`, an arm
+        of `a if c else b`); the fact is dropped afterwards."""
+        if fact == A.TRUE:
+            return evaluate()
+        at = len(state.facts)
+        state.facts.append(fact)
+        try:
+            return evaluate()
+        finally:
+            if len(state.facts) > at and state.facts[at] is fact:
+                del state.facts[at]
+
+    def truthy(self, value: Value, node: ast.AST, state: State | None = None) -> A.Expr:
+        """The fact that `value` is true. An unknown object's truth is the same
+        until something may change it (an empty list filled)."""
         if value.term is not None and value.kind == "bool":
             return value.term
         if value.term is not None and value.kind in ("int", "float"):
@@ -776,6 +905,20 @@ class ExpressionEvaluator:
             length is not None and value.kind != "generator"
         ):  # a list is true if not empty
             return A.Binary(">", length, A.Num(Fraction(0), True))
+        if value.kind == "tuple" and value.elements is not None:
+            return A.Bool(len(value.elements) > 0)
+        term = value.term
+        if type(term) is A.Sym:
+            version = state.version(term) if state else 0
+            size = self.ctx.sizes.get(term.ident) if not version else None
+            if size is not None:  # a display: `[]` is false
+                return A.Bool(size > 0)
+            key = ("truthy", term.ident, version)
+            return self.ctx.derived(key, "bool", node).known_term
+        if value.kind == "module":  # `if TYPE_CHECKING:`, `if sys.flags.debug:`
+            if value.name.endswith("TYPE_CHECKING"):
+                return A.Bool(False)
+            return self.ctx.derived(("truthy", value.name), "bool", node).known_term
         return self.unknown(node, "bool").term  # type: ignore[return-value]
 
 
@@ -798,6 +941,17 @@ def _literal(term: A.Expr | None) -> Fraction | str | None:
 
 def _too_large(value: Fraction) -> bool:
     return abs(value.numerator) >= MAX_NUMBER or value.denominator >= MAX_NUMBER
+
+
+def _sorts_differ(left: Value, right: Value) -> bool:
+    """An unknown (a real in the solver) against a str or a bool, both leaves."""
+    kinds = {left.kind, right.kind}
+    return (
+        "unknown" in kinds
+        and bool(kinds & {"str", "bool"})
+        and isinstance(left.term, LEAVES)
+        and isinstance(right.term, LEAVES)
+    )
 
 
 def constant_value(term: A.Expr | None) -> float | None:

@@ -13,7 +13,14 @@ from fractions import Fraction
 from robotfix.analysis import containers
 from robotfix.analysis.context import FileContext
 from robotfix.analysis.state import State
-from robotfix.analysis.values import Items, Kept, MsgObj, Value
+from robotfix.analysis.values import (
+    Items,
+    Kept,
+    MaybeDefault,
+    MsgObj,
+    ObjInvariant,
+    Value,
+)
 from robotfix.annotations import ast as A
 from robotfix.annotations.units import Unit, UnitError, label, resolve
 from robotfix.messages import Declared
@@ -40,12 +47,15 @@ def new_message(
     origin: str,
     owner: tuple[int, str] | None = None,
     label: str = "the message",
+    stable: bool = False,
 ) -> Value:
     """A message; `label` names it in counterexamples (`request` in `request.a`).
     A received one satisfies its invariants: they are assumed when the code first
     reads or writes one of its fields (`settle`), and its sub-messages exist only
-    once read, so a type with a fan-out of sub-messages costs what the code reads."""
-    ref = ctx.fresh_id()
+    once read, so a type with a fan-out of sub-messages costs what the code reads.
+    A `stable` sub-message, one that was there all along, has the same id on every
+    path."""
+    ref = ctx.sub_id(*owner) if stable and owner else ctx.fresh_id()
     state.heap[ref] = MsgObj(
         msg_type, origin, owner=owner, pending=origin == "received", label=label
     )
@@ -68,6 +78,22 @@ def settle(ctx: FileContext, state: State, ref: int) -> None:
         terms = {p: resolve_path(ctx, state, ref, p, obj.label).term for p in paths}
         if all(t is not None for t in terms.values()):
             state.assume(A.substitute(predicate, terms))  # type: ignore[arg-type]
+
+
+def chain(state: State, ref: int, name: str) -> list[tuple[int, str]]:
+    """(message ref, path of field `name` relative to it) for `ref` and each message
+    that holds it, outermost first."""
+    out: list[tuple[int, str]] = []
+    path = name
+    current: int | None = ref
+    while current is not None and current in state.heap and len(out) < 32:
+        out.append((current, path))
+        owner = state.heap[current].owner
+        if owner is None:
+            break
+        current, path = owner[0], f"{owner[1]}.{path}"
+    out.reverse()
+    return out
 
 
 def contexts(
@@ -103,6 +129,43 @@ def owns(state: State, ref: int, inner: int) -> bool:
         owner = state.heap[current].owner
         current = owner[0] if owner is not None else None
     return False
+
+
+def extras_on(state: State, ref: int, name: str) -> list[tuple[ObjInvariant, str]]:
+    """Refinements of variables that a message reached (`Annotated[Twist, ...]`)
+    that mention only field `name` of `ref` (and what lies below it)."""
+    found: list[tuple[ObjInvariant, str]] = []
+    if not state.shared.extras:
+        return found
+    current: int | None = ref
+    path = name
+    for _ in range(32):
+        obj = state.heap.get(current) if current is not None else None
+        if obj is None:
+            break
+        for inv in obj.extra:
+            if all(p == path or p.startswith(path + ".") for p in inv.paths):
+                found.append((inv, path))
+        if obj.owner is None:
+            break
+        current, path = obj.owner[0], f"{obj.owner[1]}.{path}"
+    return found
+
+
+def below(ctx: FileContext, state: State, ref: int, name: str) -> set[str]:
+    """Paths inside the message in field `name` of `ref` that have a unit or a
+    refinement there: what a sub-message stored into that field must satisfy."""
+    found: set[str] = set()
+    for current, path in chain(state, ref, name):
+        prefix = path + "."
+        spec = ctx.catalog.lookup(state.heap[current].type)
+        paths = [inv.paths for inv in state.heap[current].extra]
+        if spec is not None:
+            found.update(k[len(prefix) :] for k in spec.units if k.startswith(prefix))
+            paths += [inv.paths for inv in spec.invariants]
+        for group in paths:
+            found.update(p[len(prefix) :] for p in group if p.startswith(prefix))
+    return found
 
 
 def field_spec(ctx: FileContext, state: State, ref: int, name: str) -> FieldSpec | None:
@@ -149,7 +212,7 @@ def read_raw(
     marked with `default_of`."""
     obj = state.heap[ref]
     if name in obj.fields:
-        return obj.fields[name]
+        return state.use(obj.fields[name])
     spec = field_spec(ctx, state, ref, name)
     if spec is None:
         return Value("unknown")
@@ -157,7 +220,13 @@ def read_raw(
         return _array(ctx, state, ref, name, spec, description)
     if spec.kind == "msg" and not spec.array and spec.msg_type:
         sub = new_message(
-            ctx, state, spec.msg_type, obj.origin, (ref, name), f"{obj.label}.{name}"
+            ctx,
+            state,
+            spec.msg_type,
+            obj.origin,
+            (ref, name),
+            f"{obj.label}.{name}",
+            stable=True,
         )
         obj.fields[name] = sub
         return sub
@@ -352,6 +421,19 @@ def resolve_path(
     return value
 
 
+def unset_at(
+    ctx: FileContext, state: State, ref: int, path: str
+) -> MaybeDefault | None:
+    """When the field at `path` inside message `ref` still has its default, if it
+    was set on some paths only."""
+    inner, _, leaf = path.rpartition(".")
+    holder: int | None = ref
+    if inner:
+        holder = resolve_path(ctx, state, ref, inner, "").ref
+    obj = state.heap.get(holder) if holder is not None else None
+    return obj.unset.get(leaf) if obj is not None and obj.unset else None
+
+
 def havoc(state: State, ref: int, seen: set[int] | None = None) -> None:
     """Unknown code may have changed any field of this message and its sub-messages."""
     obj = state.heap.get(ref)
@@ -365,3 +447,4 @@ def havoc(state: State, ref: int, seen: set[int] | None = None) -> None:
     obj.origin = "unknown"
     obj.pending = False
     obj.fields = {k: v for k, v in obj.fields.items() if v.ref is not None}
+    obj.unset = None

@@ -13,23 +13,59 @@ import ast
 import builtins
 from collections.abc import Callable
 from dataclasses import replace
+from fractions import Fraction
 
 from robotfix import messages
 from robotfix.analysis import containers, frames, heap, hover
-from robotfix.analysis.calls import CallEvaluator
+from robotfix.analysis.calls import MUTATORS, CallEvaluator
 from robotfix.analysis.constants import scan
 from robotfix.analysis.context import FileContext, Scope, build_scope
 from robotfix.analysis.flows import Where
 from robotfix.analysis.index import index_module
-from robotfix.analysis.program import Function, Program, collect
-from robotfix.analysis.state import MAYBE, State, join
-from robotfix.analysis.values import CONTAINERS, NONE, SEQUENCES, Items, Uninit, Value
+from robotfix.analysis.program import (
+    Function,
+    Program,
+    attribute_key,
+    collect,
+    never_returns,
+)
+from robotfix.analysis.state import MAYBE, MaybeUnbound, State, join
+from robotfix.analysis.values import (
+    CONTAINERS,
+    MUTABLE,
+    NONE,
+    SEQUENCES,
+    Items,
+    Uninit,
+    Value,
+)
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import named_number
-from robotfix.astwalk import walk
+from robotfix.astwalk import children, walk
 from robotfix.diagnostics import Span
 
+NO_RETURN = frozenset(
+    {
+        "sys.exit",
+        "os._exit",
+        "os.abort",
+        "pytest.fail",
+        "pytest.skip",
+        "pytest.exit",
+        "pytest.xfail",
+        "typing.assert_never",
+        "typing_extensions.assert_never",
+        "_pytest.outcomes.fail",
+        "_pytest.outcomes.skip",
+        "_pytest.outcomes.exit",
+    }
+)
+# Python 2's builtins: `raw_input = raw_input` in a module's Python 2 branch.
+PY2_BUILTINS = frozenset(
+    {"raw_input", "unicode", "basestring", "long", "xrange", "unichr", "file"}
+    | {"execfile", "reload", "cmp", "buffer", "apply", "intern", "coerce"}
+)
 BUILTINS = frozenset(dir(builtins)) | {"__file__", "__name__", "__doc__", "__spec__"}
 # Python packages with a `msg`/`srv`/`action` module that is not an interface package.
 CLIENT_LIBRARIES = frozenset(
@@ -148,6 +184,9 @@ class Interpreter(CallEvaluator):
         # module names read in this function, which no function rebinds: one value
         # (and the fact its refinement gives) for the whole run of the function
         self.globals_read: dict[str, tuple[Value, A.Expr | None]] = {}
+        self.elifs: set[int] = set()  # `if` statements that are an `elif`
+        self.guarded = 0  # inside a `try` body whose handlers catch NameError
+        self.nested: dict[str, ast.AST] = {}  # functions defined in this body
         self._shared: set[str] | None = None  # names whose lists may be shared
 
     # -- blocks --------------------------------------------------------------
@@ -173,15 +212,27 @@ class Interpreter(CallEvaluator):
             if isinstance(bound, Value):
                 if bound.kind == "list" and containers.followed(bound):
                     return self._unshared(name, bound)
-                return bound
+                return state.use(bound) if state.shared.defs else bound
             decl = scope.decls.get(name)
-            if bound is MAYBE:
+            if isinstance(bound, MaybeUnbound):
+                if (
+                    bound.when is not None
+                    and self._unbound_is_error(name, bound.when != A.TRUE)
+                    and self.check.unbound_here(state, bound.when, name, self.site)
+                ):
+                    state.env[name] = MAYBE  # one bug, one diagnostic
+                    return Value("unknown", uninit=Uninit(name, decl is not None))
                 return self.unknown(
                     node, decl.base if decl else "unknown", decl.unit if decl else None
                 )
             value = Value("unknown", uninit=Uninit(name, decl is not None))
             if decl is not None:
-                self.check.report_uninit(value, self.site)
+                self.check.report_uninit(value, self.site, state)
+            elif self.guarded or (  # `try: X` read it: past this, X exists
+                self._unbound_is_error(name)
+                and self.check.unbound_here(state, A.TRUE, name, self.site)
+            ):
+                state.env[name] = MAYBE
             return value
         outer = scope.parent
         while outer is not None and outer.parent is not None:
@@ -245,7 +296,7 @@ class Interpreter(CallEvaluator):
         name; `self.LIMIT` and `Node.LIMIT` to class constants."""
         bound = state.env.get(name)
         if isinstance(bound, Value) and bound.term is not None:
-            return bound.term
+            return state.use(bound).term
         head, _, rest = name.partition(".")
         local = self._is_local(head)
         if local and rest:
@@ -291,6 +342,22 @@ class Interpreter(CallEvaluator):
             and node.id in self.ctx.constants.read_only
             and not self._is_local(node.id)
         )
+
+    def _unbound_is_error(self, name: str, some_paths: bool = False) -> bool:
+        """Reading an unbound local raises, unless a handler of the enclosing `try`
+        catches NameError, or (outside functions) the name falls back to a builtin
+        or, in a class body, to a module name. Module and class code that binds a
+        name on some paths only mostly tests the platform or Python version, which
+        the analysis cannot tell; a star import may bind any name."""
+        if self.guarded:
+            return False
+        if self.scope.kind == "function":
+            return True
+        if some_paths or name in BUILTINS or name in PY2_BUILTINS:
+            return False
+        if self.ctx.star_import:
+            return False
+        return self.scope.kind != "class" or name not in self.scope.module().local_names
 
     def _assumed_or_unknown(
         self, decl: Refinement | None, name: str, state: State, node: ast.AST
@@ -354,6 +421,8 @@ class Interpreter(CallEvaluator):
                 self.check.write_field(
                     state, base.ref, target.attr, value, self.site, text
                 )
+            else:
+                state.changed(base, firm=True)
         elif isinstance(target, (ast.Tuple, ast.List)):
             parts = value.elements if value.kind in SEQUENCES else None
             starred = any(isinstance(e, ast.Starred) for e in target.elts)
@@ -373,6 +442,8 @@ class Interpreter(CallEvaluator):
             key = self.eval(target.slice, state)
             if receiver.kind == "list":
                 self._assign_element(target, receiver, key, value, state)
+            else:  # `d[k] = v`: d is not empty now
+                self._changed_root(target, state, firm=True)
         elif isinstance(target, ast.Starred):
             self.bind(target.value, self.unknown(target), state)
 
@@ -380,6 +451,7 @@ class Interpreter(CallEvaluator):
         self, base: Value, var: str, attr: str, value: Value, state: State
     ) -> None:
         key = f"{var}.{attr}"
+        state.shared.firm.add(("attribute", key))
         decl = self.program.attributes.get(base.name, {}).get(attr)
         if decl is not None:
             lookup = self.refinement_lookup(decl, state)
@@ -405,13 +477,19 @@ class Interpreter(CallEvaluator):
     def _unshared(self, name: str, value: Value) -> Value:
         """A local list as read: what it holds element by element only if no other
         name, attribute or callee can change it (else what its declaration says)."""
-        if self.scope.kind != "class" and self.follows_lists():
+        if self.scope.kind != "class":
             if self._shared is None:  # one walk of the body, at the first such read
                 self._shared = containers.shared_names(
                     getattr(self.scope.node, "body", [])
                 )
             if name not in self._shared:
-                return value
+                if self.follows_lists():
+                    return value
+                # its elements do not matter here, its length (truth) may
+                stripped = containers.stripped(value)
+                items = stripped.items or Items(containers.item_kind(value))
+                size = containers.size_of(value)
+                return replace(stripped, items=replace(items, size=size))
         return containers.stripped(value)
 
     def _assign_element(
@@ -578,6 +656,9 @@ class Interpreter(CallEvaluator):
                 value = Value("instance", name=function.class_name or "")
             elif arg.arg in arriving:
                 value = arriving[arg.arg](state)
+            elif decl is not None and decl.base == "msg":
+                lookup = self.refinement_lookup(decl, state)
+                value = self.check.assumed(state, arg.arg, decl, lookup)
             elif msg_type is not None:
                 value = heap.new_message(
                     self.ctx, state, msg_type, "received", label=arg.arg
@@ -642,7 +723,8 @@ class Interpreter(CallEvaluator):
 
     def _forgotten(
         self,
-        name: ast.Name,
+        name: str,
+        node: ast.AST,
         before: object,
         keeps_unit: set[str],
         after: State | None,
@@ -650,61 +732,86 @@ class Interpreter(CallEvaluator):
         """The unknown value of a name a loop or `try` may change: a sum keeps its
         unit; one that started as a literal (`total = 0.0`) takes the unit the loop
         body gave it, and until then, as a literal, the unit of its context."""
-        if not isinstance(before, Value) or name.id not in keeps_unit:
-            return self.unknown(name)
+        if not isinstance(before, Value) or name not in keeps_unit:
+            return self.unknown(node)
         if not before.literal:
-            return self.unknown(name, unit=before.unit)
-        found = (
-            after.env.get(name.id) if after is not None and after.reachable else None
-        )
+            return self.unknown(node, unit=before.unit)
+        found = after.env.get(name) if after is not None and after.reachable else None
         if isinstance(found, Value) and found.unit is not None and not found.literal:
-            return self.unknown(name, unit=found.unit)
-        return replace(self.unknown(name), literal=True)
+            return self.unknown(node, unit=found.unit)
+        return replace(self.unknown(node), literal=True)
+
+    def _loop_units(self, loop: State, end: State, nodes: list[ast.stmt]) -> None:
+        """A sum that started as a literal (`total = 0.0`) takes, after the loop,
+        the unit its body gave it."""
+        if not end.reachable:
+            return
+        for name in _accumulated(nodes):
+            value, found = loop.env.get(name), end.env.get(name)
+            if (
+                isinstance(value, Value)
+                and value.literal
+                and value.unit is None
+                and isinstance(found, Value)
+                and found.unit is not None
+                and not found.literal
+            ):
+                loop.env[name] = replace(value, unit=found.unit, literal=False)
 
     def havoc(
-        self, state: State, nodes: list[ast.stmt], after: State | None = None
-    ) -> None:
-        """Forget what `nodes` may write: assigned names and mentioned messages, and
-        what lists they change (`xs.append(v)`, `xs[i] = v`) hold.
-
-        An unannotated name only ever changed by `+=`/`-=` keeps its unit (`+` and
-        `-` need equal units, so every path that does not report one keeps it)."""
-        keeps_unit = _accumulated(nodes)
+        self, state: State, nodes: list[ast.stmt], loop: bool = False
+    ) -> set[str]:
+        """Forget what `nodes` may write: bound names and mentioned messages. A
+        name only ever set to constants of the kind it has keeps that kind (a flag
+        stays a bool), so that tests of it agree with what was set. A loop that
+        calls anything (`rospy.sleep`, `spin_once`) lets callbacks run: the node's
+        attributes and the globals that functions set may change there too.
+        What lists they change (`xs.append(v)`, `xs[i] = v`) hold is forgotten.
+        Returns the names they may bind."""
+        calls = False
         lists: set[str] = set()  # names of lists that `nodes` mention
+        keeps_unit = _accumulated(nodes)
+        watched = state.shared.watched  # only their changes need a new version
+        bound_at: dict[str, ast.AST] = {}
+        constant: dict[str, set[str]] = {}
         for node in nodes:
             for child in walk(node):
-                if (
-                    isinstance(child, ast.Attribute)
-                    and isinstance(child.value, ast.Name)
-                    and (isinstance(child.ctx, ast.Store) or self.lists_seen)
-                ):
-                    key = f"{child.value.id}.{child.attr}"
-                    kept = state.env.get(key)
-                    if isinstance(child.ctx, ast.Store) or (
-                        isinstance(kept, Value) and kept.kind == "list"
-                    ):  # `self.xs.append(v)`: forget what it held
-                        state.env.pop(key, None)
-                if not isinstance(child, ast.Name):
-                    continue
-                bound = state.env.get(child.id)
-                if isinstance(bound, Value) and bound.ref is not None:
-                    heap.havoc(state, bound.ref)
-                elif isinstance(bound, Value) and bound.kind == "list":
-                    lists.add(child.id)
-                if (
-                    isinstance(child.ctx, ast.Store)
-                    and child.id in self.scope.local_names
-                ):
-                    decl = self.decl_for(child.id)
-                    if decl is not None:
-                        lookup = self.refinement_lookup(decl, state)
-                        state.env[child.id] = self.check.assumed(
-                            state, child.id, decl, lookup
-                        )
-                    else:
-                        state.env[child.id] = self._forgotten(
-                            child, state.env.get(child.id), keeps_unit, after
-                        )
+                kind = type(child)
+                if kind is ast.Name:
+                    bound = state.env.get(child.id)  # type: ignore[attr-defined]
+                    if isinstance(bound, Value) and bound.ref is not None:
+                        heap.havoc(state, bound.ref)
+                    elif isinstance(bound, Value) and bound.kind == "list":
+                        lists.add(child.id)  # type: ignore[attr-defined]
+                    if type(child.ctx) is not ast.Load:  # type: ignore[attr-defined]
+                        bound_at.setdefault(child.id, child)  # type: ignore[attr-defined]
+                elif kind is ast.Attribute:
+                    if type(child.ctx) is ast.Store:  # type: ignore[attr-defined]
+                        key = attribute_key(child)  # type: ignore[arg-type]
+                        state.env.pop(key or "", None)
+                        if watched:
+                            self._changed_root(child, state, firm=True)
+                    elif self.lists_seen:  # `self.xs.append(v)`: forget what it held
+                        key = attribute_key(child) or ""  # type: ignore[arg-type]
+                        kept = state.env.get(key)
+                        if isinstance(kept, Value) and kept.kind == "list":
+                            state.env.pop(key, None)
+                elif kind is ast.Subscript:
+                    if watched and type(child.ctx) is not ast.Load:  # type: ignore[attr-defined]
+                        self._changed_root(child, state, firm=True)
+                elif kind is ast.Call:
+                    calls = True
+                    if watched:
+                        call: ast.Call = child  # type: ignore[assignment]
+                        method = getattr(call.func, "attr", "")
+                        self._changed_root(call.func, state, method in MUTATORS)
+                        for arg in [*call.args, *call.keywords]:
+                            self._changed_root(arg, state)
+                elif kind is ast.Assign or kind is ast.AugAssign:
+                    _constant_stores(child, constant)  # type: ignore[arg-type]
+                elif kind in BINDER_KINDS:
+                    for name in _binds(child):
+                        bound_at.setdefault(name, child)
         if lists:  # those `nodes` may change (`xs.append(v)`, `xs[i] = v`, `b = xs`)
             if self.follows_lists():
                 lists &= containers.shared_names(nodes, changes=True)
@@ -712,11 +819,154 @@ class Interpreter(CallEvaluator):
                 bound = state.env.get(name)
                 if isinstance(bound, Value):
                     state.env[name] = containers.forgetting(bound)
+        if loop and calls:
+            for key in [k for k in state.env if "." in k]:
+                del state.env[key]  # `while self.scan is None: rospy.sleep(0.1)`
+            for name in sorted(self.program.shared_globals):
+                bound_at.setdefault(name, nodes[0])  # `while not received: ...`
+        for name, child in bound_at.items():
+            if name not in self.scope.local_names:
+                continue
+            decl = self.decl_for(name)
+            before = state.env.get(name)
+            if decl is not None:
+                lookup = self.refinement_lookup(decl, state)
+                state.env[name] = self.check.assumed(state, name, decl, lookup)
+            elif isinstance(before, Value) and constant.get(name, {"?"}) <= _KEEPS.get(
+                before.kind, set()
+            ):
+                state.env[name] = self.unknown(child, before.kind, before.unit)
+            else:
+                state.env[name] = self._forgotten(name, child, before, keeps_unit, None)
+        return set(bound_at)
+
+    def _changed_root(self, node: ast.AST, state: State, firm: bool = False) -> None:
+        """The object at the root of `x.a.b` (or a call's argument `x`) may change
+        (`firm`: the code stores into it)."""
+        while isinstance(
+            node, (ast.Attribute, ast.keyword, ast.Starred, ast.Subscript)
+        ):
+            node = node.value
+        if isinstance(node, ast.Name):
+            bound = state.env.get(node.id)
+            if isinstance(bound, Value) and bound.kind in MUTABLE:
+                state.changed(bound, firm)
 
     # -- simple statements ---------------------------------------------------
     def visit_Expr(self, node: ast.Expr, state: State) -> State:
         self.eval(node.value, state)
+        if isinstance(node.value, ast.Call):
+            if self._never_returns(node.value.func):
+                state.reachable = False  # sys.exit(1) ends this path
+            elif self._may_stop(node.value.func):
+                state.exits += 1
         return state
+
+    def _may_stop(self, func: ast.expr) -> bool:
+        """A call whose result is dropped, which may never return for all the
+        analysis can tell: a function of this file that can raise, or one it
+        cannot see (`self.fail(msg)`, `parser.exit(1)`), unless its name says it
+        returns (`print`, `logger.error`, `pub.publish`)."""
+        name = func.id if isinstance(func, ast.Name) else getattr(func, "attr", "")
+        if name in RETURNS:
+            return False
+        if name in LOGGING and isinstance(func, ast.Attribute):
+            # `self.get_logger().error(...)`, `logger.error(...)`; not `parser.error`
+            receiver = self.ctx.source.segment(func.value) or ""
+            return "log" not in receiver.lower()
+        known: Function | None = None
+        if isinstance(func, ast.Name):
+            if func.id in self.nested:
+                return self._function_may_raise(self.nested[func.id])
+            if func.id in BUILTINS and func.id not in self.scope.module().local_names:
+                return False
+            known = self.program.functions.get(func.id)
+        elif (
+            isinstance(func, ast.Attribute)
+            and self.function is not None
+            and self.function.class_name is not None
+            and isinstance(func.value, ast.Name)
+        ):
+            method = f"{self.function.class_name}.{func.attr}"
+            known = self.program.functions.get(method)
+        if known is not None:
+            return self._function_may_raise(known.node)
+        return True
+
+    def _function_may_raise(self, node: ast.AST) -> bool:
+        key = -id(node)  # `ends` holds never-returns by id(node); this by -id(node)
+        found = self.program.ends.get(key)
+        if found is None:
+            found = self.program.ends[key] = _may_raise(node)
+        return found
+
+    def _may_not_return(self, func: ast.expr) -> bool:
+        """A cheap first look: a name that could be one of the calls below."""
+        if isinstance(func, ast.Name):
+            name = func.id
+            return (
+                name in NO_RETURN_NAMES
+                or name in self.ctx.imports
+                or name in self.program.functions
+                or name in self.nested
+            )
+        name = getattr(func, "attr", "")
+        if name in NO_RETURN_NAMES:
+            return True
+        return (
+            self.function is not None
+            and self.function.class_name is not None
+            and isinstance(getattr(func, "value", None), ast.Name)
+            and f"{self.function.class_name}.{name}" in self.program.functions
+        )
+
+    def _never_returns(self, func: ast.expr) -> bool:
+        """`sys.exit()`, `pytest.fail()`, or a function of this file that can only
+        raise: the path ends there."""
+        if not self._may_not_return(func):
+            return False
+        module = self.scope.module()
+        known: Function | None = None
+        if isinstance(func, ast.Name):
+            if func.id in self.nested:  # a helper defined in this function
+                return self._function_never_returns(self.nested[func.id])
+            if func.id in self.scope.local_names:  # `from pytest import fail` here
+                return _no_return(self.ctx.qualname(func))
+            if func.id in ("exit", "quit") and func.id not in module.local_names:
+                return True
+            known = self.program.functions.get(func.id)
+        elif (
+            isinstance(func, ast.Attribute)
+            and isinstance(func.value, ast.Name)
+            and self.function is not None
+            and self.function.is_method
+            and func.value.id == _first_parameter(self.function)
+        ):
+            method = f"{self.function.class_name}.{func.attr}"
+            known = self.program.functions.get(method)
+        if known is not None:
+            return self._function_never_returns(known.node)
+        return _no_return(self.ctx.qualname(func))
+
+    def _function_never_returns(self, node: ast.AST) -> bool:
+        known = self.program.ends.get(id(node))
+        if known is None:
+            known = self.program.ends[id(node)] = never_returns(node, self._ends_path)
+        return known
+
+    def _ends_path(self, stmt: ast.stmt) -> bool:
+        """A last statement after which a function cannot go on."""
+        if isinstance(stmt, ast.Raise):
+            return True
+        if not isinstance(stmt, ast.Expr) or not isinstance(stmt.value, ast.Call):
+            return False
+        func = stmt.value.func
+        name = func.id if isinstance(func, ast.Name) else getattr(func, "attr", "")
+        if name in ("exit", "quit") and isinstance(func, ast.Name):
+            return True
+        if name not in NO_RETURN_NAMES and name not in self.ctx.imports:
+            return False
+        return _no_return(self.ctx.qualname(func))
 
     def visit_Assign(self, node: ast.Assign, state: State) -> State:
         if (
@@ -841,9 +1091,10 @@ class Interpreter(CallEvaluator):
     def visit_Delete(self, node: ast.Delete, state: State) -> State:
         for target in node.targets:
             if isinstance(target, ast.Name):
-                state.env.pop(target.id, None)
+                state.env[target.id] = MAYBE  # deleted: unknown, never an error
             else:
                 self.eval_children(target, state)
+                self._changed_root(target, state, firm=True)
         return state
 
     def visit_Import(self, node: ast.Import, state: State) -> State:
@@ -913,6 +1164,8 @@ class Interpreter(CallEvaluator):
             else f"<nested {node.name}@{node.lineno}>"
         )
         state.env[node.name] = Value("function", name=key)
+        if self.scope.kind == "function":
+            self.nested[node.name] = node
         top_level_method = (
             self.scope.kind == "class"
             and self.scope.parent is not None
@@ -938,20 +1191,68 @@ class Interpreter(CallEvaluator):
         then_state, else_state = state.fork(), state.fork()
         then_state.assume(cond)
         else_state.assume(A.Unary("not", cond))
+        if len(node.orelse) == 1 and type(node.orelse[0]) is ast.If:
+            self.elifs.add(id(node.orelse[0]))
+        elif not node.orelse and id(node) in self.elifs and _is_case(node.test):
+            # past `if m == A: ... elif m == B: ...` its author may know no case
+            # is left (an enum, a closed set of strings)
+            else_state.exits += 1
+        since = state.exits
         then_state = self.exec_block(node.body, then_state)
         else_state = self.exec_block(node.orelse, else_state)
-        return self._join(then_state, else_state)
+        return self._join(then_state, else_state, since)
 
-    def _join(self, a: State, b: State) -> State:
+    def _join(self, a: State, b: State, since: int | None = None) -> State:
         """`join`, after a received message read on one path only has had its
-        invariants assumed on the other one too (its values are the same)."""
+        invariants assumed on the other one too (its values are the same). With
+        `since` (the exits of the state where the paths split): a name bound on
+        one path only, where the other may have ended since (`exits`), is not
+        surely unbound there; reading it is never an error."""
+        if since is not None and a.reachable and b.reachable:
+            for side, other in ((a, b), (b, a)):
+                if side.exits > since:
+                    _excuse(side, other)
+        if a.reachable and b.reachable:
+            self._tie_lengths(a, b)
         if a.reachable and b.reachable:
             for ref in sorted(a.heap.keys() & b.heap.keys()):
                 if a.heap[ref].pending != b.heap[ref].pending:
                     heap.settle(self.ctx, a if a.heap[ref].pending else b, ref)
-        return join(a, b, self._merged)
+        return join(a, b, self)
 
-    def _merged(self, x: Value, y: Value) -> Value:
+    def _tie_lengths(self, a: State, b: State) -> None:
+        """A list of a known length on each path (`hits = []`, `hits = [r]`): one
+        length symbol, equal to each on its path, so that a later `if hits:` agrees
+        with the path that filled it."""
+        for name in sorted(a.env.keys() & b.env.keys()):
+            x, y = a.env[name], b.env[name]
+            if (
+                not isinstance(x, Value)
+                or not isinstance(y, Value)
+                or x.kind != "list"
+                or y.kind != "list"
+                or x == y
+                or any(v.items is not None and v.items.kept for v in (x, y))
+            ):
+                continue
+            lx, ly = containers.length_term(x), containers.length_term(y)
+            if lx is None or ly is None or lx == ly:
+                continue
+            length = self.ctx.fresh("int", f"`len({name})`").known_term
+            a.assume(A.Binary("==", length, lx))
+            b.assume(A.Binary("==", length, ly))
+            kind = containers.item_kind(x)
+            items = Items(
+                kind if kind == containers.item_kind(y) else "unknown",
+                A.Binary("or", containers.each_of(x), containers.each_of(y)),
+                A.Binary("==", containers.SELF, length),
+            )
+            unit = x.unit if x.unit == y.unit else None
+            a.env[name] = Value("list", unit=unit, items=items)
+            b.env[name] = Value("list", unit=unit, items=items)
+
+    # The Joiner hooks (see state.join).
+    def merged(self, x: Value, y: Value) -> Value:
         kinds = {x.kind, y.kind}
         kind = (
             x.kind
@@ -963,8 +1264,8 @@ class Interpreter(CallEvaluator):
             unit = y.unit if x.literal else x.unit
         if x.kind in SEQUENCES and y.kind in SEQUENCES:
             return containers.joined(x, y)
-        if kind in CONTAINERS:  # different tables on the two paths
-            return Value("unknown")
+        if kind in CONTAINERS:  # different tables on the two paths: one of them
+            kind = "unknown"
         if (
             x.kind == "msg"
             or y.kind == "msg"
@@ -978,29 +1279,171 @@ class Interpreter(CallEvaluator):
             merged = replace(merged, scale=source.scale, rad_free=source.rad_free)
         return replace(merged, literal=x.literal and y.literal)
 
+    def selector(self) -> A.Expr:
+        return self.ctx.fresh("bool", "the path taken").known_term
+
+    def complete(self, state: State, ref: int, name: str) -> Value:
+        return heap.read_raw(self.ctx, state, ref, name, f"`{name}`")
+
+    def ties(self, merged: Value, side: Value, state: State) -> list[A.Expr]:
+        found: list[A.Expr] = []
+        is_none = self._none_test(merged)
+        side_none = self._none_test(side)
+        if is_none is not None and side_none is not None:
+            found.append(A.Binary("==", is_none, side_none))
+        truth = self.truthy(merged, self.site)
+        side_truth = self._truth_of(side, state)
+        if side_truth is not None:
+            found.append(A.Binary("==", truth, side_truth))
+        return found
+
+    def _none_test(self, value: Value) -> A.Expr | None:
+        if value.kind == "none":
+            return A.TRUE
+        if isinstance(value.term, A.Sym) and value.kind == "unknown":
+            key = ("is None", value.term.ident)
+            return self.ctx.derived(key, "bool", "`is None`").term
+        if value.kind in ("int", "float", "bool", "str", "instance", *CONTAINERS):
+            return A.Bool(False)
+        return None
+
+    def _truth_of(self, value: Value, state: State) -> A.Expr | None:
+        if value.kind == "none":
+            return A.Bool(False)
+        if value.term is not None and value.kind in ("int", "float", "bool", "str"):
+            return self.truthy(value, self.site, state)
+        if isinstance(value.term, A.Sym) and value.kind in MUTABLE:
+            return self.truthy(value, self.site, state)
+        if value.kind == "tuple" and value.elements is not None:
+            return A.Bool(len(value.elements) > 0)
+        return None
+
+    # -- loops ---------------------------------------------------------------
     def visit_While(self, node: ast.While, state: State) -> State:
-        self.havoc(state, [node])
-        body_state = state.fork()
+        entry = state
+        loop = entry.fork()
+        stored = self.havoc(loop, [node], loop=True)
+        body_state = loop.fork()
         body_state.assume(self.condition(node.test, body_state))
         end = self.exec_block(node.body, body_state)
-        self.havoc(state, [node], after=end)
-        return self.exec_block(node.orelse, state)
+        self._loop_units(loop, end, [node])
+        breaks = _breaks(node.body)
+        # Normal exits: the condition is false, after some iterations or none.
+        # (With a break, `normal` stands for the exits by break too.)
+        normal = loop.fork() if breaks and node.orelse else loop
+        if isinstance(node.test, ast.Constant):
+            normal.reachable = not node.test.value and normal.reachable
+        elif not breaks:
+            cond = self.condition(node.test, normal)
+            if _truth(cond) is True:
+                normal.reachable = False
+            normal.assume(A.Unary("not", cond))
+        if self._binds_new_names(stored, entry):
+            zero = entry.fork()
+            cond = self.condition(node.test, zero)
+            zero.reachable = _truth(cond) is not True  # `done = False; while not done`
+            zero.assume(A.Unary("not", cond))
+            normal = self._join(zero, normal)
+        return self._after_loop(node, normal, loop, breaks)
 
     def visit_For(self, node: ast.For | ast.AsyncFor, state: State) -> State:
-        iterable = self.eval(node.iter, state)
-        self.havoc(state, [node])
-        body_state = state.fork()
+        empty, nonempty, iterable = self._empty_when(node.iter, state)
+        entry = state
+        loop = entry.fork()
+        stored = self.havoc(loop, [node], loop=True)
+        body_state = loop.fork()
+        body_state.assume(nonempty)  # an iteration: the iterable had an element
+        if empty is None:
+            # `if ... in kwargs.values(): hints = ...`, then a loop over the
+            # `...` of kwargs: that it runs may imply the earlier test, for all
+            # the analysis can tell
+            for name, bound in list(body_state.env.items()):
+                if isinstance(bound, MaybeUnbound) and bound.when is not None:
+                    body_state.env[name] = MAYBE
         element = (
             self.element(iterable, node.target, body_state)
-            if iterable.kind in SEQUENCES and isinstance(node, ast.For)
+            if iterable is not None
+            and iterable.kind in SEQUENCES
+            and isinstance(node, ast.For)
             else self.unknown(node.target)
         )
         self.bind(node.target, element, body_state)
         end = self.exec_block(node.body, body_state)
-        self.havoc(state, [node], after=end)
-        return self.exec_block(node.orelse, state)
+        self._loop_units(loop, end, [node])
+        breaks = _breaks(node.body)
+        normal = loop.fork() if breaks and node.orelse else loop
+        targets = {t.id for t in walk(node.target) if isinstance(t, ast.Name)}
+        if (
+            empty is not None
+            and empty != A.Bool(False)
+            and self._binds_new_names(stored - targets, entry)
+        ):
+            zero = entry.fork()
+            zero.assume(empty)
+            for target in targets:
+                if target not in zero.env:
+                    zero.env[target] = MAYBE  # a loop variable: never an error
+            normal = self._join(zero, normal)
+        return self._after_loop(node, normal, loop, breaks)
+
+    def _empty_when(
+        self, iterable: ast.expr, state: State
+    ) -> tuple[A.Expr | None, A.Expr | None, Value | None]:
+        """Evaluate a `for` loop's iterable: when is it empty (a path with no
+        iteration), what holds in an iteration, and its value (None for `range`)?
+        The first is known for `range()` of numbers and for literals only: that a
+        list that arrived may be empty is not taken for a path."""
+        call = iterable
+        if (
+            isinstance(call, ast.Call)
+            and isinstance(call.func, ast.Name)
+            and 1 <= len(call.args) <= 2
+            and not call.keywords
+            and not any(isinstance(a, ast.Starred) for a in call.args)
+            and self.eval(call.func, state) == Value("builtin", name="range")
+        ):
+            bounds = [self.eval(a, state) for a in call.args]
+            if len(bounds) == 1:
+                bounds.insert(0, Value("int", A.Num(Fraction(0), True)))
+            low, high = bounds
+            if {low.kind, high.kind} <= {"int", "unknown"} and low.term and high.term:
+                empty = A.Binary("<=", high.term, low.term)
+                return empty, A.Unary("not", empty), None
+            return None, None, None
+        value = self.eval(iterable, state)
+        if isinstance(iterable, (ast.List, ast.Tuple, ast.Set, ast.Dict)):
+            nonempty = _surely_nonempty(iterable)
+            return A.Bool(not nonempty), A.Bool(nonempty), value
+        if isinstance(value.term, A.Sym) and value.kind in MUTABLE:
+            # `if items: first = ...` then `for x in items: use(first)`
+            return None, self.truthy(value, iterable, state), value
+        return None, None, value
 
     visit_AsyncFor = visit_For
+
+    def _after_loop(
+        self,
+        node: ast.For | ast.AsyncFor | ast.While,
+        normal: State,
+        loop: State,
+        breaks: bool,
+    ) -> State:
+        """`else` runs on normal exits; a `break` leaves with what the body may have
+        changed (the havocked loop state)."""
+        if not node.orelse:
+            return normal  # it already stands for the exits by `break`
+        result = self.exec_block(node.orelse, normal)
+        return self._join(result, loop) if breaks else result
+
+    def _binds_new_names(self, stored: set[str], entry: State) -> bool:
+        """Is one of these names a local unbound on entry? Only then can skipping
+        the statements that bind them (no iteration, an early exception) leave a
+        name unbound."""
+        return any(
+            name in self.scope.local_names
+            and not isinstance(entry.env.get(name), Value)
+            for name in stored
+        )
 
     def visit_With(self, node: ast.With | ast.AsyncWith, state: State) -> State:
         for item in node.items:
@@ -1012,25 +1455,151 @@ class Interpreter(CallEvaluator):
     visit_AsyncWith = visit_With
 
     def visit_Try(self, node: ast.Try, state: State) -> State:
+        body = node.body
+        safe = 0  # `try: final = None` binds before anything can raise
+        while safe < len(body) and _cannot_raise(body[safe]):
+            safe += 1
+        if safe and node.handlers:
+            state = self.exec_block(body[:safe], state)
+            body = body[safe:]
         entry = state.fork()
-        self.havoc(entry, node.body)
-        result = self.exec_block(node.orelse, self.exec_block(node.body, state))
+        raised = entry.fork()  # an exception somewhere in the body
+        stored = self.havoc(raised, body)
+        if node.handlers and self._binds_new_names(stored, entry):
+            raised = self._join(entry, raised)  # ... or before its first binding
+        guards = any(_catches_name_error(h.type) for h in node.handlers)
+        self.guarded += guards
+        state = self.exec_block(body, state)
+        self.guarded -= guards
+        result = self.exec_block(node.orelse, state)
         for handler in node.handlers:
-            handler_state = entry.fork()
-            if handler.type is not None:
+            handler_state = raised.fork()
+            since = handler_state.exits
+            if handler.type is not None:  # evaluated only if no earlier one matched
+                self.guarded += 1
                 self.eval(handler.type, handler_state)
+                self.guarded -= 1
             if handler.name:
                 handler_state.env[handler.name] = self.unknown(handler)
-            result = self._join(result, self.exec_block(handler.body, handler_state))
+            handled = self.exec_block(handler.body, handler_state)
+            result = self._join(result, handled, since)
         if node.finalbody:
             if not result.reachable:
-                self.havoc(entry, node.handlers)  # type: ignore[arg-type]
-                self.exec_block(node.finalbody, entry)
+                self.havoc(raised, node.handlers)  # type: ignore[arg-type]
+                self.exec_block(node.finalbody, raised)
                 return result
             result = self.exec_block(node.finalbody, result)
         return result
 
     visit_TryStar = visit_Try
+
+
+# Calls whose result is dropped and which return: logging, output, containers,
+# ROS publishing and sleeping (a call may still raise; these are not written to).
+RETURNS = frozenset(
+    {
+        "print",
+        "log",
+        "loginfo",
+        "logwarn",
+        "logerr",
+        "logdebug",
+        "logfatal",
+        "loginfo_throttle",
+        "logwarn_throttle",
+        "logerr_throttle",
+        "write",
+        "flush",
+        "append",
+        "extend",
+        "insert",
+        "add",
+        "update",
+        "remove",
+        "discard",
+        "clear",
+        "pop",
+        "sort",
+        "reverse",
+        "setdefault",
+        "publish",
+        "sleep",
+        "spin_once",
+        "spin_until_future_complete",
+        "destroy_node",
+        "shutdown",
+        "close",
+        "join",
+        "start",
+        "put",
+        "send",
+        "set",
+        "wait",
+        "acquire",
+        "release",
+    }
+)
+
+
+# Logging methods: they return when called on a logger, not on any object
+# (`parser.error(msg)` exits).
+LOGGING = frozenset(
+    {"debug", "info", "warn", "warning", "error", "exception", "critical", "fatal"}
+)
+
+
+def _may_raise(node: ast.AST) -> bool:
+    """A function with a `raise` or an `assert` in its own body."""
+    todo: list[ast.AST] = list(getattr(node, "body", []))
+    while todo:
+        child = todo.pop()
+        if isinstance(child, (ast.Raise, ast.Assert)):
+            return True
+        if not isinstance(
+            child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef)
+        ):
+            todo.extend(ast.iter_child_nodes(child))
+    return False
+
+
+def _is_case(test: ast.expr) -> bool:
+    """`m == A`, `m is A`, `m in (A, B)`, `isinstance(m, A)`, `is_array(m)`: one
+    case of a case analysis, which may cover every value the subject can have."""
+    if isinstance(test, ast.Compare):
+        return len(test.ops) == 1 and isinstance(test.ops[0], (ast.Eq, ast.Is, ast.In))
+    if isinstance(test, ast.BoolOp) and isinstance(test.op, ast.Or):
+        return all(_is_case(v) for v in test.values)
+    # a predicate call: `isinstance(x, A)`, `is_array(v)`, `self.check_event(E)`
+    return isinstance(test, ast.Call)
+
+
+def _cannot_raise(stmt: ast.stmt) -> bool:
+    """`x = None`, `n = 0`, `a = b = ""`, `pass`: a statement that never raises."""
+    if isinstance(stmt, ast.Pass):
+        return True
+    if not isinstance(stmt, ast.Assign) or not all(
+        isinstance(t, ast.Name) for t in stmt.targets
+    ):
+        return False
+    value = stmt.value
+    if isinstance(value, ast.UnaryOp) and isinstance(value.op, ast.USub):
+        value = value.operand
+    if isinstance(value, ast.Dict):
+        return not value.keys
+    if isinstance(value, (ast.List, ast.Tuple)):
+        return not value.elts
+    return isinstance(value, ast.Constant)
+
+
+def _excuse(side: State, other: State) -> None:
+    """Names bound on `other` but not on `side`, which may have ended: unbound
+    there only if it went on, which the analysis cannot tell."""
+    for name, bound in other.env.items():
+        if "." in name or not isinstance(bound, Value):
+            continue
+        mine = side.env.get(name)
+        if not isinstance(mine, Value) or mine.uninit is not None:
+            side.env[name] = MAYBE
 
 
 def _accumulated(nodes: list[ast.stmt]) -> set[str]:
@@ -1051,3 +1620,181 @@ def _accumulated(nodes: list[ast.stmt]) -> set[str]:
     if not summed:
         return summed
     return summed - {n.id for n in stores if id(n) not in targets}
+
+
+NAME_ERRORS = frozenset(
+    {"NameError", "UnboundLocalError", "Exception", "BaseException"}
+)
+
+
+def _catches_name_error(kind: ast.expr | None) -> bool:
+    if kind is None:
+        return True
+    if isinstance(kind, ast.Tuple):
+        return any(_catches_name_error(e) for e in kind.elts)
+    return isinstance(kind, ast.Name) and kind.id in NAME_ERRORS
+
+
+NO_RETURN_NAMES = frozenset(
+    {q.rsplit(".", 1)[-1] for q in NO_RETURN} | {"exit", "quit", "assert_never"}
+)
+
+
+def _no_return(qualified: str | None) -> bool:
+    return qualified is not None and (
+        qualified in NO_RETURN or qualified.endswith(".assert_never")
+    )
+
+
+def _first_parameter(function: Function) -> str | None:
+    args = function.node.args
+    every = [*args.posonlyargs, *args.args]
+    return every[0].arg if every else None
+
+
+def _truth(cond: A.Expr) -> bool | None:
+    """The value of a condition made of constants (`True`, `1 != 0`, `not False`),
+    or None."""
+    if isinstance(cond, A.Bool):
+        return cond.value
+    if isinstance(cond, A.Unary) and cond.op == "not":
+        inner = _truth(cond.operand)
+        return None if inner is None else not inner
+    if isinstance(cond, A.Binary):
+        if cond.op in ("and", "or"):
+            left, right = _truth(cond.left), _truth(cond.right)
+            decisive = cond.op == "or"  # True decides an `or`, False an `and`
+            if decisive in (left, right):
+                return decisive
+            return None if left is None or right is None else not decisive
+        if isinstance(cond.left, A.Num) and isinstance(cond.right, A.Num):
+            a, b = cond.left.value, cond.right.value
+            return {
+                "==": a == b,
+                "!=": a != b,
+                "<": a < b,
+                "<=": a <= b,
+                ">": a > b,
+                ">=": a >= b,
+            }.get(cond.op)
+    return None
+
+
+# Constant kinds a store may have and keep a variable's kind.
+_KEEPS = {
+    "bool": {"bool"},
+    "int": {"int"},
+    "float": {"int", "float"},
+    "str": {"str"},
+}
+
+
+def _constant_stores(
+    node: ast.Assign | ast.AugAssign, found: dict[str, set[str]]
+) -> None:
+    """The kind of constant each plain name target gets (`?` when not a constant)."""
+    value = node.value
+    kind = "?"
+    if isinstance(value, ast.Constant) and not isinstance(value.value, complex):
+        kind = {bool: "bool", int: "int", float: "float", str: "str"}.get(
+            type(value.value), "?"
+        )
+    if isinstance(node, ast.AugAssign) and kind == "str":
+        kind = "?"
+    targets = node.targets if isinstance(node, ast.Assign) else [node.target]
+    for target in targets:
+        if isinstance(target, ast.Name):
+            found.setdefault(target.id, set()).add(kind)
+        else:
+            for inner in walk(target):
+                if isinstance(inner, ast.Name):
+                    found.setdefault(inner.id, set()).add("?")
+
+
+BINDERS = (
+    ast.Import,
+    ast.ImportFrom,
+    ast.FunctionDef,
+    ast.AsyncFunctionDef,
+    ast.ClassDef,
+    ast.ExceptHandler,
+    ast.MatchAs,
+    ast.MatchStar,
+    ast.MatchMapping,
+)
+
+
+BINDER_KINDS = frozenset(BINDERS)
+
+
+def _binds(node: ast.AST) -> list[str]:
+    """Names a node binds other than by an `ast.Name` target: imports, definitions,
+    exception and pattern names."""
+    if not isinstance(node, BINDERS):
+        return []
+    if isinstance(node, (ast.Import, ast.ImportFrom)):
+        return [a.asname or a.name.split(".")[0] for a in node.names if a.name != "*"]
+    name = node.rest if isinstance(node, ast.MatchMapping) else node.name
+    return [name] if name else []
+
+
+def _breaks(body: list[ast.stmt]) -> bool:
+    """Does a `break` in `body` leave this loop (not a nested one)?"""
+    todo: list[ast.AST] = list(body)
+    while todo:
+        node = todo.pop()
+        kind = type(node)
+        if kind is ast.Break:
+            return True
+        if kind in LOOPS:
+            todo.extend(node.orelse)  # type: ignore[attr-defined]
+        elif kind in COMPOUND:
+            todo.extend(children(node))
+    return False
+
+
+LOOPS = frozenset({ast.For, ast.AsyncFor, ast.While})
+# Statements with statements inside (a `break` cannot hide in an expression).
+COMPOUND = frozenset(
+    {ast.If, ast.With, ast.AsyncWith, ast.Try, ast.TryStar, ast.Match, ast.match_case}
+    | {ast.ExceptHandler}
+)
+
+
+def _surely_nonempty(node: ast.expr) -> bool:
+    """An iterable that has an element on every path: a non-empty literal, or
+    `range`, `enumerate`, `reversed`... of one."""
+    if isinstance(node, (ast.List, ast.Tuple, ast.Set)):
+        return any(not isinstance(e, ast.Starred) for e in node.elts)
+    if isinstance(node, ast.Dict):
+        return any(k is not None for k in node.keys)
+    if isinstance(node, ast.Constant):
+        return isinstance(node.value, (str, bytes)) and len(node.value) > 0
+    if isinstance(node, ast.Call) and isinstance(node.func, ast.Name):
+        name, args = node.func.id, node.args
+        if node.keywords or any(isinstance(a, ast.Starred) for a in args):
+            return False
+        if name == "range" and 1 <= len(args) <= 2:
+            bounds = [_int_constant(a) for a in args]
+            if any(b is None for b in bounds):
+                return False
+            low, high = (0, bounds[0]) if len(bounds) == 1 else bounds
+            return low is not None and high is not None and low < high
+        if name in ("enumerate", "reversed", "sorted", "list", "tuple") and args:
+            return _surely_nonempty(args[0])
+        if name == "zip" and args:
+            return all(_surely_nonempty(a) for a in args)
+    return False
+
+
+def _int_constant(node: ast.expr) -> int | None:
+    if isinstance(node, ast.Constant) and type(node.value) is int:
+        return node.value
+    if (
+        isinstance(node, ast.UnaryOp)
+        and isinstance(node.op, ast.USub)
+        and isinstance(node.operand, ast.Constant)
+        and type(node.operand.value) is int
+    ):
+        return -node.operand.value
+    return None

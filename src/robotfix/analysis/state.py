@@ -8,19 +8,42 @@ whose common prefix is shared, so a join only has to disjoin what the branches a
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
+from typing import Protocol
 
-from robotfix.analysis.values import MsgObj, Value
+from robotfix.analysis.values import Defs, MaybeDefault, MsgObj, Value
 from robotfix.annotations import ast as A
 
 
 @dataclass(frozen=True)
 class MaybeUnbound:
-    """A name bound on some paths only: reading it is unknown, not an error."""
+    """A name bound on some paths only. `when` is the condition, over the selectors
+    of the joins it went through, under which it is unbound; None when that is not
+    known (a `del`, a loop variable): reading it is then unknown, never an error."""
+
+    when: A.Expr | None = None
 
 
 MAYBE = MaybeUnbound()
 Binding = Value | MaybeUnbound
+
+
+@dataclass
+class Shared:
+    """What the states of one function share (symbols are unique to it)."""
+
+    # What the values merged at joins are, by symbol: the facts (keyed, to be added
+    # once) that tie each to what each path held. They join a path's facts only
+    # where the value is read (`State.use`), so that a merge nobody reads costs the
+    # solver nothing.
+    defs: dict[int, Defs] = field(default_factory=dict)
+    extras: bool = False  # some message carries a variable's refinement
+    # Unknown objects whose attributes, truth or length were read: only their
+    # changes need a new version.
+    watched: set[int] = field(default_factory=set)
+    # Objects the code itself changed (`xs.append(v)`, `d[k] = v`), not only
+    # handed to code the analysis cannot see.
+    firm: set[object] = field(default_factory=set)
 
 
 @dataclass
@@ -29,6 +52,15 @@ class State:
     heap: dict[int, MsgObj] = field(default_factory=dict)
     facts: list[A.Expr] = field(default_factory=list)
     reachable: bool = True
+    # How often an unknown object (by its symbol) may have been changed on this
+    # path: what was read of it at one version is the same value.
+    versions: dict[int, int] | None = None
+    defined: set[int] | None = None  # keys of the Shared.defs in `facts`
+    shared: Shared = field(default_factory=Shared)
+    # Points on this path after which it may not go on, for all the analysis can
+    # tell: a call it cannot see (`self.fail(...)`, `parser.exit(...)`), the
+    # implicit `else` of an `elif` chain its author may have made exhaustive.
+    exits: int = 0
 
     def fork(self) -> State:
         return State(
@@ -36,46 +68,199 @@ class State:
             {k: v.copy() for k, v in self.heap.items()},
             list(self.facts),
             self.reachable,
+            dict(self.versions) if self.versions else None,
+            set(self.defined) if self.defined else None,
+            self.shared,
+            self.exits,
         )
+
+    def use(self, value: Value) -> Value:
+        """A value is read: if it was merged at a join, what it is holds from here."""
+        term = value.term
+        defs = self.shared.defs
+        if type(term) is A.Sym and term.ident in defs:
+            if self.defined is None:
+                self.defined = set()
+            for key, fact in defs[term.ident]:
+                if key not in self.defined:
+                    self.defined.add(key)
+                    self.facts.append(fact)
+        return value
+
+    def defs_of(self, value: Value) -> Defs:
+        term = value.term
+        if isinstance(term, A.Sym):
+            return self.shared.defs.get(term.ident, ())
+        return ()
+
+    def pending(self, defs: Defs) -> list[A.Expr]:
+        """The facts of `defs` this path does not hold yet."""
+        defined = self.defined or set()
+        return [fact for key, fact in defs if key not in defined]
+
+    def changed(self, value: Value, firm: bool = False) -> None:
+        """Code may have changed this object: its attributes are read anew.
+        (`firm`: this code surely changed it.)"""
+        term = value.term
+        if firm and type(term) is A.Sym:
+            self.shared.firm.add(term.ident)
+        if type(term) is A.Sym and term.ident in self.shared.watched:
+            if self.versions is None:
+                self.versions = {}
+            self.versions[term.ident] = self.versions.get(term.ident, 0) + 1
+
+    def version(self, term: A.Sym) -> int:
+        """The version of an unknown object, which from now on is watched."""
+        self.shared.watched.add(term.ident)
+        return self.versions.get(term.ident, 0) if self.versions else 0
 
     def assume(self, fact: A.Expr | None) -> None:
         if fact is not None and fact != A.TRUE:
             self.facts.append(fact)
 
 
-def join(a: State, b: State, fresh: Callable[[Value, Value], Value]) -> State:
-    """Merge two paths; `fresh(x, y)` makes the value for a name they disagree on.
+class Joiner(Protocol):
+    def merged(self, x: Value, y: Value) -> Value:
+        """A fresh value for two that differ (tied to each by a fact)."""
 
-    The merged value `s` is tied to each side by a fact (`s == x` on the first path,
-    `s == y` on the second) inside the disjunction of what the paths assumed.
+    def selector(self) -> A.Expr:
+        """A fresh boolean: true on the first path of a join, false on the second."""
+
+    def ties(self, merged: Value, side: Value, state: State) -> list[A.Expr]:
+        """Facts that hold of a merged value of unknown kind on the path where it
+        is `side`: whether it is None, whether it is true (`x = None` on one
+        path, an object on the other, and `if x:` after)."""
+
+    def complete(self, state: State, ref: int, name: str) -> Value:
+        """What `state` holds in field `name` of message `ref`, which it never
+        touched (its default, an unknown, or the sub-message of the same id)."""
+
+
+def join(a: State, b: State, joiner: Joiner) -> State:
+    """Merge two paths.
+
+    The facts become the common prefix and the disjunction `A or B` of what each
+    path added. A merged value `s` gets a selector `p` for the join, defined by
+    `(p and A) or (not p and B)`, and `(p and s == x) or (not p and s == y)`: both
+    are added to a path's facts only where `s` is read (`State.use`). The same
+    selector says when a name is unbound or a field unset ("when not p"), for a
+    read to ask under its own facts.
     """
     if not a.reachable:
         return b
     if not b.reachable:
         return a
-    extra_a: list[A.Expr] = []
-    extra_b: list[A.Expr] = []
+    common = _common(a.facts, b.facts)
+    rest_a, rest_b = a.facts[common:], b.facts[common:]
+    path_a, path_b = A.conjoin(rest_a), A.conjoin(rest_b)
+    chosen: list[tuple[A.Expr, Defs]] = []
+
+    def selector() -> tuple[A.Expr, Defs]:
+        """The join's selector and the fact that defines it."""
+        if not chosen:
+            p = joiner.selector()
+            assert isinstance(p, A.Sym)
+            defines = A.Binary(
+                "or",
+                A.Binary("and", p, path_a),
+                A.Binary("and", A.Unary("not", p), path_b),
+            )
+            chosen.append((p, ((p.ident, defines),)))
+        return chosen[0]
 
     def merge(x: Value, y: Value) -> Value:
-        if x == y:
+        if x is y or x == y:
             return x
-        value = fresh(x, y)
-        if value.term is not None and x.term is not None and y.term is not None:
-            extra_a.append(A.Binary("==", value.term, x.term))
-            extra_b.append(A.Binary("==", value.term, y.term))
+        value = joiner.merged(x, y)
+        if isinstance(value.term, A.Sym):
+            p, defines = selector()
+            tie = _tie(value, x, y, a, b, p, joiner)
+            if tie is not None:
+                a.shared.defs[value.term.ident] = (*defines, (value.term.ident, tie))
         return value
+
+    def unset(ux: MaybeDefault | None, uy: MaybeDefault | None) -> MaybeDefault | None:
+        """A field default on the paths where `ux` (`uy`) holds, if any."""
+        if ux == uy:
+            return ux
+        known = ux or uy
+        assert known is not None
+        when = _either(
+            selector(),
+            None if ux is None else ux.when,
+            None if uy is None else uy.when,
+        )
+        return MaybeDefault(when, known.default, known.owner)
 
     env: dict[str, Binding] = {}
     for name in sorted(a.env.keys() | b.env.keys()):
-        x, y = a.env.get(name, MAYBE), b.env.get(name, MAYBE)
-        both = isinstance(x, Value) and isinstance(y, Value)
-        env[name] = merge(x, y) if both else (x if x == y else MAYBE)  # type: ignore[arg-type]
+        x, y = a.env.get(name), b.env.get(name)
+        if x is y:
+            env[name] = x  # type: ignore[assignment]
+        elif isinstance(x, Value) and isinstance(y, Value):
+            env[name] = merge(x, y)
+        elif x == y:
+            env[name] = x  # type: ignore[assignment]
+        elif "." in name:  # a cached `self.x`: read again
+            env[name] = MAYBE
+        else:
+            (known_a, wa), (known_b, wb) = _unbound(x), _unbound(y)
+            known = known_a and known_b
+            env[name] = MaybeUnbound(_either(selector(), wa, wb) if known else None)
+    heap = _join_heaps(a, b, joiner, merge, unset)
+    facts = a.facts[:common]
+    if rest_a and rest_b:
+        facts.append(A.Binary("or", path_a, path_b))
+    versions = dict(a.versions) if a.versions else None
+    for term, version in (b.versions or {}).items():
+        versions = versions or {}
+        if versions.get(term, 0) != version:
+            versions[term] = max(versions.get(term, 0), version) + 1
+    defined = a.defined & b.defined if a.defined and b.defined else None
+    exits = max(a.exits, b.exits)
+    return State(env, heap, facts, True, versions, defined, a.shared, exits)
+
+
+def _join_heaps(
+    a: State,
+    b: State,
+    joiner: Joiner,
+    merge: Callable[[Value, Value], Value],
+    unset: Callable[[MaybeDefault | None, MaybeDefault | None], MaybeDefault | None],
+) -> dict[int, MsgObj]:
+    if not a.heap and not b.heap:
+        return {}
+    # A sub-message one path touched and the other did not: the other reads it
+    # now (it gets the same id), so that its fields join one by one.
+    done: set[int] = set()
+    while True:
+        todo = []
+        for ref, x_obj in a.heap.items():
+            y_obj = b.heap.get(ref)
+            if (
+                y_obj is not None
+                and x_obj.fields.keys() != y_obj.fields.keys()
+                and ref not in done
+            ):
+                todo.append(ref)
+        if not todo:
+            break
+        todo.sort()
+        for ref in todo:
+            done.add(ref)
+            x_obj, y_obj = a.heap[ref], b.heap[ref]
+            for fname in sorted(x_obj.fields.keys() - y_obj.fields.keys()):
+                if x_obj.fields[fname].ref is not None:
+                    joiner.complete(b, ref, fname)
+            for fname in sorted(y_obj.fields.keys() - x_obj.fields.keys()):
+                if y_obj.fields[fname].ref is not None:
+                    joiner.complete(a, ref, fname)
     heap: dict[int, MsgObj] = {}
     for ref in sorted(a.heap.keys() | b.heap.keys()):
-        x_obj, y_obj = a.heap.get(ref), b.heap.get(ref)
-        if x_obj is None or y_obj is None:
-            heap[ref] = (x_obj or y_obj).copy()  # type: ignore[union-attr]
+        if ref not in a.heap or ref not in b.heap:
+            heap[ref] = (a.heap.get(ref) or b.heap[ref]).copy()
             continue
+        x_obj, y_obj = a.heap[ref], b.heap[ref]
         origin = x_obj.origin if x_obj.origin == y_obj.origin else "unknown"
         merged = MsgObj(
             x_obj.type,
@@ -85,26 +270,97 @@ def join(a: State, b: State, fresh: Callable[[Value, Value], Value]) -> State:
             # settled on one path: its facts hold there only, and stay there
             pending=x_obj.pending and y_obj.pending,
             label=x_obj.label,
+            extra=x_obj.extra
+            if not y_obj.extra or y_obj.extra == x_obj.extra
+            else x_obj.extra + tuple(e for e in y_obj.extra if e not in x_obj.extra),
         )
         for fname in sorted(x_obj.fields.keys() | y_obj.fields.keys()):
             fx, fy = x_obj.fields.get(fname), y_obj.fields.get(fname)
-            if fx is not None and fy is not None:
+            if fx is None:  # never read on that path, so nothing ties the two
+                fx = joiner.complete(a, ref, fname)
+            if fy is None:
+                fy = joiner.complete(b, ref, fname)
+            ux, uy = _unset(x_obj, fname, fx), _unset(y_obj, fname, fy)
+            if ux is None and uy is None:
                 merged.fields[fname] = merge(fx, fy)
-            else:  # set on one path only: neither its value nor its default is sure
-                only = fx or fy
-                assert only is not None
-                merged.fields[fname] = fresh(only, only)
-                merged.reported.add(fname)
+                continue
+            if fx.default_of is not None and fy.default_of is not None:
+                continue  # its default on both paths: unset, as it was
+            found = unset(ux, uy)
+            if found is not None:
+                merged.unset = merged.unset or {}
+                merged.unset[fname] = found
+            merged.fields[fname] = replace(merge(fx, fy), default_of=None)
         heap[ref] = merged
-    facts = _join_facts(a.facts + extra_a, b.facts + extra_b)
-    return State(env, heap, facts, True)
+    return heap
 
 
-def _join_facts(a: list[A.Expr], b: list[A.Expr]) -> list[A.Expr]:
+def _tie(
+    merged: Value,
+    x: Value,
+    y: Value,
+    a: State,
+    b: State,
+    p: A.Expr,
+    joiner: Joiner,
+) -> A.Expr | None:
+    """`merged` is x where p holds, y where it does not (and what x and y are, if
+    they were merged earlier and their paths never read them)."""
+    sides: list[list[A.Expr]] = []
+    for side, state in ((x, a), (y, b)):
+        parts: list[A.Expr] = []
+        if merged.term is not None and side.term is not None:
+            parts.append(A.Binary("==", merged.term, side.term))
+        if merged.kind == "unknown":
+            parts += joiner.ties(merged, side, state)
+        parts += state.pending(state.defs_of(side))
+        sides.append(parts)
+    if not sides[0] and not sides[1]:
+        return None
+    return A.Binary(
+        "or",
+        A.Binary("and", p, A.conjoin(sides[0])),
+        A.Binary("and", A.Unary("not", p), A.conjoin(sides[1])),
+    )
+
+
+def _unset(obj: MsgObj, name: str, value: Value) -> MaybeDefault | None:
+    """When field `name` of `obj` (holding `value`) still has its ROS default."""
+    if value.default_of is not None and value.term is not None:
+        return MaybeDefault(A.TRUE, value.term, value.default_of)
+    return obj.unset.get(name) if obj.unset else None
+
+
+def _unbound(binding: Binding | None) -> tuple[bool, A.Expr | None]:
+    """Whether it is known when a binding is unbound, and when: never (None), always
+    (TRUE, an absent name), or under a condition."""
+    if binding is None:
+        return True, A.TRUE
+    if isinstance(binding, MaybeUnbound):
+        return binding.when is not None, binding.when
+    return True, None
+
+
+def _either(
+    chosen: tuple[A.Expr, Defs], on_a: A.Expr | None, on_b: A.Expr | None
+) -> A.Expr:
+    """`on_a` on the path where the selector holds, `on_b` on the other (None:
+    false), with the selector's definition: a condition a read can ask alone."""
+    p, defines = chosen
+    parts = []
+    if on_a is not None:
+        parts.append(p if on_a == A.TRUE else A.Binary("and", p, on_a))
+    if on_b is not None:
+        not_p = A.Unary("not", p)
+        parts.append(not_p if on_b == A.TRUE else A.Binary("and", not_p, on_b))
+    result = parts[0]
+    for part in parts[1:]:
+        result = A.Binary("or", result, part)
+    return A.conjoin([fact for _, fact in defines] + [result])
+
+
+def _common(a: list[A.Expr], b: list[A.Expr]) -> int:
     common = 0
     while common < min(len(a), len(b)) and a[common] is b[common]:
         common += 1
-    rest_a, rest_b = a[common:], b[common:]
-    if not rest_a or not rest_b:
-        return a[:common]
-    return [*a[:common], A.Binary("or", A.conjoin(rest_a), A.conjoin(rest_b))]
+    return common

@@ -15,6 +15,8 @@ from robotfix.messages import Declared
 
 NUMERIC = frozenset({"int", "float", "bool"})
 CONTAINERS = frozenset({"tuple", "list", "dict"})
+# Kinds of objects code may change in place (`xs.append(v)`, `d[k] = v`).
+MUTABLE = frozenset({"unknown", "list", "dict"})
 # Values whose elements a refinement speaks of: lists (also message array fields),
 # tuples, and generators (`min(r for r in ranges)`).
 SEQUENCES = frozenset({"list", "tuple", "generator"})
@@ -61,6 +63,19 @@ class Uninit:
 
     name: str
     declared: bool  # declared with an annotation but never assigned, vs never bound
+
+
+Defs = tuple[tuple[int, A.Expr], ...]
+
+
+@dataclass(frozen=True)
+class MaybeDefault:
+    """A message field set on some paths only: on the paths where `when` holds (a
+    condition over join selectors) it still has its ROS default."""
+
+    when: A.Expr
+    default: A.Expr
+    owner: tuple[int, str]  # (message ref, field name)
 
 
 @dataclass(frozen=True)
@@ -133,6 +148,19 @@ def sort_of(kind: str) -> str:
     return {"int": "int", "bool": "bool", "str": "str"}.get(kind, "real")
 
 
+@dataclass(frozen=True)
+class ObjInvariant:
+    """A refinement on one message value, from an annotation such as
+    `Annotated[Twist, "abs(linear.x) <= 0.22"]`: paths are relative to the value."""
+
+    predicate: A.Expr
+    paths: frozenset[str]
+    text: str
+    what: str  # "annotation of `cmd`"
+    path: str
+    line: int
+
+
 @dataclass
 class MsgObj:
     """A message instance. `fields` holds what was set (or, if received, read)."""
@@ -146,6 +174,9 @@ class MsgObj:
     # first reads or writes one of its fields (`heap.settle`)
     pending: bool = False
     label: str = ""  # how counterexamples name it: `msg`, `msg.linear`
+    extra: tuple[ObjInvariant, ...] = ()  # refinements of the variables it reached
+    # Fields set on some paths only, with when they still hold their default.
+    unset: dict[str, MaybeDefault] | None = None
 
     def copy(self) -> MsgObj:
         return MsgObj(
@@ -156,4 +187,10 @@ class MsgObj:
             set(self.reported),
             self.pending,
             self.label,
+            self.extra,
+            dict(self.unset) if self.unset else None,
         )
+
+    def set_on_all_paths(self, name: str) -> None:
+        if self.unset:
+            self.unset.pop(name, None)

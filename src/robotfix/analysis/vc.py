@@ -17,6 +17,9 @@ class VC:
     facts: tuple[A.Expr, ...]
     goal: A.Expr
     probes: tuple[A.Expr, ...] = ()
+    # Only whether the goal is proved matters (a path's feasibility), not how it
+    # fails: then no counterexample is needed.
+    question: bool = False
 
 
 @dataclass(frozen=True)

@@ -126,12 +126,18 @@ def extract(
     col_of: Callable[[int, int], int],
     known: Callable[[str], bool] = lambda name: True,
     alias: Callable[[ast.expr], Alias | None] = lambda node: None,
+    field_kind: Callable[[str, str], str | None] = lambda msg, path: None,
 ) -> tuple[Refinement | None, list[AnnotationProblem]]:
     """The refinement in `node`: `Annotated[base, "predicate", ...]`, possibly inside
     `Final[...]`/`ClassVar[...]`, `Optional[...]`/`Union[..., None]`/`... | None`, a
-    `tuple[...]` (per element), a string annotation, or behind a type alias."""
+    `tuple[...]` (per element), a string annotation, or behind a type alias.
+
+    On a message (`Annotated[Twist, "abs(linear.x) <= 0.22"]`) names are field
+    paths relative to the value, as in interface files (`_.linear.x` and
+    `t.linear.x`, for `t` the annotated name, mean the same); `field_kind` says what
+    a path of a message type is (None: not a field)."""
     names = Names(qualname, msg_type, source_segment, col_of, alias)
-    reader = _Reader(self_name, known)
+    reader = _Reader(self_name, known, field_kind)
     found = reader.read(node, names)
     return found, reader.problems
 
@@ -141,9 +147,15 @@ MAX_STRING_ANNOTATION = 2000  # characters of a string annotation worth parsing
 
 
 class _Reader:
-    def __init__(self, self_name: str, known: Callable[[str], bool]) -> None:
+    def __init__(
+        self,
+        self_name: str,
+        known: Callable[[str], bool],
+        field_kind: Callable[[str, str], str | None] = lambda msg, path: None,
+    ) -> None:
         self.self_name = self_name
         self.known = known
+        self.field_kind = field_kind
         self.problems: list[AnnotationProblem] = []
         self.hops = 0
         self.synthetic: set[int] = set()  # nodes parsed from a string annotation
@@ -267,11 +279,7 @@ class _Reader:
             found, values = _split(predicate, self.self_name, start, self.problems)
             if found is not None:
                 unit = found if unit is None else unit * found
-            for value in values:
-                if not _names_known(
-                    value, self.self_name, self.known, start, self.problems
-                ):
-                    continue
+            for value in self.known_parts(values, mtype, start):
                 value = A.substitute(value, {self.self_name: A.Name(SELF)})
                 if "len" not in text:  # (most never mention it)
                     parts.append(value)
@@ -295,6 +303,31 @@ class _Reader:
             item=item,
             size=A.conjoin([s for s in size if s != A.TRUE]),
         )
+
+    def known_parts(
+        self, values: list[A.Expr], mtype: str | None, start: tuple[int, int, bool]
+    ) -> list[A.Expr]:
+        """The parts whose names are known; on a message, with field paths made
+        relative to the value."""
+        if mtype is None:
+            return [
+                p
+                for p in values
+                if _names_known(p, self.self_name, self.known, start, self.problems)
+            ]
+        return [
+            _relative(p, self.self_name)
+            for p in values
+            if _fields_known(
+                p,
+                self.self_name,
+                mtype,
+                self.known,
+                self.field_kind,
+                start,
+                self.problems,
+            )
+        ]
 
     def metadata(
         self, meta: ast.expr, names: Names
@@ -510,6 +543,47 @@ def _split(
         else:
             values.append(part)
     return unit, values
+
+
+def _relative(part: A.Expr, self_name: str) -> A.Expr:
+    """`_.linear.x` and `t.linear.x` -> `linear.x`."""
+    renames: dict[str, A.Expr] = {}
+    for name in A.names(part):
+        root, dot, rest = name.name.partition(".")
+        if dot and root in (SELF, self_name):
+            renames[name.name] = A.Name(rest, name.pos)
+    return A.substitute(part, renames) if renames else part
+
+
+def _fields_known(
+    part: A.Expr,
+    self_name: str,
+    msg_type: str,
+    known: Callable[[str], bool],
+    field_kind: Callable[[str, str], str | None],
+    start: tuple[int, int, bool],
+    problems: list[AnnotationProblem],
+) -> bool:
+    """Names in a message's refinement are its fields or names in scope."""
+    for name in A.names(part):
+        root, dot, rest = name.name.partition(".")
+        path = rest if dot and root in (SELF, self_name) else name.name
+        kind = field_kind(msg_type, path)
+        if kind is not None and kind != "msg":
+            continue
+        if kind is None and path == name.name and known(root):
+            continue
+        line, col = _at(start, name.pos)
+        what = (
+            f"is a message in {msg_type}, not a value"
+            if kind == "msg"
+            else f"is not a field of {msg_type}"
+        )
+        problems.append(
+            AnnotationProblem(rules.UNKNOWN_FIELD, line, col, f"`{path}` {what}")
+        )
+        return False
+    return True
 
 
 def _names_known(

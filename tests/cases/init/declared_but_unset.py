@@ -11,5 +11,5 @@ def later(flag: bool) -> None:
     x: Annotated[int, ""]
     if flag:
         x = 1
-    # unset on one path only: not an error, but nothing bounds x there
-    y: Annotated[int, "_ < 5"] = x  # warning: RF102
+    # unset when flag is false: UnboundLocalError on that path
+    y: Annotated[int, "_ < 5"] = x  # error: RF301

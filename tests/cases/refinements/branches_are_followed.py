@@ -9,8 +9,8 @@ def clamp(v: float) -> None:
 
 
 def maybe(v: float) -> None:
-    x = 5 if v > 0 else 1
-    small: Annotated[int, "_ < 3"] = x  # warning: RF102
+    x = 5 if v > 0 else 1  # two paths: on the one with v > 0, x is 5
+    small: Annotated[int, "_ < 3"] = x  # error: RF101
 
 
 def always(flag: bool) -> None:

@@ -1,0 +1,140 @@
+"""Questions about paths decided without z3, over the boolean skeleton of a VC.
+
+Whether a path can run (`if c: ... if not c: ...`) is mostly a question about the
+tests taken, not about numbers. Each comparison, and each other term that is not a
+connective, is one proposition (`x <= 1` is `not (x > 1)`); boolean symbols are
+propositions too. If the skeleton has no model, neither has the VC, whatever the
+numbers are. If it has one and every proposition is a boolean symbol, so has the
+VC. Otherwise the question needs z3.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from robotfix.annotations import ast as A
+
+# Search nodes one question may visit before it is left to z3.
+BUDGET = 4000
+MAX_ATOMS = 64
+NEGATED = {"<=": ">", ">=": "<", "!=": "=="}
+COMPARISONS = frozenset({"==", "!=", "<", "<=", ">", ">="})
+Formula = tuple[Any, ...]  # ("and", f...), ("or", f...), ("not", f), ("atom", i)
+
+
+class _Skeleton:
+    def __init__(self) -> None:
+        self.atoms: dict[object, int] = {}
+        self.arithmetic = False  # some proposition is not a boolean symbol
+
+    def atom(self, key: object, boolean: bool) -> Formula:
+        if not boolean:
+            self.arithmetic = True
+        index = self.atoms.setdefault(key, len(self.atoms))
+        return ("atom", index)
+
+    def formula(self, expr: A.Expr) -> Formula:
+        kind = type(expr)
+        if kind is A.Bool:
+            return ("const", expr.value)  # type: ignore[union-attr]
+        if kind is A.Sym:
+            return self.atom(expr, expr.sort == "bool")  # type: ignore[union-attr]
+        if kind is A.Unary and expr.op == "not":  # type: ignore[union-attr]
+            return ("not", self.formula(expr.operand))  # type: ignore[union-attr]
+        if kind is A.Binary:
+            op = expr.op  # type: ignore[union-attr]
+            left, right = expr.left, expr.right  # type: ignore[union-attr]
+            if op in ("and", "or"):
+                return (op, self.formula(left), self.formula(right))
+            if op in ("==", "!=") and _boolean(left) and _boolean(right):
+                same = ("iff", self.formula(left), self.formula(right))
+                return same if op == "==" else ("not", same)
+            if op in NEGATED:
+                return ("not", self.atom(A.Binary(NEGATED[op], left, right), False))
+            if op in COMPARISONS:
+                return self.atom(expr, False)
+        if kind is A.Ite and _boolean(expr):
+            cond = self.formula(expr.cond)  # type: ignore[union-attr]
+            then = self.formula(expr.then)  # type: ignore[union-attr]
+            orelse = self.formula(expr.orelse)  # type: ignore[union-attr]
+            return ("or", ("and", cond, then), ("and", ("not", cond), orelse))
+        return self.atom(expr, False)
+
+
+def _boolean(expr: A.Expr) -> bool:
+    kind = type(expr)
+    if kind is A.Bool:
+        return True
+    if kind is A.Sym:
+        return expr.sort == "bool"  # type: ignore[union-attr]
+    if kind is A.Unary:
+        return expr.op == "not"  # type: ignore[union-attr]
+    if kind is A.Binary:
+        return expr.op in COMPARISONS or expr.op in ("and", "or")  # type: ignore[union-attr]
+    if kind is A.Ite:
+        return _boolean(expr.then) and _boolean(expr.orelse)  # type: ignore[union-attr]
+    return False
+
+
+def _value(f: Formula, model: dict[int, bool]) -> bool | None:
+    """Three-valued: None while an atom it needs has no value yet."""
+    tag = f[0]
+    if tag == "atom":
+        return model.get(f[1])
+    if tag == "const":
+        return bool(f[1])
+    if tag == "not":
+        inner = _value(f[1], model)
+        return None if inner is None else not inner
+    if tag == "iff":
+        a, b = _value(f[1], model), _value(f[2], model)
+        return None if a is None or b is None else a == b
+    a = _value(f[1], model)
+    decisive = tag == "or"  # True decides an `or`, False an `and`
+    if a is decisive:
+        return decisive
+    b = _value(f[2], model)
+    if b is decisive:
+        return decisive
+    return None if a is None or b is None else not decisive
+
+
+def satisfiable(parts: list[A.Expr]) -> bool | None:
+    """Do `parts` have a model? None: not decided here (ask z3)."""
+    skeleton = _Skeleton()
+    formulas = [skeleton.formula(p) for p in parts]
+    if len(skeleton.atoms) > MAX_ATOMS:
+        return None
+    found = _search(formulas, len(skeleton.atoms))
+    if found is None:
+        return None
+    if not found:
+        return False  # no model of the skeleton: none of the VC
+    return None if skeleton.arithmetic else True
+
+
+def _search(formulas: list[Formula], count: int) -> bool | None:
+    """Backtracking over the atoms in order, pruning on a false formula."""
+    model: dict[int, bool] = {}
+    visited = 0
+
+    def go(index: int) -> bool | None:
+        nonlocal visited
+        visited += 1
+        if visited > BUDGET:
+            return None
+        values = [_value(f, model) for f in formulas]
+        if any(v is False for v in values):
+            return False
+        if all(v is True for v in values) or index >= count:
+            return all(v is True for v in values)
+        for choice in (True, False):
+            model[index] = choice
+            found = go(index + 1)
+            if found is not False:
+                del model[index]
+                return found
+        del model[index]
+        return False
+
+    return go(0)
