@@ -32,7 +32,21 @@ FORBIDDEN = {
         "robotfix.report",
         "robotfix.cli",
     ),
-    "analysis/": ("robotfix.smt", "robotfix.api", "robotfix.report", "robotfix.cli"),
+    "analysis/": (
+        "robotfix.smt",
+        "robotfix.api",
+        "robotfix.report",
+        "robotfix.cli",
+        "robotfix.project",
+    ),
+    "project/": (
+        "robotfix.smt",
+        "robotfix.api",
+        "robotfix.run",
+        "robotfix.cache",
+        "robotfix.report",
+        "robotfix.cli",
+    ),
     "smt/": ("robotfix.api", "robotfix.report", "robotfix.cli", "robotfix.ros"),
     "report/": ("robotfix.analysis", "robotfix.smt", "robotfix.api", "robotfix.cli"),
 }

@@ -29,6 +29,7 @@ KEYS = {
     "format",
     "exclude",
     "per-file-ignores",
+    "python-paths",
     "ros-distro",
     "unit-suffixes",
 }
@@ -44,6 +45,8 @@ class ConfigError(Exception):
 @dataclass(frozen=True)
 class Config:
     msg_paths: tuple[Path, ...] = ()
+    # folders where imported modules are looked for, before the checked file's own
+    python_paths: tuple[Path, ...] = ()
     strict: bool = False
     rep103: bool = True
     output_format: str = "text"
@@ -185,6 +188,7 @@ def _apply(config: Config, table: Any, path: Path) -> Config:
             f"(known: {', '.join(sorted(KEYS))})"
         )
     msg_paths = _strings(table, "msg-paths", path)
+    python_paths = _strings(table, "python-paths", path)
     exclude = _strings(table, "exclude", path)
     for key in ("strict", "rep103", "unit-suffixes"):
         if key in table and not isinstance(table[key], bool):
@@ -207,6 +211,7 @@ def _apply(config: Config, table: Any, path: Path) -> Config:
     return replace(
         config,
         msg_paths=config.msg_paths + tuple(path.parent / p for p in msg_paths),
+        python_paths=config.python_paths + tuple(path.parent / p for p in python_paths),
         strict=table.get("strict", config.strict),
         rep103=table.get("rep103", config.rep103),
         output_format=fmt,

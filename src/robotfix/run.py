@@ -23,12 +23,14 @@ from robotfix.api import (
     check_file,
     finish,
     interface_problems,
+    make_project,
 )
 from robotfix.cache import ResultCache, run_key
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
 from robotfix.discovery import Discovery, discover
 from robotfix.fs import UnreadableError, read_regular
+from robotfix.project.summary import Project
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.ros.install import InstallSpace
 
@@ -43,6 +45,10 @@ class FileResult:
     error: InternalError | None = None
     types: list[str] = field(default_factory=list)  # message types it looked up
     fingerprint: str = ""  # the catalog's fingerprint of `types`, as the check saw it
+    # the module summaries it consulted (`project/summary.py`): key -> fingerprint
+    modules: dict[str, str] = field(default_factory=dict)
+    # the summaries built so far in its process: file -> (sha256, fingerprint)
+    summaries: dict[str, tuple[str, str]] = field(default_factory=dict)
 
 
 def check_paths(
@@ -61,9 +67,13 @@ def check_paths(
     found = discover(paths, config)
     result.diagnostics.extend(found.notices)
     interfaces = _Interfaces(
-        found.interface_files, found.package_interface_files, found.installed
+        found.interface_files,
+        found.package_interface_files,
+        found.installed,
+        tuple(paths),
     )
     catalog = _catalog(interfaces, config)
+    project = make_project(paths, config, catalog)
     used: set[str] = set()  # the message types the checked files looked up
     files = found.python_files
     result.files = len(files)
@@ -75,6 +85,8 @@ def check_paths(
         if use_cache
         else None
     )
+    if cache is not None:
+        project.known = dict(cache.summaries)
     todo: list[tuple[Path, bytes]] = []
     for index, file in enumerate(files, start=1):
         try:
@@ -83,7 +95,7 @@ def check_paths(
             reason = f"cannot read: {err.reason}"
             result.diagnostics.append(messages.unreadable(str(file), reason))
             continue
-        cached = cache.get(file, data, config, catalog) if cache else None
+        cached = cache.get(file, data, config, catalog, project) if cache else None
         if cached is not None:
             result.diagnostics.extend(cached)
             used.update(cache.types(file) if cache else ())
@@ -94,7 +106,7 @@ def check_paths(
             todo.append((file, data))
     done = len(files) - len(todo)
     contents = dict(todo)
-    for outcome in _check_all(todo, interfaces, config, catalog, jobs):
+    for outcome in _check_all(todo, interfaces, config, catalog, project, jobs):
         done += 1
         if progress is not None:
             progress(done, len(files), outcome.path)
@@ -110,7 +122,9 @@ def check_paths(
                 outcome.diagnostics,
                 outcome.types,
                 outcome.fingerprint,
+                outcome.modules,
             )
+            cache.remember_summaries(outcome.summaries)
     result.diagnostics.extend(interface_problems(catalog, used))
     result.diagnostics.extend(_parameter_problems(found, files, config))
     result.files += len(found.parameter_files)
@@ -149,6 +163,7 @@ class _Interfaces:
     files: list[Path]
     preferred: list[Path]  # the checked packages' files: they win over msg paths'
     installed: InstallSpace | None
+    roots: tuple[Path, ...] = ()  # the checked paths: where modules are found
 
 
 def _catalog(interfaces: _Interfaces, config: Config) -> MsgCatalog:
@@ -167,6 +182,7 @@ def _check_all(
     interfaces: _Interfaces,
     config: Config,
     catalog: MsgCatalog,
+    project: Project,
     jobs: int,
 ) -> Iterator[FileResult]:
     """Each file's result, as it comes. With jobs > 1, in worker processes: at most
@@ -175,7 +191,7 @@ def _check_all(
     jobs = min(jobs, default_jobs(), len(todo))
     if jobs <= 1 or len(todo) < MIN_PARALLEL:
         for path, data in todo:
-            yield _check_one(path, data, catalog, config)
+            yield _check_one(path, data, catalog, config, project)
         return
     size = max(1, min(MAX_CHUNK, len(todo) // (jobs * 4)))
     chunks = [todo[i : i + size] for i in range(0, len(todo), size)]
@@ -194,7 +210,7 @@ def _check_all(
     except (OSError, BrokenProcessPool):  # EMFILE, EAGAIN: check here instead
         _stop(pool)
         for path, data in todo:
-            yield _check_one(path, data, catalog, config)
+            yield _check_one(path, data, catalog, config, project)
         return
     try:
         while pending:
@@ -230,15 +246,23 @@ def _lost(path: Path) -> FileResult:
 
 
 def _check_one(
-    path: Path, data: bytes, catalog: MsgCatalog, config: Config
+    path: Path, data: bytes, catalog: MsgCatalog, config: Config, project: Project
 ) -> FileResult:
     catalog.touched = set()
     try:
-        found = check_file(str(path), data, catalog, config.ignored_codes(path))
+        resolver = project.resolver(path)
+        ignored = config.ignored_codes(path)
+        found = check_file(str(path), data, catalog, ignored, resolver)
         types = sorted(catalog.touched)
         catalog.touched = None
         return FileResult(
-            str(path), found, None, types, catalog.fingerprint_types(types)
+            str(path),
+            found,
+            None,
+            types,
+            catalog.fingerprint_types(types),
+            dict(resolver.consulted),
+            dict(project.built),
         )
     except Exception as err:  # a fault of ours: report it, go on with the others
         summary = f"{type(err).__name__}: {err}"
@@ -249,7 +273,7 @@ def _check_one(
         catalog.touched = None
 
 
-_WORKER: tuple[MsgCatalog, Config] | None = None
+_WORKER: tuple[MsgCatalog, Config, Project] | None = None
 
 
 def _start_worker(interfaces: _Interfaces, config: Config) -> None:
@@ -257,13 +281,14 @@ def _start_worker(interfaces: _Interfaces, config: Config) -> None:
     main process's to handle (it ends the workers), so no traceback here."""
     global _WORKER
     signal.signal(signal.SIGINT, signal.SIG_IGN)
-    _WORKER = (_catalog(interfaces, config), config)
+    catalog = _catalog(interfaces, config)
+    _WORKER = (catalog, config, make_project(list(interfaces.roots), config, catalog))
 
 
 def _worker_check(chunk: list[tuple[Path, bytes]]) -> list[FileResult]:
     assert _WORKER is not None
-    catalog, config = _WORKER
-    return [_check_one(path, data, catalog, config) for path, data in chunk]
+    catalog, config, project = _WORKER
+    return [_check_one(path, data, catalog, config, project) for path, data in chunk]
 
 
 def default_jobs() -> int:

@@ -11,7 +11,7 @@ import math
 from dataclasses import replace
 from fractions import Fraction
 
-from robotfix.analysis import heap
+from robotfix.analysis import heap, imported
 from robotfix.analysis.param_eval import ParameterEvaluator
 from robotfix.analysis.program import Function
 from robotfix.analysis.state import State
@@ -104,6 +104,9 @@ class CallEvaluator(ParameterEvaluator):
             found = self.math_call(callee.name[5:], args, node, state)
             if found is not None:
                 return found
+        found = self.imported_call(callee, node, args, kwargs, state)
+        if found is not None:
+            return found
         name = (
             callee.name.rsplit(".", 1)[-1]
             if callee.kind == "module"
@@ -118,6 +121,32 @@ class CallEvaluator(ParameterEvaluator):
         if name in UNIT_PARAMETERS:
             self._check_api_units(name, node, args, kwargs)
         return self.unknown(node)
+
+    def imported_call(
+        self,
+        callee: Value,
+        node: ast.Call,
+        args: list[Value],
+        kwargs: dict[str | None, Value],
+        state: State,
+    ) -> Value | None:
+        """A function, class or method of another module of the tree."""
+        if callee.kind not in ("module", "method") or self.ctx.resolver is None:
+            return None
+        found = imported.resolve(self.ctx.resolver, callee.name)
+        if imported.starred(node, kwargs):
+            found = None if isinstance(found, imported.FunctionSummary) else found
+        if isinstance(found, imported.FunctionSummary):
+            bound = callee.kind == "method"
+            return imported.call(self, found, args, kwargs, node, state, bound)
+        if isinstance(found, imported.ClassSummary):
+            methods = dict(found.methods)
+            init = methods.get("__init__")
+            if init is not None and not imported.starred(node, kwargs):
+                imported.call(self, init, args, kwargs, node, state, True)
+            self.program.attributes.setdefault(callee.name, dict(found.attributes))
+            return Value("instance", name=callee.name)
+        return None
 
     def _forget_after_call(
         self,

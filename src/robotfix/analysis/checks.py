@@ -194,7 +194,9 @@ class Checker:
         lookup: dict[str, A.Expr],
     ) -> Value:
         """Check `name = value` against its refinement; return what `name` holds."""
-        declared = Declared(f"annotation of `{name}`", self.path, decl.line)
+        declared = Declared(
+            f"annotation of `{name}`", decl.origin or self.path, decl.line
+        )
         if value.kind == "msg" or (decl.optional and value.kind == "none"):
             return value
         read = parameters.read_of(self, value, site)

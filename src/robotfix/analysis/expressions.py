@@ -15,7 +15,7 @@ from dataclasses import replace
 from fractions import Fraction
 
 from robotfix import messages
-from robotfix.analysis import heap, hover
+from robotfix.analysis import heap, hover, imported
 from robotfix.analysis.checks import Checker
 from robotfix.analysis.constants import is_constant
 from robotfix.analysis.context import TERM_LIMIT, FileContext
@@ -239,7 +239,8 @@ class ExpressionEvaluator:
         interface = self.ctx.interface_named(qualified)
         if interface is not None:
             return Value("interface", name=interface)
-        return Value("module", name=qualified)
+        constant = imported.constant(self.ctx.resolver, qualified)
+        return constant or Value("module", name=qualified)
 
     def instance_attribute(
         self, base: Value, var: str, node: ast.Attribute, state: State
@@ -253,6 +254,12 @@ class ExpressionEvaluator:
         method = f"{base.name}.{node.attr}"
         if base.kind == "instance" and method in self.program.functions:
             return Value("method", name=method)
+        if base.kind == "instance" and "." in base.name:  # a class of another module
+            found = imported.resolve(self.ctx.resolver, method)
+            if isinstance(found, imported.FunctionSummary):
+                return Value("method", name=method)
+            if isinstance(found, Value):
+                return found
         constant = self.class_constant(base.name, node.attr)
         if base.kind == "instance" and constant is not None:
             return constant

@@ -55,6 +55,7 @@ class Refinement:
     optional: bool = False  # `Optional[...]`: it holds when the value is not None
     # `tuple[...]`: each element's refinement (None: unrefined); base is "tuple"
     elements: tuple[Refinement | None, ...] | None = None
+    origin: str | None = None  # the file that declares it, if not the checked one
 
     def predicates(self) -> list[A.Expr]:
         """Its predicate and its elements': where the names it mentions are."""
@@ -89,6 +90,7 @@ class Names:
     source_segment: Callable[[ast.AST], str | None]
     col_of: Callable[[int, int], int]
     alias: Callable[[ast.expr], Alias | None] = lambda node: None
+    path: str | None = None  # the module's file, when it may not be the checked one
 
 
 @dataclass(frozen=True)
@@ -164,7 +166,11 @@ class _Reader:
                 node = parsed
                 self.hops += 1
                 continue
-            found = names.alias(node) if isinstance(node, ast.Name) else None
+            found = (
+                names.alias(node)
+                if isinstance(node, (ast.Name, ast.Attribute))
+                else None
+            )
             if found is None:
                 break
             node, names = found.node, found.names
@@ -246,7 +252,9 @@ class _Reader:
             if len(texts) == 1
             else " and ".join(f"({t})" for t in texts)
         )
-        return Refinement(base, unit, A.conjoin(parts), shown, node.lineno, mtype)
+        return Refinement(
+            base, unit, A.conjoin(parts), shown, node.lineno, mtype, origin=names.path
+        )
 
     def metadata(
         self, meta: ast.expr, names: Names
