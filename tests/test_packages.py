@@ -25,7 +25,7 @@ def _by_file(found: list[Diagnostic]) -> dict[str, list[Diagnostic]]:
     return grouped
 
 
-@pytest.mark.parametrize("name", ["ros2_pkg", "ros1_pkg", "cycle"])
+@pytest.mark.parametrize("name", ["ros2_pkg", "ros1_pkg", "cycle", "near_misses"])
 def test_a_checked_tree_sees_its_own_modules(name: str) -> None:
     root = PACKAGES / name
     result = check_paths([root], Config(root=root))

@@ -12,8 +12,9 @@ remembered for the run.
 from __future__ import annotations
 
 import ast
+import functools
 import os
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from pathlib import Path
 
 from robotfix.analysis.imported import absolute
@@ -31,21 +32,41 @@ class ModuleIndex:
             _absolute(Path(r) if _is_dir(Path(r)) else Path(r).parent) for r in roots
         )
         self._search: dict[Path, tuple[Path, ...]] = {}
-        self._folders: dict[str, Path] = {}  # a folder as spelled -> absolute
-        self._found: dict[tuple[Path, str], Path | None] = {}
+        self._by_spelling: dict[str, tuple[Path, ...]] = {}  # folder as spelled ->
+        self._resolved: dict[tuple[int, str], Path | None] = {}
+        self._ids: dict[str, int] = {}  # folder as spelled -> its search path's id
+        self._numbers: dict[tuple[Path, ...], int] = {}
+        self._found: dict[tuple[str, str], Path | None] = {}
         self._packages: dict[Path, str | None] = {}
+        self._listings: dict[str, dict[str, bool]] = {}
 
-    def find(self, name: str, importer: Path) -> Path | None:
+    def _listing(self, folder: str) -> dict[str, bool]:
+        found = self._listings.get(folder)
+        if found is None:
+            found = self._listings[folder] = _list(folder)
+        return found
+
+    def find(self, name: str, importer: Path | str) -> Path | None:
         """The file of module `name` (absolute, dotted) as `importer` imports it."""
+        key = (self.search_id(importer), name)
+        found = self._resolved.get(key, _UNKNOWN)
+        if found is _UNKNOWN:
+            roots = self.search_path(importer)
+            found = self._resolved[key] = self._lookup(roots, name)
+        if found is None or os.path.isabs(importer):
+            return found
+        return _relative(found)
+
+    def _lookup(self, roots: tuple[Path, ...], name: str) -> Path | None:
         if not name or not all(part.isidentifier() for part in name.split(".")):
             return None
-        for root in self.search_path(importer):
-            key = (root, name)
+        for root in roots:
+            key = (str(root), name)
             found = self._found.get(key, _UNKNOWN)
             if found is _UNKNOWN:
-                found = self._found[key] = _module_file(root, name)
+                found = self._found[key] = _module_file(root, name, self._listing)
             if found is not None:
-                return found if importer.is_absolute() else _relative(found)
+                return found
         return None
 
     def candidates(self, name: str, importer: Path) -> list[Path]:
@@ -58,12 +79,24 @@ class ModuleIndex:
             found += [base.with_name(base.name + ".py"), base / "__init__.py"]
         return found
 
-    def search_path(self, importer: Path) -> tuple[Path, ...]:
+    def search_id(self, importer: Path | str) -> int:
+        """A number for the search path of `importer` (files with the same one
+        resolve every name alike)."""
+        spelled = os.path.dirname(importer)
+        found = self._ids.get(spelled)
+        if found is None:
+            roots = self.search_path(importer)
+            found = self._numbers.setdefault(roots, len(self._numbers))
+            self._ids[spelled] = found
+        return found
+
+    def search_path(self, importer: Path | str) -> tuple[Path, ...]:
         """Absolute folders, in the order they are searched."""
         spelled = os.path.dirname(importer)
-        folder = self._folders.get(spelled)
-        if folder is None:
-            folder = self._folders[spelled] = _absolute(importer.parent)
+        known = self._by_spelling.get(spelled)
+        if known is not None:
+            return known
+        folder = _absolute(Path(spelled or "."))
         if folder not in self._search:
             found: list[Path] = [*self.python_paths, self._top_parent(folder)]
             package = _ros_package(folder)
@@ -73,6 +106,7 @@ class ModuleIndex:
                     found.append(package / "src")
             found += self.roots
             self._search[folder] = tuple(dict.fromkeys(found))
+        self._by_spelling[spelled] = self._search[folder]
         return self._search[folder]
 
     def package_of(self, path: Path) -> str | None:
@@ -117,6 +151,7 @@ def _absolute(path: Path) -> Path:
         return path
 
 
+@functools.lru_cache(maxsize=4096)
 def _relative(path: Path) -> Path:
     """A found module as a relative importer's run spells paths."""
     try:
@@ -125,12 +160,44 @@ def _relative(path: Path) -> Path:
         return path
 
 
-def _module_file(root: Path, name: str) -> Path | None:
-    base = root.joinpath(*name.split("."))
-    for candidate in (base.with_name(base.name + ".py"), base / "__init__.py"):
-        if os.path.isfile(candidate):
-            return candidate
+def _module_file(
+    root: Path, name: str, listing: Callable[[str], dict[str, bool]]
+) -> Path | None:
+    """`root/a/b.py` or `root/a/b/__init__.py`, looked up in folder listings: an
+    absent top-level name (rclpy, numpy) costs one listing of the root per run."""
+    *packages, last = name.split(".")
+    folder = str(root)
+    for part in packages:
+        if listing(folder).get(part) is not True:
+            return None
+        folder = os.path.join(folder, part)
+    entries = listing(folder)
+    if entries.get(last + ".py") is False:
+        return Path(folder, last + ".py")
+    if (
+        entries.get(last) is True
+        and listing(os.path.join(folder, last)).get("__init__.py") is False
+    ):
+        return Path(folder, last, "__init__.py")
     return None
+
+
+def _list(folder: str) -> dict[str, bool]:
+    """A folder's sub-folders (True) and Python files (False)."""
+    found: dict[str, bool] = {}
+    try:
+        with os.scandir(folder) as entries:
+            for entry in entries:
+                try:
+                    if entry.name.endswith(".py") and entry.is_file():
+                        found[entry.name] = False
+                    elif entry.is_dir():
+                        found[entry.name] = True
+                except OSError:
+                    continue
+    except OSError:
+        pass
+    return found
 
 
 def _ros_package(folder: Path) -> Path | None:

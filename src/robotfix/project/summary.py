@@ -17,7 +17,6 @@ from __future__ import annotations
 
 import ast
 import hashlib
-import os
 from collections.abc import Callable
 from dataclasses import replace
 from pathlib import Path
@@ -66,7 +65,7 @@ class Project:
         # path -> (sha256 of its bytes, fingerprint), from an earlier run's cache
         self.known: dict[str, tuple[str, str]] = {}
         self.built: dict[str, tuple[str, str]] = {}  # the same, for this run's
-        self._fingerprints: dict[tuple[str, str], str] = {}
+        self._fingerprints: dict[tuple[int, str], str] = {}
 
     def resolver(self, path: Path, building: Path | None = None) -> FileResolver:
         return FileResolver(self, path, building)
@@ -110,13 +109,13 @@ class Project:
     def fingerprint(self, context: str, name: str) -> str:
         """What the summary of `name`, imported by the file `context`, is now: for
         the result cache (a summary is built only if its file changed)."""
-        memo = (os.path.dirname(context), name)  # the folder decides the search
+        memo = (self.index.search_id(context), name)  # it decides the search
         if memo not in self._fingerprints:
             self._fingerprints[memo] = self._fingerprint(context, name)
         return self._fingerprints[memo]
 
     def _fingerprint(self, context: str, name: str) -> str:
-        path = self.index.find(name, Path(context))
+        path = self.index.find(name, context)
         if path is None:
             return ABSENT
         known = self.known.get(str(path)) or self.built.get(str(path))
