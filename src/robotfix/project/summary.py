@@ -77,17 +77,18 @@ class Project:
             resolver = self.resolver(path, building=path)
             parsed = self._parse(path)
             outer, self.catalog.touched = self.catalog.touched, set()
-            found = (
-                summarize(
-                    self.index.module_name(path),
-                    parsed[1],
-                    self.catalog,
-                    self._discharge(),
-                    resolver,
-                )
-                if parsed is not None
-                else None
-            )
+            found = None
+            if parsed is not None:
+                try:
+                    found = summarize(
+                        self.index.module_name(path),
+                        parsed[1],
+                        self.catalog,
+                        self._discharge(),
+                        resolver,
+                    )
+                except Exception:  # a fault of ours: the module stays unknown to
+                    found = None  # importers; its own check reports the fault
             self._imports(path)  # its edges are known: its text is no longer needed
             self._parsed.pop(path, None)
             self._types[path] = frozenset(self.catalog.touched)
