@@ -14,6 +14,7 @@ from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wai
 from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from robotfix import messages
 from robotfix.annotations.units import save_cache as save_unit_cache
@@ -30,9 +31,11 @@ from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
 from robotfix.discovery import Discovery, discover
 from robotfix.fs import UnreadableError, read_regular
-from robotfix.project.summary import Project
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.ros.install import InstallSpace
+
+if TYPE_CHECKING:  # the analysis is imported only when a file is checked
+    from robotfix.project.summary import Project
 
 MIN_PARALLEL = 16  # fewer files are checked faster in one process than by a pool
 MAX_CHUNK = 8  # files per task: Ctrl-C waits for at most one chunk per worker

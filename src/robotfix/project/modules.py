@@ -17,8 +17,6 @@ import os
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
-from robotfix.analysis.imported import absolute
-
 _UNKNOWN = Path("\0")  # not looked up yet
 MAX_DEPTH = 32  # folders climbed looking for a package top or a package.xml
 
@@ -36,6 +34,8 @@ class ModuleIndex:
         self._resolved: dict[tuple[int, str], Path | None] = {}
         self._ids: dict[str, int] = {}  # folder as spelled -> its search path's id
         self._numbers: dict[tuple[Path, ...], int] = {}
+        self._paths: list[tuple[Path, ...]] = []  # search paths by number
+        self._top_names: dict[int, frozenset[str]] = {}
         self._found: dict[tuple[str, str], Path | None] = {}
         self._packages: dict[Path, str | None] = {}
         self._listings: dict[str, dict[str, bool]] = {}
@@ -48,11 +48,15 @@ class ModuleIndex:
 
     def find(self, name: str, importer: Path | str) -> Path | None:
         """The file of module `name` (absolute, dotted) as `importer` imports it."""
-        key = (self.search_id(importer), name)
+        number = self.search_id(importer)
+        key = (number, name)
         found = self._resolved.get(key, _UNKNOWN)
         if found is _UNKNOWN:
-            roots = self.search_path(importer)
-            found = self._resolved[key] = self._lookup(roots, name)
+            if name.partition(".")[0] not in self._tops(number):
+                found = None  # rclpy, numpy: not in any folder searched
+            else:
+                found = self._lookup(self.search_path(importer), name)
+            self._resolved[key] = found
         if found is None or os.path.isabs(importer):
             return found
         return _relative(found)
@@ -79,6 +83,18 @@ class ModuleIndex:
             found += [base.with_name(base.name + ".py"), base / "__init__.py"]
         return found
 
+    def _tops(self, number: int) -> frozenset[str]:
+        """The top-level names a search path offers (modules and folders)."""
+        found = self._top_names.get(number)
+        if found is None:
+            names: set[str] = set()
+            for root in self._paths[number]:
+                names.update(
+                    n[:-3] if n.endswith(".py") else n for n in self._listing(str(root))
+                )
+            found = self._top_names[number] = frozenset(names)
+        return found
+
     def search_id(self, importer: Path | str) -> int:
         """A number for the search path of `importer` (files with the same one
         resolve every name alike)."""
@@ -87,6 +103,8 @@ class ModuleIndex:
         if found is None:
             roots = self.search_path(importer)
             found = self._numbers.setdefault(roots, len(self._numbers))
+            if found == len(self._paths):
+                self._paths.append(roots)
             self._ids[spelled] = found
         return found
 
@@ -220,6 +238,8 @@ def _is_dir(path: Path) -> bool:
 
 def imported_names(tree: ast.Module, package: str | None) -> list[str]:
     """Every module name a file's import statements mention (absolute)."""
+    from robotfix.analysis.imported import absolute
+
     found: list[str] = []
     for node in ast.walk(tree):
         if isinstance(node, ast.Import):

@@ -20,27 +20,26 @@ import hashlib
 from collections.abc import Callable
 from dataclasses import replace
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-from robotfix.analysis.constants import scan
-from robotfix.analysis.context import BudgetExceededError, FileContext, build_scope
-from robotfix.analysis.imported import (
-    ClassSummary,
-    FunctionSummary,
-    ModuleSummary,
-)
-from robotfix.analysis.index import index_module
-from robotfix.analysis.interpreter import Interpreter
-from robotfix.analysis.program import Function, Program, collect
-from robotfix.analysis.state import State
-from robotfix.analysis.vc import VC, Verdict
-from robotfix.annotations import ast as A
-from robotfix.annotations.extract import Alias, Refinement, extract
 from robotfix.fs import UnreadableError, read_regular
 from robotfix.project.modules import ModuleIndex, imported_names
-from robotfix.ros.catalog import MsgCatalog
-from robotfix.source import SourceFile
 
-Discharge = Callable[[VC], Verdict]
+if TYPE_CHECKING:  # the analysis is imported only when a summary is built
+    from robotfix.analysis.context import FileContext
+    from robotfix.analysis.imported import (
+        ClassSummary,
+        FunctionSummary,
+        ModuleSummary,
+    )
+    from robotfix.analysis.program import Function, Program
+    from robotfix.analysis.vc import VC, Verdict
+    from robotfix.annotations import ast as A
+    from robotfix.annotations.extract import Refinement
+    from robotfix.ros.catalog import MsgCatalog
+    from robotfix.source import SourceFile
+
+Discharge = Callable[["VC"], "Verdict"]
 ABSENT = ""  # the fingerprint recorded for a name that is no module of the tree
 
 
@@ -66,6 +65,7 @@ class Project:
         self.known: dict[str, tuple[str, str]] = {}
         self.built: dict[str, tuple[str, str]] = {}  # the same, for this run's
         self._fingerprints: dict[tuple[int, str], str] = {}
+        self._context_ids: dict[str, int] = {}
 
     def resolver(self, path: Path, building: Path | None = None) -> FileResolver:
         return FileResolver(self, path, building)
@@ -110,7 +110,10 @@ class Project:
     def fingerprint(self, context: str, name: str) -> str:
         """What the summary of `name`, imported by the file `context`, is now: for
         the result cache (a summary is built only if its file changed)."""
-        memo = (self.index.search_id(context), name)  # it decides the search
+        number = self._context_ids.get(context)
+        if number is None:
+            number = self._context_ids[context] = self.index.search_id(context)
+        memo = (number, name)  # the search path decides what a name is
         if memo not in self._fingerprints:
             self._fingerprints[memo] = self._fingerprint(context, name)
         return self._fingerprints[memo]
@@ -163,6 +166,8 @@ class Project:
         return self._edges[path]
 
     def _parse(self, path: Path) -> tuple[bytes, SourceFile] | None:
+        from robotfix.source import SourceFile
+
         if path not in self._parsed:
             try:
                 data = read_regular(path)
@@ -216,6 +221,19 @@ def summarize(
     """The summary of one parsed module: the pre-pass, and its module code run once
     for the values of its constants (what this reports is dropped: the module is
     checked on its own when it is part of the run)."""
+    from robotfix.analysis.constants import scan
+    from robotfix.analysis.context import (
+        BudgetExceededError,
+        FileContext,
+        build_scope,
+    )
+    from robotfix.analysis.imported import ModuleSummary
+    from robotfix.analysis.index import index_module
+    from robotfix.analysis.interpreter import Interpreter
+    from robotfix.analysis.program import collect
+    from robotfix.analysis.state import State
+    from robotfix.annotations.extract import Alias
+
     tree = source.tree
     assert tree is not None
     path = source.path
@@ -252,6 +270,8 @@ def _function(
     path: str,
     shown: str | None = None,
 ) -> FunctionSummary:
+    from robotfix.analysis.imported import FunctionSummary
+
     scope = program.signature(ctx, function)
     node = function.node
     params = tuple(a.arg for a in [*node.args.posonlyargs, *node.args.args])
@@ -274,6 +294,8 @@ def _class(
     terms: dict[str, A.Expr],
     path: str,
 ) -> ClassSummary:
+    from robotfix.analysis.imported import ClassSummary
+
     attributes = tuple(
         (attr, _travel(decl, terms, path, own_only=True))
         for attr, decl in sorted(program.attributes.get(class_name, {}).items())
@@ -300,6 +322,7 @@ def _travel(
     """A refinement as another module sees it: the constants of its own module put
     in, the file that declares it named (and, for an attribute, only the parts that
     speak of the value alone)."""
+    from robotfix.annotations import ast as A
 
     def move(part: Refinement) -> Refinement:
         predicate = A.substitute(part.predicate, terms)
@@ -325,6 +348,8 @@ def _travel(
 def _clean(ctx: FileContext, node: ast.expr) -> bool:
     """An alias travels only if it reads without a problem in its own module (its
     problems are reported there, at its own lines)."""
+    from robotfix.annotations.extract import extract
+
     names = ctx.names()
     _, problems = extract(
         node,
