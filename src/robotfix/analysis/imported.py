@@ -83,8 +83,8 @@ def absolute(package: str | None, level: int, module: str | None) -> str | None:
     if package is None:
         return None
     parts = package.split(".") if package else []
-    if level - 1 > len(parts) or (level - 1 == len(parts) and not module):
-        return None
+    if level - 1 >= len(parts):
+        return None  # above the top package: Python refuses it too
     base = parts[: len(parts) - (level - 1)]
     if module:
         base.append(module)
