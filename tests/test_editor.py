@@ -151,13 +151,17 @@ def test_imports_module_follows_relative_absolute_and_script_imports(
     package = tmp_path / "ws" / "src" / "driver" / "driver"
     package.mkdir(parents=True)
     helper, node = package / "helper.py", package / "node.py"
+    for module in (package / "__init__.py", helper, node):
+        module.write_text("")
+    (package.parent / "package.xml").write_text(
+        "<package><name>driver</name></package>"
+    )
     forms = [
         "from driver.helper import clamp",
         "from driver import helper",
         "import driver.helper as h",
         "from . import helper",
         "from .helper import clamp",
-        "import helper",  # a ROS 1 script next to it
     ]
     for form in forms:
         assert dependents.imports_module(form + "\n", node, helper), form
@@ -167,6 +171,21 @@ def test_imports_module_follows_relative_absolute_and_script_imports(
     init = package / "__init__.py"
     assert dependents.imports_module("from .helper import x\n", node, init)
     assert dependents.imports_module("import driver.helper\n", node, init)
+    scripts = package.parent / "scripts"  # a ROS 1 script imports its neighbour
+    scripts.mkdir()
+    (scripts / "helper.py").write_text("")
+    assert dependents.imports_module(
+        "import helper\n", scripts / "n", scripts / "helper.py"
+    )
+    assert not dependents.imports_module(
+        "import helper\n", node, helper
+    )  # no implicit relative import
+    helper.unlink()  # a deleted module: its importers are still found
+    assert dependents.imports_module("from .helper import clamp\n", node, helper)
+    # through a module of the tree that imports it (its summary carries aliases)
+    helper.write_text("")
+    (package / "units.py").write_text("from .helper import Meters\n")
+    assert dependents.imports_module("from driver.units import X\n", node, helper)
 
 
 def test_uses_interface_follows_imports_and_nested_types(tmp_path: Path) -> None:

@@ -30,6 +30,8 @@ from robotfix.stubs.load import StubSet, stub_set
 
 if TYPE_CHECKING:
     from robotfix.analysis.context import FileContext
+    from robotfix.analysis.imported import Resolver
+    from robotfix.project.summary import Project
 from robotfix.source import SourceFile
 
 
@@ -107,8 +109,10 @@ def check_source(
     path: str,
     config: Config | None = None,
     catalog: MsgCatalog | None = None,
+    project: Project | None = None,
 ) -> list[Diagnostic]:
-    """Diagnostics for one Python source text (no file system access but .msg files)."""
+    """Diagnostics for one Python source text; the modules it imports are found
+    beside `path` and in its package (`make_project`), as a run finds them."""
     config = config or Config()
     if catalog is None:
         catalog = MsgCatalog(
@@ -117,17 +121,37 @@ def check_source(
             unit_suffixes=config.unit_suffixes,
         )
     stubs = stub_set(config.stub_paths)
-    return finish(_check(SourceFile.from_text(path, text), catalog, stubs=stubs))
+    project = project or make_project([], config, catalog)
+    resolver = project.resolver(Path(path))
+    source = SourceFile.from_text(path, text)
+    return finish(_check(source, catalog, stubs=stubs, resolver=resolver))
 
 
-def hover(text: str, path: str, line: int, col: int, catalog: MsgCatalog) -> str | None:
+def make_project(roots: list[Path], config: Config, catalog: MsgCatalog) -> Project:
+    """The modules a check can import: the checked roots' and every checked file's
+    tree (`project/modules.py`), each summarised when first imported."""
+    from robotfix.project.modules import ModuleIndex
+    from robotfix.project.summary import Project
+
+    return Project(ModuleIndex(roots, config.python_paths), catalog, Discharger)
+
+
+def hover(
+    text: str,
+    path: str,
+    line: int,
+    col: int,
+    catalog: MsgCatalog,
+    config: Config | None = None,
+) -> str | None:
     """Markdown for the innermost name or message field at (1-based line, 0-based
     character column), as the analysis sees it there."""
 
     source = SourceFile.from_text(path, text)
     if source.problem is not None:
         return None
-    ctx = _analyze(source, catalog, hovers=True)
+    project = make_project([], config or Config(), catalog)
+    ctx = _analyze(source, catalog, hovers=True, resolver=project.resolver(Path(path)))
     assert ctx.hovers is not None
     found = [
         (span, markdown)
@@ -191,9 +215,12 @@ def check_file(
     catalog: MsgCatalog,
     ignored: frozenset[str] = frozenset(),
     stubs: StubSet | None = None,
+    resolver: Resolver | None = None,
 ) -> list[Diagnostic]:
-    """Diagnostics for one file's bytes (decoded, parsed, analysed)."""
-    return _check(SourceFile.from_bytes(path, data), catalog, ignored, stubs)
+    """Diagnostics for one file's bytes (decoded, parsed, analysed); `resolver`
+    shows it the other modules of its tree."""
+    source = SourceFile.from_bytes(path, data)
+    return _check(source, catalog, ignored, stubs=stubs, resolver=resolver)
 
 
 def _check(
@@ -201,11 +228,11 @@ def _check(
     catalog: MsgCatalog,
     ignored: frozenset[str] = frozenset(),
     stubs: StubSet | None = None,
+    resolver: Resolver | None = None,
 ) -> list[Diagnostic]:
-
     if source.problem is not None:
         return [source.problem]
-    ctx = _analyze(source, catalog, stubs=stubs)
+    ctx = _analyze(source, catalog, stubs=stubs, resolver=resolver)
     kept = [
         d
         for d in ctx.diagnostics
@@ -222,13 +249,14 @@ def _analyze(
     hovers: bool = False,
     flows: bool = False,
     stubs: StubSet | None = None,
+    resolver: Resolver | None = None,
 ) -> FileContext:
     """Run the analysis on a parsed file; a pathological file stops with RF902 and
     keeps what was found before."""
     from robotfix.analysis.context import BudgetExceededError, FileContext
     from robotfix.analysis.interpreter import analyze_module
 
-    ctx = FileContext(source, catalog, Discharger())
+    ctx = FileContext(source, catalog, Discharger(), resolver)
     ctx.stubs = stubs or stub_set()
     ctx.hovers = [] if hovers else None
     if flows:

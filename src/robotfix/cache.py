@@ -2,10 +2,14 @@
 
 An entry is reused only when the file's bytes, the path it was named by, its
 per-file ignores, the run key (RobotFix's version, the settings that change results,
-the unit and message libraries) and the resolved definition of every message type the
-file looked up (`MsgCatalog.fingerprint_types`) are all unchanged: changing,
-adding or moving one `.msg` re-checks exactly the files it can affect, and a cached
-run prints what an uncached one prints, byte for byte.
+the unit and message libraries), the resolved definition of every message type the
+file looked up (`MsgCatalog.fingerprint_types`) and the fingerprint of every module
+summary it consulted, transitively (`project/summary.py`) are all unchanged:
+changing, adding or moving one `.msg` re-checks exactly the files it can affect, a
+changed helper module re-checks the files that import it only when its summary
+changed, and a cached run prints what an uncached one prints, byte for byte.
+The fingerprints of summaries are kept too, by the hash of their file's bytes, so
+that a cached run over an unchanged tree parses nothing.
 
 A missing, corrupt, foreign or ill-typed cache is ignored and rebuilt; a cache that
 cannot be written only costs speed. `results.json` is read only if it is a regular
@@ -22,7 +26,7 @@ import os
 import sys
 from collections.abc import Iterable
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from robotfix import __version__, fs, rules
 from robotfix.config import Config
@@ -31,7 +35,10 @@ from robotfix.disk_cache import install_key
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.stubs.load import stub_set
 
-FORMAT = 2
+if TYPE_CHECKING:
+    from robotfix.project.summary import Project
+
+FORMAT = 3
 MAX_BYTES = 512 * 1024 * 1024  # results.json of ~4 million files
 MAX_INT = 2**31  # lines and columns; anything larger is not ours
 GITIGNORE = b"# Created by robotfix\n*\n"
@@ -67,6 +74,8 @@ class ResultCache:
         self.path = folder / "results.json"
         self.key = key
         self._entries: dict[str, Any] = {}
+        # module file -> [sha256 of its bytes, fingerprint of its summary]
+        self.summaries: dict[str, tuple[str, str]] = {}
         self._dirty = False
         try:
             data = json.loads(fs.read_regular(self.path, MAX_BYTES, follow=False))
@@ -78,9 +87,23 @@ class ResultCache:
             and isinstance(data.get("entries"), dict)
         ):
             self._entries = data["entries"]
+            found = data.get("summaries")
+            if isinstance(found, dict):
+                self.summaries = {
+                    k: (v[0], v[1])
+                    for k, v in found.items()
+                    if isinstance(v, list)
+                    and len(v) == 2
+                    and all(isinstance(x, str) for x in v)
+                }
 
     def get(
-        self, path: Path, data: bytes, config: Config, catalog: MsgCatalog
+        self,
+        path: Path,
+        data: bytes,
+        config: Config,
+        catalog: MsgCatalog,
+        project: Project | None = None,
     ) -> list[Diagnostic] | None:
         """The cached diagnostics of this file, or None when they may differ from a
         fresh check (or the entry is not exactly what `put` writes)."""
@@ -91,6 +114,11 @@ class ResultCache:
             return None
         if entry["catalog"] != catalog.fingerprint_types(entry["types"]):
             return None
+        for key, fingerprint in entry["modules"].items():
+            context, _, name = key.partition("\0")
+            now = project.fingerprint(context, name) if project is not None else ""
+            if now != fingerprint:
+                return None
         return [_load(d) for d in entry["diagnostics"]]
 
     def types(self, path: Path) -> list[str]:
@@ -110,6 +138,7 @@ class ResultCache:
         diagnostics: list[Diagnostic],
         types: list[str],
         fingerprint: str,
+        modules: dict[str, str] | None = None,
     ) -> None:
         """Remember a fresh result; `fingerprint` is the catalog's
         `fingerprint_types(types)` as seen by the check that found `diagnostics`."""
@@ -117,9 +146,17 @@ class ResultCache:
             "file": _file_key(data, path, config),
             "types": sorted(types),
             "catalog": fingerprint,
+            "modules": dict(sorted((modules or {}).items())),
             "diagnostics": [_dump(d) for d in diagnostics],
         }
         self._dirty = True
+
+    def remember_summaries(self, built: dict[str, tuple[str, str]]) -> None:
+        """Fingerprints of summaries built in this run, by their file's hash."""
+        for path, known in built.items():
+            if self.summaries.get(path) != known:
+                self.summaries[path] = known
+                self._dirty = True
 
     def prune(self, checked: Iterable[Path], files: Iterable[Path]) -> None:
         """Forget files that were not part of this run although they lie under one
@@ -136,13 +173,21 @@ class ResultCache:
         ]
         for name in stale:
             del self._entries[name]
+        gone = [name for name in self.summaries if not os.path.isfile(name)]
+        for name in gone:
+            del self.summaries[name]
+        stale += gone
         self._dirty = self._dirty or bool(stale)
 
     def save(self) -> None:
         if not self._dirty:
             return
         folder = self.path.parent
-        payload = {"key": self.key, "entries": self._entries}
+        payload = {
+            "key": self.key,
+            "entries": self._entries,
+            "summaries": {k: list(v) for k, v in sorted(self.summaries.items())},
+        }
         try:
             folder.mkdir(parents=True, exist_ok=True)
             fs.create_exclusive(folder / ".gitignore", GITIGNORE)
@@ -190,6 +235,8 @@ def _valid_entry(entry: Any) -> bool:
         and isinstance(entry.get("catalog"), str)
         and isinstance(entry.get("types"), list)
         and all(isinstance(t, str) for t in entry["types"])
+        and isinstance(entry.get("modules"), dict)
+        and all(isinstance(v, str) for v in entry["modules"].values())
         and isinstance(entry.get("diagnostics"), list)
         and all(_valid_diagnostic(d) for d in entry["diagnostics"])
     )

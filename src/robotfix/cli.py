@@ -58,6 +58,15 @@ def build_parser() -> argparse.ArgumentParser:
         "ones); repeatable",
     )
     check.add_argument(
+        "--python-path",
+        action="append",
+        type=Path,
+        default=[],
+        metavar="DIR",
+        help="a folder where imported modules are looked for (as mypy_path); "
+        "repeatable",
+    )
+    check.add_argument(
         "--format",
         choices=FORMATS,
         default=None,
@@ -333,6 +342,8 @@ def merge_flags(settings: Config, args: argparse.Namespace) -> Config:
         settings,
         msg_paths=tuple(args.msg_path) + settings.msg_paths,
         stub_paths=tuple(getattr(args, "stub_path", ())) + settings.stub_paths,
+        python_paths=tuple(getattr(args, "python_path", None) or ())
+        + settings.python_paths,
         strict=settings.strict if args.strict is None else args.strict,
         rep103=settings.rep103 if args.rep103 is None else args.rep103,
         output_format=args.format or settings.output_format,

@@ -30,6 +30,7 @@ KEYS = {
     "format",
     "exclude",
     "per-file-ignores",
+    "python-paths",
     "ros-distro",
     "unit-suffixes",
 }
@@ -47,6 +48,8 @@ class Config:
     msg_paths: tuple[Path, ...] = ()
     # folders of `.pyi` stubs (`robotfix.stubs`), searched before the shipped ones
     stub_paths: tuple[Path, ...] = ()
+    # folders where imported modules are looked for, before the checked file's own
+    python_paths: tuple[Path, ...] = ()
     strict: bool = False
     rep103: bool = True
     output_format: str = "text"
@@ -189,6 +192,7 @@ def _apply(config: Config, table: Any, path: Path) -> Config:
         )
     msg_paths = _strings(table, "msg-paths", path)
     stub_paths = _strings(table, "stub-paths", path)
+    python_paths = _strings(table, "python-paths", path)
     exclude = _strings(table, "exclude", path)
     for key in ("strict", "rep103", "unit-suffixes"):
         if key in table and not isinstance(table[key], bool):
@@ -212,6 +216,7 @@ def _apply(config: Config, table: Any, path: Path) -> Config:
         config,
         msg_paths=config.msg_paths + tuple(path.parent / p for p in msg_paths),
         stub_paths=config.stub_paths + tuple(path.parent / p for p in stub_paths),
+        python_paths=config.python_paths + tuple(path.parent / p for p in python_paths),
         strict=table.get("strict", config.strict),
         rep103=table.get("rep103", config.rep103),
         output_format=fmt,

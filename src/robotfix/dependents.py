@@ -3,16 +3,19 @@ module that imports a changed module, a Python module that uses a type of a chan
 interface file.
 
 A syntactic scan of `import` statements, with the catalog to follow message fields
-into nested types. Over-approximate on purpose (an extra re-check costs time, a
-missing one shows stale diagnostics); whole-package analysis will replace
-`imports_module`.
+into nested types, and the module index of whole-package analysis to follow imports
+through the tree. Over-approximate on purpose (an extra re-check costs time, a
+missing one shows stale diagnostics).
 """
 
 from __future__ import annotations
 
 import ast
+import os
 from pathlib import Path
 
+from robotfix.fs import UnreadableError, read_regular
+from robotfix.project.modules import ModuleIndex, imported_names
 from robotfix.ros.catalog import MsgCatalog, normalize
 from robotfix.ros.msg import read_interface
 from robotfix.source import SourceFile
@@ -21,6 +24,7 @@ INTERFACE_MODULES = ("msg", "srv", "action")
 SECTIONS = ("", "_Request", "_Response", "_Goal", "_Result", "_Feedback")
 ROS1_SUFFIXES = ("Request", "Response", "Goal", "Result", "Feedback", "Action")
 MAX_TYPES = 2000  # nested types followed per document
+MAX_MODULES = 200  # modules of the tree followed per document
 
 
 def interface_types(path: Path, text: str) -> set[str]:
@@ -46,47 +50,55 @@ def uses_interface(text: str, path: Path, catalog: MsgCatalog, types: set[str]) 
     return not types.isdisjoint(_closure(catalog, named))
 
 
-def imports_module(text: str, path: Path, module: Path) -> bool:
-    """Whether Python `text` (the file at `path`) imports the module file `module`:
-    relative imports from the file's package, absolute ones from its folder or any
-    folder above it (the script folder and the package roots Python may search)."""
+def imports_module(
+    text: str, path: Path, module: Path, index: ModuleIndex | None = None
+) -> bool:
+    """Whether Python `text` (the file at `path`) imports the module file `module`,
+    directly or through modules of its tree that import it (whose summaries it
+    sees): names are found as a check finds them (`project.modules.ModuleIndex`)."""
     tree = SourceFile.from_text(str(path), text).tree
     if tree is None:
         return False
-    here = path.parent
-    every_root = (here, *here.parents)
-    for node in ast.walk(tree):
-        roots, package = every_root, []
-        if isinstance(node, ast.Import):
-            names = [alias.name for alias in node.names]
-        elif isinstance(node, ast.ImportFrom):
-            base = node.module or ""
-            names = [base] + [f"{base}.{a.name}".lstrip(".") for a in node.names]
-            if node.level:
-                if node.level - 1 > len(here.parents):
+    index = index or ModuleIndex()
+    goal = _real(module)
+    seen: set[str] = set()
+    todo = [(path, tree)]
+    while todo and len(seen) < MAX_MODULES:
+        importer, current = todo.pop()
+        package = index.package_of(importer)
+        for name in imported_names(current, package):
+            parts = name.split(".")
+            for cut in range(len(parts), 0, -1):
+                prefix = ".".join(parts[:cut])
+                if any(_real(c) == goal for c in index.candidates(prefix, importer)):
+                    return True  # also when the module was just deleted
+                found = index.find(prefix, importer)
+                if found is None:
                     continue
-                roots = (here if node.level == 1 else here.parents[node.level - 2],)
-                package = [""]  # the package's own __init__ runs too
-        else:
-            continue
-        for name in names:
-            for root in roots:
-                if any(module in _files(root, p) for p in package + _prefixes(name)):
+                real = _real(found)
+                if real == goal:
                     return True
+                if real not in seen:
+                    seen.add(real)
+                    parsed = _parse(found)
+                    if parsed is not None:
+                        todo.append((found, parsed))
     return False
 
 
-def _files(root: Path, dotted: str) -> tuple[Path, ...]:
-    """The files a dotted module name may be under `root` ("" is the folder's own
-    package)."""
-    folder = root.joinpath(*dotted.split(".")) if dotted else root
-    return (folder / "__init__.py",) + ((folder.with_suffix(".py"),) if dotted else ())
+def _real(path: Path) -> str:
+    try:
+        return os.path.realpath(path)
+    except OSError:
+        return str(path)
 
 
-def _prefixes(dotted: str) -> list[str]:
-    """`a.b.c` imports `a`, `a.b` and `a.b.c`."""
-    parts = dotted.split(".")
-    return [".".join(parts[: i + 1]) for i in range(len(parts)) if parts[i]]
+def _parse(path: Path) -> ast.Module | None:
+    try:
+        data = read_regular(path)
+    except UnreadableError:
+        return None
+    return SourceFile.from_bytes(str(path), data).tree
 
 
 def _imported_interfaces(tree: ast.Module) -> list[tuple[str, str]]:

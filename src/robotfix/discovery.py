@@ -98,10 +98,28 @@ def discover(
     roots = [*paths, *config.msg_paths, *packages]
     folders = list(config.msg_paths) + _interface_folders(packages)
     found.interface_files = _interface_files(folders, roots, found.notices)
-    found.package_interface_files = [
-        file for file in found.interface_files if within(file, packages)
-    ]
+    found.package_interface_files = _inside(found.interface_files, packages)
     found.installed = install_space(environ)
+    return found
+
+
+def _inside(files: list[Path], folders: list[Path]) -> list[Path]:
+    """The files that lie in one of `folders`, symlinks resolved (as `fs.within`),
+    with each folder resolved once: a tree of many packages stays linear."""
+    real: set[Path] = set()
+    for folder in folders:
+        try:
+            real.add(Path(os.path.realpath(folder)))
+        except (OSError, ValueError):
+            continue
+    found = []
+    for file in files:
+        try:
+            resolved = Path(os.path.realpath(file))
+        except (OSError, ValueError):
+            continue
+        if resolved in real or not real.isdisjoint(resolved.parents):
+            found.append(file)
     return found
 
 

@@ -22,6 +22,7 @@ from robotfix.api import (
     check_file,
     finish,
     interface_problems,
+    make_project,
     stub_problems,
 )
 from robotfix.cache import ResultCache, run_key
@@ -35,6 +36,9 @@ from robotfix.stubs.load import stub_set
 
 if TYPE_CHECKING:
     from concurrent.futures import Future, ProcessPoolExecutor
+
+if TYPE_CHECKING:  # the analysis is imported only when a file is checked
+    from robotfix.project.summary import Project
 
 MIN_PARALLEL = 16  # fewer files are checked faster in one process than by a pool
 # and so is less source: starting a pool costs about 0.1-0.2 s, what one process
@@ -50,6 +54,10 @@ class FileResult:
     error: InternalError | None = None
     types: list[str] = field(default_factory=list)  # message types it looked up
     fingerprint: str = ""  # the catalog's fingerprint of `types`, as the check saw it
+    # the module summaries it consulted (`project/summary.py`): key -> fingerprint
+    modules: dict[str, str] = field(default_factory=dict)
+    # the summaries built so far in its process: file -> (sha256, fingerprint)
+    summaries: dict[str, tuple[str, str]] = field(default_factory=dict)
 
 
 def check_paths(
@@ -93,9 +101,13 @@ def _check_paths(
     result.diagnostics.extend(found.notices)
     result.diagnostics.extend(stub_problems(config))
     interfaces = _Interfaces(
-        found.interface_files, found.package_interface_files, found.installed
+        found.interface_files,
+        found.package_interface_files,
+        found.installed,
+        tuple(paths),
     )
     catalog = _catalog(interfaces, config)
+    project = make_project(paths, config, catalog)
     used: set[str] = set()  # the message types the checked files looked up
     files = found.python_files
     result.files = len(files)
@@ -107,6 +119,8 @@ def _check_paths(
         if use_cache
         else None
     )
+    if cache is not None:
+        project.known = dict(cache.summaries)
     todo: list[tuple[Path, bytes]] = []
     for index, file in enumerate(files, start=1):
         try:
@@ -115,7 +129,7 @@ def _check_paths(
             reason = f"cannot read: {err.reason}"
             result.diagnostics.append(messages.unreadable(str(file), reason))
             continue
-        cached = cache.get(file, data, config, catalog) if cache else None
+        cached = cache.get(file, data, config, catalog, project) if cache else None
         if cached is not None:
             result.diagnostics.extend(cached)
             used.update(cache.types(file) if cache else ())
@@ -126,7 +140,7 @@ def _check_paths(
             todo.append((file, data))
     done = len(files) - len(todo)
     contents = dict(todo)
-    for outcome in _check_all(todo, interfaces, config, catalog, jobs):
+    for outcome in _check_all(todo, interfaces, config, catalog, project, jobs):
         done += 1
         if progress is not None:
             progress(done, len(files), outcome.path)
@@ -142,7 +156,9 @@ def _check_paths(
                 outcome.diagnostics,
                 outcome.types,
                 outcome.fingerprint,
+                outcome.modules,
             )
+            cache.remember_summaries(outcome.summaries)
     result.diagnostics.extend(interface_problems(catalog, used))
     result.diagnostics.extend(_parameter_problems(found, files, config))
     result.files += len(found.parameter_files)
@@ -181,6 +197,7 @@ class _Interfaces:
     files: list[Path]
     preferred: list[Path]  # the checked packages' files: they win over msg paths'
     installed: InstallSpace | None
+    roots: tuple[Path, ...] = ()  # the checked paths: where modules are found
 
 
 def _catalog(interfaces: _Interfaces, config: Config) -> MsgCatalog:
@@ -199,6 +216,7 @@ def _check_all(
     interfaces: _Interfaces,
     config: Config,
     catalog: MsgCatalog,
+    project: Project,
     jobs: int,
 ) -> Iterator[FileResult]:
     """Each file's result, as it comes. With jobs > 1, in worker processes: at most
@@ -208,7 +226,7 @@ def _check_all(
     size = sum(len(data) for _, data in todo)
     if jobs <= 1 or len(todo) < MIN_PARALLEL or size < MIN_PARALLEL_BYTES:
         for path, data in todo:
-            yield _check_one(path, data, catalog, config)
+            yield _check_one(path, data, catalog, config, project)
         return
     import multiprocessing  # only with a pool: about 10 ms of start-up otherwise
     from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
@@ -223,7 +241,7 @@ def _check_all(
     try:
         if method == "fork":  # read the interface files once: the workers share them
             catalog.prepare()
-            _WORKER = (catalog, config)
+            _WORKER = (catalog, config, project)
         pool = ProcessPoolExecutor(
             max_workers=jobs,
             mp_context=multiprocessing.get_context(method),
@@ -236,7 +254,7 @@ def _check_all(
         _stop(pool)
         _WORKER = None
         for path, data in todo:
-            yield _check_one(path, data, catalog, config)
+            yield _check_one(path, data, catalog, config, project)
         return
     finally:
         if method == "fork":
@@ -275,21 +293,24 @@ def _lost(path: Path) -> FileResult:
 
 
 def _check_one(
-    path: Path, data: bytes, catalog: MsgCatalog, config: Config
+    path: Path, data: bytes, catalog: MsgCatalog, config: Config, project: Project
 ) -> FileResult:
     catalog.touched = set()
     try:
-        found = check_file(
-            str(path),
-            data,
-            catalog,
-            config.ignored_codes(path),
-            stub_set(config.stub_paths),
-        )
+        resolver = project.resolver(path)
+        ignored = config.ignored_codes(path)
+        stubs = stub_set(config.stub_paths)
+        found = check_file(str(path), data, catalog, ignored, stubs, resolver)
         types = sorted(catalog.touched)
         catalog.touched = None
         return FileResult(
-            str(path), found, None, types, catalog.fingerprint_types(types)
+            str(path),
+            found,
+            None,
+            types,
+            catalog.fingerprint_types(types),
+            dict(resolver.consulted),
+            dict(project.built),
         )
     except Exception as err:  # a fault of ours: report it, go on with the others
         summary = f"{type(err).__name__}: {err}"
@@ -300,7 +321,7 @@ def _check_one(
         catalog.touched = None
 
 
-_WORKER: tuple[MsgCatalog, Config] | None = None
+_WORKER: tuple[MsgCatalog, Config, Project] | None = None
 
 
 def _start_worker(interfaces: _Interfaces | None, config: Config) -> None:
@@ -310,13 +331,15 @@ def _start_worker(interfaces: _Interfaces | None, config: Config) -> None:
     global _WORKER
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     if interfaces is not None:
-        _WORKER = (_catalog(interfaces, config), config)
+        catalog = _catalog(interfaces, config)
+        project = make_project(list(interfaces.roots), config, catalog)
+        _WORKER = (catalog, config, project)
 
 
 def _worker_check(chunk: list[tuple[Path, bytes]]) -> list[FileResult]:
     assert _WORKER is not None
-    catalog, config = _WORKER
-    return [_check_one(path, data, catalog, config) for path, data in chunk]
+    catalog, config, project = _WORKER
+    return [_check_one(path, data, catalog, config, project) for path, data in chunk]
 
 
 def default_jobs() -> int:

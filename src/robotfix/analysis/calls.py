@@ -10,7 +10,7 @@ import ast
 from dataclasses import replace
 from fractions import Fraction
 
-from robotfix.analysis import containers, frames, heap
+from robotfix.analysis import containers, frames, heap, imported
 from robotfix.analysis.library import LibraryEvaluator
 from robotfix.analysis.program import Function, attribute_key
 from robotfix.analysis.state import State
@@ -129,6 +129,9 @@ class CallEvaluator(LibraryEvaluator):
             found = self.builtin(callee.name, args, node, state, kwargs)
             if found is not None:
                 return found
+        found = self.imported_call(callee, node, args, kwargs, state)
+        if found is not None:
+            return found
         name = (
             callee.name.rsplit(".", 1)[-1]
             if callee.kind == "module"
@@ -156,6 +159,32 @@ class CallEvaluator(LibraryEvaluator):
         ):  # `platform.system()` twice: the same answer, for all the analysis knows
             self.ctx.first_read(("call", self.ctx.source.segment(node)), value.term)
         return value
+
+    def imported_call(
+        self,
+        callee: Value,
+        node: ast.Call,
+        args: list[Value],
+        kwargs: dict[str | None, Value],
+        state: State,
+    ) -> Value | None:
+        """A function, class or method of another module of the tree."""
+        if callee.kind not in ("module", "method") or self.ctx.resolver is None:
+            return None
+        found = imported.resolve(self.ctx.resolver, callee.name)
+        if imported.starred(node, kwargs):
+            found = None if isinstance(found, imported.FunctionSummary) else found
+        if isinstance(found, imported.FunctionSummary):
+            bound = callee.kind == "method"
+            return imported.call(self, found, args, kwargs, node, state, bound)
+        if isinstance(found, imported.ClassSummary):
+            methods = dict(found.methods)
+            init = methods.get("__init__")
+            if init is not None and not imported.starred(node, kwargs):
+                imported.call(self, init, args, kwargs, node, state, True)
+            self.program.attributes.setdefault(callee.name, dict(found.attributes))
+            return Value("instance", name=callee.name)
+        return None
 
     def _forget_after_call(
         self,

@@ -306,7 +306,9 @@ class Checker:
                     )
                 return self.assumed(state, name, decl, lookup)
             return self.assign_sequence(state, name, decl, value, site, lookup)
-        declared = Declared(f"annotation of `{name}`", self.path, decl.line)
+        declared = Declared(
+            f"annotation of `{name}`", decl.origin or self.path, decl.line
+        )
         if decl.optional and value.kind == "none":
             return value
         if value.kind == "msg":

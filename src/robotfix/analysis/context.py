@@ -28,6 +28,7 @@ from robotfix.stubs.load import StubSet
 if TYPE_CHECKING:
     from robotfix.analysis.flows import FlowLog
     from robotfix.analysis.frames import FrameFacts
+    from robotfix.analysis.imported import Resolver
     from robotfix.analysis.parameters import ParamContext
 
 MSG_MODULES = ("msg", "srv", "action")
@@ -71,8 +72,11 @@ class FileContext:
         source: SourceFile,
         catalog: MsgCatalog,
         discharge: Callable[[VC], Verdict],
+        resolver: Resolver | None = None,
     ) -> None:
         self.source = source
+        # the other modules of the tree (`analysis/imported.py`); None: none known
+        self.resolver = resolver
         self.catalog = catalog
         self.discharge = discharge
         self.diagnostics: list[Diagnostic] = []
@@ -197,9 +201,22 @@ class FileContext:
     def record_imports(self, index: FileIndex) -> None:
         self.index = index
         self.imports = index.imports
+        if index.relative and self.resolver is not None:
+            self.imports = dict(index.imports)
+            for local, (level, module, name) in index.relative.items():
+                base = self.absolute(level, module)
+                if base is not None:
+                    self.imports[local] = f"{base}.{name}"
         self.star_import = index.star_import
         roots = {q.split(".")[0] for q in self.imports.values()}
         self.ros1 = bool(roots & ROS1_PACKAGES) and "rclpy" not in roots
+
+    def absolute(self, level: int, module: str | None) -> str | None:
+        """The absolute module of a relative import (None outside a package)."""
+        from robotfix.analysis.imported import absolute
+
+        package = self.resolver.package if self.resolver is not None else None
+        return absolute(package, level, module)
 
     def qualname(self, node: ast.expr) -> str | None:
         """`t.Annotated` -> `typing.Annotated`, when the names come from imports."""
@@ -313,12 +330,21 @@ class FileContext:
     def alias_of(self, node: ast.expr) -> Alias | None:
         """A type alias or string constant of this module (a module summary could
         hand over another module's, with that module's `Names`)."""
-        if not isinstance(node, ast.Name):
-            return None
+        if not isinstance(node, ast.Name) or node.id not in self.index.aliases:
+            return self._imported_alias(node)
         found = self.index.aliases.get(node.id)
         if found is None or node.id in self.constants.changed_globals:
             return None
         return Alias(found, self.names())
+
+    def _imported_alias(self, node: ast.expr) -> Alias | None:
+        """`Meters` of `from .units import Meters`, `units.Meters`: the alias of
+        the module of the tree that defines it."""
+        if self.resolver is None:
+            return None
+        from robotfix.analysis.imported import alias
+
+        return alias(self.resolver, self.qualname(node))
 
     def names(self) -> Names:
         return Names(
@@ -327,6 +353,7 @@ class FileContext:
             self.source.segment,
             self.source.char_col,
             self.alias_of,
+            self.source.path,
         )
 
     def metadata_notes(self) -> None:

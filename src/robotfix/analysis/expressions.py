@@ -17,7 +17,7 @@ from functools import partial
 from typing import TypeVar
 
 from robotfix import messages
-from robotfix.analysis import containers, frames, heap, hover
+from robotfix.analysis import containers, frames, heap, hover, imported
 from robotfix.analysis.checks import Checker
 from robotfix.analysis.constants import is_constant
 from robotfix.analysis.context import TERM_LIMIT, FileContext
@@ -282,7 +282,8 @@ class ExpressionEvaluator:
         interface = self.ctx.interface_named(qualified)
         if interface is not None:
             return Value("interface", name=interface)
-        return Value("module", name=qualified)
+        constant = imported.constant(self.ctx.resolver, qualified)
+        return constant or Value("module", name=qualified)
 
     def instance_attribute(
         self, base: Value, var: str, node: ast.Attribute, state: State
@@ -296,6 +297,12 @@ class ExpressionEvaluator:
         method = f"{base.name}.{node.attr}"
         if base.kind == "instance" and method in self.program.functions:
             return Value("method", name=method)
+        if base.kind == "instance" and "." in base.name:  # a class of another module
+            found = imported.resolve(self.ctx.resolver, method)
+            if isinstance(found, imported.FunctionSummary):
+                return Value("method", name=method)
+            if isinstance(found, Value):
+                return found
         constant = self.class_constant(base.name, node.attr)
         if base.kind == "instance" and constant is not None:
             return constant

@@ -27,6 +27,8 @@ class ScopeNames:
 class FileIndex:
     scopes: dict[int, ScopeNames] = field(default_factory=dict)  # id(scope node) ->
     imports: dict[str, str] = field(default_factory=dict)  # local name -> qualified
+    # local name -> (level, module, name) of `from ..module import name`
+    relative: dict[str, tuple[int, str | None, str]] = field(default_factory=dict)
     star_import: bool = False
     calls: list[tuple[str | None, ast.Call]] = field(
         default_factory=list
@@ -215,6 +217,8 @@ def _record_import(
             index.imports[local] = alias.name if alias.asname else local
         elif node.module and not node.level:
             index.imports[local] = f"{node.module}.{alias.name}"
+        elif node.level:
+            index.relative[local] = (node.level, node.module, alias.name)
 
 
 def _record_annotation(

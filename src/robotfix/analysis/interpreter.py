@@ -16,7 +16,7 @@ from dataclasses import replace
 from fractions import Fraction
 
 from robotfix import messages
-from robotfix.analysis import containers, frames, heap, hover
+from robotfix.analysis import containers, frames, heap, hover, imported
 from robotfix.analysis.calls import MUTATORS, CallEvaluator
 from robotfix.analysis.constants import scan
 from robotfix.analysis.context import FileContext, Scope, build_scope
@@ -1115,11 +1115,21 @@ class Interpreter(CallEvaluator):
                 if node.module and not node.level
                 else alias.name
             )
+            base = self.ctx.absolute(node.level, node.module) if node.level else None
+            if base is not None:  # from .limits import MAX_SPEED
+                qualified = f"{base}.{alias.name}"
             msg_type = self.ctx.msg_type_named(qualified) if not node.level else None
             interface = self.ctx.interface_named(qualified) if not node.level else None
             number = named_number(qualified) if not node.level else None
+            found = (
+                None
+                if msg_type or interface
+                else imported.constant(self.ctx.resolver, qualified)
+            )
             if number is not None:  # from math import pi
                 value = Value("float", A.Num(number, False), literal=True)
+            elif found is not None:  # a constant of a module of the tree
+                value = found
             elif msg_type:
                 value = Value("msgclass", name=msg_type)
             elif interface:
@@ -1128,7 +1138,7 @@ class Interpreter(CallEvaluator):
                 value = Value("module", name=qualified)
                 self._note_unknown_interface(node, qualified)
             state.env[alias.asname or alias.name] = value
-            if number is not None:
+            if number is not None or found is not None:
                 self.ctx.constants.record(
                     self.scope.kind, self.scope.name, alias.asname or alias.name, value
                 )

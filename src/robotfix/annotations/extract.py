@@ -72,6 +72,7 @@ class Refinement:
     elements: tuple[Refinement | None, ...] | None = None
     item: str | None = None  # a container's element base type
     size: A.Expr = A.TRUE  # a container's length, as `_`
+    origin: str | None = None  # the file that declares it, if not the checked one
 
     def predicates(self) -> list[A.Expr]:
         """Its predicate and its elements': where the names it mentions are."""
@@ -106,6 +107,7 @@ class Names:
     source_segment: Callable[[ast.AST], str | None]
     col_of: Callable[[int, int], int]
     alias: Callable[[ast.expr], Alias | None] = lambda node: None
+    path: str | None = None  # the module's file, when it may not be the checked one
 
 
 @dataclass(frozen=True)
@@ -193,7 +195,11 @@ class _Reader:
                 node = parsed
                 self.hops += 1
                 continue
-            found = names.alias(node) if isinstance(node, ast.Name) else None
+            found = (
+                names.alias(node)
+                if isinstance(node, (ast.Name, ast.Attribute))
+                else None
+            )
             if found is None:
                 break
             node, names = found.node, found.names
@@ -302,6 +308,7 @@ class _Reader:
             mtype,
             item=item,
             size=A.conjoin([s for s in size if s != A.TRUE]),
+            origin=names.path,
         )
 
     def known_parts(

@@ -1,0 +1,205 @@
+"""Names imported from other modules of the checked tree, as the per-file analysis
+sees them (cf. mypy's module interfaces).
+
+The analysis never reads another file. `api.py` hands the file's context a
+`Resolver` (built by `robotfix.project`) that answers one question: the summary of
+a module, by its absolute dotted name, or None when it is not in the tree. What a
+summary holds is data computed from the AST of that module alone: refined functions
+(parameters checked at the call, return assumed), constants, type aliases, classes
+(refined attributes, methods, constants) and the names it imports (re-exports).
+
+`resolve` is the one place where an imported dotted name becomes what it stands
+for; a name it cannot resolve stays unknown, as before.
+"""
+
+from __future__ import annotations
+
+import ast
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Protocol
+
+from robotfix.analysis.values import Value
+from robotfix.annotations import ast as A
+from robotfix.annotations.extract import Alias, Refinement
+
+if TYPE_CHECKING:
+    from robotfix.analysis.calls import CallEvaluator
+    from robotfix.analysis.state import State
+
+MAX_HOPS = 20  # re-exports followed for one name (`a` re-exports `b` re-exports...)
+
+
+@dataclass(frozen=True)
+class FunctionSummary:
+    """A function's or method's signature: what a caller checks and assumes."""
+
+    name: str  # as the caller's messages show it: `normalize`, `Robot.drive`
+    params: tuple[str, ...]  # positional parameters in order (`self` included)
+    keywords: tuple[str, ...]  # keyword-only parameters
+    decls: tuple[tuple[str, Refinement], ...]  # refined parameters
+    returns: Refinement | None
+    method: bool  # its first parameter is bound by an instance
+
+
+@dataclass(frozen=True)
+class ClassSummary:
+    name: str
+    attributes: tuple[tuple[str, Refinement], ...]  # refined attributes
+    methods: tuple[tuple[str, FunctionSummary], ...]
+    constants: tuple[tuple[str, Value], ...]  # class constants (`MAX = 0.22`)
+
+
+@dataclass
+class ModuleSummary:
+    """What an importer may see of one module; `fingerprint` hashes all of it."""
+
+    name: str  # absolute dotted name
+    path: str
+    functions: dict[str, FunctionSummary] = field(default_factory=dict)
+    classes: dict[str, ClassSummary] = field(default_factory=dict)
+    constants: dict[str, Value] = field(default_factory=dict)
+    aliases: dict[str, Alias] = field(default_factory=dict)
+    reexports: dict[str, str] = field(default_factory=dict)  # name -> qualified
+    fingerprint: str = ""
+
+
+Imported = FunctionSummary | ClassSummary | ModuleSummary | Value | Alias
+
+
+class Resolver(Protocol):
+    """How one checked file sees the modules of its tree."""
+
+    @property
+    def package(self) -> str | None:
+        """The dotted package the file is in (for relative imports)."""
+
+    def module(self, name: str) -> ModuleSummary | None:
+        """The summary of the module `name` (absolute), if it is in the tree."""
+
+
+def absolute(package: str | None, level: int, module: str | None) -> str | None:
+    """`from ..limits import X` in package `a.b.c` -> `a.b.limits`; None when the
+    file is in no package or the dots go above its top."""
+    if package is None:
+        return None
+    parts = package.split(".") if package else []
+    if level - 1 >= len(parts):
+        return None  # above the top package: Python refuses it too
+    base = parts[: len(parts) - (level - 1)]
+    if module:
+        base.append(module)
+    return ".".join(base) or None
+
+
+def resolve(resolver: Resolver | None, qualified: str) -> Imported | None:
+    """What `qualified` (`my_pkg.util.normalize`) stands for: the longest prefix that
+    is a module of the tree, then its members; None when nothing is known of it.
+    (Stubs of libraries outside the tree would be asked here, after the tree.)"""
+    if resolver is None or not qualified:
+        return None
+    return _resolve(resolver, qualified, 0)
+
+
+def _resolve(resolver: Resolver, qualified: str, hops: int) -> Imported | None:
+    parts = qualified.split(".")
+    for cut in range(len(parts), 0, -1):
+        summary = resolver.module(".".join(parts[:cut]))
+        if summary is not None:
+            return _member(resolver, summary, parts[cut:], hops)
+    return None
+
+
+def _member(
+    resolver: Resolver, summary: ModuleSummary, rest: list[str], hops: int
+) -> Imported | None:
+    if not rest:
+        return summary
+    name, more = rest[0], rest[1:]
+    if name in summary.functions:
+        return summary.functions[name] if not more else None
+    if name in summary.classes:
+        cls = summary.classes[name]
+        if not more:
+            return cls
+        if len(more) == 1:
+            return dict(cls.constants).get(more[0]) or dict(cls.methods).get(more[0])
+        return None
+    if name in summary.constants:
+        return summary.constants[name] if not more else None
+    if name in summary.aliases:
+        return summary.aliases[name] if not more else None
+    target = summary.reexports.get(name)
+    if target is not None and hops < MAX_HOPS:
+        return _resolve(resolver, ".".join([target, *more]), hops + 1)
+    return None
+
+
+def alias(resolver: Resolver | None, qualified: str | None) -> Alias | None:
+    """An imported type alias or metadata string (`from .units import Meters`)."""
+    found = resolve(resolver, qualified) if qualified else None
+    return found if isinstance(found, Alias) else None
+
+
+def constant(resolver: Resolver | None, qualified: str) -> Value | None:
+    """An imported constant (`from .limits import MAX_SPEED`), with its unit."""
+    found = resolve(resolver, qualified)
+    return found if isinstance(found, Value) else None
+
+
+def method_name(class_name: str, attr: str) -> str:
+    return f"{class_name}.{attr}"
+
+
+def call_arguments(
+    function: FunctionSummary,
+    args: list[Value],
+    kwargs: dict[str | None, Value],
+    bound: bool,
+) -> dict[str, Value]:
+    """Which parameter each argument gives (starred arguments are not followed)."""
+    params = list(function.params)
+    if bound and function.method and params:
+        params = params[1:]
+    given: dict[str, Value] = dict(zip(params, args, strict=False))
+    known = set(function.params) | set(function.keywords)
+    given.update({k: v for k, v in kwargs.items() if k is not None and k in known})
+    return given
+
+
+def starred(node: ast.Call, kwargs: dict[str | None, Value]) -> bool:
+    return any(isinstance(a, ast.Starred) for a in node.args) or None in kwargs
+
+
+def call(
+    ev: CallEvaluator,
+    function: FunctionSummary,
+    args: list[Value],
+    kwargs: dict[str | None, Value],
+    node: ast.Call,
+    state: State,
+    bound: bool,
+) -> Value:
+    """A call of an imported function: each refined parameter is checked at the
+    call, the refined return assumed (as for a function of the same file)."""
+    given = call_arguments(function, args, kwargs, bound)
+    terms = {k: v.term for k, v in given.items() if v.term is not None}
+    decls = dict(function.decls)
+    for name, value in given.items():
+        decl = decls.get(name)
+        if decl is not None:
+            lookup = {**_unknowns(ev, decl), **terms}
+            ev.check.assign_refined(state, name, decl, value, ev.site, lookup)
+    if function.returns is None:
+        return ev.unknown(node)
+    lookup = {**_unknowns(ev, function.returns), **terms}
+    return ev.check.assumed(state, f"{function.name}()", function.returns, lookup)
+
+
+def _unknowns(ev: CallEvaluator, decl: Refinement) -> dict[str, A.Expr]:
+    """Names a callee's refinement mentions besides its parameters (the summary
+    already put in its module's constants): unknown values here."""
+    found: dict[str, A.Expr] = {}
+    for ref in [n for p in decl.predicates() for n in A.names(p)]:
+        if ref.name != "_" and ref.name not in found:
+            found[ref.name] = ev.ctx.fresh("unknown", f"`{ref.name}`").known_term
+    return found

@@ -1,0 +1,256 @@
+"""ModuleIndex: which file of the tree a dotted module name is, seen from one file.
+
+Python's own search, without running anything: for a file, the folders searched are
+the `python-paths` setting, then the folder above the file's top package (for a
+script, its own folder: `sys.path[0]`), then the root of the ROS package around it
+(the folder with `package.xml`; a ROS 2 `pkg/pkg/` or a ROS 1 `src/` layout) and
+its `src/`, then the checked roots. A name is a module there as `a/b.py` or
+`a/b/__init__.py`. Only existence is tested here (no file is read); every lookup is
+remembered for the run.
+"""
+
+from __future__ import annotations
+
+import ast
+import functools
+import os
+from collections.abc import Callable, Sequence
+from pathlib import Path
+
+_UNKNOWN = Path("\0")  # not looked up yet
+MAX_DEPTH = 32  # folders climbed looking for a package top or a package.xml
+
+
+class ModuleIndex:
+    def __init__(
+        self, roots: Sequence[Path] = (), python_paths: Sequence[Path] = ()
+    ) -> None:
+        self.python_paths = tuple(_absolute(Path(p)) for p in python_paths)
+        self.roots = tuple(
+            _absolute(Path(r) if _is_dir(Path(r)) else Path(r).parent) for r in roots
+        )
+        self._search: dict[Path, tuple[Path, ...]] = {}
+        self._by_spelling: dict[str, tuple[Path, ...]] = {}  # folder as spelled ->
+        self._resolved: dict[tuple[int, str], Path | None] = {}
+        self._ids: dict[str, int] = {}  # folder as spelled -> its search path's id
+        self._numbers: dict[tuple[Path, ...], int] = {}
+        self._paths: list[tuple[Path, ...]] = []  # search paths by number
+        self._top_names: dict[int, frozenset[str]] = {}
+        self._found: dict[tuple[str, str], Path | None] = {}
+        self._packages: dict[Path, str | None] = {}
+        self._listings: dict[str, dict[str, bool]] = {}
+
+    def _listing(self, folder: str) -> dict[str, bool]:
+        found = self._listings.get(folder)
+        if found is None:
+            found = self._listings[folder] = _list(folder)
+        return found
+
+    def find(self, name: str, importer: Path | str) -> Path | None:
+        """The file of module `name` (absolute, dotted) as `importer` imports it."""
+        number = self.search_id(importer)
+        key = (number, name)
+        found = self._resolved.get(key, _UNKNOWN)
+        if found is _UNKNOWN:
+            if name.partition(".")[0] not in self._tops(number):
+                found = None  # rclpy, numpy: not in any folder searched
+            else:
+                found = self._lookup(self.search_path(importer), name)
+            self._resolved[key] = found
+        if found is None or os.path.isabs(importer):
+            return found
+        return _relative(found)
+
+    def _lookup(self, roots: tuple[Path, ...], name: str) -> Path | None:
+        if not name or not all(part.isidentifier() for part in name.split(".")):
+            return None
+        for root in roots:
+            key = (str(root), name)
+            found = self._found.get(key, _UNKNOWN)
+            if found is _UNKNOWN:
+                found = self._found[key] = _module_file(root, name, self._listing)
+            if found is not None:
+                return found
+        return None
+
+    def candidates(self, name: str, importer: Path) -> list[Path]:
+        """Every file `name` could be for `importer`, existing or not (absolute)."""
+        if not name or not all(part.isidentifier() for part in name.split(".")):
+            return []
+        found = []
+        for root in self.search_path(importer):
+            base = root.joinpath(*name.split("."))
+            found += [base.with_name(base.name + ".py"), base / "__init__.py"]
+        return found
+
+    def _tops(self, number: int) -> frozenset[str]:
+        """The top-level names a search path offers (modules and folders)."""
+        found = self._top_names.get(number)
+        if found is None:
+            names: set[str] = set()
+            for root in self._paths[number]:
+                names.update(
+                    n[:-3] if n.endswith(".py") else n for n in self._listing(str(root))
+                )
+            found = self._top_names[number] = frozenset(names)
+        return found
+
+    def search_id(self, importer: Path | str) -> int:
+        """A number for the search path of `importer` (files with the same one
+        resolve every name alike)."""
+        spelled = os.path.dirname(importer)
+        found = self._ids.get(spelled)
+        if found is None:
+            roots = self.search_path(importer)
+            found = self._numbers.setdefault(roots, len(self._numbers))
+            if found == len(self._paths):
+                self._paths.append(roots)
+            self._ids[spelled] = found
+        return found
+
+    def search_path(self, importer: Path | str) -> tuple[Path, ...]:
+        """Absolute folders, in the order they are searched."""
+        spelled = os.path.dirname(importer)
+        known = self._by_spelling.get(spelled)
+        if known is not None:
+            return known
+        folder = _absolute(Path(spelled or "."))
+        if folder not in self._search:
+            found: list[Path] = [*self.python_paths, self._top_parent(folder)]
+            package = _ros_package(folder)
+            if package is not None:
+                found.append(package)
+                if _is_dir(package / "src"):
+                    found.append(package / "src")
+            found += self.roots
+            self._search[folder] = tuple(dict.fromkeys(found))
+        self._by_spelling[spelled] = self._search[folder]
+        return self._search[folder]
+
+    def package_of(self, path: Path) -> str | None:
+        """The dotted package `path` is a module of; None when its folder is no
+        package (a script's folder: relative imports do not work there)."""
+        folder = _absolute(path.parent)
+        if folder not in self._packages:
+            parts: list[str] = []
+            current = folder
+            for _ in range(MAX_DEPTH):
+                if not os.path.isfile(current / "__init__.py"):
+                    break
+                parts.append(current.name)
+                if current.parent == current:
+                    break
+                current = current.parent
+            valid = parts and all(p.isidentifier() for p in parts)
+            self._packages[folder] = ".".join(reversed(parts)) if valid else None
+        return self._packages[folder]
+
+    def module_name(self, path: Path) -> str:
+        """The dotted name `path` has as a module (`my_pkg.util`)."""
+        package = self.package_of(path)
+        if path.name == "__init__.py":
+            return package or _absolute(path.parent).name
+        return f"{package}.{path.stem}" if package else path.stem
+
+    def _top_parent(self, folder: Path) -> Path:
+        """The folder above the top package that holds `folder` (or `folder`)."""
+        current = folder
+        for _ in range(MAX_DEPTH):
+            if not os.path.isfile(current / "__init__.py") or current.parent == current:
+                return current
+            current = current.parent
+        return current
+
+
+def _absolute(path: Path) -> Path:
+    try:
+        return Path(os.path.abspath(path))
+    except OSError:  # the cwd was deleted
+        return path
+
+
+@functools.lru_cache(maxsize=4096)
+def _relative(path: Path) -> Path:
+    """A found module as a relative importer's run spells paths."""
+    try:
+        return Path(os.path.relpath(path))
+    except (OSError, ValueError):
+        return path
+
+
+def _module_file(
+    root: Path, name: str, listing: Callable[[str], dict[str, bool]]
+) -> Path | None:
+    """`root/a/b.py` or `root/a/b/__init__.py`, looked up in folder listings: an
+    absent top-level name (rclpy, numpy) costs one listing of the root per run."""
+    *packages, last = name.split(".")
+    folder = str(root)
+    for part in packages:
+        if listing(folder).get(part) is not True:
+            return None
+        folder = os.path.join(folder, part)
+    entries = listing(folder)
+    if entries.get(last + ".py") is False:
+        return Path(folder, last + ".py")
+    if (
+        entries.get(last) is True
+        and listing(os.path.join(folder, last)).get("__init__.py") is False
+    ):
+        return Path(folder, last, "__init__.py")
+    return None
+
+
+def _list(folder: str) -> dict[str, bool]:
+    """A folder's sub-folders (True) and Python files (False)."""
+    found: dict[str, bool] = {}
+    try:
+        with os.scandir(folder) as entries:
+            for entry in entries:
+                try:
+                    if entry.name.endswith(".py") and entry.is_file():
+                        found[entry.name] = False
+                    elif entry.is_dir():
+                        found[entry.name] = True
+                except OSError:
+                    continue
+    except OSError:
+        pass
+    return found
+
+
+def _ros_package(folder: Path) -> Path | None:
+    current = folder
+    for _ in range(MAX_DEPTH):
+        if os.path.isfile(current / "package.xml"):
+            return current
+        if current.parent == current:
+            return None
+        current = current.parent
+    return None
+
+
+def _is_dir(path: Path) -> bool:
+    try:
+        return path.is_dir()
+    except OSError:
+        return False
+
+
+def imported_names(tree: ast.Module, package: str | None) -> list[str]:
+    """Every module name a file's import statements mention (absolute)."""
+    from robotfix.analysis.imported import absolute
+
+    found: list[str] = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            found += [alias.name for alias in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            base = (
+                absolute(package, node.level, node.module)
+                if node.level
+                else node.module
+            )
+            if base:
+                found.append(base)
+                found += [f"{base}.{a.name}" for a in node.names if a.name != "*"]
+    return found

@@ -1,0 +1,396 @@
+"""Module summaries: what an importer may see of a module of the tree, computed from
+its AST alone (never by importing it), once per run and only when some checked file
+imports it (cf. mypy's build.State and its interface hash).
+
+`Project` owns the run's summaries; `FileResolver` is the narrow interface one
+checked file's analysis asks (`analysis/imported.py`), and records which modules it
+consulted with their fingerprints, so the result cache re-checks a file exactly when
+the summary of a module it (transitively) imports changes.
+
+Cycles: while the summary of P is built, a module Q from which P can be reached by
+imports (syntactically) is not consulted. The answer depends on the import graph
+only, never on which file a worker process happened to check first, so `-j N`
+output is the same as `-j 1`.
+"""
+
+from __future__ import annotations
+
+import ast
+import hashlib
+from collections.abc import Callable
+from dataclasses import replace
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from robotfix.fs import UnreadableError, read_regular
+from robotfix.project.modules import ModuleIndex, imported_names
+
+if TYPE_CHECKING:  # the analysis is imported only when a summary is built
+    from robotfix.analysis.context import FileContext
+    from robotfix.analysis.imported import (
+        ClassSummary,
+        FunctionSummary,
+        ModuleSummary,
+    )
+    from robotfix.analysis.program import Function, Program
+    from robotfix.analysis.vc import VC, Verdict
+    from robotfix.annotations import ast as A
+    from robotfix.annotations.extract import Refinement
+    from robotfix.ros.catalog import MsgCatalog
+    from robotfix.source import SourceFile
+
+Discharge = Callable[["VC"], "Verdict"]
+ABSENT = ""  # the fingerprint recorded for a name that is no module of the tree
+
+
+class Project:
+    """The modules of one run, found through `index`, each summarised once."""
+
+    def __init__(
+        self,
+        index: ModuleIndex,
+        catalog: MsgCatalog,
+        discharge: Callable[[], Discharge],
+    ) -> None:
+        self.index = index
+        self.catalog = catalog
+        self._discharge = discharge
+        self._summaries: dict[Path, ModuleSummary | None] = {}
+        self._deps: dict[Path, dict[str, str]] = {}  # what building it consulted
+        self._types: dict[Path, frozenset[str]] = {}  # message types it looked up
+        self._parsed: dict[Path, tuple[bytes, SourceFile] | None] = {}
+        self._edges: dict[Path, frozenset[Path]] = {}
+        self._reach: dict[Path, frozenset[Path]] = {}
+        # path -> (sha256 of its bytes, fingerprint), from an earlier run's cache
+        self.known: dict[str, tuple[str, str]] = {}
+        self.built: dict[str, tuple[str, str]] = {}  # the same, for this run's
+        self._fingerprints: dict[tuple[int, str], str] = {}
+        self._context_ids: dict[str, int] = {}
+
+    def resolver(self, path: Path, building: Path | None = None) -> FileResolver:
+        return FileResolver(self, path, building)
+
+    # -- summaries -----------------------------------------------------------
+    def summary(self, path: Path) -> ModuleSummary | None:
+        if path not in self._summaries:
+            self._summaries[path] = None  # a guard; cycles are cut before (`reaches`)
+            resolver = self.resolver(path, building=path)
+            parsed = self._parse(path)
+            outer, self.catalog.touched = self.catalog.touched, set()
+            found = None
+            if parsed is not None:
+                try:
+                    found = summarize(
+                        self.index.module_name(path),
+                        parsed[1],
+                        self.catalog,
+                        self._discharge(),
+                        resolver,
+                    )
+                except Exception:  # a fault of ours: the module stays unknown to
+                    found = None  # importers; its own check reports the fault
+            self._imports(path)  # its edges are known: its text is no longer needed
+            self._parsed.pop(path, None)
+            self._types[path] = frozenset(self.catalog.touched)
+            self.catalog.touched = outer
+            self._summaries[path] = found
+            self._deps[path] = dict(resolver.consulted)
+            if found is not None and parsed is not None:
+                self.built[str(path)] = (_sha(parsed[0]), found.fingerprint)
+        return self._summaries[path]
+
+    def deps(self, path: Path) -> dict[str, str]:
+        return self._deps.get(path, {})
+
+    def types(self, path: Path) -> frozenset[str]:
+        """The message types building the summary of `path` looked up (and those
+        of the summaries it consulted): every importer depends on them too."""
+        return self._types.get(path, frozenset())
+
+    def fingerprint(self, context: str, name: str) -> str:
+        """What the summary of `name`, imported by the file `context`, is now: for
+        the result cache (a summary is built only if its file changed)."""
+        number = self._context_ids.get(context)
+        if number is None:
+            number = self._context_ids[context] = self.index.search_id(context)
+        memo = (number, name)  # the search path decides what a name is
+        if memo not in self._fingerprints:
+            self._fingerprints[memo] = self._fingerprint(context, name)
+        return self._fingerprints[memo]
+
+    def _fingerprint(self, context: str, name: str) -> str:
+        path = self.index.find(name, context)
+        if path is None:
+            return ABSENT
+        known = self.known.get(str(path)) or self.built.get(str(path))
+        if known is not None:
+            try:
+                data = read_regular(path)
+            except UnreadableError:
+                return ABSENT
+            if _sha(data) == known[0]:
+                return known[1]
+        found = self.summary(path)
+        return found.fingerprint if found is not None else ABSENT
+
+    # -- the import graph, syntactically ------------------------------------
+    def reaches(self, start: Path, goal: Path) -> bool:
+        """Whether `goal` can be reached from `start` by imports of the tree."""
+        return goal in self._reachable(start)
+
+    def _reachable(self, start: Path) -> frozenset[Path]:
+        if start not in self._reach:
+            seen = {start}
+            todo = [start]
+            while todo:
+                for nxt in sorted(self._imports(todo.pop())):
+                    if nxt not in seen:
+                        seen.add(nxt)
+                        todo.append(nxt)
+            self._reach[start] = frozenset(seen)
+        return self._reach[start]
+
+    def _imports(self, path: Path) -> frozenset[Path]:
+        if path not in self._edges:
+            parsed = self._parse(path)
+            found: set[Path] = set()
+            if parsed is not None and parsed[1].tree is not None:
+                package = self.index.package_of(path)
+                for name in imported_names(parsed[1].tree, package):
+                    parts = name.split(".")
+                    for cut in range(len(parts), 0, -1):
+                        target = self.index.find(".".join(parts[:cut]), path)
+                        if target is not None:
+                            found.add(target)
+            self._edges[path] = frozenset(found)
+        return self._edges[path]
+
+    def _parse(self, path: Path) -> tuple[bytes, SourceFile] | None:
+        from robotfix.source import SourceFile
+
+        if path not in self._parsed:
+            try:
+                data = read_regular(path)
+            except UnreadableError:
+                self._parsed[path] = None
+            else:
+                source = SourceFile.from_bytes(str(path), data)
+                self._parsed[path] = (data, source) if source.tree else None
+        return self._parsed[path]
+
+
+class FileResolver:
+    """How one file (a checked one, or a module being summarised) sees its tree."""
+
+    def __init__(self, project: Project, path: Path, building: Path | None) -> None:
+        self.project = project
+        self.path = path
+        self.building = building
+        # "<importing file>\0<name>" -> the fingerprint of what it resolved to
+        self.consulted: dict[str, str] = {}
+        self._package = project.index.package_of(path)
+
+    @property
+    def package(self) -> str | None:
+        return self._package
+
+    def module(self, name: str) -> ModuleSummary | None:
+        project = self.project
+        target = project.index.find(name, self.path)
+        key = f"{self.path}\0{name}"
+        if target is None:
+            self.consulted[key] = ABSENT
+            return None
+        if self.building is not None and project.reaches(target, self.building):
+            return None  # a cycle: not consulted, whichever side is built first
+        found = project.summary(target)
+        self.consulted[key] = found.fingerprint if found is not None else ABSENT
+        self.consulted.update(project.deps(target))
+        if project.catalog.touched is not None:
+            project.catalog.touched.update(project.types(target))
+        return found
+
+
+def summarize(
+    name: str,
+    source: SourceFile,
+    catalog: MsgCatalog,
+    discharge: Discharge,
+    resolver: FileResolver,
+) -> ModuleSummary:
+    """The summary of one parsed module: the pre-pass, and its module code run once
+    for the values of its constants (what this reports is dropped: the module is
+    checked on its own when it is part of the run)."""
+    from robotfix.analysis.constants import scan
+    from robotfix.analysis.context import (
+        BudgetExceededError,
+        FileContext,
+        build_scope,
+    )
+    from robotfix.analysis.imported import ModuleSummary
+    from robotfix.analysis.index import index_module
+    from robotfix.analysis.interpreter import Interpreter
+    from robotfix.analysis.program import collect
+    from robotfix.analysis.state import State
+    from robotfix.annotations.extract import Alias
+
+    tree = source.tree
+    assert tree is not None
+    path = source.path
+    ctx = FileContext(source, catalog, discharge, resolver)
+    ctx.record_imports(index_module(tree))
+    ctx.constants = scan(tree, ctx.index, ctx.qualname, ":=" in source.text)
+    summary = ModuleSummary(name, path)
+    try:
+        module = build_scope(ctx, "module", "<module>", tree, None)
+        program = collect(ctx, tree, module)
+        Interpreter(ctx, program, module, {}).exec_block(tree.body, State())
+    except (BudgetExceededError, RecursionError):
+        return _finish(summary)
+    summary.constants = ctx.constants.module_constants()
+    terms = {k: v.term for k, v in summary.constants.items() if v.term is not None}
+    for key, function in program.functions.items():
+        if "." in key or key.startswith("<"):
+            continue
+        summary.functions[key] = _function(ctx, program, function, terms, path)
+    for class_name in program.classes:
+        summary.classes[class_name] = _class(ctx, program, class_name, terms, path)
+    for alias_name, node in ctx.index.aliases.items():
+        if alias_name not in ctx.constants.changed_globals and _clean(ctx, node):
+            summary.aliases[alias_name] = Alias(node, ctx.names())
+    summary.reexports = _top_level_imports(tree, ctx.imports)
+    return _finish(summary)
+
+
+def _function(
+    ctx: FileContext,
+    program: Program,
+    function: Function,
+    terms: dict[str, A.Expr],
+    path: str,
+    shown: str | None = None,
+) -> FunctionSummary:
+    from robotfix.analysis.imported import FunctionSummary
+
+    scope = program.signature(ctx, function)
+    node = function.node
+    params = tuple(a.arg for a in [*node.args.posonlyargs, *node.args.args])
+    keywords = tuple(a.arg for a in node.args.kwonlyargs)
+    decls = tuple(
+        (p, _travel(scope.decls[p], terms, path))
+        for p in (*params, *keywords)
+        if p in scope.decls
+    )
+    returns = _travel(function.returns, terms, path) if function.returns else None
+    return FunctionSummary(
+        shown or function.name, params, keywords, decls, returns, function.is_method
+    )
+
+
+def _class(
+    ctx: FileContext,
+    program: Program,
+    class_name: str,
+    terms: dict[str, A.Expr],
+    path: str,
+) -> ClassSummary:
+    from robotfix.analysis.imported import ClassSummary
+
+    attributes = tuple(
+        (attr, _travel(decl, terms, path, own_only=True))
+        for attr, decl in sorted(program.attributes.get(class_name, {}).items())
+    )
+    methods = tuple(
+        (
+            key.split(".", 1)[1],
+            _function(ctx, program, function, terms, path, key),
+        )
+        for key, function in sorted(program.functions.items())
+        if key.startswith(class_name + ".") and key.count(".") == 1
+    )
+    constants = tuple(
+        (attr, value)
+        for attr in sorted(ctx.constants.class_values.get(class_name, {}))
+        if (value := ctx.constants.class_constant(class_name, attr)) is not None
+    )
+    return ClassSummary(class_name, attributes, methods, constants)
+
+
+def _travel(
+    decl: Refinement, terms: dict[str, A.Expr], path: str, own_only: bool = False
+) -> Refinement:
+    """A refinement as another module sees it: the constants of its own module put
+    in, the file that declares it named (and, for an attribute, only the parts that
+    speak of the value alone)."""
+    from robotfix.annotations import ast as A
+
+    def move(part: Refinement) -> Refinement:
+        predicate = A.substitute(part.predicate, terms)
+        if own_only:
+            predicate = A.conjoin(
+                [
+                    c
+                    for c in A.conjuncts(predicate)
+                    if all(n.name == "_" for n in A.names(c))
+                ]
+            )
+        elements = (
+            tuple(move(e) if e is not None else None for e in part.elements)
+            if part.elements is not None
+            else None
+        )
+        origin = part.origin or path
+        return replace(part, predicate=predicate, elements=elements, origin=origin)
+
+    return move(decl)
+
+
+def _clean(ctx: FileContext, node: ast.expr) -> bool:
+    """An alias travels only if it reads without a problem in its own module (its
+    problems are reported there, at its own lines)."""
+    from robotfix.annotations.extract import extract
+
+    names = ctx.names()
+    _, problems = extract(
+        node,
+        "_",
+        names.qualname,
+        names.msg_type,
+        names.source_segment,
+        names.col_of,
+        alias=names.alias,
+    )
+    return not problems
+
+
+def _top_level_imports(tree: ast.Module, imports: dict[str, str]) -> dict[str, str]:
+    found: dict[str, str] = {}
+    for statement in tree.body:
+        if isinstance(statement, (ast.Import, ast.ImportFrom)):
+            for alias in statement.names:
+                local = alias.asname or alias.name.split(".")[0]
+                if local in imports:
+                    found[local] = imports[local]
+    return found
+
+
+def _finish(summary: ModuleSummary) -> ModuleSummary:
+    content = repr(
+        (
+            summary.name,
+            summary.path,
+            sorted(summary.functions.items()),
+            sorted(summary.classes.items()),
+            sorted(summary.constants.items()),
+            sorted(
+                (k, ast.dump(a.node), a.node.lineno) for k, a in summary.aliases.items()
+            ),
+            sorted(summary.reexports.items()),
+        )
+    )
+    summary.fingerprint = hashlib.sha256(content.encode()).hexdigest()
+    return summary
+
+
+def _sha(data: bytes) -> str:
+    return hashlib.sha256(data).hexdigest()

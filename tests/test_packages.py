@@ -1,0 +1,111 @@
+"""Whole-package analysis as a run does it: the packages under tests/cases/packages/
+checked as trees (inline expectations in every file), the result cache re-checking
+exactly the importers of a helper whose summary changed, `-j` output identical to
+`-j 1`, and the `python-paths` setting."""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import pytest
+
+from robotfix.api import check_paths
+from robotfix.config import Config, load_file
+from robotfix.diagnostics import Diagnostic
+from robotfix.testing.expectations import compare, read_expectations
+
+PACKAGES = Path(__file__).parent / "cases" / "packages"
+
+
+def _by_file(found: list[Diagnostic]) -> dict[str, list[Diagnostic]]:
+    grouped: dict[str, list[Diagnostic]] = {}
+    for diag in found:
+        grouped.setdefault(str(Path(diag.path).resolve()), []).append(diag)
+    return grouped
+
+
+@pytest.mark.parametrize("name", ["ros2_pkg", "ros1_pkg", "cycle", "near_misses"])
+def test_a_checked_tree_sees_its_own_modules(name: str) -> None:
+    root = PACKAGES / name
+    result = check_paths([root], Config(root=root))
+    assert not result.internal_errors
+    grouped = _by_file(result.diagnostics)
+    problems = []
+    for path in sorted(root.rglob("*.py")):
+        expected = read_expectations(path.read_text(encoding="utf-8"))
+        found = grouped.get(str(path.resolve()), [])
+        problems += [f"{path.name}: {p}" for p in compare(expected, found)]
+    assert not problems, "\n".join(problems)
+
+
+def _copy(tmp_path: Path, *names: str) -> Path:
+    for name in names:
+        shutil.copytree(PACKAGES / name, tmp_path / name)
+    return tmp_path
+
+
+def _run(root: Path, jobs: int = 1, cache: bool = True) -> tuple[int, list[str]]:
+    result = check_paths([root], Config(root=root), jobs=jobs, use_cache=cache)
+    assert not result.internal_errors
+    shown = [
+        f"{d.path}:{d.span.line}:{d.span.col}:{d.code}:{d.message}:{d.notes}"
+        for d in result.diagnostics
+    ]
+    return result.from_cache, shown
+
+
+def test_a_changed_helper_rechecks_exactly_its_importers(tmp_path: Path) -> None:
+    root = _copy(tmp_path, "ros2_pkg")
+    files = len(list(root.rglob("*.py")))  # setup.py, __init__, 4 modules
+    cached, first = _run(root)
+    assert cached == 0 and any(":RF101:" in line for line in first)
+    assert _run(root) == (files, first)
+
+    util = root / "ros2_pkg" / "my_pkg" / "util.py"
+    # a body that changes, lines that do not: the summary is the same
+    util.write_text(util.read_text().replace("return step / 10.0", "return step / 9.0"))
+    cached, again = _run(root)
+    assert (cached, again) == (files - 1, first)  # only util.py itself
+
+    limits = root / "ros2_pkg" / "my_pkg" / "limits.py"
+    limits.write_text(limits.read_text().replace("= 0.22", "= 0.6"))
+    cached, after = _run(root)
+    # limits.py, util.py (imports it) and driver.py (imports both) are re-checked
+    assert cached == files - 3
+    assert after != first
+    assert not any("clamp_speed(0.5)" in line for line in after)  # 0.5 <= 0.6 now
+    fresh = _run(root, cache=False)[1]
+    assert after == fresh  # a cached run prints what an uncached one prints
+
+
+def test_jobs_give_the_same_output_as_one_process(tmp_path: Path) -> None:
+    root = _copy(tmp_path, "ros2_pkg", "ros1_pkg", "cycle")
+    for index in range(12):  # enough files for worker processes (run.MIN_PARALLEL)
+        (root / f"plain_{index}.py").write_text(f"VALUE = {index}\n")
+    one = _run(root, jobs=1, cache=False)[1]
+    two = _run(root, jobs=2, cache=False)[1]
+    assert one == two
+    assert sum(":RF101:" in line for line in one) >= 8
+
+
+def test_python_paths_find_modules_outside_the_checked_tree(tmp_path: Path) -> None:
+    shared = tmp_path / "shared" / "robot_limits"
+    shared.mkdir(parents=True)
+    (shared / "__init__.py").write_text("")
+    (shared / "speeds.py").write_text(
+        "from typing import Annotated\n\n"
+        "def drive(v: Annotated[float, \"Unit('m/s') and _ <= 1\"]) -> None:\n"
+        "    pass\n"
+    )
+    node = tmp_path / "node" / "main.py"
+    node.parent.mkdir()
+    node.write_text("from robot_limits.speeds import drive\n\ndrive(2.0)\n")
+    (tmp_path / "node" / "pyproject.toml").write_text(
+        '[tool.robotfix]\npython-paths = ["../shared"]\n'
+    )
+    bare = check_paths([node.parent], Config(root=node.parent))
+    assert not bare.diagnostics  # not found: unknown, as any library
+    config = load_file(node.parent / "pyproject.toml")
+    found = check_paths([node.parent], config)
+    assert [(d.code, d.span.line) for d in found.diagnostics] == [("RF101", 3)]
