@@ -412,7 +412,7 @@ class Checker:
             A.substitute(decl.predicate, lookup),
             A.substitute(decl.size, lookup),
             name,
-            Declared(f"annotation of `{name}`", self.path, decl.line),
+            Declared(f"annotation of `{name}`", decl.origin or self.path, decl.line),
         )
 
     def with_length(self, value: Value, name: str) -> Value:
