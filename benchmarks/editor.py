@@ -7,7 +7,8 @@ function in the middle of the file, so the text, and that function's proofs, dif
 from every earlier edit. Three files, generated so nothing is fetched:
 
 - unannotated 1,000-line node: the generated module with its refinements removed;
-- annotated 300-line node and annotated 1,000-line file: benchmarks/generate_annotated.py.
+- annotated 300-line node and annotated 1,000-line file:
+  benchmarks/generate_annotated.py.
 
 Cold start spawns `python -m robotfix lsp`, sends initialize, initialized and didOpen
 of the 300-line annotated node over stdio, and times the first publishDiagnostics
@@ -77,7 +78,7 @@ def edited_real(text: str, n: int) -> str:
     lines = text.splitlines(keepends=True)
     middle = len(lines) // 2
     indent = re.match(r"[ \t]*", lines[middle]).group(0)  # type: ignore[union-attr]
-    return "".join(lines[:middle] + [f"{indent}# edit {n}\n"] + lines[middle:])
+    return "".join([*lines[:middle], f"{indent}# edit {n}\n", *lines[middle:]])
 
 
 def per_edit(
