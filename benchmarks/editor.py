@@ -1,10 +1,12 @@
 """Editor latency: what one keystroke costs in `robotfix lsp`, and its cold start.
 
 Per-edit latency is measured in-process, calling `api.check_source` exactly as the
-server's `_publish` does (the server's cached catalog, the full text each time, the
+server's `_publish` does (the server's catalog, the full text each time, the
 document's proof memo), after WARMUP edits; each edit changes one literal inside one
 function in the middle of the file, so the text, and that function's proofs, differ
-from every earlier edit. Three files, generated so nothing is fetched:
+from every earlier edit. Each edit is also checked without the memo, the two in
+alternating order, so that both columns see the same machine load, and the two
+outputs are compared. Three files, generated so nothing is fetched:
 
 - unannotated 1,000-line node: the generated module with its refinements removed;
 - annotated 300-line node and annotated 1,000-line file:
@@ -12,7 +14,8 @@ from every earlier edit. Three files, generated so nothing is fetched:
 
 Cold start spawns `python -m robotfix lsp`, sends initialize, initialized and didOpen
 of the 300-line annotated node over stdio, and times the first publishDiagnostics
-(median of COLD_RUNS fresh processes).
+(median of COLD_RUNS fresh processes after one untimed start), with bytecode as an
+installed wheel has it and in this environment as it is.
 
 Usage: python benchmarks/editor.py [EDITS] [COLD_RUNS] [REAL_NODE.py ...]
 A real node given on the command line (for example navigation2's
@@ -90,32 +93,42 @@ def per_edit(
     path = folder / f"{name}.py"
     path.write_text(text)
     catalog = _server_catalog(path)
-    extra = (
-        server._check_options(path.as_uri())
-        if hasattr(server, "_check_options")
-        else {}
-    )
+    # the document's proof memo, as `server._publish` passes it (none before it was)
+    kept = {"memo": server._memo(path.as_uri())} if hasattr(server, "_memo") else {}
 
-    def once(n: int) -> tuple[float, int]:
+    def once(n: int, extra: dict[str, object]) -> tuple[float, list[object]]:
         source = (edit or edited)(text, n)  # type: ignore[operator]
         started = time.perf_counter()
-        found = api.check_source(source, str(path), catalog=catalog, **extra)
-        return time.perf_counter() - started, len(found)
+        found = api.check_source(source, str(path), catalog=catalog, **extra)  # type: ignore[arg-type]
+        return (time.perf_counter() - started) * 1000, found
 
     for n in range(WARMUP):
-        once(n)
-    times, counts = [], set()
+        once(n, kept)
+        once(n, {})
+    times: list[float] = []
+    plain: list[float] = []  # the same edits checked without the memo, paired
+    counts: set[int] = set()
+    same = True
     for n in range(WARMUP, WARMUP + edits):
-        seconds, count = once(n)
-        times.append(seconds * 1000)
-        counts.add(count)
+        pair = [(kept, times), ({}, plain)]
+        found = []
+        for extra, into in pair if n % 2 else pair[::-1]:
+            seconds, diagnostics = once(n, extra)
+            into.append(seconds)
+            found.append(diagnostics)
+        counts.add(len(found[0]))
+        same = same and repr(found[0]) == repr(found[1])
     times.sort()
+    plain.sort()
     return {
         "file": name,
         "lines": text.count("\n"),
         "p50_ms": round(statistics.median(times), 1),
         "p90_ms": round(times[int(0.9 * (len(times) - 1))], 1),
+        "p50_without_memo_ms": round(statistics.median(plain), 1),
+        "p90_without_memo_ms": round(plain[int(0.9 * (len(plain) - 1))], 1),
         "diagnostics": sorted(counts),
+        "same_output_as_without_memo": same,
     }
 
 
@@ -137,7 +150,7 @@ def _read_message(stream: object) -> dict[str, object]:
     return json.loads(stream.read(length))  # type: ignore[attr-defined,no-any-return]
 
 
-def cold_start(path: Path) -> float:
+def cold_start(path: Path, env: dict[str, str]) -> float:
     """Seconds from spawning `robotfix lsp` to its first publishDiagnostics."""
     uri = path.as_uri()
     started = time.perf_counter()
@@ -146,6 +159,7 @@ def cold_start(path: Path) -> float:
         stdin=subprocess.PIPE,
         stdout=subprocess.PIPE,
         stderr=subprocess.DEVNULL,
+        env=env,
     )
     assert proc.stdin is not None and proc.stdout is not None
     init = {
@@ -198,19 +212,29 @@ def main(edits: int, cold_runs: int, real: list[Path]) -> None:
             print(json.dumps(row), flush=True)
         node = folder / "cold_node.py"
         node.write_text(files["annotated_300"])
-        cold = sorted(cold_start(node) for _ in range(cold_runs))
-        print(
-            json.dumps(
-                {
-                    "cold_start_to_first_diagnostics_ms": round(
-                        statistics.median(cold) * 1000
-                    ),
-                    "min_ms": round(cold[0] * 1000),
-                    "max_ms": round(cold[-1] * 1000),
-                    "runs": cold_runs,
-                }
-            )
-        )
+        # as installed (a wheel has .pyc files; a checkout run with
+        # PYTHONDONTWRITEBYTECODE=1 compiles every module on each start): bytecode
+        # kept under a private prefix, written by one start before the timed ones
+        installed = {
+            **{k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"},
+            "PYTHONPYCACHEPREFIX": str(folder / "pycache"),
+        }
+        for mode, env in (("as_installed", installed), ("this_env", dict(os.environ))):
+            if cold_runs:
+                cold_start(node, env)
+            cold = sorted(cold_start(node, env) for _ in range(cold_runs))
+            if not cold:
+                return
+            row = {
+                "cold_start_to_first_diagnostics_ms": round(
+                    statistics.median(cold) * 1000
+                ),
+                "min_ms": round(cold[0] * 1000),
+                "max_ms": round(cold[-1] * 1000),
+                "runs": cold_runs,
+                "bytecode": mode,
+            }
+            print(json.dumps(row), flush=True)
 
 
 if __name__ == "__main__":
