@@ -36,7 +36,7 @@ SEVERITIES = {
 }
 INTERFACE_GLOB = "**/*.{msg,srv,action}"
 MAX_CATALOGS = 32  # catalogs kept (one per set of interface files and settings)
-MAX_MEMOS = 64  # documents whose proofs are kept across edits
+MAX_MEMOS = 8  # documents, most recently checked, whose proofs are kept
 
 server = LanguageServer(
     "robotfix", __version__, text_document_sync_kind=types.TextDocumentSyncKind.Full

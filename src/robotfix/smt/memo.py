@@ -21,7 +21,7 @@ from dataclasses import replace
 from robotfix.analysis.vc import VC, Undecided, Unproven, Verdict
 from robotfix.annotations import ast as A
 
-MAX_ENTRIES = 50_000  # about 400 VCs per 1,000 annotated lines
+MAX_ENTRIES = 5_000  # distinct VCs per document; at most about 2.7 kB each
 
 Key = tuple[object, ...]
 
