@@ -32,6 +32,7 @@ if TYPE_CHECKING:
     from robotfix.analysis.context import FileContext
     from robotfix.analysis.imported import Resolver
     from robotfix.project.summary import Project
+    from robotfix.smt.memo import ProofMemo
 from robotfix.source import SourceFile
 
 
@@ -65,27 +66,71 @@ class Discharger:
 
     prepass = True  # off only to compare verdicts with z3 alone (tests, benchmarks)
 
-    def __init__(self) -> None:
+    def __init__(self, memo: ProofMemo | None = None) -> None:
         self._session: Any = None
+        self._memo = memo  # verdicts kept across checks of one document (editor)
+        self._solved = False  # a kept verdict came from z3: the session would exist
+        self._charged = 0  # work of kept verdicts charged before a session existed
+        self._asked = False  # the last `_decide` asked z3
 
     def __call__(self, vc: VC) -> Verdict:
         from robotfix.smt.fold import fold
-        from robotfix.smt.prepass import proves
 
         folded = fold(vc.goal)
         if folded is True:
             return Proved()
         if folded is False and not vc.facts:  # no facts: no dead path to rule out
             return Violated(tuple(_constant(p) for p in vc.probes))
+        if self._memo is None:
+            return self._decide(vc)
+        from robotfix.smt.memo import key
+
+        keyed = key(vc)
+        if keyed is None:
+            return self._decide(vc)
+        found = self._memo.get(*keyed)
+        if found is not None and self._charge(found[1]):
+            self._solved = self._solved or found[2]
+            return found[0]
+        self._asked = False
+        used = self._session.used if self._session is not None else 0
+        verdict = self._decide(vc)
+        if self._asked:
+            self._memo.put(*keyed, verdict, self._session.used - used, True)
+        else:
+            self._memo.put(*keyed, verdict, 0, False)
+        return verdict
+
+    def _charge(self, work: int) -> bool:
+        """Count a kept verdict's work against the file's solver budget, as asking
+        again would; False when the budget could not pay for it (ask instead)."""
+        from robotfix.smt.budget import FILE_RLIMIT
+
+        if self._session is None:
+            if self._charged + work > FILE_RLIMIT:
+                return False
+            self._charged += work
+            return True
+        if self._session.used + work > FILE_RLIMIT:
+            return False
+        self._session.charge(work)
+        return True
+
+    def _decide(self, vc: VC) -> Verdict:
+        from robotfix.smt.prepass import proves
+
         if self.prepass and proves(vc):
             return Proved()
         if self._session is None:  # until z3 is needed, it may not be
-            decided = _without_solver(vc)
-            if decided is not None:
-                return decided
+            if not self._solved:  # as it would be without kept verdicts
+                decided = _without_solver(vc)
+                if decided is not None:
+                    return decided
             from robotfix.smt.solver import Session
 
             self._session = Session()
+            self._session.charge(self._charged)
+        self._asked = True
         verdict: Verdict = self._session.check(vc)
         return verdict
 
@@ -110,9 +155,12 @@ def check_source(
     config: Config | None = None,
     catalog: MsgCatalog | None = None,
     project: Project | None = None,
+    memo: ProofMemo | None = None,
 ) -> list[Diagnostic]:
     """Diagnostics for one Python source text; the modules it imports are found
-    beside `path` and in its package (`make_project`), as a run finds them."""
+    beside `path` and in its package (`make_project`), as a run finds them. With a
+    `memo` (the editor keeps one per document), verdicts of VCs an earlier check
+    proved are not asked again (`smt.memo`)."""
     config = config or Config()
     if catalog is None:
         catalog = MsgCatalog(
@@ -124,7 +172,7 @@ def check_source(
     project = project or make_project([], config, catalog)
     resolver = project.resolver(Path(path))
     source = SourceFile.from_text(path, text)
-    return finish(_check(source, catalog, stubs=stubs, resolver=resolver))
+    return finish(_check(source, catalog, stubs=stubs, resolver=resolver, memo=memo))
 
 
 def make_project(roots: list[Path], config: Config, catalog: MsgCatalog) -> Project:
@@ -229,10 +277,11 @@ def _check(
     ignored: frozenset[str] = frozenset(),
     stubs: StubSet | None = None,
     resolver: Resolver | None = None,
+    memo: ProofMemo | None = None,
 ) -> list[Diagnostic]:
     if source.problem is not None:
         return [source.problem]
-    ctx = _analyze(source, catalog, stubs=stubs, resolver=resolver)
+    ctx = _analyze(source, catalog, stubs=stubs, resolver=resolver, memo=memo)
     kept = [
         d
         for d in ctx.diagnostics
@@ -250,13 +299,14 @@ def _analyze(
     flows: bool = False,
     stubs: StubSet | None = None,
     resolver: Resolver | None = None,
+    memo: ProofMemo | None = None,
 ) -> FileContext:
     """Run the analysis on a parsed file; a pathological file stops with RF902 and
     keeps what was found before."""
     from robotfix.analysis.context import BudgetExceededError, FileContext
     from robotfix.analysis.interpreter import analyze_module
 
-    ctx = FileContext(source, catalog, Discharger(), resolver)
+    ctx = FileContext(source, catalog, Discharger(memo), resolver)
     ctx.stubs = stubs or stub_set()
     ctx.hovers = [] if hovers else None
     if flows:

@@ -32,6 +32,7 @@ from robotfix.analysis.state import State
 from robotfix.analysis.values import Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.units import Unit, is_frame, named
+from robotfix.astwalk import walk
 from robotfix.messages import Declared
 from robotfix.ros.frames_model import (
     FRAMED_FIELDS,
@@ -378,7 +379,7 @@ def facts(ctx: FileContext) -> FrameFacts:
     if ctx.frame_facts is None:
         counts: Counter[str] = Counter()
         tree = ctx.source.tree
-        for item in ast.walk(tree) if tree is not None else ():
+        for item in walk(tree) if tree is not None else ():  # once per file
             targets: list[ast.expr] = []
             if isinstance(item, ast.Assign):
                 targets = list(item.targets)
@@ -391,7 +392,7 @@ def facts(ctx: FileContext) -> FrameFacts:
             ):
                 counts["*"] += 2  # any attribute may change: none is once-bound
             for target in targets:
-                for part in ast.walk(target):
+                for part in walk(target):
                     if isinstance(part, ast.Attribute):
                         counts[part.attr] += 1
         ctx.frame_facts = FrameFacts(counts)

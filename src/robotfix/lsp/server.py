@@ -27,6 +27,7 @@ from pygls.uris import to_fs_path
 from robotfix import __version__, api, config, dependents, discovery, fs, source
 from robotfix.diagnostics import Diagnostic, Severity
 from robotfix.ros.catalog import MsgCatalog
+from robotfix.smt.memo import ProofMemo
 
 SEVERITIES = {
     Severity.ERROR: types.DiagnosticSeverity.Error,
@@ -35,6 +36,7 @@ SEVERITIES = {
 }
 INTERFACE_GLOB = "**/*.{msg,srv,action}"
 MAX_CATALOGS = 32  # catalogs kept (one per set of interface files and settings)
+MAX_MEMOS = 8  # documents, most recently checked, whose proofs are kept
 
 server = LanguageServer(
     "robotfix", __version__, text_document_sync_kind=types.TextDocumentSyncKind.Full
@@ -42,6 +44,9 @@ server = LanguageServer(
 # interface files and settings -> (their stat stamps and open buffers, the catalog)
 _catalogs: dict[tuple[object, ...], tuple[tuple[object, ...], MsgCatalog]] = {}
 _INSTALLED = discovery.install_space()
+# document URI -> its verdicts by normalised VC, so a keystroke in one function does
+# not prove the others again (`smt.memo`); least recently checked documents go first
+_memos: dict[str, ProofMemo] = {}
 
 
 def serve() -> None:
@@ -80,6 +85,14 @@ def _catalog(ls: LanguageServer, path: Path) -> MsgCatalog:
         _catalogs.clear()
     _catalogs[key] = (stamp, catalog)
     return catalog
+
+
+def _memo(uri: str) -> ProofMemo:
+    memo = _memos.pop(uri, None) or ProofMemo()
+    _memos[uri] = memo  # the most recent last
+    while len(_memos) > MAX_MEMOS:
+        del _memos[next(iter(_memos))]
+    return memo
 
 
 def _open_texts(ls: LanguageServer, files: list[Path]) -> dict[Path, str]:
@@ -136,7 +149,9 @@ def _publish(ls: LanguageServer, uri: str) -> None:
         if _is_interface(path):
             found = api.catalog_problems(_catalog(ls, path))
         else:
-            found = api.check_source(text, str(path), catalog=_catalog(ls, path))
+            found = api.check_source(
+                text, str(path), catalog=_catalog(ls, path), memo=_memo(uri)
+            )
     except Exception as err:  # never take the editor session down
         _log_error(ls, f"robotfix: internal error on {path}: {err}")
         return

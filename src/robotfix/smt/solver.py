@@ -21,13 +21,10 @@ import z3
 from robotfix.analysis.vc import VC, Proved, Undecided, Unproven, Verdict, Violated
 from robotfix.annotations import ast as A
 from robotfix.annotations.numbers import shown_as_infinity
+from robotfix.smt.budget import FILE_RLIMIT as FILE_RLIMIT
+from robotfix.smt.budget import RLIMIT as RLIMIT
 from robotfix.smt.encode import Encoder
 
-# Work budgets, not wall-clock time: the same input stops at the same point on any
-# machine. Linear problems of a node take a few thousand units. RLIMIT bounds one
-# question, FILE_RLIMIT all the questions of one file (a few seconds of z3 at most).
-RLIMIT = 2_000_000
-FILE_RLIMIT = 20_000_000
 # Two of z3's nonlinear heuristics hardly count their work: Groebner bases and Horner
 # schemes ran for minutes within a small rlimit. Without them (and with products of
 # high degree left out by the encoder) nonlinear questions stay bounded, and the ones
@@ -58,6 +55,7 @@ class Session:
         self._rlimit = rlimit
         self._budget = FILE_RLIMIT if budget is None else budget
         self._used = 0
+        self._charged = 0  # units counted by `charge`, not spent by this context
         self._limit = rlimit
         self._facts: list[object] = []
         self._approximated: list[bool] = []  # per fact asserted
@@ -66,6 +64,17 @@ class Session:
     @property
     def exhausted(self) -> bool:
         return self._used >= self._budget
+
+    @property
+    def used(self) -> int:
+        """The units of work the file's questions have spent, charged ones included."""
+        return self._used
+
+    def charge(self, units: int) -> None:
+        """Count `units` of work as spent: a verdict kept from an earlier check of
+        the file (`smt.memo`) costs what asking for it cost."""
+        self._used += units
+        self._charged += units
 
     def check(self, vc: VC) -> Verdict:
         if self.exhausted:
@@ -127,7 +136,7 @@ class Session:
             return z3.unknown
         self._solver.set("rlimit", self._limit)
         result = self._solver.check(assumption)
-        self._used = max(self._used, _work_done(self._solver))
+        self._used = max(self._used, _work_done(self._solver) + self._charged)
         return result
 
     def _undecided(self) -> Undecided:

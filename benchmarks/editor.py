@@ -1,0 +1,253 @@
+"""Editor latency: what one keystroke costs in `robotfix lsp`, and its cold start.
+
+Per-edit latency is measured in-process, calling `api.check_source` exactly as the
+server's `_publish` does (the server's catalog, the full text each time, the
+document's proof memo), after WARMUP edits; each edit changes one literal inside one
+function in the middle of the file, so the text, and that function's proofs, differ
+from every earlier edit. Each edit is also checked without the memo, the two in
+alternating order, so that both columns see the same machine load, and the two
+outputs are compared. Wall and CPU (process) times are printed: on a shared machine
+the CPU time is the one that does not depend on the other jobs. Three files,
+generated so nothing is fetched:
+
+- unannotated 1,000-line node: the generated module with its refinements removed;
+- annotated 300-line node and annotated 1,000-line file:
+  benchmarks/generate_annotated.py.
+
+Cold start spawns `python -m robotfix lsp`, sends initialize, initialized and didOpen
+of the 300-line annotated node over stdio, and times the first publishDiagnostics
+(median of COLD_RUNS fresh processes after one untimed start), with bytecode as an
+installed wheel has it and in this environment as it is.
+
+Usage: python benchmarks/editor.py [EDITS] [COLD_RUNS] [REAL_NODE.py ...]
+A real node given on the command line (for example navigation2's
+nav2_simple_commander/robot_navigator.py, 1,294 lines) is measured too, with a comment
+line edited at its middle.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+from generate_annotated import generate
+
+WARMUP = 5
+
+
+def unannotated(lines: int) -> str:
+    """The generated module without a refinement: plain floats and ints."""
+    text = generate(lines)
+    text = re.sub(r'Annotated\[(\w+), "[^"]*"\]', r"\1", text)
+    return text.replace("from typing import Annotated\n", "")
+
+
+def edited(text: str, n: int) -> str:
+    """The text with a keystroke inside one function in the middle: one literal of
+    its body (a value that reaches a refinement) changed."""
+    blocks = text.split("\ndef on_scan_")
+    middle = len(blocks) // 2
+    block = blocks[middle]
+    value = f"0.{500 + n % 400}"  # stays a valid distance, changes every edit
+    blocks[middle] = block.replace("= 0.5\n", f"= {value}\n", 1)
+    return "\ndef on_scan_".join(blocks)
+
+
+def _server_catalog(path: Path) -> object:
+    """The catalog `server._catalog` builds for a document no other buffer affects."""
+    from robotfix import api, config
+    from robotfix.lsp import server
+    from robotfix.ros.catalog import MsgCatalog
+
+    settings = config.load(path)
+    files = api.interface_files(server._interface_folders(path, settings))
+    return MsgCatalog(
+        files,
+        rep103=settings.rep103,
+        unit_suffixes=settings.unit_suffixes,
+        distro=settings.ros_distro,
+        texts={},
+        installed=server._INSTALLED,
+    )
+
+
+def edited_real(text: str, n: int) -> str:
+    """A real node with a keystroke in a comment line inserted at its middle."""
+    lines = text.splitlines(keepends=True)
+    middle = len(lines) // 2
+    indent = re.match(r"[ \t]*", lines[middle]).group(0)  # type: ignore[union-attr]
+    return "".join([*lines[:middle], f"{indent}# edit {n}\n", *lines[middle:]])
+
+
+def per_edit(
+    name: str, text: str, edits: int, folder: Path, edit: object = None
+) -> dict[str, object]:
+    from robotfix import api
+    from robotfix.lsp import server
+
+    path = folder / f"{name}.py"
+    path.write_text(text)
+    catalog = _server_catalog(path)
+    # the document's proof memo, as `server._publish` passes it (none before it was)
+    kept = {"memo": server._memo(path.as_uri())} if hasattr(server, "_memo") else {}
+
+    def once(n: int, extra: dict[str, object]) -> tuple[float, float, list[object]]:
+        source = (edit or edited)(text, n)  # type: ignore[operator]
+        started, cpu = time.perf_counter(), time.process_time()
+        found = api.check_source(source, str(path), catalog=catalog, **extra)  # type: ignore[arg-type]
+        wall = (time.perf_counter() - started) * 1000
+        return wall, (time.process_time() - cpu) * 1000, found
+
+    for n in range(WARMUP):
+        once(n, kept)
+        once(n, {})
+    times: list[float] = []
+    plain: list[float] = []  # the same edits checked without the memo, paired
+    cpu_times: list[float] = []
+    cpu_plain: list[float] = []
+    counts: set[int] = set()
+    same = True
+    for n in range(WARMUP, WARMUP + edits):
+        pair = [(kept, times, cpu_times), ({}, plain, cpu_plain)]
+        found = []
+        for extra, into, cpu_into in pair if n % 2 else pair[::-1]:
+            seconds, cpu, diagnostics = once(n, extra)
+            into.append(seconds)
+            cpu_into.append(cpu)
+            found.append(diagnostics)
+        counts.add(len(found[0]))
+        same = same and repr(found[0]) == repr(found[1])
+    times.sort()
+    plain.sort()
+    return {
+        "file": name,
+        "lines": text.count("\n"),
+        "p50_ms": round(statistics.median(times), 1),
+        "p90_ms": round(times[int(0.9 * (len(times) - 1))], 1),
+        "p50_without_memo_ms": round(statistics.median(plain), 1),
+        "p90_without_memo_ms": round(plain[int(0.9 * (len(plain) - 1))], 1),
+        "cpu_p50_ms": round(statistics.median(cpu_times), 1),
+        "cpu_p50_without_memo_ms": round(statistics.median(cpu_plain), 1),
+        "diagnostics": sorted(counts),
+        "same_output_as_without_memo": same,
+    }
+
+
+def _frame(message: dict[str, object]) -> bytes:
+    body = json.dumps(message).encode()
+    return b"Content-Length: %d\r\n\r\n" % len(body) + body
+
+
+def _read_message(stream: object) -> dict[str, object]:
+    length = 0
+    while True:
+        line = stream.readline()  # type: ignore[attr-defined]
+        if not line:
+            raise EOFError("the server closed its output")
+        if line in (b"\r\n", b"\n"):
+            break
+        if line.lower().startswith(b"content-length:"):
+            length = int(line.split(b":")[1])
+    return json.loads(stream.read(length))  # type: ignore[attr-defined,no-any-return]
+
+
+def cold_start(path: Path, env: dict[str, str]) -> float:
+    """Seconds from spawning `robotfix lsp` to its first publishDiagnostics."""
+    uri = path.as_uri()
+    started = time.perf_counter()
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "robotfix", "lsp"],
+        stdin=subprocess.PIPE,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.DEVNULL,
+        env=env,
+    )
+    assert proc.stdin is not None and proc.stdout is not None
+    init = {
+        "processId": os.getpid(),
+        "rootUri": path.parent.as_uri(),
+        "capabilities": {},
+    }
+    proc.stdin.write(
+        _frame({"jsonrpc": "2.0", "id": 1, "method": "initialize", "params": init})
+    )
+    proc.stdin.write(_frame({"jsonrpc": "2.0", "method": "initialized", "params": {}}))
+    document = {
+        "uri": uri,
+        "languageId": "python",
+        "version": 1,
+        "text": path.read_text(),
+    }
+    proc.stdin.write(
+        _frame(
+            {
+                "jsonrpc": "2.0",
+                "method": "textDocument/didOpen",
+                "params": {"textDocument": document},
+            }
+        )
+    )
+    proc.stdin.flush()
+    try:
+        while True:
+            message = _read_message(proc.stdout)
+            if message.get("method") == "textDocument/publishDiagnostics":
+                return time.perf_counter() - started
+    finally:
+        proc.kill()
+        proc.wait()
+
+
+def main(edits: int, cold_runs: int, real: list[Path]) -> None:
+    files = {
+        "unannotated_1000": unannotated(1000),
+        "annotated_300": generate(300),
+        "annotated_1000": generate(1000),
+    }
+    with tempfile.TemporaryDirectory() as tmp:
+        folder = Path(tmp)
+        for name, text in files.items():
+            print(json.dumps(per_edit(name, text, edits, folder)), flush=True)
+        for node in real:
+            row = per_edit(node.stem, node.read_text(), edits, folder, edited_real)
+            print(json.dumps(row), flush=True)
+        node = folder / "cold_node.py"
+        node.write_text(files["annotated_300"])
+        # as installed (a wheel has .pyc files; a checkout run with
+        # PYTHONDONTWRITEBYTECODE=1 compiles every module on each start): bytecode
+        # kept under a private prefix, written by one start before the timed ones
+        installed = {
+            **{k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"},
+            "PYTHONPYCACHEPREFIX": str(folder / "pycache"),
+        }
+        for mode, env in (("as_installed", installed), ("this_env", dict(os.environ))):
+            if cold_runs:
+                cold_start(node, env)
+            cold = sorted(cold_start(node, env) for _ in range(cold_runs))
+            if not cold:
+                return
+            row = {
+                "cold_start_to_first_diagnostics_ms": round(
+                    statistics.median(cold) * 1000
+                ),
+                "min_ms": round(cold[0] * 1000),
+                "max_ms": round(cold[-1] * 1000),
+                "runs": cold_runs,
+                "bytecode": mode,
+            }
+            print(json.dumps(row), flush=True)
+
+
+if __name__ == "__main__":
+    main(
+        int(sys.argv[1]) if len(sys.argv) > 1 else 30,
+        int(sys.argv[2]) if len(sys.argv) > 2 else 5,
+        [Path(a) for a in sys.argv[3:]],
+    )
