@@ -306,7 +306,10 @@ def test_an_entry_with_wrong_types_is_rebuilt_never_a_crash(
     assert result.from_cache == 0  # rebuilt
     for fmt in FORMATS:
         cli.render(result, fmt, 1, 0)  # every renderer copes
-    assert json.loads(cache.read_text()) == pristine
+    rebuilt = json.loads(cache.read_text())
+    # the stat of each file hashed: its mtime is trusted only once it is not recent
+    rebuilt.pop("stats", None)
+    assert rebuilt == {k: v for k, v in pristine.items() if k != "stats"}
 
 
 @pytest.mark.parametrize(
