@@ -237,6 +237,7 @@ class MsgCatalog:
         self._types_of: dict[str, tuple[str, ...]] = {}  # user file -> its types
         # fingerprint_types' memo: each type's message-typed fields
         self._children: dict[str, tuple[str, ...]] = {}
+        self._combined: dict[tuple[str, ...], str] = {}  # names asked -> digest
 
     # -- public --------------------------------------------------------------
     def lookup(self, name: str) -> MsgSpec | None:
@@ -305,6 +306,10 @@ class MsgCatalog:
         every file that declares it), then the same for the message types of its
         fields, transitively; a type that is not found counts as missing, so a file
         that later resolves it changes the digest."""
+        asked = tuple(sorted(set(names)))
+        known = self._combined.get(asked)
+        if known is not None:  # many files use the same few types
+            return known
         if self._resolved_digests is None:
             self._resolved_digests = {}
         digests = self._resolved_digests
@@ -332,7 +337,9 @@ class MsgCatalog:
         finally:
             self.touched = saved
         lines = sorted(f"{key} {digests[key]}" for key in seen)
-        return hashlib.sha256("\n".join(lines).encode()).hexdigest()
+        combined = hashlib.sha256("\n".join(lines).encode()).hexdigest()
+        self._combined[asked] = combined  # the digests it is made of never change
+        return combined
 
     def digest_table(self) -> dict[str, tuple[str, tuple[str, ...]]]:
         """What `fingerprint_types` worked out so far: each type's digest and the
