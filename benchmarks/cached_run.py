@@ -7,10 +7,11 @@ Python) into a folder under /tmp, then runs `robotfix check` on it as a user wou
 each in a fresh process: cold (empty cache), warm (unchanged tree), warm after
 `touch`ing every file (same bytes, new mtimes), and warm after editing one helper
 module that 14 nodes of each copy import (nav2_simple_commander's
-robot_navigator.py, in the first copy only). Prints wall and CPU seconds, how
-many files were re-checked, and whether each output equals the cold run's (the
-edit adds no diagnostic, so all outputs must be equal). Nothing is committed or
-downloaded by this script; the tree is removed at the end unless --tree is given.
+robot_navigator.py, in the first copy only). Prints wall and CPU seconds
+(medians, then each run's CPU), how many files were re-checked, and whether each
+output equals the cold run's (the edit adds no diagnostic: all must be equal).
+Nothing is committed or downloaded by this script; the tree is removed at the end
+unless --tree is given.
 """
 
 from __future__ import annotations
@@ -140,8 +141,9 @@ def report(name: str, runs: list[dict[str, float]], files: float, same: bool) ->
     wall = sorted(r["wall"] for r in runs)[len(runs) // 2]
     cpu = sorted(r["cpu"] for r in runs)[len(runs) // 2]
     rechecked = "/".join(str(int(r["rechecked"])) for r in runs)
+    each = "/".join(f"{r['cpu']:.2f}" for r in runs)
     print(
-        f"{name:42s} wall {wall:6.2f} s  cpu {cpu:6.2f} s  "
+        f"{name:42s} wall {wall:6.2f} s  cpu {cpu:6.2f} s ({each})  "
         f"re-checked {rechecked} of {int(files)} .py  "
         f"output {'identical to cold' if same else 'DIFFERS from cold'}"
     )

@@ -95,7 +95,7 @@ class ResultCache:
         # file -> [size, mtime_ns, inode, device, sha256, mentions]: `sha`'s memory
         self._stats: dict[str, list[Any]] = {}
         self._seen_stats: dict[str, list[Any]] = {}  # this run's, saved
-        self._bytes: dict[str, bytes] = {}  # read by `sha`, until `take`n
+        self._bytes: dict[str, bytes] = {}  # the last file `sha` read, to `take`
         self._params: tuple[str, list[Any]] | None = None
         self._catalog: dict[str, Any] | None = None
         self._dirty = False
@@ -169,7 +169,7 @@ class ResultCache:
             data = fs.read_regular(path)
         except fs.UnreadableError:
             return None
-        self._bytes[key] = data
+        self._bytes = {key: data}  # the last file read only: memory stays flat
         mentions = sum(1 << i for i, w in enumerate(MENTION_WORDS) if w in data)
         record = [*stamp, hashlib.sha256(data).hexdigest(), mentions]
         if len(data) != st.st_size or time.time_ns() - st.st_mtime_ns < RACY_NS:
