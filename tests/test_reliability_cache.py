@@ -306,7 +306,13 @@ def test_an_entry_with_wrong_types_is_rebuilt_never_a_crash(
     assert result.from_cache == 0  # rebuilt
     for fmt in FORMATS:
         cli.render(result, fmt, 1, 0)  # every renderer copes
-    assert json.loads(cache.read_text()) == pristine
+    rebuilt = json.loads(cache.read_text())
+    # what is kept by stat depends on the clock: a file's mtime, or the interface
+    # files' (the catalog's digests), is trusted only once it is not recent
+    timed = ("stats", "catalog")
+    assert {k: v for k, v in rebuilt.items() if k not in timed} == {
+        k: v for k, v in pristine.items() if k not in timed
+    }
 
 
 @pytest.mark.parametrize(

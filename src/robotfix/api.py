@@ -14,7 +14,6 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from robotfix import messages, rules
-from robotfix.analysis.vc import VC, Proved, Unproven, Verdict, Violated
 from robotfix.annotations import ast as A
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic, Severity
@@ -28,9 +27,10 @@ from robotfix.discovery import ros_interface_folders as ros_interface_folders
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.stubs.load import StubSet, stub_set
 
-if TYPE_CHECKING:
+if TYPE_CHECKING:  # the analysis is imported only when a file is checked
     from robotfix.analysis.context import FileContext
     from robotfix.analysis.imported import Resolver
+    from robotfix.analysis.vc import VC, Verdict
     from robotfix.project.summary import Project
     from robotfix.smt.memo import ProofMemo
 from robotfix.source import SourceFile
@@ -74,6 +74,7 @@ class Discharger:
         self._asked = False  # the last `_decide` asked z3
 
     def __call__(self, vc: VC) -> Verdict:
+        from robotfix.analysis.vc import Proved, Violated
         from robotfix.smt.fold import fold
 
         folded = fold(vc.goal)
@@ -139,6 +140,7 @@ def _without_solver(vc: VC) -> Verdict | None:
     """A VC whose boolean skeleton decides it (`smt.propositional`): most questions
     of whether a path can run, so that z3 is loaded for a file only when a VC
     needs numbers."""
+    from robotfix.analysis.vc import Proved, Unproven
     from robotfix.smt.propositional import satisfiable
 
     negated = satisfiable([*vc.facts, A.Unary("not", vc.goal)])
@@ -370,19 +372,38 @@ def catalog_problems(catalog: MsgCatalog) -> list[Diagnostic]:
     ] + _contradictions(catalog)
 
 
-def interface_problems(catalog: MsgCatalog, used: set[str]) -> list[Diagnostic]:
+def interface_problems(
+    catalog: MsgCatalog,
+    used: set[str],
+    known: list[tuple[Diagnostic, str | None, tuple[str, ...]]] | None = None,
+) -> list[Diagnostic]:
     """The problems of the user's interface files, as a run reports them: with
     their rule's severity when a checked file used (looked up) a type that file
     defines, else as notes, so an interface file the checked code never uses cannot
     fail the run; a field of a package that is nowhere to be found is a warning
-    (`messages.interface_problem`)."""
+    (`messages.interface_problem`). `known`: `raw_interface_problems` of the same
+    interface files, from the result cache (then the catalog is not loaded)."""
+    found_all = raw_interface_problems(catalog) if known is None else known
+    return [
+        messages.interface_problem(
+            found, used=bool(used.intersection(types)), absent_package=absent
+        )
+        for found, absent, types in found_all
+    ]
+
+
+def raw_interface_problems(
+    catalog: MsgCatalog,
+) -> list[tuple[Diagnostic, str | None, tuple[str, ...]]]:
+    """Each problem of the catalog, the package it found absent (if so), and the
+    types its file defines: what `interface_problems` needs of the catalog."""
     found_all = catalog_problems(catalog)  # loads the catalog
     absent = {(p.path, p.line, p.col): p.absent_package for p in catalog.problems}
     return [
-        messages.interface_problem(
+        (
             found,
-            used=bool(used.intersection(catalog.types_in(found.path))),
-            absent_package=absent.get((found.path, found.span.line, found.span.col)),
+            absent.get((found.path, found.span.line, found.span.col)),
+            catalog.types_in(found.path),
         )
         for found in found_all
     ]

@@ -11,6 +11,14 @@ changed, and a cached run prints what an uncached one prints, byte for byte.
 The fingerprints of summaries are kept too, by the hash of their file's bytes, so
 that a cached run over an unchanged tree parses nothing.
 
+Stat fast path (as ruff, mypy and git do): the hash of every file a run read is
+kept with its size, mtime_ns, inode and device, and a file whose stat is unchanged
+is not read again; any difference (a `touch`, an editor's atomic save) costs one
+read and hash, never a wrong result. A file modified within `RACY_NS` of being
+hashed is not trusted by stat (git's "racily clean" rule): it could change again
+within the same mtime tick. The parameter files' diagnostics (`paramcheck.py`) are
+kept too, under a key that hashes every input they depend on (`params_key`).
+
 A missing, corrupt, foreign or ill-typed cache is ignored and rebuilt; a cache that
 cannot be written only costs speed. `results.json` is read only if it is a regular
 file (`fs.read_regular`) and written atomically through a fresh temporary file
@@ -24,6 +32,7 @@ import hashlib
 import json
 import os
 import sys
+import time
 from collections.abc import Iterable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -38,7 +47,14 @@ from robotfix.stubs.load import stub_set
 if TYPE_CHECKING:
     from robotfix.project.summary import Project
 
-FORMAT = 3
+# an interface problem before `messages.interface_problem`: its diagnostic, the
+# package no type of which is known (if so), the types of its file
+InterfaceProblem = tuple[Diagnostic, "str | None", tuple[str, ...]]
+FORMAT = 4
+RACY_NS = 2_000_000_000  # a file changed this recently is hashed, not trusted by stat
+# which parameter-related words a file mentions (`paramcheck.MENTIONS`, all layouts),
+# kept with its hash so that an unchanged file need not be read to know
+MENTION_WORDS = (b"declare_parameter", b"get_parameter", b"ParamListener", b"rospy")
 MAX_BYTES = 512 * 1024 * 1024  # results.json of ~4 million files
 MAX_INT = 2**31  # lines and columns; anything larger is not ours
 GITIGNORE = b"# Created by robotfix\n*\n"
@@ -76,6 +92,12 @@ class ResultCache:
         self._entries: dict[str, Any] = {}
         # module file -> [sha256 of its bytes, fingerprint of its summary]
         self.summaries: dict[str, tuple[str, str]] = {}
+        # file -> [size, mtime_ns, inode, device, sha256, mentions]: `sha`'s memory
+        self._stats: dict[str, list[Any]] = {}
+        self._seen_stats: dict[str, list[Any]] = {}  # this run's, saved
+        self._bytes: dict[str, bytes] = {}  # the last file `sha` read, to `take`
+        self._params: tuple[str, list[Any]] | None = None
+        self._catalog: dict[str, Any] | None = None
         self._dirty = False
         try:
             data = json.loads(fs.read_regular(self.path, MAX_BYTES, follow=False))
@@ -96,17 +118,141 @@ class ResultCache:
                     and len(v) == 2
                     and all(isinstance(x, str) for x in v)
                 }
+            stats = data.get("stats")
+            if isinstance(stats, dict):
+                self._stats = {k: v for k, v in stats.items() if _valid_stat(v)}
+            found_catalog = data.get("catalog")
+            if isinstance(found_catalog, dict):
+                self._catalog = found_catalog
+            params = data.get("params")
+            if (
+                isinstance(params, list)
+                and len(params) == 2
+                and isinstance(params[0], str)
+                and isinstance(params[1], list)
+                and all(_valid_diagnostic(d) for d in params[1])
+            ):
+                self._params = (params[0], params[1])
+
+    # -- the stat fast path ----------------------------------------------------
+    def sha(self, path: Path) -> str | None:
+        """The sha256 of the file's bytes; from the stat when it is unchanged since
+        the hash was taken, else read (then `take` hands the bytes over). None when
+        the file cannot be read (`fs.read_regular` says why)."""
+        known = self._stat_record(path)
+        return known[4] if known is not None else None
+
+    def mentions(self, path: Path) -> int | None:
+        """Which of `MENTION_WORDS` the file contains (a bit each), as `sha`."""
+        known = self._stat_record(path)
+        return known[5] if known is not None else None
+
+    def take(self, path: Path) -> bytes:
+        """The bytes `sha` read (once), or the file's bytes now."""
+        data = self._bytes.pop(entry_key(path), None)
+        return data if data is not None else fs.read_regular(path)
+
+    def _stat_record(self, path: Path) -> list[Any] | None:
+        key = entry_key(path)
+        if key in self._seen_stats:
+            return self._seen_stats[key]
+        try:
+            st = os.stat(path)
+        except (OSError, ValueError):
+            return None
+        stamp = [st.st_size, st.st_mtime_ns, st.st_ino, st.st_dev]
+        known = self._stats.get(key)
+        if known is not None and known[:4] == stamp:
+            self._seen_stats[key] = known
+            return known
+        try:
+            data = fs.read_regular(path)
+        except fs.UnreadableError:
+            return None
+        self._bytes = {key: data}  # the last file read only: memory stays flat
+        mentions = sum(1 << i for i, w in enumerate(MENTION_WORDS) if w in data)
+        record = [*stamp, hashlib.sha256(data).hexdigest(), mentions]
+        if len(data) != st.st_size or time.time_ns() - st.st_mtime_ns < RACY_NS:
+            record[1] = -1  # changed while read, or too recent: never matches
+        self._seen_stats[key] = record
+        self._dirty = True
+        return record
+
+    # -- the catalog -------------------------------------------------------------
+    def catalog(
+        self, key: str
+    ) -> tuple[dict[str, tuple[str, tuple[str, ...]]], list[InterfaceProblem]] | None:
+        """An earlier run's catalog digests and interface problems, for the same
+        interface files (`key`); None when there is none or it does not read."""
+        raw = self._catalog
+        if raw is None or raw.get("key") != key:
+            return None
+        digests, problems = raw.get("digests"), raw.get("problems")
+        if not (isinstance(digests, dict) and isinstance(problems, list)):
+            return None
+        table: dict[str, tuple[str, tuple[str, ...]]] = {}
+        for name, value in digests.items():
+            if not (
+                isinstance(value, list)
+                and len(value) == 2
+                and isinstance(value[0], str)
+                and isinstance(value[1], list)
+                and all(isinstance(t, str) for t in value[1])
+            ):
+                return None
+            table[name] = (value[0], tuple(value[1]))
+        found: list[InterfaceProblem] = []
+        for item in problems:
+            if not (
+                isinstance(item, list)
+                and len(item) == 3
+                and _valid_diagnostic(item[0])
+                and (item[1] is None or isinstance(item[1], str))
+                and isinstance(item[2], list)
+                and all(isinstance(t, str) for t in item[2])
+            ):
+                return None
+            found.append((_load(item[0]), item[1], tuple(item[2])))
+        return table, found
+
+    def put_catalog(
+        self,
+        key: str,
+        table: dict[str, tuple[str, tuple[str, ...]]],
+        problems: list[InterfaceProblem],
+    ) -> None:
+        raw = {
+            "key": key,
+            "digests": {k: [v[0], list(v[1])] for k, v in sorted(table.items())},
+            "problems": [
+                [_dump(d), absent, list(types)] for d, absent, types in problems
+            ],
+        }
+        if raw != self._catalog:
+            self._catalog = raw
+            self._dirty = True
+
+    # -- parameter files -------------------------------------------------------
+    def params(self, key: str) -> list[Diagnostic] | None:
+        if self._params is None or self._params[0] != key:
+            return None
+        return [_load(d) for d in self._params[1]]
+
+    def put_params(self, key: str, diagnostics: list[Diagnostic]) -> None:
+        self._params = (key, [_dump(d) for d in diagnostics])
+        self._dirty = True
 
     def get(
         self,
         path: Path,
-        data: bytes,
+        data: bytes | str,
         config: Config,
         catalog: MsgCatalog,
         project: Project | None = None,
     ) -> list[Diagnostic] | None:
-        """The cached diagnostics of this file, or None when they may differ from a
-        fresh check (or the entry is not exactly what `put` writes)."""
+        """The cached diagnostics of this file (`data`: its bytes, or their sha256
+        from `sha`), or None when they may differ from a fresh check (or the entry
+        is not exactly what `put` writes)."""
         entry = self._entries.get(entry_key(path))
         if not isinstance(entry, dict) or not _valid_entry(entry):
             return None
@@ -173,6 +319,15 @@ class ResultCache:
         ]
         for name in stale:
             del self._entries[name]
+        dropped = [
+            name
+            for name in self._stats
+            if name not in self._seen_stats
+            and (name.startswith(prefixes) or not os.path.isfile(name))
+        ]
+        for name in dropped:
+            del self._stats[name]
+        stale += dropped
         gone = [name for name in self.summaries if not os.path.isfile(name)]
         for name in gone:
             del self.summaries[name]
@@ -187,6 +342,9 @@ class ResultCache:
             "key": self.key,
             "entries": self._entries,
             "summaries": {k: list(v) for k, v in sorted(self.summaries.items())},
+            "stats": {**self._stats, **self._seen_stats},
+            "params": list(self._params) if self._params is not None else None,
+            "catalog": self._catalog,
         }
         try:
             folder.mkdir(parents=True, exist_ok=True)
@@ -197,11 +355,15 @@ class ResultCache:
             pass
 
 
-def _file_key(data: bytes, path: Path, config: Config) -> str:
+def _file_key(data: bytes | str, path: Path, config: Config) -> str:
+    """`data`: the file's bytes or their sha256 (the same key either way)."""
+    digest = data if isinstance(data, str) else hashlib.sha256(data).hexdigest()
     ignored = ",".join(sorted(config.ignored_codes(path)))
     spelled = os.fsencode(path)
     return hashlib.sha256(
-        b"\0".join([data, spelled, ignored.encode("utf-8", "surrogateescape")])
+        b"\0".join(
+            [digest.encode(), spelled, ignored.encode("utf-8", "surrogateescape")]
+        )
     ).hexdigest()
 
 
@@ -239,6 +401,16 @@ def _valid_entry(entry: Any) -> bool:
         and all(isinstance(v, str) for v in entry["modules"].values())
         and isinstance(entry.get("diagnostics"), list)
         and all(_valid_diagnostic(d) for d in entry["diagnostics"])
+    )
+
+
+def _valid_stat(raw: Any) -> bool:
+    return (
+        isinstance(raw, list)
+        and len(raw) == 6
+        and all(type(n) is int for n in raw[:4])
+        and isinstance(raw[4], str)
+        and type(raw[5]) is int
     )
 
 

@@ -73,6 +73,8 @@ class Config:
         return any(matches(pattern, relative, folder) for pattern in self.exclude)
 
     def ignored_codes(self, path: Path) -> frozenset[str]:
+        if not self.per_file_ignores:
+            return frozenset()  # no path to work out: a cached run asks per file
         relative = self._relative(path)
         found: frozenset[str] = frozenset()
         for pattern, codes in self.per_file_ignores:

@@ -40,6 +40,7 @@ from robotfix.fs import UnreadableError, read_regular, read_text
 from robotfix.messages import Declared
 from robotfix.ros import paramfile as P
 from robotfix.ros import yamlfile as Y
+from robotfix.ros.package import package_folder
 from robotfix.smt.fold import fold
 from robotfix.source import SourceFile
 
@@ -329,12 +330,7 @@ def _gpl(name: str, definition: P.Definition, path: str) -> _Parameter:
     return candidate
 
 
-def _package_of(path: Path) -> Path | None:
-    folder = Path(os.path.abspath(path)).parent
-    for candidate in (folder, *folder.parents):
-        if os.path.isfile(candidate / "package.xml"):
-            return candidate
-    return None
+_package_of = package_folder
 
 
 # -- the rules ------------------------------------------------------------------

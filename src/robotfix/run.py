@@ -5,6 +5,7 @@ processes with -j), and gather the diagnostics in a deterministic order.
 from __future__ import annotations
 
 import gc
+import hashlib
 import os
 import signal
 import time
@@ -23,15 +24,17 @@ from robotfix.api import (
     finish,
     interface_problems,
     make_project,
+    raw_interface_problems,
     stub_problems,
 )
-from robotfix.cache import ResultCache, run_key
+from robotfix.cache import RACY_NS, ResultCache, run_key
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
 from robotfix.discovery import Discovery, discover
 from robotfix.fs import UnreadableError, read_regular
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.ros.install import InstallSpace
+from robotfix.ros.package import package_folder
 from robotfix.stubs.load import stub_set
 
 if TYPE_CHECKING:
@@ -119,17 +122,30 @@ def _check_paths(
         if use_cache
         else None
     )
+    # the same interface files as last time: their digests and problems are known
+    snapshot = _catalog_key(interfaces, config) if cache is not None else None
+    known = cache.catalog(snapshot) if cache is not None and snapshot else None
+    if known is not None:
+        catalog.preload_digests(known[0])
     if cache is not None:
         project.known = dict(cache.summaries)
+        project.sha_of = cache.sha  # the stat fast path for imported modules too
     todo: list[tuple[Path, bytes]] = []
     for index, file in enumerate(files, start=1):
-        try:
-            data = read_regular(file)  # a FIFO or a device: refused, never blocks
-        except UnreadableError as err:
-            reason = f"cannot read: {err.reason}"
-            result.diagnostics.append(messages.unreadable(str(file), reason))
-            continue
-        cached = cache.get(file, data, config, catalog, project) if cache else None
+        # with the cache, an unchanged file (by its stat) is not even read
+        digest = cache.sha(file) if cache is not None else None
+        cached = (
+            cache.get(file, digest, config, catalog, project)
+            if cache is not None and digest is not None
+            else None
+        )
+        if cached is None:
+            try:  # a FIFO or a device: refused, never blocks
+                data = cache.take(file) if cache is not None else read_regular(file)
+            except UnreadableError as err:
+                reason = f"cannot read: {err.reason}"
+                result.diagnostics.append(messages.unreadable(str(file), reason))
+                continue
         if cached is not None:
             result.diagnostics.extend(cached)
             used.update(cache.types(file) if cache else ())
@@ -159,8 +175,11 @@ def _check_paths(
                 outcome.modules,
             )
             cache.remember_summaries(outcome.summaries)
-    result.diagnostics.extend(interface_problems(catalog, used))
-    result.diagnostics.extend(_parameter_problems(found, files, config))
+    problems = known[1] if known is not None else raw_interface_problems(catalog)
+    result.diagnostics.extend(interface_problems(catalog, used, problems))
+    if cache is not None and snapshot:
+        cache.put_catalog(snapshot, catalog.digest_table(), problems)
+    result.diagnostics.extend(_parameter_problems(found, files, config, cache))
     result.files += len(found.parameter_files)
     result.diagnostics = finish(result.diagnostics)
     if cache is not None:
@@ -173,21 +192,87 @@ def _check_paths(
 
 
 def _parameter_problems(
-    found: Discovery, files: list[Path], config: Config
+    found: Discovery,
+    files: list[Path],
+    config: Config,
+    cache: ResultCache | None = None,
 ) -> list[Diagnostic]:
-    """Parameter files against the parameters the code declares (not cached:
-    they depend on every checked file)."""
+    """Parameter files against the parameters the code declares; cached as a whole,
+    under a key that hashes every input (`_params_key`)."""
     if not found.parameter_files and not found.parameter_definitions:
         return []
+    python_files = [*files, *found.summary_files]
+    key = _params_key(found, python_files, config, cache) if cache else None
+    if cache is not None and key is not None:
+        known = cache.params(key)
+        if known is not None:
+            return known
     from robotfix.paramcheck import check_parameter_files
 
-    return check_parameter_files(
+    out = check_parameter_files(
         found.parameter_files,
         found.parameter_definitions,
-        [*files, *found.summary_files],
+        python_files,
         found.named_parameter_files,
         config,
     )
+    if cache is not None and key is not None:
+        cache.put_params(key, out)
+    return out
+
+
+def _params_key(
+    found: Discovery, python_files: list[Path], config: Config, cache: ResultCache
+) -> str:
+    """Everything `paramcheck` reads: the parameter and definitions files (bytes,
+    per-file ignores, package folder), and each Python file that mentions a
+    parameter word (`cache.MENTION_WORDS`; the others are skipped unread there)
+    with its bytes, the file it really is and its package folder."""
+    parts: list[str] = []
+    groups = (
+        ("yaml", found.parameter_files),
+        ("definitions", found.parameter_definitions),
+        ("named", found.named_parameter_files),
+    )
+    for label, group in groups:
+        for path in group:
+            ignored = ",".join(sorted(config.ignored_codes(path)))
+            where = package_folder(path)
+            parts.append(f"{label}\0{path}\0{cache.sha(path)}\0{ignored}\0{where}")
+    for path in python_files:
+        mentions = cache.mentions(path)
+        if mentions:
+            real = os.path.realpath(path)
+            where = package_folder(path)
+            parts.append(f"py\0{path}\0{real}\0{cache.sha(path)}\0{where}")
+    text = "\n".join(parts).encode("utf-8", "surrogateescape")
+    return hashlib.sha256(text).hexdigest()
+
+
+def _catalog_key(interfaces: _Interfaces, config: Config) -> str | None:
+    """What the catalog is read from, by stat (as `ResultCache.sha`): its interface
+    files' names, sizes, mtimes, inodes and devices, and the settings that shape
+    it; None when that is not all (an install space is sourced: its files are read
+    on demand) or a file changed too recently to trust its mtime."""
+    if interfaces.installed is not None:
+        return None
+    now = time.time_ns()
+    parts = [
+        f"rep103 {config.rep103} suffixes {config.unit_suffixes} {config.ros_distro}"
+    ]
+    parts += [f"preferred {p}" for p in interfaces.preferred]
+    for path in interfaces.files:
+        try:
+            st = os.stat(path)
+        except (OSError, ValueError):
+            parts.append(f"missing {path}")
+            continue
+        if now - st.st_mtime_ns < RACY_NS:
+            return None
+        stamp = (st.st_size, st.st_mtime_ns, st.st_ino, st.st_dev)
+        parts.append(f"file {path} {stamp}")
+    text = "\n".join(parts).encode("utf-8", "surrogateescape")
+    return hashlib.sha256(text).hexdigest()
 
 
 @dataclass(frozen=True)

@@ -235,6 +235,9 @@ class MsgCatalog:
         self._installed_tried: set[str] = set()  # installed files read (or refused)
         self.installed_problems: list[CatalogProblem] = []  # never reported
         self._types_of: dict[str, tuple[str, ...]] = {}  # user file -> its types
+        # fingerprint_types' memo: each type's message-typed fields
+        self._children: dict[str, tuple[str, ...]] = {}
+        self._combined: dict[tuple[str, ...], str] = {}  # names asked -> digest
 
     # -- public --------------------------------------------------------------
     def lookup(self, name: str) -> MsgSpec | None:
@@ -303,10 +306,14 @@ class MsgCatalog:
         every file that declares it), then the same for the message types of its
         fields, transitively; a type that is not found counts as missing, so a file
         that later resolves it changes the digest."""
-        self.load()
+        asked = tuple(sorted(set(names)))
+        known = self._combined.get(asked)
+        if known is not None:  # many files use the same few types
+            return known
         if self._resolved_digests is None:
             self._resolved_digests = {}
         digests = self._resolved_digests
+        children = self._children
         saved, self.touched = self.touched, None  # not a lookup of the checked file
         try:
             seen: set[str] = set()
@@ -316,16 +323,39 @@ class MsgCatalog:
                 if key in seen:
                     continue
                 seen.add(key)
-                spec = self.lookup(key)
-                if key not in digests:
+                if key not in digests or key not in children:
+                    # known from `preload_digests` otherwise: the files are not read
+                    spec = self.lookup(key)
                     text = "missing" if spec is None else _canonical(spec)
                     digests[key] = hashlib.sha256(text.encode()).hexdigest()
-                if spec is not None:
-                    todo.extend(f.msg_type for f in spec.fields.values() if f.msg_type)
+                    children[key] = tuple(
+                        f.msg_type
+                        for f in (spec.fields.values() if spec else ())
+                        if f.msg_type
+                    )
+                todo.extend(children[key])
         finally:
             self.touched = saved
         lines = sorted(f"{key} {digests[key]}" for key in seen)
-        return hashlib.sha256("\n".join(lines).encode()).hexdigest()
+        combined = hashlib.sha256("\n".join(lines).encode()).hexdigest()
+        self._combined[asked] = combined  # the digests it is made of never change
+        return combined
+
+    def digest_table(self) -> dict[str, tuple[str, tuple[str, ...]]]:
+        """What `fingerprint_types` worked out so far: each type's digest and the
+        message types of its fields (for a result cache to hand back)."""
+        digests = self._resolved_digests or {}
+        return {k: (v, self._children[k]) for k, v in digests.items()}
+
+    def preload_digests(self, table: Mapping[str, tuple[str, tuple[str, ...]]]) -> None:
+        """`digest_table` of an earlier run over the very same interface files (the
+        caller's key says so: their stats, the settings, no install space), so that
+        `fingerprint_types` need not read them."""
+        if self._resolved_digests is None:
+            self._resolved_digests = {}
+        for key, (digest, fields) in table.items():
+            self._resolved_digests.setdefault(key, digest)
+            self._children.setdefault(key, tuple(fields))
 
     def save(self) -> None:
         _std_cache(self._distro).save()

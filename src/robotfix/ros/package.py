@@ -6,6 +6,7 @@ anything, while ROS names the package's types after `<name>`.
 
 from __future__ import annotations
 
+import os
 import re
 from pathlib import Path
 from xml.etree import ElementTree
@@ -33,3 +34,13 @@ def package_name(folder: Path) -> str | None:
         return None
     name = (root.findtext("name") or "").strip()
     return name if _NAME.fullmatch(name) else None
+
+
+def package_folder(path: Path) -> Path | None:
+    """The folder of the ROS package a file lies in: the nearest one above it (or
+    its own folder) that holds a package.xml."""
+    folder = Path(os.path.abspath(path)).parent
+    for candidate in (folder, *folder.parents):
+        if os.path.isfile(candidate / "package.xml"):
+            return candidate
+    return None
