@@ -283,6 +283,12 @@ def _check(
 ) -> list[Diagnostic]:
     if source.problem is not None:
         return [source.problem]
+    from robotfix.analysis.relevance import skippable
+
+    assert source.tree is not None
+    stubs = stubs or stub_set()
+    if skippable(source.tree, source.text, catalog, stubs, resolver):
+        return _unused_suppressions(source, [])  # nothing to find: not analysed
     ctx = _analyze(source, catalog, stubs=stubs, resolver=resolver, memo=memo)
     kept = [
         d

@@ -202,6 +202,14 @@ class FileResolver:
     def package(self) -> str | None:
         return self._package
 
+    def exists(self, name: str) -> bool:
+        """Is `name` a module of the tree? (Recorded when it is not, as `module`
+        does, so a cached result is re-checked once the module appears.)"""
+        if self.project.index.find(name, self.path) is not None:
+            return True
+        self.consulted[f"{self.path}\0{name}"] = ABSENT
+        return False
+
     def module(self, name: str) -> ModuleSummary | None:
         project = self.project
         target = project.index.find(name, self.path)

@@ -617,3 +617,73 @@ def _called(node: ast.Call) -> str:
     if isinstance(func, ast.Attribute):
         return func.attr
     return func.id if isinstance(func, ast.Name) else ""
+
+
+def defined_names(stubs: StubSet) -> frozenset[str]:
+    """The identifiers through which a stub can give a checked file a unit or a
+    refinement (`analysis/relevance.py`): every function and method whose stub has
+    a decorator (`@unit_rule`, `@property`), returns a class (of a stub, or a
+    message) or an `Annotated`, or has a parameter refined beyond a unit (a
+    unitless value meets a unit, and a value with a unit came from a source the
+    file names already); every attribute with an `Annotated`; every class with such
+    an attribute, such an `__init__` or an operator. Module names are not among
+    them: a call or read through a module names the member too."""
+    names: set[str] = set()
+    for root in [*stubs.paths, DATA]:
+        for path in _stub_files(root):
+            try:
+                tree = ast.parse(_text_of(path))
+            except (SyntaxError, ValueError, RecursionError):
+                continue
+            for node in ast.walk(tree):
+                if isinstance(node, ast.ClassDef) and _class_gives(node):
+                    names.add(node.name)
+                elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                    if node.name != "__init__" and _function_gives(node):
+                        names.add(node.name)
+                elif isinstance(node, (ast.AnnAssign, ast.Assign)) and (
+                    "Annotated" in ast.unparse(node)
+                ):
+                    names.update(
+                        t.id
+                        for t in ast.walk(node)
+                        if isinstance(t, ast.Name) and isinstance(t.ctx, ast.Store)
+                    )
+    return frozenset(names)
+
+
+def _function_gives(node: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
+    returns = ast.unparse(node.returns) if node.returns else "None"
+    return (
+        bool(node.decorator_list)
+        or returns not in BUILTINS  # a stub class, a message class, an Annotated
+        or any(map(_refines, _annotations(node.args)))
+    )
+
+
+def _class_gives(node: ast.ClassDef) -> bool:
+    for item in node.body:
+        if isinstance(item, ast.AnnAssign) and "Annotated" in ast.unparse(item):
+            return True
+        if isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            if item.name == "__init__" and (
+                item.decorator_list or any(map(_refines, _annotations(item.args)))
+            ):
+                return True
+            if item.name.startswith("__") and item.name != "__init__":
+                return True  # an operator
+    return False
+
+
+_ONLY_A_UNIT = re.compile(r"""Annotated\[\w+, ['"]Unit\('[^'"()]*'\)['"]\]""")
+
+
+def _annotations(args: ast.arguments) -> list[ast.expr]:
+    every = [*args.posonlyargs, *args.args, *args.kwonlyargs, args.vararg, args.kwarg]
+    return [a.annotation for a in every if a is not None and a.annotation is not None]
+
+
+def _refines(annotation: ast.expr) -> bool:
+    """Does a parameter's stub annotation say more than its unit?"""
+    text = ast.unparse(annotation)
+    return "Annotated" in text and _ONLY_A_UNIT.fullmatch(text) is None

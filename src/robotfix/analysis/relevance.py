@@ -1,0 +1,500 @@
+"""Which files cannot produce a finding: those are parsed (RF001/RF002, suppressions,
+RF010) but not analysed (issue 13; mypy skips unannotated bodies for the same reason).
+
+A finding needs something that carries a unit, a frame or a refinement, or a name
+that can be unbound. `skippable` answers "nothing can" syntactically and
+conservatively: every test below only ever sends a file to the analysis, so a file
+it lets through is one the analysis would have reported nothing on. A unit, frame
+or refinement enters a file only through
+
+- an annotation of ours: the text has `Annotated`, `Unit(`, `Frame(` or `Tag(`
+  (string annotations and comments included, so no alias spelling escapes it);
+- a message, service or action class: an import with a part `msg`, `srv` or
+  `action`, or a part the catalog knows as an interface package (the seed
+  programs write `from std_msgs import Float64`);
+- a library call or object the stubs describe: a name or attribute that is the
+  name of a stub member able to give a unit or a refinement
+  (`stubs.load.defined_names`), or that the API model keys on (registrations,
+  time objects, node constructors, tf2 calls) - by name, since a method of an
+  unknown receiver is looked up by its name alone; a name read only as the
+  receiver of an attribute (`time` in `time.sleep`) counts through the attribute;
+- a parameter: `_param` or `ParamListener` anywhere in the text (every
+  declaration and read `analysis/parameters.py` follows);
+- another module of the tree: any import the resolver finds in the tree (its
+  summary is not built, which would cost more than the analysis spared);
+- a declaration without a value (`x: float` in a body), whose read is RF301.
+
+RF301 needs no annotation, so `_may_be_unbound` runs a plain definite-assignment
+pass over every scope, more pessimistic than the analysis (every branch may run or
+not, loops may run zero times, a `try` body may stop anywhere, `with` bodies as
+written): a read of a local that is not assigned on every syntactic path, a name
+that no enclosing scope, the module or the builtins bind, or a `del`eted name sends
+the file to the analysis. The analysis can only prune paths (facts, dead code), so
+it never finds an unbound read this pass misses.
+
+RF902 (the work budget) is a warning about the analysis, not a finding; files
+large enough to come near it (over a 16th of the budget in bytes, 125 kB) are
+analysed as before.
+
+`tests/test_relevance.py` checks the claim on every case file and on generated
+programs: a file this module skips gets no diagnostic from the full analysis.
+"""
+
+from __future__ import annotations
+
+import ast
+import builtins
+import functools
+import os
+import re
+import weakref
+from collections.abc import Iterable, Sequence
+
+from robotfix.analysis import context
+from robotfix.analysis.imported import Resolver, absolute
+from robotfix.ros import api_model, frames_model
+from robotfix.ros.catalog import MsgCatalog
+from robotfix.stubs.load import StubSet, defined_names
+
+# declare_parameter(s), get_param(eter), has_parameter, ParamListener (g_p_l)...
+PARAMETER_WORDS = ("_param", "paramlistener")
+MARKERS = ("Annotated", "Unit(", "Frame(", "Tag(")
+INTERFACE_PARTS = frozenset({"msg", "srv", "action"})
+BYTES_PER_STEP_BUDGET = 16  # a file over STEP_BUDGET / 16 bytes is analysed: RF902
+# as the interpreter resolves names (`analysis/interpreter.py`)
+BUILTINS = frozenset(dir(builtins)) | {"__file__", "__name__", "__doc__", "__spec__"}
+FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef)
+COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
+
+ENABLED = os.environ.get("ROBOTFIX_NO_SKIP", "") == ""  # off: analyse every file
+
+
+def skippable(
+    tree: ast.Module,
+    text: str,
+    catalog: MsgCatalog,
+    stubs: StubSet,
+    resolver: Resolver | None,
+) -> bool:
+    """Can the analysis of this file report nothing? (True only when sure.)"""
+    if (
+        not ENABLED
+        or len(text) * BYTES_PER_STEP_BUDGET > context.STEP_BUDGET
+        or any(marker in text for marker in MARKERS)
+    ):
+        return False
+    lowered = text.lower()
+    if any(word in lowered for word in PARAMETER_WORDS):
+        return False
+    vocabulary = _vocabulary(stubs)
+    # no stub word anywhere in the text: no name or attribute can be one
+    mentions = _pattern(vocabulary).search(text) is not None
+    imported: list[tuple[int, str | None, tuple[str, ...]]] = []
+    receivers: set[int] = set()
+    declared: set[str] = set()  # names some function declares `global`
+    for node in ast.walk(tree) if mentions else _statements(tree.body):
+        if isinstance(node, ast.Name):
+            if id(node) in receivers:
+                continue  # `time.sleep`: the member is the name that counts
+            name = node.id
+        elif isinstance(node, ast.Attribute):
+            if isinstance(node.value, ast.Name):
+                receivers.add(id(node.value))  # ast.walk yields parents first
+            name = node.attr
+        elif isinstance(node, ast.Import):
+            for alias in node.names:
+                if _interface(alias.name, catalog):
+                    return False
+                imported.append((0, alias.name, ()))
+            continue
+        elif isinstance(node, ast.ImportFrom):
+            if node.module and _interface(node.module, catalog):
+                return False
+            names = tuple(a.name for a in node.names)
+            if any(n in INTERFACE_PARTS for n in names):
+                return False
+            imported.append((node.level, node.module, names))
+            continue
+        elif isinstance(node, ast.AnnAssign) and node.value is None:
+            return False
+        elif isinstance(node, ast.Global):
+            declared.update(node.names)
+            continue
+        else:
+            continue
+        if name in vocabulary:
+            return False
+    if resolver is not None and _tree_relevant(resolver, imported):
+        return False
+    return not _may_be_unbound(tree, frozenset(declared))
+
+
+@functools.lru_cache(maxsize=8)
+def _pattern(vocabulary: frozenset[str]) -> re.Pattern[str]:
+    return re.compile(r"\b(?:" + "|".join(map(re.escape, sorted(vocabulary))) + r")\b")
+
+
+def _statements(body: list[ast.stmt]) -> Iterable[ast.stmt]:
+    """Every statement, nested ones too (not those in `match` cases: a file with
+    a `match` is analysed anyway, `_may_be_unbound`)."""
+    todo = list(reversed(body))
+    while todo:
+        stmt = todo.pop()
+        yield stmt
+        for field in ("body", "orelse", "finalbody"):
+            todo.extend(reversed(getattr(stmt, field, ())))
+        for handler in getattr(stmt, "handlers", ()):
+            todo.extend(reversed(handler.body))
+
+
+def _interface(dotted: str, catalog: MsgCatalog) -> bool:
+    """`x.msg`, `x.srv.y`, or a top-level package the catalog has interfaces of."""
+    parts = dotted.split(".")
+    return any(p in INTERFACE_PARTS for p in parts) or _has_package(catalog, parts[0])
+
+
+_PACKAGES: weakref.WeakKeyDictionary[MsgCatalog, dict[str, bool]] = (
+    weakref.WeakKeyDictionary()
+)
+
+
+def _has_package(catalog: MsgCatalog, part: str) -> bool:
+    known = _PACKAGES.setdefault(catalog, {})
+    if part not in known:
+        known[part] = catalog.has_package(part)
+    return known[part]
+
+
+@functools.lru_cache(maxsize=8)
+def _vocabulary(stubs: StubSet) -> frozenset[str]:
+    return (
+        defined_names(stubs)
+        | set(api_model.REGISTRATIONS)
+        | api_model.TIME_OBJECTS
+        | api_model.NODE_CONSTRUCTORS
+        | api_model.PARAMETER_CALLS
+        | set(frames_model.TF2_CALLS)
+    )
+
+
+def _tree_relevant(
+    resolver: Resolver, imported: list[tuple[int, str | None, tuple[str, ...]]]
+) -> bool:
+    """Does an import reach a module of the tree? (Its summary is not built: that
+    costs more than the analysis it could spare.)"""
+    exists = getattr(resolver, "exists", None)
+    for level, module, names in imported:
+        base = module if level == 0 else absolute(resolver.package, level, module)
+        if base is None:
+            continue
+        parts = base.split(".")
+        candidates = [".".join(parts[:i]) for i in range(1, len(parts) + 1)]
+        candidates += [f"{base}.{n}" for n in names if n != "*"]
+        for name in candidates:
+            if exists(name) if exists else resolver.module(name) is not None:
+                return True
+    return False
+
+
+# -- RF301: a definite-assignment pass, more pessimistic than the analysis ------
+Bound = frozenset[str] | None  # None: this point is not reached
+
+
+class _RiskError(Exception):
+    """A read the analysis might report as unbound."""
+
+
+def _may_be_unbound(tree: ast.Module, declared: frozenset[str]) -> bool:
+    try:
+        _Scope(tree, None, declared).run(tree.body, frozenset())
+    except (_RiskError, RecursionError):
+        return True
+    return False
+
+
+def _meet(a: Bound, b: Bound) -> Bound:
+    if a is None:
+        return b
+    if b is None:
+        return a
+    return a & b
+
+
+class _Scope:
+    """One module, class, function, lambda or comprehension."""
+
+    def __init__(
+        self,
+        node: ast.AST,
+        parent: _Scope | None,
+        declared: frozenset[str] = frozenset(),
+    ) -> None:
+        self.node = node
+        self.parent = parent
+        self.is_class = isinstance(node, ast.ClassDef)
+        self.locals, self.declared = _binders(node)
+        self.module: _Scope = parent.module if parent is not None else self
+        if parent is None:
+            self.globals = self.locals | declared  # bound by `global x; x = ...`
+
+    # -- names ---------------------------------------------------------------
+    def read(self, name: str, bound: frozenset[str]) -> None:
+        if isinstance(self.node, COMPREHENSIONS) and name not in self.locals:
+            assert self.parent is not None
+            self.parent.read(name, bound)  # `bound` holds the enclosing sure names
+            return
+        if name in self.locals:
+            if name not in bound:
+                raise _RiskError
+            return
+        outer = self.parent
+        while outer is not None:
+            if outer.parent is None:
+                break
+            if not outer.is_class and name in outer.locals:
+                return
+            outer = outer.parent
+        if name in self.module.globals or name in BUILTINS:
+            return
+        raise _RiskError
+
+    # -- expressions ---------------------------------------------------------
+    def expr(self, node: ast.AST | None, bound: frozenset[str]) -> frozenset[str]:
+        """Check the reads of an expression in order; the names it binds (`:=`)."""
+        if node is None:
+            return bound
+        if isinstance(node, ast.Name):
+            if isinstance(node.ctx, ast.Load):
+                self.read(node.id, bound)
+            return bound
+        if isinstance(node, ast.NamedExpr):
+            bound = self.expr(node.value, bound)
+            return bound | {node.target.id}
+        if isinstance(node, ast.Lambda):
+            bound = self.defaults(node.args, bound)
+            inner = _Scope(node, self)
+            inner.expr(node.body, _params(node.args))
+            return bound
+        if isinstance(node, COMPREHENSIONS):
+            return self.comprehension(node, bound)
+        if isinstance(node, (ast.BoolOp, ast.IfExp)):
+            # operands after the first may not run: names they bind are not sure
+            first, *rest = (
+                node.values
+                if isinstance(node, ast.BoolOp)
+                else [node.test, node.body, node.orelse]
+            )
+            after = self.expr(first, bound)
+            for other in rest:
+                self.expr(other, after)
+            return after
+        for child in ast.iter_child_nodes(node):
+            bound = self.expr(child, bound)
+        return bound
+
+    def comprehension(self, node: ast.AST, bound: frozenset[str]) -> frozenset[str]:
+        """Runs at once, in order: the first iterable here, the rest inside, where
+        the names of the enclosing scope are read as they are bound here."""
+        if any(isinstance(sub, ast.NamedExpr) for sub in ast.walk(node)):
+            raise _RiskError  # `:=` in a comprehension binds outside it: not followed
+        generators: list[ast.comprehension] = node.generators  # type: ignore[attr-defined]
+        inner = _Scope(node, self)
+        inside = self.expr(generators[0].iter, bound)
+        for i, gen in enumerate(generators):
+            if i:
+                inside = inner.expr(gen.iter, inside)
+            inside = inside | _stores(gen.target)
+            for test in gen.ifs:
+                inside = inner.expr(test, inside)
+        for part in ("elt", "key", "value"):
+            if hasattr(node, part):
+                inner.expr(getattr(node, part), inside)
+        return bound
+
+    def defaults(self, args: ast.arguments, bound: frozenset[str]) -> frozenset[str]:
+        for default in [*args.defaults, *args.kw_defaults]:
+            bound = self.expr(default, bound)
+        return bound
+
+    # -- statements ----------------------------------------------------------
+    def run(self, body: Sequence[ast.stmt], bound: Bound) -> Bound:
+        for stmt in body:
+            if bound is None:
+                return None
+            bound = self.stmt(stmt, bound)
+        return bound
+
+    def stmt(self, node: ast.stmt, bound: frozenset[str]) -> Bound:
+        if isinstance(node, (ast.Return, ast.Raise)):
+            for child in ast.iter_child_nodes(node):
+                self.expr(child, bound)
+            return None
+        if isinstance(node, (ast.Break, ast.Continue)):
+            return None
+        if isinstance(node, (ast.Pass, ast.Global, ast.Nonlocal)):
+            return bound
+        if isinstance(node, (ast.Import, ast.ImportFrom)):
+            return bound | {
+                a.asname or a.name.partition(".")[0]
+                for a in node.names
+                if a.name != "*"
+            }
+        if isinstance(node, (*FUNCTIONS, ast.ClassDef)):
+            for decorator in node.decorator_list:
+                bound = self.expr(decorator, bound)
+            if isinstance(node, ast.ClassDef):
+                for base in [*node.bases, *node.keywords]:
+                    bound = self.expr(base, bound)
+                _Scope(node, self).run(node.body, frozenset())
+            else:
+                bound = self.defaults(node.args, bound)
+                _Scope(node, self).run(node.body, _params(node.args))
+            return bound | {node.name}
+        if isinstance(node, ast.Assign):
+            bound = self.expr(node.value, bound)
+            for target in node.targets:
+                bound = self.target(target, bound)
+            return bound
+        if isinstance(node, ast.AnnAssign):
+            if node.value is None:
+                raise _RiskError
+            bound = self.expr(node.value, bound)
+            return self.target(node.target, bound)
+        if isinstance(node, ast.AugAssign):
+            bound = self.expr(node.value, bound)
+            if isinstance(node.target, ast.Name):
+                self.read(node.target.id, bound)
+                return bound
+            return self.target(node.target, bound)
+        if isinstance(node, ast.Delete):
+            for target in node.targets:
+                if not isinstance(target, ast.Name):
+                    bound = self.expr(target, bound)
+                    continue
+                self.read(target.id, bound)
+                bound = bound - {target.id}
+            return bound
+        if isinstance(node, ast.Expr):
+            return self.expr(node.value, bound)
+        if isinstance(node, ast.If):
+            bound = self.expr(node.test, bound)
+            return _meet(self.run(node.body, bound), self.run(node.orelse, bound))
+        if isinstance(node, (ast.For, ast.AsyncFor)):
+            bound = self.expr(node.iter, bound)
+            self.run(node.body, self.target(node.target, bound))
+            self.run(node.orelse, bound)
+            return bound  # zero iterations, or a `break` before the `else`
+        if isinstance(node, ast.While):
+            bound = self.expr(node.test, bound)
+            self.run(node.body, bound)
+            self.run(node.orelse, bound)
+            return bound
+        if isinstance(node, (ast.With, ast.AsyncWith)):
+            for item in node.items:
+                bound = self.expr(item.context_expr, bound)
+                if item.optional_vars is not None:
+                    bound = self.target(item.optional_vars, bound)
+            return self.run(node.body, bound)
+        if isinstance(node, (ast.Try, ast.TryStar)):
+            # a handler may start anywhere in the body: only what was sure before
+            after = self.run(node.orelse, self.run(node.body, bound))
+            for handler in node.handlers:
+                start = bound
+                if handler.type is not None:
+                    start = self.expr(handler.type, start)
+                if handler.name:
+                    start = start | {handler.name}
+                end = self.run(handler.body, start)
+                if end is not None and handler.name:
+                    end = end - {handler.name}  # Python deletes it
+                after = _meet(after, end)
+            final = self.run(node.finalbody, bound)
+            if after is None or final is None:
+                return None
+            return after | final
+        if isinstance(node, ast.Assert):
+            bound = self.expr(node.test, bound)
+            self.expr(node.msg, bound)
+            return bound
+        raise _RiskError  # match, and anything newer: not followed
+
+    def target(self, node: ast.expr, bound: frozenset[str]) -> frozenset[str]:
+        if isinstance(node, ast.Name):
+            return bound | {node.id}
+        if isinstance(node, (ast.Tuple, ast.List)):
+            for element in node.elts:
+                bound = self.target(element, bound)
+            return bound
+        if isinstance(node, ast.Starred):
+            return self.target(node.value, bound)
+        return self.expr(node, bound)  # obj.x, obj[i]: reads obj (and i)
+
+
+def _params(args: ast.arguments) -> frozenset[str]:
+    every = [*args.posonlyargs, *args.args, *args.kwonlyargs]
+    every += [a for a in (args.vararg, args.kwarg) if a is not None]
+    return frozenset(a.arg for a in every)
+
+
+def _binders(node: ast.AST) -> tuple[frozenset[str], frozenset[str]]:
+    """The names a scope binds (its locals, as Python decides them), and those it
+    declares `global` or `nonlocal`."""
+    bound: set[str] = set()
+    declared: set[str] = set()
+    if isinstance(node, (*FUNCTIONS, ast.Lambda)):
+        bound |= _params(node.args)
+    if isinstance(node, COMPREHENSIONS):
+        for gen in node.generators:
+            bound |= _stores(gen.target)
+        return frozenset(bound), frozenset()
+    for child in _own_nodes(node):
+        if isinstance(child, ast.Name) and not isinstance(child.ctx, ast.Load):
+            bound.add(child.id)
+        elif isinstance(child, (*FUNCTIONS, ast.ClassDef)):
+            bound.add(child.name)
+        elif isinstance(child, ast.alias) and child.name != "*":
+            bound.add(child.asname or child.name.partition(".")[0])
+        elif isinstance(child, ast.ExceptHandler) and child.name:
+            bound.add(child.name)
+        elif isinstance(child, (ast.Global, ast.Nonlocal)):
+            declared.update(child.names)
+        elif isinstance(child, ast.NamedExpr):
+            bound.add(child.target.id)
+    return frozenset(bound - declared), frozenset(declared)
+
+
+def _stores(node: ast.AST) -> set[str]:
+    return {
+        n.id
+        for n in ast.walk(node)
+        if isinstance(n, ast.Name) and not isinstance(n.ctx, ast.Load)
+    }
+
+
+def _own_nodes(scope: ast.AST) -> Iterable[ast.AST]:
+    """The nodes of a scope's body, not of the scopes nested in it (their names,
+    decorators and defaults are the outer scope's)."""
+    body: list[ast.AST]
+    if isinstance(scope, ast.Lambda):
+        body = [scope.body]
+    else:
+        body = list(getattr(scope, "body", []))
+    todo = list(reversed(body))
+    while todo:
+        node = todo.pop()
+        yield node
+        if isinstance(node, (*FUNCTIONS, ast.ClassDef)):
+            parts: list[ast.AST] = list(node.decorator_list)
+            if isinstance(node, ast.ClassDef):
+                parts += [*node.bases, *node.keywords]
+            else:
+                parts += node.args.defaults
+                parts += [d for d in node.args.kw_defaults if d is not None]
+            todo.extend(parts)
+        elif isinstance(node, ast.Lambda):
+            todo.extend(d for d in [*node.args.defaults, *node.args.kw_defaults] if d)
+        elif isinstance(node, COMPREHENSIONS):
+            todo.append(node.generators[0].iter)
+            # `:=` inside binds here, but comprehensions with one are not followed
+        else:
+            todo.extend(ast.iter_child_nodes(node))

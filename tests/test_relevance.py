@@ -1,0 +1,168 @@
+"""The file-level skip is sound: a file `analysis/relevance.py` skips gets no
+diagnostic from the full analysis (every case file, generated programs), and the
+files with something to find are not skipped."""
+
+from __future__ import annotations
+
+import ast
+from functools import cache
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from robotfix.analysis import relevance
+from robotfix.api import check_source, interface_files, make_project
+from robotfix.config import Config
+from robotfix.ros.catalog import MsgCatalog
+from robotfix.stubs.load import stub_set
+
+CASES = Path(__file__).parent / "cases"
+
+
+@cache
+def catalog_for(folder: Path) -> MsgCatalog:
+    """As tests/test_cases.py builds it: the shared interfaces and the case's own."""
+    folders = [CASES / "msgs", folder / "msg"]
+    return MsgCatalog(interface_files([f for f in folders if f.is_dir()]))
+
+
+def _skipped(text: str, path: Path, catalog: MsgCatalog) -> bool:
+    project = make_project([], Config(), catalog)
+    return relevance.skippable(
+        ast.parse(text), text, catalog, stub_set(), project.resolver(path)
+    )
+
+
+def _full(text: str, path: Path, catalog: MsgCatalog) -> list[str]:
+    """The diagnostics of the analysis with the skip turned off."""
+    saved = relevance.ENABLED
+    relevance.ENABLED = False
+    try:
+        return [d.code for d in check_source(text, str(path), Config(), catalog)]
+    finally:
+        relevance.ENABLED = saved
+
+
+CASE_FILES = sorted(CASES.rglob("*.py"))
+
+
+def test_a_skipped_case_file_has_no_finding() -> None:
+    skipped = []
+    for path in CASE_FILES:
+        text = path.read_text(encoding="utf-8")
+        catalog = catalog_for(path.parent)
+        if _skipped(text, path, catalog):
+            skipped.append(path)
+            assert _full(text, path, catalog) == [], path
+    assert skipped, "the rule skips no case file: the test proves nothing"
+
+
+UNBOUND = {
+    "branch": "def f(c):\n    if c:\n        x = 1\n    return x\n",
+    "loop": "def f(xs):\n    for v in xs:\n        last = v\n    return last\n",
+    "try": "def f(g):\n    try:\n        r = g()\n    except OSError:\n        pass\n"
+    "    return r\n",
+    "handler name": "def f(g):\n    try:\n        g()\n    except OSError as e:\n"
+    "        pass\n    return e\n",
+    "undefined": "def f(xs):\n    ys = [m for m in xs]\n    return m\n",
+    "deleted": "def f():\n    x = 1\n    del x\n    return x\n",
+    "declared": "def f():\n    x: int\n    return x\n",
+    "comprehension": "def f(xs):\n    ys = [v + k for v in xs]\n    k = 1\n"
+    "    return ys\n",
+    "class body": "class C:\n    if len('a') > 2:\n        y = 1\n    z = y\n",
+}
+
+
+@pytest.mark.parametrize("name", sorted(UNBOUND))
+def test_a_possibly_unbound_read_is_analysed(name: str) -> None:
+    catalog = catalog_for(CASES / "init")
+    assert not _skipped(UNBOUND[name], CASES / "init" / "x.py", catalog)
+
+
+RELEVANT = {
+    "annotation": "x = 'Annotated'\n",
+    "message": "from geometry_msgs.msg import Twist\n",
+    "message package": "import std_msgs\n",
+    "module message": "import a.msg\n",
+    "stub api": "import time\n\ndef f():\n    return time.time()\n",
+    "method by name": "def f(node):\n    node.create_timer(1.0, f)\n",
+    "parameter": "def f(node):\n    return node.get_parameter('x')\n",
+}
+
+
+@pytest.mark.parametrize("name", sorted(RELEVANT))
+def test_a_file_with_a_source_of_units_is_analysed(name: str) -> None:
+    catalog = catalog_for(CASES / "init")
+    assert not _skipped(RELEVANT[name], CASES / "init" / "x.py", catalog)
+
+
+def test_plain_helper_code_is_skipped() -> None:
+    text = (
+        "import os\n\n"
+        "def scan(folder):\n"
+        "    found = []\n"
+        "    for name in os.listdir(folder):\n"
+        "        if name.endswith('.yaml'):\n"
+        "            found.append(name)\n"
+        "        else:\n"
+        "            continue\n"
+        "    try:\n"
+        "        first = found[0]\n"
+        "    except IndexError:\n"
+        "        first = None\n"
+        "    return first, [n.upper() for n in found]\n"
+    )
+    assert _skipped(text, CASES / "init" / "x.py", catalog_for(CASES / "init"))
+
+
+# -- generated programs: nested control flow over a few names ---------------------
+NAMES = ["a", "b", "c"]
+
+
+def _block(depth: int) -> st.SearchStrategy[list[str]]:
+    simple = st.one_of(
+        st.sampled_from(NAMES).map(lambda n: f"{n} = 1"),
+        st.tuples(st.sampled_from(NAMES), st.sampled_from(NAMES)).map(
+            lambda p: f"{p[0]} = {p[1]} + 1"
+        ),
+        st.sampled_from(NAMES).map(lambda n: f"print({n})"),
+        st.sampled_from(NAMES).map(lambda n: f"del {n}"),
+        st.sampled_from(["return", "pass", "raise ValueError()"]),
+    )
+    if depth == 0:
+        return st.lists(simple, min_size=1, max_size=3)
+    inner = _block(depth - 1)
+    compound = st.one_of(
+        st.tuples(inner, inner).map(
+            lambda p: ["if flag:", *_indent(p[0]), "else:", *_indent(p[1])]
+        ),
+        inner.map(lambda b: ["for i in range(3):", *_indent(b)]),
+        inner.map(lambda b: ["while flag:", *_indent([*b, "break"])]),
+        st.tuples(inner, inner).map(
+            lambda p: ["try:", *_indent(p[0]), "except OSError:", *_indent(p[1])]
+        ),
+        inner.map(lambda b: ["with open('f') as fh:", *_indent(b)]),
+    )
+    return st.lists(
+        st.one_of(simple.map(lambda s: [s]), compound), min_size=1, max_size=3
+    ).map(lambda parts: [line for part in parts for line in part])
+
+
+def _indent(lines: list[str]) -> list[str]:
+    return ["    " + line for line in lines]
+
+
+@settings(
+    max_examples=60,
+    deadline=None,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much],
+)
+@given(_block(2))
+def test_a_skipped_generated_program_has_no_finding(body: list[str]) -> None:
+    text = "\n".join(["def f(flag):", *_indent(body), ""])
+    path = CASES / "init" / "generated.py"
+    catalog = catalog_for(CASES / "init")
+    if _skipped(text, path, catalog):
+        assert _full(text, path, catalog) == [], text
