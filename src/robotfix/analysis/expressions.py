@@ -71,6 +71,9 @@ class ExpressionEvaluator:
         self.check = Checker(ctx)
         self.site: ast.AST = ast.Pass()  # the statement being interpreted
         self.lists_seen = False  # whether a list was stored in a name or attribute
+        # the symbol each attribute read last gave (`decisions.py`: two tests of
+        # `scan.range_min` read one tracked value)
+        self.attribute_terms: dict[int, int] = {}
 
     # -- to be provided by the statement interpreter --------------------------
     def lookup_name(self, name: str, state: State, node: ast.AST) -> Value:
@@ -115,6 +118,8 @@ class ExpressionEvaluator:
             self.eval_children(node, state)
             return self.unknown(node)
         result: Value = method(node, state)
+        if type(node) is ast.Attribute and type(result.term) is A.Sym:
+            self.attribute_terms[id(node)] = result.term.ident
         if result.term is not None and A.larger_than(result.term, TERM_LIMIT):
             # e.g. `x = x + x` in a row: the term's tree doubles each time
             return replace(

@@ -11,12 +11,12 @@ from __future__ import annotations
 
 import ast
 import builtins
-from collections.abc import Callable
+from collections.abc import Callable, Hashable
 from dataclasses import replace
 from fractions import Fraction
 
 from robotfix import messages
-from robotfix.analysis import containers, frames, heap, hover, imported
+from robotfix.analysis import containers, decisions, frames, heap, hover, imported
 from robotfix.analysis.calls import MUTATORS, CallEvaluator
 from robotfix.analysis.constants import scan
 from robotfix.analysis.context import FileContext, Scope, build_scope
@@ -217,6 +217,9 @@ class Interpreter(CallEvaluator):
             if isinstance(bound, MaybeUnbound):
                 if (
                     bound.when is not None
+                    and not decisions.correlated(
+                        decisions.merged(bound.tests, state.tests), bound.early
+                    )
                     and self._unbound_is_error(name, bound.when != A.TRUE)
                     and self.check.unbound_here(state, bound.when, name, self.site)
                 ):
@@ -1048,6 +1051,7 @@ class Interpreter(CallEvaluator):
 
     def visit_Assert(self, node: ast.Assert, state: State) -> State:
         state.assume(self.condition(node.test, state))
+        self._decided(node.test, state)
         return state
 
     def visit_Return(self, node: ast.Return, state: State) -> State:
@@ -1201,6 +1205,8 @@ class Interpreter(CallEvaluator):
         then_state, else_state = state.fork(), state.fork()
         then_state.assume(cond)
         else_state.assume(A.Unary("not", cond))
+        if _truth(cond) is None:  # `if self.verbose:` right after setting it: no choice
+            self._decided(node.test, then_state, else_state)
         if len(node.orelse) == 1 and type(node.orelse[0]) is ast.If:
             self.elifs.add(id(node.orelse[0]))
         elif not node.orelse and id(node) in self.elifs and _is_case(node.test):
@@ -1211,6 +1217,21 @@ class Interpreter(CallEvaluator):
         then_state = self.exec_block(node.body, then_state)
         else_state = self.exec_block(node.orelse, else_state)
         return self._join(then_state, else_state, since)
+
+    def _decided(self, test: ast.expr, *states: State) -> None:
+        """`test` was decided on the paths of `states` (`decisions.py`)."""
+        env = states[0].env
+
+        def tracked(name: str) -> Hashable:
+            bound = env.get(name)
+            term = bound.term if isinstance(bound, Value) else None
+            return term.ident if isinstance(term, A.Sym) else None
+
+        one = decisions.decision(
+            test, self.scope.local_names, tracked, self.attribute_terms
+        )
+        for state in states:
+            state.tests = (*state.tests, one)
 
     def _join(self, a: State, b: State, since: int | None = None) -> State:
         """`join`, after a received message read on one path only has had its
@@ -1335,6 +1356,7 @@ class Interpreter(CallEvaluator):
         stored = self.havoc(loop, [node], loop=True)
         body_state = loop.fork()
         body_state.assume(self.condition(node.test, body_state))
+        self._decided(node.test, body_state, loop)
         end = self.exec_block(node.body, body_state)
         self._loop_units(loop, end, [node])
         breaks = _breaks(node.body)
@@ -1476,7 +1498,11 @@ class Interpreter(CallEvaluator):
         raised = entry.fork()  # an exception somewhere in the body
         stored = self.havoc(raised, body)
         if node.handlers and self._binds_new_names(stored, entry):
-            raised = self._join(entry, raised)  # ... or before its first binding
+            before = entry.fork()  # ... or before its first binding
+            for name in sorted(_bound_before_raising(body, node.handlers)):
+                if name in self.scope.local_names:
+                    before.env[name] = self.unknown(node)
+            raised = self._join(before, raised)
         guards = any(_catches_name_error(h.type) for h in node.handlers)
         self.guarded += guards
         state = self.exec_block(body, state)
@@ -1583,6 +1609,36 @@ def _is_case(test: ast.expr) -> bool:
     return isinstance(test, ast.Call)
 
 
+BROAD_ERRORS = frozenset({"Exception", "BaseException", "TypeError"})
+
+
+def _bound_before_raising(
+    body: list[ast.stmt], handlers: list[ast.ExceptHandler]
+) -> set[str]:
+    """Names surely bound before anything the handlers catch can be raised: with a
+    `try` body that is one `for` loop, handlers of named exceptions (not a broad one,
+    which may come from iterating something that is not iterable) catch what its
+    body raised, after its target and the leading `x = y` of the body were bound."""
+    loop = body[0] if len(body) == 1 else None
+    if (
+        not isinstance(loop, ast.For)
+        or not isinstance(loop.target, ast.Name)  # unpacking may raise first
+        or loop.orelse
+        or not all(
+            h.type is not None and not _catches(h.type, BROAD_ERRORS) for h in handlers
+        )
+    ):
+        return set()
+    names = {loop.target.id}
+    for stmt in loop.body:
+        if not isinstance(stmt, ast.Assign) or not (
+            _cannot_raise(stmt) or isinstance(stmt.value, ast.Name)
+        ):
+            break
+        names |= {t.id for t in stmt.targets if isinstance(t, ast.Name)}
+    return names
+
+
 def _cannot_raise(stmt: ast.stmt) -> bool:
     """`x = None`, `n = 0`, `a = b = ""`, `pass`: a statement that never raises."""
     if isinstance(stmt, ast.Pass):
@@ -1638,11 +1694,16 @@ NAME_ERRORS = frozenset(
 
 
 def _catches_name_error(kind: ast.expr | None) -> bool:
+    return _catches(kind, NAME_ERRORS)
+
+
+def _catches(kind: ast.expr | None, errors: frozenset[str]) -> bool:
+    """Whether a handler of `kind` catches one of `errors` (a bare one: all)."""
     if kind is None:
         return True
     if isinstance(kind, ast.Tuple):
-        return any(_catches_name_error(e) for e in kind.elts)
-    return isinstance(kind, ast.Name) and kind.id in NAME_ERRORS
+        return any(_catches(e, errors) for e in kind.elts)
+    return isinstance(kind, ast.Name) and kind.id in errors
 
 
 NO_RETURN_NAMES = frozenset(

@@ -11,6 +11,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from typing import Protocol
 
+from robotfix.analysis.decisions import Decisions, merged
 from robotfix.analysis.values import Defs, MaybeDefault, MsgObj, Value
 from robotfix.annotations import ast as A
 
@@ -22,6 +23,11 @@ class MaybeUnbound:
     known (a `del`, a loop variable): reading it is then unknown, never an error."""
 
     when: A.Expr | None = None
+    # The branch decisions of the paths on which it is unbound (`decisions.py`).
+    tests: Decisions = field(default=(), compare=False)
+    # The ids of the decisions taken before the paths split (where it became
+    # unbound): ties among those alone do not make the read less sure.
+    early: frozenset[int] = field(default=frozenset(), compare=False)
 
 
 MAYBE = MaybeUnbound()
@@ -61,6 +67,7 @@ class State:
     # tell: a call it cannot see (`self.fail(...)`, `parser.exit(...)`), the
     # implicit `else` of an `elif` chain its author may have made exhaustive.
     exits: int = 0
+    tests: Decisions = ()  # the branch decisions taken on this path
 
     def fork(self) -> State:
         return State(
@@ -72,6 +79,7 @@ class State:
             set(self.defined) if self.defined else None,
             self.shared,
             self.exits,
+            self.tests,
         )
 
     def use(self, value: Value) -> Value:
@@ -192,6 +200,15 @@ def join(a: State, b: State, joiner: Joiner) -> State:
         )
         return MaybeDefault(when, known.default, known.owner)
 
+    def common_tests() -> frozenset[int]:
+        shared = 0
+        while (
+            shared < min(len(a.tests), len(b.tests))
+            and a.tests[shared] is b.tests[shared]
+        ):
+            shared += 1
+        return frozenset(one[0] for one in a.tests[:shared])
+
     env: dict[str, Binding] = {}
     for name in sorted(a.env.keys() | b.env.keys()):
         x, y = a.env.get(name), b.env.get(name)
@@ -206,7 +223,11 @@ def join(a: State, b: State, joiner: Joiner) -> State:
         else:
             (known_a, wa), (known_b, wb) = _unbound(x), _unbound(y)
             known = known_a and known_b
-            env[name] = MaybeUnbound(_either(selector(), wa, wb) if known else None)
+            env[name] = MaybeUnbound(
+                _either(selector(), wa, wb) if known else None,
+                merged(_tests(x, a), _tests(y, b)),
+                _early(x, common_tests()) & _early(y, common_tests()),
+            )
     heap = _join_heaps(a, b, joiner, merge, unset)
     facts = a.facts[:common]
     if rest_a and rest_b:
@@ -218,7 +239,13 @@ def join(a: State, b: State, joiner: Joiner) -> State:
             versions[term] = max(versions.get(term, 0), version) + 1
     defined = a.defined & b.defined if a.defined and b.defined else None
     exits = max(a.exits, b.exits)
-    return State(env, heap, facts, True, versions, defined, a.shared, exits)
+    shared = 0
+    while (
+        shared < min(len(a.tests), len(b.tests)) and a.tests[shared] is b.tests[shared]
+    ):
+        shared += 1
+    tests = a.tests[:shared]
+    return State(env, heap, facts, True, versions, defined, a.shared, exits, tests)
 
 
 def _join_heaps(
@@ -339,6 +366,22 @@ def _unbound(binding: Binding | None) -> tuple[bool, A.Expr | None]:
     if isinstance(binding, MaybeUnbound):
         return binding.when is not None, binding.when
     return True, None
+
+
+def _tests(binding: Binding | None, side: State) -> Decisions:
+    """The decisions of the paths through `side` on which `binding` is unbound."""
+    if binding is None:
+        return side.tests
+    if isinstance(binding, MaybeUnbound):
+        return merged(binding.tests, side.tests)
+    return ()
+
+
+def _early(binding: Binding | None, common: frozenset[int]) -> frozenset[int]:
+    """The decisions before `binding` became unbound (`common`: before this join)."""
+    if isinstance(binding, MaybeUnbound) and binding.when is not None:
+        return binding.early
+    return common
 
 
 def _either(
