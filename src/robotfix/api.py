@@ -118,6 +118,7 @@ class Discharger:
         return True
 
     def _decide(self, vc: VC) -> Verdict:
+        from robotfix.analysis.vc import Proved
         from robotfix.smt.prepass import proves
 
         if self.prepass and proves(vc):
