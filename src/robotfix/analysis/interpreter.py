@@ -1497,19 +1497,23 @@ class Interpreter(CallEvaluator):
         entry = state.fork()
         raised = entry.fork()  # an exception somewhere in the body
         stored = self.havoc(raised, body)
-        if node.handlers and self._binds_new_names(stored, entry):
-            before = entry.fork()  # ... or before its first binding
-            for name in sorted(_bound_before_raising(body, node.handlers)):
-                if name in self.scope.local_names:
-                    before.env[name] = self.unknown(node)
-            raised = self._join(before, raised)
+        inside = raised
+        binds = bool(node.handlers) and self._binds_new_names(stored, entry)
+        if binds:
+            raised = self._join(entry.fork(), inside.fork())  # ... or before binding
         guards = any(_catches_name_error(h.type) for h in node.handlers)
         self.guarded += guards
         state = self.exec_block(body, state)
         self.guarded -= guards
         result = self.exec_block(node.orelse, state)
         for handler in node.handlers:
+            first = _bound_before_raising(body, handler) if binds else set()
             handler_state = raised.fork()
+            if first & self.scope.local_names:
+                before = entry.fork()  # it raised after these were bound
+                for name in sorted(first & self.scope.local_names):
+                    before.env[name] = self.unknown(node)
+                handler_state = self._join(before, inside.fork())
             since = handler_state.exits
             if handler.type is not None:  # evaluated only if no earlier one matched
                 self.guarded += 1
@@ -1612,31 +1616,71 @@ def _is_case(test: ast.expr) -> bool:
 BROAD_ERRORS = frozenset({"Exception", "BaseException", "TypeError"})
 
 
-def _bound_before_raising(
-    body: list[ast.stmt], handlers: list[ast.ExceptHandler]
-) -> set[str]:
-    """Names surely bound before anything the handlers catch can be raised: with a
-    `try` body that is one `for` loop, handlers of named exceptions (not a broad one,
-    which may come from iterating something that is not iterable) catch what its
-    body raised, after its target and the leading `x = y` of the body were bound."""
-    loop = body[0] if len(body) == 1 else None
-    if (
-        not isinstance(loop, ast.For)
-        or not isinstance(loop.target, ast.Name)  # unpacking may raise first
-        or loop.orelse
-        or not all(
-            h.type is not None and not _catches(h.type, BROAD_ERRORS) for h in handlers
-        )
+def _bound_before_raising(body: list[ast.stmt], handler: ast.ExceptHandler) -> set[str]:
+    """Names surely bound before anything `handler` catches can be raised: with a
+    `try` body that is one `for` loop (one `with` block), a handler of named
+    exceptions (not a broad one, which may come from iterating something that is
+    not iterable) catch what its body raised, after its target (the names after
+    `as`) and the leading `x = y` of the body were bound."""
+    block = body[-1] if body and _without_calls(body[:-1], handler) else None
+    if isinstance(block, ast.For) and isinstance(block.target, ast.Name):
+        names = {block.target.id}  # a tuple: unpacking may raise first
+        if block.orelse:
+            return set()
+    elif isinstance(block, ast.With) and all(
+        isinstance(item.optional_vars, (ast.Name, type(None))) for item in block.items
     ):
+        names = {
+            item.optional_vars.id
+            for item in block.items
+            if isinstance(item.optional_vars, ast.Name)
+        }
+    else:
         return set()
-    names = {loop.target.id}
-    for stmt in loop.body:
+    if handler.type is None or _catches(handler.type, BROAD_ERRORS):
+        return set()
+    for stmt in block.body:
         if not isinstance(stmt, ast.Assign) or not (
             _cannot_raise(stmt) or isinstance(stmt.value, ast.Name)
         ):
             break
         names |= {t.id for t in stmt.targets if isinstance(t, ast.Name)}
     return names
+
+
+def _without_calls(stmts: list[ast.stmt], handler: ast.ExceptHandler) -> bool:
+    """Statements that cannot raise what `handler` catches: none, or (a handler of
+    exceptions that are not builtin ones, which only a call or a `raise` raises,
+    not `self.level += 1`) statements without a call, `raise`, `assert` or `yield`."""
+    if not stmts:
+        return True
+    if _catches(handler.type, BUILTIN_ERRORS):
+        return False
+    return not any(
+        isinstance(
+            n,
+            (
+                ast.Call,
+                ast.Raise,
+                ast.Assert,
+                ast.Await,
+                ast.Yield,
+                ast.YieldFrom,
+                ast.FunctionDef,
+                ast.ClassDef,
+                ast.Delete,
+            ),
+        )
+        for n in walk(stmts)
+    )
+
+
+BUILTIN_ERRORS = frozenset(
+    name
+    for name in dir(builtins)
+    if isinstance(getattr(builtins, name), type)
+    and issubclass(getattr(builtins, name), BaseException)
+)
 
 
 def _cannot_raise(stmt: ast.stmt) -> bool:
