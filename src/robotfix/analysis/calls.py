@@ -105,19 +105,16 @@ class CallEvaluator(LibraryEvaluator):
         if (
             callee.kind in ("function", "method")
             and callee.name in self.program.functions
+            and not imported.starred(node, kwargs)
         ):
-            starred = (
-                any(isinstance(a, ast.Starred) for a in node.args) or None in kwargs
+            return self.call_known(
+                self.program.functions[callee.name],
+                args,
+                kwargs,
+                node,
+                state,
+                bound=callee.kind == "method",
             )
-            if not starred:
-                return self.call_known(
-                    self.program.functions[callee.name],
-                    args,
-                    kwargs,
-                    node,
-                    state,
-                    bound=callee.kind == "method",
-                )
         if callee.kind == "class" and callee.name in self.program.classes:
             init = self.program.functions.get(f"{callee.name}.__init__")
             if init is not None and not any(

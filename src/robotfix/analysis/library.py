@@ -16,7 +16,7 @@ from dataclasses import replace
 from fractions import Fraction
 
 from robotfix import messages
-from robotfix.analysis import frames, heap
+from robotfix.analysis import frames, heap, imported
 from robotfix.analysis.param_eval import ParameterEvaluator
 from robotfix.analysis.state import State
 from robotfix.analysis.values import Value
@@ -116,7 +116,7 @@ class LibraryEvaluator(ParameterEvaluator):
     ) -> Value | None:
         """The value of a call of a stubbed function, method or class; None when
         no stub speaks of it."""
-        if any(isinstance(a, ast.Starred) for a in node.args) or None in kwargs:
+        if imported.starred(node, kwargs):
             args = []  # positions unknown: only keywords are checked
         if callee.kind == "libmethod":
             found = resolve_library(self.ctx, callee.name)

@@ -85,6 +85,20 @@ class Attribute:
     type: str | None  # qualified class name
 
 
+def _built(
+    pending: dict[str, Callable[[], Function | None]],
+    built: dict[str, Function],
+    name: str,
+) -> Function | None:
+    """A stub function, its annotations read the first time it is asked for."""
+    build = pending.pop(name, None)
+    if build is not None:
+        found = build()
+        if found is not None:
+            built[name] = found
+    return built.get(name)
+
+
 @dataclass
 class Class:
     qualname: str
@@ -95,12 +109,7 @@ class Class:
     pending: dict[str, Callable[[], Function | None]] = field(default_factory=dict)
 
     def method(self, name: str) -> Function | None:
-        build = self.pending.pop(name, None)
-        if build is not None:
-            found = build()
-            if found is not None:
-                self.members[name] = found
-        return self.members.get(name)
+        return _built(self.pending, self.members, name)
 
     def force(self) -> None:
         for name in list(self.pending):
@@ -125,12 +134,7 @@ class Module:
     pending: dict[str, Callable[[], Function | None]] = field(default_factory=dict)
 
     def function(self, name: str) -> Function | None:
-        build = self.pending.pop(name, None)
-        if build is not None:
-            found = build()
-            if found is not None:
-                self.functions[name] = found
-        return self.functions.get(name)
+        return _built(self.pending, self.functions, name)
 
     def force(self) -> None:
         """Read every function and method (for the problems of a user stub)."""
