@@ -7,23 +7,17 @@ In-process through `api.hover`, and as a real client session with `robotfix lsp`
 
 from __future__ import annotations
 
-import asyncio
 import keyword
-import sys
 from pathlib import Path
 from typing import Any
 from urllib.parse import unquote
 
-import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from robotfix import api, dependents
 from robotfix.ros.catalog import MsgCatalog
-
-pytest.importorskip("pygls")
-from lsprotocol import types
-from pygls.lsp.client import LanguageClient
+from tests.lsp_client import Client
 
 # The new-user report's P11: hover answered on reads of `turn` but was null on its
 # declaration and on assignment targets, and showed a sub-message without units.
@@ -236,70 +230,48 @@ class Session:
     """A client speaking to `robotfix lsp`, collecting what the server publishes."""
 
     def __init__(self, dynamic_watchers: bool) -> None:
-        self.client = LanguageClient("robotfix-test", "1")
-        self.published: list[types.PublishDiagnosticsParams] = []
-        self.registrations: list[types.RegistrationParams] = []
+        self.client = Client()
         self.dynamic = dynamic_watchers
         self.version = 1
 
-        @self.client.feature(types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
-        def on_diagnostics(params: types.PublishDiagnosticsParams) -> None:
-            self.published.append(params)
+    def start(self, root: Path) -> None:
+        watched = {"dynamicRegistration": self.dynamic}
+        self.client.initialize(root, {"workspace": {"didChangeWatchedFiles": watched}})
 
-        @self.client.feature(types.CLIENT_REGISTER_CAPABILITY)
-        def on_register(params: types.RegistrationParams) -> None:
-            self.registrations.append(params)
+    @property
+    def registrations(self) -> list[dict[str, Any]]:
+        return [
+            r["params"]
+            for r in self.client.server_requests
+            if r["method"] == "client/registerCapability"
+        ]
 
-    async def start(self, root: Path) -> None:
-        await self.client.start_io(sys.executable, "-m", "robotfix", "lsp")
-        capabilities = types.ClientCapabilities(
-            workspace=types.WorkspaceClientCapabilities(
-                did_change_watched_files=types.DidChangeWatchedFilesClientCapabilities(
-                    dynamic_registration=self.dynamic
-                )
-            )
-        )
-        await self.client.initialize_async(
-            types.InitializeParams(capabilities=capabilities, root_uri=root.as_uri())
-        )
-        self.client.initialized(types.InitializedParams())
-
-    async def settle(self, uri: str) -> dict[str, list[str]]:
+    def settle(self, uri: str) -> dict[str, list[str]]:
         """Wait until the server handled everything sent so far (it answers a
         request after the notifications sent before it, and publishes before it
         answers); the codes published per file since the last call."""
-        await self.client.text_document_hover_async(
-            types.HoverParams(types.TextDocumentIdentifier(uri), types.Position(0, 0))
-        )
+        self.client.hover(uri, 0, 0)
         found = {
-            unquote(p.uri).rsplit("/", 1)[1]: sorted(str(d.code) for d in p.diagnostics)
-            for p in self.published
+            unquote(p["uri"]).rsplit("/", 1)[1]: sorted(
+                str(d["code"]) for d in p["diagnostics"]
+            )
+            for p in self.client.published
         }
-        self.published.clear()
+        self.client.published.clear()
         return found
 
     def open(self, path: Path, text: str, language: str = "python") -> str:
-        uri = path.as_uri()
-        self.client.text_document_did_open(
-            types.DidOpenTextDocumentParams(
-                types.TextDocumentItem(uri, language, 1, text)
-            )
-        )
-        return uri
+        return self.client.open(path, text, language)
 
     def change(self, uri: str, text: str) -> None:
         self.version += 1
-        self.client.text_document_did_change(
-            types.DidChangeTextDocumentParams(
-                types.VersionedTextDocumentIdentifier(version=self.version, uri=uri),
-                [types.TextDocumentContentChangeWholeDocument(text=text)],
-            )
-        )
+        self.client.change(uri, self.version, {"text": text})
 
-    async def stop(self) -> None:
-        await self.client.shutdown_async(None)
-        self.client.exit(None)
-        await self.client.stop()
+    def notify(self, method: str, params: object) -> None:
+        self.client.notify(method, params)
+
+    def stop(self) -> None:
+        assert self.client.stop() == 0
 
 
 def make_package(root: Path) -> tuple[Path, Path, Path]:
@@ -318,56 +290,56 @@ def make_package(root: Path) -> tuple[Path, Path, Path]:
     return reading, node, other
 
 
-async def interface_session(root: Path) -> dict[str, Any]:
+def interface_session(root: Path) -> dict[str, Any]:
     root = root / "my ws"  # URIs that need quoting
     reading, node, other = make_package(root)
     session = Session(dynamic_watchers=True)
-    await session.start(root)
+    try:
+        return interface_steps(session, root, reading, node, other)
+    finally:
+        session.client.kill()
+
+
+def interface_steps(
+    session: Session, root: Path, reading: Path, node: Path, other: Path
+) -> dict[str, Any]:
+    session.start(root)
     steps: dict[str, Any] = {}
     node_uri = session.open(node, NODE)
     session.open(other, UNRELATED)
-    steps["opened"] = await session.settle(node_uri)
+    steps["opened"] = session.settle(node_uri)
     steps["registrations"] = list(session.registrations)
-    steps["hover_declaration"] = await session.client.text_document_hover_async(
-        types.HoverParams(types.TextDocumentIdentifier(node_uri), types.Position(4, 1))
-    )
-    steps["hover_target"] = await session.client.text_document_hover_async(
-        types.HoverParams(types.TextDocumentIdentifier(node_uri), types.Position(5, 9))
-    )
+    steps["hover_declaration"] = session.client.hover(node_uri, 4, 1)["result"]
+    steps["hover_target"] = session.client.hover(node_uri, 5, 9)["result"]
     msg_uri = session.open(reading, METRES, "ros-msg")
-    steps["msg_opened"] = await session.settle(node_uri)
+    steps["msg_opened"] = session.settle(node_uri)
     session.change(msg_uri, KILOMETRES)  # typed, not saved
-    steps["msg_typed"] = await session.settle(node_uri)
+    steps["msg_typed"] = session.settle(node_uri)
     session.change(msg_uri, "float64 dist\nfloat64\n")
-    steps["msg_broken"] = await session.settle(node_uri)
-    session.client.text_document_did_close(
-        types.DidCloseTextDocumentParams(types.TextDocumentIdentifier(msg_uri))
-    )
-    steps["msg_closed"] = await session.settle(node_uri)
+    steps["msg_broken"] = session.settle(node_uri)
+    session.notify("textDocument/didClose", {"textDocument": {"uri": msg_uri}})
+    steps["msg_closed"] = session.settle(node_uri)
     reading.write_text(KILOMETRES)  # changed on disk, e.g. by git
-    session.client.workspace_did_change_watched_files(
-        types.DidChangeWatchedFilesParams(
-            [types.FileEvent(reading.as_uri(), types.FileChangeType.Changed)]
-        )
-    )
-    steps["msg_on_disk"] = await session.settle(node_uri)
-    await session.stop()
+    changed = {"uri": reading.as_uri(), "type": 2}  # FileChangeType.Changed
+    session.notify("workspace/didChangeWatchedFiles", {"changes": [changed]})
+    steps["msg_on_disk"] = session.settle(node_uri)
+    session.stop()
     return steps
 
 
 def test_interface_changes_recheck_the_open_documents_that_use_them(
     tmp_path: Path,
 ) -> None:
-    steps = asyncio.run(interface_session(tmp_path))
+    steps = interface_session(tmp_path)
     # the package's interfaces are found for an opened file (its package.xml)
     assert steps["opened"] == {"node.py": ["RF201"], "other.py": []}
-    (registration,) = steps["registrations"][0].registrations
-    assert registration.method == "workspace/didChangeWatchedFiles"
-    watchers = registration.register_options["watchers"]
+    (registration,) = steps["registrations"][0]["registrations"]
+    assert registration["method"] == "workspace/didChangeWatchedFiles"
+    watchers = registration["registerOptions"]["watchers"]
     assert [w["globPattern"] for w in watchers] == ["**/*.{msg,srv,action}"]
-    declaration = steps["hover_declaration"].contents.value
+    declaration = steps["hover_declaration"]["contents"]["value"]
     assert declaration.startswith("**far**: `float` in `km`")
-    target = steps["hover_target"].contents.value
+    target = steps["hover_target"]["contents"]["value"]
     assert target.startswith("**dist** of `nav_pkg/Reading`: `float` in `m`")
     assert steps["msg_opened"] == {"Reading.msg": []}
     # an unsaved edit of the .msg counts; other.py does not use Reading
@@ -381,40 +353,44 @@ HELPER = "LIMIT = 1.0\n"
 USER = "from nav_pkg.helper import LIMIT\n\nx = LIMIT\n"
 
 
-async def module_session(root: Path) -> dict[str, Any]:
+def module_session(root: Path) -> dict[str, Any]:
     _, node, other = make_package(root)
     helper = node.parent / "helper.py"
     helper.write_text(HELPER)
     user = node.parent / "user.py"
     user.write_text(USER)
     session = Session(dynamic_watchers=False)
-    await session.start(root)
+    try:
+        return module_steps(session, root, helper, user, other)
+    finally:
+        session.client.kill()
+
+
+def module_steps(
+    session: Session, root: Path, helper: Path, user: Path, other: Path
+) -> dict[str, Any]:
+    session.start(root)
     steps: dict[str, Any] = {}
     user_uri = session.open(user, USER)
     session.open(other, UNRELATED)
     helper_uri = session.open(helper, HELPER)
-    steps["opened"] = await session.settle(user_uri)
+    steps["opened"] = session.settle(user_uri)
     steps["registrations"] = list(session.registrations)
     session.change(helper_uri, HELPER + "OTHER = 2\n")
-    steps["typed"] = await session.settle(user_uri)
-    session.client.text_document_did_save(
-        types.DidSaveTextDocumentParams(types.TextDocumentIdentifier(helper_uri))
-    )
-    steps["saved"] = await session.settle(user_uri)
-    session.client.workspace_did_change_watched_files(
-        types.DidChangeWatchedFilesParams(
-            [types.FileEvent(helper.as_uri(), types.FileChangeType.Changed)]
-        )
-    )
-    steps["on_disk"] = await session.settle(user_uri)
-    await session.stop()
+    steps["typed"] = session.settle(user_uri)
+    session.notify("textDocument/didSave", {"textDocument": {"uri": helper_uri}})
+    steps["saved"] = session.settle(user_uri)
+    changed = {"uri": helper.as_uri(), "type": 2}  # FileChangeType.Changed
+    session.notify("workspace/didChangeWatchedFiles", {"changes": [changed]})
+    steps["on_disk"] = session.settle(user_uri)
+    session.stop()
     return steps
 
 
 def test_a_saved_module_rechecks_the_open_documents_that_import_it(
     tmp_path: Path,
 ) -> None:
-    steps = asyncio.run(module_session(tmp_path))
+    steps = module_session(tmp_path)
     assert steps["opened"] == {"user.py": [], "other.py": [], "helper.py": []}
     assert steps["registrations"] == []  # the client cannot register watchers
     assert steps["typed"] == {"helper.py": []}  # unsaved: importers see the disk

@@ -11,7 +11,9 @@ GATES = {
     "lark": ("annotations/parser.py",),
     "pint": ("annotations/units.py",),
     "rosbags": ("ros/catalog.py",),
-    "pygls": ("lsp/",),
+    # the language server speaks JSON-RPC itself (lsp/rpc.py): no library does
+    "pygls": (),
+    "lsprotocol": (),
     "yaml": ("ros/yamlfile.py",),
 }
 # module prefix -> what it must not import
@@ -58,6 +60,17 @@ FORBIDDEN = {
     ),
     "smt/": ("robotfix.api", "robotfix.report", "robotfix.cli", "robotfix.ros"),
     "report/": ("robotfix.analysis", "robotfix.smt", "robotfix.api", "robotfix.cli"),
+    # the transport and the document store know nothing of RobotFix
+    "lsp/rpc.py": ("robotfix.",),
+    "lsp/documents.py": ("robotfix.",),
+    # the server is an adapter over `api`
+    "lsp/": (
+        "robotfix.analysis",
+        "robotfix.annotations",
+        "robotfix.run",
+        "robotfix.cache",
+        "robotfix.cli",
+    ),
 }
 
 

@@ -6,7 +6,6 @@ language server."""
 
 from __future__ import annotations
 
-import asyncio
 import functools
 import json
 import os
@@ -27,13 +26,7 @@ from robotfix.diagnostics import Diagnostic, Note, Span
 from robotfix.report import github, json_report, sarif, text
 from robotfix.report.escape import shown_path
 from robotfix.rules import ALL_RULES, UNREADABLE_FILE
-
-try:
-    from lsprotocol import types
-    from pygls.lsp.client import LanguageClient
-except ImportError:  # the language server is an extra
-    types = None
-needs_pygls = pytest.mark.skipif(types is None, reason="needs robotfix[lsp]")
+from tests.lsp_client import Client
 
 BUGGY = 'from typing import Annotated\ntimeout: Annotated[int, "_ < 200"] = 200\n'
 
@@ -334,46 +327,6 @@ def test_internal_error_is_counted_in_json_and_sarif(
 # -- H7, K1, W8: the language server ------------------------------------------------
 
 
-async def _start(root: Path) -> tuple[Any, asyncio.Queue[Any]]:
-    client = LanguageClient("robotfix-test", "1")
-    published: asyncio.Queue[Any] = asyncio.Queue()
-
-    @client.feature(types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
-    def on_diagnostics(params: types.PublishDiagnosticsParams) -> None:
-        published.put_nowait(params)
-
-    await client.start_io(sys.executable, "-m", "robotfix", "lsp")
-    await client.initialize_async(
-        types.InitializeParams(
-            capabilities=types.ClientCapabilities(), root_uri=root.as_uri()
-        )
-    )
-    client.initialized(types.InitializedParams())
-    return client, published
-
-
-async def _stop(client: Any) -> None:
-    await client.shutdown_async(None)
-    client.exit(None)
-    await client.stop()
-
-
-def _open(client: Any, uri: str, text: str) -> None:
-    client.text_document_did_open(
-        types.DidOpenTextDocumentParams(
-            types.TextDocumentItem(uri=uri, language_id="python", version=1, text=text)
-        )
-    )
-
-
-def _hover(client: Any, uri: str, line: int, character: int) -> Any:
-    return client.text_document_hover_async(
-        types.HoverParams(
-            types.TextDocumentIdentifier(uri), types.Position(line, character)
-        )
-    )
-
-
 # U+2028 and the form feed are inside line 2, for ast and for LSP. Line 2: `t` is
 # character 11, UTF-16 unit 13 (😀 is two units); line 3: `t` is unit 13.
 LSP_SOURCE = (
@@ -383,56 +336,46 @@ LSP_SOURCE = (
 )
 
 
-async def _with_server(root: Path, body: Any) -> Any:
-    client, published = await _start(root)
+def _with_server(root: Path, body: Any) -> Any:
+    client = Client()
     try:
-        result = await body(client, published)
-    except BaseException:  # a hung server must not outlive the test
-        server = getattr(client, "_server", None)
-        if server is not None and server.returncode is None:
-            server.kill()
-        raise
-    await _stop(client)
+        client.initialize(root)
+        result = body(client)
+        assert client.stop() == 0
+    finally:  # a hung server must not outlive the test
+        client.kill()
     return result
 
 
-async def _lsp_fifo_and_columns(
-    tmp_path: Path, client: Any, published: asyncio.Queue[Any]
-) -> dict[str, object]:
+def _lsp_fifo_and_columns(tmp_path: Path, client: Client) -> dict[str, object]:
     fifo = tmp_path / "pipe.py"
     os.mkfifo(fifo)
     found: dict[str, object] = {}
-    found["fifo"] = await asyncio.wait_for(_hover(client, fifo.as_uri(), 0, 0), 60)
+    found["fifo"] = client.hover(fifo.as_uri(), 0, 0)["result"]
     if os.path.exists("/dev/zero"):
-        found["zero"] = await asyncio.wait_for(
-            _hover(client, "file:///dev/zero", 0, 0), 60
-        )
-    client.text_document_did_save(
-        types.DidSaveTextDocumentParams(types.TextDocumentIdentifier(fifo.as_uri()))
-    )
+        found["zero"] = client.hover("file:///dev/zero", 0, 0)["result"]
+    client.notify("textDocument/didSave", {"textDocument": {"uri": fifo.as_uri()}})
     node = tmp_path / "node.py"
     node.write_text(LSP_SOURCE, encoding="utf-8")
-    _open(client, node.as_uri(), LSP_SOURCE)
-    found["opened"] = await asyncio.wait_for(published.get(), 60)
-    found["hover"] = await asyncio.wait_for(_hover(client, node.as_uri(), 2, 13), 60)
+    client.open(node, LSP_SOURCE)
+    found["opened"] = client.diagnostics()
+    found["hover"] = client.hover(node.as_uri(), 2, 13)["result"]
     return found
 
 
-@needs_pygls
 @pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="needs FIFOs")
 def test_lsp_never_reads_a_fifo_and_counts_columns_as_ast(tmp_path: Path) -> None:
-    found = asyncio.run(
-        _with_server(tmp_path, functools.partial(_lsp_fifo_and_columns, tmp_path))
-    )
+    found = _with_server(tmp_path, functools.partial(_lsp_fifo_and_columns, tmp_path))
     assert found["fifo"] is None
     assert found.get("zero") is None
     opened = found["opened"]
-    assert isinstance(opened, types.PublishDiagnosticsParams)
-    [rf101] = [d for d in opened.diagnostics if d.code == "RF101"]
-    assert (rf101.range.start.line, rf101.range.start.character) == (1, 13)
+    [rf101] = [d for d in opened["diagnostics"] if d["code"] == "RF101"]
+    assert (rf101["range"]["start"]["line"], rf101["range"]["start"]["character"]) == (
+        1,
+        13,
+    )
     hover = found["hover"]
-    assert isinstance(hover, types.Hover)
-    assert "**t**: `int` — refinement `_ < 200`" in hover.contents.value
+    assert "**t**: `int` — refinement `_ < 200`" in hover["contents"]["value"]
 
 
 NODE = """from demo.msg import Cmd
@@ -444,9 +387,7 @@ def send(pub) -> None:
 """
 
 
-async def _lsp_msg_edit(
-    tmp_path: Path, client: Any, published: asyncio.Queue[Any]
-) -> list[Any]:
+def _lsp_msg_edit(tmp_path: Path, client: Client) -> list[Any]:
     package = tmp_path / "demo"
     (package / "msg").mkdir(parents=True)
     (package / "package.xml").write_text("<package><name>demo</name></package>")
@@ -454,33 +395,26 @@ async def _lsp_msg_edit(
     cmd.write_text("float64 speed #RobotFix# speed <= 2\n")
     node = package / "node.py"
     node.write_text(NODE)
-    _open(client, node.as_uri(), NODE)
-    before = await asyncio.wait_for(published.get(), 60)
+    client.open(node, NODE)
+    before = client.diagnostics()
     cmd.write_text("float64 speed #RobotFix# speed <= 1\n")  # same size
     # a second later, as an edit by hand would be: a coarse clock cannot hide it
     stamp = os.stat(cmd)
     os.utime(cmd, ns=(stamp.st_atime_ns, stamp.st_mtime_ns + 1_000_000_000))
-    client.text_document_did_save(
-        types.DidSaveTextDocumentParams(types.TextDocumentIdentifier(node.as_uri()))
-    )
-    after = await asyncio.wait_for(published.get(), 60)
+    client.notify("textDocument/didSave", {"textDocument": {"uri": node.as_uri()}})
+    after = client.diagnostics()
     return [before, after]
 
 
-@needs_pygls
 def test_lsp_picks_up_an_edited_msg_without_a_restart(tmp_path: Path) -> None:
-    before, after = asyncio.run(
-        _with_server(tmp_path, functools.partial(_lsp_msg_edit, tmp_path))
-    )
-    assert [d.code for d in before.diagnostics] == []
-    assert [d.code for d in after.diagnostics] == ["RF101"]
-    assert "speed <= 1" in after.diagnostics[0].message
+    before, after = _with_server(tmp_path, functools.partial(_lsp_msg_edit, tmp_path))
+    assert [d["code"] for d in before["diagnostics"]] == []
+    assert [d["code"] for d in after["diagnostics"]] == ["RF101"]
+    assert "speed <= 1" in after["diagnostics"][0]["message"]
 
 
 def test_the_language_server_exits_0_after_shutdown_and_exit() -> None:
-    """pygls closes stdout on `exit`: the final flush must not turn that into 2."""
-    pytest.importorskip("pygls")
-
+    """The final flush after `exit` must not turn the exit status into 2."""
     server = subprocess.Popen(
         [sys.executable, "-m", "robotfix", "lsp"],
         stdin=subprocess.PIPE,

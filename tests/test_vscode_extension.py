@@ -7,7 +7,6 @@ Skipped where node or npm is missing or the npm registry cannot be reached."""
 
 from __future__ import annotations
 
-import asyncio
 import json
 import os
 import shutil
@@ -15,12 +14,11 @@ import subprocess
 import sys
 import zipfile
 from pathlib import Path
+from typing import Any
 
 import pytest
 
-pytest.importorskip("pygls")
-from lsprotocol import types
-from pygls.lsp.client import LanguageClient
+from tests.lsp_client import Client
 
 EXTENSION = Path(__file__).parent.parent / "editors" / "vscode"
 BUGGY = """from typing import Annotated
@@ -110,36 +108,19 @@ def command_line(unpacked: Path) -> list[str]:
     return [found["command"], *found["args"]]
 
 
-async def diagnostics_through(
-    command: list[str], folder: Path
-) -> types.PublishDiagnosticsParams:
-    client = LanguageClient("vscode-extension-test", "1")
-    published: asyncio.Queue[types.PublishDiagnosticsParams] = asyncio.Queue()
-
-    @client.feature(types.TEXT_DOCUMENT_PUBLISH_DIAGNOSTICS)
-    def on_diagnostics(params: types.PublishDiagnosticsParams) -> None:
-        published.put_nowait(params)
-
+def diagnostics_through(command: list[str], folder: Path) -> dict[str, Any]:
     # `robotfix` is found on PATH, as VS Code finds it: here, this Python's scripts
     path = os.pathsep.join([str(Path(sys.executable).parent), os.environ["PATH"]])
-    await client.start_io(*command, env={**os.environ, "PATH": path})
-    await client.initialize_async(
-        types.InitializeParams(
-            capabilities=types.ClientCapabilities(), root_uri=folder.as_uri()
-        )
-    )
-    client.initialized(types.InitializedParams())
-    node = folder / "node.py"
-    node.write_text(BUGGY)
-    client.text_document_did_open(
-        types.DidOpenTextDocumentParams(
-            types.TextDocumentItem(node.as_uri(), "python", 1, BUGGY)
-        )
-    )
-    found = await asyncio.wait_for(published.get(), 120)
-    await client.shutdown_async(None)
-    client.exit(None)
-    await client.stop()
+    client = Client(command, env={**os.environ, "PATH": path})
+    try:
+        client.initialize(folder)
+        node = folder / "node.py"
+        node.write_text(BUGGY)
+        client.open(node, BUGGY)
+        found = client.diagnostics()
+        assert client.stop() == 0
+    finally:
+        client.kill()
     return found
 
 
@@ -148,6 +129,6 @@ def test_the_extensions_command_line_starts_the_language_server(
 ) -> None:
     command = command_line(unpacked)
     assert command == ["robotfix", "lsp"]
-    found = asyncio.run(diagnostics_through(command, tmp_path))
-    assert [d.code for d in found.diagnostics] == ["RF201"]
-    assert found.diagnostics[0].range.start.line == 5
+    found = diagnostics_through(command, tmp_path)
+    assert [d["code"] for d in found["diagnostics"]] == ["RF201"]
+    assert found["diagnostics"][0]["range"]["start"]["line"] == 5

@@ -9,7 +9,6 @@ import os
 import subprocess
 import sys
 from pathlib import Path
-from types import SimpleNamespace
 from typing import Any
 
 import pytest
@@ -289,7 +288,7 @@ def test_the_language_server_looks_in_the_install_space(
     pkg = node(tmp_path, USES_CMD.format(speed=2.0))
     env = {"AMENT_PREFIX_PATH": str(ros2_install(tmp_path / "install"))}
     monkeypatch.setattr(server, "_INSTALLED", discovery.install_space(env))
-    editor = SimpleNamespace(workspace=SimpleNamespace(text_documents={}))  # none open
+    editor = server.Session()  # no document open
     catalog = server._catalog(editor, pkg / "drive" / "node.py")
     assert catalog.lookup("my_msgs/Cmd") is not None
 

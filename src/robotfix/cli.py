@@ -250,14 +250,11 @@ def run_lsp() -> int:
         from robotfix.lsp.server import serve
     except ImportError as err:
         print(
-            f"robotfix: error: the language server needs pygls ({err}); "
-            "install RobotFix with its lsp extra: "
-            "python -m pip install '/path/to/robotfix[lsp]' (a checkout or a wheel)",
+            f"robotfix: error: the language server cannot start ({err})",
             file=sys.stderr,
         )
         return EXIT_FAILURE
-    serve()
-    return EXIT_OK
+    return serve()  # 1 when the client exits without asking to shut down
 
 
 def run_check(args: argparse.Namespace) -> int:

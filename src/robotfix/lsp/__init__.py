@@ -1,1 +1,2 @@
-"""The language server (optional extra `lsp`): the only package that imports pygls."""
+"""The language server: `rpc` (JSON-RPC over stdio, stdlib only), `documents` (the
+editor's buffers), `server` (the LSP methods over `api`)."""

@@ -1,5 +1,6 @@
 """`robotfix lsp`: diagnostics on open, change and save, hovers with units and
-refinements, over stdio with pygls. A thin adapter over `api`: no analysis here.
+refinements, over stdio (`lsp/rpc.py`, the JSON-RPC layer; `lsp/documents.py`, the
+open documents, synced incrementally). A thin adapter over `api`: no analysis here.
 
 Interface files and settings come from the nearest `pyproject.toml` of each document
 and from the ROS package around it (`_interface_folders`). A catalog is rebuilt when an
@@ -11,46 +12,111 @@ the open Python documents that use its types are checked again; when a Python mo
 is saved or changed on disk, the open documents that import it (see
 `robotfix.dependents`). A document the editor never opened is read from disk only
 through `fs.read_regular` (a FIFO or `/dev/zero` gets no answer, not a hang).
+
+The modules a document imports are summarised once per catalog (`_project`), not on
+every keystroke, and summarised again when a file they were read from, or a folder
+around them, changes (stamps, as for interface files), or a Python file is saved or
+reported changed.
 """
 
 from __future__ import annotations
 
 import os
-from collections.abc import Iterable
+import sys
+from collections.abc import Callable, Iterable
 from pathlib import Path
-from urllib.parse import unquote
-
-from lsprotocol import types
-from pygls.lsp.server import LanguageServer
-from pygls.uris import to_fs_path
+from typing import IO, TYPE_CHECKING, Any
 
 from robotfix import __version__, api, config, dependents, discovery, fs, source
 from robotfix.diagnostics import Diagnostic, Severity
+from robotfix.lsp import rpc
+from robotfix.lsp.documents import (
+    Documents,
+    InvalidChangeError,
+    char,
+    path_of,
+    to_path,
+    utf16,
+)
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.smt.memo import ProofMemo
 
-SEVERITIES = {
-    Severity.ERROR: types.DiagnosticSeverity.Error,
-    Severity.WARNING: types.DiagnosticSeverity.Warning,
-    Severity.NOTE: types.DiagnosticSeverity.Information,
-}
+if TYPE_CHECKING:
+    from robotfix.project.summary import Project
+
+SEVERITIES = {Severity.ERROR: 1, Severity.WARNING: 2, Severity.NOTE: 3}
+LOG_ERROR = 1  # window/logMessage's MessageType.Error
+SYNC_INCREMENTAL = 2  # TextDocumentSyncKind (documents.py says why)
 INTERFACE_GLOB = "**/*.{msg,srv,action}"
 MAX_CATALOGS = 32  # catalogs kept (one per set of interface files and settings)
 MAX_MEMOS = 8  # documents, most recently checked, whose proofs are kept
+MAX_PROJECTS = 8  # module summaries kept, one set per catalog
 
-server = LanguageServer(
-    "robotfix", __version__, text_document_sync_kind=types.TextDocumentSyncKind.Full
-)
 # interface files and settings -> (their stat stamps and open buffers, the catalog)
 _catalogs: dict[tuple[object, ...], tuple[tuple[object, ...], MsgCatalog]] = {}
 _INSTALLED = discovery.install_space()
 # document URI -> its verdicts by normalised VC, so a keystroke in one function does
 # not prove the others again (`smt.memo`); least recently checked documents go first
 _memos: dict[str, ProofMemo] = {}
+# id of a catalog -> (the catalog, the project built with it, the stamps of the
+# files and folders the project read)
+_projects: dict[int, tuple[MsgCatalog, Project, dict[Path, tuple[object, ...]]]] = {}
 
 
-def serve() -> None:
-    server.start_io()
+class Session:
+    """The server's side of one editor session: the connection (none in tests
+    that only ask for a catalog), the open documents, what the client can do."""
+
+    def __init__(self, endpoint: rpc.Endpoint | None = None) -> None:
+        self.endpoint = endpoint
+        self.documents = Documents()
+        self.capabilities: dict[str, Any] = {}
+
+    def notify(self, method: str, params: object) -> None:
+        if self.endpoint is not None:
+            self.endpoint.notify(method, params)
+
+
+def serve(reader: IO[bytes] | None = None, writer: IO[bytes] | None = None) -> int:
+    """Serve one session over stdio (or the given streams); the exit code."""
+    if writer is None:
+        writer = sys.stdout.buffer
+        sys.stdout = sys.stderr  # a stray print must not corrupt the protocol
+    endpoint = rpc.Endpoint(reader or sys.stdin.buffer, writer)
+    ls = Session(endpoint)
+    endpoint.on_error = lambda message: _log_error(ls, message)
+    for method, handler in REQUESTS.items():
+        endpoint.requests[method] = _bind(ls, handler)
+    for method, handler in NOTIFICATIONS.items():
+        endpoint.notifications[method] = _bind(ls, handler)
+    return endpoint.serve()
+
+
+def _bind(ls: Session, handler: Callable[[Session, Any], Any]) -> rpc.Handler:
+    def bound(params: Any) -> Any:
+        try:
+            return handler(ls, params)
+        except InvalidChangeError as err:
+            raise rpc.InvalidParamsError(str(err)) from None
+
+    return bound
+
+
+def _get(params: Any, *names: str) -> Any:
+    """params[names[0]][names[1]]..., raising InvalidParamsError when it is missing."""
+    value = params
+    for name in names:
+        if not isinstance(value, dict) or name not in value:
+            raise rpc.InvalidParamsError(f"missing {'.'.join(names)}")
+        value = value[name]
+    return value
+
+
+def _uri(params: Any) -> str:
+    uri = _get(params, "textDocument", "uri")
+    if not isinstance(uri, str):
+        raise rpc.InvalidParamsError("textDocument.uri must be a string")
+    return uri
 
 
 def _interface_folders(path: Path, settings: config.Config) -> list[Path]:
@@ -59,7 +125,7 @@ def _interface_folders(path: Path, settings: config.Config) -> list[Path]:
     return list(settings.msg_paths) + api.ros_interface_folders([path])
 
 
-def _catalog(ls: LanguageServer, path: Path) -> MsgCatalog:
+def _catalog(ls: Session, path: Path) -> MsgCatalog:
     try:
         settings = config.load(path)
     except config.ConfigError:
@@ -68,7 +134,13 @@ def _catalog(ls: LanguageServer, path: Path) -> MsgCatalog:
     if _is_interface(path) and path not in files:
         files.append(path)  # a loose interface file still shows its own problems
     texts = _open_texts(ls, files)
-    key = (tuple(files), settings.rep103, settings.ros_distro, settings.unit_suffixes)
+    key = (
+        tuple(files),
+        settings.rep103,
+        settings.ros_distro,
+        settings.unit_suffixes,
+        id(_INSTALLED),  # its catalogs hold it: no other install space gets its id
+    )
     stamp = (tuple(_stamp(file) for file in files), tuple(sorted(texts.items())))
     cached = _catalogs.get(key)
     if cached is not None and cached[0] == stamp:
@@ -87,6 +159,42 @@ def _catalog(ls: LanguageServer, path: Path) -> MsgCatalog:
     return catalog
 
 
+def _project(catalog: MsgCatalog, path: Path) -> Project:
+    """The module summaries for documents checked with `catalog`, kept across
+    keystrokes. Built again when a file a summary was read from changes (its stamp)
+    or a folder around one, or on `path`'s search path, does (a module added or
+    removed); `_forget_projects` drops them all when a Python file is saved."""
+    cached = _projects.get(id(catalog))
+    if cached is not None and cached[0] is catalog:
+        _, project, stamps = cached
+        if all(_stamp(f) == stamp for f, stamp in stamps.items()):
+            _record(project, stamps, path)
+            return project
+    project = api.make_project([], config.Config(), catalog)
+    if len(_projects) >= MAX_PROJECTS:
+        _projects.clear()
+    stamps = {}
+    _projects[id(catalog)] = (catalog, project, stamps)
+    _record(project, stamps, path)
+    return project
+
+
+def _record(
+    project: Project, stamps: dict[Path, tuple[object, ...]], path: Path
+) -> None:
+    """Stamp what `project` read that is not stamped yet: the files of its
+    summaries, their folders, and the folders `path` imports from."""
+    files = [Path(name) for name in project.built]
+    wanted = [*project.index.search_path(path), *files, *{f.parent for f in files}]
+    for file in wanted:
+        if file not in stamps:
+            stamps[file] = _stamp(file)
+
+
+def _forget_projects() -> None:
+    _projects.clear()
+
+
 def _memo(uri: str) -> ProofMemo:
     memo = _memos.pop(uri, None) or ProofMemo()
     _memos[uri] = memo  # the most recent last
@@ -95,20 +203,20 @@ def _memo(uri: str) -> ProofMemo:
     return memo
 
 
-def _open_texts(ls: LanguageServer, files: list[Path]) -> dict[Path, str]:
+def _open_texts(ls: Session, files: list[Path]) -> dict[Path, str]:
     """The editor's text of those `files` it has open."""
     wanted = set(files)
-    return {
-        path: ls.workspace.text_documents[unquote(uri)].source
-        for uri, path in _open_documents(ls)
-        if path in wanted
-    }
+    found = {}
+    for document in ls.documents.all():
+        path = path_of(document.uri)
+        if path in wanted:
+            found[path] = document.text
+    return found
 
 
-def _open_documents(ls: LanguageServer) -> list[tuple[str, Path]]:
+def _open_documents(ls: Session) -> list[tuple[str, Path]]:
     """(URI as the client wrote it, path) of every open document."""
-    uris = sorted(doc.uri for doc in ls.workspace.text_documents.values())
-    return [(uri, Path(to_fs_path(uri) or uri)) for uri in uris]
+    return [(d.uri, path_of(d.uri)) for d in ls.documents.all()]
 
 
 def _is_interface(path: Path) -> bool:
@@ -125,48 +233,51 @@ def _stamp(file: Path) -> tuple[object, ...]:
     return (str(file), info.st_mtime_ns, info.st_ctime_ns, info.st_size, info.st_ino)
 
 
-def _document(ls: LanguageServer, uri: str) -> tuple[str, Path] | None:
+def _document(ls: Session, uri: str) -> tuple[str, Path] | None:
     """The editor's text of an open document; else the file's text, read only if it
     is a regular file of bounded size; None when there is none."""
-    fs_path = to_fs_path(uri)
-    opened = ls.workspace.text_documents.get(unquote(uri))
+    opened = ls.documents.get(uri)
     if opened is not None:
-        return opened.source, Path(fs_path or uri)
+        return opened.text, path_of(uri)
+    fs_path = to_path(uri)
     if fs_path is None:
         return None
     try:
-        return source.decode(fs.read_regular(fs_path)), Path(fs_path)
+        return source.decode(fs.read_regular(fs_path)), fs_path
     except (fs.UnreadableError, SyntaxError, UnicodeDecodeError, LookupError):
         return None
 
 
-def _publish(ls: LanguageServer, uri: str) -> None:
+def _publish(ls: Session, uri: str) -> None:
     document = _document(ls, uri)
     if document is None:
         return
     text, path = document
     try:
+        catalog = _catalog(ls, path)
         if _is_interface(path):
-            found = api.catalog_problems(_catalog(ls, path))
+            found = api.catalog_problems(catalog)
         else:
+            project = _project(catalog, path)
             found = api.check_source(
-                text, str(path), catalog=_catalog(ls, path), memo=_memo(uri)
+                text, str(path), catalog=catalog, project=project, memo=_memo(uri)
             )
+            _record(project, _projects[id(catalog)][2], path)
     except Exception as err:  # never take the editor session down
         _log_error(ls, f"robotfix: internal error on {path}: {err}")
         return
     lines = source.split_lines(text)
     diagnostics = [_diagnostic(d, lines) for d in found if d.path == str(path)]
-    ls.text_document_publish_diagnostics(
-        types.PublishDiagnosticsParams(uri=uri, diagnostics=diagnostics)
+    ls.notify(
+        "textDocument/publishDiagnostics", {"uri": uri, "diagnostics": diagnostics}
     )
 
 
-def _log_error(ls: LanguageServer, message: str) -> None:
-    ls.window_log_message(types.LogMessageParams(types.MessageType.Error, message))
+def _log_error(ls: Session, message: str) -> None:
+    ls.notify("window/logMessage", {"type": LOG_ERROR, "message": message})
 
 
-def _dependents(ls: LanguageServer, changed: Path) -> list[str]:
+def _dependents(ls: Session, changed: Path) -> list[str]:
     """The open Python documents whose diagnostics may change with file `changed`:
     those that use a type of a changed interface file, or import a changed module."""
     if _is_interface(changed):
@@ -193,135 +304,168 @@ def _dependents(ls: LanguageServer, changed: Path) -> list[str]:
     return found
 
 
-def _text_of(ls: LanguageServer, path: Path) -> str:
+def _text_of(ls: Session, path: Path) -> str:
     """The editor's text of a file, else its text on disk, else "" (gone)."""
-    for uri, opened in _open_documents(ls):
-        if opened == path:
-            text: str = ls.workspace.text_documents[unquote(uri)].source
-            return text
+    for document in ls.documents.all():
+        if path_of(document.uri) == path:
+            return document.text
     try:
         return fs.read_regular(path).decode("utf-8")
     except (fs.UnreadableError, UnicodeDecodeError):
         return ""
 
 
-def _publish_dependents(ls: LanguageServer, changed: Iterable[Path]) -> None:
+def _publish_dependents(ls: Session, changed: Iterable[Path]) -> None:
     uris = {uri for path in changed for uri in _dependents(ls, path)}
     for uri in sorted(uris):
         _publish(ls, uri)
 
 
-def _diagnostic(d: Diagnostic, lines: list[str]) -> types.Diagnostic:
-    start = types.Position(d.span.line - 1, _utf16(lines, d.span.line, d.span.col))
-    end = types.Position(
-        d.span.end_line - 1, _utf16(lines, d.span.end_line, d.span.end_col)
-    )
-    return types.Diagnostic(
-        range=types.Range(start, end),
-        message=d.message + "".join(f"\n{n.message}" for n in d.notes),
-        severity=SEVERITIES[d.severity],
-        code=d.code,
-        code_description=types.CodeDescription(href=d.rule.docs_url),
-        source="robotfix",
-    )
+def _diagnostic(d: Diagnostic, lines: list[str]) -> dict[str, object]:
+    start = {
+        "line": d.span.line - 1,
+        "character": utf16(lines, d.span.line, d.span.col),
+    }
+    end = {
+        "line": d.span.end_line - 1,
+        "character": utf16(lines, d.span.end_line, d.span.end_col),
+    }
+    return {
+        "range": {"start": start, "end": end},
+        "message": d.message + "".join(f"\n{n.message}" for n in d.notes),
+        "severity": SEVERITIES[d.severity],
+        "code": d.code,
+        "codeDescription": {"href": d.rule.docs_url},
+        "source": "robotfix",
+    }
 
 
-def _utf16(lines: list[str], line: int, col: int) -> int:
-    """LSP columns count UTF-16 code units; ours count characters."""
-    if not 1 <= line <= len(lines):
-        return col
-    prefix = lines[line - 1][:col]
-    return len(prefix.encode("utf-16-le")) // 2 + max(0, col - len(lines[line - 1]))
+# the LSP helpers' names before documents.py (benchmarks and tests use them)
+_utf16 = utf16
+_char = char
 
 
-def _char(lines: list[str], line: int, utf16: int) -> int:
-    if not 1 <= line <= len(lines):
-        return utf16
-    units = 0
-    for index, char in enumerate(lines[line - 1]):
-        if units >= utf16:
-            return index
-        units += 2 if ord(char) > 0xFFFF else 1
-    return len(lines[line - 1])
+# -- handlers ----------------------------------------------------------------------
 
 
-@server.feature(types.INITIALIZED)
-def initialized(ls: LanguageServer, params: types.InitializedParams) -> None:
+def initialize(ls: Session, params: Any) -> dict[str, object]:
+    capabilities = params.get("capabilities") if isinstance(params, dict) else None
+    ls.capabilities = capabilities if isinstance(capabilities, dict) else {}
+    return {
+        "capabilities": {
+            "textDocumentSync": {
+                "openClose": True,
+                "change": SYNC_INCREMENTAL,
+                "save": {"includeText": False},
+            },
+            "hoverProvider": True,
+        },
+        "serverInfo": {"name": "robotfix", "version": __version__},
+    }
+
+
+def initialized(ls: Session, params: Any) -> None:
     """Ask to hear of interface files changed outside the editor, if the client
     lets a server register file watchers."""
-    workspace = ls.client_capabilities.workspace
-    watched = workspace.did_change_watched_files if workspace else None
-    if watched is None or not watched.dynamic_registration:
-        return
-    watchers = [types.FileSystemWatcher(glob_pattern=INTERFACE_GLOB)]
-    ls.client_register_capability(
-        types.RegistrationParams(
-            [
-                types.Registration(
-                    id="robotfix-interface-files",
-                    method=types.WORKSPACE_DID_CHANGE_WATCHED_FILES,
-                    register_options=types.DidChangeWatchedFilesRegistrationOptions(
-                        watchers
-                    ),
-                )
-            ]
-        )
+    workspace = ls.capabilities.get("workspace")
+    watched = (
+        workspace.get("didChangeWatchedFiles") if isinstance(workspace, dict) else None
     )
+    if not isinstance(watched, dict) or watched.get("dynamicRegistration") is not True:
+        return
+    registration = {
+        "id": "robotfix-interface-files",
+        "method": "workspace/didChangeWatchedFiles",
+        "registerOptions": {"watchers": [{"globPattern": INTERFACE_GLOB}]},
+    }
+    if ls.endpoint is not None:
+        ls.endpoint.request(
+            "client/registerCapability", {"registrations": [registration]}
+        )
 
 
-@server.feature(types.TEXT_DOCUMENT_DID_OPEN)
-def did_open(ls: LanguageServer, params: types.DidOpenTextDocumentParams) -> None:
-    _publish(ls, params.text_document.uri)
-
-
-@server.feature(types.TEXT_DOCUMENT_DID_CHANGE)
-def did_change(ls: LanguageServer, params: types.DidChangeTextDocumentParams) -> None:
-    uri = params.text_document.uri
+def did_open(ls: Session, params: Any) -> None:
+    uri = _uri(params)
+    text = _get(params, "textDocument", "text")
+    if not isinstance(text, str):
+        raise rpc.InvalidParamsError("textDocument.text must be a string")
+    version = params["textDocument"].get("version")
+    ls.documents.open(uri, text, version if isinstance(version, int) else None)
     _publish(ls, uri)
-    path = Path(to_fs_path(uri) or uri)
+
+
+def did_change(ls: Session, params: Any) -> None:
+    uri = _uri(params)
+    changes = _get(params, "contentChanges")
+    if not isinstance(changes, list):
+        raise rpc.InvalidParamsError("contentChanges must be a list")
+    version = params["textDocument"].get("version")
+    ls.documents.change(uri, version if isinstance(version, int) else None, changes)
+    _publish(ls, uri)
+    path = path_of(uri)
     if _is_interface(path):  # an imported module counts when it is saved
         _publish_dependents(ls, [path])
 
 
-@server.feature(types.TEXT_DOCUMENT_DID_SAVE)
-def did_save(ls: LanguageServer, params: types.DidSaveTextDocumentParams) -> None:
-    uri = params.text_document.uri
+def did_save(ls: Session, params: Any) -> None:
+    uri = _uri(params)
+    path = path_of(uri)
+    if path.suffix == ".py":
+        _forget_projects()  # a module on disk changed: summaries built again
     _publish(ls, uri)
-    _publish_dependents(ls, [Path(to_fs_path(uri) or uri)])
+    _publish_dependents(ls, [path])
 
 
-@server.feature(types.TEXT_DOCUMENT_DID_CLOSE)
-def did_close(ls: LanguageServer, params: types.DidCloseTextDocumentParams) -> None:
+def did_close(ls: Session, params: Any) -> None:
     """An interface file's unsaved edits no longer count: its users see the disk."""
-    path = Path(to_fs_path(params.text_document.uri) or params.text_document.uri)
+    uri = _uri(params)
+    ls.documents.close(uri)
+    path = path_of(uri)
     if _is_interface(path):
         _publish_dependents(ls, [path])
 
 
-@server.feature(types.WORKSPACE_DID_CHANGE_WATCHED_FILES)
-def did_change_watched_files(
-    ls: LanguageServer, params: types.DidChangeWatchedFilesParams
-) -> None:
-    changed = [Path(to_fs_path(c.uri) or c.uri) for c in params.changes]
+def did_change_watched_files(ls: Session, params: Any) -> None:
+    events = _get(params, "changes")
+    if not isinstance(events, list):
+        raise rpc.InvalidParamsError("changes must be a list")
+    changed = [path_of(_get(event, "uri")) for event in events]
+    if any(p.suffix == ".py" for p in changed):
+        _forget_projects()
     _publish_dependents(
         ls, [p for p in changed if _is_interface(p) or p.suffix == ".py"]
     )
 
 
-@server.feature(types.TEXT_DOCUMENT_HOVER)
-def hover(ls: LanguageServer, params: types.HoverParams) -> types.Hover | None:
-    document = _document(ls, params.text_document.uri)
+def hover(ls: Session, params: Any) -> dict[str, object] | None:
+    uri = _uri(params)
+    line = _get(params, "position", "line")
+    character = _get(params, "position", "character")
+    if not isinstance(line, int) or not isinstance(character, int):
+        raise rpc.InvalidParamsError("a position needs an integer line and character")
+    document = _document(ls, uri)
     if document is None:
         return None
     text, path = document
-    line = params.position.line + 1
-    col = _char(source.split_lines(text), line, params.position.character)
+    col = char(source.split_lines(text), line + 1, character)
     try:
-        markdown = api.hover(text, str(path), line, col, _catalog(ls, path))
+        markdown = api.hover(text, str(path), line + 1, col, _catalog(ls, path))
     except Exception:
         return None
     if markdown is None:
         return None
-    return types.Hover(
-        contents=types.MarkupContent(types.MarkupKind.Markdown, markdown)
-    )
+    return {"contents": {"kind": "markdown", "value": markdown}}
+
+
+REQUESTS: dict[str, Callable[[Session, Any], Any]] = {
+    "initialize": initialize,
+    "textDocument/hover": hover,
+}
+NOTIFICATIONS: dict[str, Callable[[Session, Any], None]] = {
+    "initialized": initialized,
+    "textDocument/didOpen": did_open,
+    "textDocument/didChange": did_change,
+    "textDocument/didSave": did_save,
+    "textDocument/didClose": did_close,
+    "workspace/didChangeWatchedFiles": did_change_watched_files,
+}
