@@ -314,3 +314,23 @@ def test_uris_of_one_file_however_quoted_are_one_document() -> None:
     assert opened is not None and opened.uri == "file:///tmp/my%20ws/a.py"
     assert documents.to_path("file:///tmp/my%20ws/a.py") == Path("/tmp/my ws/a.py")
     assert documents.to_path("untitled:Untitled-1") is None
+
+
+def test_a_message_over_the_size_limit_is_skipped_unread(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    monkeypatch.setattr(rpc, "MAX_BODY", 100)
+    big = frame({"jsonrpc": "2.0", "id": 8, "method": "initialize", "x": "y" * 200})
+    code, found = run(big, INIT, SHUTDOWN, EXIT)
+    assert found[0]["id"] is None and found[0]["error"]["code"] == rpc.PARSE_ERROR
+    assert [m.get("id") for m in found] == [None, 1, "last"] and code == 0
+
+
+class _Gone(io.BytesIO):
+    def write(self, data: Any) -> int:
+        raise BrokenPipeError("the client closed its end")
+
+
+def test_a_client_that_went_away_ends_the_session_quietly(tmp_path: Path) -> None:
+    data = frame(INIT) + frame(INITIALIZED) + frame(did_open(tmp_path / "n.py", SOURCE))
+    assert server.serve(io.BytesIO(data), _Gone()) == 1

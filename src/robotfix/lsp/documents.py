@@ -92,10 +92,13 @@ def apply(text: str, change: object) -> str:
     where = change.get("range")
     if where is None:
         return new
-    start = offset(text, _position(where, "start"))
-    end = offset(text, _position(where, "end"))
-    if end < start:
-        start, end = end, start
+    first, last = _position(where, "start"), _position(where, "end")
+    if last < first:
+        first, last = last, first
+    lines = _Lines(text)
+    start_line = lines.start(first[0], 0)
+    start = lines.index(start_line, first[1])
+    end = lines.index(lines.start(last[0] - first[0], start_line), last[1])
     return text[:start] + new + text[end:]
 
 
@@ -111,16 +114,47 @@ def _position(where: object, name: str) -> tuple[int, int]:
 
 def offset(text: str, position: tuple[int, int]) -> int:
     """The index in `text` of an LSP (0-based line, UTF-16 character) position."""
-    line, units = position
-    start = 0
-    for _ in range(line):
-        found = _EOL.search(text, start)
-        if found is None:
+    lines = _Lines(text)
+    return lines.index(lines.start(position[0], 0), position[1])
+
+
+class _Lines:
+    """Line starts and ends of a text, found by memchr (`str.find`) when it has
+    no `\r`, else by a regex."""
+
+    def __init__(self, text: str) -> None:
+        self.text = text
+        self.plain = "\r" not in text
+
+    def start(self, lines: int, start: int) -> int:
+        """Where the line `lines` lines after the one beginning at `start` begins;
+        -1 past the last line."""
+        text = self.text
+        for _ in range(lines):
+            if start < 0:
+                return start
+            if self.plain:
+                found_at = text.find("\n", start)
+                start = found_at + 1 if found_at >= 0 else -1
+            else:
+                found = _EOL.search(text, start)
+                start = found.end() if found is not None else -1
+        return start
+
+    def index(self, start: int, units: int) -> int:
+        """The index of UTF-16 column `units` of the line beginning at `start`
+        (the end of the text for -1)."""
+        text = self.text
+        if start < 0:
             return len(text)
-        start = found.end()
-    found = _EOL.search(text, start)
-    end = found.start() if found is not None else len(text)
-    return start + char_index(text[start:end], units)
+        if self.plain:
+            end = text.find("\n", start)
+        else:
+            found = _EOL.search(text, start)
+            end = found.start() if found is not None else -1
+        if end < 0:
+            end = len(text)
+        return start + char_index(text[start:end], units)
 
 
 def char_index(line: str, utf16: int) -> int:

@@ -31,6 +31,7 @@ SERVER_NOT_INITIALIZED = -32002
 
 MAX_HEADER_LINE = 1 << 16  # a longer line is not a header: skipped in pieces
 HEADER = b"content-length:"
+MAX_BODY = 1 << 27  # 128 MB: a longer message is skipped with a parse error
 
 Message = dict[str, Any]
 Handler = Callable[[Any], Any]
@@ -79,6 +80,13 @@ class Reader:
                         length = None
         if length is None:
             raise FramingError("a message without a valid Content-Length header")
+        if length > MAX_BODY:
+            while length > 0:  # skipped, never held in memory
+                chunk = self.stream.read(min(length, 1 << 20))
+                if not chunk:
+                    return None
+                length -= len(chunk)
+            raise FramingError(f"a message longer than {MAX_BODY} bytes")
         body = self.stream.read(length)
         if len(body) < length:
             return None
@@ -148,16 +156,17 @@ class Endpoint:
     # -- the loop --------------------------------------------------------------
     def serve(self) -> int:
         """Handle messages until `exit` or the end of the input; the exit code."""
-        while True:
-            try:
-                message = self.reader.read()
-            except FramingError as err:
-                self._error(None, PARSE_ERROR, str(err))
-                continue
-            if message is None:
-                return 0 if self.shut_down else 1
-            if self.handle(message) == "exit":
-                return 0 if self.shut_down else 1
+        try:
+            while True:
+                try:
+                    message = self.reader.read()
+                except FramingError as err:
+                    self._error(None, PARSE_ERROR, str(err))
+                    continue
+                if message is None or self.handle(message) == "exit":
+                    return 0 if self.shut_down else 1
+        except (BrokenPipeError, ConnectionResetError):
+            return 1  # the client is gone: nobody to answer
 
     def handle(self, message: object) -> str | None:
         """Handle one decoded message; "exit" when the peer asked to exit."""

@@ -1,0 +1,89 @@
+"""The language server keeps the module summaries of a document's imports across
+keystrokes (`server._project`), and builds them again when what they were read from
+changes on disk, even when no editor told it: an imported module edited in place, a
+module created next to the document, a Python file saved."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+from robotfix import api
+from robotfix.lsp import server
+from tests.lsp_client import Client
+
+HELPER = (
+    "from typing import Annotated\n\n"
+    "SPEED: Annotated[float, \"Unit('{unit}')\"] = 3.0\n"
+)
+NODE = """from geometry_msgs.msg import Twist
+from helper import SPEED
+from extra import TURN
+
+cmd = Twist()
+cmd.linear.x = SPEED
+cmd.angular.z = TURN
+"""
+EXTRA = (
+    "from typing import Annotated\n\nTURN: Annotated[float, \"Unit('deg/s')\"] = 9.0\n"
+)
+
+
+def _later(path: Path) -> None:
+    """Move a file's times a second on, as an edit by hand a second later would
+    (a coarse file-system clock cannot hide it)."""
+    stamp = os.stat(path)
+    os.utime(path, ns=(stamp.st_atime_ns, stamp.st_mtime_ns + 1_000_000_000))
+
+
+def test_summaries_follow_the_disk_without_being_told(tmp_path: Path) -> None:
+    helper = tmp_path / "helper.py"
+    helper.write_text(HELPER.format(unit="km/h"))
+    node = tmp_path / "node.py"
+    node.write_text(NODE)
+    client = Client()
+    try:
+        client.initialize(tmp_path)
+        uri = client.open(node, NODE)
+        codes = [[d["code"] for d in client.diagnostics()["diagnostics"]]]
+        client.change(uri, 2, {"text": NODE + "\n"})  # a keystroke: the same
+        codes.append([d["code"] for d in client.diagnostics()["diagnostics"]])
+        helper.write_text(HELPER.format(unit="m/s"))  # in place, e.g. by git
+        _later(helper)
+        client.change(uri, 3, {"text": NODE})
+        codes.append([d["code"] for d in client.diagnostics()["diagnostics"]])
+        extra = tmp_path / "extra.py"
+        extra.write_text(EXTRA)  # a new module beside the node
+        _later(tmp_path)
+        client.change(uri, 4, {"text": NODE + "\n"})
+        codes.append([d["code"] for d in client.diagnostics()["diagnostics"]])
+        extra.write_text(EXTRA.replace("deg/s", "rad/s"))
+        client.notify("textDocument/didSave", {"textDocument": {"uri": extra.as_uri()}})
+        client.change(uri, 5, {"text": NODE})
+        codes.append([d["code"] for d in client.diagnostics()["diagnostics"]])
+        assert client.stop() == 0
+    finally:
+        client.kill()
+    assert codes == [["RF201"], ["RF201"], [], ["RF201"], []]
+
+
+def test_a_kept_project_answers_as_a_new_one(tmp_path: Path) -> None:
+    """The same diagnostics as `api.check_source` building its own project, for
+    several documents sharing one catalog and so one kept project."""
+    (tmp_path / "helper.py").write_text(HELPER.format(unit="km/h"))
+    (tmp_path / "extra.py").write_text(EXTRA)
+    session = server.Session()
+    texts = {
+        "node.py": NODE,
+        "other.py": "from helper import SPEED\n\nx = SPEED\n",
+        "third.py": NODE.replace("SPEED\n", "SPEED * 3.6\n", 1),
+    }
+    for _ in range(2):
+        for name, text in texts.items():
+            path = tmp_path / name
+            catalog = server._catalog(session, path)
+            project = server._project(catalog, path)
+            kept = api.check_source(text, str(path), catalog=catalog, project=project)
+            fresh = api.check_source(text, str(path), catalog=catalog)
+            assert repr(kept) == repr(fresh)
+            assert server._project(catalog, path) is project  # nothing changed
