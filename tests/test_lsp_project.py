@@ -87,3 +87,29 @@ def test_a_kept_project_answers_as_a_new_one(tmp_path: Path) -> None:
             fresh = api.check_source(text, str(path), catalog=catalog)
             assert repr(kept) == repr(fresh)
             assert server._project(catalog, path) is project  # nothing changed
+
+
+def test_hover_sees_an_imported_module_through_the_kept_summaries(
+    tmp_path: Path,
+) -> None:
+    helper = tmp_path / "helper.py"
+    helper.write_text(HELPER.format(unit="km/h"))
+    node = tmp_path / "node.py"
+    session = server.Session()
+    session.documents.open(node.as_uri(), NODE, 1)
+    line = NODE.splitlines().index("cmd.linear.x = SPEED")
+    where = {
+        "textDocument": {"uri": node.as_uri()},
+        "position": {"line": line, "character": len("cmd.linear.x = ")},
+    }
+
+    def shown() -> str:
+        found = server.hover(session, where)
+        assert found is not None
+        value: str = found["contents"]["value"]  # type: ignore[index]
+        return value
+
+    assert "km/h" in shown()
+    helper.write_text(HELPER.format(unit="m/s"))
+    _later(helper)
+    assert "km/h" not in shown() and "m/s" in shown()

@@ -194,14 +194,16 @@ def hover(
     col: int,
     catalog: MsgCatalog,
     config: Config | None = None,
+    project: Project | None = None,
 ) -> str | None:
     """Markdown for the innermost name or message field at (1-based line, 0-based
-    character column), as the analysis sees it there."""
+    character column), as the analysis sees it there (the modules it imports found
+    through `project`, as `check_source` finds them)."""
 
     source = SourceFile.from_text(path, text)
     if source.problem is not None:
         return None
-    project = make_project([], config or Config(), catalog)
+    project = project or make_project([], config or Config(), catalog)
     ctx = _analyze(source, catalog, hovers=True, resolver=project.resolver(Path(path)))
     assert ctx.hovers is not None
     found = [

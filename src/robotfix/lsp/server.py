@@ -449,7 +449,10 @@ def hover(ls: Session, params: Any) -> dict[str, object] | None:
     text, path = document
     col = char(source.split_lines(text), line + 1, character)
     try:
-        markdown = api.hover(text, str(path), line + 1, col, _catalog(ls, path))
+        catalog = _catalog(ls, path)
+        project = _project(catalog, path)
+        markdown = api.hover(text, str(path), line + 1, col, catalog, project=project)
+        _record(project, _projects[id(catalog)][2], path)
     except Exception:
         return None
     if markdown is None:
