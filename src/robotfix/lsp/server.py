@@ -340,11 +340,6 @@ def _diagnostic(d: Diagnostic, lines: list[str]) -> dict[str, object]:
     }
 
 
-# the LSP helpers' names before documents.py (benchmarks and tests use them)
-_utf16 = utf16
-_char = char
-
-
 # -- handlers ----------------------------------------------------------------------
 
 
