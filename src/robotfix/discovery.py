@@ -86,41 +86,67 @@ def discover(
     found = Discovery()
     named_yaml = [p for p in paths if _is_yaml(p.name) and not os.path.isdir(p)]
     python_paths = [p for p in paths if p not in named_yaml]
-    files, packages = _python_files(python_paths, config, found.notices)
+    reals: dict[Path, str] = {}  # real paths the walks found: not resolved again
+    files, packages = _python_files(python_paths, config, found.notices, reals)
     found.python_files = files
     folders = [p for p in python_paths if os.path.isdir(p)]
-    scanned = [
-        package
-        for package in packages
-        if within(package, folders) or any(within(f, [package]) for f in folders)
-    ]
-    _parameter_files(found, named_yaml, scanned, [*paths, *packages], config)
+    scanned = _around(packages, folders, reals)
+    _parameter_files(found, named_yaml, scanned, [*paths, *packages], config, reals)
     roots = [*paths, *config.msg_paths, *packages]
     folders = list(config.msg_paths) + _interface_folders(packages)
-    found.interface_files = _interface_files(folders, roots, found.notices)
-    found.package_interface_files = _inside(found.interface_files, packages)
+    found.interface_files = _interface_files(folders, roots, found.notices, reals)
+    found.package_interface_files = _inside(found.interface_files, packages, reals)
     found.installed = install_space(environ)
     return found
 
 
-def _inside(files: list[Path], folders: list[Path]) -> list[Path]:
+def _inside(
+    files: list[Path], folders: list[Path], reals: Mapping[Path, str]
+) -> list[Path]:
     """The files that lie in one of `folders`, symlinks resolved (as `fs.within`),
     with each folder resolved once: a tree of many packages stays linear."""
     real: set[Path] = set()
     for folder in folders:
-        try:
-            real.add(Path(os.path.realpath(folder)))
-        except (OSError, ValueError):
-            continue
+        found_real = _real(folder, reals)
+        if found_real is not None:
+            real.add(found_real)
     found = []
     for file in files:
-        try:
-            resolved = Path(os.path.realpath(file))
-        except (OSError, ValueError):
-            continue
-        if resolved in real or not real.isdisjoint(resolved.parents):
+        resolved = _real(file, reals)
+        if resolved is not None and (
+            resolved in real or not real.isdisjoint(resolved.parents)
+        ):
             found.append(file)
     return found
+
+
+def _around(
+    packages: list[Path], folders: list[Path], reals: Mapping[Path, str]
+) -> list[Path]:
+    """The packages under one of `folders` or holding one of them (as `fs.within`
+    both ways), each path resolved once."""
+    roots = [r for r in (_real(f, reals) for f in folders) if r is not None]
+    found = []
+    for package in packages:
+        real = _real(package, reals)
+        if real is not None and any(
+            real == root or root in real.parents or real in root.parents
+            for root in roots
+        ):
+            found.append(package)
+    return found
+
+
+def _real(path: Path, reals: Mapping[Path, str]) -> Path | None:
+    """`path` with every symlink resolved (a walk may know it already); None when
+    it cannot be resolved."""
+    known = reals.get(path)
+    if known is not None:
+        return Path(known)
+    try:
+        return Path(os.path.realpath(path))
+    except (OSError, ValueError):
+        return None
 
 
 def _parameter_files(
@@ -129,6 +155,7 @@ def _parameter_files(
     packages: list[Path],
     roots: list[Path],
     config: Config,
+    reals: Mapping[Path, str] | None = None,
 ) -> None:
     """Parameter YAML files: those named, and those in the config/, params/ and
     param/ folders of the packages under (or around) the folders named;
@@ -142,15 +169,15 @@ def _parameter_files(
         for name in PARAMETER_FOLDERS
         if os.path.isdir(package / name)
     ]
-    walker = _Walker(roots + around, found.notices)
+    walker = _Walker(roots + around, found.notices, reals)
     chosen = _OnePathEach()
     for path in named:
         chosen.add(path, os.path.realpath(path), False)
     pruned = lambda folder: config.excluded(folder, folder=True)  # noqa: E731
-    for _, entries in walker.walk(folders, _is_yaml, pruned):
+    for _, _, entries in walker.walk(folders, _is_yaml, pruned):
         for entry in entries:
             if (
-                _is_yaml(entry.path.name)
+                _is_yaml(entry.name)
                 and entry.regular
                 and not config.excluded(entry.path)
             ):
@@ -242,20 +269,52 @@ def _workspace_root(names: set[str]) -> bool:
 # -- the walk ---------------------------------------------------------------
 
 
-@dataclass(frozen=True)
 class _Entry:
-    path: Path  # as reached: the root's spelling, then the names walked
-    real: str  # every symlink resolved
-    regular: bool  # a regular file, or a symlink to one
-    link: bool
+    """A file entry of a walked folder; its path and real path are made only when
+    asked for (a tree has many more files than the few a run keeps)."""
+
+    __slots__ = ("folder", "link", "name", "prefix", "regular", "target")
+
+    def __init__(
+        self,
+        folder: Path,
+        name: str,
+        prefix: str,
+        target: str,
+        regular: bool,
+        link: bool,
+    ) -> None:
+        self.folder = folder
+        self.name = name
+        self.prefix = prefix  # the folder's real path, ending with a separator
+        self.target = target  # a symlink's target, every symlink resolved ("" if none)
+        self.regular = regular  # a regular file, or a symlink to one
+        self.link = link
+
+    @property
+    def path(self) -> Path:
+        """As reached: the root's spelling, then the names walked."""
+        return self.folder / self.name
+
+    @property
+    def real(self) -> str:
+        """Every symlink resolved."""
+        return self.target or self.prefix + self.name
 
 
 class _Walker:
     """Walks folders under a set of roots; remembers the real folders it has
     walked, so a loop or a second spelling is walked once."""
 
-    def __init__(self, roots: Iterable[Path], notices: list[Diagnostic]) -> None:
-        self.roots = [os.path.realpath(root) for root in roots]
+    def __init__(
+        self,
+        roots: Iterable[Path],
+        notices: list[Diagnostic],
+        reals: Mapping[Path, str] | None = None,
+    ) -> None:
+        """`reals`: real paths of some roots, already known (not resolved again)."""
+        known = reals or {}
+        self.roots = [known.get(root) or os.path.realpath(root) for root in roots]
         self.notices = notices
         self.walked: set[str] = set()
 
@@ -267,23 +326,25 @@ class _Walker:
         tops: list[Path],
         wanted: Callable[[str], bool],
         pruned: Callable[[Path], bool],
-    ) -> Iterator[tuple[Path, list[_Entry]]]:
-        """Each folder under `tops` (themselves included) with its entries that are
-        not folders; `wanted` names the files whose leaving links deserve a notice,
-        `pruned` the folders not to enter. Folders reached through a symlink are
-        walked last, so a folder also reachable without one keeps that spelling."""
+    ) -> Iterator[tuple[Path, str, list[_Entry]]]:
+        """Each folder under `tops` (themselves included) with its real path and its
+        entries that are not folders; `wanted` names the files whose leaving links
+        deserve a notice, `pruned` the folders not to enter. Folders reached through
+        a symlink are walked last, so a folder also reachable without one keeps that
+        spelling."""
         stack = [(top, os.path.realpath(top), False, True) for top in reversed(tops)]
         linked: list[tuple[Path, str, bool, bool]] = []
+        walked = self.walked
         while stack or linked:
             if not stack:
                 stack, linked = linked[::-1], []
             folder, real, via_link, top = stack.pop()
-            if real in self.walked:
+            if real in walked:
                 continue
-            self.walked.add(real)
+            walked.add(real)
             try:
                 with os.scandir(folder) as listing:
-                    entries = sorted(listing, key=lambda e: e.name)
+                    entries = sorted(listing, key=_entry_name)
             except (FileNotFoundError, NotADirectoryError):
                 continue  # gone while we walked (a concurrent build)
             except OSError as err:
@@ -291,41 +352,59 @@ class _Walker:
                 continue
             names = {entry.name for entry in entries}
             if not top and not names.isdisjoint(IGNORE_MARKERS):
-                self.walked.discard(real)  # still walked if named as a root
+                walked.discard(real)  # still walked if named as a root
                 continue  # COLCON_IGNORE, AMENT_IGNORE, CATKIN_IGNORE
             workspace = _workspace_root(names)
+            prefix = real if real.endswith(os.sep) else real + os.sep
             files: list[_Entry] = []
             below: list[tuple[Path, str, bool, bool]] = []
             for entry in entries:
-                path = folder / entry.name
+                name = entry.name
                 link = _test(entry.is_symlink)
                 is_folder = _test(entry.is_dir)  # follows a symlink; False if broken
-                if is_folder and (
-                    _skipped(entry.name) or _output(path, workspace) or pruned(path)
-                ):
-                    continue
-                target = os.path.realpath(path) if link else ""
-                if link and not self.inside(target):
-                    if is_folder or wanted(entry.name):
-                        self.notices.append(messages.outside_link(str(path), target))
-                    continue
-                item_real = target or os.path.join(real, entry.name)
+                path: Path | None = None
                 if is_folder:
+                    if _skipped(name):
+                        continue
+                    path = folder / name
+                    if _output(path, workspace) or pruned(path):
+                        continue
+                target = ""
+                if link:
+                    path = path or folder / name
+                    target = os.path.realpath(path)
+                    if not self.inside(target):
+                        if is_folder or wanted(name):
+                            self.notices.append(
+                                messages.outside_link(str(path), target)
+                            )
+                        continue
+                if is_folder:
+                    assert path is not None
                     (linked if link else below).append(
-                        (path, item_real, via_link or link, False)
+                        (path, target or prefix + name, via_link or link, False)
                     )
                 else:
                     regular = _test(entry.is_file)
-                    files.append(_Entry(path, item_real, regular, via_link or link))
-            yield folder, files
+                    files.append(
+                        _Entry(folder, name, prefix, target, regular, via_link or link)
+                    )
+            yield folder, real, files
             stack.extend(reversed(below))
 
 
+def _entry_name(entry: os.DirEntry[str]) -> str:
+    return entry.name
+
+
 def _python_files(
-    paths: list[Path], config: Config | None, notices: list[Diagnostic]
+    paths: list[Path],
+    config: Config | None,
+    notices: list[Diagnostic],
+    reals: dict[Path, str] | None = None,
 ) -> tuple[list[Path], list[Path]]:
     """Python files (each real file once) and ROS package folders under `paths`,
-    or holding one of them."""
+    or holding one of them; `reals` learns the packages' real paths."""
     walker = _Walker(paths, notices)
     chosen = _OnePathEach()
     packages: dict[str, Path] = {}
@@ -340,18 +419,18 @@ def _python_files(
         if not os.path.isdir(path):
             chosen.add(path, os.path.realpath(path), False)  # named: always checked
     tops = [path for path in paths if os.path.isdir(path)]
-    for folder, entries in walker.walk(tops, _is_python, pruned):
+    for folder, real, entries in walker.walk(tops, _is_python, pruned):
         for entry in entries:
-            if entry.path.name == "package.xml" and entry.regular:
-                packages.setdefault(os.path.realpath(folder), folder)
-            elif (
-                (
-                    (_is_python(entry.path.name) and (entry.regular or entry.link))
-                    or (entry.regular and _is_script(entry.path))
-                )  # a broken link to a `.py`: RF003
-                and not (config is not None and config.excluded(entry.path))
-            ):
-                chosen.add(entry.path, entry.real, entry.link)
+            if entry.name == "package.xml" and entry.regular:
+                packages.setdefault(real, folder)
+            elif (_is_python(entry.name) and (entry.regular or entry.link)) or (
+                entry.regular and "." not in entry.name and _is_script(entry.path)
+            ):  # a broken link to a `.py`: RF003
+                path = entry.path
+                if not (config is not None and config.excluded(path)):
+                    chosen.add(path, entry.real, entry.link)
+    if reals is not None:
+        reals.update((folder, real) for real, folder in packages.items())
     return chosen.paths(ordered=False), sorted(packages.values())
 
 
@@ -381,9 +460,13 @@ def _interface_folders(packages: Iterable[Path]) -> list[Path]:
 
 
 def _interface_files(
-    folders: list[Path], roots: Iterable[Path], notices: list[Diagnostic]
+    folders: list[Path],
+    roots: Iterable[Path],
+    notices: list[Diagnostic],
+    reals: dict[Path, str] | None = None,
 ) -> list[Path]:
-    walker = _Walker(roots, notices)
+    """`reals`: real paths known (of roots), then learnt (of the files found)."""
+    walker = _Walker(roots, notices, reals)
     chosen = _OnePathEach()
     tops = []
     for folder in folders:
@@ -394,10 +477,12 @@ def _interface_files(
             tops.append(folder)
         elif _is_interface(folder.name) and os.path.isfile(folder):
             chosen.add(folder, real, False)
-    for _, entries in walker.walk(tops, _is_interface, lambda _: False):
+    for _, _, entries in walker.walk(tops, _is_interface, lambda _: False):
         for entry in entries:
-            if _is_interface(entry.path.name) and entry.regular:
+            if _is_interface(entry.name) and entry.regular:
                 chosen.add(entry.path, entry.real, entry.link)
+    if reals is not None:
+        reals.update(chosen.reals())
     return chosen.paths(ordered=False)
 
 
@@ -416,6 +501,9 @@ class _OnePathEach:
         order, then path order: which of two definitions of a type wins)."""
         found = [path for _, path in self._chosen.values()]
         return sorted(found) if ordered else found
+
+    def reals(self) -> dict[Path, str]:
+        return {path: real for real, (_, path) in self._chosen.items()}
 
 
 def _is_python(name: str) -> bool:
