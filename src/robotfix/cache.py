@@ -40,6 +40,7 @@ from typing import TYPE_CHECKING, Any
 from robotfix import __version__, fs, rules
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic, Note, Span
+from robotfix.discovery import Discovery, Trace
 from robotfix.disk_cache import install_key
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.stubs.load import stub_set
@@ -98,6 +99,7 @@ class ResultCache:
         self._bytes: dict[str, bytes] = {}  # the last file `sha` read, to `take`
         self._params: tuple[str, list[Any]] | None = None
         self._catalog: dict[str, Any] | None = None
+        self._discovery: dict[str, Any] | None = None  # key, trace, what was found
         self._dirty = False
         try:
             data = json.loads(fs.read_regular(self.path, MAX_BYTES, follow=False))
@@ -121,6 +123,9 @@ class ResultCache:
             stats = data.get("stats")
             if isinstance(stats, dict):
                 self._stats = {k: v for k, v in stats.items() if _valid_stat(v)}
+            found_discovery = data.get("discovery")
+            if isinstance(found_discovery, dict):
+                self._discovery = found_discovery
             found_catalog = data.get("catalog")
             if isinstance(found_catalog, dict):
                 self._catalog = found_catalog
@@ -230,6 +235,31 @@ class ResultCache:
         }
         if raw != self._catalog:
             self._catalog = raw
+            self._dirty = True
+
+    # -- discovery ---------------------------------------------------------------
+    def discovery(self, key: str) -> Discovery | None:
+        """What an earlier discovery with the same `key` (`discovery_key`) found,
+        when everything it looked at on disk is as it was (`Trace.holds`); its
+        `installed` is left for the caller (the environment, not the disk)."""
+        raw = self._discovery
+        if raw is None or raw.get("key") != key:
+            return None
+        trace = Trace.from_json(raw.get("trace"))
+        found = _load_discovery(raw.get("found"))
+        if trace is None or found is None or not trace.holds():
+            return None
+        return found
+
+    def put_discovery(self, key: str, found: Discovery, trace: Trace) -> None:
+        """Keep a discovery with its trace (not one the trace cannot vouch for)."""
+        raw = (
+            None
+            if trace.spoiled
+            else {"key": key, "trace": trace.to_json(), "found": _dump_discovery(found)}
+        )
+        if raw != self._discovery:
+            self._discovery = raw
             self._dirty = True
 
     # -- parameter files -------------------------------------------------------
@@ -345,6 +375,7 @@ class ResultCache:
             "stats": {**self._stats, **self._seen_stats},
             "params": list(self._params) if self._params is not None else None,
             "catalog": self._catalog,
+            "discovery": self._discovery,
         }
         try:
             folder.mkdir(parents=True, exist_ok=True)
@@ -353,6 +384,62 @@ class ResultCache:
             self._dirty = False
         except (OSError, ValueError):
             pass
+
+
+def discovery_key(paths: list[Path], config: Config) -> str | None:
+    """Everything a discovery depends on besides what its trace notes: the paths
+    as spelled, the current folder (relative spellings), and the settings it reads
+    (`Config.excluded` resolves the root); None when the current folder is gone."""
+    try:
+        parts = [
+            f"discovery {FORMAT}",
+            os.getcwd(),
+            os.fspath(config.root),
+            os.path.realpath(config.root),
+            [os.fspath(p) for p in paths],
+            list(config.exclude),
+            [os.fspath(m) for m in config.msg_paths],
+        ]
+    except (OSError, ValueError):
+        return None
+    text = json.dumps(parts).encode("utf-8", "surrogateescape")
+    return hashlib.sha256(text).hexdigest()
+
+
+_DISCOVERY_PATHS = (
+    "python_files",
+    "interface_files",
+    "package_interface_files",
+    "parameter_files",
+    "named_parameter_files",
+    "parameter_definitions",
+    "summary_files",
+)
+
+
+def _dump_discovery(found: Discovery) -> dict[str, Any]:
+    raw: dict[str, Any] = {
+        name: [os.fspath(p) for p in getattr(found, name)] for name in _DISCOVERY_PATHS
+    }
+    raw["notices"] = [_dump(d) for d in found.notices]
+    return raw
+
+
+def _load_discovery(raw: Any) -> Discovery | None:
+    """What `_dump_discovery` wrote; None when `raw` is not exactly that."""
+    if not isinstance(raw, dict):
+        return None
+    found = Discovery()
+    for name in _DISCOVERY_PATHS:
+        paths = raw.get(name)
+        if not (isinstance(paths, list) and all(isinstance(p, str) for p in paths)):
+            return None
+        setattr(found, name, [Path(p) for p in paths])
+    notices = raw.get("notices")
+    if not (isinstance(notices, list) and all(_valid_diagnostic(d) for d in notices)):
+        return None
+    found.notices = [_load(d) for d in notices]
+    return found
 
 
 def _file_key(data: bytes | str, path: Path, config: Config) -> str:

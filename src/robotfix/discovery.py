@@ -26,9 +26,11 @@ from __future__ import annotations
 
 import os
 import re
+import time
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 from robotfix import messages
 from robotfix.config import Config
@@ -76,27 +78,41 @@ class Discovery:
 
 
 def discover(
-    paths: list[Path], config: Config, environ: Mapping[str, str] | None = None
+    paths: list[Path],
+    config: Config,
+    environ: Mapping[str, str] | None = None,
+    trace: Trace | None = None,
 ) -> Discovery:
     """Everything a run over `paths` reads, and the RF004 notices of what it left
     out. Interface files come from the msg paths and from the msg/, srv/, action/
     folders of the ROS packages under `paths`, or around a path inside a package;
     those of the packages win over the msg paths' (`package_interface_files`), and
-    both over the install space of `environ` (by default the process's)."""
+    both over the install space of `environ` (by default the process's). With
+    `trace`, what it looked at on disk is noted there (`Trace`)."""
+    global _TRACE
+    _TRACE = trace
+    try:
+        found = _discover(paths, config)
+    finally:
+        _TRACE = None
+    found.installed = install_space(environ)
+    return found
+
+
+def _discover(paths: list[Path], config: Config) -> Discovery:
     found = Discovery()
-    named_yaml = [p for p in paths if _is_yaml(p.name) and not os.path.isdir(p)]
+    named_yaml = [p for p in paths if _is_yaml(p.name) and not _isdir(p)]
     python_paths = [p for p in paths if p not in named_yaml]
     reals: dict[Path, str] = {}  # real paths the walks found: not resolved again
     files, packages = _python_files(python_paths, config, found.notices, reals)
     found.python_files = files
-    folders = [p for p in python_paths if os.path.isdir(p)]
+    folders = [p for p in python_paths if _isdir(p)]
     scanned = _around(packages, folders, reals)
     _parameter_files(found, named_yaml, scanned, [*paths, *packages], config, reals)
     roots = [*paths, *config.msg_paths, *packages]
     folders = list(config.msg_paths) + _interface_folders(packages)
     found.interface_files = _interface_files(folders, roots, found.notices, reals)
     found.package_interface_files = _inside(found.interface_files, packages, reals)
-    found.installed = install_space(environ)
     return found
 
 
@@ -144,7 +160,7 @@ def _real(path: Path, reals: Mapping[Path, str]) -> Path | None:
     if known is not None:
         return Path(known)
     try:
-        return Path(os.path.realpath(path))
+        return Path(_realpath(path))
     except (OSError, ValueError):
         return None
 
@@ -167,12 +183,12 @@ def _parameter_files(
         package / name
         for package in packages
         for name in PARAMETER_FOLDERS
-        if os.path.isdir(package / name)
+        if _isdir(package / name)
     ]
     walker = _Walker(roots + around, found.notices, reals)
     chosen = _OnePathEach()
     for path in named:
-        chosen.add(path, os.path.realpath(path), False)
+        chosen.add(path, _realpath(path), False)
     pruned = lambda folder: config.excluded(folder, folder=True)  # noqa: E731
     for _, _, entries in walker.walk(folders, _is_yaml, pruned):
         for entry in entries:
@@ -197,6 +213,8 @@ def _definitions_of(package: Path) -> list[Path]:
     string in a setup.py that calls generate_parameter_module."""
     names: list[str] = []
     for build in ("CMakeLists.txt", "setup.py"):
+        if _TRACE is not None:
+            _TRACE.stamp(package / build)
         try:
             text = read_text(package / build, MAX_BUILD_FILE_BYTES)
         except UnreadableError:
@@ -211,7 +229,7 @@ def _definitions_of(package: Path) -> list[Path]:
     for name in names:
         name = name.replace("${CMAKE_CURRENT_SOURCE_DIR}/", "")
         path = package / name
-        if "$" not in name and os.path.isfile(path) and within(path, [package]):
+        if "$" not in name and _isfile(path) and _within(path, [package]):
             found.append(path)
     return found
 
@@ -256,7 +274,7 @@ def _output(folder: Path, in_workspace: bool) -> bool:
     it is a Python package of that name (`mypkg/log/__init__.py`)."""
     if in_workspace and folder.name in WORKSPACE_OUTPUT:
         return True
-    return folder.name in OUTPUT_FOLDERS and not os.path.isfile(folder / "__init__.py")
+    return folder.name in OUTPUT_FOLDERS and not _isfile(folder / "__init__.py")
 
 
 def _workspace_root(names: set[str]) -> bool:
@@ -314,12 +332,12 @@ class _Walker:
     ) -> None:
         """`reals`: real paths of some roots, already known (not resolved again)."""
         known = reals or {}
-        self.roots = [known.get(root) or os.path.realpath(root) for root in roots]
+        self.roots = [known.get(root) or _realpath(root) for root in roots]
         self.notices = notices
         self.walked: set[str] = set()
 
     def inside(self, real: str) -> bool:
-        return within(real, self.roots)
+        return _within(real, self.roots)
 
     def walk(
         self,
@@ -332,7 +350,7 @@ class _Walker:
         deserve a notice, `pruned` the folders not to enter. Folders reached through
         a symlink are walked last, so a folder also reachable without one keeps that
         spelling."""
-        stack = [(top, os.path.realpath(top), False, True) for top in reversed(tops)]
+        stack = [(top, _realpath(top), False, True) for top in reversed(tops)]
         linked: list[tuple[Path, str, bool, bool]] = []
         walked = self.walked
         while stack or linked:
@@ -342,6 +360,8 @@ class _Walker:
             if real in walked:
                 continue
             walked.add(real)
+            if _TRACE is not None:
+                _TRACE.stamp(folder)
             try:
                 with os.scandir(folder) as listing:
                     entries = sorted(listing, key=_entry_name)
@@ -371,6 +391,8 @@ class _Walker:
                         continue
                 target = ""
                 if link:
+                    if _TRACE is not None:
+                        _TRACE.spoiled = True  # what a link reaches is not stamped
                     path = path or folder / name
                     target = os.path.realpath(path)
                     if not self.inside(target):
@@ -415,10 +437,10 @@ def _python_files(
     for path in paths:
         package = _package_around(path)
         if package is not None:
-            packages.setdefault(os.path.realpath(package), package)
-        if not os.path.isdir(path):
-            chosen.add(path, os.path.realpath(path), False)  # named: always checked
-    tops = [path for path in paths if os.path.isdir(path)]
+            packages.setdefault(_realpath(package), package)
+        if not _isdir(path):
+            chosen.add(path, _realpath(path), False)  # named: always checked
+    tops = [path for path in paths if _isdir(path)]
     for folder, real, entries in walker.walk(tops, _is_python, pruned):
         for entry in entries:
             if entry.name == "package.xml" and entry.regular:
@@ -438,9 +460,9 @@ def _package_around(path: Path) -> Path | None:
     """The ROS package a path lies in (its own folder included), found by walking
     up; spelled relative to the current folder when `path` was relative."""
     absolute = Path(os.path.abspath(path))
-    start = absolute if os.path.isdir(absolute) else absolute.parent
+    start = absolute if _isdir(absolute) else absolute.parent
     for folder in (start, *start.parents):
-        if os.path.isfile(folder / "package.xml"):
+        if _isfile(folder / "package.xml"):
             if path.is_absolute():
                 return folder
             try:
@@ -455,7 +477,7 @@ def _interface_folders(packages: Iterable[Path]) -> list[Path]:
         package / name
         for package in packages
         for name in INTERFACE_FOLDERS
-        if os.path.isdir(package / name) or os.path.islink(package / name)
+        if _isdir(package / name) or _islink(package / name)
     ]
 
 
@@ -470,12 +492,12 @@ def _interface_files(
     chosen = _OnePathEach()
     tops = []
     for folder in folders:
-        real = os.path.realpath(folder)
+        real = _realpath(folder)
         if not walker.inside(real):  # a package's msg/ linked elsewhere
             notices.append(messages.outside_link(str(folder), real))
-        elif os.path.isdir(folder):
+        elif _isdir(folder):
             tops.append(folder)
-        elif _is_interface(folder.name) and os.path.isfile(folder):
+        elif _is_interface(folder.name) and _isfile(folder):
             chosen.add(folder, real, False)
     for _, _, entries in walker.walk(tops, _is_interface, lambda _: False):
         for entry in entries:
@@ -515,6 +537,8 @@ def _is_script(path: Path) -> bool:
     (`#!/usr/bin/env python3`, `#!/usr/bin/python2.7`); only that line is read."""
     if "." in path.name:
         return False
+    if _TRACE is not None:
+        _TRACE.stamp(path)
     try:
         head = read_head(path, SHEBANG_BYTES)
     except UnreadableError:
@@ -537,3 +561,148 @@ def _test(test: Callable[[], bool]) -> bool:
 
 def _reason(err: OSError) -> str:
     return err.strerror or type(err).__name__
+
+
+# -- what a discovery looked at, for a cached run ----------------------------
+
+RACY_NS = 2_000_000_000  # as `cache.RACY_NS`: a stamp this recent is not trusted
+
+
+class Trace:
+    """What a discovery looked at on disk: the stamp (os.stat, taken before the
+    read) of each folder it listed and file it read, and the answer of every other
+    probe (isdir, isfile, islink, realpath). A discovery is a function of
+    these answers, of the paths and settings and of the current folder (the
+    caller's key holds those), so when every stamp and answer is the same again it
+    finds the same: a cached run checks them (`holds`) instead of walking again.
+
+    Not kept (`spoiled`) when the walk met a symlink (what it reaches is not in its
+    folder's stamp) or a stamp younger than `RACY_NS` (the next change could land
+    in the same tick, as git's racily clean files). A stamp holds the mtime and the
+    ctime (a `touch -d` or a chmod, say a folder made unreadable, changes it), the
+    inode, device, size and mode."""
+
+    def __init__(self) -> None:
+        self.stamps: dict[str, list[int] | None] = {}
+        self.probes: dict[tuple[str, str], Any] = {}
+        self.spoiled = False
+        self._now = time.time_ns()
+
+    def stamp(self, path: str | os.PathLike[str]) -> None:
+        name = os.fspath(path)
+        if name not in self.stamps:
+            found = _stamp(name)
+            if found is not None and self._now - max(found[0], found[1]) < RACY_NS:
+                self.spoiled = True
+            self.stamps[name] = found
+
+    def holds(self) -> bool:
+        """Whether every stamp and probe answers as it did."""
+        if self.spoiled:
+            return False
+        for name, known in self.stamps.items():
+            if _stamp(name) != known:
+                return False
+        for (kind, arg), answer in self.probes.items():
+            if _probe(kind, arg) != answer:
+                return False
+        return True
+
+    def to_json(self) -> dict[str, Any]:
+        return {
+            "stamps": self.stamps,
+            "probes": [
+                [kind, arg, answer] for (kind, arg), answer in self.probes.items()
+            ],
+        }
+
+    @classmethod
+    def from_json(cls, raw: Any) -> Trace | None:
+        """The trace `to_json` wrote; None when `raw` is not exactly that."""
+        if not isinstance(raw, dict):
+            return None
+        stamps, probes = raw.get("stamps"), raw.get("probes")
+        if not (isinstance(stamps, dict) and isinstance(probes, list)):
+            return None
+        trace = cls()
+        for name, stamp in stamps.items():
+            if stamp is not None and not (
+                isinstance(stamp, list)
+                and len(stamp) == 6
+                and all(type(n) is int for n in stamp)
+            ):
+                return None
+            trace.stamps[name] = stamp
+        for item in probes:
+            if not (
+                isinstance(item, list)
+                and len(item) == 3
+                and item[0] in _PROBES
+                and isinstance(item[1], str)
+                and type(item[2]) in (bool, str)
+            ):
+                return None
+            trace.probes[(item[0], item[1])] = item[2]
+        return trace
+
+
+_TRACE: Trace | None = None  # the running discovery's, if it keeps one
+
+
+def _stamp(name: str) -> list[int] | None:
+    try:
+        st = os.stat(name)
+    except (OSError, ValueError):
+        return None
+    return [
+        st.st_mtime_ns,
+        st.st_ctime_ns,
+        st.st_ino,
+        st.st_dev,
+        st.st_size,
+        st.st_mode,
+    ]
+
+
+_PROBES: dict[str, Callable[[str], Any]] = {
+    "isdir": os.path.isdir,
+    "isfile": os.path.isfile,
+    "islink": os.path.islink,
+    "realpath": os.path.realpath,
+}
+
+
+def _probe(kind: str, arg: str) -> Any:
+    try:
+        return _PROBES[kind](arg)
+    except (OSError, ValueError):
+        return None  # never equal to an answer noted
+
+
+def _noted(kind: str, arg: str) -> Any:
+    answer = _PROBES[kind](arg)
+    if _TRACE is not None:
+        _TRACE.probes[(kind, arg)] = answer
+    return answer
+
+
+def _isdir(path: str | os.PathLike[str]) -> bool:
+    return bool(_noted("isdir", os.fspath(path)))
+
+
+def _isfile(path: str | os.PathLike[str]) -> bool:
+    return bool(_noted("isfile", os.fspath(path)))
+
+
+def _islink(path: str | os.PathLike[str]) -> bool:
+    return bool(_noted("islink", os.fspath(path)))
+
+
+def _realpath(path: str | os.PathLike[str]) -> str:
+    return str(_noted("realpath", os.fspath(path)))
+
+
+def _within(
+    path: str | os.PathLike[str], roots: Iterable[str | os.PathLike[str]]
+) -> bool:
+    return within(path, roots, _realpath)
