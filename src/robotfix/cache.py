@@ -17,7 +17,9 @@ is not read again; any difference (a `touch`, an editor's atomic save) costs one
 read and hash, never a wrong result. A file modified within `RACY_NS` of being
 hashed is not trusted by stat (git's "racily clean" rule): it could change again
 within the same mtime tick. The parameter files' diagnostics (`paramcheck.py`) are
-kept too, under a key that hashes every input they depend on (`params_key`).
+kept too, under a key that hashes every input they depend on (`params_key`), and
+so is the discovery, with the trace of what it looked at (`discovery.Trace`): an
+unchanged tree is stat'ed, not walked.
 
 A missing, corrupt, foreign or ill-typed cache is ignored and rebuilt; a cache that
 cannot be written only costs speed. `results.json` is read only if it is a regular
@@ -91,6 +93,7 @@ class ResultCache:
         self.path = folder / "results.json"
         self.key = key
         self._entries: dict[str, Any] = {}
+        self._valid: dict[str, Any] = {}  # entries found valid (`_valid_entry`)
         # module file -> [sha256 of its bytes, fingerprint of its summary]
         self.summaries: dict[str, tuple[str, str]] = {}
         # file -> [size, mtime_ns, inode, device, sha256, mentions]: `sha`'s memory
@@ -283,9 +286,12 @@ class ResultCache:
         """The cached diagnostics of this file (`data`: its bytes, or their sha256
         from `sha`), or None when they may differ from a fresh check (or the entry
         is not exactly what `put` writes)."""
-        entry = self._entries.get(entry_key(path))
-        if not isinstance(entry, dict) or not _valid_entry(entry):
-            return None
+        name = entry_key(path)
+        entry: Any = self._entries.get(name)
+        if entry is None or self._valid.get(name) is not entry:
+            if not isinstance(entry, dict) or not _valid_entry(entry):
+                return None
+            self._valid[name] = entry
         if entry["file"] != _file_key(data, path, config):
             return None
         if entry["catalog"] != catalog.fingerprint_types(entry["types"]):
@@ -299,12 +305,13 @@ class ResultCache:
 
     def types(self, path: Path) -> list[str]:
         """The message types the cached check of this file looked up."""
-        entry = self._entries.get(entry_key(path))
-        return (
-            list(entry["types"])
-            if isinstance(entry, dict) and _valid_entry(entry)
-            else []
-        )
+        name = entry_key(path)
+        entry: Any = self._entries.get(name)
+        if entry is None or self._valid.get(name) is not entry:
+            if not isinstance(entry, dict) or not _valid_entry(entry):
+                return []
+            self._valid[name] = entry
+        return list(entry["types"])
 
     def put(
         self,

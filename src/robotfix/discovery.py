@@ -381,6 +381,8 @@ class _Walker:
             for entry in entries:
                 name = entry.name
                 link = _test(entry.is_symlink)
+                if link and _TRACE is not None:
+                    _TRACE.spoiled = True  # what it reaches is not in `folder`'s stamp
                 is_folder = _test(entry.is_dir)  # follows a symlink; False if broken
                 path: Path | None = None
                 if is_folder:
@@ -391,8 +393,6 @@ class _Walker:
                         continue
                 target = ""
                 if link:
-                    if _TRACE is not None:
-                        _TRACE.spoiled = True  # what a link reaches is not stamped
                     path = path or folder / name
                     target = os.path.realpath(path)
                     if not self.inside(target):
