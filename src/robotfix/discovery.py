@@ -609,10 +609,15 @@ class Trace:
         return True
 
     def to_json(self) -> dict[str, Any]:
+        """Without the probes of a folder's entries when the folder's own stamp is
+        kept: with no symlink met, the stamp decides what they answer."""
+        stamped = self.stamps
         return {
-            "stamps": self.stamps,
+            "stamps": stamped,
             "probes": [
-                [kind, arg, answer] for (kind, arg), answer in self.probes.items()
+                [kind, arg, answer]
+                for (kind, arg), answer in self.probes.items()
+                if kind == "realpath" or stamped.get(os.path.dirname(arg)) is None
             ],
         }
 
