@@ -317,3 +317,13 @@ def test_the_fixture_tree_can_be_copied(tree: Path, tmp_path: Path) -> None:
     copy = tmp_path / "copy"
     shutil.copytree(tree, copy)
     assert run(copy)[1] == run(copy, cache=False)[1] == 4
+
+
+def test_absolute_paths_do_not_depend_on_the_current_folder(
+    tree: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """An editor runs from anywhere: with every path absolute, the cwd is no key."""
+    cold = run(tree)
+    monkeypatch.chdir(tmp_path)
+    text, files, listed = walks(tree, monkeypatch)
+    assert (text, files) == cold and listed == 0

@@ -395,12 +395,14 @@ class ResultCache:
 
 def discovery_key(paths: list[Path], config: Config) -> str | None:
     """Everything a discovery depends on besides what its trace notes: the paths
-    as spelled, the current folder (relative spellings), and the settings it reads
-    (`Config.excluded` resolves the root); None when the current folder is gone."""
+    as spelled, the current folder when one of them is relative, and the settings
+    it reads (`Config.excluded` resolves the root); None when the current folder
+    is gone."""
+    spelled = [*paths, config.root, *config.msg_paths]
     try:
         parts = [
             f"discovery {FORMAT}",
-            os.getcwd(),
+            "" if all(os.path.isabs(p) for p in spelled) else os.getcwd(),
             os.fspath(config.root),
             os.path.realpath(config.root),
             [os.fspath(p) for p in paths],
