@@ -17,7 +17,9 @@ is not read again; any difference (a `touch`, an editor's atomic save) costs one
 read and hash, never a wrong result. A file modified within `RACY_NS` of being
 hashed is not trusted by stat (git's "racily clean" rule): it could change again
 within the same mtime tick. The parameter files' diagnostics (`paramcheck.py`) are
-kept too, under a key that hashes every input they depend on (`params_key`).
+kept too, under a key that hashes every input they depend on (`params_key`), and
+so is the discovery, with the trace of what it looked at (`discovery.Trace`): an
+unchanged tree is stat'ed, not walked.
 
 A missing, corrupt, foreign or ill-typed cache is ignored and rebuilt; a cache that
 cannot be written only costs speed. `results.json` is read only if it is a regular
@@ -40,6 +42,7 @@ from typing import TYPE_CHECKING, Any
 from robotfix import __version__, fs, rules
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic, Note, Span
+from robotfix.discovery import Discovery, Trace
 from robotfix.disk_cache import install_key
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.stubs.load import stub_set
@@ -90,6 +93,7 @@ class ResultCache:
         self.path = folder / "results.json"
         self.key = key
         self._entries: dict[str, Any] = {}
+        self._valid: dict[str, Any] = {}  # entries found valid (`_valid_entry`)
         # module file -> [sha256 of its bytes, fingerprint of its summary]
         self.summaries: dict[str, tuple[str, str]] = {}
         # file -> [size, mtime_ns, inode, device, sha256, mentions]: `sha`'s memory
@@ -98,6 +102,7 @@ class ResultCache:
         self._bytes: dict[str, bytes] = {}  # the last file `sha` read, to `take`
         self._params: tuple[str, list[Any]] | None = None
         self._catalog: dict[str, Any] | None = None
+        self._discovery: dict[str, Any] | None = None  # key, trace, what was found
         self._dirty = False
         try:
             data = json.loads(fs.read_regular(self.path, MAX_BYTES, follow=False))
@@ -121,6 +126,9 @@ class ResultCache:
             stats = data.get("stats")
             if isinstance(stats, dict):
                 self._stats = {k: v for k, v in stats.items() if _valid_stat(v)}
+            found_discovery = data.get("discovery")
+            if isinstance(found_discovery, dict):
+                self._discovery = found_discovery
             found_catalog = data.get("catalog")
             if isinstance(found_catalog, dict):
                 self._catalog = found_catalog
@@ -232,6 +240,31 @@ class ResultCache:
             self._catalog = raw
             self._dirty = True
 
+    # -- discovery ---------------------------------------------------------------
+    def discovery(self, key: str) -> Discovery | None:
+        """What an earlier discovery with the same `key` (`discovery_key`) found,
+        when everything it looked at on disk is as it was (`Trace.holds`); its
+        `installed` is left for the caller (the environment, not the disk)."""
+        raw = self._discovery
+        if raw is None or raw.get("key") != key:
+            return None
+        trace = Trace.from_json(raw.get("trace"))
+        found = _load_discovery(raw.get("found"))
+        if trace is None or found is None or not trace.holds():
+            return None
+        return found
+
+    def put_discovery(self, key: str, found: Discovery, trace: Trace) -> None:
+        """Keep a discovery with its trace (not one the trace cannot vouch for)."""
+        raw = (
+            None
+            if trace.spoiled
+            else {"key": key, "trace": trace.to_json(), "found": _dump_discovery(found)}
+        )
+        if raw != self._discovery:
+            self._discovery = raw
+            self._dirty = True
+
     # -- parameter files -------------------------------------------------------
     def params(self, key: str) -> list[Diagnostic] | None:
         if self._params is None or self._params[0] != key:
@@ -253,9 +286,12 @@ class ResultCache:
         """The cached diagnostics of this file (`data`: its bytes, or their sha256
         from `sha`), or None when they may differ from a fresh check (or the entry
         is not exactly what `put` writes)."""
-        entry = self._entries.get(entry_key(path))
-        if not isinstance(entry, dict) or not _valid_entry(entry):
-            return None
+        name = entry_key(path)
+        entry: Any = self._entries.get(name)
+        if entry is None or self._valid.get(name) is not entry:
+            if not isinstance(entry, dict) or not _valid_entry(entry):
+                return None
+            self._valid[name] = entry
         if entry["file"] != _file_key(data, path, config):
             return None
         if entry["catalog"] != catalog.fingerprint_types(entry["types"]):
@@ -269,12 +305,13 @@ class ResultCache:
 
     def types(self, path: Path) -> list[str]:
         """The message types the cached check of this file looked up."""
-        entry = self._entries.get(entry_key(path))
-        return (
-            list(entry["types"])
-            if isinstance(entry, dict) and _valid_entry(entry)
-            else []
-        )
+        name = entry_key(path)
+        entry: Any = self._entries.get(name)
+        if entry is None or self._valid.get(name) is not entry:
+            if not isinstance(entry, dict) or not _valid_entry(entry):
+                return []
+            self._valid[name] = entry
+        return list(entry["types"])
 
     def put(
         self,
@@ -345,6 +382,7 @@ class ResultCache:
             "stats": {**self._stats, **self._seen_stats},
             "params": list(self._params) if self._params is not None else None,
             "catalog": self._catalog,
+            "discovery": self._discovery,
         }
         try:
             folder.mkdir(parents=True, exist_ok=True)
@@ -353,6 +391,64 @@ class ResultCache:
             self._dirty = False
         except (OSError, ValueError):
             pass
+
+
+def discovery_key(paths: list[Path], config: Config) -> str | None:
+    """Everything a discovery depends on besides what its trace notes: the paths
+    as spelled, the current folder when one of them is relative, and the settings
+    it reads (`Config.excluded` resolves the root); None when the current folder
+    is gone."""
+    spelled = [*paths, config.root, *config.msg_paths]
+    try:
+        parts = [
+            f"discovery {FORMAT}",
+            "" if all(os.path.isabs(p) for p in spelled) else os.getcwd(),
+            os.fspath(config.root),
+            os.path.realpath(config.root),
+            [os.fspath(p) for p in paths],
+            list(config.exclude),
+            [os.fspath(m) for m in config.msg_paths],
+        ]
+    except (OSError, ValueError):
+        return None
+    text = json.dumps(parts).encode("utf-8", "surrogateescape")
+    return hashlib.sha256(text).hexdigest()
+
+
+_DISCOVERY_PATHS = (
+    "python_files",
+    "interface_files",
+    "package_interface_files",
+    "parameter_files",
+    "named_parameter_files",
+    "parameter_definitions",
+    "summary_files",
+)
+
+
+def _dump_discovery(found: Discovery) -> dict[str, Any]:
+    raw: dict[str, Any] = {
+        name: [os.fspath(p) for p in getattr(found, name)] for name in _DISCOVERY_PATHS
+    }
+    raw["notices"] = [_dump(d) for d in found.notices]
+    return raw
+
+
+def _load_discovery(raw: Any) -> Discovery | None:
+    """What `_dump_discovery` wrote; None when `raw` is not exactly that."""
+    if not isinstance(raw, dict):
+        return None
+    found = Discovery()
+    for name in _DISCOVERY_PATHS:
+        paths = raw.get(name)
+        if not (isinstance(paths, list) and all(isinstance(p, str) for p in paths)):
+            return None
+        setattr(found, name, [Path(p) for p in paths])
+    notices = raw.get("notices")
+    if not (isinstance(notices, list) and all(_valid_diagnostic(d) for d in notices)):
+        return None
+    found.notices = [_load(d) for d in notices]
+    return found
 
 
 def _file_key(data: bytes | str, path: Path, config: Config) -> str:

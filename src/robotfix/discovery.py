@@ -26,9 +26,11 @@ from __future__ import annotations
 
 import os
 import re
+import time
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 from robotfix import messages
 from robotfix.config import Config
@@ -76,51 +78,91 @@ class Discovery:
 
 
 def discover(
-    paths: list[Path], config: Config, environ: Mapping[str, str] | None = None
+    paths: list[Path],
+    config: Config,
+    environ: Mapping[str, str] | None = None,
+    trace: Trace | None = None,
 ) -> Discovery:
     """Everything a run over `paths` reads, and the RF004 notices of what it left
     out. Interface files come from the msg paths and from the msg/, srv/, action/
     folders of the ROS packages under `paths`, or around a path inside a package;
     those of the packages win over the msg paths' (`package_interface_files`), and
-    both over the install space of `environ` (by default the process's)."""
-    found = Discovery()
-    named_yaml = [p for p in paths if _is_yaml(p.name) and not os.path.isdir(p)]
-    python_paths = [p for p in paths if p not in named_yaml]
-    files, packages = _python_files(python_paths, config, found.notices)
-    found.python_files = files
-    folders = [p for p in python_paths if os.path.isdir(p)]
-    scanned = [
-        package
-        for package in packages
-        if within(package, folders) or any(within(f, [package]) for f in folders)
-    ]
-    _parameter_files(found, named_yaml, scanned, [*paths, *packages], config)
-    roots = [*paths, *config.msg_paths, *packages]
-    folders = list(config.msg_paths) + _interface_folders(packages)
-    found.interface_files = _interface_files(folders, roots, found.notices)
-    found.package_interface_files = _inside(found.interface_files, packages)
+    both over the install space of `environ` (by default the process's). With
+    `trace`, what it looked at on disk is noted there (`Trace`)."""
+    global _TRACE
+    _TRACE = trace
+    try:
+        found = _discover(paths, config)
+    finally:
+        _TRACE = None
     found.installed = install_space(environ)
     return found
 
 
-def _inside(files: list[Path], folders: list[Path]) -> list[Path]:
+def _discover(paths: list[Path], config: Config) -> Discovery:
+    found = Discovery()
+    named_yaml = [p for p in paths if _is_yaml(p.name) and not _isdir(p)]
+    python_paths = [p for p in paths if p not in named_yaml]
+    reals: dict[Path, str] = {}  # real paths the walks found: not resolved again
+    files, packages = _python_files(python_paths, config, found.notices, reals)
+    found.python_files = files
+    folders = [p for p in python_paths if _isdir(p)]
+    scanned = _around(packages, folders, reals)
+    _parameter_files(found, named_yaml, scanned, [*paths, *packages], config, reals)
+    roots = [*paths, *config.msg_paths, *packages]
+    folders = list(config.msg_paths) + _interface_folders(packages)
+    found.interface_files = _interface_files(folders, roots, found.notices, reals)
+    found.package_interface_files = _inside(found.interface_files, packages, reals)
+    return found
+
+
+def _inside(
+    files: list[Path], folders: list[Path], reals: Mapping[Path, str]
+) -> list[Path]:
     """The files that lie in one of `folders`, symlinks resolved (as `fs.within`),
     with each folder resolved once: a tree of many packages stays linear."""
     real: set[Path] = set()
     for folder in folders:
-        try:
-            real.add(Path(os.path.realpath(folder)))
-        except (OSError, ValueError):
-            continue
+        found_real = _real(folder, reals)
+        if found_real is not None:
+            real.add(found_real)
     found = []
     for file in files:
-        try:
-            resolved = Path(os.path.realpath(file))
-        except (OSError, ValueError):
-            continue
-        if resolved in real or not real.isdisjoint(resolved.parents):
+        resolved = _real(file, reals)
+        if resolved is not None and (
+            resolved in real or not real.isdisjoint(resolved.parents)
+        ):
             found.append(file)
     return found
+
+
+def _around(
+    packages: list[Path], folders: list[Path], reals: Mapping[Path, str]
+) -> list[Path]:
+    """The packages under one of `folders` or holding one of them (as `fs.within`
+    both ways), each path resolved once."""
+    roots = [r for r in (_real(f, reals) for f in folders) if r is not None]
+    found = []
+    for package in packages:
+        real = _real(package, reals)
+        if real is not None and any(
+            real == root or root in real.parents or real in root.parents
+            for root in roots
+        ):
+            found.append(package)
+    return found
+
+
+def _real(path: Path, reals: Mapping[Path, str]) -> Path | None:
+    """`path` with every symlink resolved (a walk may know it already); None when
+    it cannot be resolved."""
+    known = reals.get(path)
+    if known is not None:
+        return Path(known)
+    try:
+        return Path(_realpath(path))
+    except (OSError, ValueError):
+        return None
 
 
 def _parameter_files(
@@ -129,6 +171,7 @@ def _parameter_files(
     packages: list[Path],
     roots: list[Path],
     config: Config,
+    reals: Mapping[Path, str] | None = None,
 ) -> None:
     """Parameter YAML files: those named, and those in the config/, params/ and
     param/ folders of the packages under (or around) the folders named;
@@ -140,17 +183,17 @@ def _parameter_files(
         package / name
         for package in packages
         for name in PARAMETER_FOLDERS
-        if os.path.isdir(package / name)
+        if _isdir(package / name)
     ]
-    walker = _Walker(roots + around, found.notices)
+    walker = _Walker(roots + around, found.notices, reals)
     chosen = _OnePathEach()
     for path in named:
-        chosen.add(path, os.path.realpath(path), False)
+        chosen.add(path, _realpath(path), False)
     pruned = lambda folder: config.excluded(folder, folder=True)  # noqa: E731
-    for _, entries in walker.walk(folders, _is_yaml, pruned):
+    for _, _, entries in walker.walk(folders, _is_yaml, pruned):
         for entry in entries:
             if (
-                _is_yaml(entry.path.name)
+                _is_yaml(entry.name)
                 and entry.regular
                 and not config.excluded(entry.path)
             ):
@@ -170,6 +213,8 @@ def _definitions_of(package: Path) -> list[Path]:
     string in a setup.py that calls generate_parameter_module."""
     names: list[str] = []
     for build in ("CMakeLists.txt", "setup.py"):
+        if _TRACE is not None:
+            _TRACE.stamp(package / build)
         try:
             text = read_text(package / build, MAX_BUILD_FILE_BYTES)
         except UnreadableError:
@@ -184,7 +229,7 @@ def _definitions_of(package: Path) -> list[Path]:
     for name in names:
         name = name.replace("${CMAKE_CURRENT_SOURCE_DIR}/", "")
         path = package / name
-        if "$" not in name and os.path.isfile(path) and within(path, [package]):
+        if "$" not in name and _isfile(path) and _within(path, [package]):
             found.append(path)
     return found
 
@@ -229,7 +274,7 @@ def _output(folder: Path, in_workspace: bool) -> bool:
     it is a Python package of that name (`mypkg/log/__init__.py`)."""
     if in_workspace and folder.name in WORKSPACE_OUTPUT:
         return True
-    return folder.name in OUTPUT_FOLDERS and not os.path.isfile(folder / "__init__.py")
+    return folder.name in OUTPUT_FOLDERS and not _isfile(folder / "__init__.py")
 
 
 def _workspace_root(names: set[str]) -> bool:
@@ -242,48 +287,84 @@ def _workspace_root(names: set[str]) -> bool:
 # -- the walk ---------------------------------------------------------------
 
 
-@dataclass(frozen=True)
 class _Entry:
-    path: Path  # as reached: the root's spelling, then the names walked
-    real: str  # every symlink resolved
-    regular: bool  # a regular file, or a symlink to one
-    link: bool
+    """A file entry of a walked folder; its path and real path are made only when
+    asked for (a tree has many more files than the few a run keeps)."""
+
+    __slots__ = ("folder", "link", "name", "prefix", "regular", "target")
+
+    def __init__(
+        self,
+        folder: Path,
+        name: str,
+        prefix: str,
+        target: str,
+        regular: bool,
+        link: bool,
+    ) -> None:
+        self.folder = folder
+        self.name = name
+        self.prefix = prefix  # the folder's real path, ending with a separator
+        self.target = target  # a symlink's target, every symlink resolved ("" if none)
+        self.regular = regular  # a regular file, or a symlink to one
+        self.link = link
+
+    @property
+    def path(self) -> Path:
+        """As reached: the root's spelling, then the names walked."""
+        return self.folder / self.name
+
+    @property
+    def real(self) -> str:
+        """Every symlink resolved."""
+        return self.target or self.prefix + self.name
 
 
 class _Walker:
     """Walks folders under a set of roots; remembers the real folders it has
     walked, so a loop or a second spelling is walked once."""
 
-    def __init__(self, roots: Iterable[Path], notices: list[Diagnostic]) -> None:
-        self.roots = [os.path.realpath(root) for root in roots]
+    def __init__(
+        self,
+        roots: Iterable[Path],
+        notices: list[Diagnostic],
+        reals: Mapping[Path, str] | None = None,
+    ) -> None:
+        """`reals`: real paths of some roots, already known (not resolved again)."""
+        known = reals or {}
+        self.roots = [known.get(root) or _realpath(root) for root in roots]
         self.notices = notices
         self.walked: set[str] = set()
 
     def inside(self, real: str) -> bool:
-        return within(real, self.roots)
+        return _within(real, self.roots)
 
     def walk(
         self,
         tops: list[Path],
         wanted: Callable[[str], bool],
         pruned: Callable[[Path], bool],
-    ) -> Iterator[tuple[Path, list[_Entry]]]:
-        """Each folder under `tops` (themselves included) with its entries that are
-        not folders; `wanted` names the files whose leaving links deserve a notice,
-        `pruned` the folders not to enter. Folders reached through a symlink are
-        walked last, so a folder also reachable without one keeps that spelling."""
-        stack = [(top, os.path.realpath(top), False, True) for top in reversed(tops)]
+    ) -> Iterator[tuple[Path, str, list[_Entry]]]:
+        """Each folder under `tops` (themselves included) with its real path and its
+        entries that are not folders; `wanted` names the files whose leaving links
+        deserve a notice, `pruned` the folders not to enter. Folders reached through
+        a symlink are walked last, so a folder also reachable without one keeps that
+        spelling."""
+        stack = [(top, _realpath(top), False, True) for top in reversed(tops)]
         linked: list[tuple[Path, str, bool, bool]] = []
+        walked = self.walked
         while stack or linked:
             if not stack:
                 stack, linked = linked[::-1], []
             folder, real, via_link, top = stack.pop()
-            if real in self.walked:
+            if real in walked:
                 continue
-            self.walked.add(real)
+            walked.add(real)
+            if _TRACE is not None:
+                _TRACE.stamp(folder)
             try:
                 with os.scandir(folder) as listing:
-                    entries = sorted(listing, key=lambda e: e.name)
+                    entries = sorted(listing, key=_entry_name)
             except (FileNotFoundError, NotADirectoryError):
                 continue  # gone while we walked (a concurrent build)
             except OSError as err:
@@ -291,41 +372,61 @@ class _Walker:
                 continue
             names = {entry.name for entry in entries}
             if not top and not names.isdisjoint(IGNORE_MARKERS):
-                self.walked.discard(real)  # still walked if named as a root
+                walked.discard(real)  # still walked if named as a root
                 continue  # COLCON_IGNORE, AMENT_IGNORE, CATKIN_IGNORE
             workspace = _workspace_root(names)
+            prefix = real if real.endswith(os.sep) else real + os.sep
             files: list[_Entry] = []
             below: list[tuple[Path, str, bool, bool]] = []
             for entry in entries:
-                path = folder / entry.name
+                name = entry.name
                 link = _test(entry.is_symlink)
+                if link and _TRACE is not None:
+                    _TRACE.spoiled = True  # what it reaches is not in `folder`'s stamp
                 is_folder = _test(entry.is_dir)  # follows a symlink; False if broken
-                if is_folder and (
-                    _skipped(entry.name) or _output(path, workspace) or pruned(path)
-                ):
-                    continue
-                target = os.path.realpath(path) if link else ""
-                if link and not self.inside(target):
-                    if is_folder or wanted(entry.name):
-                        self.notices.append(messages.outside_link(str(path), target))
-                    continue
-                item_real = target or os.path.join(real, entry.name)
+                path: Path | None = None
                 if is_folder:
+                    if _skipped(name):
+                        continue
+                    path = folder / name
+                    if _output(path, workspace) or pruned(path):
+                        continue
+                target = ""
+                if link:
+                    path = path or folder / name
+                    target = os.path.realpath(path)
+                    if not self.inside(target):
+                        if is_folder or wanted(name):
+                            self.notices.append(
+                                messages.outside_link(str(path), target)
+                            )
+                        continue
+                if is_folder:
+                    assert path is not None
                     (linked if link else below).append(
-                        (path, item_real, via_link or link, False)
+                        (path, target or prefix + name, via_link or link, False)
                     )
                 else:
                     regular = _test(entry.is_file)
-                    files.append(_Entry(path, item_real, regular, via_link or link))
-            yield folder, files
+                    files.append(
+                        _Entry(folder, name, prefix, target, regular, via_link or link)
+                    )
+            yield folder, real, files
             stack.extend(reversed(below))
 
 
+def _entry_name(entry: os.DirEntry[str]) -> str:
+    return entry.name
+
+
 def _python_files(
-    paths: list[Path], config: Config | None, notices: list[Diagnostic]
+    paths: list[Path],
+    config: Config | None,
+    notices: list[Diagnostic],
+    reals: dict[Path, str] | None = None,
 ) -> tuple[list[Path], list[Path]]:
     """Python files (each real file once) and ROS package folders under `paths`,
-    or holding one of them."""
+    or holding one of them; `reals` learns the packages' real paths."""
     walker = _Walker(paths, notices)
     chosen = _OnePathEach()
     packages: dict[str, Path] = {}
@@ -336,22 +437,22 @@ def _python_files(
     for path in paths:
         package = _package_around(path)
         if package is not None:
-            packages.setdefault(os.path.realpath(package), package)
-        if not os.path.isdir(path):
-            chosen.add(path, os.path.realpath(path), False)  # named: always checked
-    tops = [path for path in paths if os.path.isdir(path)]
-    for folder, entries in walker.walk(tops, _is_python, pruned):
+            packages.setdefault(_realpath(package), package)
+        if not _isdir(path):
+            chosen.add(path, _realpath(path), False)  # named: always checked
+    tops = [path for path in paths if _isdir(path)]
+    for folder, real, entries in walker.walk(tops, _is_python, pruned):
         for entry in entries:
-            if entry.path.name == "package.xml" and entry.regular:
-                packages.setdefault(os.path.realpath(folder), folder)
-            elif (
-                (
-                    (_is_python(entry.path.name) and (entry.regular or entry.link))
-                    or (entry.regular and _is_script(entry.path))
-                )  # a broken link to a `.py`: RF003
-                and not (config is not None and config.excluded(entry.path))
-            ):
-                chosen.add(entry.path, entry.real, entry.link)
+            if entry.name == "package.xml" and entry.regular:
+                packages.setdefault(real, folder)
+            elif (_is_python(entry.name) and (entry.regular or entry.link)) or (
+                entry.regular and "." not in entry.name and _is_script(entry.path)
+            ):  # a broken link to a `.py`: RF003
+                path = entry.path
+                if not (config is not None and config.excluded(path)):
+                    chosen.add(path, entry.real, entry.link)
+    if reals is not None:
+        reals.update((folder, real) for real, folder in packages.items())
     return chosen.paths(ordered=False), sorted(packages.values())
 
 
@@ -359,9 +460,9 @@ def _package_around(path: Path) -> Path | None:
     """The ROS package a path lies in (its own folder included), found by walking
     up; spelled relative to the current folder when `path` was relative."""
     absolute = Path(os.path.abspath(path))
-    start = absolute if os.path.isdir(absolute) else absolute.parent
+    start = absolute if _isdir(absolute) else absolute.parent
     for folder in (start, *start.parents):
-        if os.path.isfile(folder / "package.xml"):
+        if _isfile(folder / "package.xml"):
             if path.is_absolute():
                 return folder
             try:
@@ -376,28 +477,34 @@ def _interface_folders(packages: Iterable[Path]) -> list[Path]:
         package / name
         for package in packages
         for name in INTERFACE_FOLDERS
-        if os.path.isdir(package / name) or os.path.islink(package / name)
+        if _isdir(package / name) or _islink(package / name)
     ]
 
 
 def _interface_files(
-    folders: list[Path], roots: Iterable[Path], notices: list[Diagnostic]
+    folders: list[Path],
+    roots: Iterable[Path],
+    notices: list[Diagnostic],
+    reals: dict[Path, str] | None = None,
 ) -> list[Path]:
-    walker = _Walker(roots, notices)
+    """`reals`: real paths known (of roots), then learnt (of the files found)."""
+    walker = _Walker(roots, notices, reals)
     chosen = _OnePathEach()
     tops = []
     for folder in folders:
-        real = os.path.realpath(folder)
+        real = _realpath(folder)
         if not walker.inside(real):  # a package's msg/ linked elsewhere
             notices.append(messages.outside_link(str(folder), real))
-        elif os.path.isdir(folder):
+        elif _isdir(folder):
             tops.append(folder)
-        elif _is_interface(folder.name) and os.path.isfile(folder):
+        elif _is_interface(folder.name) and _isfile(folder):
             chosen.add(folder, real, False)
-    for _, entries in walker.walk(tops, _is_interface, lambda _: False):
+    for _, _, entries in walker.walk(tops, _is_interface, lambda _: False):
         for entry in entries:
-            if _is_interface(entry.path.name) and entry.regular:
+            if _is_interface(entry.name) and entry.regular:
                 chosen.add(entry.path, entry.real, entry.link)
+    if reals is not None:
+        reals.update(chosen.reals())
     return chosen.paths(ordered=False)
 
 
@@ -417,6 +524,9 @@ class _OnePathEach:
         found = [path for _, path in self._chosen.values()]
         return sorted(found) if ordered else found
 
+    def reals(self) -> dict[Path, str]:
+        return {path: real for real, (_, path) in self._chosen.items()}
+
 
 def _is_python(name: str) -> bool:
     return name.endswith(".py")
@@ -427,6 +537,8 @@ def _is_script(path: Path) -> bool:
     (`#!/usr/bin/env python3`, `#!/usr/bin/python2.7`); only that line is read."""
     if "." in path.name:
         return False
+    if _TRACE is not None:
+        _TRACE.stamp(path)
     try:
         head = read_head(path, SHEBANG_BYTES)
     except UnreadableError:
@@ -449,3 +561,153 @@ def _test(test: Callable[[], bool]) -> bool:
 
 def _reason(err: OSError) -> str:
     return err.strerror or type(err).__name__
+
+
+# -- what a discovery looked at, for a cached run ----------------------------
+
+RACY_NS = 2_000_000_000  # as `cache.RACY_NS`: a stamp this recent is not trusted
+
+
+class Trace:
+    """What a discovery looked at on disk: the stamp (os.stat, taken before the
+    read) of each folder it listed and file it read, and the answer of every other
+    probe (isdir, isfile, islink, realpath). A discovery is a function of
+    these answers, of the paths and settings and of the current folder (the
+    caller's key holds those), so when every stamp and answer is the same again it
+    finds the same: a cached run checks them (`holds`) instead of walking again.
+
+    Not kept (`spoiled`) when the walk met a symlink (what it reaches is not in its
+    folder's stamp) or a stamp younger than `RACY_NS` (the next change could land
+    in the same tick, as git's racily clean files). A stamp holds the mtime and the
+    ctime (a `touch -d` or a chmod, say a folder made unreadable, changes it), the
+    inode, device, size and mode."""
+
+    def __init__(self) -> None:
+        self.stamps: dict[str, list[int] | None] = {}
+        self.probes: dict[tuple[str, str], Any] = {}
+        self.spoiled = False
+        self._now = time.time_ns()
+
+    def stamp(self, path: str | os.PathLike[str]) -> None:
+        name = os.fspath(path)
+        if name not in self.stamps:
+            found = _stamp(name)
+            if found is not None and self._now - max(found[0], found[1]) < RACY_NS:
+                self.spoiled = True
+            self.stamps[name] = found
+
+    def holds(self) -> bool:
+        """Whether every stamp and probe answers as it did."""
+        if self.spoiled:
+            return False
+        for name, known in self.stamps.items():
+            if _stamp(name) != known:
+                return False
+        for (kind, arg), answer in self.probes.items():
+            if _probe(kind, arg) != answer:
+                return False
+        return True
+
+    def to_json(self) -> dict[str, Any]:
+        """Without the probes of a folder's entries when the folder's own stamp is
+        kept: with no symlink met, the stamp decides what they answer."""
+        stamped = self.stamps
+        return {
+            "stamps": stamped,
+            "probes": [
+                [kind, arg, answer]
+                for (kind, arg), answer in self.probes.items()
+                if kind == "realpath" or stamped.get(os.path.dirname(arg)) is None
+            ],
+        }
+
+    @classmethod
+    def from_json(cls, raw: Any) -> Trace | None:
+        """The trace `to_json` wrote; None when `raw` is not exactly that."""
+        if not isinstance(raw, dict):
+            return None
+        stamps, probes = raw.get("stamps"), raw.get("probes")
+        if not (isinstance(stamps, dict) and isinstance(probes, list)):
+            return None
+        trace = cls()
+        for name, stamp in stamps.items():
+            if stamp is not None and not (
+                isinstance(stamp, list)
+                and len(stamp) == 6
+                and all(type(n) is int for n in stamp)
+            ):
+                return None
+            trace.stamps[name] = stamp
+        for item in probes:
+            if not (
+                isinstance(item, list)
+                and len(item) == 3
+                and item[0] in _PROBES
+                and isinstance(item[1], str)
+                and type(item[2]) in (bool, str)
+            ):
+                return None
+            trace.probes[(item[0], item[1])] = item[2]
+        return trace
+
+
+_TRACE: Trace | None = None  # the running discovery's, if it keeps one
+
+
+def _stamp(name: str) -> list[int] | None:
+    try:
+        st = os.stat(name)
+    except (OSError, ValueError):
+        return None
+    return [
+        st.st_mtime_ns,
+        st.st_ctime_ns,
+        st.st_ino,
+        st.st_dev,
+        st.st_size,
+        st.st_mode,
+    ]
+
+
+_PROBES: dict[str, Callable[[str], Any]] = {
+    "isdir": os.path.isdir,
+    "isfile": os.path.isfile,
+    "islink": os.path.islink,
+    "realpath": os.path.realpath,
+}
+
+
+def _probe(kind: str, arg: str) -> Any:
+    try:
+        return _PROBES[kind](arg)
+    except (OSError, ValueError):
+        return None  # never equal to an answer noted
+
+
+def _noted(kind: str, arg: str) -> Any:
+    answer = _PROBES[kind](arg)
+    if _TRACE is not None:
+        _TRACE.probes[(kind, arg)] = answer
+    return answer
+
+
+def _isdir(path: str | os.PathLike[str]) -> bool:
+    return bool(_noted("isdir", os.fspath(path)))
+
+
+def _isfile(path: str | os.PathLike[str]) -> bool:
+    return bool(_noted("isfile", os.fspath(path)))
+
+
+def _islink(path: str | os.PathLike[str]) -> bool:
+    return bool(_noted("islink", os.fspath(path)))
+
+
+def _realpath(path: str | os.PathLike[str]) -> str:
+    return str(_noted("realpath", os.fspath(path)))
+
+
+def _within(
+    path: str | os.PathLike[str], roots: Iterable[str | os.PathLike[str]]
+) -> bool:
+    return within(path, roots, _realpath)

@@ -15,7 +15,7 @@ import contextlib
 import os
 import stat
 import tempfile
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from pathlib import Path
 
 MAX_FILE_BYTES = 32 * 1024 * 1024  # no source or interface file is near this
@@ -132,15 +132,17 @@ def create_exclusive(path: str | os.PathLike[str], data: bytes) -> bool:
 
 
 def within(
-    path: str | os.PathLike[str], roots: Iterable[str | os.PathLike[str]]
+    path: str | os.PathLike[str],
+    roots: Iterable[str | os.PathLike[str]],
+    resolve: Callable[[str | os.PathLike[str]], str] = os.path.realpath,
 ) -> bool:
     """Whether `path`, with every symlink resolved, lies inside one of `roots`
-    (also resolved). A path that cannot be resolved is not inside."""
+    (also resolved). A path that cannot be resolved is not inside. `resolve`:
+    os.path.realpath, or a caller's wrapper of it (a discovery notes each answer)."""
     try:
-        real = Path(os.path.realpath(path))
+        real = Path(resolve(path))
         return any(
-            real == (root := Path(os.path.realpath(r))) or root in real.parents
-            for r in roots
+            real == (root := Path(resolve(r))) or root in real.parents for r in roots
         )
     except (OSError, ValueError):
         return False

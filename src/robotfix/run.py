@@ -27,10 +27,10 @@ from robotfix.api import (
     raw_interface_problems,
     stub_problems,
 )
-from robotfix.cache import RACY_NS, ResultCache, run_key
+from robotfix.cache import RACY_NS, ResultCache, discovery_key, run_key
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
-from robotfix.discovery import Discovery, discover
+from robotfix.discovery import Discovery, Trace, discover, install_space
 from robotfix.fs import UnreadableError, read_regular
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.ros.install import InstallSpace
@@ -100,7 +100,14 @@ def _check_paths(
 ) -> Result:
     started = time.perf_counter()
     result = Result()
-    found = discover(paths, config)
+    cache = (
+        ResultCache(
+            config.cache_dir or config.root / ".robotfix_cache", run_key(config)
+        )
+        if use_cache
+        else None
+    )
+    found = _discover(paths, config, cache)
     result.diagnostics.extend(found.notices)
     result.diagnostics.extend(stub_problems(config))
     interfaces = _Interfaces(
@@ -115,13 +122,6 @@ def _check_paths(
     files = found.python_files
     result.files = len(files)
     result.checked = [str(file) for file in files]
-    cache = (
-        ResultCache(
-            config.cache_dir or config.root / ".robotfix_cache", run_key(config)
-        )
-        if use_cache
-        else None
-    )
     # the same interface files as last time: their digests and problems are known
     snapshot = _catalog_key(interfaces, config) if cache is not None else None
     known = cache.catalog(snapshot) if cache is not None and snapshot else None
@@ -189,6 +189,25 @@ def _check_paths(
     save_unit_cache()
     result.seconds = time.perf_counter() - started
     return result
+
+
+def _discover(
+    paths: list[Path], config: Config, cache: ResultCache | None
+) -> Discovery:
+    """`discover`, or with the cache, what the last run found when nothing it looked
+    at changed (`discovery.Trace`): an unchanged tree stats its folders instead of
+    walking them."""
+    key = discovery_key(paths, config) if cache is not None else None
+    if cache is None or key is None:
+        return discover(paths, config)
+    known = cache.discovery(key)
+    if known is not None:
+        known.installed = install_space()
+        return known
+    trace = Trace()
+    found = discover(paths, config, trace=trace)
+    cache.put_discovery(key, found, trace)
+    return found
 
 
 def _parameter_problems(
