@@ -35,7 +35,7 @@ if TYPE_CHECKING:  # the analysis is imported only when a summary is built
     from robotfix.analysis.program import Function, Program
     from robotfix.analysis.vc import VC, Verdict
     from robotfix.annotations import ast as A
-    from robotfix.annotations.extract import Refinement
+    from robotfix.annotations.extract import Names, Refinement
     from robotfix.ros.catalog import MsgCatalog
     from robotfix.source import SourceFile
 
@@ -271,9 +271,11 @@ def summarize(
         summary.functions[key] = _function(ctx, program, function, terms, path)
     for class_name in program.classes:
         summary.classes[class_name] = _class(ctx, program, class_name, terms, path)
+    names = None
     for alias_name, node in ctx.index.aliases.items():
         if alias_name not in ctx.constants.changed_globals and _clean(ctx, node):
-            summary.aliases[alias_name] = Alias(node, ctx.names())
+            names = names or _detached(ctx)
+            summary.aliases[alias_name] = Alias(node, names)
     summary.reexports = _top_level_imports(tree, ctx.imports)
     return _finish(summary)
 
@@ -377,6 +379,22 @@ def _clean(ctx: FileContext, node: ast.expr) -> bool:
         alias=names.alias,
     )
     return not problems
+
+
+def _detached(ctx: FileContext) -> Names:
+    """The `Names` an alias carries to importers, from a context that holds only
+    what they read (imports, the module's aliases, its lines): `ctx.names()` would
+    keep the whole file context, its AST and its index alive for the run."""
+    from robotfix.analysis.context import FileContext
+    from robotfix.analysis.index import FileIndex
+    from robotfix.source import SourceFile
+
+    source = SourceFile(ctx.source.path, "", lines=ctx.source.lines)
+    lean = FileContext(source, ctx.catalog, ctx.discharge, ctx.resolver)
+    lean.imports = ctx.imports
+    lean.index = FileIndex(aliases=dict(ctx.index.aliases))
+    lean.constants.changed_globals = set(ctx.constants.changed_globals)
+    return lean.names()
 
 
 def _top_level_imports(tree: ast.Module, imports: dict[str, str]) -> dict[str, str]:
