@@ -310,6 +310,7 @@ def _check_all(
     jobs = min(jobs, default_jobs(), len(todo))
     size = sum(len(data) for _, data in todo)
     if jobs <= 1 or len(todo) < MIN_PARALLEL or size < MIN_PARALLEL_BYTES:
+        project.expect([path for path, _ in todo])
         for path, data in todo:
             yield _check_one(path, data, catalog, config, project)
         return
@@ -338,6 +339,7 @@ def _check_all(
     except (OSError, BrokenProcessPool):  # EMFILE, EAGAIN: check here instead
         _stop(pool)
         _WORKER = None
+        project.expect([path for path, _ in todo])
         for path, data in todo:
             yield _check_one(path, data, catalog, config, project)
         return
@@ -385,7 +387,8 @@ def _check_one(
         resolver = project.resolver(path)
         ignored = config.ignored_codes(path)
         stubs = stub_set(config.stub_paths)
-        found = check_file(str(path), data, catalog, ignored, stubs, resolver)
+        parsed = project.take(path, data)  # parsed once, for a summary, if imported
+        found = check_file(str(path), data, catalog, ignored, stubs, resolver, parsed)
         types = sorted(catalog.touched)
         catalog.touched = None
         return FileResult(
@@ -424,6 +427,7 @@ def _start_worker(interfaces: _Interfaces | None, config: Config) -> None:
 def _worker_check(chunk: list[tuple[Path, bytes]]) -> list[FileResult]:
     assert _WORKER is not None
     catalog, config, project = _WORKER
+    project.expect([path for path, _ in chunk])
     return [_check_one(path, data, catalog, config, project) for path, data in chunk]
 
 
