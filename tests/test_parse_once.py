@@ -10,6 +10,7 @@ from pathlib import Path
 
 import pytest
 
+from robotfix import paramcheck
 from robotfix import source as source_module
 from robotfix.api import make_project
 from robotfix.config import Config
@@ -142,3 +143,30 @@ def test_a_resolver_finds_each_name_once(tmp_path: Path) -> None:
     assert resolver.module("rclpy") is None
     assert asked == ["rclpy"]
     assert resolver.consulted[f"{driver}\0rclpy"] == summary_module.ABSENT
+
+
+PARAMS = Path(__file__).parent / "cases" / "params" / "packages"
+
+
+@pytest.mark.parametrize("name", ["ros2_driver", "ros1_tracker", "gpl_turtle"])
+def test_parameter_files_use_the_checks_parse(
+    name: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    root = tmp_path / name
+    shutil.copytree(PARAMS / name, root)
+    counted = _parses(monkeypatch)
+    shared = _shown(root)
+    assert shared  # each package's parameter files have findings
+    words = [w for ws in paramcheck.MENTIONS.values() for w in ws]
+    declaring = [
+        str(p.resolve())
+        for p in root.rglob("*.py")
+        if any(w in p.read_bytes() for w in words)
+    ]
+    assert declaring
+    assert all(counted[p] == 1 for p in declaring), counted
+    original = paramcheck._summaries
+    monkeypatch.setattr(
+        paramcheck, "_summaries", lambda files, words, known: original(files, words, {})
+    )
+    assert _shown(root) == shared  # paramcheck parsing the files again: the same

@@ -81,6 +81,10 @@ class Project:
         self.to_check: set[str] = set()
         self._pending_bytes = 0
         self.parses = 0  # files read and parsed here (tests count them)
+        # a checked file mentioning one of these has its parameters summarised
+        # from the same tree, for `paramcheck` (`run.py`); () when the run has
+        # no parameter file
+        self.parameter_words: tuple[bytes, ...] = ()
 
     def resolver(self, path: Path, building: Path | None = None) -> FileResolver:
         return FileResolver(self, path, building)
@@ -448,7 +452,11 @@ def _detached(ctx: FileContext) -> Names:
     from robotfix.analysis.index import FileIndex
     from robotfix.source import SourceFile
 
-    source = SourceFile(ctx.source.path, "", lines=ctx.source.lines)
+    lines = [""] * len(ctx.source.lines)  # only the aliases' own lines are read
+    for node in ctx.index.aliases.values():
+        end = getattr(node, "end_lineno", None) or node.lineno
+        lines[node.lineno - 1 : end] = ctx.source.lines[node.lineno - 1 : end]
+    source = SourceFile(ctx.source.path, "", lines=lines)
     lean = FileContext(source, ctx.catalog, ctx.discharge, ctx.resolver)
     lean.imports = ctx.imports
     lean.index = FileIndex(aliases=dict(ctx.index.aliases))
