@@ -1,53 +1,107 @@
-"""Lines per second on real (unannotated) ROS code, next to Python's own ast.parse.
+"""Issue 13, item 1: RobotFix on real (unannotated) ROS code against the parse floor.
 
-Usage: python benchmarks/real_code.py FOLDER [FOLDER ...]
-Point it at checked-out ROS repositories (e.g. ros2/demos, ros2/rclpy, ros/ros_comm);
-nothing is committed or downloaded by this script. Prints files, lines, seconds for
-ast.parse alone and for a full RobotFix check (in-process, after one warm-up run so
-imports and caches are not counted), lines per second, the ratio, and peak memory.
+Usage: python benchmarks/real_code.py [--pairs N] FOLDER [FOLDER ...]
+
+Point it at checked-out ROS repositories (e.g. /work/corpus2, `benchmarks/corpus.md`);
+nothing is committed or downloaded by this script. Each measurement is a fresh
+process, so neither side pays for a heap the other one grew:
+
+- the floor: a process that reads and `ast.parse`s the same files;
+- RobotFix: `robotfix check FOLDERS --no-cache -j 1 --format concise`.
+
+They run in pairs, alternating (A B A B ...; 3 pairs unless told), so load on a
+shared machine hits both sides alike. Wall time and CPU time (user + sys, from
+`os.wait4`) are the medians over the pairs; the ratio is RobotFix's over the floor's.
+Peak memory is RobotFix's largest maxrss.
 """
 
 from __future__ import annotations
 
-import resource
+import os
+import statistics
+import subprocess
 import sys
+import tempfile
 import time
 from pathlib import Path
 
-from peers import parse_seconds
+from robotfix.api import python_files
 
-from robotfix.api import check_paths, python_files
-from robotfix.config import Config
+# read + ast.parse, nothing else: the floor every checker stands on
+FLOOR = """\
+import ast, sys, warnings
+warnings.simplefilter("ignore")
+names = open(sys.argv[1], encoding="utf-8", errors="surrogateescape").read()
+for name in names.split("\\n"):
+    if name:
+        try:
+            ast.parse(open(name, "rb").read())
+        except (SyntaxError, ValueError, OSError):
+            pass
+"""
 
 
-def main(folders: list[Path]) -> None:
+def timed(command: list[str], env: dict[str, str]) -> tuple[float, float, float]:
+    """Wall seconds, CPU seconds (user + sys) and maxrss (MB) of one process."""
+    started = time.perf_counter()
+    process = subprocess.Popen(
+        command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env
+    )
+    _, _, usage = os.wait4(process.pid, 0)
+    process.returncode = 0  # reaped by wait4: Popen must not wait for it again
+    wall = time.perf_counter() - started
+    return wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024
+
+
+def main(argv: list[str]) -> None:
+    pairs = 3
+    if argv[:1] == ["--pairs"]:
+        pairs, argv = int(argv[1]), argv[2:]
+    folders = [Path(a) for a in argv] or [Path(".")]
     files = python_files(folders)
-    texts = [f.read_bytes() for f in files]
-    lines = sum(t.count(b"\n") for t in texts)
-    parse = parse_seconds(texts)
-    check_paths(folders, Config())  # warm-up: imports, unit and message caches
-    started, cpu = time.perf_counter(), time.process_time()
-    result = check_paths(folders, Config())
-    check = time.perf_counter() - started
-    check_cpu = time.process_time() - cpu
-    cpu = time.process_time()
-    parse_seconds(texts)
-    parse_cpu = time.process_time() - cpu
-    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+    lines = sum(f.read_bytes().count(b"\n") for f in files)
+    with tempfile.TemporaryDirectory() as tmp:
+        listing = Path(tmp, "files.txt")
+        listing.write_text(
+            "\n".join(str(f) for f in files), encoding="utf-8", errors="surrogateescape"
+        )
+        floor_script = Path(tmp, "floor.py")
+        floor_script.write_text(FLOOR, encoding="utf-8")
+        env = dict(os.environ)
+        env.setdefault("ROBOTFIX_CACHE_DIR", str(Path(tmp, "machine-cache")))
+        floor = [sys.executable, str(floor_script), str(listing)]
+        check = [sys.executable, "-m", "robotfix", "check", *map(str, folders)]
+        check += ["--no-cache", "-j", "1", "--format", "concise"]
+        timed(check, env)  # warm-up: bytecode and the machine cache written once
+        floors, checks = [], []
+        for _ in range(pairs):
+            floors.append(timed(floor, env))
+            checks.append(timed(check, env))
+    floor_wall = statistics.median(w for w, _, _ in floors)
+    floor_cpu = statistics.median(c for _, c, _ in floors)
+    check_wall = statistics.median(w for w, _, _ in checks)
+    check_cpu = statistics.median(c for _, c, _ in checks)
+    peak = max(m for _, _, m in checks)
+    print(f"files: {len(files)}  lines: {lines}  pairs: {pairs} (medians)")
     print(
-        f"files: {len(files)}  lines: {lines}  diagnostics: {len(result.diagnostics)}"
-    )
-    print(f"ast.parse: {parse:.2f} s  ({lines / parse:,.0f} lines/s)")
-    print(
-        f"robotfix:  {check:.2f} s  ({lines / check:,.0f} lines/s, "
-        f"{check / parse:.1f}x ast.parse)"
+        f"floor (read + ast.parse, own process): {floor_wall:.2f} s wall, "
+        f"{floor_cpu:.2f} s CPU"
     )
     print(
-        f"CPU time (steadier on a shared machine): ast.parse {parse_cpu:.2f} s, "
-        f"robotfix {check_cpu:.2f} s, {check_cpu / parse_cpu:.2f}x"
+        f"robotfix check --no-cache -j 1:        {check_wall:.2f} s wall, "
+        f"{check_cpu:.2f} s CPU  ({lines / check_wall:,.0f} lines/s)"
     )
-    print(f"peak memory: {peak:.0f} MB")
+    print(
+        f"ratio: {check_wall / floor_wall:.2f}x wall, "
+        f"{check_cpu / floor_cpu:.2f}x CPU (target 3.5x)"
+    )
+    print(f"robotfix peak memory (maxrss): {peak:.0f} MB")
+    for (fw, fc, _), (cw, cc, cm) in zip(floors, checks, strict=True):
+        print(
+            f"  pair: floor {fw:.2f} s / {fc:.2f} s CPU, "
+            f"robotfix {cw:.2f} s / {cc:.2f} s CPU, {cm:.0f} MB"
+        )
 
 
 if __name__ == "__main__":
-    main([Path(a) for a in sys.argv[1:]] or [Path(".")])
+    main(sys.argv[1:])

@@ -269,10 +269,12 @@ def check_file(
     ignored: frozenset[str] = frozenset(),
     stubs: StubSet | None = None,
     resolver: Resolver | None = None,
+    parsed: SourceFile | None = None,
 ) -> list[Diagnostic]:
     """Diagnostics for one file's bytes (decoded, parsed, analysed); `resolver`
-    shows it the other modules of its tree."""
-    source = SourceFile.from_bytes(path, data)
+    shows it the other modules of its tree; `parsed`: these bytes, already parsed
+    in this run (for a module's summary)."""
+    source = parsed or SourceFile.from_bytes(path, data)
     return _check(source, catalog, ignored, stubs=stubs, resolver=resolver)
 
 

@@ -111,13 +111,15 @@ def check_parameter_files(
     python_files: Iterable[Path],
     named: Iterable[Path] = (),
     config: Config | None = None,
+    known: dict[str, Summary] | None = None,
 ) -> list[Diagnostic]:
     """Diagnostics for the parameter files and generate_parameter_library
     definitions of a run; `python_files` are those whose declarations count. A
     file that is not valid YAML is RF003 when it was `named` on the command line
     or is a definitions file; found in a package's config folder, it is an RF004
     warning (it may be a template or another tool's file). A YAML line ending in
-    `# robotfix: ignore[RF101]` and `per-file-ignores` silence as in Python."""
+    `# robotfix: ignore[RF101]` and `per-file-ignores` silence as in Python.
+    `known`: summaries of Python files made from the tree their check parsed."""
     loud = {str(p) for p in [*named, *definition_files]}
     texts: dict[str, str] = {}
     out: list[Diagnostic] = []
@@ -139,7 +141,8 @@ def check_parameter_files(
             out.extend(_definition_defaults(loaded, key))
     layouts = {f.layout for f in read.values() if f.entries}
     words = tuple(w for layout in sorted(layouts) for w in MENTIONS.get(layout, ()))
-    table = _Table(_summaries(python_files, words) if words else [], definitions)
+    found = _summaries(python_files, words, known or {}) if words else []
+    table = _Table(found, definitions)
     for path in files:
         loaded = read.get(str(path))
         if loaded is None or loaded.layout == "definitions":
@@ -176,8 +179,11 @@ def _silenced(diag: Diagnostic, text: str, config: Config | None) -> bool:
     return listed is None or bool({diag.code, diag.rule.name} & listed)
 
 
-def _summaries(python_files: Iterable[Path], words: tuple[bytes, ...]) -> list[Summary]:
-    """The summaries of the files that mention one of `words` (a quick filter)."""
+def _summaries(
+    python_files: Iterable[Path], words: tuple[bytes, ...], known: dict[str, Summary]
+) -> list[Summary]:
+    """The summaries of the files that mention one of `words` (a quick filter);
+    those in `known` are not parsed again."""
     found: list[Summary] = []
     seen: set[str] = set()
     for path in python_files:
@@ -190,6 +196,9 @@ def _summaries(python_files: Iterable[Path], words: tuple[bytes, ...]) -> list[S
         except UnreadableError:
             continue
         if not any(word in data for word in words):
+            continue
+        if str(path) in known:
+            found.append(known[str(path)])
             continue
         source = SourceFile.from_bytes(str(path), data)
         if source.tree is not None:

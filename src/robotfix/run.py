@@ -35,19 +35,21 @@ from robotfix.fs import UnreadableError, read_regular
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.ros.install import InstallSpace
 from robotfix.ros.package import package_folder
+from robotfix.source import SourceFile
 from robotfix.stubs.load import stub_set
 
 if TYPE_CHECKING:
     from concurrent.futures import Future, ProcessPoolExecutor
 
 if TYPE_CHECKING:  # the analysis is imported only when a file is checked
+    from robotfix.analysis.parameters import Summary as ParamSummary
     from robotfix.project.summary import Project
 
 MIN_PARALLEL = 16  # fewer files are checked faster in one process than by a pool
 # and so is less source: starting a pool costs about 0.1-0.2 s, what one process
 # spends on about 5,000 lines of real code (12,000 lines, 0.5 MB, take 0.3 s)
 MIN_PARALLEL_BYTES = 512 * 1024
-MAX_CHUNK = 8  # files per task: Ctrl-C waits for at most one chunk per worker
+CHUNKS_PER_JOB = 4  # a task holds at most 1/(jobs * 4) of the source: balance
 
 
 @dataclass
@@ -61,6 +63,9 @@ class FileResult:
     modules: dict[str, str] = field(default_factory=dict)
     # the summaries built so far in its process: file -> (sha256, fingerprint)
     summaries: dict[str, tuple[str, str]] = field(default_factory=dict)
+    # what it declares and reads of parameters (`analysis/parameters.py`), from the
+    # tree the check parsed, for `paramcheck` (None: not asked, or no mention)
+    parameters: ParamSummary | None = None
 
 
 def check_paths(
@@ -130,6 +135,7 @@ def _check_paths(
     if cache is not None:
         project.known = dict(cache.summaries)
         project.sha_of = cache.sha  # the stat fast path for imported modules too
+    parameters: dict[str, ParamSummary] = {}  # file -> its parameters, as checked
     todo: list[tuple[Path, bytes]] = []
     for index, file in enumerate(files, start=1):
         # with the cache, an unchanged file (by its stat) is not even read
@@ -156,12 +162,18 @@ def _check_paths(
             todo.append((file, data))
     done = len(files) - len(todo)
     contents = dict(todo)
+    if todo and (found.parameter_files or found.parameter_definitions):
+        from robotfix.paramcheck import MENTIONS  # not on a fully cached run
+
+        project.parameter_words = tuple(w for ws in MENTIONS.values() for w in ws)
     for outcome in _check_all(todo, interfaces, config, catalog, project, jobs):
         done += 1
         if progress is not None:
             progress(done, len(files), outcome.path)
         result.diagnostics.extend(outcome.diagnostics)
         used.update(outcome.types)
+        if outcome.parameters is not None:
+            parameters[outcome.path] = outcome.parameters
         if outcome.error is not None:
             result.internal_errors.append(outcome.error)
         elif cache is not None:
@@ -179,7 +191,9 @@ def _check_paths(
     result.diagnostics.extend(interface_problems(catalog, used, problems))
     if cache is not None and snapshot:
         cache.put_catalog(snapshot, catalog.digest_table(), problems)
-    result.diagnostics.extend(_parameter_problems(found, files, config, cache))
+    result.diagnostics.extend(
+        _parameter_problems(found, files, config, cache, parameters)
+    )
     result.files += len(found.parameter_files)
     result.diagnostics = finish(result.diagnostics)
     if cache is not None:
@@ -215,9 +229,11 @@ def _parameter_problems(
     files: list[Path],
     config: Config,
     cache: ResultCache | None = None,
+    parameters: dict[str, ParamSummary] | None = None,
 ) -> list[Diagnostic]:
     """Parameter files against the parameters the code declares; cached as a whole,
-    under a key that hashes every input (`_params_key`)."""
+    under a key that hashes every input (`_params_key`); `parameters`: the files'
+    parameter summaries the checks made (the others are parsed there)."""
     if not found.parameter_files and not found.parameter_definitions:
         return []
     python_files = [*files, *found.summary_files]
@@ -234,6 +250,7 @@ def _parameter_problems(
         python_files,
         found.named_parameter_files,
         config,
+        parameters,
     )
     if cache is not None and key is not None:
         cache.put_params(key, out)
@@ -329,6 +346,7 @@ def _check_all(
     jobs = min(jobs, default_jobs(), len(todo))
     size = sum(len(data) for _, data in todo)
     if jobs <= 1 or len(todo) < MIN_PARALLEL or size < MIN_PARALLEL_BYTES:
+        project.expect([path for path, _ in todo])
         for path, data in todo:
             yield _check_one(path, data, catalog, config, project)
         return
@@ -336,12 +354,13 @@ def _check_all(
     from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
     from concurrent.futures.process import BrokenProcessPool
 
-    per_task = max(1, min(MAX_CHUNK, len(todo) // (jobs * 4)))
-    chunks = [todo[i : i + per_task] for i in range(0, len(todo), per_task)]
+    chunks = _chunks(todo, jobs)
     method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
     pool: ProcessPoolExecutor | None = None
     pending: dict[Future[list[FileResult]], list[tuple[Path, bytes]]] = {}
     global _WORKER
+    # a worker's parameter summaries are not sent back: paramcheck parses the files
+    project.parameter_words = ()
     try:
         if method == "fork":  # read the interface files once: the workers share them
             catalog.prepare()
@@ -357,6 +376,7 @@ def _check_all(
     except (OSError, BrokenProcessPool):  # EMFILE, EAGAIN: check here instead
         _stop(pool)
         _WORKER = None
+        project.expect([path for path, _ in todo])
         for path, data in todo:
             yield _check_one(path, data, catalog, config, project)
         return
@@ -376,6 +396,33 @@ def _check_all(
         _stop(pool)
         raise
     pool.shutdown(wait=True)
+
+
+def _chunks(
+    todo: list[tuple[Path, bytes]], jobs: int
+) -> list[list[tuple[Path, bytes]]]:
+    """The worker tasks: the files of one ROS package (or folder) stay together, so
+    the summaries of the modules they import are built by one worker, not by each
+    (-j 2 on corpus2: 886 summaries built for 569 modules with chunks of 8 files);
+    a task holds at most 1/(jobs * CHUNKS_PER_JOB) of the source, and the largest
+    go first, so the workers finish together. Which worker checks a file changes
+    no output (`project/summary.py`)."""
+    cap = max(1, sum(len(data) for _, data in todo) // (jobs * CHUNKS_PER_JOB))
+    chunks: list[list[tuple[Path, bytes]]] = []
+    current: list[tuple[Path, bytes]] = []
+    held, group = 0, None
+    for path, data in todo:
+        key = package_folder(path) or path.parent
+        if current and (key != group or held + len(data) > cap):
+            chunks.append(current)
+            current, held = [], 0
+        current.append((path, data))
+        held += len(data)
+        group = key
+    if current:
+        chunks.append(current)
+    sizes = {id(c): sum(len(data) for _, data in c) for c in chunks}
+    return sorted(chunks, key=lambda c: -sizes[id(c)])
 
 
 def _stop(pool: ProcessPoolExecutor | None) -> None:
@@ -404,7 +451,17 @@ def _check_one(
         resolver = project.resolver(path)
         ignored = config.ignored_codes(path)
         stubs = stub_set(config.stub_paths)
-        found = check_file(str(path), data, catalog, ignored, stubs, resolver)
+        parsed = project.take(path, data)  # parsed once, for a summary, if imported
+        parameters = None
+        if any(word in data for word in project.parameter_words):
+            from robotfix.analysis.parameters import summarize
+
+            parsed = parsed or SourceFile.from_bytes(str(path), data)
+            try:  # a fault here is paramcheck's to meet, as without this
+                parameters = summarize(parsed) if parsed.tree is not None else None
+            except Exception:
+                parameters = None
+        found = check_file(str(path), data, catalog, ignored, stubs, resolver, parsed)
         types = sorted(catalog.touched)
         catalog.touched = None
         return FileResult(
@@ -415,6 +472,7 @@ def _check_one(
             catalog.fingerprint_types(types),
             dict(resolver.consulted),
             dict(project.built),
+            parameters,
         )
     except Exception as err:  # a fault of ours: report it, go on with the others
         summary = f"{type(err).__name__}: {err}"
@@ -443,6 +501,7 @@ def _start_worker(interfaces: _Interfaces | None, config: Config) -> None:
 def _worker_check(chunk: list[tuple[Path, bytes]]) -> list[FileResult]:
     assert _WORKER is not None
     catalog, config, project = _WORKER
+    project.expect([path for path, _ in chunk])
     return [_check_one(path, data, catalog, config, project) for path, data in chunk]
 
 

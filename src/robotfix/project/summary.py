@@ -16,7 +16,9 @@ output is the same as `-j 1`.
 from __future__ import annotations
 
 import ast
+import dataclasses
 import hashlib
+import os
 from collections.abc import Callable
 from dataclasses import fields, is_dataclass, replace
 from pathlib import Path
@@ -35,12 +37,15 @@ if TYPE_CHECKING:  # the analysis is imported only when a summary is built
     from robotfix.analysis.program import Function, Program
     from robotfix.analysis.vc import VC, Verdict
     from robotfix.annotations import ast as A
-    from robotfix.annotations.extract import Refinement
+    from robotfix.annotations.extract import Names, Refinement
     from robotfix.ros.catalog import MsgCatalog
     from robotfix.source import SourceFile
 
 Discharge = Callable[["VC"], "Verdict"]
 ABSENT = ""  # the fingerprint recorded for a name that is no module of the tree
+# source bytes of parsed modules kept for their own check later in the run (`take`);
+# beyond it a module is parsed again when checked, rather than held in memory
+PENDING_BYTES = 1 << 20
 
 
 class Project:
@@ -59,6 +64,7 @@ class Project:
         self._deps: dict[Path, dict[str, str]] = {}  # what building it consulted
         self._types: dict[Path, frozenset[str]] = {}  # message types it looked up
         self._parsed: dict[Path, tuple[bytes, SourceFile] | None] = {}
+        self._pending: dict[str, tuple[bytes, SourceFile]] = {}
         self._edges: dict[Path, frozenset[Path]] = {}
         self._reach: dict[Path, frozenset[Path]] = {}
         # path -> (sha256 of its bytes, fingerprint), from an earlier run's cache
@@ -69,6 +75,16 @@ class Project:
         self.sha_of: Callable[[Path], str | None] | None = None
         self._fingerprints: dict[tuple[int, str], str] = {}
         self._context_ids: dict[str, int] = {}
+        # files this process checks and has not checked yet (by `_key`): a module
+        # among them parsed for its summary keeps its tree until its check `take`s
+        # it, so a run parses each file once (unless PENDING_BYTES are held)
+        self.to_check: set[str] = set()
+        self._pending_bytes = 0
+        self.parses = 0  # files read and parsed here (tests count them)
+        # a checked file mentioning one of these has its parameters summarised
+        # from the same tree, for `paramcheck` (`run.py`); () when the run has
+        # no parameter file
+        self.parameter_words: tuple[bytes, ...] = ()
 
     def resolver(self, path: Path, building: Path | None = None) -> FileResolver:
         return FileResolver(self, path, building)
@@ -93,7 +109,7 @@ class Project:
                 except Exception:  # a fault of ours: the module stays unknown to
                     found = None  # importers; its own check reports the fault
             self._imports(path)  # its edges are known: its text is no longer needed
-            self._parsed.pop(path, None)
+            self._release(path)
             self._types[path] = frozenset(self.catalog.touched)
             self.catalog.touched = outer
             self._summaries[path] = found
@@ -182,9 +198,45 @@ class Project:
             except UnreadableError:
                 self._parsed[path] = None
             else:
+                self.parses += 1
                 source = SourceFile.from_bytes(str(path), data)
                 self._parsed[path] = (data, source) if source.tree else None
         return self._parsed[path]
+
+    def _release(self, path: Path) -> None:
+        """A summarised module's tree is dropped, or kept for its own check."""
+        parsed = self._parsed.pop(path, None)
+        if parsed is None or _key(path) not in self.to_check:
+            return
+        if self._pending_bytes + len(parsed[0]) <= PENDING_BYTES:
+            self._pending[_key(path)] = parsed
+            self._pending_bytes += len(parsed[0])
+
+    def expect(self, paths: list[Path]) -> None:
+        """The files this process checks next (all others' trees are dropped)."""
+        self.to_check = {_key(p) for p in paths}
+        self._pending.clear()
+        self._pending_bytes = 0
+
+    def take(self, path: Path, data: bytes) -> SourceFile | None:
+        """The parse of `path` made for its summary, if these are its bytes; the
+        check of `path` then owns it (nothing here holds it any longer)."""
+        key = _key(path)
+        self.to_check.discard(key)
+        parsed = self._pending.pop(key, None)
+        if parsed is None:
+            return None
+        self._pending_bytes -= len(parsed[0])
+        if parsed[0] != data:  # changed on disk in between: parse what is checked
+            return None
+        source, shown = parsed[1], str(path)
+        if source.path != shown:
+            source = dataclasses.replace(source, path=shown)
+        return source
+
+
+_UNASKED = Path("\0unasked")
+_CYCLE = Path("\0cycle")
 
 
 class FileResolver:
@@ -197,6 +249,8 @@ class FileResolver:
         # "<importing file>\0<name>" -> the fingerprint of what it resolved to
         self.consulted: dict[str, str] = {}
         self._package = project.index.package_of(path)
+        # name -> the module file it is here (_CYCLE: not consulted while building)
+        self._targets: dict[str, Path | None] = {}
 
     @property
     def package(self) -> str | None:
@@ -212,12 +266,21 @@ class FileResolver:
 
     def module(self, name: str) -> ModuleSummary | None:
         project = self.project
-        target = project.index.find(name, self.path)
+        target = self._targets.get(name, _UNASKED)
+        if target is _UNASKED:
+            target = project.index.find(name, self.path)
+            if (
+                target is not None
+                and self.building is not None
+                and project.reaches(target, self.building)
+            ):
+                target = _CYCLE
+            self._targets[name] = target
         key = f"{self.path}\0{name}"
         if target is None:
             self.consulted[key] = ABSENT
             return None
-        if self.building is not None and project.reaches(target, self.building):
+        if target is _CYCLE:
             return None  # a cycle: not consulted, whichever side is built first
         found = project.summary(target)
         self.consulted[key] = found.fingerprint if found is not None else ABSENT
@@ -271,9 +334,11 @@ def summarize(
         summary.functions[key] = _function(ctx, program, function, terms, path)
     for class_name in program.classes:
         summary.classes[class_name] = _class(ctx, program, class_name, terms, path)
+    names = None
     for alias_name, node in ctx.index.aliases.items():
         if alias_name not in ctx.constants.changed_globals and _clean(ctx, node):
-            summary.aliases[alias_name] = Alias(node, ctx.names())
+            names = names or _detached(ctx)
+            summary.aliases[alias_name] = Alias(node, names)
     summary.reexports = _top_level_imports(tree, ctx.imports)
     return _finish(summary)
 
@@ -379,6 +444,26 @@ def _clean(ctx: FileContext, node: ast.expr) -> bool:
     return not problems
 
 
+def _detached(ctx: FileContext) -> Names:
+    """The `Names` an alias carries to importers, from a context that holds only
+    what they read (imports, the module's aliases, its lines): `ctx.names()` would
+    keep the whole file context, its AST and its index alive for the run."""
+    from robotfix.analysis.context import FileContext
+    from robotfix.analysis.index import FileIndex
+    from robotfix.source import SourceFile
+
+    lines = [""] * len(ctx.source.lines)  # only the aliases' own lines are read
+    for node in ctx.index.aliases.values():
+        end = getattr(node, "end_lineno", None) or node.lineno
+        lines[node.lineno - 1 : end] = ctx.source.lines[node.lineno - 1 : end]
+    source = SourceFile(ctx.source.path, "", lines=lines)
+    lean = FileContext(source, ctx.catalog, ctx.discharge, ctx.resolver)
+    lean.imports = ctx.imports
+    lean.index = FileIndex(aliases=dict(ctx.index.aliases))
+    lean.constants.changed_globals = set(ctx.constants.changed_globals)
+    return lean.names()
+
+
 def _top_level_imports(tree: ast.Module, imports: dict[str, str]) -> dict[str, str]:
     found: dict[str, str] = {}
     for statement in tree.body:
@@ -430,6 +515,11 @@ def _stable(value: object) -> str:
 
 
 ast_places = ("lineno", "col_offset", "end_lineno", "end_col_offset")
+
+
+def _key(path: Path | str) -> str:
+    """One spelling of a file's path, for the run's files and the index's alike."""
+    return os.path.normpath(os.path.abspath(path))
 
 
 def _sha(data: bytes) -> str:

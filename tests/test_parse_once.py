@@ -1,0 +1,172 @@
+"""A run parses a file once: a module parsed for its summary (because a file checked
+before it imports it) keeps its tree until its own check takes it (`Project.take`),
+with the same output as parsing it again; the trees kept are bounded."""
+
+from __future__ import annotations
+
+import shutil
+from collections import Counter
+from pathlib import Path
+
+import pytest
+
+from robotfix import paramcheck
+from robotfix import source as source_module
+from robotfix.api import make_project
+from robotfix.config import Config
+from robotfix.project import summary as summary_module
+from robotfix.ros.catalog import MsgCatalog
+from robotfix.run import check_paths
+
+PACKAGES = Path(__file__).parent / "cases" / "packages"
+
+
+def _parses(monkeypatch: pytest.MonkeyPatch) -> Counter[str]:
+    """Every parse of a Python file, by its resolved path."""
+    counted: Counter[str] = Counter()
+    original = source_module.SourceFile.from_text
+
+    def counting(path: str, text: str) -> source_module.SourceFile:
+        counted[str(Path(path).resolve())] += 1
+        return original(path, text)
+
+    monkeypatch.setattr(source_module.SourceFile, "from_text", staticmethod(counting))
+    return counted
+
+
+def _shown(root: Path, jobs: int = 1) -> list[str]:
+    result = check_paths([root], Config(root=root), jobs=jobs)
+    assert not result.internal_errors
+    return [
+        f"{d.path}:{d.span.line}:{d.span.col}:{d.code}:{d.message}:{d.notes}"
+        for d in result.diagnostics
+    ]
+
+
+def _package(tmp_path: Path) -> Path:
+    """A node that imports its helpers, which sort (and are checked) after it."""
+    root = tmp_path / "ros2_pkg"
+    shutil.copytree(PACKAGES / "ros2_pkg", root)
+    return root
+
+
+def test_a_module_imported_before_its_check_is_parsed_once(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    root = _package(tmp_path)
+    helpers = {"limits.py", "units.py", "util.py"}
+    counted = _parses(monkeypatch)
+    shown = _shown(root)
+    assert shown  # the package's cases report something: the check did run
+    parsed = {Path(p).name: n for p, n in counted.items()}
+    assert helpers <= set(parsed)
+    assert all(parsed[name] == 1 for name in helpers), parsed
+    assert parsed["driver.py"] == 1
+
+
+def test_sharing_the_parse_changes_no_diagnostic(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    root = _package(tmp_path)
+    shared = _shown(root)
+    monkeypatch.setattr(summary_module.Project, "take", lambda self, p, d: None)
+    assert _shown(root) == shared
+
+
+def _project(root: Path) -> summary_module.Project:
+    return make_project([root], Config(root=root), MsgCatalog([]))
+
+
+def test_take_hands_over_a_summarised_module_once(tmp_path: Path) -> None:
+    root = _package(tmp_path)
+    project = _project(root)
+    helper = root / "my_pkg" / "limits.py"
+    data = helper.read_bytes()
+    project.expect([helper])
+    assert project.summary(helper) is not None
+    taken = project.take(helper, data)
+    assert taken is not None and taken.tree is not None
+    assert taken.path == str(helper)
+    assert project.take(helper, data) is None  # the check owns it now
+
+
+def test_take_refuses_a_parse_of_other_bytes(tmp_path: Path) -> None:
+    root = _package(tmp_path)
+    project = _project(root)
+    helper = root / "my_pkg" / "limits.py"
+    project.expect([helper])
+    project.summary(helper)
+    assert project.take(helper, helper.read_bytes() + b"\n# edited\n") is None
+
+
+def test_only_files_still_to_check_keep_their_tree(tmp_path: Path) -> None:
+    root = _package(tmp_path)
+    project = _project(root)
+    helper = root / "my_pkg" / "limits.py"
+    project.expect([])  # checked already, or by another worker
+    project.summary(helper)
+    assert project.take(helper, helper.read_bytes()) is None
+    project.expect([helper])
+    project.summary(helper)  # built before: not parsed again
+    assert project.take(helper, helper.read_bytes()) is None
+
+
+def test_the_trees_kept_are_bounded(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    root = _package(tmp_path)
+    project = _project(root)
+    helper = root / "my_pkg" / "limits.py"
+    monkeypatch.setattr(summary_module, "PENDING_BYTES", 10)
+    project.expect([helper])
+    project.summary(helper)
+    assert project.take(helper, helper.read_bytes()) is None
+
+
+def test_a_resolver_finds_each_name_once(tmp_path: Path) -> None:
+    root = _package(tmp_path)
+    project = _project(root)
+    driver = root / "my_pkg" / "driver.py"
+    resolver = project.resolver(driver)
+    first = resolver.module("my_pkg.limits")
+    assert first is not None
+    asked: list[str] = []
+    find = project.index.find
+
+    def spy(name: str, importer: Path | str) -> Path | None:
+        asked.append(name)
+        return find(name, importer)
+
+    project.index.find = spy  # type: ignore[method-assign]
+    assert resolver.module("my_pkg.limits") is first
+    assert resolver.module("rclpy") is None
+    assert resolver.module("rclpy") is None
+    assert asked == ["rclpy"]
+    assert resolver.consulted[f"{driver}\0rclpy"] == summary_module.ABSENT
+
+
+PARAMS = Path(__file__).parent / "cases" / "params" / "packages"
+
+
+@pytest.mark.parametrize("name", ["ros2_driver", "ros1_tracker", "gpl_turtle"])
+def test_parameter_files_use_the_checks_parse(
+    name: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    root = tmp_path / name
+    shutil.copytree(PARAMS / name, root)
+    counted = _parses(monkeypatch)
+    shared = _shown(root)
+    assert shared  # each package's parameter files have findings
+    words = [w for ws in paramcheck.MENTIONS.values() for w in ws]
+    declaring = [
+        str(p.resolve())
+        for p in root.rglob("*.py")
+        if any(w in p.read_bytes() for w in words)
+    ]
+    assert declaring
+    assert all(counted[p] == 1 for p in declaring), counted
+    original = paramcheck._summaries
+    monkeypatch.setattr(
+        paramcheck, "_summaries", lambda files, words, known: original(files, words, {})
+    )
+    assert _shown(root) == shared  # paramcheck parsing the files again: the same
