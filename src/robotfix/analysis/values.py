@@ -78,7 +78,10 @@ class MaybeDefault:
     owner: tuple[int, str]  # (message ref, field name)
 
 
-@dataclass(frozen=True)
+# Slotted, not frozen: a frozen dataclass's __init__ sets each of these 15 fields
+# through object.__setattr__ (about 10x slower), and unknown values are made by the
+# hundred thousand (issue 13). Still treated as immutable: change one with `replace`.
+@dataclass(slots=True, unsafe_hash=True)
 class Value:
     kind: str  # int float bool str msg msgclass module none unknown tuple list dict
     term: A.Expr | None = None  # the solver term, for int/float/bool/str
