@@ -8,7 +8,7 @@ from __future__ import annotations
 import ast
 from dataclasses import dataclass, field
 
-from robotfix.astwalk import children
+from robotfix.astwalk import children, fields
 
 FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef)
 COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
@@ -165,12 +165,12 @@ def _drain(index: FileIndex, todo: Todo, root: int) -> None:
             index.calls.append((cls, node))  # type: ignore[arg-type]
         elif kind is ast.Attribute and node.ctx.__class__ is not ast.Load:  # type: ignore[attr-defined]
             index.attribute_stores.add(node.attr)  # type: ignore[attr-defined]
-        for name in node._fields:
+        for name in fields(kind):  # not contexts, operators and strings
             value = getattr(node, name, None)
             if value.__class__ is list:
-                todo.extend(
-                    (v, owner, cls, self_name) for v in value if isinstance(v, ast.AST)
-                )
+                for v in value:
+                    if isinstance(v, ast.AST):
+                        todo.append((v, owner, cls, self_name))
             elif isinstance(value, ast.AST):
                 todo.append((value, owner, cls, self_name))
 
