@@ -33,7 +33,10 @@ def fields(kind: type) -> tuple[str, ...]:
 def children(node: ast.AST) -> list[ast.AST]:
     found: list[ast.AST] = []
     kind = node.__class__
-    for name in _FIELDS.get(kind) or fields(kind):
+    names = _FIELDS.get(kind)
+    if names is None:
+        names = fields(kind)
+    for name in names:
         value = getattr(node, name, None)
         if value.__class__ is list:
             for v in value:

@@ -380,17 +380,20 @@ def facts(ctx: FileContext) -> FrameFacts:
         counts: Counter[str] = Counter()
         tree = ctx.source.tree
         for item in walk(tree) if tree is not None else ():  # once per file
-            targets: list[ast.expr] = []
-            if isinstance(item, ast.Assign):
-                targets = list(item.targets)
-            elif isinstance(item, (ast.AugAssign, ast.AnnAssign)):
-                targets = [item.target]
-            elif (
-                isinstance(item, ast.Call)
-                and isinstance(item.func, ast.Name)
-                and item.func.id == "setattr"
-            ):
-                counts["*"] += 2  # any attribute may change: none is once-bound
+            kind = type(item)  # (one test per node: this walks the whole file)
+            targets: list[ast.expr]
+            if kind is ast.Assign:
+                targets = item.targets  # type: ignore[attr-defined]
+            elif kind is ast.AugAssign or kind is ast.AnnAssign:
+                targets = [item.target]  # type: ignore[attr-defined]
+            else:
+                if (
+                    kind is ast.Call
+                    and type(item.func) is ast.Name  # type: ignore[attr-defined]
+                    and item.func.id == "setattr"  # type: ignore[attr-defined]
+                ):
+                    counts["*"] += 2  # any attribute may change: none is once-bound
+                continue
             for target in targets:
                 for part in walk(target):
                     if isinstance(part, ast.Attribute):
