@@ -376,6 +376,14 @@ def _check_slashes(
 
 # -- instance attributes -----------------------------------------------------------
 def facts(ctx: FileContext) -> FrameFacts:
+    if (
+        ctx.frame_facts is None
+        and ctx.index.scopes  # indexed (`analyze_module`)
+        and "setattr" not in ctx.source.text
+    ):
+        # the module's one walk counted them (assignments are statements: all of
+        # them are indexed, once)
+        ctx.frame_facts = FrameFacts(Counter(ctx.index.assigned))
     if ctx.frame_facts is None:
         counts: Counter[str] = Counter()
         tree = ctx.source.tree
