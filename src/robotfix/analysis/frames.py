@@ -23,13 +23,13 @@ from __future__ import annotations
 
 import ast
 from collections import Counter
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 from robotfix import messages
 from robotfix.analysis import heap
 from robotfix.analysis.state import State
-from robotfix.analysis.values import Value
+from robotfix.analysis.values import Value, replace
 from robotfix.annotations import ast as A
 from robotfix.annotations.units import Unit, is_frame, named
 from robotfix.astwalk import walk
