@@ -52,7 +52,7 @@ from collections.abc import Iterable, Sequence
 
 from robotfix.analysis import context
 from robotfix.analysis.imported import Resolver, absolute
-from robotfix.astwalk import walk
+from robotfix.astwalk import children, walk
 from robotfix.ros import api_model, frames_model
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.stubs.load import StubSet, defined_names
@@ -289,7 +289,7 @@ class _Scope:
             for other in rest:
                 self.expr(other, after)
             return after
-        for child in ast.iter_child_nodes(node):
+        for child in children(node):
             bound = self.expr(child, bound)
         return bound
 
@@ -498,4 +498,4 @@ def _own_nodes(scope: ast.AST) -> Iterable[ast.AST]:
             todo.append(node.generators[0].iter)
             # `:=` inside binds here, but comprehensions with one are not followed
         else:
-            todo.extend(ast.iter_child_nodes(node))
+            todo.extend(children(node))
