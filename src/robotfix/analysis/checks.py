@@ -7,7 +7,7 @@ refinement held, so one bug gives one diagnostic, not a cascade.
 from __future__ import annotations
 
 import ast
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import NamedTuple
 
@@ -22,6 +22,7 @@ from robotfix.analysis.values import (
     MaybeDefault,
     ObjInvariant,
     Value,
+    replace,
 )
 from robotfix.analysis.vc import VC, Proved, Undecided, Unproven, Violated
 from robotfix.annotations import ast as A

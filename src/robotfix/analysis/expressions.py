@@ -11,7 +11,6 @@ import ast
 import math
 import re
 from collections.abc import Callable
-from dataclasses import replace
 from fractions import Fraction
 from functools import partial
 from typing import TypeVar
@@ -24,7 +23,7 @@ from robotfix.analysis.context import TERM_LIMIT, FileContext
 from robotfix.analysis.flows import Where
 from robotfix.analysis.program import Program
 from robotfix.analysis.state import State
-from robotfix.analysis.values import NONE, SEQUENCES, Items, Value
+from robotfix.analysis.values import NONE, SEQUENCES, Items, Value, replace
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import NUMBERS, named_number

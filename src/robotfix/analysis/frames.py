@@ -23,13 +23,13 @@ from __future__ import annotations
 
 import ast
 from collections import Counter
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 from robotfix import messages
 from robotfix.analysis import heap
 from robotfix.analysis.state import State
-from robotfix.analysis.values import Value
+from robotfix.analysis.values import Value, replace
 from robotfix.annotations import ast as A
 from robotfix.annotations.units import Unit, is_frame, named
 from robotfix.astwalk import walk
@@ -376,21 +376,32 @@ def _check_slashes(
 
 # -- instance attributes -----------------------------------------------------------
 def facts(ctx: FileContext) -> FrameFacts:
+    if (
+        ctx.frame_facts is None
+        and ctx.index.scopes  # indexed (`analyze_module`)
+        and "setattr" not in ctx.source.text
+    ):
+        # the module's one walk counted them (assignments are statements: all of
+        # them are indexed, once)
+        ctx.frame_facts = FrameFacts(Counter(ctx.index.assigned))
     if ctx.frame_facts is None:
         counts: Counter[str] = Counter()
         tree = ctx.source.tree
         for item in walk(tree) if tree is not None else ():  # once per file
-            targets: list[ast.expr] = []
-            if isinstance(item, ast.Assign):
-                targets = list(item.targets)
-            elif isinstance(item, (ast.AugAssign, ast.AnnAssign)):
-                targets = [item.target]
-            elif (
-                isinstance(item, ast.Call)
-                and isinstance(item.func, ast.Name)
-                and item.func.id == "setattr"
-            ):
-                counts["*"] += 2  # any attribute may change: none is once-bound
+            kind = type(item)  # (one test per node: this walks the whole file)
+            targets: list[ast.expr]
+            if kind is ast.Assign:
+                targets = item.targets  # type: ignore[attr-defined]
+            elif kind is ast.AugAssign or kind is ast.AnnAssign:
+                targets = [item.target]  # type: ignore[attr-defined]
+            else:
+                if (
+                    kind is ast.Call
+                    and type(item.func) is ast.Name  # type: ignore[attr-defined]
+                    and item.func.id == "setattr"  # type: ignore[attr-defined]
+                ):
+                    counts["*"] += 2  # any attribute may change: none is once-bound
+                continue
             for target in targets:
                 for part in walk(target):
                     if isinstance(part, ast.Attribute):

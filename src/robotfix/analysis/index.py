@@ -6,9 +6,10 @@ declarations. Everything else reads this index instead of walking the tree again
 from __future__ import annotations
 
 import ast
+from collections import Counter
 from dataclasses import dataclass, field
 
-from robotfix.astwalk import children
+from robotfix.astwalk import children, fields, walk
 
 FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef)
 COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
@@ -42,6 +43,9 @@ class FileIndex:
     # (`Speed = Annotated[...]`, `Speed: TypeAlias = ...`, `type Speed = ...`) and
     # metadata strings (`SPEC = "Unit('m')"`)
     aliases: dict[str, ast.expr] = field(default_factory=dict)
+    # how often each attribute name is a part of an assignment's target (`x.a = `,
+    # `x.a += `, `x[o.i] = `), as `frames.facts` counts them
+    assigned: Counter[str] = field(default_factory=Counter)
 
 
 Todo = list[tuple[ast.AST, int, str | None, str | None]]
@@ -153,6 +157,11 @@ def _drain(index: FileIndex, todo: Todo, root: int) -> None:
             rest += [c for c in children(node) if not isinstance(c, ast.comprehension)]
             todo.extend((child, inner, cls, self_name) for child in rest)
             continue
+        if kind is ast.Assign or kind is ast.AugAssign or kind is ast.AnnAssign:
+            targets = getattr(node, "targets", None) or [node.target]  # type: ignore[attr-defined]
+            for part in walk(targets):
+                if type(part) is ast.Attribute:
+                    index.assigned[part.attr] += 1
         if kind is ast.Import or kind is ast.ImportFrom:
             _record_import(index, names, node)  # type: ignore[arg-type]
         elif kind is ast.Global or kind is ast.Nonlocal:
@@ -165,12 +174,12 @@ def _drain(index: FileIndex, todo: Todo, root: int) -> None:
             index.calls.append((cls, node))  # type: ignore[arg-type]
         elif kind is ast.Attribute and node.ctx.__class__ is not ast.Load:  # type: ignore[attr-defined]
             index.attribute_stores.add(node.attr)  # type: ignore[attr-defined]
-        for name in node._fields:
+        for name in fields(kind):  # not contexts, operators and strings
             value = getattr(node, name, None)
             if value.__class__ is list:
-                todo.extend(
-                    (v, owner, cls, self_name) for v in value if isinstance(v, ast.AST)
-                )
+                for v in value:
+                    if isinstance(v, ast.AST):
+                        todo.append((v, owner, cls, self_name))
             elif isinstance(value, ast.AST):
                 todo.append((value, owner, cls, self_name))
 

@@ -12,7 +12,6 @@ from __future__ import annotations
 import ast
 import builtins
 from collections.abc import Callable, Hashable
-from dataclasses import replace
 from fractions import Fraction
 
 from robotfix import messages
@@ -38,6 +37,7 @@ from robotfix.analysis.values import (
     Items,
     Uninit,
     Value,
+    replace,
 )
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement

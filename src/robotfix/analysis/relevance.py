@@ -52,6 +52,7 @@ from collections.abc import Iterable, Sequence
 
 from robotfix.analysis import context
 from robotfix.analysis.imported import Resolver, absolute
+from robotfix.astwalk import children, walk
 from robotfix.ros import api_model, frames_model
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.stubs.load import StubSet, defined_names
@@ -92,14 +93,14 @@ def skippable(
     imported: list[tuple[int, str | None, tuple[str, ...]]] = []
     receivers: set[int] = set()
     declared: set[str] = set()  # names some function declares `global`
-    for node in ast.walk(tree) if mentions else _statements(tree.body):
+    for node in walk(tree) if mentions else _statements(tree.body):
         if isinstance(node, ast.Name):
             if id(node) in receivers:
                 continue  # `time.sleep`: the member is the name that counts
             name = node.id
         elif isinstance(node, ast.Attribute):
             if isinstance(node.value, ast.Name):
-                receivers.add(id(node.value))  # ast.walk yields parents first
+                receivers.add(id(node.value))  # walk yields parents first
             name = node.attr
         elif isinstance(node, ast.Import):
             for alias in node.names:
@@ -288,7 +289,7 @@ class _Scope:
             for other in rest:
                 self.expr(other, after)
             return after
-        for child in ast.iter_child_nodes(node):
+        for child in children(node):
             bound = self.expr(child, bound)
         return bound
 
@@ -497,4 +498,4 @@ def _own_nodes(scope: ast.AST) -> Iterable[ast.AST]:
             todo.append(node.generators[0].iter)
             # `:=` inside binds here, but comprehensions with one are not followed
         else:
-            todo.extend(ast.iter_child_nodes(node))
+            todo.extend(children(node))

@@ -114,27 +114,36 @@ def satisfiable(parts: list[A.Expr]) -> bool | None:
 
 
 def _search(formulas: list[Formula], count: int) -> bool | None:
-    """Backtracking over the atoms in order, pruning on a false formula."""
+    """Backtracking over the atoms in order, pruning on a false formula. The
+    three-valued `_value` is monotone (a formula decided under part of a model stays
+    so under any extension), so each node only evaluates the formulas its parent
+    left undecided."""
     model: dict[int, bool] = {}
     visited = 0
 
-    def go(index: int) -> bool | None:
+    def go(index: int, pending: list[Formula]) -> bool | None:
         nonlocal visited
         visited += 1
         if visited > BUDGET:
             return None
-        values = [_value(f, model) for f in formulas]
-        if any(v is False for v in values):
+        undecided: list[Formula] = []
+        for f in pending:
+            value = _value(f, model)
+            if value is False:
+                return False
+            if value is None:
+                undecided.append(f)
+        if not undecided:
+            return True
+        if index >= count:
             return False
-        if all(v is True for v in values) or index >= count:
-            return all(v is True for v in values)
         for choice in (True, False):
             model[index] = choice
-            found = go(index + 1)
+            found = go(index + 1, undecided)
             if found is not False:
                 del model[index]
                 return found
         del model[index]
         return False
 
-    return go(0)
+    return go(0, formulas)
