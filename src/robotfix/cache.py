@@ -46,7 +46,7 @@ from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic, Note, Span
 from robotfix.discovery import Discovery, Trace
 from robotfix.disk_cache import install_key
-from robotfix.ros.catalog import MsgCatalog
+from robotfix.ros.catalog import MsgCatalog, Outline
 from robotfix.stubs.load import stub_set
 
 if TYPE_CHECKING:
@@ -195,9 +195,17 @@ class ResultCache:
     # -- the catalog -------------------------------------------------------------
     def catalog(
         self, key: str
-    ) -> tuple[dict[str, tuple[str, tuple[str, ...]]], list[InterfaceProblem]] | None:
-        """An earlier run's catalog digests and interface problems, for the same
-        interface files (`key`); None when there is none or it does not read."""
+    ) -> (
+        tuple[
+            dict[str, tuple[str, tuple[str, ...]]],
+            list[InterfaceProblem],
+            Outline | None,
+        ]
+        | None
+    ):
+        """An earlier run's catalog digests, interface problems and outline
+        (`MsgCatalog.outline`, None if it has none or it does not read), for the
+        same interface files (`key`); None when there is none or it does not read."""
         raw = self._catalog
         if raw is None or raw.get("key") != key:
             return None
@@ -227,13 +235,14 @@ class ResultCache:
             ):
                 return None
             found.append((_load(item[0]), item[1], tuple(item[2])))
-        return table, found
+        return table, found, _load_outline(raw.get("outline"))
 
     def put_catalog(
         self,
         key: str,
         table: dict[str, tuple[str, tuple[str, ...]]],
         problems: list[InterfaceProblem],
+        outline: Outline | None = None,
     ) -> None:
         raw = {
             "key": key,
@@ -241,6 +250,11 @@ class ResultCache:
             "problems": [
                 [_dump(d), absent, list(types)] for d, absent, types in problems
             ],
+            "outline": (
+                [[p, d, [[n, f] for n, f in ss]] for p, d, ss in outline]
+                if outline is not None
+                else None
+            ),
         }
         if raw != self._catalog:
             self._catalog = raw
@@ -506,6 +520,31 @@ def _valid_entry(entry: Any) -> bool:
         and isinstance(entry.get("diagnostics"), list)
         and all(_valid_diagnostic(d) for d in entry["diagnostics"])
     )
+
+
+def _load_outline(raw: Any) -> Outline | None:
+    """What `put_catalog` wrote of `MsgCatalog.outline`; None if not exactly that."""
+    if not isinstance(raw, list):
+        return None
+    found: Outline = []
+    for item in raw:
+        if not (
+            isinstance(item, list)
+            and len(item) == 3
+            and isinstance(item[0], str)
+            and isinstance(item[1], str)
+            and isinstance(item[2], list)
+            and all(
+                isinstance(x, list)
+                and len(x) == 2
+                and isinstance(x[0], str)
+                and type(x[1]) is bool
+                for x in item[2]
+            )
+        ):
+            return None
+        found.append((item[0], item[1], [(x[0], x[1]) for x in item[2]]))
+    return found
 
 
 def _valid_stat(raw: Any) -> bool:

@@ -132,6 +132,8 @@ def _check_paths(
     known = cache.catalog(snapshot) if cache is not None and snapshot else None
     if known is not None:
         catalog.preload_digests(known[0])
+        if known[2] is not None:  # a type is read from its own file when needed
+            catalog.preload_outline(known[2])
     if cache is not None:
         project.known = dict(cache.summaries)
         project.sha_of = cache.sha  # the stat fast path for imported modules too
@@ -193,7 +195,7 @@ def _check_paths(
     problems = known[1] if known is not None else raw_interface_problems(catalog)
     result.diagnostics.extend(interface_problems(catalog, used, problems))
     if cache is not None and snapshot:
-        cache.put_catalog(snapshot, catalog.digest_table(), problems)
+        cache.put_catalog(snapshot, catalog.digest_table(), problems, catalog.outline())
     result.diagnostics.extend(
         _parameter_problems(found, files, config, cache, parameters)
     )
