@@ -217,12 +217,9 @@ class MsgCatalog:
         # order decides duplicates: the checked packages' files first, then the rest
         # in the order given (msg paths, then path order)
         chosen = {str(path) for path in preferred}
-        self._files = _without_twins(
-            _distinct(
-                [p for p in interface_files if str(p) in chosen]
-                + [p for p in interface_files if str(p) not in chosen]
-            )
-        )
+        self._given = [p for p in interface_files if str(p) in chosen] + [
+            p for p in interface_files if str(p) not in chosen
+        ]
         self._texts = dict(texts or {})
         self._rep103 = rep103
         self.unit_suffixes = unit_suffixes  # the analysis reads it for parameter names
@@ -442,7 +439,9 @@ class MsgCatalog:
         files: list[InterfaceFile] = []
         first: dict[str, tuple[InterfaceFile, tuple[Any, ...]]] = {}
         outline: Outline = []
-        for path in self._files:
+        # each file once, however spelled, and not rosidl's twin (`realpath` of
+        # every file: a cached run with an outline does not need it)
+        for path in _without_twins(_distinct(self._given)):
             read = self._read(path)
             if read is None or self._duplicate(read[0], first):
                 continue
