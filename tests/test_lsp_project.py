@@ -113,3 +113,70 @@ def test_hover_sees_an_imported_module_through_the_kept_summaries(
     helper.write_text(HELPER.format(unit="m/s"))
     _later(helper)
     assert "km/h" not in shown() and "m/s" in shown()
+
+
+def _kept_and_fresh(session: server.Session, path: Path, text: str) -> list[str]:
+    """The kept project's diagnostics for `text`, asserted equal to a new one's
+    (checked as `server._publish` does: what the check read is stamped after)."""
+    catalog = server._catalog(session, path)
+    project = server._project(catalog, path)
+    kept = api.check_source(text, str(path), catalog=catalog, project=project)
+    server._record(project, server._projects[id(catalog)][2], path)
+    fresh = api.check_source(text, str(path), catalog=catalog)
+    assert repr(kept) == repr(fresh)
+    return [d.code for d in kept]
+
+
+def test_a_file_read_only_for_its_imports_drops_the_kept_project(
+    tmp_path: Path,
+) -> None:
+    """`deep.py` is parsed only for its import edges (is `helper` reachable from
+    `mid`?), never summarised: once it imports `helper`, `mid` is on a cycle
+    with `helper` and is no longer consulted while `helper` is summarised."""
+    (tmp_path / "helper.py").write_text(
+        "from typing import Annotated\n\nimport mid\n\n"
+        "def speed() -> Annotated[float, \"Unit('m/s')\"]:\n    return 1.0\n\n"
+        "def turn(v: mid.Turn) -> None:\n    pass\n"
+    )
+    (tmp_path / "mid.py").write_text(
+        "from typing import Annotated\n\nimport deep\n\n"
+        "Turn = Annotated[float, \"Unit('rad/s')\"]\n"
+    )
+    deep = tmp_path / "deep.py"
+    deep.write_text("X = 1\n")
+    node = tmp_path / "node.py"
+    text = (
+        "from typing import Annotated\n\nfrom helper import turn\n\n"
+        "SPEED: Annotated[float, \"Unit('m/s')\"] = 1.0\nturn(SPEED)\n"
+    )
+    session = server.Session()
+    assert _kept_and_fresh(session, node, text) == ["RF201"]
+    deep.write_text("import helper\n\nX = 1\n")
+    _later(deep)
+    assert _kept_and_fresh(session, node, text) == []
+    catalog = server._catalog(session, node)
+    project = server._project(catalog, node)
+    assert deep in project.read_files()
+
+
+def test_a_module_added_in_a_listed_folder_drops_the_kept_project(
+    tmp_path: Path,
+) -> None:
+    """`pkgx/` (a folder without `__init__.py`: no file of it is summarised) was
+    listed looking for `pkgx.mod` (absent): a module created there is seen, though
+    no file the project read changed."""
+    package = tmp_path / "pkgx"
+    package.mkdir()
+    node = tmp_path / "node.py"
+    text = (
+        NODE.replace("from helper import", "from pkgx.mod import")
+        .replace("from extra import TURN\n", "")
+        .replace("cmd.angular.z = TURN\n", "")
+    )
+    session = server.Session()
+    assert _kept_and_fresh(session, node, text) == []
+    catalog = server._catalog(session, node)
+    assert str(package) in server._project(catalog, node).index.listed_folders()
+    (package / "mod.py").write_text(HELPER.format(unit="km/h"))
+    _later(package)
+    assert _kept_and_fresh(session, node, text) == ["RF201"]

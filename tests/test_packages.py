@@ -109,3 +109,67 @@ def test_python_paths_find_modules_outside_the_checked_tree(tmp_path: Path) -> N
     config = load_file(node.parent / "pyproject.toml")
     found = check_paths([node.parent], config)
     assert [(d.code, d.span.line) for d in found.diagnostics] == [("RF101", 3)]
+
+
+def _rechecked(root: Path) -> tuple[int, list[str]]:
+    """How many files a cached run re-checked, and its output (which must be a
+    fresh run's, byte for byte)."""
+    files = len(list(root.rglob("*.py")))
+    cached, shown = _run(root)
+    assert shown == _run(root, cache=False)[1]
+    return files - cached, shown
+
+
+def test_a_member_no_importer_reads_rechecks_only_its_module(tmp_path: Path) -> None:
+    root = _copy(tmp_path, "ros2_pkg")
+    _, first = _run(root)
+    util = root / "ros2_pkg" / "my_pkg" / "util.py"
+    util.write_text(
+        util.read_text()
+        + "\n\ndef wrap(a: Annotated[float, \"Unit('rad') and _ >= 0\"]) -> float:\n"
+        "    return a\n"
+    )
+    assert _rechecked(root) == (1, first)  # util.py alone: nobody reads `wrap`
+    text = util.read_text()
+    util.write_text(text.replace("\"Unit('rad') and _ >= 0\"", '"_ <= 1"'))
+    assert _rechecked(root) == (1, first)  # nor its refinement
+    util.write_text(text[: text.index("\n\ndef wrap")] + "\n")
+    assert _rechecked(root) == (1, first)  # nor its removal
+
+
+def test_a_read_member_that_changes_rechecks_its_readers(tmp_path: Path) -> None:
+    root = _copy(tmp_path, "ros2_pkg")
+    _, first = _run(root)
+    util = root / "ros2_pkg" / "my_pkg" / "util.py"
+    text = util.read_text()
+    # ramp's refinement: util.py and driver.py (which calls ramp) are re-checked
+    util.write_text(text.replace('"0 <= _ < 10"', '"0 <= _ < 11"'))
+    count, after = _rechecked(root)
+    assert count == 2
+    assert len(after) == len(first) - 1  # ramp(10, 10) is fine now
+    # a member driver.py reads is removed: driver.py is re-checked
+    util.write_text(text.replace("def ramp(", "def _ramp("))
+    count, after = _rechecked(root)
+    assert count == 2
+    assert not any("ramp" in line for line in after)
+    # and comes back
+    util.write_text(text)
+    assert _rechecked(root) == (2, first)
+
+
+def test_a_constant_read_through_a_helper_rechecks_both(tmp_path: Path) -> None:
+    root = _copy(tmp_path, "ros2_pkg")
+    _run(root)
+    limits = root / "ros2_pkg" / "my_pkg" / "limits.py"
+    text = limits.read_text()
+    limits.write_text(text + "\nUNUSED_LIMIT = 3.0\n")
+    assert _rechecked(root)[0] == 1
+    # WHEEL_BASE: nobody reads it
+    limits.write_text(limits.read_text().replace("= 0.16", "= 0.2"))
+    assert _rechecked(root)[0] == 1
+    # MAX_TURN: driver.py reads it, util.py does not
+    limits.write_text(limits.read_text().replace("= 2.84", "= 2.5"))
+    assert _rechecked(root)[0] == 2
+    # MAX_SPEED: util.py's clamp_speed reads it, so driver.py too
+    limits.write_text(limits.read_text().replace("= 0.22", "= 0.3"))
+    assert _rechecked(root)[0] == 3

@@ -3,13 +3,15 @@
 An entry is reused only when the file's bytes, the path it was named by, its
 per-file ignores, the run key (RobotFix's version, the settings that change results,
 the unit and message libraries), the resolved definition of every message type the
-file looked up (`MsgCatalog.fingerprint_types`) and the fingerprint of every module
-summary it consulted, transitively (`project/summary.py`) are all unchanged:
-changing, adding or moving one `.msg` re-checks exactly the files it can affect, a
-changed helper module re-checks the files that import it only when its summary
+file looked up (`MsgCatalog.fingerprint_types`) and the fingerprint of everything
+it consulted of other modules, transitively (`project/summary.py`: each module
+asked for, each member of one looked up) are all unchanged: changing, adding or
+moving one `.msg` re-checks exactly the files it can affect, a changed helper
+module re-checks the files that import it only when a member they read of it
 changed, and a cached run prints what an uncached one prints, byte for byte.
-The fingerprints of summaries are kept too, by the hash of their file's bytes, so
-that a cached run over an unchanged tree parses nothing.
+The fingerprints of summaries (the module's and each member's) are kept too, by
+the hash of their file's bytes, so that a cached run over an unchanged tree parses
+nothing.
 
 Stat fast path (as ruff, mypy and git do): the hash of every file a run read is
 kept with its size, mtime_ns, inode and device, and a file whose stat is unchanged
@@ -44,16 +46,16 @@ from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic, Note, Span
 from robotfix.discovery import Discovery, Trace
 from robotfix.disk_cache import install_key
-from robotfix.ros.catalog import MsgCatalog
+from robotfix.ros.catalog import MsgCatalog, Outline
 from robotfix.stubs.load import stub_set
 
 if TYPE_CHECKING:
-    from robotfix.project.summary import Project
+    from robotfix.project.summary import Known, Project
 
 # an interface problem before `messages.interface_problem`: its diagnostic, the
 # package no type of which is known (if so), the types of its file
 InterfaceProblem = tuple[Diagnostic, "str | None", tuple[str, ...]]
-FORMAT = 4
+FORMAT = 5
 RACY_NS = 2_000_000_000  # a file changed this recently is hashed, not trusted by stat
 # which parameter-related words a file mentions (`paramcheck.MENTIONS`, all layouts),
 # kept with its hash so that an unchanged file need not be read to know
@@ -94,8 +96,9 @@ class ResultCache:
         self.key = key
         self._entries: dict[str, Any] = {}
         self._valid: dict[str, Any] = {}  # entries found valid (`_valid_entry`)
-        # module file -> [sha256 of its bytes, fingerprint of its summary]
-        self.summaries: dict[str, tuple[str, str]] = {}
+        # module file -> [sha256 of its bytes, its summary's fingerprint, its
+        # members' fingerprints]
+        self.summaries: dict[str, Known] = {}
         # file -> [size, mtime_ns, inode, device, sha256, mentions]: `sha`'s memory
         self._stats: dict[str, list[Any]] = {}
         self._seen_stats: dict[str, list[Any]] = {}  # this run's, saved
@@ -117,11 +120,14 @@ class ResultCache:
             found = data.get("summaries")
             if isinstance(found, dict):
                 self.summaries = {
-                    k: (v[0], v[1])
+                    k: (v[0], v[1], v[2])
                     for k, v in found.items()
                     if isinstance(v, list)
-                    and len(v) == 2
-                    and all(isinstance(x, str) for x in v)
+                    and len(v) == 3
+                    and isinstance(v[0], str)
+                    and isinstance(v[1], str)
+                    and isinstance(v[2], dict)
+                    and all(isinstance(x, str) for x in v[2].values())
                 }
             stats = data.get("stats")
             if isinstance(stats, dict):
@@ -189,9 +195,17 @@ class ResultCache:
     # -- the catalog -------------------------------------------------------------
     def catalog(
         self, key: str
-    ) -> tuple[dict[str, tuple[str, tuple[str, ...]]], list[InterfaceProblem]] | None:
-        """An earlier run's catalog digests and interface problems, for the same
-        interface files (`key`); None when there is none or it does not read."""
+    ) -> (
+        tuple[
+            dict[str, tuple[str, tuple[str, ...]]],
+            list[InterfaceProblem],
+            Outline | None,
+        ]
+        | None
+    ):
+        """An earlier run's catalog digests, interface problems and outline
+        (`MsgCatalog.outline`, None if it has none or it does not read), for the
+        same interface files (`key`); None when there is none or it does not read."""
         raw = self._catalog
         if raw is None or raw.get("key") != key:
             return None
@@ -221,13 +235,14 @@ class ResultCache:
             ):
                 return None
             found.append((_load(item[0]), item[1], tuple(item[2])))
-        return table, found
+        return table, found, _load_outline(raw.get("outline"))
 
     def put_catalog(
         self,
         key: str,
         table: dict[str, tuple[str, tuple[str, ...]]],
         problems: list[InterfaceProblem],
+        outline: Outline | None = None,
     ) -> None:
         raw = {
             "key": key,
@@ -235,6 +250,11 @@ class ResultCache:
             "problems": [
                 [_dump(d), absent, list(types)] for d, absent, types in problems
             ],
+            "outline": (
+                [[p, d, [[n, f] for n, f in ss]] for p, d, ss in outline]
+                if outline is not None
+                else None
+            ),
         }
         if raw != self._catalog:
             self._catalog = raw
@@ -297,8 +317,7 @@ class ResultCache:
         if entry["catalog"] != catalog.fingerprint_types(entry["types"]):
             return None
         for key, fingerprint in entry["modules"].items():
-            context, _, name = key.partition("\0")
-            now = project.fingerprint(context, name) if project is not None else ""
+            now = project.fingerprint(key) if project is not None else ""
             if now != fingerprint:
                 return None
         return [_load(d) for d in entry["diagnostics"]]
@@ -334,7 +353,7 @@ class ResultCache:
         }
         self._dirty = True
 
-    def remember_summaries(self, built: dict[str, tuple[str, str]]) -> None:
+    def remember_summaries(self, built: dict[str, Known]) -> None:
         """Fingerprints of summaries built in this run, by their file's hash."""
         for path, known in built.items():
             if self.summaries.get(path) != known:
@@ -378,7 +397,10 @@ class ResultCache:
         payload = {
             "key": self.key,
             "entries": self._entries,
-            "summaries": {k: list(v) for k, v in sorted(self.summaries.items())},
+            "summaries": {
+                k: [v[0], v[1], dict(sorted(v[2].items()))]
+                for k, v in sorted(self.summaries.items())
+            },
             "stats": {**self._stats, **self._seen_stats},
             "params": list(self._params) if self._params is not None else None,
             "catalog": self._catalog,
@@ -498,6 +520,31 @@ def _valid_entry(entry: Any) -> bool:
         and isinstance(entry.get("diagnostics"), list)
         and all(_valid_diagnostic(d) for d in entry["diagnostics"])
     )
+
+
+def _load_outline(raw: Any) -> Outline | None:
+    """What `put_catalog` wrote of `MsgCatalog.outline`; None if not exactly that."""
+    if not isinstance(raw, list):
+        return None
+    found: Outline = []
+    for item in raw:
+        if not (
+            isinstance(item, list)
+            and len(item) == 3
+            and isinstance(item[0], str)
+            and isinstance(item[1], str)
+            and isinstance(item[2], list)
+            and all(
+                isinstance(x, list)
+                and len(x) == 2
+                and isinstance(x[0], str)
+                and type(x[1]) is bool
+                for x in item[2]
+            )
+        ):
+            return None
+        found.append((item[0], item[1], [(x[0], x[1]) for x in item[2]]))
+    return found
 
 
 def _valid_stat(raw: Any) -> bool:

@@ -43,7 +43,7 @@ if TYPE_CHECKING:
 
 if TYPE_CHECKING:  # the analysis is imported only when a file is checked
     from robotfix.analysis.parameters import Summary as ParamSummary
-    from robotfix.project.summary import Project
+    from robotfix.project.summary import Known, Project
 
 MIN_PARALLEL = 16  # fewer files are checked faster in one process than by a pool
 # and so is less source: starting a pool costs about 0.1-0.2 s, what one process
@@ -61,8 +61,8 @@ class FileResult:
     fingerprint: str = ""  # the catalog's fingerprint of `types`, as the check saw it
     # the module summaries it consulted (`project/summary.py`): key -> fingerprint
     modules: dict[str, str] = field(default_factory=dict)
-    # the summaries built so far in its process: file -> (sha256, fingerprint)
-    summaries: dict[str, tuple[str, str]] = field(default_factory=dict)
+    # the summaries its process built since its last result: file -> fingerprints
+    summaries: dict[str, Known] = field(default_factory=dict)
     # what it declares and reads of parameters (`analysis/parameters.py`), from the
     # tree the check parsed, for `paramcheck` (None: not asked, or no mention)
     parameters: ParamSummary | None = None
@@ -132,6 +132,8 @@ def _check_paths(
     known = cache.catalog(snapshot) if cache is not None and snapshot else None
     if known is not None:
         catalog.preload_digests(known[0])
+        if known[2] is not None:  # a type is read from its own file when needed
+            catalog.preload_outline(known[2])
     if cache is not None:
         project.known = dict(cache.summaries)
         project.sha_of = cache.sha  # the stat fast path for imported modules too
@@ -186,11 +188,14 @@ def _check_paths(
                 outcome.fingerprint,
                 outcome.modules,
             )
+        if cache is not None:
             cache.remember_summaries(outcome.summaries)
+    if cache is not None:  # those built here to see whether a cached result holds
+        cache.remember_summaries(project.fresh_summaries())
     problems = known[1] if known is not None else raw_interface_problems(catalog)
     result.diagnostics.extend(interface_problems(catalog, used, problems))
     if cache is not None and snapshot:
-        cache.put_catalog(snapshot, catalog.digest_table(), problems)
+        cache.put_catalog(snapshot, catalog.digest_table(), problems, catalog.outline())
     result.diagnostics.extend(
         _parameter_problems(found, files, config, cache, parameters)
     )
@@ -471,7 +476,7 @@ def _check_one(
             types,
             catalog.fingerprint_types(types),
             dict(resolver.consulted),
-            dict(project.built),
+            project.fresh_summaries(),
             parameters,
         )
     except Exception as err:  # a fault of ours: report it, go on with the others

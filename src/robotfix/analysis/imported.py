@@ -51,7 +51,9 @@ class ClassSummary:
 
 @dataclass
 class ModuleSummary:
-    """What an importer may see of one module; `fingerprint` hashes all of it."""
+    """What an importer may see of one module; `fingerprint` hashes its name and
+    file, `members` each member's part (`project/summary.py`: what a check read is
+    what re-checks it)."""
 
     name: str  # absolute dotted name
     path: str
@@ -61,6 +63,7 @@ class ModuleSummary:
     aliases: dict[str, Alias] = field(default_factory=dict)
     reexports: dict[str, str] = field(default_factory=dict)  # name -> qualified
     fingerprint: str = ""
+    members: dict[str, str] = field(default_factory=dict)  # name -> fingerprint
 
 
 Imported = FunctionSummary | ClassSummary | ModuleSummary | Value | Alias
@@ -75,6 +78,10 @@ class Resolver(Protocol):
 
     def module(self, name: str) -> ModuleSummary | None:
         """The summary of the module `name` (absolute), if it is in the tree."""
+
+    def member(self, module: str, summary: ModuleSummary, name: str) -> None:
+        """Note that the member `name` of `summary` (asked for as `module`) was
+        looked up: what was read of it decides the result."""
 
 
 def absolute(package: str | None, level: int, module: str | None) -> str | None:
@@ -103,18 +110,24 @@ def resolve(resolver: Resolver | None, qualified: str) -> Imported | None:
 def _resolve(resolver: Resolver, qualified: str, hops: int) -> Imported | None:
     parts = qualified.split(".")
     for cut in range(len(parts), 0, -1):
-        summary = resolver.module(".".join(parts[:cut]))
+        module = ".".join(parts[:cut])
+        summary = resolver.module(module)
         if summary is not None:
-            return _member(resolver, summary, parts[cut:], hops)
+            return _member(resolver, module, summary, parts[cut:], hops)
     return None
 
 
 def _member(
-    resolver: Resolver, summary: ModuleSummary, rest: list[str], hops: int
+    resolver: Resolver,
+    module: str,
+    summary: ModuleSummary,
+    rest: list[str],
+    hops: int,
 ) -> Imported | None:
     if not rest:
         return summary
     name, more = rest[0], rest[1:]
+    resolver.member(module, summary, name)  # all that is read below is of `name`
     if name in summary.functions:
         return summary.functions[name] if not more else None
     if name in summary.classes:

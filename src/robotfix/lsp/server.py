@@ -182,10 +182,17 @@ def _project(catalog: MsgCatalog, path: Path) -> Project:
 def _record(
     project: Project, stamps: dict[Path, tuple[object, ...]], path: Path
 ) -> None:
-    """Stamp what `project` read that is not stamped yet: the files of its
-    summaries, their folders, and the folders `path` imports from."""
-    files = [Path(name) for name in project.built]
-    wanted = [*project.index.search_path(path), *files, *{f.parent for f in files}]
+    """Stamp what `project` read that is not stamped yet: every file it read (the
+    summarised ones and those parsed only for their import edges), their folders,
+    the folders its module index listed or probed, and the folders `path` imports
+    from."""
+    files = sorted(project.read_files())
+    wanted = [
+        *project.index.search_path(path),
+        *files,
+        *{f.parent for f in files},
+        *(Path(f) for f in sorted(project.index.listed_folders())),
+    ]
     for file in wanted:
         if file not in stamps:
             stamps[file] = _stamp(file)

@@ -39,6 +39,14 @@ class ModuleIndex:
         self._found: dict[tuple[str, str], Path | None] = {}
         self._packages: dict[Path, str | None] = {}
         self._listings: dict[str, dict[str, bool]] = {}
+        # folders in which a file's existence was tested (`__init__.py`,
+        # `package.xml`, `src/`): a change there can change an answer too
+        self._probed: set[str] = set()
+
+    def listed_folders(self) -> set[str]:
+        """Every folder this index listed or probed (for the language server: a
+        module added or removed in one of them changes what a name is)."""
+        return {*self._listings, *self._probed}
 
     def _listing(self, folder: str) -> dict[str, bool]:
         found = self._listings.get(folder)
@@ -117,7 +125,7 @@ class ModuleIndex:
         folder = _absolute(Path(spelled or "."))
         if folder not in self._search:
             found: list[Path] = [*self.python_paths, self._top_parent(folder)]
-            package = _ros_package(folder)
+            package = _ros_package(folder, self._probed)
             if package is not None:
                 found.append(package)
                 if _is_dir(package / "src"):
@@ -135,6 +143,7 @@ class ModuleIndex:
             parts: list[str] = []
             current = folder
             for _ in range(MAX_DEPTH):
+                self._probed.add(str(current))
                 if not os.path.isfile(current / "__init__.py"):
                     break
                 parts.append(current.name)
@@ -156,6 +165,7 @@ class ModuleIndex:
         """The folder above the top package that holds `folder` (or `folder`)."""
         current = folder
         for _ in range(MAX_DEPTH):
+            self._probed.add(str(current))
             if not os.path.isfile(current / "__init__.py") or current.parent == current:
                 return current
             current = current.parent
@@ -218,9 +228,10 @@ def _list(folder: str) -> dict[str, bool]:
     return found
 
 
-def _ros_package(folder: Path) -> Path | None:
+def _ros_package(folder: Path, probed: set[str]) -> Path | None:
     current = folder
     for _ in range(MAX_DEPTH):
+        probed.add(str(current))
         if os.path.isfile(current / "package.xml"):
             return current
         if current.parent == current:

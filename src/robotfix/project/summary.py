@@ -3,9 +3,13 @@ its AST alone (never by importing it), once per run and only when some checked f
 imports it (cf. mypy's build.State and its interface hash).
 
 `Project` owns the run's summaries; `FileResolver` is the narrow interface one
-checked file's analysis asks (`analysis/imported.py`), and records which modules it
-consulted with their fingerprints, so the result cache re-checks a file exactly when
-the summary of a module it (transitively) imports changes.
+checked file's analysis asks (`analysis/imported.py`), and records what it consulted
+with its fingerprint: each module it asked for (its existence and place) and each
+member of one it looked up (that member's part of the summary: a function's
+signature and refinements, a class's, a constant's value and unit, an alias and the
+names it reads, a re-export), transitively through the summaries it used, so the
+result cache re-checks a file exactly when something it read of another module
+changed: adding or changing a member no importer uses re-checks nobody.
 
 Cycles: while the summary of P is built, a module Q from which P can be reached by
 imports (syntactically) is not consulted. The answer depends on the import graph
@@ -43,6 +47,10 @@ if TYPE_CHECKING:  # the analysis is imported only when a summary is built
 
 Discharge = Callable[["VC"], "Verdict"]
 ABSENT = ""  # the fingerprint recorded for a name that is no module of the tree
+MISSING = "-"  # the fingerprint of a name that is no member of its module
+# a summary as the result cache keeps it, by its file: the sha256 of the file's
+# bytes, the module's own fingerprint (its name and place), its members'
+Known = tuple[str, str, dict[str, str]]
 # source bytes of parsed modules kept for their own check later in the run (`take`);
 # beyond it a module is parsed again when checked, rather than held in memory
 PENDING_BYTES = 1 << 20
@@ -67,13 +75,14 @@ class Project:
         self._pending: dict[str, tuple[bytes, SourceFile]] = {}
         self._edges: dict[Path, frozenset[Path]] = {}
         self._reach: dict[Path, frozenset[Path]] = {}
-        # path -> (sha256 of its bytes, fingerprint), from an earlier run's cache
-        self.known: dict[str, tuple[str, str]] = {}
-        self.built: dict[str, tuple[str, str]] = {}  # the same, for this run's
+        # path -> (sha256 of its bytes, fingerprints), from an earlier run's cache
+        self.known: dict[str, Known] = {}
+        self.built: dict[str, Known] = {}  # the same, for this run's
+        self._handed = 0  # how many of `built` `fresh_summaries` handed out
         # the sha256 of a file's bytes, when the caller knows a faster way (the
         # result cache's stat fast path); None: unreadable
         self.sha_of: Callable[[Path], str | None] | None = None
-        self._fingerprints: dict[tuple[int, str], str] = {}
+        self._fingerprints: dict[tuple[int, str, str | None], str] = {}
         self._context_ids: dict[str, int] = {}
         # files this process checks and has not checked yet (by `_key`): a module
         # among them parsed for its summary keeps its tree until its check `take`s
@@ -81,6 +90,7 @@ class Project:
         self.to_check: set[str] = set()
         self._pending_bytes = 0
         self.parses = 0  # files read and parsed here (tests count them)
+        self._read: set[Path] = set()  # every file read: `read_files`
         # a checked file mentioning one of these has its parameters summarised
         # from the same tree, for `paramcheck` (`run.py`); () when the run has
         # no parameter file
@@ -115,8 +125,25 @@ class Project:
             self._summaries[path] = found
             self._deps[path] = dict(resolver.consulted)
             if found is not None and parsed is not None:
-                self.built[str(path)] = (_sha(parsed[0]), found.fingerprint)
+                self.built[str(path)] = (
+                    _sha(parsed[0]),
+                    found.fingerprint,
+                    found.members,
+                )
         return self._summaries[path]
+
+    def fresh_summaries(self) -> dict[str, Known]:
+        """The summaries built since the last call (for the result cache: a worker
+        sends each once, not all it built with every result)."""
+        items = list(self.built.items())[self._handed :]
+        self._handed += len(items)
+        return dict(items)
+
+    def read_files(self) -> set[Path]:
+        """Every file this project read: summarised, parsed only for its import
+        edges, or hashed (for the language server: a change to one of them on
+        disk can change what the project answers)."""
+        return set(self._read)
 
     def deps(self, path: Path) -> dict[str, str]:
         return self._deps.get(path, {})
@@ -126,23 +153,28 @@ class Project:
         of the summaries it consulted): every importer depends on them too."""
         return self._types.get(path, frozenset())
 
-    def fingerprint(self, context: str, name: str) -> str:
-        """What the summary of `name`, imported by the file `context`, is now: for
-        the result cache (a summary is built only if its file changed)."""
+    def fingerprint(self, key: str) -> str:
+        """What a record of `FileResolver.consulted` (`<file>\0<module>`, or
+        `<file>\0<module>\0<member>`) stands for now: for the result cache (a
+        summary is built only if its file changed)."""
+        context, _, rest = key.partition("\0")
+        name, cut, member = rest.partition("\0")
         number = self._context_ids.get(context)
         if number is None:
             number = self._context_ids[context] = self.index.search_id(context)
-        memo = (number, name)  # the search path decides what a name is
+        # the search path decides what a name is
+        memo = (number, name, member if cut else None)
         if memo not in self._fingerprints:
-            self._fingerprints[memo] = self._fingerprint(context, name)
+            self._fingerprints[memo] = self._fingerprint(context, name, memo[2])
         return self._fingerprints[memo]
 
-    def _fingerprint(self, context: str, name: str) -> str:
+    def _fingerprint(self, context: str, name: str, member: str | None) -> str:
         path = self.index.find(name, context)
         if path is None:
             return ABSENT
         known = self.known.get(str(path)) or self.built.get(str(path))
         if known is not None:
+            self._read.add(path)
             if self.sha_of is not None:
                 digest = self.sha_of(path)
             else:
@@ -153,9 +185,15 @@ class Project:
             if digest is None:
                 return ABSENT
             if digest == known[0]:
-                return known[1]
+                if member is None:
+                    return known[1]
+                return known[2].get(member, MISSING)
         found = self.summary(path)
-        return found.fingerprint if found is not None else ABSENT
+        if found is None:
+            return ABSENT
+        if member is None:
+            return found.fingerprint
+        return found.members.get(member, MISSING)
 
     # -- the import graph, syntactically ------------------------------------
     def reaches(self, start: Path, goal: Path) -> bool:
@@ -193,6 +231,7 @@ class Project:
         from robotfix.source import SourceFile
 
         if path not in self._parsed:
+            self._read.add(path)
             try:
                 data = read_regular(path)
             except UnreadableError:
@@ -284,10 +323,17 @@ class FileResolver:
             return None  # a cycle: not consulted, whichever side is built first
         found = project.summary(target)
         self.consulted[key] = found.fingerprint if found is not None else ABSENT
+        # what building it read: its members may stand on any of it
         self.consulted.update(project.deps(target))
         if project.catalog.touched is not None:
             project.catalog.touched.update(project.types(target))
         return found
+
+    def member(self, module: str, summary: ModuleSummary, name: str) -> None:
+        """The member `name` of `summary` (asked for as `module`) was looked up."""
+        self.consulted[f"{self.path}\0{module}\0{name}"] = summary.members.get(
+            name, MISSING
+        )
 
 
 def summarize(
@@ -476,21 +522,41 @@ def _top_level_imports(tree: ast.Module, imports: dict[str, str]) -> dict[str, s
 
 
 def _finish(summary: ModuleSummary) -> ModuleSummary:
-    content = _stable(
-        (
-            summary.name,
-            summary.path,
-            sorted(summary.functions.items()),
-            sorted(summary.classes.items()),
-            sorted(summary.constants.items()),
-            sorted(
-                (k, ast.dump(a.node), a.node.lineno) for k, a in summary.aliases.items()
-            ),
-            sorted(summary.reexports.items()),
-        )
+    """The fingerprints: the module's own (its name and file), and each member's,
+    from everything `imported._member` reads for that name (which table holds it
+    decides what it is). An alias reads the module's other aliases and imports, so
+    its fingerprint holds them too."""
+    summary.fingerprint = _hash(_stable((summary.name, summary.path)))
+    aliases = sorted(
+        (k, ast.dump(a.node), a.node.lineno) for k, a in summary.aliases.items()
     )
-    summary.fingerprint = hashlib.sha256(content.encode()).hexdigest()
+    reexports = sorted(summary.reexports.items())
+    names = (
+        summary.functions.keys()
+        | summary.classes.keys()
+        | summary.constants.keys()
+        | summary.aliases.keys()
+        | summary.reexports.keys()
+    )
+    for name in sorted(names):
+        alias = summary.aliases.get(name)
+        content = (
+            name,
+            summary.functions.get(name),
+            summary.classes.get(name),
+            summary.constants.get(name),
+            (ast.dump(alias.node), alias.node.lineno, aliases, reexports)
+            if alias is not None
+            else None,
+            summary.reexports.get(name),
+        )
+        summary.members[name] = _hash(_stable(content))
     return summary
+
+
+def _hash(text: str) -> str:
+    """A fingerprint: 128 bits, short in the cache's file."""
+    return hashlib.blake2b(text.encode(), digest_size=16).hexdigest()
 
 
 def _stable(value: object) -> str:

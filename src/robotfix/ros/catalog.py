@@ -53,6 +53,9 @@ from robotfix.ros.comments import CommentUnit
 from robotfix.ros.install import InstallSpace
 from robotfix.ros.msg import InterfaceFile, Section, read_interface
 
+# `MsgCatalog.outline`: (file, sha1 of its text, [(type, has fields)]) per file used
+Outline = list[tuple[str, str, list[tuple[str, bool]]]]
+
 if sys.version_info >= (3, 11):
     import tomllib
 else:  # pragma: no cover
@@ -214,12 +217,9 @@ class MsgCatalog:
         # order decides duplicates: the checked packages' files first, then the rest
         # in the order given (msg paths, then path order)
         chosen = {str(path) for path in preferred}
-        self._files = _without_twins(
-            _distinct(
-                [p for p in interface_files if str(p) in chosen]
-                + [p for p in interface_files if str(p) not in chosen]
-            )
-        )
+        self._given = [p for p in interface_files if str(p) in chosen] + [
+            p for p in interface_files if str(p) not in chosen
+        ]
         self._texts = dict(texts or {})
         self._rep103 = rep103
         self.unit_suffixes = unit_suffixes  # the analysis reads it for parameter names
@@ -238,11 +238,22 @@ class MsgCatalog:
         # fingerprint_types' memo: each type's message-typed fields
         self._children: dict[str, tuple[str, ...]] = {}
         self._combined: dict[tuple[str, ...], str] = {}  # names asked -> digest
+        # the lazy load (`preload_outline`): each used file in order, its digest and
+        # its sections (name, has fields); files not read yet, by type they define
+        self._outline: Outline | None = None
+        self._lazy = False  # the types are declared from the outline, not read
+        self._unread: dict[str, int] = {}  # type -> index in the outline
+        self._no_reads = False  # REP 103 is applied before any file is resolved
 
     # -- public --------------------------------------------------------------
     def lookup(self, name: str) -> MsgSpec | None:
-        self.load()
         key = normalize(name)
+        if self._outline is None or (self._loaded and not self._lazy):
+            self.load()
+        else:
+            self._declare_outline()
+            if key in self._unread and not self._no_reads:
+                self._read_outlined(self._unread[key])
         if self.touched is not None:
             self.touched.add(key)
         spec = self._specs.get(key)
@@ -276,7 +287,10 @@ class MsgCatalog:
         return bool(difflib.get_close_matches(name, names, n=1, cutoff=0.8))
 
     def has_package(self, package: str) -> bool:
-        self.load()
+        if self._outline is None or (self._loaded and not self._lazy):
+            self.load()
+        else:  # every type is declared: the names are all it needs
+            self._declare_outline()
         prefix = package + "/"
         return any(k.startswith(prefix) for k in (*self._specs, *self._standard())) or (
             self._installed is not None and self._installed.has_package(package)
@@ -417,12 +431,17 @@ class MsgCatalog:
     # -- loading -------------------------------------------------------------
     def load(self) -> None:
         """Read the interface files (once); their problems land in `problems`."""
-        if self._loaded:
+        if self._loaded and not self._lazy:
             return
+        if self._lazy:  # a partial load: all of it again, as if never begun
+            self._restart()
         self._loaded = True
         files: list[InterfaceFile] = []
         first: dict[str, tuple[InterfaceFile, tuple[Any, ...]]] = {}
-        for path in self._files:
+        outline: Outline = []
+        # each file once, however spelled, and not rosidl's twin (`realpath` of
+        # every file: a cached run with an outline does not need it)
+        for path in _without_twins(_distinct(self._given)):
             read = self._read(path)
             if read is None or self._duplicate(read[0], first):
                 continue
@@ -431,6 +450,9 @@ class MsgCatalog:
                 first[section.name] = (parsed, _shape(section))
                 self._defined_by[section.name] = digest
             files.append(parsed)
+            sections = [(x.name, bool(x.fields)) for x in parsed.sections]
+            outline.append((os.fspath(path), digest, sections))
+        self._outline = outline
         for file in files:
             self._types_of[file.path] = tuple(s.name for s in file.sections)
         for file in files:  # declare every type before resolving any field
@@ -458,6 +480,89 @@ class MsgCatalog:
             for section in file.sections:
                 self._add_comment_units(file.path, section)
                 self._add_annotations(file.path, section)
+
+    # -- the lazy load ---------------------------------------------------------
+    def outline(self) -> Outline | None:
+        """Which files a full load used, in order, each with the digest of its text
+        and its sections (name, whether it has fields); None when unknown."""
+        return self._outline
+
+    def preload_outline(self, outline: Outline) -> None:
+        """`outline` of an earlier full load of the very same interface files (the
+        caller's key says so: their stats, the settings, no install space): a type
+        is then read from its own file when looked up, as the full load would have
+        made it, and the other files are not read (`problems`, `refined_specs` and
+        the like still load everything)."""
+        if not self._loaded and self._installed is None and not self._texts:
+            self._outline = outline
+
+    def _declare_outline(self) -> None:
+        """The first steps of `load` from the outline: every type declared (a
+        section is all `_declare` reads: its name and whether it has fields), then
+        REP 103 on the declared types, before any field is resolved."""
+        if self._loaded:
+            return
+        assert self._outline is not None
+        self._loaded = self._lazy = True
+        for index, (path, digest, sections) in enumerate(self._outline):
+            self._types_of[path] = tuple(name for name, _ in sections)
+            for name, _ in sections:
+                self._defined_by[name] = digest
+                self._unread[name] = index
+        for _, _, sections in self._outline:
+            for name, has_fields in sections:
+                self._declare_name(name, has_fields)
+        if self._rep103:
+            self._no_reads = True
+            try:
+                self._add_rep103()
+            finally:
+                self._no_reads = False
+
+    def _read_outlined(self, index: int) -> None:
+        """The rest of `load` for one file of the outline: its fields resolved, its
+        units and annotations added; the whole load when it no longer reads as the
+        outline says."""
+        assert self._outline is not None
+        path, digest, sections = self._outline[index]
+        for name, _ in sections:
+            self._unread.pop(name, None)
+        read = self._read(Path(path))
+        if (
+            read is None
+            or read[1] != digest
+            or [(x.name, bool(x.fields)) for x in read[0].sections] != sections
+        ):
+            self._outline = None
+            self.load()
+            return
+        parsed = read[0]
+        for section in parsed.sections:
+            try:
+                self._resolve_fields(parsed, section)
+            except Exception as err:  # as `load`
+                self._report(
+                    messages.unprocessable_interface(parsed.path, 1, 0, "file", err)
+                )
+        for section in parsed.sections:
+            if not self._lazy:  # a file read meanwhile fell back to the whole load
+                return
+            self._add_comment_units(parsed.path, section)
+            self._add_annotations(parsed.path, section)
+
+    def _restart(self) -> None:
+        """Forget a partial load (what `__init__` set; the digests stay: they are
+        the full load's too)."""
+        self._specs = {}
+        self.problems = []
+        self._defined_by = {}
+        self._installed_keys = set()
+        self._installed_tried = set()
+        self.installed_problems = []
+        self._types_of = {}
+        self._unread = {}
+        self._lazy = False
+        self._loaded = False
 
     def _read(self, path: Path) -> tuple[InterfaceFile, str] | None:
         """The parsed file and a digest of its text; None after reporting why not."""
@@ -500,18 +605,21 @@ class MsgCatalog:
         return True
 
     def _declare(self, section: Section) -> None:
-        base = self._specs.get(section.name)
-        if section.name in self._installed_keys:  # a user file replaces it
-            self._installed_keys.discard(section.name)
+        self._declare_name(section.name, bool(section.fields))
+
+    def _declare_name(self, name: str, has_fields: bool) -> None:
+        base = self._specs.get(name)
+        if name in self._installed_keys:  # a user file replaces it
+            self._installed_keys.discard(name)
             base = None
-            if not section.fields:  # refinements only: added to the installed type
-                base = self._specs[section.name]
-        if base is None and section.name in self._standard():
-            base = self._from_standard(section.name)
-        if base is None and not section.fields:
-            base = self._from_installed(section.name)
-            self._installed_keys.discard(section.name)
-        self._specs[section.name] = base or MsgSpec(section.name, {})
+            if not has_fields:  # refinements only: added to the installed type
+                base = self._specs[name]
+        if base is None and name in self._standard():
+            base = self._from_standard(name)
+        if base is None and not has_fields:
+            base = self._from_installed(name)
+            self._installed_keys.discard(name)
+        self._specs[name] = base or MsgSpec(name, {})
 
     def _from_installed(self, key: str) -> MsgSpec | None:
         """The type `key` from the install space's file that defines it, read now;
