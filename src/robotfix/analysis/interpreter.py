@@ -1033,17 +1033,12 @@ class Interpreter(CallEvaluator):
         return state
 
     def visit_AugAssign(self, node: ast.AugAssign, state: State) -> State:
-        load: ast.expr
-        if isinstance(node.target, ast.Name):
-            load = ast.Name(node.target.id, ast.Load())
-        elif isinstance(node.target, ast.Attribute):
-            load = ast.Attribute(node.target.value, node.target.attr, ast.Load())
-        elif isinstance(node.target, ast.Subscript):  # `ranges[i] += d`
-            load = ast.Subscript(node.target.value, node.target.slice, ast.Load())
-        else:
+        combined = self.program.augmented.get(id(node))
+        if combined is None:
+            combined = self.program.augmented[id(node)] = _combined(node)
+        if combined is None:
             return self.generic(node, state)
-        combined = ast.BinOp(ast.copy_location(load, node.target), node.op, node.value)
-        value = self.eval(ast.copy_location(combined, node), state)
+        value = self.eval(combined, state)
         self.bind(node.target, value, state)
         if isinstance(node.op, (ast.Add, ast.Sub)):  # `x += d`: d has x's unit
             self._record_flow(node.value, node.target, value, state)
@@ -1913,3 +1908,19 @@ def _int_constant(node: ast.expr) -> int | None:
     ):
         return -node.operand.value
     return None
+
+
+def _combined(node: ast.AugAssign) -> ast.BinOp | None:
+    """`x += d` as the expression `x + d`, at the statement (kept in
+    `Program.augmented`)."""
+    load: ast.expr
+    if isinstance(node.target, ast.Name):
+        load = ast.Name(node.target.id, ast.Load())
+    elif isinstance(node.target, ast.Attribute):
+        load = ast.Attribute(node.target.value, node.target.attr, ast.Load())
+    elif isinstance(node.target, ast.Subscript):  # `ranges[i] += d`
+        load = ast.Subscript(node.target.value, node.target.slice, ast.Load())
+    else:
+        return None
+    combined = ast.BinOp(ast.copy_location(load, node.target), node.op, node.value)
+    return ast.copy_location(combined, node)

@@ -60,6 +60,10 @@ class Program:
     # module names that functions declare `global` (callbacks may set them)
     shared_globals: set[str] = field(default_factory=set)
     ends: dict[int, bool] = field(default_factory=dict)  # id(def node) -> never returns
+    # id(`x += d` node) -> `x + d`, made once and kept with the file's tree: findings
+    # are reported once per node `id`, and a node freed after one statement could
+    # lend its address to the next one's, silencing its finding
+    augmented: dict[int, ast.BinOp | None] = field(default_factory=dict)
 
     def message_attribute(self, class_name: str, attribute: str) -> str | None:
         """The message type `self.<attribute>` holds in methods of the class."""
