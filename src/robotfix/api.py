@@ -140,13 +140,21 @@ class Discharger:
 def _without_solver(vc: VC) -> Verdict | None:
     """A VC whose boolean skeleton decides it (`smt.propositional`): most questions
     of whether a path can run, so that z3 is loaded for a file only when a VC
-    needs numbers."""
+    needs numbers. A question the skeleton leaves open is answered "possible"
+    when values of its symbols are found that make the facts and the condition
+    true, checked by exact evaluation (`annotations.witness`); "impossible" only
+    ever comes from the skeleton."""
     from robotfix.analysis.vc import Proved, Unproven
-    from robotfix.smt.propositional import satisfiable
+    from robotfix.annotations.witness import holds_somewhere
+    from robotfix.smt.propositional import components, satisfiable
 
-    negated = satisfiable([*vc.facts, A.Unary("not", vc.goal)])
-    if negated is False:
-        return Proved()
+    negated: bool | None = True  # groups sharing no symbol are independent
+    for group in components([*vc.facts, A.Unary("not", vc.goal)]):
+        found = satisfiable(group)
+        if found is False:
+            return Proved()
+        if found is None and not (vc.question and holds_somewhere(group)):
+            negated = None
     if negated is True and vc.question:
         return Unproven((), ())
     return None

@@ -12,7 +12,7 @@ the solver decides as before. A witness is never a guess: it is checked.
 from __future__ import annotations
 
 import itertools
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from fractions import Fraction
 from functools import lru_cache
 
@@ -20,6 +20,8 @@ from robotfix.annotations import ast as A
 
 MAX_NAMES = 3
 MAX_TRIES = 2_000
+MAX_SYMBOLS = 64  # a path question with more symbols is left to the solver
+MAX_STEPS = 2_000  # values one path question may try
 _LIMIT = 10**100  # candidates and values beyond this are not tried
 
 
@@ -48,7 +50,8 @@ def _search(predicate: A.Expr, names: tuple[str, ...], sorts: tuple[str, ...]) -
     if tries > MAX_TRIES:
         return False
     for values in itertools.product(*per_name):
-        if _value(predicate, dict(zip(names, values, strict=True))) is True:
+        named: Values = dict(zip(names, values, strict=True))
+        if _value(predicate, named) is True:
             return True
     return False
 
@@ -77,15 +80,158 @@ def _candidates(constants: set[Fraction], integer: bool) -> list[Fraction]:
     return sorted(found, key=lambda c: (abs(c), c))
 
 
+def holds_somewhere(parts: Sequence[A.Expr]) -> bool:
+    """Whether some values of the solver symbols in `parts` make every part true
+    (a path question: can this condition hold under these facts?). Each symbol
+    tries the constants of the conjuncts it occurs in, their neighbours and
+    midpoints, and first the value an equation with earlier symbols gives it (a
+    symbol an equation defines comes after the others); a conjunct is evaluated
+    exactly once its last symbol has a value. True only with such values found;
+    False says none was found, not that none exists."""
+    conjuncts: list[tuple[A.Expr, list[A.Sym]]] = []
+    first: dict[A.Sym, None] = {}  # the symbols in order of appearance
+    constants: dict[A.Sym, set[Fraction]] = {}
+    defined: set[A.Sym] = set()
+    for part in parts:
+        for conjunct in A.conjuncts(part):
+            syms: list[A.Sym] = []
+            for node in A.walk(conjunct):
+                if isinstance(node, A.Sym):
+                    if node.sort == "str":
+                        return False
+                    first.setdefault(node)
+                    syms.append(node)
+                elif isinstance(node, A.Num):
+                    if abs(node.value.numerator) > _LIMIT:
+                        return False
+                    if node.value.denominator > _LIMIT:
+                        return False
+                elif isinstance(node, (A.Name, A.Str, A.UnitIs)):
+                    return False  # not a value the solver's meaning gives here
+            numbers = {n.value for n in A.walk(conjunct) if isinstance(n, A.Num)}
+            for sym in syms:
+                constants.setdefault(sym, set()).update(numbers)
+            defined.update(_defines(conjunct))
+            conjuncts.append((conjunct, syms))
+    if len(first) > MAX_SYMBOLS:
+        return False
+    symbols = sorted(first, key=lambda s: s in defined)  # stable: appearance
+    order = {sym: index for index, sym in enumerate(symbols)}
+    due: list[list[A.Expr]] = [[] for _ in symbols]
+    hints: list[list[A.Expr]] = [[] for _ in symbols]
+    for conjunct, syms in conjuncts:
+        if not syms:
+            if _value(conjunct, {}) is not True:
+                return False
+            continue
+        last = max(syms, key=order.__getitem__)
+        due[order[last]].append(conjunct)
+        for sym, term in _definitions(conjunct):
+            if sym == last:
+                hints[order[last]].append(term)
+    domains: list[list[Fraction | bool]] = [
+        [True, False]
+        if sym.sort == "bool"
+        else list(_candidates(constants.get(sym, set()), sym.sort == "int"))
+        for sym in symbols
+    ]
+    return _assign(symbols, domains, due, hints) is True
+
+
+def _definitions(conjunct: A.Expr) -> list[tuple[A.Sym, A.Expr]]:
+    """`s == term` (either way round) with `s` not in `term`."""
+    if not isinstance(conjunct, A.Binary) or conjunct.op != "==":
+        return []
+    return [
+        (side, other)
+        for side, other in (
+            (conjunct.left, conjunct.right),
+            (conjunct.right, conjunct.left),
+        )
+        if isinstance(side, A.Sym) and side not in A.syms(other)
+    ]
+
+
+def _defines(conjunct: A.Expr) -> set[A.Sym]:
+    return {sym for sym, _ in _definitions(conjunct)}
+
+
+def _assign(
+    symbols: list[A.Sym],
+    domains: list[list[Fraction | bool]],
+    due: list[list[A.Expr]],
+    hints: list[list[A.Expr]],
+) -> bool | None:
+    """Backtracking over the symbols in order; None when out of steps."""
+    values: Values = {}
+    steps = 0
+    stack: list[tuple[int, list[Fraction | bool]]] = []
+
+    def options(index: int) -> list[Fraction | bool]:
+        first: list[Fraction | bool] = []
+        for term in hints[index]:
+            value = _value(term, values)
+            if _fits(value, symbols[index].sort):
+                first.append(value)  # type: ignore[arg-type]
+        return first + domains[index]
+
+    if not symbols:
+        return True
+    stack.append((0, options(0)))
+    while stack:
+        index, pending = stack[-1]
+        if not pending:
+            stack.pop()
+            values.pop(symbols[index], None)
+            continue
+        steps += 1
+        if steps > MAX_STEPS:
+            return None
+        values[symbols[index]] = pending.pop(0)
+        if all(_value(c, values) is True for c in due[index]):
+            if index + 1 == len(symbols):
+                return True
+            stack.append((index + 1, options(index + 1)))
+    return False
+
+
+def closed_value(expr: A.Expr) -> Fraction | bool | None:
+    """The exact value of a term without names or symbols (`10 <= 0`), as the
+    solver gives it; None for anything else."""
+    for node in A.walk(expr):
+        if isinstance(node, A.Num):
+            if abs(node.value.numerator) > _LIMIT or node.value.denominator > _LIMIT:
+                return None
+        elif not isinstance(node, (A.Bool, A.Unary, A.Binary, A.Func, A.Ite)):
+            return None
+    return _value(expr, {})
+
+
+def _fits(value: object, sort: str) -> bool:
+    """A value a symbol of `sort` can take."""
+    if isinstance(value, bool):
+        return sort == "bool"
+    if isinstance(value, Fraction):
+        return sort == "real" or (sort == "int" and value.denominator == 1)
+    return False
+
+
 Value = Fraction | bool | None
+# A name's value by its name (RF509's refinements), a solver symbol's by the symbol.
+Values = dict[object, Fraction | bool]
 
 
-def _value(expr: A.Expr, values: dict[str, Fraction]) -> Value:
-    """The exact value, or None where the solver's meaning is not a number's."""
+def _value(expr: A.Expr, values: Values) -> Value:
+    """The exact value, or None where the solver's meaning is not a number's or a
+    boolean's as the encoder (`smt.encode`) gives it."""
     if isinstance(expr, A.Num):
         return expr.value
     if isinstance(expr, A.Name):
         return values.get(expr.name)
+    if isinstance(expr, A.Sym):
+        return values.get(expr)
+    if isinstance(expr, A.Bool):
+        return expr.value
     if isinstance(expr, A.Unary):
         inner = _value(expr.operand, values)
         if expr.op == "not":
@@ -105,19 +251,24 @@ def _value(expr: A.Expr, values: dict[str, Fraction]) -> Value:
         cond = _value(expr.cond, values)
         if not isinstance(cond, bool):
             return None
-        return _value(expr.then if cond else expr.orelse, values)
+        then, orelse = _value(expr.then, values), _value(expr.orelse, values)
+        if isinstance(then, bool) != isinstance(orelse, bool):
+            return None  # branches of two sorts: the encoder's Ite is not this one
+        return then if cond else orelse
     if isinstance(expr, A.Binary):
         return _binary(expr, values)
     return None
 
 
-def _binary(expr: A.Binary, values: dict[str, Fraction]) -> Value:
+def _binary(expr: A.Binary, values: Values) -> Value:
     left, right = _value(expr.left, values), _value(expr.right, values)
     op = expr.op
     if op in ("and", "or"):
         if not isinstance(left, bool) or not isinstance(right, bool):
             return None
         return (left and right) if op == "and" else (left or right)
+    if op in ("==", "!=") and isinstance(left, bool) and isinstance(right, bool):
+        return (left == right) if op == "==" else (left != right)
     if not isinstance(left, Fraction) or not isinstance(right, Fraction):
         return None  # booleans compared, or an unknown part
     if op == "/":

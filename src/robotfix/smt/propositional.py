@@ -10,9 +10,12 @@ VC. Otherwise the question needs z3.
 
 from __future__ import annotations
 
+import itertools
+from fractions import Fraction
 from typing import Any
 
 from robotfix.annotations import ast as A
+from robotfix.annotations.witness import closed_value
 
 # Search nodes one question may visit before it is left to z3.
 BUDGET = 4000
@@ -49,6 +52,10 @@ class _Skeleton:
             if op in ("==", "!=") and _boolean(left) and _boolean(right):
                 same = ("iff", self.formula(left), self.formula(right))
                 return same if op == "==" else ("not", same)
+            if op in COMPARISONS:
+                known = closed_value(expr)  # `10 <= 0`: a constant, not a proposition
+                if isinstance(known, bool):
+                    return ("const", known)
             if op in NEGATED:
                 return ("not", self.atom(A.Binary(NEGATED[op], left, right), False))
             if op in COMPARISONS:
@@ -105,12 +112,61 @@ def satisfiable(parts: list[A.Expr]) -> bool | None:
     formulas = [skeleton.formula(p) for p in parts]
     if len(skeleton.atoms) > MAX_ATOMS:
         return None
+    formulas += _exclusions(skeleton.atoms)
     found = _search(formulas, len(skeleton.atoms))
     if found is None:
         return None
     if not found:
         return False  # no model of the skeleton: none of the VC
     return None if skeleton.arithmetic else True
+
+
+def _exclusions(atoms: dict[object, int]) -> list[Formula]:
+    """`s == 1` and `s == -1` are not both true: one clause per such pair, so that
+    a path that sets a symbol to one constant and tests it for another is ruled out
+    as it is by the numbers (the only arithmetic the skeleton knows)."""
+    seen: dict[A.Sym, list[tuple[Fraction, int]]] = {}
+    for key, index in atoms.items():
+        if not isinstance(key, A.Binary) or key.op != "==":
+            continue
+        for sym, other in ((key.left, key.right), (key.right, key.left)):
+            value = closed_value(other)
+            if isinstance(sym, A.Sym) and isinstance(value, Fraction):
+                seen.setdefault(sym, []).append((value, index))
+    clauses: list[Formula] = []
+    for found in seen.values():
+        for (a, i), (b, j) in itertools.combinations(found, 2):
+            if a != b:
+                clauses.append(("not", ("and", ("atom", i), ("atom", j))))
+    return clauses
+
+
+def components(parts: list[A.Expr]) -> list[list[A.Expr]]:
+    """`parts` in groups that share no solver symbol, in order of first part. The
+    parts have a model together exactly when each group has one (a name, or any
+    term the encoder cannot read, is a fresh constant at each occurrence, so it
+    joins nothing), and a small group is searched quickly."""
+    parent: dict[int, int] = {}
+
+    def root(ident: int) -> int:
+        while parent[ident] != ident:
+            parent[ident] = parent[parent[ident]]
+            ident = parent[ident]
+        return ident
+
+    owners: list[list[int]] = []
+    for part in parts:
+        idents = [s.ident for s in A.syms(part)]
+        for ident in idents:
+            parent.setdefault(ident, ident)
+        for other in idents[1:]:
+            parent[root(other)] = root(idents[0])
+        owners.append(idents)
+    groups: dict[object, list[A.Expr]] = {}
+    for index, (part, idents) in enumerate(zip(parts, owners, strict=True)):
+        key: object = root(idents[0]) if idents else ("closed", index)
+        groups.setdefault(key, []).append(part)
+    return list(groups.values())
 
 
 def _search(formulas: list[Formula], count: int) -> bool | None:

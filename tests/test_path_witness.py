@@ -1,0 +1,212 @@
+"""Path questions answered without z3 (issue 13 item 7): "possible" only with a
+witness checked by exact evaluation, "impossible" only from the boolean skeleton;
+z3 gives the same verdict on every question so answered."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from pathlib import Path
+from typing import Any
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from robotfix import api
+from robotfix.analysis.vc import VC, Proved, Undecided, Unproven, Verdict, Violated
+from robotfix.annotations import ast as A
+from robotfix.annotations.parser import parse_predicate
+from robotfix.annotations.witness import holds_somewhere
+from robotfix.config import Config
+from robotfix.smt.propositional import components, satisfiable
+from robotfix.smt.solver import check
+from tests.test_cases import catalog_for
+
+CASES = Path(__file__).parent / "cases"
+X, Y, N, B = A.Sym(1, "real"), A.Sym(2, "real"), A.Sym(3, "int"), A.Sym(4, "bool")
+S = A.Sym(5, "str")
+
+
+def term(text: str) -> A.Expr:
+    return A.substitute(parse_predicate(text), {"x": X, "y": Y, "n": N, "b": B})
+
+
+def question(*parts: str) -> VC:
+    """Can every part hold? (the condition is the last part)"""
+    *facts, condition = (term(p) for p in parts)
+    return VC(tuple(facts), A.Unary("not", condition), question=True)
+
+
+def same_class(fast: Verdict, slow: Verdict) -> bool:
+    if isinstance(slow, Undecided):
+        return True  # z3 gave up where an exact answer was found
+    possible = (Violated, Unproven)
+    return isinstance(fast, Proved) == isinstance(slow, Proved) and (
+        isinstance(fast, possible) == isinstance(slow, possible)
+    )
+
+
+POSSIBLE = [
+    ("x > 0", "x < 1"),
+    ("x == y + 3", "y > 7"),
+    ("n >= 2", "n * 3 == 6"),
+    ("b", "x > 2 or b == False"),
+    ("abs(x) <= 1", "min(x, y) == y", "y < -1 or y > 0"),
+    ("n == 4", "x == n / 2", "x > 1.5"),
+]
+
+IMPOSSIBLE_BY_SKELETON = [
+    ("b", "not b and x > 0"),
+    ("b and 10 <= 0",),  # a closed comparison is a constant
+    ("n == -1 or b", "not b", "n == 1"),  # one symbol, two constants
+    ("x > 0", "not (x > 0)"),
+]
+
+LEFT_TO_Z3 = [
+    ("n > 0", "n < 1"),  # impossible only by the numbers
+    ("x > 2", "x < 1"),
+    ("x * x == 2",),  # possible, but not at any candidate
+]
+
+
+@pytest.mark.parametrize("parts", POSSIBLE, ids=" ; ".join)
+def test_a_witnessed_question_is_possible_and_z3_agrees(parts: tuple[str, ...]) -> None:
+    vc = question(*parts)
+    assert holds_somewhere([*vc.facts, A.Unary("not", vc.goal)])
+    assert api._without_solver(vc) == Unproven((), ())
+    assert isinstance(check(vc), (Violated, Unproven))
+
+
+@pytest.mark.parametrize("parts", IMPOSSIBLE_BY_SKELETON, ids=" ; ".join)
+def test_the_skeleton_rules_out_and_z3_agrees(parts: tuple[str, ...]) -> None:
+    vc = question(*parts)
+    assert api._without_solver(vc) == Proved()
+    assert check(vc) == Proved()
+
+
+@pytest.mark.parametrize("parts", LEFT_TO_Z3, ids=" ; ".join)
+def test_what_is_neither_witnessed_nor_ruled_out_goes_to_z3(
+    parts: tuple[str, ...],
+) -> None:
+    assert api._without_solver(question(*parts)) is None
+
+
+def test_a_witness_is_only_for_questions() -> None:
+    vc = question("x > 0", "x < 1")
+    plain = VC(vc.facts, vc.goal)  # a check wants z3's counterexample
+    assert api._without_solver(plain) is None
+
+
+def test_terms_without_a_value_here_have_no_witness() -> None:
+    assert not holds_somewhere([A.Binary("==", S, A.Str("a"))])
+    speed = A.Name("speed")
+    assert not holds_somewhere([A.Binary("<", speed, A.Num(Fraction(1), True))])
+    assert not holds_somewhere([term("x / (y - y) > 1")])
+    huge = A.Num(Fraction(10**200), True)
+    assert not holds_somewhere([A.Binary("<", X, huge)])
+
+
+def test_groups_that_share_no_symbol_are_searched_apart() -> None:
+    parts = [term("x > 0"), term("b"), term("y == x"), term("10 > 1"), term("n < 2")]
+    assert components(parts) == [
+        [parts[0], parts[2]],
+        [parts[1]],
+        [parts[3]],
+        [parts[4]],
+    ]
+    # 80 unrelated booleans (more than the skeleton searches) and a contradiction
+    noise = [
+        A.Binary("or", A.Sym(10 + i, "bool"), A.Sym(60 + i, "bool")) for i in range(40)
+    ]
+    contradiction = [term("b"), term("not b")]
+    vc = VC(tuple(noise + contradiction[:1]), term("b"), question=True)
+    assert satisfiable([*noise, *contradiction]) is None
+    assert api._without_solver(vc) == Proved()
+
+
+def _questions(paths: list[Path], monkeypatch: pytest.MonkeyPatch) -> Any:
+    asked: list[VC] = []
+    original = api.Discharger._decide
+
+    def decide(self: api.Discharger, vc: VC) -> Verdict:
+        if vc.question:
+            asked.append(vc)
+        return original(self, vc)
+
+    with monkeypatch.context() as patch:
+        patch.setattr(api.Discharger, "_decide", decide)
+        found = [
+            repr(d)
+            for path in paths
+            for d in api.check_source(
+                path.read_text(encoding="utf-8"),
+                str(path),
+                Config(),
+                catalog_for(path.parent),
+            )
+        ]
+    return found, asked
+
+
+def test_every_question_of_the_cases_gets_z3s_verdict(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    paths = sorted(CASES.rglob("*.py"))
+    _, asked = _questions(paths, monkeypatch)
+    answered = [(vc, api._without_solver(vc)) for vc in asked]
+    witnessed = [vc for vc, verdict in answered if isinstance(verdict, Unproven)]
+    assert witnessed, "the cases exercise the witnesses"
+    for vc, verdict in answered:
+        if verdict is not None:
+            assert same_class(verdict, check(vc)), vc
+
+
+def test_the_cases_give_the_diagnostics_of_z3_alone(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    paths = sorted(CASES.rglob("*.py"))
+    fast, _ = _questions(paths, monkeypatch)
+    with monkeypatch.context() as patch:
+        patch.setattr(api, "_without_solver", lambda vc: None)
+        patch.setattr(api.Discharger, "prepass", False)
+        slow, _ = _questions(paths, monkeypatch)
+    assert fast == slow
+
+
+def _conditions() -> st.SearchStrategy[A.Expr]:
+    leaves = st.one_of(
+        st.sampled_from([X, Y, N]),
+        st.integers(-2, 2).map(lambda v: A.Num(Fraction(v), True)),
+        st.just(A.Num(Fraction(1, 2), False)),
+    )
+    terms = st.recursive(
+        leaves,
+        lambda inner: st.one_of(
+            st.builds(A.Binary, st.sampled_from(["+", "-", "*"]), inner, inner),
+            inner.map(lambda t: A.Func("abs", (t,))),
+        ),
+        max_leaves=3,
+    )
+    compare = st.builds(
+        A.Binary, st.sampled_from(["<", "<=", ">", ">=", "==", "!="]), terms, terms
+    )
+    atoms = st.one_of(compare, st.just(B))
+    return st.recursive(
+        atoms,
+        lambda inner: st.one_of(
+            st.builds(A.Binary, st.sampled_from(["and", "or"]), inner, inner),
+            st.builds(A.Unary, st.just("not"), inner),
+        ),
+        max_leaves=3,
+    )
+
+
+@settings(max_examples=300, deadline=None)
+@given(facts=st.lists(_conditions(), max_size=3), condition=_conditions())
+def test_z3_agrees_with_every_answer_without_it(
+    facts: list[A.Expr], condition: A.Expr
+) -> None:
+    vc = VC(tuple(facts), A.Unary("not", condition), question=True)
+    verdict = api._without_solver(vc)
+    if verdict is not None:
+        assert same_class(verdict, check(vc)), (vc, verdict)
