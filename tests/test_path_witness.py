@@ -4,6 +4,7 @@ z3 gives the same verdict on every question so answered."""
 
 from __future__ import annotations
 
+import os
 from fractions import Fraction
 from pathlib import Path
 from typing import Any
@@ -12,12 +13,13 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from robotfix import api
+from robotfix import api, run
 from robotfix.analysis.vc import VC, Proved, Undecided, Unproven, Verdict, Violated
 from robotfix.annotations import ast as A
 from robotfix.annotations.parser import parse_predicate
 from robotfix.annotations.witness import holds_somewhere
 from robotfix.config import Config
+from robotfix.rules import UNREADABLE_FILE
 from robotfix.smt.propositional import components, satisfiable
 from robotfix.smt.solver import check
 from tests.test_cases import catalog_for
@@ -210,3 +212,54 @@ def test_z3_agrees_with_every_answer_without_it(
     verdict = api._without_solver(vc)
     if verdict is not None:
         assert same_class(verdict, check(vc)), (vc, verdict)
+
+
+# Item 7's other half: a run without the cache reads each file when it checks it.
+
+NODE = """import rclpy
+from rclpy.node import Node
+
+
+class Talker(Node):
+    def __init__(self) -> None:
+        super().__init__("talker")
+        self.count = 0
+"""
+
+
+def test_a_file_is_read_when_it_is_checked(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    for index in range(4):
+        (tmp_path / f"node{index}.py").write_text(NODE, encoding="utf-8")
+    events: list[tuple[str, str]] = []
+    read, check_file = run.read_regular, run.check_file
+
+    def reading(path: Any, *args: Any, **kwargs: Any) -> bytes:
+        events.append(("read", Path(path).name))
+        return read(path, *args, **kwargs)
+
+    def checking(path: str, *args: Any, **kwargs: Any) -> Any:
+        events.append(("check", Path(path).name))
+        return check_file(path, *args, **kwargs)
+
+    monkeypatch.setattr(run, "read_regular", reading)
+    monkeypatch.setattr(run, "check_file", checking)
+    result = run.check_paths([tmp_path], Config(root=tmp_path), None, 1, False)
+    assert not result.internal_errors
+    names = [f"node{index}.py" for index in range(4)]
+    assert events == [(kind, name) for name in names for kind in ("read", "check")]
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="needs FIFOs")
+@pytest.mark.parametrize("jobs", [1, 2])
+def test_an_unreadable_file_read_late_still_says_so(tmp_path: Path, jobs: int) -> None:
+    for index in range(3):
+        (tmp_path / f"node{index}.py").write_text(NODE, encoding="utf-8")
+    fifo = tmp_path / "pipe.py"
+    os.mkfifo(fifo)
+    paths = sorted(tmp_path.glob("*.py"))
+    result = run.check_paths(paths, Config(root=tmp_path), None, jobs, False)
+    unreadable = [d.path for d in result.diagnostics if d.rule is UNREADABLE_FILE]
+    assert unreadable == [str(fifo)]
+    assert not result.internal_errors

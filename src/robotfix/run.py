@@ -138,8 +138,13 @@ def _check_paths(
         project.known = dict(cache.summaries)
         project.sha_of = cache.sha  # the stat fast path for imported modules too
     parameters: dict[str, ParamSummary] = {}  # file -> its parameters, as checked
-    todo: list[tuple[Path, bytes]] = []
+    # without the cache, a file is read when it is checked (None here), so that
+    # the bytes of every file are not all held at once
+    todo: list[tuple[Path, bytes | None]] = []
     for index, file in enumerate(files, start=1):
+        if cache is None:
+            todo.append((file, None))
+            continue
         # with the cache, an unchanged file (by its stat) is not even read
         digest = cache.sha(file) if cache is not None else None
         cached = (
@@ -163,7 +168,7 @@ def _check_paths(
         else:
             todo.append((file, data))
     done = len(files) - len(todo)
-    contents = dict(todo)
+    contents = {path: data for path, data in todo if data is not None}
     if todo and (found.parameter_files or found.parameter_definitions):
         from robotfix.paramcheck import MENTIONS  # not on a fully cached run
 
@@ -338,7 +343,7 @@ def _catalog(interfaces: _Interfaces, config: Config) -> MsgCatalog:
 
 
 def _check_all(
-    todo: list[tuple[Path, bytes]],
+    todo: list[tuple[Path, bytes | None]],
     interfaces: _Interfaces,
     config: Config,
     catalog: MsgCatalog,
@@ -349,7 +354,7 @@ def _check_all(
     one per core and per file; if the pool cannot start (no process or file
     descriptor left), the files are checked here instead."""
     jobs = min(jobs, default_jobs(), len(todo))
-    size = sum(len(data) for _, data in todo)
+    size = sum(_size(path, data) for path, data in todo)
     if jobs <= 1 or len(todo) < MIN_PARALLEL or size < MIN_PARALLEL_BYTES:
         project.expect([path for path, _ in todo])
         for path, data in todo:
@@ -362,7 +367,7 @@ def _check_all(
     chunks = _chunks(todo, jobs)
     method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
     pool: ProcessPoolExecutor | None = None
-    pending: dict[Future[list[FileResult]], list[tuple[Path, bytes]]] = {}
+    pending: dict[Future[list[FileResult]], list[tuple[Path, bytes | None]]] = {}
     global _WORKER
     # a worker's parameter summaries are not sent back: paramcheck parses the files
     project.parameter_words = ()
@@ -404,29 +409,32 @@ def _check_all(
 
 
 def _chunks(
-    todo: list[tuple[Path, bytes]], jobs: int
-) -> list[list[tuple[Path, bytes]]]:
+    todo: list[tuple[Path, bytes | None]], jobs: int
+) -> list[list[tuple[Path, bytes | None]]]:
     """The worker tasks: the files of one ROS package (or folder) stay together, so
     the summaries of the modules they import are built by one worker, not by each
     (-j 2 on corpus2: 886 summaries built for 569 modules with chunks of 8 files);
     a task holds at most 1/(jobs * CHUNKS_PER_JOB) of the source, and the largest
     go first, so the workers finish together. Which worker checks a file changes
     no output (`project/summary.py`)."""
-    cap = max(1, sum(len(data) for _, data in todo) // (jobs * CHUNKS_PER_JOB))
-    chunks: list[list[tuple[Path, bytes]]] = []
-    current: list[tuple[Path, bytes]] = []
+    sized = [(path, data, _size(path, data)) for path, data in todo]
+    cap = max(1, sum(size for _, _, size in sized) // (jobs * CHUNKS_PER_JOB))
+    chunks: list[list[tuple[Path, bytes | None]]] = []
+    current: list[tuple[Path, bytes | None]] = []
     held, group = 0, None
-    for path, data in todo:
+    sizes: dict[int, int] = {}
+    for path, data, size in sized:
         key = package_folder(path) or path.parent
-        if current and (key != group or held + len(data) > cap):
+        if current and (key != group or held + size > cap):
             chunks.append(current)
+            sizes[id(current)] = held
             current, held = [], 0
         current.append((path, data))
-        held += len(data)
+        held += size
         group = key
     if current:
         chunks.append(current)
-    sizes = {id(c): sum(len(data) for _, data in c) for c in chunks}
+        sizes[id(current)] = held
     return sorted(chunks, key=lambda c: -sizes[id(c)])
 
 
@@ -448,9 +456,29 @@ def _lost(path: Path) -> FileResult:
     return FileResult(str(path), [], InternalError(str(path), summary, summary))
 
 
+def _size(path: Path, data: bytes | None) -> int:
+    """A file's size in bytes: of what was read, or else by its stat."""
+    if data is not None:
+        return len(data)
+    try:
+        return os.stat(path).st_size
+    except OSError:
+        return 0  # it says why when it is read
+
+
 def _check_one(
-    path: Path, data: bytes, catalog: MsgCatalog, config: Config, project: Project
+    path: Path,
+    data: bytes | None,
+    catalog: MsgCatalog,
+    config: Config,
+    project: Project,
 ) -> FileResult:
+    if data is None:  # read only now: one file's bytes held at a time
+        try:  # a FIFO or a device: refused, never blocks
+            data = read_regular(path)
+        except UnreadableError as err:
+            reason = f"cannot read: {err.reason}"
+            return FileResult(str(path), [messages.unreadable(str(path), reason)])
     catalog.touched = set()
     try:
         resolver = project.resolver(path)
@@ -503,7 +531,7 @@ def _start_worker(interfaces: _Interfaces | None, config: Config) -> None:
         _WORKER = (catalog, config, project)
 
 
-def _worker_check(chunk: list[tuple[Path, bytes]]) -> list[FileResult]:
+def _worker_check(chunk: list[tuple[Path, bytes | None]]) -> list[FileResult]:
     assert _WORKER is not None
     catalog, config, project = _WORKER
     project.expect([path for path, _ in chunk])
