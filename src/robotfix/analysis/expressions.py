@@ -63,6 +63,14 @@ STATIC_VALUES = frozenset(
 )
 
 
+# (evaluator class, node class) -> its `eval_<node class>` function, or None: the
+# dispatch of `ExpressionEvaluator.eval` without building a name and a bound method
+_EVAL: dict[tuple[type, type], Callable[..., Value] | None] = {}
+_MISSING: Callable[..., Value] = lambda *_: NONE  # noqa: E731 - a marker only
+# terms with no subterms: never larger than TERM_LIMIT
+_LEAF_TERMS = (A.Sym, A.Num, A.Bool, A.Str, A.Name)
+
+
 class ExpressionEvaluator:
     def __init__(self, ctx: FileContext, program: Program) -> None:
         self.ctx = ctx
@@ -112,14 +120,23 @@ class ExpressionEvaluator:
     # -- dispatch ------------------------------------------------------------
     def eval(self, node: ast.expr, state: State) -> Value:
         self.ctx.step(node)
-        method = getattr(self, f"eval_{type(node).__name__}", None)
+        kind = type(node)
+        key = (type(self), kind)
+        method = _EVAL.get(key, _MISSING)
+        if method is _MISSING:  # the evaluator's class's method for this node class
+            method = _EVAL[key] = getattr(type(self), f"eval_{kind.__name__}", None)
         if method is None:
             self.eval_children(node, state)
             return self.unknown(node)
-        result: Value = method(node, state)
-        if type(node) is ast.Attribute and type(result.term) is A.Sym:
-            self.attribute_terms[id(node)] = result.term.ident
-        if result.term is not None and A.larger_than(result.term, TERM_LIMIT):
+        result: Value = method(self, node, state)
+        term = result.term
+        if kind is ast.Attribute and type(term) is A.Sym:
+            self.attribute_terms[id(node)] = term.ident
+        if (
+            term is not None
+            and type(term) not in _LEAF_TERMS
+            and A.larger_than(term, TERM_LIMIT)
+        ):
             # e.g. `x = x + x` in a row: the term's tree doubles each time
             return replace(
                 self.unknown(node, result.kind, result.unit), scale=result.scale

@@ -9,7 +9,7 @@ import ast
 from collections import Counter
 from dataclasses import dataclass, field
 
-from robotfix.astwalk import children, fields, walk
+from robotfix.astwalk import FIELDS, children, fields, walk
 
 FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef)
 COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
@@ -125,21 +125,23 @@ def index_scope(index: FileIndex, node: ast.AST) -> ScopeNames:
 
 
 def _drain(index: FileIndex, todo: Todo, root: int) -> None:
+    scopes, pop, append = index.scopes, todo.pop, todo.append
+    known = FIELDS  # node class -> fields that may hold nodes
+    node_class = ast.AST
     while todo:
-        node, owner, cls, self_name = todo.pop()
-        names = index.scopes[owner]
+        node, owner, cls, self_name = pop()
         kind = type(node)
         if kind is ast.Name:
-            if not isinstance(node.ctx, ast.Load):  # type: ignore[attr-defined]
-                names.local_names.add(node.id)  # type: ignore[attr-defined]
+            if node.ctx.__class__ is not ast.Load:  # type: ignore[attr-defined]
+                scopes[owner].local_names.add(node.id)  # type: ignore[attr-defined]
             continue
         if kind in FUNCTIONS or kind is ast.Lambda:
             _enter_function(index, node, owner, cls, self_name, todo)  # type: ignore[arg-type]
             continue
         if kind is ast.ClassDef:
             assert isinstance(node, ast.ClassDef)
-            names.local_names.add(node.name)
-            index.scopes[id(node)] = ScopeNames()
+            scopes[owner].local_names.add(node.name)
+            scopes[id(node)] = ScopeNames()
             index.class_scopes.add(id(node))
             top = node.name if owner == root else cls
             todo.extend(
@@ -150,38 +152,63 @@ def _drain(index: FileIndex, todo: Todo, root: int) -> None:
             continue
         if kind in COMPREHENSIONS:  # a scope of its own; its first iterable is not
             inner = id(node)
-            index.scopes[inner] = ScopeNames()
+            scopes[inner] = ScopeNames()
             first = node.generators[0]  # type: ignore[attr-defined]
-            todo.append((first.iter, owner, cls, self_name))
+            append((first.iter, owner, cls, self_name))
             rest = [first.target, *first.ifs, *node.generators[1:]]  # type: ignore[attr-defined]
             rest += [c for c in children(node) if not isinstance(c, ast.comprehension)]
             todo.extend((child, inner, cls, self_name) for child in rest)
             continue
-        if kind is ast.Assign or kind is ast.AugAssign or kind is ast.AnnAssign:
-            targets = getattr(node, "targets", None) or [node.target]  # type: ignore[attr-defined]
-            for part in walk(targets):
-                if type(part) is ast.Attribute:
-                    index.assigned[part.attr] += 1
-        if kind is ast.Import or kind is ast.ImportFrom:
-            _record_import(index, names, node)  # type: ignore[arg-type]
-        elif kind is ast.Global or kind is ast.Nonlocal:
-            names.global_names.update(node.names)  # type: ignore[attr-defined]
-        elif kind is ast.ExceptHandler and node.name:  # type: ignore[attr-defined]
-            names.local_names.add(node.name)  # type: ignore[attr-defined]
-        elif kind is ast.AnnAssign:
-            _record_annotation(index, names, node, cls, self_name)  # type: ignore[arg-type]
-        elif kind is ast.Call:
+        if kind is ast.Call:
             index.calls.append((cls, node))  # type: ignore[arg-type]
-        elif kind is ast.Attribute and node.ctx.__class__ is not ast.Load:  # type: ignore[attr-defined]
-            index.attribute_stores.add(node.attr)  # type: ignore[attr-defined]
-        for name in fields(kind):  # not contexts, operators and strings
+        elif kind is ast.Attribute:
+            if node.ctx.__class__ is not ast.Load:  # type: ignore[attr-defined]
+                index.attribute_stores.add(node.attr)  # type: ignore[attr-defined]
+        elif kind is ast.Constant:
+            continue  # no node under it
+        elif kind in _RECORDED:
+            _record(index, scopes[owner], node, kind, cls, self_name)
+        names = known.get(kind)
+        if names is None:
+            names = fields(kind)
+        for name in names:  # not contexts, operators and strings
             value = getattr(node, name, None)
             if value.__class__ is list:
                 for v in value:
-                    if isinstance(v, ast.AST):
-                        todo.append((v, owner, cls, self_name))
-            elif isinstance(value, ast.AST):
-                todo.append((value, owner, cls, self_name))
+                    if isinstance(v, node_class):
+                        append((v, owner, cls, self_name))
+            elif isinstance(value, node_class):
+                append((value, owner, cls, self_name))
+
+
+# the statements and nodes `_record` reads (besides walking under them)
+_RECORDED = frozenset(
+    {ast.Assign, ast.AugAssign, ast.AnnAssign, ast.Import, ast.ImportFrom}
+    | {ast.Global, ast.Nonlocal, ast.ExceptHandler}
+)
+
+
+def _record(
+    index: FileIndex,
+    names: ScopeNames,
+    node: ast.AST,
+    kind: type,
+    cls: str | None,
+    self_name: str | None,
+) -> None:
+    if kind is ast.Assign or kind is ast.AugAssign or kind is ast.AnnAssign:
+        targets = getattr(node, "targets", None) or [node.target]  # type: ignore[attr-defined]
+        for part in walk(targets):
+            if type(part) is ast.Attribute:
+                index.assigned[part.attr] += 1
+    if kind is ast.Import or kind is ast.ImportFrom:
+        _record_import(index, names, node)  # type: ignore[arg-type]
+    elif kind is ast.Global or kind is ast.Nonlocal:
+        names.global_names.update(node.names)  # type: ignore[attr-defined]
+    elif kind is ast.ExceptHandler and node.name:  # type: ignore[attr-defined]
+        names.local_names.add(node.name)  # type: ignore[attr-defined]
+    elif kind is ast.AnnAssign:
+        _record_annotation(index, names, node, cls, self_name)  # type: ignore[arg-type]
 
 
 def _enter_function(

@@ -773,7 +773,10 @@ class Interpreter(CallEvaluator):
         Returns the names they may bind."""
         calls = False
         lists: set[str] = set()  # names of lists that `nodes` mention
-        keeps_unit = _accumulated(nodes)
+        # what `_accumulated(nodes)` reads, gathered by the walk below
+        summed: set[str] = set()
+        sum_targets: set[int] = set()
+        stores: list[ast.Name] = []
         watched = state.shared.watched  # only their changes need a new version
         bound_at: dict[str, ast.AST] = {}
         constant: dict[str, set[str]] = {}
@@ -788,6 +791,8 @@ class Interpreter(CallEvaluator):
                         lists.add(child.id)  # type: ignore[attr-defined]
                     if type(child.ctx) is not ast.Load:  # type: ignore[attr-defined]
                         bound_at.setdefault(child.id, child)  # type: ignore[attr-defined]
+                        if type(child.ctx) is ast.Store:  # type: ignore[attr-defined]
+                            stores.append(child)  # type: ignore[arg-type]
                 elif kind is ast.Attribute:
                     if type(child.ctx) is ast.Store:  # type: ignore[attr-defined]
                         key = attribute_key(child)  # type: ignore[arg-type]
@@ -812,9 +817,11 @@ class Interpreter(CallEvaluator):
                             self._changed_root(arg, state)
                 elif kind is ast.Assign or kind is ast.AugAssign:
                     _constant_stores(child, constant)  # type: ignore[arg-type]
+                    _note_sum(child, summed, sum_targets)
                 elif kind in BINDER_KINDS:
                     for name in _binds(child):
                         bound_at.setdefault(name, child)
+        keeps_unit = _sums(summed, sum_targets, stores)
         if lists:  # those `nodes` may change (`xs.append(v)`, `xs[i] = v`, `b = xs`)
             if self.follows_lists():
                 lists &= containers.shared_names(nodes, changes=True)
@@ -1713,15 +1720,26 @@ def _accumulated(nodes: list[ast.stmt]) -> set[str]:
     targets: set[int] = set()
     stores: list[ast.Name] = []
     for child in walk(nodes):
-        if (
-            isinstance(child, ast.AugAssign)
-            and isinstance(child.target, ast.Name)
-            and isinstance(child.op, (ast.Add, ast.Sub))
-        ):
-            summed.add(child.target.id)
-            targets.add(id(child.target))
+        if isinstance(child, ast.AugAssign):
+            _note_sum(child, summed, targets)
         elif isinstance(child, ast.Name) and isinstance(child.ctx, ast.Store):
             stores.append(child)
+    return _sums(summed, targets, stores)
+
+
+def _note_sum(node: ast.AST, summed: set[str], targets: set[int]) -> None:
+    """`name += e` or `name -= e`: `name` is summed, and its target no plain store."""
+    if (
+        isinstance(node, ast.AugAssign)
+        and isinstance(node.target, ast.Name)
+        and isinstance(node.op, (ast.Add, ast.Sub))
+    ):
+        summed.add(node.target.id)
+        targets.add(id(node.target))
+
+
+def _sums(summed: set[str], targets: set[int], stores: list[ast.Name]) -> set[str]:
+    """The summed names that no other store under the same nodes binds."""
     if not summed:
         return summed
     return summed - {n.id for n in stores if id(n) not in targets}

@@ -165,7 +165,10 @@ def replace(obj: _T, /, **changes: object) -> _T:
 
 
 def sort_of(kind: str) -> str:
-    return {"int": "int", "bool": "bool", "str": "str"}.get(kind, "real")
+    return SORTS.get(kind, "real")
+
+
+SORTS = {"int": "int", "bool": "bool", "str": "str"}  # every other kind: real
 
 
 @dataclass(frozen=True)

@@ -14,6 +14,7 @@ from __future__ import annotations
 import ast
 import functools
 import os
+from collections import deque
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
@@ -252,7 +253,7 @@ def imported_names(tree: ast.Module, package: str | None) -> list[str]:
     from robotfix.analysis.imported import absolute
 
     found: list[str] = []
-    for node in ast.walk(tree):
+    for node in _statements(tree):
         if isinstance(node, ast.Import):
             found += [alias.name for alias in node.names]
         elif isinstance(node, ast.ImportFrom):
@@ -265,3 +266,26 @@ def imported_names(tree: ast.Module, package: str | None) -> list[str]:
                 found.append(base)
                 found += [f"{base}.{a.name}" for a in node.names if a.name != "*"]
     return found
+
+
+def _statements(tree: ast.Module) -> list[ast.AST]:
+    """The statements of `tree` (and the handlers and match cases that hold some),
+    in `ast.walk`'s order (breadth first), without visiting any expression: on real
+    files that is about a tenth of the nodes."""
+    out: list[ast.AST] = []
+    todo: deque[ast.AST] = deque(tree.body)
+    while todo:
+        node = todo.popleft()
+        out.append(node)
+        kind = node.__class__
+        names = _BODIES.get(kind)
+        if names is None:
+            names = _BODIES[kind] = tuple(f for f in kind._fields if f in _BODY_FIELDS)
+        for name in names:
+            todo.extend(getattr(node, name))
+    return out
+
+
+# the fields that hold statements (or handlers, or match cases), in `_fields` order
+_BODY_FIELDS = frozenset({"body", "orelse", "finalbody", "handlers", "cases"})
+_BODIES: dict[type, tuple[str, ...]] = {}

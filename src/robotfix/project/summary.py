@@ -563,6 +563,8 @@ def _stable(value: object) -> str:
     """`repr`, but the same in every process: AST nodes (whose repr is their
     address) by their kind and place, sets in sorted order. A fingerprint that
     changed from run to run re-checked every importer on every cached run."""
+    if value.__class__ in _PLAIN:  # most leaves: `repr`, without the tests below
+        return repr(value)
     if isinstance(value, ast.AST):
         place = [getattr(value, a, None) for a in ast_places]
         return f"<{type(value).__name__} {place}>"
@@ -581,6 +583,7 @@ def _stable(value: object) -> str:
 
 
 ast_places = ("lineno", "col_offset", "end_lineno", "end_col_offset")
+_PLAIN = frozenset({str, int, float, bool, type(None)})  # exactly these: no subclass
 
 
 def _key(path: Path | str) -> str:

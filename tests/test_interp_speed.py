@@ -1,0 +1,114 @@
+"""Issue 13 item 1, the interpreter's fast paths: each one equals the slow path it
+replaced (the slow path is kept here as the reference)."""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import pytest
+
+from robotfix.analysis.imported import absolute
+from robotfix.analysis.interpreter import _accumulated
+from robotfix.project.modules import imported_names
+
+CASES = Path(__file__).parent / "cases"
+
+NESTED = """\
+import os, sys as system
+from . import sibling
+from ..pkg import helper as h, other
+from .mod import *
+try:
+    import yaml
+except ImportError as err:
+    from json import loads
+else:
+    import a.b.c
+finally:
+    from x import y
+class Node:
+    import rclpy
+    def run(self):
+        if True:
+            from geometry_msgs.msg import Twist
+        with open("f") as f:
+            import math
+        while False:
+            import time
+        for _ in []:
+            pass
+        else:
+            from std_msgs import msg
+        f = lambda: __import__("not_an_import")
+match command:
+    case "go":
+        import go_module
+    case _:
+        from stop import now
+async def later():
+    async with lock:
+        import asyncio
+"""
+
+
+def _reference(tree: ast.Module, package: str | None) -> list[str]:
+    """`imported_names` as it was: every node of the tree, through `ast.walk`."""
+    found: list[str] = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            found += [alias.name for alias in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            base = (
+                absolute(package, node.level, node.module)
+                if node.level
+                else node.module
+            )
+            if base:
+                found.append(base)
+                found += [f"{base}.{a.name}" for a in node.names if a.name != "*"]
+    return found
+
+
+@pytest.mark.parametrize("package", [None, "pkg.sub.node"])
+def test_imported_names_visits_every_nesting_in_walk_order(
+    package: str | None,
+) -> None:
+    tree = ast.parse(NESTED)
+    found = imported_names(tree, package)
+    assert found == _reference(tree, package)
+    assert "go_module" in found and "stop.now" in found and "asyncio" in found
+
+
+def test_imported_names_equals_the_full_walk_on_every_case() -> None:
+    files = sorted(CASES.rglob("*.py"))
+    assert len(files) > 50
+    for path in files:
+        try:
+            tree = ast.parse(path.read_bytes())
+        except SyntaxError:
+            continue
+        assert imported_names(tree, "pkg.node") == _reference(tree, "pkg.node"), path
+
+
+def _old_accumulated(nodes: list[ast.stmt]) -> set[str]:
+    summed, targets, stores = set(), set(), []
+    for child in ast.walk(ast.Module(body=nodes, type_ignores=[])):
+        if (
+            isinstance(child, ast.AugAssign)
+            and isinstance(child.target, ast.Name)
+            and isinstance(child.op, (ast.Add, ast.Sub))
+        ):
+            summed.add(child.target.id)
+            targets.add(id(child.target))
+        elif isinstance(child, ast.Name) and isinstance(child.ctx, ast.Store):
+            stores.append(child)
+    return summed - {n.id for n in stores if id(n) not in targets}
+
+
+def test_accumulated_names_are_those_only_ever_summed() -> None:
+    body = ast.parse(
+        "total += d\nother -= d\nscaled *= 2\nreset += 1\nreset = 0\n"
+        "[seen for seen in xs]\nseen += 1\n(walrus := 3)\nwalrus += 1\n"
+    ).body
+    assert _accumulated(body) == {"total", "other"} == _old_accumulated(body)
