@@ -13,6 +13,7 @@ import pytest
 
 from robotfix.api import catalog_problems, check_source, interface_files
 from robotfix.config import Config
+from robotfix.diagnostics import Diagnostic
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.testing.expectations import compare, read_expectations
 
@@ -28,12 +29,18 @@ def catalog_for(folder: Path) -> MsgCatalog:
     return catalog
 
 
+def check_case(path: Path) -> list[Diagnostic]:
+    """A case file checked as `test_case` checks it (its folder's interface files)."""
+    text = path.read_text(encoding="utf-8")
+    return check_source(text, str(path), Config(), catalog_for(path.parent))
+
+
 @pytest.mark.parametrize(
     "path", sorted(CASES.rglob("*.py")), ids=lambda p: str(p.relative_to(CASES))
 )
 def test_case(path: Path) -> None:
     source = path.read_text(encoding="utf-8")
-    found = check_source(source, str(path), Config(), catalog_for(path.parent))
+    found = check_case(path)
     problems = compare(read_expectations(source), found)
     if path.stem.endswith("_xfail"):
         assert problems, "this case passes now: drop the _xfail suffix"

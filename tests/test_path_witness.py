@@ -22,9 +22,8 @@ from robotfix.config import Config
 from robotfix.rules import UNREADABLE_FILE
 from robotfix.smt.propositional import components, satisfiable
 from robotfix.smt.solver import check
-from tests.test_cases import catalog_for
+from tests.test_cases import CASES, check_case
 
-CASES = Path(__file__).parent / "cases"
 X, Y, N, B = A.Sym(1, "real"), A.Sym(2, "real"), A.Sym(3, "int"), A.Sym(4, "bool")
 S = A.Sym(5, "str")
 
@@ -137,16 +136,7 @@ def _questions(paths: list[Path], monkeypatch: pytest.MonkeyPatch) -> Any:
 
     with monkeypatch.context() as patch:
         patch.setattr(api.Discharger, "_decide", decide)
-        found = [
-            repr(d)
-            for path in paths
-            for d in api.check_source(
-                path.read_text(encoding="utf-8"),
-                str(path),
-                Config(),
-                catalog_for(path.parent),
-            )
-        ]
+        found = [repr(d) for path in paths for d in check_case(path)]
     return found, asked
 
 

@@ -17,12 +17,10 @@ from robotfix.analysis.vc import VC, Proved, Undecided, Verdict
 from robotfix.annotations import ast as A
 from robotfix.annotations.parser import parse_predicate
 from robotfix.annotations.witness import has_witness
-from robotfix.config import Config
 from robotfix.smt.prepass import proves
 from robotfix.smt.solver import check
-from tests.test_cases import catalog_for
+from tests.test_cases import CASES, check_case
 
-CASES = Path(__file__).parent / "cases"
 X, Y, N = A.Sym(1, "real"), A.Sym(2, "real"), A.Sym(3, "int")
 
 
@@ -132,16 +130,7 @@ def _run(paths: list[Path], fast: bool, monkeypatch: pytest.MonkeyPatch) -> Any:
         patch.setattr(api.Discharger, "prepass", fast)
         if not fast:
             patch.setattr(consistency, "has_witness", no_witness)
-        found = [
-            repr(d)
-            for path in paths
-            for d in api.check_source(
-                path.read_text(encoding="utf-8"),
-                str(path),
-                Config(),
-                catalog_for(path.parent),
-            )
-        ]
+        found = [repr(d) for path in paths for d in check_case(path)]
     return found, asked
 
 

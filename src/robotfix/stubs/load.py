@@ -30,7 +30,7 @@ import ast
 import functools
 import hashlib
 import re
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -208,20 +208,20 @@ class StubSet:
 
     def member(self, cls: Class, attr: str) -> Function | None:
         """A method or property of a stub class, also an inherited one."""
-        seen: set[str] = set()
-        todo = [cls]
-        while todo:
-            here = todo.pop(0)
-            if here.qualname in seen:
-                continue
-            seen.add(here.qualname)
+        for here in self._lineage(cls):
             found = here.method(attr)
             if found is not None:
                 return found
-            todo += [b for b in map(self.lookup, here.bases) if isinstance(b, Class)]
         return None
 
     def attribute(self, cls: Class, attr: str) -> Attribute | None:
+        for here in self._lineage(cls):
+            if attr in here.attributes:
+                return here.attributes[attr]
+        return None
+
+    def _lineage(self, cls: Class) -> Iterator[Class]:
+        """The class, then its stub bases breadth first, each once."""
         seen: set[str] = set()
         todo = [cls]
         while todo:
@@ -229,10 +229,8 @@ class StubSet:
             if here.qualname in seen:
                 continue
             seen.add(here.qualname)
-            if attr in here.attributes:
-                return here.attributes[attr]
+            yield here
             todo += [b for b in map(self.lookup, here.bases) if isinstance(b, Class)]
-        return None
 
     def methods_named(self, name: str) -> list[Function]:
         """Every shipped or user stub method called `name`, for a call on a value
