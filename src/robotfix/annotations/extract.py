@@ -160,7 +160,9 @@ class _Reader:
         self.field_kind = field_kind
         self.problems: list[AnnotationProblem] = []
         self.hops = 0
-        self.synthetic: set[int] = set()  # nodes parsed from a string annotation
+        # nodes parsed from a string annotation, by id; kept alive with the reader so
+        # that no node allocated later (another module's tree) can take a freed id
+        self.synthetic: dict[int, ast.AST] = {}
 
     def read(self, node: ast.expr, names: Names) -> Refinement | None:
         node, names = self.form(node, names)
@@ -220,7 +222,7 @@ class _Reader:
         for child in ast.walk(parsed):
             if isinstance(child, ast.expr):
                 ast.copy_location(child, node)
-                self.synthetic.add(id(child))
+                self.synthetic[id(child)] = child
         return parsed
 
     def segment(self, node: ast.AST, names: Names) -> str | None:
