@@ -25,7 +25,9 @@ def _by_file(found: list[Diagnostic]) -> dict[str, list[Diagnostic]]:
     return grouped
 
 
-@pytest.mark.parametrize("name", ["ros2_pkg", "ros1_pkg", "cycle", "near_misses"])
+@pytest.mark.parametrize(
+    "name", ["ros2_pkg", "ros1_pkg", "cycle", "near_misses", "alias_pkg"]
+)
 def test_a_checked_tree_sees_its_own_modules(name: str) -> None:
     root = PACKAGES / name
     result = check_paths([root], Config(root=root))
@@ -173,3 +175,16 @@ def test_a_constant_read_through_a_helper_rechecks_both(tmp_path: Path) -> None:
     # MAX_SPEED: util.py's clamp_speed reads it, so driver.py too
     limits.write_text(limits.read_text().replace("= 0.22", "= 0.3"))
     assert _rechecked(root)[0] == 3
+
+
+def test_a_constant_an_imported_alias_names_rechecks_its_users(tmp_path: Path) -> None:
+    root = _copy(tmp_path, "alias_pkg")
+    _, first = _run(root)
+    assert len(first) == 2
+    limits = root / "alias_pkg" / "alias_pkg" / "limits.py"
+    # MAX_SPEED: Speed's refinement names it; cruise.py reads Speed through
+    # types.Cruise (a re-export and an alias of an alias)
+    limits.write_text(limits.read_text().replace("MAX_SPEED = 0.5", "MAX_SPEED = 0.7"))
+    count, after = _rechecked(root)
+    assert count == 3  # limits.py, types.py, cruise.py
+    assert len(after) == 1  # command(0.6, 0.0) is fine now

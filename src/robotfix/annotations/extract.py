@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import ast
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, replace
 from fractions import Fraction
 
@@ -108,6 +108,9 @@ class Names:
     col_of: Callable[[int, int], int]
     alias: Callable[[ast.expr], Alias | None] = lambda node: None
     path: str | None = None  # the module's file, when it may not be the checked one
+    # for an alias handed to another module: its own module's constants, which the
+    # text's names mean there (`"_ <= LIMIT"`); None: the text is read where written
+    constants: Mapping[str, A.Expr] | None = None
 
 
 @dataclass(frozen=True)
@@ -239,7 +242,7 @@ class _Reader:
             and base_names.qualname(base_node.value) in ANNOTATED
             else None
         )
-        used: list[tuple[A.Expr, str, tuple[int, int, bool]]] = []
+        used: list[tuple[A.Expr, str, tuple[int, int, bool], Names]] = []
         for meta in args[1:]:
             found_text = self.metadata(meta, names)
             if found_text is None:
@@ -258,7 +261,7 @@ class _Reader:
                 return None
             if text.strip() and not _is_refinement(predicate, self.self_name):
                 continue
-            used.append((predicate, text, start))
+            used.append((predicate, text, start, text_names))
         if not used:
             return nested
         item: str | None = None  # a container's elements' base type
@@ -283,11 +286,18 @@ class _Reader:
         unit = nested.unit if nested is not None else None
         parts = [nested.predicate] if nested is not None else []
         texts = [nested.text] if nested is not None else []
-        for predicate, text, start in used:
+        for predicate, text, start, text_names in used:
             found, values = _split(predicate, self.self_name, start, self.problems)
             if found is not None:
                 unit = found if unit is None else unit * found
-            for value in self.known_parts(values, mtype, start):
+            if text_names.constants is not None:
+                # written in another module: its names mean that module's constants,
+                # and a name unknown there is reported there (at its own line)
+                values = [A.substitute(v, dict(text_names.constants)) for v in values]
+                values = self.known_parts(values, mtype, start, [])
+            else:
+                values = self.known_parts(values, mtype, start, self.problems)
+            for value in values:
                 value = A.substitute(value, {self.self_name: A.Name(SELF)})
                 if "len" not in text:  # (most never mention it)
                     parts.append(value)
@@ -314,15 +324,19 @@ class _Reader:
         )
 
     def known_parts(
-        self, values: list[A.Expr], mtype: str | None, start: tuple[int, int, bool]
+        self,
+        values: list[A.Expr],
+        mtype: str | None,
+        start: tuple[int, int, bool],
+        problems: list[AnnotationProblem],
     ) -> list[A.Expr]:
-        """The parts whose names are known; on a message, with field paths made
-        relative to the value."""
+        """The parts whose names are known (the others reported to `problems`); on
+        a message, with field paths made relative to the value."""
         if mtype is None:
             return [
                 p
                 for p in values
-                if _names_known(p, self.self_name, self.known, start, self.problems)
+                if _names_known(p, self.self_name, self.known, start, problems)
             ]
         return [
             _relative(p, self.self_name)
@@ -334,7 +348,7 @@ class _Reader:
                 self.known,
                 self.field_kind,
                 start,
-                self.problems,
+                problems,
             )
         ]
 

@@ -383,7 +383,7 @@ def summarize(
     names = None
     for alias_name, node in ctx.index.aliases.items():
         if alias_name not in ctx.constants.changed_globals and _clean(ctx, node):
-            names = names or _detached(ctx)
+            names = names or replace(_detached(ctx), constants=terms)
             summary.aliases[alias_name] = Alias(node, names)
     summary.reexports = _top_level_imports(tree, ctx.imports)
     return _finish(summary)
@@ -545,7 +545,13 @@ def _finish(summary: ModuleSummary) -> ModuleSummary:
             summary.functions.get(name),
             summary.classes.get(name),
             summary.constants.get(name),
-            (ast.dump(alias.node), alias.node.lineno, aliases, reexports)
+            (
+                ast.dump(alias.node),
+                alias.node.lineno,
+                aliases,
+                reexports,
+                alias.names.constants,  # what the alias's names mean here
+            )
             if alias is not None
             else None,
             summary.reexports.get(name),
