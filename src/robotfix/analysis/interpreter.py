@@ -316,12 +316,13 @@ class Interpreter(CallEvaluator):
 
     def global_term(self, name: str, state: State) -> A.Expr | None:
         module = self.scope.module()
-        if (
-            self.scope is module
-            or name not in module.local_names
-            or name in self.ctx.constants.changed_globals
-        ):
-            return None  # module code: the name's binding on this path, if any
+        if self.scope is module:  # module code: the name's binding on this path
+            bound = state.env.get(name)  # (`from .limits import MAX_SPEED`)
+            if isinstance(bound, Value) and bound.term is not None:
+                return state.use(bound).term
+            return None
+        if name not in module.local_names or name in self.ctx.constants.changed_globals:
+            return None  # not a module name, or one a function rebinds
         return self._global(name, state).term
 
     def _class_name(self) -> str | None:
