@@ -180,11 +180,26 @@ def test_a_constant_read_through_a_helper_rechecks_both(tmp_path: Path) -> None:
 def test_a_constant_an_imported_alias_names_rechecks_its_users(tmp_path: Path) -> None:
     root = _copy(tmp_path, "alias_pkg")
     _, first = _run(root)
-    assert len(first) == 3
+    assert len(first) == 6
     limits = root / "alias_pkg" / "alias_pkg" / "limits.py"
     # MAX_SPEED: Speed's refinement names it; cruise.py reads Speed through
     # types.Cruise (a re-export and an alias of an alias)
     limits.write_text(limits.read_text().replace("MAX_SPEED = 0.5", "MAX_SPEED = 0.7"))
     count, after = _rechecked(root)
     assert count == 4  # limits.py, types.py, cruise.py, teleop_script.py
-    assert len(after) == 1  # command(0.6, 0.0) and send(0.6) are fine now
+    assert len(after) == 4  # command(0.6, 0.0) and send(0.6) are fine now
+
+
+def test_a_class_constant_an_alias_names_rechecks_its_users(tmp_path: Path) -> None:
+    root = _copy(tmp_path, "alias_pkg")
+    _, first = _run(root)
+    geometry = root / "alias_pkg" / "alias_pkg" / "geometry.py"
+    text = geometry.read_text()
+    geometry.write_text(text.replace("MAX_ACCEL = 0.5", "MAX_ACCEL = 0.7"))
+    count, after = _rechecked(root)
+    assert count == 2  # geometry.py, steer.py
+    assert len(after) == len(first) - 1  # steer(0.0, 0.6) is fine now
+    geometry.write_text(text.replace("RATE = 10.0", "RATE = 5.0"))
+    count, after = _rechecked(root)
+    assert count == 2
+    assert len(after) == len(first)  # rate == 10 fails, 1 / RATE == 0.2 holds

@@ -85,12 +85,7 @@ def analyze_module(ctx: FileContext) -> None:
         ctx.unit_flows.program = program
     top = Interpreter(ctx, program, module, {})
     state = top.exec_block(tree.body, State())
-    statics = {
-        k: v
-        for k, v in state.env.items()
-        if isinstance(v, Value) and v.kind in STATIC_KINDS
-    }
-    statics.update(ctx.constants.module_constants())
+    statics = module_statics(ctx, state)
     pending: list[tuple[ast.AST, Scope]] = list(top.pending)
     for statement in tree.body:
         if isinstance(statement, ast.ClassDef):
@@ -104,6 +99,33 @@ def analyze_module(ctx: FileContext) -> None:
             seen.add(id(node))
             pending.extend(_analyze_body(ctx, program, node, parent, statics))
     ctx.metadata_notes()
+
+
+def module_statics(ctx: FileContext, state: State) -> dict[str, Value]:
+    """What a function or class body may take a module name to hold, after the
+    module code ran to `state`: its modules, classes, functions and constants."""
+    statics = {
+        k: v
+        for k, v in state.env.items()
+        if isinstance(v, Value) and v.kind in STATIC_KINDS
+    }
+    statics.update(ctx.constants.module_constants())
+    return statics
+
+
+def class_body(
+    ctx: FileContext,
+    program: Program,
+    node: ast.ClassDef,
+    parent: Scope,
+    statics: dict[str, Value],
+) -> Interpreter:
+    """Run a class body (its constants are recorded; its methods are pending)."""
+    scope = program.classes.get(node.name) if parent.parent is None else None
+    scope = scope or build_scope(ctx, "class", node.name, node, parent)
+    interp = Interpreter(ctx, program, scope, statics)
+    interp.exec_block(node.body, State())
+    return interp
 
 
 def _refined_types(ctx: FileContext) -> bool:
@@ -140,10 +162,7 @@ def _analyze_body(
     statics: dict[str, Value],
 ) -> list[tuple[ast.AST, Scope]]:
     if isinstance(node, ast.ClassDef):
-        scope = program.classes.get(node.name) if parent.parent is None else None
-        scope = scope or build_scope(ctx, "class", node.name, node, parent)
-        interp = Interpreter(ctx, program, scope, statics)
-        interp.exec_block(node.body, State())
+        interp = class_body(ctx, program, node, parent, statics)
         return [(n, parent) for n, _ in interp.pending]  # methods don't see class names
     function = _function_for(program, node, parent)
     scope = program.signature(ctx, function)

@@ -287,6 +287,10 @@ def _show_number(num: Num) -> str:
         if value.numerator.bit_length() > _SHOWN_FLOAT_BITS:  # `1e308`, not 309 digits
             return _scientific(value)
         return f"{value.numerator}.0"
+    if value.denominator > _FLOAT_DENOMINATOR and Fraction(float(value)) == value:
+        return repr(
+            float(value)
+        )  # a float's binary value (math.pi): as Python shows it
     decimal = _exact_decimal(value)
     return decimal if decimal is not None else f"{float(value):g}"
 
@@ -312,6 +316,7 @@ def _exact_decimal(value: Fraction) -> str | None:
 
 _EXACT_BITS = 3000  # about 900 digits: shown exactly below, approximately above
 _SHOWN_FLOAT_BITS = 70  # a whole float beyond about 1e21 is shown as 1e+22, as Python
+_FLOAT_DENOMINATOR = 1 << 20  # below it (0.5, 0.125...) the exact decimal is short
 
 
 def _scientific(value: Fraction) -> str:

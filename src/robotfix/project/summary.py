@@ -23,22 +23,24 @@ import ast
 import dataclasses
 import hashlib
 import os
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import fields, is_dataclass, replace
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Literal
 
 from robotfix.fs import UnreadableError, read_regular
 from robotfix.project.modules import ModuleIndex, imported_names
 
 if TYPE_CHECKING:  # the analysis is imported only when a summary is built
-    from robotfix.analysis.context import FileContext
+    from robotfix.analysis.context import FileContext, Scope
     from robotfix.analysis.imported import (
         ClassSummary,
         FunctionSummary,
         ModuleSummary,
     )
     from robotfix.analysis.program import Function, Program
+    from robotfix.analysis.state import State
+    from robotfix.analysis.values import Value
     from robotfix.analysis.vc import VC, Verdict
     from robotfix.annotations import ast as A
     from robotfix.annotations.extract import Names, Refinement
@@ -354,7 +356,7 @@ def summarize(
     )
     from robotfix.analysis.imported import ModuleSummary
     from robotfix.analysis.index import index_module
-    from robotfix.analysis.interpreter import Interpreter
+    from robotfix.analysis.interpreter import Interpreter, class_body, module_statics
     from robotfix.analysis.program import collect
     from robotfix.analysis.state import State
     from robotfix.annotations.extract import Alias
@@ -369,11 +371,27 @@ def summarize(
     try:
         module = build_scope(ctx, "module", "<module>", tree, None)
         program = collect(ctx, tree, module)
-        Interpreter(ctx, program, module, {}).exec_block(tree.body, State())
+        state = Interpreter(ctx, program, module, {}).exec_block(tree.body, State())
+        statics = module_statics(ctx, state)
+        for statement in tree.body:  # class constants (`Limiter.RATE`)
+            if isinstance(statement, ast.ClassDef):
+                class_body(ctx, program, statement, module, statics)
     except (BudgetExceededError, RecursionError):
         return _finish(summary)
     summary.constants = ctx.constants.module_constants()
     terms = {k: v.term for k, v in summary.constants.items() if v.term is not None}
+    read = {
+        name: decl
+        for name, node in ctx.index.aliases.items()
+        if name not in ctx.constants.changed_globals
+        and (decl := _clean(ctx, node)) is not False
+    }
+    refinements: list[Refinement | None] = [d for d in read.values() if d]
+    for key, function in program.functions.items():
+        if not key.startswith("<"):
+            scope = program.signature(ctx, function)
+            refinements += [*scope.decls.values(), function.returns]
+    terms = _dotted_terms(ctx, program, module, state, statics, refinements, terms)
     for key, function in program.functions.items():
         if "." in key or key.startswith("<"):
             continue
@@ -381,10 +399,9 @@ def summarize(
     for class_name in program.classes:
         summary.classes[class_name] = _class(ctx, program, class_name, terms, path)
     names = None
-    for alias_name, node in ctx.index.aliases.items():
-        if alias_name not in ctx.constants.changed_globals and _clean(ctx, node):
-            names = names or replace(_detached(ctx), constants=terms)
-            summary.aliases[alias_name] = Alias(node, names)
+    for alias_name in read:
+        names = names or replace(_detached(ctx), constants=terms)
+        summary.aliases[alias_name] = Alias(ctx.index.aliases[alias_name], names)
     summary.reexports = _top_level_imports(tree, ctx.imports)
     return _finish(summary)
 
@@ -472,13 +489,14 @@ def _travel(
     return move(decl)
 
 
-def _clean(ctx: FileContext, node: ast.expr) -> bool:
+def _clean(ctx: FileContext, node: ast.expr) -> Refinement | Literal[False] | None:
     """An alias travels only if it reads without a problem in its own module (its
-    problems are reported there, at its own lines)."""
+    problems are reported there, at its own lines): its refinement (None for a
+    type form without one), or False."""
     from robotfix.annotations.extract import extract
 
     names = ctx.names()
-    _, problems = extract(
+    found, problems = extract(
         node,
         "_",
         names.qualname,
@@ -487,7 +505,41 @@ def _clean(ctx: FileContext, node: ast.expr) -> bool:
         names.col_of,
         alias=names.alias,
     )
-    return not problems
+    return False if problems else found
+
+
+def _dotted_terms(
+    ctx: FileContext,
+    program: Program,
+    module: Scope,
+    state: State,
+    statics: dict[str, Value],
+    refinements: Sequence[Refinement | None],
+    terms: dict[str, A.Expr],
+) -> dict[str, A.Expr]:
+    """`terms` and the dotted constants the refinements name (`math.pi`,
+    `Limits.MAX`), as this module's code resolves them: an importer may not import
+    `math`, nor know `Limits`."""
+    from robotfix.analysis.interpreter import Interpreter
+    from robotfix.annotations import ast as A
+
+    wanted = {
+        ref.name
+        for decl in refinements
+        if decl is not None
+        for predicate in decl.predicates()
+        for ref in A.names(predicate)
+        if "." in ref.name and ref.name.split(".")[0] in module.local_names
+    }
+    if not wanted:
+        return terms
+    reader = Interpreter(ctx, program, module, statics)
+    found = dict(terms)
+    for name in sorted(wanted):
+        value = reader.constant_named(name, state)
+        if value is not None and value.term is not None:
+            found[name] = value.term
+    return found
 
 
 def _detached(ctx: FileContext) -> Names:
