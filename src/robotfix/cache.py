@@ -46,11 +46,10 @@ from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic, Note, Span
 from robotfix.discovery import Discovery, Trace
 from robotfix.disk_cache import install_key
-from robotfix.ros.catalog import MsgCatalog, Outline
-from robotfix.stubs.load import stub_set
 
 if TYPE_CHECKING:
     from robotfix.project.summary import Known, Project
+    from robotfix.ros.catalog import MsgCatalog, Outline
 
 # an interface problem before `messages.interface_problem`: its diagnostic, the
 # package no type of which is known (if so), the types of its file
@@ -78,6 +77,8 @@ def run_key(config: Config) -> str:
         install_key("z3", ""),
     ]
     if config.stub_paths:  # results depend on what the user's stubs say
+        from robotfix.stubs.load import stub_set
+
         parts.append(f"stubs {stub_set(config.stub_paths).fingerprint()}")
     return hashlib.sha256("\n".join(parts).encode()).hexdigest()
 
