@@ -14,7 +14,6 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from robotfix import messages, rules
-from robotfix.annotations import ast as A
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic, Severity
 from robotfix.discovery import (  # re-exported: the walk lives in discovery.py
@@ -24,16 +23,18 @@ from robotfix.discovery import _hidden as _hidden
 from robotfix.discovery import interface_files as interface_files
 from robotfix.discovery import python_files as python_files
 from robotfix.discovery import ros_interface_folders as ros_interface_folders
-from robotfix.ros.catalog import MsgCatalog
-from robotfix.stubs.load import StubSet, stub_set
 
 if TYPE_CHECKING:  # the analysis is imported only when a file is checked
     from robotfix.analysis.context import FileContext
     from robotfix.analysis.imported import Resolver
     from robotfix.analysis.vc import VC, Verdict
     from robotfix.project.summary import Project
+    from robotfix.ros.catalog import MsgCatalog
     from robotfix.smt.memo import ProofMemo
-from robotfix.source import SourceFile
+    from robotfix.source import SourceFile
+    from robotfix.stubs.load import StubSet
+# so are the catalog's readers, the stubs and the parser's front end: a cached run
+# needs none of them (`tests/test_cached_run.py`)
 
 
 @dataclass
@@ -145,6 +146,7 @@ def _without_solver(vc: VC) -> Verdict | None:
     true, checked by exact evaluation (`annotations.witness`); "impossible" only
     ever comes from the skeleton."""
     from robotfix.analysis.vc import Proved, Unproven
+    from robotfix.annotations import ast as A
     from robotfix.annotations.witness import holds_somewhere
     from robotfix.smt.propositional import components, satisfiable
 
@@ -172,6 +174,10 @@ def check_source(
     beside `path` and in its package (`make_project`), as a run finds them. With a
     `memo` (the editor keeps one per document), verdicts of VCs an earlier check
     proved are not asked again (`smt.memo`)."""
+    from robotfix.ros.catalog import MsgCatalog
+    from robotfix.source import SourceFile
+    from robotfix.stubs.load import stub_set
+
     config = config or Config()
     if catalog is None:
         catalog = MsgCatalog(
@@ -207,6 +213,7 @@ def hover(
     """Markdown for the innermost name or message field at (1-based line, 0-based
     character column), as the analysis sees it there (the modules it imports found
     through `project`, as `check_source` finds them)."""
+    from robotfix.source import SourceFile
 
     source = SourceFile.from_text(path, text)
     if source.problem is not None:
@@ -228,6 +235,7 @@ def unit_suggestions(text: str, path: str, catalog: MsgCatalog) -> list[Suggesti
     """Units the analysis can pin on unannotated names from the flows they feed
     (see analysis/flows.py)."""
     from robotfix.analysis.flows import FlowLog, path_unit, suggestions
+    from robotfix.source import SourceFile
 
     source = SourceFile.from_text(path, text)
     if source.problem is not None or source.tree is None:
@@ -282,6 +290,8 @@ def check_file(
     """Diagnostics for one file's bytes (decoded, parsed, analysed); `resolver`
     shows it the other modules of its tree; `parsed`: these bytes, already parsed
     in this run (for a module's summary)."""
+    from robotfix.source import SourceFile
+
     source = parsed or SourceFile.from_bytes(path, data)
     return _check(source, catalog, ignored, stubs=stubs, resolver=resolver)
 
@@ -297,6 +307,7 @@ def _check(
     if source.problem is not None:
         return [source.problem]
     from robotfix.analysis.relevance import skippable
+    from robotfix.stubs.load import stub_set
 
     assert source.tree is not None
     stubs = stubs or stub_set()
@@ -326,6 +337,7 @@ def _analyze(
     keeps what was found before."""
     from robotfix.analysis.context import BudgetExceededError, FileContext
     from robotfix.analysis.interpreter import analyze_module
+    from robotfix.stubs.load import stub_set
 
     ctx = FileContext(source, catalog, Discharger(memo), resolver)
     ctx.stubs = stubs or stub_set()
@@ -375,6 +387,10 @@ def _unused_suppressions(
 
 def stub_problems(config: Config) -> list[Diagnostic]:
     """RF512: what does not read in the user's stubs (`stub-paths`), once per run."""
+    if not config.stub_paths:  # the shipped stubs are not read here
+        return []
+    from robotfix.stubs.load import stub_set
+
     return [
         messages.malformed_stub(p.path, p.line, p.col, p.message)
         for p in stub_set(config.stub_paths).problems()

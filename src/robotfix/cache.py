@@ -46,16 +46,15 @@ from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic, Note, Span
 from robotfix.discovery import Discovery, Trace
 from robotfix.disk_cache import install_key
-from robotfix.ros.catalog import MsgCatalog, Outline
-from robotfix.stubs.load import stub_set
 
 if TYPE_CHECKING:
     from robotfix.project.summary import Known, Project
+    from robotfix.ros.catalog import MsgCatalog, Outline
 
 # an interface problem before `messages.interface_problem`: its diagnostic, the
 # package no type of which is known (if so), the types of its file
 InterfaceProblem = tuple[Diagnostic, "str | None", tuple[str, ...]]
-FORMAT = 5
+FORMAT = 6
 RACY_NS = 2_000_000_000  # a file changed this recently is hashed, not trusted by stat
 # which parameter-related words a file mentions (`paramcheck.MENTIONS`, all layouts),
 # kept with its hash so that an unchanged file need not be read to know
@@ -78,6 +77,8 @@ def run_key(config: Config) -> str:
         install_key("z3", ""),
     ]
     if config.stub_paths:  # results depend on what the user's stubs say
+        from robotfix.stubs.load import stub_set
+
         parts.append(f"stubs {stub_set(config.stub_paths).fingerprint()}")
     return hashlib.sha256("\n".join(parts).encode()).hexdigest()
 
@@ -316,8 +317,14 @@ class ResultCache:
             return None
         if entry["catalog"] != catalog.fingerprint_types(entry["types"]):
             return None
+        spelled = os.fspath(path)
         for key, fingerprint in entry["modules"].items():
-            now = project.fingerprint(key) if project is not None else ""
+            if project is None:
+                now = ""
+            elif key[:1] == "\0":  # consulted from this file itself (`put`)
+                now = project.fingerprint(spelled + key)
+            else:
+                now = project.fingerprint(key)
             if now != fingerprint:
                 return None
         return [_load(d) for d in entry["diagnostics"]]
@@ -344,11 +351,19 @@ class ResultCache:
     ) -> None:
         """Remember a fresh result; `fingerprint` is the catalog's
         `fingerprint_types(types)` as seen by the check that found `diagnostics`."""
+        # a record made from this file itself (most are) is kept without its
+        # file's name: `results.json` is a third smaller, read and written faster
+        own = os.fspath(path) + "\0"
+        cut = len(own) - 1
+        kept = {
+            key[cut:] if key.startswith(own) else key: value
+            for key, value in (modules or {}).items()
+        }
         self._entries[entry_key(path)] = {
             "file": _file_key(data, path, config),
             "types": sorted(types),
             "catalog": fingerprint,
-            "modules": dict(sorted((modules or {}).items())),
+            "modules": dict(sorted(kept.items())),
             "diagnostics": [_dump(d) for d in diagnostics],
         }
         self._dirty = True

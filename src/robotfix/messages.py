@@ -9,10 +9,13 @@ from __future__ import annotations
 import math
 import sys
 from dataclasses import dataclass, replace
+from typing import TYPE_CHECKING
 
 from robotfix import rules
-from robotfix.annotations.units import Unit
 from robotfix.diagnostics import Diagnostic, Note, Rule, Severity, Span
+
+if TYPE_CHECKING:  # a cached run, reporting only what it kept, needs no units
+    from robotfix.annotations.units import Unit
 
 
 @dataclass(frozen=True)

@@ -8,6 +8,7 @@ import gc
 import hashlib
 import os
 import signal
+import sys
 import time
 import traceback
 from collections.abc import Callable, Iterator
@@ -16,7 +17,6 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from robotfix import messages
-from robotfix.annotations.units import save_cache as save_unit_cache
 from robotfix.api import (
     InternalError,
     Result,
@@ -35,8 +35,6 @@ from robotfix.fs import UnreadableError, read_regular
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.ros.install import InstallSpace
 from robotfix.ros.package import package_folder
-from robotfix.source import SourceFile
-from robotfix.stubs.load import stub_set
 
 if TYPE_CHECKING:
     from concurrent.futures import Future, ProcessPoolExecutor
@@ -210,7 +208,9 @@ def _check_paths(
         cache.prune(paths, files)
         cache.save()
     catalog.save()
-    save_unit_cache()
+    units = sys.modules.get("robotfix.annotations.units")
+    if units is not None:  # not imported: no unit was read, nothing to keep
+        units.save_cache()
     result.seconds = time.perf_counter() - started
     return result
 
@@ -479,6 +479,9 @@ def _check_one(
         except UnreadableError as err:
             reason = f"cannot read: {err.reason}"
             return FileResult(str(path), [messages.unreadable(str(path), reason)])
+    from robotfix.source import SourceFile
+    from robotfix.stubs.load import stub_set
+
     catalog.touched = set()
     try:
         resolver = project.resolver(path)

@@ -1,0 +1,63 @@
+"""How an entry of the result cache keeps what its check consulted (issue 13 item
+5): a record made from the file itself is kept without the file's name, and still
+stands for the same question, however the file was spelled."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from robotfix import cli
+from robotfix.config import Config
+from robotfix.run import check_paths
+from tests.test_cached_run import LIMITS, age, tree, write
+
+__all__ = ["tree"]  # the fixture, shared with test_cached_run
+
+LIMITS_NEEDS_SPEED = LIMITS.replace('"_ <= 3.0"', '"_ <= 1.0"')
+
+
+def run(root: Path, paths: list[Path], cache: bool = True) -> tuple[str, int, int]:
+    result = check_paths(paths, Config(root=root), use_cache=cache)
+    return cli.render(result, "concise", 1, 0), len(result.checked), result.from_cache
+
+
+def entries(root: Path) -> dict[str, dict[str, object]]:
+    data = json.loads((root / ".robotfix_cache" / "results.json").read_text())
+    found: dict[str, dict[str, object]] = data["entries"]
+    return found
+
+
+def test_own_records_are_kept_without_the_file_name(tree: Path) -> None:
+    run(tree, [tree / "src"])
+    driver = str(tree / "src" / "demo" / "demo" / "driver.py")
+    modules = entries(tree)[driver]["modules"]
+    assert isinstance(modules, dict)
+    assert any(key.startswith("\0demo.limits") for key in modules)
+    assert not any(key.startswith(driver) for key in modules)
+
+
+def test_a_read_member_changed_still_rechecks_its_reader(tree: Path) -> None:
+    cold = run(tree, [tree / "src"])
+    assert run(tree, [tree / "src"]) == (cold[0], cold[1], cold[1])
+    write(tree / "src" / "demo" / "demo" / "limits.py", LIMITS_NEEDS_SPEED)
+    age(tree / "src" / "demo" / "demo")
+    text, files, cached = run(tree, [tree / "src"])
+    assert cached == files - 2  # limits.py and the driver, which reads clamp
+    assert text == run(tree, [tree / "src"], cache=False)[0]
+    assert "driver.py" in cold[0] and "driver.py" not in text  # clamp now fits
+
+
+@pytest.mark.parametrize("spelled", ["src", "./src/../src"])
+def test_relative_spellings_read_the_same(
+    tree: Path, spelled: str, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(tree)
+    fresh = run(tree, [Path(spelled)], cache=False)
+    cold = run(tree, [Path(spelled)])
+    assert cold[0] == fresh[0] and cold[2] == 0
+    assert run(tree, [Path(spelled)]) == (fresh[0], fresh[1], fresh[1])
+    # the same files named absolutely: other entries' spellings, same answers
+    assert run(tree, [tree / "src"])[0] == run(tree, [tree / "src"], cache=False)[0]
