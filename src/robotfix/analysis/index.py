@@ -6,6 +6,7 @@ declarations. Everything else reads this index instead of walking the tree again
 from __future__ import annotations
 
 import ast
+import weakref
 from collections import Counter
 from dataclasses import dataclass, field
 
@@ -46,9 +47,26 @@ class FileIndex:
     # how often each attribute name is a part of an assignment's target (`x.a = `,
     # `x.a += `, `x[o.i] = `), as `frames.facts` counts them
     assigned: Counter[str] = field(default_factory=Counter)
+    # scopes `index_scope` indexed on demand, kept apart from `scopes` so that the
+    # index stays as `index_module` built it: id(node) -> (node, its names)
+    extra: dict[int, tuple[ast.AST, ScopeNames]] = field(default_factory=dict)
 
 
 Todo = list[tuple[ast.AST, int, str | None, str | None]]
+
+
+# each tree's index, built once and shared by everything that reads it in a run
+# (the module's summary, its parameter summary and its check)
+_INDEXES: weakref.WeakKeyDictionary[ast.Module, FileIndex] = weakref.WeakKeyDictionary()
+
+
+def index_of(tree: ast.Module) -> FileIndex:
+    """The index of `tree`, built on the first request. Readers must not change it
+    (`index_scope` keeps what it adds apart)."""
+    index = _INDEXES.get(tree)
+    if index is None:
+        index = _INDEXES[tree] = index_module(tree)
+    return index
 
 
 def index_module(tree: ast.Module) -> FileIndex:
@@ -116,12 +134,20 @@ def _type_like(node: ast.expr) -> bool:
 
 
 def index_scope(index: FileIndex, node: ast.AST) -> ScopeNames:
-    """Index a scope the module walk did not reach (a lambda in a comprehension)."""
+    """Index a scope the module walk did not reach (a node of another tree). The
+    walk goes into a throwaway index; only the scopes it finds are kept, in
+    `index.extra`, so the shared index's calls, stores and scopes stay as built."""
+    known = index.extra.get(id(node))
+    if known is not None:
+        return known[1]
+    scratch = FileIndex()
     outside = -id(node)  # a throwaway owner for the node itself
-    index.scopes[outside] = ScopeNames()
-    _drain(index, [(node, outside, None, None)], outside)
-    del index.scopes[outside]
-    return index.scopes.get(id(node), ScopeNames())
+    scratch.scopes[outside] = ScopeNames()
+    _drain(scratch, [(node, outside, None, None)], outside)
+    del scratch.scopes[outside]
+    found = scratch.scopes.get(id(node), ScopeNames())
+    index.extra[id(node)] = (node, found)
+    return found
 
 
 def _drain(index: FileIndex, todo: Todo, root: int) -> None:
