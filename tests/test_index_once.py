@@ -8,16 +8,20 @@ from __future__ import annotations
 
 import ast
 import shutil
+from collections import Counter
 from pathlib import Path
 
 import pytest
 
 from robotfix.analysis import index as index_module
 from robotfix.analysis import parameters
+from robotfix.astwalk import walk
 from robotfix.config import Config
 from robotfix.run import check_paths
+from robotfix.source import SourceFile
 
-PACKAGES = Path(__file__).parent / "cases" / "packages"
+CASES = Path(__file__).parent / "cases"
+PACKAGES = CASES / "packages"
 
 
 def _package(tmp_path: Path) -> Path:
@@ -104,3 +108,42 @@ def test_a_scope_of_another_tree_leaves_the_index_as_built() -> None:
     assert index.scopes == scopes and index.calls == calls
     assert not index.attribute_stores and not index.assigned
     assert index_module.index_of(tree) is index
+
+
+STORES = """
+import math
+LIMIT = 2.0
+def f(a: [k for k in range(3)], b: (w := 1) = 2) -> (r := int):
+    global LIMIT
+    for i in range(3):
+        LIMIT = i
+    del a
+    return [j for j in range(b) if (m := j)]
+class C:
+    SPEED = 1.0
+    g = lambda self, x=(y := 3): x
+"""
+
+
+def _walked_stores(tree: ast.AST) -> Counter[str]:
+    return Counter(
+        n.id
+        for n in walk(tree)
+        if isinstance(n, ast.Name) and not isinstance(n.ctx, ast.Load)
+    )
+
+
+@pytest.mark.parametrize("path", sorted(CASES.rglob("*.py")), ids=str)
+def test_the_index_counts_stores_as_a_walk_of_every_node(path: Path) -> None:
+    source = SourceFile.from_bytes(str(path), path.read_bytes())
+    if source.tree is not None:
+        index = index_module.index_module(source.tree)
+        assert index.stores == _walked_stores(source.tree)
+
+
+def test_stores_in_annotations_are_counted() -> None:
+    tree = ast.parse(STORES)
+    index = index_module.index_module(tree)
+    assert index.stores == _walked_stores(tree)
+    assert {"k", "w", "r", "y", "m"} <= set(index.stores)
+    assert index.stores["LIMIT"] == 2

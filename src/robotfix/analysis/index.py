@@ -50,6 +50,10 @@ class FileIndex:
     # scopes `index_scope` indexed on demand, kept apart from `scopes` so that the
     # index stays as `index_module` built it: id(node) -> (node, its names)
     extra: dict[int, tuple[ast.AST, ScopeNames]] = field(default_factory=dict)
+    # how often each name is stored or deleted anywhere in the tree (`x = `, `for x`,
+    # `del x`, `(x := ...)`, annotations included): `Name` nodes only, as a walk of
+    # the whole tree counts them (`parameters._module_constants`)
+    stores: Counter[str] = field(default_factory=Counter)
 
 
 Todo = list[tuple[ast.AST, int, str | None, str | None]]
@@ -152,6 +156,7 @@ def index_scope(index: FileIndex, node: ast.AST) -> ScopeNames:
 
 def _drain(index: FileIndex, todo: Todo, root: int) -> None:
     scopes, pop, append = index.scopes, todo.pop, todo.append
+    stores = index.stores
     known = FIELDS  # node class -> fields that may hold nodes
     node_class = ast.AST
     while todo:
@@ -160,6 +165,7 @@ def _drain(index: FileIndex, todo: Todo, root: int) -> None:
         if kind is ast.Name:
             if node.ctx.__class__ is not ast.Load:  # type: ignore[attr-defined]
                 scopes[owner].local_names.add(node.id)  # type: ignore[attr-defined]
+                stores[node.id] += 1  # type: ignore[attr-defined]
             continue
         if kind in FUNCTIONS or kind is ast.Lambda:
             _enter_function(index, node, owner, cls, self_name, todo)  # type: ignore[arg-type]
@@ -256,6 +262,10 @@ def _enter_function(
         inner.local_names.add(arg.arg)
         if arg.annotation is not None:
             inner.annotated.append((arg.annotation, arg.arg))
+            _count_stores(index, arg.annotation)
+    returns = getattr(node, "returns", None)
+    if returns is not None:
+        _count_stores(index, returns)
     if isinstance(node, ast.Lambda):
         todo.append((node.body, id(node), cls, None))
         return
@@ -264,6 +274,16 @@ def _enter_function(
     is_method = owner in index.class_scopes
     method_self = args.args[0].arg if is_method and args.args else None
     todo.extend((s, id(node), cls, method_self) for s in node.body)
+
+
+def _count_stores(index: FileIndex, annotation: ast.expr) -> None:
+    """The names stored in an annotation the walk does not enter (`:=`, or a
+    comprehension's target, in a parameter's or a return's annotation)."""
+    if type(annotation) is ast.Name or type(annotation) is ast.Constant:
+        return
+    for node in walk(annotation):
+        if type(node) is ast.Name and not isinstance(node.ctx, ast.Load):
+            index.stores[node.id] += 1
 
 
 def _record_import(

@@ -252,10 +252,7 @@ def owner_of(
 
 def _module_constants(tree: ast.Module, index: FileIndex) -> dict[str, object]:
     """Module-level names bound once, to a constant (`MAX_SPEED = 0.5`)."""
-    counts: dict[str, int] = {}
-    for node in walk(tree):
-        if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
-            counts[node.id] = counts.get(node.id, 0) + 1
+    counts = index_of(tree).stores  # what a walk of every node would count
     found: dict[str, object] = {}
     for statement in tree.body:
         target, value = None, None
