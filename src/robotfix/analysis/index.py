@@ -6,6 +6,7 @@ declarations. Everything else reads this index instead of walking the tree again
 from __future__ import annotations
 
 import ast
+import weakref
 from collections import Counter
 from dataclasses import dataclass, field
 
@@ -46,9 +47,30 @@ class FileIndex:
     # how often each attribute name is a part of an assignment's target (`x.a = `,
     # `x.a += `, `x[o.i] = `), as `frames.facts` counts them
     assigned: Counter[str] = field(default_factory=Counter)
+    # scopes `index_scope` indexed on demand, kept apart from `scopes` so that the
+    # index stays as `index_module` built it: id(node) -> (node, its names)
+    extra: dict[int, tuple[ast.AST, ScopeNames]] = field(default_factory=dict)
+    # how often each name is stored or deleted anywhere in the tree (`x = `, `for x`,
+    # `del x`, `(x := ...)`, annotations included): `Name` nodes only, as a walk of
+    # the whole tree counts them (`parameters._module_constants`)
+    stores: Counter[str] = field(default_factory=Counter)
 
 
 Todo = list[tuple[ast.AST, int, str | None, str | None]]
+
+
+# each tree's index, built once and shared by everything that reads it in a run
+# (the module's summary, its parameter summary and its check)
+_INDEXES: weakref.WeakKeyDictionary[ast.Module, FileIndex] = weakref.WeakKeyDictionary()
+
+
+def index_of(tree: ast.Module) -> FileIndex:
+    """The index of `tree`, built on the first request. Readers must not change it
+    (`index_scope` keeps what it adds apart)."""
+    index = _INDEXES.get(tree)
+    if index is None:
+        index = _INDEXES[tree] = index_module(tree)
+    return index
 
 
 def index_module(tree: ast.Module) -> FileIndex:
@@ -116,16 +138,25 @@ def _type_like(node: ast.expr) -> bool:
 
 
 def index_scope(index: FileIndex, node: ast.AST) -> ScopeNames:
-    """Index a scope the module walk did not reach (a lambda in a comprehension)."""
+    """Index a scope the module walk did not reach (a node of another tree). The
+    walk goes into a throwaway index; only the scopes it finds are kept, in
+    `index.extra`, so the shared index's calls, stores and scopes stay as built."""
+    known = index.extra.get(id(node))
+    if known is not None:
+        return known[1]
+    scratch = FileIndex()
     outside = -id(node)  # a throwaway owner for the node itself
-    index.scopes[outside] = ScopeNames()
-    _drain(index, [(node, outside, None, None)], outside)
-    del index.scopes[outside]
-    return index.scopes.get(id(node), ScopeNames())
+    scratch.scopes[outside] = ScopeNames()
+    _drain(scratch, [(node, outside, None, None)], outside)
+    del scratch.scopes[outside]
+    found = scratch.scopes.get(id(node), ScopeNames())
+    index.extra[id(node)] = (node, found)
+    return found
 
 
 def _drain(index: FileIndex, todo: Todo, root: int) -> None:
     scopes, pop, append = index.scopes, todo.pop, todo.append
+    stores = index.stores
     known = FIELDS  # node class -> fields that may hold nodes
     node_class = ast.AST
     while todo:
@@ -134,6 +165,7 @@ def _drain(index: FileIndex, todo: Todo, root: int) -> None:
         if kind is ast.Name:
             if node.ctx.__class__ is not ast.Load:  # type: ignore[attr-defined]
                 scopes[owner].local_names.add(node.id)  # type: ignore[attr-defined]
+                stores[node.id] += 1  # type: ignore[attr-defined]
             continue
         if kind in FUNCTIONS or kind is ast.Lambda:
             _enter_function(index, node, owner, cls, self_name, todo)  # type: ignore[arg-type]
@@ -230,6 +262,10 @@ def _enter_function(
         inner.local_names.add(arg.arg)
         if arg.annotation is not None:
             inner.annotated.append((arg.annotation, arg.arg))
+            _count_stores(index, arg.annotation)
+    returns = getattr(node, "returns", None)
+    if returns is not None:
+        _count_stores(index, returns)
     if isinstance(node, ast.Lambda):
         todo.append((node.body, id(node), cls, None))
         return
@@ -238,6 +274,16 @@ def _enter_function(
     is_method = owner in index.class_scopes
     method_self = args.args[0].arg if is_method and args.args else None
     todo.extend((s, id(node), cls, method_self) for s in node.body)
+
+
+def _count_stores(index: FileIndex, annotation: ast.expr) -> None:
+    """The names stored in an annotation the walk does not enter (`:=`, or a
+    comprehension's target, in a parameter's or a return's annotation)."""
+    if type(annotation) is ast.Name or type(annotation) is ast.Constant:
+        return
+    for node in walk(annotation):
+        if type(node) is ast.Name and not isinstance(node.ctx, ast.Load):
+            index.stores[node.id] += 1
 
 
 def _record_import(

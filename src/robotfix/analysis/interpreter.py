@@ -20,7 +20,7 @@ from robotfix.analysis.calls import MUTATORS, CallEvaluator
 from robotfix.analysis.constants import scan
 from robotfix.analysis.context import FileContext, Scope, build_scope
 from robotfix.analysis.flows import Where
-from robotfix.analysis.index import index_module
+from robotfix.analysis.index import index_of
 from robotfix.analysis.program import (
     Function,
     Program,
@@ -77,7 +77,7 @@ STATIC_KINDS = frozenset({"module", "msgclass", "interface", "function", "class"
 def analyze_module(ctx: FileContext) -> None:
     tree = ctx.source.tree
     assert tree is not None
-    ctx.record_imports(index_module(tree))
+    ctx.record_imports(index_of(tree))
     ctx.constants = scan(tree, ctx.index, ctx.qualname, ":=" in ctx.source.text)
     module = build_scope(ctx, "module", "<module>", tree, None)
     program = collect(ctx, tree, module)

@@ -28,13 +28,14 @@ from __future__ import annotations
 
 import ast
 import math
+import weakref
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
 from typing import TYPE_CHECKING
 
 from robotfix import messages
-from robotfix.analysis.index import FileIndex, index_module
+from robotfix.analysis.index import FileIndex, index_of
 from robotfix.analysis.program import call_argument
 from robotfix.analysis.values import Value
 from robotfix.analysis.vc import VC, Violated
@@ -173,13 +174,27 @@ class Summary:
 # -- the syntactic pass --------------------------------------------------------
 
 
+# each tree's summary, made once a run: for the run's parameter files and for the
+# file's own check (`ParamContext`); a summary is not changed once made
+_SUMMARIES: weakref.WeakKeyDictionary[ast.Module, Summary] = weakref.WeakKeyDictionary()
+
+
 def summarize(source: SourceFile, index: FileIndex | None = None) -> Summary:
     """What `source` declares and reads; an empty summary for a file with no tree."""
-    summary = Summary(source.path)
     tree = source.tree
     if tree is None:
-        return summary
-    index = index or index_module(tree)
+        return Summary(source.path)
+    shared = index_of(tree)
+    if index is not None and index is not shared:
+        return _summarize(source, tree, index)
+    found = _SUMMARIES.get(tree)
+    if found is None or found.path != source.path:
+        found = _SUMMARIES[tree] = _summarize(source, tree, shared)
+    return found
+
+
+def _summarize(source: SourceFile, tree: ast.Module, index: FileIndex) -> Summary:
+    summary = Summary(source.path)
     summary.constants = _module_constants(tree, index)
     summary.imports = index.imports
     walker = _Walker(source, index, summary, summary.constants)
@@ -237,10 +252,7 @@ def owner_of(
 
 def _module_constants(tree: ast.Module, index: FileIndex) -> dict[str, object]:
     """Module-level names bound once, to a constant (`MAX_SPEED = 0.5`)."""
-    counts: dict[str, int] = {}
-    for node in walk(tree):
-        if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
-            counts[node.id] = counts.get(node.id, 0) + 1
+    counts = index_of(tree).stores  # what a walk of every node would count
     found: dict[str, object] = {}
     for statement in tree.body:
         target, value = None, None

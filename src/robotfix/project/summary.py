@@ -355,7 +355,7 @@ def summarize(
         build_scope,
     )
     from robotfix.analysis.imported import ModuleSummary
-    from robotfix.analysis.index import index_module
+    from robotfix.analysis.index import index_of
     from robotfix.analysis.interpreter import Interpreter, class_body, module_statics
     from robotfix.analysis.program import collect
     from robotfix.analysis.state import State
@@ -365,7 +365,7 @@ def summarize(
     assert tree is not None
     path = source.path
     ctx = FileContext(source, catalog, discharge, resolver)
-    ctx.record_imports(index_module(tree))
+    ctx.record_imports(index_of(tree))
     ctx.constants = scan(tree, ctx.index, ctx.qualname, ":=" in source.text)
     summary = ModuleSummary(name, path)
     try:
