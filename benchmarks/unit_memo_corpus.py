@@ -4,7 +4,9 @@ code: for each Python file under a folder, EDITS random edits of one unit each
 fresh; prints the number of edits compared, the mismatches (must be 0) and the
 memo's hits and misses.
 
-Usage: python benchmarks/unit_memo_corpus.py FOLDER [EDITS]
+Usage: python benchmarks/unit_memo_corpus.py FOLDER [EDITS] [literal]
+With `literal`, every edit changes a number inside a function (the edits that leave
+the other units' keys alone, so most of them are replayed).
 """
 
 from __future__ import annotations
@@ -16,7 +18,7 @@ import zlib
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).parent.parent / "tests"))
-from test_unit_memo import _parses, edit
+from test_unit_memo import KINDS, _parses, edit
 
 from robotfix.api import check_source
 from robotfix.config import Config
@@ -24,7 +26,7 @@ from robotfix.ros.catalog import MsgCatalog
 from robotfix.smt.memo import ProofMemo
 
 
-def main(folder: Path, edits: int) -> None:
+def main(folder: Path, edits: int, kinds: tuple[str, ...]) -> None:
     catalog = MsgCatalog([])
     config = Config()
     compared = mismatches = files = hits = misses = 0
@@ -44,7 +46,7 @@ def main(folder: Path, edits: int) -> None:
             if done >= edits:
                 break
             try:
-                new = edit(text, rng)
+                new = edit(text, rng, kinds)
             except (SyntaxError, ValueError, UnicodeError, IndexError):
                 continue
             if new is None or new == text or not _parses(new):
@@ -72,4 +74,8 @@ def main(folder: Path, edits: int) -> None:
 
 
 if __name__ == "__main__":
-    main(Path(sys.argv[1]), int(sys.argv[2]) if len(sys.argv) > 2 else 3)
+    main(
+        Path(sys.argv[1]),
+        int(sys.argv[2]) if len(sys.argv) > 2 else 3,
+        ("literal",) if sys.argv[3:4] == ["literal"] else KINDS,
+    )

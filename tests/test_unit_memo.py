@@ -51,23 +51,24 @@ def _insert(lines: list[str], before: ast.stmt, text: str) -> str:
     return "".join(out)
 
 
-def edit(text: str, rng: random.Random) -> str | None:
+KINDS = (
+    "literal",
+    "insert",
+    "delete",
+    "line_above",
+    "rename",
+    "field",
+    "init_attribute",
+    "constant",
+)
+
+
+def edit(text: str, rng: random.Random, kinds: tuple[str, ...] = KINDS) -> str | None:
     """`text` with one random edit of one unit (or of a module constant)."""
     tree = ast.parse(text)
     lines = text.splitlines(keepends=True)
     functions = _bodies(tree)
-    kind = rng.choice(
-        [
-            "literal",
-            "insert",
-            "delete",
-            "line_above",
-            "rename",
-            "field",
-            "init_attribute",
-            "constant",
-        ]
-    )
+    kind = rng.choice(kinds)
     if kind == "constant":
         consts = [
             s.value
