@@ -99,6 +99,7 @@ def per_edit(
     catalog = _server_catalog(path)
     # the document's proof memo, as `server._publish` passes it (none before it was)
     kept = {"memo": server._memo(path.as_uri())} if hasattr(server, "_memo") else {}
+    units = getattr(kept.get("memo"), "units", None)
 
     def once(n: int, extra: dict[str, object]) -> tuple[float, float, list[object]]:
         source = (edit or edited)(text, n)  # type: ignore[operator]
@@ -138,6 +139,8 @@ def per_edit(
         "cpu_p50_ms": round(statistics.median(cpu_times), 1),
         "cpu_p50_without_memo_ms": round(statistics.median(cpu_plain), 1),
         "diagnostics": sorted(counts),
+        # items of the file replayed from the document's unit memo, per edit
+        "unit_hits_per_edit": round(getattr(units, "hits", 0) / (WARMUP + edits), 1),
         "same_output_as_without_memo": same,
     }
 

@@ -103,6 +103,17 @@ class Discharger:
             self._memo.put(*keyed, verdict, 0, False)
         return verdict
 
+    # -- for analysis/unitmemo.py: an item replayed charges what it cost ------
+    def work_used(self) -> int:
+        return self._session.used if self._session is not None else self._charged
+
+    def work_state(self) -> tuple[bool, bool]:
+        """What changes how later VCs are decided: a session, a kept z3 verdict."""
+        return self._session is not None, self._solved
+
+    def charge_kept(self, work: int) -> bool:
+        return work == 0 or self._charge(work)
+
     def _charge(self, work: int) -> bool:
         """Count a kept verdict's work against the file's solver budget, as asking
         again would; False when the budget could not pay for it (ask instead)."""
@@ -340,6 +351,7 @@ def _analyze(
     from robotfix.stubs.load import stub_set
 
     ctx = FileContext(source, catalog, Discharger(memo), resolver)
+    ctx.unit_memo = memo.units if memo is not None else None
     ctx.stubs = stubs or stub_set()
     ctx.hovers = [] if hovers else None
     if flows:

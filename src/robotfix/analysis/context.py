@@ -30,6 +30,7 @@ if TYPE_CHECKING:
     from robotfix.analysis.frames import FrameFacts
     from robotfix.analysis.imported import Resolver
     from robotfix.analysis.parameters import ParamContext
+    from robotfix.analysis.unitmemo import UnitMemo
 
 MSG_MODULES = ("msg", "srv", "action")
 # Python packages only ROS 1 has: a file importing one (and not rclpy) is ROS 1 code.
@@ -115,6 +116,15 @@ class FileContext:
         # where unannotated names flow (analysis/flows.py), for `robotfix suggest`;
         # None when not asked for
         self.unit_flows: FlowLog | None = None
+        # while analysis/unitmemo.py records one item: its reports in order, the
+        # `once` keys it touched with whether they were set before it, the first
+        # symbol it made, and whether it reused a cache entry of an earlier item
+        self.unit_memo: UnitMemo | None = None  # the editor's, per document
+        self.unit_log: list[tuple[Diagnostic | None, object]] | None = None
+        self.unit_answers: dict[object, bool] | None = None
+        self.unit_floor = 0
+        self.unit_base = 0
+        self.unit_shared = False
 
     # -- symbols and ids -----------------------------------------------------
     def fresh_id(self) -> int:
@@ -127,6 +137,8 @@ class FileContext:
         """An unknown value that is a function of `key` (`x is None` for one value
         of x): the same symbol wherever it is asked for."""
         found = self._derived.get(key)
+        if found is not None and self.unit_log is not None:
+            self._shared(found.term)
         if found is None:
             found = self._derived[key] = self.fresh(kind, description)
             first, read = _first_version(key, self.unchanged)
@@ -140,6 +152,8 @@ class FileContext:
         """`sym` is a read of `read` (`self.flag`), maybe again after a call that
         may have changed it: `unchanged` maps it to the first read."""
         first = self._first_reads.setdefault(read, sym)
+        if self.unit_log is not None:
+            self._shared(first)
         if first != sym:
             self.unchanged[sym.ident] = (first, read)
 
@@ -147,9 +161,23 @@ class FileContext:
         """The id of the sub-message in field `name` of message `parent`: the same on
         every path, so that paths that each touched it join field by field."""
         found = self._sub_ids.get((parent, name))
+        if found is not None and self.unit_log is not None:
+            self.unit_shared = self.unit_shared or (
+                self.unit_base < found <= self.unit_floor
+            )
         if found is None:
             found = self._sub_ids[(parent, name)] = self.fresh_id()
         return found
+
+    def _shared(self, term: object) -> None:
+        """An entry made before the item being recorded: not replayable."""
+        ident = term.ident if isinstance(term, A.Sym) else self.unit_floor
+        if self.unit_base < ident <= self.unit_floor or not isinstance(term, A.Sym):
+            self.unit_shared = True
+
+    def _touch(self, once: tuple[object, ...]) -> None:
+        if self.unit_answers is not None and once not in self.unit_answers:
+            self.unit_answers[once] = once in self._reported
 
     def last_id(self) -> int:
         """The newest symbol or heap id: those made later have larger ids."""
@@ -183,15 +211,24 @@ class FileContext:
 
     # -- reporting -----------------------------------------------------------
     def already(self, once: tuple[object, ...]) -> bool:
+        if self.unit_log is not None:
+            self._touch(once)
         return once in self._reported
 
     def report_once(self, once: tuple[object, ...]) -> None:
         """Mark `once` as reported (for a diagnostic keyed by something else)."""
+        if self.unit_log is not None:
+            self._touch(once)
+            self.unit_log.append((None, once))
         self._reported.add(once)
 
     def report(self, diag: Diagnostic, once: tuple[object, ...] | None = None) -> None:
         if self.muted:
             return
+        if self.unit_log is not None:
+            if once is not None:
+                self._touch(once)
+            self.unit_log.append((diag, once))
         if once is not None:
             if once in self._reported:
                 return

@@ -13,6 +13,7 @@ import ast
 import builtins
 from collections.abc import Callable, Hashable
 from fractions import Fraction
+from functools import partial
 
 from robotfix import messages
 from robotfix.analysis import containers, decisions, frames, heap, hover, imported
@@ -93,11 +94,24 @@ def analyze_module(ctx: FileContext) -> None:
     for function in list(program.functions.values()):
         pending.append((function.node, function.parent))
     seen: set[int] = set()
+    # the editor's memo of items analysed by an earlier check (analysis/unitmemo.py)
+    units = ctx.unit_memo
+    memo = None if units is None else units.begin(ctx, program, tree, statics)
     while pending:
         node, parent = pending.pop(0)
         if id(node) not in seen:
             seen.add(id(node))
-            pending.extend(_analyze_body(ctx, program, node, parent, statics))
+            if memo is None:
+                pending.extend(_analyze_body(ctx, program, node, parent, statics))
+                continue
+            pending.extend(
+                memo.analyze(
+                    node,
+                    parent,
+                    partial(_body_scope, ctx, program),
+                    partial(_run_body, ctx, program, statics=statics),
+                )
+            )
     ctx.metadata_notes()
 
 
@@ -121,8 +135,7 @@ def class_body(
     statics: dict[str, Value],
 ) -> Interpreter:
     """Run a class body (its constants are recorded; its methods are pending)."""
-    scope = program.classes.get(node.name) if parent.parent is None else None
-    scope = scope or build_scope(ctx, "class", node.name, node, parent)
+    scope, _ = _body_scope(ctx, program, node, parent)
     interp = Interpreter(ctx, program, scope, statics)
     interp.exec_block(node.body, State())
     return interp
@@ -161,11 +174,36 @@ def _analyze_body(
     parent: Scope,
     statics: dict[str, Value],
 ) -> list[tuple[ast.AST, Scope]]:
+    scope, function = _body_scope(ctx, program, node, parent)
+    return _run_body(ctx, program, node, parent, scope, function, statics=statics)
+
+
+def _body_scope(
+    ctx: FileContext, program: Program, node: ast.AST, parent: Scope
+) -> tuple[Scope, Function | None]:
+    """The scope of a class body or a function (its signature, built once)."""
     if isinstance(node, ast.ClassDef):
-        interp = class_body(ctx, program, node, parent, statics)
-        return [(n, parent) for n, _ in interp.pending]  # methods don't see class names
+        scope = program.classes.get(node.name) if parent.parent is None else None
+        return scope or build_scope(ctx, "class", node.name, node, parent), None
     function = _function_for(program, node, parent)
-    scope = program.signature(ctx, function)
+    return program.signature(ctx, function), function
+
+
+def _run_body(
+    ctx: FileContext,
+    program: Program,
+    node: ast.AST,
+    parent: Scope,
+    scope: Scope,
+    function: Function | None,
+    *,
+    statics: dict[str, Value],
+) -> list[tuple[ast.AST, Scope]]:
+    if function is None:
+        assert isinstance(node, ast.ClassDef)
+        interp = Interpreter(ctx, program, scope, statics)
+        interp.exec_block(node.body, State())
+        return [(n, parent) for n, _ in interp.pending]  # methods don't see class names
     interp = Interpreter(ctx, program, scope, statics, function)
     state = State()
     interp.bind_parameters(state)

@@ -18,6 +18,7 @@ from __future__ import annotations
 from collections import OrderedDict
 from dataclasses import replace
 
+from robotfix.analysis.unitmemo import UnitMemo
 from robotfix.analysis.vc import VC, Undecided, Unproven, Verdict
 from robotfix.annotations import ast as A
 
@@ -32,6 +33,8 @@ class ProofMemo:
         self._max = max_entries
         self.hits = 0
         self.misses = 0
+        # the document's analysis kept per top-level unit, next to its proofs
+        self.units = UnitMemo()
 
     def __len__(self) -> int:
         return len(self._table)

@@ -1,0 +1,81 @@
+"""The per-unit analysis memo (analysis/unitmemo.py) against fresh checks on real
+code: for each Python file under a folder, EDITS random edits of one unit each
+(tests/test_unit_memo.py's `edit`), each checked with the document's memo and
+fresh; prints the number of edits compared, the mismatches (must be 0) and the
+memo's hits and misses.
+
+Usage: python benchmarks/unit_memo_corpus.py FOLDER [EDITS] [literal]
+With `literal`, every edit changes a number inside a function (the edits that leave
+the other units' keys alone, so most of them are replayed).
+"""
+
+from __future__ import annotations
+
+import json
+import random
+import sys
+import zlib
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).parent.parent / "tests"))
+from test_unit_memo import KINDS, _parses, edit
+
+from robotfix.api import check_source
+from robotfix.config import Config
+from robotfix.ros.catalog import MsgCatalog
+from robotfix.smt.memo import ProofMemo
+
+
+def main(folder: Path, edits: int, kinds: tuple[str, ...]) -> None:
+    catalog = MsgCatalog([])
+    config = Config()
+    compared = mismatches = files = hits = misses = 0
+    for path in sorted(folder.rglob("*.py")):
+        try:
+            text = path.read_text(encoding="utf-8")
+            if not _parses(text):
+                continue
+        except (OSError, UnicodeDecodeError, ValueError):
+            continue
+        files += 1
+        rng = random.Random(zlib.crc32(str(path).encode()))
+        memo = ProofMemo(max_entries=0)  # the units alone (see the test)
+        check_source(text, str(path), config, catalog, memo=memo)
+        done = 0
+        for _ in range(edits * 3):
+            if done >= edits:
+                break
+            try:
+                new = edit(text, rng, kinds)
+            except (SyntaxError, ValueError, UnicodeError, IndexError):
+                continue
+            if new is None or new == text or not _parses(new):
+                continue
+            kept = repr(check_source(new, str(path), config, catalog, memo=memo))
+            fresh = repr(check_source(new, str(path), config, catalog))
+            done += 1
+            if kept != fresh:
+                mismatches += 1
+                print(f"MISMATCH {path}", flush=True)
+        compared += done
+        hits += memo.units.hits
+        misses += memo.units.misses
+    print(
+        json.dumps(
+            {
+                "files": files,
+                "edits_compared": compared,
+                "mismatches": mismatches,
+                "unit_hits": hits,
+                "unit_misses": misses,
+            }
+        )
+    )
+
+
+if __name__ == "__main__":
+    main(
+        Path(sys.argv[1]),
+        int(sys.argv[2]) if len(sys.argv) > 2 else 3,
+        ("literal",) if sys.argv[3:4] == ["literal"] else KINDS,
+    )

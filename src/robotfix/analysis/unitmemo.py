@@ -1,0 +1,559 @@
+"""The editor's analysis kept across edits, per top-level unit (issue 13 item 2).
+
+A keystroke in one function should not interpret the file's other functions again.
+`UnitMemo` (one per open document, kept by the language server next to its
+`ProofMemo`) keeps, for each item `analyze_module`'s pending loop analyses (a
+function, a method, a class body, a nested function or lambda), what analysing it
+did, and replays that when the item's inputs are the same.
+
+Key of an item (`Check.analyze`):
+- the module's *skeleton*: its whole text with positions, except that the numeric
+  literals inside function bodies are blanked (`skeleton`) where no other unit's
+  analysis can read them: not inside a call (parameter declarations, timer periods,
+  `sys.exit(1)`), not the value of a store to an attribute or subscript
+  (`self.x = 0.5`, `r.from_value = 0.0`), not an `if`/`while` test, not an
+  annotation or anything in a `def` header. A literal's length is kept when text
+  follows it on its line, so every other token's position is in the key. The
+  module phase (index, constants, module body, `collect`, statics) reads function
+  bodies only syntactically through names, calls and attribute stores, and a body's
+  analysis reads other functions only through their signatures (def headers) and
+  syntactic facts (`ends`, may-raise: statements, not numbers);
+- the exact text, with its first line number, of the top-level statement holding
+  the item, and the item's position in it;
+- the identities of the catalog, the stubs and the discharger's kind (a change
+  clears the memo), and what the resolver answered so far (`consulted`: every
+  imported module and member with its fingerprint); what the item itself resolved
+  is asked again on a replay and must fingerprint alike (`_still`).
+
+Then, before a replay, the *entering state* must equal the one recorded
+(`_fingerprint`): the fresh-symbol counter and question counter (symbols a replayed
+item made keep their numbers, so everything after it numbers alike), the sizes of
+every container of the context, the program, the statics, the parameter and frame
+facts and the index, the number of functions whose signature is not built yet, the
+solver session's existence, and each `once` key the item asked about
+(`already`/`report`) that was set before it, with the answer it got.
+
+An item is kept only when analysing it wrote nothing another item can read:
+its exit fingerprint equals its entering one but for the writes replay performs,
+it reused no derived symbol, sub-message id or first read made by an earlier item
+(`FileContext.unit_shared`; those of the module phase are a function of the key),
+it asked no solver (see below), it did not raise, and every node id in its `once`
+keys is one of its own nodes (translated by walk order).
+
+Writes of an item (read from the code), and what happens to each on a replay:
+- `ctx.diagnostics` / `ctx._reported`: every `report(diag, once)` and `report_once`
+  call is logged in order and replayed through the same calls (same de-duplication);
+- `ctx.steps` (RF902 work budget): added; a replay that would cross the budget runs
+  the item instead; `ctx._next` / `_question_ids`: advanced by the count used;
+- the solver: an item that asked z3 (or was charged a kept verdict's work) is not
+  kept, since z3's models for later questions depend on what its session was asked
+  before;
+- `ctx.sym_names`, `_derived`, `_sub_ids`, `unchanged`, `_first_reads`, `sizes`:
+  entries keyed by the item's own fresh symbols only (a hit on an older entry made
+  by another item makes it unkept), never looked up by another item;
+- `program.ends`, `program.augmented`, `ctx._invariants`, `ctx.follow_lists`,
+  the creation of `ctx.parameters` / `ctx.frame_facts`: caches of pure functions of
+  the tree (their contents, which items do change, are in the fingerprint);
+- the item's own signature (`program.signature`, `_function_for`): built by the
+  prologue, which runs on a replay too;
+- `pending`: the nested items it spawned, recorded by position and found again.
+Everything else (program tables, statics, parameter handles and reads, frames of
+instance attributes, metadata notes, `uses_refinements`, index scopes, resolver
+consultations) is in the fingerprint, so a write to it makes the item unkept.
+Hovers and unit flows (`robotfix suggest`) are never memoised.
+"""
+
+from __future__ import annotations
+
+import ast
+import bisect
+import hashlib
+import itertools
+import re
+from collections import OrderedDict
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
+
+from robotfix.analysis.context import STEP_BUDGET, Scope
+from robotfix.astwalk import walk
+
+if TYPE_CHECKING:
+    from robotfix.analysis.context import FileContext
+    from robotfix.analysis.program import Program
+    from robotfix.analysis.values import Value
+    from robotfix.diagnostics import Diagnostic
+
+MAX_ENTRIES = 4_000  # items per document
+
+Run = Callable[[ast.AST, Scope], list[tuple[ast.AST, Scope]]]
+Prologue = Callable[[ast.AST, Scope], tuple[Scope, Any]]
+
+
+@dataclass
+class Record:
+    entering: tuple[object, ...]
+    answers: tuple[tuple[object, bool], ...]  # once keys set before the item
+    events: tuple[tuple[Diagnostic | None, object], ...]  # report / report_once
+    steps: int
+    fresh: int
+    questions: int
+    work: int
+    spawned: tuple[tuple[tuple[object, ...], bool], ...]  # locator, own scope
+    walked: bool  # some once key names a node (by walk index)
+    consulted: tuple[tuple[str, object], ...] = ()  # what imports it resolved
+
+
+class UnitMemo:
+    def __init__(self, max_entries: int = MAX_ENTRIES) -> None:
+        self._table: OrderedDict[tuple[object, ...], Record] = OrderedDict()
+        self._max = max_entries
+        self._identity: tuple[object, ...] = ()
+        self.hits = 0
+        self.misses = 0
+
+    def __len__(self) -> int:
+        return len(self._table)
+
+    def begin(
+        self,
+        ctx: FileContext,
+        program: Program,
+        tree: ast.Module,
+        statics: dict[str, Value],
+    ) -> Check | None:
+        """The memo's view of one check, after the module phase; None when this
+        check cannot use it."""
+        discharge = ctx.discharge
+        if (
+            ctx.hovers is not None
+            or ctx.unit_flows is not None
+            or not hasattr(discharge, "charge_kept")
+        ):
+            return None
+        identity = (ctx.catalog, ctx.stubs, type(discharge), ctx.source.path)
+        if len(identity) != len(self._identity) or any(
+            a is not b for a, b in zip(identity, self._identity, strict=True)
+        ):
+            self._table.clear()
+            self._identity = identity
+        return Check(self, ctx, program, tree, statics)
+
+    def get(self, key: tuple[object, ...]) -> Record | None:
+        found = self._table.get(key)
+        if found is not None:
+            self._table.move_to_end(key)
+        return found
+
+    def put(self, key: tuple[object, ...], record: Record) -> None:
+        self._table[key] = record
+        self._table.move_to_end(key)
+        while len(self._table) > self._max:
+            self._table.popitem(last=False)
+
+
+def _resolver_state(ctx: FileContext) -> object:
+    consulted = getattr(ctx.resolver, "consulted", None)
+    return None if consulted is None else tuple(consulted.items())
+
+
+class Check:
+    """One check of the document: keys its items and records or replays them."""
+
+    def __init__(
+        self,
+        memo: UnitMemo,
+        ctx: FileContext,
+        program: Program,
+        tree: ast.Module,
+        statics: dict[str, Value],
+    ) -> None:
+        self.memo = memo
+        self.ctx = ctx
+        self.program = program
+        self.statics = statics
+        self.tree = tree
+        self.lines = ctx.source.text.splitlines(keepends=True)
+        self.base = hashlib.sha1(skeleton(tree, self.lines).encode()).hexdigest()
+        self.starts: list[tuple[int, int]] = []
+        self.roots: list[ast.stmt] = []
+        for statement in tree.body:
+            self.starts.append(_first_line(statement))
+            self.roots.append(statement)
+        self._root_text: dict[int, str] = {}
+        # symbols made by the module phase: the same for the same skeleton
+        ctx.unit_base = ctx._next
+
+    # -- keys ----------------------------------------------------------------
+    def _root(self, node: ast.AST) -> int | None:
+        where = (getattr(node, "lineno", 0), getattr(node, "col_offset", 0))
+        index = bisect.bisect_right(self.starts, where) - 1
+        if index < 0:
+            return None
+        root = self.roots[index]
+        end = (root.end_lineno or 0, root.end_col_offset or 0)
+        return index if where <= end else None
+
+    def _key(self, node: ast.AST, index: int) -> tuple[object, ...]:
+        text = self._root_text.get(index)
+        if text is None:
+            root = self.roots[index]
+            first = self.starts[index][0]
+            text = "".join(self.lines[first - 1 : root.end_lineno])
+            self._root_text[index] = text = f"{first}\0{text}"
+        return (self.base, text, _locator(node), _resolver_state(self.ctx))
+
+    # -- one item ------------------------------------------------------------
+    def analyze(
+        self, node: ast.AST, parent: Scope, prologue: Prologue, run: Callable[..., Any]
+    ) -> list[tuple[ast.AST, Scope]]:
+        scope, function = prologue(node, parent)
+        ctx = self.ctx
+        index = self._root(node)
+        if index is None or ctx.muted:
+            return run(node, parent, scope, function)  # type: ignore[no-any-return]
+        key = self._key(node, index)
+        record = self.memo.get(key)
+        entering = self._fingerprint()
+        if record is not None:
+            spawned = self._replay(record, entering, index, node, parent, scope)
+            if spawned is not None:
+                self.memo.hits += 1
+                return spawned
+        self.memo.misses += 1
+        return self._record(key, entering, index, node, parent, scope, function, run)
+
+    def _replay(
+        self,
+        record: Record,
+        entering: tuple[object, ...],
+        index: int,
+        node: ast.AST,
+        parent: Scope,
+        scope: Scope,
+    ) -> list[tuple[ast.AST, Scope]] | None:
+        ctx = self.ctx
+        if record.entering != entering or ctx.steps + record.steps > STEP_BUDGET:
+            return None
+        nodes = list(walk(self.roots[index])) if record.walked else []
+        answers = record.answers
+        if record.walked:
+            answers = tuple((_from_walk(o, nodes), w) for o, w in answers)
+        if any((once in ctx._reported) != was for once, was in answers):
+            return None
+        spawned: list[tuple[ast.AST, Scope]] = []
+        if record.spawned:
+            where = {_locator(n): n for n in walk(node)}
+            for locator, own in record.spawned:
+                found = where.get(locator)
+                if found is None:
+                    return None
+                spawned.append((found, scope if own else parent))
+        if record.consulted and not _still(ctx, record.consulted):
+            return None
+        if not ctx.discharge.charge_kept(record.work):  # type: ignore[attr-defined]
+            return None
+        ctx.steps += record.steps
+        ctx._next += record.fresh
+        for _ in range(record.questions):
+            next(ctx._question_ids)
+        for diag, once in record.events:
+            if record.walked:
+                once = _from_walk(once, nodes)
+            if diag is None:
+                ctx.report_once(once)  # type: ignore[arg-type]
+            else:
+                ctx.report(diag, once)  # type: ignore[arg-type]
+        return spawned
+
+    def _record(
+        self,
+        key: tuple[object, ...],
+        entering: tuple[object, ...],
+        index: int,
+        node: ast.AST,
+        parent: Scope,
+        scope: Scope,
+        function: Any,
+        run: Callable[..., Any],
+    ) -> list[tuple[ast.AST, Scope]]:
+        ctx = self.ctx
+        steps, fresh, work = ctx.steps, ctx._next, ctx.discharge.work_used()  # type: ignore[attr-defined]
+        questions = _count(ctx._question_ids)
+        log: list[tuple[Diagnostic | None, object]] = []
+        answers: dict[object, bool] = {}
+        ctx.unit_log, ctx.unit_answers = log, answers
+        ctx.unit_floor, ctx.unit_shared = fresh, False
+        consulted = getattr(ctx.resolver, "consulted", None)
+        before = dict(consulted) if consulted else {}
+        try:
+            spawned: list[tuple[ast.AST, Scope]] = run(node, parent, scope, function)
+        finally:
+            ctx.unit_log = ctx.unit_answers = None
+            shared, ctx.unit_shared = ctx.unit_shared, False
+        # but the counters and the resolver's record (checked again on a replay)
+        if shared or self._fingerprint()[2:-1] != entering[2:-1]:
+            return spawned
+        used = ctx.discharge.work_used() - work  # type: ignore[attr-defined]
+        if used != 0:  # z3 was asked: its later models may depend on this ask
+            return spawned
+        own = {id(n) for n in walk(node)}
+        kept: list[tuple[tuple[object, ...], bool]] = []
+        for child, where in spawned:
+            if id(child) not in own or where not in (scope, parent):
+                return spawned
+            kept.append((_locator(child), where is scope))
+        ids: dict[int, int] = {}
+        walked = any(_has_int(once) for _, once in log) or any(
+            _has_int(once) for once in answers
+        )
+        if walked:
+            ids = {id(n): i for i, n in enumerate(walk(self.roots[index]))}
+        events = []
+        for diag, once in log:
+            translated = _to_walk(once, ids) if walked else once
+            if translated is _UNKEPT:
+                return spawned
+            events.append((diag, translated))
+        kept_answers = []
+        for once, was in answers.items():
+            translated = _to_walk(once, ids) if walked else once
+            if translated is _UNKEPT:
+                return spawned
+            kept_answers.append((translated, was))
+        self.memo.put(
+            key,
+            Record(
+                entering,
+                tuple(kept_answers),
+                tuple(events),
+                ctx.steps - steps,
+                ctx._next - fresh,
+                _count(ctx._question_ids) - questions,
+                used,
+                tuple(kept),
+                walked,
+                tuple(
+                    (k, v) for k, v in (consulted or {}).items() if before.get(k) != v
+                ),
+            ),
+        )
+        return spawned
+
+    # -- the state other items can see ---------------------------------------
+    def _fingerprint(self) -> tuple[object, ...]:
+        ctx, program = self.ctx, self.program
+        parts: list[object] = [ctx._next, _count(ctx._question_ids)]
+        for name, value in vars(ctx).items():
+            if name not in _OWN_CTX:
+                parts.append(_shape(value))
+        for name, value in vars(program).items():
+            if name not in _OWN_PROGRAM:
+                parts.append(_shape(value))
+        parts.append(sum(len(t) for t in program.attributes.values()))
+        parts.append(sum(len(t) for t in program.messages.values()))
+        parts.append(sum(1 for f in program.functions.values() if f.scope is None))
+        parts.append(len(self.statics))
+        parts.append(_inner(ctx.parameters))
+        parts.append(_inner(ctx.frame_facts))
+        parts.append(_inner(ctx.index))
+        parts.append(_inner(ctx.constants))
+        parts.append(ctx.discharge.work_state())  # type: ignore[attr-defined]
+        parts.append(_resolver_state(ctx))
+        return tuple(parts)
+
+
+# written only as the docstring says (logged, counted, or keyed by own symbols)
+_OWN_CTX = frozenset(
+    {
+        "diagnostics",
+        "_reported",
+        "sym_names",
+        "_next",
+        "_question_ids",
+        "_sub_ids",
+        "_derived",
+        "unchanged",
+        "_first_reads",
+        "sizes",
+        "steps",
+        "_invariants",
+        "follow_lists",
+        "parameters",
+        "frame_facts",
+        "unit_memo",
+        "unit_log",
+        "unit_answers",
+        "unit_floor",
+        "unit_base",
+        "unit_shared",
+    }
+)
+_OWN_PROGRAM = frozenset({"ends", "augmented"})
+_UNKEPT = object()
+
+
+def _still(ctx: FileContext, consulted: tuple[tuple[str, object], ...]) -> bool:
+    """Whether the imports an item resolved resolve alike now: asked again, as its
+    analysis did (which records them for the file as that would), and compared."""
+    resolver = ctx.resolver
+    record = getattr(resolver, "consulted", None)
+    if resolver is None or record is None:
+        return False
+    for key, _ in consulted:
+        parts = key.split("\0")
+        if parts[0] != str(getattr(resolver, "path", "")):
+            continue  # what a summary it read stood on: asked again through it
+        if len(parts) == 2:
+            resolver.module(parts[1])
+        elif len(parts) == 3:
+            summary = resolver.module(parts[1])
+            if summary is not None:
+                member = getattr(resolver, "member", None)
+                if member is None:
+                    return False
+                member(parts[1], summary, parts[2])
+    return all(record.get(key) == value for key, value in consulted)
+
+
+def _shape(value: object) -> object:
+    if isinstance(value, (dict, list, set, frozenset, tuple)):
+        return len(value)
+    if value is None or isinstance(value, (bool, int, float, str)):
+        return value
+    return type(value).__name__
+
+
+def _inner(value: object) -> object:
+    """The sizes of an object's containers (0s for an absent one, created empty)."""
+    if value is None:
+        return None
+    return tuple(
+        len(v) if isinstance(v, (dict, list, set)) else 0
+        for k, v in sorted(vars(value).items())
+        if isinstance(v, (dict, list, set))
+    )
+
+
+def _count(counter: itertools.count[int]) -> int:
+    """How many question ids were handed out (`count(-1, -1)` reads `count(-n, -1)`)."""
+    found = re.match(r"count\((-?\d+)", repr(counter))
+    return -int(found.group(1)) if found else 0
+
+
+def _first_line(statement: ast.stmt) -> tuple[int, int]:
+    decorators = getattr(statement, "decorator_list", [])
+    if decorators:
+        first = min(d.lineno for d in decorators)
+        return (first, 0)
+    return (statement.lineno, statement.col_offset)
+
+
+def _locator(node: ast.AST) -> tuple[object, ...]:
+    return (
+        type(node).__name__,
+        getattr(node, "lineno", 0),
+        getattr(node, "col_offset", 0),
+        getattr(node, "end_lineno", 0),
+        getattr(node, "end_col_offset", 0),
+    )
+
+
+def _has_int(key: object) -> bool:
+    if isinstance(key, tuple):
+        return any(_has_int(k) for k in key)
+    return isinstance(key, int) and not isinstance(key, bool) and key > 1 << 20
+
+
+def _to_walk(key: object, ids: dict[int, int]) -> object:
+    """A `once` key with its node ids (large ints) as walk indexes; `_UNKEPT` when
+    a large int is not one of the statement's nodes."""
+    if isinstance(key, tuple):
+        out = []
+        for k in key:
+            t = _to_walk(k, ids)
+            if t is _UNKEPT:
+                return _UNKEPT
+            out.append(t)
+        return tuple(out)
+    if isinstance(key, int) and not isinstance(key, bool) and key > 1 << 20:
+        found = ids.get(key)
+        return _UNKEPT if found is None else _Walk(found)
+    return key
+
+
+@dataclass(frozen=True)
+class _Walk:
+    index: int
+
+
+def _from_walk(key: object, nodes: list[ast.AST]) -> object:
+    if isinstance(key, tuple):
+        return tuple(_from_walk(k, nodes) for k in key)
+    if isinstance(key, _Walk):
+        return id(nodes[key.index])
+    return key
+
+
+# -- the skeleton ------------------------------------------------------------------
+def skeleton(tree: ast.Module, lines: list[str]) -> str:
+    """The module's text with the numeric literals of function bodies blanked where
+    only their own function reads them (see the module docstring)."""
+    spans: dict[int, list[tuple[int, int]]] = {}
+    todo: list[ast.AST] = []
+    for node in walk(tree):
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            todo.extend(node.body)
+    seen: set[int] = set()
+    while todo:
+        node = todo.pop()
+        if id(node) in seen:
+            continue
+        seen.add(id(node))
+        kind = type(node)
+        if kind is ast.Constant:
+            value = node.value  # type: ignore[attr-defined]
+            if type(value) in (int, float) and node.lineno == node.end_lineno:  # type: ignore[attr-defined]
+                spans.setdefault(node.lineno, []).append(  # type: ignore[attr-defined]
+                    (node.col_offset, node.end_col_offset)  # type: ignore[attr-defined]
+                )
+            continue
+        if kind in _KEPT:
+            continue
+        if kind in (ast.FunctionDef, ast.AsyncFunctionDef):
+            continue  # its own body is queued above; its header is kept
+        if kind in (ast.Assign, ast.AugAssign, ast.AnnAssign):
+            targets = node.targets if kind is ast.Assign else [node.target]  # type: ignore[attr-defined]
+            if any(not isinstance(t, ast.Name) for t in targets):
+                continue  # a store to an attribute or an item: kept whole
+            if kind is ast.AnnAssign:
+                if node.value is not None:  # type: ignore[attr-defined]
+                    todo.append(node.value)  # type: ignore[attr-defined]
+                continue  # the annotation is kept
+            todo.append(node.value)  # type: ignore[attr-defined]
+            continue
+        if kind in (ast.If, ast.While):
+            todo.extend(node.body)  # type: ignore[attr-defined]
+            todo.extend(node.orelse)  # type: ignore[attr-defined]
+            continue  # the test is kept
+        if kind in (ast.Lambda, ast.ClassDef):
+            continue
+        todo.extend(ast.iter_child_nodes(node))
+    if not spans:
+        return "".join(lines)
+    out = list(lines)
+    for number, columns in spans.items():
+        if number - 1 >= len(out):
+            continue
+        raw = out[number - 1].encode("utf-8", "surrogatepass")
+        for start, end in sorted(columns, reverse=True):
+            rest = raw[end:].strip()
+            mark = (
+                b"#" if not rest or rest.startswith(b"#") else b"#%d#" % (end - start)
+            )
+            raw = raw[:start] + mark + raw[end:]
+        out[number - 1] = raw.decode("utf-8", "surrogatepass")
+    return "".join(out)
+
+
+_KEPT = (ast.Call, ast.Assert, ast.Raise, ast.Global, ast.Nonlocal)

@@ -1,0 +1,268 @@
+"""The editor's per-unit analysis memo (analysis/unitmemo.py) changes nothing: after
+random edits to one unit, a check that replays the other units gives the same
+diagnostics, byte for byte, as a fresh check of the edited text."""
+
+from __future__ import annotations
+
+import ast
+import random
+import sys
+import zlib
+from pathlib import Path
+
+import pytest
+
+from robotfix.analysis.unitmemo import UnitMemo, skeleton
+from robotfix.api import check_source
+from robotfix.config import Config
+from robotfix.smt.memo import ProofMemo
+
+sys.path.insert(0, str(Path(__file__).parent))
+from test_cases import CASES, catalog_for
+
+ROOT = Path(__file__).parent.parent
+
+
+def _bodies(tree: ast.Module) -> list[ast.FunctionDef | ast.AsyncFunctionDef]:
+    return [
+        n
+        for n in ast.walk(tree)
+        if isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef)) and n.body
+    ]
+
+
+def _replace(lines: list[str], node: ast.AST, new: str) -> str | None:
+    line, col = node.lineno, node.col_offset  # type: ignore[attr-defined]
+    if node.end_lineno != line:  # type: ignore[attr-defined]
+        return None
+    raw = lines[line - 1].encode()
+    raw = raw[:col] + new.encode() + raw[node.end_col_offset :]  # type: ignore[attr-defined]
+    out = list(lines)
+    out[line - 1] = raw.decode()
+    return "".join(out)
+
+
+def _insert(lines: list[str], before: ast.stmt, text: str) -> str:
+    indent = lines[before.lineno - 1][: before.col_offset]
+    if indent.strip():  # `if x: y` on one line
+        return "".join(lines)
+    out = list(lines)
+    out.insert(before.lineno - 1, f"{indent}{text}\n")
+    return "".join(out)
+
+
+KINDS = (
+    "literal",
+    "insert",
+    "delete",
+    "line_above",
+    "rename",
+    "field",
+    "init_attribute",
+    "constant",
+)
+
+
+def edit(text: str, rng: random.Random, kinds: tuple[str, ...] = KINDS) -> str | None:
+    """`text` with one random edit of one unit (or of a module constant)."""
+    tree = ast.parse(text)
+    lines = text.splitlines(keepends=True)
+    functions = _bodies(tree)
+    kind = rng.choice(kinds)
+    if kind == "constant":
+        consts = [
+            s.value
+            for s in tree.body
+            if isinstance(s, (ast.Assign, ast.AnnAssign))
+            and isinstance(s.value, ast.Constant)
+            and type(s.value.value) in (int, float)
+        ]
+        if not consts:
+            return None
+        node = rng.choice(consts)
+        return _replace(lines, node, repr(node.value * 2 + 1))  # type: ignore[operator]
+    if not functions:
+        return None
+    function = rng.choice(functions)
+    inside = list(ast.walk(function))
+    statements = [s for s in inside if isinstance(s, ast.stmt) and s is not function]
+    if kind == "literal":
+        numbers = [
+            n
+            for n in inside
+            if isinstance(n, ast.Constant) and type(n.value) in (int, float)
+        ]
+        if not numbers:
+            return None
+        node = rng.choice(numbers)
+        value = rng.choice([0, 1, -1, 2.5, 1000, node.value + 1])  # type: ignore[operator]
+        return _replace(lines, node, f"({value!r})")
+    if kind == "insert":
+        if not statements:
+            return None
+        filler = rng.choice(["pass", "_memo_edit = 1.5", "_memo_edit = [1, 2]"])
+        return _insert(lines, rng.choice(statements), filler)
+    if kind == "delete":
+        simple = [
+            s
+            for s in statements
+            if isinstance(s, (ast.Assign, ast.Expr, ast.AugAssign, ast.Return))
+            and s.lineno == s.end_lineno
+        ]
+        if not simple:
+            return None
+        return _replace(lines, rng.choice(simple), "pass")
+    if kind == "line_above":
+        out = list(lines)
+        out.insert(function.lineno - 1, "\n")
+        return "".join(out)
+    if kind == "rename":
+        stores = sorted(
+            {
+                n.id
+                for n in inside
+                if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Store)
+            }
+        )
+        if not stores:
+            return None
+        name = rng.choice(stores)
+        names = [n for n in inside if isinstance(n, ast.Name) and n.id == name]
+        new = text
+        for node in sorted(names, key=lambda n: (n.lineno, n.col_offset), reverse=True):
+            found = _replace(new.splitlines(keepends=True), node, f"{name}_r")
+            if found is None:
+                return None
+            new = found
+        return new
+    if kind == "field":
+        attributes = [
+            n
+            for n in inside
+            if isinstance(n, ast.Attribute) and n.lineno == n.end_lineno
+        ]
+        if not attributes:
+            return None
+        node = rng.choice(attributes)
+        swap = {"x": "y", "y": "z", "z": "x", "linear": "angular", "data": "value"}
+        new_attr = swap.get(node.attr, node.attr + "_e")
+        source = ast.get_source_segment(text, node) or ""
+        if not source.endswith(node.attr):
+            return None
+        return _replace(lines, node, source[: -len(node.attr)] + new_attr)
+    # init_attribute: add or remove an attribute assignment in an __init__
+    inits = [f for f in functions if f.name == "__init__"]
+    if not inits:
+        return None
+    init = rng.choice(inits)
+    stores = [
+        s
+        for s in init.body
+        if isinstance(s, ast.Assign)
+        and any(isinstance(t, ast.Attribute) for t in s.targets)
+        and s.lineno == s.end_lineno
+    ]
+    if stores and rng.random() < 0.5:
+        return _replace(lines, rng.choice(stores), "pass")
+    self_name = init.args.args[0].arg if init.args.args else "self"
+    return _insert(lines, init.body[-1], f"{self_name}.memo_extra = 0.25")
+
+
+def _parses(text: str) -> bool:
+    try:
+        ast.parse(text)
+    except SyntaxError:
+        return False
+    return True
+
+
+def differential(path: Path, text: str, catalog: object, edits: int, seed: int) -> int:
+    """Check `edits` successive random edits of `text` with one memo and fresh;
+    the number of edits compared."""
+    rng = random.Random(seed)
+    # no proofs kept: a kept verdict's counterexample can differ from the one a
+    # fresh session finds (smt/memo.py); this test is about the units alone
+    memo = ProofMemo(max_entries=0)
+    config = Config()
+
+    def check(source: str, kept: ProofMemo | None) -> str:
+        return repr(check_source(source, str(path), config, catalog, memo=kept))  # type: ignore[arg-type]
+
+    check(text, memo)
+    compared = 0
+    current = text
+    for _ in range(edits * 3):
+        if compared >= edits:
+            break
+        new = edit(current, rng)
+        if new is None or new == current or not _parses(new):
+            continue
+        kept, fresh = check(new, memo), check(new, None)
+        assert kept == fresh, f"{path}: memoised check differs after an edit\n{new}"
+        compared += 1
+        current = new if rng.random() < 0.7 else text
+    return compared
+
+
+CASE_FILES = sorted(CASES.rglob("*.py"))
+
+
+@pytest.mark.parametrize("path", CASE_FILES, ids=lambda p: str(p.relative_to(CASES)))
+def test_case_files_memoised_like_fresh(path: Path) -> None:
+    text = path.read_text(encoding="utf-8")
+    differential(
+        path, text, catalog_for(path.parent), 4, zlib.crc32(path.name.encode()) % 1000
+    )
+
+
+def test_seed_programs_memoised_like_fresh(tmp_path: Path) -> None:
+    sys.path.insert(0, str(ROOT / "benchmarks"))
+    from generate_annotated import generate
+
+    from robotfix.ros.catalog import MsgCatalog
+
+    catalog = MsgCatalog([])
+    for lines, seed in ((300, 1), (600, 2)):
+        path = tmp_path / f"generated_{lines}.py"
+        assert differential(path, generate(lines), catalog, 6, seed) >= 3
+
+
+def test_memo_replays_units_an_edit_did_not_touch(tmp_path: Path) -> None:
+    """The memo is used: after a literal changes in one function, the others come
+    from it (a test that would pass with the memo never hit proves nothing)."""
+    sys.path.insert(0, str(ROOT / "benchmarks"))
+    from generate_annotated import generate
+
+    from robotfix.ros.catalog import MsgCatalog
+
+    catalog = MsgCatalog([])
+    text = generate(300)
+    path = tmp_path / "node.py"
+    memo = ProofMemo()
+    check_source(text, str(path), Config(), catalog, memo=memo)
+    units = memo.units
+    assert isinstance(units, UnitMemo) and len(units) > 10
+    edited = text.replace("= 0.5\n", "= 0.75\n", 1)
+    assert edited != text
+    before = units.hits
+    found = check_source(edited, str(path), Config(), catalog, memo=memo)
+    assert units.hits - before >= len(units) // 2
+    assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
+
+
+def test_skeleton_blanks_only_numbers_no_other_unit_reads() -> None:
+    text = (
+        "import rclpy\n"
+        "LIMIT = 2.0\n"
+        "def f(self, x=3.0):\n"
+        "    y = 0.5\n"
+        "    self.z = 0.25\n"
+        "    rclpy.sleep(1.5)\n"
+        "    if y > 4.0:\n"
+        "        return y * 7.0\n"
+    )
+    blanked = skeleton(ast.parse(text), text.splitlines(keepends=True))
+    for kept in ("2.0", "3.0", "0.25", "1.5", "4.0"):
+        assert kept in blanked
+    assert "0.5" not in blanked and "7.0" not in blanked
+    assert "y * #3#" not in blanked and "y * #" in blanked  # last on its line
