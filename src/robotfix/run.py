@@ -356,7 +356,8 @@ def _check_all(
     jobs = min(jobs, default_jobs(), len(todo))
     size = sum(_size(path, data) for path, data in todo)
     if jobs <= 1 or len(todo) < MIN_PARALLEL or size < MIN_PARALLEL_BYTES:
-        project.expect([path for path, _ in todo])
+        # in this order, all here: a package's summaries go once it is checked
+        project.expect([path for path, _ in todo], release=True)
         for path, data in todo:
             yield _check_one(path, data, catalog, config, project)
         return

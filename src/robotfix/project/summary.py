@@ -97,6 +97,17 @@ class Project:
         # from the same tree, for `paramcheck` (`run.py`); () when the run has
         # no parameter file
         self.parameter_words: tuple[bytes, ...] = ()
+        # with `expect(..., release=True)` (a -j 1 run): how many files still to
+        # check search each folder, and the summarised or parsed modules a name
+        # can reach through each folder; a module no such folder leads to any
+        # longer is dropped (`_released`), so a run holds the summaries of the
+        # packages still to come, not of every package it checked
+        self._live: dict[str, int] = {}
+        self._holders: dict[str, set[Path]] = {}
+        self._ways: dict[Path, tuple[str, ...]] = {}
+        self._weak = frozenset(str(root) for root in index.roots)
+        self._checking: Path | None = None  # the file `take`n last
+        self.released = 0  # modules dropped so (tests count them)
 
     def resolver(self, path: Path, building: Path | None = None) -> FileResolver:
         return FileResolver(self, path, building)
@@ -126,6 +137,7 @@ class Project:
             self.catalog.touched = outer
             self._summaries[path] = found
             self._deps[path] = dict(resolver.consulted)
+            self._hold(path)
             if found is not None and parsed is not None:
                 self.built[str(path)] = (
                     _sha(parsed[0]),
@@ -242,6 +254,7 @@ class Project:
                 self.parses += 1
                 source = SourceFile.from_bytes(str(path), data)
                 self._parsed[path] = (data, source) if source.tree else None
+                self._hold(path)
         return self._parsed[path]
 
     def _release(self, path: Path) -> None:
@@ -253,17 +266,75 @@ class Project:
             self._pending[_key(path)] = parsed
             self._pending_bytes += len(parsed[0])
 
-    def expect(self, paths: list[Path]) -> None:
-        """The files this process checks next (all others' trees are dropped)."""
+    def expect(self, paths: list[Path], release: bool = False) -> None:
+        """The files this process checks next (all others' trees are dropped); with
+        `release`, these are all it checks, in this order: what only the files
+        already checked could import is dropped as the run goes (`take`)."""
         self.to_check = {_key(p) for p in paths}
         self._pending.clear()
         self._pending_bytes = 0
+        self._live.clear()
+        self._holders.clear()
+        self._ways.clear()
+        self._checking = None
+        if release:
+            live = self._live
+            for p in paths:
+                for folder in self.index.search_path(p):
+                    spelled = str(folder)
+                    live[spelled] = live.get(spelled, 0) + 1
+
+    def _hold(self, path: Path) -> None:
+        """Note the folders through which a file still to check could import
+        `path` (while `expect(..., release=True)` is in force)."""
+        if not self._live or path in self._ways:
+            return
+        ways = _ways(path)
+        self._ways[path] = ways
+        for folder in ways:
+            self._holders.setdefault(folder, set()).add(path)
+
+    def _released(self, path: Path) -> None:
+        """`path` has been checked: the folders no file still to check searches are
+        dead, and so is each module no live folder leads to. Dropping one changes no
+        output: a summary depends on the import graph only, so one asked for again
+        is built again, the same (cf. `-j N`)."""
+        live = self._live
+        # a checked root does not keep a module: a name through it spells the
+        # package folders (`pkg_a.pkg_a.util` under a workspace's `src/`), which
+        # real code seldom does; such a module is built again if a file asks
+        weak = self._weak
+        dead = []
+        for folder in self.index.search_path(path):
+            spelled = str(folder)
+            count = live.get(spelled, 0) - 1
+            if count > 0:
+                live[spelled] = count
+            elif spelled in live:
+                del live[spelled]
+                dead.append(spelled)
+        for spelled in dead:
+            for module in self._holders.pop(spelled, set()):
+                ways = self._ways.get(module)
+                if ways is None or any(w in live and w not in weak for w in ways):
+                    continue
+                del self._ways[module]
+                self.released += 1
+                self._summaries.pop(module, None)
+                self._deps.pop(module, None)
+                self._types.pop(module, None)
+                self._reach.pop(module, None)
+                self._parsed.pop(module, None)
 
     def take(self, path: Path, data: bytes) -> SourceFile | None:
         """The parse of `path` made for its summary, if these are its bytes; the
         check of `path` then owns it (nothing here holds it any longer)."""
         key = _key(path)
         self.to_check.discard(key)
+        if self._live:  # the file checked before this one is done with
+            if self._checking is not None:
+                self._released(self._checking)
+            self._checking = path
         parsed = self._pending.pop(key, None)
         if parsed is None:
             return None
@@ -647,6 +718,26 @@ _PLAIN = frozenset({str, int, float, bool, type(None)})  # exactly these: no sub
 def _key(path: Path | str) -> str:
     """One spelling of a file's path, for the run's files and the index's alike."""
     return os.path.normpath(os.path.abspath(path))
+
+
+def _ways(path: Path) -> tuple[str, ...]:
+    """Every folder from which some dotted name could find `path` (`a/b.py` from
+    `a/..` as `a.b`, from `a` as `b`): its ancestors up to the first whose name is
+    no identifier (a name spells every folder below the one searched)."""
+    full = os.path.abspath(path)
+    folder, name = os.path.split(full)
+    if name == "__init__.py":
+        folder, name = os.path.split(folder)
+    elif name.endswith(".py"):
+        name = name[:-3]
+    found = []
+    while name.isidentifier():
+        found.append(folder)
+        parent, name = os.path.split(folder)
+        if parent == folder:
+            break
+        folder = parent
+    return tuple(found)
 
 
 def _sha(data: bytes) -> str:
