@@ -7,19 +7,31 @@ script, its own folder: `sys.path[0]`), then the root of the ROS package around 
 its `src/`, then the checked roots. A name is a module there as `a/b.py` or
 `a/b/__init__.py`. Only existence is tested here (no file is read); every lookup is
 remembered for the run.
+
+A cached run (the result cache) keeps the answers between runs (`keep`, `restore`)
+as `discovery.Trace` keeps the walk: with the stamp (os.stat, taken before the
+listing) of every folder listed and the answer of every existence probe
+(`__init__.py`, `package.xml`, `src/`). They are all reused when every stamp and
+probe answers as it did, else none. Not kept when a listing met a symlink (what it
+reaches is not in its folder's stamp) or a stamp younger than `RACY_NS`.
 """
 
 from __future__ import annotations
 
 import ast
 import functools
+import json
 import os
+import time
 from collections import deque
 from collections.abc import Callable, Sequence
 from pathlib import Path
+from typing import Any
 
 _UNKNOWN = Path("\0")  # not looked up yet
 MAX_DEPTH = 32  # folders climbed looking for a package top or a package.xml
+RACY_NS = 2_000_000_000  # a folder changed this recently is not trusted by its stamp
+KEPT_FORMAT = 1
 
 
 class ModuleIndex:
@@ -34,8 +46,10 @@ class ModuleIndex:
         self._by_spelling: dict[str, tuple[Path, ...]] = {}  # folder as spelled ->
         self._resolved: dict[tuple[int, str], Path | None] = {}
         self._ids: dict[str, int] = {}  # folder as spelled -> its search path's id
-        self._numbers: dict[tuple[Path, ...], int] = {}
-        self._paths: list[tuple[Path, ...]] = []  # search paths by number
+        self._numbers: dict[tuple[str, ...], int] = {}
+        # search paths by number (None: restored, not needed as Paths yet)
+        self._paths: list[tuple[Path, ...] | None] = []
+        self._spelled: list[tuple[str, ...]] = []  # the same, as strings
         self._top_names: dict[int, frozenset[str]] = {}
         self._found: dict[tuple[str, str], Path | None] = {}
         self._packages: dict[Path, str | None] = {}
@@ -43,17 +57,146 @@ class ModuleIndex:
         # folders in which a file's existence was tested (`__init__.py`,
         # `package.xml`, `src/`): a change there can change an answer too
         self._probed: set[str] = set()
+        # for `keep`: each listed folder's stamp, taken before it was listed, and
+        # each probe's answer (path -> (is a folder?, exists?))
+        self._stamps: dict[str, list[int] | None] = {}
+        self._probes: dict[str, tuple[bool, bool]] = {}
+        # probes in a folder stamped before them: the stamp answers for them
+        self._covered: set[str] = set()
+        self._spoiled = False  # a symlink listed, or a stamp too recent
+        self._now = time.time_ns()
+        self._restored: tuple[dict[str, Any], tuple[int, ...]] | None = None
 
     def listed_folders(self) -> set[str]:
         """Every folder this index listed or probed (for the language server: a
         module added or removed in one of them changes what a name is)."""
-        return {*self._listings, *self._probed}
+        probed = {os.path.dirname(name) for name in self._probes}
+        return {*self._listings, *self._probed, *self._stamps, *probed}
 
     def _listing(self, folder: str) -> dict[str, bool]:
         found = self._listings.get(folder)
         if found is None:
-            found = self._listings[folder] = _list(folder)
+            if folder not in self._stamps:
+                stamped = self._stamps[folder] = _stamp(folder)
+                if stamped is not None and self._now - max(stamped[:2]) < RACY_NS:
+                    self._spoiled = True
+            found, linked = _list(folder)
+            self._listings[folder] = found
+            self._spoiled = self._spoiled or linked
         return found
+
+    def _isfile(self, path: Path) -> bool:
+        name = str(path)
+        self._probed.add(os.path.dirname(name))
+        found = self._probes.get(name)
+        if found is None:
+            self._cover(name)
+            found = self._probes[name] = (False, os.path.isfile(name))
+        return found[1]
+
+    def _cover(self, name: str) -> None:
+        if self._stamps.get(os.path.dirname(name)) is not None:
+            self._covered.add(name)
+
+    def _isdir(self, path: Path) -> bool:
+        name = str(path)
+        found = self._probes.get(name)
+        if found is None:
+            self._cover(name)
+            found = self._probes[name] = (True, _is_dir(path))
+        return found[1]
+
+    # -- kept between runs ----------------------------------------------------
+    def _key(self) -> str | None:
+        """What the answers depend on besides the disk: the current folder (for
+        relative spellings), the python paths and the roots."""
+        try:
+            cwd = os.getcwd()
+        except OSError:
+            return None
+        parts = [KEPT_FORMAT, cwd, [str(p) for p in self.python_paths]]
+        return json.dumps([*parts, [str(r) for r in self.roots]])
+
+    def keep(self) -> dict[str, Any] | None:
+        """The answers so far and what they depend on, for the next run's
+        `restore`; None when they cannot be vouched for."""
+        key = self._key()
+        if key is None or self._spoiled:
+            return None
+        if self._restored is not None and self._restored[1] == self._sizes():
+            return self._restored[0]  # nothing new: the same object
+        files: dict[Path, int] = {}
+        resolved: list[list[object]] = []
+        for (number, name), found in self._resolved.items():
+            index = -1 if found is None else files.setdefault(found, len(files))
+            resolved.append([number, name, index])
+        # a probe in a folder listed before it is answered by the folder's stamp
+        # (no symlink there, else nothing is kept)
+        covered = self._covered
+        return {
+            "key": key,
+            "stamps": self._stamps,
+            "probes": [
+                [k, d, e] for k, (d, e) in self._probes.items() if k not in covered
+            ],
+            "paths": self._spelled,
+            "ids": self._ids,
+            "files": [str(f) for f in files],
+            "resolved": resolved,
+        }
+
+    def restore(self, raw: Any) -> bool:
+        """Take over what an earlier run's `keep` wrote when every folder stamp and
+        probe answers as it did then (else nothing: each answer is worked out
+        again). Only on a fresh index."""
+        if not (isinstance(raw, dict) and raw.get("key") == self._key()):
+            return False
+        if self._resolved or self._ids or self._stamps or self._probes:
+            return False
+        try:
+            stamps = raw["stamps"]
+            probes = {str(k): (bool(d), bool(e)) for k, d, e in raw["probes"]}
+            paths = [tuple(str(p) for p in roots) for roots in raw["paths"]]
+            ids = {str(k): int(v) for k, v in raw["ids"].items()}
+            files = [Path(f) for f in raw["files"]]
+            resolved = {
+                (int(n), str(name)): files[i] if i >= 0 else None
+                for n, name, i in raw["resolved"]
+            }
+            if not isinstance(stamps, dict) or any(
+                n < 0 or n >= len(paths) for n, _ in resolved
+            ):
+                return False
+            if any(n < 0 or n >= len(paths) for n in ids.values()):
+                return False
+        except (KeyError, TypeError, ValueError, IndexError, AttributeError):
+            return False
+        for folder, known in stamps.items():
+            if _stamp(folder) != known:
+                return False
+        for name, (folder_probe, answer) in probes.items():
+            now = _is_dir(Path(name)) if folder_probe else os.path.isfile(name)
+            if now != answer:
+                return False
+        self._stamps = {str(k): v for k, v in stamps.items()}
+        self._probes = probes
+        self._spelled = paths
+        self._paths = [None] * len(paths)
+        self._numbers = {roots: n for n, roots in enumerate(paths)}
+        self._ids = ids
+        self._resolved = resolved
+        self._restored = (raw, self._sizes())
+        return True
+
+    def _sizes(self) -> tuple[int, ...]:
+        """How much `keep` would write (it only grows)."""
+        return (
+            len(self._stamps),
+            len(self._probes),
+            len(self._paths),
+            len(self._ids),
+            len(self._resolved),
+        )
 
     def find(self, name: str, importer: Path | str) -> Path | None:
         """The file of module `name` (absolute, dotted) as `importer` imports it."""
@@ -97,7 +240,7 @@ class ModuleIndex:
         found = self._top_names.get(number)
         if found is None:
             names: set[str] = set()
-            for root in self._paths[number]:
+            for root in self._path(number):
                 names.update(
                     n[:-3] if n.endswith(".py") else n for n in self._listing(str(root))
                 )
@@ -111,9 +254,11 @@ class ModuleIndex:
         found = self._ids.get(spelled)
         if found is None:
             roots = self.search_path(importer)
-            found = self._numbers.setdefault(roots, len(self._numbers))
+            strings = tuple(map(str, roots))
+            found = self._numbers.setdefault(strings, len(self._numbers))
             if found == len(self._paths):
                 self._paths.append(roots)
+                self._spelled.append(strings)
             self._ids[spelled] = found
         return found
 
@@ -123,18 +268,28 @@ class ModuleIndex:
         known = self._by_spelling.get(spelled)
         if known is not None:
             return known
+        number = self._ids.get(spelled)
+        if number is not None:  # restored (`restore`)
+            known = self._by_spelling[spelled] = self._path(number)
+            return known
         folder = _absolute(Path(spelled or "."))
         if folder not in self._search:
             found: list[Path] = [*self.python_paths, self._top_parent(folder)]
-            package = _ros_package(folder, self._probed)
+            package = self._ros_package(folder)
             if package is not None:
                 found.append(package)
-                if _is_dir(package / "src"):
+                if self._isdir(package / "src"):
                     found.append(package / "src")
             found += self.roots
             self._search[folder] = tuple(dict.fromkeys(found))
         self._by_spelling[spelled] = self._search[folder]
         return self._search[folder]
+
+    def _path(self, number: int) -> tuple[Path, ...]:
+        found = self._paths[number]
+        if found is None:
+            found = self._paths[number] = tuple(map(Path, self._spelled[number]))
+        return found
 
     def package_of(self, path: Path) -> str | None:
         """The dotted package `path` is a module of; None when its folder is no
@@ -144,8 +299,7 @@ class ModuleIndex:
             parts: list[str] = []
             current = folder
             for _ in range(MAX_DEPTH):
-                self._probed.add(str(current))
-                if not os.path.isfile(current / "__init__.py"):
+                if not self._isfile(current / "__init__.py"):
                     break
                 parts.append(current.name)
                 if current.parent == current:
@@ -166,11 +320,20 @@ class ModuleIndex:
         """The folder above the top package that holds `folder` (or `folder`)."""
         current = folder
         for _ in range(MAX_DEPTH):
-            self._probed.add(str(current))
-            if not os.path.isfile(current / "__init__.py") or current.parent == current:
+            if not self._isfile(current / "__init__.py") or current.parent == current:
                 return current
             current = current.parent
         return current
+
+    def _ros_package(self, folder: Path) -> Path | None:
+        current = folder
+        for _ in range(MAX_DEPTH):
+            if self._isfile(current / "package.xml"):
+                return current
+            if current.parent == current:
+                return None
+            current = current.parent
+        return None
 
 
 def _absolute(path: Path) -> Path:
@@ -211,13 +374,16 @@ def _module_file(
     return None
 
 
-def _list(folder: str) -> dict[str, bool]:
-    """A folder's sub-folders (True) and Python files (False)."""
+def _list(folder: str) -> tuple[dict[str, bool], bool]:
+    """A folder's sub-folders (True) and Python files (False), and whether it
+    holds a symlink."""
     found: dict[str, bool] = {}
+    linked = False
     try:
         with os.scandir(folder) as entries:
             for entry in entries:
                 try:
+                    linked = linked or entry.is_symlink()
                     if entry.name.endswith(".py") and entry.is_file():
                         found[entry.name] = False
                     elif entry.is_dir():
@@ -226,19 +392,23 @@ def _list(folder: str) -> dict[str, bool]:
                     continue
     except OSError:
         pass
-    return found
+    return found, linked
 
 
-def _ros_package(folder: Path, probed: set[str]) -> Path | None:
-    current = folder
-    for _ in range(MAX_DEPTH):
-        probed.add(str(current))
-        if os.path.isfile(current / "package.xml"):
-            return current
-        if current.parent == current:
-            return None
-        current = current.parent
-    return None
+def _stamp(name: str) -> list[int] | None:
+    """A folder's stamp, as `discovery.Trace` takes it."""
+    try:
+        st = os.stat(name)
+    except (OSError, ValueError):
+        return None
+    return [
+        st.st_mtime_ns,
+        st.st_ctime_ns,
+        st.st_ino,
+        st.st_dev,
+        st.st_size,
+        st.st_mode,
+    ]
 
 
 def _is_dir(path: Path) -> bool:
