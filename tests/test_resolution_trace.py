@@ -255,8 +255,12 @@ def test_a_malformed_record_with_the_right_key_is_ignored(tmp_path: Path) -> Non
     kept = index.keep()
     assert kept is not None
     for field, bad in [
-        ("resolved", [[99, "a", 0]]),
-        ("resolved", [[0, "a", 5]]),
+        ("resolved", [[99, ["a"], [1]]]),
+        ("resolved", [[0, ["a"], [5]]]),
+        ("resolved", [[0, ["a"], [-1]]]),
+        ("resolved", [[0, ["a", "b"], [1]]]),
+        ("resolved", [[0, [3], [1]]]),
+        ("files", [3]),
         ("ids", {"x": 7}),
         ("probes", [["a"]]),
         ("paths", 3),

@@ -25,6 +25,7 @@ import os
 import time
 from collections import deque
 from collections.abc import Callable, Sequence
+from itertools import repeat
 from pathlib import Path
 from typing import Any
 
@@ -125,11 +126,16 @@ class ModuleIndex:
             return None
         if self._restored is not None and self._restored[1] == self._sizes():
             return self._restored[0]  # nothing new: the same object
+        # by search path: the names, and each one's file (1-based in "files"; 0:
+        # no module of the tree)
         files: dict[Path, int] = {}
-        resolved: list[list[object]] = []
+        groups: dict[int, tuple[list[str], list[int]]] = {}
         for (number, name), found in self._resolved.items():
-            index = -1 if found is None else files.setdefault(found, len(files))
-            resolved.append([number, name, index])
+            names, found_ids = groups.setdefault(number, ([], []))
+            names.append(name)
+            found_ids.append(
+                0 if found is None else files.setdefault(found, len(files) + 1)
+            )
         # a probe in a folder listed before it is answered by the folder's stamp
         # (no symlink there, else nothing is kept)
         covered = self._covered
@@ -142,7 +148,7 @@ class ModuleIndex:
             "paths": self._spelled,
             "ids": self._ids,
             "files": [str(f) for f in files],
-            "resolved": resolved,
+            "resolved": [[n, names, ids] for n, (names, ids) in groups.items()],
         }
 
     def restore(self, raw: Any) -> bool:
@@ -158,14 +164,21 @@ class ModuleIndex:
             probes = {str(k): (bool(d), bool(e)) for k, d, e in raw["probes"]}
             paths = [tuple(str(p) for p in roots) for roots in raw["paths"]]
             ids = {str(k): int(v) for k, v in raw["ids"].items()}
-            files = [Path(f) for f in raw["files"]]
-            resolved = {
-                (int(n), str(name)): files[i] if i >= 0 else None
-                for n, name, i in raw["resolved"]
-            }
-            if not isinstance(stamps, dict) or any(
-                n < 0 or n >= len(paths) for n, _ in resolved
-            ):
+            table: list[Path | None] = [None, *map(Path, raw["files"])]
+            resolved: dict[tuple[int, str], Path | None] = {}
+            for number, names, found_ids in raw["resolved"]:
+                if not (
+                    type(number) is int
+                    and 0 <= number < len(paths)
+                    and len(names) == len(found_ids)
+                    and set(map(type, names)) <= {str}
+                    and set(map(type, found_ids)) <= {int}
+                    and min(found_ids, default=0) >= 0
+                ):
+                    return False
+                found = map(table.__getitem__, found_ids)
+                resolved.update(zip(zip(repeat(number), names), found, strict=True))
+            if not isinstance(stamps, dict):
                 return False
             if any(n < 0 or n >= len(paths) for n in ids.values()):
                 return False
@@ -200,7 +213,10 @@ class ModuleIndex:
 
     def find(self, name: str, importer: Path | str) -> Path | None:
         """The file of module `name` (absolute, dotted) as `importer` imports it."""
-        number = self.search_id(importer)
+        return self.find_in(self.search_id(importer), name, importer)
+
+    def find_in(self, number: int, name: str, importer: Path | str) -> Path | None:
+        """`find`, with `number` the `search_id` of `importer`."""
         key = (number, name)
         found = self._resolved.get(key, _UNKNOWN)
         if found is _UNKNOWN:
