@@ -122,7 +122,7 @@ def test_a_module_added_earlier_on_the_search_path(
     assert FINDING in run(tmp_path)
     write(demo / "helpers.py", WITHIN)  # the package's own folder: searched before
     assert FINDING not in same_as_cold(tmp_path)
-    assert trusted[-2] is False  # the added file changed its folder's stamp
+    assert trusted[-1] is True  # the answers that did not list demo/ are kept
 
 
 def test_a_module_file_deleted(tmp_path: Path) -> None:
@@ -196,7 +196,7 @@ def test_the_python_paths_changed(tmp_path: Path, trusted: list[bool]) -> None:
     write(shared / "helpers.py", WITHIN)  # searched first when a python path
     assert FINDING in run(tmp_path)
     assert FINDING not in same_as_cold(tmp_path, (shared,))
-    assert trusted[-2] is False  # another key: nothing taken over
+    assert trusted[-1] is False  # another key: nothing taken over
     assert FINDING in same_as_cold(tmp_path)
 
 
@@ -221,7 +221,58 @@ def test_a_symlink_is_never_kept(tmp_path: Path, trusted: list[bool]) -> None:
     assert True not in trusted
 
 
-def test_a_changed_folder_stamp_drops_every_answer(tmp_path: Path) -> None:
+def test_an_atomic_save_keeps_the_other_answers(tmp_path: Path) -> None:
+    """An editor's save through a temporary file and a rename changes the
+    folder's stamp: the answers that listed it are worked out again, the others
+    are taken over, and the report is the uncached one."""
+    demo = package(tmp_path, "helpers")
+    write(demo / "helpers.py", TOO_HIGH)
+    write(tmp_path / "src" / "other" / "tool.py", "import helpers\nimport os\n")
+    assert FINDING in run(tmp_path)
+    temporary = demo / ".helpers.py.swp"
+    temporary.write_text(WITHIN)
+    temporary.replace(demo / "helpers.py")
+    assert FINDING not in same_as_cold(tmp_path)
+
+
+def test_only_the_answers_under_a_changed_folder_are_dropped(tmp_path: Path) -> None:
+    write(tmp_path / "a" / "b.py", "")
+    write(tmp_path / "c.py", "")
+    node = tmp_path / "node.py"
+    index = ModuleIndex([tmp_path])
+    for name in ("a.b", "a.x", "c", "rclpy"):
+        index.find(name, node)
+    kept = index.keep()
+    time.sleep(0.05)  # past the clock's tick: the folder's stamp changes
+    write(tmp_path / "a" / "x.py", "")
+    again = ModuleIndex([tmp_path])
+    assert again.restore(kept)
+    assert set(again._resolved) == {(0, "c"), (0, "rclpy")}
+    assert again.find("a.x", node) == tmp_path / "a" / "x.py"
+    assert again.find("a.b", node) == tmp_path / "a" / "b.py"
+    assert again.find("c", node) == tmp_path / "c.py"
+    assert again.find("rclpy", node) is None
+    assert "covered" in kept and kept["covered"] == []
+
+
+def test_a_changed_root_drops_every_answer_of_its_search_paths(
+    tmp_path: Path,
+) -> None:
+    write(tmp_path / "a" / "b.py", "")
+    node = tmp_path / "node.py"
+    index = ModuleIndex([tmp_path])
+    index.find("a.b", node)
+    index.find("numpy", node)
+    kept = index.keep()
+    time.sleep(0.05)
+    write(tmp_path / "numpy.py", "")
+    again = ModuleIndex([tmp_path])
+    assert again.restore(kept)
+    assert not again._resolved
+    assert again.find("numpy", node) == tmp_path / "numpy.py"
+
+
+def test_a_deleted_module_is_looked_up_again(tmp_path: Path) -> None:
     write(tmp_path / "a.py", "")
     index = ModuleIndex([tmp_path])
     assert index.find("a", tmp_path / "node.py") == tmp_path / "a.py"
@@ -230,10 +281,11 @@ def test_a_changed_folder_stamp_drops_every_answer(tmp_path: Path) -> None:
     fresh = ModuleIndex([tmp_path])
     assert fresh.restore(kept)
     assert fresh.find("a", tmp_path / "node.py") == tmp_path / "a.py"
-    time.sleep(0.01)
+    time.sleep(0.05)
     (tmp_path / "a.py").unlink()
     again = ModuleIndex([tmp_path])
-    assert not again.restore(kept)
+    again.restore(kept)
+    assert not again._resolved
     assert again.find("a", tmp_path / "node.py") is None
 
 
@@ -265,5 +317,30 @@ def test_a_malformed_record_with_the_right_key_is_ignored(tmp_path: Path) -> Non
         ("probes", [["a"]]),
         ("paths", 3),
         ("stamps", []),
+        ("covered", None),
     ]:
         assert not ModuleIndex([tmp_path]).restore({**kept, field: bad}), field
+
+
+def test_a_probe_answered_by_a_changed_folder_is_checked(tmp_path: Path) -> None:
+    """`ws/sub/__init__.py` is probed after `ws/sub` was listed, so its answer is
+    kept as the folder's stamp; adding it changes what `y` is for `sub/x.py`."""
+    ws = tmp_path / "ws"
+    write(ws / "sub" / "y.py", "")
+    write(ws / "node.py", "")
+    index = ModuleIndex([ws])
+    assert index.find("sub.y", ws / "node.py") == ws / "sub" / "y.py"  # lists sub/
+    assert index.find("y", ws / "sub" / "x.py") == ws / "sub" / "y.py"
+    kept = index.keep()
+    assert (
+        kept is not None
+        and [str(ws / "sub" / "__init__.py"), False, False] in (kept["covered"])
+    )
+    time.sleep(0.05)
+    write(ws / "sub" / "__init__.py", "")  # sub/ is a package: x.py searches ws/
+    again = ModuleIndex([ws])
+    again.restore(kept)
+    cold = ModuleIndex([ws])
+    for name, importer in [("y", ws / "sub" / "x.py"), ("sub.y", ws / "node.py")]:
+        assert again.find(name, importer) == cold.find(name, importer)
+    assert cold.find("y", ws / "sub" / "x.py") is None

@@ -11,9 +11,12 @@ remembered for the run.
 A cached run (the result cache) keeps the answers between runs (`keep`, `restore`)
 as `discovery.Trace` keeps the walk: with the stamp (os.stat, taken before the
 listing) of every folder listed and the answer of every existence probe
-(`__init__.py`, `package.xml`, `src/`). They are all reused when every stamp and
-probe answers as it did, else none. Not kept when a listing met a symlink (what it
-reaches is not in its folder's stamp) or a stamp younger than `RACY_NS`.
+(`__init__.py`, `package.xml`, `src/`; one in a folder listed before it is
+answered by that folder's stamp). When a probe answers otherwise, nothing is
+reused; when a folder's stamp changed, the answers that may have listed it are
+dropped (every answer of a search path holding it; below one, the names under it)
+and the others reused. Not kept when a listing met a symlink (what it reaches is
+not in its folder's stamp) or a stamp younger than `RACY_NS`.
 """
 
 from __future__ import annotations
@@ -33,6 +36,7 @@ _UNKNOWN = Path("\0")  # not looked up yet
 MAX_DEPTH = 32  # folders climbed looking for a package top or a package.xml
 RACY_NS = 2_000_000_000  # a folder changed this recently is not trusted by its stamp
 KEPT_FORMAT = 1
+MAX_CHANGED = 64  # folders changed since the answers were kept: beyond, none is
 
 
 class ModuleIndex:
@@ -137,14 +141,14 @@ class ModuleIndex:
                 0 if found is None else files.setdefault(found, len(files) + 1)
             )
         # a probe in a folder listed before it is answered by the folder's stamp
-        # (no symlink there, else nothing is kept)
+        # (no symlink there, else nothing is kept): checked only if that changed
         covered = self._covered
+        probes = self._probes.items()
         return {
             "key": key,
             "stamps": self._stamps,
-            "probes": [
-                [k, d, e] for k, (d, e) in self._probes.items() if k not in covered
-            ],
+            "probes": [[k, d, e] for k, (d, e) in probes if k not in covered],
+            "covered": [[k, d, e] for k, (d, e) in probes if k in covered],
             "paths": self._spelled,
             "ids": self._ids,
             "files": [str(f) for f in files],
@@ -152,9 +156,10 @@ class ModuleIndex:
         }
 
     def restore(self, raw: Any) -> bool:
-        """Take over what an earlier run's `keep` wrote when every folder stamp and
-        probe answers as it did then (else nothing: each answer is worked out
-        again). Only on a fresh index."""
+        """Take over what an earlier run's `keep` wrote when every probe answers
+        as it did then, without the answers that listed a folder whose stamp
+        changed since (they are worked out again); False when nothing is taken
+        over. Only on a fresh index."""
         if not (isinstance(raw, dict) and raw.get("key") == self._key()):
             return False
         if self._resolved or self._ids or self._stamps or self._probes:
@@ -162,6 +167,7 @@ class ModuleIndex:
         try:
             stamps = raw["stamps"]
             probes = {str(k): (bool(d), bool(e)) for k, d, e in raw["probes"]}
+            covered = {str(k): (bool(d), bool(e)) for k, d, e in raw["covered"]}
             paths = [tuple(str(p) for p in roots) for roots in raw["paths"]]
             ids = {str(k): int(v) for k, v in raw["ids"].items()}
             table: list[Path | None] = [None, *map(Path, raw["files"])]
@@ -184,21 +190,29 @@ class ModuleIndex:
                 return False
         except (KeyError, TypeError, ValueError, IndexError, AttributeError):
             return False
-        for folder, known in stamps.items():
-            if _stamp(folder) != known:
-                return False
-        for name, (folder_probe, answer) in probes.items():
+        changed = {str(f) for f, known in stamps.items() if _stamp(f) != known}
+        if len(changed) > MAX_CHANGED:
+            return False
+        # the probes a changed folder's stamp no longer answers for are checked
+        recheck = {k for k in covered if os.path.dirname(k) in changed}
+        for name, (folder_probe, answer) in [
+            *probes.items(),
+            *((k, covered[k]) for k in recheck),
+        ]:
             now = _is_dir(Path(name)) if folder_probe else os.path.isfile(name)
             if now != answer:
                 return False
-        self._stamps = {str(k): v for k, v in stamps.items()}
-        self._probes = probes
+        if changed:
+            resolved = _without(resolved, paths, changed)
+        self._stamps = {str(k): v for k, v in stamps.items() if k not in changed}
+        self._probes = {**probes, **covered}
+        self._covered = set(covered) - recheck
         self._spelled = paths
         self._paths = [None] * len(paths)
         self._numbers = {roots: n for n, roots in enumerate(paths)}
         self._ids = ids
         self._resolved = resolved
-        self._restored = (raw, self._sizes())
+        self._restored = (raw, self._sizes()) if not changed else None
         return True
 
     def _sizes(self) -> tuple[int, ...]:
@@ -350,6 +364,42 @@ class ModuleIndex:
                 return None
             current = current.parent
         return None
+
+
+def _without(
+    resolved: dict[tuple[int, str], Path | None],
+    paths: list[tuple[str, ...]],
+    changed: set[str],
+) -> dict[tuple[int, str], Path | None]:
+    """`resolved` without the answers that may have listed a `changed` folder:
+    for a search path, every answer when one of its folders changed (the names it
+    offers), else the names under a changed folder below one of them
+    (`root/a/b` changed: `a.b` and `a.b.*`, which listed it)."""
+    everything: set[int] = set()
+    below: dict[int, tuple[str, ...]] = {}
+    for number, roots in enumerate(paths):
+        prefixes: list[str] = []
+        for root in roots:
+            if root in changed:
+                everything.add(number)
+                break
+            inside = root.rstrip(os.sep) + os.sep
+            for folder in changed:
+                if folder.startswith(inside):
+                    prefixes.append(folder[len(inside) :].replace(os.sep, "."))
+        if prefixes:
+            below[number] = tuple(prefixes)
+    kept: dict[tuple[int, str], Path | None] = {}
+    for (number, name), found in resolved.items():
+        if number in everything:
+            continue
+        prefixes_here = below.get(number)
+        if prefixes_here is not None and any(
+            name == p or name.startswith(p + ".") for p in prefixes_here
+        ):
+            continue
+        kept[(number, name)] = found
+    return kept
 
 
 def _absolute(path: Path) -> Path:
