@@ -59,14 +59,16 @@ def write(path: Path, text: str) -> None:
 @pytest.fixture(autouse=True)
 def trusted(monkeypatch: pytest.MonkeyPatch) -> Iterator[list[bool]]:
     """Folder stamps are trusted however young (the tests change a tree within
-    seconds; a run lasts longer than a clock tick), and every `restore` is noted."""
+    seconds; a run lasts longer than a clock tick), and whether each `restore` took
+    over some answer is noted."""
     monkeypatch.setattr(modules, "RACY_NS", 0)
     restored: list[bool] = []
     real = ModuleIndex.restore
 
     def noted(self: ModuleIndex, raw: object) -> bool:
-        restored.append(real(self, raw))
-        return restored[-1]
+        found = real(self, raw)
+        restored.append(found and bool(self._resolved))  # some answer taken over
+        return found
 
     monkeypatch.setattr(ModuleIndex, "restore", noted)
     yield restored
@@ -111,7 +113,26 @@ def test_young_stamps_are_not_kept(
     write(tmp_path / "src" / "helpers.py", TOO_HIGH)
     cold = run(tmp_path)
     assert run(tmp_path) == cold
-    assert trusted == [False, False]
+    assert trusted == [False, False]  # each folder counts as changed
+
+
+def test_a_young_folder_alone_is_listed_again(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    write(tmp_path / "a" / "b.py", "")
+    write(tmp_path / "c.py", "")
+    node = tmp_path / "node.py"
+    index = ModuleIndex([tmp_path])
+    index.find("c", node)  # lists the root only
+    time.sleep(0.05)
+    write(tmp_path / "a" / "x.py", "")  # young when listed below
+    monkeypatch.setattr(modules, "RACY_NS", 3_600 * 10**9)  # a/ is young
+    index.find("a.x", node)
+    kept = index.keep()
+    assert kept is not None and kept["stamps"][str(tmp_path / "a")][0] == -1
+    again = ModuleIndex([tmp_path])
+    assert again.restore(kept)
+    assert set(again._resolved) == {(0, "c")}
 
 
 def test_a_module_added_earlier_on_the_search_path(

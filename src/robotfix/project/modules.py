@@ -16,7 +16,8 @@ answered by that folder's stamp). When a probe answers otherwise, nothing is
 reused; when a folder's stamp changed, the answers that may have listed it are
 dropped (every answer of a search path holding it; below one, the names under it)
 and the others reused. Not kept when a listing met a symlink (what it reaches is
-not in its folder's stamp) or a stamp younger than `RACY_NS`.
+not in its folder's stamp); a folder whose stamp is younger than `RACY_NS` counts
+as changed in the next run.
 """
 
 from __future__ import annotations
@@ -68,7 +69,7 @@ class ModuleIndex:
         self._probes: dict[str, tuple[bool, bool]] = {}
         # probes in a folder stamped before them: the stamp answers for them
         self._covered: set[str] = set()
-        self._spoiled = False  # a symlink listed, or a stamp too recent
+        self._spoiled = False  # a symlink listed
         self._now = time.time_ns()
         self._restored: tuple[dict[str, Any], tuple[int, ...]] | None = None
 
@@ -82,9 +83,12 @@ class ModuleIndex:
         found = self._listings.get(folder)
         if found is None:
             if folder not in self._stamps:
-                stamped = self._stamps[folder] = _stamp(folder)
+                stamped = _stamp(folder)
                 if stamped is not None and self._now - max(stamped[:2]) < RACY_NS:
-                    self._spoiled = True
+                    # too recent to vouch for (the next change could land in
+                    # the same tick): the next run counts the folder as changed
+                    stamped = [-1] * len(stamped)
+                self._stamps[folder] = stamped
             found, linked = _list(folder)
             self._listings[folder] = found
             self._spoiled = self._spoiled or linked
