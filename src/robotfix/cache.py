@@ -54,7 +54,7 @@ if TYPE_CHECKING:
 # an interface problem before `messages.interface_problem`: its diagnostic, the
 # package no type of which is known (if so), the types of its file
 InterfaceProblem = tuple[Diagnostic, "str | None", tuple[str, ...]]
-FORMAT = 6
+FORMAT = 7
 RACY_NS = 2_000_000_000  # a file changed this recently is hashed, not trusted by stat
 # which parameter-related words a file mentions (`paramcheck.MENTIONS`, all layouts),
 # kept with its hash so that an unchanged file need not be read to know
@@ -107,6 +107,8 @@ class ResultCache:
         self._params: tuple[str, list[Any]] | None = None
         self._catalog: dict[str, Any] | None = None
         self._discovery: dict[str, Any] | None = None  # key, trace, what was found
+        # the module index's answers with what they depend on (`ModuleIndex.keep`)
+        self._resolution: dict[str, Any] | None = None
         self._dirty = False
         try:
             data = json.loads(fs.read_regular(self.path, MAX_BYTES, follow=False))
@@ -136,6 +138,9 @@ class ResultCache:
             found_discovery = data.get("discovery")
             if isinstance(found_discovery, dict):
                 self._discovery = found_discovery
+            found_resolution = data.get("resolution")
+            if isinstance(found_resolution, dict):
+                self._resolution = found_resolution
             found_catalog = data.get("catalog")
             if isinstance(found_catalog, dict):
                 self._catalog = found_catalog
@@ -286,6 +291,16 @@ class ResultCache:
             self._discovery = raw
             self._dirty = True
 
+    # -- the module index ------------------------------------------------------
+    def resolution(self) -> dict[str, Any] | None:
+        """What an earlier run's `ModuleIndex.keep` wrote (its `restore` checks it)."""
+        return self._resolution
+
+    def put_resolution(self, raw: dict[str, Any] | None) -> None:
+        if raw is not self._resolution and raw != self._resolution:
+            self._resolution = raw
+            self._dirty = True
+
     # -- parameter files -------------------------------------------------------
     def params(self, key: str) -> list[Diagnostic] | None:
         if self._params is None or self._params[0] != key:
@@ -420,6 +435,7 @@ class ResultCache:
             "params": list(self._params) if self._params is not None else None,
             "catalog": self._catalog,
             "discovery": self._discovery,
+            "resolution": self._resolution,
         }
         try:
             folder.mkdir(parents=True, exist_ok=True)

@@ -135,6 +135,7 @@ def _check_paths(
     if cache is not None:
         project.known = dict(cache.summaries)
         project.sha_of = cache.sha  # the stat fast path for imported modules too
+        project.index.restore(cache.resolution())  # the module index's answers
     parameters: dict[str, ParamSummary] = {}  # file -> its parameters, as checked
     # without the cache, a file is read when it is checked (None here), so that
     # the bytes of every file are not all held at once
@@ -205,6 +206,7 @@ def _check_paths(
     result.files += len(found.parameter_files)
     result.diagnostics = finish(result.diagnostics)
     if cache is not None:
+        cache.put_resolution(project.index.keep())
         cache.prune(paths, files)
         cache.save()
     catalog.save()

@@ -7,19 +7,37 @@ script, its own folder: `sys.path[0]`), then the root of the ROS package around 
 its `src/`, then the checked roots. A name is a module there as `a/b.py` or
 `a/b/__init__.py`. Only existence is tested here (no file is read); every lookup is
 remembered for the run.
+
+A cached run (the result cache) keeps the answers between runs (`keep`, `restore`)
+as `discovery.Trace` keeps the walk: with the stamp (os.stat, taken before the
+listing) of every folder listed and the answer of every existence probe
+(`__init__.py`, `package.xml`, `src/`; one in a folder listed before it is
+answered by that folder's stamp). When a probe answers otherwise, nothing is
+reused; when a folder's stamp changed, the answers that may have listed it are
+dropped (every answer of a search path holding it; below one, the names under it)
+and the others reused. Not kept when a listing met a symlink (what it reaches is
+not in its folder's stamp); a folder whose stamp is younger than `RACY_NS` counts
+as changed in the next run.
 """
 
 from __future__ import annotations
 
 import ast
 import functools
+import json
 import os
+import time
 from collections import deque
 from collections.abc import Callable, Sequence
+from itertools import repeat
 from pathlib import Path
+from typing import Any
 
 _UNKNOWN = Path("\0")  # not looked up yet
 MAX_DEPTH = 32  # folders climbed looking for a package top or a package.xml
+RACY_NS = 2_000_000_000  # a folder changed this recently is not trusted by its stamp
+KEPT_FORMAT = 1
+MAX_CHANGED = 64  # folders changed since the answers were kept: beyond, none is
 
 
 class ModuleIndex:
@@ -34,8 +52,10 @@ class ModuleIndex:
         self._by_spelling: dict[str, tuple[Path, ...]] = {}  # folder as spelled ->
         self._resolved: dict[tuple[int, str], Path | None] = {}
         self._ids: dict[str, int] = {}  # folder as spelled -> its search path's id
-        self._numbers: dict[tuple[Path, ...], int] = {}
-        self._paths: list[tuple[Path, ...]] = []  # search paths by number
+        self._numbers: dict[tuple[str, ...], int] = {}
+        # search paths by number (None: restored, not needed as Paths yet)
+        self._paths: list[tuple[Path, ...] | None] = []
+        self._spelled: list[tuple[str, ...]] = []  # the same, as strings
         self._top_names: dict[int, frozenset[str]] = {}
         self._found: dict[tuple[str, str], Path | None] = {}
         self._packages: dict[Path, str | None] = {}
@@ -43,21 +63,178 @@ class ModuleIndex:
         # folders in which a file's existence was tested (`__init__.py`,
         # `package.xml`, `src/`): a change there can change an answer too
         self._probed: set[str] = set()
+        # for `keep`: each listed folder's stamp, taken before it was listed, and
+        # each probe's answer (path -> (is a folder?, exists?))
+        self._stamps: dict[str, list[int] | None] = {}
+        self._probes: dict[str, tuple[bool, bool]] = {}
+        # probes in a folder stamped before them: the stamp answers for them
+        self._covered: set[str] = set()
+        self._spoiled = False  # a symlink listed
+        self._now = time.time_ns()
+        self._restored: tuple[dict[str, Any], tuple[int, ...]] | None = None
 
     def listed_folders(self) -> set[str]:
         """Every folder this index listed or probed (for the language server: a
         module added or removed in one of them changes what a name is)."""
-        return {*self._listings, *self._probed}
+        probed = {os.path.dirname(name) for name in self._probes}
+        return {*self._listings, *self._probed, *self._stamps, *probed}
 
     def _listing(self, folder: str) -> dict[str, bool]:
         found = self._listings.get(folder)
         if found is None:
-            found = self._listings[folder] = _list(folder)
+            if folder not in self._stamps:
+                stamped = _stamp(folder)
+                if stamped is not None and self._now - max(stamped[:2]) < RACY_NS:
+                    # too recent to vouch for (the next change could land in
+                    # the same tick): the next run counts the folder as changed
+                    stamped = [-1] * len(stamped)
+                self._stamps[folder] = stamped
+            found, linked = _list(folder)
+            self._listings[folder] = found
+            self._spoiled = self._spoiled or linked
         return found
+
+    def _isfile(self, path: Path) -> bool:
+        name = str(path)
+        self._probed.add(os.path.dirname(name))
+        found = self._probes.get(name)
+        if found is None:
+            self._cover(name)
+            found = self._probes[name] = (False, os.path.isfile(name))
+        return found[1]
+
+    def _cover(self, name: str) -> None:
+        if self._stamps.get(os.path.dirname(name)) is not None:
+            self._covered.add(name)
+
+    def _isdir(self, path: Path) -> bool:
+        name = str(path)
+        found = self._probes.get(name)
+        if found is None:
+            self._cover(name)
+            found = self._probes[name] = (True, _is_dir(path))
+        return found[1]
+
+    # -- kept between runs ----------------------------------------------------
+    def _key(self) -> str | None:
+        """What the answers depend on besides the disk: the current folder (for
+        relative spellings), the python paths and the roots."""
+        try:
+            cwd = os.getcwd()
+        except OSError:
+            return None
+        parts = [KEPT_FORMAT, cwd, [str(p) for p in self.python_paths]]
+        return json.dumps([*parts, [str(r) for r in self.roots]])
+
+    def keep(self) -> dict[str, Any] | None:
+        """The answers so far and what they depend on, for the next run's
+        `restore`; None when they cannot be vouched for."""
+        key = self._key()
+        if key is None or self._spoiled:
+            return None
+        if self._restored is not None and self._restored[1] == self._sizes():
+            return self._restored[0]  # nothing new: the same object
+        # by search path: the names, and each one's file (1-based in "files"; 0:
+        # no module of the tree)
+        files: dict[Path, int] = {}
+        groups: dict[int, tuple[list[str], list[int]]] = {}
+        for (number, name), found in self._resolved.items():
+            names, found_ids = groups.setdefault(number, ([], []))
+            names.append(name)
+            found_ids.append(
+                0 if found is None else files.setdefault(found, len(files) + 1)
+            )
+        # a probe in a folder listed before it is answered by the folder's stamp
+        # (no symlink there, else nothing is kept): checked only if that changed
+        covered = self._covered
+        probes = self._probes.items()
+        return {
+            "key": key,
+            "stamps": self._stamps,
+            "probes": [[k, d, e] for k, (d, e) in probes if k not in covered],
+            "covered": [[k, d, e] for k, (d, e) in probes if k in covered],
+            "paths": self._spelled,
+            "ids": self._ids,
+            "files": [str(f) for f in files],
+            "resolved": [[n, names, ids] for n, (names, ids) in groups.items()],
+        }
+
+    def restore(self, raw: Any) -> bool:
+        """Take over what an earlier run's `keep` wrote when every probe answers
+        as it did then, without the answers that listed a folder whose stamp
+        changed since (they are worked out again); False when nothing is taken
+        over. Only on a fresh index."""
+        if not (isinstance(raw, dict) and raw.get("key") == self._key()):
+            return False
+        if self._resolved or self._ids or self._stamps or self._probes:
+            return False
+        try:
+            stamps = raw["stamps"]
+            probes = {str(k): (bool(d), bool(e)) for k, d, e in raw["probes"]}
+            covered = {str(k): (bool(d), bool(e)) for k, d, e in raw["covered"]}
+            paths = [tuple(str(p) for p in roots) for roots in raw["paths"]]
+            ids = {str(k): int(v) for k, v in raw["ids"].items()}
+            table: list[Path | None] = [None, *map(Path, raw["files"])]
+            resolved: dict[tuple[int, str], Path | None] = {}
+            for number, names, found_ids in raw["resolved"]:
+                if not (
+                    type(number) is int
+                    and 0 <= number < len(paths)
+                    and len(names) == len(found_ids)
+                    and set(map(type, names)) <= {str}
+                    and set(map(type, found_ids)) <= {int}
+                    and min(found_ids, default=0) >= 0
+                ):
+                    return False
+                found = map(table.__getitem__, found_ids)
+                resolved.update(zip(zip(repeat(number), names), found, strict=True))
+            if not isinstance(stamps, dict):
+                return False
+            if any(n < 0 or n >= len(paths) for n in ids.values()):
+                return False
+        except (KeyError, TypeError, ValueError, IndexError, AttributeError):
+            return False
+        changed = {str(f) for f, known in stamps.items() if _stamp(f) != known}
+        if len(changed) > MAX_CHANGED:
+            return False
+        # the probes a changed folder's stamp no longer answers for are checked
+        recheck = {k for k in covered if os.path.dirname(k) in changed}
+        for name, (folder_probe, answer) in [
+            *probes.items(),
+            *((k, covered[k]) for k in recheck),
+        ]:
+            now = _is_dir(Path(name)) if folder_probe else os.path.isfile(name)
+            if now != answer:
+                return False
+        if changed:
+            resolved = _without(resolved, paths, changed)
+        self._stamps = {str(k): v for k, v in stamps.items() if k not in changed}
+        self._probes = {**probes, **covered}
+        self._covered = set(covered) - recheck
+        self._spelled = paths
+        self._paths = [None] * len(paths)
+        self._numbers = {roots: n for n, roots in enumerate(paths)}
+        self._ids = ids
+        self._resolved = resolved
+        self._restored = (raw, self._sizes()) if not changed else None
+        return True
+
+    def _sizes(self) -> tuple[int, ...]:
+        """How much `keep` would write (it only grows)."""
+        return (
+            len(self._stamps),
+            len(self._probes),
+            len(self._paths),
+            len(self._ids),
+            len(self._resolved),
+        )
 
     def find(self, name: str, importer: Path | str) -> Path | None:
         """The file of module `name` (absolute, dotted) as `importer` imports it."""
-        number = self.search_id(importer)
+        return self.find_in(self.search_id(importer), name, importer)
+
+    def find_in(self, number: int, name: str, importer: Path | str) -> Path | None:
+        """`find`, with `number` the `search_id` of `importer`."""
         key = (number, name)
         found = self._resolved.get(key, _UNKNOWN)
         if found is _UNKNOWN:
@@ -97,7 +274,7 @@ class ModuleIndex:
         found = self._top_names.get(number)
         if found is None:
             names: set[str] = set()
-            for root in self._paths[number]:
+            for root in self._path(number):
                 names.update(
                     n[:-3] if n.endswith(".py") else n for n in self._listing(str(root))
                 )
@@ -111,9 +288,11 @@ class ModuleIndex:
         found = self._ids.get(spelled)
         if found is None:
             roots = self.search_path(importer)
-            found = self._numbers.setdefault(roots, len(self._numbers))
+            strings = tuple(map(str, roots))
+            found = self._numbers.setdefault(strings, len(self._numbers))
             if found == len(self._paths):
                 self._paths.append(roots)
+                self._spelled.append(strings)
             self._ids[spelled] = found
         return found
 
@@ -123,18 +302,28 @@ class ModuleIndex:
         known = self._by_spelling.get(spelled)
         if known is not None:
             return known
+        number = self._ids.get(spelled)
+        if number is not None:  # restored (`restore`)
+            known = self._by_spelling[spelled] = self._path(number)
+            return known
         folder = _absolute(Path(spelled or "."))
         if folder not in self._search:
             found: list[Path] = [*self.python_paths, self._top_parent(folder)]
-            package = _ros_package(folder, self._probed)
+            package = self._ros_package(folder)
             if package is not None:
                 found.append(package)
-                if _is_dir(package / "src"):
+                if self._isdir(package / "src"):
                     found.append(package / "src")
             found += self.roots
             self._search[folder] = tuple(dict.fromkeys(found))
         self._by_spelling[spelled] = self._search[folder]
         return self._search[folder]
+
+    def _path(self, number: int) -> tuple[Path, ...]:
+        found = self._paths[number]
+        if found is None:
+            found = self._paths[number] = tuple(map(Path, self._spelled[number]))
+        return found
 
     def package_of(self, path: Path) -> str | None:
         """The dotted package `path` is a module of; None when its folder is no
@@ -144,8 +333,7 @@ class ModuleIndex:
             parts: list[str] = []
             current = folder
             for _ in range(MAX_DEPTH):
-                self._probed.add(str(current))
-                if not os.path.isfile(current / "__init__.py"):
+                if not self._isfile(current / "__init__.py"):
                     break
                 parts.append(current.name)
                 if current.parent == current:
@@ -166,11 +354,56 @@ class ModuleIndex:
         """The folder above the top package that holds `folder` (or `folder`)."""
         current = folder
         for _ in range(MAX_DEPTH):
-            self._probed.add(str(current))
-            if not os.path.isfile(current / "__init__.py") or current.parent == current:
+            if not self._isfile(current / "__init__.py") or current.parent == current:
                 return current
             current = current.parent
         return current
+
+    def _ros_package(self, folder: Path) -> Path | None:
+        current = folder
+        for _ in range(MAX_DEPTH):
+            if self._isfile(current / "package.xml"):
+                return current
+            if current.parent == current:
+                return None
+            current = current.parent
+        return None
+
+
+def _without(
+    resolved: dict[tuple[int, str], Path | None],
+    paths: list[tuple[str, ...]],
+    changed: set[str],
+) -> dict[tuple[int, str], Path | None]:
+    """`resolved` without the answers that may have listed a `changed` folder:
+    for a search path, every answer when one of its folders changed (the names it
+    offers), else the names under a changed folder below one of them
+    (`root/a/b` changed: `a.b` and `a.b.*`, which listed it)."""
+    everything: set[int] = set()
+    below: dict[int, tuple[str, ...]] = {}
+    for number, roots in enumerate(paths):
+        prefixes: list[str] = []
+        for root in roots:
+            if root in changed:
+                everything.add(number)
+                break
+            inside = root.rstrip(os.sep) + os.sep
+            for folder in changed:
+                if folder.startswith(inside):
+                    prefixes.append(folder[len(inside) :].replace(os.sep, "."))
+        if prefixes:
+            below[number] = tuple(prefixes)
+    kept: dict[tuple[int, str], Path | None] = {}
+    for (number, name), found in resolved.items():
+        if number in everything:
+            continue
+        prefixes_here = below.get(number)
+        if prefixes_here is not None and any(
+            name == p or name.startswith(p + ".") for p in prefixes_here
+        ):
+            continue
+        kept[(number, name)] = found
+    return kept
 
 
 def _absolute(path: Path) -> Path:
@@ -211,13 +444,16 @@ def _module_file(
     return None
 
 
-def _list(folder: str) -> dict[str, bool]:
-    """A folder's sub-folders (True) and Python files (False)."""
+def _list(folder: str) -> tuple[dict[str, bool], bool]:
+    """A folder's sub-folders (True) and Python files (False), and whether it
+    holds a symlink."""
     found: dict[str, bool] = {}
+    linked = False
     try:
         with os.scandir(folder) as entries:
             for entry in entries:
                 try:
+                    linked = linked or entry.is_symlink()
                     if entry.name.endswith(".py") and entry.is_file():
                         found[entry.name] = False
                     elif entry.is_dir():
@@ -226,19 +462,23 @@ def _list(folder: str) -> dict[str, bool]:
                     continue
     except OSError:
         pass
-    return found
+    return found, linked
 
 
-def _ros_package(folder: Path, probed: set[str]) -> Path | None:
-    current = folder
-    for _ in range(MAX_DEPTH):
-        probed.add(str(current))
-        if os.path.isfile(current / "package.xml"):
-            return current
-        if current.parent == current:
-            return None
-        current = current.parent
-    return None
+def _stamp(name: str) -> list[int] | None:
+    """A folder's stamp, as `discovery.Trace` takes it."""
+    try:
+        st = os.stat(name)
+    except (OSError, ValueError):
+        return None
+    return [
+        st.st_mtime_ns,
+        st.st_ctime_ns,
+        st.st_ino,
+        st.st_dev,
+        st.st_size,
+        st.st_mode,
+    ]
 
 
 def _is_dir(path: Path) -> bool:

@@ -179,11 +179,13 @@ class Project:
         # the search path decides what a name is
         memo = (number, name, member if cut else None)
         if memo not in self._fingerprints:
-            self._fingerprints[memo] = self._fingerprint(context, name, memo[2])
+            self._fingerprints[memo] = self._fingerprint(context, number, name, memo[2])
         return self._fingerprints[memo]
 
-    def _fingerprint(self, context: str, name: str, member: str | None) -> str:
-        path = self.index.find(name, context)
+    def _fingerprint(
+        self, context: str, number: int, name: str, member: str | None
+    ) -> str:
+        path = self.index.find_in(number, name, context)
         if path is None:
             return ABSENT
         known = self.known.get(str(path)) or self.built.get(str(path))
