@@ -109,10 +109,17 @@ def test_no_pint_answers_are_pints_on_the_first_run_misses() -> None:
         assert not agrees(text), text  # units, or left to pint
 
 
-def test_stale_names_reject_nothing(monkeypatch: pytest.MonkeyPatch) -> None:
+@pytest.mark.parametrize(
+    "stale", [("_PINT_NAMES_VERSION", 99), ("_installed_pint", lambda: "0.1")]
+)
+def test_names_of_another_version_or_pint_reject_nothing(
+    monkeypatch: pytest.MonkeyPatch, stale: tuple[str, Any]
+) -> None:
     units._shipped_names.cache_clear()
     try:
-        monkeypatch.setattr(units, "_PINT_NAMES_VERSION", 99)
+        assert shipped_rejection("GPS_FIX_TYPE") == ["tag"]
+        units._shipped_names.cache_clear()
+        monkeypatch.setattr(units, *stale)
         assert shipped_rejection("GPS_FIX_TYPE") is None
     finally:
         units._shipped_names.cache_clear()

@@ -26,6 +26,7 @@ import math
 import re
 import unicodedata
 from dataclasses import dataclass, field
+from importlib.util import find_spec
 from pathlib import Path
 from typing import Any
 
@@ -391,10 +392,12 @@ def _shipped_names() -> tuple[frozenset[str], tuple[str, ...], tuple[str, ...]] 
     try:
         data = json.loads(Path(__file__).with_name("units.json").read_text("utf-8"))
         names = data["pint"]
-        if data.get("format") != units_format() or names.get("version") != (
-            _PINT_NAMES_VERSION
+        if (
+            data.get("format") != units_format()
+            or names.get("version") != _PINT_NAMES_VERSION
+            or names.get("pint") != _installed_pint()
         ):
-            return None
+            return None  # another conversion, or another pint: ask pint
         return (
             frozenset(str(n) for n in names["units"]),
             tuple(str(n) for n in names["prefixes"]),
@@ -402,6 +405,18 @@ def _shipped_names() -> tuple[frozenset[str], tuple[str, ...], tuple[str, ...]] 
         )
     except (OSError, ValueError, KeyError, TypeError, AttributeError):
         return None
+
+
+def _installed_pint() -> str | None:
+    """The version of the installed pint, from its `.dist-info` folder (without
+    importing it); None when that is not plain to see."""
+    spec = find_spec("pint")
+    if spec is None or not spec.origin:
+        return None
+    found = list(Path(spec.origin).parent.parent.glob("pint-*.dist-info"))
+    if len(found) != 1:
+        return None
+    return found[0].name[len("pint-") : -len(".dist-info")]
 
 
 _PINT_NAMES_VERSION = 1
@@ -486,6 +501,7 @@ def pint_names() -> dict[str, Any]:
     registry: Any = pint.UnitRegistry()
     return {
         "version": _PINT_NAMES_VERSION,
+        "pint": str(pint.__version__),
         "units": sorted(registry._units),
         "prefixes": sorted(registry._prefixes),
         "suffixes": sorted(registry._suffixes),
