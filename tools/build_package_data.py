@@ -2,8 +2,10 @@
 
 - src/robotfix/ros/standard/<distro>.json: the standard message definitions of each
   distribution RobotFix knows (`catalog.STORES`), converted from rosbags' type stores;
-- src/robotfix/annotations/units.json: pint's reading of every unit the REP 103 table
-  and the standard messages' comment units use.
+- src/robotfix/annotations/units.json: pint's reading of every unit the REP 103 table,
+  the standard messages' comment units, the shipped stubs and the vocabulary of common
+  spellings (src/robotfix/ros/unit_vocabulary.toml) use, and pint's unit, prefix and
+  suffix names, with which a text that is no unit pint reads is told without pint.
 
 Without them, a first run on a fresh machine imports pint and converts rosbags' stores
 (about 0.5 s) before its machine cache exists. Each file names the version of the
@@ -55,6 +57,8 @@ def unit_texts() -> list[str]:
     comments = tomllib.loads((ros / "comment_units.toml").read_text(encoding="utf-8"))
     for entry in comments["message"]:
         found.update(entry["units"].values())
+    # the spellings robot code and interface comments commonly write
+    found.update(vocabulary())
     # the shipped stubs' units (`Unit('rad/s')`), read when a library call is met
     stubs = ROOT / "src/robotfix/stubs/data"
     for stub in sorted(stubs.rglob("*.pyi")):
@@ -62,11 +66,17 @@ def unit_texts() -> list[str]:
     return sorted(found)
 
 
+def vocabulary() -> list[str]:
+    path = ROOT / "src/robotfix/ros/unit_vocabulary.toml"
+    texts = tomllib.loads(path.read_text(encoding="utf-8"))["units"]
+    return [str(text) for text in texts]
+
+
 def units() -> str:
-    from robotfix.annotations.units import _resolve_with_pint, units_format
+    from robotfix.annotations.units import _resolve_with_pint, pint_names, units_format
 
     entries = {text: _resolve_with_pint(text) for text in unit_texts()}
-    return _dump({"format": units_format(), "entries": entries})
+    return _dump({"format": units_format(), "entries": entries, "pint": pint_names()})
 
 
 def _dump(data: Any) -> str:

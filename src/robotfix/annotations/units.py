@@ -26,6 +26,7 @@ import math
 import re
 import unicodedata
 from dataclasses import dataclass, field
+from importlib.util import find_spec
 from pathlib import Path
 from typing import Any
 
@@ -304,7 +305,7 @@ def resolve(text: str) -> Unit:
     if entry is None:
         entry = _shipped().get(text)
     if entry is None:
-        entry = _resolve_with_pint(text)
+        entry = shipped_rejection(text) or _resolve_with_pint(text)
         _CACHE.put(text, entry)
     kind = entry[0]
     if kind == "unit":
@@ -384,6 +385,129 @@ def _shipped() -> dict[str, Any]:
     return entries if isinstance(entries, dict) else {}
 
 
+@functools.cache
+def _shipped_names() -> tuple[frozenset[str], tuple[str, ...], tuple[str, ...]] | None:
+    """pint's unit names (with symbols and aliases), prefixes and suffixes, as a
+    fresh registry holds them, shipped in `units.json` next to the entries."""
+    try:
+        data = json.loads(Path(__file__).with_name("units.json").read_text("utf-8"))
+        names = data["pint"]
+        if (
+            data.get("format") != units_format()
+            or names.get("version") != _PINT_NAMES_VERSION
+            or names.get("pint") != _installed_pint()
+        ):
+            return None  # another conversion, or another pint: ask pint
+        return (
+            frozenset(str(n) for n in names["units"]),
+            tuple(str(n) for n in names["prefixes"]),
+            tuple(str(n) for n in names["suffixes"]),
+        )
+    except (OSError, ValueError, KeyError, TypeError, AttributeError):
+        return None
+
+
+def _installed_pint() -> str | None:
+    """The version of the installed pint, from its `.dist-info` folder (without
+    importing it); None when that is not plain to see."""
+    spec = find_spec("pint")
+    if spec is None or not spec.origin:
+        return None
+    found = list(Path(spec.origin).parent.parent.glob("pint-*.dist-info"))
+    if len(found) != 1:
+        return None
+    return found[0].name[len("pint-") : -len(".dist-info")]
+
+
+_PINT_NAMES_VERSION = 1
+# The shapes of text pint's parser (`string_preprocessor`, then the tokenizer and
+# `ParserHelper.from_string`, then `get_name` for each name left) is known to reject
+# without pint: words joined by single spaces (pint reads them as products), `*`, `/`
+# and `-` (pint cannot subtract units: any `-` between two words fails), or one word
+# with `[`/`]` in it (pint renames brackets before tokenizing, then looks the word up).
+_WORD = r"[A-Za-z_][A-Za-z0-9_]*"
+_WORDS = re.compile(rf"{_WORD}(?:[ */-]{_WORD})*")
+_WORD_OR_SEPARATOR = re.compile(rf"{_WORD}|[ */-]")
+_BRACKETED_WORD = re.compile(r"[A-Za-z_\[\]][A-Za-z0-9_\[\]]*")
+_DIGIT_AFTER_BRACKET = re.compile(r"[\[\]][0-9]")
+# Text pint's `string_preprocessor` rewrites (`m per s`, `square m`, `s squared`):
+# such text goes to pint.
+_REWRITTEN = (" per ", " squared", " cubed", "cubic ", "square ", "sq ")
+
+
+def shipped_rejection(text: str) -> list[Any] | None:
+    """pint's answer for a text that is NOT a unit pint reads, decided with the
+    shipped names alone (None: it might be a unit, ask pint).
+
+    Sound only where the answer is pint's: a word is a unit when pint's `get_name`
+    finds it (a name, or prefix + name + suffix); pint looks up every word whose
+    exponent is not zero, and fails on a `-` between words. Anything else (numbers,
+    exponents, parentheses, `nan`, text pint rewrites) is left to pint.
+    tests/test_units_shipped.py compares the two on the vocabulary, on real code's
+    interface comments and on random text.
+    """
+    names = _shipped_names()
+    if names is None or any(k in text for k in _REWRITTEN):
+        return None
+    if _WORDS.fullmatch(text):
+        parts = _WORD_OR_SEPARATOR.findall(text)
+        words, separators = parts[::2], parts[1::2]
+        if any(word.lower() == "nan" for word in words):
+            return None  # pint drops a `nan` name instead of looking it up
+        if "-" not in separators:
+            exponents: dict[str, int] = {}
+            for separator, word in zip(["*", *separators], words, strict=True):
+                exponents[word] = exponents.get(word, 0) + (
+                    -1 if separator == "/" else 1
+                )
+            if all(e == 0 or _defined(w, names) for w, e in exponents.items()):
+                return None  # a unit, or dimensionless: pint's own answer
+    elif (
+        not _BRACKETED_WORD.fullmatch(text)
+        or _DIGIT_AFTER_BRACKET.search(text)
+        or text.lower() == "nan"
+        or _defined(text, names)
+    ):
+        return None
+    return _not_a_unit(text, names[0])
+
+
+def _defined(
+    word: str, names: tuple[frozenset[str], tuple[str, ...], tuple[str, ...]]
+) -> bool:
+    """Whether pint's `get_name` finds `word` (its `_yield_unit_triplets`, case
+    sensitive as RobotFix's registry is)."""
+    units, prefixes, suffixes = names
+    if word == "dimensionless" or word in units:
+        return True
+    for suffix in suffixes:
+        for prefix in prefixes:
+            if word.startswith(prefix) and word.endswith(suffix):
+                name = word[len(prefix) :]
+                if suffix:
+                    name = name[: -len(suffix)]
+                    if len(name) == 1:
+                        continue
+                if name in units:
+                    return True
+    return False
+
+
+def pint_names() -> dict[str, Any]:
+    """The names `shipped_rejection` needs, from a fresh pint registry (for
+    tools/build_package_data.py)."""
+    import pint
+
+    registry: Any = pint.UnitRegistry()
+    return {
+        "version": _PINT_NAMES_VERSION,
+        "pint": str(pint.__version__),
+        "units": sorted(registry._units),
+        "prefixes": sorted(registry._prefixes),
+        "suffixes": sorted(registry._suffixes),
+    }
+
+
 def units_format() -> str:
     """The version of the resolution (`units-vN`): the machine cache's key without
     the install of pint."""
@@ -400,7 +524,7 @@ def _resolve_with_pint(text: str) -> list[Any]:
         zero = registry.Quantity(0, text).to_root_units()
         one = registry.Quantity(1, text).to_root_units()
     except Exception:  # pint raises many kinds for text that is not a unit
-        return _not_a_unit(text, registry)
+        return _not_a_unit(text, _registry_names())
     exponents = [(str(name), exp) for name, exp in one.unit_items()]
     offset = float(zero.magnitude)
     factor = float(one.magnitude) - offset
@@ -414,10 +538,10 @@ def _resolve_with_pint(text: str) -> list[Any]:
     return ["unit", dims, factor, offset]
 
 
-def _not_a_unit(text: str, registry: Any) -> list[Any]:
+def _not_a_unit(text: str, units: frozenset[str]) -> list[Any]:
     if not _IDENTIFIER.fullmatch(text):
         return ["error", f"`{_shown(text)}` is not a unit pint understands"]
-    suggestion = _near_unit(text, registry)
+    suggestion = _near_unit(text, units)
     if suggestion is not None:
         return [
             "error",
@@ -428,7 +552,7 @@ def _not_a_unit(text: str, registry: Any) -> list[Any]:
     return ["tag"]
 
 
-def _near_unit(text: str, registry: Any) -> str | None:
+def _near_unit(text: str, units: frozenset[str]) -> str | None:
     """A unit name (or its plural) one edit away from `text`.
 
     Only for names of five or more letters: shorter frame names (`rear`, `odom`,
@@ -437,7 +561,7 @@ def _near_unit(text: str, registry: Any) -> str | None:
     if len(text) < 5:
         return None
     lowered = text.lower()
-    names = [n for n in registry._units if len(n) >= 3]
+    names = [n for n in units if len(n) >= 3]
     for name in sorted(names):
         if name.lower() == lowered:
             return str(name)
@@ -463,10 +587,23 @@ def _one_edit(a: str, b: str) -> bool:
 
 
 _REGISTRY: Any = None
+_REGISTRY_NAMES: frozenset[str] = frozenset()
+
+
+def _registry_names() -> frozenset[str]:
+    """The unit names the advice on a typo (`_near_unit`) is chosen from: those of a
+    freshly built registry, as shipped. A registry's own names vary: pint adds each
+    prefixed unit it resolves (`millimeter`), and one loaded from pint's disk cache
+    lacks the prefixed units that building it added (`kilometer`)."""
+    shipped = _shipped_names()
+    if shipped is not None:
+        return shipped[0]
+    _registry()
+    return _REGISTRY_NAMES
 
 
 def _registry() -> Any:
-    global _REGISTRY
+    global _REGISTRY, _REGISTRY_NAMES
     if _REGISTRY is None:
         import pint
 
@@ -474,6 +611,7 @@ def _registry() -> Any:
             _REGISTRY = pint.UnitRegistry(cache_folder=str(cache_dir() / "pint"))
         except OSError:
             _REGISTRY = pint.UnitRegistry()
+        _REGISTRY_NAMES = frozenset(str(n) for n in _REGISTRY._units)
     return _REGISTRY
 
 
