@@ -35,7 +35,7 @@ from typing import Any
 from robotfix import messages
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
-from robotfix.fs import UnreadableError, read_head, read_text, within
+from robotfix.fs import UnreadableError, read_head, read_text, stamp, within
 from robotfix.ros.install import IGNORE_MARKERS, InstallSpace
 
 INTERFACE_SUFFIXES = (".msg", ".srv", ".action", ".idl")
@@ -591,7 +591,7 @@ class Trace:
     def stamp(self, path: str | os.PathLike[str]) -> None:
         name = os.fspath(path)
         if name not in self.stamps:
-            found = _stamp(name)
+            found = stamp(name)
             if found is not None and self._now - max(found[0], found[1]) < RACY_NS:
                 self.spoiled = True
             self.stamps[name] = found
@@ -601,7 +601,7 @@ class Trace:
         if self.spoiled:
             return False
         for name, known in self.stamps.items():
-            if _stamp(name) != known:
+            if stamp(name) != known:
                 return False
         for (kind, arg), answer in self.probes.items():
             if _probe(kind, arg) != answer:
@@ -630,14 +630,14 @@ class Trace:
         if not (isinstance(stamps, dict) and isinstance(probes, list)):
             return None
         trace = cls()
-        for name, stamp in stamps.items():
-            if stamp is not None and not (
-                isinstance(stamp, list)
-                and len(stamp) == 6
-                and all(type(n) is int for n in stamp)
+        for name, kept in stamps.items():
+            if kept is not None and not (
+                isinstance(kept, list)
+                and len(kept) == 6
+                and all(type(n) is int for n in kept)
             ):
                 return None
-            trace.stamps[name] = stamp
+            trace.stamps[name] = kept
         for item in probes:
             if not (
                 isinstance(item, list)
@@ -652,21 +652,6 @@ class Trace:
 
 
 _TRACE: Trace | None = None  # the running discovery's, if it keeps one
-
-
-def _stamp(name: str) -> list[int] | None:
-    try:
-        st = os.stat(name)
-    except (OSError, ValueError):
-        return None
-    return [
-        st.st_mtime_ns,
-        st.st_ctime_ns,
-        st.st_ino,
-        st.st_dev,
-        st.st_size,
-        st.st_mode,
-    ]
 
 
 _PROBES: dict[str, Callable[[str], Any]] = {

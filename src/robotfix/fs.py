@@ -150,3 +150,20 @@ def within(
 
 def _reason(err: OSError) -> str:
     return err.strerror or type(err).__name__
+
+
+def stamp(name: str) -> list[int] | None:
+    """A folder's stamp for the traces kept between runs (`discovery.Trace`, the
+    module index's answers): a listing is trusted while its stamp is unchanged."""
+    try:
+        st = os.stat(name)
+    except (OSError, ValueError):
+        return None
+    return [
+        st.st_mtime_ns,
+        st.st_ctime_ns,
+        st.st_ino,
+        st.st_dev,
+        st.st_size,
+        st.st_mode,
+    ]

@@ -33,6 +33,8 @@ from itertools import repeat
 from pathlib import Path
 from typing import Any
 
+from robotfix.fs import stamp
+
 _UNKNOWN = Path("\0")  # not looked up yet
 MAX_DEPTH = 32  # folders climbed looking for a package top or a package.xml
 RACY_NS = 2_000_000_000  # a folder changed this recently is not trusted by its stamp
@@ -83,7 +85,7 @@ class ModuleIndex:
         found = self._listings.get(folder)
         if found is None:
             if folder not in self._stamps:
-                stamped = _stamp(folder)
+                stamped = stamp(folder)
                 if stamped is not None and self._now - max(stamped[:2]) < RACY_NS:
                     # too recent to vouch for (the next change could land in
                     # the same tick): the next run counts the folder as changed
@@ -194,7 +196,7 @@ class ModuleIndex:
                 return False
         except (KeyError, TypeError, ValueError, IndexError, AttributeError):
             return False
-        changed = {str(f) for f, known in stamps.items() if _stamp(f) != known}
+        changed = {str(f) for f, known in stamps.items() if stamp(f) != known}
         if len(changed) > MAX_CHANGED:
             return False
         # the probes a changed folder's stamp no longer answers for are checked
@@ -463,22 +465,6 @@ def _list(folder: str) -> tuple[dict[str, bool], bool]:
     except OSError:
         pass
     return found, linked
-
-
-def _stamp(name: str) -> list[int] | None:
-    """A folder's stamp, as `discovery.Trace` takes it."""
-    try:
-        st = os.stat(name)
-    except (OSError, ValueError):
-        return None
-    return [
-        st.st_mtime_ns,
-        st.st_ctime_ns,
-        st.st_ino,
-        st.st_dev,
-        st.st_size,
-        st.st_mode,
-    ]
 
 
 def _is_dir(path: Path) -> bool:
