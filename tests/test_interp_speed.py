@@ -8,9 +8,8 @@ from pathlib import Path
 
 import pytest
 
-from robotfix.analysis.imported import absolute
-from robotfix.analysis.interpreter import _accumulated
-from robotfix.project.modules import imported_names
+from robotfix.analysis.interpreter import _accumulated, _note_sum
+from robotfix.project.modules import import_names, imported_names
 
 CASES = Path(__file__).parent / "cases"
 
@@ -54,20 +53,7 @@ async def later():
 
 def _reference(tree: ast.Module, package: str | None) -> list[str]:
     """`imported_names` as it was: every node of the tree, through `ast.walk`."""
-    found: list[str] = []
-    for node in ast.walk(tree):
-        if isinstance(node, ast.Import):
-            found += [alias.name for alias in node.names]
-        elif isinstance(node, ast.ImportFrom):
-            base = (
-                absolute(package, node.level, node.module)
-                if node.level
-                else node.module
-            )
-            if base:
-                found.append(base)
-                found += [f"{base}.{a.name}" for a in node.names if a.name != "*"]
-    return found
+    return import_names(ast.walk(tree), package)
 
 
 @pytest.mark.parametrize("package", [None, "pkg.sub.node"])
@@ -92,16 +78,13 @@ def test_imported_names_equals_the_full_walk_on_every_case() -> None:
 
 
 def _old_accumulated(nodes: list[ast.stmt]) -> set[str]:
-    summed, targets, stores = set(), set(), []
+    """`_accumulated` as it was: every node, through `ast.walk`."""
+    summed: set[str] = set()
+    targets: set[int] = set()
+    stores: list[ast.Name] = []
     for child in ast.walk(ast.Module(body=nodes, type_ignores=[])):
-        if (
-            isinstance(child, ast.AugAssign)
-            and isinstance(child.target, ast.Name)
-            and isinstance(child.op, (ast.Add, ast.Sub))
-        ):
-            summed.add(child.target.id)
-            targets.add(id(child.target))
-        elif isinstance(child, ast.Name) and isinstance(child.ctx, ast.Store):
+        _note_sum(child, summed, targets)
+        if isinstance(child, ast.Name) and isinstance(child.ctx, ast.Store):
             stores.append(child)
     return summed - {n.id for n in stores if id(n) not in targets}
 

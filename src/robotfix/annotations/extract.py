@@ -293,7 +293,8 @@ class _Reader:
             if text_names.constants is not None:
                 # written in another module: its names mean that module's constants,
                 # and a name unknown there is reported there (at its own line)
-                values = [A.substitute(v, dict(text_names.constants)) for v in values]
+                constants = dict(text_names.constants)
+                values = [A.substitute(v, constants) for v in values]
                 values = self.known_parts(values, mtype, start, [])
             else:
                 values = self.known_parts(values, mtype, start, self.problems)

@@ -28,7 +28,7 @@ import json
 import os
 import time
 from collections import deque
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from itertools import repeat
 from pathlib import Path
 from typing import Any
@@ -476,10 +476,15 @@ def _is_dir(path: Path) -> bool:
 
 def imported_names(tree: ast.Module, package: str | None) -> list[str]:
     """Every module name a file's import statements mention (absolute)."""
+    return import_names(_statements(tree), package)
+
+
+def import_names(nodes: Iterable[ast.AST], package: str | None) -> list[str]:
+    """The module names the import statements among `nodes` mention, in order."""
     from robotfix.analysis.imported import absolute
 
     found: list[str] = []
-    for node in _statements(tree):
+    for node in nodes:
         if isinstance(node, ast.Import):
             found += [alias.name for alias in node.names]
         elif isinstance(node, ast.ImportFrom):
