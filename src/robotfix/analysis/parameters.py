@@ -64,6 +64,9 @@ class _Unknown:
     def __repr__(self) -> str:
         return "<unknown>"
 
+    def __reduce__(self) -> str:  # one instance, in a worker's summary too (`-j N`)
+        return "UNKNOWN"
+
 
 UNKNOWN = _Unknown()  # a default that is there but not a constant
 
