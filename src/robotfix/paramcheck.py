@@ -49,6 +49,9 @@ MENTIONS = {
     "ros2": (b"declare_parameter", b"get_parameter", b"ParamListener"),
     "ros1": (b"rospy",),
 }
+# what a run's check of a Python file found: the words of MENTIONS its bytes hold,
+# and its summary (None: none made, and so made here if one of them is wanted)
+Known = tuple[tuple[bytes, ...], Summary | None]
 _SUPPRESS = re.compile(
     r"#\s*robotfix:\s*ignore(?:\[(?P<codes>[^\]]*)\])?", re.IGNORECASE
 )
@@ -111,7 +114,7 @@ def check_parameter_files(
     python_files: Iterable[Path],
     named: Iterable[Path] = (),
     config: Config | None = None,
-    known: dict[str, Summary] | None = None,
+    known: dict[str, Known] | None = None,
 ) -> list[Diagnostic]:
     """Diagnostics for the parameter files and generate_parameter_library
     definitions of a run; `python_files` are those whose declarations count. A
@@ -119,7 +122,7 @@ def check_parameter_files(
     or is a definitions file; found in a package's config folder, it is an RF004
     warning (it may be a template or another tool's file). A YAML line ending in
     `# robotfix: ignore[RF101]` and `per-file-ignores` silence as in Python.
-    `known`: summaries of Python files made from the tree their check parsed."""
+    `known`: what the run's checks found of the Python files they read."""
     loud = {str(p) for p in [*named, *definition_files]}
     texts: dict[str, str] = {}
     out: list[Diagnostic] = []
@@ -180,25 +183,28 @@ def _silenced(diag: Diagnostic, text: str, config: Config | None) -> bool:
 
 
 def _summaries(
-    python_files: Iterable[Path], words: tuple[bytes, ...], known: dict[str, Summary]
+    python_files: Iterable[Path], words: tuple[bytes, ...], known: dict[str, Known]
 ) -> list[Summary]:
     """The summaries of the files that mention one of `words` (a quick filter);
-    those in `known` are not parsed again."""
+    those in `known` are not read again (unless their check made no summary)."""
     found: list[Summary] = []
     seen: set[str] = set()
     for path in python_files:
+        mentioned, summary = known.get(str(path), (None, None))
+        if mentioned is not None and not any(w in mentioned for w in words):
+            continue
         real = os.path.realpath(path)
         if real in seen:
             continue
         seen.add(real)
+        if summary is not None:
+            found.append(summary)
+            continue
         try:
             data = read_regular(path)
         except UnreadableError:
             continue
         if not any(word in data for word in words):
-            continue
-        if str(path) in known:
-            found.append(known[str(path)])
             continue
         source = SourceFile.from_bytes(str(path), data)
         if source.tree is not None:

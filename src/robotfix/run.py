@@ -41,6 +41,7 @@ if TYPE_CHECKING:
 
 if TYPE_CHECKING:  # the analysis is imported only when a file is checked
     from robotfix.analysis.parameters import Summary as ParamSummary
+    from robotfix.paramcheck import Known as ParamKnown
     from robotfix.project.summary import Known, Project
 
 MIN_PARALLEL = 16  # fewer files are checked faster in one process than by a pool
@@ -64,6 +65,8 @@ class FileResult:
     # what it declares and reads of parameters (`analysis/parameters.py`), from the
     # tree the check parsed, for `paramcheck` (None: not asked, or no mention)
     parameters: ParamSummary | None = None
+    # which of `paramcheck.MENTIONS`' words its bytes hold (None: not asked)
+    mentions: tuple[bytes, ...] | None = None
 
 
 def check_paths(
@@ -136,7 +139,8 @@ def _check_paths(
         project.known = dict(cache.summaries)
         project.sha_of = cache.sha  # the stat fast path for imported modules too
         project.index.restore(cache.resolution())  # the module index's answers
-    parameters: dict[str, ParamSummary] = {}  # file -> its parameters, as checked
+    # file -> the parameter words it mentions and its parameters, as checked
+    parameters: dict[str, ParamKnown] = {}
     # without the cache, a file is read when it is checked (None here), so that
     # the bytes of every file are not all held at once
     todo: list[tuple[Path, bytes | None]] = []
@@ -178,8 +182,8 @@ def _check_paths(
             progress(done, len(files), outcome.path)
         result.diagnostics.extend(outcome.diagnostics)
         used.update(outcome.types)
-        if outcome.parameters is not None:
-            parameters[outcome.path] = outcome.parameters
+        if outcome.mentions is not None:
+            parameters[outcome.path] = (outcome.mentions, outcome.parameters)
         if outcome.error is not None:
             result.internal_errors.append(outcome.error)
         elif cache is not None:
@@ -241,11 +245,11 @@ def _parameter_problems(
     files: list[Path],
     config: Config,
     cache: ResultCache | None = None,
-    parameters: dict[str, ParamSummary] | None = None,
+    parameters: dict[str, ParamKnown] | None = None,
 ) -> list[Diagnostic]:
     """Parameter files against the parameters the code declares; cached as a whole,
-    under a key that hashes every input (`_params_key`); `parameters`: the files'
-    parameter summaries the checks made (the others are parsed there)."""
+    under a key that hashes every input (`_params_key`); `parameters`: what the
+    checks found of the files they read (the others are read there)."""
     if not found.parameter_files and not found.parameter_definitions:
         return []
     python_files = [*files, *found.summary_files]
@@ -490,7 +494,8 @@ def _check_one(
         stubs = stub_set(config.stub_paths)
         parsed = project.take(path, data)  # parsed once, for a summary, if imported
         parameters = None
-        if any(word in data for word in project.parameter_words):
+        mentions = tuple(w for w in project.parameter_words if w in data)
+        if mentions:
             from robotfix.analysis.parameters import summarize
 
             parsed = parsed or SourceFile.from_bytes(str(path), data)
@@ -510,6 +515,7 @@ def _check_one(
             dict(resolver.consulted),
             project.fresh_summaries(),
             parameters,
+            mentions if project.parameter_words else None,
         )
     except Exception as err:  # a fault of ours: report it, go on with the others
         summary = f"{type(err).__name__}: {err}"
