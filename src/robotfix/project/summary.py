@@ -221,7 +221,7 @@ class Project:
             seen = {start}
             todo = [start]
             while todo:
-                for nxt in sorted(self._imports(todo.pop())):
+                for nxt in self._imports(todo.pop()):  # a set: any order
                     if nxt not in seen:
                         seen.add(nxt)
                         todo.append(nxt)
