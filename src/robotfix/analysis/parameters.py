@@ -48,7 +48,7 @@ from robotfix.ros.api_model import (
     PARAMETER_TYPES,
     PARAMETER_VALUE_FIELDS,
 )
-from robotfix.ros.paramfile import Range, python_type
+from robotfix.ros.rclpy_params import Range, python_type
 from robotfix.source import SourceFile
 
 if TYPE_CHECKING:
