@@ -10,6 +10,7 @@ from pathlib import Path
 
 import pytest
 
+from robotfix import run as run_module
 from robotfix.api import check_paths
 from robotfix.config import Config, load_file
 from robotfix.diagnostics import Diagnostic
@@ -57,27 +58,33 @@ def _run(root: Path, jobs: int = 1, cache: bool = True) -> tuple[int, list[str]]
     return result.from_cache, shown
 
 
-def test_a_changed_helper_rechecks_exactly_its_importers(tmp_path: Path) -> None:
+@pytest.mark.parametrize("jobs", [1, 2])
+def test_a_changed_helper_rechecks_exactly_its_importers(
+    tmp_path: Path, jobs: int, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """In one process and in workers (which send back what each check consulted,
+    for the cache; a run without the cache does not ask for it)."""
+    monkeypatch.setattr(run_module, "MIN_PARALLEL", 1)
     root = _copy(tmp_path, "ros2_pkg")
     files = len(list(root.rglob("*.py")))  # setup.py, __init__, 4 modules
-    cached, first = _run(root)
+    cached, first = _run(root, jobs)
     assert cached == 0 and any(":RF101:" in line for line in first)
-    assert _run(root) == (files, first)
+    assert _run(root, jobs) == (files, first)
 
     util = root / "ros2_pkg" / "my_pkg" / "util.py"
     # a body that changes, lines that do not: the summary is the same
     util.write_text(util.read_text().replace("return step / 10.0", "return step / 9.0"))
-    cached, again = _run(root)
+    cached, again = _run(root, jobs)
     assert (cached, again) == (files - 1, first)  # only util.py itself
 
     limits = root / "ros2_pkg" / "my_pkg" / "limits.py"
     limits.write_text(limits.read_text().replace("= 0.22", "= 0.6"))
-    cached, after = _run(root)
+    cached, after = _run(root, jobs)
     # limits.py, util.py (imports it) and driver.py (imports both) are re-checked
     assert cached == files - 3
     assert after != first
     assert not any("clamp_speed(0.5)" in line for line in after)  # 0.5 <= 0.6 now
-    fresh = _run(root, cache=False)[1]
+    fresh = _run(root, jobs, cache=False)[1]
     assert after == fresh  # a cached run prints what an uncached one prints
 
 
