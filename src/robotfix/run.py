@@ -435,8 +435,11 @@ def _chunks(
     current: list[tuple[Path, bytes | None]] = []
     held, group = 0, None
     sizes: dict[int, int] = {}
+    packages: dict[Path, Path] = {}  # folder -> its package (or itself): one walk up
     for path, data, size in sized:
-        key = package_folder(path) or path.parent
+        key = packages.get(path.parent)
+        if key is None:
+            key = packages[path.parent] = package_folder(path) or path.parent
         if current and (key != group or held + size > cap):
             chunks.append(current)
             sizes[id(current)] = held
