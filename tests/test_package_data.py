@@ -112,3 +112,58 @@ def test_data_of_another_conversion_version_is_ignored(
     finally:
         catalog._shipped_standard.cache_clear()
         units._shipped.cache_clear()
+
+
+def test_the_shipped_tables_are_their_toml() -> None:
+    build = tool()
+    assert build.TABLES_JSON.read_text(encoding="utf-8") == build.tables(), (
+        "tables.json is stale: run python tools/build_package_data.py"
+    )
+
+
+def test_a_run_without_a_pyproject_reads_no_toml(tmp_path: Path) -> None:
+    """The tables every run reads come from their JSON copy: tomllib (5 ms to
+    import) is imported only for a pyproject.toml."""
+    node = tmp_path / "driver.py"
+    node.write_text(NODE)
+    probe = (
+        "import sys\n"
+        "from robotfix.cli import main\n"
+        f"status = main(['check', '--no-cache', {str(node)!r}])\n"
+        "print('tomllib' in sys.modules, 'tomli' in sys.modules)\n"
+    )
+    env = {**os.environ, "PYTHONPATH": str(ROOT / "src")}
+    done = subprocess.run(
+        [sys.executable, "-c", probe],
+        capture_output=True,
+        text=True,
+        env=env,
+        cwd=tmp_path,
+        check=False,
+    )
+    assert done.stdout.strip().endswith("False False"), done.stdout + done.stderr
+
+
+def test_an_edited_table_is_read_from_its_toml(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A table whose JSON copy was made of other bytes (edited, the tool not run
+    again) is read from the TOML: the TOML is the source of truth."""
+    from robotfix.ros import catalog
+
+    for name in catalog.TABLES:
+        text = (catalog.TABLE_DIR / f"{name}.toml").read_text("utf-8")
+        if name == "rep103":
+            text = text.replace('"m/s"', '"km/h"', 1)
+        (tmp_path / f"{name}.toml").write_text(text, encoding="utf-8")
+    catalog.table.cache_clear()
+    try:
+        shipped = catalog.table("rep103")
+        catalog.table.cache_clear()
+        monkeypatch.setattr(catalog, "TABLE_DIR", tmp_path)
+        fresh = catalog.table("rep103")
+        unchanged = catalog.table("defaults")
+    finally:
+        catalog.table.cache_clear()
+    assert unchanged == catalog.table("defaults")
+    assert shipped != fresh and "km/h" in str(fresh) and "km/h" not in str(shipped)

@@ -2,6 +2,8 @@
 
 - src/robotfix/ros/standard/<distro>.json: the standard message definitions of each
   distribution RobotFix knows (`catalog.STORES`), converted from rosbags' type stores;
+- src/robotfix/ros/tables.json: the REP 103, comment-unit and default tables
+  (ros/*.toml, their source) parsed, which every run reads;
 - src/robotfix/annotations/units.json: pint's reading of every unit the REP 103 table,
   the standard messages' comment units, the shipped stubs and the vocabulary of common
   spellings (src/robotfix/ros/unit_vocabulary.toml) use, and pint's unit, prefix and
@@ -28,6 +30,7 @@ import tomllib
 ROOT = Path(__file__).resolve().parent.parent
 STANDARD = ROOT / "src/robotfix/ros/standard"
 UNITS = ROOT / "src/robotfix/annotations/units.json"
+TABLES_JSON = ROOT / "src/robotfix/ros/tables.json"
 
 
 def standard_messages() -> dict[str, str]:
@@ -79,6 +82,24 @@ def units() -> str:
     return _dump({"format": units_format(), "entries": entries, "pint": pint_names()})
 
 
+def tables() -> str:
+    """The TOML tables `ros/catalog.table` reads on every run, parsed, each with the
+    sha256 of the bytes it was parsed from (an edited table is read from its TOML
+    until this is run again)."""
+    import hashlib
+
+    from robotfix.ros.catalog import TABLES
+
+    found = {}
+    for name in TABLES:
+        data = (ROOT / "src/robotfix/ros" / f"{name}.toml").read_bytes()
+        found[name] = {
+            "sha256": hashlib.sha256(data).hexdigest(),
+            "data": tomllib.loads(data.decode("utf-8")),
+        }
+    return _dump(found)
+
+
 def _dump(data: Any) -> str:
     return json.dumps(data, sort_keys=True, separators=(",", ":")) + "\n"
 
@@ -88,7 +109,8 @@ def main() -> None:
     for distro, text in standard_messages().items():
         (STANDARD / f"{distro}.json").write_text(text, encoding="utf-8")
     UNITS.write_text(units(), encoding="utf-8")
-    print(f"wrote {STANDARD} and {UNITS}", file=sys.stderr)
+    TABLES_JSON.write_text(tables(), encoding="utf-8")
+    print(f"wrote {STANDARD}, {UNITS} and {TABLES_JSON}", file=sys.stderr)
 
 
 if __name__ == "__main__":

@@ -10,17 +10,12 @@ from __future__ import annotations
 import fnmatch
 import os
 import re
-import sys
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
+from robotfix import tomlfile
 from robotfix.fs import UnreadableError, read_text
-
-if sys.version_info >= (3, 11):
-    import tomllib
-else:  # pragma: no cover
-    import tomli as tomllib
 
 KEYS = {
     "msg-paths",
@@ -163,8 +158,8 @@ def load_file(path: Path, base: Config | None = None) -> Config:
     patterns and msg-paths are relative to its folder."""
     config = base or Config()
     try:
-        data = tomllib.loads(read_text(path, MAX_PYPROJECT_BYTES))
-    except tomllib.TOMLDecodeError as err:
+        data = tomlfile.loads(read_text(path, MAX_PYPROJECT_BYTES))
+    except tomlfile.TomlError as err:
         line = re.search(r"line (\d+)", str(err))
         where = f"{path}:{line.group(1)}" if line else str(path)
         raise ConfigError(f"{where}: cannot parse TOML: {err}") from None
