@@ -170,3 +170,23 @@ def test_parameter_files_use_the_checks_parse(
         paramcheck, "_summaries", lambda files, words, known: original(files, words, {})
     )
     assert _shown(root) == shared  # paramcheck parsing the files again: the same
+
+
+def test_an_edited_module_is_parsed_once_in_a_cached_run(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """After an edit, the cached results of the module's importers ask for its new
+    summary (parsed for it), and the module itself is checked again: one parse,
+    the output of a run without the cache."""
+    root = _package(tmp_path)
+    config = Config(root=root)
+    assert not check_paths([root], config, use_cache=True).internal_errors
+    limits = root / "my_pkg" / "limits.py"
+    limits.write_text(limits.read_text() + "\n\nEDITED = 1\n")
+    counted = _parses(monkeypatch)
+    result = check_paths([root], config, use_cache=True)
+    assert counted[str(limits.resolve())] == 1
+    assert result.from_cache > 0
+    assert [str(d) for d in result.diagnostics] == [
+        str(d) for d in check_paths([root], config).diagnostics
+    ]

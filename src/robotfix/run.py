@@ -135,6 +135,9 @@ def _check_paths(
         if known[2] is not None:  # a type is read from its own file when needed
             catalog.preload_outline(known[2])
     if cache is not None:
+        # a module whose summary a cached result needs, parsed for it, keeps its
+        # tree if it is then checked (`Project.expect`, `take`)
+        project.expect(files)
         project.known = dict(cache.summaries)
         project.sha_of = cache.sha  # the stat fast path for imported modules too
         project.index.restore(cache.resolution())  # the module index's answers

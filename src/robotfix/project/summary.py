@@ -273,8 +273,10 @@ class Project:
         `release`, these are all it checks, in this order: what only the files
         already checked could import is dropped as the run goes (`take`)."""
         self.to_check = {_key(p) for p in paths}
-        self._pending.clear()
-        self._pending_bytes = 0
+        # a tree parsed for a summary while the result cache was consulted, of a
+        # file now to check, is kept for that check (the file is parsed once)
+        self._pending = {k: v for k, v in self._pending.items() if k in self.to_check}
+        self._pending_bytes = sum(len(v[0]) for v in self._pending.values())
         self._live.clear()
         self._holders.clear()
         self._ways.clear()
