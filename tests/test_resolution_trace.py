@@ -365,3 +365,61 @@ def test_a_probe_answered_by_a_changed_folder_is_checked(tmp_path: Path) -> None
     for name, importer in [("y", ws / "sub" / "x.py"), ("sub.y", ws / "node.py")]:
         assert again.find(name, importer) == cold.find(name, importer)
     assert cold.find("y", ws / "sub" / "x.py") is None
+
+
+# -- the workers' answers (a `-j N` run) --------------------------------------------
+
+
+def test_the_workers_answers_are_kept(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A run whose files were checked by workers keeps what they resolved, so the
+    next (cached) run resolves no name again: the first run after a parallel one
+    took 0.6 s on a 235k-line tree, against 0.3 s for the runs after it."""
+    from robotfix import run as run_module
+
+    monkeypatch.setattr(run_module, "MIN_PARALLEL", 1)
+    package(tmp_path, "helpers")
+    write(tmp_path / "src" / "helpers.py", TOO_HIGH)
+    for index in range(4):
+        write(tmp_path / "src" / "demo" / "demo" / f"other{index}.py", "import helpers\n")
+    config = Config(root=tmp_path)
+    cold = check_paths([tmp_path / "src"], config, jobs=2, use_cache=True)
+    assert FINDING in cli.render(cold, "concise", 1, 0)
+    looked: list[str] = []
+    real = ModuleIndex._lookup
+
+    def counted(self: ModuleIndex, roots: tuple[Path, ...], name: str) -> Path | None:
+        looked.append(name)
+        return real(self, roots, name)
+
+    monkeypatch.setattr(ModuleIndex, "_lookup", counted)
+    warm = check_paths([tmp_path / "src"], config, jobs=2, use_cache=True)
+    assert warm.from_cache == 7 and looked == []  # driver, __init__, helpers, 4 more
+    assert warm.diagnostics == cold.diagnostics
+
+
+def test_merged_answers_are_those_of_one_index(tmp_path: Path) -> None:
+    """`merge` of another index's `fresh` answers gives what one index finding both
+    would keep; an answer that differs (the disk changed during the run) keeps
+    nothing."""
+    write(tmp_path / "a.py", "")
+    write(tmp_path / "pkg" / "__init__.py", "")
+    write(tmp_path / "pkg" / "b.py", "")
+    node = tmp_path / "node.py"
+    both = ModuleIndex([tmp_path])
+    for name in ("a", "pkg.b", "numpy"):
+        both.find(name, node)
+    main, worker = ModuleIndex([tmp_path]), ModuleIndex([tmp_path])
+    main.find("a", node)
+    worker.handed_out()
+    worker.find("pkg.b", node)
+    worker.find("numpy", node)
+    fresh = worker.fresh()
+    assert fresh is not None and worker.fresh() is None  # each answer handed once
+    main.merge(fresh)
+    assert main.keep() is not None and main._resolved == both._resolved
+
+    wrong = dict(fresh, resolved=[(0, "pkg.b", str(tmp_path / "a.py"))])
+    main.merge(wrong)
+    assert main.keep() is None

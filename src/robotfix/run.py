@@ -13,7 +13,7 @@ import time
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from robotfix import messages
 from robotfix.api import (
@@ -66,6 +66,9 @@ class FileResult:
     parameters: ParamSummary | None = None
     # which of `paramcheck.MENTIONS`' words its bytes hold (None: not asked)
     mentions: tuple[bytes, ...] | None = None
+    # a worker's module index answers since its last result (`ModuleIndex.fresh`),
+    # for the result cache: the next run resolves nothing the workers did
+    answers: dict[str, Any] | None = None
 
 
 def check_paths(
@@ -187,6 +190,8 @@ def _check_paths(
         used.update(outcome.types)
         if outcome.mentions is not None:
             parameters[outcome.path] = (outcome.mentions, outcome.parameters)
+        if outcome.answers is not None:
+            project.index.merge(outcome.answers)
         if outcome.error is not None:
             result.internal_errors.append(outcome.error)
         elif cache is not None:
@@ -550,6 +555,8 @@ def _start_worker(interfaces: _Interfaces | None, config: Config, lean: bool) ->
     main process's to handle (it ends the workers), so no traceback here."""
     global _WORKER
     signal.signal(signal.SIGINT, signal.SIG_IGN)
+    if _WORKER is not None:  # forked: the main process's answers are not news
+        _WORKER[2].index.handed_out()
     if interfaces is not None:
         catalog = _catalog(interfaces, config)
         project = make_project(list(interfaces.roots), config, catalog)
@@ -566,6 +573,8 @@ def _worker_check(chunk: list[tuple[Path, bytes | None]]) -> list[FileResult]:
             result.parameters = _portable(result.parameters)
         if lean:
             _lean(result)
+    if results and not lean:
+        results[-1].answers = project.index.fresh()
     return results
 
 

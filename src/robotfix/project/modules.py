@@ -29,7 +29,7 @@ import os
 import time
 from collections import deque
 from collections.abc import Callable, Iterable, Sequence
-from itertools import repeat
+from itertools import islice, repeat
 from pathlib import Path
 from typing import Any
 
@@ -74,6 +74,7 @@ class ModuleIndex:
         self._spoiled = False  # a symlink listed
         self._now = time.time_ns()
         self._restored: tuple[dict[str, Any], tuple[int, ...]] | None = None
+        self._handed = (0, 0, 0)  # `fresh`: the stamps, probes, answers handed out
 
     def listed_folders(self) -> set[str]:
         """Every folder this index listed or probed (for the language server: a
@@ -219,7 +220,67 @@ class ModuleIndex:
         self._ids = ids
         self._resolved = resolved
         self._restored = (raw, self._sizes()) if not changed else None
+        self.handed_out()
         return True
+
+    # -- a worker's answers, for the main process's `keep` ----------------------
+    def fresh(self) -> dict[str, Any] | None:
+        """What this index found since the last call (or since `restore`, or since
+        a fork handed it its parent's), in `merge`'s terms; None when nothing."""
+        stamps, probes, resolved = self._handed
+        self._handed = (len(self._stamps), len(self._probes), len(self._resolved))
+        if self._handed == (stamps, probes, resolved) and not self._spoiled:
+            return None
+        numbers: dict[int, int] = {}  # this index's search-path numbers -> the delta's
+        answers = []
+        for (number, name), found in islice(self._resolved.items(), resolved, None):
+            local = numbers.setdefault(number, len(numbers))
+            answers.append((local, name, None if found is None else str(found)))
+        return {
+            "spoiled": self._spoiled,
+            "paths": [self._spelled[n] for n in numbers],
+            "ids": {k: numbers[n] for k, n in self._ids.items() if n in numbers},
+            "stamps": dict(islice(self._stamps.items(), stamps, None)),
+            "probes": [
+                (k, d, e, k in self._covered)
+                for k, (d, e) in islice(self._probes.items(), probes, None)
+            ],
+            "resolved": answers,
+        }
+
+    def handed_out(self) -> None:
+        """What this index holds now is its parent's: `fresh` leaves it out (a
+        forked worker's index, which the main process has already)."""
+        self._handed = (len(self._stamps), len(self._probes), len(self._resolved))
+
+    def merge(self, fresh: dict[str, Any]) -> None:
+        """Take a worker's `fresh` answers, so that `keep` holds what the workers
+        found too; an answer or a stamp that differs from this index's (the disk
+        changed while the run went on) keeps nothing."""
+        spoiled = bool(fresh["spoiled"])
+        for folder, stamped in fresh["stamps"].items():
+            known = self._stamps.setdefault(folder, stamped)
+            spoiled = spoiled or known != stamped
+        for name, folder_probe, answer, covered in fresh["probes"]:
+            known_probe = self._probes.setdefault(name, (folder_probe, answer))
+            spoiled = spoiled or known_probe != (folder_probe, answer)
+            if covered:
+                self._covered.add(name)
+        numbers = [self._number(tuple(roots)) for roots in fresh["paths"]]
+        for spelled, local in fresh["ids"].items():
+            self._ids.setdefault(spelled, numbers[local])
+        for local, name, found in fresh["resolved"]:
+            answer = None if found is None else Path(found)
+            known_answer = self._resolved.setdefault((numbers[local], name), answer)
+            spoiled = spoiled or known_answer != answer
+        self._spoiled = self._spoiled or spoiled
+
+    def _number(self, spelled: tuple[str, ...]) -> int:
+        found = self._numbers.setdefault(spelled, len(self._numbers))
+        if found == len(self._spelled):
+            self._paths.append(None)
+            self._spelled.append(spelled)
+        return found
 
     def _sizes(self) -> tuple[int, ...]:
         """How much `keep` would write (it only grows)."""
@@ -290,11 +351,9 @@ class ModuleIndex:
         found = self._ids.get(spelled)
         if found is None:
             roots = self.search_path(importer)
-            strings = tuple(map(str, roots))
-            found = self._numbers.setdefault(strings, len(self._numbers))
-            if found == len(self._paths):
-                self._paths.append(roots)
-                self._spelled.append(strings)
+            found = self._number(tuple(map(str, roots)))
+            if self._paths[found] is None:
+                self._paths[found] = roots
             self._ids[spelled] = found
         return found
 
