@@ -373,16 +373,20 @@ def test_a_probe_answered_by_a_changed_folder_is_checked(tmp_path: Path) -> None
 def test_the_workers_answers_are_kept(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    """A run whose files were checked by workers keeps what they resolved, so the
-    next (cached) run resolves no name again: the first run after a parallel one
-    took 0.6 s on a 235k-line tree, against 0.3 s for the runs after it."""
+    """A run whose files were checked by workers keeps what they resolved and the
+    digests of the message types they looked up, so the next (cached) run resolves
+    no name and reads no interface file again (the first run after a parallel one
+    took 0.51 s on a 235k-line tree, against 0.31 s for the runs after it)."""
     from robotfix import run as run_module
+    from robotfix.ros import catalog as catalog_module
 
     monkeypatch.setattr(run_module, "MIN_PARALLEL", 1)
+    monkeypatch.setattr(run_module, "RACY_NS", 0)  # Cmd.msg is seconds old
     package(tmp_path, "helpers")
     write(tmp_path / "src" / "helpers.py", TOO_HIGH)
     for index in range(4):
-        write(tmp_path / "src" / "demo" / "demo" / f"other{index}.py", "import helpers\n")
+        other = tmp_path / "src" / "demo" / "demo" / f"other{index}.py"
+        write(other, "import helpers\n")
     config = Config(root=tmp_path)
     cold = check_paths([tmp_path / "src"], config, jobs=2, use_cache=True)
     assert FINDING in cli.render(cold, "concise", 1, 0)
@@ -394,8 +398,17 @@ def test_the_workers_answers_are_kept(
         return real(self, roots, name)
 
     monkeypatch.setattr(ModuleIndex, "_lookup", counted)
+    read: list[object] = []
+    real_read = catalog_module.read_interface
+
+    def reading(*args: object, **kwargs: object) -> object:
+        read.append(args)
+        return real_read(*args, **kwargs)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(catalog_module, "read_interface", reading)
     warm = check_paths([tmp_path / "src"], config, jobs=2, use_cache=True)
     assert warm.from_cache == 7 and looked == []  # driver, __init__, helpers, 4 more
+    assert read == []  # the workers' digests of Cmd.msg were kept too
     assert warm.diagnostics == cold.diagnostics
 
 

@@ -69,6 +69,8 @@ class FileResult:
     # a worker's module index answers since its last result (`ModuleIndex.fresh`),
     # for the result cache: the next run resolves nothing the workers did
     answers: dict[str, Any] | None = None
+    # the same for the catalog's digests (`MsgCatalog.fresh_digests`)
+    digests: dict[str, tuple[str, tuple[str, ...]]] | None = None
 
 
 def check_paths(
@@ -192,6 +194,8 @@ def _check_paths(
             parameters[outcome.path] = (outcome.mentions, outcome.parameters)
         if outcome.answers is not None:
             project.index.merge(outcome.answers)
+        if outcome.digests:
+            catalog.preload_digests(outcome.digests)
         if outcome.error is not None:
             result.internal_errors.append(outcome.error)
         elif cache is not None:
@@ -555,8 +559,9 @@ def _start_worker(interfaces: _Interfaces | None, config: Config, lean: bool) ->
     main process's to handle (it ends the workers), so no traceback here."""
     global _WORKER
     signal.signal(signal.SIGINT, signal.SIG_IGN)
-    if _WORKER is not None:  # forked: the main process's answers are not news
+    if _WORKER is not None:  # forked: what the main process knows is not news
         _WORKER[2].index.handed_out()
+        _WORKER[0].fresh_digests()
     if interfaces is not None:
         catalog = _catalog(interfaces, config)
         project = make_project(list(interfaces.roots), config, catalog)
@@ -575,6 +580,7 @@ def _worker_check(chunk: list[tuple[Path, bytes | None]]) -> list[FileResult]:
             _lean(result)
     if results and not lean:
         results[-1].answers = project.index.fresh()
+        results[-1].digests = catalog.fresh_digests()
     return results
 
 

@@ -36,6 +36,7 @@ from collections.abc import Collection, Mapping
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
 from functools import cache
+from itertools import islice
 from pathlib import Path
 from typing import Any
 
@@ -230,6 +231,7 @@ class MsgCatalog:
         self._types_of: dict[str, tuple[str, ...]] = {}  # user file -> its types
         # fingerprint_types' memo: each type's message-typed fields
         self._children: dict[str, tuple[str, ...]] = {}
+        self._digests_handed = 0  # `fresh_digests`: the table's entries handed out
         self._combined: dict[tuple[str, ...], str] = {}  # names asked -> digest
         # the lazy load (`preload_outline`): each used file in order, its digest and
         # its sections (name, has fields); files not read yet, by type they define
@@ -355,6 +357,15 @@ class MsgCatalog:
         message types of its fields (for a result cache to hand back)."""
         digests = self._resolved_digests or {}
         return {k: (v, self._children[k]) for k, v in digests.items()}
+
+    def fresh_digests(self) -> dict[str, tuple[str, tuple[str, ...]]]:
+        """`digest_table`'s entries since the last call: a worker hands them to the
+        main process (`preload_digests`), whose result cache keeps them, so the next
+        run reads no interface file a worker read for them."""
+        table = self.digest_table()
+        fresh = dict(islice(table.items(), self._digests_handed, None))
+        self._digests_handed = len(table)
+        return fresh
 
     def preload_digests(self, table: Mapping[str, tuple[str, tuple[str, ...]]]) -> None:
         """`digest_table` of an earlier run over the very same interface files (the
