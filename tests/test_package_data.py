@@ -59,6 +59,29 @@ class Driver(Node):
 """
 
 
+def _imported_by_a_check(
+    node: Path, modules: tuple[str, ...], env: dict[str, str] | None = None
+) -> object:
+    """Which of `modules` a `robotfix check` of `node` imports (in a fresh
+    process, from the node's folder); its output when the probe fails."""
+    probe = (
+        "import sys\n"
+        "from robotfix.cli import main\n"
+        f"status = main(['check', '--no-cache', {str(node)!r}])\n"
+        f"print(sorted(m for m in {modules!r} if m in sys.modules))\n"
+    )
+    done = subprocess.run(
+        [sys.executable, "-c", probe],
+        capture_output=True,
+        text=True,
+        env={**os.environ, "PYTHONPATH": str(ROOT / "src"), **(env or {})},
+        cwd=node.parent,
+        check=False,
+    )
+    last = done.stdout.strip().splitlines()[-1:] or [""]
+    return [] if last[0] == "[]" else done.stdout + done.stderr
+
+
 @pytest.mark.parametrize("distro", ["ros2", "ros1"])
 def test_a_first_run_imports_neither_pint_nor_rosbags(
     tmp_path: Path, distro: str
@@ -68,26 +91,9 @@ def test_a_first_run_imports_neither_pint_nor_rosbags(
     (tmp_path / "pyproject.toml").write_text(
         f'[tool.robotfix]\nros-distro = "{distro}"\n'
     )
-    probe = (
-        "import sys\n"
-        "from robotfix.cli import main\n"
-        f"status = main(['check', '--no-cache', {str(node)!r}])\n"
-        "print(sorted(m for m in ('pint', 'rosbags') if m in sys.modules))\n"
-    )
-    env = {
-        **os.environ,
-        "ROBOTFIX_CACHE_DIR": str(tmp_path / "empty-cache"),
-        "PYTHONPATH": str(ROOT / "src"),
-    }
-    done = subprocess.run(
-        [sys.executable, "-c", probe],
-        capture_output=True,
-        text=True,
-        env=env,
-        cwd=tmp_path,
-        check=False,
-    )
-    assert done.stdout.strip().endswith("[]"), done.stdout + done.stderr
+    cache = {"ROBOTFIX_CACHE_DIR": str(tmp_path / "empty-cache")}
+    imported = _imported_by_a_check(node, ("pint", "rosbags"), cache)
+    assert imported == [], imported
 
 
 def test_data_of_another_conversion_version_is_ignored(
@@ -126,22 +132,8 @@ def test_a_run_without_a_pyproject_reads_no_toml(tmp_path: Path) -> None:
     import) is imported only for a pyproject.toml."""
     node = tmp_path / "driver.py"
     node.write_text(NODE)
-    probe = (
-        "import sys\n"
-        "from robotfix.cli import main\n"
-        f"status = main(['check', '--no-cache', {str(node)!r}])\n"
-        "print('tomllib' in sys.modules, 'tomli' in sys.modules)\n"
-    )
-    env = {**os.environ, "PYTHONPATH": str(ROOT / "src")}
-    done = subprocess.run(
-        [sys.executable, "-c", probe],
-        capture_output=True,
-        text=True,
-        env=env,
-        cwd=tmp_path,
-        check=False,
-    )
-    assert done.stdout.strip().endswith("False False"), done.stdout + done.stderr
+    imported = _imported_by_a_check(node, ("tomllib", "tomli"))
+    assert imported == [], imported
 
 
 def test_an_edited_table_is_read_from_its_toml(
