@@ -166,3 +166,35 @@ def test_a_skipped_generated_program_has_no_finding(body: list[str]) -> None:
     catalog = catalog_for(CASES / "init")
     if _skipped(text, path, catalog):
         assert _full(text, path, catalog) == [], text
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "def area(w, h):\n    return w * h\n",  # skipped
+        "from geometry_msgs.msg import Twist\n\n"  # analysed
+        "def stop(pub):\n    t = Twist()\n    t.linear.x = 0.0\n    pub.publish(t)\n",
+    ],
+)
+def test_a_checked_tree_is_freed_without_the_cycle_collector(text: str) -> None:
+    """Nothing a check builds makes a reference cycle that holds the file's tree:
+    the relevance pass's module scope once referred to itself, so every tree lived
+    on until a collection (cyclic garbage on corpus2: 7,614 objects after the fix,
+    the whole run's trees before; 0.26 -> 0.10 s of collections)."""
+    import gc
+    import weakref
+
+    from robotfix.api import check_file
+    from robotfix.source import SourceFile
+
+    source = SourceFile.from_text("node.py", text)
+    assert source.tree is not None
+    tree = weakref.ref(source.tree)
+    catalog = catalog_for(CASES)
+    gc.disable()
+    try:
+        check_file("node.py", text.encode(), catalog, parsed=source)
+        del source
+        assert tree() is None
+    finally:
+        gc.enable()

@@ -244,9 +244,15 @@ class _Scope:
         self.parent = parent
         self.is_class = isinstance(node, ast.ClassDef)
         self.locals, self.declared = _binders(node)
-        self.module: _Scope = parent.module if parent is not None else self
+        # the module scope (None: this one); not `self`, which would make a
+        # reference cycle that keeps the file's tree alive until a collection
+        self._module = parent.module if parent is not None else None
         if parent is None:
             self.globals = self.locals | declared  # bound by `global x; x = ...`
+
+    @property
+    def module(self) -> _Scope:
+        return self._module or self
 
     # -- names ---------------------------------------------------------------
     def read(self, name: str, bound: frozenset[str]) -> None:
