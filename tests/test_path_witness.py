@@ -98,8 +98,17 @@ def test_a_witness_is_only_for_questions() -> None:
     assert api._without_solver(plain) is None
 
 
+def test_strings_compared_for_equality_have_witnesses() -> None:
+    """A string symbol tries the strings it is compared with and one other (frame
+    names: `frame_id == "map"`); other string terms have no value here."""
+    a, b = A.Str("a"), A.Str("b")
+    assert holds_somewhere([A.Binary("==", S, a)])
+    assert holds_somewhere([A.Binary("!=", S, a), A.Binary("!=", S, b)])
+    assert not holds_somewhere([A.Binary("==", S, a), A.Binary("==", S, b)])
+    assert not holds_somewhere([A.Binary("==", A.Binary("+", S, a), b)])
+
+
 def test_terms_without_a_value_here_have_no_witness() -> None:
-    assert not holds_somewhere([A.Binary("==", S, A.Str("a"))])
     speed = A.Name("speed")
     assert not holds_somewhere([A.Binary("<", speed, A.Num(Fraction(1), True))])
     assert not holds_somewhere([term("x / (y - y) > 1")])

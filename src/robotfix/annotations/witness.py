@@ -12,7 +12,7 @@ the solver decides as before. A witness is never a guess: it is checked.
 from __future__ import annotations
 
 import itertools
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from fractions import Fraction
 from functools import lru_cache
 
@@ -68,8 +68,9 @@ def _constants(expr: A.Expr) -> set[Fraction] | None:
     return found
 
 
-def _candidates(constants: set[Fraction], integer: bool) -> list[Fraction]:
-    points = sorted({Fraction(0), *constants, *(-c for c in constants)})
+def _candidates(constants: Iterable[Fraction | str], integer: bool) -> list[Fraction]:
+    numbers = {c for c in constants if isinstance(c, Fraction)}
+    points = sorted({Fraction(0), *numbers, *(-c for c in numbers)})
     found = set(points)
     for c in points:
         found.update((c - 1, c + 1))
@@ -82,39 +83,45 @@ def _candidates(constants: set[Fraction], integer: bool) -> list[Fraction]:
 
 def holds_somewhere(parts: Sequence[A.Expr]) -> bool:
     """Whether some values of the solver symbols in `parts` make every part true
-    (a path question: can this condition hold under these facts?). Each symbol
+    (a path question: can this condition hold under these facts?): `example`."""
+    return example(parts) is not None
+
+
+def example(parts: Sequence[A.Expr]) -> dict[A.Sym, Scalar] | None:
+    """Values of the solver symbols in `parts` that make every part true (a path
+    question, or a counterexample: the facts and the goal's negation). Each symbol
     tries the constants of the conjuncts it occurs in, their neighbours and
     midpoints, and first the value an equation with earlier symbols gives it (a
     symbol an equation defines comes after the others); a conjunct is evaluated
-    exactly once its last symbol has a value. True only with such values found;
-    False says none was found, not that none exists."""
+    exactly once its last symbol has a value. They depend on `parts` alone (the
+    same values in every run); None says none was found, not that none exists."""
     conjuncts: list[tuple[A.Expr, list[A.Sym]]] = []
     first: dict[A.Sym, None] = {}  # the symbols in order of appearance
-    constants: dict[A.Sym, set[Fraction]] = {}
+    constants: dict[A.Sym, set[Fraction | str]] = {}
     defined: set[A.Sym] = set()
     for part in parts:
         for conjunct in A.conjuncts(part):
             syms: list[A.Sym] = []
             for node in A.walk(conjunct):
                 if isinstance(node, A.Sym):
-                    if node.sort == "str":
-                        return False
                     first.setdefault(node)
                     syms.append(node)
                 elif isinstance(node, A.Num):
                     if abs(node.value.numerator) > _LIMIT:
-                        return False
+                        return None
                     if node.value.denominator > _LIMIT:
-                        return False
-                elif isinstance(node, (A.Name, A.Str, A.UnitIs)):
-                    return False  # not a value the solver's meaning gives here
-            numbers = {n.value for n in A.walk(conjunct) if isinstance(n, A.Num)}
+                        return None
+                elif isinstance(node, (A.Name, A.UnitIs)):
+                    return None  # not a value the solver's meaning gives here
+            numbers = {
+                n.value for n in A.walk(conjunct) if isinstance(n, (A.Num, A.Str))
+            }
             for sym in syms:
                 constants.setdefault(sym, set()).update(numbers)
             defined.update(_defines(conjunct))
             conjuncts.append((conjunct, syms))
     if len(first) > MAX_SYMBOLS:
-        return False
+        return None
     symbols = sorted(first, key=lambda s: s in defined)  # stable: appearance
     order = {sym: index for index, sym in enumerate(symbols)}
     due: list[list[A.Expr]] = [[] for _ in symbols]
@@ -122,20 +129,32 @@ def holds_somewhere(parts: Sequence[A.Expr]) -> bool:
     for conjunct, syms in conjuncts:
         if not syms:
             if _value(conjunct, {}) is not True:
-                return False
+                return None
             continue
         last = max(syms, key=order.__getitem__)
         due[order[last]].append(conjunct)
         for sym, term in _definitions(conjunct):
             if sym == last:
                 hints[order[last]].append(term)
-    domains: list[list[Fraction | bool]] = [
+    domains: list[list[Scalar]] = [
         [True, False]
         if sym.sort == "bool"
+        else _texts(constants.get(sym, set()))
+        if sym.sort == "str"
         else list(_candidates(constants.get(sym, set()), sym.sort == "int"))
         for sym in symbols
     ]
-    return _assign(symbols, domains, due, hints) is True
+    return _assign(symbols, domains, due, hints)
+
+
+def _texts(constants: set[Fraction | str]) -> list[Scalar]:
+    """A string symbol's candidates: the strings its conjuncts compare it with,
+    then one that is none of them."""
+    texts = sorted(c for c in constants if isinstance(c, str))
+    other = "x"
+    while other in texts:
+        other += "x"
+    return [*texts, other]
 
 
 def _definitions(conjunct: A.Expr) -> list[tuple[A.Sym, A.Expr]]:
@@ -158,17 +177,18 @@ def _defines(conjunct: A.Expr) -> set[A.Sym]:
 
 def _assign(
     symbols: list[A.Sym],
-    domains: list[list[Fraction | bool]],
+    domains: list[list[Scalar]],
     due: list[list[A.Expr]],
     hints: list[list[A.Expr]],
-) -> bool | None:
-    """Backtracking over the symbols in order; None when out of steps."""
+) -> dict[A.Sym, Scalar] | None:
+    """Backtracking over the symbols in order: the first values found; None when
+    there are none or the steps ran out."""
     values: Values = {}
     steps = 0
-    stack: list[tuple[int, list[Fraction | bool]]] = []
+    stack: list[tuple[int, list[Scalar]]] = []
 
-    def options(index: int) -> list[Fraction | bool]:
-        first: list[Fraction | bool] = []
+    def options(index: int) -> list[Scalar]:
+        first: list[Scalar] = []
         for term in hints[index]:
             value = _value(term, values)
             if _fits(value, symbols[index].sort):
@@ -176,7 +196,7 @@ def _assign(
         return first + domains[index]
 
     if not symbols:
-        return True
+        return {}
     stack.append((0, options(0)))
     while stack:
         index, pending = stack[-1]
@@ -190,9 +210,9 @@ def _assign(
         values[symbols[index]] = pending.pop(0)
         if all(_value(c, values) is True for c in due[index]):
             if index + 1 == len(symbols):
-                return True
+                return {sym: values[sym] for sym in symbols}
             stack.append((index + 1, options(index + 1)))
-    return False
+    return None
 
 
 def closed_value(expr: A.Expr) -> Fraction | bool | None:
@@ -204,21 +224,25 @@ def closed_value(expr: A.Expr) -> Fraction | bool | None:
                 return None
         elif not isinstance(node, (A.Bool, A.Unary, A.Binary, A.Func, A.Ite)):
             return None
-    return _value(expr, {})
+    found = _value(expr, {})
+    return None if isinstance(found, str) else found
 
 
 def _fits(value: object, sort: str) -> bool:
     """A value a symbol of `sort` can take."""
     if isinstance(value, bool):
         return sort == "bool"
+    if isinstance(value, str):
+        return sort == "str"
     if isinstance(value, Fraction):
         return sort == "real" or (sort == "int" and value.denominator == 1)
     return False
 
 
-Value = Fraction | bool | None
+Scalar = Fraction | bool | str
+Value = Scalar | None
 # A name's value by its name (RF509's refinements), a solver symbol's by the symbol.
-Values = dict[object, Fraction | bool]
+Values = dict[object, Scalar]
 
 
 def _value(expr: A.Expr, values: Values) -> Value:
@@ -231,6 +255,8 @@ def _value(expr: A.Expr, values: Values) -> Value:
     if isinstance(expr, A.Sym):
         return values.get(expr)
     if isinstance(expr, A.Bool):
+        return expr.value
+    if isinstance(expr, A.Str):
         return expr.value
     if isinstance(expr, A.Unary):
         inner = _value(expr.operand, values)
@@ -267,7 +293,10 @@ def _binary(expr: A.Binary, values: Values) -> Value:
         if not isinstance(left, bool) or not isinstance(right, bool):
             return None
         return (left and right) if op == "and" else (left or right)
-    if op in ("==", "!=") and isinstance(left, bool) and isinstance(right, bool):
+    if op in ("==", "!=") and (
+        (isinstance(left, bool) and isinstance(right, bool))
+        or (isinstance(left, str) and isinstance(right, str))
+    ):
         return (left == right) if op == "==" else (left != right)
     if not isinstance(left, Fraction) or not isinstance(right, Fraction):
         return None  # booleans compared, or an unknown part
