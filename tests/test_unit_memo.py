@@ -180,9 +180,9 @@ def differential(path: Path, text: str, catalog: object, edits: int, seed: int) 
     """Check `edits` successive random edits of `text` with one memo and fresh;
     the number of edits compared."""
     rng = random.Random(seed)
-    # no proofs kept: a kept verdict's counterexample can differ from the one a
-    # fresh session finds (smt/memo.py); this test is about the units alone
-    memo = ProofMemo(max_entries=0)
+    # proofs kept too: a kept verdict's counterexample is the one a fresh check
+    # finds (`smt.solver.Session._example`: it depends on the VC alone)
+    memo = ProofMemo()
     config = Config()
 
     def check(source: str, kept: ProofMemo | None) -> str:
@@ -266,3 +266,18 @@ def test_skeleton_blanks_only_numbers_no_other_unit_reads() -> None:
         assert kept in blanked
     assert "0.5" not in blanked and "7.0" not in blanked
     assert "y * #3#" not in blanked and "y * #" in blanked  # last on its line
+
+
+def test_kept_proofs_show_the_counterexample_of_a_fresh_check(tmp_path: Path) -> None:
+    """A verdict kept across edits carries the values a fresh check shows: they are
+    found in a context of their own (`Session._example`), not in the session's
+    model, which depends on what it was asked before (these edits of this
+    generated program gave "`v` = -0.5, `limit` = 0.25" kept against "`v` =
+    -0.25, `limit` = 0.125" fresh)."""
+    sys.path.insert(0, str(ROOT / "benchmarks"))
+    from generate_annotated import generate
+
+    from robotfix.ros.catalog import MsgCatalog
+
+    path = tmp_path / "generated_450.py"
+    assert differential(path, generate(450), MsgCatalog([]), 8, 3) >= 3

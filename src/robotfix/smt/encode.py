@@ -21,9 +21,12 @@ MAX_DEGREE = 3
 
 
 class Encoder:
-    def __init__(self, ctx: Any) -> None:
+    def __init__(self, ctx: Any, canonical: bool = False) -> None:
         self.ctx = ctx  # the z3 context of the session
         self.syms: dict[int, Any] = {}
+        # name symbols in the order they are met, not by their identity: the same
+        # question is then the same text to z3, whatever the analysis numbered
+        self._canonical = canonical
         self._fresh = 0
         self._degrees: dict[int, int] = {}  # id(term) -> degree, for one question
         self.approximated = False  # a term became a fresh constant
@@ -35,7 +38,7 @@ class Encoder:
 
     def sym(self, node: A.Sym) -> Any:
         if node.ident not in self.syms:
-            name = f"s{node.ident}"
+            name = f"s{len(self.syms) if self._canonical else node.ident}"
             make = {"int": z3.Int, "bool": z3.Bool, "str": z3.String}.get(
                 node.sort, z3.Real
             )

@@ -20,6 +20,7 @@ import z3
 
 from robotfix.analysis.vc import VC, Proved, Undecided, Unproven, Verdict, Violated
 from robotfix.annotations import ast as A
+from robotfix.annotations import witness
 from robotfix.annotations.numbers import shown_as_infinity
 from robotfix.smt.budget import FILE_RLIMIT as FILE_RLIMIT
 from robotfix.smt.budget import RLIMIT as RLIMIT
@@ -107,27 +108,68 @@ class Session:
             return Proved()
         if first == z3.unknown:
             return self._undecided()
-        model = solver.model()
-        probes = [encoder.encode(p) for p in vc.probes]
         # A term z3 saw as a fresh constant makes the model no execution's values.
         facts_approximated = bool(vc.facts) and any(self._approximated)
-        exact = not encoder.approximated and not facts_approximated
-        values = tuple(
-            _show(model.eval(p, model_completion=True)) if exact else None
-            for p in probes
-        )
-        wanted = {s.ident for s in _syms(vc)} if exact else set()
-        syms = tuple(
-            (ident, _show(model.eval(sym, model_completion=True)))
-            for ident, sym in sorted(encoder.syms.items())
-            if ident in wanted
-        )
+        example = self._witnessed(vc) or self._example(vc)
+        if example is None:  # not found on its own: the session's model
+            example = _values(vc, solver.model(), encoder, facts_approximated)
+        values, syms = example
         second = self._ask(goal)
         if second == z3.unsat:
             return Violated(values)
         if second == z3.unknown:
             return self._undecided()
         return Unproven(values, syms)
+
+    def _witnessed(self, vc: VC) -> Example | None:
+        """The values shown for a VC whose goal can fail: first values found by
+        trying candidates, exactly checked against the facts and the goal's
+        negation (`witness.example`). Like `_example`'s, they depend on the VC
+        alone, and they cost no solver call; None when none is found or a probe
+        has no exact value."""
+        found = witness.example([*vc.facts, A.Unary("not", vc.goal)])
+        if found is None:
+            return None
+        encoder, ctx = self._encoder, self._ctx
+        constants = {sym: _constant(sym, value, ctx) for sym, value in found.items()}
+        pairs = [(encoder.sym(sym), const) for sym, const in constants.items()]
+        values: list[str | None] = []
+        for probe in vc.probes:
+            encoder.approximated = False
+            term = encoder.encode(probe)
+            shown = z3.simplify(z3.substitute(term, *pairs) if pairs else term)
+            if encoder.approximated or not _is_value(shown):
+                return None
+            values.append(_show(shown))
+        syms = tuple(
+            (sym.ident, _show(constants[sym]))
+            for sym in sorted(constants, key=lambda sym: sym.ident)
+        )
+        return tuple(values), syms
+
+    def _example(self, vc: VC) -> Example | None:
+        """The values shown for a VC whose goal can fail when no candidate is one
+        (`_witnessed`): from a context of their own with the symbols named in the
+        order they are met, so they depend on the VC alone, never on what the
+        session was asked before; so the editor, which keeps verdicts across edits
+        (`smt.memo`) and asks fewer questions, shows what a fresh check shows. None
+        when that solver does not find a model within the question's limit."""
+        ctx = z3.Context()
+        solver = z3.Solver(ctx=ctx)
+        for name, value in SETTINGS.items():
+            solver.set(name, value)
+        encoder = Encoder(ctx, canonical=True)
+        for fact in vc.facts:
+            solver.add(encoder.boolean(fact))
+        approximated = encoder.approximated
+        encoder.approximated = False
+        goal = encoder.boolean(vc.goal)
+        solver.set("rlimit", max(1, min(self._rlimit, self._budget - self._used)))
+        found = solver.check(z3.Not(goal))
+        self.charge(_work_done(solver))
+        if found != z3.sat:
+            return None
+        return _values(vc, solver.model(), encoder, approximated)
 
     def _ask(self, assumption: Any) -> Any:
         """One question, within what is left of the file's budget."""
@@ -161,6 +203,48 @@ class Session:
             known.append(fact)
             self._approximated.append(encoder.approximated)
         encoder.approximated = False
+
+
+Example = tuple[tuple[str | None, ...], tuple[tuple[int, str], ...]]
+
+
+def _values(vc: VC, model: Any, encoder: Encoder, facts_approximated: bool) -> Example:
+    """The VC's probes and unknown inputs in `model` (the goal's encoding already
+    made by `encoder`); none when a term was approximated: the model is then no
+    execution's values."""
+    probes = [encoder.encode(p) for p in vc.probes]
+    exact = not encoder.approximated and not facts_approximated
+    values = tuple(
+        _show(model.eval(p, model_completion=True)) if exact else None for p in probes
+    )
+    wanted = {s.ident for s in _syms(vc)} if exact else set()
+    syms = tuple(
+        (ident, _show(model.eval(sym, model_completion=True)))
+        for ident, sym in sorted(encoder.syms.items())
+        if ident in wanted
+    )
+    return values, syms
+
+
+def _constant(sym: A.Sym, value: Fraction | bool | str, ctx: Any) -> Any:
+    """`value` as a z3 value of `sym`'s sort (shown as a model's would be)."""
+    if isinstance(value, bool):
+        return z3.BoolVal(value, ctx)
+    if isinstance(value, str):
+        return z3.StringVal(value, ctx)
+    if sym.sort == "int":
+        return z3.IntVal(value.numerator, ctx)
+    return z3.RealVal(value, ctx)
+
+
+def _is_value(term: Any) -> bool:
+    return bool(
+        z3.is_int_value(term)
+        or z3.is_rational_value(term)
+        or z3.is_true(term)
+        or z3.is_false(term)
+        or z3.is_string_value(term)
+    )
 
 
 def _out_of_budget() -> Undecided:
