@@ -17,7 +17,7 @@ from robotfix import api, run
 from robotfix.analysis.vc import VC, Proved, Undecided, Unproven, Verdict, Violated
 from robotfix.annotations import ast as A
 from robotfix.annotations.parser import parse_predicate
-from robotfix.annotations.witness import holds_somewhere
+from robotfix.annotations.witness import example, holds_somewhere
 from robotfix.config import Config
 from robotfix.rules import UNREADABLE_FILE
 from robotfix.smt.propositional import components, satisfiable
@@ -262,3 +262,16 @@ def test_an_unreadable_file_read_late_still_says_so(tmp_path: Path, jobs: int) -
     unreadable = [d.path for d in result.diagnostics if d.rule is UNREADABLE_FILE]
     assert unreadable == [str(fifo)]
     assert not result.internal_errors
+
+
+def test_a_symbol_tries_one_past_its_bounds() -> None:
+    """`v > limit`: no constant of its own fits `v`, one past `limit` does (a
+    counterexample `smt.solver` then shows without asking z3 again)."""
+    v, limit = A.Sym(40, "real"), A.Sym(41, "real")
+    parts = [
+        A.Binary(">", limit, A.Num(Fraction(0), False)),
+        A.Binary(">", v, limit),
+        A.Unary("not", A.Binary("<=", A.Func("abs", (v,)), limit)),
+    ]
+    found = example(parts)
+    assert found is not None and found[v] > found[limit] > 0

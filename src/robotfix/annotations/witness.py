@@ -84,17 +84,20 @@ def _candidates(constants: Iterable[Fraction | str], integer: bool) -> list[Frac
 def holds_somewhere(parts: Sequence[A.Expr]) -> bool:
     """Whether some values of the solver symbols in `parts` make every part true
     (a path question: can this condition hold under these facts?): `example`."""
-    return example(parts) is not None
+    return example(parts, bounds=False) is not None
 
 
-def example(parts: Sequence[A.Expr]) -> dict[A.Sym, Scalar] | None:
+def example(parts: Sequence[A.Expr], bounds: bool = True) -> dict[A.Sym, Scalar] | None:
     """Values of the solver symbols in `parts` that make every part true (a path
     question, or a counterexample: the facts and the goal's negation). Each symbol
     tries the constants of the conjuncts it occurs in, their neighbours and
     midpoints, and first the value an equation with earlier symbols gives it (a
-    symbol an equation defines comes after the others); a conjunct is evaluated
-    exactly once its last symbol has a value. They depend on `parts` alone (the
-    same values in every run); None says none was found, not that none exists."""
+    symbol an equation defines comes after the others), and last, with `bounds`,
+    one past each bound on it (`v > limit`: a counterexample's usual shape; the
+    path questions, asked of every branch, go without: there it cost 4% of a
+    corpus run); a conjunct is evaluated exactly once its last
+    symbol has a value. They depend on `parts` alone (the same values in every
+    run); None says none was found, not that none exists."""
     conjuncts: list[tuple[A.Expr, list[A.Sym]]] = []
     first: dict[A.Sym, None] = {}  # the symbols in order of appearance
     constants: dict[A.Sym, set[Fraction | str]] = {}
@@ -126,6 +129,7 @@ def example(parts: Sequence[A.Expr]) -> dict[A.Sym, Scalar] | None:
     order = {sym: index for index, sym in enumerate(symbols)}
     due: list[list[A.Expr]] = [[] for _ in symbols]
     hints: list[list[A.Expr]] = [[] for _ in symbols]
+    near: list[list[A.Expr]] = [[] for _ in symbols]  # `s > term`: term's value +- 1
     for conjunct, syms in conjuncts:
         if not syms:
             if _value(conjunct, {}) is not True:
@@ -136,6 +140,9 @@ def example(parts: Sequence[A.Expr]) -> dict[A.Sym, Scalar] | None:
         for sym, term in _definitions(conjunct):
             if sym == last:
                 hints[order[last]].append(term)
+        for sym, term in _bounds(conjunct) if bounds else ():
+            if sym == last:
+                near[order[last]].append(term)
     domains: list[list[Scalar]] = [
         [True, False]
         if sym.sort == "bool"
@@ -144,7 +151,7 @@ def example(parts: Sequence[A.Expr]) -> dict[A.Sym, Scalar] | None:
         else list(_candidates(constants.get(sym, set()), sym.sort == "int"))
         for sym in symbols
     ]
-    return _assign(symbols, domains, due, hints)
+    return _assign(symbols, domains, due, hints, near)
 
 
 def _texts(constants: set[Fraction | str]) -> list[Scalar]:
@@ -171,6 +178,21 @@ def _definitions(conjunct: A.Expr) -> list[tuple[A.Sym, A.Expr]]:
     ]
 
 
+def _bounds(conjunct: A.Expr) -> list[tuple[A.Sym, A.Expr]]:
+    """`s < term` (or <=, >, >=; either way round) with `s` not in `term`: a
+    value just past the term's is worth trying first (`s > limit`)."""
+    if not isinstance(conjunct, A.Binary) or conjunct.op not in ("<", "<=", ">", ">="):
+        return []
+    return [
+        (side, other)
+        for side, other in (
+            (conjunct.left, conjunct.right),
+            (conjunct.right, conjunct.left),
+        )
+        if isinstance(side, A.Sym) and side.sort != "bool" and side not in A.syms(other)
+    ]
+
+
 def _defines(conjunct: A.Expr) -> set[A.Sym]:
     return {sym for sym, _ in _definitions(conjunct)}
 
@@ -180,9 +202,11 @@ def _assign(
     domains: list[list[Scalar]],
     due: list[list[A.Expr]],
     hints: list[list[A.Expr]],
+    near: list[list[A.Expr]],
 ) -> dict[A.Sym, Scalar] | None:
     """Backtracking over the symbols in order: the first values found; None when
-    there are none or the steps ran out."""
+    there are none or the steps ran out. A symbol tries first what its equations
+    give it, then its domain, then one past each bound (`s > limit`)."""
     values: Values = {}
     steps = 0
     stack: list[tuple[int, list[Scalar]]] = []
@@ -193,7 +217,14 @@ def _assign(
             value = _value(term, values)
             if _fits(value, symbols[index].sort):
                 first.append(value)  # type: ignore[arg-type]
-        return first + domains[index]
+        last: list[Scalar] = []
+        for term in near[index]:
+            value = _value(term, values)
+            if isinstance(value, Fraction):
+                last += [
+                    v for v in (value + 1, value - 1) if _fits(v, symbols[index].sort)
+                ]
+        return first + domains[index] + last
 
     if not symbols:
         return {}
