@@ -275,3 +275,13 @@ def test_a_symbol_tries_one_past_its_bounds() -> None:
     ]
     found = example(parts)
     assert found is not None and found[v] > found[limit] > 0
+
+
+def test_a_symbol_tries_past_where_a_comparison_turns() -> None:
+    """`abs(x * 0.0175) > 3.1416` (degrees for radians): no constant of its own
+    and no bound fits `x`; one past where the two sides meet (x = 180) does."""
+    x = A.Sym(42, "real")
+    scale, pi = Fraction(7, 400), Fraction(31416, 10000)
+    scaled = A.Func("abs", (A.Binary("*", x, A.Num(scale, False)),))
+    found = example([A.Unary("not", A.Binary("<=", scaled, A.Num(pi, False)))])
+    assert found is not None and abs(found[x] * scale) > pi

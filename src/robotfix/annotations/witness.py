@@ -130,6 +130,7 @@ def example(parts: Sequence[A.Expr], bounds: bool = True) -> dict[A.Sym, Scalar]
     due: list[list[A.Expr]] = [[] for _ in symbols]
     hints: list[list[A.Expr]] = [[] for _ in symbols]
     near: list[list[A.Expr]] = [[] for _ in symbols]  # `s > term`: term's value +- 1
+    crossings: list[list[A.Binary]] = [[] for _ in symbols]  # where sides meet
     for conjunct, syms in conjuncts:
         if not syms:
             if _value(conjunct, {}) is not True:
@@ -143,6 +144,9 @@ def example(parts: Sequence[A.Expr], bounds: bool = True) -> dict[A.Sym, Scalar]
         for sym, term in _bounds(conjunct) if bounds else ():
             if sym == last:
                 near[order[last]].append(term)
+        compared = _comparison(conjunct) if bounds else None
+        if compared is not None:
+            crossings[order[last]].append(compared)
     domains: list[list[Scalar]] = [
         [True, False]
         if sym.sort == "bool"
@@ -151,7 +155,7 @@ def example(parts: Sequence[A.Expr], bounds: bool = True) -> dict[A.Sym, Scalar]
         else list(_candidates(constants.get(sym, set()), sym.sort == "int"))
         for sym in symbols
     ]
-    return _assign(symbols, domains, due, hints, near)
+    return _assign(symbols, domains, due, hints, near, crossings)
 
 
 def _texts(constants: set[Fraction | str]) -> list[Scalar]:
@@ -193,6 +197,29 @@ def _bounds(conjunct: A.Expr) -> list[tuple[A.Sym, A.Expr]]:
     ]
 
 
+def _comparison(conjunct: A.Expr) -> A.Binary | None:
+    """The comparison a conjunct makes (`a < b`, or `not a < b`)."""
+    if isinstance(conjunct, A.Unary) and conjunct.op == "not":
+        conjunct = conjunct.operand
+    if isinstance(conjunct, A.Binary) and conjunct.op in ("<", "<=", ">", ">="):
+        return conjunct
+    return None
+
+
+def _crossing(conjunct: A.Binary, sym: A.Sym, values: Values) -> Fraction | None:
+    """Where the two sides of a comparison meet as `sym` varies, the others fixed,
+    taking the difference as linear in `sym` (two points; `abs(k * x) > c` gives
+    `x = c / k`); None when it is not a number or does not vary."""
+    difference = A.Binary("-", conjunct.left, conjunct.right)
+    at = [_value(difference, {**values, sym: Fraction(x)}) for x in (0, 1)]
+    if not all(isinstance(v, Fraction) for v in at) or at[0] == at[1]:
+        return None
+    low, high = at[0], at[1]
+    assert isinstance(low, Fraction) and isinstance(high, Fraction)
+    root = -low / (high - low)
+    return None if abs(root.numerator) > _LIMIT or root.denominator > _LIMIT else root
+
+
 def _defines(conjunct: A.Expr) -> set[A.Sym]:
     return {sym for sym, _ in _definitions(conjunct)}
 
@@ -203,10 +230,12 @@ def _assign(
     due: list[list[A.Expr]],
     hints: list[list[A.Expr]],
     near: list[list[A.Expr]],
+    crossings: list[list[A.Binary]],
 ) -> dict[A.Sym, Scalar] | None:
     """Backtracking over the symbols in order: the first values found; None when
     there are none or the steps ran out. A symbol tries first what its equations
-    give it, then its domain, then one past each bound (`s > limit`)."""
+    give it, then its domain, then one past each bound (`s > limit`) and past
+    where each comparison's sides meet."""
     values: Values = {}
     steps = 0
     stack: list[tuple[int, list[Scalar]]] = []
@@ -217,13 +246,18 @@ def _assign(
             value = _value(term, values)
             if _fits(value, symbols[index].sort):
                 first.append(value)  # type: ignore[arg-type]
+        sym = symbols[index]
+        points = [_value(term, values) for term in near[index]]
+        points += [_crossing(c, sym, values) for c in crossings[index]]
         last: list[Scalar] = []
-        for term in near[index]:
-            value = _value(term, values)
+        for value in points:
             if isinstance(value, Fraction):
-                last += [
-                    v for v in (value + 1, value - 1) if _fits(v, symbols[index].sort)
-                ]
+                last += [v for v in (value + 1, value - 1) if _fits(v, sym.sort)]
+                if sym.sort == "int" and value.denominator != 1:
+                    last += [
+                        Fraction(value.numerator // value.denominator + k)
+                        for k in (0, 1)
+                    ]
         return first + domains[index] + last
 
     if not symbols:
