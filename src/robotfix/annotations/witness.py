@@ -170,7 +170,17 @@ def _texts(constants: set[Fraction | str]) -> list[Scalar]:
 
 def _definitions(conjunct: A.Expr) -> list[tuple[A.Sym, A.Expr]]:
     """`s == term` (either way round) with `s` not in `term`."""
-    if not isinstance(conjunct, A.Binary) or conjunct.op != "==":
+    return _sides(conjunct, ("==",))
+
+
+def _bounds(conjunct: A.Expr) -> list[tuple[A.Sym, A.Expr]]:
+    """`s < term` (or <=, >, >=; either way round) with `s` not in `term`: a
+    value just past the term's is worth trying (`s > limit`)."""
+    return _sides(conjunct, ("<", "<=", ">", ">="))
+
+
+def _sides(conjunct: A.Expr, ops: tuple[str, ...]) -> list[tuple[A.Sym, A.Expr]]:
+    if not isinstance(conjunct, A.Binary) or conjunct.op not in ops:
         return []
     return [
         (side, other)
@@ -179,21 +189,6 @@ def _definitions(conjunct: A.Expr) -> list[tuple[A.Sym, A.Expr]]:
             (conjunct.right, conjunct.left),
         )
         if isinstance(side, A.Sym) and side not in A.syms(other)
-    ]
-
-
-def _bounds(conjunct: A.Expr) -> list[tuple[A.Sym, A.Expr]]:
-    """`s < term` (or <=, >, >=; either way round) with `s` not in `term`: a
-    value just past the term's is worth trying first (`s > limit`)."""
-    if not isinstance(conjunct, A.Binary) or conjunct.op not in ("<", "<=", ">", ">="):
-        return []
-    return [
-        (side, other)
-        for side, other in (
-            (conjunct.left, conjunct.right),
-            (conjunct.right, conjunct.left),
-        )
-        if isinstance(side, A.Sym) and side.sort != "bool" and side not in A.syms(other)
     ]
 
 
