@@ -109,10 +109,12 @@ class Session:
         if first == z3.unknown:
             return self._undecided()
         # A term z3 saw as a fresh constant makes the model no execution's values.
-        facts_approximated = bool(vc.facts) and any(self._approximated)
+        approximated = encoder.approximated or (
+            bool(vc.facts) and any(self._approximated)
+        )
         example = self._witnessed(vc) or self._example(vc)
         if example is None:  # not found on its own: the session's model
-            example = _values(vc, solver.model(), encoder, facts_approximated)
+            example = _values(vc, solver.model(), encoder, approximated)
         values, syms = example
         second = self._ask(goal)
         if second == z3.unsat:
@@ -161,15 +163,13 @@ class Session:
         encoder = Encoder(ctx, canonical=True)
         for fact in vc.facts:
             solver.add(encoder.boolean(fact))
-        approximated = encoder.approximated
-        encoder.approximated = False
         goal = encoder.boolean(vc.goal)
         solver.set("rlimit", max(1, min(self._rlimit, self._budget - self._used)))
         found = solver.check(z3.Not(goal))
         self.charge(_work_done(solver))
         if found != z3.sat:
             return None
-        return _values(vc, solver.model(), encoder, approximated)
+        return _values(vc, solver.model(), encoder, encoder.approximated)
 
     def _ask(self, assumption: Any) -> Any:
         """One question, within what is left of the file's budget."""
@@ -208,12 +208,13 @@ class Session:
 Example = tuple[tuple[str | None, ...], tuple[tuple[int, str], ...]]
 
 
-def _values(vc: VC, model: Any, encoder: Encoder, facts_approximated: bool) -> Example:
-    """The VC's probes and unknown inputs in `model` (the goal's encoding already
-    made by `encoder`); none when a term was approximated: the model is then no
-    execution's values."""
+def _values(vc: VC, model: Any, encoder: Encoder, approximated: bool) -> Example:
+    """The VC's probes and unknown inputs in `model` (its facts and goal encoded
+    by `encoder`, `approximated` if a term of theirs was); none when a term was
+    approximated: the model is then no execution's values."""
+    encoder.approximated = False
     probes = [encoder.encode(p) for p in vc.probes]
-    exact = not encoder.approximated and not facts_approximated
+    exact = not encoder.approximated and not approximated
     values = tuple(
         _show(model.eval(p, model_completion=True)) if exact else None for p in probes
     )
