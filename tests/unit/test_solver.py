@@ -31,3 +31,23 @@ def test_nonlinear_goal_gives_a_verdict() -> None:
     y = A.Sym(2, "real")
     goal = A.Binary(">", A.Binary("*", X, y), A.Binary("*", X, A.Binary("*", y, y)))
     assert check(VC((), goal), rlimit=50_000) is not None
+
+
+def test_a_counterexample_is_no_value_where_a_term_was_approximated(
+    monkeypatch: object,
+) -> None:
+    """A product of too high a degree becomes a fresh constant, so z3's model is
+    no execution's values: nothing is shown when that model is the last resort
+    (the witness search, which found `x` but had no value for the probe, once
+    reset the flag the goal had set)."""
+    import pytest
+
+    from robotfix.smt import solver
+
+    assert isinstance(monkeypatch, pytest.MonkeyPatch)
+    monkeypatch.setattr(solver.Session, "_example", lambda self, vc: None)
+    quartic = A.Binary("*", A.Binary("*", X, X), A.Binary("*", X, X))
+    label = A.Sym(9, "str")  # no value the witness knows: the model is asked
+    found = check(VC((), A.Binary("<", quartic, num(5)), (label,)))
+    assert isinstance(found, Unproven)
+    assert found.probe_values == (None,) and found.sym_values == ()
