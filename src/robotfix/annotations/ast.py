@@ -288,9 +288,8 @@ def _show_number(num: Num) -> str:
             return _scientific(value)
         return f"{value.numerator}.0"
     if value.denominator > _FLOAT_DENOMINATOR and Fraction(float(value)) == value:
-        return repr(
-            float(value)
-        )  # a float's binary value (math.pi): as Python shows it
+        # a float's binary value (math.pi): as Python shows it
+        return repr(float(value))
     decimal = _exact_decimal(value)
     return decimal if decimal is not None else f"{float(value):g}"
 
