@@ -67,7 +67,7 @@ def write(path: Path, text: str) -> None:
 
 def age(root: Path, seconds: float = 60.0) -> None:
     """Every file's mtime well in the past: the stat fast path trusts it (a file
-    changed within `cache.RACY_NS` is always hashed)."""
+    changed within `fs.RACY_NS` is always hashed)."""
     then = time.time() - seconds
     for path in root.rglob("*"):
         if path.is_file():

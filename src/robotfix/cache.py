@@ -46,6 +46,7 @@ from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic, Note, Span
 from robotfix.discovery import Discovery, Trace
 from robotfix.disk_cache import install_key
+from robotfix.fs import RACY_NS
 
 if TYPE_CHECKING:
     from robotfix.project.summary import Known, Project
@@ -55,7 +56,6 @@ if TYPE_CHECKING:
 # package no type of which is known (if so), the types of its file
 InterfaceProblem = tuple[Diagnostic, "str | None", tuple[str, ...]]
 FORMAT = 7
-RACY_NS = 2_000_000_000  # a file changed this recently is hashed, not trusted by stat
 # which parameter-related words a file mentions (`paramcheck.MENTIONS`, all layouts),
 # kept with its hash so that an unchanged file need not be read to know
 MENTION_WORDS = (b"declare_parameter", b"get_parameter", b"ParamListener", b"rospy")

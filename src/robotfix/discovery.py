@@ -35,7 +35,7 @@ from typing import Any
 from robotfix import messages
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
-from robotfix.fs import UnreadableError, read_head, read_text, stamp, within
+from robotfix.fs import RACY_NS, UnreadableError, read_head, read_text, stamp, within
 from robotfix.ros.install import IGNORE_MARKERS, InstallSpace
 
 INTERFACE_SUFFIXES = (".msg", ".srv", ".action", ".idl")
@@ -564,8 +564,6 @@ def _reason(err: OSError) -> str:
 
 
 # -- what a discovery looked at, for a cached run ----------------------------
-
-RACY_NS = 2_000_000_000  # as `cache.RACY_NS`: a stamp this recent is not trusted
 
 
 class Trace:

@@ -152,6 +152,13 @@ def _reason(err: OSError) -> str:
     return err.strerror or type(err).__name__
 
 
+# a file or folder changed this recently is not trusted by its stat or stamp (git's
+# "racily clean" rule: the next change could land in the same timestamp tick, and
+# some file systems keep whole seconds): the result cache, the discovery trace and
+# the module index's kept answers all use it
+RACY_NS = 2_000_000_000
+
+
 def stamp(name: str) -> list[int] | None:
     """A folder's stamp for the traces kept between runs (`discovery.Trace`, the
     module index's answers): a listing is trusted while its stamp is unchanged."""

@@ -26,11 +26,11 @@ from robotfix.api import (
     raw_interface_problems,
     stub_problems,
 )
-from robotfix.cache import RACY_NS, ResultCache, discovery_key, run_key
+from robotfix.cache import ResultCache, discovery_key, run_key
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
 from robotfix.discovery import Discovery, Trace, discover, install_space
-from robotfix.fs import UnreadableError, read_regular
+from robotfix.fs import RACY_NS, UnreadableError, read_regular
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.ros.install import InstallSpace
 from robotfix.ros.package import package_folder

@@ -33,11 +33,10 @@ from itertools import islice, repeat
 from pathlib import Path
 from typing import Any
 
-from robotfix.fs import stamp
+from robotfix.fs import RACY_NS, stamp
 
 _UNKNOWN = Path("\0")  # not looked up yet
 MAX_DEPTH = 32  # folders climbed looking for a package top or a package.xml
-RACY_NS = 2_000_000_000  # a folder changed this recently is not trusted by its stamp
 KEPT_FORMAT = 1
 MAX_CHANGED = 64  # folders changed since the answers were kept: beyond, none is
 
