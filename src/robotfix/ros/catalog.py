@@ -362,9 +362,12 @@ class MsgCatalog:
         """`digest_table`'s entries since the last call: a worker hands them to the
         main process (`preload_digests`), whose result cache keeps them, so the next
         run reads no interface file a worker read for them."""
-        table = self.digest_table()
-        fresh = dict(islice(table.items(), self._digests_handed, None))
-        self._digests_handed = len(table)
+        digests = self._resolved_digests or {}
+        fresh = {
+            k: (v, self._children[k])
+            for k, v in islice(digests.items(), self._digests_handed, None)
+        }
+        self._digests_handed = len(digests)
         return fresh
 
     def preload_digests(self, table: Mapping[str, tuple[str, tuple[str, ...]]]) -> None:
