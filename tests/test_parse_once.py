@@ -190,3 +190,22 @@ def test_an_edited_module_is_parsed_once_in_a_cached_run(
     assert [str(d) for d in result.diagnostics] == [
         str(d) for d in check_paths([root], config).diagnostics
     ]
+
+
+def test_fresh_summaries_hands_each_summary_over_once(tmp_path: Path) -> None:
+    """A worker sends each summary it built with one result only: each call hands
+    over those built since the last one, in the order they were built."""
+    root = _package(tmp_path)
+    project = _project(root)
+    package = root / "my_pkg"
+    assert project.fresh_summaries() == {}
+    assert project.summary(package / "limits.py") is not None
+    limits = str(package / "limits.py")
+    first = project.fresh_summaries()
+    assert list(first) == [limits]
+    assert first[limits] == project.built[limits]
+    assert project.fresh_summaries() == {}
+    project.summary(package / "limits.py")  # known: nothing new is built
+    assert project.summary(package / "units.py") is not None
+    assert list(project.fresh_summaries()) == [str(package / "units.py")]
+    assert project.fresh_summaries() == {}

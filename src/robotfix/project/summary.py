@@ -80,7 +80,7 @@ class Project:
         # path -> (sha256 of its bytes, fingerprints), from an earlier run's cache
         self.known: dict[str, Known] = {}
         self.built: dict[str, Known] = {}  # the same, for this run's
-        self._handed = 0  # how many of `built` `fresh_summaries` handed out
+        self._fresh: list[str] = []  # those built since `fresh_summaries` last ran
         # the sha256 of a file's bytes, when the caller knows a faster way (the
         # result cache's stat fast path); None: unreadable
         self.sha_of: Callable[[Path], str | None] | None = None
@@ -144,14 +144,14 @@ class Project:
                     found.fingerprint,
                     found.members,
                 )
+                self._fresh.append(str(path))
         return self._summaries[path]
 
     def fresh_summaries(self) -> dict[str, Known]:
         """The summaries built since the last call (for the result cache: a worker
         sends each once, not all it built with every result)."""
-        items = list(self.built.items())[self._handed :]
-        self._handed += len(items)
-        return dict(items)
+        fresh, self._fresh = self._fresh, []
+        return {name: self.built[name] for name in fresh}
 
     def read_files(self) -> set[Path]:
         """Every file this project read: summarised, parsed only for its import
