@@ -210,3 +210,29 @@ def test_a_class_constant_an_alias_names_rechecks_its_users(tmp_path: Path) -> N
     count, after = _rechecked(root)
     assert count == 2
     assert len(after) == len(first)  # rate == 10 fails, 1 / RATE == 0.2 holds
+
+
+def test_a_travelling_refinement_is_shown_with_its_constants_names(
+    tmp_path: Path,
+) -> None:
+    """An importer's message shows the refinement as the declaring module writes it
+    (`speed <= MAX_SPEED`, `heading <= math.pi`), not the values put in for the
+    check; renaming a constant re-checks its users, whose messages then say so."""
+    root = _copy(tmp_path, "alias_pkg")
+    _, first = _run(root)
+    shown = "\n".join(first)
+    for part in (
+        "violates `speed <= MAX_SPEED`",  # cruise.py, through types.Cruise
+        "violates `abs(turn) <= MAX_TURN`",
+        "violates `heading <= math.pi`",  # steer.py does not import math
+        "violates `accel <= Limits.MAX_ACCEL`",  # nor Limits
+    ):
+        assert part in shown
+    assert "3.14159" not in shown and "<= 0.5`" not in shown
+    limits = root / "alias_pkg" / "alias_pkg" / "limits.py"
+    limits.write_text(limits.read_text().replace("MAX_SPEED", "TOP_SPEED"))
+    count, after = _rechecked(root)
+    assert count == 4  # limits.py, types.py, cruise.py, teleop_script.py
+    cruise = "\n".join(line for line in after if "cruise.py" in line)
+    assert "violates `speed <= TOP_SPEED`" in cruise
+    assert "MAX_SPEED" not in cruise  # (teleop_script.py imports the old name)

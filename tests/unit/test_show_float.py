@@ -1,6 +1,7 @@
 """A number that is a float's binary value (`math.pi` from another module's
 refinement) is shown as Python shows the float, not as its 49-digit expansion;
-short exact decimals are shown as before."""
+short exact decimals are shown as before; a constant put in from another module is
+shown by its name."""
 
 from __future__ import annotations
 
@@ -19,3 +20,18 @@ def test_exact_decimals_are_unchanged() -> None:
     assert A.show(A.Num(Fraction(1, 8), False)) == "0.125"
     assert A.show(A.Num(Fraction(1, 10), False)) == "0.1"
     assert A.show(A.Num(Fraction(1, 3), False)) == "0.333333"
+
+
+def test_a_labelled_constant_is_shown_by_its_name_and_compares_by_value() -> None:
+    """A constant put into a refinement from another module keeps its name for
+    messages (`project/summary._labelled`); to the solver it is its value."""
+    pi = A.Num(Fraction(math.pi), False, label="math.pi")
+    assert A.show(A.Binary("<=", A.Name("heading"), pi)) == "heading <= math.pi"
+    assert A.show(A.Unary("-", pi)) == "-math.pi"
+    low = A.Num(Fraction(-1), True, label="LOW")
+    assert A.show(A.Binary("-", A.Name("x"), low)) == "x - LOW"  # no parentheses
+    assert A.show(A.Binary("==", A.Name("mode"), A.Str("auto", label="AUTO"))) == (
+        "mode == AUTO"
+    )
+    assert pi == A.Num(Fraction(math.pi), False)
+    assert hash(pi) == hash(A.Num(Fraction(math.pi), False))

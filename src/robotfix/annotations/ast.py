@@ -19,6 +19,10 @@ from robotfix.annotations.numbers import shown_as_infinity
 class Num:
     value: Fraction
     is_int: bool
+    # the constant's name when a refinement travelled from another module with its
+    # constants put in (`MAX_SPEED`, `math.pi`): shown in messages in place of the
+    # number, as in the declaring module; not part of equality (a display only)
+    label: str | None = field(default=None, compare=False, repr=False)
 
 
 @dataclass(frozen=True)
@@ -29,6 +33,7 @@ class Bool:
 @dataclass(frozen=True)
 class Str:
     value: str
+    label: str | None = field(default=None, compare=False, repr=False)  # as Num's
 
 
 @dataclass(frozen=True)
@@ -227,11 +232,11 @@ _PRECEDENCE = {
 def show(expr: Expr) -> str:
     """Source-like text of an expression for messages, parenthesised only as needed."""
     if isinstance(expr, Num):
-        return _show_number(expr)
+        return expr.label or _show_number(expr)
     if isinstance(expr, Bool):
         return "True" if expr.value else "False"
     if isinstance(expr, Str):
-        return repr(expr.value)
+        return expr.label or repr(expr.value)
     if isinstance(expr, Name):
         return expr.name
     if isinstance(expr, Sym):
@@ -264,7 +269,7 @@ def _level(expr: Expr) -> int:
         return 3 if expr.op == "not" else 7
     if isinstance(expr, Ite):
         return 0
-    if isinstance(expr, Num) and expr.value < 0:
+    if isinstance(expr, Num) and expr.value < 0 and expr.label is None:
         return 7
     return 9
 

@@ -466,7 +466,9 @@ def summarize(
         if not key.startswith("<"):
             scope = program.signature(ctx, function)
             refinements += [*scope.decls.values(), function.returns]
-    terms = _dotted_terms(ctx, program, module, state, statics, refinements, terms)
+    terms = _labelled(
+        _dotted_terms(ctx, program, module, state, statics, refinements, terms)
+    )
     for key, function in program.functions.items():
         if "." in key or key.startswith("<"):
             continue
@@ -615,6 +617,18 @@ def _dotted_terms(
         if value is not None and value.term is not None:
             found[name] = value.term
     return found
+
+
+def _labelled(terms: dict[str, A.Expr]) -> dict[str, A.Expr]:
+    """The constants put into a travelling refinement, each number or string
+    labelled with its name as the refinement writes it: an importer's message says
+    `speed <= MAX_SPEED`, as the declaring module's own does, not `speed <= 0.5`."""
+    from robotfix.annotations import ast as A
+
+    return {
+        name: replace(term, label=name) if isinstance(term, (A.Num, A.Str)) else term
+        for name, term in terms.items()
+    }
 
 
 def _detached(ctx: FileContext) -> Names:
