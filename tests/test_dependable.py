@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -77,7 +78,11 @@ def robotfix(*args: str, cwd: Path, env: dict[str, str] | None = None) -> str:
 def test_output_is_byte_identical_across_runs_hash_seeds_and_jobs(
     tmp_path: Path,
 ) -> None:
-    cases = Path(__file__).parent / "cases"
+    cases = tmp_path / "cases"
+    shutil.copytree(Path(__file__).parent / "cases", cases)
+    # comments enough for `-j 2` to start its workers (run.MIN_PARALLEL_BYTES):
+    # the cases alone are checked in one process whatever `-j` says
+    (cases / "zz_filler.py").write_text(("# " + "x" * 76 + "\n") * 7000)
     outputs = set()
     for seed, jobs in (("0", "1"), ("1", "2"), ("12345", "1"), ("random", "2")):
         env = {**os.environ, "PYTHONHASHSEED": seed}

@@ -530,6 +530,10 @@ def test_a_worker_that_dies_is_an_internal_error_not_a_hang(
 def test_j_beyond_the_descriptor_limit_finishes(many: Path) -> None:
     import resource
 
+    # comments enough for a pool (run.MIN_PARALLEL_BYTES), which then runs out of
+    # descriptors; without them the run stays in one process and opens no pool
+    (many / "zz_filler.py").write_text(("# " + "x" * 76 + "\n") * 7000)
+
     def limit() -> None:
         resource.setrlimit(resource.RLIMIT_NOFILE, (24, 24))
 
@@ -553,8 +557,15 @@ def test_ctrl_c_with_j2_exits_130_without_a_traceback(tmp_path: Path) -> None:
         f'    x: Annotated[float, "_ * _ != {i + 4}"] = a * b + b * a * b\n'
         for i in range(12)
     )
+    # a comment block, so that the files hold enough source for a pool
+    # (run.MIN_PARALLEL_BYTES): with less, the run stays in one process, the wait
+    # below for workers lasts its whole 60 s, and the run may end before the signal
+    padding = ("# " + "x" * 76 + "\n") * 40
     for i in range(200):
-        (tmp_path / f"m{i:03}.py").write_text("from typing import Annotated\n" + body)
+        (tmp_path / f"m{i:03}.py").write_text(
+            "from typing import Annotated\n" + padding + body
+        )
+    assert 200 * len(padding) > run.MIN_PARALLEL_BYTES
     process = subprocess.Popen(
         [sys.executable, "-m", "robotfix", "check", ".", "-j", "2", "--no-cache"],
         cwd=tmp_path,
@@ -562,6 +573,9 @@ def test_ctrl_c_with_j2_exits_130_without_a_traceback(tmp_path: Path) -> None:
         stderr=subprocess.PIPE,
         text=True,
         start_new_session=True,  # its own group: Ctrl-C reaches it and its workers
+        # as a terminal starts it: a suite started in the background (`pytest &`)
+        # ignores SIGINT, and a child would inherit that and never see the Ctrl-C
+        preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL),
     )
     # wait until the workers run (where /proc can tell; else 3 s)
     children = Path(f"/proc/{process.pid}/task/{process.pid}/children")
