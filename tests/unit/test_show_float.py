@@ -35,3 +35,17 @@ def test_a_labelled_constant_is_shown_by_its_name_and_compares_by_value() -> Non
     )
     assert pi == A.Num(Fraction(math.pi), False)
     assert hash(pi) == hash(A.Num(Fraction(math.pi), False))
+
+
+def test_a_long_exact_value_is_shown_as_the_float_near_it() -> None:
+    """A value the solver works out exactly (`radians(10.0)` as a rational) is shown
+    as the float Python computes, marked as near, not as a 35-digit fraction; short
+    fractions and floats stay as they were."""
+    from robotfix.smt.solver import _decimal
+
+    ten_degrees = Fraction(25152845340545565, 144115188075855872)
+    assert _decimal(ten_degrees) == "about 0.17453292519943295"
+    assert _decimal(Fraction(1, 3)) == "1/3"
+    assert _decimal(Fraction(1, 8)) == "0.125"
+    assert _decimal(Fraction(math.pi)) == repr(math.pi)  # a float: exact
+    assert _decimal(Fraction(7)) == "7"

@@ -318,4 +318,12 @@ def _decimal(value: Fraction) -> str:
     as_float = float(value)
     if Fraction(as_float) == value or len(repr(as_float)) < 12:
         return repr(as_float)
-    return f"{value.numerator}/{value.denominator}"
+    exact = f"{value.numerator}/{value.denominator}"
+    if len(exact) <= SHOWN_FRACTION:  # 1/3, 22/7: exact and readable
+        return exact
+    # e.g. radians(10.0) worked out exactly, 25152845340545565/144115188075855872:
+    # the float Python would compute, said to be near
+    return f"about {as_float!r}"
+
+
+SHOWN_FRACTION = 15  # longer exact fractions are shown as the float near them
