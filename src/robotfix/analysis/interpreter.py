@@ -1424,7 +1424,8 @@ class Interpreter(CallEvaluator):
         # (With a break, `normal` stands for the exits by break too.)
         normal = loop.fork() if breaks and node.orelse else loop
         if isinstance(node.test, ast.Constant):
-            normal.reachable = not node.test.value and normal.reachable
+            if not breaks or node.orelse:  # else `normal` holds the exits by break
+                normal.reachable = not node.test.value and normal.reachable
         elif not breaks:
             cond = self.condition(node.test, normal)
             if _truth(cond) is True:
