@@ -40,7 +40,7 @@ from robotfix.analysis.program import call_argument
 from robotfix.analysis.values import Value
 from robotfix.analysis.vc import VC, Violated
 from robotfix.annotations import ast as A
-from robotfix.annotations.extract import Refinement, extract
+from robotfix.annotations.extract import Alias, Names, Refinement, extract
 from robotfix.astwalk import walk
 from robotfix.messages import Declared
 from robotfix.ros.api_model import (
@@ -250,6 +250,25 @@ def owner_of(
         and receiver.value.id == self_name
     ):
         return f"{class_name}#{receiver.attr}"
+    return None
+
+
+def _no_message(node: ast.expr) -> str | None:
+    return None  # parameters hold no messages
+
+
+def _constant_term(name: str, value: object) -> A.Expr | None:
+    """A module constant (`_module_constants`) as a term labelled with its name; a
+    float as the decimal Python shows (`0.3`, not its binary value), which orders
+    as the floats do, as a parameter file's value is read (`paramcheck._term`)."""
+    if isinstance(value, bool):
+        return None  # a flag in a refinement: not worth a term
+    if isinstance(value, int):
+        return A.Num(Fraction(value), True, label=name)
+    if isinstance(value, float) and math.isfinite(value):
+        return A.Num(Fraction(repr(value)), False, label=name)
+    if isinstance(value, str):
+        return A.Str(value, label=name)
     return None
 
 
@@ -634,11 +653,45 @@ class _Walker:
             annotation,
             short,
             self.qualname,
-            lambda node: None,
+            _no_message,
             self.source.segment,
             self.source.char_col,
+            alias=self.alias_of,
         )
-        return found_refinement, label
+        if found_refinement is None:
+            return None, label
+        # the module's constants put in, as the analysis reads them (`_ <= MAX`),
+        # each shown by its name: a parameter file's value is a number to test
+        terms = {
+            n.name: term
+            for n in A.names(found_refinement.predicate)
+            if (term := _constant_term(n.name, self.constants.get(n.name)))
+        }
+        predicate = A.substitute(found_refinement.predicate, terms)
+        return replace(found_refinement, predicate=predicate), label
+
+    def alias_of(self, node: ast.expr) -> Alias | None:
+        """A type alias or metadata string of this module (`Rate = Annotated[...]`),
+        as `FileContext.alias_of` reads it; one imported from another module is not
+        followed here (docs/parameters.md)."""
+        if not isinstance(node, ast.Name):
+            return None
+        found = self.index.aliases.get(node.id)
+        if found is None or node.id in self._rebound:
+            return None
+        names = Names(
+            self.qualname,
+            _no_message,
+            self.source.segment,
+            self.source.char_col,
+            self.alias_of,
+        )
+        return Alias(found, names)
+
+    @property
+    def _rebound(self) -> set[str]:
+        """Module names a function declares `global` (it may rebind them)."""
+        return {n for scope in self.index.scopes.values() for n in scope.global_names}
 
     @property
     def module(self) -> ast.AST | None:

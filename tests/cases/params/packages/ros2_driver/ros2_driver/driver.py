@@ -7,6 +7,11 @@ from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rcl_interfaces.msg import FloatingPointRange, IntegerRange, ParameterDescriptor
 
+MAX_BRAKE = 0.8
+MODE = "diff"
+# an alias and module constants: a parameter file's value is checked against them
+Ratio = Annotated[float, "0 <= _ <= MAX_BRAKE"]
+
 
 class Driver(Node):
     max_speed: Annotated[float, "Unit('m/s') and 0 < _ <= 1.5"]
@@ -41,6 +46,8 @@ class Driver(Node):
         timeout: Annotated[float, "Unit('s') and 0 < _ <= 5"] = self.declare_parameter(
             "timeout", 0.5
         ).value
+        self.brake: Ratio = self.declare_parameter("brake_ratio", 0.5).value
+        drive: Annotated[str, "_ == MODE"] = self.declare_parameter("drive", "diff").value
         self.publisher = self.create_publisher(Twist, "cmd_vel", 10)
         self.timer = self.create_timer(
             1.0 / self.get_parameter("rate_hz").value, self.tick
