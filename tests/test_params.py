@@ -8,8 +8,10 @@ from __future__ import annotations
 
 import math
 import re
+import shutil
 import time
 from pathlib import Path
+from typing import Any
 
 import pytest
 from hypothesis import given, settings
@@ -103,6 +105,28 @@ def test_results_are_the_same_with_the_cache_and_workers(tmp_path: Path) -> None
     assert second.from_cache > 0
     assert plain == first == second.diagnostics
     assert check_paths([package], Config(root=tmp_path), jobs=2).diagnostics == plain
+
+
+def test_an_imported_alias_checks_parameter_files_and_its_change_counts(
+    tmp_path: Path,
+) -> None:
+    """driver.py's `turn: TurnRate` comes from limits.py: the parameter file's
+    value is checked against it, with the cache and workers as without, and a
+    cached run sees a change to the limit (limits.py mentions no parameter)."""
+    package = tmp_path / "ros2_driver"
+    shutil.copytree(PACKAGES / "ros2_driver", package)
+    turn = "`abs(turn_rate) <= MAX_TURN_RATE`"
+
+    def turns(**options: Any) -> list[str]:
+        result = check_paths([package], Config(root=tmp_path), **options)
+        return [d.message for d in result.diagnostics if turn in d.message]
+
+    assert len(turns()) == 1
+    assert turns(use_cache=True) == turns(use_cache=True) == turns(jobs=2) == turns()
+    limits = package / "ros2_driver" / "limits.py"
+    limits.write_text(limits.read_text().replace("= 2.0", "= 3.0"))
+    assert turns(use_cache=True) == []
+    assert turns(use_cache=True) == []
 
 
 # -- the two packages' nodes are unknown to each other ---------------------------

@@ -167,9 +167,13 @@ def test_parameter_files_use_the_checks_parse(
     assert all(counted[p] == 1 for p in declaring), counted
     original = paramcheck._summaries
     monkeypatch.setattr(
-        paramcheck, "_summaries", lambda files, words, known: original(files, words, {})
+        paramcheck,
+        "_summaries",
+        lambda files, words, known, project: original(files, words, {}, project),
     )
-    assert _shown(root) == shared  # paramcheck parsing the files again: the same
+    # paramcheck parsing the files again, each seeing its tree (ros2_driver's
+    # imported alias) as its check did: the same
+    assert _shown(root) == shared
 
 
 def test_an_edited_module_is_parsed_once_in_a_cached_run(

@@ -344,6 +344,17 @@ class ResultCache:
                 return None
         return [_load(d) for d in entry["diagnostics"]]
 
+    def consulted(self, path: Path) -> list[tuple[str, str]]:
+        """What the cached check of this file consulted of other modules (each
+        record with its fingerprint then), sorted; [] without a valid entry."""
+        name = entry_key(path)
+        entry: Any = self._entries.get(name)
+        if entry is None or self._valid.get(name) is not entry:
+            if not isinstance(entry, dict) or not _valid_entry(entry):
+                return []
+            self._valid[name] = entry
+        return sorted(entry["modules"].items())
+
     def types(self, path: Path) -> list[str]:
         """The message types the cached check of this file looked up."""
         name = entry_key(path)

@@ -30,6 +30,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from robotfix import messages
 from robotfix.analysis.parameters import ROSPY, Attached, ParamDecl, Summary, summarize
@@ -43,6 +44,9 @@ from robotfix.ros import yamlfile as Y
 from robotfix.ros.package import package_folder
 from robotfix.smt.fold import fold
 from robotfix.source import SourceFile
+
+if TYPE_CHECKING:
+    from robotfix.project.summary import Project
 
 # A Python file is summarised only if it mentions one of these (bytes, quick).
 MENTIONS = {
@@ -115,6 +119,7 @@ def check_parameter_files(
     named: Iterable[Path] = (),
     config: Config | None = None,
     known: dict[str, Known] | None = None,
+    project: Project | None = None,
 ) -> list[Diagnostic]:
     """Diagnostics for the parameter files and generate_parameter_library
     definitions of a run; `python_files` are those whose declarations count. A
@@ -122,7 +127,9 @@ def check_parameter_files(
     or is a definitions file; found in a package's config folder, it is an RF004
     warning (it may be a template or another tool's file). A YAML line ending in
     `# robotfix: ignore[RF101]` and `per-file-ignores` silence as in Python.
-    `known`: what the run's checks found of the Python files they read."""
+    `known`: what the run's checks found of the Python files they read;
+    `project`: how a file read here sees the other modules of its tree (an alias
+    its refinement imports), as its check does."""
     loud = {str(p) for p in [*named, *definition_files]}
     texts: dict[str, str] = {}
     out: list[Diagnostic] = []
@@ -144,7 +151,7 @@ def check_parameter_files(
             out.extend(_definition_defaults(loaded, key))
     layouts = {f.layout for f in read.values() if f.entries}
     words = tuple(w for layout in sorted(layouts) for w in MENTIONS.get(layout, ()))
-    found = _summaries(python_files, words, known or {}) if words else []
+    found = _summaries(python_files, words, known or {}, project) if words else []
     table = _Table(found, definitions)
     for path in files:
         loaded = read.get(str(path))
@@ -183,7 +190,10 @@ def _silenced(diag: Diagnostic, text: str, config: Config | None) -> bool:
 
 
 def _summaries(
-    python_files: Iterable[Path], words: tuple[bytes, ...], known: dict[str, Known]
+    python_files: Iterable[Path],
+    words: tuple[bytes, ...],
+    known: dict[str, Known],
+    project: Project | None = None,
 ) -> list[Summary]:
     """The summaries of the files that mention one of `words` (a quick filter);
     those in `known` are not read again (unless their check made no summary)."""
@@ -208,7 +218,8 @@ def _summaries(
             continue
         source = SourceFile.from_bytes(str(path), data)
         if source.tree is not None:
-            found.append(summarize(source))
+            resolver = project.resolver(path) if project is not None else None
+            found.append(summarize(source, resolver=resolver))
     return found
 
 

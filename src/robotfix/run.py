@@ -217,7 +217,7 @@ def _check_paths(
     if cache is not None and snapshot:
         cache.put_catalog(snapshot, catalog.digest_table(), problems, catalog.outline())
     result.diagnostics.extend(
-        _parameter_problems(found, files, config, cache, parameters)
+        _parameter_problems(found, files, config, cache, parameters, project)
     )
     result.files += len(found.parameter_files)
     result.diagnostics = finish(result.diagnostics)
@@ -258,6 +258,7 @@ def _parameter_problems(
     config: Config,
     cache: ResultCache | None = None,
     parameters: dict[str, ParamKnown] | None = None,
+    project: Project | None = None,
 ) -> list[Diagnostic]:
     """Parameter files against the parameters the code declares; cached as a whole,
     under a key that hashes every input (`_params_key`); `parameters`: what the
@@ -279,6 +280,7 @@ def _parameter_problems(
         found.named_parameter_files,
         config,
         parameters,
+        project,
     )
     if cache is not None and key is not None:
         cache.put_params(key, out)
@@ -291,7 +293,11 @@ def _params_key(
     """Everything `paramcheck` reads: the parameter and definitions files (bytes,
     per-file ignores, package folder), and each Python file that mentions a
     parameter word (`cache.MENTION_WORDS`; the others are skipped unread there)
-    with its bytes, the file it really is and its package folder."""
+    with its bytes, the file it really is, its package folder and what its check
+    consulted of other modules (an alias its refinement imports: the entry holds
+    each record's fingerprint as it is now, or the file was checked again). A
+    file read only for its declarations (`summary_files`, no check) counts with
+    every other such file's bytes: they are the modules it can import."""
     parts: list[str] = []
     groups = (
         ("yaml", found.parameter_files),
@@ -303,12 +309,14 @@ def _params_key(
             ignored = ",".join(sorted(config.ignored_codes(path)))
             where = package_folder(path)
             parts.append(f"{label}\0{path}\0{cache.sha(path)}\0{ignored}\0{where}")
+    checked = set(python_files) - set(found.summary_files)
     for path in python_files:
         mentions = cache.mentions(path)
-        if mentions:
+        if mentions or path not in checked:
             real = os.path.realpath(path)
             where = package_folder(path)
             parts.append(f"py\0{path}\0{real}\0{cache.sha(path)}\0{where}")
+            parts += [f"reads\0{k}\0{v}" for k, v in cache.consulted(path)]
     text = "\n".join(parts).encode("utf-8", "surrogateescape")
     return hashlib.sha256(text).hexdigest()
 
@@ -521,7 +529,11 @@ def _check_one(
 
             parsed = parsed or SourceFile.from_bytes(str(path), data)
             try:  # a fault here is paramcheck's to meet, as without this
-                parameters = summarize(parsed) if parsed.tree is not None else None
+                parameters = (
+                    summarize(parsed, resolver=resolver)
+                    if parsed.tree is not None
+                    else None
+                )
             except Exception:
                 parameters = None
         found = check_file(str(path), data, catalog, ignored, stubs, resolver, parsed)

@@ -46,7 +46,7 @@ class ParameterEvaluator(ExpressionEvaluator):
     def parameters(self) -> ParamContext:
         if self.ctx.parameters is None:
             self.ctx.parameters = ParamContext(
-                summarize(self.ctx.source, self.ctx.index)
+                summarize(self.ctx.source, self.ctx.index, self.ctx.resolver)
             )
         return self.ctx.parameters
 

@@ -35,6 +35,7 @@ from fractions import Fraction
 from typing import TYPE_CHECKING
 
 from robotfix import messages
+from robotfix.analysis import imported
 from robotfix.analysis.index import FileIndex, index_of
 from robotfix.analysis.program import call_argument
 from robotfix.analysis.values import Value
@@ -178,29 +179,44 @@ class Summary:
 
 
 # each tree's summary, made once a run: for the run's parameter files and for the
-# file's own check (`ParamContext`); a summary is not changed once made
-_SUMMARIES: weakref.WeakKeyDictionary[ast.Module, Summary] = weakref.WeakKeyDictionary()
+# file's own check (`ParamContext`), with the resolver it was made with (the check's
+# own: they see the same modules); a summary is not changed once made
+_SUMMARIES: weakref.WeakKeyDictionary[
+    ast.Module, tuple[imported.Resolver | None, Summary]
+] = weakref.WeakKeyDictionary()
 
 
-def summarize(source: SourceFile, index: FileIndex | None = None) -> Summary:
-    """What `source` declares and reads; an empty summary for a file with no tree."""
+def summarize(
+    source: SourceFile,
+    index: FileIndex | None = None,
+    resolver: imported.Resolver | None = None,
+) -> Summary:
+    """What `source` declares and reads; an empty summary for a file with no tree.
+    `resolver`: how the file sees the other modules of its tree (an alias or a
+    constant a refinement imports from them); None, it sees none."""
     tree = source.tree
     if tree is None:
         return Summary(source.path)
     shared = index_of(tree)
     if index is not None and index is not shared:
-        return _summarize(source, tree, index)
-    found = _SUMMARIES.get(tree)
-    if found is None or found.path != source.path:
-        found = _SUMMARIES[tree] = _summarize(source, tree, shared)
+        return _summarize(source, tree, index, resolver)
+    made, found = _SUMMARIES.get(tree, (None, None))
+    if found is None or found.path != source.path or made is not resolver:
+        found = _summarize(source, tree, shared, resolver)
+        _SUMMARIES[tree] = (resolver, found)
     return found
 
 
-def _summarize(source: SourceFile, tree: ast.Module, index: FileIndex) -> Summary:
+def _summarize(
+    source: SourceFile,
+    tree: ast.Module,
+    index: FileIndex,
+    resolver: imported.Resolver | None,
+) -> Summary:
     summary = Summary(source.path)
     summary.constants = _module_constants(tree, index)
     summary.imports = index.imports
-    walker = _Walker(source, index, summary, summary.constants)
+    walker = _Walker(source, index, summary, summary.constants, resolver)
     module_body: list[ast.stmt] = []
     for statement in tree.body:
         if isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef)):
@@ -250,6 +266,16 @@ def owner_of(
         and receiver.value.id == self_name
     ):
         return f"{class_name}#{receiver.attr}"
+    return None
+
+
+def _dotted(node: ast.expr) -> str | None:
+    """`limits.Speed` -> "limits.Speed"; None for anything but names and attributes."""
+    if isinstance(node, ast.Name):
+        return node.id
+    if isinstance(node, ast.Attribute):
+        base = _dotted(node.value)
+        return f"{base}.{node.attr}" if base else None
     return None
 
 
@@ -361,11 +387,13 @@ class _Walker:
         index: FileIndex,
         summary: Summary,
         constants: dict[str, object],
+        resolver: imported.Resolver | None = None,
     ) -> None:
         self.source = source
         self.index = index
         self.summary = summary
         self.constants = constants
+        self.resolver = resolver
 
     # -- names ------------------------------------------------------------------
     def qualname(self, node: ast.expr) -> str | None:
@@ -660,22 +688,55 @@ class _Walker:
         )
         if found_refinement is None:
             return None, label
-        # the module's constants put in, as the analysis reads them (`_ <= MAX`),
-        # each shown by its name: a parameter file's value is a number to test
+        # the constants put in, as the analysis reads them (`_ <= MAX`), each shown
+        # by its name: a parameter file's value is a number to test
         terms = {
             n.name: term
             for n in A.names(found_refinement.predicate)
-            if (term := _constant_term(n.name, self.constants.get(n.name)))
+            if (term := self._constant_term(n.name))
         }
         predicate = A.substitute(found_refinement.predicate, terms)
         return replace(found_refinement, predicate=predicate), label
 
-    def alias_of(self, node: ast.expr) -> Alias | None:
-        """A type alias or metadata string of this module (`Rate = Annotated[...]`),
-        as `FileContext.alias_of` reads it; one imported from another module is not
-        followed here (docs/parameters.md)."""
-        if not isinstance(node, ast.Name):
+    def _constant_term(self, name: str) -> A.Expr | None:
+        """A module constant, or one imported from the tree (`from .limits import
+        MAX`), as a term labelled with its name."""
+        if name in self.constants:
+            return _constant_term(name, self.constants[name])
+        qualified = self._imported(name)
+        found = imported.constant(self.resolver, qualified) if qualified else None
+        term = found.term if found is not None else None
+        if isinstance(term, (A.Num, A.Str)):
+            return replace(term, label=name)
+        return None
+
+    def _imported(self, name: str) -> str | None:
+        """The absolute dotted name a plain or relative import gives `name` (None
+        without a resolver: the file sees no other module)."""
+        if self.resolver is None:
             return None
+        head, dot, rest = name.partition(".")
+        base: str | None
+        if head in self.index.imports:
+            base = self.index.imports[head]
+        elif head in self.index.relative:
+            level, module, member = self.index.relative[head]
+            package = imported.absolute(self.resolver.package, level, module)
+            base = f"{package}.{member}" if package else None
+        else:
+            base = None
+        return f"{base}{dot}{rest}" if base else None
+
+    def alias_of(self, node: ast.expr) -> Alias | None:
+        """A type alias or metadata string (`Rate = Annotated[...]`), of this module
+        or imported from another module of the tree, as `FileContext.alias_of`
+        reads it."""
+        if not isinstance(node, (ast.Name, ast.Attribute)):
+            return None
+        if not isinstance(node, ast.Name) or node.id not in self.index.aliases:
+            spelled = _dotted(node)
+            qualified = self._imported(spelled) if spelled else None
+            return imported.alias(self.resolver, qualified) if qualified else None
         found = self.index.aliases.get(node.id)
         if found is None or node.id in self._rebound:
             return None

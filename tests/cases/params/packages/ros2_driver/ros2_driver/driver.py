@@ -7,6 +7,8 @@ from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rcl_interfaces.msg import FloatingPointRange, IntegerRange, ParameterDescriptor
 
+from .limits import TurnRate
+
 MAX_BRAKE = 0.8
 MODE = "diff"
 # an alias and module constants: a parameter file's value is checked against them
@@ -47,6 +49,7 @@ class Driver(Node):
             "timeout", 0.5
         ).value
         self.brake: Ratio = self.declare_parameter("brake_ratio", 0.5).value
+        self.turn: TurnRate = self.declare_parameter("turn_rate", 1.0).value
         drive: Annotated[str, "_ == MODE"] = self.declare_parameter("drive", "diff").value
         self.publisher = self.create_publisher(Twist, "cmd_vel", 10)
         self.timer = self.create_timer(
