@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import ast
 import builtins
+import copy
 from collections.abc import Callable, Hashable
 from fractions import Fraction
 from functools import partial
@@ -1413,7 +1414,7 @@ class Interpreter(CallEvaluator):
     def visit_While(self, node: ast.While, state: State) -> State:
         entry = state
         loop = entry.fork()
-        stored = self.havoc(loop, [node], loop=True)
+        stored = self.havoc(loop, [_iteration(node)], loop=True)
         body_state = loop.fork()
         body_state.assume(self.condition(node.test, body_state))
         self._decided(node.test, body_state, loop)
@@ -1443,7 +1444,7 @@ class Interpreter(CallEvaluator):
         empty, nonempty, iterable = self._empty_when(node.iter, state)
         entry = state
         loop = entry.fork()
-        stored = self.havoc(loop, [node], loop=True)
+        stored = self.havoc(loop, [_iteration(node)], loop=True)
         body_state = loop.fork()
         body_state.assume(nonempty)  # an iteration: the iterable had an element
         if empty is None:
@@ -1923,6 +1924,16 @@ def _binds(node: ast.AST) -> list[str]:
         return [a.asname or a.name.split(".")[0] for a in node.names if a.name != "*"]
     name = node.rest if isinstance(node, ast.MatchMapping) else node.name
     return [name] if name else []
+
+
+def _iteration(node: ast.While | ast.For | ast.AsyncFor) -> ast.stmt:
+    """The loop without its `else`: what its iterations may change. A `break`
+    leaves with that state, so a name the `else` alone binds is unbound there."""
+    if not node.orelse:
+        return node
+    plain = copy.copy(node)
+    plain.orelse = []
+    return plain
 
 
 def _breaks(body: list[ast.stmt]) -> bool:

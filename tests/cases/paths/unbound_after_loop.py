@@ -1,7 +1,7 @@
 """RF301: a name bound only inside a loop body is unbound after a loop that ran no
 time (`range(n)` with n <= 0, a `while` whose test is false at once). A `while True`
 left by `break`, a loop `else`, loop variables, and iterables whose emptiness is
-not known are fine."""
+not known are fine; a name only the `else` binds is unbound after a `break`."""
 import math
 from typing import Annotated
 
@@ -74,3 +74,31 @@ def wait_until_done() -> None:
         reply = rospy.wait_for_message("status", Twist, 1.0)
         done = reply is not None
     rospy.loginfo(f"done: {reply}")
+
+
+def nearest_obstacle(ranges) -> float:
+    for r in ranges:
+        if r < 0.5:
+            break  # leaves with `nearest` unbound: only the `else` binds it
+    else:
+        nearest = math.inf
+    return nearest  # error: RF301
+
+
+def wait_for_goal(client) -> None:
+    while client.pending():
+        if client.aborted():
+            break
+    else:
+        result = client.result()
+    rospy.loginfo(f"goal: {result}")  # error: RF301
+
+
+def wait_for_goal_fixed(client) -> None:
+    while client.pending():
+        if client.aborted():
+            result = None
+            break
+    else:
+        result = client.result()
+    rospy.loginfo(f"goal: {result}")
