@@ -322,12 +322,9 @@ class ResultCache:
         """The cached diagnostics of this file (`data`: its bytes, or their sha256
         from `sha`), or None when they may differ from a fresh check (or the entry
         is not exactly what `put` writes)."""
-        name = entry_key(path)
-        entry: Any = self._entries.get(name)
-        if entry is None or self._valid.get(name) is not entry:
-            if not isinstance(entry, dict) or not _valid_entry(entry):
-                return None
-            self._valid[name] = entry
+        entry = self._entry(path)
+        if entry is None:
+            return None
         if entry["file"] != _file_key(data, path, config):
             return None
         if entry["catalog"] != catalog.fingerprint_types(entry["types"]):
@@ -347,23 +344,23 @@ class ResultCache:
     def consulted(self, path: Path) -> list[tuple[str, str]]:
         """What the cached check of this file consulted of other modules (each
         record with its fingerprint then), sorted; [] without a valid entry."""
-        name = entry_key(path)
-        entry: Any = self._entries.get(name)
-        if entry is None or self._valid.get(name) is not entry:
-            if not isinstance(entry, dict) or not _valid_entry(entry):
-                return []
-            self._valid[name] = entry
-        return sorted(entry["modules"].items())
+        entry = self._entry(path)
+        return sorted(entry["modules"].items()) if entry is not None else []
 
     def types(self, path: Path) -> list[str]:
         """The message types the cached check of this file looked up."""
+        entry = self._entry(path)
+        return list(entry["types"]) if entry is not None else []
+
+    def _entry(self, path: Path) -> dict[str, Any] | None:
+        """This file's entry, if it is exactly what `put` writes (checked once)."""
         name = entry_key(path)
         entry: Any = self._entries.get(name)
         if entry is None or self._valid.get(name) is not entry:
             if not isinstance(entry, dict) or not _valid_entry(entry):
-                return []
+                return None
             self._valid[name] = entry
-        return list(entry["types"])
+        return entry  # type: ignore[no-any-return]
 
     def put(
         self,
