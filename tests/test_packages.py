@@ -27,7 +27,8 @@ def _by_file(found: list[Diagnostic]) -> dict[str, list[Diagnostic]]:
 
 
 @pytest.mark.parametrize(
-    "name", ["ros2_pkg", "ros1_pkg", "cycle", "near_misses", "alias_pkg"]
+    "name",
+    ["ros2_pkg", "ros1_pkg", "cycle", "near_misses", "alias_pkg", "helper_classes"],
 )
 def test_a_checked_tree_sees_its_own_modules(name: str) -> None:
     root = PACKAGES / name

@@ -172,7 +172,7 @@ class CallEvaluator(LibraryEvaluator):
         if imported.starred(node, kwargs):
             found = None if isinstance(found, imported.FunctionSummary) else found
         if isinstance(found, imported.FunctionSummary):
-            bound = callee.kind == "method"
+            bound = callee.kind == "method" or found.class_bound
             return imported.call(self, found, args, kwargs, node, state, bound)
         if isinstance(found, imported.ClassSummary):
             methods = dict(found.methods)

@@ -258,8 +258,24 @@ class ExpressionEvaluator:
             found = self.ctx.msg_type_named(f"{base.name.replace('/', '.msg.')}_{attr}")
             return Value("msgclass", name=found) if found else None
         if base.kind in ("class", "instance"):
-            return self.class_constant(base.name, attr)
+            return self.class_constant(base.name, attr) or self._method(base, attr)
         return None
+
+    def _method(self, base: Value, attr: str) -> Value | None:
+        """A method of a class of this file, read from the class (`Path.turn`, a
+        staticmethod helper: called with every argument, or a classmethod: its
+        `cls` given) or from an instance that is not a name (`Path().turn(...)`)."""
+        key = f"{base.name}.{attr}"
+        function = self.program.functions.get(key)
+        if function is None:
+            if base.kind == "instance" and "." in base.name:  # another module's class
+                found = imported.resolve(self.ctx.resolver, key)
+                if isinstance(found, imported.FunctionSummary):
+                    return Value("method", name=key)
+            return None
+        if base.kind == "instance" or "classmethod" in function.decorators:
+            return Value("method", name=key)  # the first parameter is given
+        return Value("function", name=key)
 
     def class_constant(self, class_name: str, attr: str) -> Value | None:
         """A constant class attribute (`MAX_SPEED = 0.22` in the class body), also

@@ -39,6 +39,8 @@ class FunctionSummary:
     decls: tuple[tuple[str, Refinement], ...]  # refined parameters
     returns: Refinement | None
     method: bool  # its first parameter is bound by an instance
+    # a classmethod: its first parameter is bound through the class too (`Path.make`)
+    class_bound: bool = False
 
 
 @dataclass(frozen=True)

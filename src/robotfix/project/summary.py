@@ -504,7 +504,13 @@ def _function(
     )
     returns = _travel(function.returns, terms, path) if function.returns else None
     return FunctionSummary(
-        shown or function.name, params, keywords, decls, returns, function.is_method
+        shown or function.name,
+        params,
+        keywords,
+        decls,
+        returns,
+        function.is_method,
+        "classmethod" in function.decorators,
     )
 
 
