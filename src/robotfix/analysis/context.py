@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING
 from robotfix import messages, rules
 from robotfix.analysis.consistency import consistent_invariants, contradictory
 from robotfix.analysis.constants import ConstantNames
+from robotfix.analysis.imported import absolute_imports, dotted_name
 from robotfix.analysis.index import FileIndex, index_scope
 from robotfix.analysis.values import SORTS, Value, sort_of
 from robotfix.analysis.vc import VC, Verdict
@@ -238,13 +239,8 @@ class FileContext:
     # -- names ---------------------------------------------------------------
     def record_imports(self, index: FileIndex) -> None:
         self.index = index
-        self.imports = index.imports
-        if index.relative and self.resolver is not None:
-            self.imports = dict(index.imports)
-            for local, (level, module, name) in index.relative.items():
-                base = self.absolute(level, module)
-                if base is not None:
-                    self.imports[local] = f"{base}.{name}"
+        package = self.resolver.package if self.resolver is not None else None
+        self.imports = absolute_imports(index, package)
         self.star_import = index.star_import
         roots = {q.split(".")[0] for q in self.imports.values()}
         self.ros1 = bool(roots & ROS1_PACKAGES) and "rclpy" not in roots
@@ -258,12 +254,7 @@ class FileContext:
 
     def qualname(self, node: ast.expr) -> str | None:
         """`t.Annotated` -> `typing.Annotated`, when the names come from imports."""
-        if isinstance(node, ast.Name):
-            return self.imports.get(node.id)
-        if isinstance(node, ast.Attribute):
-            base = self.qualname(node.value)
-            return f"{base}.{node.attr}" if base else None
-        return None
+        return dotted_name(node, self.imports)
 
     def msg_type_named(self, qualified: str | None) -> str | None:
         """`geometry_msgs.msg.Twist`, `std_msgs.Int32` or `pkg.srv.AddTwoIntsRequest`

@@ -24,6 +24,7 @@ from robotfix.annotations.extract import Alias, Refinement
 
 if TYPE_CHECKING:
     from robotfix.analysis.calls import CallEvaluator
+    from robotfix.analysis.index import FileIndex
     from robotfix.analysis.state import State
 
 MAX_HOPS = 20  # re-exports followed for one name (`a` re-exports `b` re-exports...)
@@ -98,6 +99,31 @@ def absolute(package: str | None, level: int, module: str | None) -> str | None:
     if module:
         base.append(module)
     return ".".join(base) or None
+
+
+def absolute_imports(index: FileIndex, package: str | None) -> dict[str, str]:
+    """A file's imports by local name, its relative ones (`from .limits import X`)
+    made absolute in `package` (dropped outside a package): what its names mean in
+    the tree."""
+    if not index.relative:
+        return index.imports
+    found = dict(index.imports)
+    for local, (level, module, name) in index.relative.items():
+        base = absolute(package, level, module)
+        if base is not None:
+            found[local] = f"{base}.{name}"
+    return found
+
+
+def dotted_name(node: ast.expr, imports: dict[str, str]) -> str | None:
+    """`t.Annotated` -> `typing.Annotated`, `limits.Speed` -> `my_pkg.limits.Speed`,
+    when the first name comes from `imports`."""
+    if isinstance(node, ast.Name):
+        return imports.get(node.id)
+    if isinstance(node, ast.Attribute):
+        base = dotted_name(node.value, imports)
+        return f"{base}.{node.attr}" if base else None
+    return None
 
 
 def resolve(resolver: Resolver | None, qualified: str) -> Imported | None:

@@ -27,6 +27,7 @@ checked files to check parameter files (`robotfix.paramcheck`).
 from __future__ import annotations
 
 import ast
+import functools
 import math
 import weakref
 from collections.abc import Callable
@@ -269,21 +270,11 @@ def owner_of(
     return None
 
 
-def _dotted(node: ast.expr) -> str | None:
-    """`limits.Speed` -> "limits.Speed"; None for anything but names and attributes."""
-    if isinstance(node, ast.Name):
-        return node.id
-    if isinstance(node, ast.Attribute):
-        base = _dotted(node.value)
-        return f"{base}.{node.attr}" if base else None
-    return None
-
-
 def _no_message(node: ast.expr) -> str | None:
     return None  # parameters hold no messages
 
 
-def _constant_term(name: str, value: object) -> A.Expr | None:
+def _python_constant(name: str, value: object) -> A.Expr | None:
     """A module constant (`_module_constants`) as a term labelled with its name; a
     float as the decimal Python shows (`0.3`, not its binary value), which orders
     as the floats do, as a parameter file's value is read (`paramcheck._term`)."""
@@ -397,12 +388,14 @@ class _Walker:
 
     # -- names ------------------------------------------------------------------
     def qualname(self, node: ast.expr) -> str | None:
-        if isinstance(node, ast.Name):
-            return self.index.imports.get(node.id)
-        if isinstance(node, ast.Attribute):
-            base = self.qualname(node.value)
-            return f"{base}.{node.attr}" if base else None
-        return None
+        return imported.dotted_name(node, self.index.imports)
+
+    @functools.cached_property
+    def _in_tree(self) -> dict[str, str]:
+        """The imports, relative ones made absolute: what an alias or a constant a
+        refinement names is in the tree (`imported.resolve`)."""
+        package = self.resolver.package if self.resolver is not None else None
+        return imported.absolute_imports(self.index, package)
 
     def const(self, node: ast.expr | None) -> object:
         if node is None:
@@ -702,40 +695,18 @@ class _Walker:
         """A module constant, or one imported from the tree (`from .limits import
         MAX`), as a term labelled with its name."""
         if name in self.constants:
-            return _constant_term(name, self.constants[name])
-        qualified = self._imported(name)
-        found = imported.constant(self.resolver, qualified) if qualified else None
-        term = found.term if found is not None else None
-        if isinstance(term, (A.Num, A.Str)):
-            return replace(term, label=name)
-        return None
-
-    def _imported(self, name: str) -> str | None:
-        """The absolute dotted name a plain or relative import gives `name` (None
-        without a resolver: the file sees no other module)."""
-        if self.resolver is None:
-            return None
+            return _python_constant(name, self.constants[name])
         head, dot, rest = name.partition(".")
-        base: str | None
-        if head in self.index.imports:
-            base = self.index.imports[head]
-        elif head in self.index.relative:
-            level, module, member = self.index.relative[head]
-            package = imported.absolute(self.resolver.package, level, module)
-            base = f"{package}.{member}" if package else None
-        else:
-            base = None
-        return f"{base}{dot}{rest}" if base else None
+        base = self._in_tree.get(head)
+        found = imported.constant(self.resolver, f"{base}{dot}{rest}") if base else None
+        return A.labelled(found.term, name) if found is not None else None
 
     def alias_of(self, node: ast.expr) -> Alias | None:
         """A type alias or metadata string (`Rate = Annotated[...]`), of this module
         or imported from another module of the tree, as `FileContext.alias_of`
         reads it."""
-        if not isinstance(node, (ast.Name, ast.Attribute)):
-            return None
         if not isinstance(node, ast.Name) or node.id not in self.index.aliases:
-            spelled = _dotted(node)
-            qualified = self._imported(spelled) if spelled else None
+            qualified = imported.dotted_name(node, self._in_tree)
             return imported.alias(self.resolver, qualified) if qualified else None
         found = self.index.aliases.get(node.id)
         if found is None or node.id in self._rebound:
@@ -749,7 +720,7 @@ class _Walker:
         )
         return Alias(found, names)
 
-    @property
+    @functools.cached_property
     def _rebound(self) -> set[str]:
         """Module names a function declares `global` (it may rebind them)."""
         return {n for scope in self.index.scopes.values() for n in scope.global_names}

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from fractions import Fraction
 
 from robotfix.annotations.numbers import shown_as_infinity
@@ -200,6 +200,14 @@ def rebuild(expr: Expr, new_children: tuple[Expr, ...]) -> Expr:
     if isinstance(expr, Func):
         return Func(expr.name, new_children)
     return expr
+
+
+def labelled(term: Expr | None, name: str) -> Num | Str | None:
+    """A constant's number or string put into a refinement, shown by `name` in
+    messages (`Num.label`); None for any other term."""
+    if isinstance(term, (Num, Str)):
+        return replace(term, label=name)
+    return None
 
 
 def substitute(expr: Expr, mapping: dict[str, Expr]) -> Expr:

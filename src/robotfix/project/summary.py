@@ -631,10 +631,7 @@ def _labelled(terms: dict[str, A.Expr]) -> dict[str, A.Expr]:
     `speed <= MAX_SPEED`, as the declaring module's own does, not `speed <= 0.5`."""
     from robotfix.annotations import ast as A
 
-    return {
-        name: replace(term, label=name) if isinstance(term, (A.Num, A.Str)) else term
-        for name, term in terms.items()
-    }
+    return {name: A.labelled(term, name) or term for name, term in terms.items()}
 
 
 def _detached(ctx: FileContext) -> Names:
