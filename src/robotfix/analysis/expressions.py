@@ -262,9 +262,10 @@ class ExpressionEvaluator:
         return None
 
     def _method(self, base: Value, attr: str) -> Value | None:
-        """A method of a class of this file, read from the class (`Path.turn`, a
-        staticmethod helper: called with every argument, or a classmethod: its
-        `cls` given) or from an instance that is not a name (`Path().turn(...)`)."""
+        """A method, read from an instance (`self.turn`, `Path().turn`, also of
+        another module's class) or from a class of this file (`Path.turn`: a
+        staticmethod helper, called with every argument, or a classmethod, its
+        `cls` given)."""
         key = f"{base.name}.{attr}"
         function = self.program.functions.get(key)
         if function is None:
@@ -331,13 +332,11 @@ class ExpressionEvaluator:
         bound = state.env.get(key)
         if isinstance(bound, Value):
             return state.use(bound)
-        method = f"{base.name}.{node.attr}"
-        if base.kind == "instance" and method in self.program.functions:
-            return Value("method", name=method)
-        if base.kind == "instance" and "." in base.name:  # a class of another module
-            found = imported.resolve(self.ctx.resolver, method)
-            if isinstance(found, imported.FunctionSummary):
-                return Value("method", name=method)
+        method = self._method(base, node.attr) if base.kind == "instance" else None
+        if method is not None:
+            return method
+        if base.kind == "instance" and "." in base.name:  # another module's constant
+            found = imported.resolve(self.ctx.resolver, f"{base.name}.{node.attr}")
             if isinstance(found, Value):
                 return found
         constant = self.class_constant(base.name, node.attr)
