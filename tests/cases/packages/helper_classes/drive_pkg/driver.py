@@ -18,10 +18,10 @@ class Driver(Node):
         self.pub.publish(Path.turn(3.0))  # error: RF101
         self.pub.publish(Path.turn(2.84))
         self.pub.publish(path.Path.turn(-0.1))  # error: RF101
-        self.pub.publish(Path.straight(0.25))  # error: RF101
-        self.pub.publish(Path.straight(0.2))
-        self.pub.publish(Path().stop(1.5))  # error: RF101
-        self.pub.publish(Path().stop(1.0))
+        self.pub.publish(Path.forward(0.3))  # error: RF101
+        self.pub.publish(Path.forward(0.26))
+        Path().brake(2.5)  # error: RF101
+        Path().brake(2.0)
 
 
 def main():

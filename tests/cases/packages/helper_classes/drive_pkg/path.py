@@ -14,12 +14,8 @@ class Path:
         return twist
 
     @classmethod
-    def straight(
-        cls, linear_velocity: Annotated[float, "Unit('m/s') and 0 < _ <= 0.22"]
-    ) -> Twist:
-        twist = Twist()
-        twist.linear.x = linear_velocity
-        return twist
+    def forward(cls, speed: Annotated[float, "Unit('m/s') and 0 < _ <= 0.26"]) -> Twist:
+        return cls.turn(0.5) if speed == 0 else Twist()
 
-    def stop(self, decel: Annotated[float, "Unit('m/s^2') and 0 < _ <= 1.0"]) -> Twist:
-        return Twist()
+    def brake(self, decel: Annotated[float, "Unit('m/s^2') and 0 < _ <= 2.0"]) -> None:
+        print(decel)
