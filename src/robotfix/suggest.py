@@ -6,8 +6,9 @@ It never damages a file: the edited text must parse to the same program plus the
 annotations (and the import), or nothing is shown or written; lines are split where
 `ast` splits them; the import goes below a shebang, an encoding cookie, a licence
 header, the docstring and `__future__` imports; line endings and the encoding (a BOM,
-a PEP 263 cookie) are kept; the write is atomic (robotfix.fs), only if the file has
-not changed since it was read, and never through a symlink to a file outside the
+a PEP 263 cookie) are kept; the write is atomic and keeps the owner, group, mode
+and extended attributes (robotfix.fs), only of a file with one name that has not
+changed since it was read, and never through a symlink to a file outside the
 checked paths. A file that cannot be read or written gets one line on stderr, the
 others are still processed, and the exit status is then 2.
 """
@@ -136,14 +137,10 @@ def _write(
         _say(f"robotfix: {file}: read-only; not written")
         return False
     try:
-        unchanged = fs.read_regular(real) == original
-    except fs.UnreadableError:
-        unchanged = False
-    if not unchanged:
-        _say(f"robotfix: {file} changed while it was read; not written")
+        fs.atomic_write(real, data, original)
+    except fs.NotReplacedError as err:
+        _say(f"robotfix: {file}: {err.reason}{'' if err.replaced else '; not written'}")
         return False
-    try:
-        fs.atomic_write(real, data)
     except OSError as err:
         _say(f"robotfix: {file}: cannot write: {err.strerror or err}; left as it was")
         return False
