@@ -491,6 +491,80 @@ def test_an_owner_that_cannot_be_kept_is_not_given_away(
     assert sorted(p.name for p in tmp_path.iterdir()) == ["node.py"]
 
 
+REBOUND = [
+    "Annotated = 5\n",
+    "def Annotated():\n    pass\n",
+    "import numpy as Annotated\n",
+    "from mylib import Annotated\n",
+    "class Holder:\n    Annotated = 1\n",
+    "def rebind():\n    global Annotated\n    Annotated = 1\n",
+    "for Annotated in range(3):\n    pass\n",
+]
+
+
+@pytest.mark.parametrize("binding", REBOUND)
+def test_a_module_binding_annotated_gets_typing_annotated(
+    catalog: MsgCatalog, binding: str
+) -> None:
+    changed = annotate(binding + BODY, "node.py", catalog)
+    assert changed == "import typing\n" + binding + BODY.replace(
+        "speed = 0.5", "speed: typing.Annotated[float, \"Unit('m/s')\"] = 0.5"
+    )
+
+
+def test_the_check_of_the_edit_catches_a_rebound_name_on_its_own(
+    monkeypatch: pytest.MonkeyPatch, catalog: MsgCatalog
+) -> None:
+    # the check does not trust how `annotate` chose its spelling
+    monkeypatch.setattr("robotfix.suggest._spelling", lambda names: "Annotated")
+    with pytest.raises(UnsafeEditError, match="`Annotated` is bound in this module"):
+        annotate("Annotated = 5\n" + BODY, "node.py", catalog)
+
+
+def test_typing_annotated_uses_an_import_of_typing_above_it(
+    catalog: MsgCatalog,
+) -> None:
+    text = "import typing\nAnnotated = 5\n" + BODY
+    assert annotate(text, "node.py", catalog) == text.replace(
+        "speed = 0.5", "speed: typing.Annotated[float, \"Unit('m/s')\"] = 0.5"
+    )
+
+
+@pytest.mark.parametrize(
+    ("text", "reason"),
+    [
+        (
+            "Annotated = 5\nimport os as typing\n" + BODY,
+            "both `Annotated` and `typing`",
+        ),
+        ("float = int\n" + BODY, "`float` is bound in this module to something else"),
+    ],
+)
+def test_a_module_whose_names_cannot_be_written_is_refused(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], text: str, reason: str
+) -> None:
+    node = tmp_path / "node.py"
+    node.write_text(text)
+    assert suggest(node) == 2
+    assert node.read_text() == text
+    err = capsys.readouterr().err
+    assert err.startswith(f"robotfix: {node}: not annotated: ") and reason in err
+
+
+def test_an_import_below_the_annotation_is_not_relied_on(catalog: MsgCatalog) -> None:
+    # module-level annotations are evaluated at import: `Annotated` must be bound
+    # above the first one, so the edit adds its own import
+    text = BODY + IMPORT + "\n"
+    assert annotate(text, "node.py", catalog) == IMPORT + "\n" + text.replace(
+        "speed = 0.5", ANNOTATED
+    )
+
+
+def test_typing_extensions_annotated_is_used_as_it_is(catalog: MsgCatalog) -> None:
+    text = "from typing_extensions import Annotated\n" + BODY
+    assert annotate(text, "node.py", catalog) == text.replace("speed = 0.5", ANNOTATED)
+
+
 def _append_during(
     monkeypatch: pytest.MonkeyPatch, name: str, node: Path, times: int = 1
 ) -> None:
