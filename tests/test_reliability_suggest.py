@@ -430,3 +430,198 @@ def test_generated_layouts_keep_their_head_and_breaks(
     assert at >= len(lines_of(text.replace("\n", newline))) - 1
     assert re.findall(r"\r\n|\r|\n", changed) == [newline] * (len(after) - 1)
     assert ANNOTATED in changed
+
+
+# -- reliability2: owner, hard links, rebound names, concurrent edits (N1-N3) ---
+
+ROOT_ONLY = pytest.mark.skipif(
+    sys.platform == "win32" or os.geteuid() != 0, reason="giving a file away: root"
+)
+
+
+@ROOT_ONLY
+def test_apply_as_root_keeps_owner_group_mode_and_xattrs(tmp_path: Path) -> None:
+    node = tmp_path / "node.py"
+    node.write_text(BODY)
+    os.chown(node, 1234, 1234)
+    node.chmod(0o640)
+    try:
+        os.setxattr(node, "user.origin", b"vendored")
+    except OSError:
+        pytest.skip("no user extended attributes on this file system")
+    assert suggest(node) == 0
+    info = node.stat()
+    assert ANNOTATED in node.read_text()
+    assert (info.st_uid, info.st_gid, stat.S_IMODE(info.st_mode)) == (1234, 1234, 0o640)
+    assert os.getxattr(node, "user.origin") == b"vendored"
+
+
+def test_a_hard_linked_file_is_not_split(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    (tmp_path / "tree").mkdir()
+    node = tmp_path / "tree" / "node.py"
+    node.write_text(BODY)
+    os.link(node, tmp_path / "other_link.py")
+    inode = node.stat().st_ino
+    assert suggest(tmp_path / "tree") == 2
+    assert node.read_text() == BODY and node.stat().st_ino == inode
+    assert (tmp_path / "other_link.py").stat().st_ino == inode
+    assert capsys.readouterr().err == (
+        f"robotfix: {node}: has 2 hard links, which a rewrite would split; "
+        "not written\n"
+    )
+
+
+@ROOT_ONLY
+def test_an_owner_that_cannot_be_kept_is_not_given_away(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    node = tmp_path / "node.py"
+    node.write_text(BODY)
+    os.chown(node, 1234, 1234)
+
+    def not_allowed(fd: int, uid: int, gid: int) -> None:
+        raise PermissionError(1, "Operation not permitted")
+
+    monkeypatch.setattr(os, "fchown", not_allowed)  # as a user other than root
+    assert suggest(node) == 2
+    assert node.read_text() == BODY and node.stat().st_uid == 1234
+    assert "owned by uid 1234, gid 1234" in capsys.readouterr().err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["node.py"]
+
+
+REBOUND = [
+    "Annotated = 5\n",
+    "def Annotated():\n    pass\n",
+    "import numpy as Annotated\n",
+    "from mylib import Annotated\n",
+    "class Holder:\n    Annotated = 1\n",
+    "def rebind():\n    global Annotated\n    Annotated = 1\n",
+    "for Annotated in range(3):\n    pass\n",
+]
+
+
+@pytest.mark.parametrize("binding", REBOUND)
+def test_a_module_binding_annotated_gets_typing_annotated(
+    catalog: MsgCatalog, binding: str
+) -> None:
+    changed = annotate(binding + BODY, "node.py", catalog)
+    assert changed == "import typing\n" + binding + BODY.replace(
+        "speed = 0.5", "speed: typing.Annotated[float, \"Unit('m/s')\"] = 0.5"
+    )
+
+
+def test_the_check_of_the_edit_catches_a_rebound_name_on_its_own(
+    monkeypatch: pytest.MonkeyPatch, catalog: MsgCatalog
+) -> None:
+    # the check does not trust how `annotate` chose its spelling
+    monkeypatch.setattr("robotfix.suggest._spelling", lambda names: "Annotated")
+    with pytest.raises(UnsafeEditError, match="`Annotated` is bound in this module"):
+        annotate("Annotated = 5\n" + BODY, "node.py", catalog)
+
+
+def test_typing_annotated_uses_an_import_of_typing_above_it(
+    catalog: MsgCatalog,
+) -> None:
+    text = "import typing\nAnnotated = 5\n" + BODY
+    assert annotate(text, "node.py", catalog) == text.replace(
+        "speed = 0.5", "speed: typing.Annotated[float, \"Unit('m/s')\"] = 0.5"
+    )
+
+
+@pytest.mark.parametrize(
+    ("text", "reason"),
+    [
+        (
+            "Annotated = 5\nimport os as typing\n" + BODY,
+            "both `Annotated` and `typing`",
+        ),
+        ("float = int\n" + BODY, "`float` is bound in this module to something else"),
+    ],
+)
+def test_a_module_whose_names_cannot_be_written_is_refused(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], text: str, reason: str
+) -> None:
+    node = tmp_path / "node.py"
+    node.write_text(text)
+    assert suggest(node) == 2
+    assert node.read_text() == text
+    err = capsys.readouterr().err
+    assert err.startswith(f"robotfix: {node}: not annotated: ") and reason in err
+
+
+def test_an_import_below_the_annotation_is_not_relied_on(catalog: MsgCatalog) -> None:
+    # module-level annotations are evaluated at import: `Annotated` must be bound
+    # above the first one, so the edit adds its own import
+    text = BODY + IMPORT + "\n"
+    assert annotate(text, "node.py", catalog) == IMPORT + "\n" + text.replace(
+        "speed = 0.5", ANNOTATED
+    )
+
+
+def test_typing_extensions_annotated_is_used_as_it_is(catalog: MsgCatalog) -> None:
+    text = "from typing_extensions import Annotated\n" + BODY
+    assert annotate(text, "node.py", catalog) == text.replace("speed = 0.5", ANNOTATED)
+
+
+def _append_during(
+    monkeypatch: pytest.MonkeyPatch, name: str, node: Path, times: int = 1
+) -> None:
+    """`os.<name>` appends a line to `node` the first `times` times it is called,
+    then does what it does: a writer landing at that moment of the write."""
+    real = getattr(os, name)
+    calls = []
+
+    def hooked(*args: object) -> object:
+        if len(calls) < times:
+            calls.append(args)
+            with open(node, "a") as out:
+                out.write(f"# appended meanwhile {len(calls)}\n")
+        return real(*args)
+
+    monkeypatch.setattr(os, name, hooked)
+
+
+def test_an_append_after_the_first_check_is_kept(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    node = tmp_path / "node.py"
+    node.write_text(BODY)
+    _append_during(monkeypatch, "fsync", node)  # the temporary file is being written
+    assert suggest(node) == 2
+    assert node.read_text() == BODY + "# appended meanwhile 1\n"
+    assert capsys.readouterr().err == (
+        f"robotfix: {node}: changed while it was read; not written\n"
+    )
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["node.py"]
+
+
+def test_an_append_that_reaches_the_replaced_file_is_put_back(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    node = tmp_path / "node.py"
+    node.write_text(BODY)
+    node.chmod(0o640)
+    _append_during(monkeypatch, "replace", node)  # after the last check: the rename
+    assert suggest(node) == 2
+    assert node.read_text() == BODY + "# appended meanwhile 1\n"
+    assert stat.S_IMODE(node.stat().st_mode) == 0o640
+    assert capsys.readouterr().err == (
+        f"robotfix: {node}: another program wrote to it during the rewrite; "
+        "put back with that write; not written\n"
+    )
+
+
+def test_a_write_that_cannot_be_put_back_is_said(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    node = tmp_path / "node.py"
+    node.write_text(BODY)
+    _append_during(monkeypatch, "replace", node, times=2)  # the rewrite and the undo
+    assert suggest(node) == 2
+    assert node.read_text() == BODY + "# appended meanwhile 1\n"
+    assert capsys.readouterr().err == (
+        f"robotfix: {node}: another program wrote to it during the rewrite, and one "
+        "of its writes is lost\n"
+    )

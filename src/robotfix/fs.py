@@ -5,22 +5,33 @@ Every read of a file the user (or a repository) controls goes through
 `read_regular`: a FIFO, a device (`/dev/zero`) or a socket, reached directly or
 through a symlink, is refused at `open` without blocking, and no read takes more
 than `limit` bytes. Every write goes through `atomic_write`: a temporary file
-created exclusively beside the target (never through a planted symlink), fsync'd,
-then `os.replace`d, so a full disk or a kill leaves the original intact.
+created exclusively beside the target (never through a planted symlink), given the
+target's owner, group, extended attributes and mode, fsync'd, then `os.replace`d,
+so a full disk or a kill leaves the original intact; a user's file is replaced only
+if it still holds what was read.
 """
 
 from __future__ import annotations
 
 import contextlib
+import errno
 import os
 import stat
 import tempfile
 from collections.abc import Callable, Iterable
 from pathlib import Path
 
+try:
+    import fcntl
+except ImportError:  # not on Windows
+    fcntl = None  # type: ignore[assignment]
+
 MAX_FILE_BYTES = 32 * 1024 * 1024  # no source or interface file is near this
 _FLAGS = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0)
 _NOFOLLOW = getattr(os, "O_NOFOLLOW", 0)
+_NEW_FILE_MODE = 0o644  # what `atomic_write` gives a file that replaces no regular file
+_MEANWHILE = "another program wrote to it during the rewrite"
+_LOST = f"{_MEANWHILE}, and one of its writes is lost"
 
 
 class UnreadableError(Exception):
@@ -91,32 +102,230 @@ def read_text(path: str | os.PathLike[str], limit: int = MAX_FILE_BYTES) -> str:
         raise UnreadableError(f"not UTF-8 ({err.reason} at byte {err.start})") from None
 
 
-def atomic_write(path: str | os.PathLike[str], data: bytes) -> None:
+class NotReplacedError(Exception):
+    """`atomic_write` left a user's file as it was, for a reason in words ("changed
+    while it was read", "has 2 hard links"); `replaced` when it did replace it but
+    a write of another program was lost on the way."""
+
+    def __init__(self, reason: str, replaced: bool = False) -> None:
+        super().__init__(reason)
+        self.reason = reason
+        self.replaced = replaced
+
+
+def atomic_write(
+    path: str | os.PathLike[str], data: bytes, original: bytes | None = None
+) -> None:
     """Replace the file at `path` with `data`, or leave it as it was.
 
     The temporary file is created with O_EXCL in the same folder (mkstemp), written,
-    fsync'd and renamed over `path`: the rename replaces a symlink at `path` itself,
-    never its target. An existing file's permission bits are kept."""
+    given the replaced file's owner, group, extended attributes (ACLs among them)
+    and permission bits, fsync'd and renamed over `path`: the rename replaces a
+    symlink at `path` itself, never its target. Only a regular file at `path` lends
+    its metadata; anything else (nothing, a symlink, a FIFO) gives 0644.
+
+    With `original` (a user's file, as it was read) nothing is written, and
+    NotReplacedError says why, unless `path` is a regular file with that content,
+    one name (a rename would leave its other hard links with the old text), no
+    other program's flock, and an owner, group and attributes this user can give
+    the new file. The file is read again, and its stat and the stat of `path`
+    compared with the first, just before the rename; a write that still reaches
+    the old file (between that check and the rename, or through a descriptor
+    opened before it) and is seen once the rename is synced, puts the file back
+    as that write left it. What remains: a write after that last look, through a
+    descriptor opened before the rename (README, `robotfix suggest`)."""
     target = Path(path)
+    late = _replace(target, data, original)
+    if late is None:
+        return
     try:
-        mode: int | None = stat.S_IMODE(os.stat(target, follow_symlinks=False).st_mode)
-    except FileNotFoundError:
-        mode = None
-    fd, tmp = tempfile.mkstemp(
-        dir=target.parent, prefix=f".{target.name}.", suffix=".tmp"
+        again = _replace(target, late, data)
+    except (NotReplacedError, OSError):
+        again = b""
+    if again is not None:
+        raise NotReplacedError(_LOST, replaced=True)
+    raise NotReplacedError(f"{_MEANWHILE}; put back with that write")
+
+
+def _replace(target: Path, data: bytes, original: bytes | None) -> bytes | None:
+    """`atomic_write` once; with `original`, the old file's text if a write reached
+    it after the last check (None otherwise)."""
+    held, why = _open_existing(target)
+    try:
+        checked: tuple[int, os.stat_result, bytes] | None = None
+        if original is not None:
+            if held is None:
+                raise NotReplacedError(why)
+            checked = (held, _check_original(held, original), original)
+        fd, tmp = tempfile.mkstemp(
+            dir=target.parent, prefix=f".{target.name}.", suffix=".tmp"
+        )
+        try:
+            with os.fdopen(fd, "wb") as out:
+                out.write(data)
+                out.flush()
+                _copy_metadata(held, out.fileno(), strict=checked is not None)
+                os.fsync(out.fileno())
+            if checked is not None:
+                _recheck(*checked, target)
+            os.replace(tmp, target)
+        except BaseException:
+            with contextlib.suppress(OSError):
+                os.unlink(tmp)
+            raise
+        if checked is None:
+            return None
+        _sync_folder(target.parent)  # the rename is durable; late writers have landed
+        return _written_meanwhile(*checked[:2])
+    finally:
+        if held is not None:
+            os.close(held)  # and with it the flock
+
+
+def _written_meanwhile(held: int, first: os.stat_result) -> bytes | None:
+    """Just after the rename: the replaced file's text if a write reached it since
+    `first` (its ctime moved with the rename; its size and mtime did not)."""
+    late = os.fstat(held)
+    if (late.st_size, late.st_mtime_ns) == (first.st_size, first.st_mtime_ns):
+        return None
+    text = _head(held, MAX_FILE_BYTES + 1)
+    if len(text) > MAX_FILE_BYTES:
+        raise NotReplacedError(_LOST, replaced=True)
+    return text
+
+
+def _sync_folder(folder: Path) -> None:
+    """fsync a folder, so a rename in it survives a crash (best effort)."""
+    with contextlib.suppress(OSError):
+        fd = os.open(folder, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
+        try:
+            os.fsync(fd)
+        finally:
+            os.close(fd)
+
+
+def _open_existing(target: Path) -> tuple[int | None, str]:
+    """A descriptor of the regular file at `target` itself (not through a symlink),
+    or None and why not: nothing there, something else, or not openable."""
+    try:
+        fd = os.open(target, _FLAGS | _NOFOLLOW)
+    except OSError as err:
+        return None, "a symlink" if err.errno == errno.ELOOP else _reason(err)
+    if stat.S_ISREG(os.fstat(fd).st_mode):
+        return fd, ""
+    os.close(fd)
+    return None, "not a regular file"
+
+
+def _check_original(held: int, original: bytes) -> os.stat_result:
+    """The stat of the user's file that is to be replaced, once it is known to hold
+    `original`, to have one name and to be locked by no other program."""
+    first = os.fstat(held)
+    if first.st_nlink > 1:
+        raise NotReplacedError(
+            f"has {first.st_nlink} hard links, which a rewrite would split"
+        )
+    if fcntl is not None:
+        try:
+            fcntl.flock(held, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            raise NotReplacedError("locked by another program") from None
+        except OSError:
+            pass  # a file system without flock: the checks below still run
+    if not _holds(held, original):
+        raise NotReplacedError("changed while it was read")
+    return first
+
+
+def _recheck(held: int, first: os.stat_result, original: bytes, target: Path) -> None:
+    """Just before the rename: the content, the open file's stat and the stat of the
+    name being replaced are still those of `first`."""
+    if (
+        not _holds(held, original)
+        or _stamp(os.fstat(held)) != _stamp(first)
+        or _stamp(os.stat(target, follow_symlinks=False)) != _stamp(first)
+    ):
+        raise NotReplacedError("changed while it was read")
+
+
+def _stamp(st: os.stat_result) -> tuple[int, ...]:
+    return (
+        st.st_size,
+        st.st_mtime_ns,
+        st.st_ctime_ns,
+        st.st_ino,
+        st.st_dev,
+        st.st_nlink,
+        st.st_mode,
+        st.st_uid,
+        st.st_gid,
     )
+
+
+def _holds(fd: int, original: bytes) -> bool:
+    """Whether the open file holds exactly `original`."""
+    return _head(fd, len(original) + 1) == original
+
+
+def _head(fd: int, limit: int) -> bytes:
+    """At most `limit` bytes of the open file, from its start."""
+    os.lseek(fd, 0, os.SEEK_SET)
+    chunks = []
+    size = 0
+    while size < limit and (chunk := os.read(fd, min(1 << 20, limit - size))):
+        chunks.append(chunk)
+        size += len(chunk)
+    return b"".join(chunks)
+
+
+def _copy_metadata(held: int | None, out: int, strict: bool) -> None:
+    """Give `out` the owner, group, extended attributes and mode of the file open
+    as `held`, or 0644 without one. What this user cannot give is left as the new
+    file has it, or, when `strict`, refused (NotReplacedError)."""
+    if held is None:
+        os.fchmod(out, _NEW_FILE_MODE)
+        return
+    source, made = os.fstat(held), os.fstat(out)
+    if (source.st_uid, source.st_gid) != (made.st_uid, made.st_gid):
+        try:
+            os.fchown(out, source.st_uid, source.st_gid)
+        except PermissionError:
+            if strict:
+                raise NotReplacedError(
+                    f"owned by uid {source.st_uid}, gid {source.st_gid}, which "
+                    "this user cannot give the rewritten file"
+                ) from None
+    for name in _xattr_names(held, strict):
+        try:
+            value = os.getxattr(held, name)
+            if _xattr(out, name) != value:
+                os.setxattr(out, name, value)
+        except OSError as err:
+            if strict:
+                raise NotReplacedError(
+                    f"its extended attribute {name} cannot be kept ({_reason(err)})"
+                ) from None
+    os.fchmod(out, stat.S_IMODE(source.st_mode))  # after fchown, which clears setuid
+
+
+def _xattr_names(fd: int, strict: bool) -> list[str]:
+    if not hasattr(os, "listxattr"):
+        return []
     try:
-        with os.fdopen(fd, "wb") as out:
-            out.write(data)
-            out.flush()
-            os.fsync(out.fileno())
-        if mode is not None:
-            os.chmod(tmp, mode)
-        os.replace(tmp, target)
-    except BaseException:
-        with contextlib.suppress(OSError):
-            os.unlink(tmp)
-        raise
+        return os.listxattr(fd)
+    except OSError as err:
+        if err.errno in (errno.ENOTSUP, errno.EOPNOTSUPP) or not strict:
+            return []  # a file system without extended attributes
+        raise NotReplacedError(
+            f"its extended attributes cannot be read ({_reason(err)})"
+        ) from None
+
+
+def _xattr(fd: int, name: str) -> bytes | None:
+    try:
+        return os.getxattr(fd, name)
+    except OSError:
+        return None
 
 
 def create_exclusive(path: str | os.PathLike[str], data: bytes) -> bool:

@@ -3,13 +3,16 @@ variables whose unit the analysis can pin down, as a unified diff; `--apply` wri
 it.
 
 It never damages a file: the edited text must parse to the same program plus the
-annotations (and the import), or nothing is shown or written; lines are split where
-`ast` splits them; the import goes below a shebang, an encoding cookie, a licence
-header, the docstring and `__future__` imports; line endings and the encoding (a BOM,
-a PEP 263 cookie) are kept; the write is atomic (robotfix.fs), only if the file has
-not changed since it was read, and never through a symlink to a file outside the
-checked paths. A file that cannot be read or written gets one line on stderr, the
-others are still processed, and the exit status is then 2.
+annotations (and the import), and every name the annotations write must mean there
+what the edit means (robotfix.bindings: `typing.Annotated` when the module binds
+`Annotated` itself), or nothing is shown or written; lines are split where `ast`
+splits them; the import goes below a shebang, an encoding cookie, a licence header,
+the docstring and `__future__` imports; line endings and the encoding (a BOM, a PEP
+263 cookie) are kept; the write is atomic and keeps the owner, group, mode and
+extended attributes (robotfix.fs), only of a file with one name that has not changed
+since it was read, and never through a symlink to a file outside the checked paths.
+A file that cannot be read or written gets one line on stderr, the others are still
+processed, and the exit status is then 2.
 """
 
 from __future__ import annotations
@@ -25,13 +28,13 @@ import warnings
 from pathlib import Path
 
 from robotfix import api, fs
+from robotfix.bindings import IMPORTS, Bindings
 from robotfix.config import Config, ConfigError, load
 from robotfix.discovery import discover, install_space
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.source import LINE_BREAK
 
 EXIT_OK, EXIT_FAILURE = 0, 2
-_IMPORT = "from typing import Annotated"
 
 
 class UnsafeEditError(Exception):
@@ -136,14 +139,10 @@ def _write(
         _say(f"robotfix: {file}: read-only; not written")
         return False
     try:
-        unchanged = fs.read_regular(real) == original
-    except fs.UnreadableError:
-        unchanged = False
-    if not unchanged:
-        _say(f"robotfix: {file} changed while it was read; not written")
+        fs.atomic_write(real, data, original)
+    except fs.NotReplacedError as err:
+        _say(f"robotfix: {file}: {err.reason}{'' if err.replaced else '; not written'}")
         return False
-    try:
-        fs.atomic_write(real, data)
     except OSError as err:
         _say(f"robotfix: {file}: cannot write: {err.strerror or err}; left as it was")
         return False
@@ -193,13 +192,20 @@ def _catalog(paths: list[Path], msg_paths: list[Path], settings: Config) -> MsgC
 
 
 def annotate(text: str, path: str, catalog: MsgCatalog) -> str:
-    """The text with every suggestion applied, and `Annotated` imported if needed.
-    UnsafeEditError if the result would not be the same program plus the annotations."""
+    """The text with every suggestion applied, and `Annotated` imported if needed
+    (spelt `typing.Annotated` when the module binds `Annotated` itself).
+    UnsafeEditError if the result would not be the same program plus the
+    annotations, or a name the edit writes would mean something else there."""
     suggestions = api.unit_suggestions(text, path, catalog)
     if not suggestions:
         return text
+    tree = _parse(text)
+    if tree is None:
+        return text
+    names = _bindings(text, tree)
+    spelling = _spelling(names)
     lines = _split(text)
-    applied = 0
+    applied: list[int] = []
     for s in sorted(suggestions, key=lambda s: (s.line, s.col), reverse=True):
         if not 1 <= s.line <= len(lines):
             continue
@@ -208,27 +214,48 @@ def annotate(text: str, path: str, catalog: MsgCatalog) -> str:
         stop = start + len(s.name)
         if not _whole_name(body, start, stop, s.name):
             continue
-        annotation = f": Annotated[{s.kind}, \"Unit('{s.unit}')\"]"
+        annotation = f": {spelling}[{s.kind}, \"Unit('{s.unit}')\"]"
         rest = body[stop:]
         if rest.startswith("=") and not rest.startswith("=="):
             rest = " = " + rest[1:].lstrip(" ")  # a default: `speed: T = 0.5`
         lines[s.line - 1] = (body[:stop] + annotation + rest, end)
-        applied += 1
+        applied.append(s.line)
     if not applied:
         return text
-    tree = _parse(text)
-    if tree is None:
-        return text
-    imported = "Annotated" in _imported_names(tree)
-    if not imported:
+    root = spelling.split(".")[0]
+    imported_at = names.imported_at(root)
+    if imported_at is None or imported_at >= min(applied):
         at = _import_index(text, tree)
         newline = _newline(text, lines, at)
         if at > 0 and not lines[at - 1][1]:  # the last line, without a break
             lines[at - 1] = (lines[at - 1][0], newline)
-        lines.insert(at, (_IMPORT, newline))
+        lines.insert(at, (IMPORTS[root], newline))
+        applied = [line + (line > at) for line in applied]
     result = "".join(body + end for body, end in lines)
-    _verify(tree, result, applied, imported)
+    _verify(tree, result, applied)
     return result
+
+
+def _bindings(text: str, tree: ast.Module, edited: bool = False) -> Bindings:
+    try:
+        return Bindings(text, tree)
+    except (SyntaxError, ValueError) as err:
+        would = "edited file would not compile" if edited else "file does not compile"
+        raise UnsafeEditError(f"the {would} ({err})") from None
+    except (RecursionError, MemoryError):
+        raise UnsafeEditError("the file is nested too deeply to check") from None
+
+
+def _spelling(names: Bindings) -> str:
+    """`Annotated`, or `typing.Annotated` if the module binds `Annotated` to
+    anything but typing's; UnsafeEditError if it binds `typing` too."""
+    if not names.rebound("Annotated"):
+        return "Annotated"
+    if not names.rebound("typing"):
+        return "typing.Annotated"
+    raise UnsafeEditError(
+        "this module binds both `Annotated` and `typing` to something else"
+    )
 
 
 def _split(text: str) -> list[tuple[str, str]]:
@@ -267,14 +294,6 @@ def _parse(text: str) -> ast.Module | None:
             return ast.parse(text)
     except (SyntaxError, ValueError, RecursionError, MemoryError):
         return None
-
-
-def _imported_names(tree: ast.Module) -> set[str]:
-    names: set[str] = set()
-    for node in tree.body:
-        if isinstance(node, ast.ImportFrom):
-            names.update(a.asname or a.name for a in node.names)
-    return names
 
 
 def _import_index(text: str, tree: ast.Module) -> int:
@@ -327,10 +346,12 @@ def _newline(text: str, lines: list[tuple[str, str]], at: int) -> str:
     return first.group() if first else "\n"
 
 
-def _verify(before: ast.Module, text: str, applied: int, imported: bool) -> None:
-    """The edited text is the same program plus `applied` annotations (and the
-    import): anything else raises UnsafeEditError, and nothing is shown or written.
-    `before` (the original's tree) is normalised in place."""
+def _verify(before: ast.Module, text: str, applied: list[int]) -> None:
+    """The edited text is the same program plus the annotations on the `applied`
+    lines (one per entry) and the import, and every name those annotations write
+    means there what the edit meant: anything else raises UnsafeEditError, and
+    nothing is shown or written. `before` (the original's tree) is normalised in
+    place."""
     after = _parse(text)
     if after is None:
         try:
@@ -340,14 +361,46 @@ def _verify(before: ast.Module, text: str, applied: int, imported: bool) -> None
         except (RecursionError, MemoryError):
             pass
         raise UnsafeEditError("the edited file would not parse")
-    if not imported and "Annotated" not in _imported_names(after):
-        raise UnsafeEditError("the import of `Annotated` could not be placed")
+    _verify_names(text, after, set(applied))
     added = _count_annotated(after) - _count_annotated(before)
     # the transformer edits in place: `before` is not used after this
-    if added != applied or ast.dump(_Unannotate().visit(after)) != ast.dump(
+    if added != len(applied) or ast.dump(_Unannotate().visit(after)) != ast.dump(
         _Unannotate().visit(before)
     ):
         raise UnsafeEditError("the edit would change more than the annotations")
+
+
+def _verify_names(text: str, after: ast.Module, lines: set[int]) -> None:
+    """Each name the annotations on `lines` write (`Annotated` or `typing`, and
+    `float`) is bound nowhere in the module to anything else, and one that needs
+    an import is imported at the top level above its first use."""
+    first: dict[str, int] = {}
+    for node in ast.walk(after):
+        if isinstance(node, (ast.AnnAssign, ast.arg)) and node.lineno in lines:
+            for name in _written_names(node.annotation):
+                first[name] = min(first.get(name, node.lineno), node.lineno)
+    names = _bindings(text, after, edited=True)
+    for name, line in sorted(first.items()):
+        if names.rebound(name):
+            raise UnsafeEditError(f"`{name}` is bound in this module to something else")
+        at = names.imported_at(name)
+        if name in IMPORTS and (at is None or at >= line):
+            raise UnsafeEditError(f"`{name}` would be used above its import")
+
+
+def _written_names(annotation: ast.expr | None) -> list[str]:
+    """The names in an annotation as `annotate` writes it: `Annotated` (or
+    `typing`) and the type's name; none for any other annotation."""
+    if not (
+        _is_suggested(annotation)
+        and isinstance(annotation, ast.Subscript)
+        and isinstance(annotation.slice, ast.Tuple)
+    ):
+        return []
+    head = annotation.value
+    root = head.value if isinstance(head, ast.Attribute) else head
+    kind = annotation.slice.elts[0]
+    return [n.id for n in (root, kind) if isinstance(n, ast.Name)]
 
 
 def _count_annotated(tree: ast.Module) -> int:
@@ -359,11 +412,11 @@ def _count_annotated(tree: ast.Module) -> int:
 
 
 def _is_suggested(annotation: ast.expr | None) -> bool:
-    """`Annotated[float, "Unit('...')"]`, as `annotate` writes it."""
+    """`Annotated[float, "Unit('...')"]` (or `typing.Annotated[...]`), as
+    `annotate` writes it."""
     return (
         isinstance(annotation, ast.Subscript)
-        and isinstance(annotation.value, ast.Name)
-        and annotation.value.id == "Annotated"
+        and _is_annotated(annotation.value)
         and isinstance(annotation.slice, ast.Tuple)
         and len(annotation.slice.elts) == 2
         and isinstance(annotation.slice.elts[1], ast.Constant)
@@ -372,10 +425,22 @@ def _is_suggested(annotation: ast.expr | None) -> bool:
     )
 
 
+def _is_annotated(head: ast.expr) -> bool:
+    """`Annotated` or `typing.Annotated`."""
+    if isinstance(head, ast.Attribute):
+        return head.attr == "Annotated" and _is_name(head.value, "typing")
+    return _is_name(head, "Annotated")
+
+
+def _is_name(node: ast.expr, name: str) -> bool:
+    return isinstance(node, ast.Name) and node.id == name
+
+
 class _Unannotate(ast.NodeTransformer):
     """`x: T = v` and `self.x: T = v` -> `x = v`, a parameter's
-    `Annotated[float, "Unit(...)"]` dropped, and `from typing import Annotated`
-    dropped: what is left must be the same before and after the edit."""
+    `Annotated[float, "Unit(...)"]` dropped, and the imports the edit adds
+    (`from typing import Annotated`, `import typing`) dropped: what is left must be
+    the same before and after the edit."""
 
     def visit_AnnAssign(self, node: ast.AnnAssign) -> ast.AST:
         if node.value is None or not isinstance(node.target, (ast.Name, ast.Attribute)):
@@ -387,10 +452,16 @@ class _Unannotate(ast.NodeTransformer):
             node.annotation = None
         return node
 
+    def visit_Import(self, node: ast.Import) -> ast.AST | None:
+        return _unless_added(node)
+
     def visit_ImportFrom(self, node: ast.ImportFrom) -> ast.AST | None:
-        if node.module == "typing" and [a.name for a in node.names] == ["Annotated"]:
-            return None
-        return node
+        return _unless_added(node)
+
+
+def _unless_added(node: ast.Import | ast.ImportFrom) -> ast.AST | None:
+    """None for an import as the edit adds it, else the import."""
+    return None if ast.unparse(node) in IMPORTS.values() else node
 
 
 def _plural(n: int, word: str) -> str:

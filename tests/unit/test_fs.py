@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import stat
 from pathlib import Path
 
 import pytest
@@ -69,6 +70,73 @@ def test_atomic_write_keeps_mode_and_replaces_a_link_not_its_target(
     assert victim.read_text() == "precious\n"
     assert not link.is_symlink() and link.read_text() == "{}"
     assert [p.name for p in tmp_path.iterdir() if p.suffix == ".tmp"] == []
+
+
+def test_atomic_write_over_a_symlink_makes_a_0644_file(tmp_path: Path) -> None:
+    # a symlink's own mode is 0777: planted at a cache file name, it made the
+    # cache world-writable (reliability2 N4)
+    (tmp_path / "out.json").write_text("{}")
+    link = tmp_path / "results.json"
+    link.symlink_to(tmp_path / "out.json")
+    fs.atomic_write(link, b"{}")
+    assert not link.is_symlink()
+    assert stat.S_IMODE(link.stat().st_mode) == 0o644
+    fs.atomic_write(tmp_path / "new.json", b"{}")
+    assert stat.S_IMODE((tmp_path / "new.json").stat().st_mode) == 0o644
+
+
+def test_atomic_write_keeps_extended_attributes(tmp_path: Path) -> None:
+    target = tmp_path / "results.json"
+    target.write_text("{}")
+    try:
+        os.setxattr(target, "user.origin", b"kept")
+    except OSError:
+        pytest.skip("no user extended attributes on this file system")
+    fs.atomic_write(target, b"[]")
+    assert os.getxattr(target, "user.origin") == b"kept"
+
+
+@pytest.mark.skipif(os.geteuid() != 0, reason="giving a file away: root")
+def test_atomic_write_as_root_keeps_the_owner(tmp_path: Path) -> None:
+    target = tmp_path / "results.json"
+    target.write_text("{}")
+    os.chown(target, 1234, 1234)
+    target.chmod(0o4750)  # fchown clears setuid: the mode is set after it
+    fs.atomic_write(target, b"[]")
+    info = target.stat()
+    assert (info.st_uid, info.st_gid, stat.S_IMODE(info.st_mode)) == (
+        1234,
+        1234,
+        0o4750,
+    )
+
+
+def test_atomic_write_with_original_refuses_a_changed_file(tmp_path: Path) -> None:
+    target = tmp_path / "node.py"
+    target.write_text("new\n")
+    with pytest.raises(fs.NotReplacedError, match="changed while it was read"):
+        fs.atomic_write(target, b"annotated\n", original=b"old\n")
+    assert target.read_text() == "new\n"
+    (tmp_path / "link.py").symlink_to(target)
+    with pytest.raises(fs.NotReplacedError, match="a symlink"):
+        fs.atomic_write(tmp_path / "link.py", b"annotated\n", original=b"new\n")
+    assert (tmp_path / "link.py").is_symlink()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["link.py", "node.py"]
+
+
+def test_atomic_write_with_original_refuses_a_file_locked_by_another_program(
+    tmp_path: Path,
+) -> None:
+    fcntl = pytest.importorskip("fcntl")
+    target = tmp_path / "node.py"
+    target.write_text("old\n")
+    with open(target) as other:
+        fcntl.flock(other, fcntl.LOCK_EX)
+        with pytest.raises(fs.NotReplacedError, match="locked by another program"):
+            fs.atomic_write(target, b"annotated\n", original=b"old\n")
+    assert target.read_text() == "old\n"
+    fs.atomic_write(target, b"annotated\n", original=b"old\n")
+    assert target.read_text() == "annotated\n"
 
 
 def test_atomic_write_failure_leaves_the_original(
