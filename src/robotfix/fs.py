@@ -29,7 +29,15 @@ except ImportError:  # not on Windows
 MAX_FILE_BYTES = 32 * 1024 * 1024  # no source or interface file is near this
 _FLAGS = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0)
 _NOFOLLOW = getattr(os, "O_NOFOLLOW", 0)
-_NEW_FILE_MODE = 0o644  # what `atomic_write` gives a file that replaces no regular file
+# what `atomic_write` gives a file that replaces no regular file: 0666 less the
+# umask, as `open()` would (0644 under the usual umask 022, 0600 under 077)
+_NEW_FILE_MODE = 0o666
+
+
+def _umask() -> int:
+    mask = os.umask(0o022)  # POSIX has no read-only query; set it back at once
+    os.umask(mask)
+    return mask
 _MEANWHILE = "another program wrote to it during the rewrite"
 _LOST = f"{_MEANWHILE}, and one of its writes is lost"
 
@@ -122,7 +130,8 @@ def atomic_write(
     given the replaced file's owner, group, extended attributes (ACLs among them)
     and permission bits, fsync'd and renamed over `path`: the rename replaces a
     symlink at `path` itself, never its target. Only a regular file at `path` lends
-    its metadata; anything else (nothing, a symlink, a FIFO) gives 0644.
+    its metadata; anything else (nothing, a symlink, a FIFO) gives 0666 less the
+    umask.
 
     With `original` (a user's file, as it was read) nothing is written, and
     NotReplacedError says why, unless `path` is a regular file with that content,
@@ -280,10 +289,10 @@ def _head(fd: int, limit: int) -> bytes:
 
 def _copy_metadata(held: int | None, out: int, strict: bool) -> None:
     """Give `out` the owner, group, extended attributes and mode of the file open
-    as `held`, or 0644 without one. What this user cannot give is left as the new
-    file has it, or, when `strict`, refused (NotReplacedError)."""
+    as `held`, or 0666 less the umask without one. What this user cannot give is
+    left as the new file has it, or, when `strict`, refused (NotReplacedError)."""
     if held is None:
-        os.fchmod(out, _NEW_FILE_MODE)
+        os.fchmod(out, _NEW_FILE_MODE & ~_umask())
         return
     source, made = os.fstat(held), os.fstat(out)
     if (source.st_uid, source.st_gid) != (made.st_uid, made.st_gid):

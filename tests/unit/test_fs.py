@@ -72,17 +72,24 @@ def test_atomic_write_keeps_mode_and_replaces_a_link_not_its_target(
     assert [p.name for p in tmp_path.iterdir() if p.suffix == ".tmp"] == []
 
 
-def test_atomic_write_over_a_symlink_makes_a_0644_file(tmp_path: Path) -> None:
+@pytest.mark.parametrize("umask, mode", [(0o022, 0o644), (0o077, 0o600)])
+def test_atomic_write_over_a_symlink_makes_a_file_of_the_umask(
+    tmp_path: Path, umask: int, mode: int
+) -> None:
     # a symlink's own mode is 0777: planted at a cache file name, it made the
-    # cache world-writable (reliability2 N4)
+    # cache world-writable (reliability2 N4); a new file gets 0666 less the umask
     (tmp_path / "out.json").write_text("{}")
     link = tmp_path / "results.json"
     link.symlink_to(tmp_path / "out.json")
-    fs.atomic_write(link, b"{}")
+    before = os.umask(umask)
+    try:
+        fs.atomic_write(link, b"{}")
+        fs.atomic_write(tmp_path / "new.json", b"{}")
+    finally:
+        os.umask(before)
     assert not link.is_symlink()
-    assert stat.S_IMODE(link.stat().st_mode) == 0o644
-    fs.atomic_write(tmp_path / "new.json", b"{}")
-    assert stat.S_IMODE((tmp_path / "new.json").stat().st_mode) == 0o644
+    assert stat.S_IMODE(link.stat().st_mode) == mode
+    assert stat.S_IMODE((tmp_path / "new.json").stat().st_mode) == mode
 
 
 def test_atomic_write_keeps_extended_attributes(tmp_path: Path) -> None:
