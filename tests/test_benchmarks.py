@@ -30,7 +30,9 @@ def test_the_seed_workload_without_its_msg_folders_is_caught() -> None:
     """benchmarks/seed_programs.py and peers.py used to time this: 13 of 21 bugs."""
     files = seeds.programs(seeds.folders())
     found = check_paths(files, Config())
-    with pytest.raises(SystemExit, match=r"t16_negative_sum/buggy\.py: line 12"):
+    with pytest.raises(
+        SystemExit, match=r"t16_negative_sum/buggy\.py: line 12: expected error RF101"
+    ):
         seeds.verify(files, found.diagnostics, None)
 
 
