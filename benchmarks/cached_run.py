@@ -78,8 +78,8 @@ def run(tree: Path, cache: Path, jobs: int) -> tuple[str, dict[str, float]]:
     stats = [
         line.split() for line in done.stderr.splitlines() if line.startswith("STATS")
     ]
-    if not stats:
-        raise SystemExit(f"robotfix failed:\n{done.stderr}")
+    if not stats or done.returncode not in (0, 1):  # 2: a failure, or unchecked files
+        raise SystemExit(f"robotfix failed ({done.returncode}):\n{done.stderr}")
     _, files, cached, inner, _ = stats[-1]
     return done.stdout, {
         "wall": wall,

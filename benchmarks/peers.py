@@ -5,12 +5,17 @@ docs/performance.md:
 
     python benchmarks/peers.py [--real DIR ...] [--no-download] [--out FILE]
 
-Workloads: the thesis's 40 seed programs; a generated annotated module of 10,000
-lines (benchmarks/generate_annotated.py); real ROS Python, downloaded with pip at
-benchmark time into a temporary folder (the ros-rclpy, catkin-pkg and rospkg
-packages; nothing is committed), plus any --real folders (e.g. checkouts of
-ros2/demos). RobotFix and mypy run as fresh processes without caches (RobotFix with
--j 1, and again with all cores); ast.parse and RobotFix are also timed in-process.
+Workloads: the thesis's 40 seed programs, with every seed's msg/ folder (one
+catalog: a type several seeds define takes the first folder's definition); a
+generated annotated module of 10,000 lines (benchmarks/generate_annotated.py); real
+ROS Python, downloaded with pip at benchmark time into a temporary folder (the
+ros-rclpy, catkin-pkg and rospkg packages; nothing is committed), plus any --real
+folders (e.g. checkouts of ros2/demos). RobotFix and mypy run as fresh processes
+without caches (RobotFix with -j 1, and again with all cores); ast.parse and RobotFix
+are also timed in-process.
+A RobotFix run that fails (exit status 2), or whose status is not the one its findings
+call for, stops the benchmark; on the seed programs the in-process run's findings must
+be exactly the tests' (benchmarks/seeds.py).
 """
 
 from __future__ import annotations
@@ -37,6 +42,7 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from generate_annotated import generate  # noqa: E402
+from seeds import FOUND, folders, msg_folders, programs, verify  # noqa: E402
 
 from robotfix import __version__  # noqa: E402
 from robotfix.api import check_paths, python_files  # noqa: E402
@@ -54,13 +60,12 @@ def main() -> None:
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as scratch:
         work = Path(scratch)
-        workloads = [
-            ("seed programs (40)", sorted((ROOT / "tests/cases/seed").glob("*/*.py")))
-        ]
+        seeds = folders()
+        workloads = [("seed programs (40)", programs(seeds), msg_folders(seeds), True)]
         generated = work / "generated" / "annotated_node.py"
         generated.parent.mkdir()
         generated.write_text(generate(10_000))
-        workloads.append(("generated, annotated", [generated]))
+        workloads.append(("generated, annotated", [generated], [], False))
         real = list(args.real)
         if not args.no_download:
             real.append(download(work / "real"))
@@ -74,10 +79,11 @@ def main() -> None:
             )
             real_files = kept
         if real_files:
-            workloads.append(("real ROS code, unannotated", real_files))
-        rows = [measure(name, files, work) for name, files in workloads]
+            workloads.append(("real ROS code, unannotated", real_files, [], False))
+        rows = [measure(*workload, work) for workload in workloads]
     startup = statistics.median(
-        timed([sys.executable, "-m", "robotfix", "--version"]) for _ in range(10)
+        timed([sys.executable, "-m", "robotfix", "--version"], statuses=(0,))
+        for _ in range(10)
     )
     peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024
     report = render(rows, startup, peak, real)
@@ -122,20 +128,37 @@ def download(folder: Path) -> Path:
     return folder
 
 
-def timed(command: list[str], cwd: Path | None = None) -> float:
+def timed(
+    command: list[str], cwd: Path | None = None, statuses: tuple[int, ...] = (0, 1)
+) -> float:
+    """Seconds of one process, which must end with one of `statuses`."""
     started = time.perf_counter()
-    subprocess.run(command, cwd=cwd, capture_output=True, check=False)
-    return time.perf_counter() - started
+    done = subprocess.run(command, cwd=cwd, capture_output=True, check=False)
+    seconds = time.perf_counter() - started
+    if done.returncode not in statuses:
+        shown = " ".join(command[:5])
+        raise SystemExit(
+            f"{shown} ... exited {done.returncode}:\n{done.stderr.decode()[-2000:]}"
+        )
+    return seconds
 
 
-def measure(name: str, files: list[Path], work: Path) -> dict[str, object]:
+def measure(
+    name: str, files: list[Path], msgs: list[Path], asserted: bool, work: Path
+) -> dict[str, object]:
+    """`msgs`: the workload's interface folders; `asserted`: its files carry the
+    tests' assertions, which the run must meet exactly."""
     lines = sum(f.read_bytes().count(b"\n") for f in files)
     parse = parse_seconds([f.read_bytes() for f in files])
-    check_paths(files, Config(root=work))  # warm imports and machine caches
+    config = Config(root=work, msg_paths=tuple(msgs))
+    check_paths(files, config)  # warm imports and machine caches
     started = time.perf_counter()
-    found = check_paths(files, Config(root=work))
+    found = check_paths(files, config)
     inprocess = time.perf_counter() - started
-    args = [str(f) for f in files]
+    if asserted:
+        verify(files, found.diagnostics, None)
+    statuses = (FOUND,) if asserted else (0, FOUND)
+    args = [str(f) for f in files] + [a for m in msgs for a in ("--msg-path", str(m))]
     command = [
         sys.executable,
         "-m",
@@ -146,8 +169,10 @@ def measure(name: str, files: list[Path], work: Path) -> dict[str, object]:
         "concise",
         *args,
     ]
-    one = statistics.median(timed([*command, "-j", "1"], work) for _ in range(3))
-    every = statistics.median(timed(command, work) for _ in range(3))
+    one = statistics.median(
+        timed([*command, "-j", "1"], work, statuses) for _ in range(3)
+    )
+    every = statistics.median(timed(command, work, statuses) for _ in range(3))
     peak = robotfix_peak_mb(args, work)
     warm = None
     if len(files) > 100:  # "on every save": a second run with nothing changed
@@ -160,8 +185,8 @@ def measure(name: str, files: list[Path], work: Path) -> dict[str, object]:
             "concise",
             *args,
         ]
-        timed(cached, work)
-        warm = timed(cached, work)
+        timed(cached, work, statuses)
+        warm = timed(cached, work, statuses)
     mypy = mypy_checked = None
     if _has_module("mypy"):
         mypy, mypy_checked = run_mypy(files, work / f"mypy-{len(files)}")

@@ -41,15 +41,23 @@ for name in names.split("\\n"):
 """
 
 
-def timed(command: list[str], env: dict[str, str]) -> tuple[float, float, float]:
-    """Wall seconds, CPU seconds (user + sys) and maxrss (MB) of one process."""
-    started = time.perf_counter()
-    process = subprocess.Popen(
-        command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env
-    )
-    _, _, usage = os.wait4(process.pid, 0)
-    process.returncode = 0  # reaped by wait4: Popen must not wait for it again
-    wall = time.perf_counter() - started
+def timed(
+    command: list[str], env: dict[str, str], statuses: tuple[int, ...] = (0,)
+) -> tuple[float, float, float]:
+    """Wall seconds, CPU seconds (user + sys) and maxrss (MB) of one process, which
+    must end with one of `statuses` (a failed run is not timed)."""
+    with tempfile.TemporaryFile() as errors:  # a file: a pipe could fill and block
+        started = time.perf_counter()
+        process = subprocess.Popen(
+            command, stdout=subprocess.DEVNULL, stderr=errors, env=env
+        )
+        _, status, usage = os.wait4(process.pid, 0)
+        process.returncode = os.waitstatus_to_exitcode(status)  # reaped by wait4
+        wall = time.perf_counter() - started
+        if process.returncode not in statuses:
+            errors.seek(0)
+            shown = errors.read().decode(errors="replace")[-2000:]
+            raise SystemExit(f"{command[1:4]} exited {process.returncode}:\n{shown}")
     return wall, usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024
 
 
@@ -72,11 +80,12 @@ def main(argv: list[str]) -> None:
         floor = [sys.executable, str(floor_script), str(listing)]
         check = [sys.executable, "-m", "robotfix", "check", *map(str, folders)]
         check += ["--no-cache", "-j", "1", "--format", "concise"]
-        timed(check, env)  # warm-up: bytecode and the machine cache written once
+        found = (0, 1)  # robotfix check: no errors, errors found (2: a failure)
+        timed(check, env, found)  # warm-up: bytecode and the machine cache written
         floors, checks = [], []
         for _ in range(pairs):
             floors.append(timed(floor, env))
-            checks.append(timed(check, env))
+            checks.append(timed(check, env, found))
     floor_wall = statistics.median(w for w, _, _ in floors)
     floor_cpu = statistics.median(c for _, c, _ in floors)
     check_wall = statistics.median(w for w, _, _ in checks)

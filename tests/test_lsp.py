@@ -5,6 +5,8 @@ from __future__ import annotations
 
 from pathlib import Path
 from typing import Any
+from urllib.parse import urlparse
+from urllib.request import url2pathname
 
 from tests.lsp_client import Client
 
@@ -64,7 +66,11 @@ def test_language_server_session(tmp_path: Path) -> None:
     assert found == [("RF101", 3, 0, 3), ("RF201", 6, 0, 6)]
     rf201 = next(d for d in opened["diagnostics"] if d["code"] == "RF201")
     assert rf201["source"] == "robotfix" and "divide by 3.6" in rf201["message"]
-    assert rf201["codeDescription"]["href"].endswith("/rules/RF201")
+    # the link opens the rule's page installed beside the checker (no web site)
+    href = rf201["codeDescription"]["href"]
+    assert href.startswith("file:///") and href.endswith("/RF201.md")
+    page = Path(url2pathname(urlparse(href).path))
+    assert page.read_text(encoding="utf-8").startswith("# RF201 `unit-mismatch`")
     assert rf201["severity"] == 1
     hover = result["hover"]["result"]
     assert hover["contents"]["kind"] == "markdown"

@@ -7,7 +7,6 @@ The Python side (defaults, reads) is in tests/cases/params/."""
 from __future__ import annotations
 
 import math
-import re
 import shutil
 import time
 from pathlib import Path
@@ -23,24 +22,19 @@ from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
 from robotfix.ros import paramfile as P
 from robotfix.ros import yamlfile as Y
-from robotfix.testing.expectations import Expectation, compare
+from robotfix.testing.expectations import (
+    Expectation,
+    compare,
+    compare_files,
+    read_line_expectations,
+)
 
 PACKAGES = Path(__file__).parent / "cases" / "params" / "packages"
-_ASSERTION = re.compile(
-    r'#\s*(?P<kind>error|warning):\s*(?P<code>RF\d{3})(?:\s+"(?P<text>[^"]*)")?\s*$'
-)
 
 
 def yaml_expectations(path: Path) -> list[Expectation]:
     """`key: value  # error: RF101 "text"` at the end of a YAML line."""
-    found = []
-    for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), 1):
-        match = _ASSERTION.search(line)
-        if match is not None:
-            found.append(
-                Expectation(number, match["kind"], match["code"], match["text"])
-            )
-    return found
+    return read_line_expectations(path.read_text(encoding="utf-8"))
 
 
 def run(paths: list[Path], **kwargs: object) -> list[Diagnostic]:
@@ -56,13 +50,9 @@ def yaml_files(package: Path) -> list[Path]:
     "package", sorted(p for p in PACKAGES.iterdir() if p.is_dir()), ids=lambda p: p.name
 )
 def test_parameter_files_of_a_package(package: Path) -> None:
-    found = run([package])
-    problems = []
-    for path in yaml_files(package):
-        mine = [d for d in found if Path(d.path) == path]
-        problems += [
-            f"{path.name}: {p}" for p in compare(yaml_expectations(path), mine)
-        ]
+    """Every diagnostic of the run is compared: in the YAML files and in the nodes."""
+    files = [*yaml_files(package), *sorted(package.rglob("*.py"))]
+    problems = compare_files(files, run([package]))
     assert not problems, "\n".join(problems)
 
 

@@ -241,12 +241,26 @@ def test_unsafe_unit_strings_are_refused_before_pint(text: str) -> None:
         resolve(text)
 
 
-@pytest.mark.parametrize(
-    "text", ["m/s^2", "m/s**2", "1/s", "m²", "m⁻¹", "(m/s)^2", "m**-1", "utm-32N"]
-)
+ORDINARY_UNITS = {
+    "m/s^2": (("meter", 1), ("second", -2)),
+    "m/s**2": (("meter", 1), ("second", -2)),
+    "1/s": (("second", -1),),
+    "m²": (("meter", 2),),
+    "m⁻¹": (("meter", -1),),
+    "(m/s)^2": (("meter", 2), ("second", -2)),
+    "m**-1": (("meter", -1),),
+    "utm-32N": (("tag:utm-32N", 1),),  # not a unit: a label, compared by name
+}
+
+
+@pytest.mark.parametrize("text", ORDINARY_UNITS)
 def test_ordinary_unit_strings_still_resolve(text: str) -> None:
+    """The safety check lets them through, and pint reads them as the units they
+    are (a unit string it could not read would become a label, `tag:...`)."""
     check_text(text)
-    resolve(text)
+    unit = resolve(text)
+    assert unit.dims == ORDINARY_UNITS[text]
+    assert unit.factor == 1.0
 
 
 def test_unsafe_units_are_rf502_in_python_and_in_a_msg(tmp_path: Path) -> None:

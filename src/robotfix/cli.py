@@ -223,26 +223,11 @@ def run_explain(code: str) -> int:
             file=sys.stderr,
         )
         return EXIT_FAILURE
-    page = rule_page(rule.code)
-    if page is None:
-        write_stdout(f"{rule.code} {rule.name}: {rule.title}\n{rule.docs_url}\n")
-    else:
-        write_stdout(page)
+    from robotfix import rulepages
+
+    page = rulepages.text(rule.code)
+    write_stdout(page or f"{rule.code} {rule.name}: {rule.title}\n")
     return EXIT_OK
-
-
-def rule_page(code: str) -> str | None:
-    """The rule's page: shipped inside the wheel, or in the source tree's docs/."""
-    from importlib import resources
-
-    try:
-        shipped = resources.files("robotfix").joinpath("rule_docs", f"{code}.md")
-        if shipped.is_file():
-            return shipped.read_text(encoding="utf-8")
-    except (OSError, ModuleNotFoundError):
-        pass
-    source = Path(__file__).resolve().parents[2] / "docs" / "rules" / f"{code}.md"
-    return source.read_text(encoding="utf-8") if source.is_file() else None
 
 
 def run_lsp() -> int:

@@ -8,8 +8,6 @@ from __future__ import annotations
 import enum
 from dataclasses import dataclass
 
-DOCS_BASE = "https://robotfix.dev/docs"
-
 
 class Severity(enum.Enum):
     ERROR = "error"
@@ -25,10 +23,6 @@ class Rule:
     name: str  # "unit-mismatch": kebab-case, names the problem
     title: str  # one line
     severity: Severity = Severity.ERROR
-
-    @property
-    def docs_url(self) -> str:
-        return f"{DOCS_BASE}/rules/{self.code}"
 
 
 @dataclass(frozen=True, order=True)

@@ -27,7 +27,16 @@ from collections.abc import Callable, Iterable
 from pathlib import Path
 from typing import IO, TYPE_CHECKING, Any
 
-from robotfix import __version__, api, config, dependents, discovery, fs, source
+from robotfix import (
+    __version__,
+    api,
+    config,
+    dependents,
+    discovery,
+    fs,
+    rulepages,
+    source,
+)
 from robotfix.diagnostics import Diagnostic, Severity
 from robotfix.lsp import rpc
 from robotfix.lsp.documents import (
@@ -337,14 +346,17 @@ def _diagnostic(d: Diagnostic, lines: list[str]) -> dict[str, object]:
         "line": d.span.end_line - 1,
         "character": utf16(lines, d.span.end_line, d.span.end_col),
     }
-    return {
+    found: dict[str, object] = {
         "range": {"start": start, "end": end},
         "message": d.message + "".join(f"\n{n.message}" for n in d.notes),
         "severity": SEVERITIES[d.severity],
         "code": d.code,
-        "codeDescription": {"href": d.rule.docs_url},
         "source": "robotfix",
     }
+    page = rulepages.uri(d.code)  # the installed rule page: RobotFix has no site
+    if page is not None:
+        found["codeDescription"] = {"href": page}
+    return found
 
 
 # -- handlers ----------------------------------------------------------------------

@@ -12,7 +12,7 @@ from pathlib import PurePath, PurePosixPath
 from typing import Any
 from urllib.parse import quote_from_bytes
 
-from robotfix import __version__
+from robotfix import __version__, rulepages
 from robotfix.diagnostics import Diagnostic, Rule, Severity
 from robotfix.report.escape import clean_text
 
@@ -32,7 +32,6 @@ def render(
             "driver": {
                 "name": "RobotFix",
                 "version": __version__,
-                "informationUri": "https://robotfix.dev",
                 "rules": [_rule(rule) for rule in rules],
             }
         },
@@ -58,13 +57,16 @@ def render(
 
 
 def _rule(rule: Rule) -> dict[str, Any]:
-    return {
+    found: dict[str, Any] = {
         "id": rule.code,
         "name": rule.name,
         "shortDescription": {"text": rule.title},
-        "helpUri": rule.docs_url,
         "defaultConfiguration": {"level": LEVELS[rule.severity]},
     }
+    page = rulepages.uri(rule.code)  # the installed rule page: RobotFix has no site
+    if page is not None:
+        found["helpUri"] = page
+    return found
 
 
 def _result(d: Diagnostic, rule_index: int) -> dict[str, Any]:

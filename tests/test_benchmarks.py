@@ -1,0 +1,84 @@
+"""The benchmarks time what they say: a run that failed, or that checked less than
+the tests do, stops the benchmark instead of being reported as a time."""
+
+from __future__ import annotations
+
+import os
+import sys
+from pathlib import Path
+
+import pytest
+
+from robotfix.api import check_paths
+from robotfix.config import Config
+
+sys.path.insert(0, str(Path(__file__).parent.parent / "benchmarks"))
+import peers
+import seed_programs
+import seeds
+
+
+def test_the_seed_workload_with_its_msg_folders_is_the_tests_check() -> None:
+    files = seeds.programs(seeds.folders())
+    found = check_paths(
+        files, Config(msg_paths=tuple(seeds.msg_folders(seeds.folders())))
+    )
+    seeds.verify(files, found.diagnostics, None)
+
+
+def test_the_seed_workload_without_its_msg_folders_is_caught() -> None:
+    """benchmarks/seed_programs.py and peers.py used to time this: 13 of 21 bugs."""
+    files = seeds.programs(seeds.folders())
+    found = check_paths(files, Config())
+    with pytest.raises(
+        SystemExit, match=r"t16_negative_sum/buggy\.py: line 12: expected error RF101"
+    ):
+        seeds.verify(files, found.diagnostics, None)
+
+
+def test_a_wrong_exit_status_is_caught() -> None:
+    seed = seeds.SEED / "t14_forbidden_value"
+    found = check_paths([seed / "buggy.py"], Config())
+    seeds.verify([seed / "buggy.py"], found.diagnostics, seeds.FOUND)
+    with pytest.raises(SystemExit, match="exit status 0 with errors"):
+        seeds.verify([seed / "buggy.py"], found.diagnostics, 0)
+
+
+def _broken_project(tmp_path: Path) -> Path:
+    """A folder whose configuration robotfix refuses (exit status 2)."""
+    (tmp_path / "pyproject.toml").write_text("[tool.robotfix]\nmsg-paths = 3\n")
+    (tmp_path / "node.py").write_text("x = 1\n")
+    return tmp_path / "node.py"
+
+
+def test_peers_does_not_time_a_failed_run(tmp_path: Path) -> None:
+    node = _broken_project(tmp_path)
+    command = [sys.executable, "-m", "robotfix", "check", str(node)]
+    with pytest.raises(SystemExit, match="exited 2"):
+        peers.timed(command, tmp_path)
+
+
+def test_seed_programs_does_not_time_a_failed_run(tmp_path: Path) -> None:
+    node = _broken_project(tmp_path)
+    with pytest.raises(SystemExit, match="robotfix failed"):
+        seeds.checked([str(node)], [node], tmp_path, dict(os.environ))
+
+
+def test_a_timed_seed_run_replays_no_result_cache(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Each timed run gets an empty result cache of its own, so none is a replay (the
+    old benchmark timed the project's `.robotfix_cache/` after its warm-up)."""
+    seed = seeds.SEED / "t14_forbidden_value"
+    caches: list[str] = []
+
+    def record(args: list[str], *_: object) -> float:
+        cache = args[args.index("--cache-dir") + 1]
+        assert not Path(cache).exists()
+        caches.append(cache)
+        return 0.0
+
+    monkeypatch.setattr(seed_programs, "checked", record)
+    for _ in range(2):
+        seed_programs.fresh([str(seed / "buggy.py")], [seed / "buggy.py"])
+    assert len(set(caches)) == 2
