@@ -27,7 +27,7 @@ from robotfix.analysis.values import NONE, SEQUENCES, Items, Value, replace
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import NUMBERS, named_number
-from robotfix.annotations.units import DIMENSIONLESS, Unit, effective
+from robotfix.annotations.units import DIMENSIONLESS, Factors, Unit, converted
 from robotfix.diagnostics import Span
 from robotfix.ros.catalog import constant_term
 
@@ -81,6 +81,9 @@ class ExpressionEvaluator:
         # the symbol each attribute read last gave (`decisions.py`: two tests of
         # `scan.range_min` read one tracked value)
         self.attribute_terms: dict[int, int] = {}
+        # the products by a number literal, whose factor a literal applied to them
+        # extends (`x * 2.0 * math.pi / 60.0`: one factor, see `factors_of_product`)
+        self.open_chains: set[int] = set()
 
     # -- to be provided by the statement interpreter --------------------------
     def lookup_name(self, name: str, state: State, node: ast.AST) -> Value:
@@ -139,7 +142,7 @@ class ExpressionEvaluator:
         ):
             # e.g. `x = x + x` in a row: the term's tree doubles each time
             return replace(
-                self.unknown(node, result.kind, result.unit), scale=result.scale
+                self.unknown(node, result.kind, result.unit), factors=result.factors
             )
         return result
 
@@ -455,16 +458,18 @@ class ExpressionEvaluator:
         op = ARITH.get(type(node.op))
         if op is None:
             return replace(self._other_binop(node, left, right), uninit=uninit)
-        scale = 1.0
+        factors: Factors = ()
         rad_free = left.rad_free or right.rad_free
         if op in "+-":
             unit, literal = self.unit_of_sum(left, right, node, op)
-            scale = (
-                left.scale if unit is not None and unit == left.unit else right.scale
+            factors = (
+                left.factors
+                if unit is not None and unit == left.unit
+                else right.factors
             )
         else:
             unit, literal = self.unit_of_product(left, right, op)
-            scale = self.scale_of_product(left, right, op)
+            factors = self.factors_of_product(left, right, op, node)
             rad_free = rad_free or any(
                 v.unit is not None and not v.literal and _has_length(v.unit)
                 for v in (left, right)
@@ -474,12 +479,12 @@ class ExpressionEvaluator:
             return replace(
                 self.unknown(node, unit=unit),
                 uninit=uninit,
-                scale=scale,
+                factors=factors,
                 rad_free=rad_free,
             )
         term = A.Binary(op, left.term, right.term)
         return Value(
-            kind, term, unit, literal, uninit=uninit, scale=scale, rad_free=rad_free
+            kind, term, unit, literal, uninit=uninit, factors=factors, rad_free=rad_free
         )
 
     def _sequence_binop(self, node: ast.BinOp, left: Value, right: Value) -> Value:
@@ -517,21 +522,35 @@ class ExpressionEvaluator:
             return self.unknown(node, unit=left.unit.power(int(right.term.value)))
         return self.unknown(node)
 
-    def scale_of_product(self, left: Value, right: Value, op: str) -> float:
-        """Literal factors carried along (see `Value.scale`)."""
+    def factors_of_product(
+        self, left: Value, right: Value, op: str, node: ast.BinOp
+    ) -> Factors:
+        """Literal factors carried along (see `Value.factors`). A chain of them in
+        one expression is folded into one: `rpm * 2.0 * math.pi / 60.0` holds
+        2*pi/60, the rpm -> rad/s conversion."""
         if left.literal == right.literal:
-            return (
-                left.scale * (right.scale if op == "*" else 1 / right.scale)
-                if not left.literal
-                else 1.0
+            if left.literal:
+                return ()
+            return left.factors + (
+                right.factors if op == "*" else tuple(1 / f for f in right.factors)
             )
         number = constant_value(right.term if right.literal else left.term)
         if number is None or number == 0:
-            return 1.0
+            return ()
         if right.literal:
-            return left.scale * (number if op == "*" else 1 / number)
-        # `1000.0 / hz`: a period (1/Hz) scaled by 1000, i.e. in ms
-        return right.scale * number if op == "*" else number / right.scale
+            factor = number if op == "*" else 1 / number
+            held, inner = left.factors, node.left
+        else:  # `1000.0 / hz`: a period (1/Hz) scaled by 1000, i.e. in ms
+            factor = number
+            held = right.factors if op == "*" else tuple(1 / f for f in right.factors)
+            inner = node.right
+        if held and id(inner) in self.open_chains:
+            self.open_chains.add(id(node))
+            return held[:-1] + (held[-1] * factor,)
+        if factor == 1:
+            return held
+        self.open_chains.add(id(node))
+        return held + (factor,)
 
     def numeric_kind(self, left: Value, right: Value, op: str) -> str | None:
         kinds = {left.kind, right.kind}
@@ -552,9 +571,12 @@ class ExpressionEvaluator:
             return (right.unit if left.literal else left.unit), False
         if left.unit is None or right.unit is None:
             return None, False
-        if left.unit.same_as(right.unit):
+        if left.unit.same_as(right.unit) and not left.factors and not right.factors:
             return left.unit, False
-        there, back = right.fit(left.unit), left.fit(right.unit)
+        # each side against the unit the other has after its converting factors
+        # (`x_kmh / 3.6 + v`; `age > stale_s * 1000` compares s with ms)
+        there = right.fit(converted(left.unit, left.factors))
+        back = left.fit(converted(right.unit, right.factors))
         if (there is not None and there.kind == "ok") or (
             back is not None and back.kind == "ok"
         ):
@@ -589,8 +611,8 @@ class ExpressionEvaluator:
                 self.ctx.source.span(node),
                 text,
                 op,
-                effective(left.unit, left.scale),  # `t * 1000` is in ms
-                effective(right.unit, right.scale),
+                converted(left.unit, left.factors),  # `t * 1000` is in ms
+                converted(right.unit, right.factors),
             ),
             once=("operands", id(node)),
         )
@@ -777,7 +799,9 @@ class ExpressionEvaluator:
         kind = containers.item_kind(sequence)
         if kind not in ("int", "float", "bool", "str"):
             kind = "unknown"
-        value = replace(self.unknown(node, kind, sequence.unit), scale=sequence.scale)
+        value = replace(
+            self.unknown(node, kind, sequence.unit), factors=sequence.factors
+        )
         each = containers.each_of(sequence)
         if each != A.TRUE:
             state.assume(self.check.instantiate(each, value.known_term))
@@ -800,13 +824,13 @@ class ExpressionEvaluator:
         kind = "tuple" if node.__class__ is ast.Tuple else "list"
         elements = tuple(values)
         unit = containers.common_unit(elements)
-        scales = {v.scale for v in elements if not v.literal and v.unit == unit}
+        scales = {v.factors for v in elements if not v.literal and v.unit == unit}
         return Value(
             kind,
             unit=unit,
             elements=elements,
             items=Items(sites=tuple(node.elts)),
-            scale=scales.pop() if unit is not None and len(scales) == 1 else 1.0,
+            factors=scales.pop() if unit is not None and len(scales) == 1 else (),
         )
 
     eval_List = eval_Tuple

@@ -682,8 +682,8 @@ class Interpreter(CallEvaluator):
             value.kind if value.kind in ("int", "float", "bool", "str") else "unknown"
         )
         unit = None if value.literal else value.unit
-        scale = 1.0 if value.literal else value.scale  # `[r * 100 for r in ranges]`
-        return Value(kind, unit=unit, items=Items(item, each, size), scale=scale)
+        factors = () if value.literal else value.factors  # `[r * 100 for r in ranges]`
+        return Value(kind, unit=unit, items=Items(item, each, size), factors=factors)
 
     def _bind_plain(self, target: ast.expr, value: Value, state: State) -> None:
         """Bind a comprehension's target (its own names: no refinement applies)."""
@@ -1367,8 +1367,8 @@ class Interpreter(CallEvaluator):
             return x if same else Value("unknown")
         merged = self.ctx.fresh(kind, "a value set on several paths", unit)
         source = y if x.literal else x  # the side that gave the unit
-        if unit is not None and (x.literal != y.literal or x.scale == y.scale):
-            merged = replace(merged, scale=source.scale, rad_free=source.rad_free)
+        if unit is not None and (x.literal != y.literal or x.factors == y.factors):
+            merged = replace(merged, factors=source.factors, rad_free=source.rad_free)
         return replace(merged, literal=x.literal and y.literal)
 
     def selector(self) -> A.Expr:
