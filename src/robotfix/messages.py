@@ -442,7 +442,7 @@ def implicit_operand_change(
 def operand_units(
     path: str, span: Span, expr: str, op: str, left: Unit, right: Unit
 ) -> Diagnostic:
-    verb = {"+": "add", "-": "subtract"}.get(op, "compare")
+    verb = {"+": "add", "-": "subtract", "if": "choose between"}.get(op, "compare")
     message = f"`{expr}`: cannot {verb} {left} and {right}"
     fix = conversion(right, left)
     if fix:

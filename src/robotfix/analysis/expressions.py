@@ -67,6 +67,7 @@ STATIC_VALUES = frozenset(
 # dispatch of `ExpressionEvaluator.eval` without building a name and a bound method
 _EVAL: dict[tuple[type, type], Callable[..., Value] | None] = {}
 _MISSING: Callable[..., Value] = lambda *_: NONE  # noqa: E731 - a marker only
+MAX_ROOT = 4  # `x ** 0.25` has a unit; `x ** 0.3` (3/10) is left without one
 # terms with no subterms: never larger than TERM_LIMIT
 _LEAF_TERMS = (A.Sym, A.Num, A.Bool, A.Str, A.Name)
 
@@ -523,14 +524,15 @@ class ExpressionEvaluator:
             return self.unknown(node, unit=left.unit)
         if isinstance(node.op, ast.FloorDiv):
             return self.unknown(node, "int", self.unit_of_product(left, right, "/")[0])
+        exponent = _literal(right.term) if right.literal else None
         if (
             isinstance(node.op, ast.Pow)
-            and isinstance(right.term, A.Num)
-            and right.term.is_int
+            and isinstance(exponent, Fraction)
+            and exponent.denominator <= MAX_ROOT
             and left.unit is not None
             and not left.literal
-        ):
-            return self.unknown(node, unit=left.unit.power(int(right.term.value)))
+        ):  # `d ** 2`, `d ** 0.5` (a square root: the unit's root)
+            return self.unknown(node, unit=left.unit.raised(exponent))
         return self.unknown(node)
 
     def factors_of_product(
@@ -730,16 +732,21 @@ class ExpressionEvaluator:
         ):
             return self.unknown(node)
         kind = max(kinds, key=lambda k: KIND_ORDER.index(k) if k in KIND_ORDER else -1)
-        unit: Unit | None = None
-        if then.unit is not None and (orelse.literal or orelse.unit == then.unit):
-            unit = then.unit
-        elif orelse.unit is not None and then.literal:
-            unit = orelse.unit
+        # the arms must agree as the sides of a sum do (`a_m if c else b_ft`: RF202);
+        # a choice between frames (`p_map if use_map else p_odom`) is in neither
+        if (
+            then.unit is not None
+            and orelse.unit is not None
+            and frames.frame_of(then.unit) != frames.frame_of(orelse.unit)
+        ):
+            then = then.with_unit(frames.unframed(then.unit))
+            orelse = orelse.with_unit(frames.unframed(orelse.unit))
+        unit, literal = self.unit_of_sum(then, orelse, node, "if")
+        factors = then.factors if unit is not None and unit == then.unit else ()
+        if unit is not None and unit != then.unit:
+            factors = orelse.factors
         return Value(
-            kind,
-            A.Ite(cond, then.term, orelse.term),
-            unit,
-            then.literal and orelse.literal,
+            kind, A.Ite(cond, then.term, orelse.term), unit, literal, factors=factors
         )
 
     def sized(

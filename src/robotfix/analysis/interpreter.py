@@ -1268,6 +1268,8 @@ class Interpreter(CallEvaluator):
         else_state.assume(A.Unary("not", cond))
         if _truth(cond) is None:  # `if self.verbose:` right after setting it: no choice
             self._decided(node.test, then_state, else_state)
+        elif _literal_test(node.test):  # `if True:`, `if False: ... else:`, `if 0:`
+            (else_state if _truth(cond) else then_state).reachable = False
         if len(node.orelse) == 1 and type(node.orelse[0]) is ast.If:
             self.elifs.add(id(node.orelse[0]))
         elif not node.orelse and id(node) in self.elifs and _is_case(node.test):
@@ -1838,6 +1840,16 @@ def _first_parameter(function: Function) -> str | None:
     args = function.node.args
     every = [*args.posonlyargs, *args.args]
     return every[0].arg if every else None
+
+
+def _literal_test(test: ast.expr) -> bool:
+    """A test written with literals only (`True`, `not 0`, `1 and False`): Python
+    takes one branch only. A name's value (`TYPE_CHECKING`, a flag) is not folded."""
+    return all(
+        isinstance(n, (ast.Constant, ast.BoolOp, ast.UnaryOp, ast.Compare))
+        or isinstance(n, (ast.boolop, ast.unaryop, ast.cmpop))
+        for n in ast.walk(test)
+    )
 
 
 def _truth(cond: A.Expr) -> bool | None:

@@ -216,8 +216,10 @@ class LibraryEvaluator(ParameterEvaluator):
                 if function.rule != "scale":  # see `_scaled`
                     self._check_argument(function, param, value, state)
         self._argument_flows(function, node, args, kwargs, shift)
-        first = [v for p in function.params for v in given.get(p.name, [])[:1]]
-        values = [v for p in function.params for v in given.get(p.name, [])]
+        # a condition (`where(cond, x, y)`) has no part in a unit rule
+        quantities = [p for p in function.params if not p.flag]
+        first = [v for p in quantities for v in given.get(p.name, [])[:1]]
+        values = [v for p in quantities for v in given.get(p.name, [])]
         if function.rule is not None and values:
             found = self._unit_rule(function, first[0], values, node, state)
             if found is not None:
@@ -484,7 +486,4 @@ def _one_unit(params: Sequence[stubs.Param | None]) -> bool:
 
 
 def _root(unit: Unit) -> Unit | None:
-    if any(exp % 2 for _, exp in unit.dims) or unit.offset:
-        return None
-    dims = tuple((d, e // 2) for d, e in unit.dims)
-    return named(Unit(dims, math.sqrt(unit.factor)))
+    return unit.raised(Fraction(1, 2))

@@ -26,6 +26,7 @@ import math
 import re
 import unicodedata
 from dataclasses import dataclass, field
+from fractions import Fraction
 from importlib.util import find_spec
 from pathlib import Path
 from typing import Any
@@ -86,6 +87,16 @@ class Unit:
         )
         factor = self.factor**exponent
         return Unit(dims, factor, text=_render(dims, factor))
+
+    def raised(self, exponent: Fraction) -> Unit | None:
+        """The unit to a rational power (`d ** 0.5` of m^2 is m), or None when a
+        dimension's exponent would not be whole (`m ** 0.5`) or it has an offset."""
+        if exponent.denominator == 1:
+            return self.power(int(exponent))
+        if self.offset or any(e * exponent.numerator % exponent.denominator for _, e in self.dims):
+            return None
+        dims = tuple((d, int(e * exponent)) for d, e in self.dims)
+        return named(Unit(dims, self.factor ** float(exponent)))
 
     @property
     def is_label(self) -> bool:

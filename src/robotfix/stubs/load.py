@@ -63,6 +63,7 @@ class Param:
     keyword: bool  # may be passed by keyword
     decl: Refinement | None
     variadic: bool = False  # `*args`: this and every later position
+    flag: bool = False  # annotated `bool`: a condition, not a quantity (`where`)
 
 
 @dataclass(frozen=True)
@@ -477,6 +478,7 @@ class _Reader:
                     index,
                     arg not in args.posonlyargs,
                     self.annotation(arg.annotation, arg.arg),
+                    flag=_plain(arg.annotation) == "bool",
                 )
             )
         if args.vararg is not None:
