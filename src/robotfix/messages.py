@@ -378,7 +378,9 @@ def unit_mismatch(
                 fix = f"remove `{call}()`: the value is in {expected} without it"
     if twice is not None:
         how = (
-            f"multiplying by {twice:.6g}" if twice > 1 else f"dividing by {1 / twice:.6g}"
+            f"multiplying by {twice:.6g}"
+            if twice > 1
+            else f"dividing by {1 / twice:.6g}"
         )
         fix = (
             f"the value was in {expected} already, and {how} converts it a second "

@@ -402,9 +402,9 @@ class CallEvaluator(LibraryEvaluator):
                     return None
                 term = A.Func(name, (result.known_term, other.known_term))
                 # the literal factors of the side that gave the unit (as for +)
-                found = result.factors if unit == result.unit else other.factors
+                held = result.factors if unit == result.unit else other.factors
                 free = result.rad_free or other.rad_free
-                result = Value(kind, term, unit, literal, factors=found, rad_free=free)
+                result = Value(kind, term, unit, literal, factors=held, rad_free=free)
             return result
         if (
             name == "float"

@@ -559,11 +559,11 @@ class ExpressionEvaluator:
             inner = node.right
         if held and id(inner) in self.open_chains:
             self.open_chains.add(id(node))
-            return held[:-1] + (held[-1] * factor,)
+            return (*held[:-1], held[-1] * factor)
         if factor == 1:
             return held
         self.open_chains.add(id(node))
-        return held + (factor,)
+        return (*held, factor)
 
     def numeric_kind(self, left: Value, right: Value, op: str) -> str | None:
         kinds = {left.kind, right.kind}
@@ -732,6 +732,7 @@ class ExpressionEvaluator:
         ):
             return self.unknown(node)
         kind = max(kinds, key=lambda k: KIND_ORDER.index(k) if k in KIND_ORDER else -1)
+        term = A.Ite(cond, then.term, orelse.term)
         # the arms must agree as the sides of a sum do (`a_m if c else b_ft`: RF202);
         # a choice between frames (`p_map if use_map else p_odom`) is in neither
         if (
@@ -739,15 +740,13 @@ class ExpressionEvaluator:
             and orelse.unit is not None
             and frames.frame_of(then.unit) != frames.frame_of(orelse.unit)
         ):
-            then = then.with_unit(frames.unframed(then.unit))
-            orelse = orelse.with_unit(frames.unframed(orelse.unit))
+            then = replace(then, unit=frames.unframed(then.unit))
+            orelse = replace(orelse, unit=frames.unframed(orelse.unit))
         unit, literal = self.unit_of_sum(then, orelse, node, "if")
         factors = then.factors if unit is not None and unit == then.unit else ()
         if unit is not None and unit != then.unit:
             factors = orelse.factors
-        return Value(
-            kind, A.Ite(cond, then.term, orelse.term), unit, literal, factors=factors
-        )
+        return Value(kind, term, unit, literal, factors=factors)
 
     def sized(
         self,

@@ -1842,14 +1842,21 @@ def _first_parameter(function: Function) -> str | None:
     return every[0].arg if every else None
 
 
+_LITERAL_TEST = (
+    ast.Constant,
+    ast.BoolOp,
+    ast.UnaryOp,
+    ast.Compare,
+    ast.boolop,
+    ast.unaryop,
+    ast.cmpop,
+)
+
+
 def _literal_test(test: ast.expr) -> bool:
     """A test written with literals only (`True`, `not 0`, `1 and False`): Python
     takes one branch only. A name's value (`TYPE_CHECKING`, a flag) is not folded."""
-    return all(
-        isinstance(n, (ast.Constant, ast.BoolOp, ast.UnaryOp, ast.Compare))
-        or isinstance(n, (ast.boolop, ast.unaryop, ast.cmpop))
-        for n in ast.walk(test)
-    )
+    return all(isinstance(n, _LITERAL_TEST) for n in ast.walk(test))
 
 
 def _truth(cond: A.Expr) -> bool | None:

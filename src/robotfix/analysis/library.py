@@ -73,7 +73,10 @@ class LibraryEvaluator(ParameterEvaluator):
         name = _OPERATORS.get(type(node.op))
         if name is None:
             return None
-        for obj, other, method in ((left, right, name), (right, left, f"__r{name[2:]}")):
+        for obj, other, method in (
+            (left, right, name),
+            (right, left, f"__r{name[2:]}"),
+        ):
             if obj.kind != "object":
                 continue
             cls = resolve_library(self.ctx, obj.name)

@@ -93,7 +93,9 @@ class Unit:
         dimension's exponent would not be whole (`m ** 0.5`) or it has an offset."""
         if exponent.denominator == 1:
             return self.power(int(exponent))
-        if self.offset or any(e * exponent.numerator % exponent.denominator for _, e in self.dims):
+        if self.offset or any(
+            e * exponent.numerator % exponent.denominator for _, e in self.dims
+        ):
             return None
         dims = tuple((d, int(e * exponent)) for d, e in self.dims)
         return named(Unit(dims, self.factor ** float(exponent)))
@@ -273,7 +275,10 @@ def _mismatch(got: Unit, expected: Unit, factors: Factors, raw: Unit) -> Fit:
     twice = raw.factor / shown.factor
     again = math.isclose(raw.factor, expected.factor, rel_tol=1e-3)
     return Fit(
-        "mismatch", shown, Unit(expected.dims, shown.factor), twice=twice if again else None
+        "mismatch",
+        shown,
+        Unit(expected.dims, shown.factor),
+        twice=twice if again else None,
     )
 
 
