@@ -70,8 +70,14 @@ def test_the_same_factors_converting_and_plain_gains_stay_silent() -> None:
         ("rad", 2.0, True),
         ("m", 180 / 3.141592653589793, True),  # no angle: a plain factor
         ("rad", 1.0, True),
+        ("s", 1000.0, False),  # a time's conversions: issue 22
+        ("ns", 1e-9, False),
+        ("m/s", 3.6, False),
+        ("m", 100.0, False),
+        ("s", 2.0, True),
+        ("1", 1000.0, True),  # a count has no unit to convert
     ],
 )
 def test_fit_of_angle_factors(unit: str, scale: float, ok: bool) -> None:
-    found = fit(resolve(unit), resolve(unit), scale)
+    found = fit(resolve(unit), resolve(unit), (scale,))
     assert (found.kind == "ok") is ok

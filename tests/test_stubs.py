@@ -278,3 +278,19 @@ def test_a_changed_user_stub_invalidates_cached_results(project: Path) -> None:
     again = check_paths([project / "node.py"], config, use_cache=True)
     assert again.from_cache == 0
     assert codes_at(again.diagnostics, "node.py") == [(6, "RF201"), (7, "RF201")]
+
+
+def test_overloaded_operators_are_read_by_operand_type() -> None:
+    """`Time - Time` is a Duration and `Time - Duration` a Time (issue 22): each
+    `@overload` of an operator is kept under its operand's class."""
+    from robotfix.stubs.load import Class, stub_set
+
+    stubs = stub_set()
+    time = stubs.lookup("rclpy.time.Time")
+    assert isinstance(time, Class)
+    minus_time = stubs.member(time, "__sub__:rclpy.time.Time")
+    minus_duration = stubs.member(time, "__sub__:rclpy.duration.Duration")
+    assert minus_time is not None and minus_duration is not None
+    assert minus_time.returns_type == "rclpy.duration.Duration"
+    assert minus_duration.returns_type == "rclpy.time.Time"
+    assert stubs.member(time, "__sub__") is None  # no meaning without the operand

@@ -361,9 +361,11 @@ def unit_mismatch(
     got: Unit,
     declared: Declared,
     aligned: Unit | None = None,
+    twice: float | None = None,
 ) -> Diagnostic:
     """`aligned`: the value's unit over the expected dimensions, when only the
-    scale differs once the radian cancels (`omega_deg * r`)."""
+    scale differs once the radian cancels (`omega_deg * r`); `twice`: the literal
+    factor that converted a value already in `expected` (`p_s * 1000` into s)."""
     message = f"`{stmt}` gives {target} a value in {got}, but {target} is in {expected}"
     fix = conversion(got if aligned is None else aligned, expected)
     if aligned is not None and fix:
@@ -371,6 +373,19 @@ def unit_mismatch(
         if dict(got.dims).get("radian") and math.isclose(ratio, math.pi / 180):
             fix = f"use math.radians() on the angle to convert {got} to {expected}"
         fix = fix.replace(f"convert {aligned} to", f"convert {got} to")
+        for call, back in (("degrees", "radians"), ("radians", "degrees")):
+            if f"use math.{back}()" in fix and f"{call}(" in stmt:
+                fix = f"remove `{call}()`: the value is in {expected} without it"
+    if twice is not None:
+        how = (
+            f"multiplying by {twice:.6g}"
+            if twice > 1
+            else f"dividing by {1 / twice:.6g}"
+        )
+        fix = (
+            f"the value was in {expected} already, and {how} converts it a second "
+            "time: remove the factor"
+        )
     notes = [declared.note()]
     if fix:
         message += f": {fix}"
@@ -429,7 +444,7 @@ def implicit_operand_change(
 def operand_units(
     path: str, span: Span, expr: str, op: str, left: Unit, right: Unit
 ) -> Diagnostic:
-    verb = {"+": "add", "-": "subtract"}.get(op, "compare")
+    verb = {"+": "add", "-": "subtract", "if": "choose between"}.get(op, "compare")
     message = f"`{expr}`: cannot {verb} {left} and {right}"
     fix = conversion(right, left)
     if fix:

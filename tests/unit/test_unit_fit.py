@@ -8,7 +8,7 @@ import math
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from robotfix.annotations.units import fit, resolve
+from robotfix.annotations.units import converts, fit, resolve
 from robotfix.messages import conversion
 
 UNITS = [
@@ -38,7 +38,7 @@ def test_a_literal_factor_never_bridges_dimensions_but_time(
     got: str, expected: str, scale: float
 ) -> None:
     a, b = resolve(got), resolve(expected)
-    found = fit(a, b, scale)
+    found = fit(a, b, (scale,))
     ours, theirs = dict(a.dims), dict(b.dims)
     diff = {
         d: ours.get(d, 0) - theirs.get(d, 0)
@@ -46,8 +46,9 @@ def test_a_literal_factor_never_bridges_dimensions_but_time(
         if ours.get(d, 0) != theirs.get(d, 0)
     }
     if not diff:
-        converts = math.isclose(a.factor / scale, b.factor, rel_tol=1e-3)
-        assert (found.kind == "ok") == (converts or a.same_as(b))
+        needed = math.isclose(a.factor / scale, b.factor, rel_tol=1e-3)
+        plain = a.same_as(b) and not converts(a, scale)
+        assert (found.kind == "ok") == (needed or plain)
     elif found.kind == "ok":  # only a revolution: 2*pi between Hz and rad/s
         assert set(diff) == {"radian"}
     elif found.kind == "time":
@@ -71,16 +72,16 @@ def test_hz_and_rad_per_second() -> None:
     plain = fit(hz, rad_s)
     assert plain.kind == "mismatch"
     assert "2*math.pi" in conversion(hz, rad_s)
-    assert fit(hz, rad_s, scale=2 * math.pi).kind == "ok"
-    assert fit(rad_s, hz, scale=1 / (2 * math.pi)).kind == "ok"
-    assert fit(hz, rad_s, scale=0.5).kind == "mismatch"
+    assert fit(hz, rad_s, factors=(2 * math.pi,)).kind == "ok"
+    assert fit(rad_s, hz, factors=(1 / (2 * math.pi),)).kind == "ok"
+    assert fit(hz, rad_s, factors=(0.5,)).kind == "mismatch"
     assert conversion(resolve("rad"), resolve("1")) == ""
 
 
 def test_conversions_are_named_in_the_unit_the_value_has() -> None:
-    assert str(fit(resolve("s"), resolve("ns"), scale=1e6).got) == "us"
-    assert fit(resolve("1/Hz"), resolve("ms"), scale=1000.0).kind == "ok"
-    assert fit(resolve("ns"), resolve("s"), scale=1e-9).kind == "ok"
+    assert str(fit(resolve("s"), resolve("ns"), factors=(1e6,)).got) == "us"
+    assert fit(resolve("1/Hz"), resolve("ms"), factors=(1000.0,)).kind == "ok"
+    assert fit(resolve("ns"), resolve("s"), factors=(1e-9,)).kind == "ok"
 
 
 def test_frames_only_one_side_names_do_not_clash() -> None:
@@ -100,3 +101,23 @@ def test_an_implicit_gain_needs_the_same_scale() -> None:
     assert fit(resolve("m"), resolve("m/s")).kind == "time"
     assert fit(resolve("degree"), resolve("rad/s")).kind == "mismatch"
     assert fit(resolve("cm"), resolve("m/s")).kind == "mismatch"
+
+
+def test_a_folded_conversion_beside_a_plain_factor_fits() -> None:
+    """`avg * 2 * math.pi / 60` with `avg = (l + r) / 2`: the factors hold the rpm ->
+    rad/s conversion and a plain 1/2 (issue 22: it was "multiply by 2")."""
+    rpm, rad_s = resolve("rpm"), resolve("rad/s")
+    assert fit(rpm, rad_s, (0.5, 2 * math.pi / 60)).kind == "ok"
+    assert fit(rpm, rad_s, (0.5,)).kind == "mismatch"
+    assert fit(resolve("km/h"), resolve("m/s"), (0.5,)).got == resolve("km/h")
+
+
+def test_a_conversion_of_a_value_already_in_the_target_unit_is_a_mismatch() -> None:
+    seconds, ns = resolve("s"), resolve("ns")
+    twice = fit(seconds, seconds, (1000.0,))
+    assert (twice.kind, str(twice.got), twice.twice) == ("mismatch", "ms", 1000.0)
+    assert fit(ns, ns, (1e-9,)).kind == "mismatch"
+    assert fit(resolve("m/s"), resolve("m/s"), (3.6,)).kind == "mismatch"
+    assert fit(seconds, seconds, (2.0,)).kind == "ok"
+    assert fit(resolve("1"), resolve("1"), (1000.0,)).kind == "ok"  # a count
+    assert fit(resolve("m"), resolve("m"), (60.0,)).kind == "ok"  # not a length's

@@ -21,7 +21,7 @@ def test_a_value_is_copied_with_its_changes() -> None:
         name="x",
         elements=(Value("int"),),
         uninit=Uninit("x", False),
-        scale=2.0,
+        factors=(2.0,),
         default_of=(1, "x"),
         rad_free=True,
         items=Items("float"),
@@ -30,7 +30,7 @@ def test_a_value_is_copied_with_its_changes() -> None:
     for changes in [
         {},
         {"unit": None, "literal": False},
-        {"frame": None, "scale": 1.0},
+        {"frame": None, "factors": ()},
     ]:
         fast = replace(value, **changes)
         assert fast == dataclasses.replace(value, **changes)

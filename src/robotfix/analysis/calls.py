@@ -402,9 +402,9 @@ class CallEvaluator(LibraryEvaluator):
                     return None
                 term = A.Func(name, (result.known_term, other.known_term))
                 # the literal factors of the side that gave the unit (as for +)
-                scale = result.scale if unit == result.unit else other.scale
+                held = result.factors if unit == result.unit else other.factors
                 free = result.rad_free or other.rad_free
-                result = Value(kind, term, unit, literal, scale=scale, rad_free=free)
+                result = Value(kind, term, unit, literal, factors=held, rad_free=free)
             return result
         if (
             name == "float"
@@ -417,7 +417,7 @@ class CallEvaluator(LibraryEvaluator):
         if name in ("int", "round") and first.kind != "str":
             # `int(t * 1e9)` keeps its conversion: ns
             value = self.unknown(node, "int" if len(args) == 1 else "float", first.unit)
-            return replace(value, scale=first.scale, rad_free=first.rad_free)
+            return replace(value, factors=first.factors, rad_free=first.rad_free)
         if name == "bool" and len(args) == 1:
             return Value("bool", self.truthy(first, node, state))
         return None if name != "print" else NONE

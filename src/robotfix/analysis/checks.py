@@ -258,6 +258,7 @@ class Checker:
                 found.got,
                 declared,
                 found.aligned,
+                found.twice,
             )
         )
         return False

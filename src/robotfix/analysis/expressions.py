@@ -27,7 +27,7 @@ from robotfix.analysis.values import NONE, SEQUENCES, Items, Value, replace
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import NUMBERS, named_number
-from robotfix.annotations.units import DIMENSIONLESS, Unit, effective
+from robotfix.annotations.units import DIMENSIONLESS, Factors, Unit, converted
 from robotfix.diagnostics import Span
 from robotfix.ros.catalog import constant_term
 
@@ -67,6 +67,7 @@ STATIC_VALUES = frozenset(
 # dispatch of `ExpressionEvaluator.eval` without building a name and a bound method
 _EVAL: dict[tuple[type, type], Callable[..., Value] | None] = {}
 _MISSING: Callable[..., Value] = lambda *_: NONE  # noqa: E731 - a marker only
+MAX_ROOT = 4  # `x ** 0.25` has a unit; `x ** 0.3` (3/10) is left without one
 # terms with no subterms: never larger than TERM_LIMIT
 _LEAF_TERMS = (A.Sym, A.Num, A.Bool, A.Str, A.Name)
 
@@ -81,6 +82,9 @@ class ExpressionEvaluator:
         # the symbol each attribute read last gave (`decisions.py`: two tests of
         # `scan.range_min` read one tracked value)
         self.attribute_terms: dict[int, int] = {}
+        # the products by a number literal, whose factor a literal applied to them
+        # extends (`x * 2.0 * math.pi / 60.0`: one factor, see `factors_of_product`)
+        self.open_chains: set[int] = set()
 
     # -- to be provided by the statement interpreter --------------------------
     def lookup_name(self, name: str, state: State, node: ast.AST) -> Value:
@@ -139,7 +143,7 @@ class ExpressionEvaluator:
         ):
             # e.g. `x = x + x` in a row: the term's tree doubles each time
             return replace(
-                self.unknown(node, result.kind, result.unit), scale=result.scale
+                self.unknown(node, result.kind, result.unit), factors=result.factors
             )
         return result
 
@@ -451,20 +455,26 @@ class ExpressionEvaluator:
         left, right = self.eval(node.left, state), self.eval(node.right, state)
         if left.kind in SEQUENCES or right.kind in SEQUENCES:
             return self._sequence_binop(node, left, right)
+        if left.kind == "object" or right.kind == "object":
+            found = self.object_operation(node, left, right, state)
+            if found is not None:
+                return found
         uninit = left.uninit or right.uninit
         op = ARITH.get(type(node.op))
         if op is None:
             return replace(self._other_binop(node, left, right), uninit=uninit)
-        scale = 1.0
+        factors: Factors = ()
         rad_free = left.rad_free or right.rad_free
         if op in "+-":
             unit, literal = self.unit_of_sum(left, right, node, op)
-            scale = (
-                left.scale if unit is not None and unit == left.unit else right.scale
+            factors = (
+                left.factors
+                if unit is not None and unit == left.unit
+                else right.factors
             )
         else:
             unit, literal = self.unit_of_product(left, right, op)
-            scale = self.scale_of_product(left, right, op)
+            factors = self.factors_of_product(left, right, op, node)
             rad_free = rad_free or any(
                 v.unit is not None and not v.literal and _has_length(v.unit)
                 for v in (left, right)
@@ -474,13 +484,20 @@ class ExpressionEvaluator:
             return replace(
                 self.unknown(node, unit=unit),
                 uninit=uninit,
-                scale=scale,
+                factors=factors,
                 rad_free=rad_free,
             )
         term = A.Binary(op, left.term, right.term)
         return Value(
-            kind, term, unit, literal, uninit=uninit, scale=scale, rad_free=rad_free
+            kind, term, unit, literal, uninit=uninit, factors=factors, rad_free=rad_free
         )
+
+    def object_operation(
+        self, node: ast.BinOp, left: Value, right: Value, state: State
+    ) -> Value | None:
+        """`a - b` of objects of library classes (`Time - Time` is a Duration): what
+        the classes' stubs say (`library.py`); None when nothing is known."""
+        return None
 
     def _sequence_binop(self, node: ast.BinOp, left: Value, right: Value) -> Value:
         """`xs + ys` and `[0.0] * n` of lists and tuples."""
@@ -507,31 +524,46 @@ class ExpressionEvaluator:
             return self.unknown(node, unit=left.unit)
         if isinstance(node.op, ast.FloorDiv):
             return self.unknown(node, "int", self.unit_of_product(left, right, "/")[0])
+        exponent = _literal(right.term) if right.literal else None
         if (
             isinstance(node.op, ast.Pow)
-            and isinstance(right.term, A.Num)
-            and right.term.is_int
+            and isinstance(exponent, Fraction)
+            and exponent.denominator <= MAX_ROOT
             and left.unit is not None
             and not left.literal
-        ):
-            return self.unknown(node, unit=left.unit.power(int(right.term.value)))
+        ):  # `d ** 2`, `d ** 0.5` (a square root: the unit's root)
+            return self.unknown(node, unit=left.unit.raised(exponent))
         return self.unknown(node)
 
-    def scale_of_product(self, left: Value, right: Value, op: str) -> float:
-        """Literal factors carried along (see `Value.scale`)."""
+    def factors_of_product(
+        self, left: Value, right: Value, op: str, node: ast.BinOp
+    ) -> Factors:
+        """Literal factors carried along (see `Value.factors`). A chain of them in
+        one expression is folded into one: `rpm * 2.0 * math.pi / 60.0` holds
+        2*pi/60, the rpm -> rad/s conversion."""
         if left.literal == right.literal:
-            return (
-                left.scale * (right.scale if op == "*" else 1 / right.scale)
-                if not left.literal
-                else 1.0
+            if left.literal:
+                return ()
+            return left.factors + (
+                right.factors if op == "*" else tuple(1 / f for f in right.factors)
             )
         number = constant_value(right.term if right.literal else left.term)
         if number is None or number == 0:
-            return 1.0
+            return ()
         if right.literal:
-            return left.scale * (number if op == "*" else 1 / number)
-        # `1000.0 / hz`: a period (1/Hz) scaled by 1000, i.e. in ms
-        return right.scale * number if op == "*" else number / right.scale
+            factor = number if op == "*" else 1 / number
+            held, inner = left.factors, node.left
+        else:  # `1000.0 / hz`: a period (1/Hz) scaled by 1000, i.e. in ms
+            factor = number
+            held = right.factors if op == "*" else tuple(1 / f for f in right.factors)
+            inner = node.right
+        if held and id(inner) in self.open_chains:
+            self.open_chains.add(id(node))
+            return (*held[:-1], held[-1] * factor)
+        if factor == 1:
+            return held
+        self.open_chains.add(id(node))
+        return (*held, factor)
 
     def numeric_kind(self, left: Value, right: Value, op: str) -> str | None:
         kinds = {left.kind, right.kind}
@@ -552,9 +584,12 @@ class ExpressionEvaluator:
             return (right.unit if left.literal else left.unit), False
         if left.unit is None or right.unit is None:
             return None, False
-        if left.unit.same_as(right.unit):
+        if left.unit.same_as(right.unit) and not left.factors and not right.factors:
             return left.unit, False
-        there, back = right.fit(left.unit), left.fit(right.unit)
+        # each side against the unit the other has after its converting factors
+        # (`x_kmh / 3.6 + v`; `age > stale_s * 1000` compares s with ms)
+        there = right.fit(converted(left.unit, left.factors))
+        back = left.fit(converted(right.unit, right.factors))
         if (there is not None and there.kind == "ok") or (
             back is not None and back.kind == "ok"
         ):
@@ -589,8 +624,8 @@ class ExpressionEvaluator:
                 self.ctx.source.span(node),
                 text,
                 op,
-                effective(left.unit, left.scale),  # `t * 1000` is in ms
-                effective(right.unit, right.scale),
+                converted(left.unit, left.factors),  # `t * 1000` is in ms
+                converted(right.unit, right.factors),
             ),
             once=("operands", id(node)),
         )
@@ -697,17 +732,21 @@ class ExpressionEvaluator:
         ):
             return self.unknown(node)
         kind = max(kinds, key=lambda k: KIND_ORDER.index(k) if k in KIND_ORDER else -1)
-        unit: Unit | None = None
-        if then.unit is not None and (orelse.literal or orelse.unit == then.unit):
-            unit = then.unit
-        elif orelse.unit is not None and then.literal:
-            unit = orelse.unit
-        return Value(
-            kind,
-            A.Ite(cond, then.term, orelse.term),
-            unit,
-            then.literal and orelse.literal,
-        )
+        term = A.Ite(cond, then.term, orelse.term)
+        # the arms must agree as the sides of a sum do (`a_m if c else b_ft`: RF202);
+        # a choice between frames (`p_map if use_map else p_odom`) is in neither
+        if (
+            then.unit is not None
+            and orelse.unit is not None
+            and frames.frame_of(then.unit) != frames.frame_of(orelse.unit)
+        ):
+            then = replace(then, unit=frames.unframed(then.unit))
+            orelse = replace(orelse, unit=frames.unframed(orelse.unit))
+        unit, literal = self.unit_of_sum(then, orelse, node, "if")
+        factors = then.factors if unit is not None and unit == then.unit else ()
+        if unit is not None and unit != then.unit:
+            factors = orelse.factors
+        return Value(kind, term, unit, literal, factors=factors)
 
     def sized(
         self,
@@ -777,7 +816,9 @@ class ExpressionEvaluator:
         kind = containers.item_kind(sequence)
         if kind not in ("int", "float", "bool", "str"):
             kind = "unknown"
-        value = replace(self.unknown(node, kind, sequence.unit), scale=sequence.scale)
+        value = replace(
+            self.unknown(node, kind, sequence.unit), factors=sequence.factors
+        )
         each = containers.each_of(sequence)
         if each != A.TRUE:
             state.assume(self.check.instantiate(each, value.known_term))
@@ -800,13 +841,13 @@ class ExpressionEvaluator:
         kind = "tuple" if node.__class__ is ast.Tuple else "list"
         elements = tuple(values)
         unit = containers.common_unit(elements)
-        scales = {v.scale for v in elements if not v.literal and v.unit == unit}
+        scales = {v.factors for v in elements if not v.literal and v.unit == unit}
         return Value(
             kind,
             unit=unit,
             elements=elements,
             items=Items(sites=tuple(node.elts)),
-            scale=scales.pop() if unit is not None and len(scales) == 1 else 1.0,
+            factors=scales.pop() if unit is not None and len(scales) == 1 else (),
         )
 
     eval_List = eval_Tuple

@@ -682,8 +682,8 @@ class Interpreter(CallEvaluator):
             value.kind if value.kind in ("int", "float", "bool", "str") else "unknown"
         )
         unit = None if value.literal else value.unit
-        scale = 1.0 if value.literal else value.scale  # `[r * 100 for r in ranges]`
-        return Value(kind, unit=unit, items=Items(item, each, size), scale=scale)
+        factors = () if value.literal else value.factors  # `[r * 100 for r in ranges]`
+        return Value(kind, unit=unit, items=Items(item, each, size), factors=factors)
 
     def _bind_plain(self, target: ast.expr, value: Value, state: State) -> None:
         """Bind a comprehension's target (its own names: no refinement applies)."""
@@ -1268,6 +1268,8 @@ class Interpreter(CallEvaluator):
         else_state.assume(A.Unary("not", cond))
         if _truth(cond) is None:  # `if self.verbose:` right after setting it: no choice
             self._decided(node.test, then_state, else_state)
+        elif _literal_test(node.test):  # `if True:`, `if False: ... else:`, `if 0:`
+            (else_state if _truth(cond) else then_state).reachable = False
         if len(node.orelse) == 1 and type(node.orelse[0]) is ast.If:
             self.elifs.add(id(node.orelse[0]))
         elif not node.orelse and id(node) in self.elifs and _is_case(node.test):
@@ -1367,8 +1369,8 @@ class Interpreter(CallEvaluator):
             return x if same else Value("unknown")
         merged = self.ctx.fresh(kind, "a value set on several paths", unit)
         source = y if x.literal else x  # the side that gave the unit
-        if unit is not None and (x.literal != y.literal or x.scale == y.scale):
-            merged = replace(merged, scale=source.scale, rad_free=source.rad_free)
+        if unit is not None and (x.literal != y.literal or x.factors == y.factors):
+            merged = replace(merged, factors=source.factors, rad_free=source.rad_free)
         return replace(merged, literal=x.literal and y.literal)
 
     def selector(self) -> A.Expr:
@@ -1838,6 +1840,23 @@ def _first_parameter(function: Function) -> str | None:
     args = function.node.args
     every = [*args.posonlyargs, *args.args]
     return every[0].arg if every else None
+
+
+_LITERAL_TEST = (
+    ast.Constant,
+    ast.BoolOp,
+    ast.UnaryOp,
+    ast.Compare,
+    ast.boolop,
+    ast.unaryop,
+    ast.cmpop,
+)
+
+
+def _literal_test(test: ast.expr) -> bool:
+    """A test written with literals only (`True`, `not 0`, `1 and False`): Python
+    takes one branch only. A name's value (`TYPE_CHECKING`, a flag) is not folded."""
+    return all(isinstance(n, _LITERAL_TEST) for n in ast.walk(test))
 
 
 def _truth(cond: A.Expr) -> bool | None:

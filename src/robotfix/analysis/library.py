@@ -64,6 +64,40 @@ class LibraryEvaluator(ParameterEvaluator):
             return self.check.assumed(state, f".{attr}", found.decl, lookup)
         return self._object(found.type, state, f"`.{attr}`")
 
+    def object_operation(
+        self, node: ast.BinOp, left: Value, right: Value, state: State
+    ) -> Value | None:
+        """`now - self.prev` (rclpy Times: a Duration), `d * 2` (a rospy Duration):
+        the left operand's `__sub__`, or the right one's `__rsub__`, as its stub
+        says; an overload for the other operand's class (or builtin kind) first."""
+        name = _OPERATORS.get(type(node.op))
+        if name is None:
+            return None
+        for obj, other, method in (
+            (left, right, name),
+            (right, left, f"__r{name[2:]}"),
+        ):
+            if obj.kind != "object":
+                continue
+            cls = resolve_library(self.ctx, obj.name)
+            if not isinstance(cls, stubs.Class):
+                continue
+            operand = other.name if other.kind == "object" else _builtin(other)
+            keys = [f"{method}:{operand}", method]
+            if operand == "int":  # an int goes where a float is taken
+                keys.insert(1, f"{method}:float")
+            set_ = self._stubs()
+            function = next(
+                (f for f in (set_.member(cls, k) for k in keys) if f is not None), None
+            )
+            if function is None:
+                continue
+            param = function.params[0] if function.params else None
+            if param is not None and other.kind != "object":
+                self._check_argument(function, param, other, state)
+            return self.library_result(function, {}, node, state)
+        return None
+
     def instance_attribute(
         self, base: Value, var: str, node: ast.Attribute, state: State
     ) -> Value:
@@ -185,8 +219,10 @@ class LibraryEvaluator(ParameterEvaluator):
                 if function.rule != "scale":  # see `_scaled`
                     self._check_argument(function, param, value, state)
         self._argument_flows(function, node, args, kwargs, shift)
-        first = [v for p in function.params for v in given.get(p.name, [])[:1]]
-        values = [v for p in function.params for v in given.get(p.name, [])]
+        # a condition (`where(cond, x, y)`) has no part in a unit rule
+        quantities = [p for p in function.params if not p.flag]
+        first = [v for p in quantities for v in given.get(p.name, [])[:1]]
+        values = [v for p in quantities for v in given.get(p.name, [])]
         if function.rule is not None and values:
             found = self._unit_rule(function, first[0], values, node, state)
             if found is not None:
@@ -398,6 +434,20 @@ class LibraryEvaluator(ParameterEvaluator):
         return found
 
 
+_OPERATORS = {
+    ast.Add: "__add__",
+    ast.Sub: "__sub__",
+    ast.Mult: "__mul__",
+    ast.Div: "__truediv__",
+}
+
+
+def _builtin(value: Value) -> str:
+    """The builtin type an operand's overload is written with (`float` for a
+    number of unknown kind)."""
+    return value.kind if value.kind in ("int", "bool") else "float"
+
+
 def _pure_number(value: Value) -> bool:
     return value.is_number and (value.unit is None or not value.unit.dims)
 
@@ -439,7 +489,4 @@ def _one_unit(params: Sequence[stubs.Param | None]) -> bool:
 
 
 def _root(unit: Unit) -> Unit | None:
-    if any(exp % 2 for _, exp in unit.dims) or unit.offset:
-        return None
-    dims = tuple((d, e // 2) for d, e in unit.dims)
-    return named(Unit(dims, math.sqrt(unit.factor)))
+    return unit.raised(Fraction(1, 2))

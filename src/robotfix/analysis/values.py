@@ -12,7 +12,7 @@ from dataclasses import replace as _replace
 from typing import Any, TypeVar
 
 from robotfix.annotations import ast as A
-from robotfix.annotations.units import Fit, Unit, fit
+from robotfix.annotations.units import Factors, Fit, Unit, fit, product
 from robotfix.messages import Declared
 
 NUMERIC = frozenset({"int", "float", "bool"})
@@ -95,9 +95,11 @@ class Value:
     elements: tuple[Value, ...] | None = None  # tuple, list, dict (its values)
     keys: tuple[Value, ...] | None = None  # dict
     uninit: Uninit | None = None
-    # The product of the number literals this value was multiplied by since it got its
-    # unit: `speed / 3.6` is km/h scaled by 1/3.6, which is a conversion to m/s.
-    scale: float = 1.0
+    # The number literals this value was multiplied by since it got its unit, each
+    # chain of them in one expression folded into one factor: `speed / 3.6` is km/h
+    # scaled by 1/3.6, a conversion to m/s; `avg * 2 * math.pi / 60` with
+    # `avg = (l + r) / 2` holds 1/2 and 2*pi/60 (`units.fit` tells them apart).
+    factors: Factors = ()
     default_of: tuple[int, str] | None = field(default=None, compare=False)
     # Computed by a product or quotient with a length: one power of radian may cancel
     # or appear, as the radian is a ratio of lengths (`omega * r` is m/s).
@@ -121,11 +123,16 @@ class Value:
         if (
             self.unit == unit
             and not self.literal
-            and self.scale == 1.0
+            and not self.factors
             and not self.rad_free
         ):
             return self
-        return replace(self, unit=unit, literal=False, scale=1.0, rad_free=False)
+        return replace(self, unit=unit, literal=False, factors=(), rad_free=False)
+
+    @property
+    def scale(self) -> float:
+        """The product of the literal factors."""
+        return product(self.factors)
 
     def settled(self) -> Value:
         """The value as a name or field holds it: set, and not a default."""
@@ -144,7 +151,7 @@ class Value:
         compare (no unit known, or a literal, which takes the unit of its context)."""
         if self.unit is None or self.literal:
             return None
-        return fit(self.unit, expected, self.scale, self.rad_free)
+        return fit(self.unit, expected, self.factors, self.rad_free)
 
 
 NONE = Value("none")

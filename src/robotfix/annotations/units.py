@@ -26,6 +26,7 @@ import math
 import re
 import unicodedata
 from dataclasses import dataclass, field
+from fractions import Fraction
 from importlib.util import find_spec
 from pathlib import Path
 from typing import Any
@@ -87,6 +88,18 @@ class Unit:
         factor = self.factor**exponent
         return Unit(dims, factor, text=_render(dims, factor))
 
+    def raised(self, exponent: Fraction) -> Unit | None:
+        """The unit to a rational power (`d ** 0.5` of m^2 is m), or None when a
+        dimension's exponent would not be whole (`m ** 0.5`) or it has an offset."""
+        if exponent.denominator == 1:
+            return self.power(int(exponent))
+        if self.offset or any(
+            e * exponent.numerator % exponent.denominator for _, e in self.dims
+        ):
+            return None
+        dims = tuple((d, int(e * exponent)) for d, e in self.dims)
+        return named(Unit(dims, self.factor ** float(exponent)))
+
     @property
     def is_label(self) -> bool:
         return any(":" in d for d, _ in self.dims)
@@ -97,11 +110,27 @@ class Unit:
 
 DIMENSIONLESS = Unit((), text="1")
 TWO_PI = 2 * math.pi
-# Literal factors that only ever convert an angle, never scale one: 180/pi (radians
-# and degrees) and 30/pi (rad/s and rpm). On a value already in its target's unit,
-# such a factor is a conversion done by mistake (`current_pos * 180 / math.pi` into
-# a position in rad), not a gain.
-ANGLE_FACTORS = (180 / math.pi, 30 / math.pi)
+# The literal factors that convert between two units people use for one quantity
+# (s and ms, m and cm, m/s and km/h, rad and degrees, rad/s and rpm), and the
+# dimension each applies to (None: any physical one); their inverses convert back.
+# Such a factor on a value already in its target's unit is a conversion done once
+# too often (`p_s * 1000` into s is in ms, `current_pos * 180 / math.pi` into rad is
+# in degrees), never a gain: RF201. Any other literal factor (`2 * MAX_SPEED`,
+# `(left + right) / 2`) is a plain one. 2*pi, 10 and 360 are left out: they are
+# gains and periods as often as conversions.
+CONVERSIONS: tuple[tuple[float, str | None], ...] = (
+    (1e3, None),
+    (1e6, None),
+    (1e9, None),
+    (100.0, "meter"),
+    (60.0, "second"),
+    (3600.0, "second"),
+    (3.6, "speed"),
+    (180 / math.pi, "radian"),
+    (30 / math.pi, "radian"),
+)
+Factors = tuple[float, ...]
+_MAX_FACTORS = 6  # more folded factors than this are taken as one product
 
 
 @dataclass(frozen=True)
@@ -110,19 +139,26 @@ class Fit:
 
     kind: "ok"; "time" (the dimensions differ by one power of seconds: an implicit
     gain or time step, RF203); "mismatch". `got` is the unit the value really has
-    (its literal factors applied, frames the target does not name dropped); `aligned`
-    is that unit over the expected dimensions when only the scale differs (for the
-    conversion advice), else None.
+    (its converting literal factors applied, frames the target does not name
+    dropped); `aligned` is that unit over the expected dimensions when only the
+    scale differs (for the conversion advice), else None.
     """
 
     kind: str
     got: Unit
     aligned: Unit | None = None
     seconds: int = 0  # "time": the power of s the value has in excess
+    # "mismatch" of a value already in the expected unit before its literal factors:
+    # the factor that converts it a second time (`p_s * 1000` into s: 1000)
+    twice: float | None = None
 
 
 def is_frame(dim: str) -> bool:
     return dim.startswith("frame:")
+
+
+def product(factors: Factors) -> float:
+    return math.prod(factors) if factors else 1.0
 
 
 def effective(unit: Unit, scale: float) -> Unit:
@@ -132,12 +168,59 @@ def effective(unit: Unit, scale: float) -> Unit:
     return named(Unit(unit.dims, unit.factor / scale, unit.offset))
 
 
-def fit(got: Unit, expected: Unit, scale: float = 1.0, rad_free: bool = False) -> Fit:
-    """Does a value in `got` (scaled by literal `scale`) fit `expected`?
+def converts(unit: Unit, factor: float) -> bool:
+    """Whether a literal `factor` converts between two common units of `unit`'s
+    quantity (one of `CONVERSIONS`, or its inverse)."""
+    dims = dict(unit.dims)
+    physical = {d for d in dims if ":" not in d}
+    if not physical or math.isclose(factor, 1.0):
+        return False
+    for value, applies in CONVERSIONS:
+        if applies == "speed":
+            if dims != {"meter": 1, "second": -1}:
+                continue
+        elif applies is not None and applies not in physical:
+            continue
+        if math.isclose(factor, value, rel_tol=1e-3) or math.isclose(
+            factor * value, 1.0, rel_tol=1e-3
+        ):
+            return True
+    return False
 
-    The radian is a ratio of lengths: a value computed by a product or quotient with a
-    length (`rad_free`) may gain or lose one power of radian (`omega * r` is m/s,
-    `v / r` is rad/s). A literal factor of 2*pi turns revolutions (Hz) into radians and
+
+def converted(unit: Unit, factors: Factors) -> Unit:
+    """`unit` after the literal factors among `factors` that convert (plain gains
+    such as `/ 2` leave a value in its unit): `t_ns / 1e9` is in s."""
+    return effective(unit, product(tuple(f for f in factors if converts(unit, f))))
+
+
+def _accounted(factors: Factors, need: float, unit: Unit) -> bool:
+    """Whether the folded literal factors hold the conversion `need` (a value in
+    `unit` times `need` is in its target's unit) with nothing else that converts:
+    `(l + r) / 2 * 2 * math.pi / 60` holds rpm -> rad/s and a plain 1/2."""
+    if len(factors) > _MAX_FACTORS:
+        factors = (product(factors),)
+    count = len(factors)
+    for mask in range(1 << count):
+        chosen = product(tuple(f for i, f in enumerate(factors) if mask >> i & 1))
+        if math.isclose(chosen, need, rel_tol=1e-3) and not any(
+            converts(unit, f) for i, f in enumerate(factors) if not mask >> i & 1
+        ):
+            return True
+    return False
+
+
+def fit(
+    got: Unit, expected: Unit, factors: Factors = (), rad_free: bool = False
+) -> Fit:
+    """Does a value in `got` (scaled by the literal `factors`, each a folded chain
+    of number literals) fit `expected`?
+
+    The factors must hold the conversion from `got` to `expected`, if one is needed,
+    and no other conversion (`converts`); the rest are plain gains. The radian is a
+    ratio of lengths: a value computed by a product or quotient with a length
+    (`rad_free`) may gain or lose one power of radian (`omega * r` is m/s, `v / r`
+    is rad/s). A literal factor of 2*pi turns revolutions (Hz) into radians and
     back. A frame only one side names is not a mismatch (in ROS the frame of a
     message's numbers lives in its header).
     """
@@ -153,18 +236,16 @@ def fit(got: Unit, expected: Unit, scale: float = 1.0, rad_free: bool = False) -
             expected.offset,
         )
     raw = got if got.text else named(got)
-    shown = effective(got, scale) if scale != 1.0 else raw
-    factor = got.factor / scale
+    scale = product(factors)
+    need = got.factor / expected.factor
     if got.dims == expected.dims and not got.offset and not expected.offset:
         # `speed * 2` keeps m/s; `speed / 3.6` converts km/h to m/s
-        if math.isclose(factor, expected.factor, rel_tol=1e-3) or (
-            got.same_as(expected) and not _converts_angle(got, scale)
-        ):
-            return Fit("ok", shown)
-        return Fit("mismatch", shown, Unit(expected.dims, factor))
+        if _accounted(factors, need, got):
+            return Fit("ok", effective(got, scale) if scale != 1.0 else raw)
+        return _mismatch(got, expected, factors, raw)
     if got.dims == expected.dims:
         same = got.same_as(expected) and math.isclose(scale, 1.0)
-        return Fit("ok" if same else "mismatch", shown)
+        return Fit("ok" if same else "mismatch", effective(got, scale))
     ours, theirs = dict(got.dims), dict(expected.dims)
     diff = {
         d: ours.get(d, 0) - theirs.get(d, 0)
@@ -174,29 +255,30 @@ def fit(got: Unit, expected: Unit, scale: float = 1.0, rad_free: bool = False) -
     angle = diff.get("radian", 0)
     if abs(angle) == 1 and (rad_free or not math.isclose(scale, 1.0)):
         if not rad_free:  # a revolution is 2*pi radians: `2 * math.pi * f`
-            factor = factor * TWO_PI if angle < 0 else factor / TWO_PI
-            if not math.isclose(factor, expected.factor, rel_tol=1e-3):
+            need = need * TWO_PI if angle < 0 else need / TWO_PI
+            if not _accounted(factors, need, got):
                 return _other(diff, raw, scale, got, expected)  # a plain factor
         del diff["radian"]
     if not diff:
         if got.offset or expected.offset:
-            return Fit("mismatch", shown)
-        if math.isclose(factor, expected.factor, rel_tol=1e-3) or (
-            rad_free and math.isclose(got.factor, expected.factor, rel_tol=1e-3)
-        ):  # a conversion, or a plain factor (`(left + right) * r / 2`)
-            return Fit("ok", shown)
-        return Fit("mismatch", shown, Unit(expected.dims, factor))
+            return Fit("mismatch", effective(got, scale))
+        if _accounted(factors, need, got):
+            return Fit("ok", effective(got, scale))
+        return _mismatch(got, expected, factors, raw)
     return _other(diff, raw, scale, got, expected)
 
 
-def _converts_angle(unit: Unit, scale: float) -> bool:
-    """Whether `scale` is one of the `ANGLE_FACTORS` (or its inverse) on an angle."""
-    if math.isclose(scale, 1.0) or not any(d == "radian" for d, _ in unit.dims):
-        return False
-    return any(
-        math.isclose(scale, f, rel_tol=1e-3)
-        or math.isclose(scale * f, 1.0, rel_tol=1e-3)
-        for f in ANGLE_FACTORS
+def _mismatch(got: Unit, expected: Unit, factors: Factors, raw: Unit) -> Fit:
+    """Only the scale differs: the value is in `got` after the factors that
+    convert (a plain `/ 2` leaves degrees in degrees)."""
+    shown = converted(raw, factors)
+    twice = raw.factor / shown.factor
+    again = math.isclose(raw.factor, expected.factor, rel_tol=1e-3)
+    return Fit(
+        "mismatch",
+        shown,
+        Unit(expected.dims, shown.factor),
+        twice=twice if again else None,
     )
 
 
@@ -251,6 +333,9 @@ def _render(dims: tuple[tuple[str, int], ...], factor: float) -> str:
         for (d, value), name in _NAMED.items():
             if d == dim and math.isclose(factor, value, rel_tol=1e-9):
                 return name
+
+    if dims == (("meter", 1), ("second", -1)) and math.isclose(factor, 1 / 3.6):
+        return "km/h"
 
     def part(dim: str, exp: int) -> str:
         name = _SYMBOLS.get(dim, dim)

@@ -19,6 +19,10 @@ Conventions a stub may use beyond ordinary typing:
   `scale` (the argument times the ratio of its parameter's unit to the result's:
   `radians`, `deg2rad`), `agree` (the arguments agree with each other, the result
   is as annotated: `atan2`).
+- `__add__`, `__sub__`, `__mul__`, `__truediv__` (and `__radd__`...) of a class
+  give what `a + b`, `a - b`, ... of its objects are; `@overload`s of one, each with
+  its operand's class or builtin type, say which result goes with which operand
+  (`Time - Time` is a Duration, `Time - Duration` a Time).
 Malformed stubs (a syntax error, an annotation that does not read, an unknown
 `unit_rule`) are RF512 problems at the stub's line and column; what they spoil is
 treated as unannotated.
@@ -42,6 +46,12 @@ from robotfix.fs import UnreadableError, read_regular
 DATA = Path(__file__).parent / "data"
 _UNIT_ONLY = re.compile(r"Unit\('([A-Za-z0-9_/*^ .]+)'\)")
 UNIT_RULES = frozenset({"same", "root", "scale", "agree"})
+# The binary operators a stub class may define (`Time.__sub__`), read by operand type
+# when overloaded (`_operator_key`), and the method of each Python operator.
+OPERATORS = frozenset(
+    {"__add__", "__sub__", "__mul__", "__truediv__"}
+    | {"__radd__", "__rsub__", "__rmul__", "__rtruediv__"}
+)
 MAX_STUB_BYTES = 1024 * 1024
 MAX_USER_STUBS = 10_000  # files under the stub paths that a run looks at
 
@@ -53,6 +63,7 @@ class Param:
     keyword: bool  # may be passed by keyword
     decl: Refinement | None
     variadic: bool = False  # `*args`: this and every later position
+    flag: bool = False  # annotated `bool`: a condition, not a quantity (`where`)
 
 
 @dataclass(frozen=True)
@@ -413,13 +424,29 @@ class _Reader:
         found = Class(qualname, bases)
         for item in node.body:
             if isinstance(item, ast.FunctionDef | ast.AsyncFunctionDef):
-                found.pending[item.name] = self._later(item, qualname, True)
+                key = self._operator_key(item)
+                found.pending[key or item.name] = self._later(item, qualname, True)
             elif isinstance(item, ast.AnnAssign) and isinstance(item.target, ast.Name):
                 decl = self.annotation(item.annotation, item.target.id)
                 found.attributes[item.target.id] = Attribute(
                     decl, self._type_of(item.annotation)
                 )
         return found
+
+    def _operator_key(self, node: ast.FunctionDef | ast.AsyncFunctionDef) -> str | None:
+        """`__sub__:rclpy.time.Time` for an `@overload` of an operator, by the class
+        (or builtin) its operand is annotated with: `Time - Time` is a Duration,
+        `Time - Duration` a Time. None for any other method."""
+        name = node.name
+        overloaded = any(
+            _dotted(d).rsplit(".", 1)[-1] == "overload" for d in node.decorator_list
+        )
+        operands = [*node.args.posonlyargs, *node.args.args][1:]
+        if not (overloaded and name in OPERATORS and len(operands) == 1):
+            return None
+        annotation = operands[0].annotation
+        operand = self._type_of(annotation) or _plain(annotation)
+        return f"{name}:{operand}" if operand else None
 
     def _later(
         self, node: ast.FunctionDef | ast.AsyncFunctionDef, owner: str, in_class: bool
@@ -435,7 +462,7 @@ class _Reader:
             name = _dotted(decorator).rsplit(".", 1)[-1]
             if name in ("staticmethod", "classmethod", "property"):
                 kind = name
-            elif name == "overload":
+            elif name == "overload" and not (in_class and node.name in OPERATORS):
                 return None  # overloads: too many meanings for one name
             elif isinstance(decorator, ast.Call) and _called(decorator) == "unit_rule":
                 rule = self._rule(decorator)
@@ -451,6 +478,7 @@ class _Reader:
                     index,
                     arg not in args.posonlyargs,
                     self.annotation(arg.annotation, arg.arg),
+                    flag=_plain(arg.annotation) == "bool",
                 )
             )
         if args.vararg is not None:

@@ -1,5 +1,8 @@
-# rclpy.duration (ROS 2): Duration(*, seconds=0, nanoseconds=0), keyword-only.
+# rclpy.duration (ROS 2): Duration(*, seconds=0, nanoseconds=0), keyword-only;
+# to_msg() gives a builtin_interfaces/Duration, from_msg() reads one.
 from typing import Annotated
+
+from builtin_interfaces.msg import Duration as DurationMsg
 
 class Duration:
     def __init__(
@@ -10,3 +13,6 @@ class Duration:
     ) -> None: ...
     @property
     def nanoseconds(self) -> Annotated[int, "Unit('ns')"]: ...
+    def to_msg(self) -> DurationMsg: ...
+    @classmethod
+    def from_msg(cls, msg: DurationMsg) -> Duration: ...
