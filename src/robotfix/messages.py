@@ -124,16 +124,26 @@ def malformed_stub(path: str, line: int, col: int, detail: str) -> Diagnostic:
     )
 
 
-def unused_metadata(path: str, line: int, col: int, shown: str) -> Diagnostic:
+def unused_metadata(
+    path: str,
+    line: int,
+    col: int,
+    shown: str,
+    why: str | None = None,
+    hint: str | None = None,
+) -> Diagnostic:
+    """RF511: `why` it is not read (default: it is no string), and how to write it."""
     return Diagnostic(
         rules.UNUSED_METADATA,
         path,
         Span.point(line, col),
-        f"`{shown}` in `Annotated` is not checked: RobotFix reads only string "
-        "refinements",
+        f"`{shown}` in `Annotated` is not checked: "
+        + (why or "RobotFix reads only string refinements"),
         (
             Note(
-                "write the refinement as a string (`\"Unit('m') and 0 <= _ <= 1\"`), "
+                hint
+                or "write the refinement as a string "
+                "(`\"Unit('m') and 0 <= _ <= 1\"`), "
                 "or bind a module name to one and use that name"
             ),
         ),

@@ -367,7 +367,12 @@ class Interpreter(CallEvaluator):
                 return found.term if found is not None else None
         if local:
             return None
-        constant = self.scoped_constant(name, state, self._class_name())
+        reader = self
+        if self.scope.kind == "module":  # module code: the statics are not made yet,
+            # its imports and classes are bound on this path (`math.pi`, `Limits.MAX`)
+            statics = module_statics(self.ctx, state)
+            reader = Interpreter(self.ctx, self.program, self.scope, statics)
+        constant = reader.scoped_constant(name, state, self._class_name())
         if constant is not None:
             return constant.term
         return None if rest else self.global_term(name, state)
