@@ -3,12 +3,15 @@
 Built from the reliability report's reproducers: F5 (writes through planted
 symlinks), H6 (FIFOs and devices as cache files), C6 (well-formed entries with wrong
 types), W2 (stale after a .msg resolves a type or a duplicate changes), W3 (cached
-note paths replayed), W11 (entries never dropped).
+note paths replayed), W11 (entries never dropped); and round 2's (reliability2.md):
+N5 (an empty `.gitignore` after a full disk).
 """
 
 from __future__ import annotations
 
 import copy
+import errno
+import io
 import json
 import os
 import shutil
@@ -25,7 +28,7 @@ from hypothesis import strategies as st
 import robotfix
 from robotfix import cli
 from robotfix.api import check_paths, interface_files
-from robotfix.cache import ResultCache
+from robotfix.cache import GITIGNORE, ResultCache
 from robotfix.config import Config
 from robotfix.ros.catalog import MsgCatalog
 
@@ -446,3 +449,42 @@ def test_fifos_and_devices_as_cache_files_never_hang(tmp_path: Path) -> None:
         timeout=60,
     )
     assert again.stdout == run.stdout
+
+
+# -- N5: a full disk leaves no empty .gitignore ---------------------------------------
+class FullFile(io.RawIOBase):
+    """A file on a full disk: every write fails with ENOSPC."""
+
+    def __init__(self, fd: int) -> None:
+        self.fd = fd
+
+    def writable(self) -> bool:
+        return True
+
+    def write(self, data: Any) -> int:
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+
+    def close(self) -> None:
+        if not self.closed:
+            os.close(self.fd)
+        super().close()
+
+
+def test_a_full_disk_leaves_no_empty_gitignore(
+    project: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    write(project / "a.py", "x = 1\n")
+    config = Config(root=project)
+    gitignore = project / ".robotfix_cache" / ".gitignore"
+
+    def full(fd: int, *args: Any, **kwargs: Any) -> Any:
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+
+    with monkeypatch.context() as disk:
+        disk.setattr(os, "write", full)
+        disk.setattr(os, "fdopen", lambda fd, *args, **kwargs: FullFile(fd))
+        check_paths([project], config, use_cache=True)
+    assert not gitignore.exists()  # neither empty nor cut
+    check_paths([project], config, use_cache=True)  # space again
+    assert gitignore.read_bytes() == GITIGNORE
+    assert check_paths([project], config, use_cache=True).from_cache == 1

@@ -121,13 +121,24 @@ def atomic_write(path: str | os.PathLike[str], data: bytes) -> None:
 
 def create_exclusive(path: str | os.PathLike[str], data: bytes) -> bool:
     """Write a new file only if nothing (not even a dangling symlink) is at `path`.
-    True when written; False when something was there or it could not be made."""
+    True when written; False when something was there or it could not be made. A
+    write that fails (a full disk) removes the file it created, so no empty or cut
+    file stays behind to stop the next run from writing it whole."""
     try:
         fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL | _NOFOLLOW, 0o644)
     except OSError:
         return False
-    with os.fdopen(fd, "wb") as out:
-        out.write(data)
+    try:
+        try:
+            rest = memoryview(data)
+            while rest:
+                rest = rest[os.write(fd, rest) :]
+        finally:
+            os.close(fd)  # on some file systems a write's error surfaces here
+    except OSError:
+        with contextlib.suppress(OSError):
+            os.unlink(path)  # ours: O_EXCL made it
+        return False
     return True
 
 
