@@ -9,6 +9,11 @@ is ignored, and a folder that cannot be written only costs speed. The file is re
 only when it is a regular file (a FIFO or a device there is ignored, never waited
 on) and replaced atomically through a fresh temporary file, never written through a
 symlink.
+
+A cache holds data only: it is read with `json.loads` into plain values; nothing in
+the folder is unpickled, imported or run. (pint's own registry cache is a pickle:
+RobotFix does not use it, and never reads the `pint/` folder older versions left
+here.)
 """
 
 from __future__ import annotations
