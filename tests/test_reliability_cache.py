@@ -4,11 +4,13 @@ Built from the reliability report's reproducers: F5 (writes through planted
 symlinks), H6 (FIFOs and devices as cache files), C6 (well-formed entries with wrong
 types), W2 (stale after a .msg resolves a type or a duplicate changes), W3 (cached
 note paths replayed), W11 (entries never dropped); and round 2's (reliability2.md):
-N5 (an empty `.gitignore` after a full disk).
+N5 (an empty `.gitignore` after a full disk), N13 (stale after a rewrite that keeps
+the size and the mtime).
 """
 
 from __future__ import annotations
 
+import contextlib
 import copy
 import errno
 import io
@@ -26,6 +28,10 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import robotfix
+import robotfix.cache
+import robotfix.discovery
+import robotfix.project.modules
+import robotfix.run
 from robotfix import cli
 from robotfix.api import check_paths, interface_files
 from robotfix.cache import GITIGNORE, ResultCache
@@ -97,6 +103,22 @@ def entries(root: Path) -> dict[str, Any]:
     data = json.loads((root / ".robotfix_cache" / "results.json").read_text())
     found: dict[str, Any] = data["entries"]
     return found
+
+
+@contextlib.contextmanager
+def stamps_trusted() -> Iterator[None]:
+    """Every stamp trusted at once (`fs.RACY_NS` 0 wherever it is read): a test's
+    files are seconds old, and what the cache keeps must not depend on the clock
+    (every edit below comes a whole run after the stamp it changes)."""
+    with pytest.MonkeyPatch.context() as patch:
+        for module in (
+            robotfix.cache,
+            robotfix.run,
+            robotfix.discovery,
+            robotfix.project.modules,
+        ):
+            patch.setattr(module, "RACY_NS", 0)
+        yield
 
 
 @pytest.fixture
@@ -273,7 +295,9 @@ def filled(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, dict[str, An
         root / "ifaces" / "demo" / "msg" / "Cmd.msg", "float64 speed #RobotFix# _ < 1\n"
     )
     config = Config(root=root, msg_paths=(root / "ifaces",))
-    check_paths([root / "src"], config, use_cache=True)
+    with stamps_trusted():
+        for _ in range(2):  # the second after `.robotfix_cache/` changed the root
+            check_paths([root / "src"], config, use_cache=True)
     data = json.loads((root / ".robotfix_cache" / "results.json").read_text())
     (entry,) = data["entries"].values()
     assert entry["diagnostics"] and entry["diagnostics"][0][4]  # some notes to break
@@ -305,18 +329,12 @@ def test_an_entry_with_wrong_types_is_rebuilt_never_a_crash(
     cache = root / ".robotfix_cache" / "results.json"
     cache.write_text(json.dumps(broken))
     config = Config(root=root, msg_paths=(root / "ifaces",))
-    result = check_paths([root / "src"], config, use_cache=True)
+    with stamps_trusted():  # no part kept or not by the clock: all compared
+        result = check_paths([root / "src"], config, use_cache=True)
     assert result.from_cache == 0  # rebuilt
     for fmt in FORMATS:
         cli.render(result, fmt, 1, 0)  # every renderer copes
-    rebuilt = json.loads(cache.read_text())
-    # what is kept by stat depends on the clock: a file's mtime, or the interface
-    # files' (the catalog's digests), or the folders' (the discovery trace), is
-    # trusted only once it is not recent
-    timed = ("stats", "catalog", "discovery")
-    assert {k: v for k, v in rebuilt.items() if k not in timed} == {
-        k: v for k, v in pristine.items() if k not in timed
-    }
+    assert json.loads(cache.read_text()) == pristine
 
 
 @pytest.mark.parametrize(
@@ -449,6 +467,54 @@ def test_fifos_and_devices_as_cache_files_never_hang(tmp_path: Path) -> None:
         timeout=60,
     )
     assert again.stdout == run.stdout
+
+
+# -- N13: a rewrite that keeps the size and the mtime is seen (the ctime) ------------
+HELPER = """\
+from typing import Annotated
+
+
+def h(v: Annotated[float, "_ < 1.9"]) -> None:
+    pass
+"""
+
+
+def rewrite_keeping_mtime(path: Path, old: str, new: str) -> None:
+    """`path` rewritten in place, same size, its mtime put back (as `cp -p`,
+    `rsync --inplace -t` and archives with fixed mtimes leave a file)."""
+    before = os.stat(path)
+    text = path.read_text()
+    assert len(old) == len(new) and old in text
+    path.write_text(text.replace(old, new))
+    os.utime(path, ns=(before.st_atime_ns, before.st_mtime_ns))
+    after = os.stat(path)
+    assert (after.st_size, after.st_mtime_ns, after.st_ino, after.st_dev) == (
+        before.st_size,
+        before.st_mtime_ns,
+        before.st_ino,
+        before.st_dev,
+    )
+    assert after.st_ctime_ns != before.st_ctime_ns  # a whole run came between
+
+
+def test_a_rewrite_keeping_size_and_mtime_rechecks_the_file_and_importers(
+    project: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    write(project / "pkg" / "helper.py", HELPER)
+    user = write(project / "pkg" / "user.py", "from pkg.helper import h\n\nh(1.5)\n")
+    with stamps_trusted():  # as a tree untouched for RACY_NS: its stats trusted
+        assert check(capsys, ".") == check(capsys, ".", "--no-cache")
+        assert "RF101" not in check(capsys, ".")
+        rewrite_keeping_mtime(user, "h(1.5)", "h(9.5)")
+        cached = check(capsys, ".")
+        assert "user.py:3:1: error[RF101]: `h(9.5)` violates `v < 1.9`" in cached
+        assert cached == check(capsys, ".", "--no-cache")
+        rewrite_keeping_mtime(user, "h(9.5)", "h(1.5)")
+        assert "RF101" not in check(capsys, ".")
+        rewrite_keeping_mtime(project / "pkg" / "helper.py", "_ < 1.9", "_ < 1.4")
+        cached = check(capsys, ".")  # the importer is checked again
+        assert "user.py:3:1: error[RF101]: `h(1.5)` violates `v < 1.4`" in cached
+        assert cached == check(capsys, ".", "--no-cache")
 
 
 # -- N5: a full disk leaves no empty .gitignore ---------------------------------------

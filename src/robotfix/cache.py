@@ -14,11 +14,13 @@ the hash of their file's bytes, so that a cached run over an unchanged tree pars
 nothing.
 
 Stat fast path (as ruff, mypy and git do): the hash of every file a run read is
-kept with its size, mtime_ns, inode and device, and a file whose stat is unchanged
-is not read again; any difference (a `touch`, an editor's atomic save) costs one
-read and hash, never a wrong result. A file modified within `RACY_NS` of being
-hashed is not trusted by stat (git's "racily clean" rule): it could change again
-within the same mtime tick. The parameter files' diagnostics (`paramcheck.py`) are
+kept with its stamp (`fs.stamp`: mtime_ns, ctime_ns, inode, device, size, mode),
+and a file whose stamp is unchanged is not read again; any difference (a `touch`,
+an editor's atomic save, an in-place rewrite that restores the size and the mtime,
+as `cp -p` does: the ctime changes all the same) costs one read and hash, never a
+wrong result. A file changed (mtime or ctime) within `RACY_NS` of being hashed is
+not trusted by stat (git's "racily clean" rule): it could change again within the
+same tick. The parameter files' diagnostics (`paramcheck.py`) are
 kept too, under a key that hashes every input they depend on (`params_key`), and
 so is the discovery, with the trace of what it looked at (`discovery.Trace`): an
 unchanged tree is stat'ed, not walked.
@@ -55,12 +57,13 @@ if TYPE_CHECKING:
 # an interface problem before `messages.interface_problem`: its diagnostic, the
 # package no type of which is known (if so), the types of its file
 InterfaceProblem = tuple[Diagnostic, "str | None", tuple[str, ...]]
-FORMAT = 7
+FORMAT = 8
 # which parameter-related words a file mentions (`paramcheck.MENTIONS`, all layouts),
 # kept with its hash so that an unchanged file need not be read to know
 MENTION_WORDS = (b"declare_parameter", b"get_parameter", b"ParamListener", b"rospy")
 MAX_BYTES = 512 * 1024 * 1024  # results.json of ~4 million files
 MAX_INT = 2**31  # lines and columns; anything larger is not ours
+STAMP = 6  # the length of an `fs.stamp`, which begins a stat record
 GITIGNORE = b"# Created by robotfix\n*\n"
 
 
@@ -100,7 +103,7 @@ class ResultCache:
         # module file -> [sha256 of its bytes, its summary's fingerprint, its
         # members' fingerprints]
         self.summaries: dict[str, Known] = {}
-        # file -> [size, mtime_ns, inode, device, sha256, mentions]: `sha`'s memory
+        # file -> [*fs.stamp, sha256, mentions]: `sha`'s memory
         self._stats: dict[str, list[Any]] = {}
         self._seen_stats: dict[str, list[Any]] = {}  # this run's, saved
         self._bytes: dict[str, bytes] = {}  # the last file `sha` read, to `take`
@@ -160,12 +163,12 @@ class ResultCache:
         the hash was taken, else read (then `take` hands the bytes over). None when
         the file cannot be read (`fs.read_regular` says why)."""
         known = self._stat_record(path)
-        return known[4] if known is not None else None
+        return known[STAMP] if known is not None else None
 
     def mentions(self, path: Path) -> int | None:
         """Which of `MENTION_WORDS` the file contains (a bit each), as `sha`."""
         known = self._stat_record(path)
-        return known[5] if known is not None else None
+        return known[STAMP + 1] if known is not None else None
 
     def take(self, path: Path) -> bytes:
         """The bytes `sha` read (once), or the file's bytes now."""
@@ -176,13 +179,11 @@ class ResultCache:
         key = entry_key(path)
         if key in self._seen_stats:
             return self._seen_stats[key]
-        try:
-            st = os.stat(path)
-        except (OSError, ValueError):
+        stamp = fs.stamp(path)
+        if stamp is None:
             return None
-        stamp = [st.st_size, st.st_mtime_ns, st.st_ino, st.st_dev]
         known = self._stats.get(key)
-        if known is not None and known[:4] == stamp:
+        if known is not None and known[:STAMP] == stamp:
             self._seen_stats[key] = known
             return known
         try:
@@ -192,8 +193,8 @@ class ResultCache:
         self._bytes = {key: data}  # the last file read only: memory stays flat
         mentions = sum(1 << i for i, w in enumerate(MENTION_WORDS) if w in data)
         record = [*stamp, hashlib.sha256(data).hexdigest(), mentions]
-        if len(data) != st.st_size or time.time_ns() - st.st_mtime_ns < RACY_NS:
-            record[1] = -1  # changed while read, or too recent: never matches
+        if len(data) != stamp[4] or time.time_ns() - max(stamp[:2]) < RACY_NS:
+            record[0] = -1  # changed while read, or too recent: never matches
         self._seen_stats[key] = record
         self._dirty = True
         return record
@@ -592,10 +593,10 @@ def _load_outline(raw: Any) -> Outline | None:
 def _valid_stat(raw: Any) -> bool:
     return (
         isinstance(raw, list)
-        and len(raw) == 6
-        and all(type(n) is int for n in raw[:4])
-        and isinstance(raw[4], str)
-        and type(raw[5]) is int
+        and len(raw) == STAMP + 2
+        and all(type(n) is int for n in raw[:STAMP])
+        and isinstance(raw[STAMP], str)
+        and type(raw[STAMP + 1]) is int
     )
 
 

@@ -163,16 +163,19 @@ def _reason(err: OSError) -> str:
     return err.strerror or type(err).__name__
 
 
-# a file or folder changed this recently is not trusted by its stat or stamp (git's
-# "racily clean" rule: the next change could land in the same timestamp tick, and
-# some file systems keep whole seconds): the result cache, the discovery trace and
-# the module index's kept answers all use it
+# a file or folder changed (mtime or ctime) this recently is not trusted by its
+# stamp (git's "racily clean" rule: the next change could land in the same timestamp
+# tick, and some file systems keep whole seconds): the result cache, the discovery
+# trace and the module index's kept answers all use it
 RACY_NS = 2_000_000_000
 
 
-def stamp(name: str) -> list[int] | None:
-    """A folder's stamp for the traces kept between runs (`discovery.Trace`, the
-    module index's answers): a listing is trusted while its stamp is unchanged."""
+def stamp(name: str | os.PathLike[str]) -> list[int] | None:
+    """A file's or folder's stamp for what is kept between runs (the result cache's
+    hashes, `discovery.Trace`, the module index's answers): what was read is
+    trusted while its stamp is unchanged. The ctime is in it, as git keeps it: a
+    rewrite that restores the size and the mtime (`cp -p`, `os.utime`) still
+    changes the ctime, which no file operation sets back."""
     try:
         st = os.stat(name)
     except (OSError, ValueError):

@@ -30,7 +30,7 @@ from robotfix.cache import ResultCache, discovery_key, run_key
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
 from robotfix.discovery import Discovery, Trace, discover, install_space
-from robotfix.fs import RACY_NS, UnreadableError, read_regular
+from robotfix.fs import RACY_NS, UnreadableError, read_regular, stamp
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.ros.install import InstallSpace
 from robotfix.ros.package import package_folder
@@ -323,9 +323,9 @@ def _params_key(
 
 def _catalog_key(interfaces: _Interfaces, config: Config) -> str | None:
     """What the catalog is read from, by stat (as `ResultCache.sha`): its interface
-    files' names, sizes, mtimes, inodes and devices, and the settings that shape
+    files' names and stamps (`fs.stamp`: with the ctime), and the settings that shape
     it; None when that is not all (an install space is sourced: its files are read
-    on demand) or a file changed too recently to trust its mtime."""
+    on demand) or a file changed too recently to trust its stamp."""
     if interfaces.installed is not None:
         return None
     now = time.time_ns()
@@ -334,15 +334,13 @@ def _catalog_key(interfaces: _Interfaces, config: Config) -> str | None:
     ]
     parts += [f"preferred {p}" for p in interfaces.preferred]
     for path in interfaces.files:
-        try:
-            st = os.stat(path)
-        except (OSError, ValueError):
+        found = stamp(path)
+        if found is None:
             parts.append(f"missing {path}")
             continue
-        if now - st.st_mtime_ns < RACY_NS:
+        if now - max(found[:2]) < RACY_NS:
             return None
-        stamp = (st.st_size, st.st_mtime_ns, st.st_ino, st.st_dev)
-        parts.append(f"file {path} {stamp}")
+        parts.append(f"file {path} {found}")
     text = "\n".join(parts).encode("utf-8", "surrogateescape")
     return hashlib.sha256(text).hexdigest()
 
