@@ -32,7 +32,7 @@ from importlib.util import find_spec
 from pathlib import Path
 from typing import Any
 
-from robotfix.disk_cache import JsonCache, install_key
+from robotfix.disk_cache import JsonCache, install_key, is_text
 
 _SYMBOLS = {
     "meter": "m",
@@ -304,6 +304,8 @@ def resolve(text: str) -> Unit:
     """
     check_text(text)
     entry = _CACHE.entries.get(text)
+    if entry is not None and not _is_resolution(entry):
+        entry = None  # not what this module writes: worked out again
     if entry is None:
         entry = _shipped().get(text)
     if entry is None:
@@ -317,6 +319,34 @@ def resolve(text: str) -> Unit:
     if kind == "tag":
         return label("tag", text)
     raise UnitError(str(entry[1]), entry[2] if len(entry) > 2 else None)
+
+
+def _is_resolution(entry: Any) -> bool:
+    """Whether a machine cache's entry is exactly what `_resolve_with_pint` or
+    `shipped_rejection` gives: a unit (dimensions, factor, offset), an error (a
+    message, a suggestion) or a tag, with the types and strings `resolve` reads."""
+    if not isinstance(entry, list) or not entry:
+        return False
+    kind, rest = entry[0], entry[1:]
+    if kind == "tag":
+        return not rest
+    if kind == "error":
+        return 1 <= len(rest) <= 2 and all(is_text(x) for x in rest)
+    return (
+        kind == "unit"
+        and len(rest) in (2, 3)
+        and isinstance(rest[0], list)
+        and all(
+            isinstance(d, list)
+            and len(d) == 2
+            and is_text(d[0])
+            and type(d[1]) is int
+            and abs(d[1]) <= _MAX_DIMENSION
+            for d in rest[0]
+        )
+        and all(type(x) in (int, float) and math.isfinite(x) for x in rest[1:])
+        and rest[1] != 0
+    )
 
 
 def check_text(text: str) -> None:
