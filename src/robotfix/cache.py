@@ -1,7 +1,7 @@
 """Per-file results under `.robotfix_cache/`, as ruff and mypy keep them.
 
 An entry is reused only when the file's bytes, the path it was named by, its
-per-file ignores, the run key (RobotFix's version, the settings that change results,
+per-file ignores, the run key (RobotFix's version and a digest of its own files, the settings that change results,
 the unit and message libraries), the resolved definition of every message type the
 file looked up (`MsgCatalog.fingerprint_types`) and the fingerprint of everything
 it consulted of other modules, transitively (`project/summary.py`: each module
@@ -40,6 +40,8 @@ or that lie under the checked paths but were not checked, are dropped when savin
 
 from __future__ import annotations
 
+import contextlib
+import functools
 import hashlib
 import json
 import os
@@ -73,9 +75,28 @@ STAMP = 6  # the length of an `fs.stamp`, which begins a stat record
 GITIGNORE = b"# Created by robotfix\n*\n"
 
 
+# what of RobotFix's own files decides results (code, stubs, grammar, data tables)
+_OWN_SUFFIXES = frozenset({".py", ".pyi", ".lark", ".json", ".toml"})
+
+
+@functools.lru_cache(maxsize=1)
+def own_digest() -> str:
+    """A digest of RobotFix's own files: installed from a checkout, every commit is
+    version 0.1.0, so the version alone would replay results of older code (about
+    1.6 MB read once per process)."""
+    package = Path(__file__).resolve().parent
+    digest = hashlib.blake2b(digest_size=16)
+    for path in sorted(package.rglob("*")):
+        if path.suffix in _OWN_SUFFIXES and "__pycache__" not in path.parts:
+            digest.update(str(path.relative_to(package)).encode())
+            with contextlib.suppress(OSError):
+                digest.update(path.read_bytes())
+    return digest.hexdigest()
+
+
 def run_key(config: Config) -> str:
     parts = [
-        f"robotfix {__version__}",
+        f"robotfix {__version__} {own_digest()}",
         f"format {FORMAT}",
         f"python {sys.version_info[0]}.{sys.version_info[1]}",
         f"rep103 {config.rep103}",
