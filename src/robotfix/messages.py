@@ -636,27 +636,78 @@ def parameter_file_not_checked(
 ) -> Diagnostic:
     """RF004 for a parameter file found in a package's config folder that cannot
     be read or parsed: a warning, since it may be a template or another tool's."""
-    return Diagnostic(
-        rules.PATH_NOT_CHECKED,
+    return _parameter_warning(
         path,
-        Span.point(line, col),
+        line,
+        col,
         f"parameter file not checked: {detail}",
-        (Note("ROS cannot load it either, unless it is not a parameter file"),),
+        "ROS cannot load it either, unless it is not a parameter file",
+    )
+
+
+def parameter_file_reference(path: str, line: int, col: int, alias: bool) -> Diagnostic:
+    """RF004 for a ROS 2 parameter file with an alias or a merge key, which rcl
+    does not read; its values are checked as PyYAML expands the file."""
+    if alias:
+        message = (
+            'rcl refuses aliases ("Will not support aliasing"): a node given this '
+            "file with --params-file does not start"
+        )
+    else:
+        message = (
+            "rcl does not apply the merge key `<<`: it reads the keys under it as "
+            "parameters named `<<.name`"
+        )
+    return _parameter_warning(
+        path,
+        line,
+        col,
+        message,
+        "its values are checked as PyYAML expands the file, as a launch file that "
+        "rewrites it first does (nav2_common's RewrittenYaml)",
+    )
+
+
+def parameter_merge_refused(path: str, line: int, col: int, detail: str) -> Diagnostic:
+    """RF004 for a merge key PyYAML refuses: what it would bring in is not checked."""
+    return _parameter_warning(
+        path,
+        line,
+        col,
+        f"merge not checked: {detail}",
+        "PyYAML refuses the file, and so do rosparam and tools built on it",
+    )
+
+
+def _parameter_warning(
+    path: str, line: int, col: int, message: str, note: str
+) -> Diagnostic:
+    return Diagnostic(
+        rules.PATH_NOT_CHECKED, path, Span.point(line, col), message, (Note(note),)
+    )
+
+
+def parameter_value_not_checked(
+    path: str, span: Span, subject: str, why: str
+) -> Diagnostic:
+    """RF004 for a value in a parameter file that its loader cannot read."""
+    return Diagnostic(
+        rules.PATH_NOT_CHECKED, path, span, f"{subject} is not checked: {why}"
     )
 
 
 def parameter_value_violated(
-    path: str, span: Span, subject: str, rule: str, declared: Declared, why: str = ""
+    path: str, span: Span, subject: str, rule: str, declared: Declared, *notes: str
 ) -> Diagnostic:
     """RF101 for a parameter's value: a default in code, or a value in a parameter
-    file, outside the declared range or refinement."""
-    notes = [declared.note()] + ([Note(why)] if why else [])
+    file, outside the declared range or refinement; `notes` (the empty ones left
+    out): how ROS read the value, when its text does not say, and why it fails."""
     return Diagnostic(
         rules.REFINEMENT_VIOLATED,
         path,
         span,
         f"{subject} violates {rule}{_owner(declared)}",
-        tuple(notes),
+        _notes(declared, notes),
     )
 
 
@@ -667,17 +718,21 @@ def parameter_value_type(
     got: str,
     expected: str,
     declared: Declared,
-    why: str = "",
+    *notes: str,
 ) -> Diagnostic:
-    """RF401 for a value in a parameter file of another type than declared."""
-    notes = [declared.note()] + ([Note(why)] if why else [])
+    """RF401 for a value in a parameter file of another type than declared;
+    `notes` as for RF101."""
     return Diagnostic(
         rules.BASE_TYPE_MISMATCH,
         path,
         span,
         f"{subject} is {got}, but the parameter is declared {expected}",
-        tuple(notes),
+        _notes(declared, notes),
     )
+
+
+def _notes(declared: Declared, notes: tuple[str, ...]) -> tuple[Note, ...]:
+    return (declared.note(), *(Note(n) for n in notes if n))
 
 
 def _owner(declared: Declared) -> str:

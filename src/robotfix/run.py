@@ -230,7 +230,9 @@ def _check_paths(
     if cache is not None and snapshot:
         cache.put_catalog(snapshot, catalog.digest_table(), problems, catalog.outline())
     result.diagnostics.extend(
-        _parameter_problems(found, files, config, cache, parameters, project)
+        _parameter_problems(
+            found, files, config, cache, parameters, project, result.internal_errors
+        )
     )
     result.files += len(found.parameter_files)
     result.diagnostics = finish(result.diagnostics)
@@ -272,10 +274,13 @@ def _parameter_problems(
     cache: ResultCache | None = None,
     parameters: dict[str, ParamKnown] | None = None,
     project: Project | None = None,
+    errors: list[InternalError] | None = None,
 ) -> list[Diagnostic]:
     """Parameter files against the parameters the code declares; cached as a whole,
     under a key that hashes every input (`_params_key`); `parameters`: what the
-    checks found of the files they read (the others are read there)."""
+    checks found of the files they read (the others are read there). A fault of
+    ours on one file is an internal error of that file (in `errors`), the others
+    are checked, and nothing is cached."""
     if not found.parameter_files and not found.parameter_definitions:
         return []
     python_files = [*files, *found.summary_files]
@@ -284,8 +289,9 @@ def _parameter_problems(
         known = cache.params(key)
         if known is not None:
             return known
-    from robotfix.paramcheck import check_parameter_files
+    from robotfix.paramcheck import Fault, check_parameter_files
 
+    faults: list[Fault] = []
     out = check_parameter_files(
         found.parameter_files,
         found.parameter_definitions,
@@ -294,8 +300,11 @@ def _parameter_problems(
         config,
         parameters,
         project,
+        faults,
     )
-    if cache is not None and key is not None:
+    if errors is not None:
+        errors += [InternalError(f.path, f.summary, f.detail) for f in faults]
+    if cache is not None and key is not None and not faults:
         cache.put_params(key, out)
     return out
 
