@@ -391,7 +391,6 @@ class ExpressionEvaluator:
             return self.unknown(node)
         if label is None:
             label = self.ctx.source.segment(node) or "the value"
-        maybe = isinstance(found, types.Maybe)
         found = types.plain(found)
         if isinstance(found, types.Msg):
             if self.ctx.catalog.lookup(found.name) is None:
@@ -406,9 +405,9 @@ class ExpressionEvaluator:
                     self.program.attributes.setdefault(
                         found.name, dict(known.attributes)
                     )
-            # an object that may be None is told apart by an id (`is None` tests)
-            ref = self.ctx.fresh_id() if maybe else None
-            return Value("instance", name=found.name, ref=ref)
+            # an id of its own: whether it is None is not known (even a declared
+            # `client: Client` may be given None), the same for each test of it
+            return Value("instance", name=found.name, ref=self.ctx.fresh_id())
         if isinstance(found, types.Tup):
             parts = tuple(self.typed(t, node, state, label) for t in found.items)
             return Value("tuple", elements=parts)
@@ -739,7 +738,7 @@ class ExpressionEvaluator:
         if isinstance(left.term, A.Sym):
             key = ("is None", left.term.ident)
             return self.ctx.derived(key, "bool", "`is None`").term
-        if left.kind == "instance" and left.ref is not None:  # `Optional[Driver]`
+        if left.kind == "instance" and left.ref is not None:  # a typed object
             return self.ctx.derived(("is None", left.ref), "bool", "`is None`").term
         if left.kind in STATIC_VALUES:
             return A.Bool(False)

@@ -33,6 +33,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from robotfix.analysis import imported
+from robotfix.astwalk import children
 
 if TYPE_CHECKING:
     from robotfix.analysis.context import FileContext
@@ -165,6 +166,7 @@ class TypeModel:
         self._locals: dict[int, dict[str, list[Binding]]] = {}
         self._declared: dict[str, dict[str, ast.expr]] | None = None
         self._busy: set[object] = set()  # questions being answered (recursion)
+        self._families: dict[str, list[str]] = {}
 
     # -- annotations -----------------------------------------------------------
     def annotation(self, node: ast.expr | None) -> Type | None:
@@ -240,9 +242,21 @@ class TypeModel:
         ordered = [*args.posonlyargs, *args.args]
         if ordered and ordered[0].arg == name and function.is_method:
             return None  # `self` and `cls` are the interpreter's own
+        defaults = dict(
+            zip([a.arg for a in ordered][::-1], args.defaults[::-1], strict=False)
+        )
+        defaults.update(
+            (a.arg, d)
+            for a, d in zip(args.kwonlyargs, args.kw_defaults, strict=True)
+            if d is not None
+        )
         for arg in [*ordered, *args.kwonlyargs]:
             if arg.arg == name:
-                return self.annotation(arg.annotation)
+                found = self.annotation(arg.annotation)
+                if found is not None and _is_none(defaults.get(name)):
+                    # `client: Client = None`: it may be None
+                    return Maybe(plain(found))  # type: ignore[arg-type]
+                return found
         if args.vararg is not None and args.vararg.arg == name:
             item = self.annotation(args.vararg.annotation)
             return Seq(item) if item is not None else None
@@ -317,12 +331,15 @@ class TypeModel:
     def _family(self, class_name: str) -> list[str]:
         """The class, the file's classes it derives from, and those derived from it:
         an attribute of `self` may be assigned in any of them."""
-        up = self._up(class_name)
-        return up + [
-            name
-            for name in self.program.classes
-            if name not in up and self._derives(name, class_name)
-        ]
+        found = self._families.get(class_name)
+        if found is None:
+            up = self._up(class_name)
+            found = self._families[class_name] = up + [
+                name
+                for name in self.program.classes
+                if name not in up and self._derives(name, class_name)
+            ]
+        return found
 
     def _derives(self, name: str, ancestor: str) -> bool:
         seen, todo = set(), list(self.program.bases.get(name, []))
@@ -338,12 +355,19 @@ class TypeModel:
     def _own_attribute(self, class_name: str, attr: str) -> Type | None:
         family = self._family(class_name)
         declarations = self._declarations()
+        assignments = self._assignments()
         for name in family:
             declared = declarations.get(name, {}).get(attr)
             if declared is not None:
-                return self.annotation(declared)
+                found = self.annotation(declared)
+                if found is not None and any(
+                    _is_none(value)
+                    for other in family
+                    for value, _ in assignments.get(other, {}).get(attr, [])
+                ):  # `self.x: Driver = None`: it may be None
+                    return Maybe(plain(found))  # type: ignore[arg-type]
+                return found
         sources: list[Type | None] = []
-        assignments = self._assignments()
         for name in family:
             for value, function in assignments.get(name, {}).get(attr, []):
                 sources.append(
@@ -673,7 +697,7 @@ def _local_bindings(node: ast.AST) -> dict[str, list[Binding]]:
             child, "name", None
         ):
             found.setdefault(child.name, []).append(None)  # type: ignore[attr-defined]
-        todo.extend(ast.iter_child_nodes(child))
+        todo.extend(children(child))
     for name, annotation in declared.items():
         found[name] = [_Annotation(annotation)]  # a declaration is a fact
     return found
@@ -721,33 +745,50 @@ def _bind(target: ast.expr, item: Type | None, env: dict[str, Type | None]) -> N
 def _self_stores(
     node: ast.FunctionDef | ast.AsyncFunctionDef, self_name: str
 ) -> list[tuple[str, ast.expr]]:
-    """(attribute, value) for each store to `self.<attribute>` in a method (nested
-    functions and classes aside: their `self` may be another); a store whose value
-    is not told is given `ast.expr()`, which no inference types."""
+    """(attribute, value) for each store to `self.<attribute>` in a method, found
+    through its statements only (an expression cannot store to an attribute;
+    nested functions and classes aside: their `self` may be another); a store whose
+    value is not told is given `ast.expr()`, which no inference types."""
     found: list[tuple[str, ast.expr]] = []
-    todo: list[ast.AST] = list(node.body)
+    todo: list[ast.stmt] = list(node.body)
     while todo:
         child = todo.pop()
         kind = type(child)
-        if kind in (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda):
-            continue
         if kind is ast.Assign:
             for target in child.targets:  # type: ignore[attr-defined]
                 _attribute_stores(found, target, child.value, self_name)  # type: ignore[attr-defined]
-        elif kind is ast.AnnAssign and child.value is not None:  # type: ignore[attr-defined]
-            _attribute_stores(found, child.target, child.value, self_name)  # type: ignore[attr-defined]
-        elif kind in (ast.AugAssign, ast.For, ast.AsyncFor, ast.NamedExpr):
+        elif kind is ast.AnnAssign:
+            if child.value is not None:  # type: ignore[attr-defined]
+                _attribute_stores(found, child.target, child.value, self_name)  # type: ignore[attr-defined]
+        elif kind is ast.AugAssign:
             _attribute_stores(found, child.target, ast.expr(), self_name)  # type: ignore[attr-defined]
-        elif kind in (ast.With, ast.AsyncWith):
-            for item in child.items:  # type: ignore[attr-defined]
-                if item.optional_vars is not None:
-                    _attribute_stores(found, item.optional_vars, ast.expr(), self_name)
         elif kind is ast.Delete:
             for target in child.targets:  # type: ignore[attr-defined]
                 _attribute_stores(found, target, ast.expr(), self_name)
-        todo.extend(ast.iter_child_nodes(child))
+        elif kind in _BLOCKS:
+            if kind is ast.For or kind is ast.AsyncFor:
+                _attribute_stores(found, child.target, ast.expr(), self_name)  # type: ignore[attr-defined]
+            elif kind is ast.With or kind is ast.AsyncWith:
+                for item in child.items:  # type: ignore[attr-defined]
+                    if item.optional_vars is not None:
+                        _attribute_stores(
+                            found, item.optional_vars, ast.expr(), self_name
+                        )
+            todo.extend(getattr(child, "body", ()))
+            todo.extend(getattr(child, "orelse", ()))
+            todo.extend(getattr(child, "finalbody", ()))
+            for handler in getattr(child, "handlers", ()):
+                todo.extend(handler.body)
+            for case in getattr(child, "cases", ()):
+                todo.extend(case.body)
     found.reverse()
     return found
+
+
+_BLOCKS = frozenset(
+    {ast.If, ast.For, ast.AsyncFor, ast.While, ast.With, ast.AsyncWith, ast.Try}
+    | {ast.TryStar, ast.Match}
+)
 
 
 def _attribute_stores(
@@ -775,7 +816,7 @@ def _attribute_stores(
 def _returns(node: ast.AST) -> list[ast.Return]:
     """The function's own `return` statements (not those of nested functions)."""
     found: list[ast.Return] = []
-    todo = list(ast.iter_child_nodes(node))
+    todo = children(node)
     while todo:
         child = todo.pop()
         if isinstance(child, ast.Return):
@@ -785,7 +826,7 @@ def _returns(node: ast.AST) -> list[ast.Return]:
         elif not isinstance(
             child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)
         ):
-            todo.extend(ast.iter_child_nodes(child))
+            todo.extend(children(child))
     return found
 
 

@@ -30,6 +30,14 @@ def configure(client: Client, timeout_s: Annotated[float, "Unit('s') and 0 < _ <
     client.set_timeout(0.0)  # error: RF101
 
 
+def reconnect(client: Client = None) -> None:
+    """`client` may be None: the branch that makes one is checked too."""
+    if client is None:
+        client = Client("robot.local")
+        client.set_timeout(9000.0)  # error: RF101
+    client.set_timeout(100.0)
+
+
 def configure_local() -> None:
     Client.local().set_timeout(6000.0)  # error: RF101
     client = Client.local()
