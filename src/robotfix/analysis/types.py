@@ -40,14 +40,19 @@ if TYPE_CHECKING:
     from robotfix.analysis.program import Function, Program
 
 
-@dataclass(frozen=True)
+# The types are values (compared, hashed, carried in summaries), never changed
+# once made. Only what they need is generated (no repr, no frozen setters): each
+# generated method is code compiled when the module is imported, in every run.
+
+
+@dataclass(unsafe_hash=True, repr=False)
 class Msg:
     """A message of the catalog's type `pkg/Name`."""
 
     name: str
 
 
-@dataclass(frozen=True)
+@dataclass(unsafe_hash=True, repr=False)
 class Obj:
     """An instance of a class of this file (`Driver`) or of another module of the
     tree (`drive_pkg.motor.Driver`)."""
@@ -55,28 +60,28 @@ class Obj:
     name: str
 
 
-@dataclass(frozen=True)
+@dataclass(unsafe_hash=True, repr=False)
 class Seq:
     """A list, set, deque, iterable or homogeneous tuple of `item`s."""
 
     item: Type
 
 
-@dataclass(frozen=True)
+@dataclass(unsafe_hash=True, repr=False)
 class Tup:
     """A tuple of fixed length; None for an element of no known type."""
 
     items: tuple[Type | None, ...]
 
 
-@dataclass(frozen=True)
+@dataclass(unsafe_hash=True, repr=False)
 class Map:
     """A dict whose values are `value`s."""
 
     value: Type
 
 
-@dataclass(frozen=True)
+@dataclass(unsafe_hash=True, repr=False)
 class Maybe:
     """`Optional[T]`: a T, or None."""
 
@@ -630,18 +635,22 @@ class TypeModel:
         return found
 
 
-@dataclass(frozen=True)
 class _Annotation:
     """A local's declared type (`x: list[Twist] = []`), in a local's bindings."""
 
-    node: ast.expr
+    __slots__ = ("node",)
+
+    def __init__(self, node: ast.expr) -> None:
+        self.node = node
 
 
-@dataclass(frozen=True)
 class _Element:
     """A `for` target's binding: an element of `node`."""
 
-    node: ast.expr
+    __slots__ = ("node",)
+
+    def __init__(self, node: ast.expr) -> None:
+        self.node = node
 
 
 Binding = ast.expr | _Annotation | _Element | None
