@@ -17,7 +17,15 @@ from fractions import Fraction
 from functools import partial
 
 from robotfix import messages
-from robotfix.analysis import containers, decisions, frames, heap, hover, imported
+from robotfix.analysis import (
+    containers,
+    decisions,
+    frames,
+    heap,
+    hover,
+    imported,
+    types,
+)
 from robotfix.analysis.calls import MUTATORS, CallEvaluator
 from robotfix.analysis.constants import scan
 from robotfix.analysis.context import FileContext, Scope, build_scope
@@ -688,7 +696,10 @@ class Interpreter(CallEvaluator):
         )
         unit = None if value.literal else value.unit
         factors = () if value.literal else value.factors  # `[r * 100 for r in ranges]`
-        return Value(kind, unit=unit, items=Items(item, each, size), factors=factors)
+        message = (value.name, "unknown") if value.kind == "msg" else None
+        of = types.Obj(value.name) if value.kind == "instance" else None
+        items = Items(item, each, size, message=message, of=of)
+        return Value(kind, unit=unit, items=items, factors=factors)
 
     def _bind_plain(self, target: ast.expr, value: Value, state: State) -> None:
         """Bind a comprehension's target (its own names: no refinement applies)."""
@@ -733,6 +744,10 @@ class Interpreter(CallEvaluator):
             elif decl is not None:
                 lookup = self.refinement_lookup(decl, state)
                 value = self.check.assumed(state, arg.arg, decl, lookup)
+            elif annotation is not None and (
+                typed := self.program.types.parameter(function, arg.arg)
+            ):  # `driver: MotorDriver`, `scans: list[LaserScan]`
+                value = self.typed(typed, arg, state, arg.arg)
             else:
                 value = self.ctx.fresh(
                     "unknown", f"parameter `{arg.arg}` of {function.name}()"
