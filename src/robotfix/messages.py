@@ -376,7 +376,10 @@ def unit_mismatch(
     """`aligned`: the value's unit over the expected dimensions, when only the
     scale differs once the radian cancels (`omega_deg * r`); `twice`: the literal
     factor that converted a value already in `expected` (`p_s * 1000` into s)."""
-    message = f"`{stmt}` gives {target} a value in {got}, but {target} is in {expected}"
+    message = (
+        f"`{stmt}` gives {target} a value in {got}, but {target} {_is(target)} in "
+        f"{expected}"
+    )
     fix = conversion(got if aligned is None else aligned, expected)
     if aligned is not None and fix:
         ratio = aligned.factor / expected.factor
@@ -400,6 +403,11 @@ def unit_mismatch(
     if fix:
         message += f": {fix}"
     return Diagnostic(rules.UNIT_MISMATCH, path, span, message, tuple(notes))
+
+
+def _is(target: str) -> str:
+    """The verb for a target: "the elements of `ranges`" are in m."""
+    return "are" if target.startswith("the elements of") else "is"
 
 
 def converted_twice(
@@ -430,8 +438,8 @@ def implicit_unit_change(
     else:
         kind, unit, example = "a time step", "s", "DT: Annotated[float, \"Unit('s')\"]"
     message = (
-        f"`{stmt}` gives {target} a value in {got}, but {target} is in {expected}: "
-        f"an implicit {kind[2:]} in {unit}; multiply by {kind} declared with its unit "
+        f"`{stmt}` gives {target} a value in {got}, but {target} {_is(target)} in "
+        f"{expected}: an implicit {kind[2:]} in {unit}; multiply by {kind} declared with its unit "
         f"(`{example} = ...`)"
     )
     notes = (declared.note(),) if declared is not None else ()
