@@ -192,6 +192,10 @@ class CallEvaluator(LibraryEvaluator):
         callee: Value,
     ) -> None:
         """Unknown code may change the messages and instances it is handed."""
+        for lent_name in containers.lends(node):  # the callee may keep, change it
+            lent = state.env.get(lent_name)
+            if isinstance(lent, Value) and lent.kind == "list":
+                state.env[lent_name] = containers.stripped(lent)
         if callee.kind in ("msgclass", "builtin", "parameter_method") or (
             callee.kind == "module" and callee.name.startswith("math.")
         ):
@@ -358,7 +362,6 @@ class CallEvaluator(LibraryEvaluator):
             # the same length for the same object until something may change it
             # (`if len(sys.argv) > 1:` twice agrees)
             of = args[0]
-            key: tuple[object, ...] | None = None
             if of.kind == "tuple" and of.elements is not None:
                 return Value("int", A.Num(Fraction(len(of.elements)), True))
             if isinstance(of.term, A.Sym):
@@ -366,14 +369,13 @@ class CallEvaluator(LibraryEvaluator):
                 size = self.ctx.sizes.get(of.term.ident) if not version else None
                 if size is not None:  # a display: `len([])` is 0
                     return Value("int", A.Num(Fraction(size), True))
-                key = ("len", of.term.ident, version)
-            elif of.kind == "module":
-                key = ("len", of.name)
-            value = (
-                self.unknown(node, "int")
-                if key is None
-                else self.ctx.derived(key, "int", node)
-            )
+            shared = self.check.length_of(state, of, node)
+            if shared is not None:
+                return Value("int", shared)
+            if of.kind != "module":
+                value = self.unknown(node, "int")
+            else:
+                value = self.ctx.derived(("len", of.name), "int", node)
             state.assume(A.Binary(">=", value.known_term, ZERO))
             return value
         if not args:
@@ -480,7 +482,8 @@ class CallEvaluator(LibraryEvaluator):
             if A.syms(term):  # what else its size says of it
                 state.assume(containers.at(containers.size_of(sequence), term))
             return Value("int", term)
-        value = self.unknown(node, "int")
+        shared = self.check.length_of(state, sequence, node)
+        value = self.unknown(node, "int") if shared is None else Value("int", shared)
         size = containers.size_of(sequence)
         state.assume(A.Binary(">=", value.known_term, ZERO))
         if size != A.TRUE:

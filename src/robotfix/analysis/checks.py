@@ -49,6 +49,7 @@ KIND_NAMES = {
 }
 SCALAR_KINDS = frozenset({"int", "float", "bool", "str", "msg", "dict"})
 MAX_CHECKED = 256  # elements of a display checked one by one
+_SIZED = SEQUENCES | {"unknown"}  # values `len()` of one object is one term for
 
 
 class Checker:
@@ -585,9 +586,26 @@ class Checker:
         described = self.ctx.sym_names.get(int(name[1:]), "an element")
         return self.ctx.fresh("unknown", described).known_term
 
+    def length_of(
+        self, state: State, value: Value, description: str | ast.AST
+    ) -> A.Expr | None:
+        """The length of a list or tuple no size pins, as one term for one object
+        until something may change it: `len(xs)` in code and `len(_)` in the
+        refinement it is checked against are the same number."""
+        if not isinstance(value.term, A.Sym) or value.kind not in _SIZED:
+            return None
+        key = ("len", value.term.ident, state.version(value.term))
+        length = self.ctx.derived(key, "int", description).known_term
+        state.assume(A.Binary(">=", length, containers.number(0)))
+        return length
+
     def check_size(self, state: State, value: Value, kept: Kept, site: ast.AST) -> bool:
         """The length of `value` keeps `kept.size` (a warning when not provable)."""
         length = containers.length_term(value) if value.kind in SEQUENCES else None
+        if length is None:
+            length = self.length_of(state, value, f"`len({kept.label})`")
+        if length is not None and A.syms(length):  # what else its size says of it
+            state.assume(containers.at(containers.size_of(value), length))
         if length is not None:
             goal = containers.at(kept.size, length)
         else:
