@@ -34,6 +34,8 @@ LEAVING = frozenset(
         "send_goal_async",
     }
 )
+# Objects that send the message they are called with (`proxy(request)`).
+SENDING = frozenset({"rospy.ServiceProxy"})
 # Methods after which a container holds an element.
 FILLING = frozenset({"append", "appendleft", "insert", "add"})
 # Methods that change a container (not only code the analysis cannot see).
@@ -64,11 +66,7 @@ class CallEvaluator(LibraryEvaluator):
         method = func.attr if isinstance(func, ast.Attribute) else None
         if method in LEAVING and node.args:
             self.eval(node.func.value, state)  # type: ignore[attr-defined]
-            values = [self.eval(a, state) for a in node.args]
-            for value in values[:1]:
-                if value.kind == "msg" and value.ref is not None:
-                    self.check.check_whole(state, value.ref, self.site, publishing=True)
-                    frames.check_leaving(self.ctx, state, value.ref, self.site)
+            self._leaving([self.eval(a, state) for a in node.args], state)
             return self.unknown(node)
         if isinstance(func, ast.Attribute) and func.attr in SEQUENCE_METHODS:
             receiver = self.receiver(func.value, state)
@@ -83,9 +81,18 @@ class CallEvaluator(LibraryEvaluator):
             callee = self.eval(func, state)
             args = [self.eval(a, state) for a in node.args]
             kwargs = {k.arg: self.eval(k.value, state) for k in node.keywords}
+            if callee.kind == "object" and callee.name in SENDING:
+                self._leaving(args, state)
         result = self._dispatch(callee, node, args, kwargs, state)
         self._forget_after_call(node, args, kwargs, state, callee)
         return result
+
+    def _leaving(self, values: list[Value], state: State) -> None:
+        """The message a call sends (its first argument) leaves the node."""
+        for value in values[:1]:
+            if value.kind == "msg" and value.ref is not None:
+                self.check.check_whole(state, value.ref, self.site, publishing=True)
+                frames.check_leaving(self.ctx, state, value.ref, self.site)
 
     def _dispatch(
         self,

@@ -1169,6 +1169,8 @@ class Checker:
             and site.value.args
         ):
             return self.ctx.source.segment(site.value.args[0]) or "the message"
+        if isinstance(site, ast.Return) and site.value is not None:  # a response
+            return self.ctx.source.segment(site.value) or "the message"
         return "the message"
 
 
