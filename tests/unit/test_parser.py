@@ -54,6 +54,20 @@ def test_chains_membership_and_labels() -> None:
     assert A.show(parse_predicate("!x")) == "not x"
 
 
+def test_floored_division_and_remainder() -> None:
+    """`//` and `%` bind as `*` and `/` do, and are shown as written."""
+    pred = parse_predicate("x - y // 2 % 3 > 0")
+    assert isinstance(pred, A.Binary) and isinstance(pred.left, A.Binary)
+    remainder = pred.left.right
+    assert isinstance(remainder, A.Binary) and remainder.op == "%"
+    assert isinstance(remainder.left, A.Binary) and remainder.left.op == "//"
+    for text in ("x - y // 2 % 3 > 0", "a // (b // c) == a % (b % c)", "_ % 2 == 0"):
+        assert A.show(parse_predicate(text)) == text
+    for text in ("_ // 0 == 1", "_ % 0 == 1"):
+        with pytest.raises(AnnotationSyntaxError, match="division by zero"):
+            parse_predicate(text)
+
+
 @pytest.mark.parametrize(
     ("text", "offset"),
     [

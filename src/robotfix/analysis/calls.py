@@ -34,6 +34,8 @@ LEAVING = frozenset(
         "send_goal_async",
     }
 )
+# Objects that send the message they are called with (`proxy(request)`).
+SENDING = frozenset({"rospy.ServiceProxy"})
 # Methods after which a container holds an element.
 FILLING = frozenset({"append", "appendleft", "insert", "add"})
 # Methods that change a container (not only code the analysis cannot see).
@@ -64,11 +66,7 @@ class CallEvaluator(LibraryEvaluator):
         method = func.attr if isinstance(func, ast.Attribute) else None
         if method in LEAVING and node.args:
             self.eval(node.func.value, state)  # type: ignore[attr-defined]
-            values = [self.eval(a, state) for a in node.args]
-            for value in values[:1]:
-                if value.kind == "msg" and value.ref is not None:
-                    self.check.check_whole(state, value.ref, self.site, publishing=True)
-                    frames.check_leaving(self.ctx, state, value.ref, self.site)
+            self._leaving([self.eval(a, state) for a in node.args], state)
             return self.unknown(node)
         if isinstance(func, ast.Attribute) and func.attr in SEQUENCE_METHODS:
             receiver = self.receiver(func.value, state)
@@ -83,9 +81,18 @@ class CallEvaluator(LibraryEvaluator):
             callee = self.eval(func, state)
             args = [self.eval(a, state) for a in node.args]
             kwargs = {k.arg: self.eval(k.value, state) for k in node.keywords}
+            if callee.kind == "object" and callee.name in SENDING:
+                self._leaving(args, state)
         result = self._dispatch(callee, node, args, kwargs, state)
         self._forget_after_call(node, args, kwargs, state, callee)
         return result
+
+    def _leaving(self, values: list[Value], state: State) -> None:
+        """The message a call sends (its first argument) leaves the node."""
+        for value in values[:1]:
+            if value.kind == "msg" and value.ref is not None:
+                self.check.check_whole(state, value.ref, self.site, publishing=True)
+                frames.check_leaving(self.ctx, state, value.ref, self.site)
 
     def _dispatch(
         self,
@@ -192,6 +199,10 @@ class CallEvaluator(LibraryEvaluator):
         callee: Value,
     ) -> None:
         """Unknown code may change the messages and instances it is handed."""
+        for lent_name in containers.lends(node):  # the callee may keep, change it
+            lent = state.env.get(lent_name)
+            if isinstance(lent, Value) and lent.kind == "list":
+                state.env[lent_name] = containers.stripped(lent)
         if callee.kind in ("msgclass", "builtin", "parameter_method") or (
             callee.kind == "module" and callee.name.startswith("math.")
         ):
@@ -358,7 +369,6 @@ class CallEvaluator(LibraryEvaluator):
             # the same length for the same object until something may change it
             # (`if len(sys.argv) > 1:` twice agrees)
             of = args[0]
-            key: tuple[object, ...] | None = None
             if of.kind == "tuple" and of.elements is not None:
                 return Value("int", A.Num(Fraction(len(of.elements)), True))
             if isinstance(of.term, A.Sym):
@@ -366,14 +376,13 @@ class CallEvaluator(LibraryEvaluator):
                 size = self.ctx.sizes.get(of.term.ident) if not version else None
                 if size is not None:  # a display: `len([])` is 0
                     return Value("int", A.Num(Fraction(size), True))
-                key = ("len", of.term.ident, version)
-            elif of.kind == "module":
-                key = ("len", of.name)
-            value = (
-                self.unknown(node, "int")
-                if key is None
-                else self.ctx.derived(key, "int", node)
-            )
+            shared = self.check.length_of(state, of, node)
+            if shared is not None:
+                return Value("int", shared)
+            if of.kind != "module":
+                value = self.unknown(node, "int")
+            else:
+                value = self.ctx.derived(("len", of.name), "int", node)
             state.assume(A.Binary(">=", value.known_term, ZERO))
             return value
         if not args:
@@ -480,7 +489,8 @@ class CallEvaluator(LibraryEvaluator):
             if A.syms(term):  # what else its size says of it
                 state.assume(containers.at(containers.size_of(sequence), term))
             return Value("int", term)
-        value = self.unknown(node, "int")
+        shared = self.check.length_of(state, sequence, node)
+        value = self.unknown(node, "int") if shared is None else Value("int", shared)
         size = containers.size_of(sequence)
         state.assume(A.Binary(">=", value.known_term, ZERO))
         if size != A.TRUE:

@@ -28,9 +28,10 @@ from robotfix.analysis.vc import VC, Proved, Undecided, Unproven, Violated
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.units import Unit
+from robotfix.annotations.witness import closed_value
 from robotfix.diagnostics import Span
 from robotfix.messages import Declared
-from robotfix.ros.catalog import FieldUnit, Invariant, MsgSpec
+from robotfix.ros.catalog import FieldSpec, FieldUnit, Invariant, MsgSpec
 
 PROVED, WARNED, FAILED = "proved", "warned", "failed"
 # Sub-messages one check may create before it checks only one of each type: the
@@ -49,6 +50,7 @@ KIND_NAMES = {
 }
 SCALAR_KINDS = frozenset({"int", "float", "bool", "str", "msg", "dict"})
 MAX_CHECKED = 256  # elements of a display checked one by one
+_SIZED = SEQUENCES | {"unknown"}  # values `len()` of one object is one term for
 
 
 class Checker:
@@ -75,11 +77,11 @@ class Checker:
         if goal == A.TRUE:
             return PROVED
         probes = (probe,) if probe else ()
-        verdict = self.ctx.discharge(VC(tuple(state.facts), goal, probes))
+        facts = (*state.facts, *self.ranges(goal))
+        verdict = self.ctx.discharge(VC(facts, goal, probes))
         span, stmt = self.where(site)
         if isinstance(verdict, Proved):
             return PROVED
-        facts = tuple(state.facts)
         if isinstance(verdict, Unproven):
             arm = self._arm_violated(state, goal, probes)
             if arm is not None:
@@ -126,6 +128,14 @@ class Checker:
             messages.solver_unknown(self.path, span, stmt, predicate, verdict.reason)
         )
         return FAILED
+
+    def ranges(self, goal: A.Expr) -> list[A.Expr]:
+        """The type ranges of the received integer fields `goal` names (`uint8`
+        data: `0 <= data <= 255`): asked only where a question involves one."""
+        if not self.ctx.ranged:
+            return []
+        found = ((s, self.ctx.ranged.get(s.ident)) for s in A.syms(goal))
+        return [heap.within(values, sym) for sym, values in found if values]
 
     def _only_value(
         self, facts: tuple[A.Expr, ...], probe: A.Expr, value: str
@@ -585,9 +595,26 @@ class Checker:
         described = self.ctx.sym_names.get(int(name[1:]), "an element")
         return self.ctx.fresh("unknown", described).known_term
 
+    def length_of(
+        self, state: State, value: Value, description: str | ast.AST
+    ) -> A.Expr | None:
+        """The length of a list or tuple no size pins, as one term for one object
+        until something may change it: `len(xs)` in code and `len(_)` in the
+        refinement it is checked against are the same number."""
+        if not isinstance(value.term, A.Sym) or value.kind not in _SIZED:
+            return None
+        key = ("len", value.term.ident, state.version(value.term))
+        length = self.ctx.derived(key, "int", description).known_term
+        state.assume(A.Binary(">=", length, containers.number(0)))
+        return length
+
     def check_size(self, state: State, value: Value, kept: Kept, site: ast.AST) -> bool:
         """The length of `value` keeps `kept.size` (a warning when not provable)."""
         length = containers.length_term(value) if value.kind in SEQUENCES else None
+        if length is None:
+            length = self.length_of(state, value, f"`len({kept.label})`")
+        if length is not None and A.syms(length):  # what else its size says of it
+            state.assume(containers.at(containers.size_of(value), length))
         if length is not None:
             goal = containers.at(kept.size, length)
         else:
@@ -708,6 +735,7 @@ class Checker:
             or spec.array  # the kind is the elements'
             or self.base_fits(spec.kind, value, site, f"`{target}`")
         )
+        ok = ok and self._in_type_range(state, ref, name, spec, value, site, target)
         if unit_decl is not None and owner is not None:
             decl = self._field_declared(owner, name, unit_decl)
             framed, frame_decl = frames.expected_unit(self.ctx, state, ref, name, unit)
@@ -746,6 +774,59 @@ class Checker:
         obj.fields[name] = replace(kept, default_of=None)
         obj.set_on_all_paths(name)
         obj.reported.discard(name)
+
+    def _in_type_range(
+        self,
+        state: State,
+        ref: int,
+        name: str,
+        spec: FieldSpec,
+        value: Value,
+        site: ast.AST,
+        target: str,
+    ) -> bool:
+        """A number written into an integer field lies in its type's range: RF101
+        only when certain (a value worked out exactly: `data = 300` into uint8, or
+        one every value of the received fields it is made of breaks); anything
+        else is left alone, as rosidl's own check would be at run time."""
+        if spec.values is None or value.term is None:
+            return True
+        low, high = spec.values
+        exact = closed_value(value.term)
+        if isinstance(exact, bool):
+            return True
+        if exact is None:  # certain only from other fields' ranges (`u8 + 256`)
+            goal = heap.within(spec.values, value.term)
+            ranges = self.ranges(goal)
+            if not ranges:
+                return True
+            verdict = self.ctx.discharge(VC((*state.facts, *ranges), goal))
+            if not isinstance(verdict, Violated):
+                return True
+        elif low <= exact <= high:
+            return True
+        msg_type = state.heap[ref].type
+        origin = next(
+            (
+                s.declared_at.get(p)
+                for s, p in heap.contexts(self.ctx, state, ref, name)
+            ),
+            None,
+        )
+        what = f"integer type of {msg_type}.{name}"
+        declared = (
+            Declared(what, origin.path, origin.line, owner=msg_type)
+            if origin is not None
+            else Declared(what, None, None, f"it holds {low} to {high}", msg_type)
+        )
+        span, stmt = self.where(site)
+        predicate = f"{low} <= {name} <= {high}"
+        self.ctx.report(
+            messages.refinement_violated(
+                self.path, span, stmt, predicate, f"`{target}`", None, declared
+            )
+        )
+        return False
 
     def _write_array(
         self,
@@ -1188,6 +1269,8 @@ class Checker:
             and site.value.args
         ):
             return self.ctx.source.segment(site.value.args[0]) or "the message"
+        if isinstance(site, ast.Return) and site.value is not None:  # a response
+            return self.ctx.source.segment(site.value) or "the message"
         return "the message"
 
 

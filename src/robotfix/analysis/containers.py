@@ -486,13 +486,18 @@ READING_CALLS = frozenset(
 _NESTED = frozenset({ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef})
 
 
-def shared_names(body: list[ast.stmt], changes: bool = False) -> set[str]:
+def shared_names(
+    body: list[ast.stmt], changes: bool = False, lent: set[str] | None = None
+) -> set[str]:
     """Names in statements `body` (a function's or module's) that may share their
     list with another name, attribute, field or callee: used other than by a read,
     a change RobotFix follows (`xs.append(v)`, `xs[i] = v`), unpacking, or
     `return`. A use inside a nested function or class counts as shared (it may run
-    at any time). With `changes`, a change it follows counts too (for a loop)."""
+    at any time). With `changes`, a change it follows counts too (for a loop).
+    Given `lent`, names shared only by being passed to calls (`g(xs)`) go there
+    instead: they hold what they hold up to the first such call (`lends`)."""
     shared: set[str] = set()
+    passed: set[str] = set()
     todo: list[tuple[ast.AST, bool]] = [(n, n.__class__ in _NESTED) for n in body]
     name_class, load_class = ast.Name, ast.Load
     while todo:
@@ -507,10 +512,29 @@ def shared_names(body: list[ast.stmt], changes: bool = False) -> set[str]:
                         or not _plain_use(node, child)  # type: ignore[arg-type]
                         or (changes and _change(node))
                     ):
-                        shared.add(child.id)  # type: ignore[union-attr]
+                        if lent is not None and not nested and _lent(node, child):  # type: ignore[arg-type]
+                            passed.add(child.id)  # type: ignore[union-attr]
+                        else:
+                            shared.add(child.id)  # type: ignore[union-attr]
                 elif isinstance(child, ast.AST):
                     todo.append((child, nested or kind in _NESTED))
+    if lent is not None:
+        lent |= passed - shared
     return shared
+
+
+def lends(call: ast.Call) -> list[str]:
+    """The names whose lists `call` is handed (`g(xs)`): from then on the callee may
+    have kept or changed them. Calls that only read a list lend nothing."""
+    return [a.id for a in call.args if a.__class__ is ast.Name and _lent(call, a)]
+
+
+def _lent(parent: ast.AST, name: ast.Name) -> bool:
+    if not isinstance(parent, ast.Call):
+        return False
+    func = parent.func
+    reads = isinstance(func, ast.Name) and func.id in READING_CALLS
+    return not reads and name in parent.args
 
 
 def _change(parent: ast.AST) -> bool:

@@ -93,6 +93,9 @@ class FileContext:
         self.unchanged: dict[int, tuple[A.Sym, object]] = {}
         self._first_reads: dict[object, A.Sym] = {}
         self.sizes: dict[int, int] = {}  # symbol of a list, set or dict display -> len
+        # symbol of an integer field of a received message -> its type's range, a
+        # fact added only to the questions that name the symbol (`Checker.ranges`)
+        self.ranged: dict[int, tuple[int, int]] = {}
         self.steps = 0
         self.index = FileIndex()
         self.imports: dict[str, str] = {}  # local name -> qualified name

@@ -32,7 +32,14 @@ from robotfix.diagnostics import Span
 from robotfix.ros.catalog import constant_term
 
 T = TypeVar("T")
-ARITH = {ast.Add: "+", ast.Sub: "-", ast.Mult: "*", ast.Div: "/"}
+ARITH = {
+    ast.Add: "+",
+    ast.Sub: "-",
+    ast.Mult: "*",
+    ast.Div: "/",
+    ast.FloorDiv: "//",  # floored, as `A.arith` and the encoder compute it
+    ast.Mod: "%",
+}
 COMPARE = {
     ast.Eq: "==",
     ast.NotEq: "!=",
@@ -516,6 +523,9 @@ class ExpressionEvaluator:
                 if unit is not None and unit == left.unit
                 else right.factors
             )
+        elif op == "%":  # `a % b` is in a's unit: a - b * (a // b)
+            unit, literal = left.unit, left.literal and right.literal
+            factors, rad_free = left.factors, left.rad_free
         else:
             unit, literal = self.unit_of_product(left, right, op)
             factors = self.factors_of_product(left, right, op, node)
@@ -564,10 +574,6 @@ class ExpressionEvaluator:
         return found if found is not None else self.unknown(node)
 
     def _other_binop(self, node: ast.BinOp, left: Value, right: Value) -> Value:
-        if isinstance(node.op, ast.Mod):
-            return self.unknown(node, unit=left.unit)
-        if isinstance(node.op, ast.FloorDiv):
-            return self.unknown(node, "int", self.unit_of_product(left, right, "/")[0])
         exponent = _literal(right.term) if right.literal else None
         if (
             isinstance(node.op, ast.Pow)

@@ -238,8 +238,16 @@ def read_raw(
     if obj.origin == "constructed" and name not in obj.reported:
         return Value(spec.kind, default_of(ctx, spec), unit, default_of=(ref, name))
     value = ctx.fresh(spec.kind, description, unit)
+    if spec.values is not None and obj.origin == "received":
+        ctx.ranged[value.term.ident] = spec.values  # type: ignore[union-attr]
     obj.fields[name] = value
     return value
+
+
+def within(values: tuple[int, int], term: A.Expr) -> A.Expr:
+    """`low <= term <= high` for an integer field's type range (`uint8`)."""
+    low, high = (containers.number(v) for v in values)
+    return A.Binary("and", A.Binary("<=", low, term), A.Binary("<=", term, high))
 
 
 def _array(
@@ -267,10 +275,13 @@ def _array(
             ]
         )
     size = A.conjoin([size, kept.size]) if kept.size != A.TRUE else size
+    each = kept.each
+    if spec.values is not None and obj.origin == "received":  # each element's range
+        each = A.conjoin([within(spec.values, containers.SELF), *A.conjuncts(each)])
     message = (
         (spec.msg_type, obj.origin) if spec.kind == "msg" and spec.msg_type else None
     )
-    items = Items(kept.item, kept.each, size, kept, message=message)
+    items = Items(kept.item, each, size, kept, message=message)
     value = Value("list", unit=kept.unit, items=items)
     obj.fields[name] = value
     return value

@@ -555,9 +555,9 @@ class Interpreter(CallEvaluator):
         if self.scope.kind != "class":
             if self._shared is None:  # one walk of the body, at the first such read
                 self._shared = containers.shared_names(
-                    getattr(self.scope.node, "body", [])
+                    getattr(self.scope.node, "body", []), lent=set()
                 )
-            if name not in self._shared:
+            if name not in self._shared:  # (nor lent to a call yet: `lends`)
                 if self.follows_lists():
                     return value
                 # its elements do not matter here, its length (truth) may
@@ -699,7 +699,12 @@ class Interpreter(CallEvaluator):
         message = (value.name, "unknown") if value.kind == "msg" else None
         of = types.Obj(value.name) if value.kind == "instance" else None
         items = Items(item, each, size, message=message, of=of)
-        return Value(kind, unit=unit, items=items, factors=factors)
+        made = Value(kind, unit=unit, items=items, factors=factors)
+        if kind != "list":
+            return made
+        # one length for each `len()` of it and each `len(_)` it is checked against
+        text = A.excerpt(" ".join((self.ctx.source.segment(node) or "[...]").split()))
+        return self.check.with_length(made, text)
 
     def _bind_plain(self, target: ast.expr, value: Value, state: State) -> None:
         """Bind a comprehension's target (its own names: no refinement applies)."""

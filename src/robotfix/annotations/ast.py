@@ -60,7 +60,7 @@ class Unary:
 
 @dataclass(frozen=True)
 class Binary:
-    op: str  # + - * / and or == != < <= > >=
+    op: str  # + - * / // % and or == != < <= > >=  (`//`, `%`: Python's, floored)
     left: Expr
     right: Expr
 
@@ -94,7 +94,7 @@ class UnitIs:
 
 Expr = Num | Bool | Str | Name | Sym | Unary | Binary | Ite | Func | UnitIs
 
-ARITH_OPS = frozenset("+-*/")
+ARITH_OPS = frozenset({"+", "-", "*", "/", "//", "%"})
 COMPARE_OPS = frozenset({"==", "!=", "<", "<=", ">", ">="})
 BOOL_OPS = frozenset({"and", "or"})
 TRUE = Bool(True)
@@ -234,7 +234,30 @@ _PRECEDENCE = {
     "-": 5,
     "*": 6,
     "/": 6,
+    "//": 6,
+    "%": 6,
 }
+
+
+_LEFT_ONLY = frozenset({"-", "/", "//", "%"})  # not associative on the right
+
+
+def arith(op: str, left: Fraction, right: Fraction) -> Fraction | None:
+    """`left op right` exactly, as Python computes it on numbers (`//` floors and
+    `%` takes the divisor's sign, for ints and floats alike); None for a division
+    by zero or an operator that is not arithmetic."""
+    if op in ("/", "//", "%") and right == 0:
+        return None
+    if op == "//":
+        return Fraction(left // right)
+    found = {
+        "+": lambda: left + right,
+        "-": lambda: left - right,
+        "*": lambda: left * right,
+        "/": lambda: left / right,
+        "%": lambda: left % right,
+    }.get(op)
+    return None if found is None else found()
 
 
 def show(expr: Expr) -> str:
@@ -256,7 +279,7 @@ def show(expr: Expr) -> str:
     if isinstance(expr, Binary):
         level = _PRECEDENCE[expr.op]
         # comparisons do not chain here, and - and / are not associative on the right
-        right_level = level + 1 if expr.op in ("-", "/") or level == 4 else level
+        right_level = level + 1 if expr.op in _LEFT_ONLY or level == 4 else level
         left_level = level + 1 if level == 4 else level
         left = _operand(expr.left, left_level)
         return f"{left} {expr.op} {_operand(expr.right, right_level)}"

@@ -90,7 +90,11 @@ class _ToAst:
         return A.Unary("not", _value(operand))
 
     def arith(self, left: A.Expr, op: Token, right: A.Expr) -> A.Expr:
-        if str(op) == "/" and isinstance(right, A.Num) and right.value == 0:
+        if (
+            str(op) in ("/", "//", "%")
+            and isinstance(right, A.Num)
+            and right.value == 0
+        ):
             raise AnnotationSyntaxError("division by zero", op.start_pos or 0)
         return A.Binary(str(op), _value(left), _value(right))
 

@@ -360,12 +360,10 @@ def _binary(expr: A.Binary, values: Values) -> Value:
         return (left == right) if op == "==" else (left != right)
     if not isinstance(left, Fraction) or not isinstance(right, Fraction):
         return None  # booleans compared, or an unknown part
-    if op == "/":
-        return None if right == 0 else left / right
-    if op in ("+", "-", "*"):
-        result = (
-            left + right if op == "+" else left - right if op == "-" else left * right
-        )
+    if op in A.ARITH_OPS:
+        result = A.arith(op, left, right)
+        if result is None or op == "/":
+            return result
         big = abs(result.numerator) > _LIMIT or result.denominator > _LIMIT
         return None if big else result
     return {

@@ -70,6 +70,13 @@ INT_TYPES = frozenset(
         "uint64",
     ]
 )
+# The values an integer field can hold (rosidl; `char` is uint8 in a .msg, in ROS 1
+# too; `byte` is int8 in ROS 1 but `bytes` in ROS 2's Python: no range).
+INT_RANGES = {
+    "char": (0, 2**8 - 1),
+    **{f"uint{n}": (0, 2**n - 1) for n in (8, 16, 32, 64)},
+    **{f"int{n}": (-(2 ** (n - 1)), 2 ** (n - 1) - 1) for n in (8, 16, 32, 64)},
+}
 FLOAT_TYPES = frozenset({"float32", "float64"})
 BASE_KINDS = {"bool": "bool", "string": "str", "wstring": "str"}
 ALIASES = {
@@ -96,6 +103,8 @@ class FieldSpec:
     std_default: bool = False  # from a ROS 2 standard definition: ROS 1 has none
     size: int | None = None  # an array of this fixed size (`float64[9]`)
     bound: int | None = None  # an array of at most this many elements (`[<=9]`)
+    # an integer field's type range, `uint8` (0, 255): its elements' for an array
+    values: tuple[int, int] | None = None
 
 
 @dataclass(frozen=True)
@@ -715,7 +724,9 @@ class MsgCatalog:
         self, name: str, type_: str, array: bool, package: str
     ) -> FieldSpec | None:
         if type_ in INT_TYPES:
-            return FieldSpec(name, "int", None, array, loose=type_ in ("char", "byte"))
+            loose = type_ in ("char", "byte")
+            values = INT_RANGES.get(type_)
+            return FieldSpec(name, "int", None, array, loose=loose, values=values)
         if type_ in FLOAT_TYPES:
             return FieldSpec(name, "float", None, array)
         if type_ in BASE_KINDS:

@@ -106,9 +106,11 @@ class Encoder:
                 return self.fresh("bool")
             left, right = self._same_sort(left, right)
             return left == right if op == "==" else left != right
-        if op in ("*", "/") and self._product_degree(node) > MAX_DEGREE:
+        if op in _PRODUCTS and self._product_degree(node) > MAX_DEGREE:
             return self.fresh("real")
         left, right = self.arith(node.left), self.arith(node.right)
+        if op in ("//", "%"):
+            return _floored(op, left, right)
         if op == "/":
             return (
                 z3.ToReal(left) / z3.ToReal(right)
@@ -136,7 +138,7 @@ class Encoder:
             return found
         if isinstance(node, (A.Sym, A.Name)):
             found = 1
-        elif isinstance(node, A.Binary) and node.op in ("*", "/"):
+        elif isinstance(node, A.Binary) and node.op in _PRODUCTS:
             found = self._product_degree(node)
             found = 1 if found > MAX_DEGREE else found
         elif isinstance(node, A.Ite):
@@ -165,6 +167,28 @@ class Encoder:
         if left.sort() != right.sort():
             return left, left  # incomparable branches: the Ite is as good as unknown
         return left, right
+
+
+_PRODUCTS = frozenset({"*", "/", "//", "%"})
+
+
+def _floored(op: str, left: Any, right: Any) -> Any:
+    """Python's `left // right` and `left % right`: the quotient floored, the
+    remainder with the divisor's sign. Ints use z3's div and mod (Euclidean: floored
+    for a positive divisor, and `a // b == -a // -b`), so a constant divisor stays
+    linear; otherwise the real quotient is floored (`ToInt` is floor). By zero the
+    result is z3's unconstrained value: Python raised there, the path never ends."""
+    if _is_int(left) and _is_int(right):
+        if op == "//":
+            up, down = left / right, (-left) / (-right)
+        else:
+            up, down = left % right, -((-left) % (-right))
+        if z3.is_int_value(right):  # a constant divisor: its sign picks the form
+            return up if right.as_long() > 0 else down
+        return z3.If(right > 0, up, down)
+    left, right = _real(left), _real(right)
+    quotient = z3.ToReal(z3.ToInt(left / right))
+    return quotient if op == "//" else left - right * quotient
 
 
 def _too_long(number: int) -> bool:

@@ -62,11 +62,8 @@ def _binary(expr: A.Binary) -> Constant | None:
         return (left == right) if op == "==" else (left != right)
     if not isinstance(left, Fraction) or not isinstance(right, Fraction):
         return None
-    if op == "/":
-        return None if right == 0 else left / right
-    table = {"+": left + right, "-": left - right, "*": left * right}
-    if op in table:
-        return table[op]
+    if op in A.ARITH_OPS:
+        return A.arith(op, left, right)
     return {
         "<": left < right,
         "<=": left <= right,

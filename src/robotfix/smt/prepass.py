@@ -6,7 +6,8 @@ with exact interval arithmetic on linear terms, in pure Python, and returns Fals
 whenever it is not sure: the VC then goes to z3 as before. It never says "violated",
 so it cannot invent a finding; what it proves, z3 proves too (a goal the facts imply,
 or any goal under facts no value satisfies), except where z3 would give up (unknown,
-the file's budget), where a proof is the better answer.
+the file's budget), where a proof is the better answer. Floored `//` and `%` are
+never linear terms here.
 
 What it reads, all else is ignored (ignoring a fact only weakens what is known):
 - facts that are conjunctions of comparisons with one symbol, `2 * x + 1 < 5`, whose
@@ -310,7 +311,7 @@ def _linear(
             if not right[0]:
                 return _scale(left, right[1])
             return None
-        if not right[0] and right[1] != 0:  # division by a non-zero constant
+        if expr.op == "/" and not right[0] and right[1] != 0:  # by a constant
             return _scale(left, 1 / right[1])
     return None
 
