@@ -635,6 +635,57 @@ def parameter_file_not_checked(
     )
 
 
+def launch_file_not_read(path: str, line: int, col: int, detail: str) -> Diagnostic:
+    """RF004 for a launch file that cannot be read or parsed (its nodes are not
+    checked; `ros2 launch` or `roslaunch` refuses it too)."""
+    return Diagnostic(
+        rules.PATH_NOT_CHECKED,
+        path,
+        Span.point(line, col),
+        f"launch file not checked: {detail}",
+    )
+
+
+def launch_parameter_undeclared(
+    path: str, line: int, col: int, name: str, node: str, where: Note
+) -> Diagnostic:
+    """RF601: a launch file (or a parameter file it names, in the section for its
+    node) sets a parameter the node's code never declares."""
+    return Diagnostic(
+        rules.LAUNCH_PARAMETER_UNDECLARED,
+        path,
+        Span.point(line, col),
+        f"parameter `{name}` is set for node {node}, which declares no such "
+        "parameter (a typo?)",
+        (
+            where,
+            Note(
+                "rclpy ignores a parameter override nobody declares: the node "
+                "keeps its default"
+            ),
+        ),
+    )
+
+
+def parameter_section_unmatched(
+    path: str, line: int, col: int, key: str
+) -> Diagnostic:
+    """RF602: a ROS 2 parameter file's node key no node of the run is named."""
+    return Diagnostic(
+        rules.PARAMETER_SECTION_UNMATCHED,
+        path,
+        Span.point(line, col),
+        f"section `{key}` names no node of the checked workspace or its launch "
+        "files: its parameters apply to no node RobotFix knows, and are not checked",
+        (
+            Note(
+                "a node of another workspace or a C++ node may be named so; a launch "
+                "file that renames a node (`name=`) makes its section apply"
+            ),
+        ),
+    )
+
+
 def parameter_value_violated(
     path: str, span: Span, subject: str, rule: str, declared: Declared, why: str = ""
 ) -> Diagnostic:

@@ -30,7 +30,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Protocol
 
 from robotfix import messages
 from robotfix.analysis.parameters import ROSPY, Attached, ParamDecl, Summary, summarize
@@ -79,7 +79,7 @@ class Failure:
 
 
 @dataclass
-class _Parameter:
+class Parameter:
     """One parameter a YAML key may name, with everything that constrains it."""
 
     name: str
@@ -91,8 +91,11 @@ class _Parameter:
 
     def failure(self, value: Y.Node, budget: list[int]) -> Failure | None:
         typed = (P.ros2_value if self.ros == 2 else P.ros1_value)(value, budget)
-        if typed is None:
-            return None
+        return None if typed is None else self.judge(typed, budget)
+
+    def judge(self, typed: P.Typed, budget: list[int]) -> Failure | None:
+        """What is wrong with `typed` as this parameter's value (None: nothing
+        this checker can tell)."""
         if any(d.ignore_override for d in self.decls):
             return None
         for decl in self.decls:
@@ -120,6 +123,7 @@ def check_parameter_files(
     config: Config | None = None,
     known: dict[str, Known] | None = None,
     project: Project | None = None,
+    launches: Launches | None = None,
 ) -> list[Diagnostic]:
     """Diagnostics for the parameter files and generate_parameter_library
     definitions of a run; `python_files` are those whose declarations count. A
@@ -129,7 +133,11 @@ def check_parameter_files(
     `# robotfix: ignore[RF101]` and `per-file-ignores` silence as in Python.
     `known`: what the run's checks found of the Python files they read;
     `project`: how a file read here sees the other modules of its tree (an alias
-    its refinement imports), as its check does."""
+    its refinement imports), as its check does. `launches`: what the run's
+    launch files add (`launchcheck`): the names they give nodes, the parameter
+    files they name, and their own checks, made with the same table."""
+    if launches is not None:
+        files = [*files, *(f for f in launches.files if f not in files)]
     loud = {str(p) for p in [*named, *definition_files]}
     texts: dict[str, str] = {}
     out: list[Diagnostic] = []
@@ -150,9 +158,11 @@ def check_parameter_files(
                 )
             out.extend(_definition_defaults(loaded, key))
     layouts = {f.layout for f in read.values() if f.entries}
+    if launches is not None and launches.entries:
+        layouts |= set(MENTIONS)
     words = tuple(w for layout in sorted(layouts) for w in MENTIONS.get(layout, ()))
     found = _summaries(python_files, words, known or {}, project) if words else []
-    table = _Table(found, definitions)
+    table = Table(found, definitions, launches.renamed if launches else None)
     for path in files:
         loaded = read.get(str(path))
         if loaded is None or loaded.layout == "definitions":
@@ -170,6 +180,8 @@ def check_parameter_files(
                 first = failures[0]
                 assert first is not None
                 out.append(_report(str(path), entry, first, loaded.layout, budget))
+    if launches is not None:
+        out.extend(launches.check(table, read))
     return [d for d in out if not _silenced(d, texts.get(d.path, ""), config)]
 
 
@@ -249,36 +261,55 @@ def _load(
     return P.classify(root)
 
 
-class _Table:
-    """The parameters of the run's nodes, by node name and package."""
+class Launches(Protocol):
+    """What a run's launch files add to the check of its parameter files."""
+
+    renamed: dict[str, set[str]]  # a node name -> the Python files of its code
+    files: list[Path]  # parameter files the launch entries name
+    entries: int  # launch entries read
+
+    def check(self, table: Table, read: dict[str, P.ParamFile]) -> list[Diagnostic]:
+        """The launch files' own findings (`read`: the parameter files loaded)."""
+        ...
+
+
+class Table:
+    """The parameters of the run's nodes, by node name and package; `renamed`:
+    the names launch files give nodes (`Node(name='bridge')`), with the files
+    of the code they start, so a section keyed `bridge:` applies to it."""
 
     def __init__(
         self,
         summaries: list[Summary],
         definitions: dict[str, list[tuple[P.Definition, str]]],
+        renamed: dict[str, set[str]] | None = None,
     ) -> None:
         self.summaries = summaries
         self.definitions = definitions
+        self.renamed = renamed or {}  # real paths
+        self.real = {s.path: os.path.realpath(s.path) for s in summaries}
         self.packages = {s.path: _package_of(Path(s.path)) for s in summaries}
         # ROS 2 owners whose parameters a file may set: (summary, owner, names)
         self.owners = [
             (summary, owner, summary.names_of(owner))
             for summary in summaries
-            for owner in _owners(summary)
+            for owner in owners(summary)
             if not any(o in summary.auto_declare for o in summary.lineage(owner))
         ]
 
-    def ros2(self, entry: P.Entry, package: Path | None) -> list[_Parameter]:
+    def ros2(self, entry: P.Entry, package: Path | None) -> list[Parameter]:
         node = entry.node_name
         wildcard = node in ("*", "**")
-        found: list[_Parameter] = []
+        found: list[Parameter] = []
         for summary, owner, names in self.owners:
             if wildcard:
                 if package is None or self.packages[summary.path] != package:
                     continue
-            elif node not in names:
+            elif node not in names and self.real[summary.path] not in self.renamed.get(
+                node, ()
+            ):
                 continue
-            candidate = self._ros2_parameter(summary, owner, entry.name)
+            candidate = self.ros2_parameter(summary, owner, entry.name)
             if candidate is not None:
                 found.append(candidate)
         if not wildcard:
@@ -287,10 +318,10 @@ class _Table:
                     found.append(_gpl(entry.name, definition, path))
         return found
 
-    def _ros2_parameter(
+    def ros2_parameter(
         self, summary: Summary, owner: str, name: str
-    ) -> _Parameter | None:
-        candidate = _Parameter(name, 2)
+    ) -> Parameter | None:
+        candidate = Parameter(name, 2)
         decl = summary.declaration(owner, name)
         if decl is not None:
             candidate.decls.append(decl)
@@ -304,8 +335,8 @@ class _Table:
             return candidate
         return None
 
-    def ros1(self, entry: P.Entry, package: Path | None) -> list[_Parameter]:
-        found: list[_Parameter] = []
+    def ros1(self, entry: P.Entry, package: Path | None) -> list[Parameter]:
+        found: list[Parameter] = []
         for summary in self.summaries:
             if package is not None and self.packages[summary.path] != package:
                 continue
@@ -321,7 +352,7 @@ class _Table:
                     if d.ros == 1 and ros1_name(d.name, nodes) == name
                 ]
                 if sites:
-                    candidate = _Parameter(name, 1)
+                    candidate = Parameter(name, 1)
                     candidate.refinements = [
                         a
                         for a in summary.attached
@@ -343,15 +374,15 @@ def ros1_name(name: str, nodes: list[str]) -> str:
     return absolute
 
 
-def _owners(summary: Summary) -> list[str]:
+def owners(summary: Summary) -> list[str]:
     owners = {d.owner for d in summary.decls if d.ros == 2}
     owners |= {a.owner for a in summary.attached if a.owner != ROSPY}
     owners |= set(summary.listeners)
     return sorted(owners)
 
 
-def _gpl(name: str, definition: P.Definition, path: str) -> _Parameter:
-    candidate = _Parameter(name, 2, definitions=[definition])
+def _gpl(name: str, definition: P.Definition, path: str) -> Parameter:
+    candidate = Parameter(name, 2, definitions=[definition])
     candidate.definitions_path[id(definition)] = path
     return candidate
 

@@ -40,6 +40,7 @@ if TYPE_CHECKING:
 
 if TYPE_CHECKING:  # the analysis is imported only when a file is checked
     from robotfix.analysis.parameters import Summary as ParamSummary
+    from robotfix.launchcheck import LaunchRun
     from robotfix.paramcheck import Known as ParamKnown
     from robotfix.project.summary import Known, Project
 
@@ -179,7 +180,9 @@ def _check_paths(
             todo.append((file, data))
     done = len(files) - len(todo)
     contents = {path: data for path, data in todo if data is not None}
-    if todo and (found.parameter_files or found.parameter_definitions):
+    if todo and (
+        found.parameter_files or found.parameter_definitions or found.launch_files
+    ):
         from robotfix.paramcheck import MENTIONS  # not on a fully cached run
 
         project.parameter_words = tuple(w for ws in MENTIONS.values() for w in ws)
@@ -260,13 +263,22 @@ def _parameter_problems(
     parameters: dict[str, ParamKnown] | None = None,
     project: Project | None = None,
 ) -> list[Diagnostic]:
-    """Parameter files against the parameters the code declares; cached as a whole,
-    under a key that hashes every input (`_params_key`); `parameters`: what the
-    checks found of the files they read (the others are read there)."""
-    if not found.parameter_files and not found.parameter_definitions:
+    """Parameter files and launch files against the parameters the code declares;
+    cached as a whole, under a key that hashes every input (`_params_key`);
+    `parameters`: what the checks found of the files they read (the others are
+    read there). Launch files are read first (`launchcheck.LaunchRun`): what
+    they touch is part of the key."""
+    if not (
+        found.parameter_files or found.parameter_definitions or found.launch_files
+    ):
         return []
     python_files = [*files, *found.summary_files]
-    key = _params_key(found, python_files, config, cache) if cache else None
+    launches = None
+    if found.launch_files:
+        from robotfix.launchcheck import LaunchRun
+
+        launches = LaunchRun(found.launch_files, python_files)
+    key = _params_key(found, python_files, config, cache, launches) if cache else None
     if cache is not None and key is not None:
         known = cache.params(key)
         if known is not None:
@@ -281,6 +293,7 @@ def _parameter_problems(
         config,
         parameters,
         project,
+        launches,
     )
     if cache is not None and key is not None:
         cache.put_params(key, out)
@@ -288,7 +301,11 @@ def _parameter_problems(
 
 
 def _params_key(
-    found: Discovery, python_files: list[Path], config: Config, cache: ResultCache
+    found: Discovery,
+    python_files: list[Path],
+    config: Config,
+    cache: ResultCache,
+    launches: LaunchRun | None = None,
 ) -> str:
     """Everything `paramcheck` reads: the parameter and definitions files (bytes,
     per-file ignores, package folder), and each Python file that mentions a
@@ -297,8 +314,14 @@ def _params_key(
     consulted of other modules (an alias its refinement imports: the entry holds
     each record's fingerprint as it is now, or the file was checked again). A
     file read only for its declarations (`summary_files`, no check) counts with
-    every other such file's bytes: they are the modules it can import."""
+    every other such file's bytes: they are the modules it can import. With
+    launch files: every file their reading touched (launch files, the parameter
+    files and build files they lead to, the nodes' code, by its bytes)."""
     parts: list[str] = []
+    if launches is not None:
+        for path in sorted(launches.touched()):
+            ignored = ",".join(sorted(config.ignored_codes(Path(path))))
+            parts.append(f"launch\0{path}\0{cache.sha(Path(path))}\0{ignored}")
     groups = (
         ("yaml", found.parameter_files),
         ("definitions", found.parameter_definitions),

@@ -190,6 +190,9 @@ class Definition:
 class ParamFile:
     layout: str  # ros2, ros1, definitions
     entries: list[Entry] = field(default_factory=list)
+    # ROS 2: each node key path above a `ros__parameters` (`/ns/node`), and where
+    # its last key is (line, col)
+    sections: dict[str, tuple[int, int]] = field(default_factory=dict)
     definitions: list[Definition] = field(default_factory=list)
 
 
@@ -200,8 +203,9 @@ def classify(root: Y.Node | None) -> ParamFile | None:
     if not isinstance(root, Y.Mapping) or not root.items:
         return None
     found: list[Entry] = []
-    if _ros2_sections(root, [], found, budget, 0):
-        return ParamFile("ros2", found)
+    sections: dict[str, tuple[int, int]] = {}
+    if _ros2_sections(root, [], found, budget, 0, sections):
+        return ParamFile("ros2", found, sections=sections)
     definitions = _definitions(root, budget)
     if definitions:
         return ParamFile("definitions", definitions=definitions)
@@ -215,9 +219,16 @@ def _key(node: Y.Node) -> str | None:
 
 
 def _ros2_sections(
-    node: Y.Mapping, path: list[str], out: list[Entry], budget: list[int], depth: int
+    node: Y.Mapping,
+    path: list[str],
+    out: list[Entry],
+    budget: list[int],
+    depth: int,
+    places: dict[str, tuple[int, int]],
+    where: tuple[int, int] = (1, 0),
 ) -> bool:
-    """Collect every `ros__parameters` section; True if there was one."""
+    """Collect every `ros__parameters` section (and in `places`, where its node
+    key is); True if there was one."""
     seen = False
     for key_node, raw in node.items:
         key = _key(key_node)
@@ -226,9 +237,14 @@ def _ros2_sections(
             continue
         if key == PARAMS_KEY:
             seen = True
+            places.setdefault("/".join(path), where)
             _params(value, "/".join(path), [], out, budget, depth)
         else:
-            seen = _ros2_sections(value, [*path, key], out, budget, depth + 1) or seen
+            at = (key_node.line, key_node.col) if isinstance(key_node, Y.Scalar) else where
+            seen = (
+                _ros2_sections(value, [*path, key], out, budget, depth + 1, places, at)
+                or seen
+            )
     return seen
 
 
