@@ -33,8 +33,8 @@ from robotfix.paramcheck import Failure, Parameter, Table, ros1_name
 from robotfix.paramcheck import owners as declaring_owners
 from robotfix.ros import paramfile as P
 from robotfix.ros.executables import MAX_BUILD_BYTES, executable_file, module_file
-from robotfix.ros.launch.reader import Reader
 from robotfix.ros.launch.model import FileParam, InlineParam, NodeEntry
+from robotfix.ros.launch.reader import Reader
 from robotfix.ros.package import package_folder, package_name
 from robotfix.ros.yamlfile import WALK_BUDGET
 
@@ -66,7 +66,9 @@ class LaunchRun:
             launch = self.reader.read(path)
             if launch.problem is not None:
                 text, line, col = launch.problem
-                self.notices.append(messages.launch_file_not_read(str(path), line, col, text))
+                self.notices.append(
+                    messages.launch_file_not_read(str(path), line, col, text)
+                )
                 continue
             for entry in launch.entries if launch.launch else []:
                 self._add(entry)
@@ -122,7 +124,9 @@ class LaunchRun:
         unique = {(d.path, d.span, d.code, d.message): d for d in out}
         return list(unique.values())
 
-    def _unmatched(self, table: Table, loaded: dict[str, P.ParamFile]) -> list[Diagnostic]:
+    def _unmatched(
+        self, table: Table, loaded: dict[str, P.ParamFile]
+    ) -> list[Diagnostic]:
         known = set(self.names)
         for summary in table.summaries:
             for names in summary.node_names.values():
@@ -131,10 +135,17 @@ class LaunchRun:
         for path, parameters in sorted(loaded.items()):
             if parameters.layout != "ros2":
                 continue
-            for key, (line, col) in parameters.sections.items():
-                name = key.rstrip("/").rsplit("/", 1)[-1]
-                if name and "*" not in name and name not in known:
-                    out.append(messages.parameter_section_unmatched(path, line, col, key))
+            unmatched = [
+                (key, where)
+                for key, where in parameters.sections.items()
+                if (name := key.rstrip("/").rsplit("/", 1)[-1])
+                and "*" not in name
+                and name not in known
+            ]
+            if unmatched:
+                (line, col) = unmatched[0][1]
+                keys = [key for key, _ in unmatched]
+                out.append(messages.parameter_section_unmatched(path, line, col, keys))
         return out
 
 
@@ -206,7 +217,9 @@ def _closed(summary: Summary, owner: str) -> bool:
         return False  # a node object in a variable: it may be handed anywhere
     lineage = summary.lineage(owner)
     return not any(
-        o in summary.open_owners or o in summary.auto_declare or summary.listeners.get(o)
+        o in summary.open_owners
+        or o in summary.auto_declare
+        or summary.listeners.get(o)
         for o in lineage
     )
 
@@ -246,10 +259,14 @@ def _ros2_entry(
             if found is not None:
                 out.append(found)
             elif closed and _undeclared(parameter.name, owners):
-                place = parameter.place
+                place = parameter.key or parameter.place
                 out.append(
                     messages.launch_parameter_undeclared(
-                        place.path, place.line, place.col, parameter.name, node,
+                        place.path,
+                        place.line,
+                        place.col,
+                        parameter.name,
+                        node,
                         _declared_in(owners),
                     )
                 )
@@ -268,7 +285,9 @@ def _declared_in(owners: list[tuple[Summary, str]]) -> Note:
     summary, owner = owners[0]
     where = [d.line for d in summary.decls if d.owner in summary.lineage(owner)]
     return Note(
-        f"the parameters `{owner}` declares", summary.path, min(where) if where else None
+        f"the parameters `{owner}` declares",
+        summary.path,
+        min(where) if where else None,
     )
 
 
@@ -304,8 +323,13 @@ def _report(parameter: InlineParam, failure: Failure, node: str) -> Diagnostic:
     span = Span.point(place.line, place.col)
     if failure.type_error:
         return messages.parameter_value_type(
-            place.path, span, subject, failure.got, failure.expected,
-            failure.declared, failure.why,
+            place.path,
+            span,
+            subject,
+            failure.got,
+            failure.expected,
+            failure.declared,
+            failure.why,
         )
     return messages.parameter_value_violated(
         place.path, span, subject, failure.rule, failure.declared, failure.why
@@ -326,7 +350,9 @@ def _file_typos(
     parameters = loaded.get(parameter.path)
     if parameters is None or parameters.layout != "ros2":
         return []
-    names = {entry.name} if entry.name else {n for s, o in owners for n in s.names_of(o)}
+    names = (
+        {entry.name} if entry.name else {n for s, o in owners for n in s.names_of(o)}
+    )
     out = []
     for item in parameters.entries:
         if not _keyed_for(item.node, names, entry.namespace):
@@ -350,7 +376,9 @@ def _keyed_for(key: str, names: set[str | None], namespace: str | None) -> bool:
     return head == namespace.strip("/")
 
 
-def _ros1_entry(entry: NodeEntry, code: list[Summary], table: Table) -> list[Diagnostic]:
+def _ros1_entry(
+    entry: NodeEntry, code: list[Summary], table: Table
+) -> list[Diagnostic]:
     """A `<param>` inside a roslaunch `<node>` is the node's private `~name`:
     checked against the refinements where the node's code reads it."""
     out: list[Diagnostic] = []
@@ -358,11 +386,13 @@ def _ros1_entry(entry: NodeEntry, code: list[Summary], table: Table) -> list[Dia
     for parameter in entry.parameters:
         if not isinstance(parameter, InlineParam) or parameter.value is None:
             continue
-        name = parameter.name if parameter.name.startswith(("/", "~")) else f"~{parameter.name}"
+        name = (
+            parameter.name
+            if parameter.name.startswith(("/", "~"))
+            else f"~{parameter.name}"
+        )
         candidates = [
-            c
-            for summary in code
-            if (c := _ros1_parameter(summary, name)) is not None
+            c for summary in code if (c := _ros1_parameter(summary, name)) is not None
         ]
         failures = [c.judge(parameter.value, budget) for c in candidates]
         if candidates and all(f is not None for f in failures):
@@ -372,14 +402,14 @@ def _ros1_entry(entry: NodeEntry, code: list[Summary], table: Table) -> list[Dia
     return out
 
 
-def _ros1_parameter(summary: Summary, name: str):  # type: ignore[no-untyped-def]
-    from robotfix.paramcheck import _Parameter
-
+def _ros1_parameter(summary: Summary, name: str) -> Parameter | None:
     nodes = summary.node_names.get(ROSPY, [])
     if not any(d.ros == 1 and ros1_name(d.name, nodes) == name for d in summary.decls):
         return None
-    candidate = _Parameter(name, 1)
+    candidate = Parameter(name, 1)
     candidate.refinements = [
-        a for a in summary.attached if a.owner == ROSPY and ros1_name(a.name, nodes) == name
+        a
+        for a in summary.attached
+        if a.owner == ROSPY and ros1_name(a.name, nodes) == name
     ]
-    return candidate if candidate.refinements else None
+    return candidate

@@ -668,15 +668,21 @@ def launch_parameter_undeclared(
 
 
 def parameter_section_unmatched(
-    path: str, line: int, col: int, key: str
+    path: str, line: int, col: int, keys: list[str]
 ) -> Diagnostic:
-    """RF602: a ROS 2 parameter file's node key no node of the run is named."""
+    """RF602, once per file, at the first of its ROS 2 sections whose node no
+    node of the run is named."""
+    shown = [f"`{k}`" for k in keys[:5]] + (
+        [f"{len(keys) - 5} more"] if len(keys) > 5 else []
+    )
+    what = "section " if len(keys) == 1 else "sections "
+    verb = "names" if len(keys) == 1 else "name"
     return Diagnostic(
         rules.PARAMETER_SECTION_UNMATCHED,
         path,
         Span.point(line, col),
-        f"section `{key}` names no node of the checked workspace or its launch "
-        "files: its parameters apply to no node RobotFix knows, and are not checked",
+        f"{what}{_join(shown)} {verb} no node of the checked workspace or its "
+        "launch files: not checked against any node's declarations",
         (
             Note(
                 "a node of another workspace or a C++ node may be named so; a launch "

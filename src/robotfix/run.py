@@ -268,9 +268,7 @@ def _parameter_problems(
     `parameters`: what the checks found of the files they read (the others are
     read there). Launch files are read first (`launchcheck.LaunchRun`): what
     they touch is part of the key."""
-    if not (
-        found.parameter_files or found.parameter_definitions or found.launch_files
-    ):
+    if not (found.parameter_files or found.parameter_definitions or found.launch_files):
         return []
     python_files = [*files, *found.summary_files]
     launches = None

@@ -251,7 +251,11 @@ def _summarize(
 
 
 # what a node class may inherit from without inheriting parameter declarations
-NODE_BASES = ("rclpy.node.Node", "rclpy.lifecycle.LifecycleNode", "rclpy.lifecycle.Node")
+NODE_BASES = (
+    "rclpy.node.Node",
+    "rclpy.lifecycle.LifecycleNode",
+    "rclpy.lifecycle.Node",
+)
 # libraries a node hands `self` to (a tf2 listener, a timer) that declare nothing
 SELF_TAKERS = ("rclpy", "tf2_ros", "message_filters", "image_transport", "cv_bridge")
 

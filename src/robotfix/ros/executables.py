@@ -112,7 +112,9 @@ def _setup_py_scripts(text: str) -> list[str]:
     return out
 
 
-def _string(node: ast.expr | None, names: dict[str, ast.expr], depth: int) -> str | None:
+def _string(
+    node: ast.expr | None, names: dict[str, ast.expr], depth: int
+) -> str | None:
     if node is None or depth > 20:
         return None
     if isinstance(node, ast.Constant):

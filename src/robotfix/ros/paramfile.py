@@ -240,7 +240,11 @@ def _ros2_sections(
             places.setdefault("/".join(path), where)
             _params(value, "/".join(path), [], out, budget, depth)
         else:
-            at = (key_node.line, key_node.col) if isinstance(key_node, Y.Scalar) else where
+            at = (
+                (key_node.line, key_node.col)
+                if isinstance(key_node, Y.Scalar)
+                else where
+            )
             seen = (
                 _ros2_sections(value, [*path, key], out, budget, depth + 1, places, at)
                 or seen

@@ -61,13 +61,19 @@ class _Reader:
         line, col = element.at(attr) if attr else (element.line, element.col)
         return Place(self.out.path, line, col)
 
-    def text(self, element: Element, attr: str, args: dict[str, str | None]) -> str | None:
+    def text(
+        self, element: Element, attr: str, args: dict[str, str | None]
+    ) -> str | None:
         raw = element.attrs.get(attr)
         if raw is None:
             return None
-        return S.expand(raw, S.Context(self.ctx.path, self.ctx.packages, args), self.ros)
+        return S.expand(
+            raw, S.Context(self.ctx.path, self.ctx.packages, args), self.ros
+        )
 
-    def actions(self, parent: Element, ns: str | None, args: dict[str, str | None]) -> None:
+    def actions(
+        self, parent: Element, ns: str | None, args: dict[str, str | None]
+    ) -> None:
         for element in parent.children:
             tag = element.tag.replace("-", "_")
             if tag == "arg":
@@ -114,7 +120,9 @@ class _Reader:
                 else None
             )
 
-    def node(self, element: Element, ns: str | None, args: dict[str, str | None]) -> None:
+    def node(
+        self, element: Element, ns: str | None, args: dict[str, str | None]
+    ) -> None:
         namespace = self.namespace(element, ns, args)
         entry = NodeEntry(
             self.ros,
@@ -166,7 +174,11 @@ class _Reader:
                 for p in self.params(child, full, args)
             ]
         value = self.value(element, args)
-        return [InlineParam(full, value, self.place(element, "value"))]
+        return [
+            InlineParam(
+                full, value, self.place(element, "value"), self.place(element, "name")
+            )
+        ]
 
     def value(self, element: Element, args: dict[str, str | None]) -> P.Typed | None:
         if "value" in element.nodes:  # YAML launch: the YAML value, typed as YAML
@@ -180,14 +192,23 @@ class _Reader:
             return None
         return yaml11(Y.Scalar(raw, True, None, element.line, element.col))
 
-    def rosparam(self, element: Element, args: dict[str, str | None]) -> FileParam | None:
-        if element.attrs.get("command", "load") != "load" or "file" not in element.attrs:
+    def rosparam(
+        self, element: Element, args: dict[str, str | None]
+    ) -> FileParam | None:
+        if (
+            element.attrs.get("command", "load") != "load"
+            or "file" not in element.attrs
+        ):
             return None
         path = S.in_tree(self.ctx, self.text(element, "file", args))
         ns = self.text(element, "ns", args) if "ns" in element.attrs else ""
-        return FileParam(path, element.attrs["file"], self.place(element, "file"), ns or "")
+        return FileParam(
+            path, element.attrs["file"], self.place(element, "file"), ns or ""
+        )
 
-    def include(self, element: Element, ns: str | None, args: dict[str, str | None]) -> None:
+    def include(
+        self, element: Element, ns: str | None, args: dict[str, str | None]
+    ) -> None:
         shown = element.attrs.get("file", "")
         path = S.in_tree(self.ctx, self.text(element, "file", args))
         self.out.includes.append(Include(path, shown, self.place(element, "file")))
@@ -240,6 +261,8 @@ def roslaunch_value(text: str, type_: str) -> P.Typed | None:
             if kind:
                 return None  # roslaunch refuses it: not ours to report
     lowered = text.strip().lower()
-    if lowered in ("true", "false") or (kind in ("bool", "boolean") and lowered in ("1", "0")):
+    if lowered in ("true", "false") or (
+        kind in ("bool", "boolean") and lowered in ("1", "0")
+    ):
         return P.Typed("bool", lowered in ("true", "1"), text)
     return P.Typed("string", text, text) if not kind else None

@@ -31,7 +31,8 @@ class InlineParam:
 
     name: str  # ROS 2: dotted (`limits.max`); ROS 1: as written (`~rate`, `rate`)
     value: Typed | None  # None: computed at launch time, or of no checkable type
-    place: Place
+    place: Place  # of the value
+    key: Place | None = None  # of the name, where it is written apart
 
 
 @dataclass(frozen=True)

@@ -38,6 +38,20 @@ from robotfix.ros.launch.model import (
 ENTRY = "generate_launch_description"
 NODES = ("Node", "LifecycleNode", "ComposableNode")
 MAX_EVAL_DEPTH = 60
+# the launch API's calls this reader evaluates -> the method that does
+API = {
+    "LaunchConfiguration": "launch_configuration",
+    "PathJoinSubstitution": "path_join_substitution",
+    "ThisLaunchFileDir": "this_launch_file_dir",
+    "TextSubstitution": "text_substitution",
+    "ParameterFile": "parameter_file",
+    "RewrittenYaml": "rewritten_yaml",
+    "OpaqueFunction": "opaque_function",
+    "IncludeLaunchDescription": "include_launch_description",
+    "Node": "node",
+    "LifecycleNode": "node",
+    "ComposableNode": "node",
+}
 
 
 class _Unknown:
@@ -105,10 +119,7 @@ def _single_bindings(body: list[ast.stmt]) -> dict[str, ast.expr | None]:
             counts[node.id] = counts.get(node.id, 0) + 1
     found: dict[str, ast.expr | None] = dict.fromkeys(counts)
     for node in _walk(body):
-        if (
-            isinstance(node, (ast.Assign, ast.AnnAssign))
-            and node.value is not None
-        ):
+        if isinstance(node, (ast.Assign, ast.AnnAssign)) and node.value is not None:
             targets = node.targets if isinstance(node, ast.Assign) else [node.target]
             if len(targets) == 1 and isinstance(targets[0], ast.Name):
                 name = targets[0].id
@@ -129,10 +140,15 @@ def _defaults(tree: ast.Module) -> dict[str, ast.expr | None]:
     if found is None:
         found = {}
         for node in ast.walk(tree):
-            if isinstance(node, ast.Call) and _called(node.func) == "DeclareLaunchArgument":
+            if (
+                isinstance(node, ast.Call)
+                and _called(node.func) == "DeclareLaunchArgument"
+            ):
                 name = _Evaluator._arg(node, 0, "name")
                 if isinstance(name, ast.Constant) and isinstance(name.value, str):
-                    found.setdefault(name.value, _Evaluator._arg(node, 1, "default_value"))
+                    found.setdefault(
+                        name.value, _Evaluator._arg(node, 1, "default_value")
+                    )
         _DEFAULTS[tree] = found
     return found
 
@@ -144,7 +160,9 @@ def _walk(body: list[ast.stmt]) -> Iterator[ast.AST]:
         node = todo.pop()
         yield node
         for child in ast.iter_child_nodes(node):
-            if not isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)):
+            if not isinstance(
+                child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)
+            ):
                 todo.append(child)
 
 
@@ -167,7 +185,11 @@ class _Evaluator:
         self.lines = text.splitlines()
         self.module = _bindings_of(
             tree,
-            [s for s in tree.body if not isinstance(s, (ast.FunctionDef, ast.ClassDef))],
+            [
+                s
+                for s in tree.body
+                if not isinstance(s, (ast.FunctionDef, ast.ClassDef))
+            ],
         )
         self.scopes: list[dict[str, ast.expr | None]] = [self.module]
         self.memo: dict[int, object] = {}
@@ -195,7 +217,9 @@ class _Evaluator:
         try:
             for node in _walk(function.body):
                 if isinstance(node, ast.Call) and _called(node.func) in (
-                    *NODES, "IncludeLaunchDescription", "OpaqueFunction"
+                    *NODES,
+                    "IncludeLaunchDescription",
+                    "OpaqueFunction",
                 ):
                     self.eval(node)
                 elif isinstance(node, ast.Return) and node.value is not None:
@@ -281,30 +305,40 @@ class _Evaluator:
 
     def call(self, call: ast.Call) -> object:
         name = _called(call.func)
-        method = getattr(self, f"call_{name}", None)
-        if method is not None:
-            return method(call)
-        if name == "join" and _dotted(call.func) in ("os.path.join", "path.join", "join"):
+        if name in API:
+            return getattr(self, API[name])(call)
+        if name == "join" and _dotted(call.func) in (
+            "os.path.join",
+            "path.join",
+            "join",
+        ):
             return S.join([_text(self.eval(a)) for a in call.args]) or UNKNOWN
         if name in ("perform",) and isinstance(call.func, ast.Attribute):
             return self.eval(call.func.value)
         if name == "items" and isinstance(call.func, ast.Attribute):
             value = self.eval(call.func.value)
-            return [[k, v] for k, v in value.items()] if isinstance(value, dict) else UNKNOWN
+            return (
+                [[k, v] for k, v in value.items()]
+                if isinstance(value, dict)
+                else UNKNOWN
+            )
         if name in ("PushRosNamespace", "PushROSNamespace"):
             return _Namespace(self.text(call, 0, "namespace"))
         if name in ("GroupAction", "LaunchDescription"):
             return self.group(self.arg(call, 0, "actions", "initial_entities"))
         if name in ("get_package_share_directory", "FindPackageShare"):
-            return S.share(self.ctx, self.text(call, 0, "package", "package_name")) or UNKNOWN
+            return (
+                S.share(self.ctx, self.text(call, 0, "package", "package_name"))
+                or UNKNOWN
+            )
         for child in [*call.args, *(k.value for k in call.keywords)]:
             self.eval(child)  # entries in the arguments of anything else
         if isinstance(call.func, ast.Attribute):
             self.eval(call.func.value)  # `ld.add_action(node)`
         return UNKNOWN
 
-    # -- the launch API -------------------------------------------------------------------
-    def call_LaunchConfiguration(self, call: ast.Call) -> object:
+    # -- the launch API ---------------------------------------------------------
+    def launch_configuration(self, call: ast.Call) -> object:
         name = self.text(call, 0, "variable_name")
         if name is None:
             return UNKNOWN
@@ -316,32 +350,32 @@ class _Evaluator:
             found = self.text(call, 1, "default")
         return _ArgText(found) if found is not None else UNKNOWN
 
-    def call_PathJoinSubstitution(self, call: ast.Call) -> object:
+    def path_join_substitution(self, call: ast.Call) -> object:
         parts = self.arg(call, 0, "substitutions")
         if not isinstance(parts, list):
             return UNKNOWN
         return S.join([_text(p) for p in parts]) or UNKNOWN
 
-    def call_ThisLaunchFileDir(self, call: ast.Call) -> object:
+    def this_launch_file_dir(self, call: ast.Call) -> object:
         return S.here(self.ctx)
 
-    def call_TextSubstitution(self, call: ast.Call) -> object:
+    def text_substitution(self, call: ast.Call) -> object:
         return self.text(call, 0, "text") or UNKNOWN
 
-    def call_ParameterFile(self, call: ast.Call) -> object:
+    def parameter_file(self, call: ast.Call) -> object:
         inner = self.arg(call, 0, "param_file")
         return inner if isinstance(inner, _File) else _File(_text(inner))
 
-    def call_RewrittenYaml(self, call: ast.Call) -> object:
+    def rewritten_yaml(self, call: ast.Call) -> object:
         return _File(self.text(call, 0, "source_file"))
 
-    def call_OpaqueFunction(self, call: ast.Call) -> object:
+    def opaque_function(self, call: ast.Call) -> object:
         target = self._arg(call, 0, "function")
         if isinstance(target, ast.Name) and target.id in self.functions:
             self.run(self.functions[target.id])
         return UNKNOWN
 
-    def call_IncludeLaunchDescription(self, call: ast.Call) -> object:
+    def include_launch_description(self, call: ast.Call) -> object:
         source = self._arg(call, 0, "launch_description_source")
         shown = ast.unparse(source) if source is not None else ""
         path = None
@@ -353,7 +387,11 @@ class _Evaluator:
         args: dict[str, str | None] = {}
         if isinstance(passed, list):
             for pair in passed:
-                if isinstance(pair, list) and len(pair) == 2 and isinstance(pair[0], str):
+                if (
+                    isinstance(pair, list)
+                    and len(pair) == 2
+                    and isinstance(pair[0], str)
+                ):
                     args[pair[0]] = _text(pair[1])
         if path is None or self.ctx.follow is None:
             return _Actions([])
@@ -372,15 +410,17 @@ class _Evaluator:
             if isinstance(action, _Namespace):
                 namespace = S.push_namespace(namespace, action.namespace)
                 continue
-            held = [action] if isinstance(action, NodeEntry) else (
-                action.entries if isinstance(action, _Actions) else []
+            held = (
+                [action]
+                if isinstance(action, NodeEntry)
+                else (action.entries if isinstance(action, _Actions) else [])
             )
             for entry in held:
                 entry.namespace = S.push_namespace(namespace, entry.namespace)
                 entries.append(entry)
         return _Actions(entries)
 
-    def call_Node(self, call: ast.Call) -> object:
+    def node(self, call: ast.Call) -> object:
         entry = NodeEntry(
             2,
             self.place(call),
@@ -409,9 +449,6 @@ class _Evaluator:
         self.out.entries.append(entry)
         return entry
 
-    call_LifecycleNode = call_Node
-    call_ComposableNode = call_Node
-
     def parameters(self, node: ast.expr | None) -> list[InlineParam | FileParam]:
         found: list[InlineParam | FileParam] = []
         items = node.elts if isinstance(node, (ast.List, ast.Tuple)) else []
@@ -424,11 +461,15 @@ class _Evaluator:
                 continue  # a dict built elsewhere: its places are not here
             path = value.path if isinstance(value, _File) else _text(value)
             found.append(
-                FileParam(S.in_tree(self.ctx, path), ast.unparse(item), self.place(item))
+                FileParam(
+                    S.in_tree(self.ctx, path), ast.unparse(item), self.place(item)
+                )
             )
         return found
 
-    def inline(self, node: ast.Dict, prefix: str, out: list[InlineParam | FileParam]) -> None:
+    def inline(
+        self, node: ast.Dict, prefix: str, out: list[InlineParam | FileParam]
+    ) -> None:
         for key_node, value_node in zip(node.keys, node.values, strict=True):
             key = _text(self.eval(key_node)) if key_node is not None else None
             if key is None:
@@ -437,7 +478,14 @@ class _Evaluator:
             if isinstance(value_node, ast.Dict):
                 self.inline(value_node, name, out)
                 continue
-            out.append(InlineParam(name, typed(self.eval(value_node)), self.place(value_node)))
+            out.append(
+                InlineParam(
+                    name,
+                    typed(self.eval(value_node)),
+                    self.place(value_node),
+                    self.place(key_node) if key_node is not None else None,
+                )
+            )
 
 
 def _dotted(node: ast.expr) -> str:
@@ -472,7 +520,10 @@ def typed(value: object) -> P.Typed | None:
     if isinstance(value, str):
         return yaml11(Y.Scalar(value, True, None, 1, 0))
     if isinstance(value, list) and value:
-        items = [typed(v) if not isinstance(v, str) else P.Typed("string", v, v) for v in value]
+        items = [
+            typed(v) if not isinstance(v, str) else P.Typed("string", v, v)
+            for v in value
+        ]
         kinds = {t.type for t in items if t is not None}
         if None in items or len(kinds) != 1:
             return None

@@ -38,7 +38,9 @@ class Reader:
     def __init__(self, packages: Callable[[str], Path | None]) -> None:
         self.packages = packages
         self.parsed: dict[str, Parsed] = {}
-        self.results: dict[tuple[str, tuple[tuple[str, str | None], ...]], LaunchFile] = {}
+        self.results: dict[
+            tuple[str, tuple[tuple[str, str | None], ...]], LaunchFile
+        ] = {}
         self.touched: set[str] = set()
 
     def read(

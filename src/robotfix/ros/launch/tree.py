@@ -58,13 +58,12 @@ def parse_xml(text: str) -> Element:
 
     def refuse(*_: object) -> None:
         raise LaunchSyntaxError(
-            "a document type declaration (launch files need none)", *place(
-                parser.CurrentByteIndex
-            )
+            "a document type declaration (launch files need none)",
+            *place(parser.CurrentByteIndex),
         )
 
     def start(tag: str, attrs: dict[str, str]) -> None:
-        if len(stack) >= MAX_DEPTH or len(starts) and counter[0] >= MAX_ELEMENTS:
+        if len(stack) >= MAX_DEPTH or (len(starts) and counter[0] >= MAX_ELEMENTS):
             raise LaunchSyntaxError("too many or too deeply nested elements", 1, 0)
         counter[0] += 1
         index = parser.CurrentByteIndex
@@ -175,14 +174,18 @@ def _yaml_element(
         if key.text == "children" and isinstance(v, Y.Sequence):
             _yaml_actions(element, v, budget, depth + 1)
             continue
-        items = [Y.resolve(i, budget) for i in v.items] if isinstance(
-            v, Y.Sequence
-        ) else []
-        if isinstance(v, Y.Sequence) and items and all(
-            isinstance(i, Y.Mapping) for i in items
+        items = (
+            [Y.resolve(i, budget) for i in v.items] if isinstance(v, Y.Sequence) else []
+        )
+        if (
+            isinstance(v, Y.Sequence)
+            and items
+            and all(isinstance(i, Y.Mapping) for i in items)
         ):
             for i in items:  # `param: [{name: a, value: 1}]`, `remap:`, `arg:`
-                element.children.append(_yaml_element(key.text, i, i, budget, depth + 1))
+                element.children.append(
+                    _yaml_element(key.text, i, i, budget, depth + 1)
+                )
         elif isinstance(v, Y.Mapping):
             element.children.append(_yaml_element(key.text, key, v, budget, depth + 1))
         else:
