@@ -29,7 +29,7 @@ from robotfix import messages
 from robotfix.analysis.parameters import ROSPY, Summary
 from robotfix.diagnostics import Diagnostic, Note, Span
 from robotfix.fs import UnreadableError, read_text
-from robotfix.paramcheck import Failure, Parameter, Table, ros1_name
+from robotfix.paramcheck import Failure, Parameter, Table, report_failure, ros1_name
 from robotfix.paramcheck import owners as declaring_owners
 from robotfix.ros import paramfile as P
 from robotfix.ros.executables import MAX_BUILD_BYTES, executable_file, module_file
@@ -73,6 +73,9 @@ class LaunchRun:
             for entry in launch.entries if launch.launch else []:
                 self._add(entry)
         self.entries = len(self.started)
+
+    def texts(self) -> dict[str, str]:
+        return self.reader.texts
 
     def touched(self) -> set[str]:
         """Every file the launch check depends on: launch files, the parameter
@@ -320,19 +323,8 @@ def _report(parameter: InlineParam, failure: Failure, node: str) -> Diagnostic:
     shown = f'"{value.text}"' if value.type == "string" else value.text
     subject = f"`{parameter.name}: {shown[:40]}` (launched node {node})"
     place = parameter.place
-    span = Span.point(place.line, place.col)
-    if failure.type_error:
-        return messages.parameter_value_type(
-            place.path,
-            span,
-            subject,
-            failure.got,
-            failure.expected,
-            failure.declared,
-            failure.why,
-        )
-    return messages.parameter_value_violated(
-        place.path, span, subject, failure.rule, failure.declared, failure.why
+    return report_failure(
+        place.path, Span.point(place.line, place.col), subject, failure
     )
 
 
@@ -366,7 +358,7 @@ def _file_typos(
     return out
 
 
-def _keyed_for(key: str, names: set[str | None], namespace: str | None) -> bool:
+def _keyed_for(key: str, names: set[str], namespace: str | None) -> bool:
     """Whether a section key (`driver`, `/ns/driver`) names this node itself."""
     head, _, last = key.strip("/").rpartition("/")
     if last not in names or "*" in last:

@@ -182,6 +182,7 @@ def check_parameter_files(
                 out.append(_report(str(path), entry, first, loaded.layout, budget))
     if launches is not None:
         out.extend(launches.check(table, read))
+        texts.update(launches.texts())
     return [d for d in out if not _silenced(d, texts.get(d.path, ""), config)]
 
 
@@ -270,6 +271,10 @@ class Launches(Protocol):
 
     def check(self, table: Table, read: dict[str, P.ParamFile]) -> list[Diagnostic]:
         """The launch files' own findings (`read`: the parameter files loaded)."""
+        ...
+
+    def texts(self) -> dict[str, str]:
+        """The launch files' texts (a `# robotfix: ignore` on a line)."""
         ...
 
 
@@ -557,8 +562,13 @@ def _report(
     if len(shown) > 40:
         shown = shown[:37] + "..."
     node = f" (node `{entry.node}`)" if entry.node else ""
-    subject = f"`{entry.name}: {shown}`{node}"
-    span = Span.point(line, col)
+    return report_failure(
+        path, Span.point(line, col), f"`{entry.name}: {shown}`{node}", failure
+    )
+
+
+def report_failure(path: str, span: Span, subject: str, failure: Failure) -> Diagnostic:
+    """RF401 or RF101 for a value (`subject`) at `span`."""
     if failure.type_error:
         return messages.parameter_value_type(
             path,

@@ -317,9 +317,10 @@ def _params_key(
     files and build files they lead to, the nodes' code, by its bytes)."""
     parts: list[str] = []
     if launches is not None:
-        for path in sorted(launches.touched()):
-            ignored = ",".join(sorted(config.ignored_codes(Path(path))))
-            parts.append(f"launch\0{path}\0{cache.sha(Path(path))}\0{ignored}")
+        for touched in sorted(launches.touched()):
+            file = Path(touched)
+            ignored = ",".join(sorted(config.ignored_codes(file)))
+            parts.append(f"launch\0{touched}\0{cache.sha(file)}\0{ignored}")
     groups = (
         ("yaml", found.parameter_files),
         ("definitions", found.parameter_definitions),

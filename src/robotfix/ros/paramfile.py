@@ -108,7 +108,12 @@ def ros2_value(node: Y.Node | None, budget: list[int]) -> Typed | None:
     if not isinstance(node, Y.Sequence) or not node.items:
         return None
     items = [Y.resolve(item, budget) for item in node.items]
-    typed = [ros2_scalar(i) if isinstance(i, Y.Scalar) else None for i in items]
+    return array([ros2_scalar(i) if isinstance(i, Y.Scalar) else None for i in items])
+
+
+def array(typed: list[Typed | None]) -> Typed | None:
+    """A list of values of one type as an array parameter; None when empty,
+    mixed, or holding a value of no type."""
     kinds = {t.type for t in typed if t is not None}
     if None in typed or len(kinds) != 1:
         return None

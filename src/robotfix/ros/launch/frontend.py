@@ -43,7 +43,7 @@ def read_tree(root: Element, ctx: S.Context, ros: int | None = None) -> LaunchFi
 
 
 def _flavour(root: Element) -> int:
-    todo, kinds = [root], set()
+    todo, kinds = [root], set[int]()
     while todo and len(kinds) < 2:
         element = todo.pop()
         if element.tag == "node":
@@ -96,7 +96,11 @@ class _Reader:
             elif tag == "include":
                 self.include(element, ns, args)
             elif tag == "param" and self.ros == 1:
-                self.out.global_params.extend(self.params(element, ns or "", args))
+                self.out.global_params.extend(
+                    p
+                    for p in self.params(element, ns or "", args)
+                    if isinstance(p, InlineParam)
+                )
 
     def namespace(
         self, element: Element, ns: str | None, args: dict[str, str | None]
@@ -135,7 +139,7 @@ class _Reader:
             plugin=self.text(element, "plugin", args),
         )
         if "args" in element.attrs:
-            entry.arguments = (self.text(element, "args", args) or "").split()
+            entry.arguments = [*(self.text(element, "args", args) or "").split()]
         for child in element.children:
             tag = child.tag
             if tag == "param":
@@ -238,12 +242,7 @@ def yaml11(node: Y.Node | None) -> P.Typed | None:
         return P.ros1_value(node, budget)
     if not isinstance(node, Y.Sequence) or not node.items:
         return None
-    items = [P.ros1_value(i, budget) for i in node.items]
-    kinds = {t.type for t in items if t is not None}
-    if None in items or len(kinds) != 1:
-        return None
-    text = "[" + ", ".join(t.text for t in items if t is not None) + "]"
-    return P.Typed(f"{kinds.pop()}_array", [t.value for t in items if t], text)
+    return P.array([P.ros1_value(i, budget) for i in node.items])
 
 
 def roslaunch_value(text: str, type_: str) -> P.Typed | None:

@@ -501,7 +501,7 @@ def _dotted(node: ast.expr) -> str:
 def _text(value: object) -> str | None:
     """A string, or a list of them (launch concatenates a list of substitutions)."""
     if isinstance(value, list) and value and all(isinstance(v, str) for v in value):
-        return "".join(value)  # type: ignore[arg-type]
+        return "".join(value)
     return value if isinstance(value, str) else None
 
 
@@ -519,14 +519,8 @@ def typed(value: object) -> P.Typed | None:
         return P.Typed("double", value, repr(value))
     if isinstance(value, str):
         return yaml11(Y.Scalar(value, True, None, 1, 0))
-    if isinstance(value, list) and value:
-        items = [
-            typed(v) if not isinstance(v, str) else P.Typed("string", v, v)
-            for v in value
-        ]
-        kinds = {t.type for t in items if t is not None}
-        if None in items or len(kinds) != 1:
-            return None
-        text = "[" + ", ".join(t.text for t in items if t) + "]"
-        return P.Typed(f"{kinds.pop()}_array", [t.value for t in items if t], text)
+    if isinstance(value, list) and value:  # a string item stays a string
+        return P.array(
+            [P.Typed("string", v, v) if isinstance(v, str) else typed(v) for v in value]
+        )
     return None

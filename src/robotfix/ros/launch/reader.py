@@ -42,6 +42,7 @@ class Reader:
             tuple[str, tuple[tuple[str, str | None], ...]], LaunchFile
         ] = {}
         self.touched: set[str] = set()
+        self.texts: dict[str, str] = {}  # each file's text, for suppressions
 
     def read(
         self,
@@ -78,7 +79,7 @@ class Reader:
         key = str(path)
         if key not in self.parsed:
             self.touched.add(key)
-            self.parsed[key] = _parse(path)
+            self.parsed[key] = _parse(path, self.texts)
         return self.parsed[key]
 
 
@@ -89,12 +90,13 @@ def _copy(found: LaunchFile) -> LaunchFile:
     return fresh
 
 
-def _parse(path: Path) -> Parsed:
+def _parse(path: Path, texts: dict[str, str]) -> Parsed:
     key = str(path)
     try:
         text = read_text(path, MAX_LAUNCH_BYTES)
     except UnreadableError as err:
         return LaunchFile(key, 2, problem=(f"cannot read: {err.reason}", 1, 0))
+    texts[key] = text
     name = path.name
     if name.endswith(".launch") and not text.lstrip("\ufeff \t\r\n").startswith("<"):
         name += ".py"  # nav2's test_case_py.launch is Python

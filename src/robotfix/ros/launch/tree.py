@@ -150,8 +150,8 @@ def _yaml_actions(
     parent: Element, node: Y.Sequence, budget: list[int], depth: int
 ) -> None:
     """`- node: {...}`, `- arg: {...}`: one action per list item."""
-    for item in node.items:
-        item = Y.resolve(item, budget)
+    for raw in node.items:
+        item = Y.resolve(raw, budget)
         if isinstance(item, Y.Mapping):
             for key, value in item.items:
                 if isinstance(key, Y.Scalar):
@@ -183,6 +183,7 @@ def _yaml_element(
             and all(isinstance(i, Y.Mapping) for i in items)
         ):
             for i in items:  # `param: [{name: a, value: 1}]`, `remap:`, `arg:`
+                assert i is not None
                 element.children.append(
                     _yaml_element(key.text, i, i, budget, depth + 1)
                 )

@@ -25,6 +25,7 @@ def generate_launch_description():
                 "scan_beams": "1080",
                 "ego_namespce": "ego",  # warning: RF601
                 "use_sim_time": True,
+                "legacy_mode": True,  # robotfix: ignore[RF601]
             },
         ],
     )
