@@ -5,6 +5,7 @@ stands for the same question, however the file was spelled."""
 from __future__ import annotations
 
 import json
+import os
 from pathlib import Path
 
 import pytest
@@ -61,3 +62,41 @@ def test_relative_spellings_read_the_same(
     assert run(tree, [Path(spelled)]) == (fresh[0], fresh[1], fresh[1])
     # the same files named absolutely: other entries' spellings, same answers
     assert run(tree, [tree / "src"])[0] == run(tree, [tree / "src"], cache=False)[0]
+
+
+def test_the_run_key_follows_robotfixs_own_code(tmp_path: Path) -> None:
+    # installed from a checkout, every commit is 0.1.0: a cache keyed on the version
+    # alone replayed the results of older analysis code after `git pull`
+    import shutil
+    import subprocess
+    import sys
+
+    import robotfix
+
+    copy = tmp_path / "src" / "robotfix"
+    shutil.copytree(
+        Path(robotfix.__file__).parent, copy, ignore=shutil.ignore_patterns("__pycache__")
+    )
+    probe = "from robotfix import cache; print(cache.own_digest())"
+
+    def digest() -> str:
+        env = {**os.environ, "PYTHONPATH": str(tmp_path / "src")}
+        out = subprocess.run(
+            [sys.executable, "-c", probe], env=env, capture_output=True, text=True
+        )
+        assert out.returncode == 0, out.stderr
+        return out.stdout.strip()
+
+    before = digest()
+    assert before == digest()
+    checks = copy / "analysis" / "checks.py"
+    checks.write_text(checks.read_text().replace("<=", "< ", 1))  # same size
+    assert digest() != before
+
+
+def test_the_run_key_holds_the_own_digest(monkeypatch: pytest.MonkeyPatch) -> None:
+    from robotfix import cache
+
+    first = cache.run_key(Config())
+    monkeypatch.setattr(cache, "own_digest", lambda: "another build")
+    assert cache.run_key(Config()) != first

@@ -14,6 +14,8 @@ from pathlib import Path
 import pytest
 
 import robotfix
+import robotfix.cache
+import robotfix.run
 from robotfix import cli, fs
 from robotfix.cache import MENTION_WORDS
 from robotfix.config import Config
@@ -66,8 +68,9 @@ def write(path: Path, text: str) -> None:
 
 
 def age(root: Path, seconds: float = 60.0) -> None:
-    """Every file's mtime well in the past: the stat fast path trusts it (a file
-    changed within `fs.RACY_NS` is always hashed)."""
+    """Every file's mtime well in the past (a file changed within `fs.RACY_NS` is
+    always hashed). Its ctime, which no call sets back, is now: `tree` lets the
+    stat fast path trust a recent stamp."""
     then = time.time() - seconds
     for path in root.rglob("*"):
         if path.is_file():
@@ -75,7 +78,11 @@ def age(root: Path, seconds: float = 60.0) -> None:
 
 
 @pytest.fixture
-def tree(tmp_path: Path) -> Path:
+def tree(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    # the files' ctimes are seconds old at most: trusted here, as they would be
+    # RACY_NS later (every edit below changes a stamp, long after the last hash)
+    monkeypatch.setattr(robotfix.cache, "RACY_NS", 0)
+    monkeypatch.setattr(robotfix.run, "RACY_NS", 0)
     root = tmp_path / "ws"
     write(root / "pyproject.toml", "")
     demo = root / "src" / "demo"
@@ -186,6 +193,8 @@ def test_a_cached_run_imports_no_analysis(tree: Path) -> None:
     run(tree)  # fills the cache in this process
     probe = (
         "import sys\n"
+        "import robotfix.run\n"
+        "robotfix.run.RACY_NS = 0  # as in `tree`: Cmd.msg's ctime is recent\n"
         "from robotfix.cli import main\n"
         f"status = main(['check', {str(tree / 'src')!r}])\n"
         "heavy = ('robotfix.analysis', 'lark', 'z3', 'pint', 'robotfix.paramcheck')\n"

@@ -10,6 +10,7 @@ from pathlib import Path
 
 import pytest
 
+from robotfix import api
 from robotfix.api import check_paths
 from robotfix.config import Config
 
@@ -136,3 +137,44 @@ def test_checked_code_and_annotations_never_run(tmp_path: Path) -> None:
     out = robotfix("check", ".", cwd=tmp_path)
     assert not marker.exists()
     assert "annotation.py:2:" in out and "error[RF501]" in out
+
+
+class _Planted:
+    """A pickle that creates `marker` when it is loaded (N6 of reliability2.md)."""
+
+    def __init__(self, marker: Path) -> None:
+        self.marker = str(marker)
+
+    def __reduce__(self) -> tuple[object, tuple[str, str]]:
+        return (open, (self.marker, "w"))
+
+
+def test_nothing_in_the_machine_cache_is_unpickled(tmp_path: Path) -> None:
+    """pint's registry cache is a pickle: RobotFix never points pint at its cache
+    folder, so a pickle planted where pint would look for one (a CI cache restored
+    from another branch, a shared ROBOTFIX_CACHE_DIR) is never loaded."""
+    import pickle
+
+    import pint
+
+    machine = tmp_path / "machine"
+    pint.UnitRegistry(cache_folder=machine / "pint")  # the files pint would read
+    planted = sorted((machine / "pint").glob("*.pickle"))
+    assert planted
+    marker = tmp_path / "PWNED"
+    for path in planted:
+        path.write_bytes(pickle.dumps(_Planted(marker)))
+    (tmp_path / "u.py").write_text(
+        "from typing import Annotated\n"
+        "x: Annotated[float, \"Unit('furlong/fortnight')\"] = 1\n"  # not shipped
+    )
+    env = {
+        **os.environ,
+        "ROBOTFIX_CACHE_DIR": str(machine),
+        "PYTHONPATH": str(Path(api.__file__).parents[1]),  # this robotfix
+    }
+    out = robotfix("check", "u.py", "--no-cache", cwd=tmp_path, env=env)
+    assert not marker.exists()
+    assert out == "No problems found in 1 file.\n"
+    (units,) = machine.glob("units-*.json")  # pint was asked, its answer kept
+    assert "furlong/fortnight" in units.read_text()

@@ -182,3 +182,164 @@ def test_a_cached_run_sees_an_edited_launch_file(tmp_path: Path) -> None:
     launch = pkg / "launch" / "gym_bridge_launch.py"
     launch.write_text(launch.read_text().replace('"scan_fov": 7.0', '"scan_fov": 1.0'))
     assert ("RF101", 22) not in codes()
+
+
+# -- launch values typed as parameter files are (the merge of fix/yaml) -----------
+
+RACER_NODE = """from rclpy.node import Node
+
+
+class Racer(Node):
+    def __init__(self):
+        super().__init__("racer")
+        self.declare_parameter("max_speed", 1.0)
+        self.declare_parameter("count", 1)
+"""
+
+
+def racer(root: Path) -> Path:
+    """A package whose node `racer` declares the double `max_speed` and the
+    integer `count`, started by `ros2 run racer racer`."""
+    pkg = package(root, "racer")
+    write(
+        pkg / "setup.py",
+        "from setuptools import setup\nsetup(name='racer', entry_points="
+        "{'console_scripts': ['racer = racer.node:main']})\n",
+    )
+    write(pkg / "racer" / "__init__.py", "")
+    write(pkg / "racer" / "node.py", RACER_NODE)
+    return pkg
+
+
+def test_huge_numbers_and_nested_lists_in_launch_values_are_rf401(
+    tmp_path: Path,
+) -> None:
+    """An inline launch value is typed as rcl reads the parameter file launch
+    writes of it (PyYAML's value, `yaml.dump`ed): `1e999` is a string (strtod:
+    ERANGE), an integer beyond int64 a double, with the note a parameter file
+    gets; a list of lists is refused by launch. Each is RF401 at its launch line,
+    as in a YAML file, in Python, YAML and XML launch files. Before the merge a
+    huge integer was an integer (silent) and `[[1.0]]` no value at all."""
+    pkg = racer(tmp_path)
+    write(
+        pkg / "launch" / "racer.launch.py",
+        """from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package="racer", executable="racer", parameters=[{
+            "max_speed": "1e999",
+        }]),
+        Node(package="racer", executable="racer", parameters=[{
+            "max_speed": [[1.0]],
+            "count": 100000000000000000000,
+        }]),
+        Node(package="racer", executable="racer", parameters=[{
+            "max_speed": 2.0, "count": 3,
+        }]),
+    ])
+""",
+    )
+    write(
+        pkg / "launch" / "racer.launch.yaml",
+        "launch:\n- node:\n    pkg: racer\n    exec: racer\n    param:\n"
+        "    - {name: max_speed, value: 1e999}\n"
+        "    - {name: count, value: 99999999999999999999}\n"
+        "- node:\n    pkg: racer\n    exec: racer\n    param:\n"
+        "    - {name: max_speed, value: [[1.0]]}\n"
+        f"    - {{name: count, value: {'9' * 5000}}}\n",
+    )
+    write(
+        pkg / "launch" / "racer.launch.xml",
+        '<launch>\n  <node pkg="racer" exec="racer">\n'
+        '    <param name="max_speed" value="[[1.0]]"/>\n'
+        '    <param name="count" value="1e999"/>\n'
+        '    <param name="count" value="7"/>\n'
+        "  </node>\n</launch>\n",
+    )
+    write(
+        pkg / "config" / "racer.yaml",
+        "racer:\n  ros__parameters:\n    max_speed: 1e999\n",
+    )
+    found = check_paths([pkg], Config(root=tmp_path)).diagnostics
+    at = sorted((Path(d.path).name, d.span.line, d.code) for d in found)
+    assert at == [
+        ("racer.launch.py", 8, "RF401"),
+        ("racer.launch.py", 11, "RF401"),
+        ("racer.launch.py", 12, "RF401"),
+        ("racer.launch.xml", 3, "RF401"),
+        ("racer.launch.xml", 4, "RF401"),
+        ("racer.launch.yaml", 6, "RF401"),
+        ("racer.launch.yaml", 7, "RF401"),
+        ("racer.launch.yaml", 12, "RF401"),
+        ("racer.launch.yaml", 13, "RF004"),  # PyYAML refuses it: launch fails
+        ("racer.yaml", 3, "RF401"),
+    ]
+    notes = {
+        (Path(d.path).name, d.span.line): [n.message for n in d.notes] for d in found
+    }
+    erange = "rcl reads `1e999` as a string: it overflows a double (strtod: ERANGE)"
+    for where in [("racer.yaml", 3), ("racer.launch.py", 8), ("racer.launch.yaml", 6)]:
+        assert erange in notes[where], where
+    assert any("beyond a 64-bit integer" in n for n in notes["racer.launch.py", 12])
+    assert any(
+        "launch refuses a list of lists" in n for n in notes["racer.launch.xml", 3]
+    )
+    messages = {(Path(d.path).name, d.span.line): d.message for d in found}
+    assert (
+        "is a double, but the parameter is declared an integer"
+        in messages["racer.launch.yaml", 7]
+    )
+    assert "launch cannot load" in messages["racer.launch.yaml", 13]
+    # a Python integer launch cannot write (`0x` and 5,000 hex digits): not checked
+    from robotfix.ros import paramfile
+    from robotfix.ros.launch import values
+
+    written = values.from_python(1 << 20_000)
+    assert not isinstance(written, paramfile.Typed) or written.type == "string"
+
+
+def test_a_fault_on_one_launch_file_is_its_internal_error(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """As for a parameter file: a fault of ours while a launch file is read or
+    its entries checked is an internal error of that file; the other launch
+    files are checked, and nothing is cached."""
+    from robotfix import launchcheck
+    from robotfix.ros.launch import reader
+
+    pkg = racer(tmp_path)
+    good = (
+        "from launch import LaunchDescription\nfrom launch_ros.actions import Node\n\n"
+        "def generate_launch_description():\n    return LaunchDescription([Node(\n"
+        "        package='racer', executable='racer', parameters=[{'count': 2.5}])])\n"
+    )
+    for name in ("good", "bad_read", "bad_check"):
+        write(pkg / "launch" / f"{name}.launch.py", good)
+    parse, entry = reader._parse, launchcheck._ros2_entry
+
+    def parse_fails(path: Path, *args: object) -> object:
+        if path.name == "bad_read.launch.py":
+            raise ValueError("read boom")
+        return parse(path, *args)  # type: ignore[arg-type]
+
+    def check_fails(found: object, *args: object) -> object:
+        if found.place.path.endswith("bad_check.launch.py"):  # type: ignore[attr-defined]
+            raise ValueError("check boom")
+        return entry(found, *args)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(reader, "_parse", parse_fails)
+    monkeypatch.setattr(launchcheck, "_ros2_entry", check_fails)
+    for _ in range(2):  # the second run: nothing was cached
+        result = check_paths([pkg], Config(root=tmp_path), use_cache=True)
+        assert sorted(
+            (Path(e.path).name, e.summary) for e in result.internal_errors
+        ) == [
+            ("bad_check.launch.py", "ValueError: check boom"),
+            ("bad_read.launch.py", "ValueError: read boom"),
+        ]
+        assert [(Path(d.path).name, d.code) for d in result.diagnostics] == [
+            ("good.launch.py", "RF401")
+        ]

@@ -20,7 +20,15 @@ PACKAGES = Path(__file__).parent / "cases" / "packages"
 
 @pytest.mark.parametrize(
     "name",
-    ["ros2_pkg", "ros1_pkg", "cycle", "near_misses", "alias_pkg", "helper_classes"],
+    [
+        "ros2_pkg",
+        "ros1_pkg",
+        "cycle",
+        "near_misses",
+        "alias_pkg",
+        "helper_classes",
+        "typed_pkg",
+    ],
 )
 def test_a_checked_tree_sees_its_own_modules(name: str) -> None:
     root = PACKAGES / name

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 import shutil
+import sys
 import time
 from pathlib import Path
 from typing import Any
@@ -269,8 +270,14 @@ def test_every_int64_is_an_integer(number: int) -> None:
 
 
 @settings(max_examples=60, deadline=None)
-@given(st.floats(allow_nan=False, allow_infinity=False))
+@given(
+    st.floats(allow_nan=False, allow_infinity=False).filter(
+        lambda x: x == 0 or abs(x) >= sys.float_info.min
+    )
+)
 def test_every_float_repr_is_a_double(number: float) -> None:
+    """(A subnormal's is a string: glibc's strtod sets ERANGE for it, see
+    tests/test_reliability_params.py.)"""
     text = repr(number)
     typed = P.ros2_scalar(scalar(text))
     assert typed is not None and typed.type == "double" and typed.value == number
@@ -364,7 +371,7 @@ def test_any_yaml_tree_is_checked_without_crashing(tree: object) -> None:
     with tempfile.TemporaryDirectory() as folder:
         path = write(Path(folder) / "p.yaml", text)
         for found in paramcheck.check_parameter_files([path], [], [DRIVER], [path]):
-            assert found.code in ("RF101", "RF401", "RF003")
+            assert found.code in ("RF101", "RF401", "RF003", "RF004")
 
 
 @settings(max_examples=60, deadline=None)

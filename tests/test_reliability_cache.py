@@ -3,12 +3,17 @@
 Built from the reliability report's reproducers: F5 (writes through planted
 symlinks), H6 (FIFOs and devices as cache files), C6 (well-formed entries with wrong
 types), W2 (stale after a .msg resolves a type or a duplicate changes), W3 (cached
-note paths replayed), W11 (entries never dropped).
+note paths replayed), W11 (entries never dropped); and round 2's (reliability2.md):
+N5 (an empty `.gitignore` after a full disk), N12 (lone surrogates in the cache),
+N13 (stale after a rewrite that keeps the size and the mtime).
 """
 
 from __future__ import annotations
 
+import contextlib
 import copy
+import errno
+import io
 import json
 import os
 import shutil
@@ -23,11 +28,16 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import robotfix
+import robotfix.cache
+import robotfix.discovery
+import robotfix.project.modules
+import robotfix.run
 from robotfix import cli
-from robotfix.api import check_paths, interface_files
-from robotfix.cache import ResultCache
+from robotfix.api import InternalError, check_paths, interface_files
+from robotfix.cache import GITIGNORE, ResultCache
 from robotfix.config import Config
 from robotfix.ros.catalog import MsgCatalog
+from robotfix.run import FileResult
 
 NODE = (
     "from pkg_a.msg import Outer\n"
@@ -94,6 +104,22 @@ def entries(root: Path) -> dict[str, Any]:
     data = json.loads((root / ".robotfix_cache" / "results.json").read_text())
     found: dict[str, Any] = data["entries"]
     return found
+
+
+@contextlib.contextmanager
+def stamps_trusted() -> Iterator[None]:
+    """Every stamp trusted at once (`fs.RACY_NS` 0 wherever it is read): a test's
+    files are seconds old, and what the cache keeps must not depend on the clock
+    (every edit below comes a whole run after the stamp it changes)."""
+    with pytest.MonkeyPatch.context() as patch:
+        for module in (
+            robotfix.cache,
+            robotfix.run,
+            robotfix.discovery,
+            robotfix.project.modules,
+        ):
+            patch.setattr(module, "RACY_NS", 0)
+        yield
 
 
 @pytest.fixture
@@ -270,7 +296,9 @@ def filled(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, dict[str, An
         root / "ifaces" / "demo" / "msg" / "Cmd.msg", "float64 speed #RobotFix# _ < 1\n"
     )
     config = Config(root=root, msg_paths=(root / "ifaces",))
-    check_paths([root / "src"], config, use_cache=True)
+    with stamps_trusted():
+        for _ in range(2):  # the second after `.robotfix_cache/` changed the root
+            check_paths([root / "src"], config, use_cache=True)
     data = json.loads((root / ".robotfix_cache" / "results.json").read_text())
     (entry,) = data["entries"].values()
     assert entry["diagnostics"] and entry["diagnostics"][0][4]  # some notes to break
@@ -302,18 +330,12 @@ def test_an_entry_with_wrong_types_is_rebuilt_never_a_crash(
     cache = root / ".robotfix_cache" / "results.json"
     cache.write_text(json.dumps(broken))
     config = Config(root=root, msg_paths=(root / "ifaces",))
-    result = check_paths([root / "src"], config, use_cache=True)
+    with stamps_trusted():  # no part kept or not by the clock: all compared
+        result = check_paths([root / "src"], config, use_cache=True)
     assert result.from_cache == 0  # rebuilt
     for fmt in FORMATS:
         cli.render(result, fmt, 1, 0)  # every renderer copes
-    rebuilt = json.loads(cache.read_text())
-    # what is kept by stat depends on the clock: a file's mtime, or the interface
-    # files' (the catalog's digests), or the folders' (the discovery trace), is
-    # trusted only once it is not recent
-    timed = ("stats", "catalog", "discovery")
-    assert {k: v for k, v in rebuilt.items() if k not in timed} == {
-        k: v for k, v in pristine.items() if k not in timed
-    }
+    assert json.loads(cache.read_text()) == pristine
 
 
 @pytest.mark.parametrize(
@@ -446,3 +468,292 @@ def test_fifos_and_devices_as_cache_files_never_hang(tmp_path: Path) -> None:
         timeout=60,
     )
     assert again.stdout == run.stdout
+
+
+# -- N13: a rewrite that keeps the size and the mtime is seen (the ctime) ------------
+HELPER = """\
+from typing import Annotated
+
+
+def h(v: Annotated[float, "_ < 1.9"]) -> None:
+    pass
+"""
+
+
+def rewrite_keeping_mtime(path: Path, old: str, new: str) -> None:
+    """`path` rewritten in place, same size, its mtime put back (as `cp -p`,
+    `rsync --inplace -t` and archives with fixed mtimes leave a file)."""
+    before = os.stat(path)
+    text = path.read_text()
+    assert len(old) == len(new) and old in text
+    path.write_text(text.replace(old, new))
+    os.utime(path, ns=(before.st_atime_ns, before.st_mtime_ns))
+    after = os.stat(path)
+    assert (after.st_size, after.st_mtime_ns, after.st_ino, after.st_dev) == (
+        before.st_size,
+        before.st_mtime_ns,
+        before.st_ino,
+        before.st_dev,
+    )
+    assert after.st_ctime_ns != before.st_ctime_ns  # a whole run came between
+
+
+def test_a_rewrite_keeping_size_and_mtime_rechecks_the_file_and_importers(
+    project: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    write(project / "pkg" / "helper.py", HELPER)
+    user = write(project / "pkg" / "user.py", "from pkg.helper import h\n\nh(1.5)\n")
+    with stamps_trusted():  # as a tree untouched for RACY_NS: its stats trusted
+        assert check(capsys, ".") == check(capsys, ".", "--no-cache")
+        assert "RF101" not in check(capsys, ".")
+        rewrite_keeping_mtime(user, "h(1.5)", "h(9.5)")
+        cached = check(capsys, ".")
+        assert "user.py:3:1: error[RF101]: `h(9.5)` violates `v < 1.9`" in cached
+        assert cached == check(capsys, ".", "--no-cache")
+        rewrite_keeping_mtime(user, "h(9.5)", "h(1.5)")
+        assert "RF101" not in check(capsys, ".")
+        rewrite_keeping_mtime(project / "pkg" / "helper.py", "_ < 1.9", "_ < 1.4")
+        cached = check(capsys, ".")  # the importer is checked again
+        assert "user.py:3:1: error[RF101]: `h(1.5)` violates `v < 1.4`" in cached
+        assert cached == check(capsys, ".", "--no-cache")
+
+
+# -- N12: no string in the cache can fail a run ----------------------------------------
+DRIVER = """\
+from geometry_msgs.msg import Twist
+from rclpy.node import Node
+
+from demo.limits import clamp
+from demo.msg import Cmd
+
+
+class Driver(Node):
+    def __init__(self) -> None:
+        super().__init__("driver")
+        self.declare_parameter("rate", 10.0)
+        self.pub = self.create_publisher(Cmd, "cmd", 10)
+
+    def tick(self) -> None:
+        c = Cmd()
+        c.speed = clamp(1.5)
+        t = Twist()
+        t.linear.x = 1.0
+        self.pub.publish(c)
+"""
+LIMITS = """\
+from typing import Annotated
+
+MAX = 3.0
+
+
+def clamp(x: float) -> Annotated[float, "_ <= MAX"]:
+    return min(x, MAX)
+"""
+
+
+@pytest.fixture(scope="module")
+def every_section(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """A tree whose cache has every part: entries, summaries, stats, parameter
+    files, the catalog (digests, problems, outline), discovery and resolution."""
+    root = tmp_path_factory.mktemp("n12")
+    write(root / "pyproject.toml", "")
+    demo = root / "src" / "demo"
+    package(root / "src", "demo")
+    write(demo / "msg" / "Cmd.msg", "float64 speed  # [m/s]\n#RobotFix# speed <= 2.0\n")
+    write(demo / "msg" / "Bad.msg", "float64 x\nnot a field line\n")
+    write(demo / "demo" / "__init__.py", "")
+    write(demo / "demo" / "limits.py", LIMITS)
+    write(demo / "demo" / "driver.py", DRIVER)
+    write(demo / "config" / "driver.yaml", "driver:\n  ros__parameters:\n    rate: x\n")
+    return root
+
+
+BYTE_FF = chr(0xDCFF)  # the byte 0xFF of a non-UTF-8 name, as os.fsdecode gives it
+NEVER_A_NAME = chr(0xD800)  # a lone surrogate no file name decodes to
+
+
+def report(root: Path, cache: bool = True) -> tuple[str, int]:
+    """The concise report of a run over `root` (no internal error) and the number
+    of results that came from the cache."""
+    result = check_paths([root / "src"], Config(root=root), use_cache=cache)
+    assert not result.internal_errors, result.internal_errors[0].detail
+    return cli.render(result, "concise", 1, 0), result.from_cache
+
+
+def strings(value: Any, at: tuple[Any, ...] = ()) -> Iterator[tuple[Any, ...]]:
+    """Where each string is, a key of a dict too (its place ends with ("key", k))."""
+    if isinstance(value, dict):
+        for key, item in value.items():
+            yield (*at, ("key", key))
+            yield from strings(item, (*at, key))
+    elif isinstance(value, list):
+        for index, item in enumerate(value):
+            yield from strings(item, (*at, index))
+    elif isinstance(value, str):
+        yield at
+
+
+def put(data: Any, at: tuple[Any, ...], value: str) -> Any:
+    """A copy of `data` with `value` at `at` (a key renamed when `at` is a key)."""
+    changed = copy.deepcopy(data)
+    parent = changed
+    for step in at[:-1]:
+        parent = parent[step]
+    if isinstance(at[-1], tuple):
+        parent[value] = parent.pop(at[-1][1])
+    else:
+        parent[at[-1]] = value
+    return changed
+
+
+def test_lone_surrogates_anywhere_in_the_cache_are_a_rebuild_never_a_crash(
+    every_section: Path,
+) -> None:
+    """N12: each string of `results.json` in turn (keys too, a spread of each part)
+    made a lone surrogate, valid JSON: the run is the uncached run. Text RobotFix
+    makes (digests, fingerprints, type and module names, codes) takes "\\udcff",
+    the report's; a path or a message, which may hold "\\udcff" as the byte 0xFF of
+    a non-UTF-8 file name, takes "\\ud800", which no file name decodes to."""
+    root = every_section
+    with stamps_trusted():
+        fresh, _ = report(root, cache=False)
+        report(root)
+        assert report(root) == (fresh, 3)  # every part of the cache in use
+        results = root / ".robotfix_cache" / "results.json"
+        pristine = json.loads(results.read_text())
+        assert all(pristine[part] for part in ("params", "catalog", "discovery"))
+        places = list(strings(pristine))
+        spread = []
+        for part in pristine:
+            mine = [at for at in places if at[0] == part or at[0] == ("key", part)]
+            step = max(1, len(mine) // 20)
+            spread += mine[::step]
+        spread.append(("catalog", "digests", "geometry_msgs/Twist", 0))  # the report's
+        try:
+            for at in spread:
+                parent = pristine
+                for step in at[:-1]:
+                    parent = parent[step]
+                old = at[-1][1] if isinstance(at[-1], tuple) else parent[at[-1]]
+                quoted = old.startswith(str(root)) or " " in old  # path or message
+                broken = put(pristine, at, NEVER_A_NAME if quoted else BYTE_FF)
+                results.write_text(json.dumps(broken))
+                assert report(root)[0] == fresh, at
+        finally:  # the next test finds the cache whole
+            results.write_text(json.dumps(pristine))
+
+
+@pytest.mark.parametrize(
+    "bad",
+    [
+        5,
+        [],
+        ["unit", [["meter", BYTE_FF], ["second", -1]], 0.2777777777777778, 0.0],
+        ["unit", [["meter", 1], ["second", -1]], 0, 0.0],
+        ["unit", [[BYTE_FF, 1], ["second", -1]], 0.2777777777777778, 0.0],
+        ["error", BYTE_FF],
+        ["tag", "x"],
+        ["what"],
+    ],
+)
+def test_a_bad_entry_of_the_units_cache_is_worked_out_again(
+    bad: Any, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """N12 in the machine cache (`units-*.json`): an entry that is not what the
+    resolution writes is ignored, never a failed check."""
+    from robotfix.annotations import units
+
+    monkeypatch.setattr(units._CACHE, "_entries", {})
+    monkeypatch.setattr(units._CACHE, "_dirty", False)  # nothing saved from here
+    right = units.resolve("km/h")
+    units._CACHE.entries["km/h"] = bad
+    assert units.resolve("km/h") == right
+
+
+def test_a_check_that_fails_with_the_cache_is_done_again_without_it(
+    every_section: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A state of the cache no validation foresaw that fails a check (here, any
+    project that took summaries from the cache): the file is checked again with
+    nothing of the cache, and the cache is dropped, then rebuilt."""
+    root = every_section
+    with stamps_trusted():
+        fresh, _ = report(root, cache=False)
+        report(root)
+        limits = root / "src" / "demo" / "demo" / "limits.py"
+        write(limits, LIMITS + "\n")  # checked again, with the cached summaries
+        real = robotfix.run._check_one
+
+        def fails_with_the_cache(
+            path: Path, data: Any, catalog: Any, config: Any, project: Any
+        ) -> Any:
+            if project.known:  # as `_check_one` reports a fault of ours
+                fault = "RuntimeError: a state of the cache no check foresaw"
+                return FileResult(str(path), [], InternalError(str(path), fault, ""))
+            return real(path, data, catalog, config, project)
+
+        with monkeypatch.context() as patch:
+            patch.setattr(robotfix.run, "_check_one", fails_with_the_cache)
+            assert report(root) == (fresh, 2)
+        assert entries(root) == {}  # dropped
+        assert report(root) == (fresh, 0)
+        assert report(root) == (fresh, 3)
+
+
+def test_a_run_that_fails_reading_the_cache_is_done_again_without_it(
+    every_section: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    root = every_section
+    with stamps_trusted():
+        fresh, _ = report(root, cache=False)
+        report(root)
+        real = ResultCache.resolution
+
+        def fails_when_read(self: ResultCache) -> Any:
+            if self._resolution is not None:  # read from the file
+                raise RuntimeError("a state of the cache no check foresaw")
+            return real(self)
+
+        with monkeypatch.context() as patch:
+            patch.setattr(ResultCache, "resolution", fails_when_read)
+            assert report(root) == (fresh, 0)
+        assert report(root) == (fresh, 3)
+
+
+# -- N5: a full disk leaves no empty .gitignore ---------------------------------------
+class FullFile(io.RawIOBase):
+    """A file on a full disk: every write fails with ENOSPC."""
+
+    def __init__(self, fd: int) -> None:
+        self.fd = fd
+
+    def writable(self) -> bool:
+        return True
+
+    def write(self, data: Any) -> int:
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+
+    def close(self) -> None:
+        if not self.closed:
+            os.close(self.fd)
+        super().close()
+
+
+def test_a_full_disk_leaves_no_empty_gitignore(
+    project: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    write(project / "a.py", "x = 1\n")
+    config = Config(root=project)
+    gitignore = project / ".robotfix_cache" / ".gitignore"
+
+    def full(fd: int, *args: Any, **kwargs: Any) -> Any:
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+
+    with monkeypatch.context() as disk:
+        disk.setattr(os, "write", full)
+        disk.setattr(os, "fdopen", lambda fd, *args, **kwargs: FullFile(fd))
+        check_paths([project], config, use_cache=True)
+    assert not gitignore.exists()  # neither empty nor cut
+    check_paths([project], config, use_cache=True)  # space again
+    assert gitignore.read_bytes() == GITIGNORE
+    assert check_paths([project], config, use_cache=True).from_cache == 1

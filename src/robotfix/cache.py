@@ -1,7 +1,7 @@
 """Per-file results under `.robotfix_cache/`, as ruff and mypy keep them.
 
 An entry is reused only when the file's bytes, the path it was named by, its
-per-file ignores, the run key (RobotFix's version, the settings that change results,
+per-file ignores, the run key (RobotFix's version and a digest of its own files, the settings that change results,
 the unit and message libraries), the resolved definition of every message type the
 file looked up (`MsgCatalog.fingerprint_types`) and the fingerprint of everything
 it consulted of other modules, transitively (`project/summary.py`: each module
@@ -14,17 +14,25 @@ the hash of their file's bytes, so that a cached run over an unchanged tree pars
 nothing.
 
 Stat fast path (as ruff, mypy and git do): the hash of every file a run read is
-kept with its size, mtime_ns, inode and device, and a file whose stat is unchanged
-is not read again; any difference (a `touch`, an editor's atomic save) costs one
-read and hash, never a wrong result. A file modified within `RACY_NS` of being
-hashed is not trusted by stat (git's "racily clean" rule): it could change again
-within the same mtime tick. The parameter files' diagnostics (`paramcheck.py`) are
+kept with its stamp (`fs.stamp`: mtime_ns, ctime_ns, inode, device, size, mode),
+and a file whose stamp is unchanged is not read again; any difference (a `touch`,
+an editor's atomic save, an in-place rewrite that restores the size and the mtime,
+as `cp -p` does: the ctime changes all the same) costs one read and hash, never a
+wrong result. A file changed (mtime or ctime) within `RACY_NS` of being hashed is
+not trusted by stat (git's "racily clean" rule): it could change again within the
+same tick. The parameter files' diagnostics (`paramcheck.py`) are
 kept too, under a key that hashes every input they depend on (`params_key`), and
 so is the discovery, with the trace of what it looked at (`discovery.Trace`): an
 unchanged tree is stat'ed, not walked.
 
-A missing, corrupt, foreign or ill-typed cache is ignored and rebuilt; a cache that
-cannot be written only costs speed. `results.json` is read only if it is a regular
+The file is data only: JSON, read with `json.loads` into plain values, never
+unpickled, imported or run. A missing, corrupt, foreign or ill-typed cache is
+ignored and rebuilt: each part is used only when it is exactly what this module
+writes, with the types it writes and strings that encode as UTF-8 (a lone surrogate
+only where a path may hold one, as `os.fsdecode` gives a non-UTF-8 name); a part
+that is not is dropped, and a check that fails in a run that used the cache is done
+again without it (`run.py`), the cache then dropped. A cache that cannot be written
+only costs speed. `results.json` is read only if it is a regular
 file (`fs.read_regular`) and written atomically through a fresh temporary file
 (`fs.atomic_write`), never through a symlink. Entries of files that no longer exist,
 or that lie under the checked paths but were not checked, are dropped when saving.
@@ -32,6 +40,8 @@ or that lie under the checked paths but were not checked, are dropped when savin
 
 from __future__ import annotations
 
+import contextlib
+import functools
 import hashlib
 import json
 import os
@@ -45,7 +55,7 @@ from robotfix import __version__, fs, rules
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic, Note, Span
 from robotfix.discovery import Discovery, Trace
-from robotfix.disk_cache import install_key
+from robotfix.disk_cache import install_key, is_text
 from robotfix.fs import RACY_NS
 
 if TYPE_CHECKING:
@@ -55,18 +65,38 @@ if TYPE_CHECKING:
 # an interface problem before `messages.interface_problem`: its diagnostic, the
 # package no type of which is known (if so), the types of its file
 InterfaceProblem = tuple[Diagnostic, "str | None", tuple[str, ...]]
-FORMAT = 7
+FORMAT = 8
 # which parameter-related words a file mentions (`paramcheck.MENTIONS`, all layouts),
 # kept with its hash so that an unchanged file need not be read to know
 MENTION_WORDS = (b"declare_parameter", b"get_parameter", b"ParamListener", b"rospy")
 MAX_BYTES = 512 * 1024 * 1024  # results.json of ~4 million files
 MAX_INT = 2**31  # lines and columns; anything larger is not ours
+STAMP = 6  # the length of an `fs.stamp`, which begins a stat record
 GITIGNORE = b"# Created by robotfix\n*\n"
+
+
+# what of RobotFix's own files decides results (code, stubs, grammar, data tables)
+_OWN_SUFFIXES = frozenset({".py", ".pyi", ".lark", ".json", ".toml"})
+
+
+@functools.lru_cache(maxsize=1)
+def own_digest() -> str:
+    """A digest of RobotFix's own files: installed from a checkout, every commit is
+    version 0.1.0, so the version alone would replay results of older code (about
+    1.6 MB read once per process)."""
+    package = Path(__file__).resolve().parent
+    digest = hashlib.blake2b(digest_size=16)
+    for path in sorted(package.rglob("*")):
+        if path.suffix in _OWN_SUFFIXES and "__pycache__" not in path.parts:
+            digest.update(str(path.relative_to(package)).encode())
+            with contextlib.suppress(OSError):
+                digest.update(path.read_bytes())
+    return digest.hexdigest()
 
 
 def run_key(config: Config) -> str:
     parts = [
-        f"robotfix {__version__}",
+        f"robotfix {__version__} {own_digest()}",
         f"format {FORMAT}",
         f"python {sys.version_info[0]}.{sys.version_info[1]}",
         f"rep103 {config.rep103}",
@@ -92,7 +122,8 @@ def entry_key(path: Path) -> str:
 
 
 class ResultCache:
-    def __init__(self, folder: Path, key: str) -> None:
+    def __init__(self, folder: Path, key: str, trusted: bool = True) -> None:
+        """`trusted=False`: the file is not read (it is rewritten on `save`)."""
         self.path = folder / "results.json"
         self.key = key
         self._entries: dict[str, Any] = {}
@@ -100,7 +131,7 @@ class ResultCache:
         # module file -> [sha256 of its bytes, its summary's fingerprint, its
         # members' fingerprints]
         self.summaries: dict[str, Known] = {}
-        # file -> [size, mtime_ns, inode, device, sha256, mentions]: `sha`'s memory
+        # file -> [*fs.stamp, sha256, mentions]: `sha`'s memory
         self._stats: dict[str, list[Any]] = {}
         self._seen_stats: dict[str, list[Any]] = {}  # this run's, saved
         self._bytes: dict[str, bytes] = {}  # the last file `sha` read, to `take`
@@ -110,10 +141,19 @@ class ResultCache:
         # the module index's answers with what they depend on (`ModuleIndex.keep`)
         self._resolution: dict[str, Any] | None = None
         self._dirty = False
+        self._dropped = False  # `drop`: nothing of this cache is saved
+        if not trusted:
+            self._dirty = True
+            return
         try:
-            data = json.loads(fs.read_regular(self.path, MAX_BYTES, follow=False))
+            raw = fs.read_regular(self.path, MAX_BYTES, follow=False)
+            data = json.loads(raw)
         except (fs.UnreadableError, ValueError, RecursionError):
             return
+        # `save` writes ASCII (json.dumps escapes the rest): in such a file a lone
+        # surrogate can only be a `\udXXX` escape, so without one every string is
+        # text, and the parts only `_names_only` checks need no walk
+        plain = raw.isascii() and b"\\ud" not in raw and b"\\uD" not in raw
         if (
             isinstance(data, dict)
             and data.get("key") == key
@@ -125,21 +165,30 @@ class ResultCache:
                 self.summaries = {
                     k: (v[0], v[1], v[2])
                     for k, v in found.items()
-                    if isinstance(v, list)
+                    if _name(k)
+                    and isinstance(v, list)
                     and len(v) == 3
-                    and isinstance(v[0], str)
-                    and isinstance(v[1], str)
+                    and is_text(v[0])
+                    and is_text(v[1])
                     and isinstance(v[2], dict)
-                    and all(isinstance(x, str) for x in v[2].values())
+                    and all(is_text(m) and is_text(x) for m, x in v[2].items())
                 }
             stats = data.get("stats")
             if isinstance(stats, dict):
-                self._stats = {k: v for k, v in stats.items() if _valid_stat(v)}
+                self._stats = {
+                    k: v for k, v in stats.items() if _name(k) and _valid_stat(v)
+                }
+            # read by `discovery.Trace` and `ModuleIndex.restore`, which check
+            # their shapes: here, that every string is one this cache can hold
             found_discovery = data.get("discovery")
-            if isinstance(found_discovery, dict):
+            if isinstance(found_discovery, dict) and (
+                plain or _names_only(found_discovery)
+            ):
                 self._discovery = found_discovery
             found_resolution = data.get("resolution")
-            if isinstance(found_resolution, dict):
+            if isinstance(found_resolution, dict) and (
+                plain or _names_only(found_resolution)
+            ):
                 self._resolution = found_resolution
             found_catalog = data.get("catalog")
             if isinstance(found_catalog, dict):
@@ -148,7 +197,7 @@ class ResultCache:
             if (
                 isinstance(params, list)
                 and len(params) == 2
-                and isinstance(params[0], str)
+                and is_text(params[0])
                 and isinstance(params[1], list)
                 and all(_valid_diagnostic(d) for d in params[1])
             ):
@@ -160,12 +209,12 @@ class ResultCache:
         the hash was taken, else read (then `take` hands the bytes over). None when
         the file cannot be read (`fs.read_regular` says why)."""
         known = self._stat_record(path)
-        return known[4] if known is not None else None
+        return known[STAMP] if known is not None else None
 
     def mentions(self, path: Path) -> int | None:
         """Which of `MENTION_WORDS` the file contains (a bit each), as `sha`."""
         known = self._stat_record(path)
-        return known[5] if known is not None else None
+        return known[STAMP + 1] if known is not None else None
 
     def take(self, path: Path) -> bytes:
         """The bytes `sha` read (once), or the file's bytes now."""
@@ -176,13 +225,11 @@ class ResultCache:
         key = entry_key(path)
         if key in self._seen_stats:
             return self._seen_stats[key]
-        try:
-            st = os.stat(path)
-        except (OSError, ValueError):
+        stamp = fs.stamp(path)
+        if stamp is None:
             return None
-        stamp = [st.st_size, st.st_mtime_ns, st.st_ino, st.st_dev]
         known = self._stats.get(key)
-        if known is not None and known[:4] == stamp:
+        if known is not None and known[:STAMP] == stamp:
             self._seen_stats[key] = known
             return known
         try:
@@ -192,8 +239,8 @@ class ResultCache:
         self._bytes = {key: data}  # the last file read only: memory stays flat
         mentions = sum(1 << i for i, w in enumerate(MENTION_WORDS) if w in data)
         record = [*stamp, hashlib.sha256(data).hexdigest(), mentions]
-        if len(data) != st.st_size or time.time_ns() - st.st_mtime_ns < RACY_NS:
-            record[1] = -1  # changed while read, or too recent: never matches
+        if len(data) != stamp[4] or time.time_ns() - max(stamp[:2]) < RACY_NS:
+            record[0] = -1  # changed while read, or too recent: never matches
         self._seen_stats[key] = record
         self._dirty = True
         return record
@@ -221,11 +268,12 @@ class ResultCache:
         table: dict[str, tuple[str, tuple[str, ...]]] = {}
         for name, value in digests.items():
             if not (
-                isinstance(value, list)
+                is_text(name)
+                and isinstance(value, list)
                 and len(value) == 2
-                and isinstance(value[0], str)
+                and is_text(value[0])
                 and isinstance(value[1], list)
-                and all(isinstance(t, str) for t in value[1])
+                and all(is_text(t) for t in value[1])
             ):
                 return None
             table[name] = (value[0], tuple(value[1]))
@@ -235,9 +283,9 @@ class ResultCache:
                 isinstance(item, list)
                 and len(item) == 3
                 and _valid_diagnostic(item[0])
-                and (item[1] is None or isinstance(item[1], str))
+                and (item[1] is None or is_text(item[1]))
                 and isinstance(item[2], list)
-                and all(isinstance(t, str) for t in item[2])
+                and all(is_text(t) for t in item[2])
             ):
                 return None
             found.append((_load(item[0]), item[1], tuple(item[2])))
@@ -362,6 +410,12 @@ class ResultCache:
             self._valid[name] = entry
         return entry  # type: ignore[no-any-return]
 
+    def drop(self) -> None:
+        """Forget all of this cache, and keep nothing of this run's either: a
+        check failed where the cache's state may be the cause, so the next run
+        starts from an empty cache."""
+        self._dropped = self._dirty = True
+
     def put(
         self,
         path: Path,
@@ -432,7 +486,7 @@ class ResultCache:
         if not self._dirty:
             return
         folder = self.path.parent
-        payload = {
+        payload: dict[str, Any] = {
             "key": self.key,
             "entries": self._entries,
             "summaries": {
@@ -445,6 +499,8 @@ class ResultCache:
             "discovery": self._discovery,
             "resolution": self._resolution,
         }
+        if self._dropped:
+            payload = {"key": self.key, "entries": {}}
         try:
             folder.mkdir(parents=True, exist_ok=True)
             fs.create_exclusive(folder / ".gitignore", GITIGNORE)
@@ -554,12 +610,12 @@ def _load(raw: list[Any]) -> Diagnostic:
 def _valid_entry(entry: Any) -> bool:
     return (
         isinstance(entry, dict)
-        and isinstance(entry.get("file"), str)
-        and isinstance(entry.get("catalog"), str)
+        and is_text(entry.get("file"))
+        and is_text(entry.get("catalog"))
         and isinstance(entry.get("types"), list)
-        and all(isinstance(t, str) for t in entry["types"])
+        and all(is_text(t) for t in entry["types"])
         and isinstance(entry.get("modules"), dict)
-        and all(isinstance(v, str) for v in entry["modules"].values())
+        and all(_name(k) and is_text(v) for k, v in entry["modules"].items())
         and isinstance(entry.get("diagnostics"), list)
         and all(_valid_diagnostic(d) for d in entry["diagnostics"])
     )
@@ -574,13 +630,13 @@ def _load_outline(raw: Any) -> Outline | None:
         if not (
             isinstance(item, list)
             and len(item) == 3
-            and isinstance(item[0], str)
-            and isinstance(item[1], str)
+            and _name(item[0])
+            and is_text(item[1])
             and isinstance(item[2], list)
             and all(
                 isinstance(x, list)
                 and len(x) == 2
-                and isinstance(x[0], str)
+                and is_text(x[0])
                 and type(x[1]) is bool
                 for x in item[2]
             )
@@ -593,10 +649,10 @@ def _load_outline(raw: Any) -> Outline | None:
 def _valid_stat(raw: Any) -> bool:
     return (
         isinstance(raw, list)
-        and len(raw) == 6
-        and all(type(n) is int for n in raw[:4])
-        and isinstance(raw[4], str)
-        and type(raw[5]) is int
+        and len(raw) == STAMP + 2
+        and all(type(n) is int for n in raw[:STAMP])
+        and is_text(raw[STAMP])
+        and type(raw[STAMP + 1]) is int
     )
 
 
@@ -607,13 +663,13 @@ def _valid_diagnostic(raw: Any) -> bool:
     return (
         isinstance(code, str)
         and code in rules.ALL_RULES
-        and isinstance(path, str)
+        and _name(path)
         and isinstance(span, list)
         and len(span) == 4
         and all(_number(n, 0) for n in span)
         and span[0] >= 1
         and span[2] >= span[0]
-        and isinstance(message, str)
+        and _name(message)
         and isinstance(notes, list)
         and all(_valid_note(n) for n in notes)
     )
@@ -624,8 +680,8 @@ def _valid_note(raw: Any) -> bool:
         return False
     message, path, line = raw
     return (
-        isinstance(message, str)
-        and (path is None or isinstance(path, str))
+        _name(message)
+        and (path is None or _name(path))
         and (line is None or _number(line, 1))
         and (path is None) == (line is None)  # a location, or none at all
     )
@@ -634,3 +690,25 @@ def _valid_note(raw: Any) -> bool:
 def _number(value: Any, least: int) -> bool:
     """An int (not a bool) in [least, MAX_INT)."""
     return type(value) is int and least <= value < MAX_INT
+
+
+def _name(value: Any) -> bool:
+    """A path, or text that may quote one (a message): UTF-8, with at most the lone
+    surrogates `os.fsdecode` gives the bytes of a non-UTF-8 name (surrogateescape)."""
+    return is_text(value, "surrogateescape")
+
+
+def _names_only(raw: Any) -> bool:
+    """Every string in `raw` (keys too, at any depth) is a `_name`."""
+    todo = [raw]
+    while todo:
+        item = todo.pop()
+        if isinstance(item, dict):
+            if not all(_name(k) for k in item):
+                return False
+            todo.extend(item.values())
+        elif isinstance(item, list):
+            todo.extend(item)
+        elif isinstance(item, str) and not _name(item):
+            return False
+    return True

@@ -263,7 +263,7 @@ def run_check(args: argparse.Namespace) -> int:
             print(f"robotfix: error: {where} {folder}: {why}", file=sys.stderr)
             return EXIT_FAILURE
     for folder in settings.stub_paths:
-        why = _missing(folder)
+        why = _missing(folder) or (None if os.path.isdir(folder) else "not a folder")
         if why:
             where = "--stub-path" if folder in args.stub_path else "stub-paths"
             print(f"robotfix: error: {where} {folder}: {why}", file=sys.stderr)

@@ -9,6 +9,11 @@ is ignored, and a folder that cannot be written only costs speed. The file is re
 only when it is a regular file (a FIFO or a device there is ignored, never waited
 on) and replaced atomically through a fresh temporary file, never written through a
 symlink.
+
+A cache holds data only: it is read with `json.loads` into plain values (the units
+cache checks each entry before use, `units._is_resolution`); nothing in the folder
+is unpickled, imported or run. (pint's own registry cache is a pickle: RobotFix does
+not use it, and never reads the `pint/` folder older versions left here.)
 """
 
 from __future__ import annotations
@@ -44,6 +49,22 @@ def install_key(module: str, version: str) -> str:
     except OSError:
         stamp = 0
     return f"{origin}:{stamp}:{version}"
+
+
+def is_text(value: Any, errors: str = "strict") -> bool:
+    """Whether a value read from a cache is a str that encodes as UTF-8, as every
+    string RobotFix writes there does (a lone surrogate would raise where the string
+    is hashed or printed). errors="surrogateescape": a path, which may also hold the
+    bytes of a non-UTF-8 name as `os.fsdecode` gives them."""
+    if not isinstance(value, str):
+        return False
+    if value.isascii():
+        return True
+    try:
+        value.encode("utf-8", errors)
+    except UnicodeEncodeError:
+        return False
+    return True
 
 
 class JsonCache:

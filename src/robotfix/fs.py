@@ -339,13 +339,24 @@ def _xattr(fd: int, name: str) -> bytes | None:
 
 def create_exclusive(path: str | os.PathLike[str], data: bytes) -> bool:
     """Write a new file only if nothing (not even a dangling symlink) is at `path`.
-    True when written; False when something was there or it could not be made."""
+    True when written; False when something was there or it could not be made. A
+    write that fails (a full disk) removes the file it created, so no empty or cut
+    file stays behind to stop the next run from writing it whole."""
     try:
         fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL | _NOFOLLOW, 0o644)
     except OSError:
         return False
-    with os.fdopen(fd, "wb") as out:
-        out.write(data)
+    try:
+        try:
+            rest = memoryview(data)
+            while rest:
+                rest = rest[os.write(fd, rest) :]
+        finally:
+            os.close(fd)  # on some file systems a write's error surfaces here
+    except OSError:
+        with contextlib.suppress(OSError):
+            os.unlink(path)  # ours: O_EXCL made it
+        return False
     return True
 
 
@@ -370,16 +381,19 @@ def _reason(err: OSError) -> str:
     return err.strerror or type(err).__name__
 
 
-# a file or folder changed this recently is not trusted by its stat or stamp (git's
-# "racily clean" rule: the next change could land in the same timestamp tick, and
-# some file systems keep whole seconds): the result cache, the discovery trace and
-# the module index's kept answers all use it
+# a file or folder changed (mtime or ctime) this recently is not trusted by its
+# stamp (git's "racily clean" rule: the next change could land in the same timestamp
+# tick, and some file systems keep whole seconds): the result cache, the discovery
+# trace and the module index's kept answers all use it
 RACY_NS = 2_000_000_000
 
 
-def stamp(name: str) -> list[int] | None:
-    """A folder's stamp for the traces kept between runs (`discovery.Trace`, the
-    module index's answers): a listing is trusted while its stamp is unchanged."""
+def stamp(name: str | os.PathLike[str]) -> list[int] | None:
+    """A file's or folder's stamp for what is kept between runs (the result cache's
+    hashes, `discovery.Trace`, the module index's answers): what was read is
+    trusted while its stamp is unchanged. The ctime is in it, as git keeps it: a
+    rewrite that restores the size and the mtime (`cp -p`, `os.utime`) still
+    changes the ctime, which no file operation sets back."""
     try:
         st = os.stat(name)
     except (OSError, ValueError):

@@ -15,7 +15,11 @@ table `paramcheck` builds of every node's declarations:
   every parameter the node declares is known by name;
 - a ROS 2 parameter file's section whose node name no node of the run has, in
   code or in a launch file, is RF602 (a note);
-- a launch file that cannot be read or parsed is RF004.
+- a launch file that cannot be read or parsed is RF004, and so is a value launch
+  cannot load (an integer PyYAML refuses).
+
+A fault of ours on one launch file (reading it, or checking its entries) is a
+`paramcheck.Fault` of that file: its findings are dropped, the others checked.
 """
 
 from __future__ import annotations
@@ -29,7 +33,14 @@ from robotfix import messages
 from robotfix.analysis.parameters import ROSPY, Summary
 from robotfix.diagnostics import Diagnostic, Note, Span
 from robotfix.fs import UnreadableError, read_text
-from robotfix.paramcheck import Failure, Parameter, Table, report_failure, ros1_name
+from robotfix.paramcheck import (
+    Fault,
+    Parameter,
+    Table,
+    guard,
+    report_failure,
+    ros1_name,
+)
 from robotfix.paramcheck import owners as declaring_owners
 from robotfix.ros import paramfile as P
 from robotfix.ros.executables import MAX_BUILD_BYTES, executable_file, module_file
@@ -54,7 +65,12 @@ class LaunchRun:
     """The launch files of a run, read, and what they add to its parameter check
     (`paramcheck.Launches`)."""
 
-    def __init__(self, launch_files: list[Path], code_files: list[Path]) -> None:
+    def __init__(
+        self,
+        launch_files: list[Path],
+        code_files: list[Path],
+        faults: list[Fault] | None = None,
+    ) -> None:
         self.packages = _packages([*launch_files, *code_files])
         self.notices: list[Diagnostic] = []
         self.started: list[_Started] = []
@@ -63,16 +79,26 @@ class LaunchRun:
         self.names: set[str] = set()  # every node name a launch entry gives
         self.reader = Reader(self.packages.get)
         for path in launch_files:
-            launch = self.reader.read(path)
-            if launch.problem is not None:
-                text, line, col = launch.problem
-                self.notices.append(
-                    messages.launch_file_not_read(str(path), line, col, text)
-                )
-                continue
-            for entry in launch.entries if launch.launch else []:
-                self._add(entry)
+            with guard(path, self.notices, faults):
+                self._read(path)
         self.entries = len(self.started)
+
+    def _read(self, path: Path) -> None:
+        """One launch file's entries, kept only once all are read (a fault on
+        the file leaves nothing of it)."""
+        launch = self.reader.read(path)
+        if launch.problem is not None:
+            text, line, col = launch.problem
+            self.notices.append(
+                messages.launch_file_not_read(str(path), line, col, text)
+            )
+            return
+        started = [
+            _Started(entry, self._code(entry))
+            for entry in (launch.entries if launch.launch else [])
+        ]
+        for one in started:
+            self._add(one)
 
     def texts(self) -> dict[str, str]:
         return self.reader.texts
@@ -87,8 +113,8 @@ class LaunchRun:
             found |= started.files
         return found
 
-    def _add(self, entry: NodeEntry) -> None:
-        started = _Started(entry, self._code(entry))
+    def _add(self, started: _Started) -> None:
+        entry = started.entry
         self.started.append(started)
         if entry.name:
             self.names.add(entry.name.rsplit("/", 1)[-1])
@@ -112,44 +138,62 @@ class LaunchRun:
         return {os.path.realpath(p) for p in [main, *_imported(main, folder)]}
 
     # -- the checks (called by paramcheck with its table) -------------------------
-    def check(self, table: Table, loaded: dict[str, P.ParamFile]) -> list[Diagnostic]:
+    def check(
+        self,
+        table: Table,
+        loaded: dict[str, P.ParamFile],
+        faults: list[Fault] | None = None,
+    ) -> list[Diagnostic]:
+        """The entries against their nodes' code, each launch file's under a
+        `guard` of its own (an entry's file: an included file's entries are its
+        own), then RF602 for each parameter file."""
         out = list(self.notices)
         by_real = {table.real[s.path]: s for s in table.summaries}
+        by_file: dict[str, list[_Started]] = {}
         for started in self.started:
-            code = [by_real[f] for f in sorted(started.files) if f in by_real]
-            if not code:
-                continue
-            if started.entry.ros == 2:
-                out += _ros2_entry(started.entry, code, table, loaded)
-            else:
-                out += _ros1_entry(started.entry, code, table)
-        out += self._unmatched(table, loaded)
+            by_file.setdefault(started.entry.place.path, []).append(started)
+        for path, entries in by_file.items():
+            with guard(path, out, faults):
+                for started in entries:
+                    code = [by_real[f] for f in sorted(started.files) if f in by_real]
+                    if not code:
+                        continue
+                    if started.entry.ros == 2:
+                        out += _ros2_entry(started.entry, code, table, loaded)
+                    else:
+                        out += _ros1_entry(started.entry, code, table)
+        known = self._known(table)
+        for path, parameters in sorted(loaded.items()):
+            with guard(path, out, faults):
+                out += _unmatched(path, parameters, known)
         unique = {(d.path, d.span, d.code, d.message): d for d in out}
         return list(unique.values())
 
-    def _unmatched(
-        self, table: Table, loaded: dict[str, P.ParamFile]
-    ) -> list[Diagnostic]:
+    def _known(self, table: Table) -> set[str]:
+        """Every node name of the code and the launch files."""
         known = set(self.names)
         for summary in table.summaries:
             for names in summary.node_names.values():
                 known.update(names)
-        out = []
-        for path, parameters in sorted(loaded.items()):
-            if parameters.layout != "ros2":
-                continue
-            unmatched = [
-                (key, where)
-                for key, where in parameters.sections.items()
-                if (name := key.rstrip("/").rsplit("/", 1)[-1])
-                and "*" not in name
-                and name not in known
-            ]
-            if unmatched:
-                (line, col) = unmatched[0][1]
-                keys = [key for key, _ in unmatched]
-                out.append(messages.parameter_section_unmatched(path, line, col, keys))
-        return out
+        return known
+
+
+def _unmatched(path: str, parameters: P.ParamFile, known: set[str]) -> list[Diagnostic]:
+    """RF602: a ROS 2 parameter file's sections that name no known node."""
+    if parameters.layout != "ros2":
+        return []
+    unmatched = [
+        (key, where)
+        for key, where in parameters.sections.items()
+        if (name := key.rstrip("/").rsplit("/", 1)[-1])
+        and "*" not in name
+        and name not in known
+    ]
+    if not unmatched:
+        return []
+    (line, col) = unmatched[0][1]
+    keys = [key for key, _ in unmatched]
+    return [messages.parameter_section_unmatched(path, line, col, keys)]
 
 
 def _packages(files: list[Path]) -> dict[str, Path]:
@@ -301,7 +345,8 @@ def _inline(
     node: str,
     budget: list[int],
 ) -> Diagnostic | None:
-    """RF401/RF101 when the value is wrong for every declaration it may meet."""
+    """RF401/RF101 when the value is wrong for every declaration it may meet;
+    RF004 for a value launch cannot load, set for a declared parameter."""
     if parameter.value is None:
         return None
     candidates = [
@@ -309,23 +354,31 @@ def _inline(
         for s, o in owners
         if (c := table.ros2_parameter(s, o, parameter.name)) is not None
     ]
-    failures = [c.judge(parameter.value, budget) for c in candidates]
-    if not candidates or any(f is None for f in failures):
+    return _judged(parameter, candidates, node, budget)
+
+
+def _judged(
+    parameter: InlineParam, candidates: list[Parameter], node: str, budget: list[int]
+) -> Diagnostic | None:
+    """RF401/RF101 when the value is wrong for every candidate declaration."""
+    value = parameter.value
+    if value is None or not candidates:
+        return None
+    place = parameter.place
+    span = Span.point(place.line, place.col)
+    if isinstance(value, P.Unread):
+        subject = f"`{parameter.name}: ...` (launched node {node})"
+        return messages.parameter_value_not_checked(
+            place.path, span, subject, value.why
+        )
+    failures = [c.judge(value, budget) for c in candidates]
+    if any(f is None for f in failures):
         return None
     first = failures[0]
     assert first is not None
-    return _report(parameter, first, node)
-
-
-def _report(parameter: InlineParam, failure: Failure, node: str) -> Diagnostic:
-    value = parameter.value
-    assert value is not None
     shown = f'"{value.text}"' if value.type == "string" else value.text
     subject = f"`{parameter.name}: {shown[:40]}` (launched node {node})"
-    place = parameter.place
-    return report_failure(
-        place.path, Span.point(place.line, place.col), subject, failure
-    )
+    return report_failure(place.path, span, subject, value, first)
 
 
 def _file_typos(
@@ -386,11 +439,10 @@ def _ros1_entry(
         candidates = [
             c for summary in code if (c := _ros1_parameter(summary, name)) is not None
         ]
-        failures = [c.judge(parameter.value, budget) for c in candidates]
-        if candidates and all(f is not None for f in failures):
-            first = failures[0]
-            assert first is not None
-            out.append(_report(parameter, first, f"`{entry.name or entry.executable}`"))
+        node = f"`{entry.name or entry.executable}`"
+        found = _judged(parameter, candidates, node, budget)
+        if found is not None:
+            out.append(found)
     return out
 
 

@@ -124,16 +124,26 @@ def malformed_stub(path: str, line: int, col: int, detail: str) -> Diagnostic:
     )
 
 
-def unused_metadata(path: str, line: int, col: int, shown: str) -> Diagnostic:
+def unused_metadata(
+    path: str,
+    line: int,
+    col: int,
+    shown: str,
+    why: str | None = None,
+    hint: str | None = None,
+) -> Diagnostic:
+    """RF511: `why` it is not read (default: it is no string), and how to write it."""
     return Diagnostic(
         rules.UNUSED_METADATA,
         path,
         Span.point(line, col),
-        f"`{shown}` in `Annotated` is not checked: RobotFix reads only string "
-        "refinements",
+        f"`{shown}` in `Annotated` is not checked: "
+        + (why or "RobotFix reads only string refinements"),
         (
             Note(
-                "write the refinement as a string (`\"Unit('m') and 0 <= _ <= 1\"`), "
+                hint
+                or "write the refinement as a string "
+                "(`\"Unit('m') and 0 <= _ <= 1\"`), "
                 "or bind a module name to one and use that name"
             ),
         ),
@@ -366,7 +376,10 @@ def unit_mismatch(
     """`aligned`: the value's unit over the expected dimensions, when only the
     scale differs once the radian cancels (`omega_deg * r`); `twice`: the literal
     factor that converted a value already in `expected` (`p_s * 1000` into s)."""
-    message = f"`{stmt}` gives {target} a value in {got}, but {target} is in {expected}"
+    message = (
+        f"`{stmt}` gives {target} a value in {got}, but {target} {_is(target)} in "
+        f"{expected}"
+    )
     fix = conversion(got if aligned is None else aligned, expected)
     if aligned is not None and fix:
         ratio = aligned.factor / expected.factor
@@ -390,6 +403,11 @@ def unit_mismatch(
     if fix:
         message += f": {fix}"
     return Diagnostic(rules.UNIT_MISMATCH, path, span, message, tuple(notes))
+
+
+def _is(target: str) -> str:
+    """The verb for a target: "the elements of `ranges`" are in m."""
+    return "are" if target.startswith("the elements of") else "is"
 
 
 def converted_twice(
@@ -420,8 +438,8 @@ def implicit_unit_change(
     else:
         kind, unit, example = "a time step", "s", "DT: Annotated[float, \"Unit('s')\"]"
     message = (
-        f"`{stmt}` gives {target} a value in {got}, but {target} is in {expected}: "
-        f"an implicit {kind[2:]} in {unit}; multiply by {kind} declared with its unit "
+        f"`{stmt}` gives {target} a value in {got}, but {target} {_is(target)} in "
+        f"{expected}: an implicit {kind[2:]} in {unit}; multiply by {kind} declared with its unit "
         f"(`{example} = ...`)"
     )
     notes = (declared.note(),) if declared is not None else ()
@@ -626,12 +644,63 @@ def parameter_file_not_checked(
 ) -> Diagnostic:
     """RF004 for a parameter file found in a package's config folder that cannot
     be read or parsed: a warning, since it may be a template or another tool's."""
-    return Diagnostic(
-        rules.PATH_NOT_CHECKED,
+    return _parameter_warning(
         path,
-        Span.point(line, col),
+        line,
+        col,
         f"parameter file not checked: {detail}",
-        (Note("ROS cannot load it either, unless it is not a parameter file"),),
+        "ROS cannot load it either, unless it is not a parameter file",
+    )
+
+
+def parameter_file_reference(path: str, line: int, col: int, alias: bool) -> Diagnostic:
+    """RF004 for a ROS 2 parameter file with an alias or a merge key, which rcl
+    does not read; its values are checked as PyYAML expands the file."""
+    if alias:
+        message = (
+            'rcl refuses aliases ("Will not support aliasing"): a node given this '
+            "file with --params-file does not start"
+        )
+    else:
+        message = (
+            "rcl does not apply the merge key `<<`: it reads the keys under it as "
+            "parameters named `<<.name`"
+        )
+    return _parameter_warning(
+        path,
+        line,
+        col,
+        message,
+        "its values are checked as PyYAML expands the file, as a launch file that "
+        "rewrites it first does (nav2_common's RewrittenYaml)",
+    )
+
+
+def parameter_merge_refused(path: str, line: int, col: int, detail: str) -> Diagnostic:
+    """RF004 for a merge key PyYAML refuses: what it would bring in is not checked."""
+    return _parameter_warning(
+        path,
+        line,
+        col,
+        f"merge not checked: {detail}",
+        "PyYAML refuses the file, and so do rosparam and tools built on it",
+    )
+
+
+def _parameter_warning(
+    path: str, line: int, col: int, message: str, note: str
+) -> Diagnostic:
+    return Diagnostic(
+        rules.PATH_NOT_CHECKED, path, Span.point(line, col), message, (Note(note),)
+    )
+
+
+def parameter_value_not_checked(
+    path: str, span: Span, subject: str, why: str
+) -> Diagnostic:
+    """RF004 for a value in a parameter file that its loader cannot read."""
+    return Diagnostic(
+        rules.PATH_NOT_CHECKED, path, span, f"{subject} is not checked: {why}"
     )
 
 
@@ -693,17 +762,17 @@ def parameter_section_unmatched(
 
 
 def parameter_value_violated(
-    path: str, span: Span, subject: str, rule: str, declared: Declared, why: str = ""
+    path: str, span: Span, subject: str, rule: str, declared: Declared, *notes: str
 ) -> Diagnostic:
     """RF101 for a parameter's value: a default in code, or a value in a parameter
-    file, outside the declared range or refinement."""
-    notes = [declared.note()] + ([Note(why)] if why else [])
+    file, outside the declared range or refinement; `notes` (the empty ones left
+    out): how ROS read the value, when its text does not say, and why it fails."""
     return Diagnostic(
         rules.REFINEMENT_VIOLATED,
         path,
         span,
         f"{subject} violates {rule}{_owner(declared)}",
-        tuple(notes),
+        _notes(declared, notes),
     )
 
 
@@ -714,17 +783,21 @@ def parameter_value_type(
     got: str,
     expected: str,
     declared: Declared,
-    why: str = "",
+    *notes: str,
 ) -> Diagnostic:
-    """RF401 for a value in a parameter file of another type than declared."""
-    notes = [declared.note()] + ([Note(why)] if why else [])
+    """RF401 for a value in a parameter file of another type than declared;
+    `notes` as for RF101."""
     return Diagnostic(
         rules.BASE_TYPE_MISMATCH,
         path,
         span,
         f"{subject} is {got}, but the parameter is declared {expected}",
-        tuple(notes),
+        _notes(declared, notes),
     )
+
+
+def _notes(declared: Declared, notes: tuple[str, ...]) -> tuple[Note, ...]:
+    return (declared.note(), *(Note(n) for n in notes if n))
 
 
 def _owner(declared: Declared) -> str:

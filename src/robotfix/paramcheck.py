@@ -26,7 +26,8 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
@@ -59,7 +60,6 @@ Known = tuple[tuple[bytes, ...], Summary | None]
 _SUPPRESS = re.compile(
     r"#\s*robotfix:\s*ignore(?:\[(?P<codes>[^\]]*)\])?", re.IGNORECASE
 )
-_DECIMAL = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?")
 TYPE_WHY = (
     "a ROS 2 parameter keeps the type it was declared with: rclpy refuses "
     "another (InvalidParameterTypeException) unless it is declared with "
@@ -78,6 +78,16 @@ class Failure:
     why: str = ""
 
 
+@dataclass(frozen=True)
+class Fault:
+    """A fault of ours while a file was read or checked (`run` reports it as
+    an internal error of that file)."""
+
+    path: str
+    summary: str  # one line: the exception
+    detail: str  # the traceback
+
+
 @dataclass
 class Parameter:
     """One parameter a YAML key may name, with everything that constrains it."""
@@ -88,10 +98,6 @@ class Parameter:
     refinements: list[Attached] = field(default_factory=list)
     definitions: list[P.Definition] = field(default_factory=list)
     definitions_path: dict[int, str] = field(default_factory=dict)
-
-    def failure(self, value: Y.Node, budget: list[int]) -> Failure | None:
-        typed = (P.ros2_value if self.ros == 2 else P.ros1_value)(value, budget)
-        return None if typed is None else self.judge(typed, budget)
 
     def judge(self, typed: P.Typed, budget: list[int]) -> Failure | None:
         """What is wrong with `typed` as this parameter's value (None: nothing
@@ -123,6 +129,7 @@ def check_parameter_files(
     config: Config | None = None,
     known: dict[str, Known] | None = None,
     project: Project | None = None,
+    faults: list[Fault] | None = None,
     launches: Launches | None = None,
 ) -> list[Diagnostic]:
     """Diagnostics for the parameter files and generate_parameter_library
@@ -133,9 +140,11 @@ def check_parameter_files(
     `# robotfix: ignore[RF101]` and `per-file-ignores` silence as in Python.
     `known`: what the run's checks found of the Python files they read;
     `project`: how a file read here sees the other modules of its tree (an alias
-    its refinement imports), as its check does. `launches`: what the run's
-    launch files add (`launchcheck`): the names they give nodes, the parameter
-    files they name, and their own checks, made with the same table."""
+    its refinement imports), as its check does. `faults`: where a fault of ours
+    on one file goes, the others being checked (without it, it is raised).
+    `launches`: what the run's launch files add (`launchcheck`): the names they
+    give nodes, the parameter files they name, and their own checks, made with
+    the same table (a fault on one launch file is a fault of that file)."""
     if launches is not None:
         files = [*files, *(f for f in launches.files if f not in files)]
     loud = {str(p) for p in [*named, *definition_files]}
@@ -147,43 +156,85 @@ def check_parameter_files(
         key = str(path)
         if key in read:
             continue
-        loaded = _load(path, key in loud, out, texts)
-        if loaded is None:
-            continue
-        read[key] = loaded
-        if loaded.layout == "definitions":
-            for definition in loaded.definitions:
-                definitions.setdefault(definition.namespace, []).append(
-                    (definition, key)
-                )
-            out.extend(_definition_defaults(loaded, key))
+        with guard(path, out, faults):
+            loaded = _load(path, key in loud, out, texts)
+            if loaded is None:
+                continue
+            read[key] = loaded
+            if loaded.layout == "definitions":
+                for definition in loaded.definitions:
+                    definitions.setdefault(definition.namespace, []).append(
+                        (definition, key)
+                    )
+                out.extend(_definition_defaults(loaded, key))
     layouts = {f.layout for f in read.values() if f.entries}
     if launches is not None and launches.entries:
         layouts |= set(MENTIONS)
     words = tuple(w for layout in sorted(layouts) for w in MENTIONS.get(layout, ()))
-    found = _summaries(python_files, words, known or {}, project) if words else []
+    found = (
+        _summaries(python_files, words, known or {}, project, faults) if words else []
+    )
     table = Table(found, definitions, launches.renamed if launches else None)
     for path in files:
         loaded = read.get(str(path))
         if loaded is None or loaded.layout == "definitions":
             continue
-        package = _package_of(path)
-        budget = [Y.WALK_BUDGET]
-        for entry in loaded.entries:
-            candidates = (
-                table.ros2(entry, package)
-                if loaded.layout == "ros2"
-                else table.ros1(entry, package)
-            )
-            failures = [c.failure(entry.value, budget) for c in candidates]
-            if candidates and all(f is not None for f in failures):
-                first = failures[0]
-                assert first is not None
-                out.append(_report(str(path), entry, first, loaded.layout, budget))
+        with guard(path, out, faults):
+            out.extend(_check_file(path, loaded, table))
     if launches is not None:
-        out.extend(launches.check(table, read))
+        out.extend(launches.check(table, read, faults))
         texts.update(launches.texts())
     return [d for d in out if not _silenced(d, texts.get(d.path, ""), config)]
+
+
+@contextmanager
+def guard(
+    path: str | Path, out: list[Diagnostic], faults: list[Fault] | None
+) -> Iterator[None]:
+    """A fault of ours while one file is read or checked: that file's diagnostics
+    so far are dropped, the fault is kept for the run to report (`faults`; raised
+    when there is no list) and the other files are checked."""
+    before = len(out)
+    try:
+        yield
+    except Exception as err:
+        if faults is None:
+            raise
+        import traceback  # only here: 2 ms of every start otherwise
+
+        del out[before:]
+        summary = f"{type(err).__name__}: {err}"
+        faults.append(Fault(str(path), summary, traceback.format_exc()))
+
+
+def _check_file(path: Path, loaded: P.ParamFile, table: Table) -> list[Diagnostic]:
+    """A parameter file's values against what the run's nodes declare."""
+    out: list[Diagnostic] = []
+    package = _package_of(path)
+    budget = [Y.WALK_BUDGET]
+    for entry in loaded.entries:
+        candidates = (
+            table.ros2(entry, package)
+            if loaded.layout == "ros2"
+            else table.ros1(entry, package)
+        )
+        if not candidates:
+            continue
+        value = entry.value
+        typed = (P.ros2_value if loaded.layout == "ros2" else P.ros1_value)(
+            value, budget
+        )
+        if isinstance(typed, P.Unread):
+            out.append(_unread(str(path), entry, value, typed))
+            continue
+        if typed is None:
+            continue
+        failures = [c.judge(typed, budget) for c in candidates]
+        if all(f is not None for f in failures):
+            first = failures[0]
+            assert first is not None
+            out.append(_report(str(path), entry, value, typed, first))
+    return out
 
 
 def _silenced(diag: Diagnostic, text: str, config: Config | None) -> bool:
@@ -207,9 +258,11 @@ def _summaries(
     words: tuple[bytes, ...],
     known: dict[str, Known],
     project: Project | None = None,
+    faults: list[Fault] | None = None,
 ) -> list[Summary]:
     """The summaries of the files that mention one of `words` (a quick filter);
-    those in `known` are not read again (unless their check made no summary)."""
+    those in `known` are not read again (unless their check made no summary).
+    A fault on one file is kept in `faults` (see `guard`)."""
     found: list[Summary] = []
     seen: set[str] = set()
     for path in python_files:
@@ -229,10 +282,11 @@ def _summaries(
             continue
         if not any(word in data for word in words):
             continue
-        source = SourceFile.from_bytes(str(path), data)
-        if source.tree is not None:
-            resolver = project.resolver(path) if project is not None else None
-            found.append(summarize(source, resolver=resolver))
+        with guard(path, [], faults):
+            source = SourceFile.from_bytes(str(path), data)
+            if source.tree is not None:
+                resolver = project.resolver(path) if project is not None else None
+                found.append(summarize(source, resolver=resolver))
     return found
 
 
@@ -259,7 +313,23 @@ def _load(
         )
         out.append(report(str(path), root.line, root.col, root.message))
         return None
-    return P.classify(root)
+    loaded = P.classify(root)
+    if loaded is None:
+        return None
+    for problem in loaded.problems:
+        out.append(
+            messages.parameter_merge_refused(
+                str(path), problem.line, problem.col, problem.message
+            )
+        )
+    reference = loaded.reference
+    if reference is not None:
+        out.append(
+            messages.parameter_file_reference(
+                str(path), reference.line, reference.col, isinstance(reference, Y.Alias)
+            )
+        )
+    return loaded
 
 
 class Launches(Protocol):
@@ -269,8 +339,15 @@ class Launches(Protocol):
     files: list[Path]  # parameter files the launch entries name
     entries: int  # launch entries read
 
-    def check(self, table: Table, read: dict[str, P.ParamFile]) -> list[Diagnostic]:
-        """The launch files' own findings (`read`: the parameter files loaded)."""
+    def check(
+        self,
+        table: Table,
+        read: dict[str, P.ParamFile],
+        faults: list[Fault] | None = None,
+    ) -> list[Diagnostic]:
+        """The launch files' own findings (`read`: the parameter files loaded); a
+        fault of ours on one file goes to `faults` (`guard`), the others are
+        checked."""
         ...
 
     def texts(self) -> dict[str, str]:
@@ -474,9 +551,8 @@ def _term(typed: P.Typed) -> A.Expr | None:
     if isinstance(value, float):
         if value != value or value in (float("inf"), float("-inf")):
             return None
-        text = typed.text
-        exact = Fraction(text) if _DECIMAL.fullmatch(text) else Fraction(value)
-        return A.Num(exact, False)
+        exact = P.exact(typed.text)  # None: past the bounds, or `1_000.5` (ROS 1)
+        return A.Num(Fraction(value) if exact is None else exact, False)
     if isinstance(value, str):
         return A.Str(value)
     return None
@@ -524,8 +600,8 @@ def _definition_defaults(loaded: P.ParamFile, path: str) -> list[Diagnostic]:
             if isinstance(default, Y.Sequence)
             else P.ros1_value(default, budget)
         )
-        if typed is None:
-            continue
+        if not isinstance(typed, P.Typed):
+            continue  # PyYAML refuses it: the generator fails, and says so
         for validator, args, line, _ in definition.validations:
             broken = P.gpl_violation(validator, args, typed, budget)
             if broken is not None:
@@ -549,26 +625,36 @@ def _definition_defaults(loaded: P.ParamFile, path: str) -> list[Diagnostic]:
     return out
 
 
-def _report(
-    path: str, entry: P.Entry, failure: Failure, layout: str, budget: list[int]
-) -> Diagnostic:
-    value = Y.resolve(entry.value, budget) or entry.value
-    line = getattr(value, "line", entry.line)
-    col = getattr(value, "col", entry.col)
-    typed = (P.ros2_value if layout == "ros2" else P.ros1_value)(value, [Y.WALK_BUDGET])
-    shown = typed.text if typed is not None else "..."
+def _subject(entry: P.Entry, value: Y.Node, text: str) -> str:
+    """`name: value` (node `n`), the value cut for a message."""
+    shown = text
     if isinstance(value, Y.Scalar) and not value.plain:
         shown = f'"{shown}"'
     if len(shown) > 40:
         shown = shown[:37] + "..."
     node = f" (node `{entry.node}`)" if entry.node else ""
-    return report_failure(
-        path, Span.point(line, col), f"`{entry.name}: {shown}`{node}", failure
+    return f"`{entry.name}: {shown}`{node}"
+
+
+def _span(entry: P.Entry, value: Y.Node) -> Span:
+    return Span.point(
+        getattr(value, "line", entry.line), getattr(value, "col", entry.col)
     )
 
 
-def report_failure(path: str, span: Span, subject: str, failure: Failure) -> Diagnostic:
-    """RF401 or RF101 for a value (`subject`) at `span`."""
+def _report(
+    path: str, entry: P.Entry, value: Y.Node, typed: P.Typed, failure: Failure
+) -> Diagnostic:
+    return report_failure(
+        path, _span(entry, value), _subject(entry, value, typed.text), typed, failure
+    )
+
+
+def report_failure(
+    path: str, span: Span, subject: str, typed: P.Typed, failure: Failure
+) -> Diagnostic:
+    """RF401 or RF101 for a value (`subject`) at `span`; `typed.how` says how ROS
+    came to read it so, when its text does not."""
     if failure.type_error:
         return messages.parameter_value_type(
             path,
@@ -577,8 +663,16 @@ def report_failure(path: str, span: Span, subject: str, failure: Failure) -> Dia
             failure.got,
             failure.expected,
             failure.declared,
+            typed.how,
             failure.why,
         )
     return messages.parameter_value_violated(
-        path, span, subject, failure.rule, failure.declared, failure.why
+        path, span, subject, failure.rule, failure.declared, typed.how, failure.why
+    )
+
+
+def _unread(path: str, entry: P.Entry, value: Y.Node, unread: P.Unread) -> Diagnostic:
+    text = value.text if isinstance(value, Y.Scalar) else "..."
+    return messages.parameter_value_not_checked(
+        path, _span(entry, value), _subject(entry, value, text), unread.why
     )

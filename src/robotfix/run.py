@@ -30,7 +30,7 @@ from robotfix.cache import ResultCache, discovery_key, run_key
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
 from robotfix.discovery import Discovery, Trace, discover, install_space
-from robotfix.fs import RACY_NS, UnreadableError, read_regular
+from robotfix.fs import RACY_NS, UnreadableError, read_regular, stamp
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.ros.install import InstallSpace
 from robotfix.ros.package import package_folder
@@ -41,6 +41,7 @@ if TYPE_CHECKING:
 if TYPE_CHECKING:  # the analysis is imported only when a file is checked
     from robotfix.analysis.parameters import Summary as ParamSummary
     from robotfix.launchcheck import LaunchRun
+    from robotfix.paramcheck import Fault as ParamFault
     from robotfix.paramcheck import Known as ParamKnown
     from robotfix.project.summary import Known, Project
 
@@ -93,7 +94,14 @@ def check_paths(
     gc.freeze()
     gc.set_threshold(GC_THRESHOLD, 50, 1000)
     try:
-        return _check_paths(paths, config, progress, jobs, use_cache)
+        try:
+            return _check_paths(paths, config, progress, jobs, use_cache)
+        except Exception:
+            if not use_cache:
+                raise
+            # a state of the result cache no validation foresaw must not fail
+            # every run: the run again without reading it (it is rewritten)
+            return _check_paths(paths, config, progress, jobs, use_cache, False)
     finally:
         gc.set_threshold(*threshold)
         gc.unfreeze()
@@ -108,12 +116,15 @@ def _check_paths(
     progress: Callable[[int, int, str], None] | None,
     jobs: int,
     use_cache: bool,
+    trusted: bool = True,
 ) -> Result:
     started = time.perf_counter()
     result = Result()
     cache = (
         ResultCache(
-            config.cache_dir or config.root / ".robotfix_cache", run_key(config)
+            config.cache_dir or config.root / ".robotfix_cache",
+            run_key(config),
+            trusted,
         )
         if use_cache
         else None
@@ -188,6 +199,9 @@ def _check_paths(
         project.parameter_words = tuple(w for ws in MENTIONS.values() for w in ws)
     checks = _check_all(todo, interfaces, config, catalog, project, jobs, cache)
     for outcome in checks:
+        failed = outcome.error is not None and outcome.error.summary != LOST
+        if failed and cache is not None:
+            outcome = _check_clean(outcome, contents, interfaces, config, cache)
         done += 1
         if progress is not None:
             progress(done, len(files), outcome.path)
@@ -220,7 +234,9 @@ def _check_paths(
     if cache is not None and snapshot:
         cache.put_catalog(snapshot, catalog.digest_table(), problems, catalog.outline())
     result.diagnostics.extend(
-        _parameter_problems(found, files, config, cache, parameters, project)
+        _parameter_problems(
+            found, files, config, cache, parameters, project, result.internal_errors
+        )
     )
     result.files += len(found.parameter_files)
     result.diagnostics = finish(result.diagnostics)
@@ -262,22 +278,26 @@ def _parameter_problems(
     cache: ResultCache | None = None,
     parameters: dict[str, ParamKnown] | None = None,
     project: Project | None = None,
+    errors: list[InternalError] | None = None,
 ) -> list[Diagnostic]:
     """Parameter files and launch files against the parameters the code declares;
     cached as a whole, under a key that hashes every input (`_params_key`);
     `parameters`: what the checks found of the files they read (the others are
     read there). Launch files are read first (`launchcheck.LaunchRun`): what
-    they touch is part of the key."""
+    they touch is part of the key. A fault of ours on one file (a parameter
+    file, a launch file) is an internal error of that file (in `errors`), the
+    others are checked, and nothing is cached."""
     if not (found.parameter_files or found.parameter_definitions or found.launch_files):
         return []
     python_files = [*files, *found.summary_files]
+    faults: list[ParamFault] = []
     launches = None
     if found.launch_files:
         from robotfix.launchcheck import LaunchRun
 
-        launches = LaunchRun(found.launch_files, python_files)
+        launches = LaunchRun(found.launch_files, python_files, faults)
     key = _params_key(found, python_files, config, cache, launches) if cache else None
-    if cache is not None and key is not None:
+    if cache is not None and key is not None and not faults:
         known = cache.params(key)
         if known is not None:
             return known
@@ -291,9 +311,12 @@ def _parameter_problems(
         config,
         parameters,
         project,
+        faults,
         launches,
     )
-    if cache is not None and key is not None:
+    if errors is not None:
+        errors += [InternalError(f.path, f.summary, f.detail) for f in faults]
+    if cache is not None and key is not None and not faults:
         cache.put_params(key, out)
     return out
 
@@ -345,9 +368,9 @@ def _params_key(
 
 def _catalog_key(interfaces: _Interfaces, config: Config) -> str | None:
     """What the catalog is read from, by stat (as `ResultCache.sha`): its interface
-    files' names, sizes, mtimes, inodes and devices, and the settings that shape
+    files' names and stamps (`fs.stamp`: with the ctime), and the settings that shape
     it; None when that is not all (an install space is sourced: its files are read
-    on demand) or a file changed too recently to trust its mtime."""
+    on demand) or a file changed too recently to trust its stamp."""
     if interfaces.installed is not None:
         return None
     now = time.time_ns()
@@ -356,15 +379,13 @@ def _catalog_key(interfaces: _Interfaces, config: Config) -> str | None:
     ]
     parts += [f"preferred {p}" for p in interfaces.preferred]
     for path in interfaces.files:
-        try:
-            st = os.stat(path)
-        except (OSError, ValueError):
+        found = stamp(path)
+        if found is None:
             parts.append(f"missing {path}")
             continue
-        if now - st.st_mtime_ns < RACY_NS:
+        if now - max(found[:2]) < RACY_NS:
             return None
-        stamp = (st.st_size, st.st_mtime_ns, st.st_ino, st.st_dev)
-        parts.append(f"file {path} {stamp}")
+        parts.append(f"file {path} {found}")
     text = "\n".join(parts).encode("utf-8", "surrogateescape")
     return hashlib.sha256(text).hexdigest()
 
@@ -507,9 +528,11 @@ def _stop(pool: ProcessPoolExecutor | None) -> None:
             process.terminate()
 
 
+LOST = "the worker process checking it stopped (killed, or out of memory)"
+
+
 def _lost(path: Path) -> FileResult:
-    summary = "the worker process checking it stopped (killed, or out of memory)"
-    return FileResult(str(path), [], InternalError(str(path), summary, summary))
+    return FileResult(str(path), [], InternalError(str(path), LOST, LOST))
 
 
 def _size(path: Path, data: bytes | None) -> int:
@@ -520,6 +543,27 @@ def _size(path: Path, data: bytes | None) -> int:
         return os.stat(path).st_size
     except OSError:
         return 0  # it says why when it is read
+
+
+def _check_clean(
+    failed: FileResult,
+    contents: dict[Path, bytes],
+    interfaces: _Interfaces,
+    config: Config,
+    cache: ResultCache,
+) -> FileResult:
+    """A file whose check failed in a run that used the result cache, checked again
+    with nothing of it (a catalog and a project of its own): a state of the cache
+    no validation foresaw must not fail a file on every run. When that check
+    succeeds, the cache was the cause: it is dropped (`ResultCache.drop`)."""
+    path = Path(failed.path)
+    catalog = _catalog(interfaces, config)
+    project = make_project(list(interfaces.roots), config, catalog)
+    again = _check_one(path, contents.get(path), catalog, config, project)
+    if again.error is not None:
+        return failed
+    cache.drop()
+    return again
 
 
 def _check_one(

@@ -81,3 +81,20 @@ def test_annotation_problems_point_into_the_file(tmp_path: Path) -> None:
 @given(st.text(max_size=200))
 def test_random_text_never_raises(text: str) -> None:
     read_interface(Path("p/msg/R.msg"), text)
+
+
+def test_underscore_is_the_field_of_its_line_only(tmp_path: Path) -> None:
+    path = tmp_path / "Cmd.msg"
+    path.write_text(
+        "pkg/Cmd.msg\n"
+        'float64 speed #RobotFix# Unit(_) == "m/s" and _ <= 1.5\n'
+        'geometry_msgs/Vector3 accel #RobotFix# Unit(_.x) == "m/s^2" and _.x < 3\n'
+        "#RobotFix# _ > 0\n"
+    )
+    catalog = MsgCatalog([path])
+    spec = catalog.lookup("pkg/Cmd")
+    assert spec.units["speed"].text == "m/s"
+    assert spec.units["accel.x"].text == "m/s^2"
+    assert sorted(i.text for i in spec.invariants) == ["accel.x < 3", "speed <= 1.5"]
+    found = [(p.rule.code, p.line, p.message) for p in catalog.problems]
+    assert found == [(rules.UNKNOWN_FIELD.code, 4, "`_` is not a field of pkg/Cmd")]

@@ -267,8 +267,8 @@ class CallEvaluator(LibraryEvaluator):
                     log.sink(where, exprs[name], decl.unit, value)
                 else:
                     log.call(where, function.key, name, exprs[name])
-        if function.returns is None:
-            return self.unknown(node)
+        if function.returns is None:  # what its `return`s give, if they agree
+            return self.typed(self.program.types.returns(function.key), node, state)
         lookup = {**self._callee_names(function.returns, function, state), **terms}
         return self.check.assumed(state, f"{function.name}()", function.returns, lookup)
 

@@ -700,6 +700,8 @@ class Checker:
                 obj.fields[name] = heap.new_message(
                     self.ctx, state, spec.msg_type or "", "unknown", owner=(ref, name)
                 )
+                if sub is not None and value.ref is not None:
+                    self._alike(state, ref, name, value.ref, site, target)
             return
         ok = (
             spec.loose
@@ -829,6 +831,41 @@ class Checker:
                         state, owner_ref, rule, site, label or target, False, True
                     )
         self.check_whole(state, sub_ref, site, publishing=False, single=True)
+
+    def _alike(
+        self, state: State, ref: int, name: str, source: int, site: ast.AST, target: str
+    ) -> None:
+        """A message of another type stored into field `name` of `ref` (`pose.position
+        = odom.twist.twist.linear`, a Vector3 in m/s into a Point in m): what its
+        fields of the same names hold must fit their new place (units and
+        refinements), once per statement. The field itself is unknown after."""
+        stored = state.heap[ref].fields[name]
+        if stored.ref is None:
+            return
+        source_spec = self.ctx.catalog.lookup(state.heap[source].type)
+        target_spec = self.ctx.catalog.lookup(state.heap[stored.ref].type)
+        if source_spec is None or target_spec is None:
+            return
+        reported = len(self.ctx.diagnostics)
+        for path, spec in target_spec.fields.items():
+            other = source_spec.fields.get(path)
+            if (
+                other is None
+                or "msg" in (spec.kind, other.kind)
+                or other.array
+                or spec.array
+            ):
+                continue  # only the scalar fields both types have
+            found = heap.resolve_path(
+                self.ctx, state, source, path, f"{target}.{path}", settled=True
+            )
+            if found.default_of is not None or found.term is None:
+                continue
+            muted = len(self.ctx.diagnostics) > reported
+            self.ctx.muted += muted
+            self.write_field(state, stored.ref, path, found, site, f"{target}.{path}")
+            self.ctx.muted -= muted
+        heap.havoc(state, stored.ref)
 
     def _field_declared(
         self, owner: MsgSpec, name: str, unit_decl: FieldUnit

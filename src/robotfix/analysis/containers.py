@@ -169,7 +169,13 @@ def stripped(value: Value) -> Value:
     kept = value.items.kept if value.items is not None else None
     if kept is not None:
         return declared("list", kept)
-    return Value("list", unit=value.unit, items=Items(item_kind(value)))
+    items = value.items or Items()
+    message, of = items.message, items.of  # the elements' type stays
+    types = {e.name if e.kind == "msg" else "" for e in value.elements or ()}
+    if len(types) == 1 and "" not in types:  # `[Twist(), Twist()]`: messages
+        message = (types.pop(), "unknown")
+    kind = item_kind(value)
+    return Value("list", unit=value.unit, items=Items(kind, message=message, of=of))
 
 
 def with_element(
@@ -219,8 +225,18 @@ def with_element(
         unit = kept.unit
     elif value.elements == () and not element.literal:
         unit = element.unit
+    # the elements' type stays while what is added is of it (`history.append(odom)`)
+    message = items.message if element.kind == "msg" else None
+    of = items.of if element.kind == "instance" else None
+    if (message and message[0] != element.name) or (
+        of is not None and getattr(of, "name", None) != element.name
+    ):
+        message = of = None
     return Value(
-        value.kind, unit=unit, elements=elements, items=Items(kind, each, size, kept)
+        value.kind,
+        unit=unit,
+        elements=elements,
+        items=Items(kind, each, size, kept, message=message, of=of),
     )
 
 

@@ -34,6 +34,7 @@ if TYPE_CHECKING:
     from robotfix.analysis.unitmemo import UnitMemo
 
 MSG_MODULES = ("msg", "srv", "action")
+ROS_CLIENTS = ("rclpy", "rospy")
 # Python packages only ROS 1 has: a file importing one (and not rclpy) is ROS 1 code.
 ROS1_PACKAGES = frozenset({"rospy", "roslib", "actionlib", "rosbag", "tf"})
 # ROS 1 generates AddTwoIntsRequest, FibonacciGoal...; ROS 2 nests AddTwoInts.Request.
@@ -321,13 +322,19 @@ class FileContext:
             known,
             self.alias_of,
             self._field_kind,
+            self.ros_code,
         )
         self.uses_refinements = self.uses_refinements or found is not None
         for problem in problems:
             if problem.rule is rules.UNUSED_METADATA:
                 self._metadata_notes.append(
                     messages.unused_metadata(
-                        self.source.path, problem.line, problem.col, problem.message
+                        self.source.path,
+                        problem.line,
+                        problem.col,
+                        problem.message,
+                        problem.why,
+                        problem.hint,
                     )
                 )
                 continue
@@ -383,16 +390,21 @@ class FileContext:
             self.source.char_col,
             self.alias_of,
             self.source.path,
+            constraints=self.ros_code,
+        )
+
+    @property
+    def ros_code(self) -> bool:
+        """Whether the file imports a ROS interface package, rclpy or rospy."""
+        return any(
+            (len(parts) >= 3 and parts[1] in MSG_MODULES) or parts[0] in ROS_CLIENTS
+            for parts in (q.split(".") for q in self.imports.values())
         )
 
     def metadata_notes(self) -> None:
-        """RF511, only in files that are RobotFix's business: they import a ROS
-        interface package or use refinements. Plain Python stays silent."""
-        ros = any(
-            len(parts) >= 3 and parts[1] in MSG_MODULES
-            for parts in (q.split(".") for q in self.imports.values())
-        )
-        if ros or self.uses_refinements:
+        """RF511, only in files that are RobotFix's business: ROS code (`ros_code`)
+        or files that use refinements. Plain Python stays silent."""
+        if self.ros_code or self.uses_refinements:
             for diag in self._metadata_notes:
                 self.report(diag, once=("metadata", diag.span.line, diag.span.col))
         self._metadata_notes.clear()

@@ -16,7 +16,7 @@ from functools import partial
 from typing import TypeVar
 
 from robotfix import messages
-from robotfix.analysis import containers, frames, heap, hover, imported
+from robotfix.analysis import containers, frames, heap, hover, imported, types
 from robotfix.analysis.checks import Checker
 from robotfix.analysis.constants import is_constant
 from robotfix.analysis.context import TERM_LIMIT, FileContext
@@ -242,6 +242,10 @@ class ExpressionEvaluator:
         found = self.member(base, node.attr, state)
         if found is not None:
             return found
+        if base.kind == "instance":  # `self.chassis.left`: the attribute's type
+            typed = self.program.types.attribute(base.name, node.attr)
+            if typed is not None:
+                return self.typed(typed, node, state)
         if base.kind == "unknown" and isinstance(base.term, A.Sym):
             # `args.verbose` twice is one value, until something may change args
             version = state.version(base.term)
@@ -352,20 +356,18 @@ class ExpressionEvaluator:
             )
         else:
             decl = self.program.attributes.get(base.name, {}).get(node.attr)
-            msg_type = (
-                self.program.message_attribute(base.name, node.attr)
+            typed = (
+                self.program.types.attribute(base.name, node.attr)
                 if base.kind == "instance" and decl is None
                 else None
             )
             if decl is not None:
                 lookup = self.refinement_lookup(decl, state)
                 value = self.check.assumed(state, key, decl, lookup)
-            elif msg_type is not None:
-                # a message kept on self: its fields are unknown but refined, as
-                # any attribute is in a method that did not set it
-                value = heap.new_message(
-                    self.ctx, state, msg_type, "received", label=key
-                )
+            elif typed is not None:
+                # a message or object kept on self: a message's fields are unknown
+                # but refined, as any attribute is in a method that did not set it
+                value = self.typed(typed, node, state, key)
             else:
                 remembered = frames.recall(self.ctx, base.name, node.attr)
                 value = remembered or self.unknown(node)
@@ -374,6 +376,48 @@ class ExpressionEvaluator:
             self.lists_seen = self.lists_seen or value.kind == "list"
         state.env[key] = value
         return value
+
+    def typed(
+        self,
+        found: types.Type | None,
+        node: ast.AST,
+        state: State,
+        label: str | None = None,
+    ) -> Value:
+        """A value of the type the type model gives (`analysis/types.py`): a message
+        with unknown but refined fields, an instance, a container of typed
+        elements; an unknown value when no type is known."""
+        if found is None:
+            return self.unknown(node)
+        if label is None:
+            label = self.ctx.source.segment(node) or "the value"
+        found = types.plain(found)
+        if isinstance(found, types.Msg):
+            if self.ctx.catalog.lookup(found.name) is None:
+                return self.unknown(node)
+            return heap.new_message(
+                self.ctx, state, found.name, "received", label=label
+            )
+        if isinstance(found, types.Obj):
+            if "." in found.name:  # another module's class: its refined attributes
+                known = imported.resolve(self.ctx.resolver, found.name)
+                if isinstance(known, imported.ClassSummary):
+                    self.program.attributes.setdefault(
+                        found.name, dict(known.attributes)
+                    )
+            # an id of its own: whether it is None is not known (even a declared
+            # `client: Client` may be given None), the same for each test of it
+            return Value("instance", name=found.name, ref=self.ctx.fresh_id())
+        if isinstance(found, types.Tup):
+            parts = tuple(self.typed(t, node, state, label) for t in found.items)
+            return Value("tuple", elements=parts)
+        if isinstance(found, types.Seq) and isinstance(found.item, types.Msg):
+            return Value("list", items=Items(message=(found.item.name, "received")))
+        if isinstance(found, types.Seq):
+            return Value("list", items=Items(of=found.item))
+        if isinstance(found, types.Map):
+            return Value("dict", items=Items(of=found.value))
+        return self.unknown(node)
 
     def refinement_lookup(self, decl: Refinement, state: State) -> dict[str, A.Expr]:
         """Terms for the other names a refinement mentions (`y == x`, `MAX_SPEED`,
@@ -694,6 +738,8 @@ class ExpressionEvaluator:
         if isinstance(left.term, A.Sym):
             key = ("is None", left.term.ident)
             return self.ctx.derived(key, "bool", "`is None`").term
+        if left.kind == "instance" and left.ref is not None:  # a typed object
+            return self.ctx.derived(("is None", left.ref), "bool", "`is None`").term
         if left.kind in STATIC_VALUES:
             return A.Bool(False)
         return None
@@ -780,6 +826,8 @@ class ExpressionEvaluator:
             found = self._look_up(base, key, node, state)
             if found is not None:  # a list inside a table is shared with it
                 return containers.stripped(found)
+        if base.kind == "dict" and base.items is not None and base.items.of:
+            return self.typed(base.items.of, node, state)  # `dict[str, Driver]`
         if base.kind in SEQUENCES and key.kind in ("int", "bool", "unknown"):
             if isinstance(node.slice, ast.Slice):
                 return containers.sliced(base, containers.slice_length(node.slice))
@@ -809,10 +857,14 @@ class ExpressionEvaluator:
             return Value("tuple", elements=parts)
         if sequence.elements and len(sequence.elements) <= containers.MAX_SPELLED:
             found = self._one_of(list(sequence.elements), node, state)
+            if found is None:
+                found = self._any_message(sequence.elements, node, state)
             if found is not None:
                 return containers.stripped(found)
         if sequence.items is not None and sequence.items.message is not None:
             return self.message_element(sequence.items.message, node, state)
+        if sequence.items is not None and sequence.items.of is not None:
+            return self.typed(sequence.items.of, node, state)
         kind = containers.item_kind(sequence)
         if kind not in ("int", "float", "bool", "str"):
             kind = "unknown"
@@ -824,6 +876,22 @@ class ExpressionEvaluator:
             state.assume(self.check.instantiate(each, value.known_term))
         return value
 
+    def _any_message(
+        self, options: tuple[Value, ...], node: ast.AST, state: State
+    ) -> Value | None:
+        """One of several messages of one type (`for cmd in [left, right]`): a
+        message of that type with unknown fields. The code may change any of them
+        through it, so what they held is forgotten."""
+        names = {
+            o.name if o.kind == "msg" and o.ref is not None else "" for o in options
+        }
+        if len(names) != 1 or "" in names:
+            return None
+        for option in options:
+            heap.havoc(state, option.ref)  # type: ignore[arg-type]
+        label = self.ctx.source.segment(node) or "an element"
+        return heap.new_message(self.ctx, state, names.pop(), "unknown", label=label)
+
     def eval_Tuple(self, node: ast.Tuple | ast.List, state: State) -> Value:
         values = []
         modelled = True
@@ -831,8 +899,8 @@ class ExpressionEvaluator:
             value = self.eval(element, state)
             values.append(value)
             if element.__class__ is ast.Starred or (
-                value.term is None and value.elements is None
-            ):
+                value.term is None and value.elements is None and value.kind != "msg"
+            ):  # a message is kept by its reference (`cmds = [Twist(), Twist()]`)
                 modelled = False
         if not modelled:
             if node.__class__ is ast.List:  # still a list, of elements not followed

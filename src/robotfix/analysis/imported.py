@@ -26,6 +26,7 @@ if TYPE_CHECKING:
     from robotfix.analysis.calls import CallEvaluator
     from robotfix.analysis.index import FileIndex
     from robotfix.analysis.state import State
+    from robotfix.analysis.types import Type
 
 MAX_HOPS = 20  # re-exports followed for one name (`a` re-exports `b` re-exports...)
 
@@ -42,6 +43,7 @@ class FunctionSummary:
     method: bool  # its first parameter is bound by an instance
     # a classmethod: its first parameter is bound through the class too (`Path.make`)
     class_bound: bool = False
+    result: Type | None = None  # what it returns (`analysis/types.py`), if known
 
 
 @dataclass(frozen=True)
@@ -50,6 +52,7 @@ class ClassSummary:
     attributes: tuple[tuple[str, Refinement], ...]  # refined attributes
     methods: tuple[tuple[str, FunctionSummary], ...]
     constants: tuple[tuple[str, Value], ...]  # class constants (`MAX = 0.22`)
+    types: tuple[tuple[str, Type], ...] = ()  # attributes' types (`self.left`)
 
 
 @dataclass
@@ -232,7 +235,7 @@ def call(
             lookup = {**_unknowns(ev, decl), **terms}
             ev.check.assign_refined(state, name, decl, value, ev.site, lookup)
     if function.returns is None:
-        return ev.unknown(node)
+        return ev.typed(function.result, node, state)
     lookup = {**_unknowns(ev, function.returns), **terms}
     return ev.check.assumed(state, f"{function.name}()", function.returns, lookup)
 

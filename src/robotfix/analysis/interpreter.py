@@ -17,7 +17,15 @@ from fractions import Fraction
 from functools import partial
 
 from robotfix import messages
-from robotfix.analysis import containers, decisions, frames, heap, hover, imported
+from robotfix.analysis import (
+    containers,
+    decisions,
+    frames,
+    heap,
+    hover,
+    imported,
+    types,
+)
 from robotfix.analysis.calls import MUTATORS, CallEvaluator
 from robotfix.analysis.constants import scan
 from robotfix.analysis.context import FileContext, Scope, build_scope
@@ -367,7 +375,12 @@ class Interpreter(CallEvaluator):
                 return found.term if found is not None else None
         if local:
             return None
-        constant = self.scoped_constant(name, state, self._class_name())
+        reader = self
+        if self.scope.kind == "module":  # module code: the statics are not made yet,
+            # its imports and classes are bound on this path (`math.pi`, `Limits.MAX`)
+            statics = module_statics(self.ctx, state)
+            reader = Interpreter(self.ctx, self.program, self.scope, statics)
+        constant = reader.scoped_constant(name, state, self._class_name())
         if constant is not None:
             return constant.term
         return None if rest else self.global_term(name, state)
@@ -683,7 +696,10 @@ class Interpreter(CallEvaluator):
         )
         unit = None if value.literal else value.unit
         factors = () if value.literal else value.factors  # `[r * 100 for r in ranges]`
-        return Value(kind, unit=unit, items=Items(item, each, size), factors=factors)
+        message = (value.name, "unknown") if value.kind == "msg" else None
+        of = types.Obj(value.name) if value.kind == "instance" else None
+        items = Items(item, each, size, message=message, of=of)
+        return Value(kind, unit=unit, items=items, factors=factors)
 
     def _bind_plain(self, target: ast.expr, value: Value, state: State) -> None:
         """Bind a comprehension's target (its own names: no refinement applies)."""
@@ -728,6 +744,10 @@ class Interpreter(CallEvaluator):
             elif decl is not None:
                 lookup = self.refinement_lookup(decl, state)
                 value = self.check.assumed(state, arg.arg, decl, lookup)
+            elif annotation is not None and (
+                typed := self.program.types.parameter(function, arg.arg)
+            ):  # `driver: MotorDriver`, `scans: list[LaserScan]`
+                value = self.typed(typed, arg, state, arg.arg)
             else:
                 value = self.ctx.fresh(
                     "unknown", f"parameter `{arg.arg}` of {function.name}()"

@@ -37,12 +37,14 @@ from typing import TYPE_CHECKING
 
 from robotfix import messages
 from robotfix.analysis import imported
+from robotfix.analysis.constants import scan
 from robotfix.analysis.index import FileIndex, index_of
 from robotfix.analysis.program import call_argument
 from robotfix.analysis.values import Value
 from robotfix.analysis.vc import VC, Violated
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Alias, Names, Refinement, extract
+from robotfix.annotations.numbers import INFINITY, named_number
 from robotfix.astwalk import walk
 from robotfix.messages import Declared
 from robotfix.ros.api_model import (
@@ -59,7 +61,6 @@ if TYPE_CHECKING:
 
 MODULE = "<module>"
 ROSPY = "rospy"
-MATH = {"math.pi": math.pi, "math.e": math.e, "math.tau": math.tau}
 
 
 class _Unknown:
@@ -339,18 +340,7 @@ def _python_constant(name: str, value: object) -> A.Expr | None:
 def _module_constants(tree: ast.Module, index: FileIndex) -> dict[str, object]:
     """Module-level names bound once, to a constant (`MAX_SPEED = 0.5`)."""
     counts = index_of(tree).stores  # what a walk of every node would count
-    found: dict[str, object] = {}
-    for statement in tree.body:
-        target, value = None, None
-        if isinstance(statement, ast.Assign) and len(statement.targets) == 1:
-            target, value = statement.targets[0], statement.value
-        elif isinstance(statement, ast.AnnAssign) and statement.value is not None:
-            target, value = statement.target, statement.value
-        if isinstance(target, ast.Name) and counts.get(target.id) == 1 and value:
-            constant = constant_of(value, found, index.imports)
-            if constant is not UNKNOWN:
-                found[target.id] = constant
-    return found
+    return _constants_of(tree.body, lambda n: counts.get(n) == 1, {}, index.imports)
 
 
 def constant_of(
@@ -366,7 +356,8 @@ def constant_of(
         return names.get(node.id, UNKNOWN)
     if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name):
         qualified = f"{imports.get(node.value.id, node.value.id)}.{node.attr}"
-        return MATH.get(qualified, UNKNOWN)
+        number = _named_number(qualified)
+        return UNKNOWN if number is None else number
     if isinstance(node, (ast.List, ast.Tuple)):
         items = [constant_of(e, names, imports) for e in node.elts]
         return UNKNOWN if any(i is UNKNOWN for i in items) else items
@@ -397,6 +388,34 @@ def constant_of(
             return a * b
         return UNKNOWN if b == 0 else a / b
     return UNKNOWN
+
+
+def _named_number(qualified: str) -> float | None:
+    """`math.pi`, `np.tau`: the double Python holds (infinity is not a constant)."""
+    number = named_number(qualified)
+    return None if number is None or number == INFINITY else float(number)
+
+
+def _constants_of(
+    body: list[ast.stmt],
+    bound_once: Callable[[str], bool],
+    names: dict[str, object],
+    imports: dict[str, str],
+) -> dict[str, object]:
+    """The names of a module or class body bound once to a constant (`MAX = 0.5`),
+    in order; a value may use `names` and the constants before it."""
+    found: dict[str, object] = {}
+    for statement in body:
+        target, value = None, None
+        if isinstance(statement, ast.Assign) and len(statement.targets) == 1:
+            target, value = statement.targets[0], statement.value
+        elif isinstance(statement, ast.AnnAssign) and statement.value is not None:
+            target, value = statement.target, statement.value
+        if isinstance(target, ast.Name) and bound_once(target.id) and value:
+            constant = constant_of(value, {**names, **found}, imports)
+            if constant is not UNKNOWN:
+                found[target.id] = constant
+    return found
 
 
 def exact(value: int | float) -> Fraction:
@@ -743,14 +762,52 @@ class _Walker:
         return replace(found_refinement, predicate=predicate), label
 
     def _constant_term(self, name: str) -> A.Expr | None:
-        """A module constant, or one imported from the tree (`from .limits import
-        MAX`), as a term labelled with its name."""
+        """A module constant, a named number (`math.pi`), a class constant
+        (`Driver.MAX`, `self.MAX`, or `MAX` in the class), or a constant imported
+        from the tree (`from .limits import MAX`), as a term labelled with its name:
+        the names the analysis reads as constants in a refinement."""
+        head, dot, rest = name.partition(".")
+        in_class = self._class_constant(head, rest) if dot else None
+        if not dot and self.cls is not None:
+            in_class = self._class_constant(self.cls, name)
+            module = self.constants.get(name, in_class)
+            if in_class is not None and module != in_class:
+                return None  # a class and a module constant of one name disagree
+        if in_class is not None:
+            return _python_constant(name, in_class)
         if name in self.constants:
             return _python_constant(name, self.constants[name])
-        head, dot, rest = name.partition(".")
+        qualified = self.index.imports.get(head)
+        number = _named_number(f"{qualified}{dot}{rest}") if qualified else None
+        if number is not None:
+            return _python_constant(name, number)
         base = self._in_tree.get(head)
         found = imported.constant(self.resolver, f"{base}{dot}{rest}") if base else None
         return A.labelled(found.term, name) if found is not None else None
+
+    def _class_constant(self, owner: str, attr: str) -> object | None:
+        """`Driver.MAX` (or `self.MAX` in Driver's methods): a constant of a class
+        of this module, by the analysis's rule (`constants.scan`)."""
+        if owner == self.self_name and self.cls is not None:
+            owner = self.cls
+        return self._class_constants.get(owner, {}).get(attr)
+
+    @functools.cached_property
+    def _class_constants(self) -> dict[str, dict[str, object]]:
+        tree = self.source.tree
+        if tree is None:
+            return {}
+        names = scan(tree, self.index, self.qualname, ":=" in self.source.text)
+        return {
+            cls.name: _constants_of(
+                cls.body,
+                names.classes.get(cls.name, set()).__contains__,
+                self.constants,
+                self.index.imports,
+            )
+            for cls in tree.body
+            if isinstance(cls, ast.ClassDef) and names.classes.get(cls.name)
+        }
 
     def alias_of(self, node: ast.expr) -> Alias | None:
         """A type alias or metadata string (`Rate = Annotated[...]`), of this module

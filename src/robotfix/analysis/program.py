@@ -13,6 +13,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from robotfix.analysis.context import FileContext, Scope, build_scope
+from robotfix.analysis.types import TypeModel
 from robotfix.annotations.extract import Refinement
 from robotfix.ros.api_model import REGISTRATIONS
 
@@ -53,9 +54,8 @@ class Program:
     attributes: dict[str, dict[str, Refinement]] = field(default_factory=dict)
     callbacks: dict[str, Callback] = field(default_factory=dict)
     by_node: dict[int, Function] = field(default_factory=dict)  # id(node) ->
-    # class -> attribute -> message type, for messages kept on `self` (None: the
-    # attribute holds messages of several types)
-    messages: dict[str, dict[str, str | None]] = field(default_factory=dict)
+    # what expressions are (`self.left`, a helper's result), asked when needed
+    types: TypeModel = field(init=False)
     bases: dict[str, list[str]] = field(default_factory=dict)  # classes of this file
     # module names that functions declare `global` (callbacks may set them)
     shared_globals: set[str] = field(default_factory=set)
@@ -64,23 +64,6 @@ class Program:
     # are reported once per node `id`, and a node freed after one statement could
     # lend its address to the next one's, silencing its finding
     augmented: dict[int, ast.BinOp | None] = field(default_factory=dict)
-
-    def message_attribute(self, class_name: str, attribute: str) -> str | None:
-        """The message type `self.<attribute>` holds in methods of the class."""
-        if not self.messages:
-            return None
-        seen: set[str] = set()
-        todo = [class_name]
-        while todo:
-            current = todo.pop(0)
-            if current in seen:
-                continue
-            seen.add(current)
-            table = self.messages.get(current, {})
-            if attribute in table:
-                return table[attribute]
-            todo.extend(self.bases.get(current, []))
-        return None
 
     def add(self, function: Function) -> Function:
         self.functions[function.key] = function
@@ -132,6 +115,7 @@ def attribute_key(node: ast.Attribute) -> str | None:
 
 def collect(ctx: FileContext, tree: ast.Module, module: Scope) -> Program:
     program = Program(module)
+    program.types = TypeModel(ctx, program)
     for node in tree.body:
         if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
             _add_function(program, node, module, None)
@@ -142,9 +126,6 @@ def collect(ctx: FileContext, tree: ast.Module, module: Scope) -> Program:
             program.bases[node.name] = [
                 b.id for b in node.bases if isinstance(b, ast.Name)
             ]
-            known = ctx.index.scopes.get(id(node))
-            for annotation, target in known.annotated if known else []:
-                _add_message(program, node.name, target, ctx.msg_type_of(annotation))
             for item in node.body:
                 if isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
                     _add_function(program, item, scope, node.name)
@@ -156,94 +137,11 @@ def collect(ctx: FileContext, tree: ast.Module, module: Scope) -> Program:
             found = ctx.refinement(annotation, attribute)
             if found is not None:
                 table[attribute] = found
-    for class_name, attribute, annotation in ctx.index.attributes:
-        _add_message(program, class_name, attribute, ctx.msg_type_of(annotation))
-    for node in tree.body:
-        if isinstance(node, ast.ClassDef):
-            for attribute, called in _constructions(node):
-                msg_type = _constructed_type(ctx, called)
-                _add_message(program, node.name, attribute, msg_type)
     _collect_callbacks(ctx, program)
     for scope_id, names in ctx.index.scopes.items():
         if scope_id != id(tree):
             program.shared_globals |= names.global_names
     return program
-
-
-def _constructions(cls: ast.ClassDef) -> list[tuple[str, ast.expr]]:
-    """(attribute, callee) for each `self.x = Callee(...)` in the methods of a
-    class, found through statements only (a message is not built in an
-    expression)."""
-    found: list[tuple[str, ast.expr]] = []
-    for method in cls.body:
-        if type(method) not in (ast.FunctionDef, ast.AsyncFunctionDef):
-            continue
-        params = [*method.args.posonlyargs, *method.args.args]  # type: ignore[attr-defined]
-        if not params:
-            continue
-        self_name = params[0].arg
-        todo: list[ast.stmt] = list(method.body)  # type: ignore[attr-defined]
-        while todo:
-            stmt = todo.pop()
-            kind = type(stmt)
-            if kind is ast.Assign:
-                value = stmt.value  # type: ignore[attr-defined]
-                if type(value) is ast.Call:
-                    for target in stmt.targets:  # type: ignore[attr-defined]
-                        if (
-                            type(target) is ast.Attribute
-                            and type(target.value) is ast.Name
-                            and target.value.id == self_name
-                        ):
-                            found.append((target.attr, value.func))
-            elif kind in _BLOCKS:
-                todo.extend(stmt.body)  # type: ignore[attr-defined]
-                todo.extend(getattr(stmt, "orelse", ()))
-                if kind is ast.Try or kind is ast.TryStar:
-                    todo.extend(stmt.finalbody)  # type: ignore[attr-defined]
-                    for handler in stmt.handlers:  # type: ignore[attr-defined]
-                        todo.extend(handler.body)
-    found.reverse()
-    return found
-
-
-_BLOCKS = frozenset(
-    {
-        ast.If,
-        ast.For,
-        ast.AsyncFor,
-        ast.While,
-        ast.With,
-        ast.AsyncWith,
-        ast.Try,
-        ast.TryStar,
-    }
-)
-
-
-def _constructed_type(ctx: FileContext, called: ast.expr) -> str | None:
-    """`Twist`, `AddTwoInts.Request`, `NavigateToPose.Goal` -> the message type."""
-    found = ctx.msg_type_of(called)
-    if found is None and isinstance(called, ast.Attribute):
-        interface = ctx.interface_of(called.value)
-        if interface is not None:
-            found = ctx.msg_type_named(
-                f"{interface.replace('/', '.msg.')}_{called.attr}"
-            )
-    return found
-
-
-def _add_message(
-    program: Program, class_name: str, attribute: str, msg_type: str | None
-) -> None:
-    """A message type seen for `self.<attribute>`: kept when all agree."""
-    if msg_type is None:
-        return
-    table = program.messages.setdefault(class_name, {})
-    if attribute not in table:
-        table[attribute] = msg_type
-    elif table[attribute] != msg_type:
-        table[attribute] = None
 
 
 def _add_function(

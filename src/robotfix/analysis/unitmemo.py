@@ -351,7 +351,6 @@ class Check:
             if name not in _OWN_PROGRAM:
                 parts.append(_shape(value))
         parts.append(sum(len(t) for t in program.attributes.values()))
-        parts.append(sum(len(t) for t in program.messages.values()))
         parts.append(sum(1 for f in program.functions.values() if f.scope is None))
         parts.append(len(self.statics))
         parts.append(_inner(ctx.parameters))
@@ -389,7 +388,7 @@ _OWN_CTX = frozenset(
         "unit_shared",
     }
 )
-_OWN_PROGRAM = frozenset({"ends", "augmented"})
+_OWN_PROGRAM = frozenset({"ends", "augmented", "types"})
 _UNKEPT = object()
 
 

@@ -9,11 +9,14 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from dataclasses import replace as _replace
-from typing import Any, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar
 
 from robotfix.annotations import ast as A
 from robotfix.annotations.units import Factors, Fit, Unit, fit, product
 from robotfix.messages import Declared
+
+if TYPE_CHECKING:
+    from robotfix.analysis.types import Type
 
 NUMERIC = frozenset({"int", "float", "bool"})
 CONTAINERS = frozenset({"tuple", "list", "dict"})
@@ -39,6 +42,9 @@ class Items:
     sites: tuple[object, ...] | None = field(default=None, compare=False)
     # a message array field's (element type, origin of the message that holds it)
     message: tuple[str, str] | None = None
+    # the elements' type, when the type model gives one (`list[Driver]`,
+    # `dict[str, Driver]`: `analysis/types.py`) and they are not messages
+    of: Type | None = None
 
 
 @dataclass(frozen=True)

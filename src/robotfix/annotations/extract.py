@@ -24,6 +24,7 @@ from fractions import Fraction
 
 from robotfix import rules
 from robotfix.annotations import ast as A
+from robotfix.annotations import foreign
 from robotfix.annotations.parser import AnnotationSyntaxError, parse_predicate
 from robotfix.annotations.units import Unit, UnitError, label, resolve
 from robotfix.diagnostics import Rule
@@ -93,6 +94,9 @@ class AnnotationProblem:
     line: int
     col: int
     message: str
+    # RF511 only: why the metadata is not read, and how RobotFix writes it
+    why: str | None = None
+    hint: str | None = None
 
 
 @dataclass(frozen=True)
@@ -111,6 +115,9 @@ class Names:
     # for an alias handed to another module: its own module's constants, which the
     # text's names mean there (`"_ <= LIMIT"`); None: the text is read where written
     constants: Mapping[str, A.Expr] | None = None
+    # whether annotated-types constraints (`Gt(0)`) are refinements here: in ROS
+    # code, not in a web app's pydantic models
+    constraints: bool = True
 
 
 @dataclass(frozen=True)
@@ -132,6 +139,7 @@ def extract(
     known: Callable[[str], bool] = lambda name: True,
     alias: Callable[[ast.expr], Alias | None] = lambda node: None,
     field_kind: Callable[[str, str], str | None] = lambda msg, path: None,
+    constraints: bool = True,
 ) -> tuple[Refinement | None, list[AnnotationProblem]]:
     """The refinement in `node`: `Annotated[base, "predicate", ...]`, possibly inside
     `Final[...]`/`ClassVar[...]`, `Optional[...]`/`Union[..., None]`/`... | None`, a
@@ -141,7 +149,9 @@ def extract(
     paths relative to the value, as in interface files (`_.linear.x` and
     `t.linear.x`, for `t` the annotated name, mean the same); `field_kind` says what
     a path of a message type is (None: not a field)."""
-    names = Names(qualname, msg_type, source_segment, col_of, alias)
+    names = Names(
+        qualname, msg_type, source_segment, col_of, alias, constraints=constraints
+    )
     reader = _Reader(self_name, known, field_kind)
     found = reader.read(node, names)
     return found, reader.problems
@@ -243,23 +253,36 @@ class _Reader:
             else None
         )
         used: list[tuple[A.Expr, str, tuple[int, int, bool], Names]] = []
+        sized = (
+            nested.item is not None
+            if nested is not None
+            else _container(_strip(base_node, base_names), base_names.qualname)
+            is not None
+        )
         for meta in args[1:]:
-            found_text = self.metadata(meta, names)
+            found_text = self.foreign(meta, names, sized) or self.metadata(meta, names)
             if found_text is None:
                 continue
             text, text_node, text_names = found_text
             start = self.text_start(text_node, text_names)
+            constraint = isinstance(text_node, ast.Call)  # annotated-types'
             try:
                 predicate = parse_predicate(text)
             except AnnotationSyntaxError as err:
-                if not _looks_like(text, self.self_name):
+                if not constraint and not _looks_like(text, self.self_name):
+                    self.unit_string(text, meta, names, base_node, base_names)
                     continue
                 line, col = _at(start, err.offset)
                 self.problems.append(
                     AnnotationProblem(rules.ANNOTATION_SYNTAX, line, col, err.message)
                 )
                 return None
-            if text.strip() and not _is_refinement(predicate, self.self_name):
+            if (
+                not constraint
+                and text.strip()
+                and not _is_refinement(predicate, self.self_name)
+            ):
+                self.unit_string(text, meta, names, base_node, base_names)
                 continue
             used.append((predicate, text, start, text_names))
         if not used:
@@ -353,6 +376,54 @@ class _Reader:
             )
         ]
 
+    def foreign(
+        self, meta: ast.expr, names: Names, sized: bool
+    ) -> tuple[str, ast.expr, Names] | None:
+        """An annotated-types constraint as the refinement text it means (its node
+        is `meta` itself: problems point at the call); one RobotFix cannot read is
+        RF511, saying why. (`sized`: the value is a list or tuple.)"""
+        found = foreign.constraint(meta, names.qualname)
+        if isinstance(found, str) and "len(" in found and not sized:
+            found = foreign.Unusable("only a list's or tuple's length is modelled")
+        if found is not None and not names.constraints:
+            found = foreign.Unusable(
+                "annotated-types constraints are read in ROS code (a module that "
+                "imports rclpy, rospy or an interface package)"
+            )
+        if isinstance(found, foreign.Unusable):
+            self.note_unused(meta, names, found.why, None)
+            return None
+        return None if found is None else (found, meta, names)
+
+    def unit_string(
+        self,
+        text: str,
+        meta: ast.expr,
+        names: Names,
+        base_node: ast.expr,
+        base_names: Names,
+    ) -> None:
+        """A string that is no refinement but a unit as other unit checkers write it
+        (`"m"`, `"unit:m"`) on a number: RF511, saying how RobotFix writes it."""
+        if not _numeric(base_node, base_names):
+            return
+        spelled = foreign.unit_string(text)
+        if spelled is not None:
+            why = "RobotFix reads a unit only inside `Unit()`"
+            self.note_unused(meta, names, why, f'write "{spelled}"')
+
+    def note_unused(
+        self, meta: ast.expr, names: Names, why: str | None, hint: str | None
+    ) -> None:
+        shown = self.segment(meta, names) or "this metadata"
+        if len(shown) > 60:
+            shown = shown[:57] + "..."
+        line = meta.lineno
+        col = names.col_of(line, meta.col_offset)
+        self.problems.append(
+            AnnotationProblem(rules.UNUSED_METADATA, line, col, shown, why, hint)
+        )
+
     def metadata(
         self, meta: ast.expr, names: Names
     ) -> tuple[str, ast.Constant, Names] | None:
@@ -365,15 +436,10 @@ class _Reader:
                 meta, names = found.node, found.names
         if isinstance(meta, ast.Constant) and isinstance(meta.value, str):
             return meta.value, meta, names
-        shown = self.segment(written, written_names) or "this metadata"
-        if len(shown) > 60:
-            shown = shown[:57] + "..."
-        line = written.lineno
-        col = written_names.col_of(line, written.col_offset)
-        self.problems.append(AnnotationProblem(rules.UNUSED_METADATA, line, col, shown))
+        self.note_unused(written, written_names, None, None)
         return None
 
-    def text_start(self, node: ast.Constant, names: Names) -> tuple[int, int, bool]:
+    def text_start(self, node: ast.expr, names: Names) -> tuple[int, int, bool]:
         if id(node) in self.synthetic:
             return node.lineno, names.col_of(node.lineno, node.col_offset), False
         return _text_start(node, names.source_segment, names.col_of)
@@ -382,6 +448,15 @@ class _Reader:
 OPTIONAL = frozenset({"typing.Optional", "typing_extensions.Optional"})
 UNION = frozenset({"typing.Union", "typing_extensions.Union"})
 TUPLE = frozenset({"typing.Tuple", "typing_extensions.Tuple"})
+
+
+def _numeric(node: ast.expr, names: Names) -> bool:
+    """`int`, `float`, or a list or tuple of them (a unit fits these only)."""
+    typed = _strip(node, names)
+    if isinstance(typed, ast.Name) and typed.id in ("int", "float"):
+        return True
+    container = _container(typed, names.qualname)
+    return container is not None and container[1] in ("int", "float")
 
 
 def _optional_inner(
@@ -636,7 +711,7 @@ def _names_known(
 
 
 def _text_start(
-    node: ast.Constant,
+    node: ast.expr,
     source_segment: Callable[[ast.AST], str | None],
     col_of: Callable[[int, int], int],
 ) -> tuple[int, int, bool]:

@@ -6,9 +6,11 @@ dimensionless base unit; we keep it), so `rad/s` is not `Hz` and `rad` is not a 
 number. Names that are not units (`ENU`, `quaternion`) and the labels of `Frame(...)`
 and `Tag(...)` become opaque base dimensions of their own, compared by name.
 
-Importing pint and building its registry costs about 0.5 s, more than a whole check of
-a small file, so resolutions are cached on disk, keyed by pint's install, and pint is
-imported only when a unit string is not in that cache.
+Importing pint and building its registry costs about 0.3 s, more than a whole check of
+a small file, so pint's answers are shipped (`units.json`) and cached on disk as JSON
+data, keyed by pint's install (`disk_cache.JsonCache`), and pint is imported only when
+a unit string is in neither. pint's own disk cache is never used: it is a pickle, and
+loading one runs whatever code the file names.
 
 pint evaluates arithmetic in a unit string (`9**9**9` never returns), so a string is
 checked before pint sees it (`check_text`): at most MAX_UNIT_CHARS characters, no
@@ -31,7 +33,7 @@ from importlib.util import find_spec
 from pathlib import Path
 from typing import Any
 
-from robotfix.disk_cache import JsonCache, cache_dir, install_key
+from robotfix.disk_cache import JsonCache, install_key, is_text
 
 _SYMBOLS = {
     "meter": "m",
@@ -387,6 +389,8 @@ def resolve(text: str) -> Unit:
     """
     check_text(text)
     entry = _CACHE.entries.get(text)
+    if entry is not None and not _is_resolution(entry):
+        entry = None  # not what this module writes: worked out again
     if entry is None:
         entry = _shipped().get(text)
     if entry is None:
@@ -400,6 +404,34 @@ def resolve(text: str) -> Unit:
     if kind == "tag":
         return label("tag", text)
     raise UnitError(str(entry[1]), entry[2] if len(entry) > 2 else None)
+
+
+def _is_resolution(entry: Any) -> bool:
+    """Whether a machine cache's entry is exactly what `_resolve_with_pint` or
+    `shipped_rejection` gives: a unit (dimensions, factor, offset), an error (a
+    message, a suggestion) or a tag, with the types and strings `resolve` reads."""
+    if not isinstance(entry, list) or not entry:
+        return False
+    kind, rest = entry[0], entry[1:]
+    if kind == "tag":
+        return not rest
+    if kind == "error":
+        return 1 <= len(rest) <= 2 and all(is_text(x) for x in rest)
+    return (
+        kind == "unit"
+        and len(rest) in (2, 3)
+        and isinstance(rest[0], list)
+        and all(
+            isinstance(d, list)
+            and len(d) == 2
+            and is_text(d[0])
+            and type(d[1]) is int
+            and abs(d[1]) <= _MAX_DIMENSION
+            for d in rest[0]
+        )
+        and all(type(x) in (int, float) and math.isfinite(x) for x in rest[1:])
+        and rest[1] != 0
+    )
 
 
 def check_text(text: str) -> None:
@@ -678,8 +710,7 @@ _REGISTRY_NAMES: frozenset[str] = frozenset()
 def _registry_names() -> frozenset[str]:
     """The unit names the advice on a typo (`_near_unit`) is chosen from: those of a
     freshly built registry, as shipped. A registry's own names vary: pint adds each
-    prefixed unit it resolves (`millimeter`), and one loaded from pint's disk cache
-    lacks the prefixed units that building it added (`kilometer`)."""
+    prefixed unit it resolves (`millimeter`)."""
     shipped = _shipped_names()
     if shipped is not None:
         return shipped[0]
@@ -692,10 +723,12 @@ def _registry() -> Any:
     if _REGISTRY is None:
         import pint
 
-        try:
-            _REGISTRY = pint.UnitRegistry(cache_folder=str(cache_dir() / "pint"))
-        except OSError:
-            _REGISTRY = pint.UnitRegistry()
+        # never pint's `cache_folder`: its disk cache is a pickle, and unpickling a
+        # file of a folder others can write (a CI cache restored from another
+        # branch, a shared ROBOTFIX_CACHE_DIR) runs their code. What RobotFix needs
+        # of pint is kept as JSON data instead (`_CACHE`, `units.json`), so the
+        # registry is built (~0.1 s) only for a unit text no cache answers.
+        _REGISTRY = pint.UnitRegistry()
         _REGISTRY_NAMES = frozenset(str(n) for n in _REGISTRY._units)
     return _REGISTRY
 

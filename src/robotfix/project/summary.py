@@ -40,6 +40,7 @@ if TYPE_CHECKING:  # the analysis is imported only when a summary is built
     )
     from robotfix.analysis.program import Function, Program
     from robotfix.analysis.state import State
+    from robotfix.analysis.types import Type
     from robotfix.analysis.values import Value
     from robotfix.analysis.vc import VC, Verdict
     from robotfix.annotations import ast as A
@@ -443,6 +444,7 @@ def summarize(
     ctx.record_imports(index_of(tree))
     ctx.constants = scan(tree, ctx.index, ctx.qualname, ":=" in source.text)
     summary = ModuleSummary(name, path)
+    source_of = (name, path)
     try:
         module = build_scope(ctx, "module", "<module>", tree, None)
         program = collect(ctx, tree, module)
@@ -472,9 +474,9 @@ def summarize(
     for key, function in program.functions.items():
         if "." in key or key.startswith("<"):
             continue
-        summary.functions[key] = _function(ctx, program, function, terms, path)
+        summary.functions[key] = _function(ctx, program, function, terms, source_of)
     for class_name in program.classes:
-        summary.classes[class_name] = _class(ctx, program, class_name, terms, path)
+        summary.classes[class_name] = _class(ctx, program, class_name, terms, source_of)
     names = None
     for alias_name in read:
         names = names or replace(_detached(ctx), constants=terms)
@@ -488,11 +490,13 @@ def _function(
     program: Program,
     function: Function,
     terms: dict[str, A.Expr],
-    path: str,
+    source_of: tuple[str, str],
     shown: str | None = None,
 ) -> FunctionSummary:
+    """`source_of`: the module's dotted name and its file."""
     from robotfix.analysis.imported import FunctionSummary
 
+    module, path = source_of
     scope = program.signature(ctx, function)
     node = function.node
     params = tuple(a.arg for a in [*node.args.posonlyargs, *node.args.args])
@@ -511,6 +515,7 @@ def _function(
         returns,
         function.is_method,
         "classmethod" in function.decorators,
+        _typed(program, module, program.types.returns(function.key)),
     )
 
 
@@ -519,10 +524,11 @@ def _class(
     program: Program,
     class_name: str,
     terms: dict[str, A.Expr],
-    path: str,
+    source_of: tuple[str, str],
 ) -> ClassSummary:
     from robotfix.analysis.imported import ClassSummary
 
+    module, path = source_of
     attributes = tuple(
         (attr, _travel(decl, terms, path, own_only=True))
         for attr, decl in sorted(program.attributes.get(class_name, {}).items())
@@ -530,7 +536,7 @@ def _class(
     methods = tuple(
         (
             key.split(".", 1)[1],
-            _function(ctx, program, function, terms, path, key),
+            _function(ctx, program, function, terms, source_of, key),
         )
         for key, function in sorted(program.functions.items())
         if key.startswith(class_name + ".") and key.count(".") == 1
@@ -540,7 +546,21 @@ def _class(
         for attr in sorted(ctx.constants.class_values.get(class_name, {}))
         if (value := ctx.constants.class_constant(class_name, attr)) is not None
     )
-    return ClassSummary(class_name, attributes, methods, constants)
+    known = program.types.class_types(class_name)
+    typed = tuple(
+        (attr, found)
+        for attr in sorted(known)
+        if (found := _typed(program, module, known[attr])) is not None
+    )
+    return ClassSummary(class_name, attributes, methods, constants, typed)
+
+
+def _typed(program: Program, module: str, found: Type | None) -> Type | None:
+    """A type as an importer names it: this module's classes by their dotted
+    name."""
+    from robotfix.analysis.types import qualified
+
+    return qualified(found, module, set(program.classes))
 
 
 def _travel(

@@ -823,10 +823,9 @@ class MsgCatalog:
         origin: Origin,
         note: Any,
     ) -> None:
-        rename = {"_": own} if own else {}
         for part in A.conjuncts(predicate):
             if isinstance(part, A.UnitIs):
-                target = part.target or own
+                target = _own_path(part.target, own) if part.target else own
                 if target is None:
                     self._problem(
                         rules.MISPLACED_UNIT,
@@ -849,7 +848,14 @@ class MsgCatalog:
                     "Unit(), Frame() and Tag() must be top-level `and` parts",
                 )
                 continue
-            part = A.substitute(part, {k: A.Name(v) for k, v in rename.items() if v})
+            if own:
+                part = A.substitute(
+                    part,
+                    {
+                        n.name: A.Name(_own_path(n.name, own), n.pos)
+                        for n in A.names(part)
+                    },
+                )
             text = A.show(part)  # as written, with the constants' names
             part = self._put_constants(spec, part)
             paths = {n.name for n in A.names(part)}
@@ -1062,6 +1068,13 @@ def _standard_comment_units() -> dict[str, dict[str, tuple[str, str]]]:
         }
         for entry in table("comment_units")["message"]
     }
+
+
+def _own_path(path: str, own: str | None) -> str:
+    """A path of an annotation at the end of a field's line, where `_` is the field:
+    `_` and `_.x` (of a message field) become `own` and `own.x`."""
+    root, dot, rest = path.partition(".")
+    return own + dot + rest if own and root == "_" else path
 
 
 def _is_array(found: FieldSpec | None) -> bool:

@@ -5,7 +5,9 @@ Only the event stream is read (`yaml.parse` with the safe loader): no Python obj
 is ever constructed, and an alias is kept as a reference to the node its anchor
 names, never expanded, so "billion laughs" costs nothing; `walk_budget` bounds what
 a reader may visit through aliases. Files are read through `robotfix.fs` with a size
-limit, and the number of nodes and the nesting depth are bounded too.
+limit, and the number of nodes and the nesting depth are bounded too. `pairs` reads a
+mapping as PyYAML's loader does (merge keys applied, alias keys resolved), once per
+mapping however often it is merged, so merge bombs cost what the file holds.
 """
 
 from __future__ import annotations
@@ -21,8 +23,10 @@ MAX_YAML_BYTES = 4 * 1024 * 1024  # parameter files are a few kB
 MAX_NODES = 200_000
 MAX_DEPTH = 200
 WALK_BUDGET = 400_000  # nodes a reader may visit, aliases counted each time
+MAX_MERGE_DEPTH = 50  # mappings merged into mappings merged into ...
 
 STR_TAG = "tag:yaml.org,2002:str"
+INT_TAG = "tag:yaml.org,2002:int"
 
 
 @dataclass(frozen=True)
@@ -109,14 +113,17 @@ def parse(text: str) -> Node | YamlProblem | None:
         return YamlProblem(f"not valid YAML: {err.problem or err.context}", line, col)
     except yaml.YAMLError as err:
         return YamlProblem(f"not valid YAML: {err}", 1, 0)
-    except _TooLargeError as err:
-        return YamlProblem(str(err), err.line, 0)
+    except _RefusedError as err:
+        return YamlProblem(str(err), err.line, err.col)
 
 
-class _TooLargeError(Exception):
-    def __init__(self, message: str, line: int) -> None:
+class _RefusedError(Exception):
+    """A document this reader does not take (too large, an undefined alias)."""
+
+    def __init__(self, message: str, line: int, col: int = 0) -> None:
         super().__init__(message)
         self.line = line
+        self.col = col
 
 
 def _build(events: object) -> Node | None:
@@ -136,10 +143,14 @@ def _build(events: object) -> Node | None:
             tag = event.tag if event.tag not in (None, "!") else None
             node = Scalar(event.value, plain, tag, line, col)
         elif isinstance(event, yaml.AliasEvent):
-            node = Alias(anchors.get(event.anchor), line, col)
+            if event.anchor not in anchors:  # as PyYAML's composer refuses it
+                raise _RefusedError(
+                    f"found undefined alias `{event.anchor}`", line, col
+                )
+            node = Alias(anchors[event.anchor], line, col)
         elif isinstance(event, (yaml.SequenceStartEvent, yaml.MappingStartEvent)):
             if len(stack) >= MAX_DEPTH:
-                raise _TooLargeError(f"nested deeper than {MAX_DEPTH} levels", line)
+                raise _RefusedError(f"nested deeper than {MAX_DEPTH} levels", line)
             container: Sequence | Mapping = (
                 Sequence(line=line, col=col)
                 if isinstance(event, yaml.SequenceStartEvent)
@@ -165,7 +176,7 @@ def _build(events: object) -> Node | None:
             anchors[event.anchor] = node
         count += 1
         if count > MAX_NODES:
-            raise _TooLargeError(f"more than {MAX_NODES} YAML nodes", line)
+            raise _RefusedError(f"more than {MAX_NODES} YAML nodes", line)
         if stack:
             stack[-1][1].append(node)
         else:
@@ -174,7 +185,7 @@ def _build(events: object) -> Node | None:
 
 
 _YAML11 = {
-    "tag:yaml.org,2002:int",
+    INT_TAG,
     "tag:yaml.org,2002:float",
     "tag:yaml.org,2002:bool",
     "tag:yaml.org,2002:null",
@@ -207,3 +218,110 @@ def resolve(node: Node | None, budget: list[int]) -> Node | None:
     if budget[0] < 0 or isinstance(node, Alias):
         return None
     return node
+
+
+def is_merge(key: Node) -> bool:
+    """The merge key `<<` (plain, untagged: YAML 1.1 resolves it so)."""
+    return (
+        isinstance(key, Scalar) and key.plain and key.tag is None and key.text == "<<"
+    )
+
+
+@dataclass(frozen=True)
+class Pair:
+    """One entry of a mapping as a loader reads it."""
+
+    key: str | None  # the key's text (an alias key: its target's); None: not a scalar
+    where: Node  # the key as written: where the entry is (an alias key: the alias)
+    value: Node | None  # aliases resolved
+
+
+@dataclass
+class _Flattening:
+    budget: list[int]
+    problems: list[YamlProblem]
+    done: dict[int, list[Pair]] = field(default_factory=dict)
+    busy: set[int] = field(default_factory=set)  # being flattened
+
+
+def pairs(
+    node: Mapping, budget: list[int], problems: list[YamlProblem] | None = None
+) -> list[Pair]:
+    """A mapping's entries as PyYAML's loader reads them (so rosparam and tools
+    that rewrite a file with PyYAML): a merge key (`<<: *base`, `<<: [*a, *b]`)
+    brings in the merged mappings' entries (merged first, recursively) that the
+    mapping does not set itself, and of several merged mappings the first wins; an
+    alias key stands for its target. What PyYAML would refuse (merging a scalar, a
+    mapping that merges itself, merges nested deeper than MAX_MERGE_DEPTH) is put
+    in `problems` and left out."""
+    return _flatten(node, _Flattening(budget, [] if problems is None else problems), 0)
+
+
+def _flatten(node: Mapping, walk: _Flattening, depth: int) -> list[Pair]:
+    known = walk.done.get(id(node))
+    if known is not None:
+        return known
+    walk.busy.add(id(node))
+    merged: list[Pair] = []  # PyYAML's order: later ones win
+    own: list[Pair] = []
+    for key, raw in node.items:
+        if not is_merge(key):
+            target = resolve(key, walk.budget)
+            text = target.text if isinstance(target, Scalar) else None
+            own.append(Pair(text, key, resolve(raw, walk.budget)))
+            continue
+        sources = _merged(raw, key, walk, depth)
+        for source in reversed(sources):
+            merged += _flatten(source, walk, depth + 1)
+    kept: dict[str, Pair] = {}
+    for pair in merged:
+        if pair.key is not None:
+            kept[pair.key] = pair
+    mine = {pair.key for pair in own}
+    found = [p for k, p in kept.items() if k not in mine] + own
+    walk.done[id(node)] = found
+    walk.busy.discard(id(node))
+    return found
+
+
+def _merged(raw: Node, key: Node, walk: _Flattening, depth: int) -> list[Mapping]:
+    """The mappings a merge key brings in, or a problem and none."""
+    value = resolve(raw, walk.budget)
+    items = value.items if isinstance(value, Sequence) else [value]
+    sources = [resolve(item, walk.budget) for item in items]
+    line, col = key.line, key.col
+    if walk.budget[0] < 0:
+        return []  # the walk's budget is spent: nothing more is read, as elsewhere
+    if not all(isinstance(s, Mapping) for s in sources):
+        walk.problems.append(
+            YamlProblem(
+                "a merge key (`<<`) takes a mapping or a list of them", line, col
+            )
+        )
+        return []
+    if depth >= MAX_MERGE_DEPTH:
+        walk.problems.append(
+            YamlProblem(f"merge keys nested deeper than {MAX_MERGE_DEPTH}", line, col)
+        )
+        return []
+    if any(id(s) in walk.busy for s in sources):
+        walk.problems.append(YamlProblem("a mapping that merges itself", line, col))
+    return [s for s in sources if isinstance(s, Mapping) and id(s) not in walk.busy]
+
+
+def first_reference(root: Node | None) -> Node | None:
+    """The first alias (`*base`) of a document in reading order, else its first
+    merge key (`<<`), else None. Aliases are not followed: one pass."""
+    todo: list[Node] = [] if root is None else [root]
+    merge: Node | None = None
+    while todo:
+        node = todo.pop()
+        if isinstance(node, Alias):
+            return node
+        if merge is None and is_merge(node):
+            merge = node
+        if isinstance(node, Sequence):
+            todo.extend(reversed(node.items))
+        elif isinstance(node, Mapping):
+            todo.extend(n for pair in reversed(node.items) for n in reversed(pair))
+    return merge

@@ -33,6 +33,7 @@ from __future__ import annotations
 import ast
 import functools
 import hashlib
+import os
 import re
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
@@ -54,6 +55,8 @@ OPERATORS = frozenset(
 )
 MAX_STUB_BYTES = 1024 * 1024
 MAX_USER_STUBS = 10_000  # files under the stub paths that a run looks at
+MAX_HOPS = 8  # re-exports followed for one name
+MAX_STAR_DEPTH = 8  # `from m import *` followed through at most so many modules
 
 
 @dataclass(frozen=True)
@@ -143,9 +146,20 @@ class Module:
     exports: dict[str, str] = field(default_factory=dict)  # name -> qualified
     problems: list[Problem] = field(default_factory=list)
     pending: dict[str, Callable[[], Function | None]] = field(default_factory=dict)
+    # `from m import *`: (m, line, col), in the stub's order
+    stars: list[tuple[str, int, int]] = field(default_factory=list)
 
     def function(self, name: str) -> Function | None:
         return _built(self.pending, self.functions, name)
+
+    def has(self, name: str) -> bool:
+        """Does the module itself define or re-export `name`?"""
+        return (
+            name in self.functions
+            or name in self.pending
+            or name in self.classes
+            or name in self.exports
+        )
 
     def force(self) -> None:
         """Read every function and method (for the problems of a user stub)."""
@@ -187,7 +201,9 @@ class StubSet:
         for root, shipped in [*((p, False) for p in self.paths), (DATA, True)]:
             for candidate in (f"{relative}.pyi", f"{relative}/__init__.pyi"):
                 path = root / candidate
-                if path.is_file():
+                # a FIFO, a device or a dangling link too: reading it refuses it
+                # (RF512), never blocks
+                if os.path.lexists(path) and not path.is_dir():
                     return path, candidate if shipped else str(path), shipped
         return None
 
@@ -209,13 +225,72 @@ class StubSet:
             found: Function | Class | None = module.function(head)
             if found is None:
                 found = module.classes.get(head)
-            if found is None and head in module.exports and hops < 8:
-                target = ".".join([module.exports[head], *rest])
-                return self._lookup(target, hops + 1)
+            if found is None and hops < MAX_HOPS:
+                via = module.exports.get(head) or self._starred(module, head)
+                if via is not None:
+                    return self._lookup(".".join([via, *rest]), hops + 1)
             for attr in rest:
                 found = self.member(found, attr) if isinstance(found, Class) else None
             return found
         return None
+
+    def _star_levels(self, module: Module) -> Iterator[list[Module]]:
+        """The modules `module` star-imports, level by level (those it names, the
+        ones they name, ...), each module once; stub modules only."""
+        seen = {module.name}
+        level = [module]
+        while level:
+            following = []
+            for here in level:
+                for name, _, _ in here.stars:
+                    found = self.module(name) if name not in seen else None
+                    seen.add(name)
+                    if found is not None:
+                        following.append(found)
+            level = following
+            if level:
+                yield level
+
+    def _starred(self, module: Module, head: str) -> str | None:
+        """The qualified name `head` has through the module's star imports, at
+        most MAX_STAR_DEPTH modules away (a `_name` is not star-imported)."""
+        if head.startswith("_"):
+            return None
+        for depth, level in enumerate(self._star_levels(module), 1):
+            for here in level:
+                if here.has(head):
+                    return f"{here.name}.{head}"
+            if depth == MAX_STAR_DEPTH:
+                break
+        return None
+
+    def _too_deep(self, names: list[str]) -> list[Problem]:
+        """RF512 at the first star import of a module from which star imports
+        lead further than MAX_STAR_DEPTH modules (what lies beyond is not read for
+        its names): once per chain, at its head, a module no other star-imports
+        (when every one is star-imported, as in a cycle: the first by name)."""
+        modules = [m for m in map(self.module, names) if m is not None and m.stars]
+        imported = {name for m in modules for name, _, _ in m.stars}
+        heads = [m for m in modules if m.name not in imported] or modules[:1]
+        found = []
+        for module in heads:
+            levels = self._star_levels(module)
+            beyond = next(
+                (lv for d, lv in enumerate(levels, 1) if d > MAX_STAR_DEPTH), None
+            )
+            if beyond is None:
+                continue
+            _, line, col = module.stars[0]
+            message = (
+                f"star imports lead further than {MAX_STAR_DEPTH} modules from "
+                f"`{module.name}`: the names of `{beyond[0].name}` and the modules "
+                "it star-imports are not found through it"
+            )
+            shown = self._file_of(module.name)
+            found.append(
+                Problem(shown[1] if shown else module.name, line, col, message)
+            )
+        return found
 
     def member(self, cls: Class, attr: str) -> Function | None:
         """A method or property of a stub class, also an inherited one."""
@@ -272,13 +347,15 @@ class StubSet:
     def problems(self) -> list[Problem]:
         """Every problem of the user's stubs (read all at once, for a run)."""
         found: list[Problem] = []
+        names = []
         for root in self.paths:
             for name in sorted(_module_names(root)):
                 module = self.module(name)
                 if module is not None:
                     module.force()
                     found += module.problems
-        return found
+                    names.append(name)
+        return found + self._too_deep(names)
 
     def fingerprint(self) -> str:
         """What the user's stubs hold: a run's results depend on it."""
@@ -380,6 +457,9 @@ class _Reader:
             elif isinstance(node, ast.ImportFrom):
                 base = self._from(node)
                 for alias in node.names:
+                    if alias.name == "*" and base is not None:
+                        col = self.col_of(node.lineno, node.col_offset)
+                        self.module.stars.append((base, node.lineno, col))
                     if alias.name == "*" or base is None:
                         continue
                     qualified = f"{base}.{alias.name}"

@@ -2,7 +2,8 @@
 (`tree.py`), never run.
 
 ROS 2: `<arg name default>`, `<let>`, `<node pkg exec name namespace>` with
-`<param name value>` (typed by YAML rules, as launch's `get_typed_value` does),
+`<param name value>` (typed by YAML rules, as launch's `get_typed_value` does,
+then as rcl reads what launch writes of it: `values.py`),
 `<param from="file.yaml">`, nested `<param name="group">`, `<remap from to>`;
 `<group>`, `<push-ros-namespace>`, `<include file>` with its `<arg>`s;
 `<composable_node>` entries. ROS 1: `<arg name default|value>`, `<node pkg type
@@ -18,6 +19,7 @@ from pathlib import Path
 from robotfix.ros import paramfile as P
 from robotfix.ros import yamlfile as Y
 from robotfix.ros.launch import substitution as S
+from robotfix.ros.launch import values as V
 from robotfix.ros.launch.model import (
     FileParam,
     Include,
@@ -184,9 +186,11 @@ class _Reader:
             )
         ]
 
-    def value(self, element: Element, args: dict[str, str | None]) -> P.Typed | None:
+    def value(
+        self, element: Element, args: dict[str, str | None]
+    ) -> P.Typed | P.Unread | None:
         if "value" in element.nodes:  # YAML launch: the YAML value, typed as YAML
-            return yaml11(element.nodes["value"])
+            return V.from_yaml(element.nodes["value"])
         raw = element.attrs.get("value")
         if raw is None or "$(" in raw:
             return None  # `textfile=`, `command=`, or a substitution: launch time
@@ -194,7 +198,10 @@ class _Reader:
             return roslaunch_value(raw, element.attrs.get("type", ""))
         if "value-sep" in element.attrs:
             return None
-        return yaml11(Y.Scalar(raw, True, None, element.line, element.col))
+        node = Y.parse(raw)  # launch's `yaml.safe_load`; a text it refuses stays
+        return (
+            V.from_python(raw) if isinstance(node, Y.YamlProblem) else V.from_yaml(node)
+        )
 
     def rosparam(
         self, element: Element, args: dict[str, str | None]
@@ -231,18 +238,6 @@ class _Reader:
         for entry in included.entries:
             entry.namespace = S.push_namespace(ns, entry.namespace)
             self.out.entries.append(entry)
-
-
-def yaml11(node: Y.Node | None) -> P.Typed | None:
-    """A value as PyYAML's safe loader types it (launch's frontends read values
-    with `yaml.safe_load`); a list of one type is an array."""
-    budget = [Y.WALK_BUDGET]
-    node = Y.resolve(node, budget)
-    if isinstance(node, Y.Scalar):
-        return P.ros1_value(node, budget)
-    if not isinstance(node, Y.Sequence) or not node.items:
-        return None
-    return P.array([P.ros1_value(i, budget) for i in node.items])
 
 
 def roslaunch_value(text: str, type_: str) -> P.Typed | None:

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from robotfix.ros.paramfile import Typed
+from robotfix.ros.paramfile import Typed, Unread
 
 
 @dataclass(frozen=True)
@@ -30,7 +30,8 @@ class InlineParam:
     """`{'max_speed': 0.5}` in a Python launch file, `<param name= value=>`."""
 
     name: str  # ROS 2: dotted (`limits.max`); ROS 1: as written (`~rate`, `rate`)
-    value: Typed | None  # None: computed at launch time, or of no checkable type
+    value: Typed | Unread | None  # None: computed at launch time, or of no
+    # checkable type; Unread: PyYAML refuses it (launch fails)
     place: Place  # of the value
     key: Place | None = None  # of the name, where it is written apart
 

@@ -24,7 +24,7 @@ from pathlib import Path
 from robotfix.ros import paramfile as P
 from robotfix.ros import yamlfile as Y
 from robotfix.ros.launch import substitution as S
-from robotfix.ros.launch.frontend import yaml11
+from robotfix.ros.launch import values as V
 from robotfix.ros.launch.model import (
     FileParam,
     Include,
@@ -505,22 +505,20 @@ def _text(value: object) -> str | None:
     return value if isinstance(value, str) else None
 
 
-def typed(value: object) -> P.Typed | None:
+def typed(value: object) -> P.Typed | P.Unread | None:
     """A Python value as launch_ros passes it: a string is read as YAML (launch
     makes it a substitution and `yaml.safe_load`s the result: `'10'` is an
-    integer), numbers and bools keep their type, a list of one type is an array."""
-    if isinstance(value, _ArgText):
+    integer), numbers and bools keep their type, a list's strings stay strings;
+    then as rcl reads the parameter file launch writes of it (`values`). A value
+    from a launch argument is unknown."""
+    if _argument(value):
         return None
-    if isinstance(value, bool):
-        return P.Typed("bool", value, str(value).lower())
-    if isinstance(value, int):
-        return P.Typed("integer", value, str(value))
-    if isinstance(value, float):
-        return P.Typed("double", value, repr(value))
     if isinstance(value, str):
-        return yaml11(Y.Scalar(value, True, None, 1, 0))
-    if isinstance(value, list) and value:  # a string item stays a string
-        return P.array(
-            [P.Typed("string", v, v) if isinstance(v, str) else typed(v) for v in value]
-        )
-    return None
+        return V.from_yaml(Y.Scalar(value, True, None, 1, 0))
+    return V.from_python(value)
+
+
+def _argument(value: object) -> bool:
+    if isinstance(value, list):
+        return any(_argument(v) for v in value)
+    return isinstance(value, _ArgText)

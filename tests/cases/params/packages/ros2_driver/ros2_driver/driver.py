@@ -1,4 +1,5 @@
 """A diff-drive driver: its limits are parameters with ranges and refinements."""
+import math
 from typing import Annotated
 
 import rclpy
@@ -16,6 +17,7 @@ Ratio = Annotated[float, "0 <= _ <= MAX_BRAKE"]
 
 
 class Driver(Node):
+    MAX_ACCEL = 2.5
     max_speed: Annotated[float, "Unit('m/s') and 0 < _ <= 1.5"]
 
     def __init__(self):
@@ -50,6 +52,19 @@ class Driver(Node):
         ).value
         self.brake: Ratio = self.declare_parameter("brake_ratio", 0.5).value
         self.turn: TurnRate = self.declare_parameter("turn_rate", 1.0).value
+        # math.pi and class constants, in the node's own refinements
+        self.yaw_tolerance: Annotated[float, "Unit('rad') and 0 < _ <= math.pi / 4"] = (
+            self.declare_parameter("yaw_tolerance", 0.1).value
+        )
+        self.accel: Annotated[float, "0 < _ <= Driver.MAX_ACCEL"] = (
+            self.declare_parameter("accel", 1.0).value
+        )
+        self.decel: Annotated[float, "0 < _ <= MAX_ACCEL"] = (
+            self.declare_parameter("decel", 1.0).value
+        )
+        self.jerk: Annotated[float, "0 < _ <= self.MAX_ACCEL * 2"] = (
+            self.declare_parameter("jerk", 1.0).value
+        )
         drive: Annotated[str, "_ == MODE"] = self.declare_parameter("drive", "diff").value
         self.publisher = self.create_publisher(Twist, "cmd_vel", 10)
         self.timer = self.create_timer(

@@ -1,0 +1,861 @@
+"""What an expression is, found syntactically from a module's AST (cf. mypy's
+semantic analysis and its inference of attribute types): the type model.
+
+The interpreter asks it when it meets a value it did not build: a parameter, an
+attribute read in a method that did not set it (`self.left`, set in `__init__`),
+what a helper returns, an element of a container. The answers are types, never
+values; the interpreter makes the value (a received message, an instance, a list
+whose elements are of a type).
+
+Where the types come from:
+- declared annotations: parameters, `self.x: T`, class-level `x: T`, a function's
+  `-> T`; `Optional[T]` and `T | None` are T that may be None, `Annotated`,
+  `Final`, `ClassVar` are looked through; `list[T]`, `tuple[...]`, `dict[K, V]`
+  and their `typing` spellings give element types;
+- assignments: an attribute assigned in any method of its class (or of a class of
+  the file above or below it) has a type only when every assignment of it agrees
+  (a `None` aside); a function without an annotation returns the type all its
+  `return` statements agree on;
+- expressions: a constructor call, a message's field (its type in the catalog), a
+  local bound once, a parameter, an element of a typed container, a call of a typed
+  function, a display or comprehension whose elements agree.
+
+Anything else is unknown (None), and the interpreter then reports nothing new. The
+model is computed on demand, once per module and question, and another module's
+types come through its summary (`imported.ClassSummary.types`,
+`imported.FunctionSummary.result`).
+"""
+
+from __future__ import annotations
+
+import ast
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from robotfix.analysis import imported
+from robotfix.astwalk import children
+
+if TYPE_CHECKING:
+    from robotfix.analysis.context import FileContext
+    from robotfix.analysis.program import Function, Program
+
+
+# The types are values (compared, hashed, carried in summaries), never changed
+# once made. Only what they need is generated (no repr, no frozen setters): each
+# generated method is code compiled when the module is imported, in every run.
+
+
+@dataclass(unsafe_hash=True, repr=False)
+class Msg:
+    """A message of the catalog's type `pkg/Name`."""
+
+    name: str
+
+
+@dataclass(unsafe_hash=True, repr=False)
+class Obj:
+    """An instance of a class of this file (`Driver`) or of another module of the
+    tree (`drive_pkg.motor.Driver`)."""
+
+    name: str
+
+
+@dataclass(unsafe_hash=True, repr=False)
+class Seq:
+    """A list, set, deque, iterable or homogeneous tuple of `item`s."""
+
+    item: Type
+
+
+@dataclass(unsafe_hash=True, repr=False)
+class Tup:
+    """A tuple of fixed length; None for an element of no known type."""
+
+    items: tuple[Type | None, ...]
+
+
+@dataclass(unsafe_hash=True, repr=False)
+class Map:
+    """A dict whose values are `value`s."""
+
+    value: Type
+
+
+@dataclass(unsafe_hash=True, repr=False)
+class Maybe:
+    """`Optional[T]`: a T, or None."""
+
+    type: Type
+
+
+Type = Msg | Obj | Seq | Tup | Map | Maybe
+
+SEQUENCE_FORMS = frozenset(
+    {"list", "set", "frozenset", "deque", "Sequence", "MutableSequence"}
+    | {"List", "Set", "FrozenSet", "Deque", "Iterable", "Iterator", "Collection"}
+    | {"AbstractSet", "MutableSet", "Generator"}
+)
+MAP_FORMS = frozenset(
+    {"dict", "Dict", "Mapping", "MutableMapping", "OrderedDict", "DefaultDict"}
+    | {"defaultdict"}
+)
+LOOKED_THROUGH = frozenset(
+    {"Annotated", "Final", "ClassVar", "Required", "NotRequired"}
+)
+MAX_DEPTH = 12  # inference follows at most this many names, calls and returns
+
+
+def plain(found: Type | None) -> Type | None:
+    """The type without its `None`: what a value is once it is used as one."""
+    return found.type if isinstance(found, Maybe) else found
+
+
+def element(found: Type | None) -> Type | None:
+    """The type of an element of a container (of a dict: of a value)."""
+    found = plain(found)
+    if isinstance(found, Seq):
+        return found.item
+    if isinstance(found, Map):
+        return found.value
+    if isinstance(found, Tup) and found.items:
+        first = found.items[0]
+        return first if all(i == first for i in found.items) else None
+    return None
+
+
+def qualified(found: Type | None, module: str, local: set[str]) -> Type | None:
+    """`found` as another module names it: this module's classes get its name."""
+    if isinstance(found, Obj) and found.name in local:
+        return Obj(f"{module}.{found.name}")
+    if isinstance(found, Seq):
+        item = qualified(found.item, module, local)
+        return Seq(item) if item is not None else None
+    if isinstance(found, Map):
+        value = qualified(found.value, module, local)
+        return Map(value) if value is not None else None
+    if isinstance(found, Maybe):
+        inner = qualified(found.type, module, local)
+        return Maybe(inner) if inner is not None else None
+    if isinstance(found, Tup):
+        return Tup(tuple(qualified(i, module, local) for i in found.items))
+    return found
+
+
+def _agree(found: list[Type | None]) -> Type | None:
+    """The one type every source gives; None-only sources (a `None`) make it
+    Optional; any unknown or disagreeing source makes it unknown."""
+    kinds = [f for f in found if f is not _NONE]
+    if not kinds or any(k is None for k in kinds):
+        return None
+    first = plain(kinds[0])
+    if any(plain(k) != first for k in kinds):
+        return None
+    optional = len(kinds) < len(found) or any(isinstance(k, Maybe) for k in kinds)
+    return Maybe(first) if optional and first is not None else first
+
+
+_NONE = Msg("\0none")  # `None` while types are joined; never handed out
+
+
+class TypeModel:
+    """A module's types, asked by the interpreter: `annotation`, `attribute`,
+    `returns`, `parameter`, `local`; each answer computed once."""
+
+    def __init__(self, ctx: FileContext, program: Program) -> None:
+        self.ctx = ctx
+        self.program = program
+        self._attributes: dict[tuple[str, str], Type | None] = {}
+        self._returns: dict[str, Type | None] = {}
+        self._assigned: dict[str, dict[str, list[tuple[ast.expr, Function]]]] | None
+        self._assigned = None
+        self._locals: dict[int, dict[str, list[Binding]]] = {}
+        self._declared: dict[str, dict[str, ast.expr]] | None = None
+        self._busy: set[object] = set()  # questions being answered (recursion)
+        self._families: dict[str, list[str]] = {}
+
+    # -- annotations -----------------------------------------------------------
+    def annotation(self, node: ast.expr | None) -> Type | None:
+        """The type a type form names (`Twist`, `list[Range]`, `Optional[Driver]`,
+        `"Driver"`), or None."""
+        if node is None:
+            return None
+        if isinstance(node, ast.Constant) and isinstance(node.value, str):
+            if len(node.value) > 200:
+                return None
+            try:  # read, never evaluated
+                parsed = ast.parse(node.value.strip(), mode="eval").body
+            except (SyntaxError, ValueError, RecursionError):
+                return None
+            return self.annotation(parsed)
+        if isinstance(node, ast.BinOp) and isinstance(node.op, ast.BitOr):
+            return self._union([node.left, node.right])
+        if isinstance(node, ast.Subscript):
+            return self._generic(node)
+        if isinstance(node, (ast.Name, ast.Attribute)):
+            return self._named(node)
+        return None
+
+    def _generic(self, node: ast.Subscript) -> Type | None:
+        head = _last(node.value)
+        args = (
+            list(node.slice.elts) if isinstance(node.slice, ast.Tuple) else [node.slice]
+        )
+        if head in LOOKED_THROUGH:
+            return self.annotation(args[0])
+        if head == "Optional":
+            inner = self.annotation(args[0])
+            return Maybe(inner) if inner is not None else None
+        if head == "Union":
+            return self._union(args)
+        if head in SEQUENCE_FORMS:
+            item = self.annotation(args[0])
+            return Seq(item) if item is not None else None
+        if head in MAP_FORMS and len(args) == 2:
+            value = self.annotation(args[1])
+            return Map(value) if value is not None else None
+        if head in ("tuple", "Tuple"):
+            if len(args) == 2 and _is_ellipsis(args[1]):
+                item = self.annotation(args[0])
+                return Seq(item) if item is not None else None
+            return Tup(tuple(self.annotation(a) for a in args))
+        return None
+
+    def _union(self, parts: list[ast.expr]) -> Type | None:
+        found = [
+            _NONE if _is_none(p) else self.annotation(p) for p in parts
+        ]  # `T | None`
+        return _agree(found)
+
+    def _named(self, node: ast.Name | ast.Attribute) -> Type | None:
+        msg_type = self.ctx.msg_type_of(node)
+        if msg_type is not None:
+            return Msg(msg_type)
+        if isinstance(node, ast.Name) and node.id in self.program.classes:
+            return Obj(node.id)
+        dotted = self.ctx.qualname(node)
+        if dotted is not None and "." in dotted:
+            found = imported.resolve(self.ctx.resolver, dotted)
+            if isinstance(found, imported.ClassSummary):
+                return Obj(dotted)
+        return None
+
+    # -- what the interpreter asks --------------------------------------------
+    def parameter(self, function: Function, name: str) -> Type | None:
+        """A parameter's declared type (the first one of a method: its class)."""
+        node = function.node
+        args = node.args
+        ordered = [*args.posonlyargs, *args.args]
+        if ordered and ordered[0].arg == name and function.is_method:
+            return None  # `self` and `cls` are the interpreter's own
+        defaults = dict(
+            zip([a.arg for a in ordered][::-1], args.defaults[::-1], strict=False)
+        )
+        defaults.update(
+            (a.arg, d)
+            for a, d in zip(args.kwonlyargs, args.kw_defaults, strict=True)
+            if d is not None
+        )
+        for arg in [*ordered, *args.kwonlyargs]:
+            if arg.arg == name:
+                found = self.annotation(arg.annotation)
+                if found is not None and _is_none(defaults.get(name)):
+                    # `client: Client = None`: it may be None
+                    return Maybe(plain(found))  # type: ignore[arg-type]
+                return found
+        if args.vararg is not None and args.vararg.arg == name:
+            item = self.annotation(args.vararg.annotation)
+            return Seq(item) if item is not None else None
+        return None
+
+    def attribute(self, class_name: str, attr: str) -> Type | None:
+        """The type of `self.<attr>` in the methods of `class_name` (this file's, or
+        another module's by its dotted name)."""
+        key = (class_name, attr)
+        if key in self._attributes:
+            return self._attributes[key]
+        if key in self._busy:
+            return None
+        self._busy.add(key)
+        try:
+            if class_name not in self.program.classes:
+                found = self._imported_attribute(class_name, attr)
+            else:
+                found = self._own_attribute(class_name, attr)
+        finally:
+            self._busy.discard(key)
+        self._attributes[key] = found
+        return found
+
+    def returns(self, key: str) -> Type | None:
+        """What the function `key` of this file returns: its annotation, else what
+        all its `return` statements agree on."""
+        if key in self._returns:
+            return self._returns[key]
+        function = self.program.functions.get(key)
+        if function is None or key in self._busy or len(self._busy) > MAX_DEPTH:
+            return None
+        self._busy.add(key)
+        try:
+            found = self._function_returns(function)
+        finally:
+            self._busy.discard(key)
+        self._returns[key] = found
+        return found
+
+    def class_types(self, class_name: str) -> dict[str, Type]:
+        """Every attribute of a class of this file with a known type (for its
+        module summary)."""
+        names = set(self._declarations().get(class_name, {}))
+        names |= set(self._assignments().get(class_name, {}))
+        found = {}
+        for name in sorted(names):
+            known = self.attribute(class_name, name)
+            if known is not None:
+                found[name] = known
+        return found
+
+    # -- attributes ----------------------------------------------------------
+    def _imported_attribute(self, class_name: str, attr: str) -> Type | None:
+        if "." not in class_name:
+            return None
+        found = imported.resolve(self.ctx.resolver, class_name)
+        if isinstance(found, imported.ClassSummary):
+            return dict(found.types).get(attr)
+        return None
+
+    def _up(self, class_name: str) -> list[str]:
+        """The class and the classes of this file it derives from, nearest first."""
+        found, todo = [], [class_name]
+        while todo:
+            name = todo.pop(0)
+            if name not in found and name in self.program.classes:
+                found.append(name)
+                todo.extend(self.program.bases.get(name, []))
+        return found
+
+    def _family(self, class_name: str) -> list[str]:
+        """The class, the file's classes it derives from, and those derived from it:
+        an attribute of `self` may be assigned in any of them."""
+        found = self._families.get(class_name)
+        if found is None:
+            up = self._up(class_name)
+            found = self._families[class_name] = up + [
+                name
+                for name in self.program.classes
+                if name not in up and self._derives(name, class_name)
+            ]
+        return found
+
+    def _derives(self, name: str, ancestor: str) -> bool:
+        seen, todo = set(), list(self.program.bases.get(name, []))
+        while todo:
+            base = todo.pop()
+            if base == ancestor:
+                return True
+            if base not in seen:
+                seen.add(base)
+                todo.extend(self.program.bases.get(base, []))
+        return False
+
+    def _own_attribute(self, class_name: str, attr: str) -> Type | None:
+        family = self._family(class_name)
+        declarations = self._declarations()
+        assignments = self._assignments()
+        for name in family:
+            declared = declarations.get(name, {}).get(attr)
+            if declared is not None:
+                found = self.annotation(declared)
+                if found is not None and any(
+                    _is_none(value)
+                    for other in family
+                    for value, _ in assignments.get(other, {}).get(attr, [])
+                ):  # `self.x: Driver = None`: it may be None
+                    return Maybe(plain(found))  # type: ignore[arg-type]
+                return found
+        sources: list[Type | None] = []
+        for name in family:
+            for value, function in assignments.get(name, {}).get(attr, []):
+                sources.append(
+                    _NONE if _is_none(value) else self.infer(value, function)
+                )
+                if sources[-1] is None:
+                    return None
+        return _agree(sources) if sources else None
+
+    def _declarations(self) -> dict[str, dict[str, ast.expr]]:
+        """class -> attribute -> its annotation (`x: T` in the class body,
+        `self.x: T` in a method; the first one written)."""
+        if self._declared is None:
+            self._declared = {}
+            for class_name, scope in self.program.classes.items():
+                known = self.ctx.index.scopes.get(id(scope.node))
+                table = self._declared.setdefault(class_name, {})
+                for annotation, target in known.annotated if known else []:
+                    table.setdefault(target, annotation)
+            for class_name, attribute, annotation in sorted(
+                self.ctx.index.attributes, key=lambda a: (a[2].lineno, a[2].col_offset)
+            ):
+                self._declared.setdefault(class_name, {}).setdefault(
+                    attribute, annotation
+                )
+        return self._declared
+
+    def _assignments(self) -> dict[str, dict[str, list[tuple[ast.expr, Function]]]]:
+        """class -> attribute -> the values assigned to `self.<attribute>` in its
+        methods (and `x = ...` in its body); an assignment whose value cannot be
+        told (`self.a, self.b = f()`, `self.n += 1`, `for self.x in ...`) is
+        recorded as an unknown value (`ast.expr()`), which makes the type unknown."""
+        if self._assigned is not None:
+            return self._assigned
+        found: dict[str, dict[str, list[tuple[ast.expr, Function]]]] = {}
+        for function in self.program.functions.values():
+            name = function.class_name
+            node = function.node
+            if name is None or not function.is_method or isinstance(node, ast.Lambda):
+                continue
+            params = [*node.args.posonlyargs, *node.args.args]
+            if not params:
+                continue
+            table = found.setdefault(name, {})
+            for attr, value in _self_stores(node, params[0].arg):
+                table.setdefault(attr, []).append((value, function))
+        self._assigned = found
+        return found
+
+    # -- returns -------------------------------------------------------------
+    def _function_returns(self, function: Function) -> Type | None:
+        node = function.node
+        if isinstance(node, ast.Lambda):
+            return self.infer(node.body, function)
+        if node.returns is not None:
+            return self.annotation(node.returns)
+        values = [r.value for r in _returns(node)]
+        if not values or any(v is None for v in values):
+            return None
+        return _agree(
+            [_NONE if _is_none(v) else self.infer(v, function) for v in values]  # type: ignore[arg-type]
+        )
+
+    # -- expressions ---------------------------------------------------------
+    def infer(
+        self,
+        node: ast.expr,
+        function: Function | None,
+        env: dict[str, Type | None] | None = None,
+    ) -> Type | None:
+        """The type of `node` in `function` (None: at module level), syntactically;
+        `env`: names a comprehension binds."""
+        if len(self._busy) > MAX_DEPTH:
+            return None
+        kind = type(node)
+        if kind is ast.Call:
+            return self._call(node, function, env)  # type: ignore[arg-type]
+        if kind is ast.Name:
+            return self._name(node.id, function, env)  # type: ignore[attr-defined]
+        if kind is ast.Attribute:
+            return self._attribute(node, function, env)  # type: ignore[arg-type]
+        if kind is ast.Subscript:
+            base = plain(self.infer(node.value, function, env))  # type: ignore[attr-defined]
+            if isinstance(node.slice, ast.Slice):  # type: ignore[attr-defined]
+                return base if isinstance(base, Seq) else None
+            index = node.slice  # type: ignore[attr-defined]
+            if isinstance(base, Tup) and isinstance(index, ast.Constant):
+                at = index.value
+                if isinstance(at, int) and -len(base.items) <= at < len(base.items):
+                    return base.items[at]
+                return None
+            return element(base)
+        if kind in (ast.List, ast.Set, ast.Tuple):
+            items = [self.infer(e, function, env) for e in node.elts]  # type: ignore[attr-defined]
+            if kind is ast.Tuple:
+                return Tup(tuple(items))
+            joined = _agree(items) if items else None
+            return Seq(joined) if joined is not None else None
+        if kind in (ast.ListComp, ast.SetComp, ast.GeneratorExp):
+            item = self._comprehension(node, function, env)  # type: ignore[arg-type]
+            return Seq(item) if item is not None else None
+        if kind is ast.IfExp:
+            return _agree(
+                [
+                    _NONE if _is_none(n) else self.infer(n, function, env)
+                    for n in (node.body, node.orelse)  # type: ignore[attr-defined]
+                ]
+            )
+        if kind is ast.NamedExpr:
+            return self.infer(node.value, function, env)  # type: ignore[attr-defined]
+        return None
+
+    def _comprehension(
+        self,
+        node: ast.ListComp | ast.SetComp | ast.GeneratorExp,
+        function: Function | None,
+        env: dict[str, Type | None] | None,
+    ) -> Type | None:
+        inner = dict(env or {})
+        for generator in node.generators:
+            item = element(self.infer(generator.iter, function, inner))
+            _bind(generator.target, item, inner)
+        return self.infer(node.elt, function, inner)
+
+    def _call(
+        self,
+        node: ast.Call,
+        function: Function | None,
+        env: dict[str, Type | None] | None,
+    ) -> Type | None:
+        func = node.func
+        if isinstance(func, ast.Name):
+            if env is not None and func.id in env:
+                return None
+            if function is not None and func.id == _first_param(function):
+                # `cls(...)` in a classmethod
+                if "classmethod" in function.decorators and function.class_name:
+                    return Obj(function.class_name)
+                return None
+            if self._is_local(func.id, function):
+                return None
+            if func.id in self.program.classes:
+                return Obj(func.id)
+            if func.id in self.program.functions:
+                return self.returns(func.id)
+        elif isinstance(func, ast.Attribute):
+            owner = func.value
+            if (
+                isinstance(owner, ast.Name)
+                and owner.id in self.program.classes
+                and not self._is_local(owner.id, function)
+            ):  # Path.turn()
+                return self._method_returns(owner.id, func.attr)
+            receiver = plain(self.infer(owner, function, env))
+            if isinstance(receiver, Obj):  # self.make(), cls.make(), driver.read()
+                return self._method_returns(receiver.name, func.attr)
+            interface = self.ctx.interface_of(owner)  # AddTwoInts.Request()
+            if interface is not None:
+                found = self.ctx.msg_type_named(
+                    f"{interface.replace('/', '.msg.')}_{func.attr}"
+                )
+                return Msg(found) if found else None
+        else:
+            return None
+        msg_type = self.ctx.msg_type_of(func)
+        if msg_type is not None:
+            return Msg(msg_type)
+        dotted = self.ctx.qualname(func)
+        if dotted is not None and "." in dotted:
+            known = imported.resolve(self.ctx.resolver, dotted)
+            if isinstance(known, imported.ClassSummary):
+                return Obj(dotted)
+            if isinstance(known, imported.FunctionSummary):
+                return known.result
+        return None
+
+    def _method_returns(self, class_name: str, method: str) -> Type | None:
+        """What `method` of an instance of `class_name` returns (the first class up
+        from it that defines the method)."""
+        if class_name in self.program.classes:
+            for name in self._up(class_name):
+                key = f"{name}.{method}"
+                if key in self.program.functions:
+                    return self.returns(key)
+            return None
+        found = imported.resolve(self.ctx.resolver, f"{class_name}.{method}")
+        return found.result if isinstance(found, imported.FunctionSummary) else None
+
+    def _attribute(
+        self,
+        node: ast.Attribute,
+        function: Function | None,
+        env: dict[str, Type | None] | None,
+    ) -> Type | None:
+        owner = node.value
+        if (
+            isinstance(owner, ast.Name)
+            and function is not None
+            and function.class_name is not None
+            and function.is_method
+            and owner.id == _first_param(function)
+            and (env is None or owner.id not in env)
+        ):
+            return self.attribute(function.class_name, node.attr)
+        base = plain(self.infer(owner, function, env))
+        if isinstance(base, Msg):
+            return self.field(base.name, node.attr)
+        if isinstance(base, Obj):
+            return self.attribute(base.name, node.attr)
+        return None
+
+    def field(self, msg_type: str, name: str) -> Type | None:
+        """A message field's type: a sub-message or an array of them."""
+        spec = self.ctx.catalog.lookup(msg_type)
+        found = spec.fields.get(name) if spec is not None else None
+        if found is None or found.kind != "msg" or found.msg_type is None:
+            return None
+        return Seq(Msg(found.msg_type)) if found.array else Msg(found.msg_type)
+
+    def _name(
+        self, name: str, function: Function | None, env: dict[str, Type | None] | None
+    ) -> Type | None:
+        if env is not None and name in env:
+            return env[name]
+        if function is None:
+            return None
+        node = function.node
+        args = node.args
+        if name in {a.arg for a in [*args.posonlyargs, *args.args, *args.kwonlyargs]}:
+            return self.parameter(function, name)
+        bound = self._bindings(function).get(name)
+        if bound is None or len(bound) != 1 or bound[0] is None:
+            return None
+        key = (id(node), name)
+        if key in self._busy:
+            return None
+        self._busy.add(key)
+        try:
+            value = bound[0]
+            if isinstance(value, _Annotation):
+                return self.annotation(value.node)
+            if isinstance(value, _Element):
+                return element(self.infer(value.node, function))
+            return self.infer(value, function)
+        finally:
+            self._busy.discard(key)
+
+    def _is_local(self, name: str, function: Function | None) -> bool:
+        """Whether `name` is bound in `function` (a local shadows a class)."""
+        if function is None:
+            return False
+        args = function.node.args
+        params = {a.arg for a in [*args.posonlyargs, *args.args, *args.kwonlyargs]}
+        return name in params or name in self._bindings(function)
+
+    def _bindings(self, function: Function) -> dict[str, list[Binding]]:
+        found = self._locals.get(id(function.node))
+        if found is None:
+            found = self._locals[id(function.node)] = _local_bindings(function.node)
+        return found
+
+
+class _Annotation:
+    """A local's declared type (`x: list[Twist] = []`), in a local's bindings."""
+
+    __slots__ = ("node",)
+
+    def __init__(self, node: ast.expr) -> None:
+        self.node = node
+
+
+class _Element:
+    """A `for` target's binding: an element of `node`."""
+
+    __slots__ = ("node",)
+
+    def __init__(self, node: ast.expr) -> None:
+        self.node = node
+
+
+Binding = ast.expr | _Annotation | _Element | None
+
+
+def _local_bindings(node: ast.AST) -> dict[str, list[Binding]]:
+    """name -> what each binding of it in the function gives it: a value, an
+    annotation, an element of an iterable, or None (a binding not followed)."""
+    found: dict[str, list[Binding]] = {}
+    declared: dict[str, ast.expr] = {}
+    body = node.body if isinstance(node.body, list) else []  # type: ignore[attr-defined]
+    todo: list[ast.AST] = list(body)
+    while todo:
+        child = todo.pop()
+        kind = type(child)
+        if kind in (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef):
+            found.setdefault(child.name, []).append(None)  # type: ignore[attr-defined]
+            continue
+        if kind is ast.Lambda or kind in _COMPREHENSIONS:
+            continue
+        if kind is ast.Assign:
+            for target in child.targets:  # type: ignore[attr-defined]
+                _record(found, target, child.value)  # type: ignore[attr-defined]
+        elif kind is ast.AnnAssign:
+            target = child.target  # type: ignore[attr-defined]
+            if isinstance(target, ast.Name):
+                declared.setdefault(target.id, child.annotation)  # type: ignore[attr-defined]
+                if child.value is not None:  # type: ignore[attr-defined]
+                    found.setdefault(target.id, []).append(child.value)  # type: ignore[attr-defined]
+        elif kind in (ast.For, ast.AsyncFor):
+            _record(found, child.target, _Element(child.iter))  # type: ignore[attr-defined]
+        elif kind is ast.NamedExpr:
+            _record(found, child.target, child.value)  # type: ignore[attr-defined]
+        elif kind in (ast.AugAssign, ast.Delete, ast.Global, ast.Nonlocal):
+            targets = getattr(child, "targets", None) or [
+                getattr(child, "target", None)
+            ]
+            names = getattr(child, "names", None) or []
+            for target in targets:
+                for leaf in _names(target):
+                    found.setdefault(leaf, []).append(None)
+            for name in names:
+                found.setdefault(name, []).append(None)
+        elif kind in (ast.Import, ast.ImportFrom):
+            for alias in child.names:  # type: ignore[attr-defined]
+                local = alias.asname or alias.name.split(".")[0]
+                found.setdefault(local, []).append(None)
+        elif kind in (ast.With, ast.AsyncWith):
+            for item in child.items:  # type: ignore[attr-defined]
+                for leaf in _names(item.optional_vars):
+                    found.setdefault(leaf, []).append(None)
+        elif kind in (ast.ExceptHandler, ast.MatchAs, ast.MatchStar) and getattr(
+            child, "name", None
+        ):
+            found.setdefault(child.name, []).append(None)  # type: ignore[attr-defined]
+        todo.extend(children(child))
+    for name, annotation in declared.items():
+        found[name] = [_Annotation(annotation)]  # a declaration is a fact
+    return found
+
+
+_COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
+
+
+def _record(found: dict[str, list[Binding]], target: ast.expr, value: Binding) -> None:
+    if isinstance(target, ast.Name):
+        found.setdefault(target.id, []).append(value)
+    elif isinstance(target, (ast.Tuple, ast.List)):
+        if isinstance(value, (ast.Tuple, ast.List)) and len(value.elts) == len(
+            target.elts
+        ):
+            for part, given in zip(target.elts, value.elts, strict=True):
+                _record(found, part, given)
+            return
+        for leaf in _names(target):
+            found.setdefault(leaf, []).append(None)
+    elif isinstance(target, ast.Starred):
+        _record(found, target.value, None)
+
+
+def _names(target: ast.AST | None) -> list[str]:
+    if target is None:
+        return []
+    return [n.id for n in ast.walk(target) if isinstance(n, ast.Name)]
+
+
+def _bind(target: ast.expr, item: Type | None, env: dict[str, Type | None]) -> None:
+    if isinstance(target, ast.Name):
+        env[target.id] = item
+    elif isinstance(target, (ast.Tuple, ast.List)):
+        parts = plain(item)
+        for index, part in enumerate(target.elts):
+            found = (
+                parts.items[index]
+                if isinstance(parts, Tup) and len(parts.items) == len(target.elts)
+                else None
+            )
+            _bind(part, found, env)
+
+
+def _self_stores(
+    node: ast.FunctionDef | ast.AsyncFunctionDef, self_name: str
+) -> list[tuple[str, ast.expr]]:
+    """(attribute, value) for each store to `self.<attribute>` in a method, found
+    through its statements only (an expression cannot store to an attribute;
+    nested functions and classes aside: their `self` may be another); a store whose
+    value is not told is given `ast.expr()`, which no inference types."""
+    found: list[tuple[str, ast.expr]] = []
+    todo: list[ast.stmt] = list(node.body)
+    while todo:
+        child = todo.pop()
+        kind = type(child)
+        if kind is ast.Assign:
+            for target in child.targets:  # type: ignore[attr-defined]
+                _attribute_stores(found, target, child.value, self_name)  # type: ignore[attr-defined]
+        elif kind is ast.AnnAssign:
+            if child.value is not None:  # type: ignore[attr-defined]
+                _attribute_stores(found, child.target, child.value, self_name)  # type: ignore[attr-defined]
+        elif kind is ast.AugAssign:
+            _attribute_stores(found, child.target, ast.expr(), self_name)  # type: ignore[attr-defined]
+        elif kind is ast.Delete:
+            for target in child.targets:  # type: ignore[attr-defined]
+                _attribute_stores(found, target, ast.expr(), self_name)
+        elif kind in _BLOCKS:
+            if kind is ast.For or kind is ast.AsyncFor:
+                _attribute_stores(found, child.target, ast.expr(), self_name)  # type: ignore[attr-defined]
+            elif kind is ast.With or kind is ast.AsyncWith:
+                for item in child.items:  # type: ignore[attr-defined]
+                    if item.optional_vars is not None:
+                        _attribute_stores(
+                            found, item.optional_vars, ast.expr(), self_name
+                        )
+            todo.extend(getattr(child, "body", ()))
+            todo.extend(getattr(child, "orelse", ()))
+            todo.extend(getattr(child, "finalbody", ()))
+            for handler in getattr(child, "handlers", ()):
+                todo.extend(handler.body)
+            for case in getattr(child, "cases", ()):
+                todo.extend(case.body)
+    found.reverse()
+    return found
+
+
+_BLOCKS = frozenset(
+    {ast.If, ast.For, ast.AsyncFor, ast.While, ast.With, ast.AsyncWith, ast.Try}
+    | {ast.TryStar, ast.Match}
+)
+
+
+def _attribute_stores(
+    found: list[tuple[str, ast.expr]], target: ast.AST, value: ast.expr, self_name: str
+) -> None:
+    if (
+        isinstance(target, ast.Attribute)
+        and isinstance(target.value, ast.Name)
+        and target.value.id == self_name
+    ):
+        found.append((target.attr, value))
+    elif isinstance(target, (ast.Tuple, ast.List)):
+        given = (
+            value.elts
+            if isinstance(value, (ast.Tuple, ast.List))
+            and len(value.elts) == len(target.elts)
+            else [ast.expr()] * len(target.elts)
+        )
+        for part, part_value in zip(target.elts, given, strict=True):
+            _attribute_stores(found, part, part_value, self_name)
+    elif isinstance(target, ast.Starred):
+        _attribute_stores(found, target.value, ast.expr(), self_name)
+
+
+def _returns(node: ast.AST) -> list[ast.Return]:
+    """The function's own `return` statements (not those of nested functions)."""
+    found: list[ast.Return] = []
+    todo = children(node)
+    while todo:
+        child = todo.pop()
+        if isinstance(child, ast.Return):
+            found.append(child)
+        elif isinstance(child, (ast.Yield, ast.YieldFrom)):
+            return [ast.Return(value=None)]  # a generator: not followed
+        elif not isinstance(
+            child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)
+        ):
+            todo.extend(children(child))
+    return found
+
+
+def _first_param(function: Function) -> str | None:
+    args = function.node.args
+    params = [*args.posonlyargs, *args.args]
+    return params[0].arg if params else None
+
+
+def _last(node: ast.expr) -> str:
+    if isinstance(node, ast.Name):
+        return node.id
+    if isinstance(node, ast.Attribute):
+        return node.attr
+    return ""
+
+
+def _is_none(node: ast.expr | None) -> bool:
+    return isinstance(node, ast.Constant) and node.value is None
+
+
+def _is_ellipsis(node: ast.expr) -> bool:
+    return isinstance(node, ast.Constant) and node.value is Ellipsis
