@@ -169,7 +169,9 @@ def test_parameter_files_use_the_checks_parse(
     monkeypatch.setattr(
         paramcheck,
         "_summaries",
-        lambda files, words, known, project: original(files, words, {}, project),
+        lambda files, words, known, project, faults=None: original(
+            files, words, {}, project, faults
+        ),
     )
     # paramcheck parsing the files again, each seeing its tree (ros2_driver's
     # imported alias) as its check did: the same

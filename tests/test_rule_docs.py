@@ -12,7 +12,9 @@ Examples about files rather than code: a ```python-bytes block is the bytes of
 ```links block makes each `LINK -> TARGET` a symlink to a folder holding a Python
 file (an absolute target is placed under the section's folder); a ```console block's
 `$ robotfix check ...` lines are run in the section's folder, and the diagnostic lines
-they print (`--format concise`, the folder's path left out) must be the lines below.
+they print (`--format concise`, the folder's path left out) must be the lines below;
+a ```files block writes the files a console block checks (each begins with a line
+`--- path/in/the/folder`).
 Every page's example is run, except RF901's and RF902's (`NOT_RUN`).
 """
 
@@ -142,6 +144,11 @@ def check_section(code: str, section: str, folder: Path) -> None:
                 (place / "node.py").write_text("x = 1\n")
                 (folder / link).parent.mkdir(parents=True, exist_ok=True)
                 (folder / link).symlink_to(place, target_is_directory=True)
+        elif language == "files":
+            for chunk in re.split(r"^--- ", body, flags=re.M)[1:]:
+                name, _, content = chunk.partition("\n")
+                (folder / name.strip()).parent.mkdir(parents=True, exist_ok=True)
+                (folder / name.strip()).write_text(content, encoding="utf-8")
         elif language == "console":
             assert run_console(body, folder) == [
                 line for line in body.splitlines() if not line.startswith("$ ")

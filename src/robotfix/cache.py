@@ -543,6 +543,7 @@ _DISCOVERY_PATHS = (
     "named_parameter_files",
     "parameter_definitions",
     "summary_files",
+    "launch_files",
 )
 
 

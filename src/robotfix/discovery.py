@@ -37,6 +37,7 @@ from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
 from robotfix.fs import RACY_NS, UnreadableError, read_head, read_text, stamp, within
 from robotfix.ros.install import IGNORE_MARKERS, InstallSpace
+from robotfix.ros.launch.names import LAUNCH_SUFFIXES, is_launch_name
 
 INTERFACE_SUFFIXES = (".msg", ".srv", ".action", ".idl")
 INTERFACE_FOLDERS = ("msg", "srv", "action")
@@ -75,6 +76,8 @@ class Discovery:
     named_parameter_files: list[Path] = field(default_factory=list)
     parameter_definitions: list[Path] = field(default_factory=list)  # gen. param lib
     summary_files: list[Path] = field(default_factory=list)  # their packages' code
+    # launch files: in a `launch/` folder, or named `*.launch.py`, `*_launch.xml`...
+    launch_files: list[Path] = field(default_factory=list)
 
 
 def discover(
@@ -104,7 +107,9 @@ def _discover(paths: list[Path], config: Config) -> Discovery:
     named_yaml = [p for p in paths if _is_yaml(p.name) and not _isdir(p)]
     python_paths = [p for p in paths if p not in named_yaml]
     reals: dict[Path, str] = {}  # real paths the walks found: not resolved again
-    files, packages = _python_files(python_paths, config, found.notices, reals)
+    files, packages = _python_files(
+        python_paths, config, found.notices, reals, found.launch_files
+    )
     found.python_files = files
     folders = [p for p in python_paths if _isdir(p)]
     scanned = _around(packages, folders, reals)
@@ -204,7 +209,10 @@ def _parameter_files(
         {d for package in [*packages, *around] for d in _definitions_of(package)}
     )
     if around:
-        found.summary_files = _python_files(sorted(set(around)), None, [])[0]
+        found.summary_files = _python_files(
+            sorted(set(around)), None, [], launch=found.launch_files
+        )[0]
+    found.launch_files = sorted(set(found.launch_files))
 
 
 def _definitions_of(package: Path) -> list[Path]:
@@ -232,6 +240,12 @@ def _definitions_of(package: Path) -> list[Path]:
         if "$" not in name and _isfile(path) and _within(path, [package]):
             found.append(path)
     return found
+
+
+def _is_launch(folder: Path, name: str) -> bool:
+    return is_launch_name(name) or (
+        folder.name == "launch" and name.endswith(LAUNCH_SUFFIXES)
+    )
 
 
 def _is_yaml(name: str) -> bool:
@@ -424,9 +438,11 @@ def _python_files(
     config: Config | None,
     notices: list[Diagnostic],
     reals: dict[Path, str] | None = None,
+    launch: list[Path] | None = None,
 ) -> tuple[list[Path], list[Path]]:
     """Python files (each real file once) and ROS package folders under `paths`,
-    or holding one of them; `reals` learns the packages' real paths."""
+    or holding one of them; `reals` learns the packages' real paths, `launch`
+    the launch files found on the way."""
     walker = _Walker(paths, notices)
     chosen = _OnePathEach()
     packages: dict[str, Path] = {}
@@ -445,6 +461,9 @@ def _python_files(
         for entry in entries:
             if entry.name == "package.xml" and entry.regular:
                 packages.setdefault(real, folder)
+            if launch is not None and entry.regular and _is_launch(folder, entry.name):
+                if not (config is not None and config.excluded(entry.path)):
+                    launch.append(entry.path)
             elif (_is_python(entry.name) and (entry.regular or entry.link)) or (
                 entry.regular and "." not in entry.name and _is_script(entry.path)
             ):  # a broken link to a `.py`: RF003

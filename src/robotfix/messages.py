@@ -704,6 +704,63 @@ def parameter_value_not_checked(
     )
 
 
+def launch_file_not_read(path: str, line: int, col: int, detail: str) -> Diagnostic:
+    """RF004 for a launch file that cannot be read or parsed (its nodes are not
+    checked; `ros2 launch` or `roslaunch` refuses it too)."""
+    return Diagnostic(
+        rules.PATH_NOT_CHECKED,
+        path,
+        Span.point(line, col),
+        f"launch file not checked: {detail}",
+    )
+
+
+def launch_parameter_undeclared(
+    path: str, line: int, col: int, name: str, node: str, where: Note
+) -> Diagnostic:
+    """RF601: a launch file (or a parameter file it names, in the section for its
+    node) sets a parameter the node's code never declares."""
+    return Diagnostic(
+        rules.LAUNCH_PARAMETER_UNDECLARED,
+        path,
+        Span.point(line, col),
+        f"parameter `{name}` is set for node {node}, which declares no such "
+        "parameter (a typo?)",
+        (
+            where,
+            Note(
+                "rclpy ignores a parameter override nobody declares: the node "
+                "keeps its default"
+            ),
+        ),
+    )
+
+
+def parameter_section_unmatched(
+    path: str, line: int, col: int, keys: list[str]
+) -> Diagnostic:
+    """RF602, once per file, at the first of its ROS 2 sections whose node no
+    node of the run is named."""
+    shown = [f"`{k}`" for k in keys[:5]] + (
+        [f"{len(keys) - 5} more"] if len(keys) > 5 else []
+    )
+    what = "section " if len(keys) == 1 else "sections "
+    verb = "names" if len(keys) == 1 else "name"
+    return Diagnostic(
+        rules.PARAMETER_SECTION_UNMATCHED,
+        path,
+        Span.point(line, col),
+        f"{what}{_join(shown)} {verb} no node of the checked workspace or its "
+        "launch files: not checked against any node's declarations",
+        (
+            Note(
+                "a node of another workspace or a C++ node may be named so; a launch "
+                "file that renames a node (`name=`) makes its section apply"
+            ),
+        ),
+    )
+
+
 def parameter_value_violated(
     path: str, span: Span, subject: str, rule: str, declared: Declared, *notes: str
 ) -> Diagnostic:

@@ -31,7 +31,7 @@ from contextlib import contextmanager
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Protocol
 
 from robotfix import messages
 from robotfix.analysis.parameters import ROSPY, Attached, ParamDecl, Summary, summarize
@@ -89,7 +89,7 @@ class Fault:
 
 
 @dataclass
-class _Parameter:
+class Parameter:
     """One parameter a YAML key may name, with everything that constrains it."""
 
     name: str
@@ -99,7 +99,9 @@ class _Parameter:
     definitions: list[P.Definition] = field(default_factory=list)
     definitions_path: dict[int, str] = field(default_factory=dict)
 
-    def failure(self, typed: P.Typed, budget: list[int]) -> Failure | None:
+    def judge(self, typed: P.Typed, budget: list[int]) -> Failure | None:
+        """What is wrong with `typed` as this parameter's value (None: nothing
+        this checker can tell)."""
         if any(d.ignore_override for d in self.decls):
             return None
         for decl in self.decls:
@@ -128,6 +130,7 @@ def check_parameter_files(
     known: dict[str, Known] | None = None,
     project: Project | None = None,
     faults: list[Fault] | None = None,
+    launches: Launches | None = None,
 ) -> list[Diagnostic]:
     """Diagnostics for the parameter files and generate_parameter_library
     definitions of a run; `python_files` are those whose declarations count. A
@@ -138,7 +141,12 @@ def check_parameter_files(
     `known`: what the run's checks found of the Python files they read;
     `project`: how a file read here sees the other modules of its tree (an alias
     its refinement imports), as its check does. `faults`: where a fault of ours
-    on one file goes, the others being checked (without it, it is raised)."""
+    on one file goes, the others being checked (without it, it is raised).
+    `launches`: what the run's launch files add (`launchcheck`): the names they
+    give nodes, the parameter files they name, and their own checks, made with
+    the same table (a fault on one launch file is a fault of that file)."""
+    if launches is not None:
+        files = [*files, *(f for f in launches.files if f not in files)]
     loud = {str(p) for p in [*named, *definition_files]}
     texts: dict[str, str] = {}
     out: list[Diagnostic] = []
@@ -148,7 +156,7 @@ def check_parameter_files(
         key = str(path)
         if key in read:
             continue
-        with _guard(path, out, faults):
+        with guard(path, out, faults):
             loaded = _load(path, key in loud, out, texts)
             if loaded is None:
                 continue
@@ -160,23 +168,28 @@ def check_parameter_files(
                     )
                 out.extend(_definition_defaults(loaded, key))
     layouts = {f.layout for f in read.values() if f.entries}
+    if launches is not None and launches.entries:
+        layouts |= set(MENTIONS)
     words = tuple(w for layout in sorted(layouts) for w in MENTIONS.get(layout, ()))
     found = (
         _summaries(python_files, words, known or {}, project, faults) if words else []
     )
-    table = _Table(found, definitions)
+    table = Table(found, definitions, launches.renamed if launches else None)
     for path in files:
         loaded = read.get(str(path))
         if loaded is None or loaded.layout == "definitions":
             continue
-        with _guard(path, out, faults):
+        with guard(path, out, faults):
             out.extend(_check_file(path, loaded, table))
+    if launches is not None:
+        out.extend(launches.check(table, read, faults))
+        texts.update(launches.texts())
     return [d for d in out if not _silenced(d, texts.get(d.path, ""), config)]
 
 
 @contextmanager
-def _guard(
-    path: Path, out: list[Diagnostic], faults: list[Fault] | None
+def guard(
+    path: str | Path, out: list[Diagnostic], faults: list[Fault] | None
 ) -> Iterator[None]:
     """A fault of ours while one file is read or checked: that file's diagnostics
     so far are dropped, the fault is kept for the run to report (`faults`; raised
@@ -194,7 +207,7 @@ def _guard(
         faults.append(Fault(str(path), summary, traceback.format_exc()))
 
 
-def _check_file(path: Path, loaded: P.ParamFile, table: _Table) -> list[Diagnostic]:
+def _check_file(path: Path, loaded: P.ParamFile, table: Table) -> list[Diagnostic]:
     """A parameter file's values against what the run's nodes declare."""
     out: list[Diagnostic] = []
     package = _package_of(path)
@@ -216,7 +229,7 @@ def _check_file(path: Path, loaded: P.ParamFile, table: _Table) -> list[Diagnost
             continue
         if typed is None:
             continue
-        failures = [c.failure(typed, budget) for c in candidates]
+        failures = [c.judge(typed, budget) for c in candidates]
         if all(f is not None for f in failures):
             first = failures[0]
             assert first is not None
@@ -249,7 +262,7 @@ def _summaries(
 ) -> list[Summary]:
     """The summaries of the files that mention one of `words` (a quick filter);
     those in `known` are not read again (unless their check made no summary).
-    A fault on one file is kept in `faults` (see `_guard`)."""
+    A fault on one file is kept in `faults` (see `guard`)."""
     found: list[Summary] = []
     seen: set[str] = set()
     for path in python_files:
@@ -269,7 +282,7 @@ def _summaries(
             continue
         if not any(word in data for word in words):
             continue
-        with _guard(path, [], faults):
+        with guard(path, [], faults):
             source = SourceFile.from_bytes(str(path), data)
             if source.tree is not None:
                 resolver = project.resolver(path) if project is not None else None
@@ -319,36 +332,66 @@ def _load(
     return loaded
 
 
-class _Table:
-    """The parameters of the run's nodes, by node name and package."""
+class Launches(Protocol):
+    """What a run's launch files add to the check of its parameter files."""
+
+    renamed: dict[str, set[str]]  # a node name -> the Python files of its code
+    files: list[Path]  # parameter files the launch entries name
+    entries: int  # launch entries read
+
+    def check(
+        self,
+        table: Table,
+        read: dict[str, P.ParamFile],
+        faults: list[Fault] | None = None,
+    ) -> list[Diagnostic]:
+        """The launch files' own findings (`read`: the parameter files loaded); a
+        fault of ours on one file goes to `faults` (`guard`), the others are
+        checked."""
+        ...
+
+    def texts(self) -> dict[str, str]:
+        """The launch files' texts (a `# robotfix: ignore` on a line)."""
+        ...
+
+
+class Table:
+    """The parameters of the run's nodes, by node name and package; `renamed`:
+    the names launch files give nodes (`Node(name='bridge')`), with the files
+    of the code they start, so a section keyed `bridge:` applies to it."""
 
     def __init__(
         self,
         summaries: list[Summary],
         definitions: dict[str, list[tuple[P.Definition, str]]],
+        renamed: dict[str, set[str]] | None = None,
     ) -> None:
         self.summaries = summaries
         self.definitions = definitions
+        self.renamed = renamed or {}  # real paths
+        self.real = {s.path: os.path.realpath(s.path) for s in summaries}
         self.packages = {s.path: _package_of(Path(s.path)) for s in summaries}
         # ROS 2 owners whose parameters a file may set: (summary, owner, names)
         self.owners = [
             (summary, owner, summary.names_of(owner))
             for summary in summaries
-            for owner in _owners(summary)
+            for owner in owners(summary)
             if not any(o in summary.auto_declare for o in summary.lineage(owner))
         ]
 
-    def ros2(self, entry: P.Entry, package: Path | None) -> list[_Parameter]:
+    def ros2(self, entry: P.Entry, package: Path | None) -> list[Parameter]:
         node = entry.node_name
         wildcard = node in ("*", "**")
-        found: list[_Parameter] = []
+        found: list[Parameter] = []
         for summary, owner, names in self.owners:
             if wildcard:
                 if package is None or self.packages[summary.path] != package:
                     continue
-            elif node not in names:
+            elif node not in names and self.real[summary.path] not in self.renamed.get(
+                node, ()
+            ):
                 continue
-            candidate = self._ros2_parameter(summary, owner, entry.name)
+            candidate = self.ros2_parameter(summary, owner, entry.name)
             if candidate is not None:
                 found.append(candidate)
         if not wildcard:
@@ -357,10 +400,10 @@ class _Table:
                     found.append(_gpl(entry.name, definition, path))
         return found
 
-    def _ros2_parameter(
+    def ros2_parameter(
         self, summary: Summary, owner: str, name: str
-    ) -> _Parameter | None:
-        candidate = _Parameter(name, 2)
+    ) -> Parameter | None:
+        candidate = Parameter(name, 2)
         decl = summary.declaration(owner, name)
         if decl is not None:
             candidate.decls.append(decl)
@@ -374,8 +417,8 @@ class _Table:
             return candidate
         return None
 
-    def ros1(self, entry: P.Entry, package: Path | None) -> list[_Parameter]:
-        found: list[_Parameter] = []
+    def ros1(self, entry: P.Entry, package: Path | None) -> list[Parameter]:
+        found: list[Parameter] = []
         for summary in self.summaries:
             if package is not None and self.packages[summary.path] != package:
                 continue
@@ -391,7 +434,7 @@ class _Table:
                     if d.ros == 1 and ros1_name(d.name, nodes) == name
                 ]
                 if sites:
-                    candidate = _Parameter(name, 1)
+                    candidate = Parameter(name, 1)
                     candidate.refinements = [
                         a
                         for a in summary.attached
@@ -413,15 +456,15 @@ def ros1_name(name: str, nodes: list[str]) -> str:
     return absolute
 
 
-def _owners(summary: Summary) -> list[str]:
+def owners(summary: Summary) -> list[str]:
     owners = {d.owner for d in summary.decls if d.ros == 2}
     owners |= {a.owner for a in summary.attached if a.owner != ROSPY}
     owners |= set(summary.listeners)
     return sorted(owners)
 
 
-def _gpl(name: str, definition: P.Definition, path: str) -> _Parameter:
-    candidate = _Parameter(name, 2, definitions=[definition])
+def _gpl(name: str, definition: P.Definition, path: str) -> Parameter:
+    candidate = Parameter(name, 2, definitions=[definition])
     candidate.definitions_path[id(definition)] = path
     return candidate
 
@@ -602,8 +645,16 @@ def _span(entry: P.Entry, value: Y.Node) -> Span:
 def _report(
     path: str, entry: P.Entry, value: Y.Node, typed: P.Typed, failure: Failure
 ) -> Diagnostic:
-    subject = _subject(entry, value, typed.text)
-    span = _span(entry, value)
+    return report_failure(
+        path, _span(entry, value), _subject(entry, value, typed.text), typed, failure
+    )
+
+
+def report_failure(
+    path: str, span: Span, subject: str, typed: P.Typed, failure: Failure
+) -> Diagnostic:
+    """RF401 or RF101 for a value (`subject`) at `span`; `typed.how` says how ROS
+    came to read it so, when its text does not."""
     if failure.type_error:
         return messages.parameter_value_type(
             path,

@@ -2,7 +2,7 @@
 
 Families (SPEC §4): RF0xx input, RF1xx refinements, RF2xx units and frames,
 RF3xx initialisation, RF4xx base types, RF5xx annotations and interface files,
-RF9xx analysis limits.
+RF6xx launch files and the ROS graph, RF9xx analysis limits.
 """
 
 from __future__ import annotations
@@ -110,6 +110,19 @@ MALFORMED_STUB = Rule(
     "RF512", "malformed-stub", "Stub file or stub annotation that does not read"
 )
 
+LAUNCH_PARAMETER_UNDECLARED = Rule(
+    "RF601",
+    "launch-parameter-undeclared",
+    "A launch file sets a parameter its node does not declare",
+    W,
+)
+PARAMETER_SECTION_UNMATCHED = Rule(
+    "RF602",
+    "parameter-section-unmatched",
+    "A parameter file's section names no node of the workspace or its launch files",
+    Severity.NOTE,
+)
+
 SOLVER_UNKNOWN = Rule("RF901", "solver-unknown", "Solver could not decide", W)
 ANALYSIS_BUDGET = Rule(
     "RF902", "analysis-budget-exceeded", "Analysis stopped early for this file", W
@@ -145,6 +158,8 @@ ALL_RULES: dict[str, Rule] = {
         UNUSED_METADATA,
         MALFORMED_STUB,
         DUPLICATE_INTERFACE,
+        LAUNCH_PARAMETER_UNDECLARED,
+        PARAMETER_SECTION_UNMATCHED,
         SOLVER_UNKNOWN,
         ANALYSIS_BUDGET,
     )

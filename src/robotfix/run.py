@@ -40,6 +40,8 @@ if TYPE_CHECKING:
 
 if TYPE_CHECKING:  # the analysis is imported only when a file is checked
     from robotfix.analysis.parameters import Summary as ParamSummary
+    from robotfix.launchcheck import LaunchRun
+    from robotfix.paramcheck import Fault as ParamFault
     from robotfix.paramcheck import Known as ParamKnown
     from robotfix.project.summary import Known, Project
 
@@ -189,7 +191,9 @@ def _check_paths(
             todo.append((file, data))
     done = len(files) - len(todo)
     contents = {path: data for path, data in todo if data is not None}
-    if todo and (found.parameter_files or found.parameter_definitions):
+    if todo and (
+        found.parameter_files or found.parameter_definitions or found.launch_files
+    ):
         from robotfix.paramcheck import MENTIONS  # not on a fully cached run
 
         project.parameter_words = tuple(w for ws in MENTIONS.values() for w in ws)
@@ -276,22 +280,29 @@ def _parameter_problems(
     project: Project | None = None,
     errors: list[InternalError] | None = None,
 ) -> list[Diagnostic]:
-    """Parameter files against the parameters the code declares; cached as a whole,
-    under a key that hashes every input (`_params_key`); `parameters`: what the
-    checks found of the files they read (the others are read there). A fault of
-    ours on one file is an internal error of that file (in `errors`), the others
-    are checked, and nothing is cached."""
-    if not found.parameter_files and not found.parameter_definitions:
+    """Parameter files and launch files against the parameters the code declares;
+    cached as a whole, under a key that hashes every input (`_params_key`);
+    `parameters`: what the checks found of the files they read (the others are
+    read there). Launch files are read first (`launchcheck.LaunchRun`): what
+    they touch is part of the key. A fault of ours on one file (a parameter
+    file, a launch file) is an internal error of that file (in `errors`), the
+    others are checked, and nothing is cached."""
+    if not (found.parameter_files or found.parameter_definitions or found.launch_files):
         return []
     python_files = [*files, *found.summary_files]
-    key = _params_key(found, python_files, config, cache) if cache else None
-    if cache is not None and key is not None:
+    faults: list[ParamFault] = []
+    launches = None
+    if found.launch_files:
+        from robotfix.launchcheck import LaunchRun
+
+        launches = LaunchRun(found.launch_files, python_files, faults)
+    key = _params_key(found, python_files, config, cache, launches) if cache else None
+    if cache is not None and key is not None and not faults:
         known = cache.params(key)
         if known is not None:
             return known
-    from robotfix.paramcheck import Fault, check_parameter_files
+    from robotfix.paramcheck import check_parameter_files
 
-    faults: list[Fault] = []
     out = check_parameter_files(
         found.parameter_files,
         found.parameter_definitions,
@@ -301,6 +312,7 @@ def _parameter_problems(
         parameters,
         project,
         faults,
+        launches,
     )
     if errors is not None:
         errors += [InternalError(f.path, f.summary, f.detail) for f in faults]
@@ -310,7 +322,11 @@ def _parameter_problems(
 
 
 def _params_key(
-    found: Discovery, python_files: list[Path], config: Config, cache: ResultCache
+    found: Discovery,
+    python_files: list[Path],
+    config: Config,
+    cache: ResultCache,
+    launches: LaunchRun | None = None,
 ) -> str:
     """Everything `paramcheck` reads: the parameter and definitions files (bytes,
     per-file ignores, package folder), and each Python file that mentions a
@@ -319,8 +335,15 @@ def _params_key(
     consulted of other modules (an alias its refinement imports: the entry holds
     each record's fingerprint as it is now, or the file was checked again). A
     file read only for its declarations (`summary_files`, no check) counts with
-    every other such file's bytes: they are the modules it can import."""
+    every other such file's bytes: they are the modules it can import. With
+    launch files: every file their reading touched (launch files, the parameter
+    files and build files they lead to, the nodes' code, by its bytes)."""
     parts: list[str] = []
+    if launches is not None:
+        for touched in sorted(launches.touched()):
+            file = Path(touched)
+            ignored = ",".join(sorted(config.ignored_codes(file)))
+            parts.append(f"launch\0{touched}\0{cache.sha(file)}\0{ignored}")
     groups = (
         ("yaml", found.parameter_files),
         ("definitions", found.parameter_definitions),

@@ -121,6 +121,10 @@ class Summary:
     attached: list[Attached] = field(default_factory=list)
     node_names: dict[str, list[str]] = field(default_factory=dict)  # owner ->
     auto_declare: set[str] = field(default_factory=set)  # owners: overrides declare
+    # owners whose parameters are not all known by name here: a declaration with a
+    # computed name, `allow_undeclared_parameters`, a class handing `self` to
+    # code of the tree (which may declare more), a base class of another module
+    open_owners: set[str] = field(default_factory=set)
     bases: dict[str, list[str]] = field(default_factory=dict)  # class -> bases here
     listeners: dict[str, list[str]] = field(default_factory=dict)  # owner -> gpl ns
     by_node: dict[int, ParamDecl] = field(default_factory=dict)
@@ -228,6 +232,11 @@ def _summarize(
             summary.bases[statement.name] = [
                 b.id for b in statement.bases if isinstance(b, ast.Name)
             ]
+            if _hands_out_self(statement, index) or any(
+                _base_name(b, index) not in (*NODE_BASES, *summary.bases)
+                for b in statement.bases
+            ):
+                summary.open_owners.add(statement.name)
             for item in statement.body:
                 if isinstance(
                     item, (ast.FunctionDef, ast.AsyncFunctionDef)
@@ -240,6 +249,44 @@ def _summarize(
     walker.unit(MODULE, None, None, module_body)
     summary.by_node = {d.node_id: d for d in summary.decls}
     return summary
+
+
+# what a node class may inherit from without inheriting parameter declarations
+NODE_BASES = (
+    "rclpy.node.Node",
+    "rclpy.lifecycle.LifecycleNode",
+    "rclpy.lifecycle.Node",
+)
+# libraries a node hands `self` to (a tf2 listener, a timer) that declare nothing
+SELF_TAKERS = ("rclpy", "tf2_ros", "message_filters", "image_transport", "cv_bridge")
+
+
+def _base_name(node: ast.expr, index: FileIndex) -> str:
+    """A base class as written or as imported (`Node` -> `rclpy.node.Node`)."""
+    return imported.dotted_name(node, index.imports) or ""
+
+
+def _hands_out_self(cls: ast.ClassDef, index: FileIndex) -> bool:
+    """Whether a method passes its `self` to a callee outside `SELF_TAKERS` (which
+    may declare parameters on it where this file cannot see)."""
+    for item in cls.body:
+        if not isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            continue
+        if not item.args.args:
+            continue
+        me = item.args.args[0].arg
+        for node in walk(item.body):
+            if not isinstance(node, ast.Call):
+                continue
+            passed = [*node.args, *(k.value for k in node.keywords)]
+            if not any(isinstance(a, ast.Name) and a.id == me for a in passed):
+                continue
+            callee = imported.dotted_name(node.func, index.imports) or ""
+            if callee.split(".")[0] not in SELF_TAKERS and not (
+                callee.endswith(".__init__") and callee.rsplit(".", 1)[0] in NODE_BASES
+            ):
+                return True
+    return False
 
 
 # A function whose text has none of these declares, reads and names nothing.
@@ -559,6 +606,10 @@ class _Walker:
 
     def _auto_declare(self, owner: str, call: ast.Call) -> None:
         for kw in call.keywords:
+            if kw.arg == "allow_undeclared_parameters" and (
+                self.const(kw.value) is not False
+            ):
+                self.summary.open_owners.add(owner)
             if kw.arg == "automatically_declare_parameters_from_overrides" and (
                 self.const(kw.value) is not False
             ):
@@ -819,10 +870,12 @@ class _Walker:
         namespace = self.text(call_argument(call, 0, "namespace"))
         listed = call_argument(call, 1, "parameters")
         if namespace is None or not isinstance(listed, (ast.List, ast.Tuple)):
+            self.summary.open_owners.add(owner)
             return
         ignore = self.const(call_argument(call, 2, "ignore_override")) is True
         for item in listed.elts:
             if not isinstance(item, ast.Tuple) or not 1 <= len(item.elts) <= 3:
+                self.summary.open_owners.add(owner)
                 continue
             parts: list[ast.expr | None] = [*item.elts, None, None][:3]
             self.declare(
@@ -842,6 +895,7 @@ class _Walker:
     ) -> None:
         name = self.text(name_node)
         if name is None:
+            self.summary.open_owners.add(owner)
             return
         if namespace:
             name = f"{namespace}.{name}"

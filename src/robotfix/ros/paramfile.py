@@ -262,10 +262,12 @@ def _array(items: list[Y.Node | None]) -> Typed | None:
     return Typed(f"{kinds.pop()}_array", values, text, how)
 
 
-def ros1_value(node: Y.Node | None, budget: list[int]) -> Typed | Unread | None:
+def ros1_value(
+    node: Y.Node | None, budget: list[int], loader: str = "rosparam"
+) -> Typed | Unread | None:
     """A value as rosparam reads it (YAML 1.1); None where rosparam's own
     conversions (`rad(...)`, `deg(...)`, `!degrees`) or other types apply;
-    Unread for an integer PyYAML cannot make."""
+    Unread for an integer PyYAML cannot make (`loader`: who then fails)."""
     node = Y.resolve(node, budget)
     if not isinstance(node, Y.Scalar):
         return None
@@ -285,7 +287,7 @@ def ros1_value(node: Y.Node | None, budget: list[int]) -> Typed | Unread | None:
         return Unread(
             f"PyYAML cannot read the integer `{excerpt(node.text, 20)}`: Python's "
             "int() refuses more than 4,300 digits (3.11, and security releases "
-            "since 3.7), so rosparam cannot load this file"
+            f"since 3.7), so {loader} cannot load this file"
         )
     return None
 
@@ -342,6 +344,9 @@ class Definition:
 class ParamFile:
     layout: str  # ros2, ros1, definitions
     entries: list[Entry] = field(default_factory=list)
+    # ROS 2: each node key path above a `ros__parameters` (`/ns/node`), and where
+    # its last key is (line, col)
+    sections: dict[str, tuple[int, int]] = field(default_factory=dict)
     definitions: list[Definition] = field(default_factory=list)
     # what PyYAML refuses, left out (a merge of a scalar, ...)
     problems: list[Y.YamlProblem] = field(default_factory=list)
@@ -357,7 +362,9 @@ def classify(root: Y.Node | None) -> ParamFile | None:
         return None
     ros2 = _Reader(budget)
     if ros2.sections(root, [], 0):
-        found = ParamFile("ros2", ros2.entries, problems=ros2.problems)
+        found = ParamFile(
+            "ros2", ros2.entries, sections=ros2.places, problems=ros2.problems
+        )
         found.reference = Y.first_reference(root)
         return found
     definitions = _Reader(budget)
@@ -380,12 +387,21 @@ class _Reader:
         self.problems: list[Y.YamlProblem] = []
         self.entries: list[Entry] = []
         self.found: list[Definition] = []
+        # ROS 2: where each node section's last key is (`ParamFile.sections`)
+        self.places: dict[str, tuple[int, int]] = {}
 
     def pairs(self, node: Y.Mapping) -> list[Y.Pair]:
         return Y.pairs(node, self.budget, self.problems)
 
-    def sections(self, node: Y.Mapping, path: list[str], depth: int) -> bool:
-        """Collect every `ros__parameters` section; True if there was one."""
+    def sections(
+        self,
+        node: Y.Mapping,
+        path: list[str],
+        depth: int,
+        where: tuple[int, int] = (1, 0),
+    ) -> bool:
+        """Collect every `ros__parameters` section (and in `places`, where its
+        node key is); True if there was one."""
         seen = False
         for pair in self.pairs(node):
             value = pair.value
@@ -393,9 +409,11 @@ class _Reader:
                 continue
             if pair.key == PARAMS_KEY:
                 seen = True
+                self.places.setdefault("/".join(path), where)
                 self.params(value, "/".join(path), [], depth)
             else:
-                seen = self.sections(value, [*path, pair.key], depth + 1) or seen
+                at = (pair.where.line, pair.where.col)
+                seen = self.sections(value, [*path, pair.key], depth + 1, at) or seen
         return seen
 
     def params(

@@ -104,14 +104,20 @@ def read_line_expectations(text: str) -> list[Expectation]:
     return expectations
 
 
+# an XML comment that holds an assertion (`<!-- error: RF101 -->`)
+_XML_ASSERTION = re.compile(r"<!--\s*((?:error|warning|note)s?\b[^>]*?)\s*-->", re.I)
+XML_SUFFIXES = (".xml", ".launch")
+
+
 def file_expectations(path: Path) -> list[Expectation]:
-    """A Python file's assertions, or those at the ends of another file's lines."""
+    """A Python file's assertions, or those at the ends of another file's lines
+    (in an XML file, each in a comment of its own: `<!-- error: RF101 -->`)."""
     text = path.read_text(encoding="utf-8")
-    return (
-        read_expectations(text)
-        if path.suffix == ".py"
-        else read_line_expectations(text)
-    )
+    if path.suffix == ".py":
+        return read_expectations(text)
+    if path.name.endswith(XML_SUFFIXES):
+        text = _XML_ASSERTION.sub(r"# \1", text)
+    return read_line_expectations(text)
 
 
 def compare_files(files: list[Path], actual: list[Diagnostic]) -> list[str]:

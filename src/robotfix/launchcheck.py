@@ -1,0 +1,459 @@
+"""A run's launch files against the code of the nodes they start.
+
+Each launch entry (`ros.launch`) is mapped to its node's code: the package is a
+folder of the run with that `<name>` in its package.xml, the executable a file
+`ros.executables` finds (console_scripts, install(PROGRAMS), scripts/), and the
+node's code that file and the modules of its package it imports. Then, with the
+table `paramcheck` builds of every node's declarations:
+
+- the name a launch file gives a node (`Node(name='bridge')`, `<node name=>`)
+  makes a parameter file's `bridge:` section apply to that code (`renamed`);
+- an inline value (`parameters=[{'max_speed': 2.0}]`, `<param name value>`) is
+  checked as a parameter file's value is (RF401, RF101), at the launch file;
+- a parameter the launch entry sets, inline or in the section of a file it names
+  for its node, that the node's code does not declare is RF601 (a warning), when
+  every parameter the node declares is known by name;
+- a ROS 2 parameter file's section whose node name no node of the run has, in
+  code or in a launch file, is RF602 (a note);
+- a launch file that cannot be read or parsed is RF004, and so is a value launch
+  cannot load (an integer PyYAML refuses).
+
+A fault of ours on one launch file (reading it, or checking its entries) is a
+`paramcheck.Fault` of that file: its findings are dropped, the others checked.
+"""
+
+from __future__ import annotations
+
+import ast
+import os
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from robotfix import messages
+from robotfix.analysis.parameters import ROSPY, Summary
+from robotfix.diagnostics import Diagnostic, Note, Span
+from robotfix.fs import UnreadableError, read_text
+from robotfix.paramcheck import (
+    Fault,
+    Parameter,
+    Table,
+    guard,
+    report_failure,
+    ros1_name,
+)
+from robotfix.paramcheck import owners as declaring_owners
+from robotfix.ros import paramfile as P
+from robotfix.ros.executables import MAX_BUILD_BYTES, executable_file, module_file
+from robotfix.ros.launch.model import FileParam, InlineParam, NodeEntry
+from robotfix.ros.launch.reader import Reader
+from robotfix.ros.package import package_folder, package_name
+from robotfix.ros.yamlfile import WALK_BUDGET
+
+BUILD_FILES = ("package.xml", "setup.py", "setup.cfg", "CMakeLists.txt")
+# every rclpy node declares these itself
+IMPLICIT = ("use_sim_time", "start_type_description_service")
+IMPLICIT_PREFIXES = ("qos_overrides.",)
+
+
+@dataclass
+class _Started:
+    entry: NodeEntry
+    files: set[str] = field(default_factory=set)  # real paths of its code
+
+
+class LaunchRun:
+    """The launch files of a run, read, and what they add to its parameter check
+    (`paramcheck.Launches`)."""
+
+    def __init__(
+        self,
+        launch_files: list[Path],
+        code_files: list[Path],
+        faults: list[Fault] | None = None,
+    ) -> None:
+        self.packages = _packages([*launch_files, *code_files])
+        self.notices: list[Diagnostic] = []
+        self.started: list[_Started] = []
+        self.renamed: dict[str, set[str]] = {}
+        self.files: list[Path] = []
+        self.names: set[str] = set()  # every node name a launch entry gives
+        self.reader = Reader(self.packages.get)
+        for path in launch_files:
+            with guard(path, self.notices, faults):
+                self._read(path)
+        self.entries = len(self.started)
+
+    def _read(self, path: Path) -> None:
+        """One launch file's entries, kept only once all are read (a fault on
+        the file leaves nothing of it)."""
+        launch = self.reader.read(path)
+        if launch.problem is not None:
+            text, line, col = launch.problem
+            self.notices.append(
+                messages.launch_file_not_read(str(path), line, col, text)
+            )
+            return
+        started = [
+            _Started(entry, self._code(entry))
+            for entry in (launch.entries if launch.launch else [])
+        ]
+        for one in started:
+            self._add(one)
+
+    def texts(self) -> dict[str, str]:
+        return self.reader.texts
+
+    def touched(self) -> set[str]:
+        """Every file the launch check depends on: launch files, the parameter
+        files they name, the packages' manifests and build files, the nodes' code."""
+        found = set(self.reader.touched) | {str(p) for p in self.files}
+        for folder in self.packages.values():
+            found |= {str(folder / name) for name in BUILD_FILES}
+        for started in self.started:
+            found |= started.files
+        return found
+
+    def _add(self, started: _Started) -> None:
+        entry = started.entry
+        self.started.append(started)
+        if entry.name:
+            self.names.add(entry.name.rsplit("/", 1)[-1])
+            if started.files:
+                self.renamed.setdefault(entry.name.rsplit("/", 1)[-1], set()).update(
+                    started.files
+                )
+        for parameter in entry.parameters:
+            if isinstance(parameter, FileParam) and parameter.path is not None:
+                path = Path(parameter.path)
+                if path not in self.files:
+                    self.files.append(path)
+
+    def _code(self, entry: NodeEntry) -> set[str]:
+        folder = self.packages.get(entry.package or "")
+        if folder is None or not entry.executable:
+            return set()
+        main = executable_file(folder, entry.executable)
+        if main is None:
+            return set()
+        return {os.path.realpath(p) for p in [main, *_imported(main, folder)]}
+
+    # -- the checks (called by paramcheck with its table) -------------------------
+    def check(
+        self,
+        table: Table,
+        loaded: dict[str, P.ParamFile],
+        faults: list[Fault] | None = None,
+    ) -> list[Diagnostic]:
+        """The entries against their nodes' code, each launch file's under a
+        `guard` of its own (an entry's file: an included file's entries are its
+        own), then RF602 for each parameter file."""
+        out = list(self.notices)
+        by_real = {table.real[s.path]: s for s in table.summaries}
+        by_file: dict[str, list[_Started]] = {}
+        for started in self.started:
+            by_file.setdefault(started.entry.place.path, []).append(started)
+        for path, entries in by_file.items():
+            with guard(path, out, faults):
+                for started in entries:
+                    code = [by_real[f] for f in sorted(started.files) if f in by_real]
+                    if not code:
+                        continue
+                    if started.entry.ros == 2:
+                        out += _ros2_entry(started.entry, code, table, loaded)
+                    else:
+                        out += _ros1_entry(started.entry, code, table)
+        known = self._known(table)
+        for path, parameters in sorted(loaded.items()):
+            with guard(path, out, faults):
+                out += _unmatched(path, parameters, known)
+        unique = {(d.path, d.span, d.code, d.message): d for d in out}
+        return list(unique.values())
+
+    def _known(self, table: Table) -> set[str]:
+        """Every node name of the code and the launch files."""
+        known = set(self.names)
+        for summary in table.summaries:
+            for names in summary.node_names.values():
+                known.update(names)
+        return known
+
+
+def _unmatched(path: str, parameters: P.ParamFile, known: set[str]) -> list[Diagnostic]:
+    """RF602: a ROS 2 parameter file's sections that name no known node."""
+    if parameters.layout != "ros2":
+        return []
+    unmatched = [
+        (key, where)
+        for key, where in parameters.sections.items()
+        if (name := key.rstrip("/").rsplit("/", 1)[-1])
+        and "*" not in name
+        and name not in known
+    ]
+    if not unmatched:
+        return []
+    (line, col) = unmatched[0][1]
+    keys = [key for key, _ in unmatched]
+    return [messages.parameter_section_unmatched(path, line, col, keys)]
+
+
+def _packages(files: list[Path]) -> dict[str, Path]:
+    """Package name -> folder, for the packages the run's files lie in."""
+    folders: dict[Path, Path | None] = {}
+    found: dict[str, Path] = {}
+    for path in files:
+        parent = path.parent
+        if parent not in folders:
+            folders[parent] = _package_folder(parent)
+        folder = folders[parent]
+        if folder is not None and folder not in found.values():
+            name = package_name(folder)
+            if name is not None:
+                found.setdefault(name, folder)
+    return found
+
+
+def _package_folder(folder: Path) -> Path | None:
+    """The package folder around `folder`, spelled as `folder` is (a relative run
+    reports relative paths)."""
+    for candidate in (folder, *folder.parents):
+        if os.path.isfile(candidate / "package.xml"):
+            return candidate
+    if not folder.is_absolute():
+        return package_folder(folder / "x")
+    return None
+
+
+def _imported(main: Path, package: Path) -> list[Path]:
+    """The modules of `package` that `main` imports (`from pkg.node import N`,
+    `from .node import N`): where an entry point's node class often lives."""
+    try:
+        tree = ast.parse(read_text(main, MAX_BUILD_BYTES))
+    except (UnreadableError, SyntaxError, ValueError, RecursionError, MemoryError):
+        return []
+    found = []
+    for node in ast.walk(tree):
+        modules: list[str] = []
+        if isinstance(node, ast.ImportFrom) and node.module:
+            if node.level:
+                here = os.path.relpath(main.parent, package).replace(os.sep, ".")
+                prefix = "" if here == "." else here + "."
+                modules = [prefix + node.module]
+            else:
+                modules = [node.module]
+        elif isinstance(node, ast.Import):
+            modules = [a.name for a in node.names]
+        for module in modules:
+            path = module_file(package, module)
+            if path is not None and path != main:
+                found.append(path)
+    return found
+
+
+def _owners_of(code: list[Summary]) -> list[tuple[Summary, str]]:
+    return [
+        (summary, owner)
+        for summary in code
+        for owner in sorted({*declaring_owners(summary), *summary.node_names})
+        if owner != ROSPY
+    ]
+
+
+def _closed(summary: Summary, owner: str) -> bool:
+    """Whether every parameter `owner` declares is known by name."""
+    if "#" in owner:
+        return False  # a node object in a variable: it may be handed anywhere
+    lineage = summary.lineage(owner)
+    return not any(
+        o in summary.open_owners
+        or o in summary.auto_declare
+        or summary.listeners.get(o)
+        for o in lineage
+    )
+
+
+def _declared(summary: Summary, owner: str, name: str) -> bool:
+    return any(
+        d.name == name and d.ros == 2 and d.owner in summary.lineage(owner)
+        for d in summary.decls
+    )
+
+
+def _node_words(entry: NodeEntry, owners: list[tuple[Summary, str]]) -> str:
+    if entry.name:
+        return f"`{entry.name}`"
+    names = sorted({n for s, o in owners for n in s.names_of(o)})
+    return f"`{names[0]}`" if len(names) == 1 else f"`{entry.executable}`"
+
+
+def _ros2_entry(
+    entry: NodeEntry, code: list[Summary], table: Table, loaded: dict[str, P.ParamFile]
+) -> list[Diagnostic]:
+    owners = _owners_of(code)
+    if not owners:
+        return []
+    out: list[Diagnostic] = []
+    node = _node_words(entry, owners)
+    started_at = Note(
+        f"the launch entry that starts it ({entry.package}/{entry.executable})",
+        entry.place.path,
+        entry.place.line,
+    )
+    closed = all(_closed(s, o) for s, o in owners)
+    budget = [WALK_BUDGET]
+    for parameter in entry.parameters:
+        if isinstance(parameter, InlineParam):
+            found = _inline(parameter, owners, table, node, budget)
+            if found is not None:
+                out.append(found)
+            elif closed and _undeclared(parameter.name, owners):
+                place = parameter.key or parameter.place
+                out.append(
+                    messages.launch_parameter_undeclared(
+                        place.path,
+                        place.line,
+                        place.col,
+                        parameter.name,
+                        node,
+                        _declared_in(owners),
+                    )
+                )
+        elif parameter.path is not None and closed:
+            out += _file_typos(entry, parameter, owners, loaded, node, started_at)
+    return out
+
+
+def _undeclared(name: str, owners: list[tuple[Summary, str]]) -> bool:
+    if name in IMPLICIT or name.startswith(IMPLICIT_PREFIXES):
+        return False
+    return not any(_declared(s, o, name) for s, o in owners)
+
+
+def _declared_in(owners: list[tuple[Summary, str]]) -> Note:
+    summary, owner = owners[0]
+    where = [d.line for d in summary.decls if d.owner in summary.lineage(owner)]
+    return Note(
+        f"the parameters `{owner}` declares",
+        summary.path,
+        min(where) if where else None,
+    )
+
+
+def _inline(
+    parameter: InlineParam,
+    owners: list[tuple[Summary, str]],
+    table: Table,
+    node: str,
+    budget: list[int],
+) -> Diagnostic | None:
+    """RF401/RF101 when the value is wrong for every declaration it may meet;
+    RF004 for a value launch cannot load, set for a declared parameter."""
+    if parameter.value is None:
+        return None
+    candidates = [
+        c
+        for s, o in owners
+        if (c := table.ros2_parameter(s, o, parameter.name)) is not None
+    ]
+    return _judged(parameter, candidates, node, budget)
+
+
+def _judged(
+    parameter: InlineParam, candidates: list[Parameter], node: str, budget: list[int]
+) -> Diagnostic | None:
+    """RF401/RF101 when the value is wrong for every candidate declaration."""
+    value = parameter.value
+    if value is None or not candidates:
+        return None
+    place = parameter.place
+    span = Span.point(place.line, place.col)
+    if isinstance(value, P.Unread):
+        subject = f"`{parameter.name}: ...` (launched node {node})"
+        return messages.parameter_value_not_checked(
+            place.path, span, subject, value.why
+        )
+    failures = [c.judge(value, budget) for c in candidates]
+    if any(f is None for f in failures):
+        return None
+    first = failures[0]
+    assert first is not None
+    shown = f'"{value.text}"' if value.type == "string" else value.text
+    subject = f"`{parameter.name}: {shown[:40]}` (launched node {node})"
+    return report_failure(place.path, span, subject, value, first)
+
+
+def _file_typos(
+    entry: NodeEntry,
+    parameter: FileParam,
+    owners: list[tuple[Summary, str]],
+    loaded: dict[str, P.ParamFile],
+    node: str,
+    started_at: Note,
+) -> list[Diagnostic]:
+    """RF601 in the sections of a parameter file the entry names that are keyed
+    for this node (not `/**`: those serve every node)."""
+    assert parameter.path is not None
+    parameters = loaded.get(parameter.path)
+    if parameters is None or parameters.layout != "ros2":
+        return []
+    names = (
+        {entry.name} if entry.name else {n for s, o in owners for n in s.names_of(o)}
+    )
+    out = []
+    for item in parameters.entries:
+        if not _keyed_for(item.node, names, entry.namespace):
+            continue
+        if _undeclared(item.name, owners):
+            out.append(
+                messages.launch_parameter_undeclared(
+                    parameter.path, item.line, item.col, item.name, node, started_at
+                )
+            )
+    return out
+
+
+def _keyed_for(key: str, names: set[str], namespace: str | None) -> bool:
+    """Whether a section key (`driver`, `/ns/driver`) names this node itself."""
+    head, _, last = key.strip("/").rpartition("/")
+    if last not in names or "*" in last:
+        return False
+    if not key.startswith("/") or namespace is None or "*" in head:
+        return True
+    return head == namespace.strip("/")
+
+
+def _ros1_entry(
+    entry: NodeEntry, code: list[Summary], table: Table
+) -> list[Diagnostic]:
+    """A `<param>` inside a roslaunch `<node>` is the node's private `~name`:
+    checked against the refinements where the node's code reads it."""
+    out: list[Diagnostic] = []
+    budget = [WALK_BUDGET]
+    for parameter in entry.parameters:
+        if not isinstance(parameter, InlineParam) or parameter.value is None:
+            continue
+        name = (
+            parameter.name
+            if parameter.name.startswith(("/", "~"))
+            else f"~{parameter.name}"
+        )
+        candidates = [
+            c for summary in code if (c := _ros1_parameter(summary, name)) is not None
+        ]
+        node = f"`{entry.name or entry.executable}`"
+        found = _judged(parameter, candidates, node, budget)
+        if found is not None:
+            out.append(found)
+    return out
+
+
+def _ros1_parameter(summary: Summary, name: str) -> Parameter | None:
+    nodes = summary.node_names.get(ROSPY, [])
+    if not any(d.ros == 1 and ros1_name(d.name, nodes) == name for d in summary.decls):
+        return None
+    candidate = Parameter(name, 1)
+    candidate.refinements = [
+        a
+        for a in summary.attached
+        if a.owner == ROSPY and ros1_name(a.name, nodes) == name
+    ]
+    return candidate

@@ -1,0 +1,91 @@
+"""What a launch file says, as data: the launch entries a reader finds.
+
+A launch file is read, never run (`robotfix.ros.launch.read`), so any value may be
+unknown: a substitution computed at launch time (`$(env X)`, a `Command`, a
+`LaunchConfiguration` nobody declares a default for) is `None` here, never an
+error. Launch arguments take the value the including file passes, else their
+declared default: the configuration a plain `ros2 launch` / `roslaunch` starts.
+
+Every entry carries its place (`path`, 1-based `line`, 0-based `col`), so a check
+reports at the launch file, and a later graph module can build on the node entries
+(package, executable, name, namespace, parameters, remappings, arguments).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from robotfix.ros.paramfile import Typed, Unread
+
+
+@dataclass(frozen=True)
+class Place:
+    path: str
+    line: int
+    col: int
+
+
+@dataclass(frozen=True)
+class InlineParam:
+    """`{'max_speed': 0.5}` in a Python launch file, `<param name= value=>`."""
+
+    name: str  # ROS 2: dotted (`limits.max`); ROS 1: as written (`~rate`, `rate`)
+    value: Typed | Unread | None  # None: computed at launch time, or of no
+    # checkable type; Unread: PyYAML refuses it (launch fails)
+    place: Place  # of the value
+    key: Place | None = None  # of the name, where it is written apart
+
+
+@dataclass(frozen=True)
+class FileParam:
+    """A parameter file an entry names (`parameters=[path]`, `<param from=>`,
+    `<rosparam command="load" file=>`)."""
+
+    path: str | None  # the file in the checked tree; None: not found or computed
+    shown: str  # as the launch file spells it, substitutions kept
+    place: Place
+    namespace: str = ""  # ROS 1 `<rosparam ns=>`: where its keys go
+
+
+@dataclass(frozen=True)
+class Remap:
+    source: str | None
+    target: str | None
+    place: Place
+
+
+@dataclass
+class NodeEntry:
+    """One node a launch file starts (`Node(...)`, `<node>`, `- node:`)."""
+
+    ros: int  # 1 (roslaunch) or 2
+    place: Place
+    package: str | None
+    executable: str | None  # ROS 2 `executable`/`exec`; ROS 1 `type`
+    name: str | None  # the name the launch file gives it; None: none or unknown
+    namespace: str | None  # "" the root; None unknown
+    parameters: list[InlineParam | FileParam] = field(default_factory=list)
+    remappings: list[Remap] = field(default_factory=list)
+    arguments: list[str | None] = field(default_factory=list)
+    plugin: str | None = None  # a ComposableNode's class (C++)
+
+
+@dataclass(frozen=True)
+class Include:
+    """A launch file another one includes; `path` None when it is not in the tree."""
+
+    path: str | None
+    shown: str
+    place: Place
+
+
+@dataclass
+class LaunchFile:
+    path: str
+    ros: int  # 2 for Python, ROS 2 XML and YAML; 1 for roslaunch XML
+    entries: list[NodeEntry] = field(default_factory=list)
+    includes: list[Include] = field(default_factory=list)
+    # ROS 1 `<param>`s outside any `<node>` (global), by resolved name
+    global_params: list[InlineParam] = field(default_factory=list)
+    problem: tuple[str, int, int] | None = None  # why it was not read: text, l, c
+    launch: bool = True  # False: a Python file that is no launch file at all

@@ -1,0 +1,15 @@
+"""Which files are launch files, by name (discovery needs no reader for it)."""
+
+from __future__ import annotations
+
+LAUNCH_SUFFIXES = (".py", ".xml", ".yaml", ".yml", ".launch")  # in a `launch/` folder
+
+
+def is_launch_name(name: str) -> bool:
+    """A file name only launch files have (`x.launch.py`, `x_launch.py`,
+    `x.launch.xml`, `x.launch.yaml`, `x.launch`)."""
+    return name.endswith(".launch") or any(
+        name.endswith(f"{sep}launch{suffix}")
+        for sep in (".", "_")
+        for suffix in (".py", ".xml", ".yaml", ".yml")
+    )
