@@ -996,7 +996,10 @@ def read_call(
     `get_parameter(...)`: `X.value`, `X.get_parameter_value().double_value`, or a
     `rospy.get_param(...)` call."""
     if isinstance(node, ast.Call):
-        if called_name(node) == "get_param" and qualname(node.func) == "rospy.get_param":
+        if (
+            called_name(node) == "get_param"
+            and qualname(node.func) == "rospy.get_param"
+        ):
             return node, True
         return None
     if not isinstance(node, ast.Attribute):
@@ -1142,7 +1145,9 @@ def _never(
         verdict = check.ctx.discharge(VC(tuple(state.facts), goal, (stored.term,)))
         if isinstance(verdict, Violated):
             shown = A.show(A.substitute(part, {"_": A.Name(name)}))
-            check.goal_holds(state, goal, stored.term, site, shown, f"`{name}`", declared)
+            check.goal_holds(
+                state, goal, stored.term, site, shown, f"`{name}`", declared
+            )
             return True
     return False
 

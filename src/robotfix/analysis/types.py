@@ -551,12 +551,13 @@ class TypeModel:
         env: dict[str, Type | None] | None,
     ) -> Type | None:
         """`now - self.last`: what the left operand's operator method returns (its
-        `@overload` for the right operand's class), or the right one's reflected
-        method; only operands of stub classes (a number's result is a value)."""
+        `@overload` for the right operand's class), when the left operand is of a
+        stub class (the reflected methods are the interpreter's: they need the
+        other operand's kind, a value's)."""
         name = OPERATOR_METHODS.get(type(node.op))
         left = plain(self.infer(node.left, function, env))
         if name is None or not isinstance(left, Lib):
-            return None  # the reflected form is not followed: a number's kind unknown
+            return None
         right = plain(self.infer(node.right, function, env))
         keys = [f"{name}:{right.name}", name] if isinstance(right, Lib) else [name]
         for key in keys:
@@ -646,15 +647,8 @@ class TypeModel:
     ) -> Type | None:
         """What a method is called on: `self` (or `cls`) is an instance of its
         class, anything else is inferred."""
-        if (
-            isinstance(owner, ast.Name)
-            and function is not None
-            and function.class_name is not None
-            and function.is_method
-            and owner.id == _first_param(function)
-            and (env is None or owner.id not in env)
-        ):
-            return Obj(function.class_name)
+        if _is_self(owner, function, env):
+            return Obj(function.class_name)  # type: ignore[union-attr,arg-type]
         return self.infer(owner, function, env)
 
     def _method_returns(self, class_name: str, method_name: str) -> Type | None:
@@ -680,15 +674,8 @@ class TypeModel:
         env: dict[str, Type | None] | None,
     ) -> Type | None:
         owner = node.value
-        if (
-            isinstance(owner, ast.Name)
-            and function is not None
-            and function.class_name is not None
-            and function.is_method
-            and owner.id == _first_param(function)
-            and (env is None or owner.id not in env)
-        ):
-            return self.attribute(function.class_name, node.attr)
+        if _is_self(owner, function, env):
+            return self.attribute(function.class_name, node.attr)  # type: ignore[union-attr,arg-type]
         base = plain(self.infer(owner, function, env))
         if isinstance(base, Msg):
             return self.field(base.name, node.attr)
@@ -697,7 +684,11 @@ class TypeModel:
         if isinstance(base, Lib):  # a stub class's property or attribute
             member = self._stub_member(base, node.attr)
             if member is not None:
-                return self.library(member.returns_type) if member.kind == "property" else None
+                return (
+                    self.library(member.returns_type)
+                    if member.kind == "property"
+                    else None
+                )
             cls = resolve_library(self.ctx, base.name)
             known = (
                 imported.stub_set_of(self.ctx).attribute(cls, node.attr)
@@ -960,6 +951,21 @@ def _returns(node: ast.AST) -> list[ast.Return]:
         ):
             todo.extend(children(child))
     return found
+
+
+def _is_self(
+    owner: ast.expr, function: Function | None, env: dict[str, Type | None] | None
+) -> bool:
+    """Whether `owner` is the first parameter of a method (`self`, `cls`), not
+    rebound by a comprehension."""
+    return (
+        isinstance(owner, ast.Name)
+        and function is not None
+        and function.class_name is not None
+        and function.is_method
+        and owner.id == _first_param(function)
+        and (env is None or owner.id not in env)
+    )
 
 
 def _first_param(function: Function) -> str | None:
