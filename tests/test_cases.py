@@ -2,6 +2,7 @@
 
 Interface files come from `tests/cases/msgs/` and from a `msg/` folder beside the case.
 A `_xfail` suffix marks a known failure (it must fail, and fails the run once fixed).
+Cases under `ros1/` are checked as `--ros-distro ros1` checks them.
 """
 
 from __future__ import annotations
@@ -23,7 +24,9 @@ CASES = Path(__file__).parent / "cases"
 @cache
 def catalog_for(folder: Path) -> MsgCatalog:
     folders = [CASES / "msgs", folder / "msg"]
-    catalog = MsgCatalog(interface_files([f for f in folders if f.is_dir()]))
+    catalog = MsgCatalog(
+        interface_files([f for f in folders if f.is_dir()]), distro=_distro(folder)
+    )
     problems = catalog_problems(catalog)
     assert not problems, f"the case's interface files have problems: {problems}"
     return catalog
@@ -32,7 +35,12 @@ def catalog_for(folder: Path) -> MsgCatalog:
 def check_case(path: Path) -> list[Diagnostic]:
     """A case file checked as `test_case` checks it (its folder's interface files)."""
     text = path.read_text(encoding="utf-8")
-    return check_source(text, str(path), Config(), catalog_for(path.parent))
+    config = Config(ros_distro=_distro(path.parent))
+    return check_source(text, str(path), config, catalog_for(path.parent))
+
+
+def _distro(folder: Path) -> str:
+    return "ros1" if "ros1" in folder.relative_to(CASES).parts else "ros2"
 
 
 # launch/: whole workspaces, whose launch files' findings need the tree

@@ -329,7 +329,8 @@ class Checker:
                 self.reach(state, value.ref, rules, site, name, leaving)
             return value
         read = parameters.read_of(self, value, site)
-        if read is not None:  # a parameter read: the refinement becomes its own
+        if read is not None and parameters.attaches(read, decl, lookup):
+            # a parameter read: the refinement becomes its own
             return parameters.attach(self, state, name, decl, value, site, lookup, read)
         if decl.elements is not None:
             return self._assign_elements(state, name, decl, value, site, lookup)

@@ -415,6 +415,8 @@ class ExpressionEvaluator:
             # an id of its own: whether it is None is not known (even a declared
             # `client: Client` may be given None), the same for each test of it
             return Value("instance", name=found.name, ref=self.ctx.fresh_id())
+        if isinstance(found, types.Lib):  # `self.last: Time`, a stub's result
+            return Value("object", name=found.name)
         if isinstance(found, types.Tup):
             parts = tuple(self.typed(t, node, state, label) for t in found.items)
             return Value("tuple", elements=parts)

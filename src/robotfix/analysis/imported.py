@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING, Protocol
 from robotfix.analysis.values import Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Alias, Refinement
+from robotfix.stubs import load as stubs
 
 if TYPE_CHECKING:
     from robotfix.analysis.calls import CallEvaluator
@@ -136,6 +137,19 @@ def resolve(resolver: Resolver | None, qualified: str) -> Imported | None:
     if resolver is None or not qualified:
         return None
     return _resolve(resolver, qualified, 0)
+
+
+def resolve_library(ctx: object, qualified: str) -> stubs.Function | stubs.Class | None:
+    """What an imported name stands for outside the checked code: today its stub
+    (the user's `stub-paths`, then the shipped ones), else None (unknown). The one
+    place to join with the modules of the checked tree (searched before stubs)."""
+    return stub_set_of(ctx).lookup(qualified)
+
+
+def stub_set_of(ctx: object) -> stubs.StubSet:
+    """The stubs a file's context reads (its `stub-paths`, then the shipped ones)."""
+    found: stubs.StubSet = getattr(ctx, "stubs", None) or stubs.stub_set()
+    return found
 
 
 def _resolve(resolver: Resolver, qualified: str, hops: int) -> Imported | None:

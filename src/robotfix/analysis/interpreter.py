@@ -697,7 +697,11 @@ class Interpreter(CallEvaluator):
         unit = None if value.literal else value.unit
         factors = () if value.literal else value.factors  # `[r * 100 for r in ranges]`
         message = (value.name, "unknown") if value.kind == "msg" else None
-        of = types.Obj(value.name) if value.kind == "instance" else None
+        of = (
+            types.Obj(value.name)
+            if value.kind == "instance"
+            else types.Lib(value.name) if value.kind == "object" else None
+        )
         items = Items(item, each, size, message=message, of=of)
         made = Value(kind, unit=unit, items=items, factors=factors)
         if kind != "list":

@@ -17,8 +17,10 @@ from fractions import Fraction
 
 from robotfix import messages
 from robotfix.analysis import frames, heap, imported
+from robotfix.analysis.imported import resolve_library
 from robotfix.analysis.param_eval import ParameterEvaluator
 from robotfix.analysis.state import State
+from robotfix.analysis.types import OPERATOR_METHODS
 from robotfix.analysis.values import Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
@@ -28,14 +30,6 @@ from robotfix.messages import Declared
 from robotfix.stubs import load as stubs
 
 ZERO = A.Num(Fraction(0), True)
-
-
-def resolve_library(ctx: object, qualified: str) -> stubs.Function | stubs.Class | None:
-    """What an imported name stands for outside the checked code: today its stub
-    (the user's `stub-paths`, then the shipped ones), else None (unknown). The one
-    place to join with the modules of the checked tree (searched before stubs)."""
-    found: stubs.StubSet = getattr(ctx, "stubs", None) or stubs.stub_set()
-    return found.lookup(qualified)
 
 
 class LibraryEvaluator(ParameterEvaluator):
@@ -70,7 +64,7 @@ class LibraryEvaluator(ParameterEvaluator):
         """`now - self.prev` (rclpy Times: a Duration), `d * 2` (a rospy Duration):
         the left operand's `__sub__`, or the right one's `__rsub__`, as its stub
         says; an overload for the other operand's class (or builtin kind) first."""
-        name = _OPERATORS.get(type(node.op))
+        name = OPERATOR_METHODS.get(type(node.op))
         if name is None:
             return None
         for obj, other, method in (
@@ -110,34 +104,11 @@ class LibraryEvaluator(ParameterEvaluator):
             and attr not in self.program.attributes.get(base.name, {})
             and self.class_constant(base.name, attr) is None
         ):
-            for cls in self._library_bases(base.name):
+            for cls in self.program.types.library_bases(base.name):
                 function = self._stubs().member(cls, attr)
                 if function is not None and function.kind == "method":
                     return Value("libmethod", name=function.qualname)
         return super().instance_attribute(base, var, node, state)
-
-    def _library_bases(self, class_name: str) -> list[stubs.Class]:
-        """The stub classes a class of this file derives from, nearest first."""
-        found: list[stubs.Class] = []
-        seen: set[str] = set()
-        todo = [class_name]
-        while todo:
-            name = todo.pop(0)
-            if name in seen:
-                continue
-            seen.add(name)
-            scope = self.program.classes.get(name)
-            if scope is None or not isinstance(scope.node, ast.ClassDef):
-                continue
-            for base in scope.node.bases:
-                if isinstance(base, ast.Name) and base.id in self.program.classes:
-                    todo.append(base.id)
-                    continue
-                qualified = self.ctx.qualname(base)
-                cls = resolve_library(self.ctx, qualified) if qualified else None
-                if isinstance(cls, stubs.Class):
-                    found.append(cls)
-        return found
 
     # -- calls ---------------------------------------------------------------
     def library_call(
@@ -430,16 +401,7 @@ class LibraryEvaluator(ParameterEvaluator):
         return Value("float", term, unit)
 
     def _stubs(self) -> stubs.StubSet:
-        found: stubs.StubSet = getattr(self.ctx, "stubs", None) or stubs.stub_set()
-        return found
-
-
-_OPERATORS = {
-    ast.Add: "__add__",
-    ast.Sub: "__sub__",
-    ast.Mult: "__mul__",
-    ast.Div: "__truediv__",
-}
+        return imported.stub_set_of(self.ctx)
 
 
 def _builtin(value: Value) -> str:

@@ -23,6 +23,7 @@ from robotfix.analysis.parameters import (
     ParamContext,
     ParamDecl,
     ParamRead,
+    called_name,
     owner_of,
     summarize,
 )
@@ -106,7 +107,43 @@ class ParameterEvaluator(ExpressionEvaluator):
             if pname is None:
                 return None
             decl = summary.declaration(owner, pname)
-            return self._handle(Handle(owner, pname, decl, False, call=node))
+            if decl is None or not _literal_name(node):
+                return self._handle(Handle(owner, pname, decl, False, call=node))
+            # declared by its class: a refined target's refinement is the
+            # parameter's, as for `declare_parameter(...).value` (the syntactic
+            # pass attaches it too, `Summary.attached`)
+            default_node = self._declared_default(decl)
+            default = (
+                _constant(decl.default)
+                if default_node is not None
+                and isinstance(decl.default, (bool, int, float, str))
+                else None
+            )
+            return self._handle(
+                Handle(
+                    owner,
+                    pname,
+                    decl,
+                    True,
+                    default,
+                    default_node if default is not None else None,
+                    node,
+                    later=True,
+                )
+            )
+        return None
+
+    def _declared_default(self, decl: ParamDecl) -> ast.expr | None:
+        """The default's expression of a declaration, found by its node's id in
+        the file's calls (`declare_parameter(name, default)`, or a tuple of
+        `declare_parameters`)."""
+        for _, call in self.ctx.index.calls:
+            if id(call) == decl.node_id:
+                return call_argument(call, 1, "value")
+            if called_name(call) == "declare_parameters":
+                for item in ast.walk(call):
+                    if id(item) == decl.node_id and isinstance(item, ast.Tuple):
+                        return item.elts[1] if len(item.elts) > 1 else None
         return None
 
     def _name(
@@ -217,7 +254,7 @@ class ParameterEvaluator(ExpressionEvaluator):
             integer = kind == "int"
             state.assume(A.Binary("<=", A.Num(decl.range.low, integer), term))
             state.assume(A.Binary("<=", term, A.Num(decl.range.high, integer)))
-        if not handle.declaration:
+        if not handle.declaration or handle.later:
             summary = self.parameters().summary
             for attached in summary.refinements(handle.owner, handle.name, True):
                 predicate = attached.refinement.predicate
@@ -231,6 +268,7 @@ class ParameterEvaluator(ExpressionEvaluator):
             handle.declaration,
             handle.default,
             handle.default_node,
+            handle.later,
         )
         return value
 
@@ -254,6 +292,12 @@ class ParameterEvaluator(ExpressionEvaluator):
             call_argument(node, 1, "default"),
         )
         return value
+
+
+def _literal_name(call: ast.Call) -> bool:
+    """Whether a parameter call names its parameter with a literal string."""
+    name = call_argument(call, 0, "name")
+    return isinstance(name, ast.Constant) and isinstance(name.value, str)
 
 
 def _given(

@@ -423,7 +423,8 @@ def exact(value: int | float) -> Fraction:
     return Fraction(value) if isinstance(value, int) else Fraction(repr(float(value)))
 
 
-def _called(call: ast.Call) -> str:
+def called_name(call: ast.Call) -> str:
+    """The name a call calls: `declare_parameter` of `self.declare_parameter(...)`."""
     func = call.func
     return func.attr if isinstance(func, ast.Attribute) else getattr(func, "id", "")
 
@@ -564,7 +565,7 @@ class _Walker:
 
     # -- calls ------------------------------------------------------------------
     def call(self, call: ast.Call) -> None:
-        name = _called(call)
+        name = called_name(call)
         func = call.func
         qualified = self.qualname(func) or ""
         if qualified in ("rospy.get_param",) or qualified.endswith(".rospy.get_param"):
@@ -590,7 +591,7 @@ class _Walker:
         """`super().__init__(...)` or `Base.__init__(self, ...)`."""
         func = call.func
         assert isinstance(func, ast.Attribute)
-        if isinstance(func.value, ast.Call) and _called(func.value) == "super":
+        if isinstance(func.value, ast.Call) and called_name(func.value) == "super":
             return True
         return bool(
             call.args
@@ -670,7 +671,7 @@ class _Walker:
         if value is None or len(targets) != 1:
             return
         target = targets[0]
-        if isinstance(value, ast.Call) and _called(value) in NODE_CONSTRUCTORS:
+        if isinstance(value, ast.Call) and called_name(value) in NODE_CONSTRUCTORS:
             owner = self._target_owner(target)
             if owner is not None:
                 self.node_name(owner, call_argument(value, 0, "node_name"))
@@ -708,7 +709,7 @@ class _Walker:
         return owner_of(target, self.key, self.cls, self.self_name)
 
     def _read_owner(self, call: ast.Call) -> tuple[str | None, str | None]:
-        if isinstance(call.func, ast.Attribute) and _called(call) in (
+        if isinstance(call.func, ast.Attribute) and called_name(call) in (
             "declare_parameter",
             "get_parameter",
         ):
@@ -972,7 +973,7 @@ class _Walker:
         call, stores = self._resolved(node, before)
         if (
             call is None
-            or not _called(call).endswith("ParameterDescriptor")
+            or not called_name(call).endswith("ParameterDescriptor")
             or call.args
             or any(kw.arg is None for kw in call.keywords)
         ):
@@ -1010,7 +1011,7 @@ class _Walker:
     def _range(self, node: ast.expr, integer: bool, before: int) -> Range | None:
         call, stores = self._resolved(node, before)
         expected = "IntegerRange" if integer else "FloatingPointRange"
-        if call is None or not _called(call).endswith(expected) or call.args:
+        if call is None or not called_name(call).endswith(expected) or call.args:
             return None
         fields: dict[str | None, ast.expr] = {kw.arg: kw.value for kw in call.keywords}
         fields.update(dict(stores))
@@ -1049,14 +1050,17 @@ def read_call(
     `get_parameter(...)`: `X.value`, `X.get_parameter_value().double_value`, or a
     `rospy.get_param(...)` call."""
     if isinstance(node, ast.Call):
-        if _called(node) == "get_param" and qualname(node.func) == "rospy.get_param":
+        if (
+            called_name(node) == "get_param"
+            and qualname(node.func) == "rospy.get_param"
+        ):
             return node, True
         return None
     if not isinstance(node, ast.Attribute):
         return None
     inner = node.value
     if node.attr in PARAMETER_VALUE_FIELDS and isinstance(inner, ast.Call):
-        if _called(inner) == "get_parameter_value" and isinstance(
+        if called_name(inner) == "get_parameter_value" and isinstance(
             inner.func, ast.Attribute
         ):
             inner = inner.func.value
@@ -1065,7 +1069,7 @@ def read_call(
     elif node.attr != "value":
         return None
     if isinstance(inner, ast.Call) and isinstance(inner.func, ast.Attribute):
-        called = _called(inner)
+        called = called_name(inner)
         if called in ("declare_parameter", "get_parameter"):
             return inner, called == "declare_parameter"
     return None
@@ -1081,11 +1085,14 @@ class Handle:
     owner: str
     name: str
     decl: ParamDecl | None
-    declaration: bool  # returned by declare_parameter: its `.value` may attach
+    # its `.value` may attach: returned by declare_parameter, or by get_parameter
+    # of a name its class declares (the default is the declaration's)
+    declaration: bool
     default: Value | None = None
     default_node: ast.expr | None = None
     call: ast.Call | None = None
     value: Value | None = None  # the value read, once read
+    later: bool = False  # a get_parameter of a name its class declares
 
 
 @dataclass(frozen=True)
@@ -1098,6 +1105,7 @@ class ParamRead:
     attach: bool  # assigned to a refined target right there: the refinement holds
     default: Value | None
     default_node: ast.expr | None
+    later: bool = False  # a get_parameter of a name its class declares
 
 
 @dataclass
@@ -1124,6 +1132,19 @@ def read_of(check: Checker, value: Value, site: ast.AST) -> ParamRead | None:
     return read
 
 
+def attaches(read: ParamRead, decl: Refinement, lookup: dict[str, A.Expr]) -> bool:
+    """Whether a read's target refinement becomes the parameter's: always where it
+    is declared; a later `get_parameter` read only when the refinement speaks of
+    the value and constants alone (`_ == before` is no contract of a parameter)."""
+    if not read.later:
+        return True
+    return not any(
+        A.syms(lookup[n.name])
+        for n in A.names(decl.predicate)
+        if n.name != "_" and n.name in lookup
+    )
+
+
 def attach(
     check: Checker,
     state: State,
@@ -1140,6 +1161,12 @@ def attach(
     target = f"`{name}`"
     if not check.base_fits(decl.base, value, site, target):
         return check.assumed(state, name, decl, lookup)
+    if value.kind == decl.base or (value.kind == "int" and decl.base == "float"):
+        stored = value
+    else:
+        stored = check.ctx.fresh(decl.base, f"parameter `{read.name}`")
+    if read.later and _never(check, state, decl, stored, site, name, lookup):
+        return check.assumed(state, name, decl, lookup)
     default = read.default
     if (
         default is not None
@@ -1148,13 +1175,35 @@ def attach(
         and check.base_fits(decl.base, default, read.default_node, target)
     ):
         _check_default(check, state, name, decl, default, read, lookup)
-    if value.kind == decl.base or (value.kind == "int" and decl.base == "float"):
-        stored = value
-    else:
-        stored = check.ctx.fresh(decl.base, f"parameter `{read.name}`")
     if stored.term is not None:
         state.assume(A.substitute(decl.predicate, {**lookup, "_": stored.term}))
     return replace(stored, unit=decl.unit, literal=False) if decl.unit else stored
+
+
+def _never(
+    check: Checker,
+    state: State,
+    decl: Refinement,
+    stored: Value,
+    site: ast.AST,
+    name: str,
+    lookup: dict[str, A.Expr],
+) -> bool:
+    """A refinement no value of the declared range satisfies is RF101 at the read
+    (`_ < 5` of a parameter in [5, 10]), as for any read, and is not assumed."""
+    if stored.term is None:
+        return False
+    declared = Declared(f"annotation of `{name}`", decl.origin or check.path, decl.line)
+    for part in A.conjuncts(decl.predicate):
+        goal = A.substitute(part, {**lookup, "_": stored.term})
+        verdict = check.ctx.discharge(VC(tuple(state.facts), goal, (stored.term,)))
+        if isinstance(verdict, Violated):
+            shown = A.show(A.substitute(part, {"_": A.Name(name)}))
+            check.goal_holds(
+                state, goal, stored.term, site, shown, f"`{name}`", declared
+            )
+            return True
+    return False
 
 
 def _check_default(
@@ -1183,6 +1232,8 @@ def _check_default(
                     declared,
                     "ROS uses the default when no parameter file or launch "
                     "argument sets the parameter",
-                )
+                ),
+                # a default read into several targets with one refinement: once
+                once=("parameter-default", id(read.default_node), A.show(part)),
             )
             return

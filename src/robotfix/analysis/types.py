@@ -18,7 +18,11 @@ Where the types come from:
   `return` statements agree on;
 - expressions: a constructor call, a message's field (its type in the catalog), a
   local bound once, a parameter, an element of a typed container, a call of a typed
-  function, a display or comprehension whose elements agree.
+  function, a display or comprehension whose elements agree;
+- stubs (`robotfix/stubs/`): a class a stub describes is a type too (`last: Time`,
+  `dict[int, rospy.Duration]`), and so is what a stub's function, method, property
+  or operator returns (`self.get_clock().now()` through the node's stub base,
+  `now - self.last` by `Time.__sub__`'s overload for a Time).
 
 Anything else is unknown (None), and the interpreter then reports nothing new. The
 model is computed on demand, once per module and question, and another module's
@@ -33,7 +37,9 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from robotfix.analysis import imported
+from robotfix.analysis.imported import resolve_library
 from robotfix.astwalk import children
+from robotfix.stubs import load as stubs
 
 if TYPE_CHECKING:
     from robotfix.analysis.context import FileContext
@@ -56,6 +62,15 @@ class Msg:
 class Obj:
     """An instance of a class of this file (`Driver`) or of another module of the
     tree (`drive_pkg.motor.Driver`)."""
+
+    name: str
+
+
+@dataclass(unsafe_hash=True, repr=False)
+class Lib:
+    """An object of a class a stub describes (`rclpy.time.Time`, `rospy.Duration`),
+    by the stub's qualified name: its properties, methods and operators are the
+    stub's."""
 
     name: str
 
@@ -88,7 +103,7 @@ class Maybe:
     type: Type
 
 
-Type = Msg | Obj | Seq | Tup | Map | Maybe
+Type = Msg | Obj | Lib | Seq | Tup | Map | Maybe
 
 SEQUENCE_FORMS = frozenset(
     {"list", "set", "frozenset", "deque", "Sequence", "MutableSequence"}
@@ -102,6 +117,13 @@ MAP_FORMS = frozenset(
 LOOKED_THROUGH = frozenset(
     {"Annotated", "Final", "ClassVar", "Required", "NotRequired"}
 )
+# the stubs' operator methods (`Time.__sub__`) by the AST's operator
+OPERATOR_METHODS = {
+    ast.Add: "__add__",
+    ast.Sub: "__sub__",
+    ast.Mult: "__mul__",
+    ast.Div: "__truediv__",
+}
 MAX_DEPTH = 12  # inference follows at most this many names, calls and returns
 
 
@@ -237,7 +259,42 @@ class TypeModel:
             found = imported.resolve(self.ctx.resolver, dotted)
             if isinstance(found, imported.ClassSummary):
                 return Obj(dotted)
+            if found is None:  # `last: Time`, `dict[int, rospy.Duration]`
+                return self.library(dotted)
         return None
+
+    def library(self, qualified: str | None) -> Type | None:
+        """What a stub's class name stands for (an annotation, a stub's return):
+        a message of the catalog, an object of a stub class, else None."""
+        if not qualified:
+            return None
+        msg_type = self.ctx.msg_type_named(qualified)
+        if msg_type is not None:
+            return Msg(msg_type)
+        found = resolve_library(self.ctx, qualified)
+        return Lib(found.qualname) if isinstance(found, stubs.Class) else None
+
+    def library_bases(self, class_name: str) -> list[stubs.Class]:
+        """The stub classes a class of this file derives from (`Node`), nearest
+        first, through the file's classes it derives from."""
+        found: list[stubs.Class] = []
+        for name in self._up(class_name):
+            node = self.program.classes[name].node
+            for base in node.bases if isinstance(node, ast.ClassDef) else ():
+                if isinstance(base, ast.Name) and base.id in self.program.classes:
+                    continue
+                qualified = self.ctx.qualname(base)
+                cls = resolve_library(self.ctx, qualified) if qualified else None
+                if isinstance(cls, stubs.Class):
+                    found.append(cls)
+        return found
+
+    def _stub_member(self, owner: Type | None, attr: str) -> stubs.Function | None:
+        """The stub method or property `attr` of an object of a stub class."""
+        cls = resolve_library(self.ctx, owner.name) if isinstance(owner, Lib) else None
+        if not isinstance(cls, stubs.Class):
+            return None
+        return imported.stub_set_of(self.ctx).member(cls, attr)
 
     # -- what the interpreter asks --------------------------------------------
     def parameter(self, function: Function, name: str) -> Type | None:
@@ -483,6 +540,30 @@ class TypeModel:
             )
         if kind is ast.NamedExpr:
             return self.infer(node.value, function, env)  # type: ignore[attr-defined]
+        if kind is ast.BinOp:
+            return self._operation(node, function, env)  # type: ignore[arg-type]
+        return None
+
+    def _operation(
+        self,
+        node: ast.BinOp,
+        function: Function | None,
+        env: dict[str, Type | None] | None,
+    ) -> Type | None:
+        """`now - self.last`: what the left operand's operator method returns (its
+        `@overload` for the right operand's class), when the left operand is of a
+        stub class (the reflected methods are the interpreter's: they need the
+        other operand's kind, a value's)."""
+        name = OPERATOR_METHODS.get(type(node.op))
+        left = plain(self.infer(node.left, function, env))
+        if name is None or not isinstance(left, Lib):
+            return None
+        right = plain(self.infer(node.right, function, env))
+        keys = [f"{name}:{right.name}", name] if isinstance(right, Lib) else [name]
+        for key in keys:
+            method = self._stub_member(left, key)
+            if method is not None:
+                return self.library(method.returns_type)
         return None
 
     def _comprehension(
@@ -526,9 +607,12 @@ class TypeModel:
                 and not self._is_local(owner.id, function)
             ):  # Path.turn()
                 return self._method_returns(owner.id, func.attr)
-            receiver = plain(self.infer(owner, function, env))
+            receiver = plain(self._receiver(owner, function, env))
             if isinstance(receiver, Obj):  # self.make(), cls.make(), driver.read()
                 return self._method_returns(receiver.name, func.attr)
+            if isinstance(receiver, Lib):  # self.get_clock().now(), last.to_msg()
+                method = self._stub_member(receiver, func.attr)
+                return self.library(method.returns_type) if method else None
             interface = self.ctx.interface_of(owner)  # AddTwoInts.Request()
             if interface is not None:
                 found = self.ctx.msg_type_named(
@@ -547,18 +631,40 @@ class TypeModel:
                 return Obj(dotted)
             if isinstance(known, imported.FunctionSummary):
                 return known.result
+            if known is None:  # rospy.Time.now(), Time(), Duration.from_msg(m)
+                stub = resolve_library(self.ctx, dotted)
+                if isinstance(stub, stubs.Class):
+                    return Lib(stub.qualname)
+                if isinstance(stub, stubs.Function) and stub.kind != "property":
+                    return self.library(stub.returns_type)
         return None
 
-    def _method_returns(self, class_name: str, method: str) -> Type | None:
+    def _receiver(
+        self,
+        owner: ast.expr,
+        function: Function | None,
+        env: dict[str, Type | None] | None,
+    ) -> Type | None:
+        """What a method is called on: `self` (or `cls`) is an instance of its
+        class, anything else is inferred."""
+        if _is_self(owner, function, env):
+            return Obj(function.class_name)  # type: ignore[union-attr,arg-type]
+        return self.infer(owner, function, env)
+
+    def _method_returns(self, class_name: str, method_name: str) -> Type | None:
         """What `method` of an instance of `class_name` returns (the first class up
         from it that defines the method)."""
         if class_name in self.program.classes:
             for name in self._up(class_name):
-                key = f"{name}.{method}"
+                key = f"{name}.{method_name}"
                 if key in self.program.functions:
                     return self.returns(key)
+            for cls in self.library_bases(class_name):  # `Node.get_clock()`
+                method = imported.stub_set_of(self.ctx).member(cls, method_name)
+                if method is not None and method.kind != "property":
+                    return self.library(method.returns_type)
             return None
-        found = imported.resolve(self.ctx.resolver, f"{class_name}.{method}")
+        found = imported.resolve(self.ctx.resolver, f"{class_name}.{method_name}")
         return found.result if isinstance(found, imported.FunctionSummary) else None
 
     def _attribute(
@@ -568,20 +674,28 @@ class TypeModel:
         env: dict[str, Type | None] | None,
     ) -> Type | None:
         owner = node.value
-        if (
-            isinstance(owner, ast.Name)
-            and function is not None
-            and function.class_name is not None
-            and function.is_method
-            and owner.id == _first_param(function)
-            and (env is None or owner.id not in env)
-        ):
-            return self.attribute(function.class_name, node.attr)
+        if _is_self(owner, function, env):
+            return self.attribute(function.class_name, node.attr)  # type: ignore[union-attr,arg-type]
         base = plain(self.infer(owner, function, env))
         if isinstance(base, Msg):
             return self.field(base.name, node.attr)
         if isinstance(base, Obj):
             return self.attribute(base.name, node.attr)
+        if isinstance(base, Lib):  # a stub class's property or attribute
+            member = self._stub_member(base, node.attr)
+            if member is not None:
+                return (
+                    self.library(member.returns_type)
+                    if member.kind == "property"
+                    else None
+                )
+            cls = resolve_library(self.ctx, base.name)
+            known = (
+                imported.stub_set_of(self.ctx).attribute(cls, node.attr)
+                if isinstance(cls, stubs.Class)
+                else None
+            )
+            return self.library(known.type) if known is not None else None
         return None
 
     def field(self, msg_type: str, name: str) -> Type | None:
@@ -837,6 +951,21 @@ def _returns(node: ast.AST) -> list[ast.Return]:
         ):
             todo.extend(children(child))
     return found
+
+
+def _is_self(
+    owner: ast.expr, function: Function | None, env: dict[str, Type | None] | None
+) -> bool:
+    """Whether `owner` is the first parameter of a method (`self`, `cls`), not
+    rebound by a comprehension."""
+    return (
+        isinstance(owner, ast.Name)
+        and function is not None
+        and function.class_name is not None
+        and function.is_method
+        and owner.id == _first_param(function)
+        and (env is None or owner.id not in env)
+    )
 
 
 def _first_param(function: Function) -> str | None:

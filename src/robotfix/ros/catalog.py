@@ -84,6 +84,13 @@ ALIASES = {
     "time": "builtin_interfaces/Time",
     "duration": "builtin_interfaces/Duration",
 }
+# A ROS 1 `time` or `duration` field holds genpy's Time or Duration, whose fields
+# are `secs` and `nsecs` (rosbags' ROS 1 store spells them as ROS 2 does); a ROS 1
+# distribution's catalog names them so (their units: rep103.toml).
+GENPY_TIME = {
+    "builtin_interfaces/Time": (("secs", "uint32"), ("nsecs", "uint32")),
+    "builtin_interfaces/Duration": (("secs", "int32"), ("nsecs", "int32")),
+}
 
 
 @dataclass(frozen=True)
@@ -1015,7 +1022,10 @@ class MsgCatalog:
     def _from_standard(self, key: str) -> MsgSpec:
         entry = self._standard()[key]
         fields = {}
-        for name, type_, array, *size in entry["fields"]:
+        listed = entry["fields"]
+        if key in GENPY_TIME and STORES.get(self._distro, ("",))[0].startswith("ros1"):
+            listed = [[name, type_, False] for name, type_ in GENPY_TIME[key]]
+        for name, type_, array, *size in listed:
             package = key.split("/")[0]
             fs = self._field(name, type_, array, package)
             fields[name] = fs or FieldSpec(name, "unknown", None, array)

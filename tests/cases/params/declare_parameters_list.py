@@ -30,4 +30,8 @@ class Battery(Node):
 
     def check(self) -> None:
         low: Annotated[float, "0 <= _ <= 1"] = self.get_parameter("thresholds.low").value
-        cells: Annotated[int, "_ > 0"] = self.get_parameter("thresholds.cells").value  # warning: RF102
+        count = self.get_parameter("thresholds.cells").value  # no range: any int
+        cells: Annotated[int, "_ > 0"] = count  # warning: RF102
+        # assigned straight from the read, the refinement is the parameter's (its
+        # default 4 is checked against it, and parameter files are)
+        at_least_one: Annotated[int, "_ > 0"] = self.get_parameter("thresholds.cells").value

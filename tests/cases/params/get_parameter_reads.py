@@ -1,6 +1,9 @@
 """`get_parameter(name).value` is an unknown of the declared type within the
-declared range: a refinement the range implies needs no assert, one it does not
-is a warning, one no value in the range satisfies is an error."""
+declared range: a refinement the range implies needs no assert, one no value in the
+range satisfies is an error. Assigned straight to a refined target, a read of a
+parameter its class declares makes the refinement the parameter's (its default and
+parameter files are checked against it: `params/declared_then_read.py`); stored
+first in a plain variable, a refinement the range does not imply is a warning."""
 from typing import Annotated
 
 from rclpy.node import Node
@@ -37,7 +40,9 @@ class Controller(Node):
 
     def step(self) -> None:
         gain: Annotated[float, "0 <= _ <= 1"] = self.get_parameter("gain").value
-        half: Annotated[float, "_ <= 0.5"] = self.get_parameter("gain").value  # warning: RF102
+        read_gain = self.get_parameter("gain").value
+        half: Annotated[float, "_ <= 0.5"] = read_gain  # warning: RF102
+        attached: Annotated[float, "_ <= 0.5"] = self.get_parameter("gain").value
         same: Annotated[float, "_ <= 1"] = (
             self.get_parameter("gain").get_parameter_value().double_value
         )
@@ -47,9 +52,13 @@ class Controller(Node):
         zero: Annotated[int, "_ == 0"] = (
             self.get_parameter("gain").get_parameter_value().integer_value
         )
-        mode: Annotated[str, "_ == 'fast' or _ == 'slow'"] = self.get_parameter("mode").value  # warning: RF102
-        wheels: Annotated[int, "_ > 0"] = self.get_parameter("wheels").value  # warning: RF102
-        radius: Annotated[float, "_ <= 1"] = self.get_parameter("radius").value  # warning: RF102
+        read_mode = self.get_parameter("mode").value
+        mode: Annotated[str, "_ == 'fast' or _ == 'slow'"] = read_mode  # warning: RF102
+        read_wheels = self.get_parameter("wheels").value
+        wheels: Annotated[int, "_ > 0"] = read_wheels  # warning: RF102
+        read_radius = self.get_parameter("radius").value
+        radius: Annotated[float, "_ <= 1"] = read_radius  # warning: RF102
+        radius_ok: Annotated[float, "_ <= 1"] = self.get_parameter("radius").value
         limit: Annotated[float, "_ <= 2"] = self.get_parameter("limit").value  # attached where declared
         other: Annotated[float, "_ < 1"] = self.get_parameter("undeclared").value  # warning: RF102
 
