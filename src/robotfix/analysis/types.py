@@ -33,6 +33,7 @@ types come through its summary (`imported.ClassSummary.types`,
 from __future__ import annotations
 
 import ast
+import weakref
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -185,7 +186,9 @@ class TypeModel:
 
     def __init__(self, ctx: FileContext, program: Program) -> None:
         self.ctx = ctx
-        self.program = program
+        # the program owns the model: a strong reference back would be a cycle
+        # that keeps the file's tree alive until the cycle collector runs
+        self._program = weakref.ref(program)
         self._attributes: dict[tuple[str, str], Type | None] = {}
         self._returns: dict[str, Type | None] = {}
         self._assigned: dict[str, dict[str, list[tuple[ast.expr, Function]]]] | None
@@ -194,6 +197,12 @@ class TypeModel:
         self._declared: dict[str, dict[str, ast.expr]] | None = None
         self._busy: set[object] = set()  # questions being answered (recursion)
         self._families: dict[str, list[str]] = {}
+
+    @property
+    def program(self) -> Program:
+        program = self._program()
+        assert program is not None, "asked after its program was freed"
+        return program
 
     # -- annotations -----------------------------------------------------------
     def annotation(self, node: ast.expr | None) -> Type | None:
