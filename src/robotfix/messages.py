@@ -459,6 +459,31 @@ def implicit_operand_change(
     return Diagnostic(rules.IMPLICIT_UNIT_CHANGE, path, span, message)
 
 
+def folded_conversion(
+    path: str,
+    span: Span,
+    stmt: str,
+    what: str,
+    expected: Unit,
+    got: Unit,
+    scale: float,
+    declared: Declared | None = None,
+) -> Diagnostic:
+    """RF203: literal factors that do not hold the conversion a value needs, one of
+    which (`scale`) may be that conversion folded with a gain into one number
+    (`d_cm * 0.02` into m).
+    `what`: "gives `x`" ... or "compares" ..., the sentence's verb and object."""
+    gain = scale * expected.factor / got.factor
+    fix = conversion(got, expected)
+    message = (
+        f"`{stmt}` {what} a value in {got}, where {expected} is expected: if the "
+        f"literal {scale:.6g} is the conversion ({fix}) and a gain of {gain:.6g} "
+        "folded into one number, write them apart so each can be checked"
+    )
+    notes = (declared.note(),) if declared is not None else ()
+    return Diagnostic(rules.IMPLICIT_UNIT_CHANGE, path, span, message, notes)
+
+
 def operand_units(
     path: str, span: Span, expr: str, op: str, left: Unit, right: Unit
 ) -> Diagnostic:

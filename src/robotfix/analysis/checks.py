@@ -258,6 +258,20 @@ class Checker:
                 )
             )
             return True
+        if found.kind == "folded":  # `d_cm * 0.02` into m: maybe / 100 * 2
+            self.ctx.report(
+                messages.folded_conversion(
+                    self.path,
+                    span,
+                    stmt,
+                    f"gives {target}",
+                    expected,
+                    found.got,
+                    found.scale,
+                    declared,
+                )
+            )
+            return True
         self.ctx.report(
             messages.unit_mismatch(
                 self.path,

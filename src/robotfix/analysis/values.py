@@ -102,9 +102,9 @@ class Value:
     keys: tuple[Value, ...] | None = None  # dict
     uninit: Uninit | None = None
     # The number literals this value was multiplied by since it got its unit, each
-    # chain of them in one expression folded into one factor: `speed / 3.6` is km/h
-    # scaled by 1/3.6, a conversion to m/s; `avg * 2 * math.pi / 60` with
-    # `avg = (l + r) / 2` holds 1/2 and 2*pi/60 (`units.fit` tells them apart).
+    # literal of a chain a factor of its own: `speed / 3.6` is km/h scaled by 1/3.6,
+    # a conversion to m/s; `avg * 2 * math.pi / 60` with `avg = (l + r) / 2` holds
+    # 1/2, 2, pi and 1/60 (`units.fit` tells conversions and gains apart).
     factors: Factors = ()
     default_of: tuple[int, str] | None = field(default=None, compare=False)
     # Computed by a product or quotient with a length: one power of radian may cancel
