@@ -530,6 +530,13 @@ class ExpressionEvaluator:
                 v.unit is not None and not v.literal and _has_length(v.unit)
                 for v in (left, right)
             )
+        # `-math.degrees(x) / 2.`: a literal factor keeps the call that gave the unit
+        scaled = right if left.literal else left
+        done = (
+            scaled.conversion
+            if op in "*/" and left.literal != right.literal and unit == scaled.unit
+            else None
+        )
         kind = self.numeric_kind(left, right, op)
         if kind is None or left.term is None or right.term is None:
             return replace(
@@ -537,10 +544,18 @@ class ExpressionEvaluator:
                 uninit=uninit,
                 factors=factors,
                 rad_free=rad_free,
+                conversion=done,
             )
         term = A.Binary(op, left.term, right.term)
         return Value(
-            kind, term, unit, literal, uninit=uninit, factors=factors, rad_free=rad_free
+            kind,
+            term,
+            unit,
+            literal,
+            uninit=uninit,
+            factors=factors,
+            rad_free=rad_free,
+            conversion=done,
         )
 
     def object_operation(
