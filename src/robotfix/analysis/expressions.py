@@ -675,25 +675,28 @@ class ExpressionEvaluator:
             )
             return kept.unit, False
         folded = [
-            (found, side, other)
-            for found, side, other in ((there, right, left), (back, left, right))
+            (found, other, unit)
+            for found, other, unit in (
+                (there, left, left.unit),
+                (back, right, right.unit),
+            )
             if found is not None and found.kind == "folded"
         ]
         if folded:  # `d < d_cm * 0.02`: maybe `/ 100 * 2` in one number (RF203)
-            found, side, other = folded[0]
+            found, other, unit = folded[0]
             self.ctx.report(
                 messages.folded_conversion(
                     self.ctx.source.path,
                     self.ctx.source.span(node),
                     text,
-                    f"combines {other.unit} with",
-                    converted(other.unit, other.factors),
+                    f"combines {unit} with",
+                    converted(unit, other.factors),
                     found.got,
                     found.scale,
                 ),
                 once=("operands", id(node)),
             )
-            return other.unit, False
+            return unit, False
         self.ctx.report(
             messages.operand_units(
                 self.ctx.source.path,
