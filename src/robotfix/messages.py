@@ -372,10 +372,13 @@ def unit_mismatch(
     declared: Declared,
     aligned: Unit | None = None,
     twice: float | None = None,
+    called: tuple[str, Unit] | None = None,
 ) -> Diagnostic:
     """`aligned`: the value's unit over the expected dimensions, when only the
     scale differs once the radian cancels (`omega_deg * r`); `twice`: the literal
-    factor that converted a value already in `expected` (`p_s * 1000` into s)."""
+    factor that converted a value already in `expected` (`p_s * 1000` into s);
+    `called`: the conversion call that last changed the value's unit and its
+    argument's unit (`math.degrees`, rad): the advice is about that call."""
     message = (
         f"`{stmt}` gives {target} a value in {got}, but {target} {_is(target)} in "
         f"{expected}"
@@ -386,9 +389,8 @@ def unit_mismatch(
         if dict(got.dims).get("radian") and math.isclose(ratio, math.pi / 180):
             fix = f"use math.radians() on the angle to convert {got} to {expected}"
         fix = fix.replace(f"convert {aligned} to", f"convert {got} to")
-        for call, back in (("degrees", "radians"), ("radians", "degrees")):
-            if f"use math.{back}()" in fix and f"{call}(" in stmt:
-                fix = f"remove `{call}()`: the value is in {expected} without it"
+    if called is not None:
+        fix = _called_fix(called, expected) or fix
     if twice is not None:
         how = (
             f"multiplying by {twice:.6g}"
@@ -405,6 +407,25 @@ def unit_mismatch(
     return Diagnostic(rules.UNIT_MISMATCH, path, span, message, tuple(notes))
 
 
+def _called_fix(called: tuple[str, Unit], expected: Unit) -> str:
+    """Advice on the conversion call that gave a value its wrong unit: remove it
+    when its argument is in the expected unit, swap it for the call that converts
+    the argument when `conversion` names one (`math.degrees(deg)` into rad)."""
+    call, argument = called
+    if argument.same_as(expected):
+        return f"remove `{call}()`: the value is in {expected} without it"
+    fix = conversion(argument, expected)
+    for name in ("radians", "degrees"):
+        if fix.startswith(f"use math.{name}()"):
+            module = call.rpartition(".")[0]
+            other = f"{module}.{name}" if module else name
+            return (
+                f"use `{other}()` in place of `{call}()` (its argument is in "
+                f"{argument})"
+            )
+    return ""
+
+
 def _is(target: str) -> str:
     """The verb for a target: "the elements of `ranges`" are in m."""
     return "are" if target.startswith("the elements of") else "is"
@@ -416,7 +437,7 @@ def converted_twice(
     """RF201: a conversion (`math.radians`) of a value already in its result's unit;
     the fix is to drop it, not to convert back."""
     message = (
-        f"`{stmt}` applies {function}() to a value already in {got}: drop the call, "
+        f"`{stmt}` applies `{function}()` to a value already in {got}: drop the call, "
         "it would convert a second time"
     )
     return Diagnostic(rules.UNIT_MISMATCH, path, span, message, (declared.note(),))
@@ -457,6 +478,31 @@ def implicit_operand_change(
         f"(`Annotated[float, \"Unit('{unit}')\"]`)"
     )
     return Diagnostic(rules.IMPLICIT_UNIT_CHANGE, path, span, message)
+
+
+def folded_conversion(
+    path: str,
+    span: Span,
+    stmt: str,
+    what: str,
+    expected: Unit,
+    got: Unit,
+    scale: float,
+    declared: Declared | None = None,
+) -> Diagnostic:
+    """RF203: literal factors that do not hold the conversion a value needs, one of
+    which (`scale`) may be that conversion folded with a gain into one number
+    (`d_cm * 0.02` into m).
+    `what`: "gives `x`" ... or "compares" ..., the sentence's verb and object."""
+    gain = scale * expected.factor / got.factor
+    fix = conversion(got, expected)
+    message = (
+        f"`{stmt}` {what} a value in {got}, where {expected} is expected: if the "
+        f"literal {scale:.6g} is the conversion ({fix}) and a gain of {gain:.6g} "
+        "folded into one number, write them apart so each can be checked"
+    )
+    notes = (declared.note(),) if declared is not None else ()
+    return Diagnostic(rules.IMPLICIT_UNIT_CHANGE, path, span, message, notes)
 
 
 def operand_units(

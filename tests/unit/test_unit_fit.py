@@ -121,3 +121,41 @@ def test_a_conversion_of_a_value_already_in_the_target_unit_is_a_mismatch() -> N
     assert fit(seconds, seconds, (2.0,)).kind == "ok"
     assert fit(resolve("1"), resolve("1"), (1000.0,)).kind == "ok"  # a count
     assert fit(resolve("m"), resolve("m"), (60.0,)).kind == "ok"  # not a length's
+
+
+def test_a_gain_beside_a_conversion_keeps_the_conversion() -> None:
+    """Each literal of a chain is a factor of its own (the fresh tester's m7: `2 *
+    D_CM / 100` into m was "divide by 100", an error on correct code)."""
+    cm, m, s, ms = resolve("cm"), resolve("m"), resolve("s"), resolve("ms")
+    assert fit(cm, m, (2.0, 0.01)).kind == "ok"
+    assert fit(cm, m, (0.01, 2.0)).kind == "ok"
+    assert fit(resolve("km/h"), resolve("m/s"), (0.5, 1 / 3.6)).kind == "ok"
+    assert fit(s, ms, (1000.0, 1.5)).kind == "ok"
+    assert fit(s, ms, (1.5, 1000.0)).kind == "ok"
+    rpm = (2.0, math.pi, 1 / 60)  # `rpm * 2.0 * math.pi / 60.0`, unfolded
+    assert fit(resolve("rpm"), resolve("rad/s"), rpm).kind == "ok"
+    assert fit(resolve("rpm"), resolve("rad/s"), (0.5, *rpm)).kind == "ok"
+
+
+def test_a_conversion_split_over_literals_still_converts_twice() -> None:
+    rad = resolve("rad")
+    twice = fit(rad, rad, (180.0, 1 / math.pi))  # `pos * 180 / math.pi`
+    assert twice.kind == "mismatch" and str(twice.got) == "degree"
+    again = fit(resolve("s"), resolve("s"), (1000.0, 1.5))  # `x_s * 1000 * 1.5`
+    assert (again.kind, again.twice) == ("mismatch", 1000.0)
+    assert fit(resolve("s"), resolve("s"), (1000.0, 1e-3)).kind == "ok"
+
+
+def test_a_literal_nearer_the_conversion_than_one_may_fold_a_gain() -> None:
+    """`d_cm * 0.02` into m may be `/ 100 * 2` in one number: a warning; `2 *
+    d_cm` (2 is farther from 1/100 than 1 is) is still in cm: an error."""
+    cm, m = resolve("cm"), resolve("m")
+    folded = fit(cm, m, (0.02,))
+    assert (folded.kind, folded.scale, str(folded.got)) == ("folded", 0.02, "cm")
+    assert fit(cm, m, (2.0,)).kind == "mismatch"
+    assert fit(cm, m, (0.5,)).kind == "mismatch"
+    assert fit(cm, m, ()).kind == "mismatch"
+    assert fit(resolve("s"), resolve("ms"), (1500.0,)).kind == "folded"
+    assert fit(resolve("rpm"), resolve("rad/s"), (0.5, 0.5)).kind == "mismatch"
+    assert fit(cm, m, (-0.02,)).kind == "folded"
+    assert fit(cm, m, (math.inf,)).kind == "mismatch"

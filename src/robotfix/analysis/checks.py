@@ -258,6 +258,22 @@ class Checker:
                 )
             )
             return True
+        done = value.conversion
+        called = None if done is None else (done.call, done.argument)
+        if found.kind == "folded":  # `d_cm * 0.02` into m: maybe / 100 * 2
+            self.ctx.report(
+                messages.folded_conversion(
+                    self.path,
+                    span,
+                    stmt,
+                    f"gives {target}",
+                    expected,
+                    found.got,
+                    found.scale,
+                    declared,
+                )
+            )
+            return True
         self.ctx.report(
             messages.unit_mismatch(
                 self.path,
@@ -269,7 +285,9 @@ class Checker:
                 declared,
                 found.aligned,
                 found.twice,
-            )
+                called,
+            ),
+            once=None if done is None else done.twice,  # replaces the deferred one
         )
         return False
 

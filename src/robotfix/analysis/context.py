@@ -106,6 +106,8 @@ class FileContext:
         # when first needed)
         self.follow_lists: bool | None = None
         self._reported: set[tuple[object, ...]] = set()
+        # reports a later one at the same statement may replace (`defer`)
+        self._deferred: dict[tuple[object, ...], Diagnostic] = {}
         # RF511 notes, kept only if the file turns out RobotFix-like (`metadata_notes`)
         self._metadata_notes: list[Diagnostic] = []
         self.uses_refinements = False  # some annotation of the file is a refinement
@@ -239,6 +241,21 @@ class FileContext:
                 return
             self._reported.add(once)
         self.diagnostics.append(diag)
+
+    def defer(self, diag: Diagnostic, once: tuple[object, ...]) -> None:
+        """Report `diag` at the end of the statement (`flush`), unless a report
+        with the same `once` key comes first: one bug, one diagnostic, the one
+        that knows most (`math.degrees(deg)` stored into rad: "use
+        `math.radians()`", not "drop the call")."""
+        if not self.muted and once not in self._reported:
+            self._deferred.setdefault(once, diag)
+
+    def flush(self) -> None:
+        """Report what `defer` kept and nothing replaced."""
+        if self._deferred:
+            waiting, self._deferred = self._deferred, {}
+            for once, diag in waiting.items():
+                self.report(diag, once=once)
 
     # -- names ---------------------------------------------------------------
     def record_imports(self, index: FileIndex) -> None:

@@ -89,9 +89,6 @@ class ExpressionEvaluator:
         # the symbol each attribute read last gave (`decisions.py`: two tests of
         # `scan.range_min` read one tracked value)
         self.attribute_terms: dict[int, int] = {}
-        # the products by a number literal, whose factor a literal applied to them
-        # extends (`x * 2.0 * math.pi / 60.0`: one factor, see `factors_of_product`)
-        self.open_chains: set[int] = set()
 
     # -- to be provided by the statement interpreter --------------------------
     def lookup_name(self, name: str, state: State, node: ast.AST) -> Value:
@@ -530,11 +527,18 @@ class ExpressionEvaluator:
             factors, rad_free = left.factors, left.rad_free
         else:
             unit, literal = self.unit_of_product(left, right, op)
-            factors = self.factors_of_product(left, right, op, node)
+            factors = self.factors_of_product(left, right, op)
             rad_free = rad_free or any(
                 v.unit is not None and not v.literal and _has_length(v.unit)
                 for v in (left, right)
             )
+        # `-math.degrees(x) / 2.`: a literal factor keeps the call that gave the unit
+        scaled = right if left.literal else left
+        done = (
+            scaled.conversion
+            if op in "*/" and left.literal != right.literal and unit == scaled.unit
+            else None
+        )
         kind = self.numeric_kind(left, right, op)
         if kind is None or left.term is None or right.term is None:
             return replace(
@@ -542,10 +546,18 @@ class ExpressionEvaluator:
                 uninit=uninit,
                 factors=factors,
                 rad_free=rad_free,
+                conversion=done,
             )
         term = A.Binary(op, left.term, right.term)
         return Value(
-            kind, term, unit, literal, uninit=uninit, factors=factors, rad_free=rad_free
+            kind,
+            term,
+            unit,
+            literal,
+            uninit=uninit,
+            factors=factors,
+            rad_free=rad_free,
+            conversion=done,
         )
 
     def object_operation(
@@ -587,12 +599,11 @@ class ExpressionEvaluator:
             return self.unknown(node, unit=left.unit.raised(exponent))
         return self.unknown(node)
 
-    def factors_of_product(
-        self, left: Value, right: Value, op: str, node: ast.BinOp
-    ) -> Factors:
-        """Literal factors carried along (see `Value.factors`). A chain of them in
-        one expression is folded into one: `rpm * 2.0 * math.pi / 60.0` holds
-        2*pi/60, the rpm -> rad/s conversion."""
+    def factors_of_product(self, left: Value, right: Value, op: str) -> Factors:
+        """Literal factors carried along (see `Value.factors`), each literal of a
+        chain on its own: `rpm * 2.0 * math.pi / 60.0` holds 2, pi and 1/60, which
+        together are the rpm -> rad/s conversion, and `2 * d_cm / 100` a gain of 2
+        and the cm -> m conversion (`units.fit` tells them apart)."""
         if left.literal == right.literal:
             if left.literal:
                 return ()
@@ -604,17 +615,12 @@ class ExpressionEvaluator:
             return ()
         if right.literal:
             factor = number if op == "*" else 1 / number
-            held, inner = left.factors, node.left
+            held = left.factors
         else:  # `1000.0 / hz`: a period (1/Hz) scaled by 1000, i.e. in ms
             factor = number
             held = right.factors if op == "*" else tuple(1 / f for f in right.factors)
-            inner = node.right
-        if held and id(inner) in self.open_chains:
-            self.open_chains.add(id(node))
-            return (*held[:-1], held[-1] * factor)
         if factor == 1:
             return held
-        self.open_chains.add(id(node))
         return (*held, factor)
 
     def numeric_kind(self, left: Value, right: Value, op: str) -> str | None:
@@ -670,6 +676,29 @@ class ExpressionEvaluator:
                 once=("operands", id(node)),
             )
             return kept.unit, False
+        folded = [
+            (found, other, unit)
+            for found, other, unit in (
+                (there, left, left.unit),
+                (back, right, right.unit),
+            )
+            if found is not None and found.kind == "folded"
+        ]
+        if folded:  # `d < d_cm * 0.02`: maybe `/ 100 * 2` in one number (RF203)
+            found, other, unit = folded[0]
+            self.ctx.report(
+                messages.folded_conversion(
+                    self.ctx.source.path,
+                    self.ctx.source.span(node),
+                    text,
+                    f"combines {unit} with",
+                    converted(unit, other.factors),
+                    found.got,
+                    found.scale,
+                ),
+                once=("operands", id(node)),
+            )
+            return unit, False
         self.ctx.report(
             messages.operand_units(
                 self.ctx.source.path,

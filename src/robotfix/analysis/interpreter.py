@@ -112,6 +112,7 @@ def analyze_module(ctx: FileContext) -> None:
             seen.add(id(node))
             if memo is None:
                 pending.extend(_analyze_body(ctx, program, node, parent, statics))
+                ctx.flush()
                 continue
             pending.extend(
                 memo.analyze(
@@ -121,6 +122,7 @@ def analyze_module(ctx: FileContext) -> None:
                     partial(_run_body, ctx, program, statics=statics),
                 )
             )
+    ctx.flush()
     ctx.metadata_notes()
 
 
@@ -264,6 +266,7 @@ class Interpreter(CallEvaluator):
             self.site = stmt
             method = getattr(self, f"visit_{type(stmt).__name__}", None)
             state = method(stmt, state) if method else self.generic(stmt, state)
+            self.ctx.flush()
         return state
 
     def generic(self, stmt: ast.stmt, state: State) -> State:

@@ -21,7 +21,7 @@ from robotfix.analysis.imported import resolve_library
 from robotfix.analysis.param_eval import ParameterEvaluator
 from robotfix.analysis.state import State
 from robotfix.analysis.types import OPERATOR_METHODS
-from robotfix.analysis.values import Value
+from robotfix.analysis.values import Conversion, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import NUMBERS, named_number
@@ -331,7 +331,7 @@ class LibraryEvaluator(ParameterEvaluator):
                 self.unit_of_sum(values[0], other, node, short)
             return None  # the result is as annotated
         if rule == "scale":
-            return self._scaled(function, first, state)
+            return self._scaled(function, first, node)
         if rule == "root":
             root = (
                 _root(first.unit)
@@ -356,11 +356,13 @@ class LibraryEvaluator(ParameterEvaluator):
         return value.with_unit(unit) if value.term is not None else value
 
     def _scaled(
-        self, function: stubs.Function, first: Value, state: State
+        self, function: stubs.Function, first: Value, node: ast.Call
     ) -> Value | None:
         """`radians(x)`: x times the ratio of the parameter's unit to the result's.
         The argument may carry more than the angle (`radians(deg_s)` is in rad/s);
-        one already in the result's unit (`radians(yaw)`, yaw in rad) is a bug."""
+        one already in the result's unit (`radians(yaw)`, yaw in rad) is a bug. The
+        result records the call and its argument's unit (`Conversion`), so a unit
+        message says which call to remove or swap."""
         param = function.params[0].decl if function.params else None
         result = function.returns
         if param is None or param.unit is None or result is None:
@@ -371,6 +373,7 @@ class LibraryEvaluator(ParameterEvaluator):
         term = A.Binary("*", first.term, A.Num(Fraction(factor), False))
         if first.unit is None or first.literal:
             return Value("float", term, result.unit, first.literal)
+        call = self.ctx.source.segment(node.func) or function.short
         angle = {d for d, _ in result.unit.dims}
         converted = (
             angle <= {d for d, _ in first.unit.dims}
@@ -386,19 +389,17 @@ class LibraryEvaluator(ParameterEvaluator):
                 function.line if function.path else None,
                 f"by the stub {function.origin} shipped with RobotFix",
             )
-            self.ctx.report(
+            key = ("converted-twice", id(node))
+            self.ctx.defer(
                 messages.converted_twice(
-                    self.ctx.source.path,
-                    span,
-                    stmt,
-                    function.short,
-                    first.unit,
-                    declared,
-                )
+                    self.ctx.source.path, span, stmt, call, first.unit, declared
+                ),
+                key,
             )
-            return Value("float", term, result.unit)
+            done = Conversion(call, first.unit, key)
+            return Value("float", term, result.unit, conversion=done)
         unit = named(Unit(first.unit.dims, first.unit.factor / factor, text=""))
-        return Value("float", term, unit)
+        return Value("float", term, unit, conversion=Conversion(call, first.unit))
 
     def _stubs(self) -> stubs.StubSet:
         return imported.stub_set_of(self.ctx)

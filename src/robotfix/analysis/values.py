@@ -67,6 +67,18 @@ class Kept:
 
 
 @dataclass(frozen=True)
+class Conversion:
+    """The last change of a value's unit, when a conversion call made it: `call`
+    (the callee as written, `math.degrees`) of an argument in `argument`. `twice`:
+    the argument was in the result's unit already, and the report of that waits
+    under this key (`FileContext.defer`) for a better one at the same statement."""
+
+    call: str
+    argument: Unit
+    twice: tuple[object, ...] | None = None
+
+
+@dataclass(frozen=True)
 class Uninit:
     """A read of a name that holds nothing on this path."""
 
@@ -102,9 +114,9 @@ class Value:
     keys: tuple[Value, ...] | None = None  # dict
     uninit: Uninit | None = None
     # The number literals this value was multiplied by since it got its unit, each
-    # chain of them in one expression folded into one factor: `speed / 3.6` is km/h
-    # scaled by 1/3.6, a conversion to m/s; `avg * 2 * math.pi / 60` with
-    # `avg = (l + r) / 2` holds 1/2 and 2*pi/60 (`units.fit` tells them apart).
+    # literal of a chain a factor of its own: `speed / 3.6` is km/h scaled by 1/3.6,
+    # a conversion to m/s; `avg * 2 * math.pi / 60` with `avg = (l + r) / 2` holds
+    # 1/2, 2, pi and 1/60 (`units.fit` tells conversions and gains apart).
     factors: Factors = ()
     default_of: tuple[int, str] | None = field(default=None, compare=False)
     # Computed by a product or quotient with a length: one power of radian may cancel
@@ -114,6 +126,9 @@ class Value:
     # A string the analysis does not know exactly but knows the frame name of (a
     # parameter's default, `analysis/frames.py`); None: no frame known.
     frame: str | None = None
+    # a conversion call that gave the unit, kept through literal factors
+    # (`-math.degrees(x) / 2.`): a unit message's advice comes from it
+    conversion: Conversion | None = field(default=None, compare=False)
 
     @property
     def known_term(self) -> A.Expr:
@@ -133,7 +148,9 @@ class Value:
             and not self.rad_free
         ):
             return self
-        return replace(self, unit=unit, literal=False, factors=(), rad_free=False)
+        return replace(
+            self, unit=unit, literal=False, factors=(), rad_free=False, conversion=None
+        )
 
     @property
     def scale(self) -> float:

@@ -132,7 +132,7 @@ CONVERSIONS: tuple[tuple[float, str | None], ...] = (
     (30 / math.pi, "radian"),
 )
 Factors = tuple[float, ...]
-_MAX_FACTORS = 6  # more folded factors than this are taken as one product
+_MAX_FACTORS = 6  # more literal factors than this are taken as one product
 
 
 @dataclass(frozen=True)
@@ -140,7 +140,9 @@ class Fit:
     """How a value's unit meets the unit expected of it (`fit`).
 
     kind: "ok"; "time" (the dimensions differ by one power of seconds: an implicit
-    gain or time step, RF203); "mismatch". `got` is the unit the value really has
+    gain or time step, RF203); "folded" (only the scale differs, and the literal
+    factors may be the conversion and a gain folded into one number: RF203);
+    "mismatch". `got` is the unit the value really has
     (its converting literal factors applied, frames the target does not name
     dropped); `aligned` is that unit over the expected dimensions when only the
     scale differs (for the conversion advice), else None.
@@ -153,6 +155,8 @@ class Fit:
     # "mismatch" of a value already in the expected unit before its literal factors:
     # the factor that converts it a second time (`p_s * 1000` into s: 1000)
     twice: float | None = None
+    # "folded": the literal that may hold a conversion and a gain (`d_cm * 0.02`)
+    scale: float = 1.0
 
 
 def is_frame(dim: str) -> bool:
@@ -190,26 +194,83 @@ def converts(unit: Unit, factor: float) -> bool:
     return False
 
 
+def _converting(unit: Unit, factors: Factors) -> set[int]:
+    """The positions of the factors that lie in a run of adjacent ones whose
+    product converts (`converts`): `x * 180 / math.pi` holds 180 and 1/pi, which
+    convert only together; `t * 1000 * 1.5` holds 1000 and a plain 1.5."""
+    found: set[int] = set()
+    for start in range(len(factors)):
+        run = 1.0
+        for end in range(start, len(factors)):
+            run *= factors[end]
+            if converts(unit, run):
+                found.update(range(start, end + 1))
+    return found
+
+
 def converted(unit: Unit, factors: Factors) -> Unit:
     """`unit` after the literal factors among `factors` that convert (plain gains
     such as `/ 2` leave a value in its unit): `t_ns / 1e9` is in s."""
-    return effective(unit, product(tuple(f for f in factors if converts(unit, f))))
+    if len(factors) > _MAX_FACTORS:
+        factors = (product(factors),)
+    chosen = _converting(unit, factors)
+    return effective(unit, product(tuple(factors[i] for i in sorted(chosen))))
 
 
 def _accounted(factors: Factors, need: float, unit: Unit) -> bool:
-    """Whether the folded literal factors hold the conversion `need` (a value in
-    `unit` times `need` is in its target's unit) with nothing else that converts:
-    `(l + r) / 2 * 2 * math.pi / 60` holds rpm -> rad/s and a plain 1/2."""
+    """Whether the literal factors hold the conversion `need` (a value in `unit`
+    times `need` is in its target's unit) with nothing else that converts: some of
+    them multiply to `need`, and no run of adjacent others converts. `(l + r) / 2 *
+    2 * math.pi / 60` holds rpm -> rad/s and a plain 1/2; `2 * d_cm / 100` holds cm
+    -> m and a gain of 2; `t_s * 1000 * 1.5` into s holds a conversion too many."""
     if len(factors) > _MAX_FACTORS:
         factors = (product(factors),)
     count = len(factors)
     for mask in range(1 << count):
         chosen = product(tuple(f for i, f in enumerate(factors) if mask >> i & 1))
-        if math.isclose(chosen, need, rel_tol=1e-3) and not any(
-            converts(unit, f) for i, f in enumerate(factors) if not mask >> i & 1
-        ):
+        if not math.isclose(chosen, need, rel_tol=1e-3):
+            continue
+        rest = [f if not mask >> i & 1 else None for i, f in enumerate(factors)]
+        if not any(_converting(unit, run) for run in _runs(rest)):
             return True
     return False
+
+
+def _runs(factors: list[float | None]) -> list[Factors]:
+    """The runs of adjacent factors left (None: taken out)."""
+    runs: list[Factors] = []
+    current: list[float] = []
+    for f in [*factors, None]:
+        if f is None:
+            if current:
+                runs.append(tuple(current))
+            current = []
+        else:
+            current.append(f)
+    return runs
+
+
+def _unconverted(
+    got: Unit, expected: Unit, factors: Factors, raw: Unit, need: float
+) -> Fit:
+    """Only the scale differs and the factors do not hold the conversion. No
+    factor, or one that converts (a wrong conversion, or one applied twice): a
+    mismatch. A plain literal nearer the conversion than 1 may be the conversion
+    folded with a gain into one number (`d_cm * 0.02` into m is `d_cm / 100 * 2`):
+    "folded", a warning. Plain literals farther from it than 1 (`2 * d_cm` into m,
+    `speed_kmh * 2` into m/s, an average's 1/2) leave the value in its own unit."""
+    if factors and not _converting(got, factors):
+        near = [f for f in factors if _nearer(abs(f), need)]
+        if near:
+            return Fit("folded", raw, scale=near[0])
+    return _mismatch(got, expected, factors, raw)
+
+
+def _nearer(factor: float, need: float) -> bool:
+    """Whether `factor` is nearer `need` than 1, by ratio."""
+    if not 0 < factor < math.inf or not 0 < need < math.inf:
+        return False
+    return abs(math.log(factor / need)) < abs(math.log(factor))
 
 
 def fit(
@@ -244,7 +305,7 @@ def fit(
         # `speed * 2` keeps m/s; `speed / 3.6` converts km/h to m/s
         if _accounted(factors, need, got):
             return Fit("ok", effective(got, scale) if scale != 1.0 else raw)
-        return _mismatch(got, expected, factors, raw)
+        return _unconverted(got, expected, factors, raw, need)
     if got.dims == expected.dims:
         same = got.same_as(expected) and math.isclose(scale, 1.0)
         return Fit("ok" if same else "mismatch", effective(got, scale))
@@ -266,7 +327,7 @@ def fit(
             return Fit("mismatch", effective(got, scale))
         if _accounted(factors, need, got):
             return Fit("ok", effective(got, scale))
-        return _mismatch(got, expected, factors, raw)
+        return _unconverted(got, expected, factors, raw, need)
     return _other(diff, raw, scale, got, expected)
 
 

@@ -19,5 +19,7 @@ def drive_converted(pub, speed: Annotated[float, "Unit('km/h') and 0 <= _ < 30"]
 
 def drive_halved(pub, speed: Annotated[float, "Unit('km/h') and 0 <= _ < 30"]) -> None:
     msg = Twist()
-    msg.linear.x = speed * 0.5  # error: RF201
+    msg.linear.x = speed * 2  # error: RF201
+    # 0.5 is nearer 1/3.6 than 1: maybe / 3.6 and a gain of 1.8 in one number
+    msg.linear.x = speed * 0.5  # warning: RF203
     pub.publish(msg)

@@ -40,7 +40,7 @@ class WheelOdometry(Node):
         scan = LaserScan()
         scan.angle_min = -SCAN_FOV / 2.0
         scan.angle_max = SCAN_FOV / 2.0
-        scan.angle_min = -math.degrees(SCAN_FOV) / 2.  # error: RF201
+        scan.angle_min = -math.degrees(SCAN_FOV) / 2.  # error: RF201 "remove `math.degrees()`"
         self.scan_pub.publish(scan)
 
 
