@@ -907,8 +907,7 @@ class Interpreter(CallEvaluator):
                 elif kind in BINDER_KINDS:
                     for name in _binds(child):
                         bound_at.setdefault(name, child)
-        for ref in self._changed_objects(state, nodes, objects):
-            heap.havoc(state, ref)
+        self._changed_objects(state, nodes, objects)
         keeps_unit = _sums(summed, sum_targets, stores)
         if lists:  # those `nodes` may change (`xs.append(v)`, `xs[i] = v`, `b = xs`)
             if self.follows_lists():
@@ -940,22 +939,30 @@ class Interpreter(CallEvaluator):
 
     def _changed_objects(
         self, state: State, nodes: list[ast.stmt], objects: dict[str, int]
-    ) -> set[int]:
-        """The messages of `objects` that `nodes` may change: those they store into,
-        call a method of or hand to a call that may keep or change them, directly
-        or through an alias, and those that escaped in this function or module
-        (another name, an attribute, a container or a callee holds them)."""
+    ) -> None:
+        """Forget what `nodes` may change of the messages of `objects`: the fields
+        they store into (`p.header.stamp = now`), or all of one they call a method
+        of or hand to a call that may keep or change it, directly or through an
+        alias, or that escaped in this function or module (another name, an
+        attribute, a container or a callee holds it)."""
         if not objects:
-            return set()
+            return
         leaf = partial(self._leaf, state, objects)
         found = writes.uses(nodes, set(objects), leaf, self.only_reads)
-        kept = {name for name, kinds in found.items() if not kinds}
+        kept = {name for name, kinds in found.items() if not kinds & WHOLE}
         if kept:
             tree = self.ctx.source.tree
             scope = [self.function.node] if self.function is not None else [tree]
-            found = writes.uses(scope, kept, leaf, self.only_reads)  # type: ignore[arg-type]
-            kept -= {name for name, kinds in found.items() if writes.ESCAPE in kinds}
-        return {ref for name, ref in objects.items() if name not in kept}
+            escapes = writes.uses(scope, kept, leaf, self.only_reads)  # type: ignore[arg-type]
+            kept -= {name for name, kinds in escapes.items() if writes.ESCAPE in kinds}
+        whole = {ref for name, ref in objects.items() if name not in kept}
+        for ref in whole:
+            heap.havoc(state, ref)
+        for name in sorted(kept):
+            if objects[name] in whole:
+                continue
+            for path in sorted(p for p in found[name] if isinstance(p, tuple)):
+                heap.forget(self.ctx, state, objects[name], path)
 
     def _leaf(
         self, state: State, objects: dict[str, int], root: str, path: tuple[str, ...]
@@ -2165,6 +2172,7 @@ def _binds(node: ast.AST) -> list[str]:
     return [name] if name else []
 
 
+WHOLE = frozenset({writes.CHANGE, writes.ESCAPE})
 PLAIN = (ast.Assign, ast.AnnAssign, ast.AugAssign, ast.Expr, ast.Pass)
 
 

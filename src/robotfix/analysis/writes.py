@@ -39,13 +39,14 @@ _NESTED = (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef)
 
 def uses(
     nodes: Iterable[ast.AST], roots: set[str], leaf: Leaf, reads: Reads
-) -> dict[str, set[str]]:
-    """What `nodes` may do to the objects of `roots` (CHANGE, ESCAPE), by name; a
-    mention inside a function or class they define lets it escape (it may run at
-    any time)."""
+) -> dict[str, set[str | tuple[str, ...]]]:
+    """What `nodes` may do to the objects of `roots`, by name: CHANGE, ESCAPE, or
+    the paths of the fields they store into (`("header", "stamp")`); a mention
+    inside a function or class they define lets it escape (it may run at any
+    time)."""
     parents: dict[int, ast.AST] = {}
     mentions: dict[str, list[ast.Name]] = {}
-    found: dict[str, set[str]] = {}
+    found: dict[str, set[str | tuple[str, ...]]] = {}
     for top in nodes:
         for node in ast.walk(top):
             if node is not top and node.__class__ in _NESTED:
@@ -59,7 +60,7 @@ def uses(
     for root in roots:
         kinds = found.setdefault(root, set())
         todo, seen = [(root, ())], {root}
-        while todo and len(kinds) < 2:
+        while todo:
             name, prefix = todo.pop()
             for mention in mentions.get(name, ()):
                 use = _use(mention, prefix, root, parents, leaf, reads)
@@ -68,7 +69,9 @@ def uses(
                         kinds.add(use)
                     continue
                 for alias, path in use:
-                    if alias not in seen:
+                    if not alias:
+                        kinds.add(path)
+                    elif alias not in seen:
                         seen.add(alias)
                         todo.append((alias, path))
     return found
@@ -83,7 +86,8 @@ def _use(
     reads: Reads,
 ) -> str | list[tuple[str, tuple[str, ...]]]:
     """What one mention does to the object: READ, CHANGE, ESCAPE, or the names it
-    is bound to (with the path under the root they then hold)."""
+    is bound to (with the path under the root they then hold; no name: the path of
+    a field stored into)."""
     if mention.ctx.__class__ is not ast.Load:
         return READ  # (re)binding the name changes no object
     node: ast.AST = mention
@@ -92,8 +96,10 @@ def _use(
     while parent.__class__ in (ast.Attribute, ast.Subscript) and parent.value is node:  # type: ignore[union-attr]
         path.append(parent.attr if parent.__class__ is ast.Attribute else "[]")  # type: ignore[union-attr]
         node, parent = parent, parents.get(id(parent))  # type: ignore[assignment]
+    if node.ctx.__class__ is ast.Store and "[]" not in path:  # type: ignore[attr-defined]
+        return [("", tuple(path))]  # a field stored into: only it changes
     if node.ctx.__class__ is not ast.Load:  # type: ignore[attr-defined]
-        return CHANGE  # stored into or deleted
+        return CHANGE  # an element stored into, or deleted
     if leaf(root, tuple(path)):
         return READ  # a number or a string: nothing to change through it
     while isinstance(parent, _PASSING) and getattr(parent, "test", None) is not node:

@@ -154,3 +154,24 @@ def retarget_alias_in_body(frames: list[str]) -> None:
         moved = tf2_geometry_msgs.do_transform_point(probe, t)
         header = probe.header
         header.frame_id = name
+
+
+def restamp_each_time() -> None:
+    buffer = tf2_ros.Buffer()
+    carrot = PointStamped()
+    carrot.header.frame_id = "carrot1"
+    while not rospy.is_shutdown():
+        carrot.header.stamp = rospy.Time.now()  # another field: the frame stays
+        carrot.point.x = carrot.point.x + 0.1
+        trans = buffer.lookup_transform("turtle2", "turtle1", rospy.Time())
+        goal = tf2_geometry_msgs.do_transform_point(carrot, trans)  # error: RF204
+
+
+def restamp_header(frames: list[str]) -> None:
+    buffer = tf2_ros.Buffer()
+    carrot = PointStamped()
+    carrot.header.frame_id = "carrot1"
+    for name in frames:
+        trans = buffer.lookup_transform("turtle2", "turtle1", rospy.Time())
+        goal = tf2_geometry_msgs.do_transform_point(carrot, trans)  # the header is replaced below
+        carrot.header = goal.header

@@ -130,3 +130,37 @@ class Bridge(Node):
                 attempts += 1
         if opened:
             self.pub.publish(String(data=port.name))
+
+
+def connect_then_check(host: str, port: int) -> None:
+    for attempt in range(3):
+        ok = False
+        try:
+            conn = socket.create_connection((host, port), timeout=1.0)
+            ok = True
+        except OSError:
+            time.sleep(0.5)
+        if not ok:
+            return  # gives up after the first failure
+        break
+    conn.sendall(b"hello")
+
+
+def read_until_value(values: list[int]) -> None:
+    for i in range(3):
+        if i == 2:
+            last = values[i]
+    rospy.loginfo(f"{last}")  # bound on the last pass: no error (only the `try` shape counts)
+
+
+def wait_for_service_node(node: Node) -> None:
+    client = node.create_client(String, "status")
+    while rclpy.ok():
+        try:
+            future = client.call_async(String())
+            rclpy.spin_until_future_complete(node, future)
+            reply = future.result()
+            break
+        except RuntimeError:
+            node.get_logger().warn("retrying")
+    node.get_logger().info(f"{reply}")  # error: RF301
