@@ -212,7 +212,10 @@ class CallEvaluator(LibraryEvaluator):
         if frames.followed(self.ctx, node):
             return  # tf2 reads the stamped values and transforms it is given
         keywords = {k.arg: k.value for k in node.keywords}
-        given = [*zip(args, node.args), *((v, keywords[k]) for k, v in kwargs.items())]
+        given = [
+            *zip(args, node.args, strict=False),
+            *((v, keywords[k]) for k, v in kwargs.items()),
+        ]
         for value, expr in given:
             if value.kind == "msg" and value.ref is not None:
                 if not self.only_reads(node, expr):

@@ -993,7 +993,10 @@ class Interpreter(CallEvaluator):
         if user is not None:
             return depth < 2 and self._reads_parameter(user, call, arg, depth + 1)
         if isinstance(func, ast.Name):
-            return func.id in READING_BUILTINS and func.id not in self.scope.module().local_names
+            return (
+                func.id in READING_BUILTINS
+                and func.id not in self.scope.module().local_names
+            )
         if not isinstance(func, ast.Attribute):
             return False
         name = func.attr
@@ -1004,7 +1007,10 @@ class Interpreter(CallEvaluator):
         receiver = func.value
         if isinstance(receiver, ast.Name) and receiver.id == "math":
             return True
-        return name in LOGGING and "log" in (self.ctx.source.segment(receiver) or "").lower()
+        return (
+            name in LOGGING
+            and "log" in (self.ctx.source.segment(receiver) or "").lower()
+        )
 
     def _user_function(self, func: ast.expr) -> Function | None:
         """The function of this file a call's `func` names, syntactically."""
@@ -1037,7 +1043,10 @@ class Interpreter(CallEvaluator):
         if name is None:
             return False
         found = writes.uses(
-            node.body, {name}, lambda root, path: False, partial(self.only_reads, depth=depth)
+            node.body,
+            {name},
+            lambda root, path: False,
+            partial(self.only_reads, depth=depth),
         )
         return not found[name]
 
@@ -1637,17 +1646,13 @@ class Interpreter(CallEvaluator):
             prefix, suffix = body[:index], body[index + 1 :]
             if not all(self._plain(s) for s in prefix):
                 continue
-            for at, first in enumerate(stmt.body):
-                new = {
-                    n
-                    for n in bound_names([first])
-                    if n in self.scope.local_names
-                    and not isinstance(entry.env.get(n), Value)
-                }
-                if new:
-                    break
-            else:
+            at = next(
+                (i for i, one in enumerate(stmt.body) if self._new_names([one], entry)),
+                None,
+            )
+            if at is None:
                 continue
+            first, new = stmt.body[at], self._new_names([stmt.body[at]], entry)
             binding = [*stmt.body[at:]]
             elsewhere = bound_names(
                 [*prefix, *suffix, *stmt.body[:at], *stmt.handlers, *stmt.orelse]
@@ -1660,9 +1665,8 @@ class Interpreter(CallEvaluator):
             for handler in stmt.handlers:
                 goes_on = isinstance(handler.body[-1], ast.Continue)
                 plain = handler.body[:-1] if goes_on else handler.body
-                if (
-                    not all(self._plain(s) for s in plain)
-                    or (not goes_on and not self._may_follow(suffix))
+                if not all(self._plain(s) for s in plain) or (
+                    not goes_on and not self._may_follow(suffix)
                 ):
                     continue
                 failed = loop.fork()
@@ -1679,6 +1683,14 @@ class Interpreter(CallEvaluator):
                     failed.assume(A.Unary("not", cond))
                 return failed
         return None
+
+    def _new_names(self, nodes: list[ast.stmt], entry: State) -> set[str]:
+        """The locals `nodes` bind that are unbound on entry."""
+        return {
+            n
+            for n in bound_names(nodes)
+            if n in self.scope.local_names and not isinstance(entry.env.get(n), Value)
+        }
 
     def _plain(self, stmt: ast.stmt) -> bool:
         """A statement that runs through on some run: a simple one, whose calls

@@ -13,6 +13,9 @@ from __future__ import annotations
 import ast
 from collections.abc import Callable, Iterable
 
+from robotfix.analysis import containers
+from robotfix.astwalk import children
+
 # (root name, field path under it) -> whether the value there is a number or a
 # string (nothing can be changed through it)
 Leaf = Callable[[str, tuple[str, ...]], bool]
@@ -20,19 +23,12 @@ Leaf = Callable[[str, tuple[str, ...]], bool]
 Reads = Callable[[ast.Call, ast.expr], bool]
 
 READ, CHANGE, ESCAPE = "read", "change", "escape"
-_READING = frozenset(
-    {
-        ast.Compare,
-        ast.UnaryOp,
-        ast.BinOp,
-        ast.If,
-        ast.While,
-        ast.Assert,
-        ast.FormattedValue,
-        ast.JoinedStr,
-        ast.Expr,
-    }
-)
+# what only reads a value (a list's reading parents but those that hand on its
+# elements, or the value itself: a loop, `return`, `*xs`)
+_READING = (
+    containers.READING_PARENTS
+    - {ast.For, ast.AsyncFor, ast.comprehension, ast.Starred, ast.Return}
+) | {ast.JoinedStr}
 _PASSING = (ast.BoolOp, ast.IfExp)  # `a or b`, `a if c else b`: the value goes on
 _NESTED = (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef)
 
@@ -47,21 +43,24 @@ def uses(
     parents: dict[int, ast.AST] = {}
     mentions: dict[str, list[ast.Name]] = {}
     found: dict[str, set[str | tuple[str, ...]]] = {}
-    for top in nodes:
-        for node in ast.walk(top):
-            if node is not top and node.__class__ in _NESTED:
-                for inner in ast.walk(node):
-                    if inner.__class__ is ast.Name and inner.id in roots:  # type: ignore[attr-defined]
-                        found.setdefault(inner.id, set()).add(ESCAPE)  # type: ignore[attr-defined]
-            for child in ast.iter_child_nodes(node):
-                parents[id(child)] = node
-            if node.__class__ is ast.Name:
-                mentions.setdefault(node.id, []).append(node)  # type: ignore[attr-defined]
+    todo: list[tuple[ast.AST, bool]] = [(top, False) for top in nodes]
+    while todo:
+        node, nested = todo.pop()
+        if isinstance(node, ast.Name):
+            mentions.setdefault(node.id, []).append(node)
+            if nested and node.id in roots:
+                found.setdefault(node.id, set()).add(ESCAPE)
+            continue
+        inner = nested or (node not in nodes and isinstance(node, _NESTED))
+        for child in children(node):
+            parents[id(child)] = node
+            todo.append((child, inner))
     for root in roots:
         kinds = found.setdefault(root, set())
-        todo, seen = [(root, ())], {root}
-        while todo:
-            name, prefix = todo.pop()
+        aliases: list[tuple[str, tuple[str, ...]]] = [(root, ())]
+        seen = {root}
+        while aliases:
+            name, prefix = aliases.pop()
             for mention in mentions.get(name, ()):
                 use = _use(mention, prefix, root, parents, leaf, reads)
                 if isinstance(use, str):
@@ -73,7 +72,7 @@ def uses(
                         kinds.add(path)
                     elif alias not in seen:
                         seen.add(alias)
-                        todo.append((alias, path))
+                        aliases.append((alias, path))
     return found
 
 
@@ -88,47 +87,44 @@ def _use(
     """What one mention does to the object: READ, CHANGE, ESCAPE, or the names it
     is bound to (with the path under the root they then hold; no name: the path of
     a field stored into)."""
-    if mention.ctx.__class__ is not ast.Load:
+    if not isinstance(mention.ctx, ast.Load):
         return READ  # (re)binding the name changes no object
-    node: ast.AST = mention
+    node: ast.expr = mention
     path = list(prefix)
     parent = parents.get(id(node))
-    while parent.__class__ in (ast.Attribute, ast.Subscript) and parent.value is node:  # type: ignore[union-attr]
-        path.append(parent.attr if parent.__class__ is ast.Attribute else "[]")  # type: ignore[union-attr]
-        node, parent = parent, parents.get(id(parent))  # type: ignore[assignment]
-    if node.ctx.__class__ is ast.Store and "[]" not in path:  # type: ignore[attr-defined]
+    while isinstance(parent, (ast.Attribute, ast.Subscript)) and parent.value is node:
+        path.append(parent.attr if isinstance(parent, ast.Attribute) else "[]")
+        node, parent = parent, parents.get(id(parent))
+    context = getattr(node, "ctx", None)
+    if isinstance(context, ast.Store) and "[]" not in path:
         return [("", tuple(path))]  # a field stored into: only it changes
-    if node.ctx.__class__ is not ast.Load:  # type: ignore[attr-defined]
+    if not isinstance(context, ast.Load):
         return CHANGE  # an element stored into, or deleted
     if leaf(root, tuple(path)):
         return READ  # a number or a string: nothing to change through it
     while isinstance(parent, _PASSING) and getattr(parent, "test", None) is not node:
-        node, parent = parent, parents.get(id(parent))  # type: ignore[assignment]
-    kind = parent.__class__
-    if kind is ast.IfExp:
+        node, parent = parent, parents.get(id(parent))
+    if isinstance(parent, ast.IfExp):
         return READ  # its test
-    if kind is ast.Call:
-        if parent.func is node:  # type: ignore[union-attr]
-            return CHANGE if node is not mention else ESCAPE  # a method, or a callable
-        return READ if reads(parent, node) else ESCAPE  # type: ignore[arg-type]
-    if kind is ast.keyword or kind is ast.Starred:
+    if isinstance(parent, ast.Call):
+        if parent.func is node:  # a method, or the object called
+            return CHANGE if node is not mention else ESCAPE
+        return READ if reads(parent, node) else ESCAPE
+    if isinstance(parent, (ast.keyword, ast.Starred)):
         call = parents.get(id(parent))
-        if call.__class__ is ast.Call and reads(call, node):  # type: ignore[arg-type]
-            return READ
+        return READ if isinstance(call, ast.Call) and reads(call, node) else ESCAPE
+    if isinstance(parent, ast.Assign) and parent.value is node:
+        targets = parent.targets
+        if all(isinstance(t, ast.Name) for t in targets):
+            return [(t.id, tuple(path)) for t in targets if isinstance(t, ast.Name)]
         return ESCAPE
-    if kind is ast.Assign and parent.value is node:  # type: ignore[union-attr]
-        targets = parent.targets  # type: ignore[union-attr]
-        if all(t.__class__ is ast.Name for t in targets):
-            return [(t.id, tuple(path)) for t in targets]
+    if isinstance(parent, (ast.AnnAssign, ast.NamedExpr)) and parent.value is node:
+        target = parent.target
+        return [(target.id, tuple(path))] if isinstance(target, ast.Name) else ESCAPE
+    if isinstance(parent, (ast.For, ast.AsyncFor, ast.comprehension)):
+        if parent.iter is node and isinstance(parent.target, ast.Name):
+            return [(parent.target.id, (*path, "[]"))]
         return ESCAPE
-    if kind in (ast.AnnAssign, ast.NamedExpr) and parent.value is node:  # type: ignore[union-attr]
-        target = parent.target  # type: ignore[union-attr]
-        return [(target.id, tuple(path))] if target.__class__ is ast.Name else ESCAPE
-    if kind in (ast.For, ast.AsyncFor, ast.comprehension) and parent.iter is node:  # type: ignore[union-attr]
-        target = parent.target  # type: ignore[union-attr]
-        if target.__class__ is ast.Name:
-            return [(target.id, (*path, "[]"))]
-        return ESCAPE
-    if kind in _READING:
+    if parent.__class__ in _READING:
         return READ
     return ESCAPE
