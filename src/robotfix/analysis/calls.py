@@ -211,9 +211,15 @@ class CallEvaluator(LibraryEvaluator):
             return  # rclpy and rospy change no attribute of the node's class
         if frames.followed(self.ctx, node):
             return  # tf2 reads the stamped values and transforms it is given
-        for value in [*args, *kwargs.values()]:
+        keywords = {k.arg: k.value for k in node.keywords}
+        given = [
+            *zip(args, node.args, strict=False),
+            *((v, keywords[k]) for k, v in kwargs.items()),
+        ]
+        for value, expr in given:
             if value.kind == "msg" and value.ref is not None:
-                heap.havoc(state, value.ref)
+                if not self.only_reads(node, expr):
+                    heap.havoc(state, value.ref)
             elif value.kind in MUTABLE and type(value.term) is A.Sym:
                 state.changed(value)
         names = [a for a in node.args if isinstance(a, ast.Name)]
@@ -244,6 +250,10 @@ class CallEvaluator(LibraryEvaluator):
                 prefix = name.id + "."
                 for key in [k for k in state.env if k.startswith(prefix)]:
                     del state.env[key]
+
+    def only_reads(self, call: ast.Call, arg: ast.expr) -> bool:
+        """Whether `call` only reads the argument `arg` (the interpreter knows)."""
+        return False
 
     # -- user functions ------------------------------------------------------
     def call_known(

@@ -237,6 +237,11 @@ def _count_targets(target: ast.expr, counts: Counter[str]) -> None:
         _count_targets(target.value, counts)
 
 
+def bound_names(nodes: Iterable[ast.AST]) -> set[str]:
+    """The names `nodes` bind in their own scope (not in functions they define)."""
+    return set(_bindings_everywhere(nodes))
+
+
 def _bindings_everywhere(body: Iterable[ast.AST]) -> Counter[str]:
     counts: Counter[str] = Counter()
     todo = list(body)

@@ -559,10 +559,10 @@ def _plain_use(parent: ast.AST, name: ast.Name) -> bool:
     if kind is ast.Assign:
         targets = parent.targets  # type: ignore[attr-defined]
         return all(t.__class__ in (ast.Tuple, ast.List) for t in targets)
-    return kind in _READING_PARENTS
+    return kind in READING_PARENTS
 
 
-_READING_PARENTS = frozenset(
+READING_PARENTS = frozenset(
     {
         ast.Compare,
         ast.UnaryOp,

@@ -459,3 +459,37 @@ def havoc(state: State, ref: int, seen: set[int] | None = None) -> None:
     obj.pending = False
     obj.fields = {k: v for k, v in obj.fields.items() if v.ref is not None}
     obj.unset = None
+
+
+def forget(ctx: FileContext, state: State, ref: int, path: tuple[str, ...]) -> None:
+    """Code may have stored another value into the field at `path` of message `ref`
+    (a loop's body): that field becomes unknown, a sub-message wholly so; the other
+    fields keep what they hold."""
+    holder = ref
+    for part in path[:-1]:
+        spec = field_spec(ctx, state, holder, part) if holder in state.heap else None
+        inner = read_raw(ctx, state, holder, part, part).ref if spec else None
+        if spec is None or spec.kind != "msg" or spec.array or inner is None:
+            havoc(state, ref)
+            return
+        holder = inner
+    obj = state.heap.get(holder)
+    name = path[-1]
+    spec = field_spec(ctx, state, holder, name) if obj is not None else None
+    if obj is None or spec is None or spec.array:
+        havoc(state, ref)
+        return
+    if obj.unset:
+        obj.unset = {k: v for k, v in obj.unset.items() if k != name} or None
+    label = f"{obj.label}.{name}"
+    if spec.kind == "msg" and spec.msg_type:
+        # another sub-message may be there now: one of its own, not the old one
+        owner = (holder, name)
+        obj.fields[name] = new_message(
+            ctx, state, spec.msg_type, "unknown", owner, label
+        )
+    elif spec.kind in DEFAULTS:
+        unit = field_unit(ctx, state, holder, name)[0]
+        obj.fields[name] = ctx.fresh(spec.kind, label, unit)
+    else:
+        havoc(state, ref)

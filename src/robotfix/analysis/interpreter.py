@@ -25,9 +25,10 @@ from robotfix.analysis import (
     hover,
     imported,
     types,
+    writes,
 )
-from robotfix.analysis.calls import MUTATORS, CallEvaluator
-from robotfix.analysis.constants import scan
+from robotfix.analysis.calls import LEAVING, MUTATORS, CallEvaluator
+from robotfix.analysis.constants import bound_names, scan
 from robotfix.analysis.context import FileContext, Scope, build_scope
 from robotfix.analysis.flows import Where
 from robotfix.analysis.index import index_of
@@ -871,13 +872,14 @@ class Interpreter(CallEvaluator):
         watched = state.shared.watched  # only their changes need a new version
         bound_at: dict[str, ast.AST] = {}
         constant: dict[str, set[str]] = {}
+        objects: dict[str, int] = {}  # names of messages that `nodes` mention
         for node in nodes:
             for child in walk(node):
                 kind = type(child)
                 if kind is ast.Name:
                     bound = state.env.get(child.id)  # type: ignore[attr-defined]
                     if isinstance(bound, Value) and bound.ref is not None:
-                        heap.havoc(state, bound.ref)
+                        objects.setdefault(child.id, bound.ref)  # type: ignore[attr-defined]
                     elif isinstance(bound, Value) and bound.kind == "list":
                         lists.add(child.id)  # type: ignore[attr-defined]
                     if type(child.ctx) is not ast.Load:  # type: ignore[attr-defined]
@@ -912,6 +914,7 @@ class Interpreter(CallEvaluator):
                 elif kind in BINDER_KINDS:
                     for name in _binds(child):
                         bound_at.setdefault(name, child)
+        self._changed_objects(state, nodes, objects)
         keeps_unit = _sums(summed, sum_targets, stores)
         if lists:  # those `nodes` may change (`xs.append(v)`, `xs[i] = v`, `b = xs`)
             if self.follows_lists():
@@ -940,6 +943,119 @@ class Interpreter(CallEvaluator):
             else:
                 state.env[name] = self._forgotten(name, child, before, keeps_unit, None)
         return set(bound_at)
+
+    def _changed_objects(
+        self, state: State, nodes: list[ast.stmt], objects: dict[str, int]
+    ) -> None:
+        """Forget what `nodes` may change of the messages of `objects`: the fields
+        they store into (`p.header.stamp = now`), or all of one they call a method
+        of or hand to a call that may keep or change it, directly or through an
+        alias, or that escaped in this function or module (another name, an
+        attribute, a container or a callee holds it)."""
+        if not objects:
+            return
+        leaf = partial(self._leaf, state, objects)
+        found = writes.uses(nodes, set(objects), leaf, self.only_reads)
+        kept = {name for name, kinds in found.items() if not kinds & WHOLE}
+        if kept:
+            tree = self.ctx.source.tree
+            scope = [self.function.node] if self.function is not None else [tree]
+            escapes = writes.uses(scope, kept, leaf, self.only_reads)  # type: ignore[arg-type]
+            kept -= {name for name, kinds in escapes.items() if writes.ESCAPE in kinds}
+        whole = {ref for name, ref in objects.items() if name not in kept}
+        for ref in whole:
+            heap.havoc(state, ref)
+        for name in sorted(kept):
+            if objects[name] in whole:
+                continue
+            for path in sorted(p for p in found[name] if isinstance(p, tuple)):
+                heap.forget(self.ctx, state, objects[name], path)
+
+    def _leaf(
+        self, state: State, objects: dict[str, int], root: str, path: tuple[str, ...]
+    ) -> bool:
+        """Whether the field at `path` of message `root` is a number or a string."""
+        ref = objects.get(root)
+        obj = state.heap.get(ref) if ref is not None else None
+        spec = self.ctx.catalog.lookup(obj.type) if obj is not None else None
+        field, index = None, 0
+        while index < len(path):
+            field = spec.fields.get(path[index]) if spec is not None else None
+            if field is None:
+                return False
+            if field.array:  # the list itself can be changed, not a number in it
+                if path[index + 1 : index + 2] != ("[]",):
+                    return False
+                index += 1
+            spec = self.ctx.catalog.lookup(field.msg_type) if field.msg_type else None
+            index += 1
+        return field is not None and field.kind != "msg"
+
+    def only_reads(self, call: ast.Call, arg: ast.expr, depth: int = 0) -> bool:
+        """Whether `call` only reads the argument `arg` (a message): a builtin that
+        reads, `math`, logging, publishing, a tf2 transform, or a function of this
+        file that only reads that parameter."""
+        func = call.func
+        user = self._user_function(func)
+        if user is not None:
+            return depth < 2 and self._reads_parameter(user, call, arg, depth + 1)
+        if isinstance(func, ast.Name):
+            return (
+                func.id in READING_BUILTINS
+                and func.id not in self.scope.module().local_names
+            )
+        if not isinstance(func, ast.Attribute):
+            return False
+        name = func.attr
+        if name in LEAVING or name in ROS_LOGGING:
+            return True
+        if frames.is_tf2(name):  # unless this file defines a method of that name
+            return not any(k.rpartition(".")[2] == name for k in self.program.functions)
+        receiver = func.value
+        if isinstance(receiver, ast.Name) and receiver.id == "math":
+            return True
+        return (
+            name in LOGGING
+            and "log" in (self.ctx.source.segment(receiver) or "").lower()
+        )
+
+    def _user_function(self, func: ast.expr) -> Function | None:
+        """The function of this file a call's `func` names, syntactically."""
+        if isinstance(func, ast.Name):
+            return self.program.functions.get(func.id)
+        if (
+            isinstance(func, ast.Attribute)
+            and isinstance(func.value, ast.Name)
+            and self.function is not None
+            and self.function.class_name is not None
+            and func.value.id == _first_parameter(self.function)
+        ):
+            return self.program.functions.get(f"{self.function.class_name}.{func.attr}")
+        return None
+
+    def _reads_parameter(
+        self, function: Function, call: ast.Call, arg: ast.expr, depth: int
+    ) -> bool:
+        node = function.node
+        if isinstance(node, ast.Lambda):
+            return False
+        params = [a.arg for a in [*node.args.posonlyargs, *node.args.args]]
+        if function.is_method and isinstance(call.func, ast.Attribute):
+            params = params[1:]
+        name = next((k.arg for k in call.keywords if k.value is arg), None)
+        if name is None and arg in call.args:
+            index = call.args.index(arg)
+            starred = any(isinstance(a, ast.Starred) for a in call.args[: index + 1])
+            name = params[index] if index < len(params) and not starred else None
+        if name is None:
+            return False
+        found = writes.uses(
+            node.body,
+            {name},
+            lambda root, path: False,
+            partial(self.only_reads, depth=depth),
+        )
+        return not found[name]
 
     def _changed_root(self, node: ast.AST, state: State, firm: bool = False) -> None:
         """The object at the root of `x.a.b` (or a call's argument `x`) may change
@@ -1472,6 +1588,9 @@ class Interpreter(CallEvaluator):
             zero.reachable = _truth(cond) is not True  # `done = False; while not done`
             zero.assume(A.Unary("not", cond))
             normal = self._join(zero, normal)
+        failed = self._all_attempts_failed(node, entry, loop)
+        if failed is not None:
+            normal = self._join(failed, normal)
         return self._after_loop(node, normal, loop, breaks)
 
     def visit_For(self, node: ast.For | ast.AsyncFor, state: State) -> State:
@@ -1512,7 +1631,95 @@ class Interpreter(CallEvaluator):
                 if target not in zero.env:
                     zero.env[target] = MAYBE  # a loop variable: never an error
             normal = self._join(zero, normal)
+        failed = self._all_attempts_failed(node, entry, loop)
+        if failed is not None:
+            normal = self._join(failed, normal)
         return self._after_loop(node, normal, loop, breaks)
+
+    def _all_attempts_failed(
+        self, node: ast.For | ast.AsyncFor | ast.While, entry: State, loop: State
+    ) -> State | None:
+        """The exit of a retry loop after every attempt raised and was handled: a
+        name that only its `try` body binds (`conn = connect()`) is unbound there.
+        Only where each iteration surely can take that path: plain statements
+        before the `try`, something that may raise before the binding, a handler of
+        plain statements that goes on, nothing after it that may leave the
+        function. What the `try` body binds from the binding on keeps its value
+        from before the loop (a guard flag `ok = True` is still False)."""
+        body = node.body
+        for index, stmt in enumerate(body):
+            if not isinstance(stmt, ast.Try) or stmt.finalbody:
+                continue
+            prefix, suffix = body[:index], body[index + 1 :]
+            if not all(self._plain(s) for s in prefix):
+                continue
+            at = next(
+                (i for i, one in enumerate(stmt.body) if self._new_names([one], entry)),
+                None,
+            )
+            if at is None:
+                continue
+            first, new = stmt.body[at], self._new_names([stmt.body[at]], entry)
+            binding = [*stmt.body[at:]]
+            elsewhere = bound_names(
+                [*prefix, *suffix, *stmt.body[:at], *stmt.handlers, *stmt.orelse]
+            ) | bound_names([node.test if isinstance(node, ast.While) else node.target])
+            new -= elsewhere
+            if not new or not any(
+                isinstance(n, ast.Call) for n in walk([*stmt.body[:at], _head(first)])
+            ):
+                continue
+            for handler in stmt.handlers:
+                goes_on = isinstance(handler.body[-1], ast.Continue)
+                plain = handler.body[:-1] if goes_on else handler.body
+                if not all(self._plain(s) for s in plain) or (
+                    not goes_on and not self._may_follow(suffix)
+                ):
+                    continue
+                failed = loop.fork()
+                for name in bound_names(binding) - elsewhere:
+                    before = entry.env.get(name)
+                    if isinstance(before, Value):
+                        failed.env[name] = before
+                    else:
+                        failed.env.pop(name, None)
+                if isinstance(node, ast.While):
+                    cond = self.condition(node.test, failed)
+                    if _truth(cond) is True:
+                        return None
+                    failed.assume(A.Unary("not", cond))
+                return failed
+        return None
+
+    def _new_names(self, nodes: list[ast.stmt], entry: State) -> set[str]:
+        """The locals `nodes` bind that are unbound on entry."""
+        return {
+            n
+            for n in bound_names(nodes)
+            if n in self.scope.local_names and not isinstance(entry.env.get(n), Value)
+        }
+
+    def _plain(self, stmt: ast.stmt) -> bool:
+        """A statement that runs through on some run: a simple one, whose calls
+        return as far as the analysis knows."""
+        if not isinstance(stmt, PLAIN):
+            return False
+        return not isinstance(stmt, ast.Expr) or not (
+            isinstance(stmt.value, ast.Call) and self._may_stop(stmt.value.func)
+        )
+
+    def _may_follow(self, suffix: list[ast.stmt]) -> bool:
+        """Whether these statements, after a handler, may go on to the next
+        iteration or leave the loop by a `break`: no `return`, `raise` or call that
+        may not return."""
+        for node in walk(suffix):
+            if isinstance(node, (ast.Return, ast.Raise)) or (
+                isinstance(node, ast.Expr)
+                and isinstance(node.value, ast.Call)
+                and self._may_stop(node.value.func)
+            ):
+                return False
+        return True
 
     def _empty_when(
         self, iterable: ast.expr, state: State
@@ -1676,6 +1883,13 @@ RETURNS = frozenset(
     }
 )
 
+
+# rospy's logging functions, and builtins that only read what they are given
+ROS_LOGGING = frozenset(n for n in RETURNS if n.startswith("log"))
+READING_BUILTINS = frozenset(
+    {"len", "print", "str", "repr", "isinstance", "type", "id", "hash", "bool"}
+    | {"float", "int", "abs", "round", "format", "hasattr", "callable"}
+)
 
 # Logging methods: they return when called on a logger, not on any object
 # (`parser.error(msg)` exits).
@@ -1975,6 +2189,20 @@ def _binds(node: ast.AST) -> list[str]:
         return [a.asname or a.name.split(".")[0] for a in node.names if a.name != "*"]
     name = node.rest if isinstance(node, ast.MatchMapping) else node.name
     return [name] if name else []
+
+
+WHOLE = frozenset({writes.CHANGE, writes.ESCAPE})
+PLAIN = (ast.Assign, ast.AnnAssign, ast.AugAssign, ast.Expr, ast.Pass)
+
+
+def _head(stmt: ast.stmt) -> ast.AST:
+    """What a statement surely evaluates before it binds: an assignment's value, a
+    `with`'s context managers."""
+    if isinstance(stmt, (ast.Assign, ast.AnnAssign, ast.AugAssign)):
+        return stmt.value or stmt
+    if isinstance(stmt, (ast.With, ast.AsyncWith)):
+        return ast.Tuple([i.context_expr for i in stmt.items], ast.Load())
+    return ast.Pass()  # a compound statement may bind before it calls
 
 
 def _iteration(node: ast.While | ast.For | ast.AsyncFor) -> ast.stmt:
