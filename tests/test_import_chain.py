@@ -2,8 +2,9 @@
 
 What a run keeps grows linearly with the chain (each file's cache entry and each
 summary hold their own records, and a module's fingerprint stands for what its
-summary was built on), and a change at the bottom still re-checks every module
-above it."""
+summary was built on), a change at the bottom still re-checks every module above
+it, and a summary is the same however deep the stack was when it was asked for
+(a chain deeper than Python's recursion limit is built by a loop)."""
 
 from __future__ import annotations
 
@@ -12,7 +13,10 @@ import os
 import time
 from pathlib import Path
 
+import pytest
+
 from robotfix import cli
+from robotfix import run as run_module
 from robotfix.config import Config
 from robotfix.run import check_paths
 
@@ -89,6 +93,17 @@ def test_what_the_cache_keeps_grows_linearly_with_the_chain(tmp_path: Path) -> N
     assert most_long <= most_short + 2  # one file's records do not grow with the chain
 
 
+def test_a_summary_is_the_same_however_deep_it_was_asked_for(tmp_path: Path) -> None:
+    """Checked from its top, a 150-module chain was summarised by a recursion as
+    deep as the chain: Python's limit cut it, the module it cut there was left
+    empty, and the 90-odd modules above it lost their LIMIT (RF102 warnings
+    instead of the RF101 errors, and a different answer in another order)."""
+    _chain(tmp_path, 150, top_first=True)
+    lines, _ = _run(tmp_path, cache=False)
+    assert _found(lines) == (149, 0)
+    assert sum("error[RF101]: `h(2.0)` violates" in line for line in lines) == 149
+
+
 def test_a_change_at_the_bottom_rechecks_the_top(tmp_path: Path) -> None:
     files = _chain(tmp_path, 60, top_first=True)
     first, checked = _run(tmp_path)
@@ -106,3 +121,14 @@ def test_a_change_at_the_bottom_rechecks_the_top(tmp_path: Path) -> None:
     assert _found(bottom) == (0, 0)
     _edit(files[0], "LIMIT = 3.0", "LIMIT = 1.0")
     assert _run(tmp_path) == (middle, 60)
+
+
+def test_workers_see_the_chain_as_one_process_does(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(run_module, "MIN_PARALLEL", 1)
+    monkeypatch.setattr(run_module, "MIN_PARALLEL_BYTES", 0)
+    _chain(tmp_path, 120, top_first=True)
+    one = _run(tmp_path, cache=False)[0]
+    assert _run(tmp_path, cache=False, jobs=2)[0] == one
+    assert _found(one) == (119, 0)

@@ -64,6 +64,11 @@ Known = tuple[str, str, dict[str, str], dict[str, str]]
 # source bytes of parsed modules kept for their own check later in the run (`take`);
 # beyond it a module is parsed again when checked, rather than held in memory
 PENDING_BYTES = 1 << 20
+# summaries built one inside another's building (a module's code imports one not
+# yet summarised); one asked for deeper is built first, on its own (`summary`),
+# so an import chain thousands of modules deep is built by a loop, and a summary
+# never depends on how deep in the stack its building started
+MAX_NESTED = 8
 
 
 class Project:
@@ -79,6 +84,7 @@ class Project:
         self.catalog = catalog
         self._discharge = discharge
         self._summaries: dict[Path, ModuleSummary | None] = {}
+        self._nested = 0  # summaries being built, one inside another's building
         self._types: dict[Path, frozenset[str]] = {}  # message types it looked up
         self._parsed: dict[Path, tuple[bytes, SourceFile] | None] = {}
         self._pending: dict[str, tuple[bytes, SourceFile]] = {}
@@ -127,12 +133,32 @@ class Project:
 
     # -- summaries -----------------------------------------------------------
     def summary(self, path: Path) -> ModuleSummary | None:
-        if path not in self._summaries:
-            self._summaries[path] = None  # a guard; cycles are cut before (`reaches`)
-            resolver = self.resolver(path, building=path)
-            parsed = self._parse(path)
-            outer, self.catalog.touched = self.catalog.touched, set()
-            found = None
+        if path in self._summaries:
+            return self._summaries[path]
+        if self._nested:  # asked for while another summary is built
+            if self._nested >= MAX_NESTED:
+                raise _Deeper(path)
+            return self._build(path)
+        # built by a loop: one found too deep is built first, then the others again
+        todo = [path]
+        while todo:
+            if todo[-1] in self._summaries:
+                todo.pop()
+                continue
+            try:
+                self._build(todo[-1])
+            except _Deeper as deeper:
+                todo.append(deeper.path)
+        return self._summaries[path]
+
+    def _build(self, path: Path) -> ModuleSummary | None:
+        self._summaries[path] = None  # a guard; cycles are cut before (`reaches`)
+        resolver = self.resolver(path, building=path)
+        parsed = self._parse(path)
+        outer, self.catalog.touched = self.catalog.touched, set()
+        found = None
+        self._nested += 1
+        try:
             if parsed is not None:
                 try:
                     found = summarize(
@@ -144,26 +170,31 @@ class Project:
                     )
                 except Exception:  # a fault of ours: the module stays unknown to
                     found = None  # importers; its own check reports the fault
-            self._imports(path)  # its edges are known: its text is no longer needed
-            self._release(path)
-            self._types[path] = frozenset(self.catalog.touched)
-            self.catalog.touched = outer
-            self._summaries[path] = found
-            self._hold(path)
-            if found is not None and parsed is not None:
-                own = f"{path}\0"
-                cut = len(own) - 1
-                self.built[str(path)] = (
-                    _sha(parsed[0]),
-                    found.fingerprint,
-                    found.members,
-                    {  # as the cache keeps its entries' records
-                        k[cut:] if k.startswith(own) else k: v
-                        for k, v in resolver.consulted.items()
-                    },
-                )
-                self._fresh.append(str(path))
-        return self._summaries[path]
+        except _Deeper:  # built again once what it imports is (`summary`)
+            del self._summaries[path]
+            raise
+        finally:
+            self._nested -= 1
+            touched, self.catalog.touched = self.catalog.touched, outer
+        self._imports(path)  # its edges are known: its text is no longer needed
+        self._release(path)
+        self._types[path] = frozenset(touched)
+        self._summaries[path] = found
+        self._hold(path)
+        if found is not None and parsed is not None:
+            own = f"{path}\0"
+            cut = len(own) - 1
+            self.built[str(path)] = (
+                _sha(parsed[0]),
+                found.fingerprint,
+                found.members,
+                {  # as the cache keeps its entries' records
+                    k[cut:] if k.startswith(own) else k: v
+                    for k, v in resolver.consulted.items()
+                },
+            )
+            self._fresh.append(str(path))
+        return found
 
     def fresh_summaries(self) -> dict[str, Known]:
         """The summaries built since the last call (for the result cache: a worker
@@ -463,6 +494,15 @@ class Project:
         if source.path != shown:
             source = dataclasses.replace(source, path=shown)
         return source
+
+
+class _Deeper(BaseException):
+    """Unwinds the summaries being built (past the analysis's `except Exception`)
+    so that the summary of `path` is built first."""
+
+    def __init__(self, path: Path) -> None:
+        super().__init__()
+        self.path = path
 
 
 _UNASKED = Path("\0unasked")
