@@ -64,7 +64,7 @@ def test_a_package_summaries_go_once_its_files_are_checked(tmp_path: Path) -> No
     gc.collect()
     assert held() is None
     assert project.released >= 1
-    assert project.deps(helper) == {}
+    assert project.types(helper) == frozenset()
 
 
 def test_a_module_a_later_file_can_import_is_kept(tmp_path: Path) -> None:

@@ -4,8 +4,9 @@ An entry is reused only when the file's bytes, the path it was named by, its
 per-file ignores, the run key (RobotFix's version and a digest of its own files, the settings that change results,
 the unit and message libraries), the resolved definition of every message type the
 file looked up (`MsgCatalog.fingerprint_types`) and the fingerprint of everything
-it consulted of other modules, transitively (`project/summary.py`: each module
-asked for, each member of one looked up) are all unchanged: changing, adding or
+it consulted of other modules (`project/summary.py`: each module asked for, whose
+fingerprint holds what building its summary consulted, each member of one looked
+up) are all unchanged: changing, adding or
 moving one `.msg` re-checks exactly the files it can affect, a changed helper
 module re-checks the files that import it only when a member they read of it
 changed, and a cached run prints what an uncached one prints, byte for byte.
@@ -129,7 +130,7 @@ class ResultCache:
         self._entries: dict[str, Any] = {}
         self._valid: dict[str, Any] = {}  # entries found valid (`_valid_entry`)
         # module file -> [sha256 of its bytes, its summary's fingerprint, its
-        # members' fingerprints]
+        # members' fingerprints, what building it consulted]
         self.summaries: dict[str, Known] = {}
         # file -> [*fs.stamp, sha256, mentions]: `sha`'s memory
         self._stats: dict[str, list[Any]] = {}
@@ -163,15 +164,17 @@ class ResultCache:
             found = data.get("summaries")
             if isinstance(found, dict):
                 self.summaries = {
-                    k: (v[0], v[1], v[2])
+                    k: (v[0], v[1], v[2], v[3])
                     for k, v in found.items()
                     if _name(k)
                     and isinstance(v, list)
-                    and len(v) == 3
+                    and len(v) == 4
                     and is_text(v[0])
                     and is_text(v[1])
                     and isinstance(v[2], dict)
                     and all(is_text(m) and is_text(x) for m, x in v[2].items())
+                    and isinstance(v[3], dict)
+                    and all(_name(r) and is_text(x) for r, x in v[3].items())
                 }
             stats = data.get("stats")
             if isinstance(stats, dict):
@@ -490,7 +493,7 @@ class ResultCache:
             "key": self.key,
             "entries": self._entries,
             "summaries": {
-                k: [v[0], v[1], dict(sorted(v[2].items()))]
+                k: [v[0], v[1], dict(sorted(v[2].items())), dict(sorted(v[3].items()))]
                 for k, v in sorted(self.summaries.items())
             },
             "stats": {**self._stats, **self._seen_stats},

@@ -7,9 +7,14 @@ checked file's analysis asks (`analysis/imported.py`), and records what it consu
 with its fingerprint: each module it asked for (its existence and place) and each
 member of one it looked up (that member's part of the summary: a function's
 signature and refinements, a class's, a constant's value and unit, an alias and the
-names it reads, a re-export), transitively through the summaries it used, so the
-result cache re-checks a file exactly when something it read of another module
-changed: adding or changing a member no importer uses re-checks nobody.
+names it reads, a re-export), so the result cache re-checks a file exactly when
+something it read of another module changed: adding or changing a member no
+importer uses re-checks nobody. What a summary stands on in turn is in the
+module's fingerprint: its name, its file and the records its own building
+consulted (a hash tree, as git's), so a change anywhere down an import chain
+changes the fingerprint of every module above it, while each record names one
+module and each summary keeps only its own records (a chain of n modules keeps
+O(n) records, not a copy of the chain's per module).
 
 Cycles: while the summary of P is built, a module Q from which P can be reached by
 imports (syntactically) is not consulted. The answer depends on the import graph
@@ -52,11 +57,18 @@ Discharge = Callable[["VC"], "Verdict"]
 ABSENT = ""  # the fingerprint recorded for a name that is no module of the tree
 MISSING = "-"  # the fingerprint of a name that is no member of its module
 # a summary as the result cache keeps it, by its file: the sha256 of the file's
-# bytes, the module's own fingerprint (its name and place), its members'
-Known = tuple[str, str, dict[str, str]]
+# bytes, the module's own fingerprint (its name and place, and what building it
+# consulted), its members', and what building it consulted (the records made from
+# the file itself without its name, as the cache's entries keep them)
+Known = tuple[str, str, dict[str, str], dict[str, str]]
 # source bytes of parsed modules kept for their own check later in the run (`take`);
 # beyond it a module is parsed again when checked, rather than held in memory
 PENDING_BYTES = 1 << 20
+# summaries built one inside another's building (a module's code imports one not
+# yet summarised); one asked for deeper is built first, on its own (`summary`),
+# so an import chain thousands of modules deep is built by a loop, and a summary
+# never depends on how deep in the stack its building started
+MAX_NESTED = 8
 
 
 class Project:
@@ -72,16 +84,22 @@ class Project:
         self.catalog = catalog
         self._discharge = discharge
         self._summaries: dict[Path, ModuleSummary | None] = {}
-        self._deps: dict[Path, dict[str, str]] = {}  # what building it consulted
+        self._nested = 0  # summaries being built, one inside another's building
         self._types: dict[Path, frozenset[str]] = {}  # message types it looked up
         self._parsed: dict[Path, tuple[bytes, SourceFile] | None] = {}
         self._pending: dict[str, tuple[bytes, SourceFile]] = {}
         self._edges: dict[Path, frozenset[Path]] = {}
-        self._reach: dict[Path, frozenset[Path]] = {}
+        # each module's strongly connected component of the import graph, by the
+        # order in which the components were completed (`_ranked`)
+        self._rank: dict[Path, int] = {}
+        self._ranks = 0
         # path -> (sha256 of its bytes, fingerprints), from an earlier run's cache
         self.known: dict[str, Known] = {}
         self.built: dict[str, Known] = {}  # the same, for this run's
         self._fresh: list[str] = []  # those built since `fresh_summaries` last ran
+        # a kept summary whose records all still read the same (`_holds`)
+        self._holding: dict[Path, bool] = {}
+        self._deciding: set[Path] = set()  # those `_holds` is deciding
         # the sha256 of a file's bytes, when the caller knows a faster way (the
         # result cache's stat fast path); None: unreadable
         self.sha_of: Callable[[Path], str | None] | None = None
@@ -115,12 +133,32 @@ class Project:
 
     # -- summaries -----------------------------------------------------------
     def summary(self, path: Path) -> ModuleSummary | None:
-        if path not in self._summaries:
-            self._summaries[path] = None  # a guard; cycles are cut before (`reaches`)
-            resolver = self.resolver(path, building=path)
-            parsed = self._parse(path)
-            outer, self.catalog.touched = self.catalog.touched, set()
-            found = None
+        if path in self._summaries:
+            return self._summaries[path]
+        if self._nested:  # asked for while another summary is built
+            if self._nested >= MAX_NESTED:
+                raise _Deeper(path)
+            return self._build(path)
+        # built by a loop: one found too deep is built first, then the others again
+        todo = [path]
+        while todo:
+            if todo[-1] in self._summaries:
+                todo.pop()
+                continue
+            try:
+                self._build(todo[-1])
+            except _Deeper as deeper:
+                todo.append(deeper.path)
+        return self._summaries[path]
+
+    def _build(self, path: Path) -> ModuleSummary | None:
+        self._summaries[path] = None  # a guard; cycles are cut before (`reaches`)
+        resolver = self.resolver(path, building=path)
+        parsed = self._parse(path)
+        outer, self.catalog.touched = self.catalog.touched, set()
+        found = None
+        self._nested += 1
+        try:
             if parsed is not None:
                 try:
                     found = summarize(
@@ -132,21 +170,31 @@ class Project:
                     )
                 except Exception:  # a fault of ours: the module stays unknown to
                     found = None  # importers; its own check reports the fault
-            self._imports(path)  # its edges are known: its text is no longer needed
-            self._release(path)
-            self._types[path] = frozenset(self.catalog.touched)
-            self.catalog.touched = outer
-            self._summaries[path] = found
-            self._deps[path] = dict(resolver.consulted)
-            self._hold(path)
-            if found is not None and parsed is not None:
-                self.built[str(path)] = (
-                    _sha(parsed[0]),
-                    found.fingerprint,
-                    found.members,
-                )
-                self._fresh.append(str(path))
-        return self._summaries[path]
+        except _Deeper:  # built again once what it imports is (`summary`)
+            del self._summaries[path]
+            raise
+        finally:
+            self._nested -= 1
+            touched, self.catalog.touched = self.catalog.touched, outer
+        self._imports(path)  # its edges are known: its text is no longer needed
+        self._release(path)
+        self._types[path] = frozenset(touched)
+        self._summaries[path] = found
+        self._hold(path)
+        if found is not None and parsed is not None:
+            own = f"{path}\0"
+            cut = len(own) - 1
+            self.built[str(path)] = (
+                _sha(parsed[0]),
+                found.fingerprint,
+                found.members,
+                {  # as the cache keeps its entries' records
+                    k[cut:] if k.startswith(own) else k: v
+                    for k, v in resolver.consulted.items()
+                },
+            )
+            self._fresh.append(str(path))
+        return found
 
     def fresh_summaries(self) -> dict[str, Known]:
         """The summaries built since the last call (for the result cache: a worker
@@ -159,9 +207,6 @@ class Project:
         edges, or hashed (for the language server: a change to one of them on
         disk can change what the project answers)."""
         return set(self._read)
-
-    def deps(self, path: Path) -> dict[str, str]:
-        return self._deps.get(path, {})
 
     def types(self, path: Path) -> frozenset[str]:
         """The message types building the summary of `path` looked up (and those
@@ -189,19 +234,12 @@ class Project:
         path = self.index.find_in(number, name, context)
         if path is None:
             return ABSENT
-        known = self.known.get(str(path)) or self.built.get(str(path))
+        known = self._kept(path)
         if known is not None:
-            self._read.add(path)
-            if self.sha_of is not None:
-                digest = self.sha_of(path)
-            else:
-                try:
-                    digest = _sha(read_regular(path))
-                except UnreadableError:
-                    digest = None
+            digest = self._digest(path)
             if digest is None:
                 return ABSENT
-            if digest == known[0]:
+            if digest == known[0] and self._holds(path):
                 if member is None:
                     return known[1]
                 return known[2].get(member, MISSING)
@@ -212,22 +250,130 @@ class Project:
             return found.fingerprint
         return found.members.get(member, MISSING)
 
+    def _kept(self, path: Path) -> Known | None:
+        """The fingerprints of the summary of `path` built in this run, else in an
+        earlier one (the result cache's)."""
+        return self.built.get(str(path)) or self.known.get(str(path))
+
+    def _digest(self, path: Path) -> str | None:
+        self._read.add(path)
+        if self.sha_of is not None:
+            return self.sha_of(path)
+        try:
+            return _sha(read_regular(path))
+        except UnreadableError:
+            return None
+
+    def _holds(self, start: Path) -> bool:
+        """Whether every record the kept summary of `start` (of unchanged bytes) was
+        built on reads the same now, so that its fingerprints hold. The kept
+        summaries those records name are decided first, by a loop rather than
+        recursion (an import chain may be thousands of modules deep); one met
+        again while it is being decided (an import cycle, as the graph was when
+        they were built) does not hold: it is built again, which is always right."""
+        holding = self._holding
+        if start in holding:
+            return holding[start]
+        if start in self._deciding:
+            return False
+        if str(start) in self.built:
+            return True  # built in this run: from what it consulted now
+        stack = [start]
+        self._deciding.add(start)
+        while stack:
+            path = stack[-1]
+            known = self._kept(path)
+            assert known is not None
+            records = _records(path, known[3])
+            targets = dict.fromkeys(self._target(key) for key in records)
+            below = [
+                target
+                for target in targets
+                if target is not None
+                and target not in holding
+                and target not in self._deciding
+                and str(target) not in self.built
+                and (kept := self._kept(target)) is not None
+                and self._digest(target) == kept[0]
+            ]
+            if below:
+                stack.extend(below)
+                self._deciding.update(below)
+                continue
+            stack.pop()
+            holding[path] = all(self.fingerprint(k) == v for k, v in records.items())
+            self._deciding.discard(path)
+        return holding[start]
+
+    def _target(self, key: str) -> Path | None:
+        """The module file a record (`fingerprint`'s key) is about, if any."""
+        context, _, rest = key.partition("\0")
+        name = rest.partition("\0")[0]
+        number = self._context_ids.get(context)
+        if number is None:
+            number = self._context_ids[context] = self.index.search_id(context)
+        return self.index.find_in(number, name, context)
+
     # -- the import graph, syntactically ------------------------------------
     def reaches(self, start: Path, goal: Path) -> bool:
-        """Whether `goal` can be reached from `start` by imports of the tree."""
-        return goal in self._reachable(start)
+        """Whether `goal` can be reached from `start` by imports of the tree: both
+        in one strongly connected component, or a path down from `start` through
+        components completed after `goal`'s (one completed before it cannot reach
+        it). Nothing is kept per pair or per module but its component's rank, so
+        a chain of n modules costs O(n), not a set of what each one reaches."""
+        if start == goal:
+            return True
+        top, bottom = self._ranked(start), self._ranked(goal)
+        if top <= bottom:
+            return top == bottom
+        seen = {start}
+        todo = [start]
+        while todo:
+            for nxt in self._imports(todo.pop()):
+                rank = self._rank[nxt]
+                if rank == bottom:
+                    return True
+                if rank > bottom and nxt not in seen:
+                    seen.add(nxt)
+                    todo.append(nxt)
+        return False
 
-    def _reachable(self, start: Path) -> frozenset[Path]:
-        if start not in self._reach:
-            seen = {start}
-            todo = [start]
-            while todo:
-                for nxt in self._imports(todo.pop()):  # a set: any order
-                    if nxt not in seen:
-                        seen.add(nxt)
-                        todo.append(nxt)
-            self._reach[start] = frozenset(seen)
-        return self._reach[start]
+    def _ranked(self, start: Path) -> int:
+        """The rank of the strongly connected component of `start` (Tarjan's
+        algorithm, by a loop: an import chain may be thousands deep). Ranks follow
+        completion: a component reachable from another has a lower rank. A module
+        ranked by an earlier search keeps its rank: all it reaches was ranked then."""
+        rank = self._rank
+        if start in rank:
+            return rank[start]
+        order = {start: 0}
+        low = {start: 0}
+        stack = [start]
+        work = [(start, iter(self._imports(start)))]
+        while work:
+            node, edges = work[-1]
+            for nxt in edges:
+                if nxt in rank:
+                    continue  # a component completed before
+                if nxt not in order:
+                    order[nxt] = low[nxt] = len(order)
+                    stack.append(nxt)
+                    work.append((nxt, iter(self._imports(nxt))))
+                    break
+                low[node] = min(low[node], order[nxt])  # on the stack
+            else:
+                work.pop()
+                if work:
+                    parent = work[-1][0]
+                    low[parent] = min(low[parent], low[node])
+                if low[node] == order[node]:
+                    self._ranks += 1
+                    while True:
+                        member = stack.pop()
+                        rank[member] = self._ranks
+                        if member == node:
+                            break
+        return rank[start]
 
     def _imports(self, path: Path) -> frozenset[Path]:
         if path not in self._edges:
@@ -326,9 +472,7 @@ class Project:
                 del self._ways[module]
                 self.released += 1
                 self._summaries.pop(module, None)
-                self._deps.pop(module, None)
                 self._types.pop(module, None)
-                self._reach.pop(module, None)
                 self._parsed.pop(module, None)
 
     def take(self, path: Path, data: bytes) -> SourceFile | None:
@@ -350,6 +494,15 @@ class Project:
         if source.path != shown:
             source = dataclasses.replace(source, path=shown)
         return source
+
+
+class _Deeper(BaseException):
+    """Unwinds the summaries being built (past the analysis's `except Exception`)
+    so that the summary of `path` is built first."""
+
+    def __init__(self, path: Path) -> None:
+        super().__init__()
+        self.path = path
 
 
 _UNASKED = Path("\0unasked")
@@ -400,9 +553,9 @@ class FileResolver:
         if target is _CYCLE:
             return None  # a cycle: not consulted, whichever side is built first
         found = project.summary(target)
+        # its fingerprint stands for what building it read too: its members may
+        # stand on any of it
         self.consulted[key] = found.fingerprint if found is not None else ABSENT
-        # what building it read: its members may stand on any of it
-        self.consulted.update(project.deps(target))
         if project.catalog.touched is not None:
             project.catalog.touched.update(project.types(target))
         return found
@@ -454,7 +607,7 @@ def summarize(
             if isinstance(statement, ast.ClassDef):
                 class_body(ctx, program, statement, module, statics)
     except (BudgetExceededError, RecursionError):
-        return _finish(summary)
+        return _finish(summary, resolver.consulted)
     summary.constants = ctx.constants.module_constants()
     terms = {k: v.term for k, v in summary.constants.items() if v.term is not None}
     read = {
@@ -482,7 +635,7 @@ def summarize(
         names = names or replace(_detached(ctx), constants=terms)
         summary.aliases[alias_name] = Alias(ctx.index.aliases[alias_name], names)
     summary.reexports = _top_level_imports(tree, ctx.imports)
-    return _finish(summary)
+    return _finish(summary, resolver.consulted)
 
 
 def _function(
@@ -685,12 +838,15 @@ def _top_level_imports(tree: ast.Module, imports: dict[str, str]) -> dict[str, s
     return found
 
 
-def _finish(summary: ModuleSummary) -> ModuleSummary:
-    """The fingerprints: the module's own (its name and file), and each member's,
-    from everything `imported._member` reads for that name (which table holds it
-    decides what it is). An alias reads the module's other aliases and imports, so
-    its fingerprint holds them too."""
-    summary.fingerprint = _hash(_stable((summary.name, summary.path)))
+def _finish(summary: ModuleSummary, consulted: dict[str, str]) -> ModuleSummary:
+    """The fingerprints: the module's own (its name, its file, and what building it
+    `consulted`, each record with its fingerprint: any member may stand on any of
+    it), and each member's, from everything `imported._member` reads for that name
+    (which table holds it decides what it is). An alias reads the module's other
+    aliases and imports, so its fingerprint holds them too."""
+    summary.fingerprint = _hash(
+        _stable((summary.name, summary.path, sorted(consulted.items())))
+    )
     aliases = sorted(
         (k, ast.dump(a.node), a.node.lineno) for k, a in summary.aliases.items()
     )
@@ -722,6 +878,12 @@ def _finish(summary: ModuleSummary) -> ModuleSummary:
         )
         summary.members[name] = _hash(_stable(content))
     return summary
+
+
+def _records(path: Path, kept: dict[str, str]) -> dict[str, str]:
+    """A kept summary's records (`Known`), with its file's name put back."""
+    own = str(path)
+    return {own + k if k[:1] == "\0" else k: v for k, v in kept.items()}
 
 
 def _hash(text: str) -> str:
