@@ -373,15 +373,18 @@ def unit_mismatch(
     aligned: Unit | None = None,
     twice: float | None = None,
     called: tuple[str, Unit] | None = None,
+    some_paths: bool = False,
 ) -> Diagnostic:
     """`aligned`: the value's unit over the expected dimensions, when only the
     scale differs once the radian cancels (`omega_deg * r`); `twice`: the literal
     factor that converted a value already in `expected` (`p_s * 1000` into s);
     `called`: the conversion call that last changed the value's unit and its
-    argument's unit (`math.degrees`, rad): the advice is about that call."""
+    argument's unit (`math.degrees`, rad): the advice is about that call;
+    `some_paths`: the value is in `got` on some of the paths that set it."""
+    where = " on some path" if some_paths else ""
     message = (
-        f"`{stmt}` gives {target} a value in {got}, but {target} {_is(target)} in "
-        f"{expected}"
+        f"`{stmt}` gives {target} a value in {got}{where}, but {target} "
+        f"{_is(target)} in {expected}"
     )
     fix = conversion(got if aligned is None else aligned, expected)
     if aligned is not None and fix:

@@ -239,8 +239,20 @@ class Checker:
         site: ast.AST,
         target: str,
         declared: Declared,
+        state: State | None = None,
+        some_paths: bool = False,
     ) -> bool:
+        """Whether `value` fits the unit `expected` of `target`; a report if not.
+        With `state`: a number merged at a join from ones in different units does
+        not fit if one that does not is feasible on its path (RF201, "on some
+        path": the error is a real bug on that path)."""
         found = None if expected is None else value.fit(expected)
+        if expected is not None and found is None and state is not None:
+            bad = self._bad_choice(expected, value, state)
+            if bad is not None:  # reported as that path's value, "on some path"
+                return self.units_agree(
+                    expected, bad, site, target, declared, some_paths=True
+                )
         if expected is None or found is None or found.kind == "ok":
             return True
         span, stmt = self.where(site)
@@ -286,10 +298,23 @@ class Checker:
                 found.aligned,
                 found.twice,
                 called,
+                some_paths=some_paths,
             ),
             once=None if done is None else done.twice,  # replaces the deferred one
         )
         return False
+
+    def _bad_choice(self, expected: Unit, value: Value, state: State) -> Value | None:
+        """What a number merged at a join is on a feasible path where its unit does
+        not fit `expected` (a warning's doubt is no path's error), if any."""
+        for option in value.options():
+            found = option.value.fit(expected)
+            if found is None or found.kind != "mismatch":
+                continue
+            when = A.conjoin([*state.pending(option.defs), option.when])
+            if self.surely_possible(state, when):
+                return option.value
+        return None
 
     def base_fits(
         self, expected: str, value: Value, site: ast.AST, target: str
@@ -355,7 +380,8 @@ class Checker:
         if self.report_uninit(value, site, state):
             return self.assumed(state, name, decl, lookup)
         fits = self.base_fits(decl.base, value, site, f"`{name}`")
-        fits = self.units_agree(decl.unit, value, site, f"`{name}`", declared) and fits
+        agree = self.units_agree(decl.unit, value, site, f"`{name}`", declared, state)
+        fits = agree and fits
         if not fits or value.term is None:
             return self.assumed(state, name, decl, lookup)
         for part in A.conjuncts(decl.predicate):
@@ -760,7 +786,9 @@ class Checker:
             framed, frame_decl = frames.expected_unit(self.ctx, state, ref, name, unit)
             if frame_decl is not None and frames.frame_of(value.unit) is not None:
                 decl = frame_decl  # the frame is what can differ
-            ok = self.units_agree(framed, value, site, f"`{target}`", decl) and ok
+            ok = (
+                self.units_agree(framed, value, site, f"`{target}`", decl, state) and ok
+            )
         stored = value.with_unit(unit) if unit is not None else value
         if stored.term is None:
             stored = self.ctx.fresh(spec.kind, f"`{target}`", unit)

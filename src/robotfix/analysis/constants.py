@@ -340,3 +340,32 @@ def _reads(parent: ast.AST, name: ast.Name) -> bool:
     if isinstance(parent, (ast.For, ast.AsyncFor, ast.comprehension)):
         return parent.iter is name
     return False
+
+
+def plain_kind(node: ast.expr, constants: dict[str, Value]) -> str:
+    """The kind (`int`, `float`) of the number with no unit that `node` surely gives,
+    as a literal does (it takes the unit of its context): a number literal, or a
+    scalar of a constant table of literals (`moveBindings[key][1]`); `?` otherwise."""
+    depth = 0
+    while isinstance(node, ast.Subscript) and not isinstance(node.slice, ast.Slice):
+        node, depth = node.value, depth + 1
+    if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.USub | ast.UAdd):
+        return plain_kind(node.operand, constants) if depth == 0 else "?"
+    if isinstance(node, ast.Constant):
+        kind = type(node.value).__name__
+        return kind if depth == 0 and kind in ("int", "float") else "?"
+    if isinstance(node, ast.Name) and node.id in constants:
+        return _leaf_kind(constants[node.id], depth)
+    return "?"
+
+
+def _leaf_kind(value: Value, depth: int) -> str:
+    """The kind of every scalar `depth` subscripts into `value`, if each is a
+    number literal with no unit; `?` otherwise."""
+    if depth == 0:
+        plain = value.kind in ("int", "float") and value.literal and value.unit is None
+        return value.kind if plain else "?"
+    if value.kind not in CONTAINERS or not value.elements:
+        return "?"
+    kinds = {_leaf_kind(element, depth - 1) for element in value.elements}
+    return "?" if "?" in kinds else ("float" if "float" in kinds else "int")

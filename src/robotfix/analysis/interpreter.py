@@ -28,7 +28,7 @@ from robotfix.analysis import (
     writes,
 )
 from robotfix.analysis.calls import LEAVING, MUTATORS, CallEvaluator
-from robotfix.analysis.constants import bound_names, scan
+from robotfix.analysis.constants import bound_names, plain_kind, scan
 from robotfix.analysis.context import FileContext, Scope, build_scope
 from robotfix.analysis.flows import Where
 from robotfix.analysis.index import index_of
@@ -872,6 +872,8 @@ class Interpreter(CallEvaluator):
         watched = state.shared.watched  # only their changes need a new version
         bound_at: dict[str, ast.AST] = {}
         constant: dict[str, set[str]] = {}
+        other_binders: set[str] = set()  # bound otherwise than by `=` or `op=`
+        assigned: set[int] = set()  # the name nodes `=` and `op=` bind
         objects: dict[str, int] = {}  # names of messages that `nodes` mention
         for node in nodes:
             for child in walk(node):
@@ -884,6 +886,8 @@ class Interpreter(CallEvaluator):
                         lists.add(child.id)  # type: ignore[attr-defined]
                     if type(child.ctx) is not ast.Load:  # type: ignore[attr-defined]
                         bound_at.setdefault(child.id, child)  # type: ignore[attr-defined]
+                        if id(child) not in assigned:
+                            other_binders.add(child.id)  # type: ignore[attr-defined]
                         if type(child.ctx) is ast.Store:  # type: ignore[attr-defined]
                             stores.append(child)  # type: ignore[arg-type]
                 elif kind is ast.Attribute:
@@ -909,11 +913,13 @@ class Interpreter(CallEvaluator):
                         for arg in [*call.args, *call.keywords]:
                             self._changed_root(arg, state)
                 elif kind is ast.Assign or kind is ast.AugAssign:
-                    _constant_stores(child, constant)  # type: ignore[arg-type]
+                    _constant_stores(child, constant, self.statics)  # type: ignore[arg-type]
+                    assigned.update(map(id, _targets(child)))  # type: ignore[arg-type]
                     _note_sum(child, summed, sum_targets)
                 elif kind in BINDER_KINDS:
                     for name in _binds(child):
                         bound_at.setdefault(name, child)
+                        other_binders.add(name)
         self._changed_objects(state, nodes, objects)
         keeps_unit = _sums(summed, sum_targets, stores)
         if lists:  # those `nodes` may change (`xs.append(v)`, `xs[i] = v`, `b = xs`)
@@ -939,7 +945,11 @@ class Interpreter(CallEvaluator):
             elif isinstance(before, Value) and constant.get(name, {"?"}) <= _KEEPS.get(
                 before.kind, set()
             ):
-                state.env[name] = self.unknown(child, before.kind, before.unit)
+                kept = self.unknown(child, before.kind, before.unit)
+                # a literal set to literals only (`z = 0.0`, then `z = table[k][1]`)
+                # stays a number that takes the unit of its context
+                plain = before.literal and name not in other_binders
+                state.env[name] = replace(kept, literal=True) if plain else kept
             else:
                 state.env[name] = self._forgotten(name, child, before, keeps_unit, None)
         return set(bound_at)
@@ -2143,25 +2153,33 @@ _KEEPS = {
 
 
 def _constant_stores(
-    node: ast.Assign | ast.AugAssign, found: dict[str, set[str]]
+    node: ast.Assign | ast.AugAssign,
+    found: dict[str, set[str]],
+    constants: dict[str, Value],
 ) -> None:
-    """The kind of constant each plain name target gets (`?` when not a constant)."""
+    """The kind of constant each plain name target gets (`?` when not a constant):
+    a literal, or a number of a constant table of literals (`constants`)."""
     value = node.value
     kind = "?"
     if isinstance(value, ast.Constant) and not isinstance(value.value, complex):
         kind = {bool: "bool", int: "int", float: "float", str: "str"}.get(
             type(value.value), "?"
         )
+    else:  # `-1.0`, `moveBindings[key][1]`
+        kind = plain_kind(value, constants)
     if isinstance(node, ast.AugAssign) and kind == "str":
         kind = "?"
-    targets = node.targets if isinstance(node, ast.Assign) else [node.target]
-    for target in targets:
+    for target in _targets(node):
         if isinstance(target, ast.Name):
             found.setdefault(target.id, set()).add(kind)
         else:
             for inner in walk(target):
                 if isinstance(inner, ast.Name):
                     found.setdefault(inner.id, set()).add("?")
+
+
+def _targets(node: ast.Assign | ast.AugAssign) -> list[ast.expr]:
+    return node.targets if isinstance(node, ast.Assign) else [node.target]
 
 
 BINDERS = (

@@ -254,7 +254,9 @@ class LibraryEvaluator(ParameterEvaluator):
                 f"by the stub {function.origin} shipped with RobotFix",
             )
         )
-        if not self.check.units_agree(decl.unit, value, self.site, target, declared):
+        if not self.check.units_agree(
+            decl.unit, value, self.site, target, declared, state
+        ):
             return
         if value.term is None or decl.predicate == A.TRUE or value.kind == "object":
             return

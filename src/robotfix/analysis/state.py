@@ -8,11 +8,19 @@ whose common prefix is shared, so a join only has to disjoin what the branches a
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from typing import Protocol
 
 from robotfix.analysis.decisions import Decisions, merged
-from robotfix.analysis.values import Defs, MaybeDefault, MsgObj, Value
+from robotfix.analysis.values import (
+    Choice,
+    Choices,
+    Defs,
+    MaybeDefault,
+    MsgObj,
+    Value,
+    replace,
+)
 from robotfix.annotations import ast as A
 
 
@@ -185,6 +193,8 @@ def join(a: State, b: State, joiner: Joiner) -> State:
             tie = _tie(value, x, y, a, b, p, joiner)
             if tie is not None:
                 a.shared.defs[value.term.ident] = (*defines, (value.term.ident, tie))
+            if value.unit is None and not value.literal and value.is_number:
+                value = _with_choices(value, x, y, p, defines)
         return value
 
     def unset(ux: MaybeDefault | None, uy: MaybeDefault | None) -> MaybeDefault | None:
@@ -246,6 +256,33 @@ def join(a: State, b: State, joiner: Joiner) -> State:
         shared += 1
     tests = a.tests[:shared]
     return State(env, heap, facts, True, versions, defined, a.shared, exits, tests)
+
+
+# Choices a merged number keeps at most (an `elif` chain of constants in one unit
+# each): past that, its unit is unknown, as any other merged number's.
+MAX_CHOICES = 8
+
+
+def _with_choices(value: Value, x: Value, y: Value, p: A.Expr, defines: Defs) -> Value:
+    """A merged number of no unit, with the units it has on each path (`Choices`)."""
+    options = (*_options(x, p, defines), *_options(y, A.Unary("not", p), defines))
+    if not options or len(options) > MAX_CHOICES:
+        return value
+    assert isinstance(value.term, A.Sym)
+    return replace(value, choices=Choices(value.term.ident, options))
+
+
+def _options(side: Value, when: A.Expr, defines: Defs) -> tuple[Choice, ...]:
+    """What `side`, merged on the paths where `when` holds, is there per unit."""
+    inner = side.options()
+    if inner:
+        return tuple(
+            Choice(c.value, A.Binary("and", when, c.when), (*defines, *c.defs))
+            for c in inner
+        )
+    if side.unit is None or side.literal or not side.is_number:
+        return ()
+    return (Choice(side, when, defines),)
 
 
 def _join_heaps(

@@ -90,6 +90,26 @@ Defs = tuple[tuple[int, A.Expr], ...]
 
 
 @dataclass(frozen=True)
+class Choice:
+    """What a number merged at a join (`if flag: v = KMH else: v = MS`) is on the
+    paths where `when` (over join selectors, defined by `defs`) holds: `value`,
+    with the unit the merged number no longer has."""
+
+    value: Value
+    when: A.Expr
+    defs: Defs
+
+
+@dataclass(frozen=True)
+class Choices:
+    """The units a merged number had on the paths it was merged from, while it is
+    that number (its solver symbol `ident`): arithmetic on it makes another."""
+
+    ident: int
+    options: tuple[Choice, ...]
+
+
+@dataclass(frozen=True)
 class MaybeDefault:
     """A message field set on some paths only: on the paths where `when` holds (a
     condition over join selectors) it still has its ROS default."""
@@ -129,6 +149,18 @@ class Value:
     # a conversion call that gave the unit, kept through literal factors
     # (`-math.degrees(x) / 2.`): a unit message's advice comes from it
     conversion: Conversion | None = field(default=None, compare=False)
+    # a number merged at a join from ones in different units: what it is per path
+    choices: Choices | None = field(default=None, compare=False)
+
+    def options(self) -> tuple[Choice, ...]:
+        """The units this number has on the paths it was merged from (none, unless
+        it is a merged number as it was merged: no unit, factor or radian since)."""
+        chosen, term = self.choices, self.term
+        if chosen is None or self.unit is not None or self.factors or self.rad_free:
+            return ()
+        return (
+            chosen.options if type(term) is A.Sym and term.ident == chosen.ident else ()
+        )
 
     @property
     def known_term(self) -> A.Expr:
