@@ -40,7 +40,8 @@ def check_case(path: Path) -> list[Diagnostic]:
 
 
 def _distro(folder: Path) -> str:
-    return "ros1" if "ros1" in folder.relative_to(CASES).parts else "ros2"
+    """ROS 1 for the cases under `ros1/`; ROS 2 elsewhere (also outside the cases)."""
+    return "ros1" if folder.is_relative_to(CASES / "ros1") else "ros2"
 
 
 # launch/: whole workspaces, whose launch files' findings need the tree
