@@ -285,9 +285,12 @@ def test_skeleton_blanks_only_numbers_no_other_unit_reads() -> None:
         "    rclpy.sleep(1.5)\n"
         "    if y > 4.0:\n"
         "        return y * 7.0\n"
+        "def kmh_to_ms(v):\n"
+        "    return v / 3.6\n"
     )
     blanked = skeleton(ast.parse(text), text.splitlines(keepends=True))
-    for kept in ("2.0", "3.0", "0.25", "1.5", "4.0"):
+    # 3.6: callers evaluate the one-expression helper (analysis/inline.py)
+    for kept in ("2.0", "3.0", "0.25", "1.5", "4.0", "3.6"):
         assert kept in blanked
     assert "0.5" not in blanked and "7.0" not in blanked
     assert "y * #3#" not in blanked and "y * #" in blanked  # last on its line
@@ -306,3 +309,25 @@ def test_kept_proofs_show_the_counterexample_of_a_fresh_check(tmp_path: Path) ->
 
     path = tmp_path / "generated_450.py"
     assert differential(path, generate(450), MsgCatalog([]), 8, 3) >= 3
+
+
+def test_edit_of_an_evaluated_helper_replays_no_caller(tmp_path: Path) -> None:
+    """A caller reads a one-expression helper's literals (analysis/inline.py): an
+    edit of `3.6` there gives the caller's fresh diagnostics, not its kept ones."""
+    from robotfix.ros.catalog import MsgCatalog
+
+    catalog = MsgCatalog([])
+    text = (
+        "from typing import Annotated\n"
+        "def kmh_to_ms(v):\n"
+        "    return v / 3.6\n"
+        "def drive(speed: Annotated[float, \"Unit('km/h')\"]) -> None:\n"
+        "    out: Annotated[float, \"Unit('m/s')\"] = kmh_to_ms(speed)\n"
+    )
+    path = tmp_path / "node.py"
+    memo = ProofMemo()
+    assert not check_source(text, str(path), Config(), catalog, memo=memo)
+    edited = text.replace("3.6", "1.0")
+    found = check_source(edited, str(path), Config(), catalog, memo=memo)
+    assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
+    assert [d.rule.code for d in found] == ["RF201"]

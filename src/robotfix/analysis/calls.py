@@ -9,8 +9,10 @@ from __future__ import annotations
 import ast
 from dataclasses import replace
 from fractions import Fraction
+from functools import partial
 
-from robotfix.analysis import containers, frames, heap, imported
+from robotfix.analysis import containers, frames, heap, imported, inline
+from robotfix.analysis.context import Scope
 from robotfix.analysis.library import LibraryEvaluator
 from robotfix.analysis.program import Function, attribute_key
 from robotfix.analysis.state import State
@@ -19,6 +21,7 @@ from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import INFINITY, NUMBERS
 from robotfix.ros.api_model import PARAMETER_CALLS
+from robotfix.stubs import load as stubs
 
 # Methods whose first argument leaves the node: it must satisfy its refinements.
 LEAVING = frozenset(
@@ -61,6 +64,8 @@ ZERO = A.Num(Fraction(0), True)
 
 
 class CallEvaluator(LibraryEvaluator):
+    inlined: tuple[str, ...] = ()  # helpers being evaluated at a call
+
     def eval_Call(self, node: ast.Call, state: State) -> Value:
         func = node.func
         method = func.attr if isinstance(func, ast.Attribute) else None
@@ -288,10 +293,114 @@ class CallEvaluator(LibraryEvaluator):
                     log.sink(where, exprs[name], decl.unit, value)
                 else:
                     log.call(where, function.key, name, exprs[name])
-        if function.returns is None:  # what its `return`s give, if they agree
+        if function.returns is None:  # `return <expr>` alone: the expression here
+            inlined = self.inline_call(function, args, kwargs, bound, state)
+            if inlined is not None:
+                return inlined  # else what its `return`s give, if they agree
             return self.typed(self.program.types.returns(function.key), node, state)
         lookup = {**self._callee_names(function.returns, function, state), **terms}
         return self.check.assumed(state, f"{function.name}()", function.returns, lookup)
+
+    def helper_evaluator(self, function: Function) -> CallEvaluator | None:
+        """An evaluator for `function`'s expression at a call (the statement
+        interpreter provides one, with the helper's scope)."""
+        return None
+
+    def inline_call(
+        self,
+        function: Function,
+        args: list[Value],
+        kwargs: dict[str | None, Value],
+        bound: bool,
+        state: State,
+    ) -> Value | None:
+        """The result of a one-expression helper evaluated with its parameters
+        bound to the arguments (`analysis/inline.py`); None when it is not one, or
+        when evaluating it reported something (a bug inside it: unknown, as before)."""
+        expr = self._inlinable(function, self.inlined)
+        fn = function.node
+        if expr is None or not isinstance(fn, ast.FunctionDef):
+            return None
+        given = inline.bind(fn, bound and function.is_method, args, kwargs)  # type: ignore[arg-type]
+        scope = self.program.signature(self.ctx, function)
+        params = {n for n, _ in inline.parameters(fn, False)}
+        if (
+            given is None
+            or any(scope.decls.get(n) is not None for n in params)
+            or not (inline.names(expr) & params) <= set(given)
+        ):
+            return None
+        sub = self.helper_evaluator(function)
+        if sub is None:
+            return None
+        ctx, env = self.ctx, state.env
+        hovers, flows, dropped = ctx.hovers, ctx.unit_flows, ctx.dropped
+        ctx.hovers = ctx.unit_flows = None  # the helper's text shows its own
+        ctx.muted += 1
+        state.env = {}
+        try:
+            bindings = {
+                name: value if isinstance(value, Value) else sub.eval(value, state)  # type: ignore[arg-type]
+                for name, value in given.items()
+            }
+            state.env = dict(bindings)
+            value = sub.eval(expr, state)
+        finally:
+            state.env = env
+            ctx.hovers, ctx.unit_flows = hovers, flows
+            ctx.muted -= 1
+        return value if ctx.dropped == dropped else None
+
+    def _inlinable(
+        self, function: Function, within: tuple[str, ...]
+    ) -> ast.expr | None:
+        """The expression a module-level helper returns when a call may be evaluated
+        through it (`inline.returned`, `inline.pure`), not inside itself and at most
+        `inline.MAX_DEPTH` deep."""
+        module = function.parent
+        if function.key in within or len(within) >= inline.MAX_DEPTH:
+            return None
+        if module.parent is not None or function.returns is not None:
+            return None
+        expr = inline.returned(function.node)
+        if expr is None:
+            return None
+        params = {n for n, _ in inline.parameters(function.node, False)}  # type: ignore[arg-type]
+        known = params | module.local_names | inline.PURE_BUILTINS
+        if not inline.names(expr) <= known:
+            return None  # a name that is not bound where the helper is
+        defaults = [d for _, d in inline.parameters(function.node, False) if d]  # type: ignore[arg-type]
+        if any(inline.names(d) & params for d in defaults):
+            return None  # a default reads a module name the parameter hides
+        ok = partial(self._pure_callee, params, module, (*within, function.key))
+        if inline.pure(expr, ok) and all(inline.pure(d, ok) for d in defaults):
+            return expr
+        return None
+
+    def _pure_callee(
+        self, params: set[str], module: Scope, within: tuple[str, ...], call: ast.Call
+    ) -> bool:
+        """A pure builtin, a stubbed `math`/`numpy` function, or a helper that may
+        itself be evaluated at the call."""
+        func = call.func
+        if isinstance(func, ast.Name) and func.id not in params:
+            if func.id in inline.PURE_BUILTINS and func.id not in module.local_names:
+                return True
+            helper = self.program.functions.get(func.id)
+            return helper is not None and self._inlinable(helper, within) is not None
+        name = inline.dotted(func)
+        head, _, rest = (name or "").partition(".")
+        found = self.static_value(head) if head not in params else None
+        if not rest or found is None or found.kind != "module" or not found.name:
+            return False
+        qualified = f"{found.name}.{rest}"
+        return (
+            qualified.split(".")[0] in inline.PURE_LIBRARIES
+            and qualified.rsplit(".", 1)[-1] not in inline.MUTATING
+            and isinstance(
+                imported.resolve_library(self.ctx, qualified), stubs.Function
+            )
+        )
 
     def _callee_names(
         self, decl: object, function: Function, state: State

@@ -118,6 +118,7 @@ class FileContext:
         self._question_ids = itertools.count(-1, -1)
         self._invariants: dict[str, list[Invariant]] = {}
         self.muted = 0  # > 0: checks go on, their reports are dropped
+        self.dropped = 0  # reports dropped so far (a muted helper call reported)
         # (span, markdown) for names and fields, kept only for editor hovers
         self.hovers: list[tuple[Span, str]] | None = None
         # where unannotated names flow (analysis/flows.py), for `robotfix suggest`;
@@ -231,6 +232,7 @@ class FileContext:
 
     def report(self, diag: Diagnostic, once: tuple[object, ...] | None = None) -> None:
         if self.muted:
+            self.dropped += 1
             return
         if self.unit_log is not None:
             if once is not None:
@@ -247,6 +249,7 @@ class FileContext:
         with the same `once` key comes first: one bug, one diagnostic, the one
         that knows most (`math.degrees(deg)` stored into rad: "use
         `math.radians()`", not "drop the call")."""
+        self.dropped += bool(self.muted)
         if not self.muted and once not in self._reported:
             self._deferred.setdefault(once, diag)
 

@@ -364,6 +364,14 @@ class Interpreter(CallEvaluator):
     def static_value(self, name: str) -> Value | None:
         return self.statics.get(name)
 
+    def helper_evaluator(self, function: Function) -> Interpreter:
+        """An interpreter for a helper's expression evaluated at a call."""
+        scope = self.program.signature(self.ctx, function)
+        sub = Interpreter(self.ctx, self.program, scope, self.statics, function)
+        sub.inlined = (*self.inlined, function.key)
+        sub.site = self.site
+        return sub
+
     def refinement_term(self, name: str, state: State) -> A.Expr | None:
         """Names in refinements resolve as in code: a local, a constant, a module
         name; `self.LIMIT` and `Node.LIMIT` to class constants."""
@@ -704,7 +712,9 @@ class Interpreter(CallEvaluator):
         of = (
             types.Obj(value.name)
             if value.kind == "instance"
-            else types.Lib(value.name) if value.kind == "object" else None
+            else types.Lib(value.name)
+            if value.kind == "object"
+            else None
         )
         items = Items(item, each, size, message=message, of=of)
         made = Value(kind, unit=unit, items=items, factors=factors)

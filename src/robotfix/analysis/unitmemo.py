@@ -10,7 +10,8 @@ Key of an item (`Check.analyze`):
 - the module's *skeleton*: its whole text with positions, except that the numeric
   literals inside function bodies are blanked (`skeleton`) where no other unit's
   analysis can read them: not inside a call (parameter declarations, timer periods,
-  `sys.exit(1)`), not the value of a store to an attribute or subscript
+  `sys.exit(1)`), not in a helper its callers evaluate (`def f(v): return v /
+  3.6`, `analysis/inline.py`), not the value of a store to an attribute or subscript
   (`self.x = 0.5`, `r.from_value = 0.0`), not an `if`/`while` test, not an
   annotation or anything in a `def` header. A literal's length is kept when text
   follows it on its line, so every other token's position is in the key. The
@@ -43,6 +44,8 @@ keys is one of its own nodes (translated by walk order).
 Writes of an item (read from the code), and what happens to each on a replay:
 - `ctx.diagnostics` / `ctx._reported`: every `report(diag, once)` and `report_once`
   call is logged in order and replayed through the same calls (same de-duplication);
+- `ctx.dropped`: compared only within one call (`CallEvaluator.inline_call`), never
+  replayed;
 - `ctx.steps` (RF902 work budget): added; a replay that would cross the budget runs
   the item instead; `ctx._next` / `_question_ids`: advanced by the count used;
 - the solver: an item that asked z3 (or was charged a kept verdict's work) is not
@@ -75,6 +78,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from robotfix.analysis import inline
 from robotfix.analysis.context import STEP_BUDGET, Scope
 from robotfix.astwalk import walk
 
@@ -376,6 +380,7 @@ _OWN_CTX = frozenset(
         "_first_reads",
         "sizes",
         "steps",
+        "dropped",
         "_invariants",
         "follow_lists",
         "parameters",
@@ -501,7 +506,11 @@ def skeleton(tree: ast.Module, lines: list[str]) -> str:
     spans: dict[int, list[tuple[int, int]]] = {}
     todo: list[ast.AST] = []
     for node in walk(tree):
-        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+        # a helper its callers evaluate (`return v / 3.6`) is kept whole
+        if (
+            isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef))
+            and inline.returned(node) is None
+        ):
             todo.extend(node.body)
     seen: set[int] = set()
     while todo:
