@@ -1,14 +1,14 @@
 """Per-file results under `.robotfix_cache/`, as ruff and mypy keep them.
 
 An entry is reused only when the file's bytes, the path it was named by, its
-per-file ignores, the run key (RobotFix's version and a digest of its own files, the settings that change results,
-the unit and message libraries), the resolved definition of every message type the
-file looked up (`MsgCatalog.fingerprint_types`) and the fingerprint of everything
-it consulted of other modules (`project/summary.py`: each module asked for, whose
-fingerprint holds what building its summary consulted, each member of one looked
-up) are all unchanged: changing, adding or
-moving one `.msg` re-checks exactly the files it can affect, a changed helper
-module re-checks the files that import it only when a member they read of it
+per-file ignores, the run key (RobotFix's version and a digest of its own files,
+the settings that change results, the unit and message libraries), the resolved
+definition of every message type the file looked up (`MsgCatalog.fingerprint_types`)
+and the fingerprint of everything it consulted of other modules
+(`project/summary.py`: each module asked for, whose fingerprint holds what building
+its summary consulted, each member of one looked up) are all unchanged: changing,
+adding or moving one `.msg` re-checks exactly the files it can affect, a changed
+helper module re-checks the files that import it only when a member they read of it
 changed, and a cached run prints what an uncached one prints, byte for byte.
 The fingerprints of summaries (the module's and each member's) are kept too, by
 the hash of their file's bytes, so that a cached run over an unchanged tree parses

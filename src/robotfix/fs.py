@@ -38,6 +38,8 @@ def _umask() -> int:
     mask = os.umask(0o022)  # POSIX has no read-only query; set it back at once
     os.umask(mask)
     return mask
+
+
 _MEANWHILE = "another program wrote to it during the rewrite"
 _LOST = f"{_MEANWHILE}, and one of its writes is lost"
 

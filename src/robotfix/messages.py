@@ -463,8 +463,8 @@ def implicit_unit_change(
         kind, unit, example = "a time step", "s", "DT: Annotated[float, \"Unit('s')\"]"
     message = (
         f"`{stmt}` gives {target} a value in {got}, but {target} {_is(target)} in "
-        f"{expected}: an implicit {kind[2:]} in {unit}; multiply by {kind} declared with its unit "
-        f"(`{example} = ...`)"
+        f"{expected}: an implicit {kind[2:]} in {unit}; multiply by {kind} declared "
+        f"with its unit (`{example} = ...`)"
     )
     notes = (declared.note(),) if declared is not None else ()
     return Diagnostic(rules.IMPLICIT_UNIT_CHANGE, path, span, message, notes)

@@ -350,7 +350,7 @@ class LibraryEvaluator(ParameterEvaluator):
             unit = next((u for u in units if u is not None), None)
         elif any(
             found is None and other.unit is not None and not other.literal
-            for found, other in zip(units, values[1:])
+            for found, other in zip(units, values[1:], strict=True)
         ):
             unit = None  # reported (RF202): no unit, as for `+`, so no cascade
         if short == "hypot":
