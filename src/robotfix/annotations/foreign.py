@@ -1,13 +1,13 @@
 """Metadata other libraries put in `Annotated`, read as RobotFix would write it.
 
 - annotated-types constraints (`Gt(0)`, `Le(1.5)`, `Interval(ge=0, lt=MAX)`,
-  `MinLen(1)`, `MaxLen(10)`, `Len(0, 10)`, `Unit('m')`), as pydantic users write
+  `MinLen(1)`, `MaxLen(10)`, `Len(0, 10)`, `MultipleOf(5)`, `Unit('m')`), as pydantic users write
   them: each becomes the refinement text it means (`_ > 0`, `len(_) <= 10`,
   `Unit('m')`), read from the AST only (annotated_types is never imported), and only
   when the call's name is annotated_types' own (`from annotated_types import Gt`,
   `at.Gt`). An argument is a number or a name (a constant, `math.pi`), as a string
   refinement would write it; anything else, and the constraints with no meaning for
-  RobotFix (`MultipleOf`: the language has no `%`; `Predicate`, `Timezone`), is
+  RobotFix (`Predicate`, `Timezone`), is
   `Unusable`: the caller notes it (RF511).
 - a unit written as a bare string (`Annotated[float, "m"]`, `"unit:m/s"`), as other
   unit checkers write it: `unit_string` says how RobotFix spells it.
@@ -31,13 +31,13 @@ _BOUNDS = {
     "MinLen": (("min_length", "len(_) >= {}"),),
     "MaxLen": (("max_length", "len(_) <= {}"),),
     "Len": (("min_length", "len(_) >= {}"), ("max_length", "len(_) <= {}")),
+    # annotated-types documents Python's meaning, `value % multiple_of == 0`
+    "MultipleOf": (("multiple_of", "_ % {} == 0"),),
 }
 _KEYWORD_ONLY = {  # `Interval` takes keywords only
     "Interval": tuple(p for bound in ("Gt", "Ge", "Lt", "Le") for p in _BOUNDS[bound])
 }
-_WHY_NOT = {
-    "MultipleOf": "the refinement language has no `%` yet",
-}
+_WHY_NOT: dict[str, str] = {}
 # dimensions a bare word may have by accident (`"count"`, `"byte"`, `"unit"` is a
 # candela per square metre)
 _NOT_PHYSICAL = frozenset({"count", "bit", "candela"})

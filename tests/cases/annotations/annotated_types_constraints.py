@@ -54,9 +54,14 @@ class Follower(Node):
         self.drive(kmh / 3.6, 0.0)  # clean
         self.drive(min(d / dt, MAX_SPEED), 0.0) if d >= 0 else None  # clean
 
+    def steps(self) -> None:
+        # MultipleOf reads as Python's `%` (annotated-types' meaning)
+        step: Annotated[int, MultipleOf(5)] = 10  # clean
+        odd: Annotated[int, MultipleOf(5)] = 12  # error: RF101
+        ticks: Annotated[float, MultipleOf(0.5)] = 2.5  # clean
+
     def unread(self) -> None:
         # not read, and each says why (RF511: a note, in ROS code)
-        step: Annotated[int, MultipleOf(5)] = 10  # note: RF511
         near: Annotated[float, at.Gt(MAX_SPEED / 2)] = 1.0  # note: RF511
         name: Annotated[str, MaxLen(10)] = "follower"  # note: RF511
         own: Annotated[float, Gt(0)] = -1.0  # note: RF511
