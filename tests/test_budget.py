@@ -179,3 +179,15 @@ def test_reading_refinements_is_counted(monkeypatch: pytest.MonkeyPatch) -> None
     # two statements and expressions a line, and each annotation's 42 characters
     monkeypatch.setattr(budget, "FILE_STEPS", 20_000)
     assert [code for _, code in codes(analyze(text))] == ["RF902"]
+
+
+def test_a_text_too_long_to_parse_is_rf902_unparsed(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    monkeypatch.setattr(budget, "MAX_PARSED_CHARS", 100_000)
+    monkeypatch.setattr("robotfix.source.MAX_PARSED_CHARS", 100_000)
+    source = SourceFile.from_text("big.py", table(3_000))
+    assert source.tree is None and source.problem is not None
+    assert (source.problem.code, source.problem.span.line) == ("RF902", 1)
+    assert "characters" in source.problem.message
+    assert SourceFile.from_text("small.py", table(10)).problem is None
