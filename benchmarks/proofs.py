@@ -70,7 +70,7 @@ def recording(tally: Tally, fast: bool) -> Iterator[None]:
                 tally.witnessed.append((vc, verdict))
         return verdict
 
-    def no_witness(predicate: Any, sort: Any) -> bool:
+    def no_witness(predicate: Any, sort: Any, budget: Any = None) -> bool:
         pending[:] = [witness(predicate, sort)]  # the next question is its own
         return False
 

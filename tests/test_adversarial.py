@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 from hypothesis import HealthCheck, given, settings
 
-from robotfix.analysis import context
+from robotfix import budget
 from robotfix.api import check_paths, check_source
 from robotfix.config import Config
 
@@ -103,7 +103,7 @@ def test_symlink_loops_and_unreadable_files(tmp_path: Path) -> None:
 def test_one_pathological_file_is_cut_off(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    monkeypatch.setattr(context, "STEP_BUDGET", 500)
+    monkeypatch.setattr(budget, "FILE_STEPS", 500)
     big = "\n".join(f"v{i} = {i}" for i in range(2_000)) + "\n"
     assert run({"huge.py": big.encode()}, tmp_path) == {"huge.py": ["RF902"]}
 

@@ -168,7 +168,7 @@ def test_the_cases_give_the_diagnostics_of_z3_alone(
     paths = sorted(CASES.rglob("*.py"))
     fast, _ = _questions(paths, monkeypatch)
     with monkeypatch.context() as patch:
-        patch.setattr(api, "_without_solver", lambda vc: None)
+        patch.setattr(api, "_without_solver", lambda vc, budget=None: None)
         patch.setattr(api.Discharger, "prepass", False)
         slow, _ = _questions(paths, monkeypatch)
     assert fast == slow

@@ -124,7 +124,7 @@ def _run(paths: list[Path], fast: bool, monkeypatch: pytest.MonkeyPatch) -> Any:
         asked.append((question, verdict, bool(pending) and pending.pop()))
         return verdict
 
-    def no_witness(predicate: A.Expr, sort: Any) -> bool:
+    def no_witness(predicate: A.Expr, sort: Any, budget: Any = None) -> bool:
         pending[:] = [witness(predicate, sort)]
         return False
 

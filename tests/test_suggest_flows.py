@@ -102,10 +102,10 @@ def test_apply_from_the_command_line(tmp_path: Path) -> None:
 def test_no_suggestion_when_the_analysis_stopped_early(
     catalog: MsgCatalog, monkeypatch: pytest.MonkeyPatch
 ) -> None:
-    from robotfix.analysis import context
+    from robotfix import budget
 
     source = (CASES / "drive_helper.py").read_text(encoding="utf-8")
     assert api.unit_suggestions(source, "node.py", catalog)
     # stopped before `self.wait(None)`: `seconds` would look like a time
-    monkeypatch.setattr(context, "STEP_BUDGET", 100)
+    monkeypatch.setattr(budget, "FILE_STEPS", 100)
     assert api.unit_suggestions(source, "node.py", catalog) == []

@@ -28,6 +28,7 @@ if TYPE_CHECKING:  # the analysis is imported only when a file is checked
     from robotfix.analysis.context import FileContext
     from robotfix.analysis.imported import Resolver
     from robotfix.analysis.vc import VC, Verdict
+    from robotfix.budget import Budget
     from robotfix.project.summary import Project
     from robotfix.ros.catalog import MsgCatalog
     from robotfix.smt.memo import ProofMemo
@@ -63,21 +64,33 @@ class Discharger:
     """The solver callback for one file: closed goals that fold to true need no
     solver, nor do bound checks the facts' intervals prove (`smt.prepass`); z3 is
     imported, and a session started, only when a VC needs it (z3 costs ~70 ms to
-    import)."""
+    import). Every stage charges its work to `budget`, the file's (shared with
+    its analysis): once that is spent, every question is undecided."""
 
     prepass = True  # off only to compare verdicts with z3 alone (tests, benchmarks)
 
-    def __init__(self, memo: ProofMemo | None = None) -> None:
+    def __init__(
+        self, memo: ProofMemo | None = None, budget: Budget | None = None
+    ) -> None:
+        from robotfix.budget import Budget
+
+        self.budget = budget if budget is not None else Budget()
         self._session: Any = None
         self._memo = memo  # verdicts kept across checks of one document (editor)
         self._solved = False  # a kept verdict came from z3: the session would exist
-        self._charged = 0  # work of kept verdicts charged before a session existed
         self._asked = False  # the last `_decide` asked z3
+        self._calls = 0  # questions put to z3, kept verdicts of z3's included
+        self._prepass: Any = None  # the file's pre-pass, made at the first VC
 
     def __call__(self, vc: VC) -> Verdict:
-        from robotfix.analysis.vc import Proved, Violated
+        from robotfix.analysis.vc import OUT_OF_BUDGET, Proved, Violated
+        from robotfix.budget import FACTS_PER_STEP
         from robotfix.smt.fold import fold
 
+        budget = self.budget
+        if budget.spent:
+            return OUT_OF_BUDGET
+        budget.spend(1 + len(vc.facts) // FACTS_PER_STEP)
         folded = fold(vc.goal)
         if folded is True:
             return Proved()
@@ -93,63 +106,59 @@ class Discharger:
         found = self._memo.get(*keyed)
         if found is not None and self._charge(found[1]):
             self._solved = self._solved or found[2]
+            self._calls += int(found[2])
             return found[0]
         self._asked = False
-        used = self._session.used if self._session is not None else 0
+        used = budget.used
         verdict = self._decide(vc)
-        if self._asked:
-            self._memo.put(*keyed, verdict, self._session.used - used, True)
-        else:
-            self._memo.put(*keyed, verdict, 0, False)
+        self._memo.put(*keyed, verdict, budget.used - used, self._asked)
         return verdict
 
-    # -- for analysis/unitmemo.py: an item replayed charges what it cost ------
-    def work_used(self) -> int:
-        return self._session.used if self._session is not None else self._charged
+    # -- for analysis/unitmemo.py: an item that asked z3 is not kept ----------
+    def solver_calls(self) -> int:
+        return self._calls
 
     def work_state(self) -> tuple[bool, bool]:
         """What changes how later VCs are decided: a session, a kept z3 verdict."""
         return self._session is not None, self._solved
 
-    def charge_kept(self, work: int) -> bool:
-        return work == 0 or self._charge(work)
-
     def _charge(self, work: int) -> bool:
-        """Count a kept verdict's work against the file's solver budget, as asking
-        again would; False when the budget could not pay for it (ask instead)."""
-        from robotfix.smt.budget import FILE_RLIMIT
-
-        if self._session is None:
-            if self._charged + work > FILE_RLIMIT:
-                return False
-            self._charged += work
-            return True
-        if self._session.used + work > FILE_RLIMIT:
+        """Count a kept verdict's work against the file's budget, as deciding it
+        again would; False when the budget could not pay for it (decide instead)."""
+        if not self.budget.affords(work):
             return False
-        self._session.charge(work)
+        self.budget.spend(work)
         return True
 
     def _decide(self, vc: VC) -> Verdict:
         from robotfix.analysis.vc import Proved
-        from robotfix.smt.prepass import proves
 
-        if self.prepass and proves(vc):
-            return Proved()
+        if self.prepass:
+            if self._prepass is None:
+                from robotfix.smt.prepass import Prepass
+
+                self._prepass = Prepass()
+            prepass = self._prepass
+            before = prepass.work
+            proved = prepass.proves(vc)
+            self.budget.spend(prepass.work - before)
+            if proved:
+                return Proved()
         if self._session is None:  # until z3 is needed, it may not be
             if not self._solved:  # as it would be without kept verdicts
-                decided = _without_solver(vc)
+                decided = _without_solver(vc, self.budget)
                 if decided is not None:
                     return decided
             from robotfix.smt.solver import Session
 
-            self._session = Session()
-            self._session.charge(self._charged)
+            self._session = Session(budget=self.budget)
         self._asked = True
+        self._calls += 1
         verdict: Verdict = self._session.check(vc)
         return verdict
 
 
-def _without_solver(vc: VC) -> Verdict | None:
+def _without_solver(vc: VC, budget: Budget | None = None) -> Verdict | None:
     """A VC whose boolean skeleton decides it (`smt.propositional`): most questions
     of whether a path can run, so that z3 is loaded for a file only when a VC
     needs numbers. A question the skeleton leaves open is answered "possible"
@@ -162,11 +171,11 @@ def _without_solver(vc: VC) -> Verdict | None:
     from robotfix.smt.propositional import components, satisfiable
 
     negated: bool | None = True  # groups sharing no symbol are independent
-    for group in components([*vc.facts, A.Unary("not", vc.goal)]):
-        found = satisfiable(group)
+    for group in components([*vc.facts, A.Unary("not", vc.goal)], budget):
+        found = satisfiable(group, budget)
         if found is False:
             return Proved()
-        if found is None and not (vc.question and holds_somewhere(group)):
+        if found is None and not (vc.question and holds_somewhere(group, budget)):
             negated = None
     if negated is True and vc.question:
         return Unproven((), ())
@@ -344,13 +353,19 @@ def _analyze(
     resolver: Resolver | None = None,
     memo: ProofMemo | None = None,
 ) -> FileContext:
-    """Run the analysis on a parsed file; a pathological file stops with RF902 and
-    keeps what was found before."""
-    from robotfix.analysis.context import BudgetExceededError, FileContext
+    """Run the analysis on a parsed file; a pathological file stops where its work
+    budget is spent (RF902, or RF901 when a solver question spent it) and keeps
+    what was found before."""
+    from robotfix.analysis.context import (
+        SOLVER_BUDGET,
+        BudgetExceededError,
+        FileContext,
+    )
     from robotfix.analysis.interpreter import analyze_module
     from robotfix.stubs.load import stub_set
 
-    ctx = FileContext(source, catalog, Discharger(memo), resolver)
+    discharge = Discharger(memo)
+    ctx = FileContext(source, catalog, discharge, resolver, discharge.budget)
     ctx.unit_memo = memo.units if memo is not None else None
     ctx.stubs = stubs or stub_set()
     ctx.hovers = [] if hovers else None
@@ -361,9 +376,12 @@ def _analyze(
     try:
         analyze_module(ctx)
     except BudgetExceededError as stop:
-        ctx.report(
-            messages.analysis_budget(source.path, stop.line, "too much code to follow")
-        )
+        if not ctx.already(SOLVER_BUDGET):  # no RF901 said where it stopped
+            ctx.report(
+                messages.analysis_budget(
+                    source.path, stop.line, "its work budget is used up"
+                )
+            )
     except RecursionError:
         ctx.report(messages.analysis_budget(source.path, 1, "nested too deeply"))
     return ctx
@@ -465,7 +483,9 @@ def _contradictions(catalog: MsgCatalog) -> list[Diagnostic]:
     discharge = Discharger()
     idents = itertools.count(-1, -1)
     for spec in catalog.refined_specs():
-        for bad in consistent_invariants(discharge, catalog, spec, idents)[1]:
+        for bad in consistent_invariants(
+            discharge, catalog, spec, idents, discharge.budget
+        )[1]:
             earlier = (bad.earlier.path, bad.earlier.line) if bad.earlier else None
             found.append(
                 messages.contradictory_invariant(

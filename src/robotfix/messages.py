@@ -355,9 +355,9 @@ def solver_budget(path: str, span: Span, stmt: str, predicate: str) -> Diagnosti
         rules.SOLVER_UNKNOWN,
         path,
         span,
-        f"could not decide whether `{stmt}` keeps `{predicate}`: the solver budget "
-        "of this file is used up, so this and every later refinement check in the "
-        "file is left undecided",
+        f"could not decide whether `{stmt}` keeps `{predicate}`: the work budget "
+        "of this file is used up, so the analysis stops here; what was found before "
+        "is reported, the rest of the file is not checked",
         (Note("split the file, or simplify nonlinear refinements and expressions"),),
     )
 

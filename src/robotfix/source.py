@@ -1,7 +1,8 @@
 """SourceFile: one Python file's text, its AST, columns in characters, suppressions.
 
 Reading and parsing never raise for a fault in the user's file: an unreadable file is
-RF003, a Python 2 file RF002, any other syntax error RF001.
+RF003, a Python 2 file RF002, any other syntax error RF001, a text too long to
+parse (`budget.MAX_PARSED_CHARS`) RF902.
 """
 
 from __future__ import annotations
@@ -15,6 +16,7 @@ import warnings
 from dataclasses import dataclass, field
 
 from robotfix import messages, rules
+from robotfix.budget import MAX_PARSED_CHARS
 from robotfix.diagnostics import Diagnostic, Span
 
 _SUPPRESS = re.compile(
@@ -74,6 +76,14 @@ class SourceFile:
     @staticmethod
     def from_text(path: str, text: str) -> SourceFile:
         source = SourceFile(path, text, lines=LINE_BREAK.split(text))
+        if len(text) > MAX_PARSED_CHARS:
+            source.problem = messages.analysis_budget(
+                path,
+                1,
+                f"{len(text):,} characters of source, over the {MAX_PARSED_CHARS:,} "
+                "RobotFix parses",
+            )
+            return source
         try:
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")  # SyntaxWarning in user code is theirs

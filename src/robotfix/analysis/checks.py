@@ -13,7 +13,7 @@ from typing import NamedTuple
 
 from robotfix import messages
 from robotfix.analysis import containers, frames, heap, parameters
-from robotfix.analysis.context import FileContext
+from robotfix.analysis.context import SOLVER_BUDGET, FileContext
 from robotfix.analysis.state import State
 from robotfix.analysis.values import (
     SEQUENCES,
@@ -118,10 +118,10 @@ class Checker:
             )
             return WARNED
         assert isinstance(verdict, Undecided)
-        if verdict.out_of_budget:  # one report: every later question is undecided
+        if verdict.out_of_budget:  # the analysis stops at its next step
             self.ctx.report(
                 messages.solver_budget(self.path, span, stmt, predicate),
-                once=("solver budget",),
+                once=SOLVER_BUDGET,
             )
             return FAILED
         self.ctx.report(

@@ -14,6 +14,7 @@ from robotfix.analysis.values import sort_of
 from robotfix.analysis.vc import VC, Proved, Verdict
 from robotfix.annotations import ast as A
 from robotfix.annotations.witness import has_witness
+from robotfix.budget import Budget
 from robotfix.ros.catalog import Invariant, MsgCatalog, MsgSpec, Origin
 
 Discharge = Callable[[VC], Verdict]
@@ -24,12 +25,14 @@ def contradictory(
     predicate: A.Expr,
     sort: Callable[[str], str],
     idents: Iterator[int],
+    budget: Budget | None = None,
 ) -> bool:
     """Whether no values of its names (each of sort `sort(name)`, a symbol with the
-    next of `idents`) satisfy `predicate`. Undecided counts as satisfiable."""
+    next of `idents`) satisfy `predicate`. Undecided counts as satisfiable. The
+    search for a witness is charged to `budget` (the file's)."""
     if predicate == A.TRUE or _one_bound_each(predicate):
         return False
-    if has_witness(predicate, sort):  # values that satisfy it: no solver needed
+    if has_witness(predicate, sort, budget):  # values that satisfy it: no solver
         return False
     names = sorted({n.name for n in A.names(predicate)})
     mapping: dict[str, A.Expr] = {
@@ -69,7 +72,11 @@ class Contradiction:
 
 
 def consistent_invariants(
-    discharge: Discharge, catalog: MsgCatalog, spec: MsgSpec, idents: Iterator[int]
+    discharge: Discharge,
+    catalog: MsgCatalog,
+    spec: MsgSpec,
+    idents: Iterator[int],
+    budget: Budget | None = None,
 ) -> tuple[list[Invariant], list[Contradiction]]:
     """The invariants of `spec` that can hold together, declaration by declaration
     (one annotation line) in order, and the declarations left out."""
@@ -83,10 +90,14 @@ def consistent_invariants(
     for origin, parts in _declarations(spec.invariants):
         text = " and ".join(p.text for p in parts)
         own = A.conjoin([p.predicate for p in parts])
-        if contradictory(discharge, own, sort, idents):
+        if contradictory(discharge, own, sort, idents, budget):
             left_out.append(Contradiction(spec.name, origin, text, None))
         elif kept and contradictory(
-            discharge, A.conjoin([p.predicate for p in kept + parts]), sort, idents
+            discharge,
+            A.conjoin([p.predicate for p in kept + parts]),
+            sort,
+            idents,
+            budget,
         ):
             left_out.append(Contradiction(spec.name, origin, text, kept[0].origin))
         else:

@@ -21,6 +21,7 @@ from robotfix.analysis.values import SORTS, Value, sort_of
 from robotfix.analysis.vc import VC, Verdict
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Alias, Names, Refinement, extract
+from robotfix.budget import Budget
 from robotfix.diagnostics import Diagnostic, Span
 from robotfix.ros.catalog import Invariant, MsgCatalog, MsgSpec
 from robotfix.source import SourceFile
@@ -58,9 +59,14 @@ class Scope:
 
 
 # Deterministic limits (work counted, not time measured): a pathological file turns
-# into an RF902 warning instead of taking the run down.
-STEP_BUDGET = 2_000_000  # statements and expressions interpreted per file
+# into an RF902 warning instead of taking the run down. The file's work budget
+# (`robotfix.budget`) counts a step per statement and expression interpreted and per
+# character of an annotation read, with the solver's work.
 TERM_LIMIT = 400  # nodes in one solver term; beyond it the value becomes unknown
+
+
+# the `once` key of the RF901 that says a solver question spent the file's budget
+SOLVER_BUDGET: tuple[object, ...] = ("solver budget",)
 
 
 class BudgetExceededError(Exception):
@@ -76,8 +82,11 @@ class FileContext:
         catalog: MsgCatalog,
         discharge: Callable[[VC], Verdict],
         resolver: Resolver | None = None,
+        budget: Budget | None = None,
     ) -> None:
         self.source = source
+        # the file's work, shared with `discharge` when it is given the same one
+        self.budget = budget if budget is not None else Budget()
         # the other modules of the tree (`analysis/imported.py`); None: none known
         self.resolver = resolver
         self.catalog = catalog
@@ -96,7 +105,6 @@ class FileContext:
         # symbol of an integer field of a received message -> its type's range, a
         # fact added only to the questions that name the symbol (`Checker.ranges`)
         self.ranged: dict[int, tuple[int, int]] = {}
-        self.steps = 0
         self.index = FileIndex()
         self.imports: dict[str, str] = {}  # local name -> qualified name
         self.star_import = False
@@ -212,9 +220,11 @@ class FileContext:
             )
         return found or f"value #{ident}"
 
-    def step(self, node: ast.AST) -> None:
-        self.steps += 1
-        if self.steps > STEP_BUDGET:
+    def step(self, node: ast.AST, steps: int = 1) -> None:
+        """Count `steps` of the file's work at `node`; past its budget, stop."""
+        budget = self.budget
+        budget.used += steps  # `Budget.spend`, inline: a call per expression
+        if budget.used > budget.limit:
             raise BudgetExceededError(getattr(node, "lineno", 1))
 
     # -- reporting -----------------------------------------------------------
@@ -335,6 +345,8 @@ class FileContext:
         self_name: str,
         known: Callable[[str], bool] = lambda name: True,
     ) -> Refinement | None:
+        # reading a refinement is work: a step per character of the annotation
+        self.step(annotation, 1 + self._length(annotation))
         found, problems = extract(
             annotation,
             self_name,
@@ -385,6 +397,14 @@ class FileContext:
             )
             found = replace(found, predicate=A.TRUE)  # as if it had none
         return found
+
+    def _length(self, annotation: ast.expr) -> int:
+        """The characters of an annotation's source (UTF-8 bytes on one line)."""
+        line = getattr(annotation, "lineno", None)
+        if line is not None and getattr(annotation, "end_lineno", None) == line:
+            end = getattr(annotation, "end_col_offset", None) or 0
+            return max(0, end - annotation.col_offset)
+        return len(self.source.segment(annotation) or "")
 
     def alias_of(self, node: ast.expr) -> Alias | None:
         """A type alias or string constant of this module (a module summary could
@@ -439,6 +459,7 @@ class FileContext:
             found.predicate,
             lambda name: own if name == "_" else "real",
             self._question_ids,
+            self.budget,
         )
 
     def invariants(self, spec: MsgSpec) -> list[Invariant]:
@@ -446,7 +467,7 @@ class FileContext:
         RF509, reported once on the interface file)."""
         if spec.name not in self._invariants:
             self._invariants[spec.name] = consistent_invariants(
-                self.discharge, self.catalog, spec, self._question_ids
+                self.discharge, self.catalog, spec, self._question_ids, self.budget
             )[0]
         return self._invariants[spec.name]
 

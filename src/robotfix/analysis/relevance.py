@@ -50,7 +50,7 @@ import re
 import weakref
 from collections.abc import Iterable, Sequence
 
-from robotfix.analysis import context
+from robotfix import budget
 from robotfix.analysis.imported import Resolver, absolute
 from robotfix.astwalk import children, walk
 from robotfix.ros import api_model, frames_model
@@ -61,7 +61,7 @@ from robotfix.stubs.load import StubSet, defined_names
 PARAMETER_WORDS = ("_param", "paramlistener")
 MARKERS = ("Annotated", "Unit(", "Frame(", "Tag(")
 INTERFACE_PARTS = frozenset({"msg", "srv", "action"})
-BYTES_PER_STEP_BUDGET = 16  # a file over STEP_BUDGET / 16 bytes is analysed: RF902
+BYTES_PER_STEP_BUDGET = 16  # a file over FILE_STEPS / 16 bytes is analysed: RF902
 # as the interpreter resolves names (`analysis/interpreter.py`)
 BUILTINS = frozenset(dir(builtins)) | {"__file__", "__name__", "__doc__", "__spec__"}
 FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef)
@@ -80,7 +80,7 @@ def skippable(
     """Can the analysis of this file report nothing? (True only when sure.)"""
     if (
         not ENABLED
-        or len(text) * BYTES_PER_STEP_BUDGET > context.STEP_BUDGET
+        or len(text) * BYTES_PER_STEP_BUDGET > budget.FILE_STEPS
         or any(marker in text for marker in MARKERS)
     ):
         return False

@@ -46,8 +46,10 @@ Writes of an item (read from the code), and what happens to each on a replay:
   call is logged in order and replayed through the same calls (same de-duplication);
 - `ctx.dropped`: compared only within one call (`CallEvaluator.inline_call`), never
   replayed;
-- `ctx.steps` (RF902 work budget): added; a replay that would cross the budget runs
-  the item instead; `ctx._next` / `_question_ids`: advanced by the count used;
+- `ctx.budget` (the file's work budget, RF901/RF902): the steps the item spent,
+  its solver questions' included, are spent again; a replay that would cross the
+  budget runs the item instead; `ctx._next` / `_question_ids`: advanced by the
+  count used;
 - the solver: an item that asked z3 (or was charged a kept verdict's work) is not
   kept, since z3's models for later questions depend on what its session was asked
   before;
@@ -79,7 +81,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from robotfix.analysis import inline
-from robotfix.analysis.context import STEP_BUDGET, Scope
+from robotfix.analysis.context import Scope
 from robotfix.astwalk import walk
 
 if TYPE_CHECKING:
@@ -99,10 +101,9 @@ class Record:
     entering: tuple[object, ...]
     answers: tuple[tuple[object, bool], ...]  # once keys set before the item
     events: tuple[tuple[Diagnostic | None, object], ...]  # report / report_once
-    steps: int
+    steps: int  # of the file's work budget, its questions' included
     fresh: int
     questions: int
-    work: int
     spawned: tuple[tuple[tuple[object, ...], bool], ...]  # locator, own scope
     walked: bool  # some once key names a node (by walk index)
     consulted: tuple[tuple[str, object], ...] = ()  # what imports it resolved
@@ -132,7 +133,7 @@ class UnitMemo:
         if (
             ctx.hovers is not None
             or ctx.unit_flows is not None
-            or not hasattr(discharge, "charge_kept")
+            or not hasattr(discharge, "solver_calls")
         ):
             return None
         identity = (ctx.catalog, ctx.stubs, type(discharge), ctx.source.path)
@@ -237,7 +238,7 @@ class Check:
         scope: Scope,
     ) -> list[tuple[ast.AST, Scope]] | None:
         ctx = self.ctx
-        if record.entering != entering or ctx.steps + record.steps > STEP_BUDGET:
+        if record.entering != entering or not ctx.budget.affords(record.steps):
             return None
         nodes = list(walk(self.roots[index])) if record.walked else []
         answers = record.answers
@@ -255,9 +256,7 @@ class Check:
                 spawned.append((found, scope if own else parent))
         if record.consulted and not _still(ctx, record.consulted):
             return None
-        if not ctx.discharge.charge_kept(record.work):  # type: ignore[attr-defined]
-            return None
-        ctx.steps += record.steps
+        ctx.budget.spend(record.steps)
         ctx._next += record.fresh
         for _ in range(record.questions):
             next(ctx._question_ids)
@@ -282,7 +281,8 @@ class Check:
         run: Callable[..., Any],
     ) -> list[tuple[ast.AST, Scope]]:
         ctx = self.ctx
-        steps, fresh, work = ctx.steps, ctx._next, ctx.discharge.work_used()  # type: ignore[attr-defined]
+        steps, fresh = ctx.budget.used, ctx._next
+        calls = ctx.discharge.solver_calls()  # type: ignore[attr-defined]
         questions = _count(ctx._question_ids)
         log: list[tuple[Diagnostic | None, object]] = []
         answers: dict[object, bool] = {}
@@ -298,9 +298,8 @@ class Check:
         # but the counters and the resolver's record (checked again on a replay)
         if shared or self._fingerprint()[2:-1] != entering[2:-1]:
             return spawned
-        used = ctx.discharge.work_used() - work  # type: ignore[attr-defined]
-        if used != 0:  # z3 was asked: its later models may depend on this ask
-            return spawned
+        if ctx.discharge.solver_calls() != calls:  # type: ignore[attr-defined]
+            return spawned  # z3 was asked: its later models may depend on this ask
         own = {id(n) for n in walk(node)}
         kept: list[tuple[tuple[object, ...], bool]] = []
         for child, where in spawned:
@@ -331,10 +330,9 @@ class Check:
                 entering,
                 tuple(kept_answers),
                 tuple(events),
-                ctx.steps - steps,
+                ctx.budget.used - steps,
                 ctx._next - fresh,
                 _count(ctx._question_ids) - questions,
-                used,
                 tuple(kept),
                 walked,
                 tuple(
@@ -379,7 +377,7 @@ _OWN_CTX = frozenset(
         "unchanged",
         "_first_reads",
         "sizes",
-        "steps",
+        "budget",
         "dropped",
         "_invariants",
         "follow_lists",

@@ -45,7 +45,29 @@ class Unproven:
 @dataclass(frozen=True)
 class Undecided:
     reason: str
-    out_of_budget: bool = False  # the file's solver budget was used up
+    out_of_budget: bool = False  # the file's work budget was used up
 
 
 Verdict = Proved | Violated | Unproven | Undecided
+# a question asked once the file's work budget (`robotfix.budget`) is spent
+OUT_OF_BUDGET = Undecided("the file's work budget is used up", out_of_budget=True)
+
+
+def shared_facts(known: tuple[A.Expr, ...], facts: tuple[A.Expr, ...]) -> int:
+    """How many leading facts `facts` has in common with `known` (equal facts: the
+    same objects, mostly, as the analysis extends a path's facts), found by tuple
+    comparisons, which run in C: a VC of a long function carries thousands of facts,
+    and the next VC mostly extends them."""
+    count = min(len(known), len(facts))
+    if (known if len(known) == count else known[:count]) == (
+        facts if len(facts) == count else facts[:count]
+    ):
+        return count
+    low, high = 0, count - 1  # known[:low] == facts[:low], known[:high + 1] differs
+    while low < high:
+        middle = (low + high + 1) // 2
+        if known[:middle] == facts[:middle]:
+            low = middle
+        else:
+            high = middle - 1
+    return low

@@ -186,8 +186,22 @@ def names(expr: Expr) -> list[Name]:
     return [n for n in walk(expr) if isinstance(n, Name)]
 
 
-def syms(expr: Expr) -> set[Sym]:
-    return {n for n in walk(expr) if isinstance(n, Sym)}
+def syms(*exprs: Expr) -> set[Sym]:
+    """The solver symbols in `exprs`, each sub-term they share read once (a VC's
+    facts share the terms of a path: `x2 = x1 + 1` holds x1's whole term)."""
+    found: set[Sym] = set()
+    seen: set[int] = set()  # ids of nodes read; all held by `exprs` meanwhile
+    todo = list(exprs)
+    while todo:
+        node = todo.pop()
+        if id(node) in seen:
+            continue
+        seen.add(id(node))
+        if type(node) is Sym:
+            found.add(node)
+        else:
+            todo.extend(children(node))
+    return found
 
 
 def rebuild(expr: Expr, new_children: tuple[Expr, ...]) -> Expr:

@@ -7,6 +7,10 @@ asked of every refinement). Exact: the predicate is evaluated with fractions, wi
 meaning the solver gives it, and anything else (strings, booleans, units, unknown
 functions, division by zero, too many names or candidates) answers "no witness", so
 the solver decides as before. A witness is never a guess: it is checked.
+
+Each search counts its work (the nodes it walks and evaluates): one question stops at
+`MAX_WORK`, or where the file's `Budget` runs out, and answers "no witness"; the
+work is charged to that budget.
 """
 
 from __future__ import annotations
@@ -17,48 +21,60 @@ from fractions import Fraction
 from functools import lru_cache
 
 from robotfix.annotations import ast as A
+from robotfix.budget import Budget
 
 MAX_NAMES = 3
 MAX_TRIES = 2_000
 MAX_SYMBOLS = 64  # a path question with more symbols is left to the solver
 MAX_STEPS = 2_000  # values one path question may try
+MAX_WORK = 50_000  # nodes one question may walk and evaluate (the cases: 25k)
 _LIMIT = 10**100  # candidates and values beyond this are not tried
 
 
-def has_witness(predicate: A.Expr, sort: Callable[[str], str]) -> bool:
+def has_witness(
+    predicate: A.Expr, sort: Callable[[str], str], budget: Budget | None = None
+) -> bool:
     """Whether some values of the names (of sort `sort(name)`, int or real) make
-    `predicate` true, found by trying candidates."""
+    `predicate` true, found by trying candidates; the nodes evaluated are charged
+    to `budget` (the same whether the answer was kept from an earlier search)."""
     names = sorted({n.name for n in A.names(predicate)})
     if not names or len(names) > MAX_NAMES:
         return False
     sorts = tuple(sort(name) for name in names)
     if any(s not in ("int", "real") for s in sorts):
         return False
-    return _search(predicate, tuple(names), sorts)
+    found, work = _search(predicate, tuple(names), sorts)
+    if budget is not None:
+        budget.spend(work)
+    return found
 
 
 @lru_cache(maxsize=4096)
-def _search(predicate: A.Expr, names: tuple[str, ...], sorts: tuple[str, ...]) -> bool:
-    """Memoised: a refinement is met again at every use of its name or type."""
-    constants = _constants(predicate)
+def _search(
+    predicate: A.Expr, names: tuple[str, ...], sorts: tuple[str, ...]
+) -> tuple[bool, int]:
+    """Memoised: a refinement is met again at every use of its name or type. With
+    the answer, the nodes walked and evaluated to find it."""
+    nodes = A.walk(predicate)
+    constants = _constants(nodes)
     if constants is None:
-        return False
+        return False, len(nodes)
     per_name = [_candidates(constants, s == "int") for s in sorts]
     tries = 1
     for options in per_name:
         tries *= len(options)
     if tries > MAX_TRIES:
-        return False
-    for values in itertools.product(*per_name):
+        return False, len(nodes)
+    for count, values in enumerate(itertools.product(*per_name), 2):
         named: Values = dict(zip(names, values, strict=True))
         if _value(predicate, named) is True:
-            return True
-    return False
+            return True, count * len(nodes)
+    return False, (tries + 1) * len(nodes)
 
 
-def _constants(expr: A.Expr) -> set[Fraction] | None:
+def _constants(nodes: list[A.Expr]) -> set[Fraction] | None:
     found: set[Fraction] = set()
-    for node in A.walk(expr):
+    for node in nodes:
         if isinstance(node, A.Num):
             if abs(node.value.numerator) > _LIMIT or node.value.denominator > _LIMIT:
                 return None
@@ -81,13 +97,32 @@ def _candidates(constants: Iterable[Fraction | str], integer: bool) -> list[Frac
     return sorted(found, key=lambda c: (abs(c), c))
 
 
-def holds_somewhere(parts: Sequence[A.Expr]) -> bool:
+def holds_somewhere(parts: Sequence[A.Expr], budget: Budget | None = None) -> bool:
     """Whether some values of the solver symbols in `parts` make every part true
     (a path question: can this condition hold under these facts?): `example`."""
-    return example(parts, bounds=False) is not None
+    return example(parts, bounds=False, budget=budget) is not None
 
 
-def example(parts: Sequence[A.Expr], bounds: bool = True) -> dict[A.Sym, Scalar] | None:
+class _Work:
+    """The nodes one search has walked and evaluated, within what it may."""
+
+    def __init__(self, budget: Budget | None) -> None:
+        self.done = 0
+        self.allowed = MAX_WORK if budget is None else min(MAX_WORK, budget.left)
+
+    def add(self, nodes: int) -> None:
+        self.done += nodes
+        if self.done > self.allowed:
+            raise _OutOfWorkError
+
+
+class _OutOfWorkError(Exception):
+    pass
+
+
+def example(
+    parts: Sequence[A.Expr], bounds: bool = True, budget: Budget | None = None
+) -> dict[A.Sym, Scalar] | None:
     """Values of the solver symbols in `parts` that make every part true (a path
     question, or a counterexample: the facts and the goal's negation). Each symbol
     tries the constants of the conjuncts it occurs in, their neighbours and
@@ -97,15 +132,33 @@ def example(parts: Sequence[A.Expr], bounds: bool = True) -> dict[A.Sym, Scalar]
     path questions, asked of every branch, go without: there it cost 4% of a
     corpus run); a conjunct is evaluated exactly once its last
     symbol has a value. They depend on `parts` alone (the same values in every
-    run); None says none was found, not that none exists."""
+    run); None says none was found, not that none exists (nor when the search
+    ran out of work: `MAX_WORK`, or what is left of `budget`, which is charged)."""
+    work = _Work(budget)
+    try:
+        return _example(parts, bounds, work)
+    except _OutOfWorkError:
+        return None
+    finally:
+        if budget is not None:
+            budget.spend(work.done)
+
+
+def _example(
+    parts: Sequence[A.Expr], bounds: bool, work: _Work
+) -> dict[A.Sym, Scalar] | None:
     conjuncts: list[tuple[A.Expr, list[A.Sym]]] = []
+    sizes: dict[int, int] = {}  # id(conjunct or term) -> its nodes
     first: dict[A.Sym, None] = {}  # the symbols in order of appearance
     constants: dict[A.Sym, set[Fraction | str]] = {}
     defined: set[A.Sym] = set()
     for part in parts:
         for conjunct in A.conjuncts(part):
             syms: list[A.Sym] = []
-            for node in A.walk(conjunct):
+            nodes = A.walk(conjunct)
+            work.add(len(nodes))
+            sizes[id(conjunct)] = len(nodes)
+            for node in nodes:
                 if isinstance(node, A.Sym):
                     first.setdefault(node)
                     syms.append(node)
@@ -116,37 +169,41 @@ def example(parts: Sequence[A.Expr], bounds: bool = True) -> dict[A.Sym, Scalar]
                         return None
                 elif isinstance(node, (A.Name, A.UnitIs)):
                     return None  # not a value the solver's meaning gives here
-            numbers = {
-                n.value for n in A.walk(conjunct) if isinstance(n, (A.Num, A.Str))
-            }
+            numbers = {n.value for n in nodes if isinstance(n, (A.Num, A.Str))}
             for sym in syms:
                 constants.setdefault(sym, set()).update(numbers)
+            work.add(len(nodes))  # a side of an equation walked for its symbols
             defined.update(_defines(conjunct))
             conjuncts.append((conjunct, syms))
     if len(first) > MAX_SYMBOLS:
         return None
     symbols = sorted(first, key=lambda s: s in defined)  # stable: appearance
     order = {sym: index for index, sym in enumerate(symbols)}
-    due: list[list[A.Expr]] = [[] for _ in symbols]
-    hints: list[list[A.Expr]] = [[] for _ in symbols]
-    near: list[list[A.Expr]] = [[] for _ in symbols]  # `s > term`: term's value +- 1
-    crossings: list[list[A.Binary]] = [[] for _ in symbols]  # where sides meet
+    # each with the nodes an evaluation of it visits at most (its conjunct's)
+    due: list[list[tuple[A.Expr, int]]] = [[] for _ in symbols]
+    hints: list[list[tuple[A.Expr, int]]] = [[] for _ in symbols]
+    # `s > term`: term's value +- 1
+    near: list[list[tuple[A.Expr, int]]] = [[] for _ in symbols]
+    crossings: list[list[tuple[A.Binary, int]]] = [[] for _ in symbols]  # sides meet
     for conjunct, syms in conjuncts:
+        size = sizes[id(conjunct)]
         if not syms:
+            work.add(size)
             if _value(conjunct, {}) is not True:
                 return None
             continue
         last = max(syms, key=order.__getitem__)
-        due[order[last]].append(conjunct)
+        due[order[last]].append((conjunct, size))
+        work.add(2 * size)  # the sides of equations and comparisons walked
         for sym, term in _definitions(conjunct):
             if sym == last:
-                hints[order[last]].append(term)
+                hints[order[last]].append((term, size))
         for sym, term in _bounds(conjunct) if bounds else ():
             if sym == last:
-                near[order[last]].append(term)
+                near[order[last]].append((term, size))
         compared = _comparison(conjunct) if bounds else None
         if compared is not None:
-            crossings[order[last]].append(compared)
+            crossings[order[last]].append((compared, 2 * size))
     domains: list[list[Scalar]] = [
         [True, False]
         if sym.sort == "bool"
@@ -155,7 +212,7 @@ def example(parts: Sequence[A.Expr], bounds: bool = True) -> dict[A.Sym, Scalar]
         else list(_candidates(constants.get(sym, set()), sym.sort == "int"))
         for sym in symbols
     ]
-    return _assign(symbols, domains, due, hints, near, crossings)
+    return _assign(symbols, domains, due, hints, near, crossings, work)
 
 
 def _texts(constants: set[Fraction | str]) -> list[Scalar]:
@@ -222,10 +279,11 @@ def _defines(conjunct: A.Expr) -> set[A.Sym]:
 def _assign(
     symbols: list[A.Sym],
     domains: list[list[Scalar]],
-    due: list[list[A.Expr]],
-    hints: list[list[A.Expr]],
-    near: list[list[A.Expr]],
-    crossings: list[list[A.Binary]],
+    due: list[list[tuple[A.Expr, int]]],
+    hints: list[list[tuple[A.Expr, int]]],
+    near: list[list[tuple[A.Expr, int]]],
+    crossings: list[list[tuple[A.Binary, int]]],
+    work: _Work,
 ) -> dict[A.Sym, Scalar] | None:
     """Backtracking over the symbols in order: the first values found; None when
     there are none or the steps ran out. A symbol tries first what its equations
@@ -235,15 +293,21 @@ def _assign(
     steps = 0
     stack: list[tuple[int, list[Scalar]]] = []
 
+    def evaluated(term: A.Expr, size: int) -> Value:
+        work.add(size)
+        return _value(term, values)
+
     def options(index: int) -> list[Scalar]:
         first: list[Scalar] = []
-        for term in hints[index]:
-            value = _value(term, values)
+        for term, size in hints[index]:
+            value = evaluated(term, size)
             if _fits(value, symbols[index].sort):
                 first.append(value)  # type: ignore[arg-type]
         sym = symbols[index]
-        points = [_value(term, values) for term in near[index]]
-        points += [_crossing(c, sym, values) for c in crossings[index]]
+        points = [evaluated(term, size) for term, size in near[index]]
+        for compared, size in crossings[index]:
+            work.add(size)
+            points.append(_crossing(compared, sym, values))
         last: list[Scalar] = []
         for value in points:
             if isinstance(value, Fraction):
@@ -268,7 +332,7 @@ def _assign(
         if steps > MAX_STEPS:
             return None
         values[symbols[index]] = pending.pop(0)
-        if all(_value(c, values) is True for c in due[index]):
+        if all(evaluated(c, size) is True for c, size in due[index]):
             if index + 1 == len(symbols):
                 return {sym: values[sym] for sym in symbols}
             stack.append((index + 1, options(index + 1)))

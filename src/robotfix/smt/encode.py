@@ -18,6 +18,7 @@ from robotfix.annotations import ast as A
 MAX_DIGITS = 1_000
 _TOO_LONG: int = 10**MAX_DIGITS
 MAX_DEGREE = 3
+MEMO_ENTRIES = 100_000  # terms whose z3 form a session keeps; then forgotten at once
 
 
 class Encoder:
@@ -30,6 +31,11 @@ class Encoder:
         self._fresh = 0
         self._degrees: dict[int, int] = {}  # id(term) -> degree, for one question
         self.approximated = False  # a term became a fresh constant
+        self.built = 0  # terms built through z3's API: the work the file is charged
+        # id(term) -> (term, its z3 form), for terms without a fresh constant: the
+        # analysis shares sub-terms between facts (`x2 = x1 + 1`, `x3 = x2 + 1`),
+        # and each is encoded once, not once per fact that holds it
+        self._encoded: dict[int, tuple[A.Expr, Any]] = {}
 
     def start(self) -> None:
         """A new question: forget the terms seen and whether any was approximated."""
@@ -52,6 +58,19 @@ class Encoder:
         return make(f"_f{self._fresh}", self.ctx)
 
     def encode(self, node: A.Expr) -> Any:
+        found = self._encoded.get(id(node))
+        if found is not None and found[0] is node:
+            return found[1]
+        fresh = self._fresh
+        self.built += 1
+        value = self._encode(node)
+        if fresh == self._fresh and A.children(node):  # no fresh constant in it
+            if len(self._encoded) >= MEMO_ENTRIES:
+                self._encoded.clear()
+            self._encoded[id(node)] = (node, value)
+        return value
+
+    def _encode(self, node: A.Expr) -> Any:
         if isinstance(node, A.Num):
             return self._number(node)
         if isinstance(node, A.Bool):

@@ -7,10 +7,14 @@ in order of first appearance, and keeps the verdict the solver gave (counterexam
 values included), so the editor asks z3 only about what changed. A counterexample
 over symbols is stored by their canonical numbers and given back in the new VC's.
 
-What a verdict cost the file's solver budget is kept with it: the `Discharger` charges
-it again on a hit, so a file that runs out of budget runs out at the same VC.
+What deciding a verdict cost the file's work budget (pre-pass, witnesses, z3) is kept
+with it: the `Discharger` charges it again on a hit, so a file that runs out of
+budget runs out at about the same VC (the pre-pass and z3 work incrementally, so a
+VC decided again after others were kept may cost a little more or less).
 Undecided verdicts are never kept (they depend on the budget left, not on the VC).
-Bounded: least recently used entries go first.
+Bounded: least recently used entries go first; a VC of more than `MAX_KEY_NODES`
+nodes (a long function's facts; the cases' largest has 166) is not kept, since
+keying it would cost as much as deciding it.
 """
 
 from __future__ import annotations
@@ -23,6 +27,7 @@ from robotfix.analysis.vc import VC, Undecided, Unproven, Verdict
 from robotfix.annotations import ast as A
 
 MAX_ENTRIES = 5_000  # distinct VCs per document; at most about 2.7 kB each
+MAX_KEY_NODES = 1_000  # nodes of a VC's facts, goal and probes that are keyed
 
 Key = tuple[object, ...]
 
@@ -75,46 +80,61 @@ class ProofMemo:
 def key(vc: VC) -> tuple[Key, list[int]] | None:
     """The VC with its symbols numbered in order of first appearance (facts, goal,
     probes), and the symbols' identities in that order; None for a VC too deep to
-    walk."""
-    numbers: dict[int, int] = {}
-    try:
-        facts = tuple(_canonical(f, numbers) for f in vc.facts)
-        goal = _canonical(vc.goal, numbers)
-        probes = tuple(_canonical(p, numbers) for p in vc.probes)
-    except RecursionError:
+    walk or too large to key."""
+    if len(vc.facts) >= MAX_KEY_NODES:  # a node each at least
         return None
-    return (facts, goal, probes, vc.question), list(numbers)
+    keying = _Keying(MAX_KEY_NODES)
+    try:
+        facts = tuple(keying.canonical(f) for f in vc.facts)
+        goal = keying.canonical(vc.goal)
+        probes = tuple(keying.canonical(p) for p in vc.probes)
+    except (RecursionError, _TooLargeError):
+        return None
+    return (facts, goal, probes, vc.question), list(keying.numbers)
 
 
-def _canonical(expr: A.Expr, numbers: dict[int, int]) -> object:
-    if isinstance(expr, A.Sym):
-        number = numbers.get(expr.ident)
-        if number is None:
-            number = numbers[expr.ident] = len(numbers)
-        return ("s", number, expr.sort)
-    if isinstance(expr, A.Binary):
-        return (
-            expr.op,
-            _canonical(expr.left, numbers),
-            _canonical(expr.right, numbers),
-        )
-    if isinstance(expr, A.Num):
-        return ("n", expr.value, expr.is_int)
-    if isinstance(expr, A.Unary):
-        return ("u", expr.op, _canonical(expr.operand, numbers))
-    if isinstance(expr, A.Func):
-        return ("f", expr.name, *(_canonical(a, numbers) for a in expr.args))
-    if isinstance(expr, A.Ite):
-        return (
-            "?",
-            _canonical(expr.cond, numbers),
-            _canonical(expr.then, numbers),
-            _canonical(expr.orelse, numbers),
-        )
-    if isinstance(expr, A.Bool):
-        return ("b", expr.value)
-    if isinstance(expr, A.Str):
-        return ("t", expr.value)
-    if isinstance(expr, A.Name):
-        return ("x", expr.name)
-    return ("k", expr.kind, expr.text, expr.target)
+class _TooLargeError(Exception):
+    pass
+
+
+class _Keying:
+    """A VC's terms as plain tuples, symbols numbered in order; at most `left`
+    nodes (shared ones each time), then `_TooLargeError`."""
+
+    def __init__(self, left: int) -> None:
+        self.numbers: dict[int, int] = {}
+        self.left = left
+
+    def canonical(self, expr: A.Expr) -> object:
+        self.left -= 1
+        if self.left < 0:
+            raise _TooLargeError
+        canonical = self.canonical
+        if isinstance(expr, A.Sym):
+            numbers = self.numbers
+            number = numbers.get(expr.ident)
+            if number is None:
+                number = numbers[expr.ident] = len(numbers)
+            return ("s", number, expr.sort)
+        if isinstance(expr, A.Binary):
+            return (expr.op, canonical(expr.left), canonical(expr.right))
+        if isinstance(expr, A.Num):
+            return ("n", expr.value, expr.is_int)
+        if isinstance(expr, A.Unary):
+            return ("u", expr.op, canonical(expr.operand))
+        if isinstance(expr, A.Func):
+            return ("f", expr.name, *(canonical(a) for a in expr.args))
+        if isinstance(expr, A.Ite):
+            return (
+                "?",
+                canonical(expr.cond),
+                canonical(expr.then),
+                canonical(expr.orelse),
+            )
+        if isinstance(expr, A.Bool):
+            return ("b", expr.value)
+        if isinstance(expr, A.Str):
+            return ("t", expr.value)
+        if isinstance(expr, A.Name):
+            return ("x", expr.name)
+        return ("k", expr.kind, expr.text, expr.target)

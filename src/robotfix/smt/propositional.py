@@ -6,6 +6,9 @@ connective, is one proposition (`x <= 1` is `not (x > 1)`); boolean symbols are
 propositions too. If the skeleton has no model, neither has the VC, whatever the
 numbers are. If it has one and every proposition is a boolean symbol, so has the
 VC. Otherwise the question needs z3.
+
+The nodes walked and searched are charged to the file's work budget when one is
+given (`robotfix.budget`).
 """
 
 from __future__ import annotations
@@ -16,6 +19,7 @@ from typing import Any
 
 from robotfix.annotations import ast as A
 from robotfix.annotations.witness import closed_value
+from robotfix.budget import Budget
 
 # Search nodes one question may visit before it is left to z3.
 BUDGET = 4000
@@ -29,6 +33,7 @@ class _Skeleton:
     def __init__(self) -> None:
         self.atoms: dict[object, int] = {}
         self.arithmetic = False  # some proposition is not a boolean symbol
+        self.nodes = 0  # terms read
 
     def atom(self, key: object, boolean: bool) -> Formula:
         if not boolean:
@@ -37,6 +42,7 @@ class _Skeleton:
         return ("atom", index)
 
     def formula(self, expr: A.Expr) -> Formula:
+        self.nodes += 1
         kind = type(expr)
         if kind is A.Bool:
             return ("const", expr.value)  # type: ignore[union-attr]
@@ -106,14 +112,16 @@ def _value(f: Formula, model: dict[int, bool]) -> bool | None:
     return None if a is None or b is None else not decisive
 
 
-def satisfiable(parts: list[A.Expr]) -> bool | None:
+def satisfiable(parts: list[A.Expr], budget: Budget | None = None) -> bool | None:
     """Do `parts` have a model? None: not decided here (ask z3)."""
     skeleton = _Skeleton()
     formulas = [skeleton.formula(p) for p in parts]
+    if budget is not None:
+        budget.spend(skeleton.nodes)
     if len(skeleton.atoms) > MAX_ATOMS:
         return None
     formulas += _exclusions(skeleton.atoms)
-    found = _search(formulas, len(skeleton.atoms))
+    found = _search(formulas, len(skeleton.atoms), budget)
     if found is None:
         return None
     if not found:
@@ -141,12 +149,13 @@ def _exclusions(atoms: dict[object, int]) -> list[Formula]:
     return clauses
 
 
-def components(parts: list[A.Expr]) -> list[list[A.Expr]]:
+def components(parts: list[A.Expr], budget: Budget | None = None) -> list[list[A.Expr]]:
     """`parts` in groups that share no solver symbol, in order of first part. The
     parts have a model together exactly when each group has one (a name, or any
     term the encoder cannot read, is a fresh constant at each occurrence, so it
     joins nothing), and a small group is searched quickly."""
     parent: dict[int, int] = {}
+    nodes = 0
 
     def root(ident: int) -> int:
         while parent[ident] != ident:
@@ -156,7 +165,9 @@ def components(parts: list[A.Expr]) -> list[list[A.Expr]]:
 
     owners: list[list[int]] = []
     for part in parts:
-        idents = [s.ident for s in A.syms(part)]
+        walked = A.walk(part)
+        nodes += len(walked)
+        idents = list(dict.fromkeys(n.ident for n in walked if isinstance(n, A.Sym)))
         for ident in idents:
             parent.setdefault(ident, ident)
         for other in idents[1:]:
@@ -166,22 +177,28 @@ def components(parts: list[A.Expr]) -> list[list[A.Expr]]:
     for index, (part, idents) in enumerate(zip(parts, owners, strict=True)):
         key: object = root(idents[0]) if idents else ("closed", index)
         groups.setdefault(key, []).append(part)
+    if budget is not None:
+        budget.spend(nodes)
     return list(groups.values())
 
 
-def _search(formulas: list[Formula], count: int) -> bool | None:
+def _search(
+    formulas: list[Formula], count: int, budget: Budget | None = None
+) -> bool | None:
     """Backtracking over the atoms in order, pruning on a false formula. The
     three-valued `_value` is monotone (a formula decided under part of a model stays
     so under any extension), so each node only evaluates the formulas its parent
     left undecided."""
     model: dict[int, bool] = {}
     visited = 0
+    evaluated = 0  # formulas evaluated: the work charged
 
     def go(index: int, pending: list[Formula]) -> bool | None:
-        nonlocal visited
+        nonlocal visited, evaluated
         visited += 1
         if visited > BUDGET:
             return None
+        evaluated += len(pending)
         undecided: list[Formula] = []
         for f in pending:
             value = _value(f, model)
@@ -202,4 +219,8 @@ def _search(formulas: list[Formula], count: int) -> bool | None:
         del model[index]
         return False
 
-    return go(0, formulas)
+    try:
+        return go(0, formulas)
+    finally:
+        if budget is not None:
+            budget.spend(evaluated)

@@ -6,24 +6,34 @@ reaches it along that path: Violated (an error). If it can: Unproven (a warning)
 `unknown` from z3 is Undecided, never a pass.
 
 Every session has a z3 context of its own, so the answers for a file never depend on
-what was checked before in the same process, and a budget of work for all its
-questions, so no file can keep the solver busy for long.
+what was checked before in the same process. z3's work (its rlimit count) is charged
+to the file's work budget (`robotfix.budget`), shared with every other stage of the
+check, so no file can keep the solver busy for long.
 """
 
 from __future__ import annotations
 
 import math
+import operator
 from fractions import Fraction
 from typing import Any
 
 import z3
 
-from robotfix.analysis.vc import VC, Proved, Undecided, Unproven, Verdict, Violated
+from robotfix.analysis.vc import (
+    OUT_OF_BUDGET,
+    VC,
+    Proved,
+    Undecided,
+    Unproven,
+    Verdict,
+    Violated,
+    shared_facts,
+)
 from robotfix.annotations import ast as A
 from robotfix.annotations import witness
 from robotfix.annotations.numbers import shown_as_infinity
-from robotfix.smt.budget import FILE_RLIMIT as FILE_RLIMIT
-from robotfix.smt.budget import RLIMIT as RLIMIT
+from robotfix.budget import ENCODE_STEPS, RLIMIT, Z3_UNITS_PER_STEP, Budget
 from robotfix.smt.encode import Encoder
 
 # Two of z3's nonlinear heuristics hardly count their work: Groebner bases and Horner
@@ -46,40 +56,37 @@ class Session:
     """Incremental solving for the VCs of one file. One solver holds the facts of
     the current path, one push frame per fact: a VC whose facts share a prefix with
     the previous VC's pops back to it and asserts only the rest. The goal is asked as
-    a check assumption. Each question may use `rlimit` units of work, and all of them
-    together `budget`; once that is spent, every question is Undecided."""
+    a check assumption. Each question may use `rlimit` units of z3's work, charged to
+    `budget` (the file's, a step per `Z3_UNITS_PER_STEP` units); once that is spent,
+    every question is Undecided."""
 
-    def __init__(self, rlimit: int = RLIMIT, budget: int | None = None) -> None:
+    def __init__(self, rlimit: int = RLIMIT, budget: Budget | None = None) -> None:
         self._ctx = z3.Context()
         self._solver = self._new_solver()
         self._scratch: Any = None  # for questions without facts
         self._rlimit = rlimit
-        self._budget = FILE_RLIMIT if budget is None else budget
-        self._used = 0
-        self._charged = 0  # units counted by `charge`, not spent by this context
+        self._budget = budget if budget is not None else Budget()
+        self._units = 0  # z3's work in this session's context so far
+        self._paid = 0  # the steps charged for it
         self._limit = rlimit
-        self._facts: list[object] = []
+        self._facts: tuple[A.Expr, ...] = ()
         self._approximated: list[bool] = []  # per fact asserted
         self._encoder = Encoder(self._ctx)
 
     @property
     def exhausted(self) -> bool:
-        return self._used >= self._budget
-
-    @property
-    def used(self) -> int:
-        """The units of work the file's questions have spent, charged ones included."""
-        return self._used
-
-    def charge(self, units: int) -> None:
-        """Count `units` of work as spent: a verdict kept from an earlier check of
-        the file (`smt.memo`) costs what asking for it cost."""
-        self._used += units
-        self._charged += units
+        return self._budget.spent
 
     def check(self, vc: VC) -> Verdict:
         if self.exhausted:
-            return _out_of_budget()
+            return OUT_OF_BUDGET
+        built = self._encoder.built
+        try:
+            return self._check(vc)
+        finally:  # the terms built for it, through z3's (slow) Python API
+            self._budget.spend((self._encoder.built - built) * ENCODE_STEPS)
+
+    def _check(self, vc: VC) -> Verdict:
         self._encoder.start()
         if not vc.facts:
             # a question without facts (RF509's: can a refinement hold?) is asked of
@@ -114,7 +121,7 @@ class Session:
         )
         example = self._witnessed(vc) or self._example(vc)
         if example is None:  # not found on its own: the session's model
-            example = _values(vc, solver.model(), encoder, approximated)
+            example = _values(vc, solver.model(), encoder, approximated, self._budget)
         values, syms = example
         second = self._ask(goal)
         if second == z3.unsat:
@@ -129,7 +136,9 @@ class Session:
         negation (`witness.example`). Like `_example`'s, they depend on the VC
         alone, and they cost no solver call; None when none is found or a probe
         has no exact value."""
-        found = witness.example([*vc.facts, A.Unary("not", vc.goal)])
+        found = witness.example(
+            [*vc.facts, A.Unary("not", vc.goal)], budget=self._budget
+        )
         if found is None:
             return None
         encoder, ctx = self._encoder, self._ctx
@@ -156,6 +165,8 @@ class Session:
         session was asked before; so the editor, which keeps verdicts across edits
         (`smt.memo`) and asks fewer questions, shows what a fresh check shows. None
         when that solver does not find a model within the question's limit."""
+        if self.exhausted:
+            return None
         ctx = z3.Context()
         solver = z3.Solver(ctx=ctx)
         for name, value in SETTINGS.items():
@@ -164,61 +175,80 @@ class Session:
         for fact in vc.facts:
             solver.add(encoder.boolean(fact))
         goal = encoder.boolean(vc.goal)
-        solver.set("rlimit", max(1, min(self._rlimit, self._budget - self._used)))
+        self._budget.spend(encoder.built * ENCODE_STEPS)
+        limit = min(self._rlimit, self._units_left())
+        if limit <= 0:  # never ask with rlimit 0: to z3 that means no limit
+            return None
+        solver.set("rlimit", limit)
         found = solver.check(z3.Not(goal))
-        self.charge(_work_done(solver))
+        units = _work_done(solver)
+        self._budget.spend(-(-units // Z3_UNITS_PER_STEP))  # rounded up
         if found != z3.sat:
             return None
-        return _values(vc, solver.model(), encoder, encoder.approximated)
+        built = encoder.built
+        example = _values(
+            vc, solver.model(), encoder, encoder.approximated, self._budget
+        )
+        self._budget.spend((encoder.built - built) * ENCODE_STEPS)
+        return example
+
+    def _units_left(self) -> int:
+        return self._budget.left * Z3_UNITS_PER_STEP
 
     def _ask(self, assumption: Any) -> Any:
         """One question, within what is left of the file's budget."""
-        self._limit = min(self._rlimit, self._budget - self._used)
+        self._limit = min(self._rlimit, self._units_left())
         if self._limit <= 0:  # never ask with rlimit 0: to z3 that means no limit
             return z3.unknown
         self._solver.set("rlimit", self._limit)
         result = self._solver.check(assumption)
-        self._used = max(self._used, _work_done(self._solver) + self._charged)
+        self._units = max(self._units, _work_done(self._solver))
+        owed = -(-self._units // Z3_UNITS_PER_STEP) - self._paid  # rounded up
+        self._budget.spend(owed)
+        self._paid += owed
         return result
 
     def _undecided(self) -> Undecided:
         if self._limit <= 0 or self.exhausted:  # stopped by the file's budget
-            return _out_of_budget()
+            return OUT_OF_BUDGET
         return Undecided(self._solver.reason_unknown())
 
-    def _assert_facts(self, facts: tuple[object, ...]) -> None:
+    def _assert_facts(self, facts: tuple[A.Expr, ...]) -> None:
         known = self._facts
-        common = 0
-        while common < min(len(known), len(facts)) and known[common] is facts[common]:
-            common += 1
+        common = _identical(known, facts)
         for _ in range(len(known) - common):
             self._solver.pop()
-        del known[common:]
         del self._approximated[common:]
         encoder = self._encoder
         for fact in facts[common:]:
             encoder.approximated = False
             self._solver.push()
-            self._solver.add(encoder.boolean(fact))  # type: ignore[arg-type]
-            known.append(fact)
+            self._solver.add(encoder.boolean(fact))
             self._approximated.append(encoder.approximated)
+        self._facts = facts
         encoder.approximated = False
 
 
 Example = tuple[tuple[str | None, ...], tuple[tuple[int, str], ...]]
 
 
-def _values(vc: VC, model: Any, encoder: Encoder, approximated: bool) -> Example:
+def _values(
+    vc: VC, model: Any, encoder: Encoder, approximated: bool, budget: Budget
+) -> Example:
     """The VC's probes and unknown inputs in `model` (its facts and goal encoded
     by `encoder`, `approximated` if a term of theirs was); none when a term was
-    approximated: the model is then no execution's values."""
+    approximated: the model is then no execution's values. The facts read for
+    their symbols are charged to `budget`, a step each."""
     encoder.approximated = False
     probes = [encoder.encode(p) for p in vc.probes]
     exact = not encoder.approximated and not approximated
     values = tuple(
         _show(model.eval(p, model_completion=True)) if exact else None for p in probes
     )
-    wanted = {s.ident for s in _syms(vc)} if exact else set()
+    wanted: set[int] = set()
+    if exact:
+        budget.spend(1 + len(vc.facts))
+        wanted = {s.ident for s in A.syms(vc.goal, *vc.facts)}
     syms = tuple(
         (ident, _show(model.eval(sym, model_completion=True)))
         for ident, sym in sorted(encoder.syms.items())
@@ -248,8 +278,14 @@ def _is_value(term: Any) -> bool:
     )
 
 
-def _out_of_budget() -> Undecided:
-    return Undecided("the file's solver budget is used up", out_of_budget=True)
+def _identical(known: tuple[A.Expr, ...], facts: tuple[A.Expr, ...]) -> int:
+    """How many leading facts are the very objects asserted: equal ones found by
+    `shared_facts` (in C), then checked for identity, since a fact with a name
+    encodes to a fresh constant each time it is asserted."""
+    common = shared_facts(known, facts)
+    if all(map(operator.is_, known, facts[:common])):
+        return common
+    return next(i for i in range(common) if known[i] is not facts[i])
 
 
 def _work_done(solver: Any) -> int:
@@ -257,13 +293,6 @@ def _work_done(solver: Any) -> int:
     stats = solver.statistics()
     names = stats.keys()
     return int(stats.get_key_value("rlimit count")) if "rlimit count" in names else 0
-
-
-def _syms(vc: VC) -> set[A.Sym]:
-    found = A.syms(vc.goal)
-    for fact in vc.facts:
-        found |= A.syms(fact)
-    return found
 
 
 def _show(value: Any) -> str:
