@@ -74,9 +74,8 @@ def test_the_run_key_follows_robotfixs_own_code(tmp_path: Path) -> None:
     import robotfix
 
     copy = tmp_path / "src" / "robotfix"
-    shutil.copytree(
-        Path(robotfix.__file__).parent, copy, ignore=shutil.ignore_patterns("__pycache__")
-    )
+    package = Path(robotfix.__file__).parent
+    shutil.copytree(package, copy, ignore=shutil.ignore_patterns("__pycache__"))
     probe = "from robotfix import cache; print(cache.own_digest())"
 
     def digest() -> str:

@@ -317,6 +317,11 @@ class CallEvaluator(LibraryEvaluator):
         """The result of a one-expression helper evaluated with its parameters
         bound to the arguments (`analysis/inline.py`); None when it is not one, or
         when evaluating it reported something (a bug inside it: unknown, as before)."""
+        if self.ctx.unit_flows is not None:
+            # `suggest`: a helper's result stays unknown there, so that what it
+            # proposes is reached in one round (a unit a helper gives a name would
+            # hold back the sink's unit until the arguments are annotated)
+            return None
         expr = self._inlinable(function, self.inlined)
         fn = function.node
         if expr is None or not isinstance(fn, ast.FunctionDef):
