@@ -1,14 +1,13 @@
 """Metadata other libraries put in `Annotated`, read as RobotFix would write it.
 
 - annotated-types constraints (`Gt(0)`, `Le(1.5)`, `Interval(ge=0, lt=MAX)`,
-  `MinLen(1)`, `MaxLen(10)`, `Len(0, 10)`, `MultipleOf(5)`, `Unit('m')`), as
-  pydantic users write them: each becomes the refinement text it means (`_ > 0`,
-  `len(_) <= 10`, `Unit('m')`), read from the AST only (annotated_types is never imported), and only
-  when the call's name is annotated_types' own (`from annotated_types import Gt`,
+  `MinLen(1)`, `MaxLen(10)`, `Len(0, 10)`, `MultipleOf(5)`, `Unit('m')`), as pydantic
+  users write them: each becomes the refinement text it means (`_ > 0`, `len(_) <=
+  10`, `Unit('m')`), read from the AST only (annotated_types is never imported), and
+  only when the call's name is annotated_types' own (`from annotated_types import Gt`,
   `at.Gt`). An argument is a number or a name (a constant, `math.pi`), as a string
   refinement would write it; anything else, and the constraints with no meaning for
-  RobotFix (`Predicate`, `Timezone`), is
-  `Unusable`: the caller notes it (RF511).
+  RobotFix (`Predicate`, `Timezone`), is `Unusable`: the caller notes it (RF511).
 - a unit written as a bare string (`Annotated[float, "m"]`, `"unit:m/s"`), as other
   unit checkers write it: `unit_string` says how RobotFix spells it.
 """
