@@ -343,3 +343,33 @@ def test_a_fault_on_one_launch_file_is_its_internal_error(
         assert [(Path(d.path).name, d.code) for d in result.diagnostics] == [
             ("good.launch.py", "RF401")
         ]
+
+
+def test_a_python_launch_file_is_checked_as_python_too(tmp_path: Path) -> None:
+    """A launch file is Python code as well: its own bugs (here RF301, as in
+    nav2_common's ReplaceString, whose `finally` closes a file `open` may not have
+    made) are reported. When launch files came, the Python walk dropped every file
+    of a `launch/` folder, and a tree of navigation2 checked 56 files of 108."""
+    launch = tmp_path / "pkg" / "launch"
+    launch.mkdir(parents=True)
+    (tmp_path / "pkg" / "package.xml").write_text("<package><name>pkg</name></package>")
+    (launch / "replace_string.py").write_text(
+        "def perform(name):\n"
+        "    try:\n"
+        "        src = open(name)\n"
+        "        text = src.read()\n"
+        "    except OSError:\n"
+        "        text = ''\n"
+        "    finally:\n"
+        "        src.close()\n"
+        "    return text\n"
+    )
+    (launch / "bringup.launch.py").write_text(
+        "from launch import LaunchDescription\n\n\n"
+        "def generate_launch_description():\n"
+        "    return LaunchDescription([])\n"
+    )
+    result = check_paths([tmp_path / "pkg"], Config(root=tmp_path))
+    found = [(Path(d.path).name, d.code, d.span.line) for d in result.diagnostics]
+    assert found == [("replace_string.py", "RF301", 8)]
+    assert result.files == 2

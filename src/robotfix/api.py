@@ -23,6 +23,7 @@ from robotfix.discovery import _hidden as _hidden
 from robotfix.discovery import interface_files as interface_files
 from robotfix.discovery import python_files as python_files
 from robotfix.discovery import ros_interface_folders as ros_interface_folders
+from robotfix.ros.launch.names import is_launch_file
 
 if TYPE_CHECKING:  # the analysis is imported only when a file is checked
     from robotfix.analysis.context import FileContext
@@ -390,7 +391,12 @@ def _analyze(
 def _unused_suppressions(
     source: SourceFile, found: list[Diagnostic]
 ) -> list[Diagnostic]:
-    """RF010: a `# robotfix: ignore[...]` that silences nothing, or names no rule."""
+    """RF010: a `# robotfix: ignore[...]` that silences nothing, or names no rule.
+    Not in a Python launch file, whose suppressions also serve the launch check
+    (`launchcheck`), which runs after this one and finds what this one cannot."""
+    path = Path(source.path)
+    if is_launch_file(path.parent.name, path.name):
+        return []
     out = []
     for line, (col, codes) in sorted(source.suppressions.items()):
         on_line = [d for d in found if d.span.line == line]

@@ -37,7 +37,7 @@ from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
 from robotfix.fs import RACY_NS, UnreadableError, read_head, read_text, stamp, within
 from robotfix.ros.install import IGNORE_MARKERS, InstallSpace
-from robotfix.ros.launch.names import LAUNCH_SUFFIXES, is_launch_name
+from robotfix.ros.launch.names import is_launch_file
 
 INTERFACE_SUFFIXES = (".msg", ".srv", ".action", ".idl")
 INTERFACE_FOLDERS = ("msg", "srv", "action")
@@ -243,9 +243,7 @@ def _definitions_of(package: Path) -> list[Path]:
 
 
 def _is_launch(folder: Path, name: str) -> bool:
-    return is_launch_name(name) or (
-        folder.name == "launch" and name.endswith(LAUNCH_SUFFIXES)
-    )
+    return is_launch_file(folder.name, name)
 
 
 def _is_yaml(name: str) -> bool:
@@ -461,10 +459,15 @@ def _python_files(
         for entry in entries:
             if entry.name == "package.xml" and entry.regular:
                 packages.setdefault(real, folder)
-            if launch is not None and entry.regular and _is_launch(folder, entry.name):
-                if not (config is not None and config.excluded(entry.path)):
-                    launch.append(entry.path)
-            elif (_is_python(entry.name) and (entry.regular or entry.link)) or (
+            if (
+                launch is not None
+                and entry.regular
+                and _is_launch(folder, entry.name)
+                and not (config is not None and config.excluded(entry.path))
+            ):
+                launch.append(entry.path)
+            # a Python launch file is Python code too (RF301 in a launch helper)
+            if (_is_python(entry.name) and (entry.regular or entry.link)) or (
                 entry.regular and "." not in entry.name and _is_script(entry.path)
             ):  # a broken link to a `.py`: RF003
                 path = entry.path

@@ -13,3 +13,11 @@ def is_launch_name(name: str) -> bool:
         for sep in (".", "_")
         for suffix in (".py", ".xml", ".yaml", ".yml")
     )
+
+
+def is_launch_file(folder_name: str, name: str) -> bool:
+    """A launch file by where it is: named as one, or a launch-file kind of file in a
+    `launch/` folder."""
+    return is_launch_name(name) or (
+        folder_name == "launch" and name.endswith(LAUNCH_SUFFIXES)
+    )
