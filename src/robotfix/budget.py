@@ -29,8 +29,9 @@ Z3_UNITS_PER_STEP = 10
 ENCODE_STEPS = 8
 FACTS_PER_STEP = 1_024  # a VC's facts are read (copied, compared) in C: cheap per fact
 # Before any work, memory: Python's parser takes about 100 bytes per character of
-# source (1.3 GB for a 12.7 MB file), so a longer text is not parsed (RF902). The
-# largest hand-written modules are under 1 MB.
+# source (1.3 GB for a 12.7 MB file), so a text with more code than this (comment
+# lines not counted) is not parsed (RF902). The largest hand-written modules are
+# under 1 MB.
 MAX_PARSED_CHARS = 4_000_000
 
 

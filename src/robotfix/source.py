@@ -19,6 +19,13 @@ from robotfix import messages, rules
 from robotfix.budget import MAX_PARSED_CHARS
 from robotfix.diagnostics import Diagnostic, Span
 
+
+def _code_chars(lines: list[str]) -> int:
+    """Characters outside comment lines: what the parser's memory follows (a comment
+    makes no node; a 5 MB licence or data comment parses in a few MB)."""
+    return sum(len(line) for line in lines if not line.lstrip().startswith("#"))
+
+
 _SUPPRESS = re.compile(
     r"#\s*robotfix:\s*ignore(?:\[(?P<codes>[^\]]*)\])?", re.IGNORECASE
 )
@@ -76,11 +83,13 @@ class SourceFile:
     @staticmethod
     def from_text(path: str, text: str) -> SourceFile:
         source = SourceFile(path, text, lines=LINE_BREAK.split(text))
-        if len(text) > MAX_PARSED_CHARS:
+        if len(text) > MAX_PARSED_CHARS and (code := _code_chars(source.lines)) > (
+            MAX_PARSED_CHARS
+        ):
             source.problem = messages.analysis_budget(
                 path,
                 1,
-                f"{len(text):,} characters of source, over the {MAX_PARSED_CHARS:,} "
+                f"{code:,} characters of code, over the {MAX_PARSED_CHARS:,} "
                 "RobotFix parses",
             )
             return source
