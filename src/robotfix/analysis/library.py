@@ -348,11 +348,16 @@ class LibraryEvaluator(ParameterEvaluator):
         unit: Unit | None = first.unit if not first.literal else None
         if unit is None:
             unit = next((u for u in units if u is not None), None)
-        elif any(
-            found is None and other.unit is not None and not other.literal
-            for found, other in zip(units, values[1:], strict=True)
+        if unit is not None and (
+            any(
+                found is None and other.unit is not None and not other.literal
+                for found, other in zip(units, values[1:], strict=True)
+            )
+            or any(self.ctx.already(("operands", id(arg))) for arg in node.args)
         ):
-            unit = None  # reported (RF202): no unit, as for `+`, so no cascade
+            # its arguments' units, or an argument's own operands', were reported
+            # not to agree (RF202): no unit, as for `+`, so no cascade
+            unit = None
         if short == "hypot":
             unit = frames.unframed(unit)  # a length is the same in every frame
         if function.returns_kind == "int":

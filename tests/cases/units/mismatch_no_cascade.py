@@ -18,6 +18,8 @@ def clamp_mixed(phi: Annotated[float, "Unit('rad')"]) -> None:
     steer(wide)
     clipped = np.maximum(LIMIT_DEG, phi)  # error: RF202
     steer(clipped)
+    nested = np.maximum(-LIMIT_DEG, np.minimum(phi, LIMIT_DEG))  # error: RF202
+    steer(nested)
 
 
 def clamp_converted(phi: Annotated[float, "Unit('rad')"]) -> None:
