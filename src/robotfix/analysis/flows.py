@@ -17,7 +17,9 @@ name gets a unit only when all the units it meets agree and it can be annotated
 where it is first bound (a plain `x = ...`, an unannotated parameter, `self.x = ...`
 in `__init__`, a class constant); a name that meets two different units gets no
 suggestion (that is a bug for `robotfix check`, or a controller's implicit gain,
-not an annotation).
+not an annotation). A name that holds a sequence (bound to a list or tuple, or
+reaching a message's array field) gets none either: `Annotated[float, ...]` would
+make its applied file fail the check (RF401), and its elements' type is not known.
 """
 
 from __future__ import annotations
@@ -99,6 +101,9 @@ class FlowLog:
     )
     # (entity, a unit a value assigned to it has)
     held: list[tuple[tuple[object, ...], Unit]] = field(default_factory=list)
+    # entities bound to a sequence, and the expressions that reach an array field
+    sequences: set[tuple[object, ...]] = field(default_factory=set)
+    array_sinks: list[tuple[Where, ast.expr]] = field(default_factory=list)
     program: Program | None = None  # set when the file's program is collected
     # `self.cmd.linear.x = speed` where the analysis does not know `self.cmd` (set
     # in another method): (where, attribute entity, field path, value expression)
@@ -108,10 +113,20 @@ class FlowLog:
     _seen: set[tuple[object, ...]] = field(default_factory=set)
 
     def sink(
-        self, where: Where, expr: ast.expr, unit: Unit | None, value: Value | None
+        self,
+        where: Where,
+        expr: ast.expr,
+        unit: Unit | None,
+        value: Value | None,
+        array: bool = False,
     ) -> None:
         """`expr` (holding `value`) reached a place of `unit` (a dimensionless one
-        only tells a name apart from one with a unit: it is never suggested)."""
+        only tells a name apart from one with a unit: it is never suggested); an
+        `array` place (a message's array field) says its names hold sequences."""
+        if array:
+            if self._once("array", id(expr)):
+                self.array_sinks.append((where, expr))
+            return
         if unit is None or unit.is_label:
             return
         if value is not None:
@@ -138,6 +153,8 @@ class FlowLog:
             return
         if self._once("bind", id(expr), entity):
             self.binds.setdefault(entity, []).append((where, expr))
+        if _is_sequence(value):
+            self.sequences.add(entity)
         unit = value.unit
         kept = unit is not None and not value.literal and value.scale == 1.0
         if kept and unit is not None and not unit.is_label:
@@ -274,6 +291,14 @@ def suggestions(log: FlowLog, program: Program) -> list[Found]:
     todo: list[tuple[tuple[object, ...], Unit]] = []
     for where, expr, unit in log.sinks:
         todo.extend((entity, unit) for entity, _ in carriers(expr, where))
+    sequences = set(log.sequences)
+    array_todo = [e for w, x in log.array_sinks for e, _ in carriers(x, w)]
+    while array_todo:  # backwards, from the array fields
+        entity = array_todo.pop()
+        if entity not in sequences:
+            sequences.add(entity)
+            for where, expr in sources.get(entity, []):
+                array_todo.extend(e for e, _ in carriers(expr, where))
     done: set[tuple[tuple[object, ...], str]] = set()
     while todo:  # backwards, from the places
         entity, unit = todo.pop()
@@ -306,10 +331,16 @@ def suggestions(log: FlowLog, program: Program) -> list[Found]:
             _add(met, unit)
         if len(met) != 1 or not met[0].dims or not met[0].text:
             continue  # several units: a bug for `check`, not an annotation
+        if entity in sequences:
+            continue  # not a float; its elements' type is not known
         spot = shapes.spot(entity, places.get(entity))
         if spot is not None:
             found.append(Found(spot[0], spot[1], spot[2], met[0].text))
     return sorted(set(found), key=lambda f: (f.line, f.col))
+
+
+def _is_sequence(value: Value) -> bool:
+    return value.kind in ("list", "tuple") or value.items is not None
 
 
 def _add(units: list[Unit], unit: Unit) -> None:

@@ -1243,7 +1243,9 @@ class Interpreter(CallEvaluator):
             base = self.eval(target.value, state)
             if base.kind == "msg" and base.ref in state.heap:
                 unit = heap.field_unit(self.ctx, state, base.ref, target.attr)[0]
-                log.sink(self.flow_where(), source, unit, value)
+                spec = heap.field_spec(self.ctx, state, base.ref, target.attr)
+                array = spec is not None and spec.array
+                log.sink(self.flow_where(), source, unit, value, array)
                 return
             if base.kind != "instance":
                 log.attribute_field(self.flow_where(), target, source, value)
