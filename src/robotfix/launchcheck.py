@@ -19,7 +19,7 @@ table `paramcheck` builds of every node's declarations:
   cannot load (an integer PyYAML refuses).
 
 A fault of ours on one launch file (reading it, or checking its entries) is a
-`paramcheck.Fault` of that file: its findings are dropped, the others checked.
+`faults.Fault` of that file: its findings are dropped, the others checked.
 """
 
 from __future__ import annotations
@@ -28,26 +28,22 @@ import ast
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from robotfix import messages
-from robotfix.analysis.parameters import ROSPY, Summary
 from robotfix.diagnostics import Diagnostic, Note, Span
+from robotfix.faults import Fault, guard
 from robotfix.fs import UnreadableError, read_text
-from robotfix.paramcheck import (
-    Fault,
-    Parameter,
-    Table,
-    guard,
-    report_failure,
-    ros1_name,
-)
-from robotfix.paramcheck import owners as declaring_owners
 from robotfix.ros import paramfile as P
 from robotfix.ros.executables import MAX_BUILD_BYTES, executable_file, module_file
 from robotfix.ros.launch.model import FileParam, InlineParam, NodeEntry
 from robotfix.ros.launch.reader import Reader
 from robotfix.ros.package import package_folder, package_name
 from robotfix.ros.yamlfile import WALK_BUDGET
+
+if TYPE_CHECKING:  # the checks' own imports come with paramcheck, after the cache
+    from robotfix.analysis.parameters import Summary
+    from robotfix.paramcheck import Parameter, Table
 
 BUILD_FILES = ("package.xml", "setup.py", "setup.cfg", "CMakeLists.txt")
 # every rclpy node declares these itself
@@ -250,6 +246,9 @@ def _imported(main: Path, package: Path) -> list[Path]:
 
 
 def _owners_of(code: list[Summary]) -> list[tuple[Summary, str]]:
+    from robotfix.analysis.parameters import ROSPY
+    from robotfix.paramcheck import owners as declaring_owners
+
     return [
         (summary, owner)
         for summary in code
@@ -378,6 +377,8 @@ def _judged(
     assert first is not None
     shown = f'"{value.text}"' if value.type == "string" else value.text
     subject = f"`{parameter.name}: {shown[:40]}` (launched node {node})"
+    from robotfix.paramcheck import report_failure
+
     return report_failure(place.path, span, subject, value, first)
 
 
@@ -447,6 +448,9 @@ def _ros1_entry(
 
 
 def _ros1_parameter(summary: Summary, name: str) -> Parameter | None:
+    from robotfix.analysis.parameters import ROSPY
+    from robotfix.paramcheck import Parameter, ros1_name
+
     nodes = summary.node_names.get(ROSPY, [])
     if not any(d.ros == 1 and ros1_name(d.name, nodes) == name for d in summary.decls):
         return None

@@ -26,8 +26,7 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Iterable, Iterator
-from contextlib import contextmanager
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
@@ -38,6 +37,7 @@ from robotfix.analysis.parameters import ROSPY, Attached, ParamDecl, Summary, su
 from robotfix.annotations import ast as A
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic, Span
+from robotfix.faults import Fault, guard
 from robotfix.fs import UnreadableError, read_regular, read_text
 from robotfix.messages import Declared
 from robotfix.ros import paramfile as P
@@ -76,16 +76,6 @@ class Failure:
     expected: str = ""  # type errors: the declared type
     declared: Declared = field(default_factory=lambda: Declared("", None, None))
     why: str = ""
-
-
-@dataclass(frozen=True)
-class Fault:
-    """A fault of ours while a file was read or checked (`run` reports it as
-    an internal error of that file)."""
-
-    path: str
-    summary: str  # one line: the exception
-    detail: str  # the traceback
 
 
 @dataclass
@@ -185,26 +175,6 @@ def check_parameter_files(
         out.extend(launches.check(table, read, faults))
         texts.update(launches.texts())
     return [d for d in out if not _silenced(d, texts.get(d.path, ""), config)]
-
-
-@contextmanager
-def guard(
-    path: str | Path, out: list[Diagnostic], faults: list[Fault] | None
-) -> Iterator[None]:
-    """A fault of ours while one file is read or checked: that file's diagnostics
-    so far are dropped, the fault is kept for the run to report (`faults`; raised
-    when there is no list) and the other files are checked."""
-    before = len(out)
-    try:
-        yield
-    except Exception as err:
-        if faults is None:
-            raise
-        import traceback  # only here: 2 ms of every start otherwise
-
-        del out[before:]
-        summary = f"{type(err).__name__}: {err}"
-        faults.append(Fault(str(path), summary, traceback.format_exc()))
 
 
 def _check_file(path: Path, loaded: P.ParamFile, table: Table) -> list[Diagnostic]:
