@@ -40,8 +40,8 @@ if TYPE_CHECKING:
 
 if TYPE_CHECKING:  # the analysis is imported only when a file is checked
     from robotfix.analysis.parameters import Summary as ParamSummary
-    from robotfix.launchcheck import LaunchRun
     from robotfix.faults import Fault as ParamFault
+    from robotfix.launchcheck import LaunchRun
     from robotfix.paramcheck import Known as ParamKnown
     from robotfix.project.summary import Known, Project
 

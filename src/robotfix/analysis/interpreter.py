@@ -1014,7 +1014,15 @@ class Interpreter(CallEvaluator):
     def only_reads(self, call: ast.Call, arg: ast.expr, depth: int = 0) -> bool:
         """Whether `call` only reads the argument `arg` (a message): a builtin that
         reads, `math`, logging, publishing, a tf2 transform, or a function of this
-        file that only reads that parameter."""
+        file that only reads that parameter. Syntactic, so kept per call and
+        argument (asked again on every pass of a loop)."""
+        key = (id(call), id(arg), depth)
+        found = self.program.reading_calls.get(key)
+        if found is None:
+            found = self.program.reading_calls[key] = self._only_reads(call, arg, depth)
+        return found
+
+    def _only_reads(self, call: ast.Call, arg: ast.expr, depth: int) -> bool:
         func = call.func
         user = self._user_function(func)
         if user is not None:

@@ -197,6 +197,7 @@ class TypeModel:
         self._declared: dict[str, dict[str, ast.expr]] | None = None
         self._busy: set[object] = set()  # questions being answered (recursion)
         self._families: dict[str, list[str]] = {}
+        self._library_bases: dict[str, list[stubs.Class]] = {}
 
     @property
     def program(self) -> Program:
@@ -285,8 +286,12 @@ class TypeModel:
 
     def library_bases(self, class_name: str) -> list[stubs.Class]:
         """The stub classes a class of this file derives from (`Node`), nearest
-        first, through the file's classes it derives from."""
-        found: list[stubs.Class] = []
+        first, through the file's classes it derives from (asked at every
+        `self.x` read of such a class: kept)."""
+        kept = self._library_bases.get(class_name)
+        if kept is not None:
+            return kept
+        found: list[stubs.Class] = self._library_bases.setdefault(class_name, [])
         for name in self._up(class_name):
             node = self.program.classes[name].node
             for base in node.bases if isinstance(node, ast.ClassDef) else ():
