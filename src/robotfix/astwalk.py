@@ -57,3 +57,14 @@ def walk(roots: ast.AST | Iterable[ast.AST]) -> Iterator[ast.AST]:
         node = pop()
         yield node
         extend(children(node))
+
+
+def dotted(node: ast.expr) -> str | None:
+    """`np.linalg.norm` -> "np.linalg.norm"; None when not a chain of names."""
+    parts: list[str] = []
+    while isinstance(node, ast.Attribute):
+        parts.append(node.attr)
+        node = node.value
+    if not isinstance(node, ast.Name):
+        return None
+    return ".".join([node.id, *reversed(parts)])

@@ -20,6 +20,7 @@ from robotfix.analysis.values import MUTABLE, NONE, SEQUENCES, Items, Kept, Valu
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import INFINITY, NUMBERS
+from robotfix.astwalk import dotted
 from robotfix.ros.api_model import PARAMETER_CALLS
 from robotfix.stubs import load as stubs
 
@@ -393,7 +394,7 @@ class CallEvaluator(LibraryEvaluator):
                 return True
             helper = self.program.functions.get(func.id)
             return helper is not None and self._inlinable(helper, within) is not None
-        name = inline.dotted(func)
+        name = dotted(func)
         head, _, rest = (name or "").partition(".")
         found = self.static_value(head) if head not in params else None
         if not rest or found is None or found.kind != "module" or not found.name:

@@ -84,17 +84,6 @@ def pure(
     return True
 
 
-def dotted(node: ast.expr) -> str | None:
-    """`np.linalg.norm` -> "np.linalg.norm"; None when not a chain of names."""
-    parts: list[str] = []
-    while isinstance(node, ast.Attribute):
-        parts.append(node.attr)
-        node = node.value
-    if not isinstance(node, ast.Name):
-        return None
-    return ".".join([node.id, *reversed(parts)])
-
-
 def names(expr: ast.expr) -> set[str]:
     return {n.id for n in ast.walk(expr) if isinstance(n, ast.Name)}
 

@@ -42,6 +42,7 @@ from pathlib import Path
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import ANNOTATED, BASE_TYPES, Refinement, extract
 from robotfix.annotations.units import UnitError, resolve
+from robotfix.astwalk import dotted
 from robotfix.fs import UnreadableError, read_regular
 
 DATA = Path(__file__).parent / "data"
@@ -519,7 +520,8 @@ class _Reader:
         `Time - Duration` a Time. None for any other method."""
         name = node.name
         overloaded = any(
-            _dotted(d).rsplit(".", 1)[-1] == "overload" for d in node.decorator_list
+            (dotted(d) or "").rsplit(".", 1)[-1] == "overload"
+            for d in node.decorator_list
         )
         operands = [*node.args.posonlyargs, *node.args.args][1:]
         if not (overloaded and name in OPERATORS and len(operands) == 1):
@@ -539,7 +541,7 @@ class _Reader:
         kind = "method" if in_class else "function"
         rule = None
         for decorator in node.decorator_list:
-            name = _dotted(decorator).rsplit(".", 1)[-1]
+            name = (dotted(decorator) or "").rsplit(".", 1)[-1]
             if name in ("staticmethod", "classmethod", "property"):
                 kind = name
             elif name == "overload" and not (in_class and node.name in OPERATORS):
@@ -714,12 +716,6 @@ def _plain(node: ast.expr | None) -> str | None:
     if isinstance(node, ast.Name) and node.id in ("int", "float", "bool"):
         return node.id
     return None
-
-
-def _dotted(node: ast.expr) -> str:
-    if isinstance(node, ast.Attribute):
-        return f"{_dotted(node.value)}.{node.attr}"
-    return node.id if isinstance(node, ast.Name) else ""
 
 
 def _called(node: ast.Call) -> str:

@@ -21,6 +21,7 @@ import weakref
 from collections.abc import Iterator
 from pathlib import Path
 
+from robotfix.astwalk import dotted
 from robotfix.ros import paramfile as P
 from robotfix.ros import yamlfile as Y
 from robotfix.ros.launch import substitution as S
@@ -307,7 +308,7 @@ class _Evaluator:
         name = _called(call.func)
         if name in API:
             return getattr(self, API[name])(call)
-        if name == "join" and _dotted(call.func) in (
+        if name == "join" and (dotted(call.func) or "") in (
             "os.path.join",
             "path.join",
             "join",
@@ -486,16 +487,6 @@ class _Evaluator:
                     self.place(key_node) if key_node is not None else None,
                 )
             )
-
-
-def _dotted(node: ast.expr) -> str:
-    parts = []
-    while isinstance(node, ast.Attribute):
-        parts.append(node.attr)
-        node = node.value
-    if isinstance(node, ast.Name):
-        parts.append(node.id)
-    return ".".join(reversed(parts))
 
 
 def _text(value: object) -> str | None:
