@@ -37,11 +37,10 @@ from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
 from robotfix.fs import RACY_NS, UnreadableError, read_head, read_text, stamp, within
 from robotfix.ros.install import IGNORE_MARKERS, InstallSpace
-from robotfix.ros.launch.names import is_launch_file
+from robotfix.ros.launch.names import YAML_SUFFIXES, is_launch_file
 
 INTERFACE_SUFFIXES = (".msg", ".srv", ".action", ".idl")
 INTERFACE_FOLDERS = ("msg", "srv", "action")
-YAML_SUFFIXES = (".yaml", ".yml")
 PARAMETER_FOLDERS = ("config", "params", "param")  # a package's parameter files
 MAX_BUILD_FILE_BYTES = 1024 * 1024  # CMakeLists.txt, setup.py
 _GPL_CMAKE = re.compile(r"generate_parameter_library\s*\(([^)]*)\)")
@@ -240,10 +239,6 @@ def _definitions_of(package: Path) -> list[Path]:
         if "$" not in name and _isfile(path) and _within(path, [package]):
             found.append(path)
     return found
-
-
-def _is_launch(folder: Path, name: str) -> bool:
-    return is_launch_file(folder.name, name)
 
 
 def _is_yaml(name: str) -> bool:
@@ -462,7 +457,7 @@ def _python_files(
             if (
                 launch is not None
                 and entry.regular
-                and _is_launch(folder, entry.name)
+                and is_launch_file(folder.name, entry.name)
                 and not (config is not None and config.excluded(entry.path))
             ):
                 launch.append(entry.path)

@@ -1056,7 +1056,7 @@ class Interpreter(CallEvaluator):
             and isinstance(func.value, ast.Name)
             and self.function is not None
             and self.function.class_name is not None
-            and func.value.id == _first_parameter(self.function)
+            and func.value.id == self.function.first_parameter
         ):
             return self.program.functions.get(f"{self.function.class_name}.{func.attr}")
         return None
@@ -1185,7 +1185,7 @@ class Interpreter(CallEvaluator):
             and isinstance(func.value, ast.Name)
             and self.function is not None
             and self.function.is_method
-            and func.value.id == _first_parameter(self.function)
+            and func.value.id == self.function.first_parameter
         ):
             method = f"{self.function.class_name}.{func.attr}"
             known = self.program.functions.get(method)
@@ -2110,12 +2110,6 @@ def _no_return(qualified: str | None) -> bool:
     return qualified is not None and (
         qualified in NO_RETURN or qualified.endswith(".assert_never")
     )
-
-
-def _first_parameter(function: Function) -> str | None:
-    args = function.node.args
-    every = [*args.posonlyargs, *args.args]
-    return every[0].arg if every else None
 
 
 _LITERAL_TEST = (

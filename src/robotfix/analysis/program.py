@@ -31,6 +31,13 @@ class Function:
     decorators: frozenset[str] = frozenset()
 
     @property
+    def first_parameter(self) -> str | None:
+        """The name of its first positional parameter (`self`, `cls`), if any."""
+        args = self.node.args
+        every = [*args.posonlyargs, *args.args]
+        return every[0].arg if every else None
+
+    @property
     def is_method(self) -> bool:
         return self.class_name is not None and "staticmethod" not in self.decorators
 

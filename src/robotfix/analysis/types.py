@@ -602,7 +602,7 @@ class TypeModel:
         if isinstance(func, ast.Name):
             if env is not None and func.id in env:
                 return None
-            if function is not None and func.id == _first_param(function):
+            if function is not None and func.id == function.first_parameter:
                 # `cls(...)` in a classmethod
                 if "classmethod" in function.decorators and function.class_name:
                     return Obj(function.class_name)
@@ -977,15 +977,9 @@ def _is_self(
         and function is not None
         and function.class_name is not None
         and function.is_method
-        and owner.id == _first_param(function)
+        and owner.id == function.first_parameter
         and (env is None or owner.id not in env)
     )
-
-
-def _first_param(function: Function) -> str | None:
-    args = function.node.args
-    params = [*args.posonlyargs, *args.args]
-    return params[0].arg if params else None
 
 
 def _last(node: ast.expr) -> str:

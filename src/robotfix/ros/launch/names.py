@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-LAUNCH_SUFFIXES = (".py", ".xml", ".yaml", ".yml", ".launch")  # in a `launch/` folder
+YAML_SUFFIXES = (".yaml", ".yml")
+LAUNCH_SUFFIXES = (".py", ".xml", *YAML_SUFFIXES, ".launch")  # in a `launch/` folder
 
 
 def is_launch_name(name: str) -> bool:
@@ -11,7 +12,7 @@ def is_launch_name(name: str) -> bool:
     return name.endswith(".launch") or any(
         name.endswith(f"{sep}launch{suffix}")
         for sep in (".", "_")
-        for suffix in (".py", ".xml", ".yaml", ".yml")
+        for suffix in (".py", ".xml", *YAML_SUFFIXES)
     )
 
 

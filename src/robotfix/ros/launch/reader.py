@@ -17,6 +17,7 @@ from robotfix.fs import UnreadableError, read_text
 from robotfix.ros import yamlfile as Y
 from robotfix.ros.launch.frontend import read_tree
 from robotfix.ros.launch.model import LaunchFile
+from robotfix.ros.launch.names import YAML_SUFFIXES
 from robotfix.ros.launch.python import read_python
 from robotfix.ros.launch.substitution import Context
 from robotfix.ros.launch.tree import (
@@ -29,7 +30,6 @@ from robotfix.ros.launch.tree import (
 
 MAX_INCLUDE_DEPTH = 8
 MAX_READS = 2_000  # evaluations of launch files in one run (arguments differ)
-YAML_SUFFIXES = (".yaml", ".yml")
 
 Parsed = tuple[ast.Module, str] | Element | LaunchFile  # LaunchFile: not read
 
