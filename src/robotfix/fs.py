@@ -259,18 +259,9 @@ def _recheck(held: int, first: os.stat_result, original: bytes, target: Path) ->
         raise NotReplacedError("changed while it was read")
 
 
-def _stamp(st: os.stat_result) -> tuple[int, ...]:
-    return (
-        st.st_size,
-        st.st_mtime_ns,
-        st.st_ctime_ns,
-        st.st_ino,
-        st.st_dev,
-        st.st_nlink,
-        st.st_mode,
-        st.st_uid,
-        st.st_gid,
-    )
+def _stamp(st: os.stat_result) -> list[int]:
+    """`stamp_of`, and what else a rename over a user's file must not change."""
+    return [*stamp_of(st), st.st_nlink, st.st_uid, st.st_gid]
 
 
 def _holds(fd: int, original: bytes) -> bool:
@@ -400,6 +391,11 @@ def stamp(name: str | os.PathLike[str]) -> list[int] | None:
         st = os.stat(name)
     except (OSError, ValueError):
         return None
+    return stamp_of(st)
+
+
+def stamp_of(st: os.stat_result) -> list[int]:
+    """`stamp`, of a stat already made."""
     return [
         st.st_mtime_ns,
         st.st_ctime_ns,
