@@ -1042,10 +1042,7 @@ class Interpreter(CallEvaluator):
         receiver = func.value
         if isinstance(receiver, ast.Name) and receiver.id == "math":
             return True
-        return (
-            name in LOGGING
-            and "log" in (self.ctx.source.segment(receiver) or "").lower()
-        )
+        return self._logs(func)
 
     def _user_function(self, func: ast.expr) -> Function | None:
         """The function of this file a call's `func` names, syntactically."""
@@ -1107,6 +1104,12 @@ class Interpreter(CallEvaluator):
                 state.exits += 1
         return state
 
+    def _logs(self, func: ast.Attribute) -> bool:
+        """`self.get_logger().error(...)`, `logger.error(...)`; not `parser.error`:
+        a logging method called on something its code calls a logger."""
+        receiver = self.ctx.source.segment(func.value) or ""
+        return func.attr in LOGGING and "log" in receiver.lower()
+
     def _may_stop(self, func: ast.expr) -> bool:
         """A call whose result is dropped, which may never return for all the
         analysis can tell: a function of this file that can raise, or one it
@@ -1116,9 +1119,7 @@ class Interpreter(CallEvaluator):
         if name in RETURNS:
             return False
         if name in LOGGING and isinstance(func, ast.Attribute):
-            # `self.get_logger().error(...)`, `logger.error(...)`; not `parser.error`
-            receiver = self.ctx.source.segment(func.value) or ""
-            return "log" not in receiver.lower()
+            return not self._logs(func)
         known: Function | None = None
         if isinstance(func, ast.Name):
             if func.id in self.nested:
