@@ -65,11 +65,12 @@ def generate_launch_description():
     ])
 """,
     )
+    marker = tmp_path / "ran"  # the launch file's own first line would make it
     outer = write(
         pkg / "launch" / "outer.launch.py",
-        """
+        f"""
 import os
-open('/tmp/robotfix-launch-ran', 'w')
+open({str(marker)!r}, 'w')
 from ament_index_python.packages import get_package_share_directory
 from launch import LaunchDescription
 from launch.actions import GroupAction, IncludeLaunchDescription
@@ -80,7 +81,7 @@ def generate_launch_description():
     share = get_package_share_directory('demo')
     inner = IncludeLaunchDescription(
         PythonLaunchDescriptionSource(os.path.join(share, 'launch', 'inner.launch.py')),
-        launch_arguments={'who': 'passed'}.items())
+        launch_arguments={{'who': 'passed'}}.items())
     return LaunchDescription([GroupAction([
         PushRosNamespace('robot1'),
         Node(package='demo', executable='listener', namespace='arm',
@@ -91,7 +92,7 @@ def generate_launch_description():
 """,
     )
     found = Reader({"demo": pkg}.get).read(outer)
-    assert not Path("/tmp/robotfix-launch-ran").exists()
+    assert not marker.exists()
     by_exe = {e.executable: e for e in found.entries}
     listener, talker = by_exe["listener"], by_exe["talker"]
     assert listener.namespace == "/robot1/arm"
