@@ -41,7 +41,6 @@ or that lie under the checked paths but were not checked, are dropped when savin
 
 from __future__ import annotations
 
-import contextlib
 import functools
 import hashlib
 import json
@@ -83,15 +82,14 @@ _OWN_SUFFIXES = frozenset({".py", ".pyi", ".lark", ".json", ".toml"})
 @functools.lru_cache(maxsize=1)
 def own_digest() -> str:
     """A digest of RobotFix's own files: installed from a checkout, every commit is
-    version 0.1.0, so the version alone would replay results of older code (about
-    1.6 MB read once per process)."""
+    version 0.1.0, so the version alone would replay results of older code. Their
+    stamps, not their bytes (a run starts on every save): a pull or a reinstall
+    writes the files, which moves their ctime."""
     package = Path(__file__).resolve().parent
     digest = hashlib.blake2b(digest_size=16)
     for path in sorted(package.rglob("*")):
         if path.suffix in _OWN_SUFFIXES and "__pycache__" not in path.parts:
-            digest.update(str(path.relative_to(package)).encode())
-            with contextlib.suppress(OSError):
-                digest.update(path.read_bytes())
+            digest.update(f"{path.relative_to(package)} {fs.stamp(path)}".encode())
     return digest.hexdigest()
 
 
