@@ -156,7 +156,7 @@ def test_forty_degree_six_lines_finish(tmp_path: Path) -> None:
     *warned, last = found
     assert all(code == "RF102" for _, code in warned)
     # z3's resource units differ between z3-solver releases (the dependency is not
-    # pinned): with 4.15 and 5.4 the budget ends at the 40th line (RF901 there), with
+    # pinned): with 5.4 the budget ends at the 40th line (RF901 there), with
     # another release it may end a line later, after all 40; either way every line
     # before has its verdict and nothing is cut short as a whole (RF902)
     assert last[1] in ("RF102", "RF901") and "RF902" not in {c for _, c in found}
