@@ -221,25 +221,29 @@ def _package_folder(folder: Path) -> Path | None:
 
 def _imported(main: Path, package: Path) -> list[Path]:
     """The modules of `package` that `main` imports (`from pkg.node import N`,
-    `from .node import N`): where an entry point's node class often lives."""
+    `from .node import N`, `from ..pkg import node`, `import pkg.node`): where an
+    entry point's node class often lives. A name a `from` import takes may be a
+    submodule, so that is tried too."""
     try:
         tree = ast.parse(read_text(main, MAX_BUILD_BYTES))
     except (UnreadableError, SyntaxError, ValueError, RecursionError, MemoryError):
         return []
+    here = Path(os.path.relpath(main.parent, package)).parts
+    here = () if here == (".",) else here
     found = []
     for node in ast.walk(tree):
         modules: list[str] = []
-        if isinstance(node, ast.ImportFrom) and node.module:
-            if node.level:
-                here = os.path.relpath(main.parent, package).replace(os.sep, ".")
-                prefix = "" if here == "." else here + "."
-                modules = [prefix + node.module]
-            else:
-                modules = [node.module]
+        if isinstance(node, ast.ImportFrom):
+            if node.level > len(here) + 1:
+                continue  # above the package: not one of its modules
+            base = here[: len(here) - node.level + 1] if node.level else ()
+            head = ".".join([*base, *(node.module or "").split(".")]).strip(".")
+            names = [a.name for a in node.names if a.name != "*"]
+            modules = [head] + [f"{head}.{n}" if head else n for n in names]
         elif isinstance(node, ast.Import):
             modules = [a.name for a in node.names]
         for module in modules:
-            path = module_file(package, module)
+            path = module_file(package, module) if module else None
             if path is not None and path != main:
                 found.append(path)
     return found
