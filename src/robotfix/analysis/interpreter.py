@@ -1618,7 +1618,7 @@ class Interpreter(CallEvaluator):
         self._loop_units(loop, end, [node])
         breaks = _breaks(node.body)
         first: list[State] = []
-        if self._first_may_break(breaks, stored, entry):
+        if self._first_may_break(node.body, breaks, stored, entry):
             start = entry.fork()
             cond = self.condition(node.test, start)
             start.assume(cond)
@@ -1665,7 +1665,7 @@ class Interpreter(CallEvaluator):
         self._loop_units(loop, end, [node])
         breaks = _breaks(node.body)
         first: list[State] = []
-        if self._first_may_break(breaks, stored, entry):
+        if self._first_may_break(node.body, breaks, stored, entry):
             start = entry.fork()
             start.assume(nonempty)
             self._bind_element(node, iterable, start)
@@ -1709,16 +1709,26 @@ class Interpreter(CallEvaluator):
         finally:
             self._breaking.pop()
 
-    def _first_may_break(self, breaks: bool, stored: set[str], entry: State) -> bool:
+    def _first_may_break(
+        self, body: list[ast.stmt], breaks: bool, stored: set[str], entry: State
+    ) -> bool:
         """Whether a `break` of the first iteration may leave a name the loop binds
-        unbound: the loop has a `break`, binds a name unbound on entry, and is not
-        inside a first iteration run again (which would double the work at every
-        level of nesting)."""
-        return (
-            breaks
-            and not any(kept is not None for kept in self._breaking)
-            and self._binds_new_names(stored, entry)
-        )
+        unbound: the loop has a `break`, binds a name unbound on entry that no
+        plain assignment before the first statement holding a `break` binds, and
+        is not inside a first iteration run again (which would double the work at
+        every level of nesting)."""
+        if not breaks or any(kept is not None for kept in self._breaking):
+            return False
+        local = self.scope.local_names
+        new = {
+            n for n in stored if n in local and not isinstance(entry.env.get(n), Value)
+        }
+        for stmt in body:
+            if not new or _breaks([stmt]):
+                break
+            if isinstance(stmt, ast.Assign | ast.AnnAssign) and stmt.value is not None:
+                new -= bound_names([stmt])
+        return bool(new)
 
     def _first_breaks(self, body: list[ast.stmt], start: State) -> list[State]:
         """The states at the `break`s of the loop's first iteration, run again from
