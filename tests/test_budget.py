@@ -21,12 +21,12 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from robotfix import api, budget
-from robotfix.analysis.vc import VC
 from robotfix.annotations import ast as A
 from robotfix.annotations import witness
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.smt.prepass import Prepass, proves
 from robotfix.source import SourceFile
+from robotfix.vc import VC
 from tests.test_prepass import _comparisons
 
 SRC = Path(__file__).resolve().parent.parent / "src"

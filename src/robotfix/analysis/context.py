@@ -19,7 +19,6 @@ from robotfix.analysis.constants import ConstantNames
 from robotfix.analysis.imported import absolute_imports, dotted_name
 from robotfix.analysis.index import FileIndex, index_scope
 from robotfix.analysis.values import SORTS, Value, sort_of
-from robotfix.analysis.vc import VC, Verdict
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Alias, Names, Refinement, extract
 from robotfix.budget import Budget
@@ -27,6 +26,7 @@ from robotfix.diagnostics import Diagnostic, Span
 from robotfix.ros.catalog import Invariant, MsgCatalog, MsgSpec
 from robotfix.source import SourceFile
 from robotfix.stubs.load import StubSet
+from robotfix.vc import VC, Verdict
 
 if TYPE_CHECKING:
     from robotfix.analysis.flows import FlowLog

@@ -328,7 +328,7 @@ class ExpressionEvaluator:
             return Value("float", A.Num(number, False), literal=True)
         code = named_code(qualified)
         if code is not None:
-            return Value("int", A.Num(code, True), literal=True)
+            return Value("int", A.Num(Fraction(code), True), literal=True)
         msg_type = self.ctx.msg_type_named(qualified)
         if msg_type is not None:
             return Value("msgclass", name=msg_type)

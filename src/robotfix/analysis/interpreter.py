@@ -1386,7 +1386,7 @@ class Interpreter(CallEvaluator):
             if number is not None:  # from math import pi
                 value = Value("float", A.Num(number, False), literal=True)
             elif code is not None:  # from errno import EINTR
-                value = Value("int", A.Num(code, True), literal=True)
+                value = Value("int", A.Num(Fraction(code), True), literal=True)
             elif found is not None:  # a constant of a module of the tree
                 value = found
             elif msg_type:

@@ -41,7 +41,6 @@ from robotfix.analysis.constants import scan
 from robotfix.analysis.index import FileIndex, index_of
 from robotfix.analysis.program import call_argument
 from robotfix.analysis.values import Value
-from robotfix.analysis.vc import VC, Violated
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Alias, Names, Refinement, extract
 from robotfix.annotations.numbers import INFINITY, named_number
@@ -54,6 +53,7 @@ from robotfix.ros.api_model import (
 )
 from robotfix.ros.rclpy_params import Range, python_type
 from robotfix.source import SourceFile
+from robotfix.vc import VC, Violated
 
 if TYPE_CHECKING:
     from robotfix.analysis.checks import Checker
