@@ -159,8 +159,10 @@ def duplicate_interface(path: str, type_name: str, first: str) -> Diagnostic:
         (
             Note(f"`{type_name}` first defined here", first, 1),
             Note(
-                "the first file in msg-path order, then in path order, wins: remove "
-                "or rename the other"
+                "the first definition wins (the checked packages' files, then "
+                "msg-paths in order): remove or rename the other; a file that only "
+                "adds `#RobotFix#` lines to a type leaves its fields out "
+                "(`[pkg/Type]:`)"
             ),
         ),
     )
