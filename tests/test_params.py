@@ -489,3 +489,15 @@ def test_a_worker_summary_survives_the_trip() -> None:
     back = pickle.loads(pickle.dumps(portable))
     assert back.decls == summary.decls
     assert [d.default for d in back.decls][1] is UNKNOWN
+
+
+def test_notes_stay_notes_from_the_cache(tmp_path: Path) -> None:
+    """Issue 24: an RF102 note on a parameter file's value came back from the
+    result cache as a warning (the cache dropped a diagnostic's own severity)."""
+    package = shutil.copytree(PACKAGES / "ros2_limits", tmp_path / "ros2_limits")
+    config = Config(root=tmp_path, cache_dir=tmp_path / "cache")
+    runs = [check_paths([package], config, use_cache=True) for _ in range(2)]
+    assert runs[1].from_cache == runs[0].from_cache + 2
+    levels = [[(d.code, d.severity.value) for d in r.diagnostics] for r in runs]
+    assert ("RF102", "note") in levels[0]
+    assert levels[1] == levels[0]

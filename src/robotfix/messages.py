@@ -847,6 +847,22 @@ def parameter_value_type(
     )
 
 
+def parameter_refinement_unchecked(
+    path: str, span: Span, subject: str, rule: str, declared: Declared, why: str
+) -> Diagnostic:
+    """RF102 as a note: a value in a parameter file that a refinement of its
+    parameter cannot be evaluated for (it names what only the running code knows),
+    said rather than passed over."""
+    return Diagnostic(
+        rules.REFINEMENT_UNPROVEN,
+        path,
+        span,
+        f"{subject} is not checked against {rule}{_owner(declared)}: {why}",
+        _notes(declared, ()),
+        level=Severity.NOTE,
+    )
+
+
 def _notes(declared: Declared, notes: tuple[str, ...]) -> tuple[Note, ...]:
     return (declared.note(), *(Note(n) for n in notes if n))
 

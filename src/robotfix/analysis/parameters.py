@@ -779,9 +779,9 @@ class _Walker:
         if name in self.constants:
             return _python_constant(name, self.constants[name])
         qualified = self.index.imports.get(head)
-        number = _named_number(f"{qualified}{dot}{rest}") if qualified else None
-        if number is not None:
-            return _python_constant(name, number)
+        number = named_number(f"{qualified}{dot}{rest}") if qualified else None
+        if number is not None:  # infinity too: 10**400, above every double
+            return A.Num(number, False, label=name)
         base = self._in_tree.get(head)
         found = imported.constant(self.resolver, f"{base}{dot}{rest}") if base else None
         return A.labelled(found.term, name) if found is not None else None
