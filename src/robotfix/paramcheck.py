@@ -48,6 +48,7 @@ from robotfix.source import SourceFile
 
 if TYPE_CHECKING:
     from robotfix.project.summary import Project
+    from robotfix.stubs.load import StubSet
 
 # A Python file is summarised only if it mentions one of these (bytes, quick).
 MENTIONS = {
@@ -166,7 +167,9 @@ def check_parameter_files(
         layouts |= set(MENTIONS)
     words = tuple(w for layout in sorted(layouts) for w in MENTIONS.get(layout, ()))
     found = (
-        _summaries(python_files, words, known or {}, project, faults) if words else []
+        _summaries(python_files, words, known or {}, project, faults, config)
+        if words
+        else []
     )
     table = Table(found, definitions, launches.renamed if launches else None)
     for path in files:
@@ -259,10 +262,12 @@ def _summaries(
     known: dict[str, Known],
     project: Project | None = None,
     faults: list[Fault] | None = None,
+    config: Config | None = None,
 ) -> list[Summary]:
     """The summaries of the files that mention one of `words` (a quick filter);
     those in `known` are not read again (unless their check made no summary).
-    A fault on one file is kept in `faults` (see `guard`)."""
+    A fault on one file is kept in `faults` (see `guard`); each file's stubs are
+    its settings' (`config`)."""
     found: list[Summary] = []
     seen: set[str] = set()
     for path in python_files:
@@ -286,8 +291,18 @@ def _summaries(
             source = SourceFile.from_bytes(str(path), data)
             if source.tree is not None:
                 resolver = project.resolver(path) if project is not None else None
-                found.append(summarize(source, resolver=resolver))
+                stubs = _stubs(config, path)
+                found.append(summarize(source, resolver=resolver, stubs=stubs))
     return found
+
+
+def _stubs(config: Config | None, path: Path) -> StubSet | None:
+    """The stubs a file's settings name (where a parameter API may be described)."""
+    if config is None:
+        return None
+    from robotfix.stubs.load import stub_set
+
+    return stub_set(config.for_file(path).stub_paths)
 
 
 def _load(

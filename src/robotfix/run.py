@@ -672,7 +672,7 @@ def _check_one(
             parsed = parsed or SourceFile.from_bytes(str(path), data)
             try:  # a fault here is paramcheck's to meet, as without this
                 parameters = (
-                    summarize(parsed, resolver=resolver)
+                    summarize(parsed, resolver=resolver, stubs=stubs)
                     if parsed.tree is not None
                     else None
                 )
