@@ -20,31 +20,14 @@ import robotfix.cache
 import robotfix.run
 from robotfix import cli, discovery
 from robotfix.lsp import server
-
-ROS_VARIABLES = ("AMENT_PREFIX_PATH", "CMAKE_PREFIX_PATH", "ROS_PACKAGE_PATH")
+from tests.test_workspace import no_ros_sourced as no_ros_sourced  # autouse
+from tests.test_workspace import package, write
 
 # every finding the workspace holds: (file, line, code)
 EXPECTED = [
     ("src/drive/drive/node.py", 5, "RF101"),
     ("src/px4_ros_com/px4_ros_com/offboard.py", 6, "RF101"),
 ]
-
-
-@pytest.fixture(autouse=True)
-def no_ros_sourced(monkeypatch: pytest.MonkeyPatch) -> None:
-    for name in ROS_VARIABLES:
-        monkeypatch.delenv(name, raising=False)
-
-
-def write(path: Path, text: str) -> Path:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(text, encoding="utf-8")
-    return path
-
-
-def package(folder: Path, name: str) -> Path:
-    write(folder / "package.xml", f'<package format="3"><name>{name}</name></package>')
-    return folder
 
 
 def workspace(ws: Path, extend: bool) -> list[Path]:

@@ -79,13 +79,25 @@ class Config:
     _found: dict[str, Path | None] = field(  # folder -> its nearest configuration
         default_factory=dict, compare=False, repr=False
     )
+    _spelled: dict[str, Path | None] = field(  # the same, by the folder as spelled
+        default_factory=dict, compare=False, repr=False
+    )
 
-    def for_file(self, path: Path) -> Config:
-        """The settings of one file (or folder): those of the nearest configuration
-        above it with the flags over them, or these when that is this run's own."""
+    def for_file(self, path: Path, folder: bool | None = None) -> Config:
+        """The settings of one file (or, with `folder`, a folder; None: either):
+        those of the nearest configuration above it with the flags over them, or
+        these when that is this run's own."""
         if self.flags is None:
             return self
-        found = find(path, self._found)
+        raw = os.fspath(path)  # the folder as spelled: no realpath, no stat
+        if folder is None:
+            folder = os.path.isdir(raw)
+        folder_name = raw if folder else os.path.dirname(raw) or "."
+        if folder_name in self._spelled:
+            found = self._spelled[folder_name]
+        else:
+            found = find(Path(folder_name), self._found)
+            self._spelled[folder_name] = found
         if found == self.source:
             return self
         key = str(found)
@@ -106,7 +118,7 @@ class Config:
         nearest configuration (each from its own folder)."""
         if self._excluded(path, folder):
             return True
-        nearest = self.for_file(path)
+        nearest = self.for_file(path, folder)
         return nearest is not self and nearest._excluded(path, folder)
 
     def _excluded(self, path: Path, folder: bool) -> bool:
@@ -387,7 +399,7 @@ def by_settings(files: list[Path], config: Config) -> list[tuple[Config, list[Pa
     first met."""
     groups: dict[int, tuple[Config, list[Path]]] = {}
     for file in files:
-        settings = config.for_file(file)
+        settings = config.for_file(file, folder=False)
         if settings is not config:
             groups.setdefault(id(settings), (settings, []))[1].append(file)
     return list(groups.values())
