@@ -210,7 +210,10 @@ def check_source(
     project = project or make_project([], config, catalog)
     resolver = project.resolver(Path(path))
     source = SourceFile.from_text(path, text)
-    return finish(_check(source, catalog, stubs=stubs, resolver=resolver, memo=memo))
+    ignored = config.ignored_codes(Path(path))
+    return finish(
+        _check(source, catalog, ignored, stubs=stubs, resolver=resolver, memo=memo)
+    )
 
 
 def make_project(roots: list[Path], config: Config, catalog: MsgCatalog) -> Project:

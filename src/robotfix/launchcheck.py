@@ -158,38 +158,18 @@ class LaunchRun:
                         out += _ros2_entry(started.entry, code, table, loaded)
                     else:
                         out += _ros1_entry(started.entry, code, table)
+        from robotfix.paramcheck import unmatched_sections
+
         known = self._known(table)
         for path, parameters in sorted(loaded.items()):
             with guard(path, out, faults):
-                out += _unmatched(path, parameters, known)
+                out += unmatched_sections(path, parameters, known)
         unique = {(d.path, d.span, d.code, d.message): d for d in out}
         return list(unique.values())
 
     def _known(self, table: Table) -> set[str]:
         """Every node name of the code and the launch files."""
-        known = set(self.names)
-        for summary in table.summaries:
-            for names in summary.node_names.values():
-                known.update(names)
-        return known
-
-
-def _unmatched(path: str, parameters: P.ParamFile, known: set[str]) -> list[Diagnostic]:
-    """RF602: a ROS 2 parameter file's sections that name no known node."""
-    if parameters.layout != "ros2":
-        return []
-    unmatched = [
-        (key, where)
-        for key, where in parameters.sections.items()
-        if (name := key.rstrip("/").rsplit("/", 1)[-1])
-        and "*" not in name
-        and name not in known
-    ]
-    if not unmatched:
-        return []
-    (line, col) = unmatched[0][1]
-    keys = [key for key, _ in unmatched]
-    return [messages.parameter_section_unmatched(path, line, col, keys)]
+        return set(self.names) | table.node_names()
 
 
 def _packages(files: list[Path]) -> dict[str, Path]:
