@@ -169,8 +169,8 @@ def test_parameter_files_use_the_checks_parse(
     monkeypatch.setattr(
         paramcheck,
         "_summaries",
-        lambda files, words, known, project, faults=None: original(
-            files, words, {}, project, faults
+        lambda files, words, known, project, faults=None, config=None: original(
+            files, words, {}, project, faults, config
         ),
     )
     # paramcheck parsing the files again, each seeing its tree (ros2_driver's
