@@ -623,11 +623,23 @@ def used_before_assignment(
     name: str,
     declared: bool,
     some_paths: bool = False,
+    assigned: int | None = None,
 ) -> Diagnostic:
+    """RF301; `assigned`: the line where the function assigns `name`, on paths
+    that do not lead to this read."""
     if some_paths:
         detail = (
             f"`{name}`, which is not assigned on every path to this line: "
             "on the others it raises UnboundLocalError or NameError"
+        )
+    elif assigned is not None:
+        where = (
+            f"only after this line (line {assigned})"
+            if assigned > span.line
+            else f"only on other paths (line {assigned})"
+        )
+        detail = (
+            f"`{name}`, which is assigned {where}: here it raises UnboundLocalError"
         )
     elif declared:
         detail = f"`{name}`, which is declared but not assigned on this path"

@@ -291,7 +291,9 @@ class Interpreter(CallEvaluator):
                         decisions.merged(bound.tests, state.tests), bound.early
                     )
                     and self._unbound_is_error(name, bound.when != A.TRUE)
-                    and self.check.unbound_here(state, bound.when, name, self.site)
+                    and self.check.unbound_here(
+                        state, bound.when, name, self.site, node
+                    )
                 ):
                     state.env[name] = MAYBE  # one bug, one diagnostic
                     return Value("unknown", uninit=Uninit(name, decl is not None))
@@ -303,7 +305,9 @@ class Interpreter(CallEvaluator):
                 self.check.report_uninit(value, self.site, state)
             elif self.guarded or (  # `try: X` read it: past this, X exists
                 self._unbound_is_error(name)
-                and self.check.unbound_here(state, A.TRUE, name, self.site)
+                and self.check.unbound_here(
+                    state, A.TRUE, name, self.site, node, self.scope.node
+                )
             ):
                 state.env[name] = MAYBE
             return value
