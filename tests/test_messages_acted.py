@@ -20,3 +20,34 @@ def test_rf301_caret_is_under_the_unbound_name_at_the_line_of_the_read() -> None
         ("RF301", 23, 12, 18),  # `period`, the second argument's line
         ("RF301", 27, 14, 19),  # `speed` in `print(speed)`
     ]
+
+
+def test_units_are_printed_as_people_write_them() -> None:
+    from robotfix.annotations.units import named, resolve
+
+    shown = {t: str(named(resolve(t))) for t in ("N", "kN", "kg", "g", "kg*m^2")}
+    assert shown == {"N": "N", "kN": "kN", "kg": "kg", "g": "g", "kg*m^2": "kg*m^2"}
+    shown = {t: str(named(resolve(t))) for t in ("Pa", "hPa", "W", "V", "J", "rpm")}
+    assert shown == {
+        "Pa": "Pa",
+        "hPa": "hPa",
+        "W": "W",
+        "V": "V",
+        "J": "N*m",
+        "rpm": "rpm",
+    }
+    assert str(resolve("kg") * resolve("m/s^2")) == "N"  # arithmetic, then named
+
+
+def test_a_force_computed_in_the_code_is_named_n_in_the_message() -> None:
+    source = (
+        "from typing import Annotated\n"
+        "def f(mass: Annotated[float, \"Unit('kg')\"],"
+        " acc: Annotated[float, \"Unit('m/s^2')\"]) -> None:\n"
+        "    force = mass * acc\n"
+        "    t: Annotated[float, \"Unit('s')\"] = force\n"
+    )
+    [found] = check_source(source, "node.py", Config())
+    assert found.message == (
+        "`t = force` gives `t` a value in N, but `t` is in s"
+    )
