@@ -51,3 +51,27 @@ def test_a_force_computed_in_the_code_is_named_n_in_the_message() -> None:
     assert found.message == (
         "`t = force` gives `t` a value in N, but `t` is in s"
     )
+
+
+def test_a_unit_from_an_interface_comment_names_that_comment(tmp_path: Path) -> None:
+    from robotfix.api import interface_files
+    from robotfix.ros.catalog import MsgCatalog
+
+    folder = tmp_path / "px4_msgs" / "msg"
+    folder.mkdir(parents=True)
+    (folder / "VehicleCommand.msg").write_text(
+        "uint64 timestamp # time since system start [us]\n", encoding="utf-8"
+    )
+    catalog = MsgCatalog(interface_files([folder]))
+    source = (
+        "from px4_msgs.msg import VehicleCommand\n"
+        "def stamp(node):\n"
+        "    msg = VehicleCommand()\n"
+        "    msg.timestamp = int(node.get_clock().now().nanoseconds / 1e6)\n"
+    )
+    [found] = check_source(source, "node.py", Config(), catalog)
+    [note] = found.notes
+    assert note.message == (
+        "unit of px4_msgs/VehicleCommand: `us` in the comment of `timestamp`"
+    )
+    assert (note.path, note.line) == (str(folder / "VehicleCommand.msg"), 1)

@@ -27,8 +27,11 @@ class Declared:
     line: int | None
     source: str = ""  # e.g. "REP 103: ..."
     owner: str = ""  # the message type whose refinement this is, if any
+    written: str = ""  # how it is written at path:line, "`us` in the comment of `t`"
 
     def note(self) -> Note:
+        if self.path is not None and self.written:
+            return Note(f"{self.what}: {self.written}", self.path, self.line)
         if self.path is not None:
             return Note(f"{self.what} declared here", self.path, self.line)
         return Note(f"{self.what}: {self.source}")

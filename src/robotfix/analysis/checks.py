@@ -1031,12 +1031,7 @@ class Checker:
     def _field_declared(
         self, owner: MsgSpec, name: str, unit_decl: FieldUnit
     ) -> Declared:
-        what = f"unit of {owner.name}"
-        if unit_decl.origin is None:
-            return Declared(what, None, None, unit_decl.source, owner.name)
-        return Declared(
-            what, unit_decl.origin.path, unit_decl.origin.line, owner=owner.name
-        )
+        return heap.unit_declared_at(owner, name, unit_decl)
 
     def read_field(
         self, state: State, ref: int, name: str, site: ast.AST, target: str
