@@ -75,3 +75,18 @@ def test_a_unit_from_an_interface_comment_names_that_comment(tmp_path: Path) -> 
         "unit of px4_msgs/VehicleCommand: `us` in the comment of `timestamp`"
     )
     assert (note.path, note.line) == (str(folder / "VehicleCommand.msg"), 1)
+
+
+def test_rf101_at_a_call_says_the_value_in_its_message() -> None:
+    source = (
+        "from typing import Annotated\n"
+        "LOOK_TIME = 10000\n"
+        "def spin(time_allowance: Annotated[int, 'time_allowance <= 600']) -> None:\n"
+        "    pass\n"
+        "spin(time_allowance=LOOK_TIME)\n"
+    )
+    [found] = check_source(source, "node.py", Config())
+    assert found.message == (
+        "`spin(time_allowance=LOOK_TIME)` violates `time_allowance <= 600`: "
+        "here `time_allowance` = 10000"
+    )  # in the concise, GitHub and SARIF forms too, which show no notes

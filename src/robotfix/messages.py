@@ -297,15 +297,15 @@ def refinement_violated(
     value: str | None,
     declared: Declared,
 ) -> Diagnostic:
-    notes = [declared.note()]
-    if value is not None:
-        notes.append(Note(f"here {subject} = {value}"))
+    """RF101; `value`: the one value `subject` has there, shown in the message
+    itself (a call's argument, `time_allowance=LOOK_TIME`, hides it)."""
+    shown = f": here {subject} = {value}" if value is not None else ""
     return Diagnostic(
         rules.REFINEMENT_VIOLATED,
         path,
         span,
-        f"`{stmt}` violates `{predicate}`{_owner(declared)}",
-        tuple(notes),
+        f"`{stmt}` violates `{predicate}`{_owner(declared)}{shown}",
+        (declared.note(),),
     )
 
 
