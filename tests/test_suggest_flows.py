@@ -29,14 +29,16 @@ def catalog() -> MsgCatalog:
     return MsgCatalog([])
 
 
-def expected(source: str) -> set[tuple[int, str, str]]:
+def expected(source: str) -> set[tuple[int, str, str, str]]:
+    """(line, name, unit, kind) from `# suggest: name unit` (a float) or
+    `# suggest: name unit list[float]`."""
     found = set()
     for tok in tokenize.generate_tokens(io.StringIO(source).readline):
         match = _EXPECTED.match(tok.string) if tok.type == tokenize.COMMENT else None
         if match:
             for part in match.group(1).split(","):
-                name, unit = part.split()
-                found.add((tok.start[0], name, unit))
+                name, unit, *kind = part.split()
+                found.add((tok.start[0], name, unit, kind[0] if kind else "float"))
     return found
 
 
@@ -47,7 +49,7 @@ CASE_FILES = sorted(CASES.glob("*.py"))
 def test_suggestions_are_exactly_the_expected(path: Path, catalog: MsgCatalog) -> None:
     source = path.read_text(encoding="utf-8")
     got = {
-        (s.line, s.name, s.unit)
+        (s.line, s.name, s.unit, s.kind)
         for s in api.unit_suggestions(source, str(path), catalog)
     }
     assert got == expected(source)
@@ -109,3 +111,24 @@ def test_no_suggestion_when_the_analysis_stopped_early(
     # stopped before `self.wait(None)`: `seconds` would look like a time
     monkeypatch.setattr(budget, "FILE_STEPS", 100)
     assert api.unit_suggestions(source, "node.py", catalog) == []
+
+
+def test_a_constructor_stored_into_a_field_takes_the_units_of_that_place(
+    tmp_path: Path,
+) -> None:
+    folder = tmp_path / "pkg" / "msg"
+    folder.mkdir(parents=True)
+    (folder / "Drive.msg").write_text(
+        'geometry_msgs/Vector3 vel  #RobotFix# Unit(vel.x) == "m/s"\n', encoding="utf-8"
+    )
+    catalog = MsgCatalog(api.interface_files([folder]))
+    source = (
+        "from geometry_msgs.msg import Vector3\n"
+        "from pkg.msg import Drive\n"
+        "def send(pub, forward):\n"
+        "    msg = Drive()\n"
+        "    msg.vel = Vector3(forward, 0.0, 0.0)\n"
+        "    pub.publish(msg)\n"
+    )
+    got = [(s.line, s.name, s.unit) for s in api.unit_suggestions(source, "n.py", catalog)]
+    assert got == [(3, "forward", "m/s")]  # Vector3 has no unit: Drive.vel has

@@ -272,7 +272,7 @@ def unit_suggestions(text: str, path: str, catalog: MsgCatalog) -> list[Suggesti
         ctx.msg_type_of, lambda msg_type, path: path_unit(catalog, msg_type, path)
     )
     return [
-        Suggestion(f.line, f.col, f.name, f.unit, "float")
+        Suggestion(f.line, f.col, f.name, f.unit, f.kind)
         for f in suggestions(log, log.program)
     ]
 

@@ -390,7 +390,8 @@ def _verify_names(text: str, after: ast.Module, lines: set[int]) -> None:
 
 def _written_names(annotation: ast.expr | None) -> list[str]:
     """The names in an annotation as `annotate` writes it: `Annotated` (or
-    `typing`) and the type's name; none for any other annotation."""
+    `typing`) and the type's names (`float`, or `list` and `float`); none for any
+    other annotation."""
     if not (
         _is_suggested(annotation)
         and isinstance(annotation, ast.Subscript)
@@ -400,7 +401,8 @@ def _written_names(annotation: ast.expr | None) -> list[str]:
     head = annotation.value
     root = head.value if isinstance(head, ast.Attribute) else head
     kind = annotation.slice.elts[0]
-    return [n.id for n in (root, kind) if isinstance(n, ast.Name)]
+    names = [root, *ast.walk(kind)]
+    return [n.id for n in names if isinstance(n, ast.Name)]
 
 
 def _count_annotated(tree: ast.Module) -> int:
@@ -412,8 +414,8 @@ def _count_annotated(tree: ast.Module) -> int:
 
 
 def _is_suggested(annotation: ast.expr | None) -> bool:
-    """`Annotated[float, "Unit('...')"]` (or `typing.Annotated[...]`), as
-    `annotate` writes it."""
+    """`Annotated[float, "Unit('...')"]` (or `typing.Annotated[...]`, or
+    `list[float]` inside), as `annotate` writes it."""
     return (
         isinstance(annotation, ast.Subscript)
         and _is_annotated(annotation.value)

@@ -18,8 +18,12 @@ where it is first bound (a plain `x = ...`, an unannotated parameter, `self.x = 
 in `__init__`, a class constant); a name that meets two different units gets no
 suggestion (that is a bug for `robotfix check`, or a controller's implicit gain,
 not an annotation). A name that holds a sequence (bound to a list or tuple, or
-reaching a message's array field) gets none either: `Annotated[float, ...]` would
-make its applied file fail the check (RF401), and its elements' type is not known.
+reaching a message's array field) gets no `Annotated[float, ...]`: its applied file
+would fail the check (RF401). One bound only to lists of numbers whose flows reach
+array fields of one unit gets `Annotated[list[float], "Unit(...)"]`. A message
+constructor's arguments, positional or keyword, reach the fields they set, and a
+nested constructor's the fields below (`Twist(Vector3(tv, 0.0, 0.0))`), with the
+units of the place the message is built or stored in.
 """
 
 from __future__ import annotations
@@ -36,9 +40,10 @@ from robotfix.annotations.units import Unit
 from robotfix.ros.api_model import TIME_OBJECTS
 
 if TYPE_CHECKING:
-    from robotfix.analysis.context import Scope
+    from robotfix.analysis.context import FileContext, Scope
     from robotfix.analysis.program import Function, Program
-    from robotfix.ros.catalog import MsgCatalog, MsgSpec
+    from robotfix.analysis.state import State
+    from robotfix.ros.catalog import FieldSpec, MsgCatalog, MsgSpec
 
 # Literal factors that may be a unit conversion (`speed / 3.6` is km/h -> m/s,
 # `deg * math.pi / 180` degrees -> radians): a flow through one says nothing sure.
@@ -101,14 +106,23 @@ class FlowLog:
     )
     # (entity, a unit a value assigned to it has)
     held: list[tuple[tuple[object, ...], Unit]] = field(default_factory=list)
-    # entities bound to a sequence, and the expressions that reach an array field
+    # entities bound to a sequence, those bound to something other than a list of
+    # numbers, and the expressions that reach an array field (with the unit and
+    # kind of its elements)
     sequences: set[tuple[object, ...]] = field(default_factory=set)
-    array_sinks: list[tuple[Where, ast.expr]] = field(default_factory=list)
+    not_number_lists: set[tuple[object, ...]] = field(default_factory=set)
+    array_sinks: list[tuple[Where, ast.expr, Unit | None, str]] = field(
+        default_factory=list
+    )
     program: Program | None = None  # set when the file's program is collected
     # `self.cmd.linear.x = speed` where the analysis does not know `self.cmd` (set
     # in another method): (where, attribute entity, field path, value expression)
     attribute_fields: list[tuple[Where, tuple[object, ...], str, ast.expr, Value]] = (
         field(default_factory=list)
+    )
+    # a message constructor call -> (field, argument, its value) for each argument
+    constructed: dict[int, list[tuple[str, ast.expr, Value]]] = field(
+        default_factory=dict
     )
     _seen: set[tuple[object, ...]] = field(default_factory=set)
 
@@ -118,14 +132,15 @@ class FlowLog:
         expr: ast.expr,
         unit: Unit | None,
         value: Value | None,
-        array: bool = False,
+        array: str = "",
     ) -> None:
         """`expr` (holding `value`) reached a place of `unit` (a dimensionless one
         only tells a name apart from one with a unit: it is never suggested); an
-        `array` place (a message's array field) says its names hold sequences."""
+        `array` place (a message's array field of `array` numbers, `unit` theirs)
+        says its names hold sequences."""
         if array:
             if self._once("array", id(expr)):
-                self.array_sinks.append((where, expr))
+                self.array_sinks.append((where, expr, unit, array))
             return
         if unit is None or unit.is_label:
             return
@@ -137,6 +152,41 @@ class FlowLog:
                 return  # a bug `check` reports: nothing to learn from it
         if self._once("sink", id(expr), str(unit)):
             self.sinks.append((where, expr, unit))
+
+    def constructor(
+        self,
+        ctx: FileContext,
+        state: State,
+        where: Where,
+        ref: int,
+        node: ast.Call,
+        given: list[tuple[str, ast.expr, Value]],
+    ) -> None:
+        """`Twist(Vector3(speed, 0.0, 0.0))` built the message `ref`: each argument
+        reached the field it set (see `message_sinks`)."""
+        self.constructed[id(node)] = given
+        self.message_sinks(ctx, state, where, ref, node)
+
+    def message_sinks(
+        self, ctx: FileContext, state: State, where: Where, ref: int, node: ast.Call
+    ) -> None:
+        """The arguments of constructor `node`, whose message is now `ref` (built
+        there, or stored into a field: `odom.twist.twist = Twist(...)`), reached
+        the fields they set, with those fields' units as `ref`'s place gives them;
+        a nested constructor's arguments (`Twist(Vector3(speed, ...))`) reached
+        the fields below."""
+        obj = state.heap.get(ref)
+        for name, expr, value in self.constructed.get(id(node), []) if obj else []:
+            assert obj is not None
+            held = obj.fields.get(name)
+            inner = held.ref if isinstance(held, Value) else None
+            if isinstance(expr, ast.Call) and inner in state.heap:
+                assert inner is not None
+                self.message_sinks(ctx, state, where, inner, expr)
+                continue
+            spec = heap.field_spec(ctx, state, ref, name)
+            unit = heap.field_unit(ctx, state, ref, name)[0]
+            self.sink(where, expr, unit, value, array_kind(spec))
 
     def call(self, where: Where, key: str, param: str, expr: ast.expr) -> None:
         if self._once("call", id(expr), key, param):
@@ -155,6 +205,8 @@ class FlowLog:
             self.binds.setdefault(entity, []).append((where, expr))
         if _is_sequence(value):
             self.sequences.add(entity)
+        if not _is_number_list(expr, value, where):
+            self.not_number_lists.add(entity)
         unit = value.unit
         kept = unit is not None and not value.literal and value.scale == 1.0
         if kept and unit is not None and not unit.is_label:
@@ -211,6 +263,7 @@ class Found:
     col: int  # byte column of the name
     name: str
     unit: str
+    kind: str = "float"  # `list[float]`: a list of numbers in `unit`
 
 
 def _target_entity(where: Where, target: ast.expr) -> tuple[object, ...] | None:
@@ -292,13 +345,22 @@ def suggestions(log: FlowLog, program: Program) -> list[Found]:
     for where, expr, unit in log.sinks:
         todo.extend((entity, unit) for entity, _ in carriers(expr, where))
     sequences = set(log.sequences)
-    array_todo = [e for w, x in log.array_sinks for e, _ in carriers(x, w)]
+    elements: dict[tuple[object, ...], list[tuple[Unit | None, str]]] = {}
+    array_todo = [
+        (e, unit, kind)
+        for w, x, unit, kind in log.array_sinks
+        for e, _ in carriers(x, w)
+    ]
+    array_done: set[tuple[tuple[object, ...], str, str]] = set()
     while array_todo:  # backwards, from the array fields
-        entity = array_todo.pop()
-        if entity not in sequences:
-            sequences.add(entity)
-            for where, expr in sources.get(entity, []):
-                array_todo.extend(e for e, _ in carriers(expr, where))
+        entity, unit, kind = array_todo.pop()
+        sequences.add(entity)
+        if (entity, str(unit), kind) in array_done:
+            continue
+        array_done.add((entity, str(unit), kind))
+        elements.setdefault(entity, []).append((unit, kind))
+        for where, expr in sources.get(entity, []):
+            array_todo.extend((e, unit, kind) for e, _ in carriers(expr, where))
     done: set[tuple[tuple[object, ...], str]] = set()
     while todo:  # backwards, from the places
         entity, unit = todo.pop()
@@ -325,6 +387,21 @@ def suggestions(log: FlowLog, program: Program) -> list[Found]:
         forward.extend((taker, unit) for taker in takers.get(entity, []))
     found = []
     shapes = _Shapes(program, log)
+    for entity, met_elements in elements.items():
+        if entity in reached or entity in log.not_number_lists:
+            continue  # also a number, or not always a list of numbers
+        if entity not in log.binds:
+            continue  # a parameter: what its callers pass is not known to be a list
+        kinds = {kind for _, kind in met_elements}
+        units = {str(unit) for unit, _ in met_elements}
+        unit = met_elements[0][0]
+        if kinds not in ({"float"}, {"int"}) or len(units) != 1:
+            continue
+        if unit is None or not unit.dims or unit.is_label:
+            continue
+        spot = shapes.spot(entity, places.get(entity))
+        if spot is not None and unit.text:
+            found.append(Found(*spot, unit.text, f"list[{kinds.pop()}]"))
     for entity, units in reached.items():
         met = list(units)
         for unit in held.get(entity, []):
@@ -341,6 +418,28 @@ def suggestions(log: FlowLog, program: Program) -> list[Found]:
 
 def _is_sequence(value: Value) -> bool:
     return value.kind in ("list", "tuple") or value.items is not None
+
+
+def _is_number_list(expr: ast.expr, value: Value, where: Where) -> bool:
+    """A list whose known elements are numbers (`[]`, `[0.0] * n`), or a copy
+    the builtin `list()` makes of what the analysis does not know (`list(xs)`)."""
+    if value.kind == "unknown" and isinstance(expr, ast.Call):
+        func = expr.func
+        return (
+            isinstance(func, ast.Name)
+            and func.id == "list"
+            and func.id not in where.scope.module().local_names
+        )
+    return value.kind == "list" and all(
+        e.kind in NUMERIC or e.kind == "unknown" for e in value.elements or ()
+    )
+
+
+def array_kind(spec: FieldSpec | None) -> str:
+    """`float` or `int` for a message's array field of numbers, else ""."""
+    if spec is None or not spec.array:
+        return ""
+    return spec.kind if spec.kind in ("int", "float") else "unknown"
 
 
 def _add(units: list[Unit], unit: Unit) -> None:

@@ -30,7 +30,7 @@ from robotfix.analysis import (
 from robotfix.analysis.calls import LEAVING, MUTATORS, CallEvaluator
 from robotfix.analysis.constants import bound_names, plain_kind, scan
 from robotfix.analysis.context import FileContext, Scope, build_scope
-from robotfix.analysis.flows import Where
+from robotfix.analysis.flows import Where, array_kind
 from robotfix.analysis.index import index_of
 from robotfix.analysis.program import (
     Function,
@@ -1257,8 +1257,11 @@ class Interpreter(CallEvaluator):
             if base.kind == "msg" and base.ref in state.heap:
                 unit = heap.field_unit(self.ctx, state, base.ref, target.attr)[0]
                 spec = heap.field_spec(self.ctx, state, base.ref, target.attr)
-                array = spec is not None and spec.array
-                log.sink(self.flow_where(), source, unit, value, array)
+                log.sink(self.flow_where(), source, unit, value, array_kind(spec))
+                held = state.heap[base.ref].fields.get(target.attr)
+                if isinstance(source, ast.Call) and held is not None and held.ref:
+                    # `odom.twist.twist = Twist(Vector3(tv, ...))`: the fields below
+                    log.message_sinks(self.ctx, state, self.flow_where(), held.ref, source)
                 return
             if base.kind != "instance":
                 log.attribute_field(self.flow_where(), target, source, value)
