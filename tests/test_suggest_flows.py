@@ -132,3 +132,51 @@ def test_a_constructor_stored_into_a_field_takes_the_units_of_that_place(
     )
     got = [(s.line, s.name, s.unit) for s in api.unit_suggestions(source, "n.py", catalog)]
     assert got == [(3, "forward", "m/s")]  # Vector3 has no unit: Drive.vel has
+
+
+def test_suggest_sees_the_users_stubs_and_the_modules_the_file_imports(
+    tmp_path: Path,
+) -> None:
+    """As `check` sees them: a unit from a `stub-paths` stub, and one from a refined
+    parameter of a function in another module of the package; a name that meets
+    both a stub's s and the other module's rad gets nothing (it did get s, and the
+    applied file then failed its check with RF201)."""
+    (tmp_path / "pyproject.toml").write_text(
+        '[tool.robotfix]\nstub-paths = ["stubs"]\n', encoding="utf-8"
+    )
+    (tmp_path / "stubs").mkdir()
+    (tmp_path / "stubs" / "mylib.pyi").write_text(
+        "from typing import Annotated\n"
+        "def wait(duration: Annotated[float, \"Unit('s')\"]) -> None: ...\n",
+        encoding="utf-8",
+    )
+    (tmp_path / "navigator.py").write_text(
+        "from typing import Annotated\n"
+        "class Navigator:\n"
+        "    def spin(self, spin_dist: Annotated[float, \"Unit('rad')\"]) -> None:\n"
+        "        pass\n",
+        encoding="utf-8",
+    )
+    (tmp_path / "demo.py").write_text(
+        "import mylib\n"
+        "from navigator import Navigator\n"
+        "LOOK_AROUND = 3.14\n"
+        "BOTH = 3.0\n"
+        "def main():\n"
+        "    pause = 2.0\n"
+        "    mylib.wait(pause)\n"
+        "    Navigator().spin(spin_dist=LOOK_AROUND)\n"
+        "    mylib.wait(BOTH)\n"
+        "    Navigator().spin(BOTH)\n",
+        encoding="utf-8",
+    )
+    shown = run("suggest", "demo.py", cwd=tmp_path)
+    assert shown.returncode == 0, shown.stderr
+    added = [line for line in shown.stdout.splitlines() if line.startswith("+ ")]
+    added += [line for line in shown.stdout.splitlines() if line.startswith("+L")]
+    assert sorted(added) == [
+        "+    pause: Annotated[float, \"Unit('s')\"] = 2.0",
+        "+LOOK_AROUND: Annotated[float, \"Unit('rad')\"] = 3.14",
+    ]
+    assert run("suggest", "demo.py", "--apply", cwd=tmp_path).returncode == 0
+    assert run("check", "demo.py", cwd=tmp_path).returncode == 0

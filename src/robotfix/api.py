@@ -233,14 +233,23 @@ def hover(
 ) -> str | None:
     """Markdown for the innermost name or message field at (1-based line, 0-based
     character column), as the analysis sees it there (the modules it imports found
-    through `project`, as `check_source` finds them)."""
+    through `project`, as `check_source` finds them, the libraries through the
+    shipped stubs and `config`'s `stub-paths`)."""
     from robotfix.source import SourceFile
+    from robotfix.stubs.load import stub_set
 
     source = SourceFile.from_text(path, text)
     if source.problem is not None:
         return None
-    project = project or make_project([], config or Config(), catalog)
-    ctx = _analyze(source, catalog, hovers=True, resolver=project.resolver(Path(path)))
+    config = config or Config()
+    project = project or make_project([], config, catalog)
+    ctx = _analyze(
+        source,
+        catalog,
+        hovers=True,
+        stubs=stub_set(config.stub_paths),
+        resolver=project.resolver(Path(path)),
+    )
     assert ctx.hovers is not None
     found = [
         (span, markdown)
@@ -252,16 +261,32 @@ def hover(
     return min(found, key=lambda item: item[0].end_col - item[0].col)[1]
 
 
-def unit_suggestions(text: str, path: str, catalog: MsgCatalog) -> list[Suggestion]:
+def unit_suggestions(
+    text: str,
+    path: str,
+    catalog: MsgCatalog,
+    config: Config | None = None,
+    project: Project | None = None,
+) -> list[Suggestion]:
     """Units the analysis can pin on unannotated names from the flows they feed
-    (see analysis/flows.py)."""
+    (see analysis/flows.py), seeing what a check sees: the user's stubs
+    (`stub-paths`) and the modules the file imports (`make_project`)."""
     from robotfix.analysis.flows import FlowLog, path_unit, suggestions
     from robotfix.source import SourceFile
+    from robotfix.stubs.load import stub_set
 
     source = SourceFile.from_text(path, text)
     if source.problem is not None or source.tree is None:
         return []
-    ctx = _analyze(source, catalog, flows=True)
+    config = config or Config()
+    project = project or make_project([], config, catalog)
+    ctx = _analyze(
+        source,
+        catalog,
+        flows=True,
+        stubs=stub_set(config.stub_paths),
+        resolver=project.resolver(Path(path)),
+    )
     log = ctx.unit_flows
     if log is None or log.program is None:
         return []

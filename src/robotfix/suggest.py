@@ -26,6 +26,7 @@ import sys
 import tokenize
 import warnings
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from robotfix import api, fs
 from robotfix.bindings import IMPORTS, Bindings
@@ -33,6 +34,9 @@ from robotfix.config import Config, ConfigError, load
 from robotfix.discovery import discover, install_space
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.source import LINE_BREAK
+
+if TYPE_CHECKING:
+    from robotfix.project.summary import Project
 
 EXIT_OK, EXIT_FAILURE = 0, 2
 
@@ -67,9 +71,10 @@ def run_suggest(paths: list[Path], msg_paths: list[Path], apply: bool) -> int:
     for notice in found.notices:  # links leaving the paths, unreadable folders
         _say(f"robotfix: {notice.path}: {notice.message}; not written")
         status = EXIT_FAILURE
+    project = api.make_project(present, settings, catalog)
     changed_files = 0
     for file in files:
-        outcome = _suggest_file(file, present, catalog, apply)
+        outcome = _suggest_file(file, present, catalog, apply, settings, project)
         if outcome is None:
             status = EXIT_FAILURE
         elif outcome:
@@ -80,7 +85,12 @@ def run_suggest(paths: list[Path], msg_paths: list[Path], apply: bool) -> int:
 
 
 def _suggest_file(
-    file: Path, roots: list[Path], catalog: MsgCatalog, apply: bool
+    file: Path,
+    roots: list[Path],
+    catalog: MsgCatalog,
+    apply: bool,
+    settings: Config,
+    project: Project,
 ) -> bool | None:
     """Whether the file has suggestions (shown, and written with `apply`);
     None when something could not be done (said on stderr)."""
@@ -95,7 +105,7 @@ def _suggest_file(
         _say(f"robotfix: {file}: cannot decode: {err}; skipped")
         return None
     try:
-        changed = annotate(text, str(file), catalog)
+        changed = annotate(text, str(file), catalog, settings, project)
     except UnsafeEditError as err:
         _say(f"robotfix: {file}: not annotated: {err.reason}")
         return None
@@ -191,12 +201,20 @@ def _catalog(paths: list[Path], msg_paths: list[Path], settings: Config) -> MsgC
     )
 
 
-def annotate(text: str, path: str, catalog: MsgCatalog) -> str:
+def annotate(
+    text: str,
+    path: str,
+    catalog: MsgCatalog,
+    settings: Config | None = None,
+    project: Project | None = None,
+) -> str:
     """The text with every suggestion applied, and `Annotated` imported if needed
     (spelt `typing.Annotated` when the module binds `Annotated` itself).
     UnsafeEditError if the result would not be the same program plus the
-    annotations, or a name the edit writes would mean something else there."""
-    suggestions = api.unit_suggestions(text, path, catalog)
+    annotations, or a name the edit writes would mean something else there.
+    `settings` and `project`: the user's stubs and the modules the file imports,
+    as `check` sees them."""
+    suggestions = api.unit_suggestions(text, path, catalog, settings, project)
     if not suggestions:
         return text
     tree = _parse(text)

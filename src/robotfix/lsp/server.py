@@ -134,11 +134,16 @@ def _interface_folders(path: Path, settings: config.Config) -> list[Path]:
     return list(settings.msg_paths) + api.ros_interface_folders([path])
 
 
-def _catalog(ls: Session, path: Path) -> MsgCatalog:
+def _settings(path: Path) -> config.Config:
+    """The `[tool.robotfix]` settings of a document, as a run on that file reads."""
     try:
-        settings = config.load(path)
+        return config.load(path)
     except config.ConfigError:
-        settings = config.Config()
+        return config.Config()
+
+
+def _catalog(ls: Session, path: Path) -> MsgCatalog:
+    settings = _settings(path)
     files = api.interface_files(_interface_folders(path, settings))
     if _is_interface(path) and path not in files:
         files.append(path)  # a loose interface file still shows its own problems
@@ -276,7 +281,12 @@ def _publish(ls: Session, uri: str) -> None:
         else:
             project = _project(catalog, path)
             found = api.check_source(
-                text, str(path), catalog=catalog, project=project, memo=_memo(uri)
+                text,
+                str(path),
+                _settings(path),  # its stub-paths
+                catalog=catalog,
+                project=project,
+                memo=_memo(uri),
             )
             _record(project, _projects[id(catalog)][2], path)
     except Exception as err:  # never take the editor session down
@@ -465,7 +475,9 @@ def hover(ls: Session, params: Any) -> dict[str, object] | None:
     try:
         catalog = _catalog(ls, path)
         project = _project(catalog, path)
-        markdown = api.hover(text, str(path), line + 1, col, catalog, project=project)
+        markdown = api.hover(
+            text, str(path), line + 1, col, catalog, _settings(path), project
+        )
         _record(project, _projects[id(catalog)][2], path)
     except Exception:
         return None
