@@ -291,7 +291,8 @@ class CallEvaluator(LibraryEvaluator):
                 )
             if log is not None and where is not None and name in exprs:
                 if decl is not None:
-                    log.sink(where, exprs[name], decl.unit, value)
+                    integer = decl.base == "int"
+                    log.sink(where, exprs[name], decl.unit, value, integer=integer)
                 else:
                     log.call(where, function.key, name, exprs[name])
         if function.returns is None:  # `return <expr>` alone: the expression here

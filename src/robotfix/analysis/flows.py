@@ -97,7 +97,8 @@ class Where:
 
 @dataclass
 class FlowLog:
-    sinks: list[tuple[Where, ast.expr, Unit]] = field(default_factory=list)
+    # (where, expression, the place's unit, whether the place holds an int)
+    sinks: list[tuple[Where, ast.expr, Unit, bool]] = field(default_factory=list)
     # function key -> (caller, parameter, argument)
     calls: dict[str, list[tuple[Where, str, ast.expr]]] = field(default_factory=dict)
     # ("local", id(scope node), name) / ("attr", class, attr) -> (where, value)
@@ -110,6 +111,7 @@ class FlowLog:
     # numbers, and the expressions that reach an array field (with the unit and
     # kind of its elements)
     sequences: set[tuple[object, ...]] = field(default_factory=set)
+    floats: set[tuple[object, ...]] = field(default_factory=set)  # bound to a float
     not_number_lists: set[tuple[object, ...]] = field(default_factory=set)
     array_sinks: list[tuple[Where, ast.expr, Unit | None, str]] = field(
         default_factory=list
@@ -133,11 +135,13 @@ class FlowLog:
         unit: Unit | None,
         value: Value | None,
         array: str = "",
+        integer: bool = False,
     ) -> None:
         """`expr` (holding `value`) reached a place of `unit` (a dimensionless one
         only tells a name apart from one with a unit: it is never suggested); an
         `array` place (a message's array field of `array` numbers, `unit` theirs)
-        says its names hold sequences."""
+        says its names hold sequences; an `integer` place (`Duration.sec`) that
+        they hold an int."""
         if array:
             if self._once("array", id(expr)):
                 self.array_sinks.append((where, expr, unit, array))
@@ -150,8 +154,8 @@ class FlowLog:
             found = value.fit(unit)
             if found is not None and found.kind != "ok":
                 return  # a bug `check` reports: nothing to learn from it
-        if self._once("sink", id(expr), str(unit)):
-            self.sinks.append((where, expr, unit))
+        if self._once("sink", id(expr), str(unit), integer):
+            self.sinks.append((where, expr, unit, integer))
 
     def constructor(
         self,
@@ -186,7 +190,8 @@ class FlowLog:
                 continue
             spec = heap.field_spec(ctx, state, ref, name)
             unit = heap.field_unit(ctx, state, ref, name)[0]
-            self.sink(where, expr, unit, value, array_kind(spec))
+            integer = spec is not None and spec.kind == "int"
+            self.sink(where, expr, unit, value, array_kind(spec), integer)
 
     def call(self, where: Where, key: str, param: str, expr: ast.expr) -> None:
         if self._once("call", id(expr), key, param):
@@ -207,6 +212,8 @@ class FlowLog:
             self.sequences.add(entity)
         if not _is_number_list(expr, value, where):
             self.not_number_lists.add(entity)
+        if value.kind == "float":
+            self.floats.add(entity)
         unit = value.unit
         kept = unit is not None and not value.literal and value.scale == 1.0
         if kept and unit is not None and not unit.is_label:
@@ -342,8 +349,18 @@ def suggestions(log: FlowLog, program: Program) -> list[Found]:
 
     reached: dict[tuple[object, ...], list[Unit]] = {}
     todo: list[tuple[tuple[object, ...], Unit]] = []
-    for where, expr, unit in log.sinks:
+    integers: list[tuple[object, ...]] = []
+    for where, expr, unit, integer in log.sinks:
         todo.extend((entity, unit) for entity, _ in carriers(expr, where))
+        if integer:
+            integers.extend(entity for entity, _ in carriers(expr, where))
+    ints: set[tuple[object, ...]] = set()
+    while integers:  # backwards, from the places that hold an int
+        entity = integers.pop()
+        if entity not in ints:
+            ints.add(entity)
+            for where, expr in sources.get(entity, []):
+                integers.extend(e for e, _ in carriers(expr, where))
     sequences = set(log.sequences)
     elements: dict[tuple[object, ...], list[tuple[Unit | None, str]]] = {}
     array_todo = [
@@ -370,10 +387,27 @@ def suggestions(log: FlowLog, program: Program) -> list[Found]:
         _add(reached.setdefault(entity, []), unit)
         for where, expr in sources.get(entity, []):
             todo.extend((e, unit) for e, _ in carriers(expr, where))
+    # the units names meet through a placeholder gain too (`turn = error * 1.0`
+    # into rad/s): never a suggestion by itself, but one that differs is a conflict
+    gained: dict[tuple[object, ...], list[Unit]] = {}
+    gain_todo = [
+        (e, unit) for w, x, unit, _ in log.sinks for e, _ in _carriers(x, w, gains=True)
+    ]
+    gain_done: set[tuple[tuple[object, ...], str]] = set()
+    while gain_todo:
+        entity, unit = gain_todo.pop()
+        if (entity, str(unit)) in gain_done:
+            continue
+        gain_done.add((entity, str(unit)))
+        _add(gained.setdefault(entity, []), unit)
+        for where, expr in sources.get(entity, []):
+            gain_todo.extend((e, unit) for e, _ in _carriers(expr, where, gains=True))
     takers: dict[tuple[object, ...], list[tuple[object, ...]]] = {}
     for entity, assigned in sources.items():
         for where, expr in assigned:
-            for carrier, _ in carriers(expr, where):
+            # `turn = abs(error) * 1.0`: a placeholder gain carries no unit back
+            # from a place, but `turn` does hold what `error` holds
+            for carrier, _ in _carriers(expr, where, gains=True):
                 takers.setdefault(carrier, []).append(entity)
     held: dict[tuple[object, ...], list[Unit]] = {}
     forward = list(log.held)
@@ -404,15 +438,20 @@ def suggestions(log: FlowLog, program: Program) -> list[Found]:
             found.append(Found(*spot, unit.text, f"list[{kinds.pop()}]"))
     for entity, units in reached.items():
         met = list(units)
-        for unit in held.get(entity, []):
+        for unit in [*held.get(entity, []), *gained.get(entity, [])]:
             _add(met, unit)
         if len(met) != 1 or not met[0].dims or not met[0].text:
             continue  # several units: a bug for `check`, not an annotation
         if entity in sequences:
             continue  # not a float; its elements' type is not known
+        kind = "float"
+        if entity in ints:  # an int place: `Duration(sec=timeout)`
+            if entity in log.floats or _float_given(entity, log, program):
+                continue  # a float in an int place: RF401 for `check`
+            kind = "int"
         spot = shapes.spot(entity, places.get(entity))
         if spot is not None:
-            found.append(Found(spot[0], spot[1], spot[2], met[0].text))
+            found.append(Found(*spot, met[0].text, kind))
     return sorted(set(found), key=lambda f: (f.line, f.col))
 
 
@@ -447,10 +486,32 @@ def _add(units: list[Unit], unit: Unit) -> None:
         units.append(unit)
 
 
+def _float_given(
+    entity: tuple[object, ...], log: FlowLog, program: Program
+) -> bool:
+    """A parameter whose default or an argument of a call is a float literal."""
+    if entity[0] != "param":
+        return False
+    key, name = str(entity[2]), str(entity[3])
+    given = [expr for _, param, expr in log.calls.get(key, []) if param == name]
+    function = program.functions.get(key)
+    if function is not None and not isinstance(function.node, ast.Lambda):
+        args = function.node.args
+        for arg in [*args.posonlyargs, *args.args, *args.kwonlyargs]:
+            default = _default_of(args, arg) if arg.arg == name else None
+            given += [default] if default is not None else []
+    return any(
+        isinstance(e, ast.Constant) and isinstance(e.value, float)
+        for expr in given
+        for e in ast.walk(expr)
+    )
+
+
 def _carriers(
-    expr: ast.expr, where: Where, factor: float = 1.0
+    expr: ast.expr, where: Where, factor: float = 1.0, gains: bool = False
 ) -> Iterator[tuple[tuple[object, ...], Where]]:
-    """The names in `expr` whose unit the whole value has."""
+    """The names in `expr` whose unit the whole value has; with `gains`, also
+    through a placeholder gain (`error * 1.0`)."""
     if _not_a_number(expr):  # `"/" + robot + "/reset"` reaching a timeout's place
         return
     if isinstance(expr, ast.Name):
@@ -463,28 +524,28 @@ def _carriers(
         if entity is not None and not _conversion(factor):
             yield entity, where
     elif isinstance(expr, ast.UnaryOp) and isinstance(expr.op, (ast.USub, ast.UAdd)):
-        yield from _carriers(expr.operand, where, factor)
+        yield from _carriers(expr.operand, where, factor, gains)
     elif isinstance(expr, ast.BinOp):
         if isinstance(expr.op, (ast.Add, ast.Sub)):
-            yield from _carriers(expr.left, where, factor)
-            yield from _carriers(expr.right, where, factor)
+            yield from _carriers(expr.left, where, factor, gains)
+            yield from _carriers(expr.right, where, factor, gains)
         elif isinstance(expr.op, ast.Mult):
             # `error * 1.0`: a factor of one is written as a gain's placeholder
             right, left = _literal(expr.right), _literal(expr.left)
-            if right is not None and right != 1:
-                yield from _carriers(expr.left, where, factor * right)
-            elif left is not None and left != 1:
-                yield from _carriers(expr.right, where, factor * left)
+            if right is not None and (right != 1 or gains):
+                yield from _carriers(expr.left, where, factor * right, gains)
+            elif left is not None and (left != 1 or gains):
+                yield from _carriers(expr.right, where, factor * left, gains)
         elif isinstance(expr.op, ast.Div):
             right = _literal(expr.right)
-            if right and right != 1:
-                yield from _carriers(expr.left, where, factor / right)
+            if right and (right != 1 or gains):
+                yield from _carriers(expr.left, where, factor / right, gains)
     elif isinstance(expr, ast.IfExp):
-        yield from _carriers(expr.body, where, factor)
-        yield from _carriers(expr.orelse, where, factor)
+        yield from _carriers(expr.body, where, factor, gains)
+        yield from _carriers(expr.orelse, where, factor, gains)
     elif isinstance(expr, ast.NamedExpr):
-        yield from _carriers(expr.target, where, factor)
-        yield from _carriers(expr.value, where, factor)
+        yield from _carriers(expr.target, where, factor, gains)
+        yield from _carriers(expr.value, where, factor, gains)
     elif isinstance(expr, ast.Call) and not expr.keywords:
         func = expr.func
         keeps = (
@@ -500,7 +561,7 @@ def _carriers(
         if keeps:
             args = expr.args[:1] if getattr(func, "id", "") == "round" else expr.args
             for arg in args:
-                yield from _carriers(arg, where, factor)
+                yield from _carriers(arg, where, factor, gains)
 
 
 def _name_entity(name: str, where: Where) -> tuple[object, ...] | None:

@@ -252,7 +252,7 @@ def call(
             lookup = {**_unknowns(ev, decl), **terms}
             ev.check.assign_refined(state, name, decl, value, ev.site, lookup)
             if name in exprs:  # for `robotfix suggest`: the argument met a unit
-                ev.note_sink(exprs[name], decl.unit, value)
+                ev.note_sink(exprs[name], decl.unit, value, decl.base == "int")
     if function.returns is None:
         return ev.typed(function.result, node, state)
     lookup = {**_unknowns(ev, function.returns), **terms}

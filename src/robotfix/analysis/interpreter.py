@@ -1257,7 +1257,10 @@ class Interpreter(CallEvaluator):
             if base.kind == "msg" and base.ref in state.heap:
                 unit = heap.field_unit(self.ctx, state, base.ref, target.attr)[0]
                 spec = heap.field_spec(self.ctx, state, base.ref, target.attr)
-                log.sink(self.flow_where(), source, unit, value, array_kind(spec))
+                integer = spec is not None and spec.kind == "int"
+                log.sink(
+                    self.flow_where(), source, unit, value, array_kind(spec), integer
+                )
                 held = state.heap[base.ref].fields.get(target.attr)
                 if isinstance(source, ast.Call) and held is not None and held.ref:
                     # `odom.twist.twist = Twist(Vector3(tv, ...))`: the fields below
@@ -1270,7 +1273,8 @@ class Interpreter(CallEvaluator):
         if decl is None:
             log.bind(self.flow_where(), target, source, value)
         else:
-            log.sink(self.flow_where(), source, decl.unit, value)
+            integer = decl.base == "int"
+            log.sink(self.flow_where(), source, decl.unit, value, integer=integer)
 
     def visit_AnnAssign(self, node: ast.AnnAssign, state: State) -> State:
         if node.value is not None:
@@ -1310,7 +1314,8 @@ class Interpreter(CallEvaluator):
                 state, f"{function.name}()", function.returns, value, node, lookup
             )
             if node.value is not None:
-                self.note_sink(node.value, function.returns.unit, value)
+                returns = function.returns
+                self.note_sink(node.value, returns.unit, value, returns.base == "int")
         callback = self.program.callbacks.get(function.key) if function else None
         leaves = callback is not None and callback.kind in (
             "service",
