@@ -7,8 +7,16 @@ from pathlib import Path
 
 from robotfix.api import check_source
 from robotfix.config import Config
+from robotfix.diagnostics import Diagnostic
+from robotfix.ros.catalog import MsgCatalog
 
 CASES = Path(__file__).parent / "cases"
+
+
+def _only(source: str, catalog: MsgCatalog | None = None) -> Diagnostic:
+    """The one diagnostic of a check of `source`."""
+    [found] = check_source(source, "node.py", Config(), catalog)
+    return found
 
 
 def test_rf301_caret_is_under_the_unbound_name_at_the_line_of_the_read() -> None:
@@ -47,15 +55,13 @@ def test_a_force_computed_in_the_code_is_named_n_in_the_message() -> None:
         "    force = mass * acc\n"
         "    t: Annotated[float, \"Unit('s')\"] = force\n"
     )
-    [found] = check_source(source, "node.py", Config())
-    assert found.message == (
+    assert _only(source).message == (
         "`t = force` gives `t` a value in N, but `t` is in s"
     )
 
 
 def test_a_unit_from_an_interface_comment_names_that_comment(tmp_path: Path) -> None:
     from robotfix.api import interface_files
-    from robotfix.ros.catalog import MsgCatalog
 
     folder = tmp_path / "px4_msgs" / "msg"
     folder.mkdir(parents=True)
@@ -69,8 +75,7 @@ def test_a_unit_from_an_interface_comment_names_that_comment(tmp_path: Path) -> 
         "    msg = VehicleCommand()\n"
         "    msg.timestamp = int(node.get_clock().now().nanoseconds / 1e6)\n"
     )
-    [found] = check_source(source, "node.py", Config(), catalog)
-    [note] = found.notes
+    [note] = _only(source, catalog).notes
     assert note.message == (
         "unit of px4_msgs/VehicleCommand: `us` in the comment of `timestamp`"
     )
@@ -85,8 +90,7 @@ def test_rf101_at_a_call_says_the_value_in_its_message() -> None:
         "    pass\n"
         "spin(time_allowance=LOOK_TIME)\n"
     )
-    [found] = check_source(source, "node.py", Config())
-    assert found.message == (
+    assert _only(source).message == (
         "`spin(time_allowance=LOOK_TIME)` violates `time_allowance <= 600`: "
         "here `time_allowance` = 10000"
     )  # in the concise, GitHub and SARIF forms too, which show no notes

@@ -133,7 +133,9 @@ def test_a_constructor_stored_into_a_field_takes_the_units_of_that_place(
         "    msg.vel = Vector3(forward, 0.0, 0.0)\n"
         "    pub.publish(msg)\n"
     )
-    got = [(s.line, s.name, s.unit) for s in api.unit_suggestions(source, "n.py", catalog)]
+    got = [
+        (s.line, s.name, s.unit) for s in api.unit_suggestions(source, "n.py", catalog)
+    ]
     assert got == [(3, "forward", "m/s")]  # Vector3 has no unit: Drive.vel has
 
 
@@ -193,7 +195,7 @@ def _old_lines(source: str, changed: str) -> dict[int, int]:
     lines = {}
     for tag, i1, i2, j1, j2 in matcher.get_opcodes():
         if tag in ("equal", "replace") and i2 - i1 == j2 - j1:
-            lines.update({j + 1: i + 1 for i, j in zip(range(i1, i2), range(j1, j2))})
+            lines.update({j1 + k + 1: i1 + k + 1 for k in range(i2 - i1)})
     return lines
 
 
@@ -216,7 +218,9 @@ def test_applying_every_suggestion_on_a_case_adds_no_finding(path: Path) -> None
     if changed == source:
         return
     old = _old_lines(source, changed)
-    before = {(d.code, d.span.line) for d in check_source(source, str(path), config, catalog)}
+    before = {
+        (d.code, d.span.line) for d in check_source(source, str(path), config, catalog)
+    }
     after = check_source(changed, str(path), config, catalog)
     new = [d for d in after if (d.code, old.get(d.span.line)) not in before]
     assert new == [], changed

@@ -236,20 +236,11 @@ def hover(
     through `project`, as `check_source` finds them, the libraries through the
     shipped stubs and `config`'s `stub-paths`)."""
     from robotfix.source import SourceFile
-    from robotfix.stubs.load import stub_set
 
     source = SourceFile.from_text(path, text)
     if source.problem is not None:
         return None
-    config = config or Config()
-    project = project or make_project([], config, catalog)
-    ctx = _analyze(
-        source,
-        catalog,
-        hovers=True,
-        stubs=stub_set(config.stub_paths),
-        resolver=project.resolver(Path(path)),
-    )
+    ctx = _analyze_as_checked(source, catalog, config, project, hovers=True)
     assert ctx.hovers is not None
     found = [
         (span, markdown)
@@ -273,20 +264,11 @@ def unit_suggestions(
     (`stub-paths`) and the modules the file imports (`make_project`)."""
     from robotfix.analysis.flows import FlowLog, path_unit, suggestions
     from robotfix.source import SourceFile
-    from robotfix.stubs.load import stub_set
 
     source = SourceFile.from_text(path, text)
     if source.problem is not None or source.tree is None:
         return []
-    config = config or Config()
-    project = project or make_project([], config, catalog)
-    ctx = _analyze(
-        source,
-        catalog,
-        flows=True,
-        stubs=stub_set(config.stub_paths),
-        resolver=project.resolver(Path(path)),
-    )
+    ctx = _analyze_as_checked(source, catalog, config, project, flows=True)
     log = ctx.unit_flows
     if log is None or log.program is None:
         return []
@@ -411,6 +393,30 @@ def _analyze(
     except RecursionError:
         ctx.report(messages.analysis_budget(source.path, 1, "nested too deeply"))
     return ctx
+
+
+def _analyze_as_checked(
+    source: SourceFile,
+    catalog: MsgCatalog,
+    config: Config | None,
+    project: Project | None,
+    hovers: bool = False,
+    flows: bool = False,
+) -> FileContext:
+    """`_analyze` seeing what a check of the file sees: the shipped stubs and
+    `config`'s `stub-paths`, the modules it imports through `project`."""
+    from robotfix.stubs.load import stub_set
+
+    config = config or Config()
+    project = project or make_project([], config, catalog)
+    return _analyze(
+        source,
+        catalog,
+        hovers=hovers,
+        flows=flows,
+        stubs=stub_set(config.stub_paths),
+        resolver=project.resolver(Path(source.path)),
+    )
 
 
 def _unused_suppressions(

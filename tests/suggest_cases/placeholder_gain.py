@@ -20,7 +20,8 @@ class AbsoluteMove(Node):
 
     def step(self):
         cmd = Twist()
-        turn_speed = max(min(abs(self.heading_error) * 1.0, 1.0), 0.1)  # suggest: turn_speed rad/s
+        error = self.heading_error  # near miss: the same
+        turn_speed = max(min(abs(error) * 1.0, 1.0), 0.1)  # suggest: turn_speed rad/s
         cmd.angular.z = turn_speed if self.heading_error > 0 else -turn_speed
         if abs(math.degrees(self.heading_error)) < 1.0:
             cmd.angular.z = 0.0

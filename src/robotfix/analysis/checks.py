@@ -194,7 +194,8 @@ class Checker:
             reads = [
                 n
                 for n in ast.walk(site)
-                if isinstance(n, ast.Name) and n.id == name
+                if isinstance(n, ast.Name)
+                and n.id == name
                 and isinstance(n.ctx, ast.Load)
             ]
             read = min(reads, key=lambda n: (n.lineno, n.col_offset), default=site)

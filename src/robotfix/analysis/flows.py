@@ -32,7 +32,7 @@ import ast
 import math
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, TypeVar
 
 from robotfix.analysis import heap
 from robotfix.analysis.values import NUMERIC, Value
@@ -74,6 +74,7 @@ _CONVERSIONS = (
 # what a name is: ("local", id(scope node), name), ("param", id(function node),
 # function key, name), ("attr", class name, attribute)
 Entity = tuple[object, ...]
+_T = TypeVar("_T")
 _KEEPING_CALLS = frozenset({"min", "max", "abs", "float", "round"})
 _KEEPING_MATH = frozenset({"fabs"})  # math.copysign keeps its first argument's
 
@@ -347,78 +348,43 @@ def suggestions(log: FlowLog, program: Program) -> list[Found]:
                 places.setdefault(entity, at)
         return found
 
-    reached: dict[tuple[object, ...], list[Unit]] = {}
-    todo: list[tuple[tuple[object, ...], Unit]] = []
-    integers: list[tuple[object, ...]] = []
-    for where, expr, unit, integer in log.sinks:
-        todo.extend((entity, unit) for entity, _ in carriers(expr, where))
-        if integer:
-            integers.extend(entity for entity, _ in carriers(expr, where))
-    ints: set[tuple[object, ...]] = set()
-    while integers:  # backwards, from the places that hold an int
-        entity = integers.pop()
-        if entity not in ints:
-            ints.add(entity)
-            for where, expr in sources.get(entity, []):
-                integers.extend(e for e, _ in carriers(expr, where))
-    sequences = set(log.sequences)
-    elements: dict[tuple[object, ...], list[tuple[Unit | None, str]]] = {}
-    array_todo = [
-        (e, unit, kind)
-        for w, x, unit, kind in log.array_sinks
-        for e, _ in carriers(x, w)
+    def back(entity: tuple[object, ...]) -> Iterator[tuple[object, ...]]:
+        for where, expr in sources.get(entity, []):
+            yield from (e for e, _ in carriers(expr, where))
+
+    def back_gains(entity: tuple[object, ...]) -> Iterator[tuple[object, ...]]:
+        for where, expr in sources.get(entity, []):
+            yield from (e for e, _ in _carriers(expr, where, gains=True))
+
+    sinks = [
+        (entity, unit, integer)
+        for where, expr, unit, integer in log.sinks
+        for entity, _ in carriers(expr, where)
     ]
-    array_done: set[tuple[tuple[object, ...], str, str]] = set()
-    while array_todo:  # backwards, from the array fields
-        entity, unit, kind = array_todo.pop()
-        sequences.add(entity)
-        if (entity, str(unit), kind) in array_done:
-            continue
-        array_done.add((entity, str(unit), kind))
-        elements.setdefault(entity, []).append((unit, kind))
-        for where, expr in sources.get(entity, []):
-            array_todo.extend((e, unit, kind) for e, _ in carriers(expr, where))
-    done: set[tuple[tuple[object, ...], str]] = set()
-    while todo:  # backwards, from the places
-        entity, unit = todo.pop()
-        if (entity, str(unit)) in done:
-            continue
-        done.add((entity, str(unit)))
-        _add(reached.setdefault(entity, []), unit)
-        for where, expr in sources.get(entity, []):
-            todo.extend((e, unit) for e, _ in carriers(expr, where))
+    # backwards, from the places: the units names reach, those that reach an int,
+    # the units of array fields their elements reach
+    reached = _spread([(e, unit) for e, unit, _ in sinks], back)
+    ints = _spread([(e, None) for e, _, integer in sinks if integer], back)
+    elements = _spread(
+        [
+            (e, (unit, kind))
+            for w, x, unit, kind in log.array_sinks
+            for e, _ in carriers(x, w)
+        ],
+        back,
+    )
+    sequences = set(log.sequences) | set(elements)
     # the units names meet through a placeholder gain too (`turn = error * 1.0`
     # into rad/s): never a suggestion by itself, but one that differs is a conflict
-    gained: dict[tuple[object, ...], list[Unit]] = {}
-    gain_todo = [
-        (e, unit) for w, x, unit, _ in log.sinks for e, _ in _carriers(x, w, gains=True)
-    ]
-    gain_done: set[tuple[tuple[object, ...], str]] = set()
-    while gain_todo:
-        entity, unit = gain_todo.pop()
-        if (entity, str(unit)) in gain_done:
-            continue
-        gain_done.add((entity, str(unit)))
-        _add(gained.setdefault(entity, []), unit)
-        for where, expr in sources.get(entity, []):
-            gain_todo.extend((e, unit) for e, _ in _carriers(expr, where, gains=True))
+    gained = _spread(
+        [(e, u) for w, x, u, _ in log.sinks for e, _ in _carriers(x, w, gains=True)],
+        back_gains,
+    )
     takers: dict[tuple[object, ...], list[tuple[object, ...]]] = {}
-    for entity, assigned in sources.items():
-        for where, expr in assigned:
-            # `turn = abs(error) * 1.0`: a placeholder gain carries no unit back
-            # from a place, but `turn` does hold what `error` holds
-            for carrier, _ in _carriers(expr, where, gains=True):
-                takers.setdefault(carrier, []).append(entity)
-    held: dict[tuple[object, ...], list[Unit]] = {}
-    forward = list(log.held)
-    seen: set[tuple[tuple[object, ...], str]] = set()
-    while forward:  # forwards, from the values
-        entity, unit = forward.pop()
-        if (entity, str(unit)) in seen:
-            continue
-        seen.add((entity, str(unit)))
-        _add(held.setdefault(entity, []), unit)
-        forward.extend((taker, unit) for taker in takers.get(entity, []))
+    for entity in sources:
+        for carrier in back_gains(entity):  # `turn` holds what `error` holds
+            takers.setdefault(carrier, []).append(entity)
+    held = _spread(list(log.held), lambda e: iter(takers.get(e, [])))  # forwards
     found = []
     shapes = _Shapes(program, log)
     for entity, met_elements in elements.items():
@@ -427,18 +393,19 @@ def suggestions(log: FlowLog, program: Program) -> list[Found]:
         if entity not in log.binds:
             continue  # a parameter: what its callers pass is not known to be a list
         kinds = {kind for _, kind in met_elements}
-        units = {str(unit) for unit, _ in met_elements}
-        unit = met_elements[0][0]
-        if kinds not in ({"float"}, {"int"}) or len(units) != 1:
+        element = met_elements[0][0]
+        if kinds not in ({"float"}, {"int"}) or element is None:
             continue
-        if unit is None or not unit.dims or unit.is_label:
+        if any(e is None or not e.same_as(element) for e, _ in met_elements):
+            continue
+        if not element.dims or element.is_label or not element.text:
             continue
         spot = shapes.spot(entity, places.get(entity))
-        if spot is not None and unit.text:
-            found.append(Found(*spot, unit.text, f"list[{kinds.pop()}]"))
+        if spot is not None:
+            found.append(Found(*spot, element.text, f"list[{kinds.pop()}]"))
     for entity, units in reached.items():
-        met = list(units)
-        for unit in [*held.get(entity, []), *gained.get(entity, [])]:
+        met: list[Unit] = []
+        for unit in [*units, *held.get(entity, []), *gained.get(entity, [])]:
             _add(met, unit)
         if len(met) != 1 or not met[0].dims or not met[0].text:
             continue  # several units: a bug for `check`, not an annotation
@@ -453,6 +420,25 @@ def suggestions(log: FlowLog, program: Program) -> list[Found]:
         if spot is not None:
             found.append(Found(*spot, met[0].text, kind))
     return sorted(set(found), key=lambda f: (f.line, f.col))
+
+
+def _spread(
+    todo: list[tuple[tuple[object, ...], _T]],
+    after: Callable[[tuple[object, ...]], Iterator[tuple[object, ...]]],
+) -> dict[tuple[object, ...], list[_T]]:
+    """Each (name, fact) goes on to the names `after` the name (those its
+    assigned values carry, backwards; those it is assigned to, forwards): the
+    facts each name meets."""
+    met: dict[tuple[object, ...], list[_T]] = {}
+    done: set[tuple[tuple[object, ...], str]] = set()
+    while todo:
+        entity, fact = todo.pop()
+        if (entity, str(fact)) in done:
+            continue
+        done.add((entity, str(fact)))
+        met.setdefault(entity, []).append(fact)
+        todo.extend((e, fact) for e in after(entity))
+    return met
 
 
 def _is_sequence(value: Value) -> bool:
@@ -486,9 +472,7 @@ def _add(units: list[Unit], unit: Unit) -> None:
         units.append(unit)
 
 
-def _float_given(
-    entity: tuple[object, ...], log: FlowLog, program: Program
-) -> bool:
+def _float_given(entity: tuple[object, ...], log: FlowLog, program: Program) -> bool:
     """A parameter whose default or an argument of a call is a float literal."""
     if entity[0] != "param":
         return False

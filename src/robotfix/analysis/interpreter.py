@@ -1264,7 +1264,9 @@ class Interpreter(CallEvaluator):
                 held = state.heap[base.ref].fields.get(target.attr)
                 if isinstance(source, ast.Call) and held is not None and held.ref:
                     # `odom.twist.twist = Twist(Vector3(tv, ...))`: the fields below
-                    log.message_sinks(self.ctx, state, self.flow_where(), held.ref, source)
+                    log.message_sinks(
+                        self.ctx, state, self.flow_where(), held.ref, source
+                    )
                 return
             if base.kind != "instance":
                 log.attribute_field(self.flow_where(), target, source, value)

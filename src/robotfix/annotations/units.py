@@ -439,12 +439,12 @@ def _render(dims: tuple[tuple[str, int], ...], factor: float) -> str:
     text = f"{num}/{den}" if den else num
     if derived is not None:
         prefixes = {**_PREFIXES, 1e6: "M", 100.0: "h"}  # MPa, hPa
-        prefix = next(
+        named_prefix = next(
             (p for v, p in prefixes.items() if math.isclose(factor, v, rel_tol=1e-9)),
             None,
         )
-        if math.isclose(factor, 1.0, rel_tol=1e-9) or prefix is not None:
-            text, factor = (prefix or "") + derived, 1.0
+        if math.isclose(factor, 1.0, rel_tol=1e-9) or named_prefix is not None:
+            text, factor = (named_prefix or "") + derived, 1.0
     if not math.isclose(factor, 1.0):
         text = f"{factor:.6g}*{text}"
     for dim, exp in dims:
