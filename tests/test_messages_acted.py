@@ -94,3 +94,23 @@ def test_rf101_at_a_call_says_the_value_in_its_message() -> None:
         "`spin(time_allowance=LOOK_TIME)` violates `time_allowance <= 600`: "
         "here `time_allowance` = 10000"
     )  # in the concise, GitHub and SARIF forms too, which show no notes
+
+
+def test_a_unit_from_a_field_name_suffix_names_that_suffix(tmp_path: Path) -> None:
+    from robotfix.api import interface_files
+
+    folder = tmp_path / "drive_msgs" / "msg"
+    folder.mkdir(parents=True)
+    (folder / "Pulse.msg").write_text("float64 period_ms\n", encoding="utf-8")
+    catalog = MsgCatalog(interface_files([folder]), unit_suffixes=True)
+    source = (
+        "from typing import Annotated\n"
+        "from drive_msgs.msg import Pulse\n"
+        "def send(period: Annotated[float, \"Unit('s')\"]):\n"
+        "    msg = Pulse()\n"
+        "    msg.period_ms = period\n"
+    )
+    [note] = _only(source, catalog).notes
+    assert note.message == (
+        "unit of drive_msgs/Pulse: `ms` from the suffix of `period_ms` (unit-suffixes)"
+    )
