@@ -114,3 +114,17 @@ def test_a_unit_from_a_field_name_suffix_names_that_suffix(tmp_path: Path) -> No
     assert note.message == (
         "unit of drive_msgs/Pulse: `ms` from the suffix of `period_ms` (unit-suffixes)"
     )
+
+
+def test_a_statement_over_several_lines_is_shown_on_one() -> None:
+    from robotfix.source import SourceFile
+
+    text = (
+        "x = 1 + \\\n    2  # c\n"
+        "y = f(\n  a,  # the first\n  b,\n)\n"
+        "if x:\n    pass\n"
+    )
+    source = SourceFile.from_text("node.py", text)
+    assert source.tree is not None
+    shown = [source.statement_text(s) for s in source.tree.body]
+    assert shown == ["x = 1 + 2", "y = f(a, b)", "if x:"]

@@ -192,7 +192,7 @@ def _one_line(text: str) -> str:
                 lines[row - 1] = lines[row - 1][:col]
     except (tokenize.TokenError, SyntaxError):
         pass
-    lines = [line.strip() for line in lines]
+    lines = [line.strip().removesuffix("\\").rstrip() for line in lines]
     joined = " ".join(line for line in lines if line)
     return _CLOSED.sub(r"\1", _OPENED.sub(r"\1", joined))
 
