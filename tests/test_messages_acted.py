@@ -120,9 +120,7 @@ def test_a_statement_over_several_lines_is_shown_on_one() -> None:
     from robotfix.source import SourceFile
 
     text = (
-        "x = 1 + \\\n    2  # c\n"
-        "y = f(\n  a,  # the first\n  b,\n)\n"
-        "if x:\n    pass\n"
+        "x = 1 + \\\n    2  # c\ny = f(\n  a,  # the first\n  b,\n)\nif x:\n    pass\n"
     )
     source = SourceFile.from_text("node.py", text)
     assert source.tree is not None
