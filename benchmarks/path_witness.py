@@ -14,10 +14,10 @@ import sys
 from pathlib import Path
 
 from robotfix import api
-from robotfix.analysis.vc import VC, Proved, Undecided, Verdict
 from robotfix.config import Config
 from robotfix.run import check_paths
 from robotfix.smt import solver
+from robotfix.vc import VC, Proved, Undecided, Verdict
 
 
 def main(roots: list[str]) -> int:

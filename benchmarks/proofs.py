@@ -29,11 +29,11 @@ from generate_annotated import generate
 
 from robotfix import api
 from robotfix.analysis import consistency
-from robotfix.analysis.vc import VC, Proved, Verdict
 from robotfix.config import Config
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.smt.fold import fold
 from robotfix.smt.prepass import proves
+from robotfix.vc import VC, Proved, Verdict
 
 ROOT = Path(__file__).resolve().parent.parent
 CASES = ROOT / "tests" / "cases"

@@ -21,12 +21,12 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from robotfix import api, budget
-from robotfix.analysis.vc import VC
 from robotfix.annotations import ast as A
 from robotfix.annotations import witness
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.smt.prepass import Prepass, proves
 from robotfix.source import SourceFile
+from robotfix.vc import VC
 from tests.test_prepass import _comparisons
 
 SRC = Path(__file__).resolve().parent.parent / "src"
@@ -155,6 +155,10 @@ def test_forty_degree_six_lines_finish(tmp_path: Path) -> None:
     found = cli(tmp_path, degree_six(40), timeout=240)
     *warned, last = found
     assert all(code == "RF102" for _, code in warned)
+    # z3's resource units differ between z3-solver releases (the dependency is not
+    # pinned): with 5.4 the budget ends at the 40th line (RF901 there), with
+    # another release it may end a line later, after all 40; either way every line
+    # before has its verdict and nothing is cut short as a whole (RF902)
     assert last[1] in ("RF102", "RF901") and "RF902" not in {c for _, c in found}
     assert [line for line, _ in found] == list(range(4, 4 + len(found)))
 

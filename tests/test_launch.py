@@ -374,3 +374,38 @@ def test_a_python_launch_file_is_checked_as_python_too(tmp_path: Path) -> None:
     found = [(Path(d.path).name, d.code, d.span.line) for d in result.diagnostics]
     assert found == [("replace_string.py", "RF301", 8)]
     assert result.files == 2
+
+
+@pytest.mark.parametrize(
+    "imports",
+    [
+        "from racer import node",  # a submodule named in `from pkg import`
+        "from . import node",
+        "from .node import Racer",
+        "from ..racer.node import Racer",  # two levels up, then down
+    ],
+)
+def test_an_entry_point_finds_its_node_class_however_it_imports_it(
+    tmp_path: Path, imports: str
+) -> None:
+    """The entry point `racer.main:main` declares nothing; the node class it
+    imports does, so the launch value is checked against it (RF401 for a string
+    where `max_speed` is a double) whichever way the import is written."""
+    pkg = racer(tmp_path)
+    write(
+        pkg / "setup.py",
+        "from setuptools import setup\nsetup(name='racer', entry_points="
+        "{'console_scripts': ['racer = racer.main:main']})\n",
+    )
+    write(pkg / "racer" / "main.py", f"{imports}\n\ndef main():\n    pass\n")
+    write(
+        pkg / "launch" / "r.launch.py",
+        "from launch import LaunchDescription\nfrom launch_ros.actions import Node\n\n"
+        "def generate_launch_description():\n    return LaunchDescription([Node(\n"
+        "        package='racer', executable='racer',\n"
+        "        parameters=[{'max_speed': 'fast'}])])\n",
+    )
+    found = check_paths([pkg], Config(root=tmp_path)).diagnostics
+    assert [(d.code, d.span.line) for d in found if d.path.endswith(".launch.py")] == [
+        ("RF401", 7)
+    ]

@@ -20,6 +20,9 @@ GATES = {
 FORBIDDEN = {
     "diagnostics.py": ("robotfix.",),
     "budget.py": ("robotfix.",),  # every layer counts its work there
+    # the verification conditions: below the analysis that makes them and the
+    # solver that answers them
+    "vc.py": ("robotfix.analysis", "robotfix.smt", "robotfix.ros", "robotfix.project"),
     "annotations/": (
         "robotfix.analysis",
         "robotfix.smt",
@@ -59,7 +62,14 @@ FORBIDDEN = {
         "robotfix.report",
         "robotfix.cli",
     ),
-    "smt/": ("robotfix.api", "robotfix.report", "robotfix.cli", "robotfix.ros"),
+    "smt/": (
+        "robotfix.analysis",
+        "robotfix.api",
+        "robotfix.report",
+        "robotfix.cli",
+        "robotfix.ros",
+        "robotfix.project",
+    ),
     "report/": ("robotfix.analysis", "robotfix.smt", "robotfix.api", "robotfix.cli"),
     # the transport and the document store know nothing of RobotFix
     "lsp/rpc.py": ("robotfix.",),

@@ -489,3 +489,89 @@ def test_a_worker_summary_survives_the_trip() -> None:
     back = pickle.loads(pickle.dumps(portable))
     assert back.decls == summary.decls
     assert [d.default for d in back.decls][1] is UNKNOWN
+
+
+def test_notes_stay_notes_from_the_cache(tmp_path: Path) -> None:
+    """Issue 24: an RF102 note on a parameter file's value came back from the
+    result cache as a warning (the cache dropped a diagnostic's own severity)."""
+    package = shutil.copytree(PACKAGES / "ros2_limits", tmp_path / "ros2_limits")
+    config = Config(root=tmp_path, cache_dir=tmp_path / "cache")
+    runs = [check_paths([package], config, use_cache=True) for _ in range(2)]
+    assert runs[1].from_cache == runs[0].from_cache + 2
+    levels = [[(d.code, d.severity.value) for d in r.diagnostics] for r in runs]
+    assert ("RF102", "note") in levels[0]
+    assert levels[1] == levels[0]
+
+
+DTPARAM_STUB = """\
+class DTParam:
+    @ros_parameter(name="name", default="default", low="min_value", high="max_value")
+    def __init__(
+        self,
+        name: str,
+        default: object = ...,
+        help: str = ...,
+        param_type: object = ...,
+        min_value: float = ...,
+        max_value: float = ...,
+    ) -> None: ...
+"""
+DTPARAM_NODE = """\
+#!/usr/bin/env python3
+import rospy
+from duckietown.dtros import DTParam
+
+
+class StopLineFilterNode:
+    def __init__(self):
+        rospy.init_node("stop_line_filter_node")
+        self.stop_distance = DTParam("~stop_distance", min_value=0.0, max_value=0.5)
+        self.min_segs = DTParam("~min_segs", 2, "how many", None, 1)
+"""
+
+
+def _dtparam_package(root: Path, stub: str = DTPARAM_STUB) -> Path:
+    package = root / "stop_line_filter"
+    (package / "src").mkdir(parents=True)
+    (package / "package.xml").write_text(
+        '<package format="2"><name>stop_line_filter</name></package>'
+    )
+    (package / "src" / "stop_line_filter_node").write_text(DTPARAM_NODE)
+    config = package / "config" / "stop_line_filter_node" / "default.yaml"
+    config.parent.mkdir(parents=True)
+    config.write_text("stop_distance: 22\nmin_segs: 0\nmax_y: 0.2\n")
+    stubs = package / "stubs" / "duckietown" / "dtros"
+    stubs.mkdir(parents=True)
+    (stubs / "__init__.pyi").write_text(stub)
+    (package / "robotfix.toml").write_text('stub-paths = ["stubs"]\n')
+    return package
+
+
+def test_a_parameter_api_described_in_a_stub_is_checked_in_its_files(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Issue 24: duckietown's `DTParam("~name", min_value=..., max_value=...)`,
+    described by `@ros_parameter` in the package's stubs, gets its YAML checked, from
+    the package and from the workspace root (the package's own stub-paths)."""
+    package = _dtparam_package(tmp_path)
+    for cwd in (package, tmp_path):
+        monkeypatch.chdir(cwd)
+        assert cli.main(["check", ".", "--no-cache", "--format", "concise"]) == 1
+        out = capsys.readouterr().out
+        assert "`stop_distance: 22` violates `stop_distance <= 0.5`" in out
+        assert "`min_segs: 0` violates `min_segs >= 1`" in out
+        assert "Found 2 errors" in out
+    (package / "robotfix.toml").write_text("")  # without the stub: nothing to say
+    assert cli.main(["check", ".", "--no-cache", "--format", "concise"]) == 0
+
+
+def test_a_malformed_ros_parameter_is_a_stub_problem(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    bad = DTPARAM_STUB.replace('low="min_value"', 'low="minimum"')
+    package = _dtparam_package(tmp_path, bad)
+    monkeypatch.chdir(package)
+    cli.main(["check", ".", "--no-cache", "--format", "concise"])
+    out = capsys.readouterr().out
+    assert "RF512" in out and "`ros_parameter` takes name, default" in out
+    assert "RF101" not in out

@@ -14,7 +14,6 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from robotfix import api, run
-from robotfix.analysis.vc import VC, Proved, Undecided, Unproven, Verdict, Violated
 from robotfix.annotations import ast as A
 from robotfix.annotations.parser import parse_predicate
 from robotfix.annotations.witness import example, holds_somewhere
@@ -22,6 +21,7 @@ from robotfix.config import Config
 from robotfix.rules import UNREADABLE_FILE
 from robotfix.smt.propositional import components, satisfiable
 from robotfix.smt.solver import check
+from robotfix.vc import VC, Proved, Undecided, Unproven, Verdict, Violated
 from tests.test_cases import CASES, check_case
 
 X, Y, N, B = A.Sym(1, "real"), A.Sym(2, "real"), A.Sym(3, "int"), A.Sym(4, "bool")

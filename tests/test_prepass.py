@@ -13,12 +13,12 @@ from hypothesis import strategies as st
 
 from robotfix import api
 from robotfix.analysis import consistency
-from robotfix.analysis.vc import VC, Proved, Undecided, Verdict
 from robotfix.annotations import ast as A
 from robotfix.annotations.parser import parse_predicate
 from robotfix.annotations.witness import has_witness
 from robotfix.smt.prepass import proves
 from robotfix.smt.solver import check
+from robotfix.vc import VC, Proved, Undecided, Verdict
 from tests.test_cases import CASES, check_case
 
 X, Y, N = A.Sym(1, "real"), A.Sym(2, "real"), A.Sym(3, "int")

@@ -169,8 +169,8 @@ def test_cases_give_the_same_diagnostics_with_kept_proofs(path: Path) -> None:
 
 
 def test_key_renumbers_symbols_in_order_of_appearance() -> None:
-    from robotfix.analysis.vc import VC
     from robotfix.annotations import ast as A
+    from robotfix.vc import VC
 
     def vc(a: int, b: int) -> VC:
         x, y = A.Sym(a, "real"), A.Sym(b, "real")
@@ -189,7 +189,7 @@ def test_key_renumbers_symbols_in_order_of_appearance() -> None:
 
 
 def test_unproven_counterexamples_are_given_in_the_new_symbols() -> None:
-    from robotfix.analysis.vc import Unproven
+    from robotfix.vc import Unproven
 
     memo = ProofMemo()
     memo.put(("k",), [7, 9], Unproven(("1",), ((7, "2"), (9, "3"))), 5, True)
@@ -198,7 +198,7 @@ def test_unproven_counterexamples_are_given_in_the_new_symbols() -> None:
 
 
 def test_the_memo_is_bounded() -> None:
-    from robotfix.analysis.vc import Proved, Undecided
+    from robotfix.vc import Proved, Undecided
 
     memo = ProofMemo(max_entries=2)
     for i in range(3):

@@ -14,7 +14,6 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from robotfix import api, budget
-from robotfix.analysis.vc import VC, Undecided, Unproven
 from robotfix.annotations import ast as A
 from robotfix.api import catalog_problems, check_paths, check_source, interface_files
 from robotfix.budget import Budget
@@ -22,6 +21,7 @@ from robotfix.config import Config
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.smt import solver
 from robotfix.source import SourceFile
+from robotfix.vc import VC, Undecided, Unproven
 
 
 def codes(diagnostics: list[api.Diagnostic]) -> list[tuple[int, str]]:

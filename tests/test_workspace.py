@@ -252,6 +252,66 @@ def test_a_refinement_only_file_adds_to_the_installed_type(
     assert broken in result.diagnostics[0].message
 
 
+@pytest.mark.parametrize("base", ["package", "msg_path", "install", "standard"])
+@pytest.mark.parametrize("overlay_first", [True, False])
+@pytest.mark.parametrize("cached", [False, True])
+def test_an_overlay_adds_to_its_type_wherever_the_type_is_defined(
+    tmp_path: Path,
+    monkeypatch: pytest.MonkeyPatch,
+    base: str,
+    overlay_first: bool,
+    cached: bool,
+) -> None:
+    """Issue 24: a `#RobotFix#`-only file on a type of a message package in the
+    same workspace replaced it (RF505 "not a field", RF510 "remove or rename")."""
+    if base == "standard":
+        code = USES_CMD.replace(
+            "my_msgs.msg import Cmd", "geometry_msgs.msg import Vector3"
+        )
+        code = code.replace("Cmd()", "Vector3()").replace("c.speed", "c.x")
+        overlay_text = "[geometry_msgs/Vector3]:\n#RobotFix# x >= 0\n"
+    else:
+        code, overlay_text = USES_CMD, "[my_msgs/Cmd]:\n#RobotFix# speed >= 0\n"
+    pkg = node(tmp_path, code.format(speed=-1.0))
+    overlay = write(tmp_path / "refinements" / "Cmd.msg", overlay_text).parent
+    paths, msg_paths = [pkg], [overlay]
+    if base == "package":  # a third-party message package cloned into src/
+        paths.append(cmd_msg(package(tmp_path / "ws/src/my_msgs", "my_msgs"), 3).parent)
+        paths[-1] = paths[-1].parent
+    elif base == "msg_path":
+        cmd_msg(package(tmp_path / "vendor" / "my_msgs", "my_msgs"), 3.0)
+        msg_paths.append(tmp_path / "vendor")
+    elif base == "install":
+        monkeypatch.setenv("AMENT_PREFIX_PATH", str(ros2_install(tmp_path / "install")))
+    if not overlay_first:
+        msg_paths.reverse()
+    for _ in range(2 if cached else 1):  # the second run's catalog is read lazily
+        result = check_paths(
+            paths,
+            Config(root=tmp_path, msg_paths=tuple(msg_paths)),
+            use_cache=cached,
+        )
+        assert found(result) == [("node.py", 5, "RF101")]
+        assert "speed >= 0" in result.diagnostics[0].message or base == "standard"
+        assert result.diagnostics[0].notes[0].path == str(overlay / "Cmd.msg")
+
+
+def test_two_overlays_and_a_definition_add_up_in_order(tmp_path: Path) -> None:
+    definition = cmd_msg(package(tmp_path / "a" / "my_msgs", "my_msgs"), 3.0)
+    first = write(tmp_path / "b" / "Cmd.msg", "[my_msgs/Cmd]:\n#RobotFix# speed >= 0\n")
+    second = write(
+        tmp_path / "c" / "Cmd.msg", "[my_msgs/Cmd]:\n#RobotFix# speed != 1\n"
+    )
+    for order in ([first, definition, second], [second, first, definition]):
+        catalog = MsgCatalog(order)
+        assert catalog.problems == []
+        spec = catalog.lookup("my_msgs/Cmd")
+        assert spec is not None and list(spec.fields) == ["speed"]
+        overlays = [i.text for i in spec.invariants][1:]
+        expected = ["speed >= 0", "speed != 1"]
+        assert overlays == (expected if order[0] == first else expected[::-1])
+
+
 def test_installed_files_that_do_not_parse_or_resolve_are_not_used_or_reported(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:

@@ -28,13 +28,13 @@ from robotfix.ros.launch.names import is_launch_file
 if TYPE_CHECKING:  # the analysis is imported only when a file is checked
     from robotfix.analysis.context import FileContext
     from robotfix.analysis.imported import Resolver
-    from robotfix.analysis.vc import VC, Verdict
     from robotfix.budget import Budget
     from robotfix.project.summary import Project
     from robotfix.ros.catalog import MsgCatalog
     from robotfix.smt.memo import ProofMemo
     from robotfix.source import SourceFile
     from robotfix.stubs.load import StubSet
+    from robotfix.vc import VC, Verdict
 # so are the catalog's readers, the stubs and the parser's front end: a cached run
 # needs none of them (`tests/test_cached_run.py`)
 
@@ -84,9 +84,9 @@ class Discharger:
         self._prepass: Any = None  # the file's pre-pass, made at the first VC
 
     def __call__(self, vc: VC) -> Verdict:
-        from robotfix.analysis.vc import OUT_OF_BUDGET, Proved, Violated
         from robotfix.budget import FACTS_PER_STEP
         from robotfix.smt.fold import fold
+        from robotfix.vc import OUT_OF_BUDGET, Proved, Violated
 
         budget = self.budget
         if budget.spent:
@@ -132,7 +132,7 @@ class Discharger:
         return True
 
     def _decide(self, vc: VC) -> Verdict:
-        from robotfix.analysis.vc import Proved
+        from robotfix.vc import Proved
 
         if self.prepass:
             if self._prepass is None:
@@ -166,10 +166,10 @@ def _without_solver(vc: VC, budget: Budget | None = None) -> Verdict | None:
     when values of its symbols are found that make the facts and the condition
     true, checked by exact evaluation (`annotations.witness`); "impossible" only
     ever comes from the skeleton."""
-    from robotfix.analysis.vc import Proved, Unproven
     from robotfix.annotations import ast as A
     from robotfix.annotations.witness import holds_somewhere
     from robotfix.smt.propositional import components, satisfiable
+    from robotfix.vc import Proved, Unproven
 
     negated: bool | None = True  # groups sharing no symbol are independent
     for group in components([*vc.facts, A.Unary("not", vc.goal)], budget):
@@ -210,7 +210,10 @@ def check_source(
     project = project or make_project([], config, catalog)
     resolver = project.resolver(Path(path))
     source = SourceFile.from_text(path, text)
-    return finish(_check(source, catalog, stubs=stubs, resolver=resolver, memo=memo))
+    ignored = config.ignored_codes(Path(path))
+    return finish(
+        _check(source, catalog, ignored, stubs=stubs, resolver=resolver, memo=memo)
+    )
 
 
 def make_project(roots: list[Path], config: Config, catalog: MsgCatalog) -> Project:
@@ -370,11 +373,15 @@ def _analyze(
         FileContext,
     )
     from robotfix.analysis.interpreter import analyze_module
+    from robotfix.analysis.unitmemo import UnitMemo
     from robotfix.stubs.load import stub_set
 
     discharge = Discharger(memo)
     ctx = FileContext(source, catalog, discharge, resolver, discharge.budget)
-    ctx.unit_memo = memo.units if memo is not None else None
+    if memo is not None:
+        if not isinstance(memo.units, UnitMemo):
+            memo.units = UnitMemo()
+        ctx.unit_memo = memo.units
     ctx.stubs = stubs or stub_set()
     ctx.hovers = [] if hovers else None
     if flows:

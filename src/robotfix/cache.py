@@ -53,7 +53,7 @@ from typing import TYPE_CHECKING, Any
 
 from robotfix import __version__, fs, rules
 from robotfix.config import Config
-from robotfix.diagnostics import Diagnostic, Note, Span
+from robotfix.diagnostics import Diagnostic, Note, Severity, Span
 from robotfix.discovery import Discovery, Trace
 from robotfix.disk_cache import install_key, is_text
 from robotfix.fs import RACY_NS
@@ -587,23 +587,20 @@ def _file_key(data: bytes | str, path: Path, config: Config) -> str:
 
 def _dump(d: Diagnostic) -> list[Any]:
     span = [d.span.line, d.span.col, d.span.end_line, d.span.end_col]
-    return [
-        d.code,
-        d.path,
-        span,
-        d.message,
-        [[n.message, n.path, n.line] for n in d.notes],
-    ]
+    notes = [[n.message, n.path, n.line] for n in d.notes]
+    level = [] if d.level is None else [d.level.value]  # not the rule's severity
+    return [d.code, d.path, span, d.message, notes, *level]
 
 
 def _load(raw: list[Any]) -> Diagnostic:
-    code, path, span, message, notes = raw
+    code, path, span, message, notes, *level = raw
     return Diagnostic(
         rules.ALL_RULES[code],
         path,
         Span(*span),
         message,
         tuple(Note(m, p, line) for m, p, line in notes),
+        Severity(level[0]) if level else None,
     )
 
 
@@ -657,12 +654,16 @@ def _valid_stat(raw: Any) -> bool:
     )
 
 
+SEVERITIES = frozenset(s.value for s in Severity)
+
+
 def _valid_diagnostic(raw: Any) -> bool:
-    if not (isinstance(raw, list) and len(raw) == 5):
+    if not (isinstance(raw, list) and len(raw) in (5, 6)):
         return False
-    code, path, span, message, notes = raw
+    code, path, span, message, notes, *level = raw
     return (
-        isinstance(code, str)
+        all(v in SEVERITIES for v in level)
+        and isinstance(code, str)
         and code in rules.ALL_RULES
         and _name(path)
         and isinstance(span, list)

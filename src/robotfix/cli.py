@@ -278,9 +278,13 @@ def run_check(args: argparse.Namespace) -> int:
         return EXIT_FAILURE
     progress = Progress() if sys.stderr.isatty() else None
     jobs = args.jobs or default_jobs()
-    result = api.check_paths(
-        paths, settings, progress=progress, jobs=jobs, use_cache=args.cache
-    )
+    try:
+        result = api.check_paths(
+            paths, settings, progress=progress, jobs=jobs, use_cache=args.cache
+        )
+    except config.ConfigError as err:  # a package's own configuration
+        print(f"robotfix: error: {err}", file=sys.stderr)
+        return EXIT_FAILURE
     if progress is not None:
         progress.done()
     if not result.files:
@@ -314,27 +318,25 @@ def _missing(path: Path) -> str | None:
 
 
 def merge_flags(settings: Config, args: argparse.Namespace) -> Config:
-    from dataclasses import replace
-
-    from robotfix.config import DISTROS, ConfigError
+    """The flags over the settings; kept in them (`Config.flags`) for the files
+    whose nearest configuration is another (`Config.for_file`)."""
+    from robotfix.config import DISTROS, ConfigError, Flags
 
     if args.ros_distro is not None and args.ros_distro not in DISTROS:
         raise ConfigError(f"--ros-distro must be one of {', '.join(DISTROS)}")
-    return replace(
-        settings,
-        msg_paths=tuple(args.msg_path) + settings.msg_paths,
-        stub_paths=tuple(getattr(args, "stub_path", ())) + settings.stub_paths,
-        python_paths=tuple(getattr(args, "python_path", None) or ())
-        + settings.python_paths,
-        strict=settings.strict if args.strict is None else args.strict,
-        rep103=settings.rep103 if args.rep103 is None else args.rep103,
-        output_format=args.format or settings.output_format,
-        exclude=settings.exclude + tuple(args.exclude),
-        ros_distro=args.ros_distro or settings.ros_distro,
-        unit_suffixes=settings.unit_suffixes
-        or bool(getattr(args, "unit_suffixes", None)),
-        cache_dir=args.cache_dir or settings.cache_dir,
+    flags = Flags(
+        msg_paths=tuple(args.msg_path),
+        stub_paths=tuple(getattr(args, "stub_path", ())),
+        python_paths=tuple(getattr(args, "python_path", None) or ()),
+        exclude=tuple(args.exclude),
+        strict=args.strict,
+        rep103=args.rep103,
+        output_format=args.format,
+        ros_distro=args.ros_distro,
+        unit_suffixes=bool(getattr(args, "unit_suffixes", None)),
+        cache_dir=args.cache_dir,
     )
+    return flags.apply(settings)
 
 
 def report(result: Result, settings: Config) -> int:

@@ -1,8 +1,17 @@
-"""Config: the settings of a run, from flags and `[tool.robotfix]` in pyproject.toml.
+"""Config: the settings of a run, from flags and configuration files.
 
-`pyproject.toml` is found by walking up from the first checked path. Keys use the
-flags' spelling: `msg-paths` and `stub-paths` (relative to that file), `strict`,
-`rep103`, `format`, `unit-suffixes`.
+A configuration is the `[tool.robotfix]` table of a `pyproject.toml`, or the top
+level of a `robotfix.toml` (which wins over a `pyproject.toml` in the same folder);
+a `pyproject.toml` without the table is not one. Keys use the flags' spelling:
+`msg-paths` and `stub-paths` (relative to that file), `strict`, `rep103`, `format`,
+`unit-suffixes`; `extend` names another configuration whose settings this one
+starts from (as ruff's `extend`).
+
+Settings are resolved per file, as ruff resolves them: each file's are those of the
+nearest configuration above it, with the flags over them (`Config.for_file`), so a
+file gets the same findings whichever folder a run starts from. What is a setting
+of the run, not of a file (`format`, `strict`, where the cache is, and `exclude`
+patterns, which add up), comes from the configuration nearest the first path.
 """
 
 from __future__ import annotations
@@ -15,9 +24,10 @@ from pathlib import Path
 from typing import Any
 
 from robotfix import tomlfile
-from robotfix.fs import UnreadableError, read_text
+from robotfix.fs import UnreadableError, read_text, stamp
 
 KEYS = {
+    "extend",
     "msg-paths",
     "stub-paths",
     "strict",
@@ -32,6 +42,8 @@ KEYS = {
 FORMATS = ("text", "concise", "json", "sarif", "github", "junit")
 MAX_PYPROJECT_BYTES = 4 * 1024 * 1024  # a real pyproject.toml is a few kB
 DISTROS = ("ros2", "ros1", "jazzy", "humble", "iron", "kilted", "rolling", "noetic")
+CONFIG_FILES = ("robotfix.toml", "pyproject.toml")  # in one folder, the first wins
+MAX_EXTENDS = 16  # `extend` chains deeper than this are a mistake (or a cycle)
 
 
 class ConfigError(Exception):
@@ -58,21 +70,78 @@ class Config:
     source: Path | None = field(default=None, compare=False)
     # where per-file results are cached (None: `.robotfix_cache/` in `root`)
     cache_dir: Path | None = field(default=None, compare=False)
+    # the command line's settings: with them, each file's settings are its nearest
+    # configuration's, these over them (`for_file`); None: these settings for all
+    flags: Flags | None = field(default=None, compare=False)
+    # the configuration `extend` names: its patterns match from its own folder
+    extends: Config | None = field(default=None, compare=False, repr=False)
+    _nearest: dict[str, Config] = field(default_factory=dict, compare=False, repr=False)
+    _found: dict[str, Path | None] = field(  # folder -> its nearest configuration
+        default_factory=dict, compare=False, repr=False
+    )
+    _spelled: dict[str, Path | None] = field(  # the same, by the folder as spelled
+        default_factory=dict, compare=False, repr=False
+    )
+
+    def for_file(self, path: Path, folder: bool | None = None) -> Config:
+        """The settings of one file (or, with `folder`, a folder; None: either):
+        those of the nearest configuration above it with the flags over them, or
+        these when that is this run's own."""
+        if self.flags is None:
+            return self
+        raw = os.fspath(path)  # the folder as spelled: no realpath, no stat
+        if folder is None:
+            folder = os.path.isdir(raw)
+        folder_name = raw if folder else os.path.dirname(raw) or "."
+        if folder_name in self._spelled:
+            found = self._spelled[folder_name]
+        else:
+            found = find(Path(folder_name), self._found)
+            self._spelled[folder_name] = found
+        if found == self.source:
+            return self
+        key = str(found)
+        known = self._nearest.get(key)
+        if known is None:
+            loaded = load_file(found) if found is not None else Config()
+            known = self._nearest[key] = self.flags.apply(loaded)
+        return known
+
+    def nested_sources(self) -> list[str]:
+        """The configuration files `for_file` has read (for a cached discovery's
+        trace: their `exclude` decides what it finds)."""
+        return [key for key in self._nearest if key != "None"]
 
     def excluded(self, path: Path, folder: bool = False) -> bool:
         """Whether an `exclude` pattern matches the file (or, with folder=True, the
-        folder and so everything below it)."""
+        folder and so everything below it): this run's patterns, and those of the
+        nearest configuration (each from its own folder)."""
+        if self._excluded(path, folder):
+            return True
+        nearest = self.for_file(path, folder)
+        return nearest is not self and nearest._excluded(path, folder)
+
+    def _excluded(self, path: Path, folder: bool) -> bool:
+        if self.extends is not None and self.extends._excluded(path, folder):
+            return True
         if not self.exclude:
             return False
         relative = self._relative(path)
         return any(matches(pattern, relative, folder) for pattern in self.exclude)
 
     def ignored_codes(self, path: Path) -> frozenset[str]:
-        if not self.per_file_ignores:
-            return frozenset()  # no path to work out: a cached run asks per file
-        relative = self._relative(path)
-        found: frozenset[str] = frozenset()
-        for pattern, codes in self.per_file_ignores:
+        """The codes `per-file-ignores` silences in the file, by its nearest
+        configuration (and those it extends)."""
+        nearest = self.for_file(path)
+        found = (
+            frozenset()
+            if nearest.extends is None
+            else nearest.extends.ignored_codes(path)
+        )
+        if not nearest.per_file_ignores:
+            return found  # no path to work out: a cached run asks per file
+        relative = nearest._relative(path)
+        for pattern, codes in nearest.per_file_ignores:
             if matches(pattern, relative):
                 found |= codes
         return found
@@ -133,30 +202,87 @@ def matches(pattern: str, relative: str, folder: bool = False) -> bool:
     return any(1 <= at <= last for at in reached)
 
 
-def find_pyproject(start: Path) -> Path | None:
+def find(start: Path, memo: dict[str, Path | None] | None = None) -> Path | None:
+    """The nearest configuration at or above `start` (a file: its folder): a
+    `robotfix.toml`, or a `pyproject.toml` with a [tool.robotfix] table."""
     here = Path(os.path.realpath(start))
     if not os.path.isdir(here):  # os.path never raises (a path too long, a loop)
         here = here.parent
+    seen: list[str] = []  # the folders looked at, each with the answer
+    found: Path | None = None
     for folder in (here, *here.parents):
-        candidate = folder / "pyproject.toml"
-        if os.path.isfile(candidate):
-            return candidate
-    return None
+        if memo is not None and str(folder) in memo:
+            found = memo[str(folder)]
+            break
+        seen.append(str(folder))
+        candidates = [folder / name for name in CONFIG_FILES]
+        found = next((c for c in candidates if _is_config(c)), None)
+        if found is not None:
+            break
+    if memo is not None:
+        memo.update(dict.fromkeys(seen, found))
+    return found
+
+
+def _is_config(path: Path) -> bool:
+    return os.path.isfile(path) and _table(path) is not None
 
 
 def load(start: Path, base: Config | None = None) -> Config:
-    """Settings from the nearest pyproject.toml with a [tool.robotfix] table."""
+    """Settings from the nearest configuration at or above `start` (`find`)."""
     config = base or Config()
-    path = find_pyproject(start)
+    path = find(start)
     if path is None:
         return config
     return load_file(path, config)
 
 
 def load_file(path: Path, base: Config | None = None) -> Config:
-    """Settings from the [tool.robotfix] table of one TOML file (`--config FILE`);
-    patterns and msg-paths are relative to its folder."""
-    config = base or Config()
+    """Settings from one configuration file (`--config FILE`): the [tool.robotfix]
+    table of a pyproject.toml, the top level of any other TOML file; patterns and
+    msg-paths are relative to its folder."""
+    return _load(path, base or Config(), ())
+
+
+def _load(path: Path, config: Config, chain: tuple[str, ...]) -> Config:
+    table = _table(path)
+    if table is None:
+        return config
+    extend = table.get("extend")
+    if extend is None:
+        return _apply(config, table, path)
+    if not isinstance(extend, str):
+        raise ConfigError(f"{path}: `extend` must be the path of a configuration")
+    target = path.parent / extend
+    if os.path.realpath(target) in chain or len(chain) >= MAX_EXTENDS:
+        raise ConfigError(f"{path}: `extend` makes a cycle or a chain too long")
+    if not os.path.isfile(target):
+        raise ConfigError(f"{path}: `extend`: {target}: no such file")
+    chain = (*chain, os.path.realpath(path))
+    parent = _load(target, config, chain)
+    # the extended file's patterns match from its own folder (`Config.extends`)
+    start = replace(parent, exclude=config.exclude, per_file_ignores=(), extends=parent)
+    return _apply(start, table, path)
+
+
+# file -> (its stamp, its table)
+_tables: dict[str, tuple[list[int] | None, dict[str, Any] | None]] = {}
+
+
+def _table(path: Path) -> dict[str, Any] | None:
+    """The settings table of a configuration file (None: it has none), read once
+    while its stamp holds (`fs.stamp`)."""
+    key = os.path.realpath(path)
+    found = stamp(key)
+    known = _tables.get(key)
+    if known is not None and known[0] == found and found is not None:
+        return known[1]
+    table = _read_table(path)
+    _tables[key] = (found, table)
+    return table
+
+
+def _read_table(path: Path) -> dict[str, Any] | None:
     try:
         data = tomlfile.loads(read_text(path, MAX_PYPROJECT_BYTES))
     except tomlfile.TomlError as err:
@@ -168,19 +294,52 @@ def load_file(path: Path, base: Config | None = None) -> Config:
     except UnreadableError as err:
         raise ConfigError(f"{path}: cannot read: {err.reason}") from None
     tool = data.get("tool")
-    if tool is None:
-        return config
-    if not isinstance(tool, dict):
+    if tool is not None and not isinstance(tool, dict):
         raise ConfigError(f"{path}: `tool` must be a table ([tool.robotfix])")
-    table = tool.get("robotfix")
+    if tool is None and path.name != "pyproject.toml":
+        return dict(data)  # robotfix.toml: the settings at the top level
+    table = None if tool is None else tool.get("robotfix")
     if table is None:
-        return config
-    return _apply(config, table, path)
-
-
-def _apply(config: Config, table: Any, path: Path) -> Config:
+        return None
     if not isinstance(table, dict):
         raise ConfigError(f"{path}: [tool.robotfix] must be a table")
+    return dict(table)
+
+
+@dataclass(frozen=True)
+class Flags:
+    """What the command line sets, over every file's configuration: lists go
+    first, a value given replaces the configuration's."""
+
+    msg_paths: tuple[Path, ...] = ()
+    stub_paths: tuple[Path, ...] = ()
+    python_paths: tuple[Path, ...] = ()
+    exclude: tuple[str, ...] = ()
+    strict: bool | None = None
+    rep103: bool | None = None
+    output_format: str | None = None
+    ros_distro: str | None = None
+    unit_suffixes: bool = False
+    cache_dir: Path | None = None
+
+    def apply(self, config: Config) -> Config:
+        return replace(
+            config,
+            msg_paths=self.msg_paths + config.msg_paths,
+            stub_paths=self.stub_paths + config.stub_paths,
+            python_paths=self.python_paths + config.python_paths,
+            strict=config.strict if self.strict is None else self.strict,
+            rep103=config.rep103 if self.rep103 is None else self.rep103,
+            output_format=self.output_format or config.output_format,
+            exclude=config.exclude + self.exclude,
+            ros_distro=self.ros_distro or config.ros_distro,
+            unit_suffixes=config.unit_suffixes or self.unit_suffixes,
+            cache_dir=self.cache_dir or config.cache_dir,
+            flags=self,
+        )
+
+
+def _apply(config: Config, table: dict[str, Any], path: Path) -> Config:
     unknown = sorted(set(table) - KEYS)
     if unknown:
         raise ConfigError(
@@ -232,3 +391,15 @@ def _strings(table: dict[str, Any], key: str, path: Path) -> list[str]:
     if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
         raise ConfigError(f"{path}: `{key}` must be a list of strings")
     return value
+
+
+def by_settings(files: list[Path], config: Config) -> list[tuple[Config, list[Path]]]:
+    """The files whose settings are not `config`'s (`Config.for_file`: their
+    nearest configuration is another), grouped by those settings, in the order
+    first met."""
+    groups: dict[int, tuple[Config, list[Path]]] = {}
+    for file in files:
+        settings = config.for_file(file, folder=False)
+        if settings is not config:
+            groups.setdefault(id(settings), (settings, []))[1].append(file)
+    return list(groups.values())

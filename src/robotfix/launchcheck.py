@@ -158,38 +158,18 @@ class LaunchRun:
                         out += _ros2_entry(started.entry, code, table, loaded)
                     else:
                         out += _ros1_entry(started.entry, code, table)
+        from robotfix.paramcheck import unmatched_sections
+
         known = self._known(table)
         for path, parameters in sorted(loaded.items()):
             with guard(path, out, faults):
-                out += _unmatched(path, parameters, known)
+                out += unmatched_sections(path, parameters, known)
         unique = {(d.path, d.span, d.code, d.message): d for d in out}
         return list(unique.values())
 
     def _known(self, table: Table) -> set[str]:
         """Every node name of the code and the launch files."""
-        known = set(self.names)
-        for summary in table.summaries:
-            for names in summary.node_names.values():
-                known.update(names)
-        return known
-
-
-def _unmatched(path: str, parameters: P.ParamFile, known: set[str]) -> list[Diagnostic]:
-    """RF602: a ROS 2 parameter file's sections that name no known node."""
-    if parameters.layout != "ros2":
-        return []
-    unmatched = [
-        (key, where)
-        for key, where in parameters.sections.items()
-        if (name := key.rstrip("/").rsplit("/", 1)[-1])
-        and "*" not in name
-        and name not in known
-    ]
-    if not unmatched:
-        return []
-    (line, col) = unmatched[0][1]
-    keys = [key for key, _ in unmatched]
-    return [messages.parameter_section_unmatched(path, line, col, keys)]
+        return set(self.names) | table.node_names()
 
 
 def _packages(files: list[Path]) -> dict[str, Path]:
@@ -221,25 +201,29 @@ def _package_folder(folder: Path) -> Path | None:
 
 def _imported(main: Path, package: Path) -> list[Path]:
     """The modules of `package` that `main` imports (`from pkg.node import N`,
-    `from .node import N`): where an entry point's node class often lives."""
+    `from .node import N`, `from ..pkg import node`, `import pkg.node`): where an
+    entry point's node class often lives. A name a `from` import takes may be a
+    submodule, so that is tried too."""
     try:
         tree = ast.parse(read_text(main, MAX_BUILD_BYTES))
     except (UnreadableError, SyntaxError, ValueError, RecursionError, MemoryError):
         return []
+    here = Path(os.path.relpath(main.parent, package)).parts
+    here = () if here == (".",) else here
     found = []
     for node in ast.walk(tree):
         modules: list[str] = []
-        if isinstance(node, ast.ImportFrom) and node.module:
-            if node.level:
-                here = os.path.relpath(main.parent, package).replace(os.sep, ".")
-                prefix = "" if here == "." else here + "."
-                modules = [prefix + node.module]
-            else:
-                modules = [node.module]
+        if isinstance(node, ast.ImportFrom):
+            if node.level > len(here) + 1:
+                continue  # above the package: not one of its modules
+            base = here[: len(here) - node.level + 1] if node.level else ()
+            head = ".".join([*base, *(node.module or "").split(".")]).strip(".")
+            names = [a.name for a in node.names if a.name != "*"]
+            modules = [head] + [f"{head}.{n}" if head else n for n in names]
         elif isinstance(node, ast.Import):
             modules = [a.name for a in node.names]
         for module in modules:
-            path = module_file(package, module)
+            path = module_file(package, module) if module else None
             if path is not None and path != main:
                 found.append(path)
     return found

@@ -162,8 +162,10 @@ def duplicate_interface(path: str, type_name: str, first: str) -> Diagnostic:
         (
             Note(f"`{type_name}` first defined here", first, 1),
             Note(
-                "the first file in msg-path order, then in path order, wins: remove "
-                "or rename the other"
+                "the first definition wins (the checked packages' files, then "
+                "msg-paths in order): remove or rename the other; a file that only "
+                "adds `#RobotFix#` lines to a type leaves its fields out "
+                "(`[pkg/Type]:`)"
             ),
         ),
     )
@@ -857,6 +859,22 @@ def parameter_value_type(
         span,
         f"{subject} is {got}, but the parameter is declared {expected}",
         _notes(declared, notes),
+    )
+
+
+def parameter_refinement_unchecked(
+    path: str, span: Span, subject: str, rule: str, declared: Declared, why: str
+) -> Diagnostic:
+    """RF102 as a note: a value in a parameter file that a refinement of its
+    parameter cannot be evaluated for (it names what only the running code knows),
+    said rather than passed over."""
+    return Diagnostic(
+        rules.REFINEMENT_UNPROVEN,
+        path,
+        span,
+        f"{subject} is not checked against {rule}{_owner(declared)}: {why}",
+        _notes(declared, ()),
+        level=Severity.NOTE,
     )
 
 

@@ -48,6 +48,7 @@ from robotfix.source import SourceFile
 
 if TYPE_CHECKING:
     from robotfix.project.summary import Project
+    from robotfix.stubs.load import StubSet
 
 # A Python file is summarised only if it mentions one of these (bytes, quick).
 MENTIONS = {
@@ -76,6 +77,8 @@ class Failure:
     expected: str = ""  # type errors: the declared type
     declared: Declared = field(default_factory=lambda: Declared("", None, None))
     why: str = ""
+    # not a failure: a refinement that cannot be evaluated for the value (`why`)
+    undecided: bool = False
 
 
 @dataclass
@@ -98,17 +101,19 @@ class Parameter:
             found = _declaration_failure(decl, typed)
             if found is not None:
                 return found
+        undecided = None  # the first refinement it cannot be checked against
         for attached in self.refinements:
             found = _refinement_failure(attached, typed, self.name)
-            if found is not None:
+            if found is not None and not found.undecided:
                 return found
+            undecided = undecided or found
         for definition in self.definitions:
             found = _definition_failure(
                 definition, typed, self.definitions_path[id(definition)], budget
             )
             if found is not None:
                 return found
-        return None
+        return undecided
 
 
 def check_parameter_files(
@@ -162,7 +167,9 @@ def check_parameter_files(
         layouts |= set(MENTIONS)
     words = tuple(w for layout in sorted(layouts) for w in MENTIONS.get(layout, ()))
     found = (
-        _summaries(python_files, words, known or {}, project, faults) if words else []
+        _summaries(python_files, words, known or {}, project, faults, config)
+        if words
+        else []
     )
     table = Table(found, definitions, launches.renamed if launches else None)
     for path in files:
@@ -174,7 +181,32 @@ def check_parameter_files(
     if launches is not None:
         out.extend(launches.check(table, read, faults))
         texts.update(launches.texts())
+    else:  # RF602 with the code's node names alone (launchcheck adds launch's)
+        names = table.node_names()
+        for key, loaded in sorted(read.items()):
+            with guard(key, out, faults):
+                out += unmatched_sections(key, loaded, names)
     return [d for d in out if not _silenced(d, texts.get(d.path, ""), config)]
+
+
+def unmatched_sections(
+    path: str, parameters: P.ParamFile, known: set[str]
+) -> list[Diagnostic]:
+    """RF602: a ROS 2 parameter file's sections that name no known node."""
+    if parameters.layout != "ros2":
+        return []
+    unmatched = [
+        (key, where)
+        for key, where in parameters.sections.items()
+        if (name := key.rstrip("/").rsplit("/", 1)[-1])
+        and "*" not in name
+        and name not in known
+    ]
+    if not unmatched:
+        return []
+    (line, col) = unmatched[0][1]
+    keys = [key for key, _ in unmatched]
+    return [messages.parameter_section_unmatched(path, line, col, keys)]
 
 
 def _check_file(path: Path, loaded: P.ParamFile, table: Table) -> list[Diagnostic]:
@@ -201,7 +233,8 @@ def _check_file(path: Path, loaded: P.ParamFile, table: Table) -> list[Diagnosti
             continue
         failures = [c.judge(typed, budget) for c in candidates]
         if all(f is not None for f in failures):
-            first = failures[0]
+            broken = [f for f in failures if f is not None and not f.undecided]
+            first = (broken or failures)[0]
             assert first is not None
             out.append(_report(str(path), entry, value, typed, first))
     return out
@@ -229,10 +262,12 @@ def _summaries(
     known: dict[str, Known],
     project: Project | None = None,
     faults: list[Fault] | None = None,
+    config: Config | None = None,
 ) -> list[Summary]:
     """The summaries of the files that mention one of `words` (a quick filter);
     those in `known` are not read again (unless their check made no summary).
-    A fault on one file is kept in `faults` (see `guard`)."""
+    A fault on one file is kept in `faults` (see `guard`); each file's stubs are
+    its settings' (`config`)."""
     found: list[Summary] = []
     seen: set[str] = set()
     for path in python_files:
@@ -256,8 +291,18 @@ def _summaries(
             source = SourceFile.from_bytes(str(path), data)
             if source.tree is not None:
                 resolver = project.resolver(path) if project is not None else None
-                found.append(summarize(source, resolver=resolver))
+                stubs = _stubs(config, path)
+                found.append(summarize(source, resolver=resolver, stubs=stubs))
     return found
+
+
+def _stubs(config: Config | None, path: Path) -> StubSet | None:
+    """The stubs a file's settings name (where a parameter API may be described)."""
+    if config is None:
+        return None
+    from robotfix.stubs.load import stub_set
+
+    return stub_set(config.for_file(path).stub_paths)
 
 
 def _load(
@@ -348,6 +393,15 @@ class Table:
             for owner in owners(summary)
             if not any(o in summary.auto_declare for o in summary.lineage(owner))
         ]
+
+    def node_names(self) -> set[str]:
+        """Every node name a ROS 2 section can match in the code: the nodes', and
+        the root keys of generate_parameter_library definitions."""
+        names = set(self.definitions)
+        for summary in self.summaries:
+            for found in summary.node_names.values():
+                names.update(found)
+        return names
 
     def ros2(self, entry: P.Entry, package: Path | None) -> list[Parameter]:
         node = entry.node_name
@@ -501,15 +555,36 @@ def _refinement_failure(
             "str": "a string",
         }[refinement.base]
         return Failure(True, "", P.type_words(typed.type), expected, declared)
-    term = _term(typed)
-    if term is None:
-        return None
     short = name.rsplit("/", 1)[-1].rsplit(".", 1)[-1].lstrip("~")
+    term = _term(typed)
+    undecided = None
     for part in A.conjuncts(refinement.predicate):
-        if fold(A.substitute(part, {"_": term})) is False:
-            shown = A.show(A.substitute(part, {"_": A.Name(short)}))
-            return Failure(False, f"`{shown}`", declared=declared)
-    return None
+        if isinstance(part, A.UnitIs):
+            continue  # a unit, a frame: nothing a value in a file can break
+        shown = f"`{A.show(A.substitute(part, {'_': A.Name(short)}))}`"
+        found = None if term is None else fold(A.substitute(part, {"_": term}))
+        if found is False:
+            return Failure(False, shown, declared=declared)
+        if found is None and undecided is None:
+            why = _why_undecided(part, term)
+            undecided = Failure(
+                False, shown, declared=declared, why=why, undecided=True
+            )
+    return undecided
+
+
+def _why_undecided(part: A.Expr, term: A.Expr | None) -> str:
+    """Why a refinement's part cannot be evaluated for a value in a file."""
+    if term is None:
+        return "RobotFix evaluates refinements for numbers, booleans and strings"
+    names = sorted({n.name for n in A.names(part) if n.name != "_"})
+    if names:
+        shown = ", ".join(f"`{n}`" for n in names)
+        return (
+            f"{shown} is only known to the running code (a file's value is checked "
+            "against constants, `math.pi` and the like)"
+        )
+    return "RobotFix cannot evaluate it for a value"
 
 
 def _term(typed: P.Typed) -> A.Expr | None:
@@ -624,7 +699,12 @@ def report_failure(
     path: str, span: Span, subject: str, typed: P.Typed, failure: Failure
 ) -> Diagnostic:
     """RF401 or RF101 for a value (`subject`) at `span`; `typed.how` says how ROS
-    came to read it so, when its text does not."""
+    came to read it so, when its text does not. RF102, a note, for a value a
+    refinement cannot be evaluated for (`Failure.undecided`)."""
+    if failure.undecided:
+        return messages.parameter_refinement_unchecked(
+            path, span, subject, failure.rule, failure.declared, failure.why
+        )
     if failure.type_error:
         return messages.parameter_value_type(
             path,

@@ -11,7 +11,7 @@ import signal
 import sys
 import time
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -110,6 +110,45 @@ def check_paths(
 GC_THRESHOLD = 50_000  # allocations before a young collection (Python's: 700)
 
 
+@dataclass
+class _Group:
+    """The files of a run whose nearest configuration is not the run's: checked
+    with their own settings (`config.by_settings`), in a run of their own over the
+    same paths that reports only their files and the problems of the interface
+    files only they read; the types they used count for the others'."""
+
+    files: set[Path]
+    shared: set[str]  # the run's own interface files: their problems are its
+    used: set[str] = field(default_factory=set)
+
+
+def _check_groups(
+    paths: list[Path],
+    config: Config,
+    found: Discovery,
+    jobs: int,
+    use_cache: bool,
+    trusted: bool,
+) -> tuple[list[Result], set[str], set[Path]]:
+    """Each group of files with settings of their own, checked apart: their
+    results, the message types they used, and their files."""
+    from robotfix.config import by_settings
+
+    results: list[Result] = []
+    used: set[str] = set()
+    grouped: set[Path] = set()
+    shared = {str(p) for p in found.interface_files}
+    base = config.cache_dir or config.root / ".robotfix_cache"
+    for settings, files in by_settings(found.python_files, config):
+        name = hashlib.sha256(str(settings.source).encode()).hexdigest()[:16]
+        own = replace(settings, cache_dir=base / "configs" / name)
+        group = _Group(set(files), shared)
+        results.append(_check_paths(paths, own, None, jobs, use_cache, trusted, group))
+        used |= group.used
+        grouped |= group.files
+    return results, used, grouped
+
+
 def _check_paths(
     paths: list[Path],
     config: Config,
@@ -117,6 +156,7 @@ def _check_paths(
     jobs: int,
     use_cache: bool,
     trusted: bool = True,
+    group: _Group | None = None,
 ) -> Result:
     started = time.perf_counter()
     result = Result()
@@ -130,6 +170,18 @@ def _check_paths(
         else None
     )
     found = _discover(paths, config, cache)
+    everything = found.python_files
+    if group is not None:  # only its files; the run reports what is run-wide
+        found = replace(found, python_files=[f for f in everything if f in group.files])
+        found.notices = []
+    groups: list[Result] = []
+    used: set[str] = set()  # the message types the checked files looked up
+    grouped: set[Path] = set()
+    if group is None and config.flags is not None:
+        groups, used, grouped = _check_groups(
+            paths, config, found, jobs, use_cache, trusted
+        )
+        found = replace(found, python_files=[f for f in everything if f not in grouped])
     result.diagnostics.extend(found.notices)
     result.diagnostics.extend(stub_problems(config))
     interfaces = _Interfaces(
@@ -140,7 +192,6 @@ def _check_paths(
     )
     catalog = _catalog(interfaces, config)
     project = make_project(paths, config, catalog)
-    used: set[str] = set()  # the message types the checked files looked up
     files = found.python_files
     result.files = len(files)
     result.checked = [str(file) for file in files]
@@ -230,15 +281,30 @@ def _check_paths(
     if cache is not None:  # those built here to see whether a cached result holds
         cache.remember_summaries(project.fresh_summaries())
     problems = known[1] if known is not None else raw_interface_problems(catalog)
-    result.diagnostics.extend(interface_problems(catalog, used, problems))
+    interface = interface_problems(catalog, used, problems)
+    if group is not None:  # the run reports the problems of its own files
+        group.used |= used
+        interface = [d for d in interface if d.path not in group.shared]
+    result.diagnostics.extend(interface)
     if cache is not None and snapshot:
         cache.put_catalog(snapshot, catalog.digest_table(), problems, catalog.outline())
-    result.diagnostics.extend(
-        _parameter_problems(
-            found, files, config, cache, parameters, project, result.internal_errors
+    if group is None:
+        result.diagnostics.extend(
+            _parameter_problems(
+                found,
+                everything,
+                config,
+                cache,
+                parameters,
+                project,
+                result.internal_errors,
+            )
         )
-    )
-    result.files += len(found.parameter_files)
+        result.files += len(found.parameter_files)
+    for other in groups:
+        _merge(result, other)
+    if groups:
+        result.checked = [str(file) for file in everything]
     result.diagnostics = finish(result.diagnostics)
     if cache is not None:
         cache.put_resolution(project.index.keep())
@@ -250,6 +316,14 @@ def _check_paths(
         units.save_cache()
     result.seconds = time.perf_counter() - started
     return result
+
+
+def _merge(result: Result, other: Result) -> None:
+    """A group's result into the run's (`finish` sorts the diagnostics)."""
+    result.diagnostics.extend(other.diagnostics)
+    result.files += other.files
+    result.from_cache += other.from_cache
+    result.internal_errors.extend(other.internal_errors)
 
 
 def _discover(
@@ -267,6 +341,8 @@ def _discover(
         return known
     trace = Trace()
     found = discover(paths, config, trace=trace)
+    for source in config.nested_sources():  # their `exclude` counts too
+        trace.stamp(source)
     cache.put_discovery(key, found, trace)
     return found
 
@@ -596,7 +672,7 @@ def _check_one(
             parsed = parsed or SourceFile.from_bytes(str(path), data)
             try:  # a fault here is paramcheck's to meet, as without this
                 parameters = (
-                    summarize(parsed, resolver=resolver)
+                    summarize(parsed, resolver=resolver, stubs=stubs)
                     if parsed.tree is not None
                     else None
                 )

@@ -2,10 +2,10 @@
 
 from fractions import Fraction
 
-from robotfix.analysis.vc import VC, Proved, Unproven
 from robotfix.annotations import ast as A
 from robotfix.api import Discharger
 from robotfix.smt.propositional import satisfiable
+from robotfix.vc import VC, Proved, Unproven
 
 P, Q = A.Sym(1, "bool"), A.Sym(2, "bool")
 X = A.Sym(3, "real")

@@ -6,10 +6,10 @@ from fractions import Fraction
 
 import pytest
 
-from robotfix.analysis.vc import VC, Proved, Unproven, Violated
 from robotfix.annotations import ast as A
 from robotfix.smt.fold import fold
 from robotfix.smt.solver import check
+from robotfix.vc import VC, Proved, Unproven, Violated
 
 X = A.Sym(1, "real")
 

@@ -152,17 +152,22 @@ def _run(args: argparse.Namespace) -> tuple[int, list[str]]:
                 f"ament_robotfix: skipped {path}: in a folder with {IGNORE_MARKER}",
                 file=sys.stderr,
             )
-    settings = replace(
-        settings,
-        msg_paths=tuple(args.msg_path) + settings.msg_paths,
-        strict=args.strict or settings.strict,
+    flags = config.Flags(
+        msg_paths=tuple(args.msg_path),
+        strict=args.strict or None,
         output_format="text",
-        exclude=settings.exclude + tuple(args.excludes) + ignored,
+        exclude=tuple(args.excludes) + ignored,
         cache_dir=args.cache_dir or default_cache_dir(paths),
     )
-    result = api.check_paths(
-        paths, settings, jobs=default_jobs(), use_cache=not args.no_cache
-    )
+    settings = flags.apply(settings)
+    if args.config is not None:  # its settings for every file, as ruff's --config
+        settings = replace(settings, flags=None)
+    try:
+        result = api.check_paths(
+            paths, settings, jobs=default_jobs(), use_cache=not args.no_cache
+        )
+    except config.ConfigError as err:  # a nested package's configuration
+        return _fail([str(err)])
     if not result.checked:
         return _fail(["no Python files found in " + ", ".join(map(str, named))])
     status = cli.report(result, settings)

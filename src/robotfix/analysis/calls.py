@@ -340,22 +340,18 @@ class CallEvaluator(LibraryEvaluator):
         sub = self.helper_evaluator(function)
         if sub is None:
             return None
-        ctx, env = self.ctx, state.env
-        hovers, flows, dropped = ctx.hovers, ctx.unit_flows, ctx.dropped
-        ctx.hovers = ctx.unit_flows = None  # the helper's text shows its own
-        ctx.muted += 1
+        ctx, env, dropped = self.ctx, state.env, self.ctx.dropped
         state.env = {}
         try:
-            bindings = {
-                name: value if isinstance(value, Value) else sub.eval(value, state)  # type: ignore[arg-type]
-                for name, value in given.items()
-            }
-            state.env = dict(bindings)
-            value = sub.eval(expr, state)
+            with ctx.quiet():  # the helper's text shows its own hovers and flows
+                bindings = {
+                    name: value if isinstance(value, Value) else sub.eval(value, state)  # type: ignore[arg-type]
+                    for name, value in given.items()
+                }
+                state.env = dict(bindings)
+                value = sub.eval(expr, state)
         finally:
             state.env = env
-            ctx.hovers, ctx.unit_flows = hovers, flows
-            ctx.muted -= 1
         return value if ctx.dropped == dropped else None
 
     def _inlinable(

@@ -24,7 +24,6 @@ from robotfix.analysis.values import (
     Value,
     replace,
 )
-from robotfix.analysis.vc import VC, Proved, Undecided, Unproven, Violated
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.units import Unit
@@ -32,6 +31,7 @@ from robotfix.annotations.witness import closed_value
 from robotfix.diagnostics import Span
 from robotfix.messages import Declared
 from robotfix.ros.catalog import FieldSpec, FieldUnit, Invariant, MsgSpec
+from robotfix.vc import VC, Proved, Undecided, Unproven, Violated
 
 PROVED, WARNED, FAILED = "proved", "warned", "failed"
 # Sub-messages one check may create before it checks only one of each type: the

@@ -11,11 +11,11 @@ from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
 from robotfix.analysis.values import sort_of
-from robotfix.analysis.vc import VC, Proved, Verdict
 from robotfix.annotations import ast as A
 from robotfix.annotations.witness import has_witness
 from robotfix.budget import Budget
 from robotfix.ros.catalog import Invariant, MsgCatalog, MsgSpec, Origin
+from robotfix.vc import VC, Proved, Verdict
 
 Discharge = Callable[[VC], Verdict]
 

@@ -8,7 +8,8 @@ from __future__ import annotations
 import ast
 import builtins
 import itertools
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
@@ -18,7 +19,6 @@ from robotfix.analysis.constants import ConstantNames
 from robotfix.analysis.imported import absolute_imports, dotted_name
 from robotfix.analysis.index import FileIndex, index_scope
 from robotfix.analysis.values import SORTS, Value, sort_of
-from robotfix.analysis.vc import VC, Verdict
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Alias, Names, Refinement, extract
 from robotfix.budget import Budget
@@ -26,6 +26,7 @@ from robotfix.diagnostics import Diagnostic, Span
 from robotfix.ros.catalog import Invariant, MsgCatalog, MsgSpec
 from robotfix.source import SourceFile
 from robotfix.stubs.load import StubSet
+from robotfix.vc import VC, Verdict
 
 if TYPE_CHECKING:
     from robotfix.analysis.flows import FlowLog
@@ -219,6 +220,19 @@ class FileContext:
                 else "an expression"
             )
         return found or f"value #{ident}"
+
+    @contextmanager
+    def quiet(self) -> Iterator[None]:
+        """Analysis whose reports, hovers and unit flows are dropped: a helper
+        evaluated at its call, a loop's first iteration run again."""
+        hovers, flows = self.hovers, self.unit_flows
+        self.hovers = self.unit_flows = None
+        self.muted += 1
+        try:
+            yield
+        finally:
+            self.hovers, self.unit_flows = hovers, flows
+            self.muted -= 1
 
     def step(self, node: ast.AST, steps: int = 1) -> None:
         """Count `steps` of the file's work at `node`; past its budget, stop."""

@@ -26,7 +26,7 @@ from robotfix.analysis.state import State
 from robotfix.analysis.values import NONE, SEQUENCES, Items, Value, replace
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
-from robotfix.annotations.numbers import NUMBERS, named_number
+from robotfix.annotations.numbers import NUMBERS, named_code, named_number
 from robotfix.annotations.units import DIMENSIONLESS, Factors, Unit, converted
 from robotfix.diagnostics import Span
 from robotfix.ros.catalog import constant_term
@@ -333,6 +333,9 @@ class ExpressionEvaluator:
         number = named_number(qualified) if attr in NUMBERS else None
         if number is not None:
             return Value("float", A.Num(number, False), literal=True)
+        code = named_code(qualified)
+        if code is not None:
+            return Value("int", A.Num(Fraction(code), True), literal=True)
         msg_type = self.ctx.msg_type_named(qualified)
         if msg_type is not None:
             return Value("msgclass", name=msg_type)

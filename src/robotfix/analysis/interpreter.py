@@ -52,7 +52,7 @@ from robotfix.analysis.values import (
 )
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
-from robotfix.annotations.numbers import named_number
+from robotfix.annotations.numbers import named_code, named_number
 from robotfix.astwalk import children, walk
 from robotfix.diagnostics import Span
 
@@ -257,6 +257,9 @@ class Interpreter(CallEvaluator):
         self.guarded = 0  # inside a `try` body whose handlers catch NameError
         self.nested: dict[str, ast.AST] = {}  # functions defined in this body
         self._shared: set[str] | None = None  # names whose lists may be shared
+        # per loop being run, innermost last: the states at its `break`s, kept only
+        # while a loop's first iteration is run again (`_first_breaks`), else None
+        self._breaking: list[list[State] | None] = []
 
     # -- blocks --------------------------------------------------------------
     def exec_block(self, body: list[ast.stmt], state: State) -> State:
@@ -295,8 +298,12 @@ class Interpreter(CallEvaluator):
                         state, bound.when, name, self.site, node
                     )
                 ):
-                    state.env[name] = MAYBE  # one bug, one diagnostic
-                    return Value("unknown", uninit=Uninit(name, decl is not None))
+                    if bound.value is None:
+                        state.env[name] = MAYBE  # one bug, one diagnostic
+                        return Value("unknown", uninit=Uninit(name, decl is not None))
+                    state.env[name] = bound.value  # past the read, it was bound
+                if bound.value is not None:
+                    return state.use(bound.value) if state.shared.defs else bound.value
                 return self.unknown(
                     node, decl.base if decl else "unknown", decl.unit if decl else None
                 )
@@ -1336,10 +1343,15 @@ class Interpreter(CallEvaluator):
         return state
 
     def visit_Break(self, node: ast.stmt, state: State) -> State:
+        kept = self._breaking[-1] if self._breaking else None
+        if kept is not None:
+            kept.append(state.fork())
         state.reachable = False
         return state
 
-    visit_Continue = visit_Break
+    def visit_Continue(self, node: ast.stmt, state: State) -> State:
+        state.reachable = False
+        return state
 
     def visit_Pass(self, node: ast.stmt, state: State) -> State:
         return state
@@ -1384,8 +1396,11 @@ class Interpreter(CallEvaluator):
                 if msg_type or interface
                 else imported.constant(self.ctx.resolver, qualified)
             )
+            code = named_code(qualified) if not node.level else None
             if number is not None:  # from math import pi
                 value = Value("float", A.Num(number, False), literal=True)
+            elif code is not None:  # from errno import EINTR
+                value = Value("int", A.Num(Fraction(code), True), literal=True)
             elif found is not None:  # a constant of a module of the tree
                 value = found
             elif msg_type:
@@ -1613,9 +1628,16 @@ class Interpreter(CallEvaluator):
         body_state = loop.fork()
         body_state.assume(self.condition(node.test, body_state))
         self._decided(node.test, body_state, loop)
-        end = self.exec_block(node.body, body_state)
+        end = self._iterate(node.body, body_state)
         self._loop_units(loop, end, [node])
         breaks = _breaks(node.body)
+        first: list[State] = []
+        if self._first_may_break(node.body, breaks, stored, entry):
+            start = entry.fork()
+            cond = self.condition(node.test, start)
+            start.assume(cond)
+            if _truth(cond) is not False:
+                first = self._first_breaks(node.body, start)
         # Normal exits: the condition is false, after some iterations or none.
         # (With a break, `normal` stands for the exits by break too.)
         normal = loop.fork() if breaks and node.orelse else loop
@@ -1636,7 +1658,7 @@ class Interpreter(CallEvaluator):
         failed = self._all_attempts_failed(node, entry, loop)
         if failed is not None:
             normal = self._join(failed, normal)
-        return self._after_loop(node, normal, loop, breaks)
+        return self._after_loop(node, normal, loop, breaks, first)
 
     def visit_For(self, node: ast.For | ast.AsyncFor, state: State) -> State:
         empty, nonempty, iterable = self._empty_when(node.iter, state)
@@ -1652,17 +1674,16 @@ class Interpreter(CallEvaluator):
             for name, bound in list(body_state.env.items()):
                 if isinstance(bound, MaybeUnbound) and bound.when is not None:
                     body_state.env[name] = MAYBE
-        element = (
-            self.element(iterable, node.target, body_state)
-            if iterable is not None
-            and iterable.kind in SEQUENCES
-            and isinstance(node, ast.For)
-            else self.unknown(node.target)
-        )
-        self.bind(node.target, element, body_state)
-        end = self.exec_block(node.body, body_state)
+        self._bind_element(node, iterable, body_state)
+        end = self._iterate(node.body, body_state)
         self._loop_units(loop, end, [node])
         breaks = _breaks(node.body)
+        first: list[State] = []
+        if self._first_may_break(node.body, breaks, stored, entry):
+            start = entry.fork()
+            start.assume(nonempty)
+            self._bind_element(node, iterable, start)
+            first = self._first_breaks(node.body, start)
         normal = loop.fork() if breaks and node.orelse else loop
         targets = {t.id for t in walk(node.target) if isinstance(t, ast.Name)}
         if (
@@ -1679,7 +1700,65 @@ class Interpreter(CallEvaluator):
         failed = self._all_attempts_failed(node, entry, loop)
         if failed is not None:
             normal = self._join(failed, normal)
-        return self._after_loop(node, normal, loop, breaks)
+        return self._after_loop(node, normal, loop, breaks, first)
+
+    def _bind_element(
+        self, node: ast.For | ast.AsyncFor, iterable: Value | None, state: State
+    ) -> None:
+        element = (
+            self.element(iterable, node.target, state)
+            if iterable is not None
+            and iterable.kind in SEQUENCES
+            and isinstance(node, ast.For)
+            else self.unknown(node.target)
+        )
+        self.bind(node.target, element, state)
+
+    def _iterate(self, body: list[ast.stmt], state: State) -> State:
+        """A loop's body, run once from the loop head: its `break`s are exits the
+        loop head's state already stands for."""
+        self._breaking.append(None)
+        try:
+            return self.exec_block(body, state)
+        finally:
+            self._breaking.pop()
+
+    def _first_may_break(
+        self, body: list[ast.stmt], breaks: bool, stored: set[str], entry: State
+    ) -> bool:
+        """Whether a `break` of the first iteration may leave a name the loop binds
+        unbound: the loop has a `break`, binds a name unbound on entry that no
+        plain assignment before the first statement holding a `break` binds, and
+        is not inside a first iteration run again (which would double the work at
+        every level of nesting)."""
+        if not breaks or any(kept is not None for kept in self._breaking):
+            return False
+        local = self.scope.local_names
+        new = {
+            n for n in stored if n in local and not isinstance(entry.env.get(n), Value)
+        }
+        for stmt in body:
+            if not new or _breaks([stmt]):
+                break
+            if isinstance(stmt, ast.Assign | ast.AnnAssign) and stmt.value is not None:
+                new -= bound_names([stmt])
+        return bool(new)
+
+    def _first_breaks(self, body: list[ast.stmt], start: State) -> list[State]:
+        """The states at the `break`s of the loop's first iteration, run again from
+        the state before the loop (`start`, its test assumed): a name the iteration
+        binds after a `break` is unbound there (`if not line: break` before
+        `value = parse(line)`), and a guard flag still holds its value from before
+        the loop. Run muted: the body's reports were made by the run from the loop
+        head."""
+        kept: list[State] = []
+        self._breaking.append(kept)
+        try:
+            with self.ctx.quiet():
+                self.exec_block(body, start)
+        finally:
+            self._breaking.pop()
+        return kept
 
     def _all_attempts_failed(
         self, node: ast.For | ast.AsyncFor | ast.While, entry: State, loop: State
@@ -1807,13 +1886,18 @@ class Interpreter(CallEvaluator):
         normal: State,
         loop: State,
         breaks: bool,
+        first: list[State],
     ) -> State:
         """`else` runs on normal exits; a `break` leaves with what the body may have
-        changed (the havocked loop state)."""
-        if not node.orelse:
-            return normal  # it already stands for the exits by `break`
-        result = self.exec_block(node.orelse, normal)
-        return self._join(result, loop) if breaks else result
+        changed (the havocked loop state), or, in the first iteration, with what
+        it changed so far (`first`)."""
+        if node.orelse:
+            result = self.exec_block(node.orelse, normal)
+            normal = self._join(result, loop) if breaks else result
+        # (without an `else`, `normal` already stands for the later exits by break)
+        for exit in first:
+            normal = self._join(normal, exit)
+        return normal
 
     def _binds_new_names(self, stored: set[str], entry: State) -> bool:
         """Is one of these names a local unbound on entry? Only then can skipping

@@ -47,7 +47,9 @@ class ParameterEvaluator(ExpressionEvaluator):
     def parameters(self) -> ParamContext:
         if self.ctx.parameters is None:
             self.ctx.parameters = ParamContext(
-                summarize(self.ctx.source, self.ctx.index, self.ctx.resolver)
+                summarize(
+                    self.ctx.source, self.ctx.index, self.ctx.resolver, self.ctx.stubs
+                )
             )
         return self.ctx.parameters
 

@@ -41,10 +41,10 @@ from robotfix.analysis.constants import scan
 from robotfix.analysis.index import FileIndex, index_of
 from robotfix.analysis.program import call_argument
 from robotfix.analysis.values import Value
-from robotfix.analysis.vc import VC, Violated
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Alias, Names, Refinement, extract
 from robotfix.annotations.numbers import INFINITY, named_number
+from robotfix.annotations.parser import parse_predicate
 from robotfix.astwalk import walk
 from robotfix.messages import Declared
 from robotfix.ros.api_model import (
@@ -54,10 +54,13 @@ from robotfix.ros.api_model import (
 )
 from robotfix.ros.rclpy_params import Range, python_type
 from robotfix.source import SourceFile
+from robotfix.vc import VC, Violated
 
 if TYPE_CHECKING:
     from robotfix.analysis.checks import Checker
     from robotfix.analysis.state import State
+    from robotfix.stubs.load import Param as StubParam
+    from robotfix.stubs.load import StubSet
 
 MODULE = "<module>"
 ROSPY = "rospy"
@@ -188,7 +191,7 @@ class Summary:
 # file's own check (`ParamContext`), with the resolver it was made with (the check's
 # own: they see the same modules); a summary is not changed once made
 _SUMMARIES: weakref.WeakKeyDictionary[
-    ast.Module, tuple[imported.Resolver | None, Summary]
+    ast.Module, tuple[tuple[imported.Resolver | None, StubSet | None], Summary]
 ] = weakref.WeakKeyDictionary()
 
 
@@ -196,20 +199,27 @@ def summarize(
     source: SourceFile,
     index: FileIndex | None = None,
     resolver: imported.Resolver | None = None,
+    stubs: StubSet | None = None,
 ) -> Summary:
     """What `source` declares and reads; an empty summary for a file with no tree.
     `resolver`: how the file sees the other modules of its tree (an alias or a
-    constant a refinement imports from them); None, it sees none."""
+    constant a refinement imports from them); None, it sees none. `stubs`: where
+    a parameter API of another framework may be described (`@ros_parameter`)."""
     tree = source.tree
     if tree is None:
         return Summary(source.path)
     shared = index_of(tree)
     if index is not None and index is not shared:
-        return _summarize(source, tree, index, resolver)
-    made, found = _SUMMARIES.get(tree, (None, None))
-    if found is None or found.path != source.path or made is not resolver:
-        found = _summarize(source, tree, shared, resolver)
-        _SUMMARIES[tree] = (resolver, found)
+        return _summarize(source, tree, index, resolver, stubs)
+    made, found = _SUMMARIES.get(tree, ((None, None), None))
+    if (
+        found is None
+        or found.path != source.path
+        or made[0] is not resolver
+        or made[1] is not stubs
+    ):
+        found = _summarize(source, tree, shared, resolver, stubs)
+        _SUMMARIES[tree] = ((resolver, stubs), found)
     return found
 
 
@@ -218,11 +228,12 @@ def _summarize(
     tree: ast.Module,
     index: FileIndex,
     resolver: imported.Resolver | None,
+    stubs: StubSet | None = None,
 ) -> Summary:
     summary = Summary(source.path)
     summary.constants = _module_constants(tree, index)
     summary.imports = index.imports
-    walker = _Walker(source, index, summary, summary.constants, resolver)
+    walker = _Walker(source, index, summary, summary.constants, resolver, stubs)
     module_body: list[ast.stmt] = []
     for statement in tree.body:
         if isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef)):
@@ -390,6 +401,21 @@ def constant_of(
     return UNKNOWN
 
 
+def _position(param: StubParam) -> int:
+    """Where a call passes a stub's parameter by position (past any position a
+    call has when it is keyword-only: `call_argument` then reads the keyword)."""
+    if param.positional is None or param.variadic:
+        return 1 << 30
+    return param.positional
+
+
+def _number_text(value: object) -> str | None:
+    """A bound's constant as refinement text (`0.5`, `-1`); None if not a number."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        return None
+    return repr(value) if math.isfinite(value) else None
+
+
 def _named_number(qualified: str) -> float | None:
     """`math.pi`, `np.tau`: the double Python holds (infinity is not a constant)."""
     number = named_number(qualified)
@@ -446,12 +472,14 @@ class _Walker:
         summary: Summary,
         constants: dict[str, object],
         resolver: imported.Resolver | None = None,
+        stubs: StubSet | None = None,
     ) -> None:
         self.source = source
         self.index = index
         self.summary = summary
         self.constants = constants
         self.resolver = resolver
+        self.stubs = stubs
 
     # -- names ------------------------------------------------------------------
     def qualname(self, node: ast.expr) -> str | None:
@@ -586,6 +614,40 @@ class _Walker:
             self.init(call)
         elif name == "ParamListener" and isinstance(func, ast.Attribute):
             self.listener(call, func)
+        elif self.stubs is not None and qualified:
+            self.described(call, qualified)
+
+    def described(self, call: ast.Call, qualified: str) -> None:
+        """A call of a parameter API a stub describes (`@ros_parameter`): a read of
+        the ROS 1 parameter it names, as `rospy.get_param`, its bounds a
+        refinement of its value (`DTParam("~gain", min_value=0, max_value=1)`)."""
+        from robotfix.stubs.load import Class
+
+        assert self.stubs is not None
+        found = self.stubs.lookup(qualified)
+        if isinstance(found, Class):
+            found = found.method("__init__")  # a class: its constructor
+        if found is None or not found.parameter:
+            return
+        params = {p.name: p for p in found.params}
+        given = {
+            role: call_argument(call, _position(params[held]), held)
+            for role, held in found.parameter
+        }
+        decl = self.ros1_read(call, given["name"], given.get("default"))
+        bounds = [
+            (op, text)
+            for op, role in (("_ >= ", "low"), ("_ <= ", "high"))
+            if (text := _number_text(self.const(given.get(role)))) is not None
+        ]
+        if decl is None or not bounds:
+            return
+        text = " and ".join(op + number for op, number in bounds)
+        refinement = Refinement("other", None, parse_predicate(text), text, call.lineno)
+        shown = f'{found.short}("{decl.name}")'  # the notes' "annotation of ..."
+        self.summary.attached.append(
+            Attached(ROSPY, decl.name, refinement, shown, decl.path, decl.line, True)
+        )
 
     def _on_self(self, call: ast.Call) -> bool:
         """`super().__init__(...)` or `Base.__init__(self, ...)`."""
@@ -779,9 +841,9 @@ class _Walker:
         if name in self.constants:
             return _python_constant(name, self.constants[name])
         qualified = self.index.imports.get(head)
-        number = _named_number(f"{qualified}{dot}{rest}") if qualified else None
-        if number is not None:
-            return _python_constant(name, number)
+        number = named_number(f"{qualified}{dot}{rest}") if qualified else None
+        if number is not None:  # infinity too: 10**400, above every double
+            return A.Num(number, False, label=name)
         base = self._in_tree.get(head)
         found = imported.constant(self.resolver, f"{base}{dot}{rest}") if base else None
         return A.labelled(found.term, name) if found is not None else None
@@ -941,11 +1003,20 @@ class _Walker:
             return PARAMETER_TYPES.get(node.attr)
         return None
 
-    def ros1_read(self, call: ast.Call) -> None:
-        name = self.text(call_argument(call, 0, "param_name"))
+    def ros1_read(
+        self,
+        call: ast.Call,
+        name_node: ast.expr | None = None,
+        default_node: ast.expr | None = None,
+    ) -> ParamDecl | None:
+        """`rospy.get_param(name, default)`, or another read of a ROS 1 parameter
+        whose name and default are those arguments."""
+        if name_node is None:
+            name_node = call_argument(call, 0, "param_name")
+            default_node = call_argument(call, 1, "default")
+        name = self.text(name_node)
         if name is None:
-            return
-        default_node = call_argument(call, 1, "default")
+            return None
         decl = ParamDecl(
             ROSPY,
             name,
@@ -963,6 +1034,7 @@ class _Walker:
                 self.source.char_col(default_node.lineno, default_node.col_offset),
             )
         self.summary.decls.append(decl)
+        return decl
 
     # -- descriptors ------------------------------------------------------------------
     def descriptor(self, node: ast.expr | None, before: int) -> _Described:

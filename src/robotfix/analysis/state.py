@@ -36,6 +36,10 @@ class MaybeUnbound:
     # The ids of the decisions taken before the paths split (where it became
     # unbound): ties among those alone do not make the read less sure.
     early: frozenset[int] = field(default=frozenset(), compare=False)
+    # What it holds on the paths where it is bound (merged as any value is, so a
+    # read that did not raise still knows it: `code = -1` on the path that left the
+    # loop early), if known.
+    value: Value | None = field(default=None, compare=False)
 
 
 MAYBE = MaybeUnbound()
@@ -233,10 +237,12 @@ def join(a: State, b: State, joiner: Joiner) -> State:
         else:
             (known_a, wa), (known_b, wb) = _unbound(x), _unbound(y)
             known = known_a and known_b
+            va, vb = _bound_value(x), _bound_value(y)
             env[name] = MaybeUnbound(
                 _either(selector(), wa, wb) if known else None,
                 merged(_tests(x, a), _tests(y, b)),
                 _early(x, common_tests()) & _early(y, common_tests()),
+                merge(va, vb) if va is not None and vb is not None else va or vb,
             )
     heap = _join_heaps(a, b, joiner, merge, unset)
     facts = a.facts[:common]
@@ -403,6 +409,13 @@ def _unbound(binding: Binding | None) -> tuple[bool, A.Expr | None]:
     if isinstance(binding, MaybeUnbound):
         return binding.when is not None, binding.when
     return True, None
+
+
+def _bound_value(binding: Binding | None) -> Value | None:
+    """What a binding holds where it is bound, if known."""
+    if isinstance(binding, MaybeUnbound):
+        return binding.value
+    return binding
 
 
 def _tests(binding: Binding | None, side: State) -> Decisions:

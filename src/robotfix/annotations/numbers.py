@@ -1,5 +1,5 @@
 """Named numbers that code and annotations may use: `math.pi`, `math.tau`, `math.e`,
-`math.inf` and numpy's, as exact fractions.
+`math.inf` and numpy's, as exact fractions; `errno`'s codes, as integers.
 
 `pi` is the double Python computes with (3.141592653589793...), not the real number:
 that is the value a program compares against, and what `math.atan2` stays within.
@@ -9,6 +9,7 @@ every finite float is below it.
 
 from __future__ import annotations
 
+import errno
 import math
 import sys
 from fractions import Fraction
@@ -36,3 +37,15 @@ def named_number(qualified: str) -> Fraction | None:
     """`math.pi` -> its value; None for any other name."""
     module, _, name = qualified.rpartition(".")
     return NUMBERS.get(name) if module in MODULES else None
+
+
+def named_code(qualified: str) -> int | None:
+    """`errno.ECONNREFUSED` -> the code this Python's `errno` gives it (what a
+    program running on this kind of system compares against; on every system a
+    positive integer); None for any other name. A retry loop's `code =
+    -errno.ECONNREFUSED` is then known to be negative where the code tests it."""
+    module, _, name = qualified.rpartition(".")
+    if module != "errno" or not name.startswith("E"):
+        return None
+    value = getattr(errno, name, None)
+    return value if type(value) is int else None

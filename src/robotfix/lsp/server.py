@@ -2,8 +2,9 @@
 refinements, over stdio (`lsp/rpc.py`, the JSON-RPC layer; `lsp/documents.py`, the
 open documents, synced incrementally). A thin adapter over `api`: no analysis here.
 
-Interface files and settings come from the nearest `pyproject.toml` of each document
-and from the ROS package around it (`_interface_folders`). A catalog is rebuilt when an
+Interface files and settings come from the nearest configuration of each document
+(`config.find`: all its settings, as a run gives that file) and from the ROS package
+around it (`_interface_folders`). A catalog is rebuilt when an
 interface file is added, removed or changed (its path, size, times or inode) or its
 editor buffer changes, so an edited `.msg` counts before it is saved. An open
 interface file shows its own problems. When one changes (typed, saved, closed, or
@@ -135,7 +136,6 @@ def _interface_folders(path: Path, settings: config.Config) -> list[Path]:
 
 
 def _settings(path: Path) -> config.Config:
-    """The `[tool.robotfix]` settings of a document, as a run on that file reads."""
     try:
         return config.load(path)
     except config.ConfigError:
@@ -153,6 +153,7 @@ def _catalog(ls: Session, path: Path) -> MsgCatalog:
         settings.rep103,
         settings.ros_distro,
         settings.unit_suffixes,
+        settings.python_paths,  # one module summary set per catalog (`_project`)
         id(_INSTALLED),  # its catalogs hold it: no other install space gets its id
     )
     stamp = (tuple(_stamp(file) for file in files), tuple(sorted(texts.items())))
@@ -173,7 +174,9 @@ def _catalog(ls: Session, path: Path) -> MsgCatalog:
     return catalog
 
 
-def _project(catalog: MsgCatalog, path: Path) -> Project:
+def _project(
+    catalog: MsgCatalog, path: Path, settings: config.Config | None = None
+) -> Project:
     """The module summaries for documents checked with `catalog`, kept across
     keystrokes. Built again when a file a summary was read from changes (its stamp)
     or a folder around one, or on `path`'s search path, does (a module added or
@@ -184,7 +187,7 @@ def _project(catalog: MsgCatalog, path: Path) -> Project:
         if all(_stamp(f) == stamp for f, stamp in stamps.items()):
             _record(project, stamps, path)
             return project
-    project = api.make_project([], config.Config(), catalog)
+    project = api.make_project([], settings or config.Config(), catalog)
     if len(_projects) >= MAX_PROJECTS:
         _projects.clear()
     stamps = {}
@@ -279,14 +282,10 @@ def _publish(ls: Session, uri: str) -> None:
         if _is_interface(path):
             found = api.catalog_problems(catalog)
         else:
-            project = _project(catalog, path)
+            settings = _settings(path)  # the nearest configuration's, as a run's
+            project = _project(catalog, path, settings)
             found = api.check_source(
-                text,
-                str(path),
-                _settings(path),  # its stub-paths
-                catalog=catalog,
-                project=project,
-                memo=_memo(uri),
+                text, str(path), settings, catalog, project, memo=_memo(uri)
             )
             _record(project, _projects[id(catalog)][2], path)
     except Exception as err:  # never take the editor session down
@@ -474,10 +473,9 @@ def hover(ls: Session, params: Any) -> dict[str, object] | None:
     col = char(source.split_lines(text), line + 1, character)
     try:
         catalog = _catalog(ls, path)
-        project = _project(catalog, path)
-        markdown = api.hover(
-            text, str(path), line + 1, col, catalog, _settings(path), project
-        )
+        settings = _settings(path)  # its stub-paths too
+        project = _project(catalog, path, settings)
+        markdown = api.hover(text, str(path), line + 1, col, catalog, settings, project)
         _record(project, _projects[id(catalog)][2], path)
     except Exception:
         return None

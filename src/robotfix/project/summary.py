@@ -47,11 +47,11 @@ if TYPE_CHECKING:  # the analysis is imported only when a summary is built
     from robotfix.analysis.state import State
     from robotfix.analysis.types import Type
     from robotfix.analysis.values import Value
-    from robotfix.analysis.vc import VC, Verdict
     from robotfix.annotations import ast as A
     from robotfix.annotations.extract import Names, Refinement
     from robotfix.ros.catalog import MsgCatalog
     from robotfix.source import SourceFile
+    from robotfix.vc import VC, Verdict
 
 Discharge = Callable[["VC"], "Verdict"]
 ABSENT = ""  # the fingerprint recorded for a name that is no module of the tree

@@ -15,7 +15,10 @@ bundled standard definitions. A user file shadows the install space's copy of it
 type; problems in installed files are kept apart (`installed_problems`), and an
 installed file with a line that does not parse is not used at all.
 When two user files define one type, the first in that order wins and the other gets
-RF510, unless both say the same (a copy, as in a colcon install/ tree).
+RF510, unless both say the same (a copy, as in a colcon install/ tree). A section
+without fields (an overlay: `[pkg/Type]:` and `#RobotFix#` lines) defines nothing:
+its lines are added to its type's definition wherever that comes from, after the
+definition's own, overlays in the order above.
 Constants (`uint8 ULTRASOUND=0`) come from rosbags and from user files; default values
 (`float64 w 1`) from user files and, for the standard messages, from `defaults.toml`
 (rosbags drops them). `#RobotFix#` lines may name the message's constants and `pi`,
@@ -253,7 +256,11 @@ class MsgCatalog:
         # its sections (name, has fields); files not read yet, by type they define
         self._outline: Outline | None = None
         self._lazy = False  # the types are declared from the outline, not read
-        self._unread: dict[str, int] = {}  # type -> index in the outline
+        # type -> indices in the outline of the files that define or overlay it
+        # (the definition first); `_read`: those read since
+        self._unread: dict[str, list[int]] = {}
+        self._read_indices: set[int] = set()
+        self._overlaid: set[tuple[str, tuple[Any, ...]]] = set()  # `_duplicate`
         self._no_reads = False  # REP 103 is applied before any file is resolved
 
     # -- public --------------------------------------------------------------
@@ -264,7 +271,7 @@ class MsgCatalog:
         else:
             self._declare_outline()
             if key in self._unread and not self._no_reads:
-                self._read_outlined(self._unread[key])
+                self._read_type(key)
         if self.touched is not None:
             self.touched.add(key)
         spec = self._specs.get(key)
@@ -463,6 +470,7 @@ class MsgCatalog:
         self._loaded = True
         files: list[InterfaceFile] = []
         first: dict[str, tuple[InterfaceFile, tuple[Any, ...]]] = {}
+        self._overlaid = set()  # (type, shape) of the overlays used, for copies
         outline: Outline = []
         # each file once, however spelled, and not rosidl's twin (`realpath` of
         # every file: a cached run with an outline does not need it)
@@ -472,7 +480,8 @@ class MsgCatalog:
                 continue
             parsed, digest = read
             for section in parsed.sections:
-                first[section.name] = (parsed, _shape(section))
+                if section.fields:  # an overlay defines nothing: it adds
+                    first.setdefault(section.name, (parsed, _shape(section)))
                 self._defined_by[section.name] = digest
             files.append(parsed)
             sections = [(x.name, bool(x.fields)) for x in parsed.sections]
@@ -480,7 +489,7 @@ class MsgCatalog:
         self._outline = outline
         for file in files:
             self._types_of[file.path] = tuple(s.name for s in file.sections)
-        for file in files:  # declare every type before resolving any field
+        for file in files:
             for problem in file.problems:
                 self._problem(
                     rules.MALFORMED_INTERFACE,
@@ -489,8 +498,11 @@ class MsgCatalog:
                     problem.col,
                     problem.message,
                 )
-            for section in file.sections:
-                self._declare(section)
+        # every type declared before any field is resolved: definitions first, then
+        # overlays (`_overlays_last`), which add to their type's definition wherever
+        # that comes from (a file here, the install space, the standard set)
+        for _, section in _overlays_last(files):
+            self._declare(section)
         if self._rep103:
             self._add_rep103()
         for file in files:
@@ -501,10 +513,9 @@ class MsgCatalog:
                     self._report(
                         messages.unprocessable_interface(file.path, 1, 0, "file", err)
                     )
-        for file in files:
-            for section in file.sections:
-                self._add_comment_units(file.path, section)
-                self._add_annotations(file.path, section)
+        for file, section in _overlays_last(files):
+            self._add_comment_units(file.path, section)
+            self._add_annotations(file.path, section)
 
     # -- the lazy load ---------------------------------------------------------
     def outline(self) -> Outline | None:
@@ -529,14 +540,19 @@ class MsgCatalog:
             return
         assert self._outline is not None
         self._loaded = self._lazy = True
-        for index, (path, digest, sections) in enumerate(self._outline):
+        for path, digest, sections in self._outline:
             self._types_of[path] = tuple(name for name, _ in sections)
             for name, _ in sections:
                 self._defined_by[name] = digest
-                self._unread[name] = index
-        for _, _, sections in self._outline:
-            for name, has_fields in sections:
-                self._declare_name(name, has_fields)
+        named = [
+            (name, has_fields, index)
+            for index, (_, _, sections) in enumerate(self._outline)
+            for name, has_fields in sections
+        ]
+        # as `load`: definitions first, then overlays (`_overlays_last`)
+        for name, has_fields, index in sorted(named, key=lambda n: not n[1]):
+            self._unread.setdefault(name, []).append(index)
+            self._declare_name(name, has_fields)
         if self._rep103:
             self._no_reads = True
             try:
@@ -550,8 +566,7 @@ class MsgCatalog:
         outline says."""
         assert self._outline is not None
         path, digest, sections = self._outline[index]
-        for name, _ in sections:
-            self._unread.pop(name, None)
+        self._read_indices.add(index)
         read = self._read(Path(path))
         if (
             read is None
@@ -570,10 +585,28 @@ class MsgCatalog:
                     messages.unprocessable_interface(parsed.path, 1, 0, "file", err)
                 )
         for section in parsed.sections:
+            if not section.fields:  # an overlay: its type's definition first
+                self._read_type(section.name, definitions_only=True)
             if not self._lazy:  # a file read meanwhile fell back to the whole load
                 return
             self._add_comment_units(parsed.path, section)
             self._add_annotations(parsed.path, section)
+
+    def _read_type(self, name: str, definitions_only: bool = False) -> None:
+        """Read the outline's files not read yet that define type `name` (and,
+        unless `definitions_only`, those that overlay it), definition first."""
+        outline = self._outline
+        assert outline is not None
+        todo = [
+            index
+            for index in self._unread.get(name, ())
+            if index not in self._read_indices
+            and not (definitions_only and (name, True) not in outline[index][2])
+        ]
+        self._read_indices.update(todo)  # a lookup while they are read reads none
+        for index in todo:
+            if self._lazy:  # else a file read fell back to the whole load
+                self._read_outlined(index)
 
     def _restart(self) -> None:
         """Forget a partial load (what `__init__` set; the digests stay: they are
@@ -586,6 +619,7 @@ class MsgCatalog:
         self.installed_problems = []
         self._types_of = {}
         self._unread = {}
+        self._read_indices = set()
         self._lazy = False
         self._loaded = False
 
@@ -615,13 +649,20 @@ class MsgCatalog:
         first: dict[str, tuple[InterfaceFile, tuple[Any, ...]]],
     ) -> bool:
         """Whether `file` defines a type an earlier file defines (RF510 unless it
-        says the same); such a file is not used."""
+        says the same), or holds only overlays an earlier file holds; such a file
+        is not used. An overlay (a section without fields) never clashes: it adds
+        its `#RobotFix#` lines to its type, wherever that is defined."""
         clashes = [
             (section, first[section.name])
             for section in file.sections
-            if section.name in first
+            if section.fields and section.name in first
         ]
-        if not clashes:
+        if not clashes:  # only overlays: a copy of earlier ones adds nothing
+            overlays = [(s.name, _shape(s)) for s in file.sections if not s.fields]
+            copy = bool(overlays) and len(overlays) == len(file.sections)
+            if copy and all(o in self._overlaid for o in overlays):
+                return True
+            self._overlaid.update(overlays)
             return False
         if any(_shape(section) != shape for section, (_, shape) in clashes):
             section, (earlier, _) = clashes[0]
@@ -1129,6 +1170,16 @@ def _without_twins(paths: list[Path]) -> list[Path]:
         )
 
     return [p for p in paths if p.suffix != ".idl" or not twin(p)]
+
+
+def _overlays_last(files: list[InterfaceFile]) -> list[tuple[InterfaceFile, Section]]:
+    """Every section of `files`, those with fields (definitions) first, then those
+    without (overlays: `#RobotFix#` lines only, added to their type), each group in
+    file order: the order in which a type's refinements are added."""
+    sections = [(file, section) for file in files for section in file.sections]
+    return [item for item in sections if item[1].fields] + [
+        item for item in sections if not item[1].fields
+    ]
 
 
 def _shape(section: Section) -> tuple[Any, ...]:

@@ -22,9 +22,8 @@ from __future__ import annotations
 from collections import OrderedDict
 from dataclasses import replace
 
-from robotfix.analysis.unitmemo import UnitMemo
-from robotfix.analysis.vc import VC, Undecided, Unproven, Verdict
 from robotfix.annotations import ast as A
+from robotfix.vc import VC, Undecided, Unproven, Verdict
 
 MAX_ENTRIES = 5_000  # distinct VCs per document; at most about 2.7 kB each
 MAX_KEY_NODES = 1_000  # nodes of a VC's facts, goal and probes that are keyed
@@ -38,8 +37,10 @@ class ProofMemo:
         self._max = max_entries
         self.hits = 0
         self.misses = 0
-        # the document's analysis kept per top-level unit, next to its proofs
-        self.units = UnitMemo()
+        # the document's analysis kept per top-level unit, next to its proofs: the
+        # analysis's own memo (`analysis/unitmemo.UnitMemo`), which `api` puts here
+        # (this layer knows nothing of the analysis)
+        self.units: object = None
 
     def __len__(self) -> int:
         return len(self._table)

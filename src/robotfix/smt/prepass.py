@@ -26,9 +26,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from fractions import Fraction
 
-from robotfix.analysis.vc import VC, shared_facts
 from robotfix.annotations import ast as A
 from robotfix.smt.fold import fold
+from robotfix.vc import VC, shared_facts
 
 _ZERO, _ONE, _MINUS_ONE = Fraction(0), Fraction(1), Fraction(-1)
 _TOO_LONG = 10**1_000  # the encoder's MAX_DIGITS: longer numbers are fresh to z3

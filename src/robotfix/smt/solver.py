@@ -20,7 +20,12 @@ from typing import Any
 
 import z3
 
-from robotfix.analysis.vc import (
+from robotfix.annotations import ast as A
+from robotfix.annotations import witness
+from robotfix.annotations.numbers import shown_as_infinity
+from robotfix.budget import ENCODE_STEPS, RLIMIT, Z3_UNITS_PER_STEP, Budget
+from robotfix.smt.encode import Encoder
+from robotfix.vc import (
     OUT_OF_BUDGET,
     VC,
     Proved,
@@ -30,11 +35,6 @@ from robotfix.analysis.vc import (
     Violated,
     shared_facts,
 )
-from robotfix.annotations import ast as A
-from robotfix.annotations import witness
-from robotfix.annotations.numbers import shown_as_infinity
-from robotfix.budget import ENCODE_STEPS, RLIMIT, Z3_UNITS_PER_STEP, Budget
-from robotfix.smt.encode import Encoder
 
 # Two of z3's nonlinear heuristics hardly count their work: Groebner bases and Horner
 # schemes ran for minutes within a small rlimit. Without them (and with products of

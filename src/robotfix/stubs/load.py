@@ -23,6 +23,12 @@ Conventions a stub may use beyond ordinary typing:
   give what `a + b`, `a - b`, ... of its objects are; `@overload`s of one, each with
   its operand's class or builtin type, say which result goes with which operand
   (`Time - Time` is a Duration, `Time - Duration` a Time).
+- `@ros_parameter(name="name", default="default", low="min_value",
+  high="max_value")` on a function, or on a class's `__init__`: a call reads the
+  ROS 1 parameter its argument `name` names (`DTParam("~stop_distance")`, rospy's
+  meaning), with that default and those bounds (each keyword names one of the
+  function's parameters; only `name` is needed), so parameter files are checked
+  against it as against `rospy.get_param` (docs/parameters.md).
 Malformed stubs (a syntax error, an annotation that does not read, an unknown
 `unit_rule`) are RF512 problems at the stub's line and column; what they spoil is
 treated as unannotated.
@@ -57,6 +63,8 @@ OPERATORS = frozenset(
 MAX_STUB_BYTES = 1024 * 1024
 MAX_USER_STUBS = 10_000  # files under the stub paths that a run looks at
 MAX_HOPS = 8  # re-exports followed for one name
+ROS_PARAM = "ros_parameter"  # the decorator of a parameter API (`_parameter`)
+PARAMETER_ROLES = ("name", "default", "low", "high")
 MAX_STAR_DEPTH = 8  # `from m import *` followed through at most so many modules
 
 
@@ -82,6 +90,8 @@ class Function:
     origin: str  # where it is written: `rclpy/node.pyi:42` (shipped) or a user path
     path: str | None  # the user stub's path (None: shipped with RobotFix)
     line: int
+    # `@ros_parameter`: (role, the parameter that holds it): name, default, low, high
+    parameter: tuple[tuple[str, str], ...] = ()
 
     @property
     def short(self) -> str:
@@ -540,6 +550,7 @@ class _Reader:
     ) -> Function | None:
         kind = "method" if in_class else "function"
         rule = None
+        described = None  # `@ros_parameter(...)`
         for decorator in node.decorator_list:
             name = (dotted(decorator) or "").rsplit(".", 1)[-1]
             if name in ("staticmethod", "classmethod", "property"):
@@ -548,6 +559,8 @@ class _Reader:
                 return None  # overloads: too many meanings for one name
             elif isinstance(decorator, ast.Call) and _called(decorator) == "unit_rule":
                 rule = self._rule(decorator)
+            elif isinstance(decorator, ast.Call) and _called(decorator) == ROS_PARAM:
+                described = decorator
         args = node.args
         positional = [*args.posonlyargs, *args.args]
         if in_class and kind in ("method", "classmethod", "property") and positional:
@@ -589,7 +602,30 @@ class _Reader:
             f"{self.shown}:{node.lineno}",
             self.path,
             node.lineno,
+            self._parameter(described, params) if described is not None else (),
         )
+
+    def _parameter(
+        self, decorator: ast.Call, params: list[Param]
+    ) -> tuple[tuple[str, str], ...]:
+        """`@ros_parameter(name="name", ...)`: which parameter holds each role."""
+        names = {p.name for p in params}
+        roles: list[tuple[str, str]] = []
+        for keyword in decorator.keywords:
+            value = keyword.value
+            held = value.value if isinstance(value, ast.Constant) else None
+            if keyword.arg not in PARAMETER_ROLES or held not in names:
+                self.problem(
+                    keyword.value,
+                    f"`{ROS_PARAM}` takes {', '.join(PARAMETER_ROLES)} as keywords, "
+                    "each naming a parameter of the function",
+                )
+                return ()
+            roles.append((keyword.arg, held))
+        if decorator.args or "name" not in dict(roles):
+            self.problem(decorator, f"`{ROS_PARAM}` needs `name=` and keywords only")
+            return ()
+        return tuple(roles)
 
     def _rule(self, decorator: ast.Call) -> str | None:
         first = decorator.args[0] if decorator.args else None
