@@ -274,9 +274,11 @@ def test_a_file_changed_while_it_was_read_is_not_written(
     node.write_text(BODY)
     real = annotate
 
-    def edited_meanwhile(text: str, path: str, catalog: MsgCatalog) -> str:
+    def edited_meanwhile(
+        text: str, path: str, catalog: MsgCatalog, *seen: object
+    ) -> str:
         node.write_text(BODY + "# edited\n")
-        return real(text, path, catalog)
+        return real(text, path, catalog, *seen)
 
     monkeypatch.setattr("robotfix.suggest.annotate", edited_meanwhile)
     assert suggest(node) == 2
@@ -338,10 +340,12 @@ def test_an_internal_error_in_one_file_does_not_stop_the_run(
     (tmp_path / "b.py").write_text(BODY)
     real = api.unit_suggestions
 
-    def broken(text: str, path: str, catalog: MsgCatalog) -> list[api.Suggestion]:
+    def broken(
+        text: str, path: str, catalog: MsgCatalog, *seen: object
+    ) -> list[api.Suggestion]:
         if path.endswith("a.py"):
             raise OverflowError("int too large to convert to float")
-        return real(text, path, catalog)
+        return real(text, path, catalog, *seen)
 
     monkeypatch.setattr(api, "unit_suggestions", broken)
     assert suggest(tmp_path) == 2

@@ -6,6 +6,7 @@ nothing more to suggest."""
 
 from __future__ import annotations
 
+import difflib
 import io
 import re
 import tokenize
@@ -17,7 +18,9 @@ from robotfix import api
 from robotfix.api import check_source
 from robotfix.config import Config
 from robotfix.ros.catalog import MsgCatalog
-from robotfix.suggest import annotate
+from robotfix.suggest import UnsafeEditError, annotate
+from tests.test_cases import CASES as CASES_ROOT
+from tests.test_cases import SINGLE_FILES, catalog_for
 from tests.test_cli import run
 
 CASES = Path(__file__).parent / "suggest_cases"
@@ -29,14 +32,16 @@ def catalog() -> MsgCatalog:
     return MsgCatalog([])
 
 
-def expected(source: str) -> set[tuple[int, str, str]]:
+def expected(source: str) -> set[tuple[int, str, str, str]]:
+    """(line, name, unit, kind) from `# suggest: name unit` (a float) or
+    `# suggest: name unit list[float]`."""
     found = set()
     for tok in tokenize.generate_tokens(io.StringIO(source).readline):
         match = _EXPECTED.match(tok.string) if tok.type == tokenize.COMMENT else None
         if match:
             for part in match.group(1).split(","):
-                name, unit = part.split()
-                found.add((tok.start[0], name, unit))
+                name, unit, *kind = part.split()
+                found.add((tok.start[0], name, unit, kind[0] if kind else "float"))
     return found
 
 
@@ -47,7 +52,7 @@ CASE_FILES = sorted(CASES.glob("*.py"))
 def test_suggestions_are_exactly_the_expected(path: Path, catalog: MsgCatalog) -> None:
     source = path.read_text(encoding="utf-8")
     got = {
-        (s.line, s.name, s.unit)
+        (s.line, s.name, s.unit, s.kind)
         for s in api.unit_suggestions(source, str(path), catalog)
     }
     assert got == expected(source)
@@ -109,3 +114,113 @@ def test_no_suggestion_when_the_analysis_stopped_early(
     # stopped before `self.wait(None)`: `seconds` would look like a time
     monkeypatch.setattr(budget, "FILE_STEPS", 100)
     assert api.unit_suggestions(source, "node.py", catalog) == []
+
+
+def test_a_constructor_stored_into_a_field_takes_the_units_of_that_place(
+    tmp_path: Path,
+) -> None:
+    folder = tmp_path / "pkg" / "msg"
+    folder.mkdir(parents=True)
+    (folder / "Drive.msg").write_text(
+        'geometry_msgs/Vector3 vel  #RobotFix# Unit(vel.x) == "m/s"\n', encoding="utf-8"
+    )
+    catalog = MsgCatalog(api.interface_files([folder]))
+    source = (
+        "from geometry_msgs.msg import Vector3\n"
+        "from pkg.msg import Drive\n"
+        "def send(pub, forward):\n"
+        "    msg = Drive()\n"
+        "    msg.vel = Vector3(forward, 0.0, 0.0)\n"
+        "    pub.publish(msg)\n"
+    )
+    got = [
+        (s.line, s.name, s.unit) for s in api.unit_suggestions(source, "n.py", catalog)
+    ]
+    assert got == [(3, "forward", "m/s")]  # Vector3 has no unit: Drive.vel has
+
+
+def test_suggest_sees_the_users_stubs_and_the_modules_the_file_imports(
+    tmp_path: Path,
+) -> None:
+    """As `check` sees them: a unit from a `stub-paths` stub, and one from a refined
+    parameter of a function in another module of the package; a name that meets
+    both a stub's s and the other module's rad gets nothing (it did get s, and the
+    applied file then failed its check with RF201)."""
+    (tmp_path / "pyproject.toml").write_text(
+        '[tool.robotfix]\nstub-paths = ["stubs"]\n', encoding="utf-8"
+    )
+    (tmp_path / "stubs").mkdir()
+    (tmp_path / "stubs" / "mylib.pyi").write_text(
+        "from typing import Annotated\n"
+        "def wait(duration: Annotated[float, \"Unit('s')\"]) -> None: ...\n",
+        encoding="utf-8",
+    )
+    (tmp_path / "navigator.py").write_text(
+        "from typing import Annotated\n"
+        "class Navigator:\n"
+        "    def spin(self, spin_dist: Annotated[float, \"Unit('rad')\"]) -> None:\n"
+        "        pass\n",
+        encoding="utf-8",
+    )
+    (tmp_path / "demo.py").write_text(
+        "import mylib\n"
+        "from navigator import Navigator\n"
+        "LOOK_AROUND = 3.14\n"
+        "BOTH = 3.0\n"
+        "def main():\n"
+        "    pause = 2.0\n"
+        "    mylib.wait(pause)\n"
+        "    Navigator().spin(spin_dist=LOOK_AROUND)\n"
+        "    mylib.wait(BOTH)\n"
+        "    Navigator().spin(BOTH)\n",
+        encoding="utf-8",
+    )
+    shown = run("suggest", "demo.py", cwd=tmp_path)
+    assert shown.returncode == 0, shown.stderr
+    added = [line for line in shown.stdout.splitlines() if line.startswith("+ ")]
+    added += [line for line in shown.stdout.splitlines() if line.startswith("+L")]
+    assert sorted(added) == [
+        "+    pause: Annotated[float, \"Unit('s')\"] = 2.0",
+        "+LOOK_AROUND: Annotated[float, \"Unit('rad')\"] = 3.14",
+    ]
+    assert run("suggest", "demo.py", "--apply", cwd=tmp_path).returncode == 0
+    assert run("check", "demo.py", cwd=tmp_path).returncode == 0
+
+
+def _old_lines(source: str, changed: str) -> dict[int, int]:
+    """Line of the edited text -> line of the original (the import is new)."""
+    matcher = difflib.SequenceMatcher(
+        None, source.splitlines(), changed.splitlines(), autojunk=False
+    )
+    lines = {}
+    for tag, i1, i2, j1, j2 in matcher.get_opcodes():
+        if tag in ("equal", "replace") and i2 - i1 == j2 - j1:
+            lines.update({j1 + k + 1: i1 + k + 1 for k in range(i2 - i1)})
+    return lines
+
+
+@pytest.mark.parametrize(
+    "path", SINGLE_FILES, ids=lambda p: str(p.relative_to(CASES_ROOT))
+)
+def test_applying_every_suggestion_on_a_case_adds_no_finding(path: Path) -> None:
+    """Every case of tests/cases/ (clean or buggy) with every suggestion applied:
+    the check finds nothing on a line where it found nothing of that rule before
+    (a suggestion must never make a clean file fail: `Annotated[float, ...]` on a
+    list gave RF401); on a line with a bug the wording may change (`angle` is
+    known to be in rad once annotated)."""
+    source = path.read_text(encoding="utf-8")
+    catalog = catalog_for(path.parent)
+    config = Config(ros_distro="ros1" if "ros1" in path.parts else "ros2")
+    try:
+        changed = annotate(source, str(path), catalog, config)
+    except UnsafeEditError:
+        return
+    if changed == source:
+        return
+    old = _old_lines(source, changed)
+    before = {
+        (d.code, d.span.line) for d in check_source(source, str(path), config, catalog)
+    }
+    after = check_source(changed, str(path), config, catalog)
+    new = [d for d in after if (d.code, old.get(d.span.line)) not in before]
+    assert new == [], changed

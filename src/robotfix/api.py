@@ -236,14 +236,14 @@ def hover(
 ) -> str | None:
     """Markdown for the innermost name or message field at (1-based line, 0-based
     character column), as the analysis sees it there (the modules it imports found
-    through `project`, as `check_source` finds them)."""
+    through `project`, as `check_source` finds them, the libraries through the
+    shipped stubs and `config`'s `stub-paths`)."""
     from robotfix.source import SourceFile
 
     source = SourceFile.from_text(path, text)
     if source.problem is not None:
         return None
-    project = project or make_project([], config or Config(), catalog)
-    ctx = _analyze(source, catalog, hovers=True, resolver=project.resolver(Path(path)))
+    ctx = _analyze_as_checked(source, catalog, config, project, hovers=True)
     assert ctx.hovers is not None
     found = [
         (span, markdown)
@@ -255,16 +255,23 @@ def hover(
     return min(found, key=lambda item: item[0].end_col - item[0].col)[1]
 
 
-def unit_suggestions(text: str, path: str, catalog: MsgCatalog) -> list[Suggestion]:
+def unit_suggestions(
+    text: str,
+    path: str,
+    catalog: MsgCatalog,
+    config: Config | None = None,
+    project: Project | None = None,
+) -> list[Suggestion]:
     """Units the analysis can pin on unannotated names from the flows they feed
-    (see analysis/flows.py)."""
+    (see analysis/flows.py), seeing what a check sees: the user's stubs
+    (`stub-paths`) and the modules the file imports (`make_project`)."""
     from robotfix.analysis.flows import FlowLog, path_unit, suggestions
     from robotfix.source import SourceFile
 
     source = SourceFile.from_text(path, text)
     if source.problem is not None or source.tree is None:
         return []
-    ctx = _analyze(source, catalog, flows=True)
+    ctx = _analyze_as_checked(source, catalog, config, project, flows=True)
     log = ctx.unit_flows
     if log is None or log.program is None:
         return []
@@ -275,7 +282,7 @@ def unit_suggestions(text: str, path: str, catalog: MsgCatalog) -> list[Suggesti
         ctx.msg_type_of, lambda msg_type, path: path_unit(catalog, msg_type, path)
     )
     return [
-        Suggestion(f.line, f.col, f.name, f.unit, "float")
+        Suggestion(f.line, f.col, f.name, f.unit, f.kind)
         for f in suggestions(log, log.program)
     ]
 
@@ -393,6 +400,30 @@ def _analyze(
     except RecursionError:
         ctx.report(messages.analysis_budget(source.path, 1, "nested too deeply"))
     return ctx
+
+
+def _analyze_as_checked(
+    source: SourceFile,
+    catalog: MsgCatalog,
+    config: Config | None,
+    project: Project | None,
+    hovers: bool = False,
+    flows: bool = False,
+) -> FileContext:
+    """`_analyze` seeing what a check of the file sees: the shipped stubs and
+    `config`'s `stub-paths`, the modules it imports through `project`."""
+    from robotfix.stubs.load import stub_set
+
+    config = config or Config()
+    project = project or make_project([], config, catalog)
+    return _analyze(
+        source,
+        catalog,
+        hovers=hovers,
+        flows=flows,
+        stubs=stub_set(config.stub_paths),
+        resolver=project.resolver(Path(source.path)),
+    )
 
 
 def _unused_suppressions(

@@ -27,8 +27,11 @@ class Declared:
     line: int | None
     source: str = ""  # e.g. "REP 103: ..."
     owner: str = ""  # the message type whose refinement this is, if any
+    written: str = ""  # how it is written at path:line, "`us` in the comment of `t`"
 
     def note(self) -> Note:
+        if self.path is not None and self.written:
+            return Note(f"{self.what}: {self.written}", self.path, self.line)
         if self.path is not None:
             return Note(f"{self.what} declared here", self.path, self.line)
         return Note(f"{self.what}: {self.source}")
@@ -296,15 +299,15 @@ def refinement_violated(
     value: str | None,
     declared: Declared,
 ) -> Diagnostic:
-    notes = [declared.note()]
-    if value is not None:
-        notes.append(Note(f"here {subject} = {value}"))
+    """RF101; `value`: the one value `subject` has there, shown in the message
+    itself (a call's argument, `time_allowance=LOOK_TIME`, hides it)."""
+    shown = f": here {subject} = {value}" if value is not None else ""
     return Diagnostic(
         rules.REFINEMENT_VIOLATED,
         path,
         span,
-        f"`{stmt}` violates `{predicate}`{_owner(declared)}",
-        tuple(notes),
+        f"`{stmt}` violates `{predicate}`{_owner(declared)}{shown}",
+        (declared.note(),),
     )
 
 
@@ -625,11 +628,23 @@ def used_before_assignment(
     name: str,
     declared: bool,
     some_paths: bool = False,
+    assigned: int | None = None,
 ) -> Diagnostic:
+    """RF301; `assigned`: the line where the function assigns `name`, on paths
+    that do not lead to this read."""
     if some_paths:
         detail = (
             f"`{name}`, which is not assigned on every path to this line: "
             "on the others it raises UnboundLocalError or NameError"
+        )
+    elif assigned is not None:
+        where = (
+            f"only after this line (line {assigned})"
+            if assigned > span.line
+            else f"only on other paths (line {assigned})"
+        )
+        detail = (
+            f"`{name}`, which is assigned {where}: here it raises UnboundLocalError"
         )
     elif declared:
         detail = f"`{name}`, which is declared but not assigned on this path"

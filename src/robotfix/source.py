@@ -153,15 +153,19 @@ class SourceFile:
         return "\n".join([first, *self.lines[line : end_line - 1], last])
 
     def statement_text(self, node: ast.AST) -> str:
-        """The first line of a statement's source, for messages; an annotated
-        assignment is shown without its annotation (`x = 200`)."""
+        """A statement's source on one line, for messages (a compound statement's
+        first line); an annotated assignment is shown without its annotation
+        (`x = 200`)."""
         if isinstance(node, ast.AnnAssign) and node.value is not None:
             target, value = self.segment(node.target), self.segment(node.value)
             text = f"{target} = {value}" if target and value else ""
         else:
             text = self.segment(node) or ""
-        first = text.splitlines()[0] if text else ""
-        return first if len(first) <= 80 else first[:77] + "..."
+        if isinstance(node, ast.stmt) and hasattr(node, "body"):
+            one = text.splitlines()[0] if text else ""  # `if x:`, not its body
+        else:
+            one = _one_line(text)
+        return one if len(one) <= 80 else one[:77] + "..."
 
     def is_suppressed(self, diag: Diagnostic) -> bool:
         if diag.span.line not in self.suppressions:
@@ -171,6 +175,26 @@ class SourceFile:
 
 
 LINE_BREAK = re.compile(r"\r\n|\r|\n")  # the line breaks ast counts
+_OPENED = re.compile(r"([(\[{]) ")
+_CLOSED = re.compile(r",? ([)\]}])")
+
+
+def _one_line(text: str) -> str:
+    """A statement written over several lines, on one (`f(\n  x,\n)` is
+    `f(x)`), so a message shows all of it and not `f(`."""
+    lines = text.splitlines()
+    if len(lines) <= 1:
+        return lines[0].strip() if lines else ""
+    try:  # comments inside the statement are left out
+        for tok in tokenize.generate_tokens(io.StringIO(text).readline):
+            if tok.type == tokenize.COMMENT:
+                row, col = tok.start
+                lines[row - 1] = lines[row - 1][:col]
+    except (tokenize.TokenError, SyntaxError):
+        pass
+    lines = [line.strip().removesuffix("\\").rstrip() for line in lines]
+    joined = " ".join(line for line in lines if line)
+    return _CLOSED.sub(r"\1", _OPENED.sub(r"\1", joined))
 
 
 def split_lines(text: str) -> list[str]:

@@ -26,6 +26,7 @@ import sys
 import tokenize
 import warnings
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from robotfix import api, fs
 from robotfix.bindings import IMPORTS, Bindings
@@ -33,6 +34,9 @@ from robotfix.config import Config, ConfigError, load
 from robotfix.discovery import discover, install_space
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.source import LINE_BREAK
+
+if TYPE_CHECKING:
+    from robotfix.project.summary import Project
 
 EXIT_OK, EXIT_FAILURE = 0, 2
 
@@ -67,9 +71,10 @@ def run_suggest(paths: list[Path], msg_paths: list[Path], apply: bool) -> int:
     for notice in found.notices:  # links leaving the paths, unreadable folders
         _say(f"robotfix: {notice.path}: {notice.message}; not written")
         status = EXIT_FAILURE
+    project = api.make_project(present, settings, catalog)
     changed_files = 0
     for file in files:
-        outcome = _suggest_file(file, present, catalog, apply)
+        outcome = _suggest_file(file, present, catalog, apply, settings, project)
         if outcome is None:
             status = EXIT_FAILURE
         elif outcome:
@@ -80,7 +85,12 @@ def run_suggest(paths: list[Path], msg_paths: list[Path], apply: bool) -> int:
 
 
 def _suggest_file(
-    file: Path, roots: list[Path], catalog: MsgCatalog, apply: bool
+    file: Path,
+    roots: list[Path],
+    catalog: MsgCatalog,
+    apply: bool,
+    settings: Config,
+    project: Project,
 ) -> bool | None:
     """Whether the file has suggestions (shown, and written with `apply`);
     None when something could not be done (said on stderr)."""
@@ -95,7 +105,7 @@ def _suggest_file(
         _say(f"robotfix: {file}: cannot decode: {err}; skipped")
         return None
     try:
-        changed = annotate(text, str(file), catalog)
+        changed = annotate(text, str(file), catalog, settings, project)
     except UnsafeEditError as err:
         _say(f"robotfix: {file}: not annotated: {err.reason}")
         return None
@@ -191,12 +201,20 @@ def _catalog(paths: list[Path], msg_paths: list[Path], settings: Config) -> MsgC
     )
 
 
-def annotate(text: str, path: str, catalog: MsgCatalog) -> str:
+def annotate(
+    text: str,
+    path: str,
+    catalog: MsgCatalog,
+    settings: Config | None = None,
+    project: Project | None = None,
+) -> str:
     """The text with every suggestion applied, and `Annotated` imported if needed
     (spelt `typing.Annotated` when the module binds `Annotated` itself).
     UnsafeEditError if the result would not be the same program plus the
-    annotations, or a name the edit writes would mean something else there."""
-    suggestions = api.unit_suggestions(text, path, catalog)
+    annotations, or a name the edit writes would mean something else there.
+    `settings` and `project`: the user's stubs and the modules the file imports,
+    as `check` sees them."""
+    suggestions = api.unit_suggestions(text, path, catalog, settings, project)
     if not suggestions:
         return text
     tree = _parse(text)
@@ -390,7 +408,8 @@ def _verify_names(text: str, after: ast.Module, lines: set[int]) -> None:
 
 def _written_names(annotation: ast.expr | None) -> list[str]:
     """The names in an annotation as `annotate` writes it: `Annotated` (or
-    `typing`) and the type's name; none for any other annotation."""
+    `typing`) and the type's names (`float`, or `list` and `float`); none for any
+    other annotation."""
     if not (
         _is_suggested(annotation)
         and isinstance(annotation, ast.Subscript)
@@ -400,7 +419,8 @@ def _written_names(annotation: ast.expr | None) -> list[str]:
     head = annotation.value
     root = head.value if isinstance(head, ast.Attribute) else head
     kind = annotation.slice.elts[0]
-    return [n.id for n in (root, kind) if isinstance(n, ast.Name)]
+    names = [root, *ast.walk(kind)]
+    return [n.id for n in names if isinstance(n, ast.Name)]
 
 
 def _count_annotated(tree: ast.Module) -> int:
@@ -412,8 +432,8 @@ def _count_annotated(tree: ast.Module) -> int:
 
 
 def _is_suggested(annotation: ast.expr | None) -> bool:
-    """`Annotated[float, "Unit('...')"]` (or `typing.Annotated[...]`), as
-    `annotate` writes it."""
+    """`Annotated[float, "Unit('...')"]` (or `typing.Annotated[...]`, or
+    `list[float]` inside), as `annotate` writes it."""
     return (
         isinstance(annotation, ast.Subscript)
         and _is_annotated(annotation.value)

@@ -291,7 +291,8 @@ class CallEvaluator(LibraryEvaluator):
                 )
             if log is not None and where is not None and name in exprs:
                 if decl is not None:
-                    log.sink(where, exprs[name], decl.unit, value)
+                    integer = decl.base == "int"
+                    log.sink(where, exprs[name], decl.unit, value, integer=integer)
                 else:
                     log.call(where, function.key, name, exprs[name])
         if function.returns is None:  # `return <expr>` alone: the expression here
@@ -456,19 +457,23 @@ class CallEvaluator(LibraryEvaluator):
         kwargs: dict[str | None, Value],
         state: State,
     ) -> None:
-        """For `robotfix suggest`: `Twist(linear=...)`, `Vector3(x=speed)`."""
+        """For `robotfix suggest`: `Twist(linear=...)`, `Vector3(x=speed)`,
+        `Twist(Vector3(speed, 0.0, 0.0))` (analysis/flows.py)."""
         spec = self.ctx.catalog.lookup(message.name or "")
+        log, where = self.ctx.unit_flows, self.flow_where()
         if message.ref is None or message.ref not in state.heap or spec is None:
             return
-        given = list(zip(spec.fields, node.args, args, strict=False))
+        if log is None or where is None:
+            return
+        starred = [i for i, a in enumerate(node.args) if isinstance(a, ast.Starred)]
+        positional = node.args[: starred[0]] if starred else node.args
+        given = list(zip(spec.fields, positional, args, strict=False))
         given += [
             (k.arg, k.value, kwargs[k.arg])
             for k in node.keywords
             if k.arg is not None and k.arg in kwargs
         ]
-        for name, expr, value in given:
-            unit = heap.field_unit(self.ctx, state, message.ref, name)[0]
-            self.note_sink(expr, unit, value)
+        log.constructor(self.ctx, state, where, message.ref, node, given)
 
     # -- builtins ------------------------------------------------------------
     def builtin(

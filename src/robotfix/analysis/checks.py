@@ -79,9 +79,9 @@ class Checker:
         probes = (probe,) if probe else ()
         facts = (*state.facts, *self.ranges(goal))
         verdict = self.ctx.discharge(VC(facts, goal, probes))
-        span, stmt = self.where(site)
         if isinstance(verdict, Proved):
             return PROVED
+        span, stmt = self.where(site)
         if isinstance(verdict, Unproven):
             arm = self._arm_violated(state, goal, probes)
             if arm is not None:
@@ -175,7 +175,7 @@ class Checker:
         once = ("uninit", getattr(site, "lineno", 1), value.uninit.name)
         if self.ctx.already(once) or (state.facts and not self.possible(state, A.TRUE)):
             return True
-        span, stmt = self.where(site)
+        span, stmt = self._read_where(site, value.uninit.name)
         self.ctx.report(
             messages.used_before_assignment(
                 self.path, span, stmt, value.uninit.name, value.uninit.declared
@@ -183,6 +183,23 @@ class Checker:
             once=once,
         )
         return True
+
+    def _read_where(
+        self, site: ast.AST, name: str, read: ast.AST | None = None
+    ) -> tuple[Span, str]:
+        """The span of the read of `name` (`read`, else its first read in the
+        statement `site`): the caret goes under the name, at its line; and the
+        statement's text."""
+        if read is None:
+            reads = [
+                n
+                for n in ast.walk(site)
+                if isinstance(n, ast.Name)
+                and n.id == name
+                and isinstance(n.ctx, ast.Load)
+            ]
+            read = min(reads, key=lambda n: (n.lineno, n.col_offset), default=site)
+        return self.ctx.source.span(read), self.ctx.source.statement_text(site)
 
     def possible(self, state: State, condition: A.Expr) -> bool:
         """Can `condition` hold on this path? (Undecided counts as no.)"""
@@ -211,9 +228,17 @@ class Checker:
         return isinstance(verdict, (Violated, Unproven))
 
     def unbound_here(
-        self, state: State, when: A.Expr, name: str, site: ast.AST
+        self,
+        state: State,
+        when: A.Expr,
+        name: str,
+        site: ast.AST,
+        read: ast.AST | None = None,
+        scope: ast.AST | None = None,
     ) -> bool:
-        """RF301 if `name` is unbound on some path to this read (`when` holds)."""
+        """RF301 if `name` is unbound on some path to this read (`when` holds);
+        `read`: the Name read, `scope`: the function whose local it is (the
+        message names where else it is assigned)."""
         once = ("uninit", getattr(site, "lineno", 1), name)
         cause = ("unbound", name, when)  # one bug, one diagnostic, however many reads
         if when != A.TRUE and self.ctx.already(cause):
@@ -222,10 +247,19 @@ class Checker:
             return False
         if when != A.TRUE:
             self.ctx.report_once(cause)
-        span, stmt = self.where(site)
+        span, stmt = self._read_where(site, name, read)
+        assigned = None
+        if when == A.TRUE and scope is not None:
+            assigned = _first_assignment(scope, name)
         self.ctx.report(
             messages.used_before_assignment(
-                self.path, span, stmt, name, False, some_paths=when != A.TRUE
+                self.path,
+                span,
+                stmt,
+                name,
+                False,
+                some_paths=when != A.TRUE,
+                assigned=assigned,
             ),
             once=once,
         )
@@ -998,12 +1032,7 @@ class Checker:
     def _field_declared(
         self, owner: MsgSpec, name: str, unit_decl: FieldUnit
     ) -> Declared:
-        what = f"unit of {owner.name}"
-        if unit_decl.origin is None:
-            return Declared(what, None, None, unit_decl.source, owner.name)
-        return Declared(
-            what, unit_decl.origin.path, unit_decl.origin.line, owner=owner.name
-        )
+        return heap.unit_declared_at(owner, name, unit_decl)
 
     def read_field(
         self, state: State, ref: int, name: str, site: ast.AST, target: str
@@ -1319,6 +1348,23 @@ class Checker:
         if isinstance(site, ast.Return) and site.value is not None:  # a response
             return self.ctx.source.segment(site.value) or "the message"
         return "the message"
+
+
+def _first_assignment(scope: ast.AST, name: str) -> int | None:
+    """The line of the first `name = ...` (or loop or `with` target) in a
+    function's own body, not in the functions and classes it defines."""
+    found: list[int] = []
+    todo = list(ast.iter_child_nodes(scope))
+    while todo:
+        node = todo.pop()
+        if isinstance(node, ast.Name) and node.id == name:
+            if isinstance(node.ctx, ast.Store):
+                found.append(node.lineno)
+        elif not isinstance(
+            node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)
+        ):
+            todo.extend(ast.iter_child_nodes(node))
+    return min(found, default=None)
 
 
 def _first_reads(

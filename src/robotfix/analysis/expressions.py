@@ -119,11 +119,18 @@ class ExpressionEvaluator:
         follows (provided by the statement interpreter)."""
         return None
 
-    def note_sink(self, expr: ast.expr, unit: Unit | None, value: Value | None) -> None:
-        """For `robotfix suggest`: `expr`, holding `value`, reached `unit`'s place."""
+    def note_sink(
+        self,
+        expr: ast.expr,
+        unit: Unit | None,
+        value: Value | None,
+        integer: bool = False,
+    ) -> None:
+        """For `robotfix suggest`: `expr`, holding `value`, reached `unit`'s place
+        (an `int` one if `integer`)."""
         log, where = self.ctx.unit_flows, self.flow_where()
         if log is not None and where is not None:
-            log.sink(where, expr, unit, value)
+            log.sink(where, expr, unit, value, integer=integer)
 
     # -- dispatch ------------------------------------------------------------
     def eval(self, node: ast.expr, state: State) -> Value:

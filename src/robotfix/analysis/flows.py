@@ -18,8 +18,12 @@ where it is first bound (a plain `x = ...`, an unannotated parameter, `self.x = 
 in `__init__`, a class constant); a name that meets two different units gets no
 suggestion (that is a bug for `robotfix check`, or a controller's implicit gain,
 not an annotation). A name that holds a sequence (bound to a list or tuple, or
-reaching a message's array field) gets none either: `Annotated[float, ...]` would
-make its applied file fail the check (RF401), and its elements' type is not known.
+reaching a message's array field) gets no `Annotated[float, ...]`: its applied file
+would fail the check (RF401). One bound only to lists of numbers whose flows reach
+array fields of one unit gets `Annotated[list[float], "Unit(...)"]`. A message
+constructor's arguments, positional or keyword, reach the fields they set, and a
+nested constructor's the fields below (`Twist(Vector3(tv, 0.0, 0.0))`), with the
+units of the place the message is built or stored in.
 """
 
 from __future__ import annotations
@@ -28,7 +32,7 @@ import ast
 import math
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, TypeVar
 
 from robotfix.analysis import heap
 from robotfix.analysis.values import NUMERIC, Value
@@ -36,9 +40,10 @@ from robotfix.annotations.units import Unit
 from robotfix.ros.api_model import TIME_OBJECTS
 
 if TYPE_CHECKING:
-    from robotfix.analysis.context import Scope
+    from robotfix.analysis.context import FileContext, Scope
     from robotfix.analysis.program import Function, Program
-    from robotfix.ros.catalog import MsgCatalog, MsgSpec
+    from robotfix.analysis.state import State
+    from robotfix.ros.catalog import FieldSpec, MsgCatalog, MsgSpec
 
 # Literal factors that may be a unit conversion (`speed / 3.6` is km/h -> m/s,
 # `deg * math.pi / 180` degrees -> radians): a flow through one says nothing sure.
@@ -69,6 +74,7 @@ _CONVERSIONS = (
 # what a name is: ("local", id(scope node), name), ("param", id(function node),
 # function key, name), ("attr", class name, attribute)
 Entity = tuple[object, ...]
+_T = TypeVar("_T")
 _KEEPING_CALLS = frozenset({"min", "max", "abs", "float", "round"})
 _KEEPING_MATH = frozenset({"fabs"})  # math.copysign keeps its first argument's
 
@@ -92,7 +98,8 @@ class Where:
 
 @dataclass
 class FlowLog:
-    sinks: list[tuple[Where, ast.expr, Unit]] = field(default_factory=list)
+    # (where, expression, the place's unit, whether the place holds an int)
+    sinks: list[tuple[Where, ast.expr, Unit, bool]] = field(default_factory=list)
     # function key -> (caller, parameter, argument)
     calls: dict[str, list[tuple[Where, str, ast.expr]]] = field(default_factory=dict)
     # ("local", id(scope node), name) / ("attr", class, attr) -> (where, value)
@@ -101,14 +108,24 @@ class FlowLog:
     )
     # (entity, a unit a value assigned to it has)
     held: list[tuple[tuple[object, ...], Unit]] = field(default_factory=list)
-    # entities bound to a sequence, and the expressions that reach an array field
+    # entities bound to a sequence, those bound to something other than a list of
+    # numbers, and the expressions that reach an array field (with the unit and
+    # kind of its elements)
     sequences: set[tuple[object, ...]] = field(default_factory=set)
-    array_sinks: list[tuple[Where, ast.expr]] = field(default_factory=list)
+    floats: set[tuple[object, ...]] = field(default_factory=set)  # bound to a float
+    not_number_lists: set[tuple[object, ...]] = field(default_factory=set)
+    array_sinks: list[tuple[Where, ast.expr, Unit | None, str]] = field(
+        default_factory=list
+    )
     program: Program | None = None  # set when the file's program is collected
     # `self.cmd.linear.x = speed` where the analysis does not know `self.cmd` (set
     # in another method): (where, attribute entity, field path, value expression)
     attribute_fields: list[tuple[Where, tuple[object, ...], str, ast.expr, Value]] = (
         field(default_factory=list)
+    )
+    # a message constructor call -> (field, argument, its value) for each argument
+    constructed: dict[int, list[tuple[str, ast.expr, Value]]] = field(
+        default_factory=dict
     )
     _seen: set[tuple[object, ...]] = field(default_factory=set)
 
@@ -118,14 +135,17 @@ class FlowLog:
         expr: ast.expr,
         unit: Unit | None,
         value: Value | None,
-        array: bool = False,
+        array: str = "",
+        integer: bool = False,
     ) -> None:
         """`expr` (holding `value`) reached a place of `unit` (a dimensionless one
         only tells a name apart from one with a unit: it is never suggested); an
-        `array` place (a message's array field) says its names hold sequences."""
+        `array` place (a message's array field of `array` numbers, `unit` theirs)
+        says its names hold sequences; an `integer` place (`Duration.sec`) that
+        they hold an int."""
         if array:
             if self._once("array", id(expr)):
-                self.array_sinks.append((where, expr))
+                self.array_sinks.append((where, expr, unit, array))
             return
         if unit is None or unit.is_label:
             return
@@ -135,8 +155,44 @@ class FlowLog:
             found = value.fit(unit)
             if found is not None and found.kind != "ok":
                 return  # a bug `check` reports: nothing to learn from it
-        if self._once("sink", id(expr), str(unit)):
-            self.sinks.append((where, expr, unit))
+        if self._once("sink", id(expr), str(unit), integer):
+            self.sinks.append((where, expr, unit, integer))
+
+    def constructor(
+        self,
+        ctx: FileContext,
+        state: State,
+        where: Where,
+        ref: int,
+        node: ast.Call,
+        given: list[tuple[str, ast.expr, Value]],
+    ) -> None:
+        """`Twist(Vector3(speed, 0.0, 0.0))` built the message `ref`: each argument
+        reached the field it set (see `message_sinks`)."""
+        self.constructed[id(node)] = given
+        self.message_sinks(ctx, state, where, ref, node)
+
+    def message_sinks(
+        self, ctx: FileContext, state: State, where: Where, ref: int, node: ast.Call
+    ) -> None:
+        """The arguments of constructor `node`, whose message is now `ref` (built
+        there, or stored into a field: `odom.twist.twist = Twist(...)`), reached
+        the fields they set, with those fields' units as `ref`'s place gives them;
+        a nested constructor's arguments (`Twist(Vector3(speed, ...))`) reached
+        the fields below."""
+        obj = state.heap.get(ref)
+        for name, expr, value in self.constructed.get(id(node), []) if obj else []:
+            assert obj is not None
+            held = obj.fields.get(name)
+            inner = held.ref if isinstance(held, Value) else None
+            if isinstance(expr, ast.Call) and inner in state.heap:
+                assert inner is not None
+                self.message_sinks(ctx, state, where, inner, expr)
+                continue
+            spec = heap.field_spec(ctx, state, ref, name)
+            unit = heap.field_unit(ctx, state, ref, name)[0]
+            integer = spec is not None and spec.kind == "int"
+            self.sink(where, expr, unit, value, array_kind(spec), integer)
 
     def call(self, where: Where, key: str, param: str, expr: ast.expr) -> None:
         if self._once("call", id(expr), key, param):
@@ -155,6 +211,10 @@ class FlowLog:
             self.binds.setdefault(entity, []).append((where, expr))
         if _is_sequence(value):
             self.sequences.add(entity)
+        if not _is_number_list(expr, value, where):
+            self.not_number_lists.add(entity)
+        if value.kind == "float":
+            self.floats.add(entity)
         unit = value.unit
         kept = unit is not None and not value.literal and value.scale == 1.0
         if kept and unit is not None and not unit.is_label:
@@ -211,6 +271,7 @@ class Found:
     col: int  # byte column of the name
     name: str
     unit: str
+    kind: str = "float"  # `list[float]`: a list of numbers in `unit`
 
 
 def _target_entity(where: Where, target: ast.expr) -> tuple[object, ...] | None:
@@ -287,60 +348,123 @@ def suggestions(log: FlowLog, program: Program) -> list[Found]:
                 places.setdefault(entity, at)
         return found
 
-    reached: dict[tuple[object, ...], list[Unit]] = {}
-    todo: list[tuple[tuple[object, ...], Unit]] = []
-    for where, expr, unit in log.sinks:
-        todo.extend((entity, unit) for entity, _ in carriers(expr, where))
-    sequences = set(log.sequences)
-    array_todo = [e for w, x in log.array_sinks for e, _ in carriers(x, w)]
-    while array_todo:  # backwards, from the array fields
-        entity = array_todo.pop()
-        if entity not in sequences:
-            sequences.add(entity)
-            for where, expr in sources.get(entity, []):
-                array_todo.extend(e for e, _ in carriers(expr, where))
-    done: set[tuple[tuple[object, ...], str]] = set()
-    while todo:  # backwards, from the places
-        entity, unit = todo.pop()
-        if (entity, str(unit)) in done:
-            continue
-        done.add((entity, str(unit)))
-        _add(reached.setdefault(entity, []), unit)
+    def back(entity: tuple[object, ...]) -> Iterator[tuple[object, ...]]:
         for where, expr in sources.get(entity, []):
-            todo.extend((e, unit) for e, _ in carriers(expr, where))
+            yield from (e for e, _ in carriers(expr, where))
+
+    def back_gains(entity: tuple[object, ...]) -> Iterator[tuple[object, ...]]:
+        for where, expr in sources.get(entity, []):
+            yield from (e for e, _ in _carriers(expr, where, gains=True))
+
+    sinks = [
+        (entity, unit, integer)
+        for where, expr, unit, integer in log.sinks
+        for entity, _ in carriers(expr, where)
+    ]
+    # backwards, from the places: the units names reach, those that reach an int,
+    # the units of array fields their elements reach
+    reached = _spread([(e, unit) for e, unit, _ in sinks], back)
+    ints = _spread([(e, None) for e, _, integer in sinks if integer], back)
+    elements = _spread(
+        [
+            (e, (unit, kind))
+            for w, x, unit, kind in log.array_sinks
+            for e, _ in carriers(x, w)
+        ],
+        back,
+    )
+    sequences = set(log.sequences) | set(elements)
+    # the units names meet through a placeholder gain too (`turn = error * 1.0`
+    # into rad/s): never a suggestion by itself, but one that differs is a conflict
+    gained = _spread(
+        [(e, u) for w, x, u, _ in log.sinks for e, _ in _carriers(x, w, gains=True)],
+        back_gains,
+    )
     takers: dict[tuple[object, ...], list[tuple[object, ...]]] = {}
-    for entity, assigned in sources.items():
-        for where, expr in assigned:
-            for carrier, _ in carriers(expr, where):
-                takers.setdefault(carrier, []).append(entity)
-    held: dict[tuple[object, ...], list[Unit]] = {}
-    forward = list(log.held)
-    seen: set[tuple[tuple[object, ...], str]] = set()
-    while forward:  # forwards, from the values
-        entity, unit = forward.pop()
-        if (entity, str(unit)) in seen:
-            continue
-        seen.add((entity, str(unit)))
-        _add(held.setdefault(entity, []), unit)
-        forward.extend((taker, unit) for taker in takers.get(entity, []))
+    for entity in sources:
+        for carrier in back_gains(entity):  # `turn` holds what `error` holds
+            takers.setdefault(carrier, []).append(entity)
+    held = _spread(list(log.held), lambda e: iter(takers.get(e, [])))  # forwards
     found = []
     shapes = _Shapes(program, log)
+    for entity, met_elements in elements.items():
+        if entity in reached or entity in log.not_number_lists:
+            continue  # also a number, or not always a list of numbers
+        if entity not in log.binds:
+            continue  # a parameter: what its callers pass is not known to be a list
+        kinds = {kind for _, kind in met_elements}
+        element = met_elements[0][0]
+        if kinds not in ({"float"}, {"int"}) or element is None:
+            continue
+        if any(e is None or not e.same_as(element) for e, _ in met_elements):
+            continue
+        if not element.dims or element.is_label or not element.text:
+            continue
+        spot = shapes.spot(entity, places.get(entity))
+        if spot is not None:
+            found.append(Found(*spot, element.text, f"list[{kinds.pop()}]"))
     for entity, units in reached.items():
-        met = list(units)
-        for unit in held.get(entity, []):
+        met: list[Unit] = []
+        for unit in [*units, *held.get(entity, []), *gained.get(entity, [])]:
             _add(met, unit)
         if len(met) != 1 or not met[0].dims or not met[0].text:
             continue  # several units: a bug for `check`, not an annotation
         if entity in sequences:
             continue  # not a float; its elements' type is not known
+        kind = "float"
+        if entity in ints:  # an int place: `Duration(sec=timeout)`
+            if entity in log.floats or _float_given(entity, log, program):
+                continue  # a float in an int place: RF401 for `check`
+            kind = "int"
         spot = shapes.spot(entity, places.get(entity))
         if spot is not None:
-            found.append(Found(spot[0], spot[1], spot[2], met[0].text))
+            found.append(Found(*spot, met[0].text, kind))
     return sorted(set(found), key=lambda f: (f.line, f.col))
+
+
+def _spread(
+    todo: list[tuple[tuple[object, ...], _T]],
+    after: Callable[[tuple[object, ...]], Iterator[tuple[object, ...]]],
+) -> dict[tuple[object, ...], list[_T]]:
+    """Each (name, fact) goes on to the names `after` the name (those its
+    assigned values carry, backwards; those it is assigned to, forwards): the
+    facts each name meets."""
+    met: dict[tuple[object, ...], list[_T]] = {}
+    done: set[tuple[tuple[object, ...], str]] = set()
+    while todo:
+        entity, fact = todo.pop()
+        if (entity, str(fact)) in done:
+            continue
+        done.add((entity, str(fact)))
+        met.setdefault(entity, []).append(fact)
+        todo.extend((e, fact) for e in after(entity))
+    return met
 
 
 def _is_sequence(value: Value) -> bool:
     return value.kind in ("list", "tuple") or value.items is not None
+
+
+def _is_number_list(expr: ast.expr, value: Value, where: Where) -> bool:
+    """A list whose known elements are numbers (`[]`, `[0.0] * n`), or a copy
+    the builtin `list()` makes of what the analysis does not know (`list(xs)`)."""
+    if value.kind == "unknown" and isinstance(expr, ast.Call):
+        func = expr.func
+        return (
+            isinstance(func, ast.Name)
+            and func.id == "list"
+            and func.id not in where.scope.module().local_names
+        )
+    return value.kind == "list" and all(
+        e.kind in NUMERIC or e.kind == "unknown" for e in value.elements or ()
+    )
+
+
+def array_kind(spec: FieldSpec | None) -> str:
+    """`float` or `int` for a message's array field of numbers, else ""."""
+    if spec is None or not spec.array:
+        return ""
+    return spec.kind if spec.kind in ("int", "float") else "unknown"
 
 
 def _add(units: list[Unit], unit: Unit) -> None:
@@ -348,10 +472,30 @@ def _add(units: list[Unit], unit: Unit) -> None:
         units.append(unit)
 
 
+def _float_given(entity: tuple[object, ...], log: FlowLog, program: Program) -> bool:
+    """A parameter whose default or an argument of a call is a float literal."""
+    if entity[0] != "param":
+        return False
+    key, name = str(entity[2]), str(entity[3])
+    given = [expr for _, param, expr in log.calls.get(key, []) if param == name]
+    function = program.functions.get(key)
+    if function is not None and not isinstance(function.node, ast.Lambda):
+        args = function.node.args
+        for arg in [*args.posonlyargs, *args.args, *args.kwonlyargs]:
+            default = _default_of(args, arg) if arg.arg == name else None
+            given += [default] if default is not None else []
+    return any(
+        isinstance(e, ast.Constant) and isinstance(e.value, float)
+        for expr in given
+        for e in ast.walk(expr)
+    )
+
+
 def _carriers(
-    expr: ast.expr, where: Where, factor: float = 1.0
+    expr: ast.expr, where: Where, factor: float = 1.0, gains: bool = False
 ) -> Iterator[tuple[tuple[object, ...], Where]]:
-    """The names in `expr` whose unit the whole value has."""
+    """The names in `expr` whose unit the whole value has; with `gains`, also
+    through a placeholder gain (`error * 1.0`)."""
     if _not_a_number(expr):  # `"/" + robot + "/reset"` reaching a timeout's place
         return
     if isinstance(expr, ast.Name):
@@ -364,28 +508,28 @@ def _carriers(
         if entity is not None and not _conversion(factor):
             yield entity, where
     elif isinstance(expr, ast.UnaryOp) and isinstance(expr.op, (ast.USub, ast.UAdd)):
-        yield from _carriers(expr.operand, where, factor)
+        yield from _carriers(expr.operand, where, factor, gains)
     elif isinstance(expr, ast.BinOp):
         if isinstance(expr.op, (ast.Add, ast.Sub)):
-            yield from _carriers(expr.left, where, factor)
-            yield from _carriers(expr.right, where, factor)
+            yield from _carriers(expr.left, where, factor, gains)
+            yield from _carriers(expr.right, where, factor, gains)
         elif isinstance(expr.op, ast.Mult):
             # `error * 1.0`: a factor of one is written as a gain's placeholder
             right, left = _literal(expr.right), _literal(expr.left)
-            if right is not None and right != 1:
-                yield from _carriers(expr.left, where, factor * right)
-            elif left is not None and left != 1:
-                yield from _carriers(expr.right, where, factor * left)
+            if right is not None and (right != 1 or gains):
+                yield from _carriers(expr.left, where, factor * right, gains)
+            elif left is not None and (left != 1 or gains):
+                yield from _carriers(expr.right, where, factor * left, gains)
         elif isinstance(expr.op, ast.Div):
             right = _literal(expr.right)
-            if right and right != 1:
-                yield from _carriers(expr.left, where, factor / right)
+            if right and (right != 1 or gains):
+                yield from _carriers(expr.left, where, factor / right, gains)
     elif isinstance(expr, ast.IfExp):
-        yield from _carriers(expr.body, where, factor)
-        yield from _carriers(expr.orelse, where, factor)
+        yield from _carriers(expr.body, where, factor, gains)
+        yield from _carriers(expr.orelse, where, factor, gains)
     elif isinstance(expr, ast.NamedExpr):
-        yield from _carriers(expr.target, where, factor)
-        yield from _carriers(expr.value, where, factor)
+        yield from _carriers(expr.target, where, factor, gains)
+        yield from _carriers(expr.value, where, factor, gains)
     elif isinstance(expr, ast.Call) and not expr.keywords:
         func = expr.func
         keeps = (
@@ -401,7 +545,7 @@ def _carriers(
         if keeps:
             args = expr.args[:1] if getattr(func, "id", "") == "round" else expr.args
             for arg in args:
-                yield from _carriers(arg, where, factor)
+                yield from _carriers(arg, where, factor, gains)
 
 
 def _name_entity(name: str, where: Where) -> tuple[object, ...] | None:

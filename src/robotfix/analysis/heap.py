@@ -25,6 +25,8 @@ from robotfix.annotations import ast as A
 from robotfix.annotations.units import Unit, UnitError, label, resolve
 from robotfix.messages import Declared
 from robotfix.ros.catalog import (
+    COMMENT,
+    SUFFIX,
     FieldSpec,
     FieldUnit,
     Invariant,
@@ -183,6 +185,23 @@ def field_unit(
     return None, None, None
 
 
+def unit_declared_at(owner: MsgSpec, name: str, unit_decl: FieldUnit) -> Declared:
+    """Where the unit of field `name` of an `owner` message was written: REP 103
+    or a shipped definition's comment (`unit_decl.source` says which), or a line
+    of the user's interface file, named as a comment's unit or a name's suffix
+    when it is one (newuser2 §7: "name the `[us]` comment as the source")."""
+    what = f"unit of {owner.name}"
+    origin = unit_decl.origin
+    if origin is None:
+        return Declared(what, None, None, unit_decl.source, owner.name)
+    field = name.rsplit(".", 1)[-1]
+    written = {
+        COMMENT: f"`{unit_decl.text}` in the comment of `{field}`",
+        SUFFIX: f"`{unit_decl.text}` from the suffix of `{field}` (unit-suffixes)",
+    }.get(unit_decl.source, "")
+    return Declared(what, origin.path, origin.line, owner=owner.name, written=written)
+
+
 def unit_of(text: str) -> Unit | None:
     kind, sep, rest = text.partition(":")
     if sep and kind in ("frame", "tag"):
@@ -337,17 +356,7 @@ def array_rule(
     unit, unit_decl, unit_owner = field_unit(ctx, state, ref, name)
     unit_declared: Declared | None = None
     if unit_decl is not None and unit_owner is not None:
-        what = f"unit of {unit_owner.name}"
-        unit_declared = (
-            Declared(what, None, None, unit_decl.source, unit_owner.name)
-            if unit_decl.origin is None
-            else Declared(
-                what,
-                unit_decl.origin.path,
-                unit_decl.origin.line,
-                owner=unit_owner.name,
-            )
-        )
+        unit_declared = unit_declared_at(unit_owner, name, unit_decl)
     msg_type = state.heap[ref].type
     declared = (
         declared

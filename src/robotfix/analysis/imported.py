@@ -243,11 +243,16 @@ def call(
     given = call_arguments(function, args, kwargs, bound)
     terms = {k: v.term for k, v in given.items() if v.term is not None}
     decls = dict(function.decls)
+    params = list(function.params)[1 if bound and function.method else 0 :]
+    exprs = dict(zip(params, node.args, strict=False))
+    exprs.update({k.arg: k.value for k in node.keywords if k.arg is not None})
     for name, value in given.items():
         decl = decls.get(name)
         if decl is not None:
             lookup = {**_unknowns(ev, decl), **terms}
             ev.check.assign_refined(state, name, decl, value, ev.site, lookup)
+            if name in exprs:  # for `robotfix suggest`: the argument met a unit
+                ev.note_sink(exprs[name], decl.unit, value, decl.base == "int")
     if function.returns is None:
         return ev.typed(function.result, node, state)
     lookup = {**_unknowns(ev, function.returns), **terms}

@@ -30,7 +30,7 @@ from robotfix.analysis import (
 from robotfix.analysis.calls import LEAVING, MUTATORS, CallEvaluator
 from robotfix.analysis.constants import bound_names, plain_kind, scan
 from robotfix.analysis.context import FileContext, Scope, build_scope
-from robotfix.analysis.flows import Where
+from robotfix.analysis.flows import Where, array_kind
 from robotfix.analysis.index import index_of
 from robotfix.analysis.program import (
     Function,
@@ -294,7 +294,9 @@ class Interpreter(CallEvaluator):
                         decisions.merged(bound.tests, state.tests), bound.early
                     )
                     and self._unbound_is_error(name, bound.when != A.TRUE)
-                    and self.check.unbound_here(state, bound.when, name, self.site)
+                    and self.check.unbound_here(
+                        state, bound.when, name, self.site, node
+                    )
                 ):
                     if bound.value is None:
                         state.env[name] = MAYBE  # one bug, one diagnostic
@@ -310,7 +312,9 @@ class Interpreter(CallEvaluator):
                 self.check.report_uninit(value, self.site, state)
             elif self.guarded or (  # `try: X` read it: past this, X exists
                 self._unbound_is_error(name)
-                and self.check.unbound_here(state, A.TRUE, name, self.site)
+                and self.check.unbound_here(
+                    state, A.TRUE, name, self.site, node, self.scope.node
+                )
             ):
                 state.env[name] = MAYBE
             return value
@@ -1260,8 +1264,16 @@ class Interpreter(CallEvaluator):
             if base.kind == "msg" and base.ref in state.heap:
                 unit = heap.field_unit(self.ctx, state, base.ref, target.attr)[0]
                 spec = heap.field_spec(self.ctx, state, base.ref, target.attr)
-                array = spec is not None and spec.array
-                log.sink(self.flow_where(), source, unit, value, array)
+                integer = spec is not None and spec.kind == "int"
+                log.sink(
+                    self.flow_where(), source, unit, value, array_kind(spec), integer
+                )
+                held = state.heap[base.ref].fields.get(target.attr)
+                if isinstance(source, ast.Call) and held is not None and held.ref:
+                    # `odom.twist.twist = Twist(Vector3(tv, ...))`: the fields below
+                    log.message_sinks(
+                        self.ctx, state, self.flow_where(), held.ref, source
+                    )
                 return
             if base.kind != "instance":
                 log.attribute_field(self.flow_where(), target, source, value)
@@ -1270,7 +1282,8 @@ class Interpreter(CallEvaluator):
         if decl is None:
             log.bind(self.flow_where(), target, source, value)
         else:
-            log.sink(self.flow_where(), source, decl.unit, value)
+            integer = decl.base == "int"
+            log.sink(self.flow_where(), source, decl.unit, value, integer=integer)
 
     def visit_AnnAssign(self, node: ast.AnnAssign, state: State) -> State:
         if node.value is not None:
@@ -1310,7 +1323,8 @@ class Interpreter(CallEvaluator):
                 state, f"{function.name}()", function.returns, value, node, lookup
             )
             if node.value is not None:
-                self.note_sink(node.value, function.returns.unit, value)
+                returns = function.returns
+                self.note_sink(node.value, returns.unit, value, returns.base == "int")
         callback = self.program.callbacks.get(function.key) if function else None
         leaves = callback is not None and callback.kind in (
             "service",

@@ -223,14 +223,15 @@ class LibraryEvaluator(ParameterEvaluator):
         keywords = {k.arg: k.value for k in node.keywords if k.arg is not None}
         for param in function.params:
             unit = param.decl.unit if param.decl is not None else None
-            if unit is None:
+            if unit is None or param.decl is None:
                 continue
+            integer = param.decl.base == "int"
             if param.keyword and param.name in kwargs and param.name in keywords:
-                self.note_sink(keywords[param.name], unit, kwargs[param.name])
+                self.note_sink(keywords[param.name], unit, kwargs[param.name], integer)
             elif param.positional is not None and not param.variadic and args:
                 at = param.positional + shift
                 if at < len(node.args) and at < len(args):
-                    self.note_sink(node.args[at], unit, args[at])
+                    self.note_sink(node.args[at], unit, args[at], integer)
 
     def _check_argument(
         self,

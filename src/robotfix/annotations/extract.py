@@ -192,7 +192,39 @@ class _Reader:
             return Refinement("tuple", None, A.TRUE, text, node.lineno, elements=parts)
         if isinstance(node, ast.Subscript) and names.qualname(node.value) in ANNOTATED:
             return self.annotated(node, names)
-        return None
+        lifted = self.lifted(node, names)
+        return self.annotated(lifted, names) if lifted is not None else None
+
+    def lifted(self, node: ast.expr, names: Names) -> ast.Subscript | None:
+        """`list[Annotated[float, "Unit('m')"]]` read as `Annotated[list[float],
+        "Unit('m')"]`: a list's refinement is on its elements (it was ignored)."""
+        if not isinstance(node, ast.Subscript) or isinstance(node.slice, ast.Tuple):
+            return None
+        kind = _container(_strip(node, names), names.qualname)
+        inner, inner_names = self.form(node.slice, names)
+        if (
+            kind is None
+            or kind[0] != "list"
+            or inner_names is not names
+            or not isinstance(inner, ast.Subscript)
+            or names.qualname(inner.value) not in ANNOTATED
+            or not isinstance(inner.slice, ast.Tuple)
+        ):
+            return None
+        element, *meta = inner.slice.elts
+        if not all(
+            isinstance(m, ast.Constant)
+            and isinstance(m.value, str)
+            and "len(" not in m.value
+            for m in meta
+        ):
+            return None  # `len(_)`, `MinLen(2)` of an element: no list's length
+        listed = ast.Subscript(node.value, element, ast.Load())
+        lifted = ast.Subscript(inner.value, ast.Tuple([listed, *meta], ast.Load()))
+        for made in (listed, lifted, lifted.slice):
+            ast.copy_location(made, node)
+            self.synthetic[id(made)] = made
+        return lifted
 
     def form(self, node: ast.expr, names: Names) -> tuple[ast.expr, Names]:
         """Strip qualifiers, parse a string annotation, follow aliases."""

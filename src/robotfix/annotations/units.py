@@ -385,11 +385,27 @@ def _compose(a: Unit, b: Unit, sign: int) -> Unit:
 
 _PREFIXES = {1e3: "k", 1e-2: "c", 1e-3: "m", 1e-6: "u", 1e-9: "n"}
 _NAMED = {("second", 60.0): "min", ("second", 3600.0): "h"}
+# Derived SI units as people write them (pint's short symbols), by their dimensions
+# in the registry's base units (mass in g: one N is 1000 g*m/s^2). A torque and an
+# energy have one dimension: N*m, as geometry_msgs/Wrench writes it, not J.
+_DERIVED = {
+    (("gram", 1), ("meter", 1), ("second", -2)): "N",
+    (("gram", 1), ("meter", 2), ("second", -2)): "N*m",
+    (("gram", 1), ("meter", -1), ("second", -2)): "Pa",
+    (("gram", 1), ("meter", 2), ("second", -3)): "W",
+    (("ampere", -1), ("gram", 1), ("meter", 2), ("second", -3)): "V",
+    (("ampere", -1), ("gram", 1), ("second", -2)): "T",
+}
 
 
 def _render(dims: tuple[tuple[str, int], ...], factor: float) -> str:
-    if len(dims) == 1 and dims[0][1] == 1 and dims[0][0] in ("meter", "second"):
+    """A unit as people write it: `km`, `ms`, `kg`, `N`, `kPa`, `km/h`, `degree`,
+    else a product of base symbols with mass in kg (`kg*m^2`), a scale left only
+    when no name has it (`0.5*m`)."""
+    if len(dims) == 1 and dims[0][1] == 1 and dims[0][0] in ("meter", "second", "gram"):
         dim = dims[0][0]
+        if dim == "gram" and math.isclose(factor, 1.0, rel_tol=1e-9):
+            return "g"
         for value, prefix in _PREFIXES.items():
             if math.isclose(factor, value, rel_tol=1e-9):
                 return prefix + _SYMBOLS[dim]
@@ -399,12 +415,19 @@ def _render(dims: tuple[tuple[str, int], ...], factor: float) -> str:
 
     if dims == (("meter", 1), ("second", -1)) and math.isclose(factor, 1 / 3.6):
         return "km/h"
-
-    def part(dim: str, exp: int) -> str:
-        name = _SYMBOLS.get(dim, dim)
-        return name if abs(exp) == 1 else f"{name}^{abs(exp)}"
+    if dims == (("radian", 1), ("second", -1)) and math.isclose(factor, TWO_PI / 60):
+        return "rpm"
 
     physical = [(d, e) for d, e in dims if ":" not in d]
+    mass = dict(physical).get("gram", 0)
+    derived = _DERIVED.get(tuple(physical))
+    if mass:  # SI's mass unit is the kg: 1000 g*m/s^2 is kg*m/s^2, a N
+        factor /= 1000.0**mass
+
+    def part(dim: str, exp: int) -> str:
+        name = "kg" if dim == "gram" else _SYMBOLS.get(dim, dim)
+        return name if abs(exp) == 1 else f"{name}^{abs(exp)}"
+
     angle = dict(physical).get("radian")
     if angle and math.isclose(factor, (math.pi / 180) ** angle):
         factor, physical = (
@@ -414,6 +437,14 @@ def _render(dims: tuple[tuple[str, int], ...], factor: float) -> str:
     num = "*".join(part(d, e) for d, e in physical if e > 0) or "1"
     den = "*".join(part(d, e) for d, e in physical if e < 0)
     text = f"{num}/{den}" if den else num
+    if derived is not None:
+        prefixes = {**_PREFIXES, 1e6: "M", 100.0: "h"}  # MPa, hPa
+        named_prefix = next(
+            (p for v, p in prefixes.items() if math.isclose(factor, v, rel_tol=1e-9)),
+            None,
+        )
+        if math.isclose(factor, 1.0, rel_tol=1e-9) or named_prefix is not None:
+            text, factor = (named_prefix or "") + derived, 1.0
     if not math.isclose(factor, 1.0):
         text = f"{factor:.6g}*{text}"
     for dim, exp in dims:

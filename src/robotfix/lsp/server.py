@@ -473,8 +473,9 @@ def hover(ls: Session, params: Any) -> dict[str, object] | None:
     col = char(source.split_lines(text), line + 1, character)
     try:
         catalog = _catalog(ls, path)
-        project = _project(catalog, path, _settings(path))
-        markdown = api.hover(text, str(path), line + 1, col, catalog, project=project)
+        settings = _settings(path)  # its stub-paths too
+        project = _project(catalog, path, settings)
+        markdown = api.hover(text, str(path), line + 1, col, catalog, settings, project)
         _record(project, _projects[id(catalog)][2], path)
     except Exception:
         return None

@@ -1,0 +1,44 @@
+"""The language server reads the user's stubs (`stub-paths` in the document's
+`[tool.robotfix]`), as `robotfix check` does: it read only the shipped ones, so the
+editor missed what the command line reported (issue 24 item 3)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from tests.lsp_client import Client
+
+SOURCE = """from typing import Annotated
+import mylib
+
+PERIOD: Annotated[float, "Unit('ms')"] = 100.0
+mylib.wait(PERIOD)
+took = mylib.elapsed()
+"""
+
+
+def test_the_editor_checks_and_hovers_with_the_users_stubs(tmp_path: Path) -> None:
+    (tmp_path / "pyproject.toml").write_text(
+        '[tool.robotfix]\nstub-paths = ["stubs"]\n', encoding="utf-8"
+    )
+    (tmp_path / "stubs").mkdir()
+    (tmp_path / "stubs" / "mylib.pyi").write_text(
+        "from typing import Annotated\n"
+        "def wait(duration: Annotated[float, \"Unit('s')\"]) -> None: ...\n"
+        "def elapsed() -> Annotated[float, \"Unit('s')\"]: ...\n",
+        encoding="utf-8",
+    )
+    path = tmp_path / "node.py"
+    path.write_text(SOURCE, encoding="utf-8")
+    client = Client()
+    try:
+        client.initialize(tmp_path)
+        uri = client.open(path, SOURCE)
+        opened = client.diagnostics()
+        hover = client.hover(uri, 5, 1)
+        client.stop()
+    finally:
+        client.kill()
+    found = [(d["code"], d["range"]["start"]["line"]) for d in opened["diagnostics"]]
+    assert found == [("RF201", 4)]  # ms into the stub's s
+    assert "`s`" in hover["result"]["contents"]["value"]
