@@ -1039,9 +1039,17 @@ class ExpressionEvaluator:
         return value
 
     def eval_Lambda(self, node: ast.Lambda, state: State) -> Value:
+        # its body is analysed later as a function of its own, in this scope (names
+        # of the enclosing function by their declarations, as for a nested `def`)
+        pending = getattr(self, "pending", None)
+        if pending is not None:
+            pending.append((node, self.scope))  # type: ignore[attr-defined]
         return self.unknown(node)
 
-    eval_SetComp = eval_DictComp = eval_Lambda
+    def eval_SetComp(self, node: ast.expr, state: State) -> Value:
+        return self.unknown(node)
+
+    eval_DictComp = eval_SetComp
 
     def eval_ListComp(self, node: ast.ListComp, state: State) -> Value:
         return self.comprehension(node, "list", state)

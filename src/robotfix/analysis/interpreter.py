@@ -101,14 +101,18 @@ def analyze_module(ctx: FileContext) -> None:
     for statement in tree.body:
         if isinstance(statement, ast.ClassDef):
             pending.append((statement, module))
+    # a lambda registered as a callback is analysed where its enclosing body meets
+    # it (`eval_Lambda`), so it sees that body's names; on its own only if never met
+    later: list[tuple[ast.AST, Scope]] = []
     for function in list(program.functions.values()):
-        pending.append((function.node, function.parent))
+        queue = later if isinstance(function.node, ast.Lambda) else pending
+        queue.append((function.node, function.parent))
     seen: set[int] = set()
     # the editor's memo of items analysed by an earlier check (analysis/unitmemo.py)
     units = ctx.unit_memo
     memo = None if units is None else units.begin(ctx, program, tree, statics)
-    while pending:
-        node, parent = pending.pop(0)
+    while pending or later:
+        node, parent = pending.pop(0) if pending else later.pop(0)
         if id(node) not in seen:
             seen.add(id(node))
             if memo is None:
@@ -230,6 +234,8 @@ def _run_body(
 def _function_for(program: Program, node: ast.AST, parent: Scope) -> Function:
     known = program.by_node.get(id(node))
     if known is not None:
+        if isinstance(node, ast.Lambda) and known.scope is None:
+            known.parent = parent  # a callback met in the body that defines it
         return known
     assert isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda))
     key = f"<nested {getattr(node, 'name', 'lambda')}@{node.lineno}>"
@@ -321,9 +327,7 @@ class Interpreter(CallEvaluator):
         outer = scope.parent
         while outer is not None and outer.parent is not None:
             if outer.kind == "function" and name in outer.local_names:
-                return self._assumed_or_unknown(
-                    outer.decls.get(name), name, state, node
-                )
+                return self._enclosing(outer, name, state, node)
             outer = outer.parent
         module = scope.module()
         if name in self.statics:
@@ -456,6 +460,24 @@ class Interpreter(CallEvaluator):
         if self.ctx.star_import:
             return False
         return self.scope.kind != "class" or name not in self.scope.module().local_names
+
+    def _enclosing(self, outer: Scope, name: str, state: State, node: ast.AST) -> Value:
+        """A name of an enclosing function, read by a nested function or lambda
+        (which may run after it changed): what its refinement says, else an object
+        of its parameter's annotated type (`talker: Talker`), else unknown."""
+        decl = outer.decls.get(name)
+        function = self.program.by_node.get(id(outer.node))
+        if (
+            function is not None
+            and function.is_method
+            and name == function.first_parameter
+        ):
+            return Value("instance", name=function.class_name or "")
+        if decl is None and function is not None:
+            typed = self.program.types.parameter(function, name)
+            if typed is not None:
+                return self.typed(typed, node, state, name)
+        return self._assumed_or_unknown(decl, name, state, node)
 
     def _assumed_or_unknown(
         self, decl: Refinement | None, name: str, state: State, node: ast.AST

@@ -384,9 +384,12 @@ class LibraryEvaluator(ParameterEvaluator):
             return None
         factor = param.unit.factor / result.unit.factor
         term = A.Binary("*", first.term, A.Num(Fraction(factor), False))
-        if first.unit is None or first.literal:
-            return Value("float", term, result.unit, first.literal)
         call = self.ctx.source.segment(node.func) or function.short
+        if first.literal:  # in the parameter's unit: `radians(90.0)` is in rad
+            done = Conversion(call, param.unit)
+            return Value("float", term, result.unit, True, conversion=done)
+        if first.unit is None:
+            return Value("float", term, result.unit)
         angle = {d for d, _ in result.unit.dims}
         converted = (
             angle <= {d for d, _ in first.unit.dims}

@@ -7,6 +7,7 @@ keeps its elements (and keys), so a constant table can be looked up.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from dataclasses import replace as _replace
 from typing import TYPE_CHECKING, Any, TypeVar
@@ -204,9 +205,27 @@ class Value:
     def fit(self, expected: Unit) -> Fit | None:
         """How this value's unit meets `expected`; None when there is nothing to
         compare (no unit known, or a literal, which takes the unit of its context)."""
-        if self.unit is None or self.literal:
+        if self.unit is None:
             return None
+        if self.literal:
+            return self._converted_literal(expected)
         return fit(self.unit, expected, self.factors, self.rad_free)
+
+    def _converted_literal(self, expected: Unit) -> Fit | None:
+        """`math.radians(90.0)`: the literal took the unit of the call's parameter
+        (degree) and was converted, so the result is in rad, times whatever else
+        the literal stands for (deg/s gives rad/s). Into a unit that differs from
+        that only by the scale (degree, degree/s) the conversion was one too many:
+        a mismatch. Any other literal takes the unit of its context."""
+        unit = self.unit
+        if self.conversion is None or unit is None:
+            return None
+        ours, theirs = dict(unit.dims), dict(expected.dims)
+        every = ours.keys() | theirs.keys()
+        rest = {d for d in every if ours.get(d, 0) != theirs.get(d, 0)}
+        if rest & ours.keys() or math.isclose(expected.factor, unit.factor):
+            return None
+        return Fit("mismatch", unit)
 
 
 NONE = Value("none")
