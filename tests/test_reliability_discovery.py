@@ -501,6 +501,46 @@ def test_jobs_are_clamped_and_a_failing_pool_falls_back(
     assert workers == [min(run.default_jobs(), 40)]
 
 
+def test_a_pool_broken_after_its_first_chunk_loses_only_that_chunk(
+    many: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A worker that dies while chunks are still being sent breaks the pool: the
+    chunk it had is lost (an internal error of its files), the chunks not sent yet
+    are checked here, and the run does not start over in this process (which would
+    check again the file that killed the worker, and die with it)."""
+    from concurrent.futures import Future
+    from concurrent.futures.process import BrokenProcessPool
+
+    expected = codes(check(many))
+    sent: list[list[Path]] = []
+
+    class BreaksAfterOne:
+        def __init__(self, max_workers: int, **_: Any) -> None:
+            pass
+
+        def submit(self, fn: Any, chunk: list[tuple[Path, bytes | None]]) -> Any:
+            if sent:
+                raise BrokenProcessPool("a worker died")
+            sent.append([path for path, _ in chunk])
+            future: Future[Any] = Future()
+            future.set_exception(BrokenProcessPool("a worker died"))
+            return future
+
+        def shutdown(self, wait: bool = True, **_: Any) -> None:
+            pass
+
+    monkeypatch.setattr(run, "default_jobs", lambda: 2)
+    monkeypatch.setattr(concurrent.futures, "ProcessPoolExecutor", BreaksAfterOne)
+    result = check_paths([many], Config(root=many), jobs=2)
+    lost = sorted(Path(e.path).name for e in result.internal_errors)
+    assert len(sent) == 1 and lost == sorted(p.name for p in sent[0])
+    assert all("worker process" in e.summary for e in result.internal_errors)
+    first = {p.name for p in sent[0]}
+    assert sorted(codes(result)) == sorted(
+        c for c in expected if Path(c[0]).name not in first
+    )
+
+
 @pytest.mark.skipif(
     "fork" not in multiprocessing.get_all_start_methods() or run.default_jobs() < 2,
     reason="a patched worker needs fork and two cores",

@@ -7,6 +7,7 @@ Builders take source-level facts (statement text, names, units, values) and retu
 from __future__ import annotations
 
 import math
+import re
 import sys
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
@@ -300,8 +301,12 @@ def refinement_violated(
     declared: Declared,
 ) -> Diagnostic:
     """RF101; `value`: the one value `subject` has there, shown in the message
-    itself (a call's argument, `time_allowance=LOOK_TIME`, hides it)."""
-    shown = f": here {subject} = {value}" if value is not None else ""
+    itself (a call's argument, `time_allowance=LOOK_TIME`, hides it), unless the
+    statement already shows it (`timeout = 200`)."""
+    written = value is not None and re.search(
+        rf"(?<![\w.]){re.escape(value)}(?![\w.])", stmt
+    )
+    shown = f": here {subject} = {value}" if value is not None and not written else ""
     return Diagnostic(
         rules.REFINEMENT_VIOLATED,
         path,

@@ -531,8 +531,20 @@ def _check_all(
                 else (interfaces, config, cache is None)
             ),
         )
+        unsent: list[list[tuple[Path, bytes | None]]] = []
         for chunk in chunks:
-            pending[pool.submit(_worker_check, chunk)] = chunk
+            if unsent:
+                unsent.append(chunk)
+                continue
+            try:
+                pending[pool.submit(_worker_check, chunk)] = chunk
+            except BrokenProcessPool:
+                if not pending:
+                    raise  # the pool never ran a chunk: check here instead
+                # a worker died (a crash, the OOM killer) before the last chunk was
+                # sent: the chunks sent are lost below; the others are checked
+                # here, never the one that may have killed it
+                unsent.append(chunk)
     except (OSError, BrokenProcessPool):  # EMFILE, EAGAIN: check here instead
         _stop(pool)
         _WORKER = None
@@ -556,6 +568,11 @@ def _check_all(
         _stop(pool)
         raise
     pool.shutdown(wait=True)
+    if unsent:
+        project.expect([path for chunk in unsent for path, _ in chunk])
+    for chunk in unsent:
+        for path, data in chunk:
+            yield _check_one(path, data, catalog, config, project)
 
 
 def _chunks(
