@@ -65,7 +65,9 @@ def test_no_fix_without_a_module_to_convert_with_or_a_round_factor(
     assert fixes[11] == ()  # `deg / 2` into rad: 0.0349066*rad, no round factor
 
 
-def _session(tmp_path: Path, text: str, ask: list[int]) -> dict[str, Any]:
+def _session(
+    tmp_path: Path, text: str, ask: list[int], trigger: int = 1
+) -> dict[str, Any]:
     client = Client()
     try:
         path = tmp_path / "node.py"
@@ -83,7 +85,7 @@ def _session(tmp_path: Path, text: str, ask: list[int]) -> dict[str, Any]:
                         "start": {"line": line, "character": 0},
                         "end": {"line": line, "character": 0},
                     },
-                    "context": {"diagnostics": []},
+                    "context": {"diagnostics": [], "triggerKind": trigger},
                 },
             )["result"]
             for line in ask
@@ -162,3 +164,5 @@ def test_suggested_units_are_code_actions(tmp_path: Path) -> None:
     edited = _edited(text, on_v[0])
     assert "v: Annotated[float, \"Unit('m/s')\"] = distance_m" in edited
     assert edited.startswith("from typing import Annotated\n")
+    # asked by the client at a cursor move: no second analysis for suggest
+    assert _session(tmp_path, text, [4], trigger=2)["actions"] == [[]]

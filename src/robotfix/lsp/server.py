@@ -62,6 +62,7 @@ MAX_CATALOGS = 32  # catalogs kept (one per set of interface files and settings)
 MAX_MEMOS = 8  # documents, most recently checked, whose proofs are kept
 MAX_PROJECTS = 8  # module summaries kept, one set per catalog
 QUICKFIX, REWRITE = "quickfix", "refactor.rewrite"  # CodeActionKind
+AUTOMATIC = 2  # CodeActionTriggerKind: a client asking at a cursor move (a lightbulb)
 
 # interface files and settings -> (their stat stamps and open buffers, the catalog)
 _catalogs: dict[tuple[object, ...], tuple[tuple[object, ...], MsgCatalog]] = {}
@@ -521,7 +522,8 @@ def hover(ls: Session, params: Any) -> dict[str, object] | None:
 
 def code_action(ls: Session, params: Any) -> list[dict[str, object]]:
     """Quick fixes for the diagnostics on the lines asked about, and the unit
-    annotations `robotfix suggest` proposes there, each checked first
+    annotations `robotfix suggest` proposes there (not when the client asks on its
+    own, at a cursor move: suggest runs an analysis of its own), each checked first
     (`lsp/actions.py`)."""
     uri = _uri(params)
     first = _get(params, "range", "start", "line")
@@ -552,7 +554,11 @@ def code_action(ls: Session, params: Any) -> list[dict[str, object]]:
                 if verdicts.fixes[key]:
                     shown = _diagnostic(d, lines, ls.related())
                     offered.append(_action(uri, lines, fix, QUICKFIX, shown))
-        offered.extend(_suggested(ls, uri, path, text, before, check, verdicts, first, last))
+        context = params.get("context")
+        if not isinstance(context, dict) or context.get("triggerKind") != AUTOMATIC:  # suggest analyses again: only when asked for
+            offered.extend(
+                _suggested(ls, uri, path, text, before, check, verdicts, first, last)
+            )
     except Exception as err:  # never take the editor session down
         _log_error(ls, f"robotfix: internal error on {path}: {err}")
         return []
