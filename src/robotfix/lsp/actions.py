@@ -14,10 +14,14 @@ import difflib
 from collections import Counter
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 from robotfix import source
 from robotfix.diagnostics import Diagnostic, Edit, Fix, Severity, Span
 from robotfix.lsp.documents import apply, utf16
+
+if TYPE_CHECKING:
+    from robotfix.api import Suggestion
 
 Checker = Callable[[str], list[Diagnostic]]
 
@@ -28,7 +32,8 @@ class Verdicts:
 
     text: str
     fixes: dict[tuple[object, ...], bool] = field(default_factory=dict)
-    suggested: list[tuple[int, Fix]] | None = None  # (line, fix) per suggestion
+    suggested: list[Suggestion] | None = None  # what suggest proposes in the text
+    edits: dict[tuple[object, ...], Fix] = field(default_factory=dict)  # suggest's
 
 
 def applied(text: str, edits: Iterable[Edit]) -> str:

@@ -577,29 +577,35 @@ def _suggested(
     last: int,
 ) -> list[dict[str, object]]:
     """The `Unit(...)` annotations suggest proposes on lines first..last (0-based),
-    one action each, those whose edited text adds no diagnostic."""
+    one action each, those whose edited text adds no diagnostic (each tried when
+    first asked for)."""
     from robotfix import suggest  # only when a client asks for code actions
 
+    catalog = _catalog(ls, path)
     if verdicts.suggested is None:
-        catalog = _catalog(ls, path)
-        verdicts.suggested = []
-        for s in api.unit_suggestions(text, str(path), catalog):
+        verdicts.suggested = api.unit_suggestions(text, str(path), catalog)
+    lines = source.split_lines(text)
+    offered = []
+    for s in verdicts.suggested:
+        if not first <= s.line - 1 <= last:
+            continue
+        key = ("suggest", s)
+        if key not in verdicts.fixes:
             try:
                 new = suggest.annotate(text, str(path), catalog, [s])
             except suggest.UnsafeEditError:
-                continue
+                new = text
             fix = Fix(
                 f"Annotate `{s.name}` with Unit('{s.unit}')",
                 actions.diff_edits(text, new),
             )
-            if new != text and actions.verified(text, before, fix, check, None):
-                verdicts.suggested.append((s.line, fix))
-    lines = source.split_lines(text)
-    return [
-        _action(uri, lines, fix, REWRITE, None)
-        for line, fix in verdicts.suggested
-        if first <= line - 1 <= last
-    ]
+            verdicts.fixes[key] = new != text and actions.verified(
+                text, before, fix, check, None
+            )
+            verdicts.edits[key] = fix
+        if verdicts.fixes[key]:
+            offered.append(_action(uri, lines, verdicts.edits[key], REWRITE, None))
+    return offered
 
 
 def _action(
