@@ -50,11 +50,13 @@ def session(file: Path, args: argparse.Namespace, scratch: Path) -> dict[str, fl
         XDG_CACHE_HOME=str(scratch / "cache"),
     )
     if args.edit:
-        env.update(RF_EDIT_LINE=args.edit[0], RF_EDIT_A=args.edit[1], RF_EDIT_B=args.edit[2])
+        env.update(
+            RF_EDIT_LINE=args.edit[0], RF_EDIT_A=args.edit[1], RF_EDIT_B=args.edit[2]
+        )
+    lua = f"luafile {HERE / 'nvim_latency.lua'}"
     spawned = time.monotonic()
     subprocess.run(
-        ["nvim", "--headless", "-u", "NONE", "-i", "NONE", "-n", "-c"]
-        + [f"luafile {HERE / 'nvim_latency.lua'}"],
+        ["nvim", "--headless", "-u", "NONE", "-i", "NONE", "-n", "-c", lua],
         env=env,
         stdin=subprocess.DEVNULL,
         timeout=300,
@@ -95,12 +97,20 @@ def session(file: Path, args: argparse.Namespace, scratch: Path) -> dict[str, fl
             process["t0"], published["t"]
         ),
         "cold server CPU (process, at diagnostics sent)": published["cpu"] * 1000,
+        "  CPU: Python start (to the first line)": process["cpu"] * 1000,
+        "  CPU: CLI imported": (at("cli imported")["cpu"] - process["cpu"]) * 1000,
+        "  CPU: language server imported": (
+            at("server imported")["cpu"] - at("cli imported")["cpu"]
+        )
+        * 1000,
+        "  CPU: first check": (at("done check")["cpu"] - at("recv check")["cpu"])
+        * 1000,
         "modules the first check imported": at("done check")["modules"],
     }
     changes = [e for e in log if e["what"] == "recv textDocument/didChange"]
     sends = [e for e in log if e["what"] == "sent textDocument/publishDiagnostics"]
     edits = []
-    for edit, change in zip(nvim["edits"], changes):
+    for edit, change in zip(nvim["edits"], changes, strict=False):
         sent = next(e for e in sends if e["t"] >= change["t"])
         edits.append(
             (
@@ -139,13 +149,17 @@ def main() -> None:
             file.write_text(text)
             lines = text.splitlines()
             middle = next(
-                i for i in range(len(lines) // 2, len(lines)) if lines[i].endswith("= 0.5")
+                i
+                for i in range(len(lines) // 2, len(lines))
+                if lines[i].endswith("= 0.5")
             )
             base = lines[middle]
             args.edit = args.edit or [str(middle + 1), base, base.replace("0.5", "0.6")]
         rows = [session(file.resolve(), args, scratch) for _ in range(args.runs)]
     load = os.getloadavg()[0]
-    print(f"{file.name}, {args.runs} runs, debounce {args.debounce} ms, load {load:.1f}")
+    print(
+        f"{file.name}, {args.runs} runs, debounce {args.debounce} ms, load {load:.1f}"
+    )
     for key in rows[0]:
         values = [row[key] for row in rows]
         print(

@@ -30,10 +30,10 @@ turn: Annotated[float, "Unit('rad')"] = deg
 # line -> the fix's edited line, as the message words it
 FIXED = {
     10: "cmd.linear.x = (speed + 1) / 3.6",
-    11: 'wait: Annotated[float, "Unit(\'s\')"] = period_s',
+    11: "wait: Annotated[float, \"Unit('s')\"] = period_s",
     12: "cmd.angular.z = 0.5 * yaw",
-    13: 'heading: Annotated[float, "Unit(\'rad\')"] = yaw / 2',
-    14: 'turn: Annotated[float, "Unit(\'rad\')"] = math.radians(deg)',
+    13: "heading: Annotated[float, \"Unit('rad')\"] = yaw / 2",
+    14: "turn: Annotated[float, \"Unit('rad')\"] = math.radians(deg)",
 }
 
 
@@ -129,7 +129,9 @@ def test_code_actions_are_offered_only_once_checked(tmp_path: Path) -> None:
     assert silenced == "cmd.linear.x = speed + 1  # robotfix: ignore[RF201]"
     assert elsewhere == []
     # the notes that have a place are links, not text appended to the message
-    wait = next(d for d in result["opened"]["diagnostics"] if d["range"]["start"]["line"] == 10)
+    wait = next(
+        d for d in result["opened"]["diagnostics"] if d["range"]["start"]["line"] == 10
+    )
     (link,) = wait["relatedInformation"]
     assert link["message"] == "annotation of `wait` declared here"
     assert link["location"]["range"]["start"]["line"] == 10

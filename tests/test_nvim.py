@@ -57,8 +57,17 @@ def test_neovim_opens_edits_hovers_and_gets_a_quick_fix(tmp_path: Path) -> None:
         ),
     )
     subprocess.run(
-        ["nvim", "--headless", "-u", "NONE", "-i", "NONE", "-n"]
-        + ["-c", f"luafile {SESSION}"],
+        [
+            "nvim",
+            "--headless",
+            "-u",
+            "NONE",
+            "-i",
+            "NONE",
+            "-n",
+            "-c",
+            f"luafile {SESSION}",
+        ],
         env=env,
         cwd=tmp_path,
         stdin=subprocess.DEVNULL,

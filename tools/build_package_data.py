@@ -117,7 +117,9 @@ def main() -> None:
     from robotfix.annotations import parser
 
     parser.TABLES.write_text(parser.tables_json(), encoding="utf-8")
-    print(f"wrote {STANDARD}, {UNITS}, {TABLES_JSON} and {parser.TABLES}", file=sys.stderr)
+    print(
+        f"wrote {STANDARD}, {UNITS}, {TABLES_JSON} and {parser.TABLES}", file=sys.stderr
+    )
 
 
 if __name__ == "__main__":

@@ -442,7 +442,9 @@ def unit_mismatch(
     )
 
 
-def _scale_fix(value: Written, got: Unit, expected: Unit, angles: str) -> tuple[Fix, ...]:
+def _scale_fix(
+    value: Written, got: Unit, expected: Unit, angles: str
+) -> tuple[Fix, ...]:
     """The value times the factor that takes `got` to `expected`, when it is exact as
     written (`/ 3.6`, `* 1000`) or a degree-radian conversion of `angles`."""
     if expected.is_label or not got.same_dimension(expected):
@@ -457,7 +459,9 @@ def _scale_fix(value: Written, got: Unit, expected: Unit, angles: str) -> tuple[
             return _rewrite(f"{angles}.{call}", value, f"{angles}.{call}({value.text})")
     op, number = ("/", 1 / ratio) if ratio < 1 else ("*", ratio)
     shown = f"{number:.6g}"
-    if math.isclose(number, 1.0) or not math.isclose(float(shown), number, rel_tol=1e-12):
+    if math.isclose(number, 1.0) or not math.isclose(
+        float(shown), number, rel_tol=1e-12
+    ):
         return ()
     return _rewrite(f"{op} {shown}", value, f"{operand} {op} {shown}")
 

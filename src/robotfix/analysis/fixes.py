@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import ast
 import math
+from collections.abc import Sequence
 
 from robotfix.diagnostics import Edit
 from robotfix.messages import Written
@@ -26,7 +27,10 @@ def stored(source: SourceFile, site: ast.AST) -> ast.expr | None:
     if isinstance(site, ast.expr):
         return site
     if isinstance(site, ast.Assign):
-        simple = all(isinstance(t, (ast.Name, ast.Attribute, ast.Subscript)) for t in site.targets)
+        simple = all(
+            isinstance(t, (ast.Name, ast.Attribute, ast.Subscript))
+            for t in site.targets
+        )
         value = site.value if simple else None
     elif isinstance(site, (ast.AnnAssign, ast.AugAssign, ast.Return)):
         value = site.value
@@ -78,7 +82,7 @@ def undo_call(source: SourceFile, within: ast.AST, call: str) -> Edit | None:
 def angles(source: SourceFile) -> str:
     """The name a top-level `import math` (else `import numpy`) binds, or ""."""
     tree = source.tree
-    bound = {}
+    bound: dict[str, str] = {}
     for node in tree.body if tree is not None else ():
         if isinstance(node, ast.Import):
             for alias in node.names:
@@ -87,7 +91,9 @@ def angles(source: SourceFile) -> str:
     return next((bound[m] for m in _ANGLE_MODULES if m in bound), "")
 
 
-def _replaced(source: SourceFile, found: list[tuple[ast.expr, ast.expr]]) -> Edit | None:
+def _replaced(
+    source: SourceFile, found: Sequence[tuple[ast.expr, ast.expr]]
+) -> Edit | None:
     if len(found) != 1:
         return None
     node, kept = found[0]

@@ -209,9 +209,10 @@ def _parser() -> Lark:
     try:
         shipped = json.loads(TABLES.read_text(encoding="utf-8"), object_hook=_untag)
         if shipped["format"] == tables_format():
-            return Lark._load_from_dict(  # lark's own loader of serialized tables
+            loaded: Lark = Lark._load_from_dict(  # type: ignore[no-untyped-call]
                 shipped["data"], shipped["memo"], transformer=_Inline(_ToAst())
-            )
+            )  # lark's own loader of serialized tables (its standalone parsers')
+            return loaded
     except (OSError, ValueError, LookupError, TypeError, AttributeError, LarkError):
         pass  # built below
     return build_parser()

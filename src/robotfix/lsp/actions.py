@@ -51,7 +51,10 @@ def applied(text: str, edits: Iterable[Edit]) -> str:
 
 def lsp_range(lines: list[str], span: Span) -> dict[str, object]:
     return {
-        "start": {"line": span.line - 1, "character": utf16(lines, span.line, span.col)},
+        "start": {
+            "line": span.line - 1,
+            "character": utf16(lines, span.line, span.col),
+        },
         "end": {
             "line": span.end_line - 1,
             "character": utf16(lines, span.end_line, span.end_col),

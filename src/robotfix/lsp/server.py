@@ -46,7 +46,6 @@ from robotfix.lsp.documents import (
     char,
     path_of,
     to_path,
-    utf16,
 )
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.smt.memo import ProofMemo
@@ -91,7 +90,9 @@ class Session:
         """Whether the client shows a diagnostic's notes as links of their own."""
         text = self.capabilities.get("textDocument")
         published = text.get("publishDiagnostics") if isinstance(text, dict) else None
-        return isinstance(published, dict) and published.get("relatedInformation") is True
+        return (
+            isinstance(published, dict) and published.get("relatedInformation") is True
+        )
 
     def notify(self, method: str, params: object) -> None:
         if self.endpoint is not None:
@@ -555,7 +556,9 @@ def code_action(ls: Session, params: Any) -> list[dict[str, object]]:
                     shown = _diagnostic(d, lines, ls.related())
                     offered.append(_action(uri, lines, fix, QUICKFIX, shown))
         context = params.get("context")
-        if not isinstance(context, dict) or context.get("triggerKind") != AUTOMATIC:  # suggest analyses again: only when asked for
+        if (
+            not isinstance(context, dict) or context.get("triggerKind") != AUTOMATIC
+        ):  # suggest analyses again: only when asked for
             offered.extend(
                 _suggested(ls, uri, path, text, before, check, verdicts, first, last)
             )
