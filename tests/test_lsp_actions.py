@@ -168,3 +168,47 @@ def test_suggested_units_are_code_actions(tmp_path: Path) -> None:
     assert edited.startswith("from typing import Annotated\n")
     # asked by the client at a cursor move: no second analysis for suggest
     assert _session(tmp_path, text, [4], trigger=2)["actions"] == [[]]
+
+
+def test_a_request_checks_a_bounded_number_of_fixes_and_its_kinds(
+    tmp_path: Path,
+) -> None:
+    """Over a whole file with many diagnostics, one request checks at most
+    `MAX_TRIED` fixes (each is a check of the file); the next request goes on from
+    the verdicts kept. A client asking only for refactorings gets no quick fix."""
+    text = "from typing import Annotated\n" + "".join(
+        f"v{i}: Annotated[float, \"Unit('m/s')\"] = 1.0\n"
+        f"w{i}: Annotated[float, \"Unit('km/h')\"] = v{i}\n"
+        for i in range(12)
+    )
+    path = tmp_path / "node.py"
+    path.write_text(text)
+    client = Client()
+    try:
+        client.initialize(tmp_path)
+        uri = client.open(path, text)
+        assert len(client.diagnostics()["diagnostics"]) == 12
+
+        def ask(only: list[str] | None = None) -> list[dict[str, Any]]:
+            context: dict[str, Any] = {"diagnostics": [], "triggerKind": 2}
+            if only is not None:
+                context["only"] = only
+            whole = {"line": 0, "character": 0}, {"line": 30, "character": 0}
+            params = {
+                "textDocument": {"uri": uri},
+                "range": {"start": whole[0], "end": whole[1]},
+                "context": context,
+            }
+            return client.request("textDocument/codeAction", params)["result"]
+
+        first, second, refactors = ask(), ask(), ask(["refactor"])
+        client.stop()
+    finally:
+        client.kill()
+    assert len(first) == actions.MAX_TRIED  # 8 diagnostics, 2 fixes each
+    assert len(second) == 24  # the 16 kept, and the 8 checked now
+    assert refactors == []
+    assert {a["title"] for a in second} == {
+        "RobotFix: Convert with `* 3.6`",
+        "RobotFix: Silence RF201 on this line",
+    }

@@ -26,6 +26,9 @@ if TYPE_CHECKING:
 Checker = Callable[[str], list[Diagnostic]]
 
 
+MAX_TRIED = 16  # fixes checked for one request; the others wait for the next one
+
+
 @dataclass
 class Verdicts:
     """What was found for one text of a document: its verdict on each fix tried."""
@@ -34,6 +37,18 @@ class Verdicts:
     fixes: dict[tuple[object, ...], bool] = field(default_factory=dict)
     suggested: list[Suggestion] | None = None  # what suggest proposes in the text
     edits: dict[tuple[object, ...], Fix] = field(default_factory=dict)  # suggest's
+    budget: int = MAX_TRIED  # of the request being answered
+
+    def holds(self, key: tuple[object, ...], check: Callable[[], bool]) -> bool:
+        """The verdict kept under `key`, else `check()`'s while this request may
+        still try fixes (a request over a whole file with many diagnostics does
+        not check them all at once); False when it may not."""
+        if key not in self.fixes:
+            if self.budget <= 0:
+                return False
+            self.budget -= 1
+            self.fixes[key] = check()
+        return self.fixes[key]
 
 
 def applied(text: str, edits: Iterable[Edit]) -> str:

@@ -25,6 +25,7 @@ from __future__ import annotations
 import os
 import sys
 from collections.abc import Callable, Iterable
+from functools import partial
 from pathlib import Path
 from typing import IO, TYPE_CHECKING, Any
 
@@ -480,6 +481,8 @@ def did_close(ls: Session, params: Any) -> None:
     """An interface file's unsaved edits no longer count: its users see the disk."""
     uri = _uri(params)
     ls.documents.close(uri)
+    ls.found.pop(uri, None)
+    ls.verdicts.pop(uri, None)
     path = path_of(uri)
     if _is_interface(path):
         _publish_dependents(ls, [path])
@@ -543,22 +546,23 @@ def code_action(ls: Session, params: Any) -> list[dict[str, object]]:
         verdicts = ls.verdicts.get(uri)
         if verdicts is None or verdicts.text != text:
             verdicts = ls.verdicts[uri] = actions.Verdicts(text)
+        verdicts.budget = actions.MAX_TRIED
+        context = params.get("context")
+        context = context if isinstance(context, dict) else {}
+        only = context.get("only")
         lines = source.split_lines(text)
         offered = []
-        for d in before:
+        for d in before if _wanted(QUICKFIX, only) else ():
             if d.span.line - 1 > last or d.span.end_line - 1 < first:
                 continue
             for fix in actions.candidates(text, d):
                 key = (d.code, d.span, d.message, fix)
-                if key not in verdicts.fixes:
-                    verdicts.fixes[key] = actions.verified(text, before, fix, check, d)
-                if verdicts.fixes[key]:
+                tried = partial(actions.verified, text, before, fix, check, d)
+                if verdicts.holds(key, tried):
                     shown = _diagnostic(d, lines, ls.related())
                     offered.append(_action(uri, lines, fix, QUICKFIX, shown))
-        context = params.get("context")
-        if (
-            not isinstance(context, dict) or context.get("triggerKind") != AUTOMATIC
-        ):  # suggest analyses again: only when asked for
+        # suggest analyses the file again: not at a client's own request (a cursor move)
+        if _wanted(REWRITE, only) and context.get("triggerKind") != AUTOMATIC:
             offered.extend(
                 _suggested(ls, uri, path, text, before, check, verdicts, first, last)
             )
@@ -593,22 +597,30 @@ def _suggested(
         if not first <= s.line - 1 <= last:
             continue
         key = ("suggest", s)
-        if key not in verdicts.fixes:
+
+        def annotated(s: api.Suggestion = s, key: tuple[object, ...] = key) -> bool:
             try:
                 new = suggest.annotate(text, str(path), catalog, [s])
             except suggest.UnsafeEditError:
-                new = text
+                return False
             fix = Fix(
                 f"Annotate `{s.name}` with Unit('{s.unit}')",
                 actions.diff_edits(text, new),
             )
-            verdicts.fixes[key] = new != text and actions.verified(
-                text, before, fix, check, None
-            )
             verdicts.edits[key] = fix
-        if verdicts.fixes[key]:
+            return new != text and actions.verified(text, before, fix, check, None)
+
+        if verdicts.holds(key, annotated):
             offered.append(_action(uri, lines, verdicts.edits[key], REWRITE, None))
     return offered
+
+
+def _wanted(kind: str, only: object) -> bool:
+    """Whether a client that asked for the kinds `only` (all when None) wants
+    actions of `kind` (`refactor` covers `refactor.rewrite`)."""
+    if not isinstance(only, list):
+        return True
+    return any(kind == o or kind.startswith(f"{o}.") for o in only)
 
 
 def _action(
