@@ -76,20 +76,8 @@ def _session(
         initialized = client.initialize(tmp_path, caps)
         uri = client.open(path, text)
         opened = client.diagnostics()
-        answers = [
-            client.request(
-                "textDocument/codeAction",
-                {
-                    "textDocument": {"uri": uri},
-                    "range": {
-                        "start": {"line": line, "character": 0},
-                        "end": {"line": line, "character": 0},
-                    },
-                    "context": {"diagnostics": [], "triggerKind": trigger},
-                },
-            )["result"]
-            for line in ask
-        ]
+        context = {"diagnostics": [], "triggerKind": trigger}
+        answers = [client.code_action(uri, line, line, context) for line in ask]
         client.stop()
     finally:
         client.kill()
@@ -193,13 +181,7 @@ def test_a_request_checks_a_bounded_number_of_fixes_and_its_kinds(
             context: dict[str, Any] = {"diagnostics": [], "triggerKind": 2}
             if only is not None:
                 context["only"] = only
-            whole = {"line": 0, "character": 0}, {"line": 30, "character": 0}
-            params = {
-                "textDocument": {"uri": uri},
-                "range": {"start": whole[0], "end": whole[1]},
-                "context": context,
-            }
-            return client.request("textDocument/codeAction", params)["result"]
+            return client.code_action(uri, 0, 30, context)
 
         first, second, refactors = ask(), ask(), ask(["refactor"])
         client.stop()
