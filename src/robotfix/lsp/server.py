@@ -39,7 +39,7 @@ from robotfix import (
     rulepages,
     source,
 )
-from robotfix.diagnostics import Diagnostic, Fix, Severity
+from robotfix.diagnostics import Diagnostic, Fix, Note, Severity
 from robotfix.lsp import actions, rpc
 from robotfix.lsp.documents import (
     Documents,
@@ -374,13 +374,13 @@ def _publish_dependents(ls: Session, changed: Iterable[Path]) -> None:
 def _diagnostic(
     d: Diagnostic, lines: list[str], related: bool = False
 ) -> dict[str, object]:
-    """`related`: notes with a place go in `relatedInformation` (links), not in
-    the message."""
+    """`related`: notes with a place also go in `relatedInformation` (links). They
+    stay in the message: Neovim announces `relatedInformation` but shows only the
+    message."""
     linked = [n for n in d.notes if related and n.path is not None]
     found: dict[str, object] = {
         "range": actions.lsp_range(lines, d.span),
-        "message": d.message
-        + "".join(f"\n{n.message}" for n in d.notes if n not in linked),
+        "message": d.message + "".join(f"\n{n.message}" for n in d.notes),
         "severity": SEVERITIES[d.severity],
         "code": d.code,
         "source": "robotfix",
@@ -393,7 +393,8 @@ def _diagnostic(
     return found
 
 
-def _related(note: Any) -> dict[str, object]:
+def _related(note: Note) -> dict[str, object]:
+    assert note.path is not None  # only notes with a place are linked
     line = max((note.line or 1) - 1, 0)
     point = {"line": line, "character": 0}
     return {
