@@ -591,7 +591,11 @@ def _suggested(
 
     catalog = _catalog(ls, path)
     if verdicts.suggested is None:
-        verdicts.suggested = api.unit_suggestions(text, str(path), catalog)
+        settings = _settings(path)  # what a check of the file sees, as `suggest`
+        project = _project(catalog, path, settings)
+        verdicts.suggested = api.unit_suggestions(
+            text, str(path), catalog, settings, project
+        )
     lines = source.split_lines(text)
     offered = []
     for s in verdicts.suggested:
@@ -601,7 +605,7 @@ def _suggested(
 
         def annotated(s: api.Suggestion = s, key: tuple[object, ...] = key) -> bool:
             try:
-                new = suggest.annotate(text, str(path), catalog, [s])
+                new = suggest.annotate(text, str(path), catalog, suggestions=[s])
             except suggest.UnsafeEditError:
                 return False
             fix = Fix(
