@@ -151,6 +151,21 @@ class Client:
             },
         )
 
+    def code_action(
+        self, uri: str, first: int, last: int, context: dict[str, Any]
+    ) -> list[dict[str, Any]]:
+        """The code actions for lines first..last (0-based), asked with `context`."""
+        lines = {"line": first, "character": 0}, {"line": last, "character": 0}
+        params = {
+            "textDocument": {"uri": uri},
+            "range": {"start": lines[0], "end": lines[1]},
+            "context": context,
+        }
+        result: list[dict[str, Any]] = self.request("textDocument/codeAction", params)[
+            "result"
+        ]
+        return result
+
     def stop(self) -> int:
         """shutdown, exit; the server's exit code."""
         answer = self.request("shutdown")

@@ -159,3 +159,36 @@ def test_an_edited_table_is_read_from_its_toml(
         catalog.table.cache_clear()
     assert unchanged == catalog.table("defaults")
     assert shipped != fresh and "km/h" in str(fresh) and "km/h" not in str(shipped)
+
+
+def test_the_shipped_parser_tables_parse_as_the_grammar_does() -> None:
+    """grammar.json is this grammar's, for this lark, and the parser loaded from it
+    reads every annotation of the test cases (and their errors) as one built from
+    the grammar does; a stale file is not used (tools/build_package_data.py)."""
+    import re
+
+    from robotfix.annotations import parser
+
+    assert parser.tables_format() in parser.TABLES.read_text(encoding="utf-8")[:200], (
+        "grammar.json is stale: run python tools/build_package_data.py"
+    )
+    parser._parser.cache_clear()
+    loaded, built = parser._parser(), parser.build_parser()
+    assert loaded.source_path == "<deserialized>"  # the shipped tables, not a build
+    texts = {
+        match.group(1)
+        for case in sorted((ROOT / "tests" / "cases").rglob("*.py"))
+        for match in re.finditer(r'Annotated\[[^"\]]*"([^"]*)"', case.read_text())
+    }
+    texts |= {"0 <= _ <=", "_ > > 1", "Unit('m/s') and abs(_) <= limit", "len(_) == 3"}
+    assert len(texts) > 200
+
+    def outcome(lark: object, text: str) -> object:
+        try:
+            return lark.parse(text)  # type: ignore[attr-defined]
+        except Exception as err:  # the error is what is compared
+            where = getattr(err, "pos_in_stream", None), getattr(err, "column", None)
+            return type(err).__name__, where, sorted(getattr(err, "expected", ()))
+
+    for text in sorted(texts):
+        assert outcome(loaded, text) == outcome(built, text), text

@@ -6,7 +6,7 @@ Imports nothing of ours, so every layer may use it.
 from __future__ import annotations
 
 import enum
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 
 class Severity(enum.Enum):
@@ -49,6 +49,23 @@ class Note:
 
 
 @dataclass(frozen=True)
+class Edit:
+    """Replace the text at `span` with `text`."""
+
+    span: Span
+    text: str
+
+
+@dataclass(frozen=True)
+class Fix:
+    """A change of the source the message proposes (`title` says which), as edits:
+    an editor offers it as a quick fix once it has checked the result."""
+
+    title: str
+    edits: tuple[Edit, ...]
+
+
+@dataclass(frozen=True)
 class Diagnostic:
     rule: Rule
     path: str
@@ -56,6 +73,8 @@ class Diagnostic:
     message: str
     notes: tuple[Note, ...] = ()
     level: Severity | None = None  # when not the rule's own severity
+    # proposed changes; not part of what a diagnostic is (a cached run has none)
+    fixes: tuple[Fix, ...] = field(default=(), compare=False)
 
     @property
     def code(self) -> str:

@@ -13,7 +13,7 @@ from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
 from robotfix import rules
-from robotfix.diagnostics import Diagnostic, Note, Rule, Severity, Span
+from robotfix.diagnostics import Diagnostic, Edit, Fix, Note, Rule, Severity, Span
 
 if TYPE_CHECKING:  # a cached run, reporting only what it kept, needs no units
     from robotfix.annotations.units import Unit
@@ -36,6 +36,16 @@ class Declared:
         if self.path is not None:
             return Note(f"{self.what} declared here", self.path, self.line)
         return Note(f"{self.what}: {self.source}")
+
+
+@dataclass(frozen=True)
+class Written:
+    """An expression as the code writes it, for a fix that rewrites it: where it is,
+    its text, and whether it needs no parentheses as an operand (`atom`)."""
+
+    span: Span
+    text: str
+    atom: bool
 
 
 def unreadable(path: str, detail: str) -> Diagnostic:
@@ -384,13 +394,19 @@ def unit_mismatch(
     twice: float | None = None,
     called: tuple[str, Unit] | None = None,
     some_paths: bool = False,
+    value: Written | None = None,
+    undo: Edit | None = None,
+    angles: str = "",
 ) -> Diagnostic:
     """`aligned`: the value's unit over the expected dimensions, when only the
     scale differs once the radian cancels (`omega_deg * r`); `twice`: the literal
     factor that converted a value already in `expected` (`p_s * 1000` into s);
     `called`: the conversion call that last changed the value's unit and its
     argument's unit (`math.degrees`, rad): the advice is about that call;
-    `some_paths`: the value is in `got` on some of the paths that set it."""
+    `some_paths`: the value is in `got` on some of the paths that set it.
+    For the quick fix (`Diagnostic.fixes`): `value`, the value as written; `undo`,
+    the edit that removes the factor or the call the advice names; `angles`, the
+    module the file calls `radians()` and `degrees()` of (`math`, `np`)."""
     where = " on some path" if some_paths else ""
     message = (
         f"`{stmt}` gives {target} a value in {got}{where}, but {target} "
@@ -402,8 +418,8 @@ def unit_mismatch(
         if dict(got.dims).get("radian") and math.isclose(ratio, math.pi / 180):
             fix = f"use math.radians() on the angle to convert {got} to {expected}"
         fix = fix.replace(f"convert {aligned} to", f"convert {got} to")
-    if called is not None:
-        fix = _called_fix(called, expected) or fix
+    advice = "" if called is None else _called_fix(called, expected)
+    fix = advice or fix
     if twice is not None:
         how = (
             f"multiplying by {twice:.6g}"
@@ -417,7 +433,46 @@ def unit_mismatch(
     notes = [declared.note()]
     if fix:
         message += f": {fix}"
-    return Diagnostic(rules.UNIT_MISMATCH, path, span, message, tuple(notes))
+    fixes: tuple[Fix, ...] = ()
+    call = None if called is None or not called[1].same_as(expected) else called[0]
+    if some_paths:
+        pass  # the other paths' values are right: no one edit fixes them all
+    elif twice is not None or call is not None:
+        what = "the factor" if twice is not None else f"`{call}()`"
+        fixes = (Fix(f"Remove {what}", (undo,)),) if undo is not None else ()
+    elif value is not None and not advice:
+        fixes = _scale_fix(value, aligned or got, expected, angles)
+    return Diagnostic(
+        rules.UNIT_MISMATCH, path, span, message, tuple(notes), fixes=fixes
+    )
+
+
+def _scale_fix(
+    value: Written, got: Unit, expected: Unit, angles: str
+) -> tuple[Fix, ...]:
+    """The value times the factor that takes `got` to `expected`, when it is exact as
+    written (`/ 3.6`, `* 1000`) or a degree-radian conversion of `angles`."""
+    if expected.is_label or not got.same_dimension(expected):
+        return ()
+    if not math.isclose(got.offset, expected.offset):
+        return ()
+    ratio = got.factor / expected.factor
+    operand = value.text if value.atom else f"({value.text})"
+    angle = dict(got.dims).get("radian")
+    for call, factor in (("radians", math.pi / 180), ("degrees", 180 / math.pi)):
+        if angle and angles and math.isclose(ratio, factor):
+            return _rewrite(f"{angles}.{call}", value, f"{angles}.{call}({value.text})")
+    op, number = ("/", 1 / ratio) if ratio < 1 else ("*", ratio)
+    shown = f"{number:.6g}"
+    if math.isclose(number, 1.0) or not math.isclose(
+        float(shown), number, rel_tol=1e-12
+    ):
+        return ()
+    return _rewrite(f"{op} {shown}", value, f"{operand} {op} {shown}")
+
+
+def _rewrite(what: str, value: Written, text: str) -> tuple[Fix, ...]:
+    return (Fix(f"Convert with `{what}`", (Edit(value.span, text),)),)
 
 
 def _called_fix(called: tuple[str, Unit], expected: Unit) -> str:
@@ -445,15 +500,25 @@ def _is(target: str) -> str:
 
 
 def converted_twice(
-    path: str, span: Span, stmt: str, function: str, got: Unit, declared: Declared
+    path: str,
+    span: Span,
+    stmt: str,
+    function: str,
+    got: Unit,
+    declared: Declared,
+    undo: Edit | None = None,
 ) -> Diagnostic:
     """RF201: a conversion (`math.radians`) of a value already in its result's unit;
-    the fix is to drop it, not to convert back."""
+    the fix is to drop it, not to convert back (`undo`: the call replaced by its
+    argument)."""
     message = (
         f"`{stmt}` applies `{function}()` to a value already in {got}: drop the call, "
         "it would convert a second time"
     )
-    return Diagnostic(rules.UNIT_MISMATCH, path, span, message, (declared.note(),))
+    fixes = (Fix(f"Remove `{function}()`", (undo,)),) if undo is not None else ()
+    return Diagnostic(
+        rules.UNIT_MISMATCH, path, span, message, (declared.note(),), fixes=fixes
+    )
 
 
 def implicit_unit_change(

@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 
 from robotfix import messages, rules
 from robotfix.budget import MAX_PARSED_CHARS
-from robotfix.diagnostics import Diagnostic, Span
+from robotfix.diagnostics import Diagnostic, Edit, Span
 
 
 def _code_chars(lines: list[str]) -> int:
@@ -195,6 +195,18 @@ def _one_line(text: str) -> str:
     lines = [line.strip().removesuffix("\\").rstrip() for line in lines]
     joined = " ".join(line for line in lines if line)
     return _CLOSED.sub(r"\1", _OPENED.sub(r"\1", joined))
+
+
+def suppression(line_text: str, line: int, code: str) -> Edit:
+    """The edit that silences `code` on a line: the code added to the line's
+    `# robotfix: ignore[...]`, else that comment put at the line's end."""
+    match = _SUPPRESS.search(line_text)
+    if match is not None and match["codes"] is not None:
+        at = match.end("codes")
+        listed = match["codes"].strip()
+        return Edit(Span(line, at, line, at), f", {code}" if listed else code)
+    end = len(line_text.rstrip())
+    return Edit(Span(line, end, line, len(line_text)), f"  # robotfix: ignore[{code}]")
 
 
 def split_lines(text: str) -> list[str]:

@@ -207,14 +207,16 @@ def annotate(
     catalog: MsgCatalog,
     settings: Config | None = None,
     project: Project | None = None,
+    suggestions: list[api.Suggestion] | None = None,
 ) -> str:
-    """The text with every suggestion applied, and `Annotated` imported if needed
-    (spelt `typing.Annotated` when the module binds `Annotated` itself).
-    UnsafeEditError if the result would not be the same program plus the
-    annotations, or a name the edit writes would mean something else there.
-    `settings` and `project`: the user's stubs and the modules the file imports,
-    as `check` sees them."""
-    suggestions = api.unit_suggestions(text, path, catalog, settings, project)
+    """The text with every suggestion applied (or those given: the editor's one),
+    and `Annotated` imported if needed (spelt `typing.Annotated` when the module
+    binds `Annotated` itself). UnsafeEditError if the result would not be the same
+    program plus the annotations, or a name the edit writes would mean something
+    else there. `settings` and `project`: the user's stubs and the modules the file
+    imports, as `check` sees them."""
+    if suggestions is None:
+        suggestions = api.unit_suggestions(text, path, catalog, settings, project)
     if not suggestions:
         return text
     tree = _parse(text)

@@ -12,7 +12,7 @@ from fractions import Fraction
 from typing import NamedTuple
 
 from robotfix import messages
-from robotfix.analysis import containers, frames, heap, parameters
+from robotfix.analysis import containers, fixes, frames, heap, parameters
 from robotfix.analysis.context import SOLVER_BUDGET, FileContext
 from robotfix.analysis.state import State
 from robotfix.analysis.values import (
@@ -320,6 +320,9 @@ class Checker:
                 )
             )
             return True
+        source = self.ctx.source
+        stored = fixes.stored(source, site)
+        within = site if stored is None else stored
         self.ctx.report(
             messages.unit_mismatch(
                 self.path,
@@ -333,6 +336,15 @@ class Checker:
                 found.twice,
                 called,
                 some_paths=some_paths,
+                value=fixes.written(source, stored),
+                undo=(
+                    fixes.undo_factor(source, within, found.twice)
+                    if found.twice is not None
+                    else fixes.undo_call(source, within, done.call)
+                    if done is not None
+                    else None
+                ),
+                angles=fixes.angles(source),
             ),
             once=None if done is None else done.twice,  # replaces the deferred one
         )

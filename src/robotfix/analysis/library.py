@@ -16,7 +16,7 @@ from dataclasses import replace
 from fractions import Fraction
 
 from robotfix import messages
-from robotfix.analysis import frames, heap, imported
+from robotfix.analysis import fixes, frames, heap, imported
 from robotfix.analysis.imported import resolve_library
 from robotfix.analysis.param_eval import ParameterEvaluator
 from robotfix.analysis.state import State
@@ -408,7 +408,13 @@ class LibraryEvaluator(ParameterEvaluator):
             key = ("converted-twice", id(node))
             self.ctx.defer(
                 messages.converted_twice(
-                    self.ctx.source.path, span, stmt, call, first.unit, declared
+                    self.ctx.source.path,
+                    span,
+                    stmt,
+                    call,
+                    first.unit,
+                    declared,
+                    fixes.undo_call(self.ctx.source, node, call),
                 ),
                 key,
             )

@@ -25,6 +25,7 @@ from __future__ import annotations
 import os
 import sys
 from collections.abc import Callable, Iterable
+from functools import partial
 from pathlib import Path
 from typing import IO, TYPE_CHECKING, Any
 
@@ -38,15 +39,14 @@ from robotfix import (
     rulepages,
     source,
 )
-from robotfix.diagnostics import Diagnostic, Severity
-from robotfix.lsp import rpc
+from robotfix.diagnostics import Diagnostic, Fix, Note, Severity
+from robotfix.lsp import actions, rpc
 from robotfix.lsp.documents import (
     Documents,
     InvalidChangeError,
     char,
     path_of,
     to_path,
-    utf16,
 )
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.smt.memo import ProofMemo
@@ -61,6 +61,8 @@ INTERFACE_GLOB = "**/*.{msg,srv,action}"
 MAX_CATALOGS = 32  # catalogs kept (one per set of interface files and settings)
 MAX_MEMOS = 8  # documents, most recently checked, whose proofs are kept
 MAX_PROJECTS = 8  # module summaries kept, one set per catalog
+QUICKFIX, REWRITE = "quickfix", "refactor.rewrite"  # CodeActionKind
+AUTOMATIC = 2  # CodeActionTriggerKind: a client asking at a cursor move (a lightbulb)
 
 # interface files and settings -> (their stat stamps and open buffers, the catalog)
 _catalogs: dict[tuple[object, ...], tuple[tuple[object, ...], MsgCatalog]] = {}
@@ -81,6 +83,17 @@ class Session:
         self.endpoint = endpoint
         self.documents = Documents()
         self.capabilities: dict[str, Any] = {}
+        # URI -> the text last checked and its diagnostics, for code actions
+        self.found: dict[str, tuple[str, list[Diagnostic]]] = {}
+        self.verdicts: dict[str, actions.Verdicts] = {}  # URI -> fixes tried
+
+    def related(self) -> bool:
+        """Whether the client shows a diagnostic's notes as links of their own."""
+        text = self.capabilities.get("textDocument")
+        published = text.get("publishDiagnostics") if isinstance(text, dict) else None
+        return (
+            isinstance(published, dict) and published.get("relatedInformation") is True
+        )
 
     def notify(self, method: str, params: object) -> None:
         if self.endpoint is not None:
@@ -278,7 +291,24 @@ def _publish(ls: Session, uri: str) -> None:
         return
     text, path = document
     try:
-        catalog = _catalog(ls, path)
+        found = _check(ls, uri, path)(text)
+    except Exception as err:  # never take the editor session down
+        _log_error(ls, f"robotfix: internal error on {path}: {err}")
+        return
+    ls.found[uri] = (text, found)
+    lines = source.split_lines(text)
+    related = ls.related()
+    diagnostics = [_diagnostic(d, lines, related) for d in found]
+    ls.notify(
+        "textDocument/publishDiagnostics", {"uri": uri, "diagnostics": diagnostics}
+    )
+
+
+def _check(ls: Session, uri: str, path: Path) -> actions.Checker:
+    """What checking a text as document `uri` finds in it."""
+    catalog = _catalog(ls, path)
+
+    def check(text: str) -> list[Diagnostic]:
         if _is_interface(path):
             found = api.catalog_problems(catalog)
         else:
@@ -288,14 +318,9 @@ def _publish(ls: Session, uri: str) -> None:
                 text, str(path), settings, catalog, project, memo=_memo(uri)
             )
             _record(project, _projects[id(catalog)][2], path)
-    except Exception as err:  # never take the editor session down
-        _log_error(ls, f"robotfix: internal error on {path}: {err}")
-        return
-    lines = source.split_lines(text)
-    diagnostics = [_diagnostic(d, lines) for d in found if d.path == str(path)]
-    ls.notify(
-        "textDocument/publishDiagnostics", {"uri": uri, "diagnostics": diagnostics}
-    )
+        return [d for d in found if d.path == str(path)]
+
+    return check
 
 
 def _log_error(ls: Session, message: str) -> None:
@@ -346,17 +371,15 @@ def _publish_dependents(ls: Session, changed: Iterable[Path]) -> None:
         _publish(ls, uri)
 
 
-def _diagnostic(d: Diagnostic, lines: list[str]) -> dict[str, object]:
-    start = {
-        "line": d.span.line - 1,
-        "character": utf16(lines, d.span.line, d.span.col),
-    }
-    end = {
-        "line": d.span.end_line - 1,
-        "character": utf16(lines, d.span.end_line, d.span.end_col),
-    }
+def _diagnostic(
+    d: Diagnostic, lines: list[str], related: bool = False
+) -> dict[str, object]:
+    """`related`: notes with a place also go in `relatedInformation` (links). They
+    stay in the message: Neovim announces `relatedInformation` but shows only the
+    message."""
+    linked = [n for n in d.notes if related and n.path is not None]
     found: dict[str, object] = {
-        "range": {"start": start, "end": end},
+        "range": actions.lsp_range(lines, d.span),
         "message": d.message + "".join(f"\n{n.message}" for n in d.notes),
         "severity": SEVERITIES[d.severity],
         "code": d.code,
@@ -365,7 +388,22 @@ def _diagnostic(d: Diagnostic, lines: list[str]) -> dict[str, object]:
     page = rulepages.uri(d.code)  # the installed rule page: RobotFix has no site
     if page is not None:
         found["codeDescription"] = {"href": page}
+    if linked:
+        found["relatedInformation"] = [_related(n) for n in linked]
     return found
+
+
+def _related(note: Note) -> dict[str, object]:
+    assert note.path is not None  # only notes with a place are linked
+    line = max((note.line or 1) - 1, 0)
+    point = {"line": line, "character": 0}
+    return {
+        "location": {
+            "uri": Path(note.path).absolute().as_uri(),
+            "range": {"start": point, "end": point},
+        },
+        "message": note.message,
+    }
 
 
 # -- handlers ----------------------------------------------------------------------
@@ -382,6 +420,7 @@ def initialize(ls: Session, params: Any) -> dict[str, object]:
                 "save": {"includeText": False},
             },
             "hoverProvider": True,
+            "codeActionProvider": {"codeActionKinds": [QUICKFIX, REWRITE]},
         },
         "serverInfo": {"name": "robotfix", "version": __version__},
     }
@@ -443,6 +482,8 @@ def did_close(ls: Session, params: Any) -> None:
     """An interface file's unsaved edits no longer count: its users see the disk."""
     uri = _uri(params)
     ls.documents.close(uri)
+    ls.found.pop(uri, None)
+    ls.verdicts.pop(uri, None)
     path = path_of(uri)
     if _is_interface(path):
         _publish_dependents(ls, [path])
@@ -484,9 +525,134 @@ def hover(ls: Session, params: Any) -> dict[str, object] | None:
     return {"contents": {"kind": "markdown", "value": markdown}}
 
 
+def code_action(ls: Session, params: Any) -> list[dict[str, object]]:
+    """Quick fixes for the diagnostics on the lines asked about, and the unit
+    annotations `robotfix suggest` proposes there (not when the client asks on its
+    own, at a cursor move: suggest runs an analysis of its own), each checked first
+    (`lsp/actions.py`)."""
+    uri = _uri(params)
+    first = _get(params, "range", "start", "line")
+    last = _get(params, "range", "end", "line")
+    if not isinstance(first, int) or not isinstance(last, int):
+        raise rpc.InvalidParamsError("a range needs integer lines")
+    document = ls.documents.get(uri)
+    path = path_of(uri)
+    if document is None or _is_interface(path):
+        return []
+    text = document.text
+    try:
+        check = _check(ls, uri, path)
+        found = ls.found.get(uri)
+        before = found[1] if found is not None and found[0] == text else check(text)
+        verdicts = ls.verdicts.get(uri)
+        if verdicts is None or verdicts.text != text:
+            verdicts = ls.verdicts[uri] = actions.Verdicts(text)
+        verdicts.budget = actions.MAX_TRIED
+        context = params.get("context")
+        context = context if isinstance(context, dict) else {}
+        only = context.get("only")
+        lines = source.split_lines(text)
+        offered = []
+        for d in before if _wanted(QUICKFIX, only) else ():
+            if d.span.line - 1 > last or d.span.end_line - 1 < first:
+                continue
+            for fix in actions.candidates(text, d):
+                key = (d.code, d.span, d.message, fix)
+                tried = partial(actions.verified, text, before, fix, check, d)
+                if verdicts.holds(key, tried):
+                    shown = _diagnostic(d, lines, ls.related())
+                    offered.append(_action(uri, lines, fix, QUICKFIX, shown))
+        # suggest analyses the file again: not at a client's own request (a cursor move)
+        if _wanted(REWRITE, only) and context.get("triggerKind") != AUTOMATIC:
+            offered.extend(
+                _suggested(ls, uri, path, text, before, check, verdicts, first, last)
+            )
+    except Exception as err:  # never take the editor session down
+        _log_error(ls, f"robotfix: internal error on {path}: {err}")
+        return []
+    return offered
+
+
+def _suggested(
+    ls: Session,
+    uri: str,
+    path: Path,
+    text: str,
+    before: list[Diagnostic],
+    check: actions.Checker,
+    verdicts: actions.Verdicts,
+    first: int,
+    last: int,
+) -> list[dict[str, object]]:
+    """The `Unit(...)` annotations suggest proposes on lines first..last (0-based),
+    one action each, those whose edited text adds no diagnostic (each tried when
+    first asked for)."""
+    from robotfix import suggest  # only when a client asks for code actions
+
+    catalog = _catalog(ls, path)
+    if verdicts.suggested is None:
+        settings = _settings(path)  # what a check of the file sees, as `suggest`
+        project = _project(catalog, path, settings)
+        verdicts.suggested = api.unit_suggestions(
+            text, str(path), catalog, settings, project
+        )
+    lines = source.split_lines(text)
+    offered = []
+    for s in verdicts.suggested:
+        if not first <= s.line - 1 <= last:
+            continue
+        key = ("suggest", s)
+
+        def annotated(s: api.Suggestion = s, key: tuple[object, ...] = key) -> bool:
+            try:
+                new = suggest.annotate(text, str(path), catalog, suggestions=[s])
+            except suggest.UnsafeEditError:
+                return False
+            fix = Fix(
+                f"Annotate `{s.name}` with Unit('{s.unit}')",
+                actions.diff_edits(text, new),
+            )
+            verdicts.edits[key] = fix
+            return new != text and actions.verified(text, before, fix, check, None)
+
+        if verdicts.holds(key, annotated):
+            offered.append(_action(uri, lines, verdicts.edits[key], REWRITE, None))
+    return offered
+
+
+def _wanted(kind: str, only: object) -> bool:
+    """Whether a client that asked for the kinds `only` (all when None) wants
+    actions of `kind` (`refactor` covers `refactor.rewrite`)."""
+    if not isinstance(only, list):
+        return True
+    return any(kind == o or kind.startswith(f"{o}.") for o in only)
+
+
+def _action(
+    uri: str,
+    lines: list[str],
+    fix: Fix,
+    kind: str,
+    diagnostic: dict[str, object] | None,
+) -> dict[str, object]:
+    edits = [
+        {"range": actions.lsp_range(lines, e.span), "newText": e.text}
+        for e in fix.edits
+    ]
+    action: dict[str, object] = {
+        "title": f"RobotFix: {fix.title}",
+        "kind": kind,
+        "edit": {"changes": {uri: edits}},
+    }
+    if diagnostic is not None:
+        action["diagnostics"] = [diagnostic]
+    return action
+
+
 REQUESTS: dict[str, Callable[[Session, Any], Any]] = {
     "initialize": initialize,
     "textDocument/hover": hover,
+    "textDocument/codeAction": code_action,
 }
 NOTIFICATIONS: dict[str, Callable[[Session, Any], None]] = {
     "initialized": initialized,
