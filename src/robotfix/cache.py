@@ -57,6 +57,7 @@ from robotfix.diagnostics import Diagnostic, Note, Span
 from robotfix.discovery import Discovery, Trace
 from robotfix.disk_cache import install_key, is_text
 from robotfix.fs import RACY_NS
+from robotfix.ros.graph.model import load as load_graph
 
 if TYPE_CHECKING:
     from robotfix.project.summary import Known, Project
@@ -65,7 +66,7 @@ if TYPE_CHECKING:
 # an interface problem before `messages.interface_problem`: its diagnostic, the
 # package no type of which is known (if so), the types of its file
 InterfaceProblem = tuple[Diagnostic, "str | None", tuple[str, ...]]
-FORMAT = 8
+FORMAT = 9  # 9: an entry holds the file's graph endpoints
 # which parameter-related words a file mentions (`paramcheck.MENTIONS`, all layouts),
 # kept with its hash so that an unchanged file need not be read to know
 MENTION_WORDS = (b"declare_parameter", b"get_parameter", b"ParamListener", b"rospy")
@@ -396,6 +397,11 @@ class ResultCache:
         entry = self._entry(path)
         return sorted(entry["modules"].items()) if entry is not None else []
 
+    def graph(self, path: Path) -> list[Any] | None:
+        """The graph endpoints the cached check of this file found (dumped)."""
+        entry = self._entry(path)
+        return entry["graph"] if entry is not None else None
+
     def types(self, path: Path) -> list[str]:
         """The message types the cached check of this file looked up."""
         entry = self._entry(path)
@@ -426,6 +432,7 @@ class ResultCache:
         types: list[str],
         fingerprint: str,
         modules: dict[str, str] | None = None,
+        graph: list[Any] | None = None,
     ) -> None:
         """Remember a fresh result; `fingerprint` is the catalog's
         `fingerprint_types(types)` as seen by the check that found `diagnostics`."""
@@ -443,6 +450,7 @@ class ResultCache:
             "catalog": fingerprint,
             "modules": dict(sorted(kept.items())),
             "diagnostics": [_dump(d) for d in diagnostics],
+            "graph": graph,  # its graph endpoints (`ros.graph.model.dump`)
         }
         self._dirty = True
 
@@ -545,6 +553,7 @@ _DISCOVERY_PATHS = (
     "parameter_definitions",
     "summary_files",
     "launch_files",
+    "cpp_files",
 )
 
 
@@ -619,6 +628,8 @@ def _valid_entry(entry: Any) -> bool:
         and all(_name(k) and is_text(v) for k, v in entry["modules"].items())
         and isinstance(entry.get("diagnostics"), list)
         and all(_valid_diagnostic(d) for d in entry["diagnostics"])
+        and "graph" in entry
+        and (entry["graph"] is None or load_graph(entry["graph"]) is not None)
     )
 
 

@@ -31,6 +31,7 @@ from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
 from robotfix.discovery import Discovery, Trace, discover, install_space
 from robotfix.fs import RACY_NS, UnreadableError, read_regular, stamp
+from robotfix.ros.api_model import ENDPOINT_WORDS
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.ros.install import InstallSpace
 from robotfix.ros.package import package_folder
@@ -73,6 +74,9 @@ class FileResult:
     answers: dict[str, Any] | None = None
     # the same for the catalog's digests (`MsgCatalog.fresh_digests`)
     digests: dict[str, tuple[str, tuple[str, ...]]] | None = None
+    # its graph endpoints (`ros.graph.model.dump`), from the tree the check parsed
+    # (None: none), kept in the result cache with its entry
+    graph: list[Any] | None = None
 
 
 def check_paths(
@@ -160,6 +164,7 @@ def _check_paths(
         project.index.restore(cache.resolution())  # the module index's answers
     # file -> the parameter words it mentions and its parameters, as checked
     parameters: dict[str, ParamKnown] = {}
+    graphs: dict[str, list[Any]] = {}  # file -> its graph endpoints, dumped
     # without the cache, a file is read when it is checked (None here), so that
     # the bytes of every file are not all held at once
     todo: list[tuple[Path, bytes | None]] = []
@@ -184,6 +189,9 @@ def _check_paths(
         if cached is not None:
             result.diagnostics.extend(cached)
             used.update(cache.types(file) if cache else ())
+            kept = cache.graph(file) if cache else None
+            if kept is not None:
+                graphs[str(file)] = kept
             result.from_cache += 1
             if progress is not None:
                 progress(index, len(files), str(file))
@@ -209,6 +217,8 @@ def _check_paths(
         used.update(outcome.types)
         if outcome.mentions is not None:
             parameters[outcome.path] = (outcome.mentions, outcome.parameters)
+        if outcome.graph is not None:
+            graphs[outcome.path] = outcome.graph
         if outcome.answers is not None:
             project.index.merge(outcome.answers)
         if outcome.digests:
@@ -224,6 +234,7 @@ def _check_paths(
                 outcome.types,
                 outcome.fingerprint,
                 outcome.modules,
+                outcome.graph,
             )
         if cache is not None:
             cache.remember_summaries(outcome.summaries)
@@ -233,11 +244,21 @@ def _check_paths(
     result.diagnostics.extend(interface_problems(catalog, used, problems))
     if cache is not None and snapshot:
         cache.put_catalog(snapshot, catalog.digest_table(), problems, catalog.outline())
+    launches = _launches(found, files)
     result.diagnostics.extend(
         _parameter_problems(
-            found, files, config, cache, parameters, project, result.internal_errors
+            found,
+            files,
+            config,
+            cache,
+            parameters,
+            project,
+            result.internal_errors,
+            launches,
         )
     )
+    if any(os.path.isdir(p) for p in paths):  # a workspace: its graph (graphcheck)
+        result.diagnostics.extend(_graph_problems(found, graphs, launches, config))
     result.files += len(found.parameter_files)
     result.diagnostics = finish(result.diagnostics)
     if cache is not None:
@@ -271,6 +292,34 @@ def _discover(
     return found
 
 
+def _launches(
+    found: Discovery, files: list[Path]
+) -> tuple[LaunchRun, list[ParamFault]] | None:
+    """The run's launch files, read once for the parameter check and the graph."""
+    if not found.launch_files:
+        return None
+    from robotfix.launchcheck import LaunchRun
+
+    faults: list[ParamFault] = []
+    run = LaunchRun(found.launch_files, [*files, *found.summary_files], faults)
+    return run, faults
+
+
+def _graph_problems(
+    found: Discovery,
+    graphs: dict[str, list[Any]],
+    launches: tuple[LaunchRun, list[ParamFault]] | None,
+    config: Config,
+) -> list[Diagnostic]:
+    """The findings of the run's static ROS graph (`graphcheck.py`)."""
+    if not graphs and not found.cpp_files:
+        return []
+    from robotfix.graphcheck import check_graph, code_graphs
+
+    code = code_graphs(graphs, found.cpp_files)
+    return check_graph(code, launches[0] if launches else None, config).diagnostics()
+
+
 def _parameter_problems(
     found: Discovery,
     files: list[Path],
@@ -279,6 +328,7 @@ def _parameter_problems(
     parameters: dict[str, ParamKnown] | None = None,
     project: Project | None = None,
     errors: list[InternalError] | None = None,
+    read: tuple[LaunchRun, list[ParamFault]] | None = None,
 ) -> list[Diagnostic]:
     """Parameter files and launch files against the parameters the code declares;
     cached as a whole, under a key that hashes every input (`_params_key`);
@@ -290,12 +340,9 @@ def _parameter_problems(
     if not (found.parameter_files or found.parameter_definitions or found.launch_files):
         return []
     python_files = [*files, *found.summary_files]
-    faults: list[ParamFault] = []
-    launches = None
-    if found.launch_files:
-        from robotfix.launchcheck import LaunchRun
-
-        launches = LaunchRun(found.launch_files, python_files, faults)
+    if read is None:
+        read = _launches(found, files)
+    launches, faults = read if read is not None else (None, [])
     key = _params_key(found, python_files, config, cache, launches) if cache else None
     if cache is not None and key is not None and not faults:
         known = cache.params(key)
@@ -602,7 +649,11 @@ def _check_one(
                 )
             except Exception:
                 parameters = None
+        endpoints = any(w in data for w in ENDPOINT_WORDS)
+        if endpoints and parsed is None:
+            parsed = SourceFile.from_bytes(str(path), data)
         found = check_file(str(path), data, catalog, ignored, stubs, resolver, parsed)
+        graph = _graph_of(parsed) if endpoints and parsed is not None else None
         types = sorted(catalog.touched)
         catalog.touched = None
         return FileResult(
@@ -615,6 +666,7 @@ def _check_one(
             project.fresh_summaries(),
             parameters,
             mentions if project.parameter_words else None,
+            graph=graph,
         )
     except Exception as err:  # a fault of ours: report it, go on with the others
         import traceback  # only here: 2 ms of every start otherwise
@@ -625,6 +677,21 @@ def _check_one(
         )
     finally:
         catalog.touched = None
+
+
+def _graph_of(parsed: Any) -> list[Any] | None:
+    """A checked file's graph endpoints (`ros.graph.python`), dumped; None when it
+    makes none (or its tree is not there)."""
+    if parsed.tree is None:
+        return None
+    from robotfix.ros.graph.model import dump
+    from robotfix.ros.graph.python import read_python
+
+    try:  # a fault here costs the graph this file's endpoints, not its check
+        found = read_python(parsed.tree)
+    except (RecursionError, MemoryError):
+        return None
+    return dump(found) if found.endpoints else None
 
 
 # (catalog, config, project, lean): `lean`, the run keeps no cache (`_lean`)

@@ -1,0 +1,324 @@
+"""A run's static ROS graph (`ros.graph`) and what is wrong in it.
+
+The graph is made of the endpoints each checked Python file's check extracted
+(`run.FileResult.graph`, kept in the result cache with the file's entry), those of
+the C++ files of the run's packages (read here with tree-sitter), and the launch
+entries (`launchcheck.LaunchRun`), which start code under a name and namespace
+with remappings: a launch entry's executable is found through setup.py or
+CMakeLists.txt (`ros.executables`).
+
+Findings, each at an endpoint with a note at the other side:
+- RF603: one resolved name (in one ROS version's graph) used with two certain
+  interface types by different nodes (a type chosen at run time, as a parameter
+  picks `Twist` or `TwistStamped`, is two possible types: never a finding);
+- RF604/RF605: a subscription whose QoS never matches a publisher's (reliable vs
+  best effort, transient local vs volatile): RF604 when both profiles are
+  constants, RF605 when one may change (QoS overrides by parameter);
+- RF606/RF607 (notes): a topic subscribed and published nowhere in the checked
+  tree, or the reverse; not when an endpoint whose name is not known may be it.
+
+Only `robotfix check` of a folder reports them (`run.py`): the graph of a single
+file or of what an editor has open depends on what was opened.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from robotfix import messages
+from robotfix.diagnostics import Diagnostic, Note
+from robotfix.fs import UnreadableError, read_regular
+from robotfix.ros.executables import cpp_executable_files
+from robotfix.ros.graph import qos as Q
+from robotfix.ros.graph.build import OFFERS, End, Graph, Started, build
+from robotfix.ros.graph.cpp import MAX_CPP_BYTES, read_cpp
+from robotfix.ros.package import package_folder
+from robotfix.ros.graph.model import PUBLISHER, SUBSCRIPTION, FileGraph, load
+
+if TYPE_CHECKING:
+    from robotfix.config import Config
+    from robotfix.launchcheck import LaunchRun
+
+# topics rcl itself provides for every node
+BUILTIN_TOPICS = frozenset({"/rosout", "/parameter_events"})
+_SUPPRESS = re.compile(
+    r"(?:#|//)\s*robotfix:\s*ignore(?:\[(?P<codes>[^\]]*)\])?", re.IGNORECASE
+)
+FAMILY_WORDS = {"topic": "topic", "service": "service", "action": "action"}
+
+
+@dataclass
+class Finding:
+    diagnostic: Diagnostic
+    end: int  # index in Graph.ends
+    other: int | None = None
+
+
+@dataclass
+class GraphResult:
+    graph: Graph
+    findings: list[Finding] = field(default_factory=list)
+
+    def diagnostics(self) -> list[Diagnostic]:
+        return [f.diagnostic for f in self.findings]
+
+
+def read_cpp_files(paths: list[Path]) -> dict[str, FileGraph]:
+    """Each C++ file's graph; a file that cannot be read has none."""
+    found: dict[str, FileGraph] = {}
+    for path in paths:
+        try:
+            data = read_regular(path, MAX_CPP_BYTES)
+        except UnreadableError:
+            continue
+        one = read_cpp(data)
+        if one.endpoints:
+            found[str(path)] = one
+    return found
+
+
+def started_entries(launches: LaunchRun | None, code: dict[str, FileGraph]) -> list[Started]:
+    """The launch entries of the run, each with the code files it runs."""
+    if launches is None:
+        return []
+    by_real: dict[str, str] = {}
+    for path in code:
+        by_real.setdefault(os.path.realpath(path), path)
+    out: list[Started] = []
+    for started in launches.started:
+        entry = started.entry
+        files = [by_real[f] for f in sorted(started.files) if f in by_real]
+        folder = launches.packages.get(entry.package or "")
+        plugin = None
+        if folder is not None and entry.plugin:
+            plugin = entry.plugin.split("::")[-1]
+            inside = os.path.realpath(folder) + os.sep
+            files += [p for r, p in sorted(by_real.items()) if r.startswith(inside)]
+        elif folder is not None and entry.executable and not files:
+            for path in cpp_executable_files(folder, entry.executable):
+                real = os.path.realpath(path)
+                if real in by_real:
+                    files.append(by_real[real])
+        out.append(Started(entry, files, plugin))
+    return out
+
+
+def check_graph(
+    code: dict[str, FileGraph],
+    launches: LaunchRun | None,
+    config: Config | None = None,
+) -> GraphResult:
+    """The graph of the run's code and launch files, and its findings."""
+    graph = build(code, started_entries(launches, code))
+    result = GraphResult(graph)
+    channels = _channels(graph)
+    systems = _Systems(graph)
+    for (ros, family, name), ends in channels.items():
+        mismatched = _type_mismatch(graph, family, name, ends, result, systems)
+        if family == "topic" and ros == 2 and not mismatched:
+            _qos(graph, name, ends, result, systems)
+    _unmatched(graph, channels, result)
+    texts: dict[str, list[str] | None] = {}
+    result.findings = [
+        f for f in result.findings if not _silenced(f.diagnostic, texts, config)
+    ]
+    result.findings.sort(key=lambda f: f.diagnostic.sort_key())
+    return result
+
+
+def _channels(graph: Graph) -> dict[tuple[int, str, str], list[int]]:
+    found: dict[tuple[int, str, str], list[int]] = {}
+    for index, end in enumerate(graph.ends):
+        if end.resolved is None or end.family == "parameter" or not end.certain:
+            continue
+        found.setdefault((end.endpoint.ros, end.family, end.resolved), []).append(index)
+    for ends in found.values():
+        ends.sort(key=lambda i: _place(graph.ends[i]))
+    return {k: found[k] for k in sorted(found)}
+
+
+def _place(end: End) -> tuple[str, int, int]:
+    return (end.path, end.endpoint.line, end.endpoint.col)
+
+
+def _note(end: End, what: str) -> Note:
+    return Note(what, end.path, end.endpoint.line)
+
+
+class _Systems:
+    """Which system a node instance belongs to: the package of the launch file
+    that starts it, or, for code no launch file starts, the package of its code.
+    Two nodes of one system run together; two programs of different packages that
+    no launch file starts together may never (the demos of one repository)."""
+
+    def __init__(self, graph: Graph) -> None:
+        self.graph = graph
+        self.folders: dict[str, str | None] = {}
+
+    def of(self, end: End) -> str | None:
+        node = self.graph.nodes[end.node]
+        path = node.launch.path if node.launch is not None else end.path
+        folder = os.path.dirname(path)
+        if folder not in self.folders:
+            found = package_folder(Path(path))
+            self.folders[folder] = str(found) if found is not None else folder
+        return self.folders[folder]
+
+    def together(self, a: End, b: End) -> bool:
+        return self.of(a) == self.of(b)
+
+
+def _type_mismatch(
+    graph: Graph,
+    family: str,
+    name: str,
+    ends: list[int],
+    result: GraphResult,
+    systems: _Systems,
+) -> bool:
+    """RF603; True when reported."""
+    per_node: dict[int, set[tuple[str, ...]]] = {}
+    for index in ends:
+        end = graph.ends[index]
+        per_node.setdefault(end.node, set()).add(end.endpoint.types)
+    certain = {
+        node: next(iter(types))[0]
+        for node, types in per_node.items()
+        if len(types) == 1 and len(next(iter(types))) == 1
+    }
+    groups: dict[str, list[int]] = {}
+    for index in ends:
+        end = graph.ends[index]
+        if end.node in certain:
+            groups.setdefault(certain[end.node], []).append(index)
+    if len(groups) < 2:
+        return False
+    firsts = {t: group[0] for t, group in groups.items()}
+    for kind, first in sorted(firsts.items(), key=lambda kv: _place(graph.ends[kv[1]])):
+        end = graph.ends[first]
+        others = sorted(t for t in groups if t != kind)
+        other = min((firsts[t] for t in others), key=lambda i: _place(graph.ends[i]))
+        other_end = graph.ends[other]
+        node = graph.nodes[other_end.node].qualified
+        diag = messages.graph_type_mismatch(
+            end.path, end.endpoint.line, end.endpoint.col, FAMILY_WORDS[family], name,
+            kind, others,
+            _note(other_end, f"`{name}` with type `{graph.ends[other].endpoint.types[0]}` "
+                  f"(node `{node}`)"),
+            systems.together(end, other_end),
+        )
+        result.findings.append(Finding(diag, first, other))
+    return True
+
+
+def _qos(
+    graph: Graph, name: str, ends: list[int], result: GraphResult, systems: _Systems
+) -> None:
+    """RF604/RF605 at each subscription that never hears some publisher."""
+    publishers = [i for i in ends if graph.ends[i].endpoint.kind == PUBLISHER]
+    for index in ends:
+        end = graph.ends[index]
+        if end.endpoint.kind != SUBSCRIPTION or end.endpoint.qos is None:
+            continue
+        for other in publishers:
+            publisher = graph.ends[other].endpoint
+            if publisher.qos is None:
+                continue
+            why = Q.incompatible(publisher.qos, end.endpoint.qos)
+            if not why:
+                continue
+            certain = publisher.qos.certain and end.endpoint.qos.certain
+            apart = not systems.together(end, graph.ends[other])
+            node = graph.nodes[graph.ends[other].node].qualified
+            diag = messages.graph_qos_incompatible(
+                end.path, end.endpoint.line, end.endpoint.col, name, why,
+                _note(graph.ends[other],
+                      f"the publisher (node `{node}`): {publisher.qos.shown()}"),
+                certain and not apart,
+                apart,
+            )
+            result.findings.append(Finding(diag, index, other))
+            break
+
+
+def _unmatched(
+    graph: Graph,
+    channels: dict[tuple[int, str, str], list[int]],
+    result: GraphResult,
+) -> None:
+    """RF606/RF607, once per topic, at its first endpoint."""
+    unnamed = [
+        e for e in graph.ends
+        if e.family == "topic" and (e.resolved is None or not e.certain)
+    ]
+    for (ros, family, name), ends in channels.items():
+        if family != "topic" or name in BUILTIN_TOPICS:
+            continue
+        kinds = {graph.ends[i].endpoint.kind for i in ends}
+        if len(kinds) != 1:
+            continue
+        kind = kinds.pop()
+        published = kind == PUBLISHER
+        types = {t for i in ends for t in graph.ends[i].endpoint.types}
+        if any(
+            e.endpoint.ros == ros
+            and e.endpoint.kind != kind
+            and (not e.endpoint.types or not types or set(e.endpoint.types) & types)
+            for e in unnamed
+        ):
+            continue  # an endpoint whose name is not known may be its peer
+        first = graph.ends[ends[0]]
+        places = list(dict.fromkeys(
+            (graph.ends[i].path, graph.ends[i].endpoint.line) for i in ends
+        ))
+        also = "also " + ("published" if published else "subscribed") + " here"
+        others = [Note(also, path, line) for path, line in places[1:4]]
+        diag = messages.graph_unmatched(
+            first.path, first.endpoint.line, first.endpoint.col, name, published, others
+        )
+        result.findings.append(Finding(diag, ends[0]))
+
+
+def _silenced(
+    diag: Diagnostic, texts: dict[str, list[str] | None], config: Config | None
+) -> bool:
+    if config is not None and (
+        {diag.code, diag.rule.name} & config.ignored_codes(Path(diag.path))
+    ):
+        return True
+    if diag.path not in texts:
+        try:
+            texts[diag.path] = (
+                read_regular(diag.path, MAX_CPP_BYTES).decode("utf-8", "replace").splitlines()
+            )
+        except UnreadableError:
+            texts[diag.path] = None
+    lines = texts[diag.path]
+    if lines is None or not 0 < diag.span.line <= len(lines):
+        return False
+    match = _SUPPRESS.search(lines[diag.span.line - 1])
+    if match is None:
+        return False
+    codes = match["codes"]
+    listed = {c.strip() for c in codes.split(",")} if codes is not None else None
+    return listed is None or bool({diag.code, diag.rule.name} & listed)
+
+
+def offers(end: End) -> bool:
+    return end.endpoint.kind in OFFERS
+
+
+def code_graphs(python: dict[str, list[object]], cpp_files: list[Path]) -> dict[str, FileGraph]:
+    """The run's code graphs: the checked Python files' (dumped by their checks,
+    or kept in the cache) and the C++ files', read here."""
+    code: dict[str, FileGraph] = {}
+    for path, raw in python.items():
+        found = load(raw)
+        if found is not None:
+            code[path] = found
+    code.update(read_cpp_files(cpp_files))
+    return code
