@@ -15,7 +15,9 @@ Findings, each at an endpoint with a note at the other side:
   best effort, transient local vs volatile): RF604 when both profiles are
   constants, RF605 when one may change (QoS overrides by parameter);
 - RF606/RF607 (notes): a topic subscribed and published nowhere in the checked
-  tree, or the reverse; not when an endpoint whose name is not known may be it.
+  tree, or the reverse; not when an endpoint whose name is not known may be it;
+  only in a run whose launch files start nodes (they say which nodes make the
+  system: without them a package of one talker would be noted for its listener).
 
 Only `robotfix check` of a folder reports them (`run.py`): the graph of a single
 file or of what an editor has open depends on what was opened.
@@ -43,8 +45,10 @@ if TYPE_CHECKING:
     from robotfix.config import Config
     from robotfix.launchcheck import LaunchRun
 
-# topics rcl itself provides for every node
+# topics rcl itself provides for every node, and those every lifecycle node
+# publishes under its own name (rclcpp_lifecycle, rclpy.lifecycle)
 BUILTIN_TOPICS = frozenset({"/rosout", "/parameter_events"})
+BUILTIN_SUFFIXES = ("/transition_event",)
 _SUPPRESS = re.compile(
     r"(?:#|//)\s*robotfix:\s*ignore(?:\[(?P<codes>[^\]]*)\])?", re.IGNORECASE
 )
@@ -121,7 +125,8 @@ def check_graph(
         mismatched = _type_mismatch(graph, family, name, ends, result, systems)
         if family == "topic" and ros == 2 and not mismatched:
             _qos(graph, name, ends, result, systems)
-    _unmatched(graph, channels, result)
+    if launches is not None and launches.started:
+        _unmatched(graph, channels, result)
     texts: dict[str, list[str] | None] = {}
     result.findings = [
         f for f in result.findings if not _silenced(f.diagnostic, texts, config)
@@ -256,7 +261,7 @@ def _unmatched(
         if e.family == "topic" and (e.resolved is None or not e.certain)
     ]
     for (ros, family, name), ends in channels.items():
-        if family != "topic" or name in BUILTIN_TOPICS:
+        if family != "topic" or name in BUILTIN_TOPICS or name.endswith(BUILTIN_SUFFIXES):
             continue
         kinds = {graph.ends[i].endpoint.kind for i in ends}
         if len(kinds) != 1:
@@ -322,3 +327,40 @@ def code_graphs(python: dict[str, list[object]], cpp_files: list[Path]) -> dict[
             code[path] = found
     code.update(read_cpp_files(cpp_files))
     return code
+
+
+
+def graph_paths(paths: list[Path], config: Config) -> GraphResult:
+    """`robotfix graph`: the graph of `paths` without checking them: each Python
+    file that may make an endpoint is parsed for it, as its check would parse it."""
+    from robotfix.discovery import discover
+    from robotfix.launchcheck import LaunchRun
+    from robotfix.ros.api_model import ENDPOINT_WORDS
+    from robotfix.ros.graph.python import read_python
+    from robotfix.source import SourceFile
+
+    found = discover(paths, config)
+    code: dict[str, FileGraph] = {}
+    for path in found.python_files:
+        try:
+            data = read_regular(path)
+        except UnreadableError:
+            continue
+        if not any(w in data for w in ENDPOINT_WORDS):
+            continue
+        source = SourceFile.from_bytes(str(path), data)
+        if source.tree is None:
+            continue
+        try:
+            one = read_python(source.tree)
+        except (RecursionError, MemoryError):
+            continue
+        if one.endpoints:
+            code[str(path)] = one
+    code.update(read_cpp_files(found.cpp_files))
+    launches = None
+    if found.launch_files:
+        launches = LaunchRun(
+            found.launch_files, [*found.python_files, *found.summary_files]
+        )
+    return check_graph(code, launches, config)

@@ -10,6 +10,7 @@ one family (topics, services, actions) with every endpoint on it.
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass, field
 
 from robotfix.ros.graph.model import (
@@ -47,13 +48,14 @@ class Instance:
     package: str | None = None
     executable: str | None = None
     remaps: list[tuple[str | None, str | None]] = field(default_factory=list)
+    code: str = ""  # the file of its code, shown when its name is not known
 
     @property
     def qualified(self) -> str:
-        if self.name is None or self.namespace is None:
-            shown = self.name or "?"
-            return shown if self.namespace is None else f"{self.namespace.rstrip('/')}/{shown}"
-        return f"{self.namespace.rstrip('/')}/{self.name}"
+        shown = self.name or f"?({os.path.basename(self.code)})"
+        if self.namespace is None:
+            return f"?/{shown}"
+        return f"{self.namespace.rstrip('/')}/{shown}"
 
 
 @dataclass
@@ -75,6 +77,9 @@ class End:
 class Graph:
     nodes: list[Instance] = field(default_factory=list)
     ends: list[End] = field(default_factory=list)
+    # (name, namespace, remappings, file, owner) -> its instance: the same code
+    # started alike by two launch files (a demo's .py, .xml and .yaml) is one node
+    known: dict[tuple[object, ...], int] = field(default_factory=dict)
 
     def channels(self) -> dict[tuple[str, str], list[End]]:
         """(family, resolved name) -> its endpoints, sorted by place."""
@@ -148,10 +153,17 @@ def build(code: dict[str, FileGraph], started: list[Started]) -> Graph:
 
 
 def _add(graph: Graph, instance: Instance, path: str, found: FileGraph, owner: str) -> None:
-    index = len(graph.nodes)
+    key = (instance.name, instance.namespace, tuple(instance.remaps), path, owner)
+    if key in graph.known:
+        return
+    index = graph.known[key] = len(graph.nodes)
+    instance.code = path
     graph.nodes.append(instance)
     for endpoint in found.endpoints:
         if endpoint.owner != owner:
+            continue
+        if endpoint.kind == PARAMETER:  # a node's own: not a graph name
+            graph.ends.append(End(index, path, endpoint, endpoint.name, True))
             continue
         resolved = expand(endpoint.name, instance.namespace, instance.name, endpoint.handle)
         resolved, uncertain = remap(resolved, instance.remaps, instance.namespace,
