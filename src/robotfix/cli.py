@@ -291,7 +291,7 @@ def run_graph(args: argparse.Namespace) -> int:
     result = graph_paths(paths, settings)
     write_stdout(render_graph(result, args.format))
     errors = any(f.diagnostic.severity.value == "error" for f in result.findings)
-    return EXIT_FAILURE if errors else EXIT_OK
+    return EXIT_FOUND if errors else EXIT_OK
 
 
 def run_check(args: argparse.Namespace) -> int:

@@ -154,27 +154,44 @@ def _note(end: End, what: str) -> Note:
     return Note(what, end.path, end.endpoint.line)
 
 
+TOGETHER, MAYBE = "together", "maybe"
+TEST_FOLDERS = frozenset({"test", "tests", "testing"})
+
+
 class _Systems:
-    """Which system a node instance belongs to: the package of the launch file
-    that starts it, or, for code no launch file starts, the package of its code.
-    Two nodes of one system run together; two programs of different packages that
-    no launch file starts together may never (the demos of one repository)."""
+    """Whether two node instances run in one system.
+
+    - TOGETHER: launch entries of launch files of one package start both (a
+      bringup package's launch files describe one system);
+    - MAYBE: code no launch file starts, both in one package and neither test
+      code (a package's nodes are meant to talk, but which run together is not
+      written down);
+    - None: anything else: programs of different packages no launch file starts
+      together (a repository's demos), test code (its nodes are throwaway)."""
 
     def __init__(self, graph: Graph) -> None:
         self.graph = graph
-        self.folders: dict[str, str | None] = {}
+        self.folders: dict[str, str] = {}
 
-    def of(self, end: End) -> str | None:
-        node = self.graph.nodes[end.node]
-        path = node.launch.path if node.launch is not None else end.path
+    def _package(self, path: str) -> str:
         folder = os.path.dirname(path)
         if folder not in self.folders:
             found = package_folder(Path(path))
             self.folders[folder] = str(found) if found is not None else folder
         return self.folders[folder]
 
-    def together(self, a: End, b: End) -> bool:
-        return self.of(a) == self.of(b)
+    def relation(self, a: End, b: End) -> str | None:
+        first, second = self.graph.nodes[a.node], self.graph.nodes[b.node]
+        if first.launch is not None and second.launch is not None:
+            same = self._package(first.launch.path) == self._package(second.launch.path)
+            return TOGETHER if same else None
+        if _test_code(a.path) or _test_code(b.path):
+            return None
+        return MAYBE if self._package(a.path) == self._package(b.path) else None
+
+
+def _test_code(path: str) -> bool:
+    return not TEST_FOLDERS.isdisjoint(Path(path).parts[:-1])
 
 
 def _type_mismatch(
@@ -202,11 +219,25 @@ def _type_mismatch(
             groups.setdefault(certain[end.node], []).append(index)
     if len(groups) < 2:
         return False
-    firsts = {t: group[0] for t, group in groups.items()}
-    for kind, first in sorted(firsts.items(), key=lambda kv: _place(graph.ends[kv[1]])):
+    reported = False
+    for kind, group in sorted(groups.items(), key=lambda kv: _place(graph.ends[kv[1][0]])):
+        # the first pair of this type's endpoints and another type's that may meet
+        pairs = [
+            (rank, i, j, relation)
+            for i in group
+            for t, other_group in groups.items()
+            if t != kind
+            for j in other_group
+            if (relation := systems.relation(graph.ends[i], graph.ends[j])) is not None
+            for rank in [0 if relation == TOGETHER else 1]
+        ]
+        if not pairs:
+            continue
+        _, first, other, relation = min(
+            pairs, key=lambda p: (p[0], _place(graph.ends[p[1]]), _place(graph.ends[p[2]]))
+        )
         end = graph.ends[first]
-        others = sorted(t for t in groups if t != kind)
-        other = min((firsts[t] for t in others), key=lambda i: _place(graph.ends[i]))
+        others = sorted({graph.ends[p[2]].endpoint.types[0] for p in pairs})
         other_end = graph.ends[other]
         node = graph.nodes[other_end.node].qualified
         diag = messages.graph_type_mismatch(
@@ -214,10 +245,11 @@ def _type_mismatch(
             kind, others,
             _note(other_end, f"`{name}` with type `{graph.ends[other].endpoint.types[0]}` "
                   f"(node `{node}`)"),
-            systems.together(end, other_end),
+            relation == TOGETHER,
         )
         result.findings.append(Finding(diag, first, other))
-    return True
+        reported = True
+    return reported
 
 
 def _qos(
@@ -236,8 +268,11 @@ def _qos(
             why = Q.incompatible(publisher.qos, end.endpoint.qos)
             if not why:
                 continue
+            relation = systems.relation(end, graph.ends[other])
+            if relation is None:
+                continue
             certain = publisher.qos.certain and end.endpoint.qos.certain
-            apart = not systems.together(end, graph.ends[other])
+            apart = relation != TOGETHER
             node = graph.nodes[graph.ends[other].node].qualified
             diag = messages.graph_qos_incompatible(
                 end.path, end.endpoint.line, end.endpoint.col, name, why,

@@ -828,8 +828,8 @@ def graph_type_mismatch(
         ()
         if together
         else (
-            Note("no launch file of the workspace starts these two nodes together: "
-                 "an error only if they ever run in one system"),
+            Note("no launch file of the workspace starts these two nodes (of one "
+                 "package) together: an error if they ever run in one system"),
         )
     )
     return Diagnostic(
@@ -864,7 +864,8 @@ def graph_qos_incompatible(
     notes = [publisher]
     if apart:
         notes.append(
-            Note("no launch file of the workspace starts these two nodes together")
+            Note("no launch file of the workspace starts these two nodes (of one "
+                 "package) together")
         )
     elif not certain:
         notes.append(

@@ -57,6 +57,15 @@ _METHODS: dict[str, tuple[str, int, int, int | None, int | None]] = {
     "serviceClient": (CLIENT, 1, 0, None, None),
     "param": (PARAMETER, 1, 0, None, 2),
 }
+# classes that make an endpoint when built (`std::make_unique<C>(args)`, `C(args)`):
+# kind, name position, qos position, its possible types. nav2_util's Twist
+# publisher and subscriber use `Twist` or `TwistStamped` as the node's
+# `enable_stamped_cmd_vel` parameter says: two possible types.
+_TWIST = ("geometry_msgs/msg/Twist", "geometry_msgs/msg/TwistStamped")
+_CLASSES: dict[str, tuple[str, int, int | None, tuple[str, ...]]] = {
+    "nav2_util::TwistPublisher": (PUBLISHER, 1, 2, _TWIST),
+    "nav2_util::TwistSubscriber": (SUBSCRIPTION, 1, 2, _TWIST),
+}
 # rclcpp_action's free functions: (kind, name position)
 _ACTIONS = {"create_server": ACTION_SERVER, "create_client": ACTION_CLIENT}
 _NODE_BASES = frozenset({"Node", "LifecycleNode"})
@@ -239,6 +248,14 @@ class _File:
                 func = inner.child_by_field_name("name")
             else:
                 func = inner
+            if (
+                scope == "std"
+                and func is not None
+                and _text(func) in ("make_unique", "make_shared")
+                and template is not None
+            ):
+                self._constructed(call, _text(template).strip("<> "), args, cls)
+                return
             if scope == "rclcpp_action" and func is not None:
                 self._action(call, _text(func), template, args, cls)
                 return
@@ -281,6 +298,20 @@ class _File:
         self.found.endpoints.append(
             Endpoint(kind, name, types, point[0] + 1, _col(call, self.data), owner, profile, ros,
                      handle, value)
+        )
+
+    def _constructed(self, call: Any, made: str, args: list[Any], cls: str) -> None:
+        """`std::make_unique<nav2_util::TwistPublisher>(node, "cmd_vel", 1)`."""
+        spec = _CLASSES.get(re.sub(r"\s+", "", made))
+        if spec is None:
+            return
+        kind, name_at, qos_at, types = spec
+        receiver = _text(args[0]) if args else ""
+        name = _string(args[name_at]) if len(args) > name_at else None
+        profile = _qos(args[qos_at]) if qos_at is not None and len(args) > qos_at else None
+        self.found.endpoints.append(
+            Endpoint(kind, name, types, call.start_point[0] + 1, _col(call, self.data),
+                     _owner(cls, receiver), profile, 2)
         )
 
     def _action(self, call: Any, function: str, template: Any, args: list[Any],
