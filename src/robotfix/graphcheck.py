@@ -38,7 +38,7 @@ from robotfix.ros.executables import cpp_executable_files
 from robotfix.ros.graph import qos as Q
 from robotfix.ros.graph.build import OFFERS, End, Graph, Started, build
 from robotfix.ros.graph.cpp import MAX_CPP_BYTES, read_cpp
-from robotfix.ros.package import package_folder
+from robotfix.ros.package import package_folder, package_name
 from robotfix.ros.graph.model import PUBLISHER, SUBSCRIPTION, FileGraph, load
 
 if TYPE_CHECKING:
@@ -92,11 +92,22 @@ def started_entries(launches: LaunchRun | None, code: dict[str, FileGraph]) -> l
     by_real: dict[str, str] = {}
     for path in code:
         by_real.setdefault(os.path.realpath(path), path)
+    packages = dict(launches.packages)
+    folders: set[str] = set()
+    for path in code:  # a C++ package has no Python file that LaunchRun saw
+        folder = os.path.dirname(path)
+        if folder in folders:
+            continue
+        folders.add(folder)
+        found = package_folder(Path(path))
+        name = package_name(found) if found is not None else None
+        if found is not None and name is not None:
+            packages.setdefault(name, found)
     out: list[Started] = []
     for started in launches.started:
         entry = started.entry
         files = [by_real[f] for f in sorted(started.files) if f in by_real]
-        folder = launches.packages.get(entry.package or "")
+        folder = packages.get(entry.package or "")
         plugin = None
         if folder is not None and entry.plugin:
             plugin = entry.plugin.split("::")[-1]

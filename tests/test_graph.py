@@ -1,0 +1,327 @@
+"""The static ROS graph (issue 23, section 2): the small workspaces under
+tests/cases/graph/ (modelled on turtlebot3, nav2_bringup, ros2/demos and
+ros_tutorials' turtlesim) with inline expectations in their Python, C++
+(`// error: RF603`) and launch files (strict: every diagnostic of the run), each
+with a clean near miss (a remapping that makes names match, a relative name under
+a namespace, a private topic, a type a parameter chooses); name resolution, QoS,
+the extractors on their own, the cache and `-j`, and `robotfix graph`."""
+
+from __future__ import annotations
+
+import ast
+import json
+import shutil
+from pathlib import Path
+
+import pytest
+
+from robotfix import run as run_module
+from robotfix.api import check_paths
+from robotfix.cli import main
+from robotfix.config import Config
+from robotfix.graphcheck import graph_paths
+from robotfix.ros.graph import qos as Q
+from robotfix.ros.graph.cpp import MAX_CPP_BYTES, read_cpp
+from robotfix.ros.graph.model import Endpoint, FileGraph, Qos, dump, load
+from robotfix.ros.graph.names import expand, remap
+from robotfix.ros.graph.python import read_python
+from robotfix.testing.expectations import compare_files
+
+CASES = Path(__file__).parent / "cases" / "graph"
+SUFFIXES = (".py", ".yaml", ".xml", ".launch", ".cpp", ".hpp")
+GRAPH_CODES = ("RF603", "RF604", "RF605", "RF606", "RF607")
+
+
+def files_of(root: Path) -> list[Path]:
+    return sorted(p for p in root.rglob("*") if p.name.endswith(SUFFIXES))
+
+
+@pytest.mark.parametrize(
+    "workspace", sorted(p for p in CASES.iterdir() if p.is_dir()), ids=lambda p: p.name
+)
+def test_graph_findings_of_a_workspace(workspace: Path) -> None:
+    found = check_paths([workspace], Config(root=workspace)).diagnostics
+    problems = compare_files(files_of(workspace), found)
+    assert not problems, "\n".join(problems)
+
+
+def _lines(root: Path, jobs: int = 1, cache: bool = False) -> list[str]:
+    result = check_paths([root], Config(root=root), jobs=jobs, use_cache=cache)
+    return [
+        f"{Path(d.path).relative_to(root)}:{d.span.line}:{d.code}:{d.message}"
+        for d in result.diagnostics
+    ]
+
+
+def test_jobs_and_the_cache_give_the_same_graph(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Endpoints extracted in worker processes, or kept in the result cache, make
+    the graph one process makes without the cache."""
+    monkeypatch.setattr(run_module, "MIN_PARALLEL", 1)
+    root = tmp_path / "ws"
+    shutil.copytree(CASES / "ros2_robot", root)
+    one = _lines(root)
+    assert sum(":RF603:" in line for line in one) == 2
+    assert _lines(root, jobs=2) == one
+    assert _lines(root, jobs=2, cache=True) == one
+    reads: list[str] = []
+    real = run_module.read_regular
+
+    def counting(path: Path, *args: object, **kwargs: object) -> bytes:
+        reads.append(str(path))
+        return real(path, *args, **kwargs)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(run_module, "read_regular", counting)
+    assert _lines(root, jobs=1, cache=True) == one  # the endpoints from the cache
+    assert not [r for r in reads if r.endswith(".py")]
+
+
+def test_a_single_file_gets_no_graph_findings() -> None:
+    """The graph is the workspace's: a file checked alone (or in an editor) would
+    get notes that depend on what was opened."""
+    node = CASES / "ros2_robot" / "keyboard_teleop" / "keyboard_teleop" / "monitor.py"
+    found = check_paths([node], Config(root=node.parent)).diagnostics
+    assert not [d for d in found if d.code in GRAPH_CODES]
+
+
+def test_names_resolve_as_ros_resolves_them() -> None:
+    assert expand("cmd_vel", "/robot1", "teleop") == "/robot1/cmd_vel"
+    assert expand("/scan", "/robot1", "teleop") == "/scan"
+    assert expand("~/status", "/robot1", "driver") == "/robot1/driver/status"
+    assert expand("~status", "/", "driver") == "/driver/status"  # ROS 1
+    assert expand("cmd_vel", "/", "x", handle="~") == "/x/cmd_vel"  # NodeHandle("~")
+    assert expand("cmd_vel", None, "x") is None  # a namespace set at launch time
+    assert expand("~/x", "/", None) is None  # a private name of an unknown node
+    assert expand("{node}/x", "/", "n") is None
+    rules = [("cmd_vel", "base/cmd_vel")]
+    assert remap("/robot1/cmd_vel", rules, "/robot1", "t") == ("/robot1/base/cmd_vel", False)
+    assert remap("/robot1/odom", rules, "/robot1", "t") == ("/robot1/odom", False)
+    # a rule one side of which is computed may match anything: not certain
+    assert remap("/odom", [(None, "x")], "/", "t") == ("/odom", True)
+
+
+def test_qos_compatibility_follows_the_ros_2_table() -> None:
+    sensor = Q.PY_PROFILES["qos_profile_sensor_data"]
+    reliable = Q.depth_only(10)
+    latched = Qos(Q.RELIABLE, Q.TRANSIENT_LOCAL, 1)
+    assert Q.incompatible(sensor, reliable)  # best-effort publisher, reliable sub
+    assert not Q.incompatible(reliable, sensor)  # the other way round connects
+    assert Q.incompatible(reliable, latched)  # volatile publisher, latched sub
+    assert not Q.incompatible(latched, reliable)
+    unknown = Q.PY_PROFILES["qos_profile_system_default"]
+    assert not Q.incompatible(unknown, latched)
+
+
+def write(path: Path, text: str) -> Path:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+PACKAGE = """<?xml version="1.0"?>
+<package format="3"><name>{0}</name><version>0.1.0</version>
+<description>x</description><maintainer email="a@b.c">a</maintainer>
+<license>MIT</license></package>
+"""
+
+
+def test_an_overridable_profile_is_a_warning_and_unlaunched_nodes_of_one_package_too(
+    tmp_path: Path,
+) -> None:
+    """RF605: a QoS the user may override by parameter (`qos_overriding_options`);
+    two nodes of one package no launch file starts: RF603 and RF605 are warnings."""
+    write(tmp_path / "demo" / "package.xml", PACKAGE.format("demo"))
+    write(
+        tmp_path / "demo" / "demo" / "talker.py",
+        "from rclpy.node import Node\n"
+        "from rclpy.qos import qos_profile_sensor_data\n"
+        "from std_msgs.msg import String\n"
+        "class Talker(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('talker')\n"
+        "        self.create_publisher(String, 'chatter', qos_profile_sensor_data)\n"
+        "        self.create_publisher(String, 'other', 10)\n",
+    )
+    write(
+        tmp_path / "demo" / "demo" / "listener.py",
+        "from rclpy.node import Node\n"
+        "from rclpy.qos import QoSOverridingOptions\n"
+        "from std_msgs.msg import String, Int32\n"
+        "class Listener(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('listener')\n"
+        "        self.create_subscription(String, 'chatter', print, 10,\n"
+        "            qos_overriding_options=QoSOverridingOptions.with_default_policies())\n"
+        "        self.create_subscription(Int32, 'other', print, 10)\n",
+    )
+    found = check_paths([tmp_path], Config(root=tmp_path)).diagnostics
+    shown = sorted(
+        (Path(d.path).name, d.span.line, d.code, d.severity.value)
+        for d in found
+        if d.code in GRAPH_CODES
+    )
+    assert shown == [
+        ("listener.py", 7, "RF605", "warning"),
+        ("listener.py", 9, "RF603", "warning"),
+        ("talker.py", 8, "RF603", "warning"),
+    ]
+
+
+def test_programs_of_different_packages_or_test_code_are_never_compared(
+    tmp_path: Path,
+) -> None:
+    """A repository's demos (ros2/demos' rclcpp and rclpy QoS demos use one topic
+    name with two types) and test code's throwaway nodes are not one system."""
+    for package, kind in (("demo_a", "String"), ("demo_b", "Int32")):
+        write(tmp_path / package / "package.xml", PACKAGE.format(package))
+        write(
+            tmp_path / package / package / "node.py",
+            f"from rclpy.node import Node\nfrom std_msgs.msg import {kind}\n"
+            "class N(Node):\n    def __init__(self):\n"
+            f"        super().__init__('{package}')\n"
+            f"        self.create_publisher({kind}, '/chatter', 10)\n",
+        )
+    write(
+        tmp_path / "demo_a" / "test" / "test_node.py",
+        "from rclpy.node import Node\nfrom std_msgs.msg import Bool\n"
+        "def test_it(node: Node):\n"
+        "    node.create_subscription(Bool, '/chatter', print, 10)\n",
+    )
+    found = check_paths([tmp_path], Config(root=tmp_path)).diagnostics
+    assert not [d for d in found if d.code in GRAPH_CODES]
+
+
+def _py(text: str) -> FileGraph:
+    return read_python(ast.parse(text))
+
+
+def test_python_types_through_imports_names_and_choices() -> None:
+    found = _py(
+        "import std_msgs.msg as m\n"
+        "from geometry_msgs import msg as g\n"
+        "from rclpy.node import Node\n"
+        "from rclpy.qos import QoSProfile, ReliabilityPolicy\n"
+        "BEST = QoSProfile(depth=3, reliability=ReliabilityPolicy.BEST_EFFORT)\n"
+        "TOPIC = 'out'\n"
+        "class N(Node):\n"
+        "    def __init__(self, stamped):\n"
+        "        super().__init__('n')\n"
+        "        kind = g.TwistStamped if stamped else g.Twist\n"
+        "        self.create_publisher(m.String, TOPIC, BEST)\n"
+        "        self.create_publisher(kind, 'cmd', 1)\n"
+        "        self.create_publisher(stamped, 'x', 1)\n"  # a parameter: unknown
+    )
+    got = [(e.name, e.types, e.qos) for e in found.endpoints]
+    assert got == [
+        ("out", ("std_msgs/msg/String",), Qos(Q.BEST_EFFORT, Q.VOLATILE, 3)),
+        ("cmd", ("geometry_msgs/msg/Twist", "geometry_msgs/msg/TwistStamped"),
+         Q.depth_only(1)),
+        ("x", (), Q.depth_only(1)),
+    ]
+    assert found.nodes == {"N": ["n"]}
+
+
+def test_a_changed_qos_object_is_unknown() -> None:
+    found = _py(
+        "from rclpy.qos import QoSProfile\nfrom std_msgs.msg import String\n"
+        "def main(node):\n"
+        "    qos = QoSProfile(depth=1)\n"
+        "    qos.durability = 1\n"
+        "    node.create_publisher(String, 'x', qos)\n"
+    )
+    assert found.endpoints[0].qos is None
+
+
+CPP = b"""
+#include "rclcpp/rclcpp.hpp"
+using geometry_msgs::msg::Twist;
+class Driver : public rclcpp::Node {
+ public:
+  Driver() : Node("driver") {
+    pub_ = create_publisher<Twist>("cmd", rclcpp::QoS(rclcpp::KeepLast(5)).best_effort());
+    auto c = rclcpp_action::create_client<nav2_msgs::action::NavigateToPose>(this, "navigate");
+    declare_parameter("speed", 0.5);
+    create_publisher<std_msgs::msg::String>(topic_name_, 10);
+  }
+};
+int main(int argc, char ** argv) {
+  auto node = rclcpp::Node::make_shared("helper");
+  node->create_subscription<std_msgs::msg::String>("chatter", rclcpp::SensorDataQoS(), cb);
+}
+"""
+
+
+def test_cpp_endpoints_with_tree_sitter() -> None:
+    found = read_cpp(CPP)
+    got = [(e.kind, e.name, e.types, e.owner, e.qos) for e in found.endpoints]
+    assert got == [
+        ("publisher", "cmd", ("geometry_msgs/msg/Twist",), "Driver",
+         Qos(Q.BEST_EFFORT, Q.VOLATILE, 5)),
+        ("action_client", "navigate", ("nav2_msgs/action/NavigateToPose",), "Driver",
+         None),
+        ("parameter", "speed", (), "Driver", None),
+        ("publisher", None, ("std_msgs/msg/String",), "Driver", Q.depth_only(10)),
+        ("subscription", "chatter", ("std_msgs/msg/String",), "node",
+         Q.CPP_PROFILES["SensorDataQoS"]),
+    ]
+    assert found.nodes == {"Driver": ["driver"], "node": ["helper"]}
+    assert found.endpoints[2].value == "0.5"
+
+
+@pytest.mark.parametrize(
+    "data",
+    [
+        b"\xff\xfe\x00garbage {{{{ create_publisher<(",
+        b"class A { void f() { create_publisher<T>(\"x\", 10 ",  # cut off
+        b"int f() { return " + b"(" * 50_000 + b"1" + b")" * 50_000 + b"; }",
+        b"x" * (MAX_CPP_BYTES + 1),
+    ],
+    ids=["garbage", "unfinished", "deep", "huge"],
+)
+def test_bad_cpp_never_fails(data: bytes) -> None:
+    found = read_cpp(data)
+    assert isinstance(found, FileGraph)
+
+
+def test_the_cached_form_round_trips_and_refuses_anything_else() -> None:
+    found = FileGraph(
+        [Endpoint("publisher", "x", ("a/msg/B",), 3, 4, "N", Qos(None, Q.VOLATILE, 1))],
+        {"N": ["n"]},
+    )
+    assert load(json.loads(json.dumps(dump(found)))) == found
+    raw = dump(found)
+    raw[2][0][0] = "nonsense"
+    assert load(raw) is None
+    assert load([2, {}, [["publisher"]]]) is None
+    assert load("x") is None
+
+
+def test_graph_command_formats(capsys: pytest.CaptureFixture[str]) -> None:
+    root = CASES / "ros2_robot"
+    assert main(["graph", str(root), "--format", "json"]) == 1  # RF603, RF604
+    data = json.loads(capsys.readouterr().out)
+    assert {f["code"] for f in data["findings"]} == {"RF603", "RF604", "RF606", "RF607"}
+    driver = [n for n in data["nodes"] if n["qualified"] == "/robot1/driver"]
+    assert driver and driver[0]["launch"] is not None
+    marked = [e for e in data["endpoints"] if "RF603" in e["findings"]]
+    assert {e["resolved"] for e in marked} == {"/robot1/base/cmd_vel"}
+    main(["graph", str(root), "--format", "dot"])
+    dot = capsys.readouterr().out
+    assert dot.startswith("digraph") and 'color=red, fontcolor=red, label="RF603"' in dot
+    main(["graph", str(root), "--format", "mermaid"])
+    mermaid = capsys.readouterr().out
+    assert mermaid.startswith("flowchart LR") and "linkStyle" in mermaid
+    main(["graph", str(root)])
+    text = capsys.readouterr().out
+    assert "/robot1/teleop" in text and "!RF603" in text
+
+
+def test_graph_paths_is_the_checks_graph() -> None:
+    """`robotfix graph` parses what the check would: the same findings."""
+    root = CASES / "ros1_turtles"
+    graph = graph_paths([root], Config(root=root))
+    checked = check_paths([root], Config(root=root)).diagnostics
+    assert sorted(graph.diagnostics(), key=lambda d: d.sort_key()) == [
+        d for d in checked if d.code in GRAPH_CODES
+    ]
