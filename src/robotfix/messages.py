@@ -880,7 +880,9 @@ def graph_qos_incompatible(
         rule,
         path,
         Span.point(line, col),
-        f"this subscription to `{name}` never receives from the publisher noted: "
+        f"this subscription to `{name}` "
+        + ("never receives" if certain else "does not receive, with the profiles written,")
+        + " from the publisher noted: "
         + "; ".join(why),
         tuple(notes),
     )
