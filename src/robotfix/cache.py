@@ -136,6 +136,10 @@ class ResultCache:
         self._seen_stats: dict[str, list[Any]] = {}  # this run's, saved
         self._bytes: dict[str, bytes] = {}  # the last file `sha` read, to `take`
         self._params: tuple[str, list[Any]] | None = None
+        # C++ file -> [sha256, its graph endpoints dumped, or None]: what
+        # `graphcheck` read of it; this run's, saved (`put_cpp`)
+        self._cpp: dict[str, Any] = {}
+        self._seen_cpp: dict[str, Any] = {}
         self._catalog: dict[str, Any] | None = None
         self._discovery: dict[str, Any] | None = None  # key, trace, what was found
         # the module index's answers with what they depend on (`ModuleIndex.keep`)
@@ -204,6 +208,9 @@ class ResultCache:
                 and all(_valid_diagnostic(d) for d in params[1])
             ):
                 self._params = (params[0], params[1])
+            cpp = data.get("cpp")
+            if isinstance(cpp, dict):
+                self._cpp = cpp  # each entry checked when read (`cpp_graph`)
 
     # -- the stat fast path ----------------------------------------------------
     def sha(self, path: Path) -> str | None:
@@ -361,6 +368,26 @@ class ResultCache:
         self._params = (key, [_dump(d) for d in diagnostics])
         self._dirty = True
 
+    # -- C++ files' graph endpoints ---------------------------------------------
+    def cpp_graph(self, path: Path, digest: str) -> tuple[bool, Any]:
+        """(known, the endpoints dumped or None) of a C++ file whose bytes hash
+        to `digest`, as `put_cpp` kept them."""
+        key = entry_key(path)
+        entry = self._cpp.get(key)
+        if not (
+            isinstance(entry, list)
+            and len(entry) == 2
+            and entry[0] == digest
+            and (entry[1] is None or load_graph(entry[1]) is not None)
+        ):
+            return False, None
+        self._seen_cpp[key] = entry
+        return True, entry[1]
+
+    def put_cpp(self, path: Path, digest: str, graph: Any) -> None:
+        self._seen_cpp[entry_key(path)] = [digest, graph]
+        self._dirty = True
+
     def get(
         self,
         path: Path,
@@ -507,6 +534,7 @@ class ResultCache:
             "catalog": self._catalog,
             "discovery": self._discovery,
             "resolution": self._resolution,
+            "cpp": self._seen_cpp,
         }
         if self._dropped:
             payload = {"key": self.key, "entries": {}}

@@ -34,14 +34,15 @@ from typing import TYPE_CHECKING
 from robotfix import messages
 from robotfix.diagnostics import Diagnostic, Note
 from robotfix.fs import UnreadableError, read_regular
-from robotfix.ros.executables import cpp_executable_files
+from robotfix.ros.executables import Targets, cpp_executable_files
 from robotfix.ros.graph import qos as Q
 from robotfix.ros.graph.build import OFFERS, End, Graph, Started, build
 from robotfix.ros.graph.cpp import MAX_CPP_BYTES, read_cpp
 from robotfix.ros.package import package_folder, package_name
-from robotfix.ros.graph.model import PUBLISHER, SUBSCRIPTION, FileGraph, load
+from robotfix.ros.graph.model import PUBLISHER, SUBSCRIPTION, FileGraph, dump, load
 
 if TYPE_CHECKING:
+    from robotfix.cache import ResultCache
     from robotfix.config import Config
     from robotfix.launchcheck import LaunchRun
 
@@ -71,15 +72,31 @@ class GraphResult:
         return [f.diagnostic for f in self.findings]
 
 
-def read_cpp_files(paths: list[Path]) -> dict[str, FileGraph]:
-    """Each C++ file's graph; a file that cannot be read has none."""
+def read_cpp_files(
+    paths: list[Path], cache: ResultCache | None = None
+) -> dict[str, FileGraph]:
+    """Each C++ file's graph; a file that cannot be read has none. With the
+    result cache, a file whose bytes are unchanged is not parsed again."""
     found: dict[str, FileGraph] = {}
     for path in paths:
+        digest = cache.sha(path) if cache is not None else None
+        if cache is not None and digest is not None:
+            known, raw = cache.cpp_graph(path, digest)
+            if known:
+                one = load(raw) if raw is not None else None
+                if one is not None:
+                    found[str(path)] = one
+                continue
         try:
-            data = read_regular(path, MAX_CPP_BYTES)
+            data = (
+                cache.take(path) if digest is not None and cache is not None
+                else read_regular(path, MAX_CPP_BYTES)
+            )
         except UnreadableError:
             continue
         one = read_cpp(data)
+        if cache is not None and digest is not None:
+            cache.put_cpp(path, digest, dump(one) if one.endpoints else None)
         if one.endpoints:
             found[str(path)] = one
     return found
@@ -104,6 +121,7 @@ def started_entries(launches: LaunchRun | None, code: dict[str, FileGraph]) -> l
         if found is not None and name is not None:
             packages.setdefault(name, found)
     out: list[Started] = []
+    targets: dict[Path, Targets] = {}  # each package's CMake targets, read once
     for started in launches.started:
         entry = started.entry
         files = [by_real[f] for f in sorted(started.files) if f in by_real]
@@ -114,7 +132,7 @@ def started_entries(launches: LaunchRun | None, code: dict[str, FileGraph]) -> l
             inside = os.path.realpath(folder) + os.sep
             files += [p for r, p in sorted(by_real.items()) if r.startswith(inside)]
         elif folder is not None and entry.executable and not files:
-            for path in cpp_executable_files(folder, entry.executable):
+            for path in cpp_executable_files(folder, entry.executable, targets):
                 real = os.path.realpath(path)
                 if real in by_real:
                     files.append(by_real[real])
@@ -363,7 +381,11 @@ def offers(end: End) -> bool:
     return end.endpoint.kind in OFFERS
 
 
-def code_graphs(python: dict[str, list[object]], cpp_files: list[Path]) -> dict[str, FileGraph]:
+def code_graphs(
+    python: dict[str, list[object]],
+    cpp_files: list[Path],
+    cache: ResultCache | None = None,
+) -> dict[str, FileGraph]:
     """The run's code graphs: the checked Python files' (dumped by their checks,
     or kept in the cache) and the C++ files', read here."""
     code: dict[str, FileGraph] = {}
@@ -371,7 +393,7 @@ def code_graphs(python: dict[str, list[object]], cpp_files: list[Path]) -> dict[
         found = load(raw)
         if found is not None:
             code[path] = found
-    code.update(read_cpp_files(cpp_files))
+    code.update(read_cpp_files(cpp_files, cache))
     return code
 
 

@@ -258,7 +258,9 @@ def _check_paths(
         )
     )
     if any(os.path.isdir(p) for p in paths):  # a workspace: its graph (graphcheck)
-        result.diagnostics.extend(_graph_problems(found, graphs, launches, config))
+        result.diagnostics.extend(
+            _graph_problems(found, graphs, launches, config, cache)
+        )
     result.files += len(found.parameter_files)
     result.diagnostics = finish(result.diagnostics)
     if cache is not None:
@@ -310,13 +312,14 @@ def _graph_problems(
     graphs: dict[str, list[Any]],
     launches: tuple[LaunchRun, list[ParamFault]] | None,
     config: Config,
+    cache: ResultCache | None = None,
 ) -> list[Diagnostic]:
     """The findings of the run's static ROS graph (`graphcheck.py`)."""
     if not graphs and not found.cpp_files:
         return []
     from robotfix.graphcheck import check_graph, code_graphs
 
-    code = code_graphs(graphs, found.cpp_files)
+    code = code_graphs(graphs, found.cpp_files, cache)
     return check_graph(code, launches[0] if launches else None, config).diagnostics()
 
 

@@ -176,14 +176,22 @@ _INCLUDE = re.compile(rb'#\s*include\s*[<"]([^>"]+)[>"]')
 CPP_SOURCE_SUFFIXES = (".cpp", ".cc", ".cxx", ".c++", ".hpp", ".hh", ".hxx", ".h")
 
 
-def cpp_executable_files(package: Path, executable: str) -> list[Path]:
+Targets = dict[str, tuple[list[Path], list[str]]]
+
+
+def cpp_executable_files(
+    package: Path, executable: str, memo: dict[Path, Targets] | None = None
+) -> list[Path]:
     """The C++ files an executable of the package is built from, read from its
     CMakeLists.txt (never run): `add_executable(name src/x.cpp)`, the package's
     libraries it links (`target_link_libraries`), `rclcpp_components_register_node(
     lib ... EXECUTABLE name)`, and the package's headers those files include.
     `set()` variables and `${PROJECT_NAME}` are substituted; a word still holding a
-    `${...}` is unknown (left out)."""
-    targets = _cmake_targets(package)
+    `${...}` is unknown (left out). `memo` keeps each package's targets for a run."""
+    memo = {} if memo is None else memo
+    if package not in memo:
+        memo[package] = _cmake_targets(package)
+    targets = memo[package]
     todo = [executable]
     seen: set[str] = set()
     files: list[Path] = []

@@ -17,8 +17,9 @@ anything computed is unknown. QoS: a depth, `rclcpp::QoS(n)` with its setters
 preset classes. Which node: the class a method belongs to (its name from the
 `Node("name")` base initializer), else the node variable (`node->create_...`).
 
-Bad C++ never fails: tree-sitter recovers from errors, and a file over
-`MAX_CPP_BYTES` or a walk over `MAX_NODES` stops (what was found is kept).
+Bad C++ never fails: tree-sitter recovers from errors; a file over
+`MAX_CPP_BYTES` is not read, and one without any of `WORDS` not parsed. What the
+reading needs of the tree is matched by one tree-sitter query, in C.
 """
 
 from __future__ import annotations
@@ -42,7 +43,9 @@ from robotfix.ros.graph.model import (
 )
 
 MAX_CPP_BYTES = 2 * 1024 * 1024
-MAX_NODES = 2_000_000  # syntax nodes visited per file
+# a file that holds none of these makes no endpoint: not parsed
+WORDS = (b"create_", b"advertise", b"subscribe", b"serviceClient", b"param",
+         b"TwistPublisher", b"TwistSubscriber")
 
 # method -> (kind, ros, name position, qos position, default position)
 _METHODS: dict[str, tuple[str, int, int, int | None, int | None]] = {
@@ -87,7 +90,7 @@ def _parser() -> Any:
 def read_cpp(data: bytes) -> FileGraph:
     """The endpoints and node names of a C++ file's bytes."""
     found = FileGraph()
-    if len(data) > MAX_CPP_BYTES:
+    if len(data) > MAX_CPP_BYTES or not any(w in data for w in WORDS):
         return found
     try:
         tree = _parser().parse(data)
@@ -113,37 +116,26 @@ class _File:
         self.ros1 = False
 
     def read(self, root: Any) -> None:
-        steps = 0
-        todo: list[tuple[Any, str]] = [(root, "")]
-        while todo and steps < MAX_NODES:
-            node, cls = todo.pop()
-            steps += 1
-            kind = node.type
-            if kind in ("class_specifier", "struct_specifier"):
-                name = node.child_by_field_name("name")
-                if name is not None:
-                    cls = _text(name).split("::")[-1]
-                    self._bases(node, cls)
-            elif kind == "function_definition":
-                cls = self._function(node, cls)
-            elif kind == "call_expression":
-                self.calls.append((node, cls))
-            elif kind == "alias_declaration":
-                name = node.child_by_field_name("name")
-                value = node.child_by_field_name("type")
-                if name is not None and value is not None:
-                    self.aliases[_text(name)] = _text(value)
-            elif kind == "using_declaration":
-                text = _text(node)[len("using"):].strip().rstrip(";").strip()
-                if "::" in text and not text.startswith("namespace"):
-                    self.aliases[text.rsplit("::", 1)[-1]] = text
-            elif kind in ("declaration", "field_declaration"):
-                self._handle(node, cls)
-            elif kind == "field_initializer":
-                self._initializer(node, cls)
-            todo.extend((c, cls) for c in reversed(node.children))
-        for call, cls in self.calls:
-            self._call(call, cls)
+        captures = _query().captures(root)
+        for node in captures.get("cls", []):
+            self._bases(node.parent, _text(node).split("::")[-1])
+        for node in captures.get("fn", []):
+            self._function(node)
+        for node in captures.get("alias", []):
+            name = node.child_by_field_name("name")
+            value = node.child_by_field_name("type")
+            if name is not None and value is not None:
+                self.aliases[_text(name)] = _text(value)
+        for node in captures.get("using", []):
+            text = _text(node)[len("using"):].strip().rstrip(";").strip()
+            if "::" in text and not text.startswith("namespace"):
+                self.aliases[text.rsplit("::", 1)[-1]] = text
+        for node in captures.get("decl", []):
+            self._handle(node, _enclosing(node))
+        for node in captures.get("init", []):
+            self._initializer(node, _enclosing(node))
+        for node in sorted(captures.get("call", []), key=lambda n: n.start_byte):
+            self._call(node, _enclosing(node))
         self.found.ros = 1 if self.ros1 else 2
 
     # -- declarations ----------------------------------------------------------
@@ -155,25 +147,18 @@ class _File:
                     if last in _NODE_BASES:
                         self.found.nodes.setdefault(cls, [])
 
-    def _function(self, node: Any, cls: str) -> str:
-        declarator = node.child_by_field_name("declarator")
-        while declarator is not None and declarator.type in (
-            "pointer_declarator", "reference_declarator"
-        ):
-            declarator = declarator.child_by_field_name("declarator")
-        if declarator is None or declarator.type != "function_declarator":
-            return cls
-        name = declarator.child_by_field_name("declarator")
-        text = _text(name)
-        if "::" in text:  # Talker::Talker(...) defined out of its class
-            cls = text.split("::")[-2].split("<")[0]
+    def _function(self, node: Any) -> None:
+        """A function's first parameter's type, for a roscpp callback."""
+        declarator = _declarator(node)
+        if declarator is None:
+            return
+        text = _text(declarator.child_by_field_name("declarator"))
         params = declarator.child_by_field_name("parameters")
         first = [c for c in params.children if c.type == "parameter_declaration"] if params else []
         if first:
             kind = first[0].child_by_field_name("type")
             if kind is not None:
                 self.callbacks[text.split("::")[-1]] = _text(kind)
-        return cls
 
     def _initializer(self, node: Any, cls: str) -> None:
         """`: Node("talker")` names the class's node; `pnh_("~")` a private handle."""
@@ -350,6 +335,64 @@ class _File:
             return ()  # a message taken by value: rare, and templates hide it
         param = _PTR.sub("", param).strip().rstrip(":")
         return _interface(param, self.aliases, kind)
+
+
+_QUERY: Any = None
+# what the file's reading needs of its syntax tree, matched in C
+_PATTERNS = """
+(call_expression) @call
+(function_definition) @fn
+(alias_declaration) @alias
+(using_declaration) @using
+(field_initializer) @init
+((declaration) @decl (#match? @decl "NodeHandle|make_shared"))
+((field_declaration) @decl (#match? @decl "NodeHandle"))
+(class_specifier name: (_) @cls (base_class_clause))
+(struct_specifier name: (_) @cls (base_class_clause))
+"""
+MAX_DEPTH = 400  # ancestors looked at for the enclosing class
+
+
+def _query() -> Any:
+    global _QUERY
+    if _QUERY is None:
+        import tree_sitter
+        import tree_sitter_cpp
+
+        language = tree_sitter.Language(tree_sitter_cpp.language())
+        _QUERY = tree_sitter.QueryCursor(tree_sitter.Query(language, _PATTERNS))
+    return _QUERY
+
+
+def _declarator(node: Any) -> Any:
+    """A function definition's `function_declarator`, or None."""
+    declarator = node.child_by_field_name("declarator")
+    while declarator is not None and declarator.type in (
+        "pointer_declarator", "reference_declarator"
+    ):
+        declarator = declarator.child_by_field_name("declarator")
+    if declarator is None or declarator.type != "function_declarator":
+        return None
+    return declarator
+
+
+def _enclosing(node: Any) -> str:
+    """The class a node's code belongs to: of the class body it is in, or of the
+    method defined out of its class (`Talker::Talker() : Node("talker")`)."""
+    parent = node.parent
+    for _ in range(MAX_DEPTH):
+        if parent is None:
+            return ""
+        if parent.type in ("class_specifier", "struct_specifier"):
+            name = parent.child_by_field_name("name")
+            return _text(name).split("::")[-1] if name is not None else ""
+        if parent.type == "function_definition":
+            declarator = _declarator(parent)
+            text = _text(declarator.child_by_field_name("declarator")) if declarator else ""
+            if "::" in text:
+                return text.split("::")[-2].split("<")[0]
+        parent = parent.parent
+    return ""
 
 
 def _owner(cls: str, receiver: str) -> str:
