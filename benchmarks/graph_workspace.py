@@ -16,7 +16,6 @@ the tree is removed at the end unless --tree is given.
 from __future__ import annotations
 
 import argparse
-import os
 import shutil
 import subprocess
 import sys

@@ -95,7 +95,10 @@ def test_names_resolve_as_ros_resolves_them() -> None:
     assert expand("~/x", "/", None) is None  # a private name of an unknown node
     assert expand("{node}/x", "/", "n") is None
     rules = [("cmd_vel", "base/cmd_vel")]
-    assert remap("/robot1/cmd_vel", rules, "/robot1", "t") == ("/robot1/base/cmd_vel", False)
+    assert remap("/robot1/cmd_vel", rules, "/robot1", "t") == (
+        "/robot1/base/cmd_vel",
+        False,
+    )
     assert remap("/robot1/odom", rules, "/robot1", "t") == ("/robot1/odom", False)
     # a rule one side of which is computed may match anything: not certain
     assert remap("/odom", [(None, "x")], "/", "t") == ("/odom", True)
@@ -151,8 +154,9 @@ def test_an_overridable_profile_is_a_warning_and_unlaunched_nodes_of_one_package
         "class Listener(Node):\n"
         "    def __init__(self):\n"
         "        super().__init__('listener')\n"
+        "        options = QoSOverridingOptions.with_default_policies()\n"
         "        self.create_subscription(String, 'chatter', print, 10,\n"
-        "            qos_overriding_options=QoSOverridingOptions.with_default_policies())\n"
+        "            qos_overriding_options=options)\n"
         "        self.create_subscription(Int32, 'other', print, 10)\n",
     )
     found = check_paths([tmp_path], Config(root=tmp_path)).diagnostics
@@ -162,8 +166,8 @@ def test_an_overridable_profile_is_a_warning_and_unlaunched_nodes_of_one_package
         if d.code in GRAPH_CODES
     )
     assert shown == [
-        ("listener.py", 7, "RF605", "warning"),
-        ("listener.py", 9, "RF603", "warning"),
+        ("listener.py", 8, "RF605", "warning"),
+        ("listener.py", 10, "RF603", "warning"),
         ("talker.py", 8, "RF603", "warning"),
     ]
 
@@ -215,8 +219,11 @@ def test_python_types_through_imports_names_and_choices() -> None:
     got = [(e.name, e.types, e.qos) for e in found.endpoints]
     assert got == [
         ("out", ("std_msgs/msg/String",), Qos(Q.BEST_EFFORT, Q.VOLATILE, 3)),
-        ("cmd", ("geometry_msgs/msg/Twist", "geometry_msgs/msg/TwistStamped"),
-         Q.depth_only(1)),
+        (
+            "cmd",
+            ("geometry_msgs/msg/Twist", "geometry_msgs/msg/TwistStamped"),
+            Q.depth_only(1),
+        ),
         ("x", (), Q.depth_only(1)),
     ]
     assert found.nodes == {"N": ["n"]}
@@ -239,15 +246,18 @@ using geometry_msgs::msg::Twist;
 class Driver : public rclcpp::Node {
  public:
   Driver() : Node("driver") {
-    pub_ = create_publisher<Twist>("cmd", rclcpp::QoS(rclcpp::KeepLast(5)).best_effort());
-    auto c = rclcpp_action::create_client<nav2_msgs::action::NavigateToPose>(this, "navigate");
+    pub_ = create_publisher<Twist>(
+      "cmd", rclcpp::QoS(rclcpp::KeepLast(5)).best_effort());
+    auto c = rclcpp_action::create_client<nav2_msgs::action::NavigateToPose>(
+      this, "navigate");
     declare_parameter("speed", 0.5);
     create_publisher<std_msgs::msg::String>(topic_name_, 10);
   }
 };
 int main(int argc, char ** argv) {
   auto node = rclcpp::Node::make_shared("helper");
-  node->create_subscription<std_msgs::msg::String>("chatter", rclcpp::SensorDataQoS(), cb);
+  node->create_subscription<std_msgs::msg::String>(
+    "chatter", rclcpp::SensorDataQoS(), cb);
 }
 """
 
@@ -256,14 +266,29 @@ def test_cpp_endpoints_with_tree_sitter() -> None:
     found = read_cpp(CPP)
     got = [(e.kind, e.name, e.types, e.owner, e.qos) for e in found.endpoints]
     assert got == [
-        ("publisher", "cmd", ("geometry_msgs/msg/Twist",), "Driver",
-         Qos(Q.BEST_EFFORT, Q.VOLATILE, 5)),
-        ("action_client", "navigate", ("nav2_msgs/action/NavigateToPose",), "Driver",
-         None),
+        (
+            "publisher",
+            "cmd",
+            ("geometry_msgs/msg/Twist",),
+            "Driver",
+            Qos(Q.BEST_EFFORT, Q.VOLATILE, 5),
+        ),
+        (
+            "action_client",
+            "navigate",
+            ("nav2_msgs/action/NavigateToPose",),
+            "Driver",
+            None,
+        ),
         ("parameter", "speed", (), "Driver", None),
         ("publisher", None, ("std_msgs/msg/String",), "Driver", Q.depth_only(10)),
-        ("subscription", "chatter", ("std_msgs/msg/String",), "node",
-         Q.CPP_PROFILES["SensorDataQoS"]),
+        (
+            "subscription",
+            "chatter",
+            ("std_msgs/msg/String",),
+            "node",
+            Q.CPP_PROFILES["SensorDataQoS"],
+        ),
     ]
     assert found.nodes == {"Driver": ["driver"], "node": ["helper"]}
     assert found.endpoints[2].value == "0.5"
@@ -273,7 +298,7 @@ def test_cpp_endpoints_with_tree_sitter() -> None:
     "data",
     [
         b"\xff\xfe\x00garbage {{{{ create_publisher<(",
-        b"class A { void f() { create_publisher<T>(\"x\", 10 ",  # cut off
+        b'class A { void f() { create_publisher<T>("x", 10 ',  # cut off
         b"int f() { return " + b"(" * 50_000 + b"1" + b")" * 50_000 + b"; }",
         b"x" * (MAX_CPP_BYTES + 1),
     ],
@@ -308,7 +333,9 @@ def test_graph_command_formats(capsys: pytest.CaptureFixture[str]) -> None:
     assert {e["resolved"] for e in marked} == {"/robot1/base/cmd_vel"}
     main(["graph", str(root), "--format", "dot"])
     dot = capsys.readouterr().out
-    assert dot.startswith("digraph") and 'color=red, fontcolor=red, label="RF603"' in dot
+    assert (
+        dot.startswith("digraph") and 'color=red, fontcolor=red, label="RF603"' in dot
+    )
     main(["graph", str(root), "--format", "mermaid"])
     mermaid = capsys.readouterr().out
     assert mermaid.startswith("flowchart LR") and "linkStyle" in mermaid

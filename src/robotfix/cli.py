@@ -267,27 +267,37 @@ def run_lsp() -> int:
     return serve()  # 1 when the client exits without asking to shut down
 
 
-def run_graph(args: argparse.Namespace) -> int:
-    """`robotfix graph`: exit 0, or 1 when the graph has an error finding."""
+def _settings(paths: list[Path], merge: Callable[[Config], Config]) -> Config | None:
+    """The settings for a run over `paths` (the first one's config, `merge`d with
+    the command's flags); None, and why on stderr, for a missing path or a bad
+    config."""
     from robotfix import config
-    from robotfix.graphcheck import graph_paths
-    from robotfix.report.graph import render as render_graph
 
-    paths: list[Path] = args.paths or [Path(".")]
     missing = [(p, why) for p in paths if (why := _missing(p))]
     for path, why in missing:
         print(f"robotfix: error: {path}: {why}", file=sys.stderr)
     if missing:
-        return EXIT_FAILURE
+        return None
     try:
-        settings = config.load(paths[0])
+        return merge(config.load(paths[0]))
     except config.ConfigError as err:
         print(f"robotfix: error: {err}", file=sys.stderr)
-        return EXIT_FAILURE
-    if args.exclude:
-        from dataclasses import replace
+        return None
 
-        settings = replace(settings, exclude=settings.exclude + tuple(args.exclude))
+
+def run_graph(args: argparse.Namespace) -> int:
+    """`robotfix graph`: exit 0, or 1 when the graph has an error finding."""
+    from dataclasses import replace
+
+    from robotfix.graphcheck import graph_paths
+    from robotfix.report.graph import render as render_graph
+
+    paths: list[Path] = args.paths or [Path(".")]
+    settings = _settings(
+        paths, lambda found: replace(found, exclude=found.exclude + tuple(args.exclude))
+    )
+    if settings is None:
+        return EXIT_FAILURE
     result = graph_paths(paths, settings)
     write_stdout(render_graph(result, args.format))
     errors = any(f.diagnostic.severity.value == "error" for f in result.findings)
@@ -295,18 +305,11 @@ def run_graph(args: argparse.Namespace) -> int:
 
 
 def run_check(args: argparse.Namespace) -> int:
-    from robotfix import api, config
+    from robotfix import api
 
     paths: list[Path] = args.paths or [Path(".")]
-    missing = [(p, why) for p in paths if (why := _missing(p))]
-    for path, why in missing:
-        print(f"robotfix: error: {path}: {why}", file=sys.stderr)
-    if missing:
-        return EXIT_FAILURE
-    try:
-        settings = merge_flags(config.load(paths[0]), args)
-    except config.ConfigError as err:
-        print(f"robotfix: error: {err}", file=sys.stderr)
+    settings = _settings(paths, lambda found: merge_flags(found, args))
+    if settings is None:
         return EXIT_FAILURE
     for folder in settings.msg_paths:
         why = _missing(folder)

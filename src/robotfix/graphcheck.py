@@ -36,10 +36,11 @@ from robotfix.diagnostics import Diagnostic, Note
 from robotfix.fs import UnreadableError, read_regular
 from robotfix.ros.executables import Targets, cpp_executable_files
 from robotfix.ros.graph import qos as Q
-from robotfix.ros.graph.build import OFFERS, End, Graph, Started, build
+from robotfix.ros.graph.build import End, Graph, Started, build
 from robotfix.ros.graph.cpp import MAX_CPP_BYTES, read_cpp
-from robotfix.ros.package import package_folder, package_name
 from robotfix.ros.graph.model import PUBLISHER, SUBSCRIPTION, FileGraph, dump, load
+from robotfix.ros.package import package_folder, package_name
+from robotfix.source import suppresses
 
 if TYPE_CHECKING:
     from robotfix.cache import ResultCache
@@ -50,9 +51,7 @@ if TYPE_CHECKING:
 # publishes under its own name (rclcpp_lifecycle, rclpy.lifecycle)
 BUILTIN_TOPICS = frozenset({"/rosout", "/parameter_events"})
 BUILTIN_SUFFIXES = ("/transition_event",)
-_SUPPRESS = re.compile(
-    r"(?:#|//)\s*robotfix:\s*ignore(?:\[(?P<codes>[^\]]*)\])?", re.IGNORECASE
-)
+_CPP_COMMENT = re.compile(r"//(?=\s*robotfix:)")
 FAMILY_WORDS = {"topic": "topic", "service": "service", "action": "action"}
 
 
@@ -89,7 +88,8 @@ def read_cpp_files(
                 continue
         try:
             data = (
-                cache.take(path) if digest is not None and cache is not None
+                cache.take(path)
+                if digest is not None and cache is not None
                 else read_regular(path, MAX_CPP_BYTES)
             )
         except UnreadableError:
@@ -102,7 +102,9 @@ def read_cpp_files(
     return found
 
 
-def started_entries(launches: LaunchRun | None, code: dict[str, FileGraph]) -> list[Started]:
+def started_entries(
+    launches: LaunchRun | None, code: dict[str, FileGraph]
+) -> list[Started]:
     """The launch entries of the run, each with the code files it runs."""
     if launches is None:
         return []
@@ -125,15 +127,15 @@ def started_entries(launches: LaunchRun | None, code: dict[str, FileGraph]) -> l
     for started in launches.started:
         entry = started.entry
         files = [by_real[f] for f in sorted(started.files) if f in by_real]
-        folder = packages.get(entry.package or "")
+        package = packages.get(entry.package or "")
         plugin = None
-        if folder is not None and entry.plugin:
+        if package is not None and entry.plugin:
             plugin = entry.plugin.split("::")[-1]
-            inside = os.path.realpath(folder) + os.sep
+            inside = os.path.realpath(package) + os.sep
             files += [p for r, p in sorted(by_real.items()) if r.startswith(inside)]
-        elif folder is not None and entry.executable and not files:
-            for path in cpp_executable_files(folder, entry.executable, targets):
-                real = os.path.realpath(path)
+        elif package is not None and entry.executable and not files:
+            for source in cpp_executable_files(package, entry.executable, targets):
+                real = os.path.realpath(source)
                 if real in by_real:
                     files.append(by_real[real])
         out.append(Started(entry, files, plugin))
@@ -249,7 +251,9 @@ def _type_mismatch(
     if len(groups) < 2:
         return False
     reported = False
-    for kind, group in sorted(groups.items(), key=lambda kv: _place(graph.ends[kv[1][0]])):
+    for kind, group in sorted(
+        groups.items(), key=lambda kv: _place(graph.ends[kv[1][0]])
+    ):
         # the first pair of this type's endpoints and another type's that may meet
         pairs = [
             (rank, i, j, relation)
@@ -263,17 +267,26 @@ def _type_mismatch(
         if not pairs:
             continue
         _, first, other, relation = min(
-            pairs, key=lambda p: (p[0], _place(graph.ends[p[1]]), _place(graph.ends[p[2]]))
+            pairs,
+            key=lambda p: (p[0], _place(graph.ends[p[1]]), _place(graph.ends[p[2]])),
         )
         end = graph.ends[first]
         others = sorted({graph.ends[p[2]].endpoint.types[0] for p in pairs})
         other_end = graph.ends[other]
         node = graph.nodes[other_end.node].qualified
         diag = messages.graph_type_mismatch(
-            end.path, end.endpoint.line, end.endpoint.col, FAMILY_WORDS[family], name,
-            kind, others,
-            _note(other_end, f"`{name}` with type `{graph.ends[other].endpoint.types[0]}` "
-                  f"(node `{node}`)"),
+            end.path,
+            end.endpoint.line,
+            end.endpoint.col,
+            FAMILY_WORDS[family],
+            name,
+            kind,
+            others,
+            _note(
+                other_end,
+                f"`{name}` with type `{graph.ends[other].endpoint.types[0]}` "
+                f"(node `{node}`)",
+            ),
             relation == TOGETHER,
         )
         result.findings.append(Finding(diag, first, other))
@@ -304,9 +317,15 @@ def _qos(
             apart = relation != TOGETHER
             node = graph.nodes[graph.ends[other].node].qualified
             diag = messages.graph_qos_incompatible(
-                end.path, end.endpoint.line, end.endpoint.col, name, why,
-                _note(graph.ends[other],
-                      f"the publisher (node `{node}`): {publisher.qos.shown()}"),
+                end.path,
+                end.endpoint.line,
+                end.endpoint.col,
+                name,
+                why,
+                _note(
+                    graph.ends[other],
+                    f"the publisher (node `{node}`): {publisher.qos.shown()}",
+                ),
                 certain and not apart,
                 apart,
             )
@@ -321,11 +340,16 @@ def _unmatched(
 ) -> None:
     """RF606/RF607, once per topic, at its first endpoint."""
     unnamed = [
-        e for e in graph.ends
+        e
+        for e in graph.ends
         if e.family == "topic" and (e.resolved is None or not e.certain)
     ]
     for (ros, family, name), ends in channels.items():
-        if family != "topic" or name in BUILTIN_TOPICS or name.endswith(BUILTIN_SUFFIXES):
+        if (
+            family != "topic"
+            or name in BUILTIN_TOPICS
+            or name.endswith(BUILTIN_SUFFIXES)
+        ):
             continue
         kinds = {graph.ends[i].endpoint.kind for i in ends}
         if len(kinds) != 1:
@@ -341,9 +365,11 @@ def _unmatched(
         ):
             continue  # an endpoint whose name is not known may be its peer
         first = graph.ends[ends[0]]
-        places = list(dict.fromkeys(
-            (graph.ends[i].path, graph.ends[i].endpoint.line) for i in ends
-        ))
+        places = list(
+            dict.fromkeys(
+                (graph.ends[i].path, graph.ends[i].endpoint.line) for i in ends
+            )
+        )
         also = "also " + ("published" if published else "subscribed") + " here"
         others = [Note(also, path, line) for path, line in places[1:4]]
         diag = messages.graph_unmatched(
@@ -355,30 +381,22 @@ def _unmatched(
 def _silenced(
     diag: Diagnostic, texts: dict[str, list[str] | None], config: Config | None
 ) -> bool:
+    """`per-file-ignores`, or `# robotfix: ignore[...]` (in C++ `// robotfix:
+    ignore[...]`) on the endpoint's line."""
     if config is not None and (
         {diag.code, diag.rule.name} & config.ignored_codes(Path(diag.path))
     ):
         return True
     if diag.path not in texts:
         try:
-            texts[diag.path] = (
-                read_regular(diag.path, MAX_CPP_BYTES).decode("utf-8", "replace").splitlines()
-            )
+            text = read_regular(diag.path, MAX_CPP_BYTES).decode("utf-8", "replace")
+            texts[diag.path] = text.splitlines()
         except UnreadableError:
             texts[diag.path] = None
     lines = texts[diag.path]
     if lines is None or not 0 < diag.span.line <= len(lines):
         return False
-    match = _SUPPRESS.search(lines[diag.span.line - 1])
-    if match is None:
-        return False
-    codes = match["codes"]
-    listed = {c.strip() for c in codes.split(",")} if codes is not None else None
-    return listed is None or bool({diag.code, diag.rule.name} & listed)
-
-
-def offers(end: End) -> bool:
-    return end.endpoint.kind in OFFERS
+    return suppresses(_CPP_COMMENT.sub("#", lines[diag.span.line - 1]), diag)
 
 
 def code_graphs(
@@ -395,7 +413,6 @@ def code_graphs(
             code[path] = found
     code.update(read_cpp_files(cpp_files, cache))
     return code
-
 
 
 def graph_paths(paths: list[Path], config: Config) -> GraphResult:

@@ -828,8 +828,10 @@ def graph_type_mismatch(
         ()
         if together
         else (
-            Note("no launch file of the workspace starts these two nodes (of one "
-                 "package) together: an error if they ever run in one system"),
+            Note(
+                "no launch file of the workspace starts these two nodes (of one "
+                "package) together: an error if they ever run in one system"
+            ),
         )
     )
     return Diagnostic(
@@ -864,24 +866,34 @@ def graph_qos_incompatible(
     notes = [publisher]
     if apart:
         notes.append(
-            Note("no launch file of the workspace starts these two nodes (of one "
-                 "package) together")
+            Note(
+                "no launch file of the workspace starts these two nodes (of one "
+                "package) together"
+            )
         )
     elif not certain:
         notes.append(
-            Note("a profile here can change at run time (a parameter's QoS "
-                 "override, or one of several profiles)")
+            Note(
+                "a profile here can change at run time (a parameter's QoS "
+                "override, or one of several profiles)"
+            )
         )
     notes.append(
-        Note("ROS 2 connects a publisher and a subscription only when the offered "
-             "QoS is at least what is requested")
+        Note(
+            "ROS 2 connects a publisher and a subscription only when the offered "
+            "QoS is at least what is requested"
+        )
     )
     return Diagnostic(
         rule,
         path,
         Span.point(line, col),
         f"this subscription to `{name}` "
-        + ("never receives" if certain else "does not receive, with the profiles written,")
+        + (
+            "never receives"
+            if certain
+            else "does not receive, with the profiles written,"
+        )
         + " from the publisher noted: "
         + "; ".join(why),
         tuple(notes),
@@ -895,10 +907,13 @@ def graph_unmatched(
     checked tree, or the reverse."""
     if published:
         rule = rules.TOPIC_NOT_SUBSCRIBED
-        text = f"topic `{name}` is published here but subscribed nowhere in the checked workspace"
+        done, missing = "published", "subscribed"
     else:
         rule = rules.TOPIC_NOT_PUBLISHED
-        text = f"topic `{name}` is subscribed here but published nowhere in the checked workspace"
+        done, missing = "subscribed", "published"
+    text = (
+        f"topic `{name}` is {done} here but {missing} nowhere in the checked workspace"
+    )
     return Diagnostic(
         rule,
         path,
@@ -906,9 +921,11 @@ def graph_unmatched(
         text,
         (
             *where,
-            Note("a driver, a simulator, a tool (`ros2 topic pub`, rviz) or another "
-                 "workspace may use it; a mistyped name or a missing remapping "
-                 "would look the same"),
+            Note(
+                "a driver, a simulator, a tool (`ros2 topic pub`, rviz) or another "
+                "workspace may use it; a mistyped name or a missing remapping "
+                "would look the same"
+            ),
         ),
     )
 

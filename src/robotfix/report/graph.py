@@ -7,9 +7,11 @@ with its code (red in DOT and Mermaid).
 from __future__ import annotations
 
 import json
+from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
 
 from robotfix.report.escape import shown_path
+from robotfix.ros.graph.build import OFFERS
 
 if TYPE_CHECKING:
     from robotfix.graphcheck import GraphResult
@@ -109,7 +111,21 @@ def _text(result: GraphResult) -> str:
 
 
 def _offers(end: End) -> bool:
-    return end.endpoint.kind in ("publisher", "service", "action_server")
+    return end.endpoint.kind in OFFERS
+
+
+def _edges(
+    graph: Graph, ids: dict[tuple[str, str], str]
+) -> Iterator[tuple[int, str, str]]:
+    """(end index, from, to) of each endpoint on a channel: a node offers to its
+    channel, a channel to a node that takes."""
+    for index, end in enumerate(graph.ends):
+        if end.resolved is None or end.family == "parameter" or not end.certain:
+            continue
+        channel = ids.get((end.family, end.resolved))
+        if channel is not None:
+            node = f"n{end.node}"
+            yield (index, node, channel) if _offers(end) else (index, channel, node)
 
 
 def _data(result: GraphResult) -> dict[str, Any]:
@@ -180,13 +196,16 @@ def _escaped(text: str) -> str:
 def _quote(text: str) -> str:
     return '"' + _escaped(text) + '"'
 
+
 def _dot(result: GraphResult) -> str:
     graph = result.graph
     marks = _marks(result)
     out = ["digraph ros_graph {", "  rankdir=LR;", "  node [fontsize=10];"]
     used = sorted({e.node for e in graph.ends if e.family != "parameter"})
     for index in used:
-        out.append(f"  n{index} [label={_quote(_node_label(graph, index))}, shape=box];")
+        out.append(
+            f"  n{index} [label={_quote(_node_label(graph, index))}, shape=box];"
+        )
     channels = list(graph.channels().items())
     ids: dict[tuple[str, str], str] = {}
     for number, ((family, name), ends) in enumerate(channels):
@@ -195,16 +214,12 @@ def _dot(result: GraphResult) -> str:
         shape = {"topic": "ellipse", "service": "diamond", "action": "hexagon"}[family]
         label = _escaped(name) + ("\\n" + _escaped(" | ".join(types)) if types else "")
         out.append(f'  c{number} [label="{label}", shape={shape}];')
-    for index, end in enumerate(graph.ends):
-        if end.resolved is None or end.family == "parameter" or not end.certain:
-            continue
-        channel = ids.get((end.family, end.resolved))
-        if channel is None:
-            continue
-        a, b = (f"n{end.node}", channel) if _offers(end) else (channel, f"n{end.node}")
+    for index, a, b in _edges(graph, ids):
         style = ""
         if index in marks:
-            style = f" [color=red, fontcolor=red, label={_quote(','.join(marks[index]))}]"
+            style = (
+                f" [color=red, fontcolor=red, label={_quote(','.join(marks[index]))}]"
+            )
         out.append(f"  {a} -> {b}{style};")
     out.append("}")
     return "\n".join(dict.fromkeys(out)) + "\n"
@@ -226,18 +241,15 @@ def _mermaid(result: GraphResult) -> str:
         ids[(family, name)] = f"c{number}"
         types = sorted({t for e in ends for t in e.endpoint.types})
         label = _mermaid_text(name + (" " + " | ".join(types) if types else ""))
-        shape = {"topic": f"([{label}])", "service": f"{{{label}}}",
-                 "action": f"{{{{{label}}}}}"}[family]
+        shape = {
+            "topic": f"([{label}])",
+            "service": f"{{{label}}}",
+            "action": f"{{{{{label}}}}}",
+        }[family]
         out.append(f"  c{number}{shape}")
     edges = 0
     red: list[int] = []
-    for index, end in enumerate(graph.ends):
-        if end.resolved is None or end.family == "parameter" or not end.certain:
-            continue
-        channel = ids.get((end.family, end.resolved))
-        if channel is None:
-            continue
-        a, b = (f"n{end.node}", channel) if _offers(end) else (channel, f"n{end.node}")
+    for index, a, b in _edges(graph, ids):
         line = f"  {a} --> {b}"
         if index in marks:
             line = f"  {a} -- {_mermaid_text(','.join(marks[index]))} --> {b}"

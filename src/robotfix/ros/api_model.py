@@ -98,7 +98,10 @@ ENDPOINT_METHODS: dict[str, EndpointCall] = {
         "publisher", 2, (0, "msg_type"), (1, "topic"), (2, "qos_profile")
     ),
     "create_subscription": EndpointCall(
-        "subscription", 2, _type_of("create_subscription"), (1, "topic"),
+        "subscription",
+        2,
+        _type_of("create_subscription"),
+        (1, "topic"),
         (3, "qos_profile"),
     ),
     "create_service": EndpointCall(
@@ -142,5 +145,11 @@ ENDPOINT_CLASSES["rclpy.action.client.ActionClient"] = ENDPOINT_CLASSES[
 ENDPOINT_CLASSES["rospy.topics.Publisher"] = ENDPOINT_CLASSES["rospy.Publisher"]
 ENDPOINT_CLASSES["rospy.topics.Subscriber"] = ENDPOINT_CLASSES["rospy.Subscriber"]
 # The words a file holds when it may make an endpoint (checked on its bytes)
-ENDPOINT_WORDS = (b"create_publisher", b"create_subscription", b"create_service",
-                  b"create_client", b"Action", b"rospy")
+ENDPOINT_WORDS = (
+    b"create_publisher",
+    b"create_subscription",
+    b"create_service",
+    b"create_client",
+    b"Action",
+    b"rospy",
+)

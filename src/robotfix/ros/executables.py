@@ -169,8 +169,20 @@ def _cmake_programs(package: Path) -> list[Path]:
 _COMMAND = re.compile(r"\b([A-Za-z_][A-Za-z0-9_]*)\s*\(([^()]*)\)")
 _VARIABLE = re.compile(r"\$\{([A-Za-z0-9_]+)\}")
 _TARGET_WORDS = frozenset(
-    {"STATIC", "SHARED", "MODULE", "OBJECT", "INTERFACE", "EXCLUDE_FROM_ALL",
-     "WIN32", "MACOSX_BUNDLE", "PUBLIC", "PRIVATE", "IMPORTED", "ALIAS"}
+    {
+        "STATIC",
+        "SHARED",
+        "MODULE",
+        "OBJECT",
+        "INTERFACE",
+        "EXCLUDE_FROM_ALL",
+        "WIN32",
+        "MACOSX_BUNDLE",
+        "PUBLIC",
+        "PRIVATE",
+        "IMPORTED",
+        "ALIAS",
+    }
 )
 _INCLUDE = re.compile(rb'#\s*include\s*[<"]([^>"]+)[>"]')
 CPP_SOURCE_SUFFIXES = (".cpp", ".cc", ".cxx", ".c++", ".hpp", ".hh", ".hxx", ".h")
@@ -253,8 +265,8 @@ def _cmake_run(
         if command in functions and depth < 4:
             params, body = functions[command]
             bound = dict(variables)
-            bound.update(zip(params, words))
-            bound["ARGN"] = ";".join(words[len(params):])
+            bound.update(zip(params, words[: len(params)], strict=False))
+            bound["ARGN"] = ";".join(words[len(params) :])
             _cmake_run(package, body, bound, targets, functions, depth + 1)
         elif command == "cmake_parse_arguments":
             _parse_arguments(match.group(2), variables)
@@ -263,7 +275,7 @@ def _cmake_run(
         elif command == "set" and len(words) >= 2:
             variables[words[0]] = words[1]
         elif command in ("add_executable", "add_library", "target_sources"):
-            sources, links = targets.setdefault(words[0], ([], []))
+            sources, _ = targets.setdefault(words[0], ([], []))
             for word in words[1:]:
                 if word in _TARGET_WORDS or "$" in word:
                     continue
@@ -274,10 +286,11 @@ def _cmake_run(
         elif command == "target_link_libraries":
             _, links = targets.setdefault(words[0], ([], []))
             links += [w for w in words[1:] if w not in _TARGET_WORDS and "$" not in w]
-        elif command == "rclcpp_components_register_node":
-            if "EXECUTABLE" in words[:-1]:
-                name = words[words.index("EXECUTABLE") + 1]
-                targets.setdefault(name, ([], []))[1].append(words[0])
+        elif (
+            command == "rclcpp_components_register_node" and "EXECUTABLE" in words[:-1]
+        ):
+            name = words[words.index("EXECUTABLE") + 1]
+            targets.setdefault(name, ([], []))[1].append(words[0])
 
 
 def _parse_arguments(raw: str, variables: dict[str, str]) -> None:
@@ -326,4 +339,3 @@ def _included(package: Path, files: list[Path]) -> list[Path]:
                 except (OSError, ValueError):
                     break
     return found
-

@@ -115,7 +115,11 @@ def _owners(found: FileGraph, plugin: str | None) -> list[str]:
     seen: list[str] = []
     for endpoint in found.endpoints:
         owner = endpoint.owner
-        if plugin is not None and owner != plugin and not owner.startswith(plugin + "."):
+        if (
+            plugin is not None
+            and owner != plugin
+            and not owner.startswith(plugin + ".")
+        ):
             continue
         if owner not in seen:
             seen.append(owner)
@@ -136,11 +140,21 @@ def build(code: dict[str, FileGraph], started: list[Started]) -> Graph:
                 continue
             for owner in _owners(found, one.plugin):
                 covered.add((path, owner))
-                name = entry.name.rsplit("/", 1)[-1] if entry.name else code_name(found, owner)
+                name = (
+                    entry.name.rsplit("/", 1)[-1]
+                    if entry.name
+                    else code_name(found, owner)
+                )
                 if entry.name and ("$" in entry.name or "{" in entry.name):
                     name = None
-                instance = Instance(name, namespace, entry.place, entry.package,
-                                    entry.executable, remaps)
+                instance = Instance(
+                    name,
+                    namespace,
+                    entry.place,
+                    entry.package,
+                    entry.executable,
+                    remaps,
+                )
                 _add(graph, instance, path, found, owner)
     for path in sorted(code):
         found = code[path]
@@ -152,7 +166,9 @@ def build(code: dict[str, FileGraph], started: list[Started]) -> Graph:
     return graph
 
 
-def _add(graph: Graph, instance: Instance, path: str, found: FileGraph, owner: str) -> None:
+def _add(
+    graph: Graph, instance: Instance, path: str, found: FileGraph, owner: str
+) -> None:
     key = (instance.name, instance.namespace, tuple(instance.remaps), path, owner)
     if key in graph.known:
         return
@@ -165,7 +181,10 @@ def _add(graph: Graph, instance: Instance, path: str, found: FileGraph, owner: s
         if endpoint.kind == PARAMETER:  # a node's own: not a graph name
             graph.ends.append(End(index, path, endpoint, endpoint.name, True))
             continue
-        resolved = expand(endpoint.name, instance.namespace, instance.name, endpoint.handle)
-        resolved, uncertain = remap(resolved, instance.remaps, instance.namespace,
-                                    instance.name)
+        resolved = expand(
+            endpoint.name, instance.namespace, instance.name, endpoint.handle
+        )
+        resolved, uncertain = remap(
+            resolved, instance.remaps, instance.namespace, instance.name
+        )
         graph.ends.append(End(index, path, endpoint, resolved, not uncertain))

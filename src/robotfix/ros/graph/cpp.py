@@ -44,8 +44,15 @@ from robotfix.ros.graph.model import (
 
 MAX_CPP_BYTES = 2 * 1024 * 1024
 # a file that holds none of these makes no endpoint: not parsed
-WORDS = (b"create_", b"advertise", b"subscribe", b"serviceClient", b"param",
-         b"TwistPublisher", b"TwistSubscriber")
+WORDS = (
+    b"create_",
+    b"advertise",
+    b"subscribe",
+    b"serviceClient",
+    b"param",
+    b"TwistPublisher",
+    b"TwistSubscriber",
+)
 
 # method -> (kind, ros, name position, qos position, default position)
 _METHODS: dict[str, tuple[str, int, int, int | None, int | None]] = {
@@ -127,7 +134,7 @@ class _File:
             if name is not None and value is not None:
                 self.aliases[_text(name)] = _text(value)
         for node in captures.get("using", []):
-            text = _text(node)[len("using"):].strip().rstrip(";").strip()
+            text = _text(node)[len("using") :].strip().rstrip(";").strip()
             if "::" in text and not text.startswith("namespace"):
                 self.aliases[text.rsplit("::", 1)[-1]] = text
         for node in captures.get("decl", []):
@@ -154,7 +161,11 @@ class _File:
             return
         text = _text(declarator.child_by_field_name("declarator"))
         params = declarator.child_by_field_name("parameters")
-        first = [c for c in params.children if c.type == "parameter_declaration"] if params else []
+        first = (
+            [c for c in params.children if c.type == "parameter_declaration"]
+            if params
+            else []
+        )
         if first:
             kind = first[0].child_by_field_name("type")
             if kind is not None:
@@ -163,14 +174,19 @@ class _File:
     def _initializer(self, node: Any, cls: str) -> None:
         """`: Node("talker")` names the class's node; `pnh_("~")` a private handle."""
         name = _text(node.children[0]) if node.children else ""
-        args = [c for c in (node.children[-1].children if node.children else [])
-                if c.type not in ("(", ")", ",")]
+        args = [
+            c
+            for c in (node.children[-1].children if node.children else [])
+            if c.type not in ("(", ")", ",")
+        ]
         literal = _string(args[0]) if args else None
         last = name.split("::")[-1].split("<")[0]
         if last in _NODE_BASES and literal is not None and cls:
             self.found.nodes.setdefault(cls, []).append(literal)
-        elif literal is not None and literal.startswith(("~", "/")) or (
-            literal is not None and name.endswith("_")
+        elif (
+            (literal is not None
+            and literal.startswith(("~", "/")))
+            or (literal is not None and name.endswith("_"))
         ):
             self.handles[name] = literal
 
@@ -182,25 +198,41 @@ class _File:
             return
         if not _text(kind).endswith("NodeHandle"):
             for child in node.children:
-                value = child.child_by_field_name("value") if child.type == "init_declarator" else None
+                value = (
+                    child.child_by_field_name("value")
+                    if child.type == "init_declarator"
+                    else None
+                )
                 if value is None or value.type != "call_expression":
                     continue
                 func = _text(value.child_by_field_name("function"))
                 if "make_shared" in func and "Node" in func:
-                    args = [c for c in value.child_by_field_name("arguments").children
-                            if c.type not in ("(", ")", ",")]
+                    args = [
+                        c
+                        for c in value.child_by_field_name("arguments").children
+                        if c.type not in ("(", ")", ",")
+                    ]
                     literal = _string(args[0]) if args else None
                     var = _text(child.child_by_field_name("declarator"))
                     if literal is not None:
-                        self.found.nodes.setdefault(_owner(cls, var), []).append(literal)
+                        self.found.nodes.setdefault(_owner(cls, var), []).append(
+                            literal
+                        )
             return
         self.ros1 = True
         for child in node.children:
             if child.type == "init_declarator":
                 name = child.child_by_field_name("declarator")
                 value = child.child_by_field_name("value")
-                if value is not None and value.type in ("argument_list", "initializer_list"):
-                    args = [c for c in value.children if c.type not in ("(", ")", ",", "{", "}")]
+                if value is not None and value.type in (
+                    "argument_list",
+                    "initializer_list",
+                ):
+                    args = [
+                        c
+                        for c in value.children
+                        if c.type not in ("(", ")", ",", "{", "}")
+                    ]
                     literal = _string(args[0]) if args else None
                     self.handles[_text(name)] = literal if literal is not None else "?"
                 else:
@@ -214,7 +246,9 @@ class _File:
         args_node = call.child_by_field_name("arguments")
         if func is None or args_node is None:
             return
-        args = [c for c in args_node.children if c.type not in ("(", ")", ",", "comment")]
+        args = [
+            c for c in args_node.children if c.type not in ("(", ")", ",", "comment")
+        ]
         receiver = None
         if func.type == "field_expression":
             receiver = func.child_by_field_name("argument")
@@ -281,8 +315,18 @@ class _File:
             handle = ""
         point = call.start_point
         self.found.endpoints.append(
-            Endpoint(kind, name, types, point[0] + 1, _col(call, self.data), owner, profile, ros,
-                     handle, value)
+            Endpoint(
+                kind,
+                name,
+                types,
+                point[0] + 1,
+                _col(call, self.data),
+                owner,
+                profile,
+                ros,
+                handle,
+                value,
+            )
         )
 
     def _constructed(self, call: Any, made: str, args: list[Any], cls: str) -> None:
@@ -293,14 +337,25 @@ class _File:
         kind, name_at, qos_at, types = spec
         receiver = _text(args[0]) if args else ""
         name = _string(args[name_at]) if len(args) > name_at else None
-        profile = _qos(args[qos_at]) if qos_at is not None and len(args) > qos_at else None
+        profile = (
+            _qos(args[qos_at]) if qos_at is not None and len(args) > qos_at else None
+        )
         self.found.endpoints.append(
-            Endpoint(kind, name, types, call.start_point[0] + 1, _col(call, self.data),
-                     _owner(cls, receiver), profile, 2)
+            Endpoint(
+                kind,
+                name,
+                types,
+                call.start_point[0] + 1,
+                _col(call, self.data),
+                _owner(cls, receiver),
+                profile,
+                2,
+            )
         )
 
-    def _action(self, call: Any, function: str, template: Any, args: list[Any],
-                cls: str) -> None:
+    def _action(
+        self, call: Any, function: str, template: Any, args: list[Any], cls: str
+    ) -> None:
         kind = _ACTIONS.get(function)
         if kind is None:
             return
@@ -310,8 +365,16 @@ class _File:
         owner = _owner(cls, receiver)
         name = _string(args[1]) if len(args) > 1 else None
         self.found.endpoints.append(
-            Endpoint(kind, name, self._types(template, kind), call.start_point[0] + 1,
-                     _col(call, self.data), owner, None, 2)
+            Endpoint(
+                kind,
+                name,
+                self._types(template, kind),
+                call.start_point[0] + 1,
+                _col(call, self.data),
+                owner,
+                None,
+                2,
+            )
         )
 
     def _types(self, template: Any, kind: str) -> tuple[str, ...]:
@@ -330,7 +393,7 @@ class _File:
             return ()
         param = param.replace("const", " ").replace("&", " ").strip()
         if param.startswith("boost::shared_ptr<"):
-            param = param[len("boost::shared_ptr<"):].rstrip(">").strip()
+            param = param[len("boost::shared_ptr<") :].rstrip(">").strip()
         elif not _PTR.search(param):
             return ()  # a message taken by value: rare, and templates hide it
         param = _PTR.sub("", param).strip().rstrip(":")
@@ -368,7 +431,8 @@ def _declarator(node: Any) -> Any:
     """A function definition's `function_declarator`, or None."""
     declarator = node.child_by_field_name("declarator")
     while declarator is not None and declarator.type in (
-        "pointer_declarator", "reference_declarator"
+        "pointer_declarator",
+        "reference_declarator",
     ):
         declarator = declarator.child_by_field_name("declarator")
     if declarator is None or declarator.type != "function_declarator":
@@ -388,7 +452,11 @@ def _enclosing(node: Any) -> str:
             return _text(name).split("::")[-1] if name is not None else ""
         if parent.type == "function_definition":
             declarator = _declarator(parent)
-            text = _text(declarator.child_by_field_name("declarator")) if declarator else ""
+            text = (
+                _text(declarator.child_by_field_name("declarator"))
+                if declarator
+                else ""
+            )
             if "::" in text:
                 return text.split("::")[-2].split("<")[0]
         parent = parent.parent
@@ -479,11 +547,16 @@ def _qos(node: Any, depth: int = 0) -> Qos | None:
             return Q.CPP_PROFILES["SensorDataQoS"]
         if first.type == "number_literal":
             return _qos(first, depth + 1)
-        if first.type == "call_expression" and _text(
-            first.child_by_field_name("function")
-        ).split("::")[-1] == "KeepLast":
-            inner_args = [c for c in first.child_by_field_name("arguments").children
-                          if c.type == "number_literal"]
+        if (
+            first.type == "call_expression"
+            and _text(first.child_by_field_name("function")).split("::")[-1]
+            == "KeepLast"
+        ):
+            inner_args = [
+                c
+                for c in first.child_by_field_name("arguments").children
+                if c.type == "number_literal"
+            ]
             depth_value = int(_text(inner_args[0]), 0) if inner_args else None
             return Q.depth_only(depth_value)
     return None

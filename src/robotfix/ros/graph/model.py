@@ -24,7 +24,15 @@ CLIENT = "client"
 ACTION_SERVER = "action_server"
 ACTION_CLIENT = "action_client"
 PARAMETER = "parameter"
-KINDS = (PUBLISHER, SUBSCRIPTION, SERVICE, CLIENT, ACTION_SERVER, ACTION_CLIENT, PARAMETER)
+KINDS = (
+    PUBLISHER,
+    SUBSCRIPTION,
+    SERVICE,
+    CLIENT,
+    ACTION_SERVER,
+    ACTION_CLIENT,
+    PARAMETER,
+)
 # the middle of a type's name (`pkg/msg/Name`) each kind's interface has
 MIDDLE = {
     PUBLISHER: "msg",
@@ -171,6 +179,8 @@ def load(raw: Any) -> FileGraph | None:
                 return None
             profile = Qos(*qos)
         found.endpoints.append(
-            Endpoint(kind, name, tuple(types), line, col, owner, profile, eros, handle, value)
+            Endpoint(
+                kind, name, tuple(types), line, col, owner, profile, eros, handle, value
+            )
         )
     return found

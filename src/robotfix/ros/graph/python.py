@@ -86,7 +86,9 @@ class _File:
             return self._attribute(cls, node.attr, 0)
         return None
 
-    def _attribute(self, cls: str, attr: str, depth: int) -> list[ast.expr | None] | None:
+    def _attribute(
+        self, cls: str, attr: str, depth: int
+    ) -> list[ast.expr | None] | None:
         found = self.attributes.get(cls, {}).get(attr)
         if found is not None:
             return found
@@ -112,7 +114,11 @@ class _File:
         if bound is not None:
             out: set[str] = set()
             for value in bound:
-                one = None if value is None else self.types(value, scope, cls, kind, depth + 1)
+                one = (
+                    None
+                    if value is None
+                    else self.types(value, scope, cls, kind, depth + 1)
+                )
                 if one is None:
                     return None
                 out |= one
@@ -174,15 +180,21 @@ class _File:
         return None
 
     def _qos_profile(self, call: ast.Call) -> Qos | None:
-        fields: dict[str, str | None] = {"reliability": Q.RELIABLE,
-                                          "durability": Q.VOLATILE}
+        fields: dict[str, str | None] = {
+            "reliability": Q.RELIABLE,
+            "durability": Q.VOLATILE,
+        }
         depth = None
         for keyword in call.keywords:
             if keyword.arg is None:
                 return None  # **kwargs
             if keyword.arg == "depth":
                 value = keyword.value
-                depth = value.value if isinstance(value, ast.Constant) and type(value.value) is int else None
+                depth = (
+                    value.value
+                    if isinstance(value, ast.Constant) and type(value.value) is int
+                    else None
+                )
             elif keyword.arg in ("reliability", "durability"):
                 text = dotted(keyword.value)
                 policy = Q.POLICIES.get(text.rsplit(".", 1)[-1]) if text else None
@@ -216,7 +228,8 @@ def read_python(tree: ast.Module) -> FileGraph:
 def _bind(file: _File) -> None:
     """Imports, every scope's bindings, `self.x` assignments, class bases."""
     scopes: list[tuple[_Scope, str | None]] = [(file.tree, None)]
-    for node in walk_all(file.tree):
+    methods: set[int] = set()  # a class's methods: bound with their class
+    for node in walk_all(file.tree):  # a class before its methods
         if isinstance(node, ast.Import):
             for alias in node.names:
                 if alias.asname:
@@ -232,13 +245,18 @@ def _bind(file: _File) -> None:
             if node.module == "rospy" or node.module.startswith("rospy."):
                 file.rospy = True
         elif isinstance(node, ast.ClassDef):
-            file.bases[node.name] = [b.id for b in node.bases if isinstance(b, ast.Name)]
+            file.bases[node.name] = [
+                b.id for b in node.bases if isinstance(b, ast.Name)
+            ]
             for item in node.body:
                 if isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
                     scopes.append((item, node.name))
-        elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
-            if not any(s is node for s, _ in scopes):
-                scopes.append((node, None))
+                    methods.add(id(item))
+        elif (
+            isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef))
+            and id(node) not in methods
+        ):
+            scopes.append((node, None))
     for scope, cls in scopes:
         _bind_scope(file, scope, cls)
 
@@ -253,8 +271,9 @@ def _bind_scope(file: _File, scope: _Scope, cls: str | None) -> None:
     todo: list[ast.AST] = list(scope.body)
     while todo:
         node = todo.pop()
-        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef,
-                             ast.Lambda)):
+        if isinstance(
+            node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)
+        ):
             continue  # their own scopes
         if isinstance(node, (ast.Assign, ast.AnnAssign)):
             targets = node.targets if isinstance(node, ast.Assign) else [node.target]
@@ -262,27 +281,39 @@ def _bind_scope(file: _File, scope: _Scope, cls: str | None) -> None:
             for target in targets:
                 if isinstance(target, ast.Name):
                     names.setdefault(target.id, []).append(value)
-                elif isinstance(target, ast.Attribute) and isinstance(target.value, ast.Name):
+                elif isinstance(target, ast.Attribute) and isinstance(
+                    target.value, ast.Name
+                ):
                     if target.value.id == "self" and cls is not None:
                         file.attributes.setdefault(cls, {}).setdefault(
-                            target.attr, []).append(value)
+                            target.attr, []
+                        ).append(value)
                     else:
                         file.mutated.add((id(scope), target.value.id))
                 else:  # a, b = ...: each bound otherwise
                     for inner in walk_all(target):
                         if isinstance(inner, ast.Name):
                             names.setdefault(inner.id, []).append(None)
-                        elif (isinstance(inner, ast.Attribute)
-                              and isinstance(inner.value, ast.Name)
-                              and inner.value.id == "self" and cls is not None):
+                        elif (
+                            isinstance(inner, ast.Attribute)
+                            and isinstance(inner.value, ast.Name)
+                            and inner.value.id == "self"
+                            and cls is not None
+                        ):
                             file.attributes.setdefault(cls, {}).setdefault(
-                                inner.attr, []).append(None)
+                                inner.attr, []
+                            ).append(None)
         elif isinstance(node, ast.Name) and isinstance(node.ctx, (ast.Store, ast.Del)):
             names.setdefault(node.id, []).append(None)  # for, with, walrus, del
-        elif (isinstance(node, ast.Attribute) and isinstance(node.ctx, ast.Store)
-              and isinstance(node.value, ast.Name)):
+        elif (
+            isinstance(node, ast.Attribute)
+            and isinstance(node.ctx, ast.Store)
+            and isinstance(node.value, ast.Name)
+        ):
             if node.value.id == "self" and cls is not None:
-                file.attributes.setdefault(cls, {}).setdefault(node.attr, []).append(None)
+                file.attributes.setdefault(cls, {}).setdefault(node.attr, []).append(
+                    None
+                )
             else:
                 file.mutated.add((id(scope), node.value.id))
         if isinstance(node, (ast.Assign, ast.AnnAssign)):
@@ -357,16 +388,29 @@ def _call(
             if profile is not None and any(
                 k.arg == "qos_overriding_options" for k in call.keywords
             ):
-                profile = Qos(profile.reliability, profile.durability, profile.depth,
-                              False)
+                profile = Qos(
+                    profile.reliability, profile.durability, profile.depth, False
+                )
     file.found.endpoints.append(
-        Endpoint(spec.kind, name, tuple(sorted(types or ())), call.lineno,
-                 call.col_offset, owner, profile, spec.ros)
+        Endpoint(
+            spec.kind,
+            name,
+            tuple(sorted(types or ())),
+            call.lineno,
+            call.col_offset,
+            owner,
+            profile,
+            spec.ros,
+        )
     )
 
 
 def _node_call(
-    file: _File, call: ast.Call, called: str, scope: _Scope, cls: str | None,
+    file: _File,
+    call: ast.Call,
+    called: str,
+    scope: _Scope,
+    cls: str | None,
     statement: ast.stmt,
 ) -> None:
     """A node's name: `super().__init__('name')` in a class, `x = Node('name')`,
@@ -382,16 +426,18 @@ def _node_call(
         if name is not None and not anonymous:
             file.found.nodes.setdefault("", []).append(name)
         return
-    if called.startswith("rclpy.") and last in NODE_CONSTRUCTORS:
-        if isinstance(statement, ast.Assign) and statement.value is call:
-            for target in statement.targets:
-                text = dotted(target)
-                owner = (
-                    text[5:] if text and text.startswith("self.") else text
-                )
-                name = _node_name(file, call, scope, cls)
-                if owner and name is not None:
-                    file.found.nodes.setdefault(owner, []).append(name)
+    if (
+        called.startswith("rclpy.")
+        and last in NODE_CONSTRUCTORS
+        and isinstance(statement, ast.Assign)
+        and statement.value is call
+    ):
+        for target in statement.targets:
+            text = dotted(target)
+            owner = text[5:] if text and text.startswith("self.") else text
+            name = _node_name(file, call, scope, cls)
+            if owner and name is not None:
+                file.found.nodes.setdefault(owner, []).append(name)
 
 
 def _node_name(
@@ -411,15 +457,22 @@ def super_names(tree: ast.Module, file: FileGraph) -> None:
     }
     for name, cls in classes.items():
         for node in walk_all(cls):
-            if not (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
-                    and node.func.attr == "__init__"):
+            if not (
+                isinstance(node, ast.Call)
+                and isinstance(node.func, ast.Attribute)
+                and node.func.attr == "__init__"
+            ):
                 continue
             receiver = node.func.value
             args = list(node.args)
             if isinstance(receiver, ast.Call) and dotted(receiver.func) == "super":
                 pass
-            elif isinstance(receiver, ast.Name) and args and isinstance(args[0], ast.Name) \
-                    and args[0].id == "self":
+            elif (
+                isinstance(receiver, ast.Name)
+                and args
+                and isinstance(args[0], ast.Name)
+                and args[0].id == "self"
+            ):
                 args = args[1:]
             else:
                 continue

@@ -72,8 +72,16 @@ CPP_SETTERS: dict[str, tuple[str, str]] = {
 }
 # setters that change nothing RobotFix compares
 CPP_NEUTRAL = frozenset(
-    {"keep_last", "keep_all", "history", "deadline", "lifespan", "liveliness",
-     "liveliness_lease_duration", "avoid_ros_namespace_conventions"}
+    {
+        "keep_last",
+        "keep_all",
+        "history",
+        "deadline",
+        "lifespan",
+        "liveliness",
+        "liveliness_lease_duration",
+        "avoid_ros_namespace_conventions",
+    }
 )
 
 
@@ -88,9 +96,12 @@ def incompatible(publisher: Qos, subscription: Qos) -> list[str]:
     `publisher` (empty: it may)."""
     why = []
     if publisher.reliability == BEST_EFFORT and subscription.reliability == RELIABLE:
-        why.append("the subscription asks reliable delivery, the publisher offers "
-                   "best effort")
+        why.append(
+            "the subscription asks reliable delivery, the publisher offers best effort"
+        )
     if publisher.durability == VOLATILE and subscription.durability == TRANSIENT_LOCAL:
-        why.append("the subscription asks transient-local durability, the "
-                   "publisher offers volatile")
+        why.append(
+            "the subscription asks transient-local durability, the "
+            "publisher offers volatile"
+        )
     return why
