@@ -85,6 +85,30 @@ def test_a_single_file_gets_no_graph_findings() -> None:
     assert not [d for d in found if d.code in GRAPH_CODES]
 
 
+def test_graph_findings_are_suppressed_on_their_line(tmp_path: Path) -> None:
+    """`# robotfix: ignore[RF603]` (Python) and `// robotfix: ignore[...]` (C++)
+    silence a graph finding, and the file's own check does not call the Python
+    one unused (RF010): the graph check, after it, uses it."""
+    root = tmp_path / "ws"
+    shutil.copytree(CASES / "ros2_robot", root)
+    monitor = root / "keyboard_teleop" / "keyboard_teleop" / "monitor.py"
+    monitor.write_text(
+        monitor.read_text().replace(
+            "self.create_subscription(  # error: RF603",
+            "self.create_subscription(  # robotfix: ignore[RF603]",
+        )
+    )
+    driver = root / "base_driver" / "src" / "driver.cpp"
+    driver.write_text(
+        driver.read_text().replace(
+            "// error: RF603", "// robotfix: ignore[topic-type-mismatch]"
+        )
+    )
+    found = check_paths([root], Config(root=root)).diagnostics
+    assert not [d for d in found if d.code in ("RF603", "RF010")]
+    assert [d.code for d in found if d.code == "RF604"] == ["RF604", "RF604"]
+
+
 def test_names_resolve_as_ros_resolves_them() -> None:
     assert expand("cmd_vel", "/robot1", "teleop") == "/robot1/cmd_vel"
     assert expand("/scan", "/robot1", "teleop") == "/scan"

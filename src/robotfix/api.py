@@ -393,14 +393,17 @@ def _unused_suppressions(
 ) -> list[Diagnostic]:
     """RF010: a `# robotfix: ignore[...]` that silences nothing, or names no rule.
     Not in a Python launch file, whose suppressions also serve the launch check
-    (`launchcheck`), which runs after this one and finds what this one cannot."""
+    (`launchcheck`), which runs after this one and finds what this one cannot; nor
+    for the graph's rules (`rules.GRAPH_RULES`), which the run's graph check uses."""
     path = Path(source.path)
     if is_launch_file(path.parent.name, path.name):
         return []
     out = []
     for line, (col, codes) in sorted(source.suppressions.items()):
         on_line = [d for d in found if d.span.line == line]
-        listed = sorted(codes or ())
+        listed = sorted(c for c in codes or () if c not in rules.GRAPH_RULES)
+        if codes and not listed:
+            continue  # only graph rules: the run's graph check uses them
         unknown = [
             c
             for c in listed

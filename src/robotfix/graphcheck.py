@@ -109,11 +109,11 @@ def started_entries(
     if launches is None:
         return []
     by_real: dict[str, str] = {}
-    for path in code:
+    for path in sorted(code):  # sorted: the output of `-j N` is that of `-j 1`
         by_real.setdefault(os.path.realpath(path), path)
     packages = dict(launches.packages)
     folders: set[str] = set()
-    for path in code:  # a C++ package has no Python file that LaunchRun saw
+    for path in sorted(code):  # a C++ package has no Python file LaunchRun saw
         folder = os.path.dirname(path)
         if folder in folders:
             continue
