@@ -353,6 +353,8 @@ def test_graph_command_formats(capsys: pytest.CaptureFixture[str]) -> None:
     assert {f["code"] for f in data["findings"]} == {"RF603", "RF604", "RF606", "RF607"}
     driver = [n for n in data["nodes"] if n["qualified"] == "/robot1/driver"]
     assert driver and driver[0]["launch"] is not None
+    contracts = {e["resolved"]: e["contract"] for e in data["endpoints"]}
+    assert contracts["/robot1/odom"] == "abs(twist.twist.linear.x) <= 0.5"
     marked = [e for e in data["endpoints"] if "RF603" in e["findings"]]
     assert {e["resolved"] for e in marked} == {"/robot1/base/cmd_vel"}
     main(["graph", str(root), "--format", "dot"])
@@ -366,6 +368,7 @@ def test_graph_command_formats(capsys: pytest.CaptureFixture[str]) -> None:
     main(["graph", str(root)])
     text = capsys.readouterr().out
     assert "/robot1/teleop" in text and "!RF603" in text
+    assert "assumes `abs(twist.twist.linear.x) <= 0.5`" in text
 
 
 def test_graph_paths_is_the_checks_graph() -> None:

@@ -84,6 +84,8 @@ def _text(result: GraphResult) -> str:
             name = end.resolved or f"? ({end.endpoint.name or 'computed'})"
             qos = f" [{end.endpoint.qos.shown()}]" if end.endpoint.qos else ""
             value = f" = {end.endpoint.value}" if end.endpoint.value is not None else ""
+            if end.endpoint.contract is not None:
+                value += f" assumes `{end.endpoint.contract}`"
             mark = f"  !{','.join(marks[end_index])}" if end_index in marks else ""
             lines.append(
                 f"    {VERBS[end.endpoint.kind]} {name} {_types(end)}{qos}{value}"
@@ -166,6 +168,7 @@ def _data(result: GraphResult) -> dict[str, Any]:
                     "certain": end.endpoint.qos.certain,
                 },
                 "default": end.endpoint.value,
+                "contract": end.endpoint.contract,
                 "path": end.path,
                 "line": end.endpoint.line,
                 "column": end.endpoint.col + 1,

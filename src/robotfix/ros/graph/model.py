@@ -86,6 +86,9 @@ class Endpoint:
     ros: int = 2
     handle: str = ""  # ROS 1 C++: the NodeHandle's namespace ("~" private)
     value: str | None = None  # a parameter's default, as written (C++)
+    # what a subscription's callback assumes of the message: the refinement of
+    # its parameter (`msg: Annotated[Twist, "abs(linear.x) <= 0.5"]`), as written
+    contract: str | None = None
 
 
 @dataclass
@@ -116,6 +119,7 @@ def dump(found: FileGraph) -> list[Any]:
                 e.ros,
                 e.handle,
                 e.value,
+                e.contract,
             ]
             for e in found.endpoints
         ],
@@ -150,9 +154,9 @@ def load(raw: Any) -> FileGraph | None:
         return None
     found = FileGraph([], {k: list(v) for k, v in nodes.items()}, ros)
     for item in endpoints:
-        if not (isinstance(item, list) and len(item) == 10):
+        if not (isinstance(item, list) and len(item) == 11):
             return None
-        kind, name, types, line, col, owner, qos, eros, handle, value = item
+        kind, name, types, line, col, owner, qos, eros, handle, value, contract = item
         if not (
             kind in KINDS
             and _opt(name)
@@ -164,6 +168,7 @@ def load(raw: Any) -> FileGraph | None:
             and eros in (1, 2)
             and _text(handle)
             and _opt(value)
+            and _opt(contract)
         ):
             return None
         profile = None
@@ -180,7 +185,17 @@ def load(raw: Any) -> FileGraph | None:
             profile = Qos(*qos)
         found.endpoints.append(
             Endpoint(
-                kind, name, tuple(types), line, col, owner, profile, eros, handle, value
+                kind,
+                name,
+                tuple(types),
+                line,
+                col,
+                owner,
+                profile,
+                eros,
+                handle,
+                value,
+                contract,
             )
         )
     return found

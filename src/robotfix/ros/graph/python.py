@@ -29,10 +29,11 @@ from robotfix.ros.api_model import (
     ENDPOINT_CLASSES,
     ENDPOINT_METHODS,
     NODE_CONSTRUCTORS,
+    REGISTRATIONS,
     EndpointCall,
 )
 from robotfix.ros.graph import qos as Q
-from robotfix.ros.graph.model import MIDDLE, Endpoint, FileGraph, Qos
+from robotfix.ros.graph.model import MIDDLE, SUBSCRIPTION, Endpoint, FileGraph, Qos
 
 MAX_DEPTH = 8  # names followed through names
 MIDDLES = frozenset({"msg", "srv", "action"})
@@ -52,6 +53,10 @@ class _File:
         self.found = FileGraph()
         self.bases: dict[str, list[str]] = {}
         self.rospy = False
+        # functions by name: the module's ("") and each class's methods
+        self.functions: dict[
+            str, dict[str, ast.FunctionDef | ast.AsyncFunctionDef]
+        ] = {}
 
     # -- names -----------------------------------------------------------------
     def qualified(self, node: ast.expr) -> str | None:
@@ -252,11 +257,15 @@ def _bind(file: _File) -> None:
                 if isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
                     scopes.append((item, node.name))
                     methods.add(id(item))
+                    file.functions.setdefault(node.name, {})[item.name] = item
         elif (
             isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef))
             and id(node) not in methods
         ):
             scopes.append((node, None))
+    for item in file.tree.body:
+        if isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            file.functions.setdefault("", {})[item.name] = item
     for scope, cls in scopes:
         _bind_scope(file, scope, cls)
 
@@ -391,6 +400,15 @@ def _call(
                 profile = Qos(
                     profile.reliability, profile.durability, profile.depth, False
                 )
+    contract = None
+    if spec.kind == SUBSCRIPTION:
+        callback = _argument(
+            call,
+            REGISTRATIONS[
+                "Subscriber" if spec.ros == 1 else "create_subscription"
+            ].callback_arg,
+        )
+        contract = _contract(file, callback, cls) if callback is not None else None
     file.found.endpoints.append(
         Endpoint(
             spec.kind,
@@ -401,8 +419,54 @@ def _call(
             owner,
             profile,
             spec.ros,
+            contract=contract,
         )
     )
+
+
+def _contract(file: _File, callback: ast.expr, cls: str | None) -> str | None:
+    """The refinement a subscription's callback declares on the message it takes
+    (`def on_cmd(self, msg: Annotated[Twist, "abs(linear.x) <= 0.5"])`), as
+    written; None without one (or when the callback is not a function of the
+    file)."""
+    function = None
+    if isinstance(callback, ast.Name):
+        function = file.functions.get("", {}).get(callback.id)
+        first = 0
+    elif (
+        isinstance(callback, ast.Attribute)
+        and isinstance(callback.value, ast.Name)
+        and callback.value.id == "self"
+        and cls is not None
+    ):
+        seen: set[str] = set()
+        todo = [cls]
+        while todo and function is None:
+            owner = todo.pop(0)
+            if owner in seen:
+                continue
+            seen.add(owner)
+            function = file.functions.get(owner, {}).get(callback.attr)
+            todo += file.bases.get(owner, [])
+        first = 1
+    if function is None:
+        return None
+    params = [*function.args.posonlyargs, *function.args.args]
+    if len(params) <= first:
+        return None
+    annotation = params[first].annotation
+    if not (
+        isinstance(annotation, ast.Subscript)
+        and (dotted(annotation.value) or "").rsplit(".", 1)[-1] == "Annotated"
+        and isinstance(annotation.slice, ast.Tuple)
+    ):
+        return None
+    texts = [
+        e.value
+        for e in annotation.slice.elts[1:]
+        if isinstance(e, ast.Constant) and isinstance(e.value, str)
+    ]
+    return " and ".join(f"({t})" if len(texts) > 1 else t for t in texts) or None
 
 
 def _node_call(

@@ -1,4 +1,6 @@
 """A command monitor written for the stamped teleop."""
+from typing import Annotated
+
 import rclpy
 from geometry_msgs.msg import TwistStamped
 from nav_msgs.msg import OccupancyGrid, Odometry
@@ -23,7 +25,9 @@ class Monitor(Node):
     def on_cmd(self, msg: TwistStamped) -> None:
         pass
 
-    def on_odom(self, msg: Odometry) -> None:
+    def on_odom(
+        self, msg: Annotated[Odometry, "abs(twist.twist.linear.x) <= 0.5"]
+    ) -> None:
         pass
 
     def on_scan(self, msg: LaserScan) -> None:
