@@ -379,3 +379,23 @@ def test_graph_paths_is_the_checks_graph() -> None:
     assert sorted(graph.diagnostics(), key=lambda d: d.sort_key()) == [
         d for d in checked if d.code in GRAPH_CODES
     ]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "set(a ${a}${a})\n" * 40_000,  # doubles a value 40,000 times
+        "function(x)\n" * 80_000,  # openings never closed
+        "function(f a)\nf(${a}${a})\nf(${a}${a})\nendfunction()\nf(x)\n",
+        "function(x y)\nadd_executable(${y} a.cpp)\nendfunction()\n"
+        + "x(z)\n" * 50_000,
+    ],
+    ids=["doubling", "unclosed", "recursive", "many-calls"],
+)
+def test_hostile_cmake_is_read_in_bounded_work(tmp_path: Path, text: str) -> None:
+    """CMake is read, never run: a value too long is unknown, a function's calls
+    nest 4 deep at most, and the commands read count against a budget."""
+    from robotfix.ros.executables import cpp_executable_files
+
+    write(tmp_path / "CMakeLists.txt", text)
+    assert cpp_executable_files(tmp_path, "z") == []

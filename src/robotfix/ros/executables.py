@@ -184,6 +184,8 @@ _TARGET_WORDS = frozenset(
         "ALIAS",
     }
 )
+CMAKE_STEPS = 2 * MAX_BUILD_BYTES  # characters of commands read per CMakeLists.txt
+MAX_VALUE = 4096  # a variable's value longer than this is unknown
 _INCLUDE = re.compile(rb'#\s*include\s*[<"]([^>"]+)[>"]')
 CPP_SOURCE_SUFFIXES = (".cpp", ".cc", ".cxx", ".c++", ".hpp", ".hh", ".hxx", ".h")
 
@@ -225,19 +227,25 @@ def _cmake_targets(package: Path) -> dict[str, tuple[list[Path], list[str]]]:
         return {}
     text = re.sub(r"#[^\n]*", "", text)
     functions: dict[str, tuple[list[str], str]] = {}
-    for match in _FUNCTION.finditer(text):
-        head = match.group(1).split()
-        if head:
-            functions[head[0].lower()] = (head[1:], match.group(2))
-    text = _FUNCTION.sub("", text)
+    outside: list[str] = []  # the text outside function and macro definitions
+    start, opened, head = 0, -1, [""]
+    for match in _BOUNDARY.finditer(text):  # one pass: no rescanning per opening
+        if match.group("end") is None and opened < 0:
+            outside.append(text[start : match.start()])
+            opened, head = match.end(), match.group("head").split() or [""]
+        elif match.group("end") is not None and opened >= 0:
+            functions[head[0].lower()] = (head[1:], text[opened : match.start()])
+            start, opened = match.end(), -1
+    outside.append(text[start:] if opened < 0 else "")
+    text = "".join(outside)
     targets: dict[str, tuple[list[Path], list[str]]] = {}
-    _cmake_run(package, text, {}, targets, functions, 0)
+    _cmake_run(package, text, {}, targets, functions, 0, [CMAKE_STEPS])
     return targets
 
 
-_FUNCTION = re.compile(
-    r"\b(?:function|macro)\s*\(([^()]*)\)(.*?)\bend(?:function|macro)\s*\([^()]*\)",
-    re.IGNORECASE | re.DOTALL,
+# `function(name args)` / `macro(...)` and their `endfunction()` / `endmacro()`
+_BOUNDARY = re.compile(
+    r"\b(?P<end>end)?(?:function|macro)\s*\((?P<head>[^()]*)\)", re.IGNORECASE
 )
 
 
@@ -248,17 +256,26 @@ def _cmake_run(
     targets: dict[str, tuple[list[Path], list[str]]],
     functions: dict[str, tuple[list[str], str]],
     depth: int,
+    budget: list[int],
 ) -> None:
     """The commands of `text` that make targets, in order; a call of a function
-    the file defines runs its body with its parameters bound (4 deep at most)."""
+    the file defines runs its body with its parameters bound (4 deep at most).
+    `budget` counts the characters of the commands read, function bodies run
+    included: what is left when it runs out is not read (its targets unknown)."""
+
+    def value(m: re.Match[str]) -> str:
+        found = variables.get(m.group(1))  # a value too long to be a name: unknown
+        return found if found is not None and len(found) <= MAX_VALUE else m.group(0)
+
     for match in _COMMAND.finditer(text):
+        budget[0] -= len(match.group(0))
+        if budget[0] < 0:
+            return
         command = match.group(1).lower()
         words = [
             part
             for w in match.group(2).split()
-            for part in _VARIABLE.sub(
-                lambda m: variables.get(m.group(1), m.group(0)), w.strip("\"'")
-            ).split(";")
+            for part in _VARIABLE.sub(value, w.strip("\"'")).split(";")
         ]
         if not words:
             continue
@@ -267,7 +284,7 @@ def _cmake_run(
             bound = dict(variables)
             bound.update(zip(params, words[: len(params)], strict=False))
             bound["ARGN"] = ";".join(words[len(params) :])
-            _cmake_run(package, body, bound, targets, functions, depth + 1)
+            _cmake_run(package, body, bound, targets, functions, depth + 1, budget)
         elif command == "cmake_parse_arguments":
             _parse_arguments(match.group(2), variables)
         elif command == "project":
