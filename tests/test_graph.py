@@ -399,3 +399,18 @@ def test_hostile_cmake_is_read_in_bounded_work(tmp_path: Path, text: str) -> Non
 
     write(tmp_path / "CMakeLists.txt", text)
     assert cpp_executable_files(tmp_path, "z") == []
+
+
+def test_python_names_are_followed_in_bounded_work() -> None:
+    """A name bound 3,000 times to a name bound 3,000 times: the call's type is
+    unknown once its budget is spent; the file's other calls still get theirs."""
+    text = (
+        "from std_msgs.msg import String\n"
+        + "y = String\n" * 3000
+        + "x = y\n" * 3000
+        + "def f(node):\n"
+        + "    node.create_publisher(x, 't', 1)\n"
+        + "    node.create_publisher(String, 't', 1)\n"
+    )
+    found = _py(text)
+    assert [e.types for e in found.endpoints] == [(), ("std_msgs/msg/String",)]

@@ -183,10 +183,8 @@ class _File:
         last = name.split("::")[-1].split("<")[0]
         if last in _NODE_BASES and literal is not None and cls:
             self.found.nodes.setdefault(cls, []).append(literal)
-        elif (
-            (literal is not None
-            and literal.startswith(("~", "/")))
-            or (literal is not None and name.endswith("_"))
+        elif (literal is not None and literal.startswith(("~", "/"))) or (
+            literal is not None and name.endswith("_")
         ):
             self.handles[name] = literal
 

@@ -36,6 +36,9 @@ from robotfix.ros.graph import qos as Q
 from robotfix.ros.graph.model import MIDDLE, SUBSCRIPTION, Endpoint, FileGraph, Qos
 
 MAX_DEPTH = 8  # names followed through names
+CALL_STEPS = 5_000  # values looked at for one call (a name bound 3,000 times to a
+# name bound 3,000 times is 9 million otherwise): past it, unknown
+FILE_STEPS = 200_000  # and for all the calls of a file
 MIDDLES = frozenset({"msg", "srv", "action"})
 _Scope = ast.FunctionDef | ast.AsyncFunctionDef | ast.Module
 
@@ -53,10 +56,21 @@ class _File:
         self.found = FileGraph()
         self.bases: dict[str, list[str]] = {}
         self.rospy = False
+        self.steps = 0  # values the call being read may still look at
+        self.left = FILE_STEPS  # what the file's other calls may
         # functions by name: the module's ("") and each class's methods
         self.functions: dict[
             str, dict[str, ast.FunctionDef | ast.AsyncFunctionDef]
         ] = {}
+
+    def start(self) -> int:
+        """Work for one call's arguments: what is left of the file's, at most
+        `CALL_STEPS` (`spent` takes what it used from the file's)."""
+        self.steps = min(CALL_STEPS, self.left)
+        return self.steps
+
+    def spent(self, given: int) -> None:
+        self.left -= given - max(self.steps, 0)
 
     # -- names -----------------------------------------------------------------
     def qualified(self, node: ast.expr) -> str | None:
@@ -109,7 +123,8 @@ class _File:
     def types(
         self, node: ast.expr, scope: _Scope, cls: str | None, kind: str, depth: int = 0
     ) -> set[str] | None:
-        if depth > MAX_DEPTH:
+        self.steps -= 1
+        if depth > MAX_DEPTH or self.steps < 0:
             return None
         if isinstance(node, ast.IfExp):
             a = self.types(node.body, scope, cls, kind, depth + 1)
@@ -143,7 +158,8 @@ class _File:
     ) -> str | None:
         if isinstance(node, ast.Constant):
             return node.value if isinstance(node.value, str) else None
-        if depth > MAX_DEPTH:
+        self.steps -= 1
+        if depth > MAX_DEPTH or self.steps < 0:
             return None
         bound = self.values(node, scope, cls)
         if not bound:
@@ -156,7 +172,8 @@ class _File:
     def profile(
         self, node: ast.expr, scope: _Scope, cls: str | None, depth: int = 0
     ) -> Qos | None:
-        if depth > MAX_DEPTH:
+        self.steps -= 1
+        if depth > MAX_DEPTH or self.steps < 0:
             return None
         if isinstance(node, ast.Constant):
             if type(node.value) is int:
@@ -383,6 +400,7 @@ def _call(
         return
     if spec.ros == 1:
         owner = ""
+    given = file.start()
     type_node = _argument(call, spec.type_arg)
     name_node = _argument(call, spec.name_arg)
     types = (
@@ -400,6 +418,7 @@ def _call(
                 profile = Qos(
                     profile.reliability, profile.durability, profile.depth, False
                 )
+    file.spent(given)
     contract = None
     if spec.kind == SUBSCRIPTION:
         callback = _argument(
@@ -510,7 +529,10 @@ def _node_name(
     node = _argument(call, (0, "node_name"))
     if node is None:
         node = _argument(call, (0, "name"))
-    return file.string(node, scope, cls) if node is not None else None
+    given = file.start()
+    found = file.string(node, scope, cls) if node is not None else None
+    file.spent(given)
+    return found
 
 
 def super_names(tree: ast.Module, file: FileGraph) -> None:
