@@ -52,7 +52,6 @@ if TYPE_CHECKING:
 BUILTIN_TOPICS = frozenset({"/rosout", "/parameter_events"})
 BUILTIN_SUFFIXES = ("/transition_event",)
 _CPP_COMMENT = re.compile(r"//(?=\s*robotfix:)")
-FAMILY_WORDS = {"topic": "topic", "service": "service", "action": "action"}
 
 
 @dataclass
@@ -278,7 +277,7 @@ def _type_mismatch(
             end.path,
             end.endpoint.line,
             end.endpoint.col,
-            FAMILY_WORDS[family],
+            family,
             name,
             kind,
             others,

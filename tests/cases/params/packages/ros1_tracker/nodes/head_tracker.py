@@ -21,7 +21,7 @@ class HeadTracker:
         self.lost_timeout: Annotated[float, "Unit('s') and _ >= 0"] = rospy.get_param(
             "/head_tracker/lost_timeout", 5.0
         )
-        self.publisher = rospy.Publisher("cmd_vel", Twist, queue_size=1)  # note: RF607
+        self.publisher = rospy.Publisher("cmd_vel", Twist, queue_size=1)
 
     def spin(self) -> None:
         period: Annotated[float, "Unit('s') and _ >= 0.02"] = 1.0 / self.rate
