@@ -414,3 +414,25 @@ def test_python_names_are_followed_in_bounded_work() -> None:
     )
     found = _py(text)
     assert [e.types for e in found.endpoints] == [(), ("std_msgs/msg/String",)]
+
+
+def test_nested_scopes_are_their_own() -> None:
+    """A nested function's parameter hides the outer name, and what a nested
+    function stores in `self.x` is one more binding of it."""
+    found = _py(
+        "from geometry_msgs.msg import Twist, TwistStamped\n"
+        "from rclpy.node import Node\n"
+        "class N(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('n')\n"
+        "        kind = Twist\n"
+        "        self.kind = Twist\n"
+        "        def later(kind):\n"
+        "            self.kind = kind\n"
+        "            self.create_publisher(kind, 'a', 1)\n"
+        "        self.create_publisher(self.kind, 'b', 1)\n"
+        "        self.create_publisher(kind, 'c', 1)\n"
+        "        make = lambda kind: self.create_publisher(kind, 'd', 1)\n"
+    )
+    got = {e.name: e.types for e in found.endpoints}
+    assert got == {"a": (), "b": (), "c": ("geometry_msgs/msg/Twist",), "d": ()}

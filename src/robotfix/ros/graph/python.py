@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import ast
 
-from robotfix.astwalk import dotted
+from robotfix.astwalk import children, dotted
 from robotfix.astwalk import walk as walk_all
 from robotfix.ros.api_model import (
     ENDPOINT_CLASSES,
@@ -40,7 +40,7 @@ CALL_STEPS = 5_000  # values looked at for one call (a name bound 3,000 times to
 # name bound 3,000 times is 9 million otherwise): past it, unknown
 FILE_STEPS = 200_000  # and for all the calls of a file
 MIDDLES = frozenset({"msg", "srv", "action"})
-_Scope = ast.FunctionDef | ast.AsyncFunctionDef | ast.Module
+_Scope = ast.FunctionDef | ast.AsyncFunctionDef | ast.Module | ast.Lambda
 
 
 class _File:
@@ -56,6 +56,8 @@ class _File:
         self.found = FileGraph()
         self.bases: dict[str, list[str]] = {}
         self.rospy = False
+        self.bound: set[int] = set()  # scopes bound (`bind`)
+        self.scope_class: dict[int, str] = {}  # a method's scope -> its class
         self.steps = 0  # values the call being read may still look at
         self.left = FILE_STEPS  # what the file's other calls may
         # functions by name: the module's ("") and each class's methods
@@ -88,6 +90,7 @@ class _File:
         """What a name or `self.x` is bound to; None if it is no such name."""
         if isinstance(node, ast.Name):
             for where in (scope, self.tree):
+                self.bind(where)
                 if node.id in self.params.get(id(where), set()):
                     return [None]
                 bound = self.bindings.get(id(where), {}).get(node.id)
@@ -105,9 +108,18 @@ class _File:
             return self._attribute(cls, node.attr, 0)
         return None
 
+    def bind(self, scope: _Scope) -> None:
+        """The scope's bindings (and, for a method, its class's `self.x`), made
+        when a call's argument first needs them: most files never do."""
+        if id(scope) not in self.bound:
+            self.bound.add(id(scope))
+            _bind_scope(self, scope, self.scope_class.get(id(scope)))
+
     def _attribute(
         self, cls: str, attr: str, depth: int
     ) -> list[ast.expr | None] | None:
+        for method in self.functions.get(cls, {}).values():
+            self.bind(method)
         found = self.attributes.get(cls, {}).get(attr)
         if found is not None:
             return found
@@ -249,8 +261,6 @@ def read_python(tree: ast.Module) -> FileGraph:
 
 def _bind(file: _File) -> None:
     """Imports, every scope's bindings, `self.x` assignments, class bases."""
-    scopes: list[tuple[_Scope, str | None]] = [(file.tree, None)]
-    methods: set[int] = set()  # a class's methods: bound with their class
     for node in walk_all(file.tree):  # a class before its methods
         if isinstance(node, ast.Import):
             for alias in node.names:
@@ -272,22 +282,16 @@ def _bind(file: _File) -> None:
             ]
             for item in node.body:
                 if isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
-                    scopes.append((item, node.name))
-                    methods.add(id(item))
+                    file.scope_class[id(item)] = node.name
                     file.functions.setdefault(node.name, {})[item.name] = item
-        elif (
-            isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef))
-            and id(node) not in methods
-        ):
-            scopes.append((node, None))
     for item in file.tree.body:
         if isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
             file.functions.setdefault("", {})[item.name] = item
-    for scope, cls in scopes:
-        _bind_scope(file, scope, cls)
 
 
 def _bind_scope(file: _File, scope: _Scope, cls: str | None) -> None:
+    if isinstance(scope, ast.Lambda):
+        return  # its names are its parameters (`_visit`)
     names: dict[str, list[ast.expr | None]] = {}
     if not isinstance(scope, ast.Module):
         args = scope.args
@@ -299,8 +303,20 @@ def _bind_scope(file: _File, scope: _Scope, cls: str | None) -> None:
         node = todo.pop()
         if isinstance(
             node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)
-        ):
-            continue  # their own scopes
+        ):  # their own scopes; a name here, and what they may store in `self.x`
+            if not isinstance(node, ast.Lambda):
+                names.setdefault(node.name, []).append(None)
+            if cls is not None:
+                for inner in walk_all(node):
+                    if (
+                        isinstance(inner, ast.Attribute)
+                        and isinstance(inner.ctx, ast.Store)
+                        and isinstance(inner.value, ast.Name)
+                        and inner.value.id == "self"
+                    ):
+                        attributes = file.attributes.setdefault(cls, {})
+                        attributes.setdefault(inner.attr, []).append(None)
+            continue
         if isinstance(node, (ast.Assign, ast.AnnAssign)):
             targets = node.targets if isinstance(node, ast.Assign) else [node.target]
             value = node.value
@@ -358,6 +374,8 @@ def _bind_scope(file: _File, scope: _Scope, cls: str | None) -> None:
 
 
 def _visit(file: _File, body: list[ast.stmt], scope: _Scope, cls: str | None) -> None:
+    """The endpoint and node calls of `body`, each with the scope its names are
+    looked up in: a nested function or lambda is a scope of its own."""
     for statement in body:
         if isinstance(statement, ast.ClassDef):
             _visit(file, statement.body, scope, statement.name)
@@ -365,11 +383,26 @@ def _visit(file: _File, body: list[ast.stmt], scope: _Scope, cls: str | None) ->
         if isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef)):
             _visit(file, statement.body, statement, cls)
             continue
-        for node in walk_all(statement):
-            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
-                continue  # visited above when at statement level; nested ones
+        todo: list[tuple[ast.AST, _Scope]] = [(statement, scope)]
+        while todo:
+            node, where = todo.pop()
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                _visit(file, node.body, node, cls)
+                continue
+            if isinstance(node, ast.ClassDef):
+                _visit(file, node.body, where, node.name)
+                continue
+            if isinstance(node, ast.Lambda):
+                args = node.args
+                file.params[id(node)] = {
+                    a.arg for a in [*args.posonlyargs, *args.args, *args.kwonlyargs]
+                }
+                file.bound.add(id(node))  # its names: its parameters only
+                todo.append((node.body, node))
+                continue
             if isinstance(node, ast.Call):
-                _call(file, node, scope, cls, statement)
+                _call(file, node, where, cls, statement)
+            todo.extend((child, where) for child in children(node))
 
 
 def _call(
