@@ -53,16 +53,29 @@ def _lines(root: Path, jobs: int = 1, cache: bool = False) -> list[str]:
     ]
 
 
+@pytest.mark.parametrize(
+    ("workspace", "code", "count", "reread"),
+    [
+        ("ros2_robot", "RF603", 2, set()),
+        # publishers whose subscribers' contracts are checked again on every run
+        ("ros2_contracts", "RF101", 1, {"joystick.py", "planner.py", "teleop.py"}),
+    ],
+)
 def test_jobs_and_the_cache_give_the_same_graph(
-    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+    tmp_path: Path,
+    monkeypatch: pytest.MonkeyPatch,
+    workspace: str,
+    code: str,
+    count: int,
+    reread: set[str],
 ) -> None:
     """Endpoints extracted in worker processes, or kept in the result cache, make
-    the graph one process makes without the cache."""
+    the graph (and its contracts' findings) one process makes without the cache."""
     monkeypatch.setattr(run_module, "MIN_PARALLEL", 1)
     root = tmp_path / "ws"
-    shutil.copytree(CASES / "ros2_robot", root)
+    shutil.copytree(CASES / workspace, root)
     one = _lines(root)
-    assert sum(":RF603:" in line for line in one) == 2
+    assert sum(f":{code}:" in line for line in one) == count
     assert _lines(root, jobs=2) == one
     assert _lines(root, jobs=2, cache=True) == one
     reads: list[str] = []
@@ -74,7 +87,7 @@ def test_jobs_and_the_cache_give_the_same_graph(
 
     monkeypatch.setattr(run_module, "read_regular", counting)
     assert _lines(root, jobs=1, cache=True) == one  # the endpoints from the cache
-    assert not [r for r in reads if r.endswith(".py")]
+    assert {Path(r).name for r in reads if r.endswith(".py")} == reread
 
 
 def test_a_single_file_gets_no_graph_findings() -> None:
@@ -436,3 +449,24 @@ def test_nested_scopes_are_their_own() -> None:
     )
     got = {e.name: e.types for e in found.endpoints}
     assert got == {"a": (), "b": (), "c": ("geometry_msgs/msg/Twist",), "d": ()}
+
+
+def test_a_contract_naming_the_subscribers_constants_is_not_checked(
+    tmp_path: Path,
+) -> None:
+    """`abs(linear.x) <= LIMIT` means the subscriber module's LIMIT, which the
+    publisher's check cannot read: the contract is left unchecked (silent), not
+    read with another meaning."""
+    root = tmp_path / "ws"
+    shutil.copytree(CASES / "ros2_contracts", root)
+    limiter = root / "safe_drive" / "safe_drive" / "limiter.py"
+    text = limiter.read_text().replace(
+        '"abs(linear.x) <= 0.5"', '"abs(linear.x) <= LIMIT"'
+    )
+    limiter.write_text(text.replace("class Limiter", "LIMIT = 0.5\n\n\nclass Limiter"))
+    found = check_paths([root], Config(root=root)).diagnostics
+    assert not [d for d in found if d.code in ("RF101", "RF102")]
+    # and with the number written out, the planner's 0.8 is reported again
+    limiter.write_text(limiter.read_text().replace("<= LIMIT", "<= 0.5"))
+    found = check_paths([root], Config(root=root)).diagnostics
+    assert [Path(d.path).name for d in found if d.code == "RF101"] == ["planner.py"]

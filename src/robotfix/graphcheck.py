@@ -43,6 +43,7 @@ from robotfix.ros.package import package_folder, package_name
 from robotfix.source import suppresses
 
 if TYPE_CHECKING:
+    from robotfix.api import Contract
     from robotfix.cache import ResultCache
     from robotfix.config import Config
     from robotfix.launchcheck import LaunchRun
@@ -375,6 +376,66 @@ def _unmatched(
             first.path, first.endpoint.line, first.endpoint.col, name, published, others
         )
         result.findings.append(Finding(diag, ends[0]))
+
+
+def contracts(result: GraphResult) -> dict[str, list[Contract]]:
+    """Publisher file -> what the subscriptions its publishers reach assume of
+    the message (issue 23 §3): a subscription whose callback refines its message
+    (`msg: Annotated[Twist, "abs(linear.x) <= 0.5"]`) and a Python publisher kept in
+    an attribute (`self.pub = self.create_publisher(...)`, one publisher per
+    attribute name in its file; its `publish` calls in methods of that class), of
+    the same certain type, on one certain topic, started together by one
+    package's launch files."""
+    from robotfix.api import Contract
+
+    graph = result.graph
+    systems = _Systems(graph)
+    holders: dict[tuple[str, str], set[tuple[int, str | None]]] = {}
+    for end in graph.ends:
+        if end.endpoint.kind == PUBLISHER and end.endpoint.holder:
+            key = (end.path, end.endpoint.holder)
+            holders.setdefault(key, set()).add((end.endpoint.line, end.resolved))
+    found: dict[str, list[Contract]] = {}
+    for (_, family, name), ends in _channels(graph).items():
+        if family != "topic":
+            continue
+        taken = [
+            graph.ends[i]
+            for i in ends
+            if graph.ends[i].endpoint.kind == SUBSCRIPTION
+            and graph.ends[i].endpoint.contract is not None
+            and len(graph.ends[i].endpoint.types) == 1
+        ]
+        for i in ends:
+            publisher = graph.ends[i]
+            endpoint = publisher.endpoint
+            key = (publisher.path, endpoint.holder)
+            if (
+                endpoint.kind != PUBLISHER
+                or not publisher.path.endswith(".py")
+                or not endpoint.holder.startswith("self.")  # a local: its scope's
+                or len(holders.get(key, ())) != 1
+            ):
+                continue
+            for sub in taken:
+                if (
+                    sub.endpoint.types != endpoint.types
+                    or systems.relation(publisher, sub) != TOGETHER
+                ):
+                    continue
+                package, _, kind = endpoint.types[0].split("/")
+                node = graph.nodes[sub.node].qualified
+                contract = Contract(
+                    f"{endpoint.owner}:{endpoint.holder}",
+                    sub.endpoint.contract or "",
+                    f"{package}/{kind}",
+                    f"{node}'s subscription to {name}",
+                    sub.path,
+                    sub.endpoint.line,
+                )
+                if contract not in found.setdefault(publisher.path, []):
+                    found[publisher.path].append(contract)
+    return found
 
 
 def _silenced(

@@ -900,6 +900,14 @@ def graph_qos_incompatible(
     )
 
 
+def contract_note() -> Note:
+    """On a publisher's RF101/RF102 against a subscriber's contract (issue 23 §3)."""
+    return Note(
+        "a launch file starts this publisher and that subscriber on one topic: the "
+        "subscriber's callback assumes this of every message it receives"
+    )
+
+
 def graph_unmatched(
     path: str, line: int, col: int, name: str, published: bool, where: list[Note]
 ) -> Diagnostic:

@@ -41,6 +41,7 @@ if TYPE_CHECKING:
 
 if TYPE_CHECKING:  # the analysis is imported only when a file is checked
     from robotfix.analysis.parameters import Summary as ParamSummary
+    from robotfix.api import Contract
     from robotfix.faults import Fault as ParamFault
     from robotfix.launchcheck import LaunchRun
     from robotfix.paramcheck import Known as ParamKnown
@@ -259,7 +260,7 @@ def _check_paths(
     )
     if any(os.path.isdir(p) for p in paths):  # a workspace: its graph (graphcheck)
         result.diagnostics.extend(
-            _graph_problems(found, graphs, launches, config, cache)
+            _graph_problems(found, graphs, launches, config, catalog, project, cache)
         )
     result.files += len(found.parameter_files)
     result.diagnostics = finish(result.diagnostics)
@@ -312,15 +313,50 @@ def _graph_problems(
     graphs: dict[str, list[Any]],
     launches: tuple[LaunchRun, list[ParamFault]] | None,
     config: Config,
+    catalog: MsgCatalog,
+    project: Project,
     cache: ResultCache | None = None,
 ) -> list[Diagnostic]:
-    """The findings of the run's static ROS graph (`graphcheck.py`)."""
+    """The findings of the run's static ROS graph (`graphcheck.py`), and what
+    publishers violate of their subscribers' contracts (issue 23 §3)."""
     if not graphs and not found.cpp_files:
         return []
     from robotfix.graphcheck import check_graph, code_graphs
+    from robotfix.graphcheck import contracts as graph_contracts
 
     code = code_graphs(graphs, found.cpp_files, cache)
-    return check_graph(code, launches[0] if launches else None, config).diagnostics()
+    result = check_graph(code, launches[0] if launches else None, config)
+    out = result.diagnostics()
+    for path, contracts in sorted(graph_contracts(result).items()):
+        out += _contract_problems(Path(path), contracts, config, catalog, project)
+    return out
+
+
+def _contract_problems(
+    path: Path,
+    contracts: list[Contract],
+    config: Config,
+    catalog: MsgCatalog,
+    project: Project,
+) -> list[Diagnostic]:
+    """A publisher's file analysed again with its subscribers' contracts
+    (`api.check_contracts`); a fault of ours there costs only these findings."""
+    from robotfix.api import check_contracts
+    from robotfix.stubs.load import stub_set
+
+    try:
+        data = read_regular(path)
+        return check_contracts(
+            str(path),
+            data,
+            catalog,
+            contracts,
+            config.ignored_codes(path),
+            stub_set(config.stub_paths),
+            project.resolver(path),
+        )
+    except (UnreadableError, RecursionError, MemoryError):
+        return []
 
 
 def _parameter_problems(

@@ -89,6 +89,9 @@ class Endpoint:
     # what a subscription's callback assumes of the message: the refinement of
     # its parameter (`msg: Annotated[Twist, "abs(linear.x) <= 0.5"]`), as written
     contract: str | None = None
+    # where the code keeps a Python publisher (`self.pub = create_publisher(...)`:
+    # "self.pub"), for what its subscribers assume of `self.pub.publish(m)`
+    holder: str = ""
 
 
 @dataclass
@@ -120,6 +123,7 @@ def dump(found: FileGraph) -> list[Any]:
                 e.handle,
                 e.value,
                 e.contract,
+                e.holder,
             ]
             for e in found.endpoints
         ],
@@ -154,9 +158,10 @@ def load(raw: Any) -> FileGraph | None:
         return None
     found = FileGraph([], {k: list(v) for k, v in nodes.items()}, ros)
     for item in endpoints:
-        if not (isinstance(item, list) and len(item) == 11):
+        if not (isinstance(item, list) and len(item) == 12):
             return None
-        kind, name, types, line, col, owner, qos, eros, handle, value, contract = item
+        kind, name, types, line, col, owner, qos, eros, handle, value = item[:10]
+        contract, holder = item[10:]
         if not (
             kind in KINDS
             and _opt(name)
@@ -169,6 +174,7 @@ def load(raw: Any) -> FileGraph | None:
             and _text(handle)
             and _opt(value)
             and _opt(contract)
+            and _text(holder)
         ):
             return None
         profile = None
@@ -196,6 +202,7 @@ def load(raw: Any) -> FileGraph | None:
                 handle,
                 value,
                 contract,
+                holder,
             )
         )
     return found

@@ -472,8 +472,20 @@ def _call(
             profile,
             spec.ros,
             contract=contract,
+            holder=_holder(statement, call),
         )
     )
+
+
+def _holder(statement: ast.stmt, call: ast.Call) -> str:
+    """`self.pub` of `self.pub = self.create_publisher(...)`; "" otherwise."""
+    if isinstance(statement, ast.Assign) and len(statement.targets) == 1:
+        target: ast.expr = statement.targets[0]
+    elif isinstance(statement, ast.AnnAssign):
+        target = statement.target
+    else:
+        return ""
+    return (dotted(target) or "") if statement.value is call else ""
 
 
 def _contract(file: _File, callback: ast.expr, cls: str | None) -> str | None:
