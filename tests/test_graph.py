@@ -470,3 +470,21 @@ def test_a_contract_naming_the_subscribers_constants_is_not_checked(
     limiter.write_text(limiter.read_text().replace("<= LIMIT", "<= 0.5"))
     found = check_paths([root], Config(root=root)).diagnostics
     assert [Path(d.path).name for d in found if d.code == "RF101"] == ["planner.py"]
+
+
+def test_a_fault_in_the_graph_stage_is_an_internal_error_not_a_crash(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A fault of ours while the graph is built is the run's internal error (exit
+    status 2); the files' own findings are still reported."""
+    from robotfix import graphcheck
+
+    def broken(*args: object, **kwargs: object) -> None:
+        raise ValueError("boom")
+
+    monkeypatch.setattr(graphcheck, "check_graph", broken)
+    root = tmp_path / "ws"
+    shutil.copytree(CASES / "ros2_contracts", root)
+    result = check_paths([root], Config(root=root))
+    assert [e.summary for e in result.internal_errors] == ["ValueError: boom"]
+    assert not [d for d in result.diagnostics if d.code in GRAPH_CODES]

@@ -260,7 +260,17 @@ def _check_paths(
     )
     if any(os.path.isdir(p) for p in paths):  # a workspace: its graph (graphcheck)
         result.diagnostics.extend(
-            _graph_problems(found, graphs, launches, config, catalog, project, cache)
+            _graph_problems(
+                found,
+                graphs,
+                launches,
+                config,
+                catalog,
+                project,
+                cache,
+                paths[0],
+                result.internal_errors,
+            )
         )
     result.files += len(found.parameter_files)
     result.diagnostics = finish(result.diagnostics)
@@ -315,20 +325,32 @@ def _graph_problems(
     config: Config,
     catalog: MsgCatalog,
     project: Project,
-    cache: ResultCache | None = None,
+    cache: ResultCache | None,
+    where: Path,
+    errors: list[InternalError],
 ) -> list[Diagnostic]:
     """The findings of the run's static ROS graph (`graphcheck.py`), and what
-    publishers violate of their subscribers' contracts (issue 23 §3)."""
+    publishers violate of their subscribers' contracts (issue 23 §3). A fault
+    of ours is an internal error (of `where`, the run's first path, or of the
+    publisher's file whose contracts were checked): the rest is reported."""
     if not graphs and not found.cpp_files:
         return []
+    from robotfix.faults import Fault, guard
     from robotfix.graphcheck import check_graph, code_graphs
     from robotfix.graphcheck import contracts as graph_contracts
 
-    code = code_graphs(graphs, found.cpp_files, cache)
-    result = check_graph(code, launches[0] if launches else None, config)
-    out = result.diagnostics()
-    for path, contracts in sorted(graph_contracts(result).items()):
-        out += _contract_problems(Path(path), contracts, config, catalog, project)
+    out: list[Diagnostic] = []
+    faults: list[Fault] = []
+    with guard(where, out, faults):
+        code = code_graphs(graphs, found.cpp_files, cache)
+        result = check_graph(code, launches[0] if launches else None, config)
+        out += result.diagnostics()
+        for path, contracts in sorted(graph_contracts(result).items()):
+            with guard(path, out, faults):
+                out += _contract_problems(
+                    Path(path), contracts, config, catalog, project
+                )
+    errors += [InternalError(f.path, f.summary, f.detail) for f in faults]
     return out
 
 
@@ -340,23 +362,23 @@ def _contract_problems(
     project: Project,
 ) -> list[Diagnostic]:
     """A publisher's file analysed again with its subscribers' contracts
-    (`api.check_contracts`); a fault of ours there costs only these findings."""
+    (`api.check_contracts`)."""
     from robotfix.api import check_contracts
     from robotfix.stubs.load import stub_set
 
     try:
         data = read_regular(path)
-        return check_contracts(
-            str(path),
-            data,
-            catalog,
-            contracts,
-            config.ignored_codes(path),
-            stub_set(config.stub_paths),
-            project.resolver(path),
-        )
-    except (UnreadableError, RecursionError, MemoryError):
-        return []
+    except UnreadableError:
+        return []  # its own check says why
+    return check_contracts(
+        str(path),
+        data,
+        catalog,
+        contracts,
+        config.ignored_codes(path),
+        stub_set(config.stub_paths),
+        project.resolver(path),
+    )
 
 
 def _parameter_problems(
