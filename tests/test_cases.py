@@ -44,10 +44,12 @@ def _distro(folder: Path) -> str:
     return "ros1" if folder.is_relative_to(CASES / "ros1") else "ros2"
 
 
-# launch/: whole workspaces, whose launch files' findings need the tree
-# (tests/test_launch.py checks every file of them, the nodes' too)
+# launch/, graph/: whole workspaces, whose launch files' and graph's findings need
+# the tree (tests/test_launch.py and test_graph.py check every file of them)
 SINGLE_FILES = sorted(
-    p for p in CASES.rglob("*.py") if p.relative_to(CASES).parts[0] != "launch"
+    p
+    for p in CASES.rglob("*.py")
+    if p.relative_to(CASES).parts[0] not in ("launch", "graph")
 )
 
 

@@ -15,6 +15,8 @@ GATES = {
     "pygls": (),
     "lsprotocol": (),
     "yaml": ("ros/yamlfile.py",),
+    "tree_sitter": ("ros/graph/cpp.py",),
+    "tree_sitter_cpp": ("ros/graph/cpp.py",),
 }
 # module prefix -> what it must not import
 FORBIDDEN = {

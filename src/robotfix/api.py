@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import itertools
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -28,6 +28,7 @@ from robotfix.ros.launch.names import is_launch_file
 if TYPE_CHECKING:  # the analysis is imported only when a file is checked
     from robotfix.analysis.context import FileContext
     from robotfix.analysis.imported import Resolver
+    from robotfix.annotations.extract import Refinement
     from robotfix.budget import Budget
     from robotfix.project.summary import Project
     from robotfix.ros.catalog import MsgCatalog
@@ -327,6 +328,99 @@ def check_file(
     return _check(source, catalog, ignored, stubs=stubs, resolver=resolver)
 
 
+@dataclass(frozen=True)
+class Contract:
+    """What a subscription's callback assumes of the messages of a topic
+    (`graphcheck.contracts`), to check at a publisher's `publish`."""
+
+    holder: str  # where the publisher is kept: `Planner:self.pub` (class, attribute)
+    text: str  # the refinement, as the subscriber wrote it
+    msg_type: str  # the catalog's `pkg/Name`
+    label: str  # names it in notes: "the message to `/odom`"
+    path: str  # the subscriber's file and line
+    line: int
+
+
+def _contract_refinement(contract: Contract, catalog: MsgCatalog) -> Refinement | None:
+    """The subscriber's annotation text on the message type, read as
+    `Annotated[T, "..."]` on a parameter: names are field paths of the message.
+    None when it names anything else (the subscriber module's constants are not
+    the publisher's to read: the contract is then not checked)."""
+    import ast as _ast
+
+    from robotfix.annotations.extract import extract
+
+    node = _ast.parse(f"Annotated[T, {contract.text!r}]", mode="eval").body
+
+    def qualname(name: _ast.expr) -> str | None:
+        return "typing.Annotated" if getattr(name, "id", "") == "Annotated" else None
+
+    def msg_type(name: _ast.expr) -> str | None:
+        return contract.msg_type if getattr(name, "id", "") == "T" else None
+
+    def field_kind(kind: str, path: str) -> str | None:
+        found = catalog.field_at(kind, path)
+        return None if found is None else ("msg" if found.kind == "msg" else "value")
+
+    def known(name: str) -> bool:
+        return field_kind(contract.msg_type, name) is not None
+
+    refinement, problems = extract(
+        node,
+        "msg",
+        qualname,
+        msg_type,
+        lambda _: None,
+        lambda _, col: col,
+        known,
+        field_kind=field_kind,
+    )
+    if refinement is None or problems or refinement.base != "msg":
+        return None
+    return replace(refinement, line=contract.line, origin=contract.path)
+
+
+def check_contracts(
+    path: str,
+    data: bytes,
+    catalog: MsgCatalog,
+    contracts: list[Contract],
+    ignored: frozenset[str] = frozenset(),
+    stubs: StubSet | None = None,
+    resolver: Resolver | None = None,
+) -> list[Diagnostic]:
+    """What a publisher's file violates of its subscribers' contracts: the file
+    analysed again with each `publish` of a publisher they listen to checked as a
+    call of their callbacks would be (RF101 violated, RF102 not proved); only
+    those findings, and not where suppressed."""
+    from robotfix.source import SourceFile
+
+    source = SourceFile.from_bytes(path, data)
+    if source.problem is not None or source.tree is None:
+        return []
+    obligations: dict[str, list[tuple[str, Refinement]]] = {}
+    for contract in contracts:
+        refinement = _contract_refinement(contract, catalog)
+        if refinement is not None:
+            obligations.setdefault(contract.holder, []).append(
+                (contract.label, refinement)
+            )
+    if not obligations:
+        return []
+    ctx = _analyze(
+        source, catalog, stubs=stubs, resolver=resolver, obligations=obligations
+    )
+    labels = tuple(f"annotation of `{c.label}`" for c in contracts)
+    return [
+        replace(d, notes=(*d.notes, messages.contract_note()))
+        for d in ctx.diagnostics
+        if any(note.message.startswith(labels) for note in d.notes)
+        and not source.is_suppressed(d)
+        and d.code not in ignored
+        and d.rule.name not in ignored
+    ]
+
+
 def _check(
     source: SourceFile,
     catalog: MsgCatalog,
@@ -363,6 +457,7 @@ def _analyze(
     stubs: StubSet | None = None,
     resolver: Resolver | None = None,
     memo: ProofMemo | None = None,
+    obligations: dict[str, list[tuple[str, Refinement]]] | None = None,
 ) -> FileContext:
     """Run the analysis on a parsed file; a pathological file stops where its work
     budget is spent (RF902, or RF901 when a solver question spent it) and keeps
@@ -383,6 +478,7 @@ def _analyze(
             memo.units = UnitMemo()
         ctx.unit_memo = memo.units
     ctx.stubs = stubs or stub_set()
+    ctx.obligations = obligations or {}
     ctx.hovers = [] if hovers else None
     if flows:
         from robotfix.analysis.flows import FlowLog
@@ -431,14 +527,17 @@ def _unused_suppressions(
 ) -> list[Diagnostic]:
     """RF010: a `# robotfix: ignore[...]` that silences nothing, or names no rule.
     Not in a Python launch file, whose suppressions also serve the launch check
-    (`launchcheck`), which runs after this one and finds what this one cannot."""
+    (`launchcheck`), which runs after this one and finds what this one cannot; nor
+    for the graph's rules (`rules.GRAPH_RULES`), which the run's graph check uses."""
     path = Path(source.path)
     if is_launch_file(path.parent.name, path.name):
         return []
     out = []
     for line, (col, codes) in sorted(source.suppressions.items()):
         on_line = [d for d in found if d.span.line == line]
-        listed = sorted(codes or ())
+        listed = sorted(c for c in codes or () if c not in rules.GRAPH_RULES)
+        if codes and not listed:
+            continue  # only graph rules: the run's graph check uses them
         unknown = [
             c
             for c in listed

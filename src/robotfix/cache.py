@@ -57,6 +57,7 @@ from robotfix.diagnostics import Diagnostic, Note, Severity, Span
 from robotfix.discovery import Discovery, Trace
 from robotfix.disk_cache import install_key, is_text
 from robotfix.fs import RACY_NS
+from robotfix.ros.graph.model import load as load_graph
 
 if TYPE_CHECKING:
     from robotfix.project.summary import Known, Project
@@ -65,7 +66,7 @@ if TYPE_CHECKING:
 # an interface problem before `messages.interface_problem`: its diagnostic, the
 # package no type of which is known (if so), the types of its file
 InterfaceProblem = tuple[Diagnostic, "str | None", tuple[str, ...]]
-FORMAT = 8
+FORMAT = 9  # 9: an entry holds the file's graph endpoints
 # which parameter-related words a file mentions (`paramcheck.MENTIONS`, all layouts),
 # kept with its hash so that an unchanged file need not be read to know
 MENTION_WORDS = (b"declare_parameter", b"get_parameter", b"ParamListener", b"rospy")
@@ -135,6 +136,10 @@ class ResultCache:
         self._seen_stats: dict[str, list[Any]] = {}  # this run's, saved
         self._bytes: dict[str, bytes] = {}  # the last file `sha` read, to `take`
         self._params: tuple[str, list[Any]] | None = None
+        # C++ file -> [sha256, its graph endpoints dumped, or None]: what
+        # `graphcheck` read of it; this run's, saved (`put_cpp`)
+        self._cpp: dict[str, Any] = {}
+        self._seen_cpp: dict[str, Any] = {}
         self._catalog: dict[str, Any] | None = None
         self._discovery: dict[str, Any] | None = None  # key, trace, what was found
         # the module index's answers with what they depend on (`ModuleIndex.keep`)
@@ -203,6 +208,9 @@ class ResultCache:
                 and all(_valid_diagnostic(d) for d in params[1])
             ):
                 self._params = (params[0], params[1])
+            cpp = data.get("cpp")
+            if isinstance(cpp, dict):
+                self._cpp = cpp  # each entry checked when read (`cpp_graph`)
 
     # -- the stat fast path ----------------------------------------------------
     def sha(self, path: Path) -> str | None:
@@ -360,6 +368,26 @@ class ResultCache:
         self._params = (key, [_dump(d) for d in diagnostics])
         self._dirty = True
 
+    # -- C++ files' graph endpoints ---------------------------------------------
+    def cpp_graph(self, path: Path, digest: str) -> tuple[bool, Any]:
+        """(known, the endpoints dumped or None) of a C++ file whose bytes hash
+        to `digest`, as `put_cpp` kept them."""
+        key = entry_key(path)
+        entry = self._cpp.get(key)
+        if not (
+            isinstance(entry, list)
+            and len(entry) == 2
+            and entry[0] == digest
+            and (entry[1] is None or load_graph(entry[1]) is not None)
+        ):
+            return False, None
+        self._seen_cpp[key] = entry
+        return True, entry[1]
+
+    def put_cpp(self, path: Path, digest: str, graph: Any) -> None:
+        self._seen_cpp[entry_key(path)] = [digest, graph]
+        self._dirty = True
+
     def get(
         self,
         path: Path,
@@ -396,6 +424,11 @@ class ResultCache:
         entry = self._entry(path)
         return sorted(entry["modules"].items()) if entry is not None else []
 
+    def graph(self, path: Path) -> list[Any] | None:
+        """The graph endpoints the cached check of this file found (dumped)."""
+        entry = self._entry(path)
+        return entry["graph"] if entry is not None else None
+
     def types(self, path: Path) -> list[str]:
         """The message types the cached check of this file looked up."""
         entry = self._entry(path)
@@ -426,6 +459,7 @@ class ResultCache:
         types: list[str],
         fingerprint: str,
         modules: dict[str, str] | None = None,
+        graph: list[Any] | None = None,
     ) -> None:
         """Remember a fresh result; `fingerprint` is the catalog's
         `fingerprint_types(types)` as seen by the check that found `diagnostics`."""
@@ -443,6 +477,7 @@ class ResultCache:
             "catalog": fingerprint,
             "modules": dict(sorted(kept.items())),
             "diagnostics": [_dump(d) for d in diagnostics],
+            "graph": graph,  # its graph endpoints (`ros.graph.model.dump`)
         }
         self._dirty = True
 
@@ -499,6 +534,7 @@ class ResultCache:
             "catalog": self._catalog,
             "discovery": self._discovery,
             "resolution": self._resolution,
+            "cpp": self._seen_cpp,
         }
         if self._dropped:
             payload = {"key": self.key, "entries": {}}
@@ -545,6 +581,7 @@ _DISCOVERY_PATHS = (
     "parameter_definitions",
     "summary_files",
     "launch_files",
+    "cpp_files",
 )
 
 
@@ -616,6 +653,8 @@ def _valid_entry(entry: Any) -> bool:
         and all(_name(k) and is_text(v) for k, v in entry["modules"].items())
         and isinstance(entry.get("diagnostics"), list)
         and all(_valid_diagnostic(d) for d in entry["diagnostics"])
+        and "graph" in entry
+        and (entry["graph"] is None or load_graph(entry["graph"]) is not None)
     )
 
 

@@ -138,6 +138,29 @@ def build_parser() -> argparse.ArgumentParser:
         "--apply", action="store_true", help="write the proposals into the files"
     )
     commands.add_parser("lsp", help="language server on stdin/stdout")
+    graph = commands.add_parser(
+        "graph", help="print the static ROS graph (nodes, topics, services, actions)"
+    )
+    graph.add_argument(
+        "paths",
+        nargs="*",
+        type=Path,
+        metavar="PATH",
+        help="files or folders (default: the current folder)",
+    )
+    graph.add_argument(
+        "--format",
+        choices=("text", "json", "dot", "mermaid"),
+        default="text",
+        help="text (default), json, dot (Graphviz), mermaid",
+    )
+    graph.add_argument(
+        "--exclude",
+        action="append",
+        default=[],
+        metavar="PATTERN",
+        help="gitignore-style pattern of files to skip; repeatable",
+    )
     return parser
 
 
@@ -194,6 +217,8 @@ def main(argv: list[str] | None = None) -> int:
             return run_suggest(args.paths, args.msg_path, args.apply)
         if args.command == "lsp":
             return run_lsp()
+        if args.command == "graph":
+            return run_graph(args)
     except KeyboardInterrupt:
         return EXIT_INTERRUPTED
     build_parser().print_help()
@@ -242,19 +267,49 @@ def run_lsp() -> int:
     return serve()  # 1 when the client exits without asking to shut down
 
 
-def run_check(args: argparse.Namespace) -> int:
-    from robotfix import api, config
+def _settings(paths: list[Path], merge: Callable[[Config], Config]) -> Config | None:
+    """The settings for a run over `paths` (the first one's config, `merge`d with
+    the command's flags); None, and why on stderr, for a missing path or a bad
+    config."""
+    from robotfix import config
 
-    paths: list[Path] = args.paths or [Path(".")]
     missing = [(p, why) for p in paths if (why := _missing(p))]
     for path, why in missing:
         print(f"robotfix: error: {path}: {why}", file=sys.stderr)
     if missing:
-        return EXIT_FAILURE
+        return None
     try:
-        settings = merge_flags(config.load(paths[0]), args)
+        return merge(config.load(paths[0]))
     except config.ConfigError as err:
         print(f"robotfix: error: {err}", file=sys.stderr)
+        return None
+
+
+def run_graph(args: argparse.Namespace) -> int:
+    """`robotfix graph`: exit 0, or 1 when the graph has an error finding."""
+    from dataclasses import replace
+
+    from robotfix.graphcheck import graph_paths
+    from robotfix.report.graph import render as render_graph
+
+    paths: list[Path] = args.paths or [Path(".")]
+    settings = _settings(
+        paths, lambda found: replace(found, exclude=found.exclude + tuple(args.exclude))
+    )
+    if settings is None:
+        return EXIT_FAILURE
+    result = graph_paths(paths, settings)
+    write_stdout(render_graph(result, args.format))
+    errors = any(f.diagnostic.severity.value == "error" for f in result.findings)
+    return EXIT_FOUND if errors else EXIT_OK
+
+
+def run_check(args: argparse.Namespace) -> int:
+    from robotfix import api, config
+
+    paths: list[Path] = args.paths or [Path(".")]
+    settings = _settings(paths, lambda found: merge_flags(found, args))
+    if settings is None:
         return EXIT_FAILURE
     for folder in settings.msg_paths:
         why = _missing(folder)

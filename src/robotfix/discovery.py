@@ -36,6 +36,7 @@ from robotfix import messages
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
 from robotfix.fs import RACY_NS, UnreadableError, read_head, read_text, stamp, within
+from robotfix.ros.executables import CPP_SOURCE_SUFFIXES
 from robotfix.ros.install import IGNORE_MARKERS, InstallSpace
 from robotfix.ros.launch.names import YAML_SUFFIXES, is_launch_file
 
@@ -77,6 +78,8 @@ class Discovery:
     summary_files: list[Path] = field(default_factory=list)  # their packages' code
     # launch files: in a `launch/` folder, or named `*.launch.py`, `*_launch.xml`...
     launch_files: list[Path] = field(default_factory=list)
+    # C++ sources and headers of ROS packages, for the graph (`graphcheck.py`)
+    cpp_files: list[Path] = field(default_factory=list)
 
 
 def discover(
@@ -107,7 +110,7 @@ def _discover(paths: list[Path], config: Config) -> Discovery:
     python_paths = [p for p in paths if p not in named_yaml]
     reals: dict[Path, str] = {}  # real paths the walks found: not resolved again
     files, packages = _python_files(
-        python_paths, config, found.notices, reals, found.launch_files
+        python_paths, config, found.notices, reals, found.launch_files, found.cpp_files
     )
     found.python_files = files
     folders = [p for p in python_paths if _isdir(p)]
@@ -432,12 +435,14 @@ def _python_files(
     notices: list[Diagnostic],
     reals: dict[Path, str] | None = None,
     launch: list[Path] | None = None,
+    cpp: list[Path] | None = None,
 ) -> tuple[list[Path], list[Path]]:
     """Python files (each real file once) and ROS package folders under `paths`,
     or holding one of them; `reals` learns the packages' real paths, `launch`
     the launch files found on the way."""
     walker = _Walker(paths, notices)
     chosen = _OnePathEach()
+    sources: list[tuple[Path, str]] = []  # C++ files, with their real paths
     packages: dict[str, Path] = {}
 
     def pruned(folder: Path) -> bool:
@@ -461,6 +466,13 @@ def _python_files(
                 and not (config is not None and config.excluded(entry.path))
             ):
                 launch.append(entry.path)
+            if (
+                cpp is not None
+                and entry.regular
+                and entry.name.endswith(CPP_SOURCE_SUFFIXES)
+                and not (config is not None and config.excluded(entry.path))
+            ):
+                sources.append((entry.path, entry.real))
             # a Python launch file is Python code too (RF301 in a launch helper)
             if (_is_python(entry.name) and (entry.regular or entry.link)) or (
                 entry.regular and "." not in entry.name and _is_script(entry.path)
@@ -470,6 +482,9 @@ def _python_files(
                     chosen.add(path, entry.real, entry.link)
     if reals is not None:
         reals.update((folder, real) for real, folder in packages.items())
+    if cpp is not None:  # only those in a ROS package: a vendored library's are not
+        inside = tuple(real + os.sep for real in packages)
+        cpp += sorted(p for p, real in sources if real.startswith(inside))
     return chosen.paths(ordered=False), sorted(packages.values())
 
 

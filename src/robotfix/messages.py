@@ -897,6 +897,134 @@ def parameter_section_unmatched(
     )
 
 
+def graph_type_mismatch(
+    path: str,
+    line: int,
+    col: int,
+    what: str,
+    name: str,
+    mine: str,
+    others: list[str],
+    other: Note,
+    together: bool,
+) -> Diagnostic:
+    """RF603, at one side of a channel whose nodes use two certain types: an
+    error when the two nodes run together (one package's launch files or code), a
+    warning for programs of different packages no launch file starts together."""
+    apart = (
+        ()
+        if together
+        else (
+            Note(
+                "no launch file of the workspace starts these two nodes (of one "
+                "package) together: an error if they ever run in one system"
+            ),
+        )
+    )
+    return Diagnostic(
+        rules.TOPIC_TYPE_MISMATCH,
+        path,
+        Span.point(line, col),
+        f"{what} `{name}` is used here with type `{mine}` and elsewhere with "
+        f"{_join([f'`{t}`' for t in others])}: ROS never connects endpoints whose "
+        "types differ",
+        (
+            other,
+            *apart,
+            Note("a remapping in a launch file, or one type on both sides, fixes it"),
+        ),
+        level=None if together else Severity.WARNING,
+    )
+
+
+def graph_qos_incompatible(
+    path: str,
+    line: int,
+    col: int,
+    name: str,
+    why: list[str],
+    publisher: Note,
+    certain: bool,
+    apart: bool = False,
+) -> Diagnostic:
+    """RF604 (both profiles constants) or RF605: a subscription that never hears
+    a publisher of its topic."""
+    rule = rules.QOS_INCOMPATIBLE if certain else rules.QOS_MAYBE_INCOMPATIBLE
+    notes = [publisher]
+    if apart:
+        notes.append(
+            Note(
+                "no launch file of the workspace starts these two nodes (of one "
+                "package) together"
+            )
+        )
+    elif not certain:
+        notes.append(
+            Note(
+                "a profile here can change at run time (a parameter's QoS "
+                "override, or one of several profiles)"
+            )
+        )
+    notes.append(
+        Note(
+            "ROS 2 connects a publisher and a subscription only when the offered "
+            "QoS is at least what is requested"
+        )
+    )
+    return Diagnostic(
+        rule,
+        path,
+        Span.point(line, col),
+        f"this subscription to `{name}` "
+        + (
+            "never receives"
+            if certain
+            else "does not receive, with the profiles written,"
+        )
+        + " from the publisher noted: "
+        + "; ".join(why),
+        tuple(notes),
+    )
+
+
+def contract_note() -> Note:
+    """On a publisher's RF101/RF102 against a subscriber's contract (issue 23 §3)."""
+    return Note(
+        "a launch file starts this publisher and that subscriber on one topic: the "
+        "subscriber's callback assumes this of every message it receives"
+    )
+
+
+def graph_unmatched(
+    path: str, line: int, col: int, name: str, published: bool, where: list[Note]
+) -> Diagnostic:
+    """RF606 / RF607: a topic with subscriptions and no publisher in the
+    checked tree, or the reverse."""
+    if published:
+        rule = rules.TOPIC_NOT_SUBSCRIBED
+        done, missing = "published", "subscribed"
+    else:
+        rule = rules.TOPIC_NOT_PUBLISHED
+        done, missing = "subscribed", "published"
+    text = (
+        f"topic `{name}` is {done} here but {missing} nowhere in the checked workspace"
+    )
+    return Diagnostic(
+        rule,
+        path,
+        Span.point(line, col),
+        text,
+        (
+            *where,
+            Note(
+                "a driver, a simulator, a tool (`ros2 topic pub`, rviz) or another "
+                "workspace may use it; a mistyped name or a missing remapping "
+                "would look the same"
+            ),
+        ),
+    )
+
+
 def parameter_value_violated(
     path: str, span: Span, subject: str, rule: str, declared: Declared, *notes: str
 ) -> Diagnostic:

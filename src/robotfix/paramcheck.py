@@ -25,7 +25,6 @@ parameter nobody declares is silent.
 from __future__ import annotations
 
 import os
-import re
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -44,7 +43,7 @@ from robotfix.ros import paramfile as P
 from robotfix.ros import yamlfile as Y
 from robotfix.ros.package import package_folder
 from robotfix.smt.fold import fold
-from robotfix.source import SourceFile
+from robotfix.source import SourceFile, suppresses
 
 if TYPE_CHECKING:
     from robotfix.project.summary import Project
@@ -58,9 +57,6 @@ MENTIONS = {
 # what a run's check of a Python file found: the words of MENTIONS its bytes hold,
 # and its summary (None: none made, and so made here if one of them is wanted)
 Known = tuple[tuple[bytes, ...], Summary | None]
-_SUPPRESS = re.compile(
-    r"#\s*robotfix:\s*ignore(?:\[(?P<codes>[^\]]*)\])?", re.IGNORECASE
-)
 TYPE_WHY = (
     "a ROS 2 parameter keeps the type it was declared with: rclpy refuses "
     "another (InvalidParameterTypeException) unless it is declared with "
@@ -246,14 +242,8 @@ def _silenced(diag: Diagnostic, text: str, config: Config | None) -> bool:
     ):
         return True
     lines = text.splitlines()
-    if not 0 < diag.span.line <= len(lines):
-        return False
-    match = _SUPPRESS.search(lines[diag.span.line - 1])
-    if match is None:
-        return False
-    codes = match["codes"]
-    listed = {c.strip() for c in codes.split(",")} if codes is not None else None
-    return listed is None or bool({diag.code, diag.rule.name} & listed)
+    line = diag.span.line
+    return 0 < line <= len(lines) and suppresses(lines[line - 1], diag)
 
 
 def _summaries(

@@ -122,6 +122,34 @@ PARAMETER_SECTION_UNMATCHED = Rule(
     "A parameter file's section names no node of the workspace or its launch files",
     Severity.NOTE,
 )
+TOPIC_TYPE_MISMATCH = Rule(
+    "RF603",
+    "topic-type-mismatch",
+    "Two nodes use one topic, service or action name with different interface types",
+)
+QOS_INCOMPATIBLE = Rule(
+    "RF604",
+    "qos-incompatible",
+    "A subscription's QoS can never match a publisher's on its topic",
+)
+QOS_MAYBE_INCOMPATIBLE = Rule(
+    "RF605",
+    "qos-maybe-incompatible",
+    "A subscription's QoS may not match a publisher's (a profile that can change)",
+    W,
+)
+TOPIC_NOT_PUBLISHED = Rule(
+    "RF606",
+    "topic-not-published",
+    "A topic is subscribed but published nowhere in the checked workspace",
+    Severity.NOTE,
+)
+TOPIC_NOT_SUBSCRIBED = Rule(
+    "RF607",
+    "topic-not-subscribed",
+    "A topic is published but subscribed nowhere in the checked workspace",
+    Severity.NOTE,
+)
 
 SOLVER_UNKNOWN = Rule("RF901", "solver-unknown", "Solver could not decide", W)
 ANALYSIS_BUDGET = Rule(
@@ -160,8 +188,28 @@ ALL_RULES: dict[str, Rule] = {
         DUPLICATE_INTERFACE,
         LAUNCH_PARAMETER_UNDECLARED,
         PARAMETER_SECTION_UNMATCHED,
+        TOPIC_TYPE_MISMATCH,
+        QOS_INCOMPATIBLE,
+        QOS_MAYBE_INCOMPATIBLE,
+        TOPIC_NOT_PUBLISHED,
+        TOPIC_NOT_SUBSCRIBED,
         SOLVER_UNKNOWN,
         ANALYSIS_BUDGET,
     )
 }
 RULES_BY_NAME: dict[str, Rule] = {r.name: r for r in ALL_RULES.values()}
+# reported by a run's graph check (`graphcheck.py`), after each file's own check:
+# a file's check leaves their suppressions to it (no RF010)
+GRAPH_RULES = frozenset(
+    {
+        name
+        for r in (
+            TOPIC_TYPE_MISMATCH,
+            QOS_INCOMPATIBLE,
+            QOS_MAYBE_INCOMPATIBLE,
+            TOPIC_NOT_PUBLISHED,
+            TOPIC_NOT_SUBSCRIBED,
+        )
+        for name in (r.code, r.name)
+    }
+)

@@ -31,6 +31,7 @@ from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
 from robotfix.discovery import Discovery, Trace, discover, install_space
 from robotfix.fs import RACY_NS, UnreadableError, read_regular, stamp
+from robotfix.ros.api_model import ENDPOINT_WORDS
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.ros.install import InstallSpace
 from robotfix.ros.package import package_folder
@@ -40,6 +41,7 @@ if TYPE_CHECKING:
 
 if TYPE_CHECKING:  # the analysis is imported only when a file is checked
     from robotfix.analysis.parameters import Summary as ParamSummary
+    from robotfix.api import Contract
     from robotfix.faults import Fault as ParamFault
     from robotfix.launchcheck import LaunchRun
     from robotfix.paramcheck import Known as ParamKnown
@@ -73,6 +75,9 @@ class FileResult:
     answers: dict[str, Any] | None = None
     # the same for the catalog's digests (`MsgCatalog.fresh_digests`)
     digests: dict[str, tuple[str, tuple[str, ...]]] | None = None
+    # its graph endpoints (`ros.graph.model.dump`), from the tree the check parsed
+    # (None: none), kept in the result cache with its entry
+    graph: list[Any] | None = None
 
 
 def check_paths(
@@ -120,6 +125,7 @@ class _Group:
     files: set[Path]
     shared: set[str]  # the run's own interface files: their problems are its
     used: set[str] = field(default_factory=set)
+    graphs: dict[str, list[Any]] = field(default_factory=dict)  # its endpoints
 
 
 def _check_groups(
@@ -129,14 +135,16 @@ def _check_groups(
     jobs: int,
     use_cache: bool,
     trusted: bool,
-) -> tuple[list[Result], set[str], set[Path]]:
+) -> tuple[list[Result], set[str], set[Path], dict[str, list[Any]]]:
     """Each group of files with settings of their own, checked apart: their
-    results, the message types they used, and their files."""
+    results, the message types they used, their files and their graph
+    endpoints."""
     from robotfix.config import by_settings
 
     results: list[Result] = []
     used: set[str] = set()
     grouped: set[Path] = set()
+    graphs: dict[str, list[Any]] = {}
     shared = {str(p) for p in found.interface_files}
     base = config.cache_dir or config.root / ".robotfix_cache"
     for settings, files in by_settings(found.python_files, config):
@@ -146,7 +154,8 @@ def _check_groups(
         results.append(_check_paths(paths, own, None, jobs, use_cache, trusted, group))
         used |= group.used
         grouped |= group.files
-    return results, used, grouped
+        graphs.update(group.graphs)
+    return results, used, grouped, graphs
 
 
 def _check_paths(
@@ -177,8 +186,9 @@ def _check_paths(
     groups: list[Result] = []
     used: set[str] = set()  # the message types the checked files looked up
     grouped: set[Path] = set()
+    grouped_graphs: dict[str, list[Any]] = {}
     if group is None and config.flags is not None:
-        groups, used, grouped = _check_groups(
+        groups, used, grouped, grouped_graphs = _check_groups(
             paths, config, found, jobs, use_cache, trusted
         )
         found = replace(found, python_files=[f for f in everything if f not in grouped])
@@ -211,6 +221,7 @@ def _check_paths(
         project.index.restore(cache.resolution())  # the module index's answers
     # file -> the parameter words it mentions and its parameters, as checked
     parameters: dict[str, ParamKnown] = {}
+    graphs: dict[str, list[Any]] = {}  # file -> its graph endpoints, dumped
     # without the cache, a file is read when it is checked (None here), so that
     # the bytes of every file are not all held at once
     todo: list[tuple[Path, bytes | None]] = []
@@ -235,6 +246,9 @@ def _check_paths(
         if cached is not None:
             result.diagnostics.extend(cached)
             used.update(cache.types(file) if cache else ())
+            kept = cache.graph(file) if cache else None
+            if kept is not None:
+                graphs[str(file)] = kept
             result.from_cache += 1
             if progress is not None:
                 progress(index, len(files), str(file))
@@ -260,6 +274,8 @@ def _check_paths(
         used.update(outcome.types)
         if outcome.mentions is not None:
             parameters[outcome.path] = (outcome.mentions, outcome.parameters)
+        if outcome.graph is not None:
+            graphs[outcome.path] = outcome.graph
         if outcome.answers is not None:
             project.index.merge(outcome.answers)
         if outcome.digests:
@@ -275,6 +291,7 @@ def _check_paths(
                 outcome.types,
                 outcome.fingerprint,
                 outcome.modules,
+                outcome.graph,
             )
         if cache is not None:
             cache.remember_summaries(outcome.summaries)
@@ -288,7 +305,10 @@ def _check_paths(
     result.diagnostics.extend(interface)
     if cache is not None and snapshot:
         cache.put_catalog(snapshot, catalog.digest_table(), problems, catalog.outline())
+    if group is not None:  # its files' graph endpoints, for the run's graph
+        group.graphs.update(graphs)
     if group is None:
+        launches = _launches(found, everything)
         result.diagnostics.extend(
             _parameter_problems(
                 found,
@@ -298,9 +318,25 @@ def _check_paths(
                 parameters,
                 project,
                 result.internal_errors,
+                launches,
             )
         )
         result.files += len(found.parameter_files)
+        graphs.update(grouped_graphs)
+        if any(os.path.isdir(p) for p in paths):  # a workspace: its graph
+            result.diagnostics.extend(
+                _graph_problems(
+                    found,
+                    graphs,
+                    launches,
+                    config,
+                    catalog,
+                    project,
+                    cache,
+                    paths[0],
+                    result.internal_errors,
+                )
+            )
     for other in groups:
         _merge(result, other)
     if groups:
@@ -347,6 +383,82 @@ def _discover(
     return found
 
 
+def _launches(
+    found: Discovery, files: list[Path]
+) -> tuple[LaunchRun, list[ParamFault]] | None:
+    """The run's launch files, read once for the parameter check and the graph."""
+    if not found.launch_files:
+        return None
+    from robotfix.launchcheck import LaunchRun
+
+    faults: list[ParamFault] = []
+    run = LaunchRun(found.launch_files, [*files, *found.summary_files], faults)
+    return run, faults
+
+
+def _graph_problems(
+    found: Discovery,
+    graphs: dict[str, list[Any]],
+    launches: tuple[LaunchRun, list[ParamFault]] | None,
+    config: Config,
+    catalog: MsgCatalog,
+    project: Project,
+    cache: ResultCache | None,
+    where: Path,
+    errors: list[InternalError],
+) -> list[Diagnostic]:
+    """The findings of the run's static ROS graph (`graphcheck.py`), and what
+    publishers violate of their subscribers' contracts (issue 23 §3). A fault
+    of ours is an internal error (of `where`, the run's first path, or of the
+    publisher's file whose contracts were checked): the rest is reported."""
+    if not graphs and not found.cpp_files:
+        return []
+    from robotfix.faults import Fault, guard
+    from robotfix.graphcheck import check_graph, code_graphs
+    from robotfix.graphcheck import contracts as graph_contracts
+
+    out: list[Diagnostic] = []
+    faults: list[Fault] = []
+    with guard(where, out, faults):
+        code = code_graphs(graphs, found.cpp_files, cache)
+        result = check_graph(code, launches[0] if launches else None, config)
+        out += result.diagnostics()
+        for path, contracts in sorted(graph_contracts(result).items()):
+            with guard(path, out, faults):
+                out += _contract_problems(
+                    Path(path), contracts, config, catalog, project
+                )
+    errors += [InternalError(f.path, f.summary, f.detail) for f in faults]
+    return out
+
+
+def _contract_problems(
+    path: Path,
+    contracts: list[Contract],
+    config: Config,
+    catalog: MsgCatalog,
+    project: Project,
+) -> list[Diagnostic]:
+    """A publisher's file analysed again with its subscribers' contracts
+    (`api.check_contracts`)."""
+    from robotfix.api import check_contracts
+    from robotfix.stubs.load import stub_set
+
+    try:
+        data = read_regular(path)
+    except UnreadableError:
+        return []  # its own check says why
+    return check_contracts(
+        str(path),
+        data,
+        catalog,
+        contracts,
+        config.ignored_codes(path),
+        stub_set(config.stub_paths),
+        project.resolver(path),
+    )
+
+
 def _parameter_problems(
     found: Discovery,
     files: list[Path],
@@ -355,6 +467,7 @@ def _parameter_problems(
     parameters: dict[str, ParamKnown] | None = None,
     project: Project | None = None,
     errors: list[InternalError] | None = None,
+    read: tuple[LaunchRun, list[ParamFault]] | None = None,
 ) -> list[Diagnostic]:
     """Parameter files and launch files against the parameters the code declares;
     cached as a whole, under a key that hashes every input (`_params_key`);
@@ -366,12 +479,9 @@ def _parameter_problems(
     if not (found.parameter_files or found.parameter_definitions or found.launch_files):
         return []
     python_files = [*files, *found.summary_files]
-    faults: list[ParamFault] = []
-    launches = None
-    if found.launch_files:
-        from robotfix.launchcheck import LaunchRun
-
-        launches = LaunchRun(found.launch_files, python_files, faults)
+    if read is None:
+        read = _launches(found, files)
+    launches, faults = read if read is not None else (None, [])
     key = _params_key(found, python_files, config, cache, launches) if cache else None
     if cache is not None and key is not None and not faults:
         known = cache.params(key)
@@ -695,7 +805,11 @@ def _check_one(
                 )
             except Exception:
                 parameters = None
+        endpoints = any(w in data for w in ENDPOINT_WORDS)
+        if endpoints and parsed is None:
+            parsed = SourceFile.from_bytes(str(path), data)
         found = check_file(str(path), data, catalog, ignored, stubs, resolver, parsed)
+        graph = _graph_of(parsed) if endpoints and parsed is not None else None
         types = sorted(catalog.touched)
         catalog.touched = None
         return FileResult(
@@ -708,6 +822,7 @@ def _check_one(
             project.fresh_summaries(),
             parameters,
             mentions if project.parameter_words else None,
+            graph=graph,
         )
     except Exception as err:  # a fault of ours: report it, go on with the others
         import traceback  # only here: 2 ms of every start otherwise
@@ -718,6 +833,21 @@ def _check_one(
         )
     finally:
         catalog.touched = None
+
+
+def _graph_of(parsed: Any) -> list[Any] | None:
+    """A checked file's graph endpoints (`ros.graph.python`), dumped; None when it
+    makes none (or its tree is not there)."""
+    if parsed.tree is None:
+        return None
+    from robotfix.ros.graph.model import dump
+    from robotfix.ros.graph.python import read_python
+
+    try:  # a fault here costs the graph this file's endpoints, not its check
+        found = read_python(parsed.tree)
+    except (RecursionError, MemoryError):
+        return None
+    return dump(found) if found.endpoints else None
 
 
 # (catalog, config, project, lean): `lean`, the run keeps no cache (`_lean`)

@@ -29,6 +29,19 @@ def _code_chars(lines: list[str]) -> int:
 _SUPPRESS = re.compile(
     r"#\s*robotfix:\s*ignore(?:\[(?P<codes>[^\]]*)\])?", re.IGNORECASE
 )
+
+
+def suppresses(line: str, diag: Diagnostic) -> bool:
+    """Whether a `# robotfix: ignore[...]` comment on `line` silences `diag` (for
+    a file RobotFix reads by lines: parameter, launch, C++ files)."""
+    match = _SUPPRESS.search(line)
+    if match is None:
+        return False
+    codes = match["codes"]
+    listed = {c.strip() for c in codes.split(",")} if codes is not None else None
+    return listed is None or bool({diag.code, diag.rule.name} & listed)
+
+
 # CPython's own words for Python 2 constructs (print and exec statements, `except
 # X, e`, `0777`, backticks, `<>`, `ur''`).
 _PY2_HINTS = (

@@ -72,7 +72,11 @@ class CallEvaluator(LibraryEvaluator):
         method = func.attr if isinstance(func, ast.Attribute) else None
         if method in LEAVING and node.args:
             self.eval(node.func.value, state)  # type: ignore[attr-defined]
-            self._leaving([self.eval(a, state) for a in node.args], state)
+            values = [self.eval(a, state) for a in node.args]
+            self._leaving(values, state)
+            if method == "publish" and self.ctx.obligations:
+                holder = dotted(node.func.value)  # type: ignore[attr-defined]
+                self._contracts(values, state, f"{self._class_name()}:{holder}")
             return self.unknown(node)
         if isinstance(func, ast.Attribute) and func.attr in SEQUENCE_METHODS:
             receiver = self.receiver(func.value, state)
@@ -99,6 +103,19 @@ class CallEvaluator(LibraryEvaluator):
             if value.kind == "msg" and value.ref is not None:
                 self.check.check_whole(state, value.ref, self.site, publishing=True)
                 frames.check_leaving(self.ctx, state, value.ref, self.site)
+
+    def _contracts(self, values: list[Value], state: State, holder: str) -> None:
+        """What the subscribers of the publisher in `holder` (`Class:self.pub`)
+        assume of the message (`FileContext.obligations`), checked as a refined
+        argument is."""
+        refinements = self.ctx.obligations.get(holder, [])
+        for value in values[:1]:
+            if value.kind != "msg" or value.ref is None:
+                continue
+            for label, refinement in refinements:
+                self.check.assign_refined(
+                    state, label, refinement, value, self.site, {}, leaving=True
+                )
 
     def _dispatch(
         self,
@@ -824,6 +841,10 @@ class CallEvaluator(LibraryEvaluator):
 
     def store(self, target: ast.expr, value: Value, state: State) -> None:
         """Put a list that changed back where it lives (nothing to do elsewhere)."""
+        raise NotImplementedError
+
+    def _class_name(self) -> str | None:
+        """The class whose code is interpreted (the statement interpreter's)."""
         raise NotImplementedError
 
 

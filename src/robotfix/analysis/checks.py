@@ -1303,7 +1303,7 @@ class Checker:
                     frozenset(paths),
                     A.show(part),
                     f"annotation of `{name}`",
-                    self.path,
+                    decl.origin or self.path,
                     decl.line,
                 )
             )

@@ -121,6 +121,11 @@ class FileContext:
         self._metadata_notes: list[Diagnostic] = []
         self.uses_refinements = False  # some annotation of the file is a refinement
         self.stubs: StubSet | None = None  # the run's stubs (None: the shipped ones)
+        # what a publisher's subscribers assume of what it publishes (issue 23 §3,
+        # `graphcheck.contracts`): the publisher's holder (`self.pub`) -> what its
+        # `publish` argument is checked against, each named for its notes ("the
+        # message to `/odom`"); empty in a file's own check
+        self.obligations: dict[str, list[tuple[str, Refinement]]] = {}
         self.parameters: ParamContext | None = None  # at the first parameter call
         self.frame_facts: FrameFacts | None = None  # analysis/frames.py, when asked
         # symbols of satisfiability questions: never those of `fresh`

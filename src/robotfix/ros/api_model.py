@@ -73,3 +73,83 @@ PARAMETER_FIELD_DEFAULTS: dict[str, object] = {
 PARAMETER_CALLS = frozenset(
     {"declare_parameter", "declare_parameters", "get_parameter", "get_param"}
 )
+
+
+@dataclass(frozen=True)
+class EndpointCall:
+    """A call that makes a graph endpoint (`robotfix.ros.graph.python`)."""
+
+    kind: str  # robotfix.ros.graph.model's kinds
+    ros: int
+    type_arg: tuple[int, str]  # (position, keyword) of the interface type
+    name_arg: tuple[int, str]  # of the topic, service or action name
+    qos_arg: tuple[int, str] | None = None  # of the ROS 2 QoS profile
+
+
+def _type_of(called: str) -> tuple[int, str]:
+    registration = REGISTRATIONS[called]
+    assert registration.type_arg is not None
+    return registration.type_arg
+
+
+# Node methods, by name whatever the receiver (as REGISTRATIONS)
+ENDPOINT_METHODS: dict[str, EndpointCall] = {
+    "create_publisher": EndpointCall(
+        "publisher", 2, (0, "msg_type"), (1, "topic"), (2, "qos_profile")
+    ),
+    "create_subscription": EndpointCall(
+        "subscription",
+        2,
+        _type_of("create_subscription"),
+        (1, "topic"),
+        (3, "qos_profile"),
+    ),
+    "create_service": EndpointCall(
+        "service", 2, _type_of("create_service"), (1, "srv_name")
+    ),
+    "create_client": EndpointCall("client", 2, (0, "srv_type"), (1, "srv_name")),
+}
+# Classes and functions, by qualified name (what the file's imports make of it)
+ENDPOINT_CLASSES: dict[str, EndpointCall] = {
+    "rclpy.action.ActionServer": EndpointCall(
+        "action_server", 2, _type_of("ActionServer"), (2, "action_name")
+    ),
+    "rclpy.action.ActionClient": EndpointCall(
+        "action_client", 2, (1, "action_type"), (2, "action_name")
+    ),
+    "rospy.Publisher": EndpointCall("publisher", 1, (1, "data_class"), (0, "name")),
+    "rospy.Subscriber": EndpointCall(
+        "subscription", 1, _type_of("Subscriber"), (0, "name")
+    ),
+    "rospy.Service": EndpointCall("service", 1, _type_of("Service"), (0, "name")),
+    "rospy.ServiceProxy": EndpointCall("client", 1, (1, "service_class"), (0, "name")),
+    "actionlib.SimpleActionServer": EndpointCall(
+        "action_server", 1, _type_of("SimpleActionServer"), (0, "name")
+    ),
+    "actionlib.SimpleActionClient": EndpointCall(
+        "action_client", 1, (1, "ActionSpec"), (0, "ns")
+    ),
+    "actionlib.ActionServer": EndpointCall(
+        "action_server", 1, (1, "ActionSpec"), (0, "ns")
+    ),
+    "actionlib.ActionClient": EndpointCall(
+        "action_client", 1, (1, "ActionSpec"), (0, "ns")
+    ),
+}
+ENDPOINT_CLASSES["rclpy.action.server.ActionServer"] = ENDPOINT_CLASSES[
+    "rclpy.action.ActionServer"
+]
+ENDPOINT_CLASSES["rclpy.action.client.ActionClient"] = ENDPOINT_CLASSES[
+    "rclpy.action.ActionClient"
+]
+ENDPOINT_CLASSES["rospy.topics.Publisher"] = ENDPOINT_CLASSES["rospy.Publisher"]
+ENDPOINT_CLASSES["rospy.topics.Subscriber"] = ENDPOINT_CLASSES["rospy.Subscriber"]
+# The words a file holds when it may make an endpoint (checked on its bytes)
+ENDPOINT_WORDS = (
+    b"create_publisher",
+    b"create_subscription",
+    b"create_service",
+    b"create_client",
+    b"Action",
+    b"rospy",
+)

@@ -17,7 +17,7 @@ import configparser
 import re
 from pathlib import Path
 
-from robotfix.fs import UnreadableError, read_text
+from robotfix.fs import UnreadableError, read_regular, read_text
 
 MAX_BUILD_BYTES = 1024 * 1024
 SCRIPT_FOLDERS = ("scripts", "nodes", "bin", "src", "")
@@ -162,4 +162,197 @@ def _cmake_programs(package: Path) -> list[Path]:
                 break
             if "$" not in word:
                 found.append(package / word.strip("\"'"))
+    return found
+
+
+# -- C++: CMake targets --------------------------------------------------------
+_COMMAND = re.compile(r"\b([A-Za-z_][A-Za-z0-9_]*)\s*\(([^()]*)\)")
+_VARIABLE = re.compile(r"\$\{([A-Za-z0-9_]+)\}")
+_TARGET_WORDS = frozenset(
+    {
+        "STATIC",
+        "SHARED",
+        "MODULE",
+        "OBJECT",
+        "INTERFACE",
+        "EXCLUDE_FROM_ALL",
+        "WIN32",
+        "MACOSX_BUNDLE",
+        "PUBLIC",
+        "PRIVATE",
+        "IMPORTED",
+        "ALIAS",
+    }
+)
+CMAKE_STEPS = 2 * MAX_BUILD_BYTES  # characters of commands read per CMakeLists.txt
+MAX_VALUE = 4096  # a variable's value longer than this is unknown
+_INCLUDE = re.compile(rb'#\s*include\s*[<"]([^>"]+)[>"]')
+CPP_SOURCE_SUFFIXES = (".cpp", ".cc", ".cxx", ".c++", ".hpp", ".hh", ".hxx", ".h")
+
+
+Targets = dict[str, tuple[list[Path], list[str]]]
+
+
+def cpp_executable_files(
+    package: Path, executable: str, memo: dict[Path, Targets] | None = None
+) -> list[Path]:
+    """The C++ files an executable of the package is built from, read from its
+    CMakeLists.txt (never run): `add_executable(name src/x.cpp)`, the package's
+    libraries it links (`target_link_libraries`), `rclcpp_components_register_node(
+    lib ... EXECUTABLE name)`, and the package's headers those files include.
+    `set()` variables and `${PROJECT_NAME}` are substituted; a word still holding a
+    `${...}` is unknown (left out). `memo` keeps each package's targets for a run."""
+    memo = {} if memo is None else memo
+    if package not in memo:
+        memo[package] = _cmake_targets(package)
+    targets = memo[package]
+    todo = [executable]
+    seen: set[str] = set()
+    files: list[Path] = []
+    while todo:
+        name = todo.pop()
+        if name in seen or name not in targets:
+            continue
+        seen.add(name)
+        sources, links = targets[name]
+        files += [s for s in sources if s not in files]
+        todo += links
+    return files + [h for h in _included(package, files) if h not in files]
+
+
+def _cmake_targets(package: Path) -> dict[str, tuple[list[Path], list[str]]]:
+    """target -> (its source files, the targets it links or is built from)."""
+    text = _read(package / "CMakeLists.txt")
+    if text is None:
+        return {}
+    text = re.sub(r"#[^\n]*", "", text)
+    functions: dict[str, tuple[list[str], str]] = {}
+    outside: list[str] = []  # the text outside function and macro definitions
+    start, opened, head = 0, -1, [""]
+    for match in _BOUNDARY.finditer(text):  # one pass: no rescanning per opening
+        if match.group("end") is None and opened < 0:
+            outside.append(text[start : match.start()])
+            opened, head = match.end(), match.group("head").split() or [""]
+        elif match.group("end") is not None and opened >= 0:
+            functions[head[0].lower()] = (head[1:], text[opened : match.start()])
+            start, opened = match.end(), -1
+    outside.append(text[start:] if opened < 0 else "")
+    text = "".join(outside)
+    targets: dict[str, tuple[list[Path], list[str]]] = {}
+    _cmake_run(package, text, {}, targets, functions, 0, [CMAKE_STEPS])
+    return targets
+
+
+# `function(name args)` / `macro(...)` and their `endfunction()` / `endmacro()`
+_BOUNDARY = re.compile(
+    r"\b(?P<end>end)?(?:function|macro)\s*\((?P<head>[^()]*)\)", re.IGNORECASE
+)
+
+
+def _cmake_run(
+    package: Path,
+    text: str,
+    variables: dict[str, str],
+    targets: dict[str, tuple[list[Path], list[str]]],
+    functions: dict[str, tuple[list[str], str]],
+    depth: int,
+    budget: list[int],
+) -> None:
+    """The commands of `text` that make targets, in order; a call of a function
+    the file defines runs its body with its parameters bound (4 deep at most).
+    `budget` counts the characters of the commands read, function bodies run
+    included: what is left when it runs out is not read (its targets unknown)."""
+
+    def value(m: re.Match[str]) -> str:
+        found = variables.get(m.group(1))  # a value too long to be a name: unknown
+        return found if found is not None and len(found) <= MAX_VALUE else m.group(0)
+
+    for match in _COMMAND.finditer(text):
+        budget[0] -= len(match.group(0))
+        if budget[0] < 0:
+            return
+        command = match.group(1).lower()
+        words = [
+            part
+            for w in match.group(2).split()
+            for part in _VARIABLE.sub(value, w.strip("\"'")).split(";")
+        ]
+        if not words:
+            continue
+        if command in functions and depth < 4:
+            params, body = functions[command]
+            bound = dict(variables)
+            bound.update(zip(params, words[: len(params)], strict=False))
+            bound["ARGN"] = ";".join(words[len(params) :])
+            _cmake_run(package, body, bound, targets, functions, depth + 1, budget)
+        elif command == "cmake_parse_arguments":
+            _parse_arguments(match.group(2), variables)
+        elif command == "project":
+            variables["PROJECT_NAME"] = words[0]
+        elif command == "set" and len(words) >= 2:
+            variables[words[0]] = words[1]
+        elif command in ("add_executable", "add_library", "target_sources"):
+            sources, _ = targets.setdefault(words[0], ([], []))
+            for word in words[1:]:
+                if word in _TARGET_WORDS or "$" in word:
+                    continue
+                if word.endswith(CPP_SOURCE_SUFFIXES):
+                    path = package / word
+                    if path.is_file() and path not in sources:
+                        sources.append(path)
+        elif command == "target_link_libraries":
+            _, links = targets.setdefault(words[0], ([], []))
+            links += [w for w in words[1:] if w not in _TARGET_WORDS and "$" not in w]
+        elif (
+            command == "rclcpp_components_register_node" and "EXECUTABLE" in words[:-1]
+        ):
+            name = words[words.index("EXECUTABLE") + 1]
+            targets.setdefault(name, ([], []))[1].append(words[0])
+
+
+def _parse_arguments(raw: str, variables: dict[str, str]) -> None:
+    """`cmake_parse_arguments(ARG "" "" "FILES;DEPENDENCIES" ${ARGN})`: each
+    keyword's words as `ARG_FILES`."""
+    found = re.findall(r'"([^"]*)"|(\S+)', raw)
+    items = [a if a or not b else b for a, b in found]
+    if len(items) < 5:
+        return
+    prefix, options, single, multi = items[:4]
+    words = [
+        part
+        for w in items[4:]
+        for part in _VARIABLE.sub(lambda m: variables.get(m.group(1), ""), w).split(";")
+        if part
+    ]
+    keywords = {k for k in (options + ";" + single + ";" + multi).split(";") if k}
+    current = None
+    values: dict[str, list[str]] = {}
+    for word in words:
+        if word in keywords:
+            current = word
+            values.setdefault(word, [])
+        elif current is not None:
+            values[current].append(word)
+    for key, listed in values.items():
+        variables[f"{prefix}_{key}"] = ";".join(listed)
+
+
+def _included(package: Path, files: list[Path]) -> list[Path]:
+    """The package's own headers the files include (`#include "pkg/x.hpp"`)."""
+    found: list[Path] = []
+    for path in files:
+        try:
+            data = read_regular(path, MAX_BUILD_BYTES * 2)
+        except UnreadableError:
+            continue
+        for match in _INCLUDE.finditer(data):
+            name = match.group(1).decode("utf-8", "replace")
+            for base in (package / "include", package / "src", path.parent):
+                candidate = base / name
+                try:
+                    if candidate.is_file() and candidate not in found:
+                        found.append(candidate)
+                        break
+                except (OSError, ValueError):
+                    break
     return found

@@ -107,16 +107,22 @@ def read_line_expectations(text: str) -> list[Expectation]:
 # an XML comment that holds an assertion (`<!-- error: RF101 -->`)
 _XML_ASSERTION = re.compile(r"<!--\s*((?:error|warning|note)s?\b[^>]*?)\s*-->", re.I)
 XML_SUFFIXES = (".xml", ".launch")
+# a C++ comment that holds an assertion (`// error: RF603`)
+_CPP_ASSERTION = re.compile(r"//\s*((?:error|warning|note)s?\b.*)$", re.I | re.M)
+CPP_SUFFIXES = (".cpp", ".cc", ".cxx", ".hpp", ".hh", ".hxx", ".h")
 
 
 def file_expectations(path: Path) -> list[Expectation]:
     """A Python file's assertions, or those at the ends of another file's lines
-    (in an XML file, each in a comment of its own: `<!-- error: RF101 -->`)."""
+    (in an XML file, each in a comment of its own: `<!-- error: RF101 -->`; in a
+    C++ file, in a `//` comment: `// error: RF603`)."""
     text = path.read_text(encoding="utf-8")
     if path.suffix == ".py":
         return read_expectations(text)
     if path.name.endswith(XML_SUFFIXES):
         text = _XML_ASSERTION.sub(r"# \1", text)
+    if path.name.endswith(CPP_SUFFIXES):
+        text = _CPP_ASSERTION.sub(r"# \1", text.replace("#", " "))
     return read_line_expectations(text)
 
 

@@ -1,0 +1,511 @@
+"""A run's static ROS graph (`ros.graph`) and what is wrong in it.
+
+The graph is made of the endpoints each checked Python file's check extracted
+(`run.FileResult.graph`, kept in the result cache with the file's entry), those of
+the C++ files of the run's packages (read here with tree-sitter), and the launch
+entries (`launchcheck.LaunchRun`), which start code under a name and namespace
+with remappings: a launch entry's executable is found through setup.py or
+CMakeLists.txt (`ros.executables`).
+
+Findings, each at an endpoint with a note at the other side:
+- RF603: one resolved name (in one ROS version's graph) used with two certain
+  interface types by different nodes (a type chosen at run time, as a parameter
+  picks `Twist` or `TwistStamped`, is two possible types: never a finding);
+- RF604/RF605: a subscription whose QoS never matches a publisher's (reliable vs
+  best effort, transient local vs volatile): RF604 when both profiles are
+  constants, RF605 when one may change (QoS overrides by parameter);
+- RF606/RF607 (notes): a topic subscribed and published nowhere in the checked
+  tree, or the reverse; not when an endpoint whose name is not known may be it;
+  only in a run whose launch files start nodes (they say which nodes make the
+  system: without them a package of one talker would be noted for its listener).
+
+Only `robotfix check` of a folder reports them (`run.py`): the graph of a single
+file or of what an editor has open depends on what was opened.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from robotfix import messages
+from robotfix.diagnostics import Diagnostic, Note
+from robotfix.fs import UnreadableError, read_regular
+from robotfix.ros.executables import Targets, cpp_executable_files
+from robotfix.ros.graph import qos as Q
+from robotfix.ros.graph.build import End, Graph, Started, build
+from robotfix.ros.graph.cpp import MAX_CPP_BYTES, read_cpp
+from robotfix.ros.graph.model import PUBLISHER, SUBSCRIPTION, FileGraph, dump, load
+from robotfix.ros.package import package_folder, package_name
+from robotfix.source import suppresses
+
+if TYPE_CHECKING:
+    from robotfix.api import Contract
+    from robotfix.cache import ResultCache
+    from robotfix.config import Config
+    from robotfix.launchcheck import LaunchRun
+
+# topics rcl itself provides for every node, and those every lifecycle node
+# publishes under its own name (rclcpp_lifecycle, rclpy.lifecycle)
+BUILTIN_TOPICS = frozenset({"/rosout", "/parameter_events"})
+BUILTIN_SUFFIXES = ("/transition_event",)
+_CPP_COMMENT = re.compile(r"//(?=\s*robotfix:)")
+
+
+@dataclass
+class Finding:
+    diagnostic: Diagnostic
+    end: int  # index in Graph.ends
+    other: int | None = None
+
+
+@dataclass
+class GraphResult:
+    graph: Graph
+    findings: list[Finding] = field(default_factory=list)
+
+    def diagnostics(self) -> list[Diagnostic]:
+        return [f.diagnostic for f in self.findings]
+
+
+def read_cpp_files(
+    paths: list[Path], cache: ResultCache | None = None
+) -> dict[str, FileGraph]:
+    """Each C++ file's graph; a file that cannot be read has none. With the
+    result cache, a file whose bytes are unchanged is not parsed again."""
+    found: dict[str, FileGraph] = {}
+    for path in paths:
+        digest = cache.sha(path) if cache is not None else None
+        if cache is not None and digest is not None:
+            known, raw = cache.cpp_graph(path, digest)
+            if known:
+                one = load(raw) if raw is not None else None
+                if one is not None:
+                    found[str(path)] = one
+                continue
+        try:
+            data = (
+                cache.take(path)
+                if digest is not None and cache is not None
+                else read_regular(path, MAX_CPP_BYTES)
+            )
+        except UnreadableError:
+            continue
+        one = read_cpp(data)
+        if cache is not None and digest is not None:
+            cache.put_cpp(path, digest, dump(one) if one.endpoints else None)
+        if one.endpoints:
+            found[str(path)] = one
+    return found
+
+
+def started_entries(
+    launches: LaunchRun | None, code: dict[str, FileGraph]
+) -> list[Started]:
+    """The launch entries of the run, each with the code files it runs."""
+    if launches is None:
+        return []
+    by_real: dict[str, str] = {}
+    for path in sorted(code):  # sorted: the output of `-j N` is that of `-j 1`
+        by_real.setdefault(os.path.realpath(path), path)
+    packages = dict(launches.packages)
+    folders: set[str] = set()
+    for path in sorted(code):  # a C++ package has no Python file LaunchRun saw
+        folder = os.path.dirname(path)
+        if folder in folders:
+            continue
+        folders.add(folder)
+        found = package_folder(Path(path))
+        name = package_name(found) if found is not None else None
+        if found is not None and name is not None:
+            packages.setdefault(name, found)
+    out: list[Started] = []
+    targets: dict[Path, Targets] = {}  # each package's CMake targets, read once
+    for started in launches.started:
+        entry = started.entry
+        files = [by_real[f] for f in sorted(started.files) if f in by_real]
+        package = packages.get(entry.package or "")
+        plugin = None
+        if package is not None and entry.plugin:
+            plugin = entry.plugin.split("::")[-1]
+            inside = os.path.realpath(package) + os.sep
+            files += [p for r, p in sorted(by_real.items()) if r.startswith(inside)]
+        elif package is not None and entry.executable and not files:
+            for source in cpp_executable_files(package, entry.executable, targets):
+                real = os.path.realpath(source)
+                if real in by_real:
+                    files.append(by_real[real])
+        out.append(Started(entry, files, plugin))
+    return out
+
+
+def check_graph(
+    code: dict[str, FileGraph],
+    launches: LaunchRun | None,
+    config: Config | None = None,
+) -> GraphResult:
+    """The graph of the run's code and launch files, and its findings."""
+    graph = build(code, started_entries(launches, code))
+    result = GraphResult(graph)
+    channels = _channels(graph)
+    systems = _Systems(graph)
+    for (ros, family, name), ends in channels.items():
+        mismatched = _type_mismatch(graph, family, name, ends, result, systems)
+        if family == "topic" and ros == 2 and not mismatched:
+            _qos(graph, name, ends, result, systems)
+    if launches is not None and launches.started:
+        _unmatched(graph, channels, result)
+    texts: dict[str, list[str] | None] = {}
+    result.findings = [
+        f for f in result.findings if not _silenced(f.diagnostic, texts, config)
+    ]
+    result.findings.sort(key=lambda f: f.diagnostic.sort_key())
+    return result
+
+
+def _channels(graph: Graph) -> dict[tuple[int, str, str], list[int]]:
+    found: dict[tuple[int, str, str], list[int]] = {}
+    for index, end in enumerate(graph.ends):
+        if end.resolved is None or end.family == "parameter" or not end.certain:
+            continue
+        found.setdefault((end.endpoint.ros, end.family, end.resolved), []).append(index)
+    for ends in found.values():
+        ends.sort(key=lambda i: _place(graph.ends[i]))
+    return {k: found[k] for k in sorted(found)}
+
+
+def _place(end: End) -> tuple[str, int, int]:
+    return (end.path, end.endpoint.line, end.endpoint.col)
+
+
+def _note(end: End, what: str) -> Note:
+    return Note(what, end.path, end.endpoint.line)
+
+
+TOGETHER, MAYBE = "together", "maybe"
+TEST_FOLDERS = frozenset({"test", "tests", "testing"})
+
+
+class _Systems:
+    """Whether two node instances run in one system.
+
+    - TOGETHER: launch entries of launch files of one package start both (a
+      bringup package's launch files describe one system);
+    - MAYBE: code no launch file starts, both in one package and neither test
+      code (a package's nodes are meant to talk, but which run together is not
+      written down);
+    - None: anything else: programs of different packages no launch file starts
+      together (a repository's demos), test code (its nodes are throwaway)."""
+
+    def __init__(self, graph: Graph) -> None:
+        self.graph = graph
+        self.folders: dict[str, str] = {}
+
+    def _package(self, path: str) -> str:
+        folder = os.path.dirname(path)
+        if folder not in self.folders:
+            found = package_folder(Path(path))
+            self.folders[folder] = str(found) if found is not None else folder
+        return self.folders[folder]
+
+    def relation(self, a: End, b: End) -> str | None:
+        first, second = self.graph.nodes[a.node], self.graph.nodes[b.node]
+        if first.launch is not None and second.launch is not None:
+            same = self._package(first.launch.path) == self._package(second.launch.path)
+            return TOGETHER if same else None
+        if _test_code(a.path) or _test_code(b.path):
+            return None
+        return MAYBE if self._package(a.path) == self._package(b.path) else None
+
+
+def _test_code(path: str) -> bool:
+    return not TEST_FOLDERS.isdisjoint(Path(path).parts[:-1])
+
+
+def _type_mismatch(
+    graph: Graph,
+    family: str,
+    name: str,
+    ends: list[int],
+    result: GraphResult,
+    systems: _Systems,
+) -> bool:
+    """RF603; True when reported."""
+    per_node: dict[int, set[tuple[str, ...]]] = {}
+    for index in ends:
+        end = graph.ends[index]
+        per_node.setdefault(end.node, set()).add(end.endpoint.types)
+    certain = {
+        node: next(iter(types))[0]
+        for node, types in per_node.items()
+        if len(types) == 1 and len(next(iter(types))) == 1
+    }
+    groups: dict[str, list[int]] = {}
+    for index in ends:
+        end = graph.ends[index]
+        if end.node in certain:
+            groups.setdefault(certain[end.node], []).append(index)
+    if len(groups) < 2:
+        return False
+    reported = False
+    for kind, group in sorted(
+        groups.items(), key=lambda kv: _place(graph.ends[kv[1][0]])
+    ):
+        # the first pair of this type's endpoints and another type's that may meet
+        pairs = [
+            (rank, i, j, relation)
+            for i in group
+            for t, other_group in groups.items()
+            if t != kind
+            for j in other_group
+            if (relation := systems.relation(graph.ends[i], graph.ends[j])) is not None
+            for rank in [0 if relation == TOGETHER else 1]
+        ]
+        if not pairs:
+            continue
+        _, first, other, relation = min(
+            pairs,
+            key=lambda p: (p[0], _place(graph.ends[p[1]]), _place(graph.ends[p[2]])),
+        )
+        end = graph.ends[first]
+        others = sorted({graph.ends[p[2]].endpoint.types[0] for p in pairs})
+        other_end = graph.ends[other]
+        node = graph.nodes[other_end.node].qualified
+        diag = messages.graph_type_mismatch(
+            end.path,
+            end.endpoint.line,
+            end.endpoint.col,
+            family,
+            name,
+            kind,
+            others,
+            _note(
+                other_end,
+                f"`{name}` with type `{graph.ends[other].endpoint.types[0]}` "
+                f"(node `{node}`)",
+            ),
+            relation == TOGETHER,
+        )
+        result.findings.append(Finding(diag, first, other))
+        reported = True
+    return reported
+
+
+def _qos(
+    graph: Graph, name: str, ends: list[int], result: GraphResult, systems: _Systems
+) -> None:
+    """RF604/RF605 at each subscription that never hears some publisher."""
+    publishers = [i for i in ends if graph.ends[i].endpoint.kind == PUBLISHER]
+    for index in ends:
+        end = graph.ends[index]
+        if end.endpoint.kind != SUBSCRIPTION or end.endpoint.qos is None:
+            continue
+        for other in publishers:
+            publisher = graph.ends[other].endpoint
+            if publisher.qos is None:
+                continue
+            why = Q.incompatible(publisher.qos, end.endpoint.qos)
+            if not why:
+                continue
+            relation = systems.relation(end, graph.ends[other])
+            if relation is None:
+                continue
+            certain = publisher.qos.certain and end.endpoint.qos.certain
+            apart = relation != TOGETHER
+            node = graph.nodes[graph.ends[other].node].qualified
+            diag = messages.graph_qos_incompatible(
+                end.path,
+                end.endpoint.line,
+                end.endpoint.col,
+                name,
+                why,
+                _note(
+                    graph.ends[other],
+                    f"the publisher (node `{node}`): {publisher.qos.shown()}",
+                ),
+                certain and not apart,
+                apart,
+            )
+            result.findings.append(Finding(diag, index, other))
+            break
+
+
+def _unmatched(
+    graph: Graph,
+    channels: dict[tuple[int, str, str], list[int]],
+    result: GraphResult,
+) -> None:
+    """RF606/RF607, once per topic, at its first endpoint."""
+    unnamed = [
+        e
+        for e in graph.ends
+        if e.family == "topic" and (e.resolved is None or not e.certain)
+    ]
+    for (ros, family, name), ends in channels.items():
+        if (
+            family != "topic"
+            or name in BUILTIN_TOPICS
+            or name.endswith(BUILTIN_SUFFIXES)
+        ):
+            continue
+        kinds = {graph.ends[i].endpoint.kind for i in ends}
+        if len(kinds) != 1:
+            continue
+        kind = kinds.pop()
+        published = kind == PUBLISHER
+        types = {t for i in ends for t in graph.ends[i].endpoint.types}
+        if any(
+            e.endpoint.ros == ros
+            and e.endpoint.kind != kind
+            and (not e.endpoint.types or not types or set(e.endpoint.types) & types)
+            for e in unnamed
+        ):
+            continue  # an endpoint whose name is not known may be its peer
+        first = graph.ends[ends[0]]
+        places = list(
+            dict.fromkeys(
+                (graph.ends[i].path, graph.ends[i].endpoint.line) for i in ends
+            )
+        )
+        also = "also " + ("published" if published else "subscribed") + " here"
+        others = [Note(also, path, line) for path, line in places[1:4]]
+        diag = messages.graph_unmatched(
+            first.path, first.endpoint.line, first.endpoint.col, name, published, others
+        )
+        result.findings.append(Finding(diag, ends[0]))
+
+
+def contracts(result: GraphResult) -> dict[str, list[Contract]]:
+    """Publisher file -> what the subscriptions its publishers reach assume of
+    the message (issue 23 §3): a subscription whose callback refines its message
+    (`msg: Annotated[Twist, "abs(linear.x) <= 0.5"]`) and a Python publisher kept in
+    an attribute (`self.pub = self.create_publisher(...)`, one publisher per
+    attribute name in its file; its `publish` calls in methods of that class), of
+    the same certain type, on one certain topic, started together by one
+    package's launch files."""
+    from robotfix.api import Contract
+
+    graph = result.graph
+    systems = _Systems(graph)
+    holders: dict[tuple[str, str], set[tuple[int, str | None]]] = {}
+    for end in graph.ends:
+        if end.endpoint.kind == PUBLISHER and end.endpoint.holder:
+            key = (end.path, end.endpoint.holder)
+            holders.setdefault(key, set()).add((end.endpoint.line, end.resolved))
+    found: dict[str, list[Contract]] = {}
+    for (_, family, name), ends in _channels(graph).items():
+        if family != "topic":
+            continue
+        taken = [
+            graph.ends[i]
+            for i in ends
+            if graph.ends[i].endpoint.kind == SUBSCRIPTION
+            and graph.ends[i].endpoint.contract is not None
+            and len(graph.ends[i].endpoint.types) == 1
+        ]
+        for i in ends:
+            publisher = graph.ends[i]
+            endpoint = publisher.endpoint
+            key = (publisher.path, endpoint.holder)
+            if (
+                endpoint.kind != PUBLISHER
+                or not publisher.path.endswith(".py")
+                or not endpoint.holder.startswith("self.")  # a local: its scope's
+                or len(holders.get(key, ())) != 1
+            ):
+                continue
+            for sub in taken:
+                if (
+                    sub.endpoint.types != endpoint.types
+                    or systems.relation(publisher, sub) != TOGETHER
+                ):
+                    continue
+                package, _, kind = endpoint.types[0].split("/")
+                node = graph.nodes[sub.node].qualified
+                contract = Contract(
+                    f"{endpoint.owner}:{endpoint.holder}",
+                    sub.endpoint.contract or "",
+                    f"{package}/{kind}",
+                    f"{node}'s subscription to {name}",
+                    sub.path,
+                    sub.endpoint.line,
+                )
+                if contract not in found.setdefault(publisher.path, []):
+                    found[publisher.path].append(contract)
+    return found
+
+
+def _silenced(
+    diag: Diagnostic, texts: dict[str, list[str] | None], config: Config | None
+) -> bool:
+    """`per-file-ignores`, or `# robotfix: ignore[...]` (in C++ `// robotfix:
+    ignore[...]`) on the endpoint's line."""
+    if config is not None and (
+        {diag.code, diag.rule.name} & config.ignored_codes(Path(diag.path))
+    ):
+        return True
+    if diag.path not in texts:
+        try:
+            text = read_regular(diag.path, MAX_CPP_BYTES).decode("utf-8", "replace")
+            texts[diag.path] = text.splitlines()
+        except UnreadableError:
+            texts[diag.path] = None
+    lines = texts[diag.path]
+    if lines is None or not 0 < diag.span.line <= len(lines):
+        return False
+    return suppresses(_CPP_COMMENT.sub("#", lines[diag.span.line - 1]), diag)
+
+
+def code_graphs(
+    python: dict[str, list[object]],
+    cpp_files: list[Path],
+    cache: ResultCache | None = None,
+) -> dict[str, FileGraph]:
+    """The run's code graphs: the checked Python files' (dumped by their checks,
+    or kept in the cache) and the C++ files', read here."""
+    code: dict[str, FileGraph] = {}
+    for path, raw in python.items():
+        found = load(raw)
+        if found is not None:
+            code[path] = found
+    code.update(read_cpp_files(cpp_files, cache))
+    return code
+
+
+def graph_paths(paths: list[Path], config: Config) -> GraphResult:
+    """`robotfix graph`: the graph of `paths` without checking them: each Python
+    file that may make an endpoint is parsed for it, as its check would parse it."""
+    from robotfix.discovery import discover
+    from robotfix.launchcheck import LaunchRun
+    from robotfix.ros.api_model import ENDPOINT_WORDS
+    from robotfix.ros.graph.python import read_python
+    from robotfix.source import SourceFile
+
+    found = discover(paths, config)
+    code: dict[str, FileGraph] = {}
+    for path in found.python_files:
+        try:
+            data = read_regular(path)
+        except UnreadableError:
+            continue
+        if not any(w in data for w in ENDPOINT_WORDS):
+            continue
+        source = SourceFile.from_bytes(str(path), data)
+        if source.tree is None:
+            continue
+        try:
+            one = read_python(source.tree)
+        except (RecursionError, MemoryError):
+            continue
+        if one.endpoints:
+            code[str(path)] = one
+    code.update(read_cpp_files(found.cpp_files))
+    launches = None
+    if found.launch_files:
+        launches = LaunchRun(
+            found.launch_files, [*found.python_files, *found.summary_files]
+        )
+    return check_graph(code, launches, config)

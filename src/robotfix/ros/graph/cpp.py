@@ -1,0 +1,560 @@
+"""The graph endpoints of one C++ file, read with tree-sitter's C++ grammar (the
+only import of tree-sitter; nothing is compiled or run).
+
+rclcpp: `create_publisher<geometry_msgs::msg::Twist>("cmd_vel", qos)`,
+`create_subscription<T>(...)`, `create_service<T>`, `create_client<T>`,
+`rclcpp_action::create_server<T>(node, "name", ...)` and `create_client<T>`,
+`declare_parameter<double>("max_speed", 0.5)` and `declare_parameter("x", 0.5)`.
+roscpp: `nh.advertise<std_msgs::String>("chatter", 10)`, `subscribe("t", 10, cb)`
+(the type from the callback's `const T::ConstPtr&` parameter, when `cb` is a
+function of the file), `advertiseService`, `serviceClient<T>`, `nh.param("x", v,
+0.5)`, and `ros::NodeHandle pnh("~")` making `pnh`'s names private.
+
+Names and types only, where they are written as literals (a string literal; a
+type spelled `pkg::msg::Name`, or an alias of one the file declares with `using`);
+anything computed is unknown. QoS: a depth, `rclcpp::QoS(n)` with its setters
+(`.best_effort()`, `.transient_local()`), `rclcpp::SensorDataQoS()` and the other
+preset classes. Which node: the class a method belongs to (its name from the
+`Node("name")` base initializer), else the node variable (`node->create_...`).
+
+Bad C++ never fails: tree-sitter recovers from errors; a file over
+`MAX_CPP_BYTES` is not read, and one without any of `WORDS` not parsed. What the
+reading needs of the tree is matched by one tree-sitter query, in C.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+from robotfix.ros.graph import qos as Q
+from robotfix.ros.graph.model import (
+    ACTION_CLIENT,
+    ACTION_SERVER,
+    CLIENT,
+    MIDDLE,
+    PARAMETER,
+    PUBLISHER,
+    SERVICE,
+    SUBSCRIPTION,
+    Endpoint,
+    FileGraph,
+    Qos,
+)
+
+MAX_CPP_BYTES = 2 * 1024 * 1024
+# a file that holds none of these makes no endpoint: not parsed
+WORDS = (
+    b"create_",
+    b"advertise",
+    b"subscribe",
+    b"serviceClient",
+    b"param",
+    b"TwistPublisher",
+    b"TwistSubscriber",
+)
+
+# method -> (kind, ros, name position, qos position, default position)
+_METHODS: dict[str, tuple[str, int, int, int | None, int | None]] = {
+    "create_publisher": (PUBLISHER, 2, 0, 1, None),
+    "create_subscription": (SUBSCRIPTION, 2, 0, 1, None),
+    "create_service": (SERVICE, 2, 0, None, None),
+    "create_client": (CLIENT, 2, 0, None, None),
+    "declare_parameter": (PARAMETER, 2, 0, None, 1),
+    "advertise": (PUBLISHER, 1, 0, None, None),
+    "subscribe": (SUBSCRIPTION, 1, 0, None, None),
+    "advertiseService": (SERVICE, 1, 0, None, None),
+    "serviceClient": (CLIENT, 1, 0, None, None),
+    "param": (PARAMETER, 1, 0, None, 2),
+}
+# classes that make an endpoint when built (`std::make_unique<C>(args)`, `C(args)`):
+# kind, name position, qos position, its possible types. nav2_util's Twist
+# publisher and subscriber use `Twist` or `TwistStamped` as the node's
+# `enable_stamped_cmd_vel` parameter says: two possible types.
+_TWIST = ("geometry_msgs/msg/Twist", "geometry_msgs/msg/TwistStamped")
+_CLASSES: dict[str, tuple[str, int, int | None, tuple[str, ...]]] = {
+    "nav2_util::TwistPublisher": (PUBLISHER, 1, 2, _TWIST),
+    "nav2_util::TwistSubscriber": (SUBSCRIPTION, 1, 2, _TWIST),
+}
+# rclcpp_action's free functions: (kind, name position)
+_ACTIONS = {"create_server": ACTION_SERVER, "create_client": ACTION_CLIENT}
+_NODE_BASES = frozenset({"Node", "LifecycleNode"})
+_PTR = re.compile(r"(::)?(ConstPtr|Ptr|SharedPtr|ConstSharedPtr|UniquePtr)$")
+
+_PARSER: Any = None
+
+
+def _parser() -> Any:
+    global _PARSER
+    if _PARSER is None:
+        import tree_sitter
+        import tree_sitter_cpp
+
+        _PARSER = tree_sitter.Parser(tree_sitter.Language(tree_sitter_cpp.language()))
+    return _PARSER
+
+
+def read_cpp(data: bytes) -> FileGraph:
+    """The endpoints and node names of a C++ file's bytes."""
+    found = FileGraph()
+    if len(data) > MAX_CPP_BYTES or not any(w in data for w in WORDS):
+        return found
+    try:
+        tree = _parser().parse(data)
+    except (ValueError, RuntimeError):
+        return found
+    _File(found, data).read(tree.root_node)
+    found.endpoints.sort(key=lambda e: (e.line, e.col, e.kind))
+    return found
+
+
+def _text(node: Any) -> str:
+    return node.text.decode("utf-8", "replace") if node is not None else ""
+
+
+class _File:
+    def __init__(self, found: FileGraph, data: bytes) -> None:
+        self.found = found
+        self.data = data
+        self.aliases: dict[str, str] = {}  # `using Twist = geometry_msgs::msg::Twist`
+        self.callbacks: dict[str, str] = {}  # function name -> its first param type
+        self.handles: dict[str, str] = {}  # NodeHandle variable -> its namespace
+        self.calls: list[tuple[Any, str]] = []  # (call node, enclosing class)
+        self.ros1 = False
+
+    def read(self, root: Any) -> None:
+        captures = _query().captures(root)
+        for node in captures.get("cls", []):
+            self._bases(node.parent, _text(node).split("::")[-1])
+        for node in captures.get("fn", []):
+            self._function(node)
+        for node in captures.get("alias", []):
+            name = node.child_by_field_name("name")
+            value = node.child_by_field_name("type")
+            if name is not None and value is not None:
+                self.aliases[_text(name)] = _text(value)
+        for node in captures.get("using", []):
+            text = _text(node)[len("using") :].strip().rstrip(";").strip()
+            if "::" in text and not text.startswith("namespace"):
+                self.aliases[text.rsplit("::", 1)[-1]] = text
+        for node in captures.get("decl", []):
+            self._handle(node, _enclosing(node))
+        for node in captures.get("init", []):
+            self._initializer(node, _enclosing(node))
+        for node in sorted(captures.get("call", []), key=lambda n: n.start_byte):
+            self._call(node, _enclosing(node))
+        self.found.ros = 1 if self.ros1 else 2
+
+    # -- declarations ----------------------------------------------------------
+    def _bases(self, node: Any, cls: str) -> None:
+        for child in node.children:
+            if child.type == "base_class_clause":
+                for base in child.children:
+                    last = _text(base).split("<")[0].split("::")[-1]
+                    if last in _NODE_BASES:
+                        self.found.nodes.setdefault(cls, [])
+
+    def _function(self, node: Any) -> None:
+        """A function's first parameter's type, for a roscpp callback."""
+        declarator = _declarator(node)
+        if declarator is None:
+            return
+        text = _text(declarator.child_by_field_name("declarator"))
+        params = declarator.child_by_field_name("parameters")
+        first = (
+            [c for c in params.children if c.type == "parameter_declaration"]
+            if params
+            else []
+        )
+        if first:
+            kind = first[0].child_by_field_name("type")
+            if kind is not None:
+                self.callbacks[text.split("::")[-1]] = _text(kind)
+
+    def _initializer(self, node: Any, cls: str) -> None:
+        """`: Node("talker")` names the class's node; `pnh_("~")` a private handle."""
+        name = _text(node.children[0]) if node.children else ""
+        args = [
+            c
+            for c in (node.children[-1].children if node.children else [])
+            if c.type not in ("(", ")", ",")
+        ]
+        literal = _string(args[0]) if args else None
+        last = name.split("::")[-1].split("<")[0]
+        if last in _NODE_BASES and literal is not None and cls:
+            self.found.nodes.setdefault(cls, []).append(literal)
+        elif (literal is not None and literal.startswith(("~", "/"))) or (
+            literal is not None and name.endswith("_")
+        ):
+            self.handles[name] = literal
+
+    def _handle(self, node: Any, cls: str) -> None:
+        """`ros::NodeHandle nh, pnh("~");`, `auto node =
+        rclcpp::Node::make_shared("talker");`"""
+        kind = node.child_by_field_name("type")
+        if kind is None:
+            return
+        if not _text(kind).endswith("NodeHandle"):
+            for child in node.children:
+                value = (
+                    child.child_by_field_name("value")
+                    if child.type == "init_declarator"
+                    else None
+                )
+                if value is None or value.type != "call_expression":
+                    continue
+                func = _text(value.child_by_field_name("function"))
+                if "make_shared" in func and "Node" in func:
+                    args = [
+                        c
+                        for c in value.child_by_field_name("arguments").children
+                        if c.type not in ("(", ")", ",")
+                    ]
+                    literal = _string(args[0]) if args else None
+                    var = _text(child.child_by_field_name("declarator"))
+                    if literal is not None:
+                        self.found.nodes.setdefault(_owner(cls, var), []).append(
+                            literal
+                        )
+            return
+        self.ros1 = True
+        for child in node.children:
+            if child.type == "init_declarator":
+                name = child.child_by_field_name("declarator")
+                value = child.child_by_field_name("value")
+                if value is not None and value.type in (
+                    "argument_list",
+                    "initializer_list",
+                ):
+                    args = [
+                        c
+                        for c in value.children
+                        if c.type not in ("(", ")", ",", "{", "}")
+                    ]
+                    literal = _string(args[0]) if args else None
+                    self.handles[_text(name)] = literal if literal is not None else "?"
+                else:
+                    self.handles[_text(name)] = "?"
+            elif child.type in ("identifier", "field_identifier"):
+                self.handles[_text(child)] = ""
+
+    # -- calls -------------------------------------------------------------------
+    def _call(self, call: Any, cls: str) -> None:
+        func = call.child_by_field_name("function")
+        args_node = call.child_by_field_name("arguments")
+        if func is None or args_node is None:
+            return
+        args = [
+            c for c in args_node.children if c.type not in ("(", ")", ",", "comment")
+        ]
+        receiver = None
+        if func.type == "field_expression":
+            receiver = func.child_by_field_name("argument")
+            func = func.child_by_field_name("field")
+            if func is None:
+                return
+        template = None
+        if func.type in ("template_method", "template_function"):
+            template = func.child_by_field_name("arguments")
+            func = func.child_by_field_name("name")
+        elif func.type == "qualified_identifier":
+            scope = _text(func).split("::")[0]
+            inner = func.child_by_field_name("name")
+            if inner is not None and inner.type == "template_function":
+                template = inner.child_by_field_name("arguments")
+                func = inner.child_by_field_name("name")
+            else:
+                func = inner
+            if (
+                scope == "std"
+                and func is not None
+                and _text(func) in ("make_unique", "make_shared")
+                and template is not None
+            ):
+                self._constructed(call, _text(template).strip("<> "), args, cls)
+                return
+            if scope == "rclcpp_action" and func is not None:
+                self._action(call, _text(func), template, args, cls)
+                return
+            if scope == "ros" and func is not None and _text(func) == "init":
+                self.ros1 = True
+                name = _string(args[2]) if len(args) > 2 else None
+                if name is not None:
+                    self.found.nodes.setdefault("", []).append(name)
+                return
+        method = _text(func)
+        spec = _METHODS.get(method)
+        if spec is None:
+            return
+        kind, ros, name_at, qos_at, default_at = spec
+        if ros == 1 and receiver is None:
+            return  # advertise(...) alone is no roscpp call
+        handle = ""
+        recv_text = _text(receiver) if receiver is not None else "this"
+        owner = _owner(cls, recv_text)
+        if ros == 1:
+            self.ros1 = True
+            owner = ""
+            handle = self.handles.get(recv_text, "?")
+        name = _string(args[name_at]) if len(args) > name_at else None
+        types = self._types(template, kind)
+        if kind == SUBSCRIPTION and ros == 1 and not types and len(args) > 2:
+            types = self._callback_type(args[2], kind)
+        profile = None
+        if qos_at is not None and len(args) > qos_at:
+            profile = _qos(args[qos_at])
+        value = None
+        if default_at is not None and len(args) > default_at:
+            value = _text(args[default_at])[:80]
+        if kind == PARAMETER and template is not None and not types:
+            types = (_text(template).strip("<>").strip(),)
+        if handle == "?":
+            name = name if name is not None and name.startswith("/") else None
+            handle = ""
+        point = call.start_point
+        self.found.endpoints.append(
+            Endpoint(
+                kind,
+                name,
+                types,
+                point[0] + 1,
+                _col(call, self.data),
+                owner,
+                profile,
+                ros,
+                handle,
+                value,
+            )
+        )
+
+    def _constructed(self, call: Any, made: str, args: list[Any], cls: str) -> None:
+        """`std::make_unique<nav2_util::TwistPublisher>(node, "cmd_vel", 1)`."""
+        spec = _CLASSES.get(re.sub(r"\s+", "", made))
+        if spec is None:
+            return
+        kind, name_at, qos_at, types = spec
+        receiver = _text(args[0]) if args else ""
+        name = _string(args[name_at]) if len(args) > name_at else None
+        profile = (
+            _qos(args[qos_at]) if qos_at is not None and len(args) > qos_at else None
+        )
+        self.found.endpoints.append(
+            Endpoint(
+                kind,
+                name,
+                types,
+                call.start_point[0] + 1,
+                _col(call, self.data),
+                _owner(cls, receiver),
+                profile,
+                2,
+            )
+        )
+
+    def _action(
+        self, call: Any, function: str, template: Any, args: list[Any], cls: str
+    ) -> None:
+        kind = _ACTIONS.get(function)
+        if kind is None:
+            return
+        receiver = _text(args[0]) if args else ""
+        if receiver.startswith(("shared_from_this", "this->get_node", "this")):
+            receiver = "this"
+        owner = _owner(cls, receiver)
+        name = _string(args[1]) if len(args) > 1 else None
+        self.found.endpoints.append(
+            Endpoint(
+                kind,
+                name,
+                self._types(template, kind),
+                call.start_point[0] + 1,
+                _col(call, self.data),
+                owner,
+                None,
+                2,
+            )
+        )
+
+    def _types(self, template: Any, kind: str) -> tuple[str, ...]:
+        if template is None:
+            return ()
+        parts = [c for c in template.children if c.type not in ("<", ">", ",")]
+        if not parts or kind == PARAMETER:
+            return ()
+        return _interface(_text(parts[0]), self.aliases, kind)
+
+    def _callback_type(self, node: Any, kind: str) -> tuple[str, ...]:
+        text = _text(node).lstrip("&").strip()
+        name = text.split("::")[-1]
+        param = self.callbacks.get(name)
+        if param is None:
+            return ()
+        param = param.replace("const", " ").replace("&", " ").strip()
+        if param.startswith("boost::shared_ptr<"):
+            param = param[len("boost::shared_ptr<") :].rstrip(">").strip()
+        elif not _PTR.search(param):
+            return ()  # a message taken by value: rare, and templates hide it
+        param = _PTR.sub("", param).strip().rstrip(":")
+        return _interface(param, self.aliases, kind)
+
+
+_QUERY: Any = None
+# what the file's reading needs of its syntax tree, matched in C
+_PATTERNS = """
+(call_expression) @call
+(function_definition) @fn
+(alias_declaration) @alias
+(using_declaration) @using
+(field_initializer) @init
+((declaration) @decl (#match? @decl "NodeHandle|make_shared"))
+((field_declaration) @decl (#match? @decl "NodeHandle"))
+(class_specifier name: (_) @cls (base_class_clause))
+(struct_specifier name: (_) @cls (base_class_clause))
+"""
+MAX_DEPTH = 400  # ancestors looked at for the enclosing class
+
+
+def _query() -> Any:
+    global _QUERY
+    if _QUERY is None:
+        import tree_sitter
+        import tree_sitter_cpp
+
+        language = tree_sitter.Language(tree_sitter_cpp.language())
+        _QUERY = tree_sitter.QueryCursor(tree_sitter.Query(language, _PATTERNS))
+    return _QUERY
+
+
+def _declarator(node: Any) -> Any:
+    """A function definition's `function_declarator`, or None."""
+    declarator = node.child_by_field_name("declarator")
+    while declarator is not None and declarator.type in (
+        "pointer_declarator",
+        "reference_declarator",
+    ):
+        declarator = declarator.child_by_field_name("declarator")
+    if declarator is None or declarator.type != "function_declarator":
+        return None
+    return declarator
+
+
+def _enclosing(node: Any) -> str:
+    """The class a node's code belongs to: of the class body it is in, or of the
+    method defined out of its class (`Talker::Talker() : Node("talker")`)."""
+    parent = node.parent
+    for _ in range(MAX_DEPTH):
+        if parent is None:
+            return ""
+        if parent.type in ("class_specifier", "struct_specifier"):
+            name = parent.child_by_field_name("name")
+            return _text(name).split("::")[-1] if name is not None else ""
+        if parent.type == "function_definition":
+            declarator = _declarator(parent)
+            text = (
+                _text(declarator.child_by_field_name("declarator"))
+                if declarator
+                else ""
+            )
+            if "::" in text:
+                return text.split("::")[-2].split("<")[0]
+        parent = parent.parent
+    return ""
+
+
+def _owner(cls: str, receiver: str) -> str:
+    """Which node object a call is made on: the class for `this` (or no
+    receiver), else the receiver as written (within its class)."""
+    if receiver in ("this", "", "*this"):
+        return cls
+    return f"{cls}.{receiver}" if cls else receiver
+
+
+def _interface(text: str, aliases: dict[str, str], kind: str) -> tuple[str, ...]:
+    """`geometry_msgs::msg::Twist` (ROS 1: `geometry_msgs::Twist`) -> the type."""
+    text = re.sub(r"\s+", "", text)
+    for _ in range(4):
+        if text in aliases:
+            text = re.sub(r"\s+", "", aliases[text])
+        else:
+            break
+    text = _PTR.sub("", text) if kind != PARAMETER else text
+    parts = text.lstrip(":").split("::")
+    if not all(re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", p) for p in parts):
+        return ()
+    if len(parts) == 3 and parts[1] in ("msg", "srv", "action"):
+        return (f"{parts[0]}/{MIDDLE[kind] or parts[1]}/{parts[2]}",)
+    if len(parts) == 2 and parts[0].islower() and parts[1][:1].isupper():
+        return (f"{parts[0]}/{MIDDLE[kind]}/{parts[1]}",)
+    return ()
+
+
+def _string(node: Any) -> str | None:
+    """A plain string literal's text (no escapes, no concatenation)."""
+    if node is None or node.type != "string_literal":
+        return None
+    parts = [c for c in node.children if c.type not in ('"',)]
+    if len(parts) > 1 or (parts and parts[0].type != "string_content"):
+        return None
+    return _text(parts[0]) if parts else ""
+
+
+def _col(node: Any, data: bytes) -> int:
+    """The character column (tree-sitter counts bytes)."""
+    start = node.start_byte - node.start_point[1]
+    return len(data[start : node.start_byte].decode("utf-8", "replace"))
+
+
+def _qos(node: Any, depth: int = 0) -> Qos | None:
+    if depth > 16:
+        return None
+    if node.type == "number_literal":
+        try:
+            return Q.depth_only(int(_text(node).rstrip("uUlL"), 0))
+        except ValueError:
+            return None
+    if node.type != "call_expression":
+        return None
+    func = node.child_by_field_name("function")
+    args_node = node.child_by_field_name("arguments")
+    if func is None or args_node is None:
+        return None
+    args = [c for c in args_node.children if c.type not in ("(", ")", ",")]
+    if func.type == "field_expression":  # a setter: QoS(10).best_effort()
+        base = func.child_by_field_name("argument")
+        field = _text(func.child_by_field_name("field"))
+        inner = _qos(base, depth + 1) if base is not None else None
+        if inner is None:
+            return None
+        if field in Q.CPP_SETTERS:
+            policy, value = Q.CPP_SETTERS[field]
+            return Qos(
+                value if policy == "reliability" else inner.reliability,
+                value if policy == "durability" else inner.durability,
+                inner.depth,
+            )
+        if field in ("keep_last",) and args and args[0].type == "number_literal":
+            return Qos(inner.reliability, inner.durability, int(_text(args[0]), 0))
+        return inner if field in Q.CPP_NEUTRAL else None
+    name = _text(func).split("::")[-1]
+    if name in Q.CPP_PROFILES:
+        return Q.CPP_PROFILES[name]
+    if name == "QoS" and args:
+        first = args[0]
+        text = _text(first)
+        if "rmw_qos_profile_sensor_data" in text:
+            return Q.CPP_PROFILES["SensorDataQoS"]
+        if first.type == "number_literal":
+            return _qos(first, depth + 1)
+        if (
+            first.type == "call_expression"
+            and _text(first.child_by_field_name("function")).split("::")[-1]
+            == "KeepLast"
+        ):
+            inner_args = [
+                c
+                for c in first.child_by_field_name("arguments").children
+                if c.type == "number_literal"
+            ]
+            depth_value = int(_text(inner_args[0]), 0) if inner_args else None
+            return Q.depth_only(depth_value)
+    return None

@@ -1,0 +1,629 @@
+"""The graph endpoints of one Python file, read from its AST (never run).
+
+rclpy's `create_publisher(Type, 'topic', qos)`, `create_subscription`,
+`create_service`, `create_client` (any receiver, as `ros.api_model` lists them),
+`rclpy.action.ActionServer`/`ActionClient`; rospy's `Publisher('t', Type)`,
+`Subscriber`, `Service`, `ServiceProxy`; actionlib's servers and clients.
+
+Interface types are named through the file's imports (`from geometry_msgs.msg
+import Twist`, `import std_msgs.msg as m` ... `m.String`): a class name, or a name
+or `self.x` every assignment of which is one (then each is a possible type: a
+parameter choosing `Twist` or `TwistStamped`); anything else is unknown. Topic
+names are string constants, or names bound to one only. QoS: a depth, rclpy's
+preset profiles, `QoSProfile(reliability=..., durability=...)` with constant
+policies, through a name bound once and never changed.
+
+Which node makes an endpoint: the class of the method it is in (its name from
+`super().__init__('name')`, or from a class of the file it derives from), or the
+variable a node is in (`node = rclpy.create_node('name')`); rospy's
+`init_node('name')` names the file's one node.
+"""
+
+from __future__ import annotations
+
+import ast
+
+from robotfix.astwalk import children, dotted
+from robotfix.astwalk import walk as walk_all
+from robotfix.ros.api_model import (
+    ENDPOINT_CLASSES,
+    ENDPOINT_METHODS,
+    NODE_CONSTRUCTORS,
+    REGISTRATIONS,
+    EndpointCall,
+)
+from robotfix.ros.graph import qos as Q
+from robotfix.ros.graph.model import MIDDLE, SUBSCRIPTION, Endpoint, FileGraph, Qos
+
+MAX_DEPTH = 8  # names followed through names
+CALL_STEPS = 5_000  # values looked at for one call (a name bound 3,000 times to a
+# name bound 3,000 times is 9 million otherwise): past it, unknown
+FILE_STEPS = 200_000  # and for all the calls of a file
+MIDDLES = frozenset({"msg", "srv", "action"})
+_Scope = ast.FunctionDef | ast.AsyncFunctionDef | ast.Module | ast.Lambda
+
+
+class _File:
+    def __init__(self, tree: ast.Module) -> None:
+        self.tree = tree
+        self.imports: dict[str, str] = {}
+        # scope -> name -> the values it is bound to (None: bound otherwise)
+        self.bindings: dict[int, dict[str, list[ast.expr | None]]] = {}
+        # class -> attribute -> values assigned to `self.attr`
+        self.attributes: dict[str, dict[str, list[ast.expr | None]]] = {}
+        self.mutated: set[tuple[int, str]] = set()  # (scope, name) of `x.a = ...`
+        self.params: dict[int, set[str]] = {}
+        self.found = FileGraph()
+        self.bases: dict[str, list[str]] = {}
+        self.rospy = False
+        self.bound: set[int] = set()  # scopes bound (`bind`)
+        self.scope_class: dict[int, str] = {}  # a method's scope -> its class
+        self.steps = 0  # values the call being read may still look at
+        self.left = FILE_STEPS  # what the file's other calls may
+        # functions by name: the module's ("") and each class's methods
+        self.functions: dict[
+            str, dict[str, ast.FunctionDef | ast.AsyncFunctionDef]
+        ] = {}
+
+    def start(self) -> int:
+        """Work for one call's arguments: what is left of the file's, at most
+        `CALL_STEPS` (`spent` takes what it used from the file's)."""
+        self.steps = min(CALL_STEPS, self.left)
+        return self.steps
+
+    def spent(self, given: int) -> None:
+        self.left -= given - max(self.steps, 0)
+
+    # -- names -----------------------------------------------------------------
+    def qualified(self, node: ast.expr) -> str | None:
+        text = dotted(node)
+        if text is None:
+            return None
+        head, _, rest = text.partition(".")
+        if head in self.imports:
+            return self.imports[head] + ("." + rest if rest else "")
+        return None
+
+    def values(
+        self, node: ast.expr, scope: _Scope, cls: str | None
+    ) -> list[ast.expr | None] | None:
+        """What a name or `self.x` is bound to; None if it is no such name."""
+        if isinstance(node, ast.Name):
+            for where in (scope, self.tree):
+                self.bind(where)
+                if node.id in self.params.get(id(where), set()):
+                    return [None]
+                bound = self.bindings.get(id(where), {}).get(node.id)
+                if bound is not None:
+                    if (id(where), node.id) in self.mutated:
+                        return [None]
+                    return bound
+            return None
+        if (
+            isinstance(node, ast.Attribute)
+            and isinstance(node.value, ast.Name)
+            and node.value.id == "self"
+            and cls is not None
+        ):
+            return self._attribute(cls, node.attr, 0)
+        return None
+
+    def bind(self, scope: _Scope) -> None:
+        """The scope's bindings (and, for a method, its class's `self.x`), made
+        when a call's argument first needs them: most files never do."""
+        if id(scope) not in self.bound:
+            self.bound.add(id(scope))
+            _bind_scope(self, scope, self.scope_class.get(id(scope)))
+
+    def _attribute(
+        self, cls: str, attr: str, depth: int
+    ) -> list[ast.expr | None] | None:
+        for method in self.functions.get(cls, {}).values():
+            self.bind(method)
+        found = self.attributes.get(cls, {}).get(attr)
+        if found is not None:
+            return found
+        if depth > MAX_DEPTH:
+            return [None]
+        for base in self.bases.get(cls, []):
+            found = self._attribute(base, attr, depth + 1)
+            if found is not None:
+                return found
+        return None
+
+    # -- types, strings, profiles -------------------------------------------------
+    def types(
+        self, node: ast.expr, scope: _Scope, cls: str | None, kind: str, depth: int = 0
+    ) -> set[str] | None:
+        self.steps -= 1
+        if depth > MAX_DEPTH or self.steps < 0:
+            return None
+        if isinstance(node, ast.IfExp):
+            a = self.types(node.body, scope, cls, kind, depth + 1)
+            b = self.types(node.orelse, scope, cls, kind, depth + 1)
+            return a | b if a is not None and b is not None else None
+        bound = self.values(node, scope, cls)
+        if bound is not None:
+            out: set[str] = set()
+            for value in bound:
+                one = (
+                    None
+                    if value is None
+                    else self.types(value, scope, cls, kind, depth + 1)
+                )
+                if one is None:
+                    return None
+                out |= one
+            return out
+        name = self.qualified(node)
+        if name is None:
+            return None
+        parts = name.split(".")
+        if len(parts) == 3 and parts[1] in MIDDLES:
+            return {f"{parts[0]}/{MIDDLE[kind] or parts[1]}/{parts[2]}"}
+        if len(parts) == 4 and parts[1] in MIDDLES and parts[2].startswith("_"):
+            return {f"{parts[0]}/{MIDDLE[kind] or parts[1]}/{parts[3]}"}
+        return None
+
+    def string(
+        self, node: ast.expr, scope: _Scope, cls: str | None, depth: int = 0
+    ) -> str | None:
+        if isinstance(node, ast.Constant):
+            return node.value if isinstance(node.value, str) else None
+        self.steps -= 1
+        if depth > MAX_DEPTH or self.steps < 0:
+            return None
+        bound = self.values(node, scope, cls)
+        if not bound:
+            return None
+        found = {
+            None if v is None else self.string(v, scope, cls, depth + 1) for v in bound
+        }
+        return found.pop() if len(found) == 1 else None
+
+    def profile(
+        self, node: ast.expr, scope: _Scope, cls: str | None, depth: int = 0
+    ) -> Qos | None:
+        self.steps -= 1
+        if depth > MAX_DEPTH or self.steps < 0:
+            return None
+        if isinstance(node, ast.Constant):
+            if type(node.value) is int:
+                return Q.depth_only(node.value)
+            return None
+        if isinstance(node, ast.IfExp):
+            a = self.profile(node.body, scope, cls, depth + 1)
+            b = self.profile(node.orelse, scope, cls, depth + 1)
+            return a if a == b else None
+        bound = self.values(node, scope, cls)
+        if bound is not None:
+            found = {
+                None if v is None else self.profile(v, scope, cls, depth + 1)
+                for v in bound
+            }
+            return found.pop() if len(found) == 1 else None
+        if isinstance(node, ast.Attribute) and node.attr == "value":
+            node = node.value  # QoSPresetProfiles.SENSOR_DATA.value
+        name = self.qualified(node)
+        if name is not None and name.startswith("rclpy.qos."):
+            return Q.PY_PROFILES.get(name.rsplit(".", 1)[-1])
+        if isinstance(node, ast.Call):
+            called = self.qualified(node.func)
+            if called == "rclpy.qos.QoSProfile":
+                return self._qos_profile(node)
+        return None
+
+    def _qos_profile(self, call: ast.Call) -> Qos | None:
+        fields: dict[str, str | None] = {
+            "reliability": Q.RELIABLE,
+            "durability": Q.VOLATILE,
+        }
+        depth = None
+        for keyword in call.keywords:
+            if keyword.arg is None:
+                return None  # **kwargs
+            if keyword.arg == "depth":
+                value = keyword.value
+                depth = (
+                    value.value
+                    if isinstance(value, ast.Constant) and type(value.value) is int
+                    else None
+                )
+            elif keyword.arg in ("reliability", "durability"):
+                text = dotted(keyword.value)
+                policy = Q.POLICIES.get(text.rsplit(".", 1)[-1]) if text else None
+                if policy is None or policy[0] not in ("", keyword.arg):
+                    fields[keyword.arg] = None
+                else:
+                    fields[keyword.arg] = policy[1]
+        return Qos(fields["reliability"], fields["durability"], depth)
+
+
+def _argument(call: ast.Call, where: tuple[int, str]) -> ast.expr | None:
+    position, keyword = where
+    for item in call.keywords:
+        if item.arg == keyword:
+            return item.value
+    if any(isinstance(a, ast.Starred) for a in call.args[: position + 1]):
+        return None
+    return call.args[position] if position < len(call.args) else None
+
+
+def read_python(tree: ast.Module) -> FileGraph:
+    """The endpoints and node names of a module's code."""
+    found = _File(tree)
+    _bind(found)
+    _visit(found, tree.body, tree, None)
+    super_names(tree, found.found)
+    found.found.ros = 1 if found.rospy else 2
+    return found.found
+
+
+def _bind(file: _File) -> None:
+    """Imports, every scope's bindings, `self.x` assignments, class bases."""
+    for node in walk_all(file.tree):  # a class before its methods
+        if isinstance(node, ast.Import):
+            for alias in node.names:
+                if alias.asname:
+                    file.imports[alias.asname] = alias.name
+                else:
+                    head = alias.name.split(".")[0]
+                    file.imports[head] = head
+            if any(a.name == "rospy" for a in node.names):
+                file.rospy = True
+        elif isinstance(node, ast.ImportFrom) and node.module and not node.level:
+            for alias in node.names:
+                file.imports[alias.asname or alias.name] = f"{node.module}.{alias.name}"
+            if node.module == "rospy" or node.module.startswith("rospy."):
+                file.rospy = True
+        elif isinstance(node, ast.ClassDef):
+            file.bases[node.name] = [
+                b.id for b in node.bases if isinstance(b, ast.Name)
+            ]
+            for item in node.body:
+                if isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                    file.scope_class[id(item)] = node.name
+                    file.functions.setdefault(node.name, {})[item.name] = item
+    for item in file.tree.body:
+        if isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            file.functions.setdefault("", {})[item.name] = item
+
+
+def _bind_scope(file: _File, scope: _Scope, cls: str | None) -> None:
+    if isinstance(scope, ast.Lambda):
+        return  # its names are its parameters (`_visit`)
+    names: dict[str, list[ast.expr | None]] = {}
+    if not isinstance(scope, ast.Module):
+        args = scope.args
+        file.params[id(scope)] = {
+            a.arg for a in [*args.posonlyargs, *args.args, *args.kwonlyargs]
+        } | {a.arg for a in (args.vararg, args.kwarg) if a is not None}
+    todo: list[ast.AST] = list(scope.body)
+    while todo:
+        node = todo.pop()
+        if isinstance(
+            node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)
+        ):  # their own scopes; a name here, and what they may store in `self.x`
+            if not isinstance(node, ast.Lambda):
+                names.setdefault(node.name, []).append(None)
+            if cls is not None:
+                for inner in walk_all(node):
+                    if (
+                        isinstance(inner, ast.Attribute)
+                        and isinstance(inner.ctx, ast.Store)
+                        and isinstance(inner.value, ast.Name)
+                        and inner.value.id == "self"
+                    ):
+                        attributes = file.attributes.setdefault(cls, {})
+                        attributes.setdefault(inner.attr, []).append(None)
+            continue
+        if isinstance(node, (ast.Assign, ast.AnnAssign)):
+            targets = node.targets if isinstance(node, ast.Assign) else [node.target]
+            value = node.value
+            for target in targets:
+                if isinstance(target, ast.Name):
+                    names.setdefault(target.id, []).append(value)
+                elif isinstance(target, ast.Attribute) and isinstance(
+                    target.value, ast.Name
+                ):
+                    if target.value.id == "self" and cls is not None:
+                        file.attributes.setdefault(cls, {}).setdefault(
+                            target.attr, []
+                        ).append(value)
+                    else:
+                        file.mutated.add((id(scope), target.value.id))
+                else:  # a, b = ...: each bound otherwise
+                    for inner in walk_all(target):
+                        if isinstance(inner, ast.Name):
+                            names.setdefault(inner.id, []).append(None)
+                        elif (
+                            isinstance(inner, ast.Attribute)
+                            and isinstance(inner.value, ast.Name)
+                            and inner.value.id == "self"
+                            and cls is not None
+                        ):
+                            file.attributes.setdefault(cls, {}).setdefault(
+                                inner.attr, []
+                            ).append(None)
+        elif isinstance(node, ast.Name) and isinstance(node.ctx, (ast.Store, ast.Del)):
+            names.setdefault(node.id, []).append(None)  # for, with, walrus, del
+        elif (
+            isinstance(node, ast.Attribute)
+            and isinstance(node.ctx, ast.Store)
+            and isinstance(node.value, ast.Name)
+        ):
+            if node.value.id == "self" and cls is not None:
+                file.attributes.setdefault(cls, {}).setdefault(node.attr, []).append(
+                    None
+                )
+            else:
+                file.mutated.add((id(scope), node.value.id))
+        if isinstance(node, (ast.Assign, ast.AnnAssign)):
+            if node.value is not None:
+                todo.append(node.value)
+            continue
+        if isinstance(node, ast.AugAssign):
+            target = node.target
+            if isinstance(target, ast.Name):
+                names.setdefault(target.id, []).append(None)
+            todo.append(node.value)
+            continue
+        for child in ast.iter_child_nodes(node):
+            todo.append(child)
+    file.bindings[id(scope)] = names
+
+
+def _visit(file: _File, body: list[ast.stmt], scope: _Scope, cls: str | None) -> None:
+    """The endpoint and node calls of `body`, each with the scope its names are
+    looked up in: a nested function or lambda is a scope of its own."""
+    for statement in body:
+        if isinstance(statement, ast.ClassDef):
+            _visit(file, statement.body, scope, statement.name)
+            continue
+        if isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            _visit(file, statement.body, statement, cls)
+            continue
+        todo: list[tuple[ast.AST, _Scope]] = [(statement, scope)]
+        while todo:
+            node, where = todo.pop()
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                _visit(file, node.body, node, cls)
+                continue
+            if isinstance(node, ast.ClassDef):
+                _visit(file, node.body, where, node.name)
+                continue
+            if isinstance(node, ast.Lambda):
+                args = node.args
+                file.params[id(node)] = {
+                    a.arg for a in [*args.posonlyargs, *args.args, *args.kwonlyargs]
+                }
+                file.bound.add(id(node))  # its names: its parameters only
+                todo.append((node.body, node))
+                continue
+            if isinstance(node, ast.Call):
+                _call(file, node, where, cls, statement)
+            todo.extend((child, where) for child in children(node))
+
+
+def _call(
+    file: _File, call: ast.Call, scope: _Scope, cls: str | None, statement: ast.stmt
+) -> None:
+    func = call.func
+    spec: EndpointCall | None = None
+    owner = cls or ""
+    if isinstance(func, ast.Attribute) and func.attr in ENDPOINT_METHODS:
+        spec = ENDPOINT_METHODS[func.attr]
+        receiver = func.value
+        if not (isinstance(receiver, ast.Name) and receiver.id == "self"):
+            text = dotted(receiver)
+            owner = text or ""
+    else:
+        called = file.qualified(func)
+        if called in ENDPOINT_CLASSES:
+            spec = ENDPOINT_CLASSES[called]
+            if spec.ros == 2:  # ActionServer(node, ...): the node is the first
+                node = _argument(call, (0, "node"))
+                text = dotted(node) if node is not None else None
+                if text and text != "self":
+                    owner = text
+        elif called is not None:
+            _node_call(file, call, called, scope, cls, statement)
+            return
+    if spec is None:
+        return
+    if spec.ros == 1:
+        owner = ""
+    given = file.start()
+    type_node = _argument(call, spec.type_arg)
+    name_node = _argument(call, spec.name_arg)
+    types = (
+        file.types(type_node, scope, cls, spec.kind) if type_node is not None else None
+    )
+    name = file.string(name_node, scope, cls) if name_node is not None else None
+    profile = None
+    if spec.qos_arg is not None:
+        qos_node = _argument(call, spec.qos_arg)
+        if qos_node is not None:
+            profile = file.profile(qos_node, scope, cls)
+            if profile is not None and any(
+                k.arg == "qos_overriding_options" for k in call.keywords
+            ):
+                profile = Qos(
+                    profile.reliability, profile.durability, profile.depth, False
+                )
+    file.spent(given)
+    contract = None
+    if spec.kind == SUBSCRIPTION:
+        callback = _argument(
+            call,
+            REGISTRATIONS[
+                "Subscriber" if spec.ros == 1 else "create_subscription"
+            ].callback_arg,
+        )
+        contract = _contract(file, callback, cls) if callback is not None else None
+    file.found.endpoints.append(
+        Endpoint(
+            spec.kind,
+            name,
+            tuple(sorted(types or ())),
+            call.lineno,
+            call.col_offset,
+            owner,
+            profile,
+            spec.ros,
+            contract=contract,
+            holder=_holder(statement, call),
+        )
+    )
+
+
+def _holder(statement: ast.stmt, call: ast.Call) -> str:
+    """`self.pub` of `self.pub = self.create_publisher(...)`; "" otherwise."""
+    if isinstance(statement, ast.Assign) and len(statement.targets) == 1:
+        target: ast.expr = statement.targets[0]
+    elif isinstance(statement, ast.AnnAssign):
+        target = statement.target
+    else:
+        return ""
+    return (dotted(target) or "") if statement.value is call else ""
+
+
+def _contract(file: _File, callback: ast.expr, cls: str | None) -> str | None:
+    """The refinement a subscription's callback declares on the message it takes
+    (`def on_cmd(self, msg: Annotated[Twist, "abs(linear.x) <= 0.5"])`), as
+    written; None without one (or when the callback is not a function of the
+    file)."""
+    function = None
+    if isinstance(callback, ast.Name):
+        function = file.functions.get("", {}).get(callback.id)
+        first = 0
+    elif (
+        isinstance(callback, ast.Attribute)
+        and isinstance(callback.value, ast.Name)
+        and callback.value.id == "self"
+        and cls is not None
+    ):
+        seen: set[str] = set()
+        todo = [cls]
+        while todo and function is None:
+            owner = todo.pop(0)
+            if owner in seen:
+                continue
+            seen.add(owner)
+            function = file.functions.get(owner, {}).get(callback.attr)
+            todo += file.bases.get(owner, [])
+        first = 1
+    if function is None:
+        return None
+    params = [*function.args.posonlyargs, *function.args.args]
+    if len(params) <= first:
+        return None
+    annotation = params[first].annotation
+    if not (
+        isinstance(annotation, ast.Subscript)
+        and (dotted(annotation.value) or "").rsplit(".", 1)[-1] == "Annotated"
+        and isinstance(annotation.slice, ast.Tuple)
+    ):
+        return None
+    texts = [
+        e.value
+        for e in annotation.slice.elts[1:]
+        if isinstance(e, ast.Constant) and isinstance(e.value, str)
+    ]
+    return " and ".join(f"({t})" if len(texts) > 1 else t for t in texts) or None
+
+
+def _node_call(
+    file: _File,
+    call: ast.Call,
+    called: str,
+    scope: _Scope,
+    cls: str | None,
+    statement: ast.stmt,
+) -> None:
+    """A node's name: `super().__init__('name')` in a class, `x = Node('name')`,
+    `rospy.init_node('name')`."""
+    last = called.rsplit(".", 1)[-1]
+    if called == "rospy.init_node":
+        name = _node_name(file, call, scope, cls)
+        anonymous = any(
+            k.arg == "anonymous"
+            and not (isinstance(k.value, ast.Constant) and not k.value.value)
+            for k in call.keywords
+        )
+        if name is not None and not anonymous:
+            file.found.nodes.setdefault("", []).append(name)
+        return
+    if (
+        called.startswith("rclpy.")
+        and last in NODE_CONSTRUCTORS
+        and isinstance(statement, ast.Assign)
+        and statement.value is call
+    ):
+        for target in statement.targets:
+            text = dotted(target)
+            owner = text[5:] if text and text.startswith("self.") else text
+            name = _node_name(file, call, scope, cls)
+            if owner and name is not None:
+                file.found.nodes.setdefault(owner, []).append(name)
+
+
+def _node_name(
+    file: _File, call: ast.Call, scope: _Scope, cls: str | None
+) -> str | None:
+    node = _argument(call, (0, "node_name"))
+    if node is None:
+        node = _argument(call, (0, "name"))
+    given = file.start()
+    found = file.string(node, scope, cls) if node is not None else None
+    file.spent(given)
+    return found
+
+
+def super_names(tree: ast.Module, file: FileGraph) -> None:
+    """Each class's node name from `super().__init__('name')` (or
+    `Base.__init__(self, 'name')`), and what a class of the file derives from one."""
+    classes: dict[str, ast.ClassDef] = {
+        n.name: n for n in tree.body if isinstance(n, ast.ClassDef)
+    }
+    for name, cls in classes.items():
+        for node in walk_all(cls):
+            if not (
+                isinstance(node, ast.Call)
+                and isinstance(node.func, ast.Attribute)
+                and node.func.attr == "__init__"
+            ):
+                continue
+            receiver = node.func.value
+            args = list(node.args)
+            if isinstance(receiver, ast.Call) and dotted(receiver.func) == "super":
+                pass
+            elif (
+                isinstance(receiver, ast.Name)
+                and args
+                and isinstance(args[0], ast.Name)
+                and args[0].id == "self"
+            ):
+                args = args[1:]
+            else:
+                continue
+            value = None
+            for keyword in node.keywords:
+                if keyword.arg == "node_name":
+                    value = keyword.value
+            if value is None and args:
+                value = args[0]
+            if isinstance(value, ast.Constant) and isinstance(value.value, str):
+                file.nodes.setdefault(name, []).append(value.value)
+    for name, cls in classes.items():
+        seen = {name}
+        todo = [b.id for b in cls.bases if isinstance(b, ast.Name)]
+        while todo and name not in file.nodes:
+            base = todo.pop()
+            if base in seen:
+                continue
+            seen.add(base)
+            if base in file.nodes:
+                file.nodes[name] = list(file.nodes[base])
+            elif base in classes:
+                todo += [b.id for b in classes[base].bases if isinstance(b, ast.Name)]

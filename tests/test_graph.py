@@ -1,0 +1,490 @@
+"""The static ROS graph (issue 23, section 2): the small workspaces under
+tests/cases/graph/ (modelled on turtlebot3, nav2_bringup, ros2/demos and
+ros_tutorials' turtlesim) with inline expectations in their Python, C++
+(`// error: RF603`) and launch files (strict: every diagnostic of the run), each
+with a clean near miss (a remapping that makes names match, a relative name under
+a namespace, a private topic, a type a parameter chooses); name resolution, QoS,
+the extractors on their own, the cache and `-j`, and `robotfix graph`."""
+
+from __future__ import annotations
+
+import ast
+import json
+import shutil
+from pathlib import Path
+
+import pytest
+
+from robotfix import run as run_module
+from robotfix.api import check_paths
+from robotfix.cli import main
+from robotfix.config import Config
+from robotfix.graphcheck import graph_paths
+from robotfix.ros.graph import qos as Q
+from robotfix.ros.graph.cpp import MAX_CPP_BYTES, read_cpp
+from robotfix.ros.graph.model import Endpoint, FileGraph, Qos, dump, load
+from robotfix.ros.graph.names import expand, remap
+from robotfix.ros.graph.python import read_python
+from robotfix.testing.expectations import compare_files
+
+CASES = Path(__file__).parent / "cases" / "graph"
+SUFFIXES = (".py", ".yaml", ".xml", ".launch", ".cpp", ".hpp")
+GRAPH_CODES = ("RF603", "RF604", "RF605", "RF606", "RF607")
+
+
+def files_of(root: Path) -> list[Path]:
+    return sorted(p for p in root.rglob("*") if p.name.endswith(SUFFIXES))
+
+
+@pytest.mark.parametrize(
+    "workspace", sorted(p for p in CASES.iterdir() if p.is_dir()), ids=lambda p: p.name
+)
+def test_graph_findings_of_a_workspace(workspace: Path) -> None:
+    found = check_paths([workspace], Config(root=workspace)).diagnostics
+    problems = compare_files(files_of(workspace), found)
+    assert not problems, "\n".join(problems)
+
+
+def _lines(root: Path, jobs: int = 1, cache: bool = False) -> list[str]:
+    result = check_paths([root], Config(root=root), jobs=jobs, use_cache=cache)
+    return [
+        f"{Path(d.path).relative_to(root)}:{d.span.line}:{d.code}:{d.message}"
+        for d in result.diagnostics
+    ]
+
+
+@pytest.mark.parametrize(
+    ("workspace", "code", "count", "reread"),
+    [
+        ("ros2_robot", "RF603", 2, set()),
+        # publishers whose subscribers' contracts are checked again on every run
+        ("ros2_contracts", "RF101", 1, {"joystick.py", "planner.py", "teleop.py"}),
+    ],
+)
+def test_jobs_and_the_cache_give_the_same_graph(
+    tmp_path: Path,
+    monkeypatch: pytest.MonkeyPatch,
+    workspace: str,
+    code: str,
+    count: int,
+    reread: set[str],
+) -> None:
+    """Endpoints extracted in worker processes, or kept in the result cache, make
+    the graph (and its contracts' findings) one process makes without the cache."""
+    monkeypatch.setattr(run_module, "MIN_PARALLEL", 1)
+    root = tmp_path / "ws"
+    shutil.copytree(CASES / workspace, root)
+    one = _lines(root)
+    assert sum(f":{code}:" in line for line in one) == count
+    assert _lines(root, jobs=2) == one
+    assert _lines(root, jobs=2, cache=True) == one
+    reads: list[str] = []
+    real = run_module.read_regular
+
+    def counting(path: Path, *args: object, **kwargs: object) -> bytes:
+        reads.append(str(path))
+        return real(path, *args, **kwargs)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(run_module, "read_regular", counting)
+    assert _lines(root, jobs=1, cache=True) == one  # the endpoints from the cache
+    assert {Path(r).name for r in reads if r.endswith(".py")} == reread
+
+
+def test_a_single_file_gets_no_graph_findings() -> None:
+    """The graph is the workspace's: a file checked alone (or in an editor) would
+    get notes that depend on what was opened."""
+    node = CASES / "ros2_robot" / "keyboard_teleop" / "keyboard_teleop" / "monitor.py"
+    found = check_paths([node], Config(root=node.parent)).diagnostics
+    assert not [d for d in found if d.code in GRAPH_CODES]
+
+
+def test_graph_findings_are_suppressed_on_their_line(tmp_path: Path) -> None:
+    """`# robotfix: ignore[RF603]` (Python) and `// robotfix: ignore[...]` (C++)
+    silence a graph finding, and the file's own check does not call the Python
+    one unused (RF010): the graph check, after it, uses it."""
+    root = tmp_path / "ws"
+    shutil.copytree(CASES / "ros2_robot", root)
+    monitor = root / "keyboard_teleop" / "keyboard_teleop" / "monitor.py"
+    monitor.write_text(
+        monitor.read_text().replace(
+            "self.create_subscription(  # error: RF603",
+            "self.create_subscription(  # robotfix: ignore[RF603]",
+        )
+    )
+    driver = root / "base_driver" / "src" / "driver.cpp"
+    driver.write_text(
+        driver.read_text().replace(
+            "// error: RF603", "// robotfix: ignore[topic-type-mismatch]"
+        )
+    )
+    found = check_paths([root], Config(root=root)).diagnostics
+    assert not [d for d in found if d.code in ("RF603", "RF010")]
+    assert [d.code for d in found if d.code == "RF604"] == ["RF604", "RF604"]
+
+
+def test_names_resolve_as_ros_resolves_them() -> None:
+    assert expand("cmd_vel", "/robot1", "teleop") == "/robot1/cmd_vel"
+    assert expand("/scan", "/robot1", "teleop") == "/scan"
+    assert expand("~/status", "/robot1", "driver") == "/robot1/driver/status"
+    assert expand("~status", "/", "driver") == "/driver/status"  # ROS 1
+    assert expand("cmd_vel", "/", "x", handle="~") == "/x/cmd_vel"  # NodeHandle("~")
+    assert expand("cmd_vel", None, "x") is None  # a namespace set at launch time
+    assert expand("~/x", "/", None) is None  # a private name of an unknown node
+    assert expand("{node}/x", "/", "n") is None
+    rules = [("cmd_vel", "base/cmd_vel")]
+    assert remap("/robot1/cmd_vel", rules, "/robot1", "t") == (
+        "/robot1/base/cmd_vel",
+        False,
+    )
+    assert remap("/robot1/odom", rules, "/robot1", "t") == ("/robot1/odom", False)
+    # a rule one side of which is computed may match anything: not certain
+    assert remap("/odom", [(None, "x")], "/", "t") == ("/odom", True)
+
+
+def test_qos_compatibility_follows_the_ros_2_table() -> None:
+    sensor = Q.PY_PROFILES["qos_profile_sensor_data"]
+    reliable = Q.depth_only(10)
+    latched = Qos(Q.RELIABLE, Q.TRANSIENT_LOCAL, 1)
+    assert Q.incompatible(sensor, reliable)  # best-effort publisher, reliable sub
+    assert not Q.incompatible(reliable, sensor)  # the other way round connects
+    assert Q.incompatible(reliable, latched)  # volatile publisher, latched sub
+    assert not Q.incompatible(latched, reliable)
+    unknown = Q.PY_PROFILES["qos_profile_system_default"]
+    assert not Q.incompatible(unknown, latched)
+
+
+def write(path: Path, text: str) -> Path:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+PACKAGE = """<?xml version="1.0"?>
+<package format="3"><name>{0}</name><version>0.1.0</version>
+<description>x</description><maintainer email="a@b.c">a</maintainer>
+<license>MIT</license></package>
+"""
+
+
+def test_an_overridable_profile_is_a_warning_and_unlaunched_nodes_of_one_package_too(
+    tmp_path: Path,
+) -> None:
+    """RF605: a QoS the user may override by parameter (`qos_overriding_options`);
+    two nodes of one package no launch file starts: RF603 and RF605 are warnings."""
+    write(tmp_path / "demo" / "package.xml", PACKAGE.format("demo"))
+    write(
+        tmp_path / "demo" / "demo" / "talker.py",
+        "from rclpy.node import Node\n"
+        "from rclpy.qos import qos_profile_sensor_data\n"
+        "from std_msgs.msg import String\n"
+        "class Talker(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('talker')\n"
+        "        self.create_publisher(String, 'chatter', qos_profile_sensor_data)\n"
+        "        self.create_publisher(String, 'other', 10)\n",
+    )
+    write(
+        tmp_path / "demo" / "demo" / "listener.py",
+        "from rclpy.node import Node\n"
+        "from rclpy.qos import QoSOverridingOptions\n"
+        "from std_msgs.msg import String, Int32\n"
+        "class Listener(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('listener')\n"
+        "        options = QoSOverridingOptions.with_default_policies()\n"
+        "        self.create_subscription(String, 'chatter', print, 10,\n"
+        "            qos_overriding_options=options)\n"
+        "        self.create_subscription(Int32, 'other', print, 10)\n",
+    )
+    found = check_paths([tmp_path], Config(root=tmp_path)).diagnostics
+    shown = sorted(
+        (Path(d.path).name, d.span.line, d.code, d.severity.value)
+        for d in found
+        if d.code in GRAPH_CODES
+    )
+    assert shown == [
+        ("listener.py", 8, "RF605", "warning"),
+        ("listener.py", 10, "RF603", "warning"),
+        ("talker.py", 8, "RF603", "warning"),
+    ]
+
+
+def test_programs_of_different_packages_or_test_code_are_never_compared(
+    tmp_path: Path,
+) -> None:
+    """A repository's demos (ros2/demos' rclcpp and rclpy QoS demos use one topic
+    name with two types) and test code's throwaway nodes are not one system."""
+    for package, kind in (("demo_a", "String"), ("demo_b", "Int32")):
+        write(tmp_path / package / "package.xml", PACKAGE.format(package))
+        write(
+            tmp_path / package / package / "node.py",
+            f"from rclpy.node import Node\nfrom std_msgs.msg import {kind}\n"
+            "class N(Node):\n    def __init__(self):\n"
+            f"        super().__init__('{package}')\n"
+            f"        self.create_publisher({kind}, '/chatter', 10)\n",
+        )
+    write(
+        tmp_path / "demo_a" / "test" / "test_node.py",
+        "from rclpy.node import Node\nfrom std_msgs.msg import Bool\n"
+        "def test_it(node: Node):\n"
+        "    node.create_subscription(Bool, '/chatter', print, 10)\n",
+    )
+    found = check_paths([tmp_path], Config(root=tmp_path)).diagnostics
+    assert not [d for d in found if d.code in GRAPH_CODES]
+
+
+def _py(text: str) -> FileGraph:
+    return read_python(ast.parse(text))
+
+
+def test_python_types_through_imports_names_and_choices() -> None:
+    found = _py(
+        "import std_msgs.msg as m\n"
+        "from geometry_msgs import msg as g\n"
+        "from rclpy.node import Node\n"
+        "from rclpy.qos import QoSProfile, ReliabilityPolicy\n"
+        "BEST = QoSProfile(depth=3, reliability=ReliabilityPolicy.BEST_EFFORT)\n"
+        "TOPIC = 'out'\n"
+        "class N(Node):\n"
+        "    def __init__(self, stamped):\n"
+        "        super().__init__('n')\n"
+        "        kind = g.TwistStamped if stamped else g.Twist\n"
+        "        self.create_publisher(m.String, TOPIC, BEST)\n"
+        "        self.create_publisher(kind, 'cmd', 1)\n"
+        "        self.create_publisher(stamped, 'x', 1)\n"  # a parameter: unknown
+    )
+    got = [(e.name, e.types, e.qos) for e in found.endpoints]
+    assert got == [
+        ("out", ("std_msgs/msg/String",), Qos(Q.BEST_EFFORT, Q.VOLATILE, 3)),
+        (
+            "cmd",
+            ("geometry_msgs/msg/Twist", "geometry_msgs/msg/TwistStamped"),
+            Q.depth_only(1),
+        ),
+        ("x", (), Q.depth_only(1)),
+    ]
+    assert found.nodes == {"N": ["n"]}
+
+
+def test_a_changed_qos_object_is_unknown() -> None:
+    found = _py(
+        "from rclpy.qos import QoSProfile\nfrom std_msgs.msg import String\n"
+        "def main(node):\n"
+        "    qos = QoSProfile(depth=1)\n"
+        "    qos.durability = 1\n"
+        "    node.create_publisher(String, 'x', qos)\n"
+    )
+    assert found.endpoints[0].qos is None
+
+
+CPP = b"""
+#include "rclcpp/rclcpp.hpp"
+using geometry_msgs::msg::Twist;
+class Driver : public rclcpp::Node {
+ public:
+  Driver() : Node("driver") {
+    pub_ = create_publisher<Twist>(
+      "cmd", rclcpp::QoS(rclcpp::KeepLast(5)).best_effort());
+    auto c = rclcpp_action::create_client<nav2_msgs::action::NavigateToPose>(
+      this, "navigate");
+    declare_parameter("speed", 0.5);
+    create_publisher<std_msgs::msg::String>(topic_name_, 10);
+  }
+};
+int main(int argc, char ** argv) {
+  auto node = rclcpp::Node::make_shared("helper");
+  node->create_subscription<std_msgs::msg::String>(
+    "chatter", rclcpp::SensorDataQoS(), cb);
+}
+"""
+
+
+def test_cpp_endpoints_with_tree_sitter() -> None:
+    found = read_cpp(CPP)
+    got = [(e.kind, e.name, e.types, e.owner, e.qos) for e in found.endpoints]
+    assert got == [
+        (
+            "publisher",
+            "cmd",
+            ("geometry_msgs/msg/Twist",),
+            "Driver",
+            Qos(Q.BEST_EFFORT, Q.VOLATILE, 5),
+        ),
+        (
+            "action_client",
+            "navigate",
+            ("nav2_msgs/action/NavigateToPose",),
+            "Driver",
+            None,
+        ),
+        ("parameter", "speed", (), "Driver", None),
+        ("publisher", None, ("std_msgs/msg/String",), "Driver", Q.depth_only(10)),
+        (
+            "subscription",
+            "chatter",
+            ("std_msgs/msg/String",),
+            "node",
+            Q.CPP_PROFILES["SensorDataQoS"],
+        ),
+    ]
+    assert found.nodes == {"Driver": ["driver"], "node": ["helper"]}
+    assert found.endpoints[2].value == "0.5"
+
+
+@pytest.mark.parametrize(
+    "data",
+    [
+        b"\xff\xfe\x00garbage {{{{ create_publisher<(",
+        b'class A { void f() { create_publisher<T>("x", 10 ',  # cut off
+        b"int f() { return " + b"(" * 50_000 + b"1" + b")" * 50_000 + b"; }",
+        b"x" * (MAX_CPP_BYTES + 1),
+    ],
+    ids=["garbage", "unfinished", "deep", "huge"],
+)
+def test_bad_cpp_never_fails(data: bytes) -> None:
+    found = read_cpp(data)
+    assert isinstance(found, FileGraph)
+
+
+def test_the_cached_form_round_trips_and_refuses_anything_else() -> None:
+    found = FileGraph(
+        [Endpoint("publisher", "x", ("a/msg/B",), 3, 4, "N", Qos(None, Q.VOLATILE, 1))],
+        {"N": ["n"]},
+    )
+    assert load(json.loads(json.dumps(dump(found)))) == found
+    raw = dump(found)
+    raw[2][0][0] = "nonsense"
+    assert load(raw) is None
+    assert load([2, {}, [["publisher"]]]) is None
+    assert load("x") is None
+
+
+def test_graph_command_formats(capsys: pytest.CaptureFixture[str]) -> None:
+    root = CASES / "ros2_robot"
+    assert main(["graph", str(root), "--format", "json"]) == 1  # RF603, RF604
+    data = json.loads(capsys.readouterr().out)
+    assert {f["code"] for f in data["findings"]} == {"RF603", "RF604", "RF606", "RF607"}
+    driver = [n for n in data["nodes"] if n["qualified"] == "/robot1/driver"]
+    assert driver and driver[0]["launch"] is not None
+    contracts = {e["resolved"]: e["contract"] for e in data["endpoints"]}
+    assert contracts["/robot1/odom"] == "abs(twist.twist.linear.x) <= 0.5"
+    marked = [e for e in data["endpoints"] if "RF603" in e["findings"]]
+    assert {e["resolved"] for e in marked} == {"/robot1/base/cmd_vel"}
+    main(["graph", str(root), "--format", "dot"])
+    dot = capsys.readouterr().out
+    assert (
+        dot.startswith("digraph") and 'color=red, fontcolor=red, label="RF603"' in dot
+    )
+    main(["graph", str(root), "--format", "mermaid"])
+    mermaid = capsys.readouterr().out
+    assert mermaid.startswith("flowchart LR") and "linkStyle" in mermaid
+    main(["graph", str(root)])
+    text = capsys.readouterr().out
+    assert "/robot1/teleop" in text and "!RF603" in text
+    assert "assumes `abs(twist.twist.linear.x) <= 0.5`" in text
+
+
+def test_graph_paths_is_the_checks_graph() -> None:
+    """`robotfix graph` parses what the check would: the same findings."""
+    root = CASES / "ros1_turtles"
+    graph = graph_paths([root], Config(root=root))
+    checked = check_paths([root], Config(root=root)).diagnostics
+    assert sorted(graph.diagnostics(), key=lambda d: d.sort_key()) == [
+        d for d in checked if d.code in GRAPH_CODES
+    ]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "set(a ${a}${a})\n" * 40_000,  # doubles a value 40,000 times
+        "function(x)\n" * 80_000,  # openings never closed
+        "function(f a)\nf(${a}${a})\nf(${a}${a})\nendfunction()\nf(x)\n",
+        "function(x y)\nadd_executable(${y} a.cpp)\nendfunction()\n"
+        + "x(z)\n" * 50_000,
+    ],
+    ids=["doubling", "unclosed", "recursive", "many-calls"],
+)
+def test_hostile_cmake_is_read_in_bounded_work(tmp_path: Path, text: str) -> None:
+    """CMake is read, never run: a value too long is unknown, a function's calls
+    nest 4 deep at most, and the commands read count against a budget."""
+    from robotfix.ros.executables import cpp_executable_files
+
+    write(tmp_path / "CMakeLists.txt", text)
+    assert cpp_executable_files(tmp_path, "z") == []
+
+
+def test_python_names_are_followed_in_bounded_work() -> None:
+    """A name bound 3,000 times to a name bound 3,000 times: the call's type is
+    unknown once its budget is spent; the file's other calls still get theirs."""
+    text = (
+        "from std_msgs.msg import String\n"
+        + "y = String\n" * 3000
+        + "x = y\n" * 3000
+        + "def f(node):\n"
+        + "    node.create_publisher(x, 't', 1)\n"
+        + "    node.create_publisher(String, 't', 1)\n"
+    )
+    found = _py(text)
+    assert [e.types for e in found.endpoints] == [(), ("std_msgs/msg/String",)]
+
+
+def test_nested_scopes_are_their_own() -> None:
+    """A nested function's parameter hides the outer name, and what a nested
+    function stores in `self.x` is one more binding of it."""
+    found = _py(
+        "from geometry_msgs.msg import Twist, TwistStamped\n"
+        "from rclpy.node import Node\n"
+        "class N(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('n')\n"
+        "        kind = Twist\n"
+        "        self.kind = Twist\n"
+        "        def later(kind):\n"
+        "            self.kind = kind\n"
+        "            self.create_publisher(kind, 'a', 1)\n"
+        "        self.create_publisher(self.kind, 'b', 1)\n"
+        "        self.create_publisher(kind, 'c', 1)\n"
+        "        make = lambda kind: self.create_publisher(kind, 'd', 1)\n"
+    )
+    got = {e.name: e.types for e in found.endpoints}
+    assert got == {"a": (), "b": (), "c": ("geometry_msgs/msg/Twist",), "d": ()}
+
+
+def test_a_contract_naming_the_subscribers_constants_is_not_checked(
+    tmp_path: Path,
+) -> None:
+    """`abs(linear.x) <= LIMIT` means the subscriber module's LIMIT, which the
+    publisher's check cannot read: the contract is left unchecked (silent), not
+    read with another meaning."""
+    root = tmp_path / "ws"
+    shutil.copytree(CASES / "ros2_contracts", root)
+    limiter = root / "safe_drive" / "safe_drive" / "limiter.py"
+    text = limiter.read_text().replace(
+        '"abs(linear.x) <= 0.5"', '"abs(linear.x) <= LIMIT"'
+    )
+    limiter.write_text(text.replace("class Limiter", "LIMIT = 0.5\n\n\nclass Limiter"))
+    found = check_paths([root], Config(root=root)).diagnostics
+    assert not [d for d in found if d.code in ("RF101", "RF102")]
+    # and with the number written out, the planner's 0.8 is reported again
+    limiter.write_text(limiter.read_text().replace("<= LIMIT", "<= 0.5"))
+    found = check_paths([root], Config(root=root)).diagnostics
+    assert [Path(d.path).name for d in found if d.code == "RF101"] == ["planner.py"]
+
+
+def test_a_fault_in_the_graph_stage_is_an_internal_error_not_a_crash(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A fault of ours while the graph is built is the run's internal error (exit
+    status 2); the files' own findings are still reported."""
+    from robotfix import graphcheck
+
+    def broken(*args: object, **kwargs: object) -> None:
+        raise ValueError("boom")
+
+    monkeypatch.setattr(graphcheck, "check_graph", broken)
+    root = tmp_path / "ws"
+    shutil.copytree(CASES / "ros2_contracts", root)
+    result = check_paths([root], Config(root=root))
+    assert [e.summary for e in result.internal_errors] == ["ValueError: boom"]
+    assert not [d for d in result.diagnostics if d.code in GRAPH_CODES]
