@@ -374,7 +374,21 @@ def test_any_yaml_tree_is_checked_without_crashing(tree: object) -> None:
     with tempfile.TemporaryDirectory() as folder:
         path = write(Path(folder) / "p.yaml", text)
         for found in paramcheck.check_parameter_files([path], [], [DRIVER], [path]):
-            assert found.code in ("RF101", "RF401", "RF003", "RF004")
+            assert found.code in ("RF101", "RF401", "RF003", "RF004", "RF602")
+            if found.code == "RF602":  # a section of another node than `driver`
+                assert "section `driver`" not in found.message
+
+
+@pytest.mark.parametrize("body", ["{}", "{max_speed: 0.5}"])
+def test_a_section_of_a_known_node_is_no_rf602_even_without_values(
+    tmp_path: Path, body: str
+) -> None:
+    """`driver: {ros__parameters: {}}` names the driver's node: the code's node names
+    are read even when the file sets no value (they were not, and every section
+    of such a file was said to name no node)."""
+    path = write(tmp_path / "p.yaml", f"driver:\n  ros__parameters: {body}\n")
+    found = paramcheck.check_parameter_files([path], [], [DRIVER], [path])
+    assert [d.code for d in found] == []
 
 
 @settings(max_examples=60, deadline=None)

@@ -158,7 +158,8 @@ def check_parameter_files(
                         (definition, key)
                     )
                 out.extend(_definition_defaults(loaded, key))
-    layouts = {f.layout for f in read.values() if f.entries}
+    # a file with sections but no values still needs the code's node names (RF602)
+    layouts = {f.layout for f in read.values() if f.entries or f.sections}
     if launches is not None and launches.entries:
         layouts |= set(MENTIONS)
     words = tuple(w for layout in sorted(layouts) for w in MENTIONS.get(layout, ()))
