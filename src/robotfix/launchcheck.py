@@ -26,11 +26,13 @@ from __future__ import annotations
 
 import ast
 import os
+from collections.abc import Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 from robotfix import messages
+from robotfix.astwalk import children
 from robotfix.diagnostics import Diagnostic, Note, Span
 from robotfix.faults import Fault, guard
 from robotfix.fs import UnreadableError, read_text
@@ -74,6 +76,8 @@ class LaunchRun:
         self.files: list[Path] = []
         self.names: set[str] = set()  # every node name a launch entry gives
         self.reader = Reader(self.packages.get)
+        self._build: dict[tuple[str, Path], object] = {}  # packages' build files
+        self._codes: dict[tuple[Path, str], set[str]] = {}  # by executable
         for path in launch_files:
             with guard(path, self.notices, faults):
                 self._read(path)
@@ -128,10 +132,15 @@ class LaunchRun:
         folder = self.packages.get(entry.package or "")
         if folder is None or not entry.executable:
             return set()
-        main = executable_file(folder, entry.executable)
-        if main is None:
-            return set()
-        return {os.path.realpath(p) for p in [main, *_imported(main, folder)]}
+        key = (folder, entry.executable)
+        if key not in self._codes:  # many entries start one executable
+            main = executable_file(folder, entry.executable, self._build)
+            self._codes[key] = (
+                set()
+                if main is None
+                else {os.path.realpath(p) for p in [main, *_imported(main, folder)]}
+            )
+        return set(self._codes[key])
 
     # -- the checks (called by paramcheck with its table) -------------------------
     def check(
@@ -211,7 +220,7 @@ def _imported(main: Path, package: Path) -> list[Path]:
     here = Path(os.path.relpath(main.parent, package)).parts
     here = () if here == (".",) else here
     found = []
-    for node in ast.walk(tree):
+    for node in _statements(tree):
         modules: list[str] = []
         if isinstance(node, ast.ImportFrom):
             if node.level > len(here) + 1:
@@ -227,6 +236,16 @@ def _imported(main: Path, package: Path) -> list[Path]:
             if path is not None and path != main:
                 found.append(path)
     return found
+
+
+def _statements(tree: ast.Module) -> Iterator[ast.AST]:
+    """Every statement of a module, nested ones too, without walking the
+    expressions (most of a file's nodes): where imports are."""
+    todo: list[ast.AST] = [tree]
+    while todo:
+        node = todo.pop()
+        yield node
+        todo += [c for c in children(node) if not isinstance(c, ast.expr)]
 
 
 def _owners_of(code: list[Summary]) -> list[tuple[Summary, str]]:

@@ -16,6 +16,7 @@ import ast
 import configparser
 import re
 from pathlib import Path
+from typing import Any
 
 from robotfix.fs import UnreadableError, read_regular, read_text
 
@@ -26,15 +27,21 @@ _PROGRAMS = re.compile(
 )
 
 
-def executable_file(package: Path, executable: str) -> Path | None:
-    """The Python file `executable` of the package in folder `package` runs."""
+def executable_file(
+    package: Path, executable: str, memo: dict[tuple[str, Path], object] | None = None
+) -> Path | None:
+    """The Python file `executable` of the package in folder `package` runs;
+    `memo` keeps each package's build files as read (one run: a launch file's
+    many nodes of one package read its setup.py once)."""
     if not executable or "/" in executable or executable in (".", ".."):
         return None
-    for module in _entry_points(package).get(executable, []):
+    memo = {} if memo is None else memo
+    scripts = _once(memo, "console_scripts", package, _entry_points)
+    for module in scripts.get(executable, []):
         found = module_file(package, module)
         if found is not None:
             return found
-    for program in _cmake_programs(package):
+    for program in _once(memo, "programs", package, _cmake_programs):
         if program.name == executable and program.is_file():
             return program
     for folder in SCRIPT_FOLDERS:
@@ -45,6 +52,13 @@ def executable_file(package: Path, executable: str) -> Path | None:
         except (OSError, ValueError):
             return None
     return None
+
+
+def _once(memo: dict[tuple[str, Path], Any], kind: str, package: Path, read: Any) -> Any:
+    key = (kind, package)
+    if key not in memo:
+        memo[key] = read(package)
+    return memo[key]
 
 
 def _read(path: Path) -> str | None:
