@@ -13,15 +13,16 @@ of the package by its name). What cannot be read is no file: unknown.
 from __future__ import annotations
 
 import ast
-import configparser
 import re
+from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import TypeVar
 
 from robotfix.fs import UnreadableError, read_regular, read_text
 
 MAX_BUILD_BYTES = 1024 * 1024
 SCRIPT_FOLDERS = ("scripts", "nodes", "bin", "src", "")
+T = TypeVar("T")
 _PROGRAMS = re.compile(
     r"(?:install|catkin_install_python)\s*\(\s*PROGRAMS\s+([^)]*)\)", re.IGNORECASE
 )
@@ -54,11 +55,16 @@ def executable_file(
     return None
 
 
-def _once(memo: dict[tuple[str, Path], Any], kind: str, package: Path, read: Any) -> Any:
+def _once(
+    memo: dict[tuple[str, Path], object],
+    kind: str,
+    package: Path,
+    read: Callable[[Path], T],
+) -> T:
     key = (kind, package)
     if key not in memo:
         memo[key] = read(package)
-    return memo[key]
+    return memo[key]  # type: ignore[return-value]
 
 
 def _read(path: Path) -> str | None:
@@ -76,7 +82,11 @@ def _entry_points(package: Path) -> dict[str, list[str]]:
     if text is not None:
         lines += _setup_py_scripts(text)
     text = _read(package / "setup.cfg")
-    if text is not None:
+    # most setup.cfg name no console_scripts (option names are case-blind):
+    # configparser (35 M instructions to import) only for those that do
+    if text is not None and "console_scripts" in text.lower():
+        import configparser
+
         parser = configparser.ConfigParser(interpolation=None)
         try:
             parser.read_string(text)
