@@ -192,3 +192,10 @@ def test_the_shipped_parser_tables_parse_as_the_grammar_does() -> None:
 
     for text in sorted(texts):
         assert outcome(loaded, text) == outcome(built, text), text
+
+
+def test_the_shipped_stub_predicates_are_what_the_parser_gives() -> None:
+    build = tool()
+    assert (
+        build.STUB_PREDICATES.read_text(encoding="utf-8") == build.stub_predicates()
+    ), "stub_predicates.json is stale: run python tools/build_package_data.py"
