@@ -54,6 +54,10 @@ class FileIndex:
     # `del x`, `(x := ...)`, annotations included): `Name` nodes only, as a walk of
     # the whole tree counts them (`parameters._module_constants`)
     stores: Counter[str] = field(default_factory=Counter)
+    # id(function or lambda) -> its own `return` statements, in the order a
+    # stack walk of it meets them; the functions that `yield` (generators)
+    returns: dict[int, list[ast.Return]] = field(default_factory=dict)
+    generators: set[int] = field(default_factory=set)
 
 
 Todo = list[tuple[ast.AST, int, str | None, str | None]]
@@ -198,6 +202,10 @@ def _drain(index: FileIndex, todo: Todo, root: int) -> None:
                 index.attribute_stores.add(node.attr)  # type: ignore[attr-defined]
         elif kind is ast.Constant:
             continue  # no node under it
+        elif kind is ast.Return:
+            index.returns.setdefault(owner, []).append(node)  # type: ignore[arg-type]
+        elif kind is ast.Yield or kind is ast.YieldFrom:
+            index.generators.add(owner)
         elif kind in _RECORDED:
             _record(index, scopes[owner], node, kind, cls, self_name)
         names = known.get(kind)
