@@ -6,6 +6,9 @@
   (ros/*.toml, their source) parsed, which every run reads;
 - src/robotfix/annotations/stub_predicates.json: the predicates the shipped stubs
   write (`_ >= 0`), parsed, so that a run with no other annotation imports no lark;
+- src/robotfix/stubs/shipped_names.json: the names through which the shipped stubs
+  can give a file a unit or a refinement (`stubs/load.defined_names`), which every
+  run would otherwise parse the stubs to find;
 - src/robotfix/annotations/units.json: pint's reading of every unit the REP 103 table,
   the standard messages' comment units, the shipped stubs and the vocabulary of common
   spellings (src/robotfix/ros/unit_vocabulary.toml) use, and pint's unit, prefix and
@@ -38,6 +41,7 @@ STANDARD = ROOT / "src/robotfix/ros/standard"
 UNITS = ROOT / "src/robotfix/annotations/units.json"
 TABLES_JSON = ROOT / "src/robotfix/ros/tables.json"
 STUB_PREDICATES = ROOT / "src/robotfix/annotations/stub_predicates.json"
+SHIPPED_NAMES = ROOT / "src/robotfix/stubs/shipped_names.json"
 
 
 def standard_messages() -> dict[str, str]:
@@ -140,6 +144,12 @@ def stub_predicates() -> str:
     return _dump({"key": parser_key(), "predicates": found})
 
 
+def shipped_names() -> str:
+    from robotfix.stubs.load import DATA, root_names, shipped_key
+
+    return _dump({"key": shipped_key(), "names": sorted(root_names(DATA))})
+
+
 def _dump(data: Any) -> str:
     return json.dumps(data, sort_keys=True, separators=(",", ":")) + "\n"
 
@@ -154,9 +164,10 @@ def main() -> None:
 
     parser.TABLES.write_text(parser.tables_json(), encoding="utf-8")
     STUB_PREDICATES.write_text(stub_predicates(), encoding="utf-8")
+    SHIPPED_NAMES.write_text(shipped_names(), encoding="utf-8")
     print(
-        f"wrote {STANDARD}, {UNITS}, {TABLES_JSON}, {parser.TABLES} and "
-        f"{STUB_PREDICATES}",
+        f"wrote {STANDARD}, {UNITS}, {TABLES_JSON}, {parser.TABLES}, "
+        f"{STUB_PREDICATES} and {SHIPPED_NAMES}",
         file=sys.stderr,
     )
 
