@@ -8,6 +8,7 @@ import os
 import subprocess
 import sys
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -192,3 +193,46 @@ def test_the_shipped_parser_tables_parse_as_the_grammar_does() -> None:
 
     for text in sorted(texts):
         assert outcome(loaded, text) == outcome(built, text), text
+
+
+def test_the_shipped_stub_predicates_are_what_the_parser_gives() -> None:
+    build = tool()
+    assert (
+        build.STUB_PREDICATES.read_text(encoding="utf-8") == build.stub_predicates()
+    ), "stub_predicates.json is stale: run python tools/build_package_data.py"
+
+
+def test_the_shipped_stub_names_are_what_the_stubs_define() -> None:
+    build = tool()
+    assert build.SHIPPED_NAMES.read_text(encoding="utf-8") == build.shipped_names(), (
+        "shipped_names.json is stale: run python tools/build_package_data.py"
+    )
+    from robotfix.stubs.load import DATA, _shipped_names, root_names
+
+    assert _shipped_names() == root_names(DATA)
+
+
+def test_a_run_parses_no_shipped_stub_to_know_its_vocabulary(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """`relevance._vocabulary` takes the shipped stubs' names from
+    shipped_names.json: checking `x = 1` parses no stub."""
+    import ast
+
+    from robotfix.analysis import relevance
+    from robotfix.api import check_source
+    from robotfix.stubs.load import DATA
+
+    stubs = {p.read_text(encoding="utf-8") for p in DATA.rglob("*.pyi")}
+    relevance._vocabulary.cache_clear()
+    parsed: list[object] = []
+    real = ast.parse
+
+    def parse(source: Any, *args: Any, **kwargs: Any) -> Any:
+        if source in stubs:
+            parsed.append(source)
+        return real(source, *args, **kwargs)
+
+    monkeypatch.setattr(ast, "parse", parse)
+    check_source("x = 1\n", "x.py")
+    assert parsed == []

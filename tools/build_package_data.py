@@ -4,6 +4,11 @@
   distribution RobotFix knows (`catalog.STORES`), converted from rosbags' type stores;
 - src/robotfix/ros/tables.json: the REP 103, comment-unit and default tables
   (ros/*.toml, their source) parsed, which every run reads;
+- src/robotfix/annotations/stub_predicates.json: the predicates the shipped stubs
+  write (`_ >= 0`), parsed, so that a run with no other annotation imports no lark;
+- src/robotfix/stubs/shipped_names.json: the names through which the shipped stubs
+  can give a file a unit or a refinement (`stubs/load.defined_names`), which every
+  run would otherwise parse the stubs to find;
 - src/robotfix/annotations/units.json: pint's reading of every unit the REP 103 table,
   the standard messages' comment units, the shipped stubs and the vocabulary of common
   spellings (src/robotfix/ros/unit_vocabulary.toml) use, and pint's unit, prefix and
@@ -35,6 +40,8 @@ ROOT = Path(__file__).resolve().parent.parent
 STANDARD = ROOT / "src/robotfix/ros/standard"
 UNITS = ROOT / "src/robotfix/annotations/units.json"
 TABLES_JSON = ROOT / "src/robotfix/ros/tables.json"
+STUB_PREDICATES = ROOT / "src/robotfix/annotations/stub_predicates.json"
+SHIPPED_NAMES = ROOT / "src/robotfix/stubs/shipped_names.json"
 
 
 def standard_messages() -> dict[str, str]:
@@ -104,6 +111,45 @@ def tables() -> str:
     return _dump(found)
 
 
+def stub_predicates() -> str:
+    """Every string of an `Annotated[...]` in the shipped stubs that parses as a
+    predicate (a unit-only one too: `extract` may hand it to the parser)."""
+    import ast
+
+    from robotfix.annotations.parser import (
+        AnnotationSyntaxError,
+        _parse_uncached,
+        parser_key,
+        spelt_node,
+    )
+
+    texts: set[str] = set()
+    for stub in sorted((ROOT / "src/robotfix/stubs/data").rglob("*.pyi")):
+        tree = ast.parse(stub.read_text(encoding="utf-8"))
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Subscript) and "Annotated" in ast.unparse(
+                node.value
+            ):
+                texts.update(
+                    n.value
+                    for n in ast.walk(node.slice)
+                    if isinstance(n, ast.Constant) and isinstance(n.value, str)
+                )
+    found = {}
+    for text in sorted(t for t in texts if t.strip()):
+        try:
+            found[text] = spelt_node(_parse_uncached(text))
+        except AnnotationSyntaxError:
+            continue
+    return _dump({"key": parser_key(), "predicates": found})
+
+
+def shipped_names() -> str:
+    from robotfix.stubs.load import DATA, root_names, shipped_key
+
+    return _dump({"key": shipped_key(), "names": sorted(root_names(DATA))})
+
+
 def _dump(data: Any) -> str:
     return json.dumps(data, sort_keys=True, separators=(",", ":")) + "\n"
 
@@ -117,8 +163,12 @@ def main() -> None:
     from robotfix.annotations import parser
 
     parser.TABLES.write_text(parser.tables_json(), encoding="utf-8")
+    STUB_PREDICATES.write_text(stub_predicates(), encoding="utf-8")
+    SHIPPED_NAMES.write_text(shipped_names(), encoding="utf-8")
     print(
-        f"wrote {STANDARD}, {UNITS}, {TABLES_JSON} and {parser.TABLES}", file=sys.stderr
+        f"wrote {STANDARD}, {UNITS}, {TABLES_JSON}, {parser.TABLES}, "
+        f"{STUB_PREDICATES} and {SHIPPED_NAMES}",
+        file=sys.stderr,
     )
 
 

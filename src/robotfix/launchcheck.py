@@ -26,11 +26,13 @@ from __future__ import annotations
 
 import ast
 import os
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 from robotfix import messages
+from robotfix.astwalk import children
 from robotfix.diagnostics import Diagnostic, Note, Span
 from robotfix.faults import Fault, guard
 from robotfix.fs import UnreadableError, read_text
@@ -51,6 +53,10 @@ IMPLICIT = ("use_sim_time", "start_type_description_service")
 IMPLICIT_PREFIXES = ("qos_overrides.",)
 
 
+# a file's path -> the length and hash of its text, and its import statements
+Imports = dict[str, tuple[int, int, list[ast.Import | ast.ImportFrom]]]
+
+
 @dataclass
 class _Started:
     entry: NodeEntry
@@ -66,14 +72,22 @@ class LaunchRun:
         launch_files: list[Path],
         code_files: list[Path],
         faults: list[Fault] | None = None,
+        parses: dict[str, tuple[str, ast.Module]] | None = None,
+        imports: Imports | None = None,
     ) -> None:
+        """`parses`: Python launch files as this process's checks parsed them
+        (text, tree), and `imports`, the import statements of the files they
+        parsed: not parsed again (`Reader`, `_imported`)."""
+        self.imports = imports
         self.packages = _packages([*launch_files, *code_files])
         self.notices: list[Diagnostic] = []
         self.started: list[_Started] = []
         self.renamed: dict[str, set[str]] = {}
         self.files: list[Path] = []
         self.names: set[str] = set()  # every node name a launch entry gives
-        self.reader = Reader(self.packages.get)
+        self.reader = Reader(self.packages.get, parses or {})
+        self._build: dict[tuple[str, Path], object] = {}  # packages' build files
+        self._codes: dict[tuple[Path, str], set[str]] = {}  # by executable
         for path in launch_files:
             with guard(path, self.notices, faults):
                 self._read(path)
@@ -128,10 +142,18 @@ class LaunchRun:
         folder = self.packages.get(entry.package or "")
         if folder is None or not entry.executable:
             return set()
-        main = executable_file(folder, entry.executable)
-        if main is None:
-            return set()
-        return {os.path.realpath(p) for p in [main, *_imported(main, folder)]}
+        key = (folder, entry.executable)
+        if key not in self._codes:  # many entries start one executable
+            main = executable_file(folder, entry.executable, self._build)
+            self._codes[key] = (
+                set()
+                if main is None
+                else {
+                    os.path.realpath(p)
+                    for p in [main, *_imported(main, folder, self.imports)]
+                }
+            )
+        return set(self._codes[key])
 
     # -- the checks (called by paramcheck with its table) -------------------------
     def check(
@@ -199,19 +221,26 @@ def _package_folder(folder: Path) -> Path | None:
     return None
 
 
-def _imported(main: Path, package: Path) -> list[Path]:
+def _imported(main: Path, package: Path, known: Imports | None = None) -> list[Path]:
     """The modules of `package` that `main` imports (`from pkg.node import N`,
     `from .node import N`, `from ..pkg import node`, `import pkg.node`): where an
     entry point's node class often lives. A name a `from` import takes may be a
-    submodule, so that is tried too."""
+    submodule, so that is tried too. `known`: the import statements of files this
+    process's checks parsed, by path, with their text's length and hash (a file
+    whose text is still that is not parsed again)."""
     try:
-        tree = ast.parse(read_text(main, MAX_BUILD_BYTES))
+        text = read_text(main, MAX_BUILD_BYTES)
+        kept = (known or {}).get(str(main))
+        if kept is not None and kept[:2] == (len(text), hash(text)):
+            statements: Iterable[ast.AST] = kept[2]
+        else:
+            statements = _statements(ast.parse(text))
     except (UnreadableError, SyntaxError, ValueError, RecursionError, MemoryError):
         return []
     here = Path(os.path.relpath(main.parent, package)).parts
     here = () if here == (".",) else here
     found = []
-    for node in ast.walk(tree):
+    for node in statements:
         modules: list[str] = []
         if isinstance(node, ast.ImportFrom):
             if node.level > len(here) + 1:
@@ -227,6 +256,16 @@ def _imported(main: Path, package: Path) -> list[Path]:
             if path is not None and path != main:
                 found.append(path)
     return found
+
+
+def _statements(tree: ast.Module) -> Iterator[ast.AST]:
+    """Every statement of a module, nested ones too, without walking the
+    expressions (most of a file's nodes): where imports are."""
+    todo: list[ast.AST] = [tree]
+    while todo:
+        node = todo.pop()
+        yield node
+        todo += [c for c in children(node) if not isinstance(c, ast.expr)]
 
 
 def _owners_of(code: list[Summary]) -> list[tuple[Summary, str]]:

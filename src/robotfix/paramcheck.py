@@ -319,7 +319,7 @@ def _load(
         )
         out.append(report(str(path), root.line, root.col, root.message))
         return None
-    loaded = P.classify(root)
+    loaded = P.classify(root, "*" in text or "<<" in text)
     if loaded is None:
         return None
     for problem in loaded.problems:

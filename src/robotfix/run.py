@@ -43,9 +43,10 @@ if TYPE_CHECKING:  # the analysis is imported only when a file is checked
     from robotfix.analysis.parameters import Summary as ParamSummary
     from robotfix.api import Contract
     from robotfix.faults import Fault as ParamFault
-    from robotfix.launchcheck import LaunchRun
+    from robotfix.launchcheck import Imports, LaunchRun
     from robotfix.paramcheck import Known as ParamKnown
     from robotfix.project.summary import Known, Project
+    from robotfix.source import SourceFile
 
 MIN_PARALLEL = 16  # fewer files are checked faster in one process than by a pool
 # and so is less source: starting a pool costs about 0.1-0.2 s, what one process
@@ -262,6 +263,9 @@ def _check_paths(
         from robotfix.paramcheck import MENTIONS  # not on a fully cached run
 
         project.parameter_words = tuple(w for ws in MENTIONS.values() for w in ws)
+    global _LAUNCH_PARSES
+    _LAUNCH_PARSES = {str(p): None for p in found.launch_files} or None
+    _IMPORTS.clear()
     checks = _check_all(todo, interfaces, config, catalog, project, jobs, cache)
     for outcome in checks:
         failed = outcome.error is not None and outcome.error.summary != LOST
@@ -341,6 +345,8 @@ def _check_paths(
         _merge(result, other)
     if groups:
         result.checked = [str(file) for file in everything]
+    _LAUNCH_PARSES = None
+    _IMPORTS.clear()
     result.diagnostics = finish(result.diagnostics)
     if cache is not None:
         cache.put_resolution(project.index.keep())
@@ -392,7 +398,13 @@ def _launches(
     from robotfix.launchcheck import LaunchRun
 
     faults: list[ParamFault] = []
-    run = LaunchRun(found.launch_files, [*files, *found.summary_files], faults)
+    parses = {  # what this process's checks parsed: not parsed again
+        name: (source.text, source.tree)
+        for name, source in (_LAUNCH_PARSES or {}).items()
+        if source is not None and source.tree is not None
+    }
+    code = [*files, *found.summary_files]
+    run = LaunchRun(found.launch_files, code, faults, parses, _IMPORTS)
     return run, faults
 
 
@@ -791,6 +803,10 @@ def _check_one(
         ignored = config.ignored_codes(path)
         stubs = stub_set(config.stub_paths)
         parsed = project.take(path, data)  # parsed once, for a summary, if imported
+        if _LAUNCH_PARSES is not None:  # a run with launch files
+            parsed = parsed or SourceFile.from_bytes(str(path), data)
+            if str(path) in _LAUNCH_PARSES:
+                _LAUNCH_PARSES[str(path)] = parsed
         parameters = None
         mentions = tuple(w for w in project.parameter_words if w in data)
         if mentions:
@@ -810,6 +826,8 @@ def _check_one(
             parsed = SourceFile.from_bytes(str(path), data)
         found = check_file(str(path), data, catalog, ignored, stubs, resolver, parsed)
         graph = _graph_of(parsed) if endpoints and parsed is not None else None
+        if _LAUNCH_PARSES is not None and parsed is not None:
+            _keep_imports(str(path), parsed)
         types = sorted(catalog.touched)
         catalog.touched = None
         return FileResult(
@@ -850,8 +868,24 @@ def _graph_of(parsed: Any) -> list[Any] | None:
     return dump(found) if found.endpoints else None
 
 
+def _keep_imports(path: str, parsed: SourceFile) -> None:
+    """The import statements the check's index found (none kept when the check
+    built no index: the launch reading parses the file if it needs them)."""
+    from robotfix.analysis.index import built
+
+    index = built(parsed.tree) if parsed.tree is not None else None
+    if index is not None:
+        text = parsed.text
+        _IMPORTS[path] = (len(text), hash(text), index.import_statements)
+
+
 # (catalog, config, project, lean): `lean`, the run keeps no cache (`_lean`)
 _WORKER: tuple[MsgCatalog, Config, Project, bool] | None = None
+# the run's launch files -> the parse this process's check made of each Python one,
+# and every checked file's import statements (`launchcheck.Imports`), which their
+# reading (`launchcheck.LaunchRun`) then uses: no file is parsed twice
+_LAUNCH_PARSES: dict[str, SourceFile | None] | None = None
+_IMPORTS: Imports = {}
 
 
 def _start_worker(interfaces: _Interfaces | None, config: Config, lean: bool) -> None:

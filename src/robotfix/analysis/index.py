@@ -54,6 +54,12 @@ class FileIndex:
     # `del x`, `(x := ...)`, annotations included): `Name` nodes only, as a walk of
     # the whole tree counts them (`parameters._module_constants`)
     stores: Counter[str] = field(default_factory=Counter)
+    # id(function or lambda) -> its own `return` statements, in the order a
+    # stack walk of it meets them; the functions that `yield` (generators)
+    returns: dict[int, list[ast.Return]] = field(default_factory=dict)
+    generators: set[int] = field(default_factory=set)
+    # every import statement, nested ones too
+    import_statements: list[ast.Import | ast.ImportFrom] = field(default_factory=list)
 
 
 Todo = list[tuple[ast.AST, int, str | None, str | None]]
@@ -62,6 +68,11 @@ Todo = list[tuple[ast.AST, int, str | None, str | None]]
 # each tree's index, built once and shared by everything that reads it in a run
 # (the module's summary, its parameter summary and its check)
 _INDEXES: weakref.WeakKeyDictionary[ast.Module, FileIndex] = weakref.WeakKeyDictionary()
+
+
+def built(tree: ast.Module) -> FileIndex | None:
+    """The index of `tree` if one was built (none is built here)."""
+    return _INDEXES.get(tree)
 
 
 def index_of(tree: ast.Module) -> FileIndex:
@@ -198,6 +209,10 @@ def _drain(index: FileIndex, todo: Todo, root: int) -> None:
                 index.attribute_stores.add(node.attr)  # type: ignore[attr-defined]
         elif kind is ast.Constant:
             continue  # no node under it
+        elif kind is ast.Return:
+            index.returns.setdefault(owner, []).append(node)  # type: ignore[arg-type]
+        elif kind is ast.Yield or kind is ast.YieldFrom:
+            index.generators.add(owner)
         elif kind in _RECORDED:
             _record(index, scopes[owner], node, kind, cls, self_name)
         names = known.get(kind)
@@ -234,6 +249,7 @@ def _record(
             if type(part) is ast.Attribute:
                 index.assigned[part.attr] += 1
     if kind is ast.Import or kind is ast.ImportFrom:
+        index.import_statements.append(node)  # type: ignore[arg-type]
         _record_import(index, names, node)  # type: ignore[arg-type]
     elif kind is ast.Global or kind is ast.Nonlocal:
         names.global_names.update(node.names)  # type: ignore[attr-defined]

@@ -235,6 +235,7 @@ def _summarize(
     summary.imports = index.imports
     walker = _Walker(source, index, summary, summary.constants, resolver, stubs)
     module_body: list[ast.stmt] = []
+    passing: list[dict[str, set[str]] | None] = []  # `_passed_names`, made once
     for statement in tree.body:
         if isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef)):
             if _mentions(source, statement):
@@ -243,7 +244,10 @@ def _summarize(
             summary.bases[statement.name] = [
                 b.id for b in statement.bases if isinstance(b, ast.Name)
             ]
-            if _hands_out_self(statement, index) or any(
+            if not passing:
+                passing.append(_passed_names(tree, index))
+            names = passing[0].get(statement.name, set()) if passing[0] else None
+            if _hands_out_self(statement, index, names) or any(
                 _base_name(b, index) not in (*NODE_BASES, *summary.bases)
                 for b in statement.bases
             ):
@@ -277,15 +281,21 @@ def _base_name(node: ast.expr, index: FileIndex) -> str:
     return imported.dotted_name(node, index.imports) or ""
 
 
-def _hands_out_self(cls: ast.ClassDef, index: FileIndex) -> bool:
+def _hands_out_self(
+    cls: ast.ClassDef, index: FileIndex, names: set[str] | None = None
+) -> bool:
     """Whether a method passes its `self` to a callee outside `SELF_TAKERS` (which
-    may declare parameters on it where this file cannot see)."""
+    may declare parameters on it where this file cannot see). `names`: every
+    name any call of the class passes (`_passed_names`): a method whose `self` is
+    none of them is not walked."""
     for item in cls.body:
         if not isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
             continue
         if not item.args.args:
             continue
         me = item.args.args[0].arg
+        if names is not None and me not in names:
+            continue
         for node in walk(item.body):
             if not isinstance(node, ast.Call):
                 continue
@@ -298,6 +308,21 @@ def _hands_out_self(cls: ast.ClassDef, index: FileIndex) -> bool:
             ):
                 return True
     return False
+
+
+def _passed_names(tree: ast.Module, index: FileIndex) -> dict[str, set[str]] | None:
+    """Top-level class -> the names its calls pass as arguments, from the index's
+    calls (None: `index` is not this tree's, whose calls it would not hold)."""
+    if id(tree) not in index.scopes:
+        return None
+    found: dict[str, set[str]] = {}
+    for cls, call in index.calls:
+        if cls is not None:
+            names = found.setdefault(cls, set())
+            for arg in [*call.args, *(k.value for k in call.keywords)]:
+                if isinstance(arg, ast.Name):
+                    names.add(arg.id)
+    return found
 
 
 # A function whose text has none of these declares, reads and names nothing.

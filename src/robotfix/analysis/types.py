@@ -500,12 +500,20 @@ class TypeModel:
             return self.infer(node.body, function)
         if node.returns is not None:
             return self.annotation(node.returns)
-        values = [r.value for r in _returns(node)]
+        values = [r.value for r in self._returns_of(node)]
         if not values or any(v is None for v in values):
             return None
         return _agree(
             [_NONE if _is_none(v) else self.infer(v, function) for v in values]  # type: ignore[arg-type]
         )
+
+    def _returns_of(self, node: ast.AST) -> list[ast.Return]:
+        """The function's own `return` statements (not those of nested functions),
+        as the file's index found them; a generator's are not followed."""
+        index = self.ctx.index
+        if id(node) in index.generators:
+            return [ast.Return(value=None)]
+        return index.returns.get(id(node), [])
 
     # -- expressions ---------------------------------------------------------
     def infer(
@@ -948,23 +956,6 @@ def _attribute_stores(
             _attribute_stores(found, part, part_value, self_name)
     elif isinstance(target, ast.Starred):
         _attribute_stores(found, target.value, ast.expr(), self_name)
-
-
-def _returns(node: ast.AST) -> list[ast.Return]:
-    """The function's own `return` statements (not those of nested functions)."""
-    found: list[ast.Return] = []
-    todo = children(node)
-    while todo:
-        child = todo.pop()
-        if isinstance(child, ast.Return):
-            found.append(child)
-        elif isinstance(child, (ast.Yield, ast.YieldFrom)):
-            return [ast.Return(value=None)]  # a generator: not followed
-        elif not isinstance(
-            child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)
-        ):
-            todo.extend(children(child))
-    return found
 
 
 def _is_self(

@@ -18,6 +18,7 @@ from __future__ import annotations
 import hashlib
 import json
 from collections.abc import Callable
+from dataclasses import fields, is_dataclass
 from fractions import Fraction
 from functools import lru_cache
 from pathlib import Path
@@ -286,11 +287,74 @@ def parse_predicate(text: str) -> A.Expr:
 @lru_cache(maxsize=4096)
 def _parse(text: str) -> A.Expr | tuple[str, int]:
     """The expression, or the (message, offset) of the error: errors are cached too,
-    since a bad annotation is met again in every file and run that reads it."""
+    since a bad annotation is met again in every file and run that reads it. A
+    predicate the shipped stubs write comes parsed (`shipped`)."""
+    found = shipped().get(text)
+    if found is not None:
+        return found
     try:
         return _parse_uncached(text)
     except AnnotationSyntaxError as err:
         return err.message, err.offset
+
+
+# the predicates the shipped stubs write (`_ >= 0` of `math.sqrt`), parsed by
+# tools/build_package_data.py: a run that meets no other annotation imports no
+# lark (115 M instructions with the tables loaded)
+SHIPPED = Path(__file__).parent / "stub_predicates.json"
+
+
+@lru_cache(maxsize=1)
+def shipped() -> dict[str, A.Expr]:
+    """The shipped parses, when written by this parser from this grammar (else
+    none: each is parsed)."""
+    try:
+        raw = json.loads(SHIPPED.read_text(encoding="utf-8"))
+        if not isinstance(raw, dict) or raw.get("key") != parser_key():
+            return {}
+        return {text: _node(value) for text, value in raw["predicates"].items()}
+    except Exception:  # of another shape: parsed as any other text
+        return {}
+
+
+def parser_key() -> str:
+    """The grammar, this module and the nodes it builds, as text: what a parse
+    depends on."""
+    digest = hashlib.sha256()
+    for path in (GRAMMAR, Path(__file__), Path(A.__file__)):
+        digest.update(path.read_bytes())
+    return digest.hexdigest()
+
+
+def spelt_node(node: object) -> object:
+    """An expression as JSON (`_node` reads it back): `[class, fields]`, a
+    Fraction `["Fraction", n, d]`, a tuple `["tuple", items]`."""
+    if isinstance(node, Fraction):
+        return ["Fraction", node.numerator, node.denominator]
+    if isinstance(node, tuple):
+        return ["tuple", [spelt_node(n) for n in node]]
+    if is_dataclass(node):
+        values = {f.name: spelt_node(getattr(node, f.name)) for f in fields(node)}
+        return [type(node).__name__, values]
+    return node
+
+
+def _node(raw: Any) -> Any:
+    if not isinstance(raw, list):
+        return raw
+    kind, *rest = raw
+    if kind == "Fraction":
+        return Fraction(rest[0], rest[1])
+    if kind == "tuple":
+        return tuple(_node(n) for n in rest[0])
+    node = _NODES[kind](**{k: _node(v) for k, v in rest[0].items()})
+    return A.TRUE if node == A.TRUE else node
+
+
+_NODES = {
+    c.__name__: c
+    for c in (A.Num, A.Bool, A.Str, A.Name, A.Unary, A.Binary, A.Ite, A.Func, A.UnitIs)
+}
 
 
 def _parse_uncached(text: str) -> A.Expr:

@@ -13,28 +13,36 @@ of the package by its name). What cannot be read is no file: unknown.
 from __future__ import annotations
 
 import ast
-import configparser
 import re
+from collections.abc import Callable
 from pathlib import Path
+from typing import TypeVar
 
 from robotfix.fs import UnreadableError, read_regular, read_text
 
 MAX_BUILD_BYTES = 1024 * 1024
 SCRIPT_FOLDERS = ("scripts", "nodes", "bin", "src", "")
+T = TypeVar("T")
 _PROGRAMS = re.compile(
     r"(?:install|catkin_install_python)\s*\(\s*PROGRAMS\s+([^)]*)\)", re.IGNORECASE
 )
 
 
-def executable_file(package: Path, executable: str) -> Path | None:
-    """The Python file `executable` of the package in folder `package` runs."""
+def executable_file(
+    package: Path, executable: str, memo: dict[tuple[str, Path], object] | None = None
+) -> Path | None:
+    """The Python file `executable` of the package in folder `package` runs;
+    `memo` keeps each package's build files as read (one run: a launch file's
+    many nodes of one package read its setup.py once)."""
     if not executable or "/" in executable or executable in (".", ".."):
         return None
-    for module in _entry_points(package).get(executable, []):
+    memo = {} if memo is None else memo
+    scripts = _once(memo, "console_scripts", package, _entry_points)
+    for module in scripts.get(executable, []):
         found = module_file(package, module)
         if found is not None:
             return found
-    for program in _cmake_programs(package):
+    for program in _once(memo, "programs", package, _cmake_programs):
         if program.name == executable and program.is_file():
             return program
     for folder in SCRIPT_FOLDERS:
@@ -45,6 +53,18 @@ def executable_file(package: Path, executable: str) -> Path | None:
         except (OSError, ValueError):
             return None
     return None
+
+
+def _once(
+    memo: dict[tuple[str, Path], object],
+    kind: str,
+    package: Path,
+    read: Callable[[Path], T],
+) -> T:
+    key = (kind, package)
+    if key not in memo:
+        memo[key] = read(package)
+    return memo[key]  # type: ignore[return-value]
 
 
 def _read(path: Path) -> str | None:
@@ -62,7 +82,11 @@ def _entry_points(package: Path) -> dict[str, list[str]]:
     if text is not None:
         lines += _setup_py_scripts(text)
     text = _read(package / "setup.cfg")
-    if text is not None:
+    # most setup.cfg name no console_scripts (option names are case-blind):
+    # configparser (35 M instructions to import) only for those that do
+    if text is not None and "console_scripts" in text.lower():
+        import configparser
+
         parser = configparser.ConfigParser(interpolation=None)
         try:
             parser.read_string(text)

@@ -354,8 +354,10 @@ class ParamFile:
     reference: Y.Node | None = None
 
 
-def classify(root: Y.Node | None) -> ParamFile | None:
-    """What a YAML file is to ROS: None when it is none of the three layouts."""
+def classify(root: Y.Node | None, references: bool = True) -> ParamFile | None:
+    """What a YAML file is to ROS: None when it is none of the three layouts.
+    `references` False: the text has no `*` and no `<<`, so no alias and no merge
+    key (not looked for)."""
     budget = [Y.WALK_BUDGET]
     root = Y.resolve(root, budget)
     if not isinstance(root, Y.Mapping) or not root.items:
@@ -365,7 +367,7 @@ def classify(root: Y.Node | None) -> ParamFile | None:
         found = ParamFile(
             "ros2", ros2.entries, sections=ros2.places, problems=ros2.problems
         )
-        found.reference = Y.first_reference(root)
+        found.reference = Y.first_reference(root) if references else None
         return found
     definitions = _Reader(budget)
     if definitions.definitions(root):

@@ -273,12 +273,14 @@ def _flatten(node: Mapping, walk: _Flattening, depth: int) -> list[Pair]:
         sources = _merged(raw, key, walk, depth)
         for source in reversed(sources):
             merged += _flatten(source, walk, depth + 1)
-    kept: dict[str, Pair] = {}
-    for pair in merged:
-        if pair.key is not None:
-            kept[pair.key] = pair
-    mine = {pair.key for pair in own}
-    found = [p for k, p in kept.items() if k not in mine] + own
+    found = own
+    if merged:  # most mappings merge nothing
+        kept: dict[str, Pair] = {}
+        for pair in merged:
+            if pair.key is not None:
+                kept[pair.key] = pair
+        mine = {pair.key for pair in own}
+        found = [p for k, p in kept.items() if k not in mine] + own
     walk.done[id(node)] = found
     walk.busy.discard(id(node))
     return found

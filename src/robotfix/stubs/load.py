@@ -39,6 +39,7 @@ from __future__ import annotations
 import ast
 import functools
 import hashlib
+import json
 import os
 import re
 from collections.abc import Callable, Iterable, Iterator
@@ -771,27 +772,60 @@ def defined_names(stubs: StubSet) -> frozenset[str]:
     an attribute, such an `__init__` or an operator. Module names are not among
     them: a call or read through a module names the member too."""
     names: set[str] = set()
-    for root in [*stubs.paths, DATA]:
-        for path in _stub_files(root):
-            try:
-                tree = ast.parse(_text_of(path))
-            except (SyntaxError, ValueError, RecursionError):
-                continue
-            for node in ast.walk(tree):
-                if isinstance(node, ast.ClassDef) and _class_gives(node):
+    for root in stubs.paths:
+        names |= root_names(root)
+    return frozenset(names | _shipped_names())
+
+
+# `root_names` of the shipped stubs, written by tools/build_package_data.py: each
+# run would parse them all (50 M instructions of every start) to find the same
+SHIPPED_NAMES = Path(__file__).parent / "shipped_names.json"
+
+
+def shipped_key() -> str:
+    """The shipped stubs' text, as a hash: what `SHIPPED_NAMES` must be made from."""
+    digest = hashlib.sha256()
+    for path in sorted(_stub_files(DATA)):
+        digest.update(f"{path.relative_to(DATA).as_posix()}\0".encode())
+        digest.update(_text_of(path).encode("utf-8", "surrogatepass"))
+    return digest.hexdigest()
+
+
+def _shipped_names() -> set[str]:
+    try:
+        raw = json.loads(SHIPPED_NAMES.read_text(encoding="utf-8"))
+        if isinstance(raw, dict) and raw.get("key") == shipped_key():
+            names = raw.get("names")
+            if isinstance(names, list) and all(isinstance(n, str) for n in names):
+                return set(names)
+    except (OSError, ValueError):
+        pass
+    return root_names(DATA)  # edited stubs: read them
+
+
+def root_names(root: Path) -> set[str]:
+    """`defined_names` of the stubs under one folder."""
+    names: set[str] = set()
+    for path in _stub_files(root):
+        try:
+            tree = ast.parse(_text_of(path))
+        except (SyntaxError, ValueError, RecursionError):
+            continue
+        for node in ast.walk(tree):
+            if isinstance(node, ast.ClassDef) and _class_gives(node):
+                names.add(node.name)
+            elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                if node.name != "__init__" and _function_gives(node):
                     names.add(node.name)
-                elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
-                    if node.name != "__init__" and _function_gives(node):
-                        names.add(node.name)
-                elif isinstance(node, (ast.AnnAssign, ast.Assign)) and (
-                    "Annotated" in ast.unparse(node)
-                ):
-                    names.update(
-                        t.id
-                        for t in ast.walk(node)
-                        if isinstance(t, ast.Name) and isinstance(t.ctx, ast.Store)
-                    )
-    return frozenset(names)
+            elif isinstance(node, (ast.AnnAssign, ast.Assign)) and (
+                "Annotated" in ast.unparse(node)
+            ):
+                names.update(
+                    t.id
+                    for t in ast.walk(node)
+                    if isinstance(t, ast.Name) and isinstance(t.ctx, ast.Store)
+                )
+    return names
 
 
 def _function_gives(node: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:

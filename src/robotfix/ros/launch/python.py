@@ -18,10 +18,11 @@ from __future__ import annotations
 
 import ast
 import weakref
+from collections import deque
 from collections.abc import Iterator
 from pathlib import Path
 
-from robotfix.astwalk import dotted
+from robotfix.astwalk import children, dotted
 from robotfix.ros import paramfile as P
 from robotfix.ros import yamlfile as Y
 from robotfix.ros.launch import substitution as S
@@ -102,24 +103,34 @@ def read_python(tree: ast.Module, text: str, ctx: S.Context) -> LaunchFile:
 _BINDINGS: weakref.WeakKeyDictionary[ast.AST, dict[str, ast.expr | None]] = (
     weakref.WeakKeyDictionary()
 )
+_NODES: weakref.WeakKeyDictionary[ast.AST, list[ast.AST]] = weakref.WeakKeyDictionary()
 
 
 def _bindings_of(owner: ast.AST, body: list[ast.stmt]) -> dict[str, ast.expr | None]:
     """`_single_bindings` of a function or module, made once per tree."""
     found = _BINDINGS.get(owner)
     if found is None:
-        found = _BINDINGS[owner] = _single_bindings(body)
+        found = _BINDINGS[owner] = _single_bindings(_nodes_of(owner, body))
     return dict(found)
 
 
-def _single_bindings(body: list[ast.stmt]) -> dict[str, ast.expr | None]:
+def _nodes_of(owner: ast.AST, body: list[ast.stmt]) -> list[ast.AST]:
+    """`_walk` of a function's or module's body, made once per tree (its bindings
+    and its calls read the same nodes)."""
+    found = _NODES.get(owner)
+    if found is None:
+        found = _NODES[owner] = list(_walk(body))
+    return found
+
+
+def _single_bindings(nodes: list[ast.AST]) -> dict[str, ast.expr | None]:
     """Names stored once, by `name = expr` (None: stored otherwise or again)."""
     counts: dict[str, int] = {}
-    for node in _walk(body):
+    for node in nodes:
         if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
             counts[node.id] = counts.get(node.id, 0) + 1
     found: dict[str, ast.expr | None] = dict.fromkeys(counts)
-    for node in _walk(body):
+    for node in nodes:
         if isinstance(node, (ast.Assign, ast.AnnAssign)) and node.value is not None:
             targets = node.targets if isinstance(node, ast.Assign) else [node.target]
             if len(targets) == 1 and isinstance(targets[0], ast.Name):
@@ -140,7 +151,7 @@ def _defaults(tree: ast.Module) -> dict[str, ast.expr | None]:
     found = _DEFAULTS.get(tree)
     if found is None:
         found = {}
-        for node in ast.walk(tree):
+        for node in _breadth_first(tree):  # ast.walk's order: the first one wins
             if (
                 isinstance(node, ast.Call)
                 and _called(node.func) == "DeclareLaunchArgument"
@@ -155,16 +166,26 @@ def _defaults(tree: ast.Module) -> dict[str, ast.expr | None]:
 
 
 def _walk(body: list[ast.stmt]) -> Iterator[ast.AST]:
-    """The nodes of a function body, not those of functions defined in it."""
+    """The nodes of a function body, not those of functions defined in it (nor
+    contexts and operators: `astwalk.children`)."""
     todo: list[ast.AST] = list(body)
     while todo:
         node = todo.pop()
         yield node
-        for child in ast.iter_child_nodes(node):
+        for child in children(node):
             if not isinstance(
                 child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)
             ):
                 todo.append(child)
+
+
+def _breadth_first(tree: ast.AST) -> Iterator[ast.AST]:
+    """`ast.walk`'s order, without contexts and operators."""
+    todo = deque([tree])
+    while todo:
+        node = todo.popleft()
+        yield node
+        todo.extend(children(node))
 
 
 def _called(func: ast.expr) -> str:
@@ -216,7 +237,7 @@ class _Evaluator:
             scope[arg.arg] = None
         self.scopes.append(scope)
         try:
-            for node in _walk(function.body):
+            for node in _nodes_of(function, function.body):
                 if isinstance(node, ast.Call) and _called(node.func) in (
                     *NODES,
                     "IncludeLaunchDescription",
@@ -278,7 +299,7 @@ class _Evaluator:
             return UNKNOWN
         if isinstance(node, ast.Call):
             return self.call(node)
-        for child in ast.iter_child_nodes(node):  # an entry in a condition, a lambda
+        for child in children(node):  # an entry in a condition, a lambda
             if isinstance(child, ast.expr):
                 self.eval(child)
         return UNKNOWN

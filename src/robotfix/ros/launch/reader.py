@@ -35,8 +35,15 @@ Parsed = tuple[ast.Module, str] | Element | LaunchFile  # LaunchFile: not read
 
 
 class Reader:
-    def __init__(self, packages: Callable[[str], Path | None]) -> None:
+    def __init__(
+        self,
+        packages: Callable[[str], Path | None],
+        parses: dict[str, tuple[str, ast.Module]] | None = None,
+    ) -> None:
+        """`parses`: Python files already parsed in this run, by path: (text, tree);
+        a file whose text is still that is not parsed again."""
         self.packages = packages
+        self.parses = parses or {}
         self.parsed: dict[str, Parsed] = {}
         self.results: dict[
             tuple[str, tuple[tuple[str, str | None], ...]], LaunchFile
@@ -79,7 +86,7 @@ class Reader:
         key = str(path)
         if key not in self.parsed:
             self.touched.add(key)
-            self.parsed[key] = _parse(path, self.texts)
+            self.parsed[key] = _parse(path, self.texts, self.parses.get(key))
         return self.parsed[key]
 
 
@@ -90,7 +97,9 @@ def _copy(found: LaunchFile) -> LaunchFile:
     return fresh
 
 
-def _parse(path: Path, texts: dict[str, str]) -> Parsed:
+def _parse(
+    path: Path, texts: dict[str, str], parsed: tuple[str, ast.Module] | None = None
+) -> Parsed:
     key = str(path)
     try:
         text = read_text(path, MAX_LAUNCH_BYTES)
@@ -101,6 +110,8 @@ def _parse(path: Path, texts: dict[str, str]) -> Parsed:
     if name.endswith(".launch") and not text.lstrip("\ufeff \t\r\n").startswith("<"):
         name += ".py"  # nav2's test_case_py.launch is Python
     if name.endswith(".py"):
+        if parsed is not None and parsed[0] == text:
+            return parsed[1], text
         try:
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")  # SyntaxWarning: not ours to show
