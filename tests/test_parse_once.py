@@ -193,9 +193,9 @@ def test_an_edited_module_is_parsed_once_in_a_cached_run(
     result = check_paths([root], config, use_cache=True)
     assert counted[str(limits.resolve())] == 1
     assert result.from_cache > 0
-    assert [str(d) for d in result.diagnostics] == [
-        str(d) for d in check_paths([root], config).diagnostics
-    ]
+    # (equal as diagnostics: the editor's quick fixes, which no report shows, are
+    # not kept in the result cache)
+    assert result.diagnostics == check_paths([root], config).diagnostics
 
 
 def test_fresh_summaries_hands_each_summary_over_once(tmp_path: Path) -> None:

@@ -314,7 +314,7 @@ def refinement_violated(
     itself (a call's argument, `time_allowance=LOOK_TIME`, hides it), unless the
     statement already shows it (`timeout = 200`)."""
     written = value is not None and re.search(
-        rf"(?<![\w.]){re.escape(value)}(?![\w.])", stmt
+        rf"(?<![\w.'\"]){re.escape(value)}(?![\w.'\"])", stmt
     )
     shown = f": here {subject} = {value}" if value is not None and not written else ""
     return Diagnostic(
