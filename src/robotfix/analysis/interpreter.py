@@ -464,7 +464,8 @@ class Interpreter(CallEvaluator):
     def _enclosing(self, outer: Scope, name: str, state: State, node: ast.AST) -> Value:
         """A name of an enclosing function, read by a nested function or lambda
         (which may run after it changed): what its refinement says, else an object
-        of its parameter's annotated type (`talker: Talker`), else unknown."""
+        of its type (`talker: Talker`, or `talker = Talker(...)` bound once), else
+        unknown."""
         decl = outer.decls.get(name)
         function = self.program.by_node.get(id(outer.node))
         if (
@@ -474,7 +475,10 @@ class Interpreter(CallEvaluator):
         ):
             return Value("instance", name=function.class_name or "")
         if decl is None and function is not None:
-            typed = self.program.types.parameter(function, name)
+            # a parameter's annotated type, or the one type of a local bound once
+            typed = self.program.types.infer(
+                ast.Name(id=name, ctx=ast.Load()), function
+            )
             if typed is not None:
                 return self.typed(typed, node, state, name)
         return self._assumed_or_unknown(decl, name, state, node)

@@ -27,6 +27,8 @@ class MotorDriver:
 def deadline(node: Node, talker: Talker, pause_for_ms: Annotated[int, "Unit('ms')"]):
     node.create_timer(5.0, lambda: talker.pause_for(pause_for_ms))  # error: RF201
     node.create_timer(5.0, lambda: talker.pause_for(pause_for_ms / 1000.0))
+    talker_node = Talker()
+    node.create_timer(1.0, lambda: talker_node.pause_for(pause_for_ms))  # error: RF201
     later = lambda: time.sleep(PAUSE_MS)  # error: RF201
     fine = lambda: time.sleep(PAUSE_MS / 1000.0)
     return later, fine
