@@ -488,3 +488,26 @@ def test_a_fault_in_the_graph_stage_is_an_internal_error_not_a_crash(
     result = check_paths([root], Config(root=root))
     assert [e.summary for e in result.internal_errors] == ["ValueError: boom"]
     assert not [d for d in result.diagnostics if d.code in GRAPH_CODES]
+
+
+def test_a_parameter_section_of_a_cpp_node_is_no_rf602(tmp_path: Path) -> None:
+    """A YAML section keyed by a C++ node's name (`Node("driver")`) names a node
+    RobotFix read: no RF602, with the cache too; a section naming no node still
+    gets one, worded as what RobotFix read."""
+    write(tmp_path / "driver" / "package.xml", PACKAGE.format("driver"))
+    write(
+        tmp_path / "driver" / "src" / "driver.cpp",
+        "class Driver : public rclcpp::Node {\n public:\n"
+        '  Driver() : Node("driver") { declare_parameter<double>("max", 0.5); }\n};\n',
+    )
+    write(
+        tmp_path / "driver" / "config" / "driver.yaml",
+        "driver:\n  ros__parameters:\n    max: 0.4\n"
+        "drivr:\n  ros__parameters:\n    max: 0.4\n",
+    )
+    for cache in (False, True, True):
+        found = check_paths([tmp_path], Config(root=tmp_path), use_cache=cache)
+        assert [d.message.split(":")[0] for d in found.diagnostics] == [
+            "section `drivr` names no node that RobotFix read in the checked "
+            "workspace or its launch files"
+        ]

@@ -460,18 +460,16 @@ def _silenced(
 
 
 def code_graphs(
-    python: dict[str, list[object]],
-    cpp_files: list[Path],
-    cache: ResultCache | None = None,
+    python: dict[str, list[object]], cpp: dict[str, FileGraph]
 ) -> dict[str, FileGraph]:
     """The run's code graphs: the checked Python files' (dumped by their checks,
-    or kept in the cache) and the C++ files', read here."""
+    or kept in the cache) and the C++ files' (`read_cpp_files`)."""
     code: dict[str, FileGraph] = {}
     for path, raw in python.items():
         found = load(raw)
         if found is not None:
             code[path] = found
-    code.update(read_cpp_files(cpp_files, cache))
+    code.update(cpp)
     return code
 
 
