@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import ast
 import json
+import re
 import shutil
 from pathlib import Path
 
@@ -511,3 +512,77 @@ def test_a_parameter_section_of_a_cpp_node_is_no_rf602(tmp_path: Path) -> None:
             "section `drivr` names no node that RobotFix read in the checked "
             "workspace or its launch files"
         ]
+
+
+@pytest.mark.parametrize(
+    ("body", "expected"),
+    [
+        (
+            "auto qos = rclcpp::QoS(rclcpp::KeepLast(10)); S(qos);",
+            Q.depth_only(10),
+        ),
+        (
+            "rclcpp::QoS qos(10); S(qos.best_effort());",
+            Qos(Q.BEST_EFFORT, Q.VOLATILE, 10),
+        ),
+        ("rclcpp::QoS qos{5}; S(qos); P(qos);", Q.depth_only(5)),
+        (
+            "const auto qos = rclcpp::QoS(1).transient_local().reliable(); S(qos);",
+            Qos(Q.RELIABLE, Q.TRANSIENT_LOCAL, 1),
+        ),
+        ("rclcpp::SensorDataQoS qos; S(qos);", Q.CPP_PROFILES["SensorDataQoS"]),
+        # changed, bound twice, or given away: unknown
+        ("rclcpp::QoS qos(10); qos.best_effort(); S(qos);", None),
+        (
+            "auto qos = rclcpp::QoS(10); qos = rclcpp::SensorDataQoS(); S(qos);",
+            None,
+        ),
+        ("rclcpp::QoS qos(10); if (x) { rclcpp::QoS qos(1); } S(qos);", None),
+        ("rclcpp::QoS qos(10); tune(qos); S(qos);", None),
+        ("S(qos);", None),  # a member or a parameter
+        ("S(qos); auto qos = rclcpp::QoS(10);", None),
+        ("auto qos = qos; S(qos);", None),
+    ],
+)
+def test_a_cpp_profile_held_in_a_local_bound_once(body: str, expected: object) -> None:
+    """A C++ subscription's QoS held in a local variable is read from its one
+    declaration (fresh-eyes r1); a local changed, declared twice, or passed to
+    another function is unknown."""
+    code = re.sub(
+        r"\bS\(([^;]*)\);",
+        r'sub_ = create_subscription<std_msgs::msg::String>("chatter", \1, cb);',
+        body,
+    ).replace("P(", 'pub_ = create_publisher<std_msgs::msg::String>("out", ')
+    text = (
+        "class Base : public rclcpp::Node {\n public:\n"
+        '  Base() : Node("base") {\n    ' + code + "\n  }\n};\n"
+    )
+    found = read_cpp(text.encode())
+    assert found.endpoints[0].kind == "subscription"
+    assert found.endpoints[0].qos == expected
+
+
+def test_qos_is_compared_only_between_endpoints_whose_types_can_meet(
+    tmp_path: Path,
+) -> None:
+    """A best-effort `Twist` publisher never meets a reliable `TwistStamped`
+    subscription (ROS connects no other types), so no RF604; the same node's
+    `TwistStamped` publisher is the one compared."""
+    write(tmp_path / "demo" / "package.xml", PACKAGE.format("demo"))
+    write(
+        tmp_path / "demo" / "demo" / "nodes.py",
+        "from geometry_msgs.msg import Twist, TwistStamped\n"
+        "from rclpy.node import Node\n"
+        "from rclpy.qos import qos_profile_sensor_data\n"
+        "class Teleop(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('teleop')\n"
+        "        self.create_publisher(Twist, 'cmd_vel', qos_profile_sensor_data)\n"
+        "        self.create_publisher(TwistStamped, 'cmd_vel', 10)\n"
+        "class Base(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('base')\n"
+        "        self.create_subscription(TwistStamped, 'cmd_vel', print, 10)\n",
+    )
+    found = check_paths([tmp_path], Config(root=tmp_path)).diagnostics
+    assert not [d for d in found if d.code in GRAPH_CODES]
