@@ -403,8 +403,12 @@ def test_graph_paths_is_the_checks_graph() -> None:
         "function(f a)\nf(${a}${a})\nf(${a}${a})\nendfunction()\nf(x)\n",
         "function(x y)\nadd_executable(${y} a.cpp)\nendfunction()\n"
         + "x(z)\n" * 50_000,
+        "foreach(x a)\n" * 80_000,  # loops never closed
+        "foreach(a 1 2 3 4 5 6 7 8 9)\n" * 12  # 9**12 passes
+        + "add_executable(z${a} a.cpp)\n"
+        + "endforeach()\n" * 12,
     ],
-    ids=["doubling", "unclosed", "recursive", "many-calls"],
+    ids=["doubling", "unclosed", "recursive", "many-calls", "open-loops", "nested"],
 )
 def test_hostile_cmake_is_read_in_bounded_work(tmp_path: Path, text: str) -> None:
     """CMake is read, never run: a value too long is unknown, a function's calls
@@ -413,6 +417,28 @@ def test_hostile_cmake_is_read_in_bounded_work(tmp_path: Path, text: str) -> Non
 
     write(tmp_path / "CMakeLists.txt", text)
     assert cpp_executable_files(tmp_path, "z") == []
+
+
+def test_cmake_loops_over_literal_lists_are_followed(tmp_path: Path) -> None:
+    """ros_tutorials' `foreach(dir talker listener) rostutorial(${dir})
+    endforeach()` with a macro adding `${T}/${T}.cpp` (fresh-eyes r3), `IN ITEMS`,
+    `IN LISTS`; a `RANGE` or an unknown list is no target."""
+    from robotfix.ros.executables import cpp_executable_files
+
+    for name in ("talker", "listener", "b", "c", "d"):
+        write(tmp_path / name / f"{name}.cpp", "int main() {}\n")
+    write(
+        tmp_path / "CMakeLists.txt",
+        "macro(tut T)\n  add_executable(${T} ${T}/${T}.cpp)\nendmacro()\n"
+        "foreach(dir\n    talker\n    listener\n    )\n  tut(${dir})\nendforeach()\n"
+        "foreach(x IN ITEMS b)\n tut(${x})\nendforeach()\n"
+        "set(L c)\nforeach(x IN LISTS L)\n tut(${x})\nendforeach()\n"
+        "foreach(x RANGE 3)\n tut(d${x})\nendforeach()\n"
+        "foreach(x IN LISTS UNSET)\n tut(${x})\nendforeach()\n",
+    )
+    for name in ("talker", "listener", "b", "c"):
+        assert cpp_executable_files(tmp_path, name) == [tmp_path / name / f"{name}.cpp"]
+    assert cpp_executable_files(tmp_path, "d") == []
 
 
 def test_python_names_are_followed_in_bounded_work() -> None:
