@@ -318,7 +318,7 @@ def test_cpp_endpoints_with_tree_sitter() -> None:
             "Driver",
             None,
         ),
-        ("parameter", "speed", (), "Driver", None),
+        ("parameter", "speed", ("double",), "Driver", None),
         ("publisher", None, ("std_msgs/msg/String",), "Driver", Q.depth_only(10)),
         (
             "subscription",
@@ -330,6 +330,29 @@ def test_cpp_endpoints_with_tree_sitter() -> None:
     ]
     assert found.nodes == {"Driver": ["driver"], "node": ["helper"]}
     assert found.endpoints[2].value == "0.5"
+
+
+def test_a_cpp_parameters_literal_default_gives_its_type() -> None:
+    """`declare_parameter("one_shot", false)` is a bool parameter, as rclcpp
+    makes it (fresh-eyes r5's `?`); a default that is not a literal: unknown."""
+    body = "".join(
+        f'    declare_parameter("p{i}", {value});\n'
+        for i, value in enumerate(["false", "2.5", "3", '"x"', "v_", "0x1f", "1e3"])
+    )
+    found = read_cpp(
+        b'class D : public rclcpp::Node {\n public:\n  D() : Node("d") {\n'
+        + body.encode()
+        + b"  }\n};\n"
+    )
+    assert [e.types for e in found.endpoints] == [
+        ("bool",),
+        ("double",),
+        ("int",),
+        ("std::string",),
+        (),
+        ("int",),
+        ("double",),
+    ]
 
 
 @pytest.mark.parametrize(
@@ -612,3 +635,23 @@ def test_qos_is_compared_only_between_endpoints_whose_types_can_meet(
     )
     found = check_paths([tmp_path], Config(root=tmp_path)).diagnostics
     assert not [d for d in found if d.code in GRAPH_CODES]
+
+
+def test_a_cpp_node_class_named_by_its_caller_has_no_known_name() -> None:
+    """`: Node(node_name)` computes the class's node name: unknown, never the
+    name of the file's other node class (fresh-eyes r5)."""
+    from robotfix.ros.graph.build import build
+
+    found = read_cpp(
+        b"class Logger : public rclcpp::Node {\n public:\n"
+        b"  explicit Logger(const std::string & node_name) : Node(node_name) {\n"
+        b'    create_subscription<std_msgs::msg::String>("output", 10, cb);\n  }\n};\n'
+        b"class Test : public rclcpp::Node {\n public:\n"
+        b'  Test() : Node("TestNode") {\n'
+        b'    create_publisher<std_msgs::msg::String>("output", 10);\n  }\n};\n'
+    )
+    graph = build({"two_nodes.cpp": found}, [])
+    assert sorted(n.qualified for n in graph.nodes) == [
+        "/?(two_nodes.cpp)",
+        "/TestNode",
+    ]

@@ -14,8 +14,11 @@ Names and types only, where they are written as literals (a string literal; a
 type spelled `pkg::msg::Name`, or an alias of one the file declares with `using`);
 anything computed is unknown. QoS: a depth, `rclcpp::QoS(n)` with its setters
 (`.best_effort()`, `.transient_local()`), `rclcpp::SensorDataQoS()` and the other
-preset classes, in the call or through a local declared once and only read. Which node: the class a method belongs to (its name from the
-`Node("name")` base initializer), else the node variable (`node->create_...`).
+preset classes, in the call or through a local declared once and only read. A
+parameter's type: its template argument, else its literal default's (`false`:
+bool). Which node: the class a method belongs to (its name from the
+`Node("name")` base initializer; `Node(node_name)`: unknown), else the node
+variable (`node->create_...`).
 
 Bad C++ never fails: tree-sitter recovers from errors; a file over
 `MAX_CPP_BYTES` is not read, and one without any of `WORDS` not parsed. What the
@@ -308,6 +311,8 @@ class _File:
             value = _text(args[default_at])[:80]
         if kind == PARAMETER and template is not None and not types:
             types = (_text(template).strip("<>").strip(),)
+        elif kind == PARAMETER and ros == 2 and default_at is not None:
+            types = _literal_type(args[default_at] if len(args) > default_at else None)
         if handle == "?":
             name = name if name is not None and name.startswith("/") else None
             handle = ""
@@ -485,6 +490,21 @@ def _interface(text: str, aliases: dict[str, str], kind: str) -> tuple[str, ...]
         return (f"{parts[0]}/{MIDDLE[kind] or parts[1]}/{parts[2]}",)
     if len(parts) == 2 and parts[0].islower() and parts[1][:1].isupper():
         return (f"{parts[0]}/{MIDDLE[kind]}/{parts[1]}",)
+    return ()
+
+
+def _literal_type(node: Any) -> tuple[str, ...]:
+    """The type a literal default gives a parameter (`declare_parameter("x",
+    false)`: bool, as rclcpp's ParameterValue of it); () for anything else."""
+    kind = node.type if node is not None else ""
+    if kind in ("true", "false"):
+        return ("bool",)
+    if kind == "string_literal":
+        return ("std::string",)
+    if kind == "number_literal":
+        text = _text(node).lower()
+        real = not text.startswith("0x") and any(c in text for c in ".ef")
+        return ("double",) if real else ("int",)
     return ()
 
 
