@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import ast
 import json
+import re
 import shutil
 from pathlib import Path
 
@@ -317,7 +318,7 @@ def test_cpp_endpoints_with_tree_sitter() -> None:
             "Driver",
             None,
         ),
-        ("parameter", "speed", (), "Driver", None),
+        ("parameter", "speed", ("double",), "Driver", None),
         ("publisher", None, ("std_msgs/msg/String",), "Driver", Q.depth_only(10)),
         (
             "subscription",
@@ -329,6 +330,29 @@ def test_cpp_endpoints_with_tree_sitter() -> None:
     ]
     assert found.nodes == {"Driver": ["driver"], "node": ["helper"]}
     assert found.endpoints[2].value == "0.5"
+
+
+def test_a_cpp_parameters_literal_default_gives_its_type() -> None:
+    """`declare_parameter("one_shot", false)` is a bool parameter, as rclcpp
+    makes it (fresh-eyes r5's `?`); a default that is not a literal: unknown."""
+    body = "".join(
+        f'    declare_parameter("p{i}", {value});\n'
+        for i, value in enumerate(["false", "2.5", "3", '"x"', "v_", "0x1f", "1e3"])
+    )
+    found = read_cpp(
+        b'class D : public rclcpp::Node {\n public:\n  D() : Node("d") {\n'
+        + body.encode()
+        + b"  }\n};\n"
+    )
+    assert [e.types for e in found.endpoints] == [
+        ("bool",),
+        ("double",),
+        ("int",),
+        ("std::string",),
+        (),
+        ("int",),
+        ("double",),
+    ]
 
 
 @pytest.mark.parametrize(
@@ -402,8 +426,12 @@ def test_graph_paths_is_the_checks_graph() -> None:
         "function(f a)\nf(${a}${a})\nf(${a}${a})\nendfunction()\nf(x)\n",
         "function(x y)\nadd_executable(${y} a.cpp)\nendfunction()\n"
         + "x(z)\n" * 50_000,
+        "foreach(x a)\n" * 80_000,  # loops never closed
+        "foreach(a 1 2 3 4 5 6 7 8 9)\n" * 12  # 9**12 passes
+        + "add_executable(z${a} a.cpp)\n"
+        + "endforeach()\n" * 12,
     ],
-    ids=["doubling", "unclosed", "recursive", "many-calls"],
+    ids=["doubling", "unclosed", "recursive", "many-calls", "open-loops", "nested"],
 )
 def test_hostile_cmake_is_read_in_bounded_work(tmp_path: Path, text: str) -> None:
     """CMake is read, never run: a value too long is unknown, a function's calls
@@ -412,6 +440,28 @@ def test_hostile_cmake_is_read_in_bounded_work(tmp_path: Path, text: str) -> Non
 
     write(tmp_path / "CMakeLists.txt", text)
     assert cpp_executable_files(tmp_path, "z") == []
+
+
+def test_cmake_loops_over_literal_lists_are_followed(tmp_path: Path) -> None:
+    """ros_tutorials' `foreach(dir talker listener) rostutorial(${dir})
+    endforeach()` with a macro adding `${T}/${T}.cpp` (fresh-eyes r3), `IN ITEMS`,
+    `IN LISTS`; a `RANGE` or an unknown list is no target."""
+    from robotfix.ros.executables import cpp_executable_files
+
+    for name in ("talker", "listener", "b", "c", "d"):
+        write(tmp_path / name / f"{name}.cpp", "int main() {}\n")
+    write(
+        tmp_path / "CMakeLists.txt",
+        "macro(tut T)\n  add_executable(${T} ${T}/${T}.cpp)\nendmacro()\n"
+        "foreach(dir\n    talker\n    listener\n    )\n  tut(${dir})\nendforeach()\n"
+        "foreach(x IN ITEMS b)\n tut(${x})\nendforeach()\n"
+        "set(L c)\nforeach(x IN LISTS L)\n tut(${x})\nendforeach()\n"
+        "foreach(x RANGE 3)\n tut(d${x})\nendforeach()\n"
+        "foreach(x IN LISTS UNSET)\n tut(${x})\nendforeach()\n",
+    )
+    for name in ("talker", "listener", "b", "c"):
+        assert cpp_executable_files(tmp_path, name) == [tmp_path / name / f"{name}.cpp"]
+    assert cpp_executable_files(tmp_path, "d") == []
 
 
 def test_python_names_are_followed_in_bounded_work() -> None:
@@ -488,3 +538,120 @@ def test_a_fault_in_the_graph_stage_is_an_internal_error_not_a_crash(
     result = check_paths([root], Config(root=root))
     assert [e.summary for e in result.internal_errors] == ["ValueError: boom"]
     assert not [d for d in result.diagnostics if d.code in GRAPH_CODES]
+
+
+def test_a_parameter_section_of_a_cpp_node_is_no_rf602(tmp_path: Path) -> None:
+    """A YAML section keyed by a C++ node's name (`Node("driver")`) names a node
+    RobotFix read: no RF602, with the cache too; a section naming no node still
+    gets one, worded as what RobotFix read."""
+    write(tmp_path / "driver" / "package.xml", PACKAGE.format("driver"))
+    write(
+        tmp_path / "driver" / "src" / "driver.cpp",
+        "class Driver : public rclcpp::Node {\n public:\n"
+        '  Driver() : Node("driver") { declare_parameter<double>("max", 0.5); }\n};\n',
+    )
+    write(
+        tmp_path / "driver" / "config" / "driver.yaml",
+        "driver:\n  ros__parameters:\n    max: 0.4\n"
+        "drivr:\n  ros__parameters:\n    max: 0.4\n",
+    )
+    for cache in (False, True, True):
+        found = check_paths([tmp_path], Config(root=tmp_path), use_cache=cache)
+        assert [d.message.split(":")[0] for d in found.diagnostics] == [
+            "section `drivr` names no node that RobotFix read in the checked "
+            "workspace or its launch files"
+        ]
+
+
+@pytest.mark.parametrize(
+    ("body", "expected"),
+    [
+        (
+            "auto qos = rclcpp::QoS(rclcpp::KeepLast(10)); S(qos);",
+            Q.depth_only(10),
+        ),
+        (
+            "rclcpp::QoS qos(10); S(qos.best_effort());",
+            Qos(Q.BEST_EFFORT, Q.VOLATILE, 10),
+        ),
+        ("rclcpp::QoS qos{5}; S(qos); P(qos);", Q.depth_only(5)),
+        (
+            "const auto qos = rclcpp::QoS(1).transient_local().reliable(); S(qos);",
+            Qos(Q.RELIABLE, Q.TRANSIENT_LOCAL, 1),
+        ),
+        ("rclcpp::SensorDataQoS qos; S(qos);", Q.CPP_PROFILES["SensorDataQoS"]),
+        # changed, bound twice, or given away: unknown
+        ("rclcpp::QoS qos(10); qos.best_effort(); S(qos);", None),
+        (
+            "auto qos = rclcpp::QoS(10); qos = rclcpp::SensorDataQoS(); S(qos);",
+            None,
+        ),
+        ("rclcpp::QoS qos(10); if (x) { rclcpp::QoS qos(1); } S(qos);", None),
+        ("rclcpp::QoS qos(10); tune(qos); S(qos);", None),
+        ("S(qos);", None),  # a member or a parameter
+        ("S(qos); auto qos = rclcpp::QoS(10);", None),
+        ("auto qos = qos; S(qos);", None),
+    ],
+)
+def test_a_cpp_profile_held_in_a_local_bound_once(body: str, expected: object) -> None:
+    """A C++ subscription's QoS held in a local variable is read from its one
+    declaration (fresh-eyes r1); a local changed, declared twice, or passed to
+    another function is unknown."""
+    code = re.sub(
+        r"\bS\(([^;]*)\);",
+        r'sub_ = create_subscription<std_msgs::msg::String>("chatter", \1, cb);',
+        body,
+    ).replace("P(", 'pub_ = create_publisher<std_msgs::msg::String>("out", ')
+    text = (
+        "class Base : public rclcpp::Node {\n public:\n"
+        '  Base() : Node("base") {\n    ' + code + "\n  }\n};\n"
+    )
+    found = read_cpp(text.encode())
+    assert found.endpoints[0].kind == "subscription"
+    assert found.endpoints[0].qos == expected
+
+
+def test_qos_is_compared_only_between_endpoints_whose_types_can_meet(
+    tmp_path: Path,
+) -> None:
+    """A best-effort `Twist` publisher never meets a reliable `TwistStamped`
+    subscription (ROS connects no other types), so no RF604; the same node's
+    `TwistStamped` publisher is the one compared."""
+    write(tmp_path / "demo" / "package.xml", PACKAGE.format("demo"))
+    write(
+        tmp_path / "demo" / "demo" / "nodes.py",
+        "from geometry_msgs.msg import Twist, TwistStamped\n"
+        "from rclpy.node import Node\n"
+        "from rclpy.qos import qos_profile_sensor_data\n"
+        "class Teleop(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('teleop')\n"
+        "        self.create_publisher(Twist, 'cmd_vel', qos_profile_sensor_data)\n"
+        "        self.create_publisher(TwistStamped, 'cmd_vel', 10)\n"
+        "class Base(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('base')\n"
+        "        self.create_subscription(TwistStamped, 'cmd_vel', print, 10)\n",
+    )
+    found = check_paths([tmp_path], Config(root=tmp_path)).diagnostics
+    assert not [d for d in found if d.code in GRAPH_CODES]
+
+
+def test_a_cpp_node_class_named_by_its_caller_has_no_known_name() -> None:
+    """`: Node(node_name)` computes the class's node name: unknown, never the
+    name of the file's other node class (fresh-eyes r5)."""
+    from robotfix.ros.graph.build import build
+
+    found = read_cpp(
+        b"class Logger : public rclcpp::Node {\n public:\n"
+        b"  explicit Logger(const std::string & node_name) : Node(node_name) {\n"
+        b'    create_subscription<std_msgs::msg::String>("output", 10, cb);\n  }\n};\n'
+        b"class Test : public rclcpp::Node {\n public:\n"
+        b'  Test() : Node("TestNode") {\n'
+        b'    create_publisher<std_msgs::msg::String>("output", 10);\n  }\n};\n'
+    )
+    graph = build({"two_nodes.cpp": found}, [])
+    assert sorted(n.qualified for n in graph.nodes) == [
+        "/?(two_nodes.cpp)",
+        "/TestNode",
+    ]

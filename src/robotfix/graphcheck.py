@@ -13,7 +13,8 @@ Findings, each at an endpoint with a note at the other side:
   picks `Twist` or `TwistStamped`, is two possible types: never a finding);
 - RF604/RF605: a subscription whose QoS never matches a publisher's (reliable vs
   best effort, transient local vs volatile): RF604 when both profiles are
-  constants, RF605 when one may change (QoS overrides by parameter);
+  constants, RF605 when one may change (QoS overrides by parameter); only
+  between endpoints whose types can be one (ROS connects no others);
 - RF606/RF607 (notes): a topic subscribed and published nowhere in the checked
   tree, or the reverse; not when an endpoint whose name is not known may be it;
   only in a run whose launch files start nodes (they say which nodes make the
@@ -27,6 +28,7 @@ from __future__ import annotations
 
 import os
 import re
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -38,7 +40,13 @@ from robotfix.ros.executables import Targets, cpp_executable_files
 from robotfix.ros.graph import qos as Q
 from robotfix.ros.graph.build import End, Graph, Started, build
 from robotfix.ros.graph.cpp import MAX_CPP_BYTES, read_cpp
-from robotfix.ros.graph.model import PUBLISHER, SUBSCRIPTION, FileGraph, dump, load
+from robotfix.ros.graph.model import (
+    PUBLISHER,
+    SUBSCRIPTION,
+    FileGraph,
+    dump,
+    load,
+)
 from robotfix.ros.package import package_folder, package_name
 from robotfix.source import suppresses
 
@@ -305,7 +313,9 @@ def _qos(
             continue
         for other in publishers:
             publisher = graph.ends[other].endpoint
-            if publisher.qos is None:
+            if publisher.qos is None or not _may_meet(
+                publisher.types, end.endpoint.types
+            ):
                 continue
             why = Q.incompatible(publisher.qos, end.endpoint.qos)
             if not why:
@@ -331,6 +341,14 @@ def _qos(
             )
             result.findings.append(Finding(diag, index, other))
             break
+
+
+def _may_meet(one: Iterable[str], other: Iterable[str]) -> bool:
+    """Whether endpoints of these possible types can be of one type (none known:
+    any): ROS connects no publisher to a subscription of another type, whatever
+    their QoS, and a certain type mismatch is RF603's to tell."""
+    mine, theirs = set(one), set(other)
+    return not mine or not theirs or not mine.isdisjoint(theirs)
 
 
 def _unmatched(
@@ -360,7 +378,7 @@ def _unmatched(
         if any(
             e.endpoint.ros == ros
             and e.endpoint.kind != kind
-            and (not e.endpoint.types or not types or set(e.endpoint.types) & types)
+            and _may_meet(e.endpoint.types, types)
             for e in unnamed
         ):
             continue  # an endpoint whose name is not known may be its peer
@@ -460,18 +478,16 @@ def _silenced(
 
 
 def code_graphs(
-    python: dict[str, list[object]],
-    cpp_files: list[Path],
-    cache: ResultCache | None = None,
+    python: dict[str, list[object]], cpp: dict[str, FileGraph]
 ) -> dict[str, FileGraph]:
     """The run's code graphs: the checked Python files' (dumped by their checks,
-    or kept in the cache) and the C++ files', read here."""
+    or kept in the cache) and the C++ files' (`read_cpp_files`)."""
     code: dict[str, FileGraph] = {}
     for path, raw in python.items():
         found = load(raw)
         if found is not None:
             code[path] = found
-    code.update(read_cpp_files(cpp_files, cache))
+    code.update(cpp)
     return code
 
 

@@ -876,7 +876,7 @@ def parameter_section_unmatched(
     path: str, line: int, col: int, keys: list[str]
 ) -> Diagnostic:
     """RF602, once per file, at the first of its ROS 2 sections whose node no
-    node of the run is named."""
+    node of the run RobotFix read is named (its code, C++ too, or a launch file)."""
     shown = [f"`{k}`" for k in keys[:5]] + (
         [f"{len(keys) - 5} more"] if len(keys) > 5 else []
     )
@@ -886,12 +886,13 @@ def parameter_section_unmatched(
         rules.PARAMETER_SECTION_UNMATCHED,
         path,
         Span.point(line, col),
-        f"{what}{_join(shown)} {verb} no node of the checked workspace or its "
-        "launch files: not checked against any node's declarations",
+        f"{what}{_join(shown)} {verb} no node that RobotFix read in the checked "
+        "workspace or its launch files: not checked against any node's declarations",
         (
             Note(
-                "a node of another workspace or a C++ node may be named so; a launch "
-                "file that renames a node (`name=`) makes its section apply"
+                "a node of another workspace, or one whose name the code computes, "
+                "may be named so; a launch file that renames a node (`name=`) makes "
+                "its section apply"
             ),
         ),
     )

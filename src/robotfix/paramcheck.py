@@ -122,6 +122,7 @@ def check_parameter_files(
     project: Project | None = None,
     faults: list[Fault] | None = None,
     launches: Launches | None = None,
+    cpp_nodes: Iterable[str] = (),
 ) -> list[Diagnostic]:
     """Diagnostics for the parameter files and generate_parameter_library
     definitions of a run; `python_files` are those whose declarations count. A
@@ -135,7 +136,9 @@ def check_parameter_files(
     on one file goes, the others being checked (without it, it is raised).
     `launches`: what the run's launch files add (`launchcheck`): the names they
     give nodes, the parameter files they name, and their own checks, made with
-    the same table (a fault on one launch file is a fault of that file)."""
+    the same table (a fault on one launch file is a fault of that file).
+    `cpp_nodes`: the names of the run's C++ nodes (`ros.graph.cpp`): a section
+    naming one is no RF602, though its values are not checked."""
     if launches is not None:
         files = [*files, *(f for f in launches.files if f not in files)]
     loud = {str(p) for p in [*named, *definition_files]}
@@ -168,7 +171,9 @@ def check_parameter_files(
         if words
         else []
     )
-    table = Table(found, definitions, launches.renamed if launches else None)
+    table = Table(
+        found, definitions, launches.renamed if launches else None, cpp_nodes
+    )
     for path in files:
         loaded = read.get(str(path))
         if loaded is None or loaded.layout == "definitions":
@@ -371,8 +376,10 @@ class Table:
         summaries: list[Summary],
         definitions: dict[str, list[tuple[P.Definition, str]]],
         renamed: dict[str, set[str]] | None = None,
+        cpp_nodes: Iterable[str] = (),
     ) -> None:
         self.summaries = summaries
+        self.cpp_nodes = set(cpp_nodes)  # C++ nodes' names: their code is not read
         self.definitions = definitions
         self.renamed = renamed or {}  # real paths
         self.real = {s.path: os.path.realpath(s.path) for s in summaries}
@@ -386,9 +393,9 @@ class Table:
         ]
 
     def node_names(self) -> set[str]:
-        """Every node name a ROS 2 section can match in the code: the nodes', and
-        the root keys of generate_parameter_library definitions."""
-        names = set(self.definitions)
+        """Every node name a ROS 2 section can match in the code: the Python and
+        C++ nodes', and the root keys of generate_parameter_library definitions."""
+        names = set(self.definitions) | self.cpp_nodes
         for summary in self.summaries:
             for found in summary.node_names.values():
                 names.update(found)

@@ -119,7 +119,8 @@ LAUNCH_PARAMETER_UNDECLARED = Rule(
 PARAMETER_SECTION_UNMATCHED = Rule(
     "RF602",
     "parameter-section-unmatched",
-    "A parameter file's section names no node of the workspace or its launch files",
+    "A parameter file's section names no node RobotFix read in the workspace or "
+    "its launch files",
     Severity.NOTE,
 )
 TOPIC_TYPE_MISMATCH = Rule(

@@ -46,6 +46,7 @@ if TYPE_CHECKING:  # the analysis is imported only when a file is checked
     from robotfix.launchcheck import Imports, LaunchRun
     from robotfix.paramcheck import Known as ParamKnown
     from robotfix.project.summary import Known, Project
+    from robotfix.ros.graph.model import FileGraph
     from robotfix.source import SourceFile
 
 MIN_PARALLEL = 16  # fewer files are checked faster in one process than by a pool
@@ -313,6 +314,8 @@ def _check_paths(
         group.graphs.update(graphs)
     if group is None:
         launches = _launches(found, everything)
+        cpp = _cpp_graphs(found, cache, paths[0], result)
+        cpp_nodes = {n for g in cpp.values() for ns in g.nodes.values() for n in ns}
         result.diagnostics.extend(
             _parameter_problems(
                 found,
@@ -323,6 +326,7 @@ def _check_paths(
                 project,
                 result.internal_errors,
                 launches,
+                sorted(cpp_nodes),
             )
         )
         result.files += len(found.parameter_files)
@@ -332,6 +336,7 @@ def _check_paths(
                 _graph_problems(
                     found,
                     graphs,
+                    cpp,
                     launches,
                     config,
                     catalog,
@@ -408,9 +413,29 @@ def _launches(
     return run, faults
 
 
+def _cpp_graphs(
+    found: Discovery, cache: ResultCache | None, where: Path, result: Result
+) -> dict[str, FileGraph]:
+    """The run's C++ files' graphs (`graphcheck.read_cpp_files`), read once for
+    the parameter check (their node names, RF602) and the graph; a fault of ours
+    is an internal error of `where`, the run's first path."""
+    if not found.cpp_files:
+        return {}
+    from robotfix.faults import Fault, guard
+    from robotfix.graphcheck import read_cpp_files
+
+    faults: list[Fault] = []
+    with guard(where, result.diagnostics, faults):
+        return read_cpp_files(found.cpp_files, cache)
+    errors = [InternalError(f.path, f.summary, f.detail) for f in faults]
+    result.internal_errors += errors
+    return {}
+
+
 def _graph_problems(
     found: Discovery,
     graphs: dict[str, list[Any]],
+    cpp: dict[str, FileGraph],
     launches: tuple[LaunchRun, list[ParamFault]] | None,
     config: Config,
     catalog: MsgCatalog,
@@ -423,7 +448,7 @@ def _graph_problems(
     publishers violate of their subscribers' contracts (issue 23 §3). A fault
     of ours is an internal error (of `where`, the run's first path, or of the
     publisher's file whose contracts were checked): the rest is reported."""
-    if not graphs and not found.cpp_files:
+    if not graphs and not cpp:
         return []
     from robotfix.faults import Fault, guard
     from robotfix.graphcheck import check_graph, code_graphs
@@ -432,7 +457,7 @@ def _graph_problems(
     out: list[Diagnostic] = []
     faults: list[Fault] = []
     with guard(where, out, faults):
-        code = code_graphs(graphs, found.cpp_files, cache)
+        code = code_graphs(graphs, cpp)
         result = check_graph(code, launches[0] if launches else None, config)
         out += result.diagnostics()
         for path, contracts in sorted(graph_contracts(result).items()):
@@ -480,8 +505,11 @@ def _parameter_problems(
     project: Project | None = None,
     errors: list[InternalError] | None = None,
     read: tuple[LaunchRun, list[ParamFault]] | None = None,
+    cpp_nodes: list[str] | None = None,
 ) -> list[Diagnostic]:
     """Parameter files and launch files against the parameters the code declares;
+    `cpp_nodes`: the names the run's C++ nodes have (a section naming one is no
+    RF602);
     cached as a whole, under a key that hashes every input (`_params_key`);
     `parameters`: what the checks found of the files they read (the others are
     read there). Launch files are read first (`launchcheck.LaunchRun`): what
@@ -494,7 +522,11 @@ def _parameter_problems(
     if read is None:
         read = _launches(found, files)
     launches, faults = read if read is not None else (None, [])
-    key = _params_key(found, python_files, config, cache, launches) if cache else None
+    key = (
+        _params_key(found, python_files, config, cache, launches, cpp_nodes)
+        if cache
+        else None
+    )
     if cache is not None and key is not None and not faults:
         known = cache.params(key)
         if known is not None:
@@ -511,6 +543,7 @@ def _parameter_problems(
         project,
         faults,
         launches,
+        cpp_nodes or (),
     )
     if errors is not None:
         errors += [InternalError(f.path, f.summary, f.detail) for f in faults]
@@ -525,18 +558,20 @@ def _params_key(
     config: Config,
     cache: ResultCache,
     launches: LaunchRun | None = None,
+    cpp_nodes: list[str] | None = None,
 ) -> str:
-    """Everything `paramcheck` reads: the parameter and definitions files (bytes,
-    per-file ignores, package folder), and each Python file that mentions a
-    parameter word (`cache.MENTION_WORDS`; the others are skipped unread there)
-    with its bytes, the file it really is, its package folder and what its check
-    consulted of other modules (an alias its refinement imports: the entry holds
-    each record's fingerprint as it is now, or the file was checked again). A
-    file read only for its declarations (`summary_files`, no check) counts with
-    every other such file's bytes: they are the modules it can import. With
-    launch files: every file their reading touched (launch files, the parameter
-    files and build files they lead to, the nodes' code, by its bytes)."""
-    parts: list[str] = []
+    """Everything `paramcheck` reads (and the C++ nodes' names, `cpp_nodes`): the
+    parameter and definitions files (bytes, per-file ignores, package folder), and
+    each Python file that mentions a parameter word (`cache.MENTION_WORDS`; the
+    others are skipped unread there) with its bytes, the file it really is, its
+    package folder and what its check consulted of other modules (an alias its
+    refinement imports: the entry holds each record's fingerprint as it is now, or
+    the file was checked again). A file read only for its declarations
+    (`summary_files`, no check) counts with every other such file's bytes: they are
+    the modules it can import. With launch files: every file their reading touched
+    (launch files, the parameter files and build files they lead to, the nodes'
+    code, by its bytes)."""
+    parts = [f"cpp\0{name}" for name in cpp_nodes or ()]
     if launches is not None:
         for touched in sorted(launches.touched()):
             file = Path(touched)

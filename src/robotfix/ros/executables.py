@@ -223,7 +223,9 @@ def cpp_executable_files(
     """The C++ files an executable of the package is built from, read from its
     CMakeLists.txt (never run): `add_executable(name src/x.cpp)`, the package's
     libraries it links (`target_link_libraries`), `rclcpp_components_register_node(
-    lib ... EXECUTABLE name)`, and the package's headers those files include.
+    lib ... EXECUTABLE name)`, `foreach` over a literal list (`foreach(d talker
+    listener) tut(${d}) endforeach()`), and the package's headers those files
+    include.
     `set()` variables and `${PROJECT_NAME}` are substituted; a word still holding a
     `${...}` is unknown (left out). `memo` keeps each package's targets for a run."""
     memo = {} if memo is None else memo
@@ -283,7 +285,8 @@ def _cmake_run(
     budget: list[int],
 ) -> None:
     """The commands of `text` that make targets, in order; a call of a function
-    the file defines runs its body with its parameters bound (4 deep at most).
+    the file defines runs its body with its parameters bound (4 deep at most); a
+    `foreach` over a list its words give runs its body once per item.
     `budget` counts the characters of the commands read, function bodies run
     included: what is left when it runs out is not read (its targets unknown)."""
 
@@ -291,7 +294,9 @@ def _cmake_run(
         found = variables.get(m.group(1))  # a value too long to be a name: unknown
         return found if found is not None and len(found) <= MAX_VALUE else m.group(0)
 
-    for match in _COMMAND.finditer(text):
+    at = 0
+    while (match := _COMMAND.search(text, at)) is not None:
+        at = match.end()
         budget[0] -= len(match.group(0))
         if budget[0] < 0:
             return
@@ -303,7 +308,17 @@ def _cmake_run(
         ]
         if not words:
             continue
-        if command in functions and depth < 4:
+        if command == "foreach":
+            body, after = _loop_body(text, at, budget)
+            items = _loop_items(words, variables)
+            if items is not None and after is not None:
+                for item in items:  # each pass's commands count against `budget`
+                    bound = {**variables, words[0]: item}
+                    _cmake_run(package, body, bound, targets, functions, depth, budget)
+                    if budget[0] < 0:
+                        return
+                at = after
+        elif command in functions and depth < 4:
             params, body = functions[command]
             bound = dict(variables)
             bound.update(zip(params, words[: len(params)], strict=False))
@@ -332,6 +347,39 @@ def _cmake_run(
         ):
             name = words[words.index("EXECUTABLE") + 1]
             targets.setdefault(name, ([], []))[1].append(words[0])
+
+
+def _loop_body(text: str, start: int, budget: list[int]) -> tuple[str, int | None]:
+    """The body of the `foreach` whose head ends at `start`, and where its
+    `endforeach()` ends (None: not closed, or `budget` spent looking)."""
+    depth = 1
+    for match in _COMMAND.finditer(text, start):
+        budget[0] -= len(match.group(0))
+        if budget[0] < 0:
+            break
+        command = match.group(1).lower()
+        depth += (command == "foreach") - (command == "endforeach")
+        if depth == 0:
+            return text[start : match.start()], match.end()
+    return "", None
+
+
+def _loop_items(words: list[str], variables: dict[str, str]) -> list[str] | None:
+    """The values a `foreach` gives its variable: `foreach(x a b)`, `foreach(x IN
+    ITEMS a b)`, `foreach(x IN LISTS l)`; None for any other form (`RANGE`,
+    `ZIP_LISTS`) or an item still holding a `${...}` (unknown)."""
+    items = words[1:]
+    if items[:2] == ["IN", "ITEMS"]:
+        items = items[2:]
+    elif items[:2] == ["IN", "LISTS"]:
+        if any(name not in variables for name in items[2:]):
+            return None  # set where this file is not read
+        items = [part for name in items[2:] for part in variables[name].split(";")]
+    elif items[:1] in (["RANGE"], ["IN"]):
+        return None
+    if any("$" in item for item in items):
+        return None
+    return [item for item in items if item]
 
 
 def _parse_arguments(raw: str, variables: dict[str, str]) -> None:

@@ -105,8 +105,10 @@ def code_name(found: FileGraph, owner: str) -> str | None:
     names = found.nodes.get(owner)
     if names:
         return names[0]
-    if "." in owner:
-        return None  # a member holding a node made elsewhere
+    if "." in owner or names is not None:
+        # a member holding a node made elsewhere, or a node class whose name is
+        # computed (C++ `: Node(node_name)`): not the name of another node
+        return None
     every = {n for listed in found.nodes.values() for n in listed}
     return every.pop() if len(every) == 1 else None
 

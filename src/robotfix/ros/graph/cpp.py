@@ -14,8 +14,11 @@ Names and types only, where they are written as literals (a string literal; a
 type spelled `pkg::msg::Name`, or an alias of one the file declares with `using`);
 anything computed is unknown. QoS: a depth, `rclcpp::QoS(n)` with its setters
 (`.best_effort()`, `.transient_local()`), `rclcpp::SensorDataQoS()` and the other
-preset classes. Which node: the class a method belongs to (its name from the
-`Node("name")` base initializer), else the node variable (`node->create_...`).
+preset classes, in the call or through a local declared once and only read. A
+parameter's type: its template argument, else its literal default's (`false`:
+bool). Which node: the class a method belongs to (its name from the
+`Node("name")` base initializer; `Node(node_name)`: unknown), else the node
+variable (`node->create_...`).
 
 Bad C++ never fails: tree-sitter recovers from errors; a file over
 `MAX_CPP_BYTES` is not read, and one without any of `WORDS` not parsed. What the
@@ -308,6 +311,8 @@ class _File:
             value = _text(args[default_at])[:80]
         if kind == PARAMETER and template is not None and not types:
             types = (_text(template).strip("<>").strip(),)
+        elif kind == PARAMETER and ros == 2 and default_at is not None:
+            types = _literal_type(args[default_at] if len(args) > default_at else None)
         if handle == "?":
             name = name if name is not None and name.startswith("/") else None
             handle = ""
@@ -488,6 +493,21 @@ def _interface(text: str, aliases: dict[str, str], kind: str) -> tuple[str, ...]
     return ()
 
 
+def _literal_type(node: Any) -> tuple[str, ...]:
+    """The type a literal default gives a parameter (`declare_parameter("x",
+    false)`: bool, as rclcpp's ParameterValue of it); () for anything else."""
+    kind = node.type if node is not None else ""
+    if kind in ("true", "false"):
+        return ("bool",)
+    if kind == "string_literal":
+        return ("std::string",)
+    if kind == "number_literal":
+        text = _text(node).lower()
+        real = not text.startswith("0x") and any(c in text for c in ".ef")
+        return ("double",) if real else ("int",)
+    return ()
+
+
 def _string(node: Any) -> str | None:
     """A plain string literal's text (no escapes, no concatenation)."""
     if node is None or node.type != "string_literal":
@@ -507,6 +527,8 @@ def _col(node: Any, data: bytes) -> int:
 def _qos(node: Any, depth: int = 0) -> Qos | None:
     if depth > 16:
         return None
+    if node.type == "identifier":  # `auto qos = rclcpp::QoS(10);` ... `qos`
+        return _local_qos(node, depth + 1)
     if node.type == "number_literal":
         try:
             return Q.depth_only(int(_text(node).rstrip("uUlL"), 0))
@@ -535,7 +557,13 @@ def _qos(node: Any, depth: int = 0) -> Qos | None:
         if field in ("keep_last",) and args and args[0].type == "number_literal":
             return Qos(inner.reliability, inner.durability, int(_text(args[0]), 0))
         return inner if field in Q.CPP_NEUTRAL else None
-    name = _text(func).split("::")[-1]
+    return _made(_text(func).split("::")[-1], args, depth)
+
+
+def _made(name: str, args: list[Any], depth: int) -> Qos | None:
+    """A profile built of a class: `SensorDataQoS()`, `QoS(10)`,
+    `QoS(KeepLast(10))`, `QoS(rclcpp::QoSInitialization::from_rmw(
+    rmw_qos_profile_sensor_data))`."""
     if name in Q.CPP_PROFILES:
         return Q.CPP_PROFILES[name]
     if name == "QoS" and args:
@@ -558,3 +586,79 @@ def _qos(node: Any, depth: int = 0) -> Qos | None:
             depth_value = int(_text(inner_args[0]), 0) if inner_args else None
             return Q.depth_only(depth_value)
     return None
+
+
+MAX_BODY_NODES = 20_000  # syntax nodes of a function body looked at for a local
+# the calls a local profile may be passed to without being changed
+_READERS = frozenset({*_METHODS, "make_unique", "make_shared"})
+
+
+def _local_qos(use: Any, depth: int) -> Qos | None:
+    """The profile of a local variable (`auto qos = rclcpp::QoS(10);`,
+    `rclcpp::QoS qos(10);`, `rclcpp::SensorDataQoS qos;`) declared once in the
+    function body around `use` and only read after: never assigned, never given
+    a setter (`qos.best_effort();`) outside `use`, and passed to no call but those
+    that make endpoints. Anything else is unknown, as is a body over
+    `MAX_BODY_NODES`."""
+    name = _text(use)
+    body = _body(use)
+    if body is None:
+        return None
+    found: list[Any] = []  # the declaration's init_declarator or declaration
+    stack, seen = [body], 0
+    while stack:
+        node = stack.pop()
+        seen += 1
+        if seen > MAX_BODY_NODES:
+            return None
+        if node.type == "identifier" and _text(node) == name and node != use:
+            parent = node.parent
+            if parent.type in ("init_declarator", "declaration") and (
+                parent.child_by_field_name("declarator") == node
+            ):
+                found.append(parent)
+            elif not _read(node, use):
+                return None
+        stack.extend(node.children)
+    if len(found) != 1 or found[0].start_byte > use.start_byte:
+        return None
+    declared = found[0]
+    statement = declared if declared.type == "declaration" else declared.parent
+    kind = statement.child_by_field_name("type") if statement is not None else None
+    cls = _text(kind).split("<")[0].split("::")[-1] if kind is not None else ""
+    value = declared.child_by_field_name("value")
+    if value is None:  # `rclcpp::SensorDataQoS qos;`
+        return Q.CPP_PROFILES.get(cls)
+    if value.type in ("argument_list", "initializer_list"):  # `rclcpp::QoS qos(10)`
+        args = [c for c in value.children if c.type not in ("(", ")", ",", "{", "}")]
+        return _made(cls, args, depth)
+    return _qos(value, depth + 1)
+
+
+def _body(node: Any) -> Any:
+    """The body of the function definition `node` lies in, or None."""
+    parent = node.parent
+    for _ in range(MAX_DEPTH):
+        if parent is None:
+            return None
+        if parent.type == "function_definition":
+            return parent.child_by_field_name("body")
+        parent = parent.parent
+    return None
+
+
+def _read(node: Any, use: Any) -> bool:
+    """Whether this mention of a local only reads it: within `use`, or passed
+    as it is to a call that makes an endpoint."""
+    if use.start_byte <= node.start_byte and node.end_byte <= use.end_byte:
+        return True
+    if node.parent is None or node.parent.type != "argument_list":
+        return False
+    call = node.parent.parent
+    func = call.child_by_field_name("function") if call is not None else None
+    for _ in range(8):  # `node->create_subscription<T>`: to the method's name
+        if func is None or func.type in ("identifier", "field_identifier"):
+            break
+        field = "field" if func.type == "field_expression" else "name"
+        func = func.child_by_field_name(field)
+    return func is not None and _text(func) in _READERS
