@@ -314,7 +314,7 @@ def _check_paths(
         group.graphs.update(graphs)
     if group is None:
         launches = _launches(found, everything)
-        cpp = _cpp_graphs(found, cache, paths[0], result)
+        cpp = _cpp_graphs(found, cache, paths[0] if paths else config.root, result)
         cpp_nodes = {n for g in cpp.values() for ns in g.nodes.values() for n in ns}
         result.diagnostics.extend(
             _parameter_problems(
