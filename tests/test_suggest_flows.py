@@ -224,3 +224,26 @@ def test_applying_every_suggestion_on_a_case_adds_no_finding(path: Path) -> None
     after = check_source(changed, str(path), config, catalog)
     new = [d for d in after if (d.code, old.get(d.span.line)) not in before]
     assert new == [], changed
+
+
+def test_suggest_from_the_root_uses_each_packages_own_settings(tmp_path: Path) -> None:
+    """A package's `robotfix.toml` (its `stub-paths`) counts when `suggest` runs at
+    the workspace root, as it does for `check` (suggest read only the first path's
+    configuration, so the root run proposed nothing the package run proposes)."""
+    package = tmp_path / "src" / "driver"
+    (package / "stubs").mkdir(parents=True)
+    (package / "robotfix.toml").write_text('stub-paths = ["stubs"]\n', encoding="utf-8")
+    (package / "stubs" / "motor.pyi").write_text(
+        "from typing import Annotated\n"
+        "def set_speed(v: Annotated[float, \"Unit('m/s')\"]) -> None: ...\n",
+        encoding="utf-8",
+    )
+    (package / "node.py").write_text(
+        "import motor\nCRUISE = 0.4\n\ndef main():\n    motor.set_speed(CRUISE)\n",
+        encoding="utf-8",
+    )
+    wanted = "+CRUISE: Annotated[float, \"Unit('m/s')\"] = 0.4"
+    for where, target in ((package, "node.py"), (tmp_path, ".")):
+        shown = run("suggest", target, cwd=where)
+        assert shown.returncode == 0, shown.stderr
+        assert wanted in shown.stdout.splitlines(), (where, shown.stdout)

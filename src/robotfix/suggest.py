@@ -30,7 +30,7 @@ from typing import TYPE_CHECKING
 
 from robotfix import api, fs
 from robotfix.bindings import IMPORTS, Bindings
-from robotfix.config import Config, ConfigError, load
+from robotfix.config import Config, ConfigError, Flags, by_settings, load
 from robotfix.discovery import discover, install_space
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.source import LINE_BREAK
@@ -61,24 +61,32 @@ def run_suggest(paths: list[Path], msg_paths: list[Path], apply: bool) -> int:
     if not present:
         return EXIT_FAILURE
     try:
-        settings = load(present[0])
-        catalog = _catalog(present, msg_paths, settings)
+        # `--msg-path` over every file's own settings (its nearest configuration),
+        # as for `robotfix check`
+        settings = Flags(msg_paths=tuple(msg_paths)).apply(load(present[0]))
         found = discover(present, settings)
         files = _unique(found.python_files)
+        groups = by_settings(files, settings)
     except (ConfigError, OSError) as err:
         _say(f"robotfix: error: {err}")
         return EXIT_FAILURE
     for notice in found.notices:  # links leaving the paths, unreadable folders
         _say(f"robotfix: {notice.path}: {notice.message}; not written")
         status = EXIT_FAILURE
-    project = api.make_project(present, settings, catalog)
+    apart = {file for _, group in groups for file in group}
+    own = [file for file in files if file not in apart]
     changed_files = 0
-    for file in files:
-        outcome = _suggest_file(file, present, catalog, apply, settings, project)
-        if outcome is None:
-            status = EXIT_FAILURE
-        elif outcome:
-            changed_files += 1
+    for config, group in [(settings, own), *groups]:
+        if not group:
+            continue
+        catalog = _catalog(present, config)
+        project = api.make_project(present, config, catalog)
+        for file in group:
+            outcome = _suggest_file(file, present, catalog, apply, config, project)
+            if outcome is None:
+                status = EXIT_FAILURE
+            elif outcome:
+                changed_files += 1
     if not changed_files:
         print(f"No suggestions in {_plural(len(files), 'file')}.")
     return status
@@ -188,10 +196,8 @@ def _print_diff(file: Path, text: str, changed: str) -> None:
     sys.stdout.writelines(line + "\n" for line in diff)
 
 
-def _catalog(paths: list[Path], msg_paths: list[Path], settings: Config) -> MsgCatalog:
-    folders = (
-        list(msg_paths) + list(settings.msg_paths) + api.ros_interface_folders(paths)
-    )
+def _catalog(paths: list[Path], settings: Config) -> MsgCatalog:
+    folders = list(settings.msg_paths) + api.ros_interface_folders(paths)
     return MsgCatalog(
         api.interface_files(folders),
         rep103=settings.rep103,
