@@ -16,7 +16,15 @@ from robotfix.analysis.context import Scope
 from robotfix.analysis.library import LibraryEvaluator
 from robotfix.analysis.program import Function, attribute_key
 from robotfix.analysis.state import State
-from robotfix.analysis.values import MUTABLE, NONE, SEQUENCES, Items, Kept, Value
+from robotfix.analysis.values import (
+    MESSAGE_LIKE,
+    MUTABLE,
+    NONE,
+    SEQUENCES,
+    Items,
+    Kept,
+    Value,
+)
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import INFINITY, NUMBERS
@@ -110,7 +118,7 @@ class CallEvaluator(LibraryEvaluator):
         argument is."""
         refinements = self.ctx.obligations.get(holder, [])
         for value in values[:1]:
-            if value.kind != "msg" or value.ref is None:
+            if value.kind not in MESSAGE_LIKE:
                 continue
             for label, refinement in refinements:
                 self.check.assign_refined(
