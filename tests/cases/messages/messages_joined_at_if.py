@@ -1,6 +1,8 @@
-"""A name bound to two different messages on two paths (`twist = Twist()`, then
-`twist = go_straight(1.0)` on one branch), or to one a loop builds again, is not
-followed field by field: given for a refined message, it is any message of the
+"""A name bound to a different message on each path of an `if` (`twist = Twist()`,
+then `twist = Twist()` again on one branch) holds, after the join, one message
+whose fields are joined one by one, when nothing else holds either message or a
+part of it. Else (another name holds a part of one), or when a loop builds it
+again, it is not followed: given for a refined message, it is any message of the
 type, so the refinement is not proved (RF102), never silently accepted."""
 from typing import Annotated
 
@@ -28,6 +30,59 @@ def built_on_one_branch(moving: bool) -> None:
     if moving:
         twist = Twist()
         twist.linear.x = 1.0
+    send(twist)  # warning: RF102
+
+
+def built_on_one_branch_within(moving: bool) -> None:
+    twist = Twist()
+    if moving:
+        twist = Twist()
+        twist.linear.x = 0.1
+    send(twist)
+
+
+def built_on_each_branch_too_fast(moving: bool) -> None:
+    twist = Twist()
+    twist.linear.x = 0.8
+    if moving:
+        twist = Twist()
+        twist.linear.x = 0.9
+    send(twist)  # error: RF101
+
+
+def set_after_the_join(moving: bool) -> None:
+    twist = Twist()
+    if moving:
+        twist = Twist()
+        twist.angular.z = 3.0
+    twist.linear.x = 1.0
+    send(twist)  # error: RF101
+
+
+def set_after_the_join_within(moving: bool) -> None:
+    twist = Twist()
+    if moving:
+        twist = Twist()
+        twist.angular.z = 3.0
+    twist.linear.x = 0.2
+    send(twist)
+
+
+def part_held_by_another_name(moving: bool) -> None:
+    twist = Twist()
+    linear = twist.linear
+    if moving:
+        twist = Twist()
+    linear.x = 1.0  # changes `twist` on the path that kept the first message
+    send(twist)  # warning: RF102
+
+
+def other_name_holds_the_first(moving: bool) -> None:
+    first = Twist()
+    twist = first
+    if moving:
+        twist = Twist()
+    first.linear.x = 1.0
     send(twist)  # warning: RF102
 
 

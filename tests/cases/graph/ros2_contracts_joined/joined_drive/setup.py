@@ -7,8 +7,6 @@ setup(
         'console_scripts': [
             'guard = joined_drive.guard:main',
             'mover = joined_drive.mover:main',
-            'looped = joined_drive.looped:main',
-            'steady = joined_drive.steady:main',
         ],
     },
 )

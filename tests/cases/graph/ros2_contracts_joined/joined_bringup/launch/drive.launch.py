@@ -6,6 +6,4 @@ def generate_launch_description():
     return LaunchDescription([
         Node(package='joined_drive', executable='guard', name='guard'),
         Node(package='joined_drive', executable='mover', name='mover'),
-        Node(package='joined_drive', executable='looped', name='looped'),
-        Node(package='joined_drive', executable='steady', name='steady'),
     ])
