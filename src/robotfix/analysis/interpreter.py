@@ -1580,6 +1580,25 @@ class Interpreter(CallEvaluator):
             b.env[name] = Value("list", unit=unit, items=items)
 
     # The Joiner hooks (see state.join).
+    def kept(self, name: str, state: State, ref: int) -> bool:
+        """Whether no code of this function lets the message `name` holds (`ref`)
+        escape (stored elsewhere, handed to a call that may keep it, returned:
+        `writes.py`), nor a name assigned to `name` (`twist = cmd`)."""
+        scope = self.function.node if self.function is not None else None
+        tree = scope or self.ctx.source.tree
+        if tree is None:
+            return False
+        roots = {name} | {
+            node.value.id
+            for node in walk(tree)
+            if isinstance(node, ast.Assign)
+            and isinstance(node.value, ast.Name)
+            and any(isinstance(t, ast.Name) and t.id == name for t in node.targets)
+        }
+        leaf = partial(self._leaf, state, dict.fromkeys(roots, ref))
+        found = writes.uses([tree], roots, leaf, self.only_reads)
+        return not any(writes.ESCAPE in kinds for kinds in found.values())
+
     def merged(self, x: Value, y: Value) -> Value:
         kinds = {x.kind, y.kind}
         kind = (

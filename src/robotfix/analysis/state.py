@@ -155,6 +155,11 @@ class Joiner(Protocol):
         """What `state` holds in field `name` of message `ref`, which it never
         touched (its default, an unknown, or the sub-message of the same id)."""
 
+    def kept(self, name: str, state: State, ref: int) -> bool:
+        """Whether no code lets the message `name` holds (`ref` in `state`) escape
+        where the analysis does not follow it (a container, a callee that may
+        keep it)."""
+
 
 def join(a: State, b: State, joiner: Joiner) -> State:
     """Merge two paths.
@@ -484,6 +489,8 @@ def _pairs(
     """`b`'s ids of `name`'s message and its sub-messages -> `a`'s, and the ids
     of `b` to drop (what `b` had of `a`'s message, which it no longer holds);
     None when another name, field or container holds a part of either."""
+    if not joiner.kept(name, b, rb):
+        return None
     held_a = _held(a, name)
     held_b = _held(b, name)
     pairs: dict[int, int] = {}

@@ -1,8 +1,9 @@
 """A name bound to a different message on each path of an `if` (`twist = Twist()`,
 then `twist = Twist()` again on one branch) holds, after the join, one message
 whose fields are joined one by one, when nothing else holds either message or a
-part of it. Else (another name holds a part of one), or when a loop builds it
-again, it is not followed: given for a refined message, it is any message of the
+part of it, and the function lets it escape nowhere (`writes.py`). Else (another
+name holds a part of one, a container holds it), or when a loop builds it again,
+it is not followed: given for a refined message, it is any message of the
 type, so the refinement is not proved (RF102), never silently accepted."""
 from typing import Annotated
 
@@ -83,6 +84,15 @@ def other_name_holds_the_first(moving: bool) -> None:
     if moving:
         twist = Twist()
     first.linear.x = 1.0
+    send(twist)  # warning: RF102
+
+
+def stored_where_the_analysis_does_not_follow(moving: bool, box: dict) -> None:
+    twist = Twist()
+    if moving:
+        twist = Twist()
+        box["last"] = twist
+    box["last"].linear.x = 1.0  # changes `twist` on the path that stored it
     send(twist)  # warning: RF102
 
 
