@@ -268,7 +268,11 @@ class Interpreter(CallEvaluator):
         self._breaking: list[list[State] | None] = []
 
     # -- blocks --------------------------------------------------------------
-    def exec_block(self, body: list[ast.stmt], state: State) -> State:
+    def exec_block(
+        self, body: list[ast.stmt], state: State, flush: bool = True
+    ) -> State:
+        """Run statements; each one's deferred reports are made after it (not
+        `flush`: a helper's body run inside the caller's statement)."""
         for stmt in body:
             if not state.reachable:
                 break
@@ -276,7 +280,8 @@ class Interpreter(CallEvaluator):
             self.site = stmt
             method = getattr(self, f"visit_{type(stmt).__name__}", None)
             state = method(stmt, state) if method else self.generic(stmt, state)
-            self.ctx.flush()
+            if flush:
+                self.ctx.flush()
         return state
 
     def generic(self, stmt: ast.stmt, state: State) -> State:

@@ -19,15 +19,25 @@ class Mover(Node):
 
     def tick(self) -> None:
         """Every other tick, the message a helper builds (fresh-eyes r2: it was
-        silent); the helper's fields are not known at the call."""
+        silent): too fast on one path of the two."""
         self.moving = not self.moving
         twist = Twist()
         if self.moving:
             twist = go_straight(1.0)
         self.pub.publish(twist)  # warning: RF102
 
+    def helper_on_every_tick(self) -> None:
+        self.pub.publish(go_straight(1.0))  # error: RF101
+
+    def helper_within(self) -> None:
+        """The near miss: the helper's message within the limit."""
+        twist = Twist()
+        if self.moving:
+            twist = go_straight(0.1)
+        self.pub.publish(twist)
+
     def own_message_within(self) -> None:
-        """The near miss: a message of its own on one branch, within the limit."""
+        """A message of its own on one branch, within the limit."""
         twist = Twist()
         if self.moving:
             twist = Twist()
