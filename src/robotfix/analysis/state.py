@@ -464,12 +464,19 @@ def _one_message(a: State, b: State, joiner: Joiner) -> State:
     either path holds either message or a part of it, `b`'s is given the ids of
     `a`'s, so that the heap join merges the two field by field (as it does one
     message set on both paths). Otherwise the name is unknown after the join."""
-    for name in sorted(a.env.keys() & b.env.keys()):
-        x, y = a.env[name], b.env[name]
+    if not a.heap or not b.heap:
+        return b
+    differ = [
+        name
+        for name, x in a.env.items()
+        if isinstance(x, Value) and x.kind == "msg" and b.env.get(name) is not x
+    ]
+    for name in sorted(differ):
+        x, y = a.env[name], b.env.get(name)
         if (
             isinstance(x, Value)
             and isinstance(y, Value)
-            and x.kind == "msg" == y.kind
+            and y.kind == "msg"
             and x.name == y.name
             and x.ref is not None
             and y.ref is not None
