@@ -16,7 +16,15 @@ from robotfix.analysis.context import Scope
 from robotfix.analysis.library import LibraryEvaluator
 from robotfix.analysis.program import Function, attribute_key
 from robotfix.analysis.state import State
-from robotfix.analysis.values import MUTABLE, NONE, SEQUENCES, Items, Kept, Value
+from robotfix.analysis.values import (
+    MESSAGE_LIKE,
+    MUTABLE,
+    NONE,
+    SEQUENCES,
+    Items,
+    Kept,
+    Value,
+)
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import INFINITY, NUMBERS
@@ -110,7 +118,7 @@ class CallEvaluator(LibraryEvaluator):
         argument is."""
         refinements = self.ctx.obligations.get(holder, [])
         for value in values[:1]:
-            if value.kind != "msg" or value.ref is None:
+            if value.kind not in MESSAGE_LIKE:
                 continue
             for label, refinement in refinements:
                 self.check.assign_refined(
@@ -325,6 +333,12 @@ class CallEvaluator(LibraryEvaluator):
         interpreter provides one, with the helper's scope)."""
         return None
 
+    def exec_block(
+        self, body: list[ast.stmt], state: State, flush: bool = True
+    ) -> State:
+        """Run statements (the statement interpreter's, for a helper's body)."""
+        raise NotImplementedError
+
     def inline_call(
         self,
         function: Function,
@@ -333,25 +347,27 @@ class CallEvaluator(LibraryEvaluator):
         bound: bool,
         state: State,
     ) -> Value | None:
-        """The result of a one-expression helper evaluated with its parameters
-        bound to the arguments (`analysis/inline.py`); None when it is not one, or
-        when evaluating it reported something (a bug inside it: unknown, as before)."""
+        """The result of a one-expression helper, or of one that builds a message,
+        evaluated with its parameters bound to the arguments (`analysis/inline.py`);
+        None when it is not one, or when evaluating it reported something (a bug
+        inside it: unknown, as before)."""
         if self.ctx.unit_flows is not None:
             # `suggest`: a helper's result stays unknown there, so that what it
             # proposes is reached in one round (a unit a helper gives a name would
             # hold back the sink's unit until the arguments are annotated)
             return None
-        expr = self._inlinable(function, self.inlined)
+        found = self._inlinable(function, self.inlined)
         fn = function.node
-        if expr is None or not isinstance(fn, ast.FunctionDef):
+        if found is None or not isinstance(fn, ast.FunctionDef):
             return None
+        stmts, expr, read = found
         given = inline.bind(fn, bound and function.is_method, args, kwargs)  # type: ignore[arg-type]
         scope = self.program.signature(self.ctx, function)
         params = {n for n, _ in inline.parameters(fn, False)}
         if (
             given is None
             or any(scope.decls.get(n) is not None for n in params)
-            or not (inline.names(expr) & params) <= set(given)
+            or not (read & params) <= set(given)
         ):
             return None
         sub = self.helper_evaluator(function)
@@ -366,6 +382,9 @@ class CallEvaluator(LibraryEvaluator):
                     for name, value in given.items()
                 }
                 state.env = dict(bindings)
+                body: list[ast.stmt] = [*stmts]
+                if body and sub.exec_block(body, state, flush=False) is not state:
+                    return None  # straight-line stores change the state in place
                 value = sub.eval(expr, state)
         finally:
             state.env = env
@@ -373,28 +392,47 @@ class CallEvaluator(LibraryEvaluator):
 
     def _inlinable(
         self, function: Function, within: tuple[str, ...]
-    ) -> ast.expr | None:
-        """The expression a module-level helper returns when a call may be evaluated
-        through it (`inline.returned`, `inline.pure`), not inside itself and at most
-        `inline.MAX_DEPTH` deep."""
+    ) -> tuple[list[ast.Assign], ast.expr, set[str]] | None:
+        """What a module-level helper's call may be evaluated through, not inside
+        itself and at most `inline.MAX_DEPTH` deep: the statements that build its
+        message (`inline.built`; none for a one-expression helper,
+        `inline.returned`), the expression it returns, and the names they read;
+        every expression `inline.pure`."""
         module = function.parent
         if function.key in within or len(within) >= inline.MAX_DEPTH:
             return None
         if module.parent is not None or function.returns is not None:
             return None
-        expr = inline.returned(function.node)
-        if expr is None:
-            return None
         params = {n for n, _ in inline.parameters(function.node, False)}  # type: ignore[arg-type]
         known = params | module.local_names | inline.PURE_BUILTINS
-        if not inline.names(expr) <= known:
+        expr = inline.returned(function.node)
+        stmts: list[ast.Assign] = []
+        exprs: list[ast.expr] = [] if expr is None else [expr]
+        built = None if expr is not None else inline.built(function.node)
+        if built is not None:
+            stmts, name = built
+            maker = stmts[0].value
+            assert isinstance(maker, ast.Call) and isinstance(maker.func, ast.Name)
+            made = self.static_value(maker.func.id)
+            if name in params or made is None or made.kind != "msgclass":
+                return None
+            known = known | {name}
+            expr = ast.Name(name, ast.Load())
+            exprs = [*maker.args, *(k.value for k in maker.keywords)]
+            exprs += [s.value for s in stmts[1:]]
+            if any(k.arg is None for k in maker.keywords):
+                return None
+        if expr is None:
+            return None
+        read = set().union(*(inline.names(e) for e in exprs)) if exprs else set()
+        if not read <= known:
             return None  # a name that is not bound where the helper is
         defaults = [d for _, d in inline.parameters(function.node, False) if d]  # type: ignore[arg-type]
         if any(inline.names(d) & params for d in defaults):
             return None  # a default reads a module name the parameter hides
         ok = partial(self._pure_callee, params, module, (*within, function.key))
-        if inline.pure(expr, ok) and all(inline.pure(d, ok) for d in defaults):
-            return expr
+        if all(inline.pure(e, ok) for e in [*exprs, *defaults]):
+            return stmts, expr, read
         return None
 
     def _pure_callee(

@@ -16,6 +16,7 @@ from robotfix.analysis import containers, fixes, frames, heap, parameters
 from robotfix.analysis.context import SOLVER_BUDGET, FileContext
 from robotfix.analysis.state import State
 from robotfix.analysis.values import (
+    MESSAGE_LIKE,
     SEQUENCES,
     Items,
     Kept,
@@ -411,6 +412,11 @@ class Checker:
             f"annotation of `{name}`", decl.origin or self.path, decl.line
         )
         if decl.optional and value.kind == "none":
+            return value
+        if decl.base == "msg" and value.kind in MESSAGE_LIKE and value.ref is None:
+            # a message the analysis does not follow (two joined at an `if`, one
+            # a loop changed): any message of the type, so nothing is proved
+            self._reach_any(state, name, decl, site, lookup, leaving)
             return value
         if value.kind == "msg":
             if decl.base == "msg" and value.ref is not None:
@@ -1331,6 +1337,33 @@ class Checker:
             )
         obj.extra += tuple(inv for inv in rules if inv not in obj.extra)
         state.shared.extras = True
+
+    def _reach_any(
+        self,
+        state: State,
+        name: str,
+        decl: Refinement,
+        site: ast.AST,
+        lookup: dict[str, A.Expr],
+        leaving: bool,
+    ) -> None:
+        """A value the analysis does not follow reaches a refined message: checked
+        as a received message of the type, whose fields may hold anything."""
+        if decl.msg_type is None or self.ctx.catalog.lookup(decl.msg_type) is None:
+            return
+        stand_in = heap.new_message(
+            self.ctx, state, decl.msg_type, "received", label=name
+        )
+        assert stand_in.ref is not None
+        self.reach(
+            state,
+            stand_in.ref,
+            self.message_rules(decl, name, lookup),
+            site,
+            name,
+            leaving,
+        )
+        del state.heap[stand_in.ref]
 
     def assume_rules(
         self, state: State, ref: int, rules: tuple[ObjInvariant, ...], label: str

@@ -9,6 +9,11 @@ pure builtins, of functions the stubs know under `math` and `numpy`, and of othe
 such helpers of the module (to `MAX_DEPTH`, never recursively). Anything else (a
 statement, `*args`, a decorator, a lambda or comprehension, a call of unknown code)
 keeps the call's result unknown, as before.
+
+A helper that builds a message and returns it (`twist = Twist()`, stores into its
+fields of such expressions, `return twist`: `built`) is, at a call, those
+statements run with its parameters bound to the arguments: the message, with the
+fields it sets, is the call's.
 """
 
 from __future__ import annotations
@@ -45,24 +50,74 @@ _NODES = (
 )
 
 
-def returned(node: ast.AST) -> ast.expr | None:
-    """The expression of a plain `def f(a, b=1): return <expr>` (a docstring
-    allowed), None for any other function."""
+def _body(node: ast.AST) -> list[ast.stmt] | None:
+    """The statements of a plain `def f(a, b=1):` after its docstring, None for any
+    other function (a decorator, `*args`, `**kwargs`)."""
     if not isinstance(node, ast.FunctionDef) or node.args.vararg or node.args.kwarg:
         return None
     if node.decorator_list:
         return None
     body = node.body
     if (
-        len(body) == 2
+        len(body) >= 2
         and isinstance(body[0], ast.Expr)
         and isinstance(body[0].value, ast.Constant)
         and isinstance(body[0].value.value, str)
     ):
         body = body[1:]
-    if len(body) != 1 or not isinstance(body[0], ast.Return):
+    return body
+
+
+def returned(node: ast.AST) -> ast.expr | None:
+    """The expression of a plain `def f(a, b=1): return <expr>` (a docstring
+    allowed), None for any other function."""
+    body = _body(node)
+    if body is None or len(body) != 1 or not isinstance(body[0], ast.Return):
         return None
     return body[0].value
+
+
+def built(node: ast.AST) -> tuple[list[ast.Assign], str] | None:
+    """A plain helper that builds a message and returns it: `v = Msg(...)`, then
+    only stores into fields of `v` (`v.linear.x = speed`), then `return v`. Its
+    assignments and `v`; None for any other function (what their expressions may
+    be is the caller's to check, as `pure`)."""
+    body = _body(node)
+    if body is None or len(body) < 2:
+        return None
+    first, last = body[0], body[-1]
+    if not (
+        isinstance(first, ast.Assign)
+        and len(first.targets) == 1
+        and isinstance(first.targets[0], ast.Name)
+        and isinstance(first.value, ast.Call)
+        and isinstance(first.value.func, ast.Name)
+    ):
+        return None
+    name = first.targets[0].id
+    if not (
+        isinstance(last, ast.Return)
+        and isinstance(last.value, ast.Name)
+        and last.value.id == name
+    ):
+        return None
+    stores = body[1:-1]
+    for store in stores:
+        if not (
+            isinstance(store, ast.Assign)
+            and len(store.targets) == 1
+            and isinstance(store.targets[0], ast.Attribute)
+            and _root(store.targets[0]) == name
+        ):
+            return None
+    return [first, *stores], name  # type: ignore[list-item]
+
+
+def _root(node: ast.expr | None) -> str | None:
+    """`v` of `v` or `v.a.b`, else None."""
+    while isinstance(node, ast.Attribute):
+        node = node.value
+    return node.id if isinstance(node, ast.Name) else None
 
 
 def pure(

@@ -268,7 +268,11 @@ class Interpreter(CallEvaluator):
         self._breaking: list[list[State] | None] = []
 
     # -- blocks --------------------------------------------------------------
-    def exec_block(self, body: list[ast.stmt], state: State) -> State:
+    def exec_block(
+        self, body: list[ast.stmt], state: State, flush: bool = True
+    ) -> State:
+        """Run statements; each one's deferred reports are made after it (not
+        `flush`: a helper's body run inside the caller's statement)."""
         for stmt in body:
             if not state.reachable:
                 break
@@ -276,7 +280,8 @@ class Interpreter(CallEvaluator):
             self.site = stmt
             method = getattr(self, f"visit_{type(stmt).__name__}", None)
             state = method(stmt, state) if method else self.generic(stmt, state)
-            self.ctx.flush()
+            if flush:
+                self.ctx.flush()
         return state
 
     def generic(self, stmt: ast.stmt, state: State) -> State:
@@ -1580,6 +1585,25 @@ class Interpreter(CallEvaluator):
             b.env[name] = Value("list", unit=unit, items=items)
 
     # The Joiner hooks (see state.join).
+    def kept(self, name: str, state: State, ref: int) -> bool:
+        """Whether no code of this function lets the message `name` holds (`ref`)
+        escape (stored elsewhere, handed to a call that may keep it, returned:
+        `writes.py`), nor a name assigned to `name` (`twist = cmd`)."""
+        scope = self.function.node if self.function is not None else None
+        tree = scope or self.ctx.source.tree
+        if tree is None:
+            return False
+        roots = {name} | {
+            node.value.id
+            for node in walk(tree)
+            if isinstance(node, ast.Assign)
+            and isinstance(node.value, ast.Name)
+            and any(isinstance(t, ast.Name) and t.id == name for t in node.targets)
+        }
+        leaf = partial(self._leaf, state, dict.fromkeys(roots, ref))
+        found = writes.uses([tree], roots, leaf, self.only_reads)
+        return not any(writes.ESCAPE in kinds for kinds in found.values())
+
     def merged(self, x: Value, y: Value) -> Value:
         kinds = {x.kind, y.kind}
         kind = (

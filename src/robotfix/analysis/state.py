@@ -155,6 +155,11 @@ class Joiner(Protocol):
         """What `state` holds in field `name` of message `ref`, which it never
         touched (its default, an unknown, or the sub-message of the same id)."""
 
+    def kept(self, name: str, state: State, ref: int) -> bool:
+        """Whether no code lets the message `name` holds (`ref` in `state`) escape
+        where the analysis does not follow it (a container, a callee that may
+        keep it)."""
+
 
 def join(a: State, b: State, joiner: Joiner) -> State:
     """Merge two paths.
@@ -170,6 +175,7 @@ def join(a: State, b: State, joiner: Joiner) -> State:
         return b
     if not b.reachable:
         return a
+    b = _one_message(a, b, joiner)
     common = _common(a.facts, b.facts)
     rest_a, rest_b = a.facts[common:], b.facts[common:]
     path_a, path_b = A.conjoin(rest_a), A.conjoin(rest_b)
@@ -450,6 +456,149 @@ def _either(
     for part in parts[1:]:
         result = A.Binary("or", result, part)
     return A.conjoin([fact for _, fact in defines] + [result])
+
+
+def _one_message(a: State, b: State, joiner: Joiner) -> State:
+    """A name bound to a different message of one type on each path (`twist =
+    Twist()`, and on one branch `twist = go_straight(1.0)`): when nothing else on
+    either path holds either message or a part of it, `b`'s is given the ids of
+    `a`'s, so that the heap join merges the two field by field (as it does one
+    message set on both paths). Otherwise the name is unknown after the join."""
+    if not a.heap or not b.heap:
+        return b
+    differ = [
+        name
+        for name, x in a.env.items()
+        if isinstance(x, Value) and x.kind == "msg" and b.env.get(name) is not x
+    ]
+    for name in sorted(differ):
+        x, y = a.env[name], b.env.get(name)
+        if (
+            isinstance(x, Value)
+            and isinstance(y, Value)
+            and y.kind == "msg"
+            and x.name == y.name
+            and x.ref is not None
+            and y.ref is not None
+            and x.ref != y.ref
+            and x.ref in a.heap
+            and y.ref in b.heap
+        ):
+            pairs = _pairs(a, b, name, x.ref, y.ref, joiner)
+            if pairs is not None:
+                b = _renamed(b, name, *pairs)
+    return b
+
+
+def _pairs(
+    a: State, b: State, name: str, ra: int, rb: int, joiner: Joiner
+) -> tuple[dict[int, int], set[int]] | None:
+    """`b`'s ids of `name`'s message and its sub-messages -> `a`'s, and the ids
+    of `b` to drop (what `b` had of `a`'s message, which it no longer holds);
+    None when another name, field or container holds a part of either."""
+    if not joiner.kept(name, b, rb):
+        return None
+    held_a = _held(a, name)
+    held_b = _held(b, name)
+    pairs: dict[int, int] = {}
+    todo = [(rb, ra)]
+    while todo:
+        sb, sa = todo.pop()
+        ob, oa = b.heap.get(sb), a.heap.get(sa)
+        if sb in pairs or ob is None or oa is None or ob.type != oa.type:
+            return None
+        pairs[sb] = sa
+        for fname in sorted(ob.fields):
+            fb = ob.fields[fname]
+            if fb.elements is not None or fb.keys is not None or fb.items is not None:
+                return None  # an array field's messages are not followed here
+            if fb.kind != "msg":
+                continue
+            fa = oa.fields.get(fname)
+            if fa is None:
+                fa = joiner.complete(a, sa, fname)
+            if fb.ref is None or fa.kind != "msg" or fa.ref is None:
+                return None
+            todo.append((fb.ref, fa.ref))
+    ours_a = _parts(a, set(pairs.values()))
+    ours_b = _parts(b, set(pairs))
+    drop = _parts(b, set(pairs.values()))
+    if ours_a & held_a or (ours_b | drop) & held_b or set(pairs) & ours_a:
+        return None
+    return pairs, drop - set(pairs)
+
+
+def _held(state: State, name: str) -> set[int]:
+    """The messages the names other than `name` hold, and their parts."""
+    found: set[int] = set()
+    todo: list[Binding | None] = [v for n, v in state.env.items() if n != name]
+    while todo:
+        value = todo.pop()
+        if isinstance(value, MaybeUnbound):
+            value = value.value
+        if value is None:
+            continue
+        if value.kind == "msg" and value.ref is not None and value.ref not in found:
+            found.add(value.ref)
+            obj = state.heap.get(value.ref)
+            if obj is not None:
+                todo.extend(obj.fields.values())
+        todo.extend(value.elements or ())
+        todo.extend(value.keys or ())
+    return found
+
+
+def _parts(state: State, roots: set[int]) -> set[int]:
+    """`roots` and every message of `state` that is a part of one (by owner)."""
+    found = set(roots)
+    grew = True
+    while grew:
+        grew = False
+        for ref, obj in state.heap.items():
+            if ref not in found and obj.owner is not None and obj.owner[0] in found:
+                found.add(ref)
+                grew = True
+    return found
+
+
+def _renamed(b: State, name: str, pairs: dict[int, int], drop: set[int]) -> State:
+    """`b` with the messages of `pairs` under their new ids (`b` is not changed)."""
+
+    def moved(value: Value) -> Value:
+        ref = pairs.get(value.ref) if value.kind == "msg" and value.ref else None
+        owner = value.default_of
+        if owner is not None and owner[0] in pairs:
+            value = replace(value, default_of=(pairs[owner[0]], owner[1]))
+        return value if ref is None else replace(value, ref=ref)
+
+    heap: dict[int, MsgObj] = {}
+    for ref, obj in b.heap.items():
+        if ref in drop:
+            continue
+        if ref in pairs:
+            obj = obj.copy()
+            obj.fields = {k: moved(v) for k, v in obj.fields.items()}
+            if obj.owner is not None and obj.owner[0] in pairs:
+                obj.owner = (pairs[obj.owner[0]], obj.owner[1])
+            if obj.unset:
+                obj.unset = {
+                    k: replace(u, owner=(pairs.get(u.owner[0], u.owner[0]), u.owner[1]))
+                    for k, u in obj.unset.items()
+                }
+        heap[pairs.get(ref, ref)] = obj
+    env = dict(b.env)
+    env[name] = moved(b.env[name])  # type: ignore[arg-type]
+    return State(
+        env,
+        heap,
+        b.facts,
+        b.reachable,
+        b.versions,
+        b.defined,
+        b.shared,
+        b.exits,
+        b.tests,
+    )
 
 
 def _common(a: list[A.Expr], b: list[A.Expr]) -> int:

@@ -26,6 +26,9 @@ MUTABLE = frozenset({"unknown", "list", "dict"})
 # Values whose elements a refinement speaks of: lists (also message array fields),
 # tuples, and generators (`min(r for r in ranges)`).
 SEQUENCES = frozenset({"list", "tuple", "generator"})
+# Kinds of value a message may be: one on the heap, or (without a ref) one the
+# analysis does not follow (two messages joined at an `if`, a library's object)
+MESSAGE_LIKE = frozenset({"msg", "unknown", "object"})
 _T = TypeVar("_T", bound=Any)
 
 
