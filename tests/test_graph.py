@@ -17,6 +17,7 @@ from pathlib import Path
 import pytest
 
 from robotfix import run as run_module
+from robotfix.analysis.index import index_of
 from robotfix.api import check_paths
 from robotfix.cli import main
 from robotfix.config import Config
@@ -235,7 +236,43 @@ def test_programs_of_different_packages_or_test_code_are_never_compared(
 
 
 def _py(text: str) -> FileGraph:
-    return read_python(ast.parse(text))
+    """The file's graph, the same when read with its index's calls (as a
+    checked file is: only the statements holding endpoint calls walked)."""
+    tree = ast.parse(text)
+    found = read_python(tree)
+    assert dump(read_python(tree, index_of(tree).calls)) == dump(found)
+    return found
+
+
+def test_python_read_with_the_calls_is_the_whole_walk() -> None:
+    """A call where its position does not say (in a decorator, which the walk
+    leaves out), two `__init__` calls of a class (taken in the walk's order),
+    two classes of one name: the reading with the index's calls is the whole
+    walk's."""
+    found = _py(
+        "import rclpy\nfrom rclpy.node import Node\nfrom std_msgs.msg import String\n"
+        "node = rclpy.create_node('solo')\n"
+        "@wrap(node.create_publisher(String, 'deco', 1))\n"
+        "def f(): pass\n"
+        "class A(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('one')\n"
+        "    def again(self):\n"
+        "        Node.__init__(self, 'two')\n"
+        "        self.create_publisher(String, 'a', 1)\n"
+        "if rclpy:\n"
+        "    class B(Node):\n"
+        "        def __init__(self):\n"
+        "            super().__init__('hidden')\n"
+        "class B(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('b')\n"
+        "        self.create_subscription(String, 'b', lambda m: None, 1)\n"
+        "def idle(x):\n"
+        "    return x + 1\n"
+    )
+    assert [e.name for e in found.endpoints] == ["a", "b"]
+    assert found.nodes == {"node": ["solo"], "A": ["two", "one"], "B": ["b"]}
 
 
 def test_python_types_through_imports_names_and_choices() -> None:
@@ -655,3 +692,4 @@ def test_a_cpp_node_class_named_by_its_caller_has_no_known_name() -> None:
         "/?(two_nodes.cpp)",
         "/TestNode",
     ]
+
