@@ -693,3 +693,22 @@ def test_a_cpp_node_class_named_by_its_caller_has_no_known_name() -> None:
         "/TestNode",
     ]
 
+
+def test_cpp_reading_is_the_same_every_time() -> None:
+    """tree-sitter gives one name's captures in an order that varies between
+    parses: functions of one name (a free `cb0` taking the message by value, a
+    method `cb0` taking a `ConstPtr`) made a roscpp callback's type change from
+    read to read (61 outcomes in 200 reads); the file's last one, in source
+    order, is taken every time."""
+    parts = ['#include "ros/ros.h"\n']
+    parts += [f"void cb{i}(const std_msgs::String& msg) {{}}\n" for i in range(12)]
+    parts.append("class Listener {\n public:\n")
+    parts += [
+        f"  void cb{i}(const std_msgs::String::ConstPtr& msg) {{}}\n"
+        for i in range(12)
+    ]
+    parts.append("};\nint main(int argc, char** argv) {\n  ros::NodeHandle n;\n")
+    parts += [f'  n.subscribe("t{i}", 10, cb{i});\n' for i in range(12)]
+    data = "".join(parts + ["}\n"]).encode()
+    reads = {tuple(e.types for e in read_cpp(data).endpoints) for _ in range(20)}
+    assert reads == {(("std_msgs/msg/String",),) * 12}

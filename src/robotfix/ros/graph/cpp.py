@@ -126,7 +126,13 @@ class _File:
         self.ros1 = False
 
     def read(self, root: Any) -> None:
-        captures = _query().captures(root)
+        # in source order: tree-sitter's order of one name's captures varies from
+        # run to run (which of two `chatterCallback`s a callback is, the order of
+        # a class's node names)
+        captures = {
+            name: sorted(nodes, key=lambda n: (n.start_byte, n.end_byte))
+            for name, nodes in _query().captures(root).items()
+        }
         for node in captures.get("cls", []):
             self._bases(node.parent, _text(node).split("::")[-1])
         for node in captures.get("fn", []):
@@ -144,7 +150,7 @@ class _File:
             self._handle(node)
         for node in captures.get("init", []):
             self._initializer(node)
-        for node in sorted(captures.get("call", []), key=lambda n: n.start_byte):
+        for node in captures.get("call", []):
             self._call(node)
         self.found.ros = 1 if self.ros1 else 2
 
