@@ -447,8 +447,7 @@ def _bind_scope(file: _File, scope: _Scope, cls: str | None) -> None:
                 names.setdefault(target.id, []).append(None)
             todo.append(node.value)
             continue
-        for child in ast.iter_child_nodes(node):
-            todo.append(child)
+        todo.extend(children(node))  # not contexts and operators: none binds
     file.bindings[id(scope)] = names
 
 
