@@ -712,3 +712,21 @@ def test_cpp_reading_is_the_same_every_time() -> None:
     data = "".join(parts + ["}\n"]).encode()
     reads = {tuple(e.types for e in read_cpp(data).endpoints) for _ in range(20)}
     assert reads == {(("std_msgs/msg/String",),) * 12}
+
+
+def test_cpp_file_naming_no_endpoint_maker_is_not_parsed(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """`param` in `get_parameter`, `create_` in `create_wall_timer`: the words
+    are there, but no name that makes an endpoint stands as a word."""
+    from robotfix.ros.graph import cpp
+
+    def parser() -> None:
+        raise AssertionError("parsed")
+
+    monkeypatch.setattr(cpp, "_parser", parser)
+    data = (
+        b'Timer() : Node("timer") {\n  this->get_parameter("period", period_);\n'
+        b"  timer_ = create_wall_timer(1s, cb);\n}\n"
+    )
+    assert not read_cpp(data).endpoints

@@ -21,7 +21,8 @@ bool). Which node: the class a method belongs to (its name from the
 variable (`node->create_...`).
 
 Bad C++ never fails: tree-sitter recovers from errors; a file over
-`MAX_CPP_BYTES` is not read, and one without any of `WORDS` not parsed. What the
+`MAX_CPP_BYTES` is not read, and one without any of `WORDS` (or where no name
+that makes an endpoint stands as a word) not parsed. What the
 reading needs of the tree is matched by one tree-sitter query, in C.
 """
 
@@ -81,6 +82,14 @@ _CLASSES: dict[str, tuple[str, int, int | None, tuple[str, ...]]] = {
 }
 # rclcpp_action's free functions: (kind, name position)
 _ACTIONS = {"create_server": ACTION_SERVER, "create_client": ACTION_CLIENT}
+# a file where none of the names that make an endpoint stands as a word (`param`
+# in `get_parameter` does not) makes none: not parsed either
+_MAKERS = re.compile(
+    rb"\b(?:%b)\b"
+    % "|".join(
+        sorted({*_METHODS, *_ACTIONS, *(c.split("::")[-1] for c in _CLASSES)})
+    ).encode()
+)
 _NODE_BASES = frozenset({"Node", "LifecycleNode"})
 _PTR = re.compile(r"(::)?(ConstPtr|Ptr|SharedPtr|ConstSharedPtr|UniquePtr)$")
 
@@ -101,6 +110,8 @@ def read_cpp(data: bytes) -> FileGraph:
     """The endpoints and node names of a C++ file's bytes."""
     found = FileGraph()
     if len(data) > MAX_CPP_BYTES or not any(w in data for w in WORDS):
+        return found
+    if _MAKERS.search(data) is None:
         return found
     try:
         tree = _parser().parse(data)
