@@ -704,12 +704,11 @@ def test_cpp_reading_is_the_same_every_time() -> None:
     parts += [f"void cb{i}(const std_msgs::String& msg) {{}}\n" for i in range(12)]
     parts.append("class Listener {\n public:\n")
     parts += [
-        f"  void cb{i}(const std_msgs::String::ConstPtr& msg) {{}}\n"
-        for i in range(12)
+        f"  void cb{i}(const std_msgs::String::ConstPtr& msg) {{}}\n" for i in range(12)
     ]
     parts.append("};\nint main(int argc, char** argv) {\n  ros::NodeHandle n;\n")
     parts += [f'  n.subscribe("t{i}", 10, cb{i});\n' for i in range(12)]
-    data = "".join(parts + ["}\n"]).encode()
+    data = "".join([*parts, "}\n"]).encode()
     reads = {tuple(e.types for e in read_cpp(data).endpoints) for _ in range(20)}
     assert reads == {(("std_msgs/msg/String",),) * 12}
 

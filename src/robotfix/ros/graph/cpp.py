@@ -374,9 +374,7 @@ class _File:
             )
         )
 
-    def _action(
-        self, call: Any, function: str, template: Any, args: list[Any]
-    ) -> None:
+    def _action(self, call: Any, function: str, template: Any, args: list[Any]) -> None:
         kind = _ACTIONS.get(function)
         if kind is None:
             return

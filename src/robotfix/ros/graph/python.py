@@ -22,6 +22,7 @@ variable a node is in (`node = rclpy.create_node('name')`); rospy's
 from __future__ import annotations
 
 import ast
+import sys
 from bisect import bisect_left
 from collections.abc import Iterable
 
@@ -625,7 +626,6 @@ def _node_call(
 ) -> None:
     """A node's name: `super().__init__('name')` in a class, `x = Node('name')`,
     `rospy.init_node('name')`."""
-    last = called.rsplit(".", 1)[-1]
     if called == "rospy.init_node":
         name = _node_name(file, call, scope, cls)
         anonymous = any(
@@ -679,10 +679,10 @@ def super_names(
         if isinstance(call.func, ast.Attribute) and call.func.attr == "__init__":
             inits.setdefault(owner, []).append(call)
     for name, cls in classes.items():
-        span = ((cls.lineno, cls.col_offset), (cls.end_lineno, cls.end_col_offset))
+        start = (cls.lineno, cls.col_offset)
+        end = (cls.end_lineno or sys.maxsize, cls.end_col_offset or 0)
         mine = [  # not another class of that name (`if ...: class A`)
-            c for c in inits.get(name, ()) if span[0] <= (c.lineno, c.col_offset)
-            and (c.lineno, c.col_offset) <= span[1]  # type: ignore[operator]
+            c for c in inits.get(name, ()) if start <= (c.lineno, c.col_offset) <= end
         ]
         for node in walk_all(cls) if calls is None or len(mine) > 1 else mine:
             if not (
