@@ -145,7 +145,9 @@ class _File:
             for name, nodes in _query().captures(root).items()
         }
         for node in captures.get("cls", []):
-            self._bases(node.parent, _text(node).split("::")[-1])
+            name = node.child_by_field_name("name")
+            if name is not None:
+                self._bases(node, _text(name).split("::")[-1])
         for node in captures.get("fn", []):
             self._function(node)
         for node in captures.get("alias", []):
@@ -430,9 +432,11 @@ _PATTERNS = """
 (field_initializer) @init
 ((declaration) @decl (#match? @decl "NodeHandle|make_shared"))
 ((field_declaration) @decl (#match? @decl "NodeHandle"))
-(class_specifier name: (_) @cls (base_class_clause))
-(struct_specifier name: (_) @cls (base_class_clause))
+(class_specifier) @cls
+(struct_specifier) @cls
 """
+# (a class's name and bases are looked at in Python: a pattern with fields makes
+# the query's compiling, in every run that parses C++, 70% dearer)
 MAX_DEPTH = 400  # ancestors looked at for the enclosing class
 
 
