@@ -381,6 +381,12 @@ def _bind_scope(file: _File, scope: _Scope, cls: str | None) -> None:
     todo: list[ast.AST] = list(scope.body)
     while todo:
         node = todo.pop()
+        if isinstance(node, ast.Name):  # most of a scope's nodes: no children
+            if isinstance(node.ctx, (ast.Store, ast.Del)):  # for, with, walrus, del
+                names.setdefault(node.id, []).append(None)
+            continue
+        if isinstance(node, ast.Constant):
+            continue
         if isinstance(
             node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)
         ):  # their own scopes; a name here, and what they may store in `self.x`
@@ -425,8 +431,6 @@ def _bind_scope(file: _File, scope: _Scope, cls: str | None) -> None:
                             file.attributes.setdefault(cls, {}).setdefault(
                                 inner.attr, []
                             ).append(None)
-        elif isinstance(node, ast.Name) and isinstance(node.ctx, (ast.Store, ast.Del)):
-            names.setdefault(node.id, []).append(None)  # for, with, walrus, del
         elif (
             isinstance(node, ast.Attribute)
             and isinstance(node.ctx, ast.Store)
