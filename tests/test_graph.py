@@ -17,6 +17,7 @@ from pathlib import Path
 import pytest
 
 from robotfix import run as run_module
+from robotfix.analysis.index import index_of
 from robotfix.api import check_paths
 from robotfix.cli import main
 from robotfix.config import Config
@@ -235,7 +236,43 @@ def test_programs_of_different_packages_or_test_code_are_never_compared(
 
 
 def _py(text: str) -> FileGraph:
-    return read_python(ast.parse(text))
+    """The file's graph, the same when read with its index's calls (as a
+    checked file is: only the statements holding endpoint calls walked)."""
+    tree = ast.parse(text)
+    found = read_python(tree)
+    assert dump(read_python(tree, index_of(tree).calls)) == dump(found)
+    return found
+
+
+def test_python_read_with_the_calls_is_the_whole_walk() -> None:
+    """A call where its position does not say (in a decorator, which the walk
+    leaves out), two `__init__` calls of a class (taken in the walk's order),
+    two classes of one name: the reading with the index's calls is the whole
+    walk's."""
+    found = _py(
+        "import rclpy\nfrom rclpy.node import Node\nfrom std_msgs.msg import String\n"
+        "node = rclpy.create_node('solo')\n"
+        "@wrap(node.create_publisher(String, 'deco', 1))\n"
+        "def f(): pass\n"
+        "class A(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('one')\n"
+        "    def again(self):\n"
+        "        Node.__init__(self, 'two')\n"
+        "        self.create_publisher(String, 'a', 1)\n"
+        "if rclpy:\n"
+        "    class B(Node):\n"
+        "        def __init__(self):\n"
+        "            super().__init__('hidden')\n"
+        "class B(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('b')\n"
+        "        self.create_subscription(String, 'b', lambda m: None, 1)\n"
+        "def idle(x):\n"
+        "    return x + 1\n"
+    )
+    assert [e.name for e in found.endpoints] == ["a", "b"]
+    assert found.nodes == {"node": ["solo"], "A": ["two", "one"], "B": ["b"]}
 
 
 def test_python_types_through_imports_names_and_choices() -> None:
@@ -655,3 +692,40 @@ def test_a_cpp_node_class_named_by_its_caller_has_no_known_name() -> None:
         "/?(two_nodes.cpp)",
         "/TestNode",
     ]
+
+
+def test_cpp_reading_is_the_same_every_time() -> None:
+    """tree-sitter gives one name's captures in an order that varies between
+    parses: functions of one name (a free `cb0` taking the message by value, a
+    method `cb0` taking a `ConstPtr`) made a roscpp callback's type change from
+    read to read (61 outcomes in 200 reads); the file's last one, in source
+    order, is taken every time."""
+    parts = ['#include "ros/ros.h"\n']
+    parts += [f"void cb{i}(const std_msgs::String& msg) {{}}\n" for i in range(12)]
+    parts.append("class Listener {\n public:\n")
+    parts += [
+        f"  void cb{i}(const std_msgs::String::ConstPtr& msg) {{}}\n" for i in range(12)
+    ]
+    parts.append("};\nint main(int argc, char** argv) {\n  ros::NodeHandle n;\n")
+    parts += [f'  n.subscribe("t{i}", 10, cb{i});\n' for i in range(12)]
+    data = "".join([*parts, "}\n"]).encode()
+    reads = {tuple(e.types for e in read_cpp(data).endpoints) for _ in range(20)}
+    assert reads == {(("std_msgs/msg/String",),) * 12}
+
+
+def test_cpp_file_naming_no_endpoint_maker_is_not_parsed(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """`param` in `get_parameter`, `create_` in `create_wall_timer`: the words
+    are there, but no name that makes an endpoint stands as a word."""
+    from robotfix.ros.graph import cpp
+
+    def parser() -> None:
+        raise AssertionError("parsed")
+
+    monkeypatch.setattr(cpp, "_parser", parser)
+    data = (
+        b'Timer() : Node("timer") {\n  this->get_parameter("period", period_);\n'
+        b"  timer_ = create_wall_timer(1s, cb);\n}\n"
+    )
+    assert not read_cpp(data).endpoints

@@ -121,13 +121,16 @@ def started_entries(
         by_real.setdefault(os.path.realpath(path), path)
     packages = dict(launches.packages)
     folders: set[str] = set()
+    names: dict[Path, str | None] = {}  # each package's package.xml read once
     for path in sorted(code):  # a C++ package has no Python file LaunchRun saw
         folder = os.path.dirname(path)
         if folder in folders:
             continue
         folders.add(folder)
         found = package_folder(Path(path))
-        name = package_name(found) if found is not None else None
+        if found is not None and found not in names:
+            names[found] = package_name(found)
+        name = names[found] if found is not None else None
         if found is not None and name is not None:
             packages.setdefault(name, found)
     out: list[Started] = []

@@ -890,14 +890,17 @@ def _check_one(
 
 def _graph_of(parsed: Any) -> list[Any] | None:
     """A checked file's graph endpoints (`ros.graph.python`), dumped; None when it
-    makes none (or its tree is not there)."""
+    makes none (or its tree is not there). The calls its check's index found
+    spare the reading most of the walk."""
     if parsed.tree is None:
         return None
+    from robotfix.analysis.index import built
     from robotfix.ros.graph.model import dump
     from robotfix.ros.graph.python import read_python
 
+    index = built(parsed.tree)
     try:  # a fault here costs the graph this file's endpoints, not its check
-        found = read_python(parsed.tree)
+        found = read_python(parsed.tree, index.calls if index is not None else None)
     except (RecursionError, MemoryError):
         return None
     return dump(found) if found.endpoints else None

@@ -412,14 +412,16 @@ def _parse_arguments(raw: str, variables: dict[str, str]) -> None:
 def _included(package: Path, files: list[Path]) -> list[Path]:
     """The package's own headers the files include (`#include "pkg/x.hpp"`)."""
     found: list[Path] = []
+    own = (package / "include", package / "src")
     for path in files:
         try:
             data = read_regular(path, MAX_BUILD_BYTES * 2)
         except UnreadableError:
             continue
+        bases = (*own, path.parent)
         for match in _INCLUDE.finditer(data):
             name = match.group(1).decode("utf-8", "replace")
-            for base in (package / "include", package / "src", path.parent):
+            for base in bases:
                 candidate = base / name
                 try:
                     if candidate.is_file() and candidate not in found:

@@ -21,7 +21,8 @@ bool). Which node: the class a method belongs to (its name from the
 variable (`node->create_...`).
 
 Bad C++ never fails: tree-sitter recovers from errors; a file over
-`MAX_CPP_BYTES` is not read, and one without any of `WORDS` not parsed. What the
+`MAX_CPP_BYTES` is not read, and one without any of `WORDS` (or where no name
+that makes an endpoint stands as a word) not parsed. What the
 reading needs of the tree is matched by one tree-sitter query, in C.
 """
 
@@ -81,6 +82,14 @@ _CLASSES: dict[str, tuple[str, int, int | None, tuple[str, ...]]] = {
 }
 # rclcpp_action's free functions: (kind, name position)
 _ACTIONS = {"create_server": ACTION_SERVER, "create_client": ACTION_CLIENT}
+# a file where none of the names that make an endpoint stands as a word (`param`
+# in `get_parameter` does not) makes none: not parsed either
+_MAKERS = re.compile(
+    rb"\b(?:%b)\b"
+    % "|".join(
+        sorted({*_METHODS, *_ACTIONS, *(c.split("::")[-1] for c in _CLASSES)})
+    ).encode()
+)
 _NODE_BASES = frozenset({"Node", "LifecycleNode"})
 _PTR = re.compile(r"(::)?(ConstPtr|Ptr|SharedPtr|ConstSharedPtr|UniquePtr)$")
 
@@ -101,6 +110,8 @@ def read_cpp(data: bytes) -> FileGraph:
     """The endpoints and node names of a C++ file's bytes."""
     found = FileGraph()
     if len(data) > MAX_CPP_BYTES or not any(w in data for w in WORDS):
+        return found
+    if _MAKERS.search(data) is None:
         return found
     try:
         tree = _parser().parse(data)
@@ -126,9 +137,17 @@ class _File:
         self.ros1 = False
 
     def read(self, root: Any) -> None:
-        captures = _query().captures(root)
+        # in source order: tree-sitter's order of one name's captures varies from
+        # run to run (which of two `chatterCallback`s a callback is, the order of
+        # a class's node names)
+        captures = {
+            name: sorted(nodes, key=lambda n: (n.start_byte, n.end_byte))
+            for name, nodes in _query().captures(root).items()
+        }
         for node in captures.get("cls", []):
-            self._bases(node.parent, _text(node).split("::")[-1])
+            name = node.child_by_field_name("name")
+            if name is not None:
+                self._bases(node, _text(name).split("::")[-1])
         for node in captures.get("fn", []):
             self._function(node)
         for node in captures.get("alias", []):
@@ -140,12 +159,12 @@ class _File:
             text = _text(node)[len("using") :].strip().rstrip(";").strip()
             if "::" in text and not text.startswith("namespace"):
                 self.aliases[text.rsplit("::", 1)[-1]] = text
-        for node in captures.get("decl", []):
-            self._handle(node, _enclosing(node))
+        for node in captures.get("decl", []):  # (the enclosing class: when needed)
+            self._handle(node)
         for node in captures.get("init", []):
-            self._initializer(node, _enclosing(node))
-        for node in sorted(captures.get("call", []), key=lambda n: n.start_byte):
-            self._call(node, _enclosing(node))
+            self._initializer(node)
+        for node in captures.get("call", []):
+            self._call(node)
         self.found.ros = 1 if self.ros1 else 2
 
     # -- declarations ----------------------------------------------------------
@@ -174,7 +193,7 @@ class _File:
             if kind is not None:
                 self.callbacks[text.split("::")[-1]] = _text(kind)
 
-    def _initializer(self, node: Any, cls: str) -> None:
+    def _initializer(self, node: Any) -> None:
         """`: Node("talker")` names the class's node; `pnh_("~")` a private handle."""
         name = _text(node.children[0]) if node.children else ""
         args = [
@@ -184,14 +203,15 @@ class _File:
         ]
         literal = _string(args[0]) if args else None
         last = name.split("::")[-1].split("<")[0]
-        if last in _NODE_BASES and literal is not None and cls:
+        cls = _enclosing(node) if last in _NODE_BASES and literal is not None else ""
+        if cls and literal is not None:
             self.found.nodes.setdefault(cls, []).append(literal)
         elif (literal is not None and literal.startswith(("~", "/"))) or (
             literal is not None and name.endswith("_")
         ):
             self.handles[name] = literal
 
-    def _handle(self, node: Any, cls: str) -> None:
+    def _handle(self, node: Any) -> None:
         """`ros::NodeHandle nh, pnh("~");`, `auto node =
         rclcpp::Node::make_shared("talker");`"""
         kind = node.child_by_field_name("type")
@@ -216,9 +236,8 @@ class _File:
                     literal = _string(args[0]) if args else None
                     var = _text(child.child_by_field_name("declarator"))
                     if literal is not None:
-                        self.found.nodes.setdefault(_owner(cls, var), []).append(
-                            literal
-                        )
+                        owner = _owner(_enclosing(node), var)
+                        self.found.nodes.setdefault(owner, []).append(literal)
             return
         self.ros1 = True
         for child in node.children:
@@ -242,14 +261,11 @@ class _File:
                 self.handles[_text(child)] = ""
 
     # -- calls -------------------------------------------------------------------
-    def _call(self, call: Any, cls: str) -> None:
+    def _call(self, call: Any) -> None:
         func = call.child_by_field_name("function")
         args_node = call.child_by_field_name("arguments")
         if func is None or args_node is None:
             return
-        args = [
-            c for c in args_node.children if c.type not in ("(", ")", ",", "comment")
-        ]
         receiver = None
         if func.type == "field_expression":
             receiver = func.child_by_field_name("argument")
@@ -274,13 +290,15 @@ class _File:
                 and _text(func) in ("make_unique", "make_shared")
                 and template is not None
             ):
-                self._constructed(call, _text(template).strip("<> "), args, cls)
+                made = _text(template).strip("<> ")
+                self._constructed(call, made, _arguments(args_node))
                 return
             if scope == "rclcpp_action" and func is not None:
-                self._action(call, _text(func), template, args, cls)
+                self._action(call, _text(func), template, _arguments(args_node))
                 return
             if scope == "ros" and func is not None and _text(func) == "init":
                 self.ros1 = True
+                args = _arguments(args_node)
                 name = _string(args[2]) if len(args) > 2 else None
                 if name is not None:
                     self.found.nodes.setdefault("", []).append(name)
@@ -292,9 +310,10 @@ class _File:
         kind, ros, name_at, qos_at, default_at = spec
         if ros == 1 and receiver is None:
             return  # advertise(...) alone is no roscpp call
+        args = _arguments(args_node)
         handle = ""
         recv_text = _text(receiver) if receiver is not None else "this"
-        owner = _owner(cls, recv_text)
+        owner = _owner(_enclosing(call), recv_text)
         if ros == 1:
             self.ros1 = True
             owner = ""
@@ -332,11 +351,12 @@ class _File:
             )
         )
 
-    def _constructed(self, call: Any, made: str, args: list[Any], cls: str) -> None:
+    def _constructed(self, call: Any, made: str, args: list[Any]) -> None:
         """`std::make_unique<nav2_util::TwistPublisher>(node, "cmd_vel", 1)`."""
         spec = _CLASSES.get(re.sub(r"\s+", "", made))
         if spec is None:
             return
+        cls = _enclosing(call)
         kind, name_at, qos_at, types = spec
         receiver = _text(args[0]) if args else ""
         name = _string(args[name_at]) if len(args) > name_at else None
@@ -356,12 +376,11 @@ class _File:
             )
         )
 
-    def _action(
-        self, call: Any, function: str, template: Any, args: list[Any], cls: str
-    ) -> None:
+    def _action(self, call: Any, function: str, template: Any, args: list[Any]) -> None:
         kind = _ACTIONS.get(function)
         if kind is None:
             return
+        cls = _enclosing(call)
         receiver = _text(args[0]) if args else ""
         if receiver.startswith(("shared_from_this", "this->get_node", "this")):
             receiver = "this"
@@ -413,9 +432,11 @@ _PATTERNS = """
 (field_initializer) @init
 ((declaration) @decl (#match? @decl "NodeHandle|make_shared"))
 ((field_declaration) @decl (#match? @decl "NodeHandle"))
-(class_specifier name: (_) @cls (base_class_clause))
-(struct_specifier name: (_) @cls (base_class_clause))
+(class_specifier) @cls
+(struct_specifier) @cls
 """
+# (a class's name and bases are looked at in Python: a pattern with fields makes
+# the query's compiling, in every run that parses C++, 70% dearer)
 MAX_DEPTH = 400  # ancestors looked at for the enclosing class
 
 
@@ -464,6 +485,11 @@ def _enclosing(node: Any) -> str:
                 return text.split("::")[-2].split("<")[0]
         parent = parent.parent
     return ""
+
+
+def _arguments(node: Any) -> list[Any]:
+    """A call's arguments (its `argument_list`'s children but punctuation)."""
+    return [c for c in node.children if c.type not in ("(", ")", ",", "comment")]
 
 
 def _owner(cls: str, receiver: str) -> str:

@@ -22,6 +22,9 @@ variable a node is in (`node = rclpy.create_node('name')`); rospy's
 from __future__ import annotations
 
 import ast
+import sys
+from bisect import bisect_left
+from collections.abc import Iterable
 
 from robotfix.astwalk import children, dotted
 from robotfix.astwalk import walk as walk_all
@@ -64,6 +67,12 @@ class _File:
         self.functions: dict[
             str, dict[str, ast.FunctionDef | ast.AsyncFunctionDef]
         ] = {}
+        # with the file's calls given (`read_python`): where the endpoint and node
+        # calls start (the statements around none are not walked), and how many
+        # of them the walk met
+        self.starts: list[tuple[int, int]] | None = None
+        self.wanted: set[int] = set()
+        self.met = 0
 
     def start(self) -> int:
         """Work for one call's arguments: what is left of the file's, at most
@@ -249,19 +258,81 @@ def _argument(call: ast.Call, where: tuple[int, str]) -> ast.expr | None:
     return call.args[position] if position < len(call.args) else None
 
 
-def read_python(tree: ast.Module) -> FileGraph:
-    """The endpoints and node names of a module's code."""
+def read_python(
+    tree: ast.Module, calls: Iterable[tuple[str | None, ast.Call]] | None = None
+) -> FileGraph:
+    """The endpoints and node names of a module's code. `calls`: every call of
+    the module with its top-level class (`analysis.index.FileIndex.calls`, which
+    the file's check built): then only the statements that hold an endpoint or
+    node call are walked, and only those `__init__` calls are looked at for the
+    classes' node names; a call the walk does not meet where its position says
+    (one in a decorator) makes the whole module walked, as without `calls`."""
+    if calls is not None:
+        calls = list(calls)
+        found = _read(tree, calls)
+        if found is not None:
+            return found
+    found = _read(tree, None)
+    assert found is not None
+    return found
+
+
+def _read(
+    tree: ast.Module, calls: list[tuple[str | None, ast.Call]] | None
+) -> FileGraph | None:
     found = _File(tree)
     _bind(found)
+    if calls is not None:
+        wanted = [c for _, c in calls if _wanted(found, c)]
+        found.wanted = {id(c) for c in wanted}
+        found.starts = sorted((c.lineno, c.col_offset) for c in wanted)
     _visit(found, tree.body, tree, None)
-    super_names(tree, found.found)
+    if calls is not None and found.met != len(found.wanted):
+        return None
+    super_names(tree, found.found, calls)
     found.found.ros = 1 if found.rospy else 2
     return found.found
 
 
+def _wanted(file: _File, call: ast.Call) -> bool:
+    """Whether `_call` makes anything of `call` (an endpoint, a node's name)."""
+    func = call.func
+    if isinstance(func, ast.Attribute) and func.attr in ENDPOINT_METHODS:
+        return True
+    called = file.qualified(func)
+    return called is not None and (called in ENDPOINT_CLASSES or _names_node(called))
+
+
+def _names_node(called: str) -> bool:
+    """Whether a call of `called` may name a node (`_node_call`)."""
+    return called == "rospy.init_node" or (
+        called.startswith("rclpy.") and called.rsplit(".", 1)[-1] in NODE_CONSTRUCTORS
+    )
+
+
+def _holds(file: _File, statement: ast.stmt) -> bool:
+    """Whether an endpoint or node call starts within `statement` (always, when
+    the file's calls are not known)."""
+    starts = file.starts
+    if starts is None:
+        return True
+    end = getattr(statement, "end_lineno", None)
+    if end is None:
+        return True
+    at = bisect_left(starts, (statement.lineno, statement.col_offset))
+    return at < len(starts) and starts[at] <= (end, statement.end_col_offset or 0)
+
+
+# the fields of a statement that hold statements, in `_fields` order
+_BLOCKS = ("body", "handlers", "orelse", "finalbody", "cases")
+
+
 def _bind(file: _File) -> None:
-    """Imports, every scope's bindings, `self.x` assignments, class bases."""
-    for node in walk_all(file.tree):  # a class before its methods
+    """Imports, class bases and methods, module functions: the statements only
+    (in the order a walk of the whole tree meets them), not the expressions."""
+    todo: list[ast.AST] = [file.tree]
+    while todo:  # a class before its methods
+        node = todo.pop()
         if isinstance(node, ast.Import):
             for alias in node.names:
                 if alias.asname:
@@ -271,12 +342,17 @@ def _bind(file: _File) -> None:
                     file.imports[head] = head
             if any(a.name == "rospy" for a in node.names):
                 file.rospy = True
-        elif isinstance(node, ast.ImportFrom) and node.module and not node.level:
-            for alias in node.names:
-                file.imports[alias.asname or alias.name] = f"{node.module}.{alias.name}"
-            if node.module == "rospy" or node.module.startswith("rospy."):
-                file.rospy = True
-        elif isinstance(node, ast.ClassDef):
+            continue
+        if isinstance(node, ast.ImportFrom):
+            if node.module and not node.level:
+                for alias in node.names:
+                    file.imports[alias.asname or alias.name] = (
+                        f"{node.module}.{alias.name}"
+                    )
+                if node.module == "rospy" or node.module.startswith("rospy."):
+                    file.rospy = True
+            continue
+        if isinstance(node, ast.ClassDef):
             file.bases[node.name] = [
                 b.id for b in node.bases if isinstance(b, ast.Name)
             ]
@@ -284,6 +360,10 @@ def _bind(file: _File) -> None:
                 if isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
                     file.scope_class[id(item)] = node.name
                     file.functions.setdefault(node.name, {})[item.name] = item
+        for name in _BLOCKS:
+            block = getattr(node, name, None)
+            if block.__class__ is list:
+                todo.extend(block)
     for item in file.tree.body:
         if isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
             file.functions.setdefault("", {})[item.name] = item
@@ -301,6 +381,12 @@ def _bind_scope(file: _File, scope: _Scope, cls: str | None) -> None:
     todo: list[ast.AST] = list(scope.body)
     while todo:
         node = todo.pop()
+        if isinstance(node, ast.Name):  # most of a scope's nodes: no children
+            if isinstance(node.ctx, (ast.Store, ast.Del)):  # for, with, walrus, del
+                names.setdefault(node.id, []).append(None)
+            continue
+        if isinstance(node, ast.Constant):
+            continue
         if isinstance(
             node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)
         ):  # their own scopes; a name here, and what they may store in `self.x`
@@ -345,8 +431,6 @@ def _bind_scope(file: _File, scope: _Scope, cls: str | None) -> None:
                             file.attributes.setdefault(cls, {}).setdefault(
                                 inner.attr, []
                             ).append(None)
-        elif isinstance(node, ast.Name) and isinstance(node.ctx, (ast.Store, ast.Del)):
-            names.setdefault(node.id, []).append(None)  # for, with, walrus, del
         elif (
             isinstance(node, ast.Attribute)
             and isinstance(node.ctx, ast.Store)
@@ -368,8 +452,7 @@ def _bind_scope(file: _File, scope: _Scope, cls: str | None) -> None:
                 names.setdefault(target.id, []).append(None)
             todo.append(node.value)
             continue
-        for child in ast.iter_child_nodes(node):
-            todo.append(child)
+        todo.extend(children(node))  # not contexts and operators: none binds
     file.bindings[id(scope)] = names
 
 
@@ -377,6 +460,8 @@ def _visit(file: _File, body: list[ast.stmt], scope: _Scope, cls: str | None) ->
     """The endpoint and node calls of `body`, each with the scope its names are
     looked up in: a nested function or lambda is a scope of its own."""
     for statement in body:
+        if not _holds(file, statement):
+            continue
         if isinstance(statement, ast.ClassDef):
             _visit(file, statement.body, scope, statement.name)
             continue
@@ -401,6 +486,8 @@ def _visit(file: _File, body: list[ast.stmt], scope: _Scope, cls: str | None) ->
                 todo.append((node.body, node))
                 continue
             if isinstance(node, ast.Call):
+                if id(node) in file.wanted:
+                    file.met += 1
                 _call(file, node, where, cls, statement)
             todo.extend((child, where) for child in children(node))
 
@@ -543,7 +630,6 @@ def _node_call(
 ) -> None:
     """A node's name: `super().__init__('name')` in a class, `x = Node('name')`,
     `rospy.init_node('name')`."""
-    last = called.rsplit(".", 1)[-1]
     if called == "rospy.init_node":
         name = _node_name(file, call, scope, cls)
         anonymous = any(
@@ -555,8 +641,7 @@ def _node_call(
             file.found.nodes.setdefault("", []).append(name)
         return
     if (
-        called.startswith("rclpy.")
-        and last in NODE_CONSTRUCTORS
+        _names_node(called)
         and isinstance(statement, ast.Assign)
         and statement.value is call
     ):
@@ -580,14 +665,30 @@ def _node_name(
     return found
 
 
-def super_names(tree: ast.Module, file: FileGraph) -> None:
+def super_names(
+    tree: ast.Module,
+    file: FileGraph,
+    calls: list[tuple[str | None, ast.Call]] | None = None,
+) -> None:
     """Each class's node name from `super().__init__('name')` (or
-    `Base.__init__(self, 'name')`), and what a class of the file derives from one."""
+    `Base.__init__(self, 'name')`), and what a class of the file derives from one.
+    `calls` (each with its top-level class): a class's `__init__` calls are
+    taken from them (none in its decorators or annotations: they name no node),
+    its code walked only when it makes more than one (their order is the walk's)."""
     classes: dict[str, ast.ClassDef] = {
         n.name: n for n in tree.body if isinstance(n, ast.ClassDef)
     }
+    inits: dict[str | None, list[ast.Call]] = {}
+    for owner, call in calls or ():
+        if isinstance(call.func, ast.Attribute) and call.func.attr == "__init__":
+            inits.setdefault(owner, []).append(call)
     for name, cls in classes.items():
-        for node in walk_all(cls):
+        start = (cls.lineno, cls.col_offset)
+        end = (cls.end_lineno or sys.maxsize, cls.end_col_offset or 0)
+        mine = [  # not another class of that name (`if ...: class A`)
+            c for c in inits.get(name, ()) if start <= (c.lineno, c.col_offset) <= end
+        ]
+        for node in walk_all(cls) if calls is None or len(mine) > 1 else mine:
             if not (
                 isinstance(node, ast.Call)
                 and isinstance(node.func, ast.Attribute)
