@@ -631,23 +631,3 @@ def test_ctrl_c_with_j2_exits_130_without_a_traceback(tmp_path: Path) -> None:
     _, err = process.communicate(timeout=60)
     assert process.returncode == 130, err
     assert "Traceback" not in err
-
-
-@pytest.mark.parametrize(
-    ("load", "expected"), [(0.0, 2), (0.4, 2), (0.6, 1), (1.2, 1), (7.5, 1), (None, 2)]
-)
-def test_without_j_a_run_uses_the_idle_cores(
-    monkeypatch: pytest.MonkeyPatch, load: float | None, expected: int
-) -> None:
-    """performance2 f4: with a neighbour holding one of two cores, two processes
-    shared the other and were slower than one; without `-j`, a run starts one
-    process per idle core (at least one). No load average: every core."""
-
-    def loadavg() -> tuple[float, float, float]:
-        if load is None:
-            raise OSError("no load average here")
-        return (load, load, load)
-
-    monkeypatch.setattr(run, "default_jobs", lambda: 2)
-    monkeypatch.setattr(os, "getloadavg", loadavg)
-    assert run.idle_jobs() == expected

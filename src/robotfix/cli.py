@@ -323,7 +323,7 @@ def run_check(args: argparse.Namespace) -> int:
             where = "--stub-path" if folder in args.stub_path else "stub-paths"
             print(f"robotfix: error: {where} {folder}: {why}", file=sys.stderr)
             return EXIT_FAILURE
-    from robotfix.run import idle_jobs
+    from robotfix.run import default_jobs
 
     if args.jobs is not None and args.jobs < 1:
         print(
@@ -332,7 +332,7 @@ def run_check(args: argparse.Namespace) -> int:
         )
         return EXIT_FAILURE
     progress = Progress() if sys.stderr.isatty() else None
-    jobs = args.jobs or idle_jobs()
+    jobs = args.jobs or default_jobs()
     try:
         result = api.check_paths(
             paths, settings, progress=progress, jobs=jobs, use_cache=args.cache

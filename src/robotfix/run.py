@@ -982,23 +982,8 @@ def _portable(parameters: ParamSummary) -> ParamSummary | None:
 
 
 def default_jobs() -> int:
-    """The cores this process may run on: the most processes a run uses."""
     return (
         len(os.sched_getaffinity(0))
         if hasattr(os, "sched_getaffinity")
         else (os.cpu_count() or 1)
     )
-
-
-def idle_jobs() -> int:
-    """The processes a run starts when `-j` is not given: one per idle core (the
-    cores it may use less the 1-minute load average, rounded; at least one). Two
-    processes on one free core cost more CPU and time than one: with a neighbour
-    holding the second of two cores, `-j 2` was 1.19x slower than `-j 1`
-    (performance report 2, f4); an explicit `-j N` is taken as given."""
-    cores = default_jobs()
-    try:
-        load = os.getloadavg()[0]
-    except (OSError, AttributeError):  # not on this system
-        return cores
-    return max(1, min(cores, int(cores - load + 0.5)))

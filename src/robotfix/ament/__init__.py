@@ -127,7 +127,7 @@ def _parser() -> argparse.ArgumentParser:
 
 def _run(args: argparse.Namespace) -> tuple[int, list[str]]:
     from robotfix import api, cli, config
-    from robotfix.run import idle_jobs
+    from robotfix.run import default_jobs
 
     paths = [Path(p) for p in args.paths]
     missing = [p for p in paths if not p.exists() and not p.is_symlink()]
@@ -164,7 +164,7 @@ def _run(args: argparse.Namespace) -> tuple[int, list[str]]:
         settings = replace(settings, flags=None)
     try:
         result = api.check_paths(
-            paths, settings, jobs=idle_jobs(), use_cache=not args.no_cache
+            paths, settings, jobs=default_jobs(), use_cache=not args.no_cache
         )
     except config.ConfigError as err:  # a nested package's configuration
         return _fail([str(err)])
