@@ -501,19 +501,13 @@ def graph_paths(paths: list[Path], config: Config) -> GraphResult:
     from robotfix.launchcheck import LaunchRun
     from robotfix.ros.api_model import ENDPOINT_WORDS
     from robotfix.ros.graph.python import read_python
-    from robotfix.source import SourceFile
+    from robotfix.source import read_mentioning
 
     found = discover(paths, config)
     code: dict[str, FileGraph] = {}
     for path in found.python_files:
-        try:
-            data = read_regular(path)
-        except UnreadableError:
-            continue
-        if not any(w in data for w in ENDPOINT_WORDS):
-            continue
-        source = SourceFile.from_bytes(str(path), data)
-        if source.tree is None:
+        source = read_mentioning(path, ENDPOINT_WORDS)
+        if source is None or source.tree is None:  # (None: it does not parse)
             continue
         try:
             one = read_python(source.tree)

@@ -37,13 +37,13 @@ from robotfix.annotations import ast as A
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic, Span
 from robotfix.faults import Fault, guard
-from robotfix.fs import UnreadableError, read_regular, read_text
+from robotfix.fs import UnreadableError, read_text
 from robotfix.messages import Declared
 from robotfix.ros import paramfile as P
 from robotfix.ros import yamlfile as Y
 from robotfix.ros.package import package_folder
 from robotfix.smt.fold import fold
-from robotfix.source import SourceFile, suppresses
+from robotfix.source import read_mentioning, suppresses
 
 if TYPE_CHECKING:
     from robotfix.project.summary import Project
@@ -171,9 +171,7 @@ def check_parameter_files(
         if words
         else []
     )
-    table = Table(
-        found, definitions, launches.renamed if launches else None, cpp_nodes
-    )
+    table = Table(found, definitions, launches.renamed if launches else None, cpp_nodes)
     for path in files:
         loaded = read.get(str(path))
         if loaded is None or loaded.layout == "definitions":
@@ -277,15 +275,9 @@ def _summaries(
         if summary is not None:
             found.append(summary)
             continue
-        try:
-            data = read_regular(path)
-        except UnreadableError:
-            continue
-        if not any(word in data for word in words):
-            continue
         with guard(path, [], faults):
-            source = SourceFile.from_bytes(str(path), data)
-            if source.tree is not None:
+            source = read_mentioning(path, words)
+            if source is not None:
                 resolver = project.resolver(path) if project is not None else None
                 stubs = _stubs(config, path)
                 found.append(summarize(source, resolver=resolver, stubs=stubs))

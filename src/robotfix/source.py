@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import ast
 import io
+import os
 import re
 import sys
 import tokenize
@@ -18,6 +19,7 @@ from dataclasses import dataclass, field
 from robotfix import messages, rules
 from robotfix.budget import MAX_PARSED_CHARS
 from robotfix.diagnostics import Diagnostic, Edit, Span
+from robotfix.fs import UnreadableError, read_regular
 
 
 def _code_chars(lines: list[str]) -> int:
@@ -323,3 +325,19 @@ def _suppressions(text: str) -> dict[int, tuple[int, frozenset[str] | None]]:
     except (tokenize.TokenError, SyntaxError):
         pass
     return found
+
+
+def read_mentioning(
+    path: str | os.PathLike[str], words: tuple[bytes, ...]
+) -> SourceFile | None:
+    """A Python file parsed when its bytes name one of `words` (a quick filter
+    before the parse: the parameter check's declaring files, the graph's endpoint
+    files); None when it names none, cannot be read, or does not parse."""
+    try:
+        data = read_regular(path)
+    except UnreadableError:
+        return None
+    if not any(word in data for word in words):
+        return None
+    source = SourceFile.from_bytes(os.fspath(path), data)
+    return source if source.tree is not None else None
