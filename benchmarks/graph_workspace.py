@@ -22,11 +22,14 @@ import sys
 import tempfile
 from pathlib import Path
 
+from cached_run import COUNT_RUNS
+
 # The child process: the CLI, with the graph stage and check_paths timed.
-DRIVER = """
+DRIVER = (
+    """
 import sys, time
 started, cpu = time.perf_counter(), time.process_time()
-from robotfix import api, cli, run
+from robotfix import cli, run
 spent = [0.0, 0.0]
 real_graph = run._graph_problems
 def timed(*args, **kwargs):
@@ -37,13 +40,9 @@ def timed(*args, **kwargs):
         spent[0] += time.perf_counter() - t
         spent[1] += time.process_time() - c
 run._graph_problems = timed
-real = api.check_paths
-seen = []
-def counted(*args, **kwargs):
-    result = real(*args, **kwargs)
-    seen.append(result)
-    return result
-api.check_paths = counted
+"""
+    + COUNT_RUNS
+    + """
 status = cli.main(sys.argv[1:])
 checked = len(seen[0].checked) if seen else 0
 cached = seen[0].from_cache if seen else 0
@@ -51,6 +50,7 @@ print(f"STATS {checked} {cached} {time.perf_counter() - started:.3f} "
       f"{time.process_time() - cpu:.3f} {spent[0]:.3f} {spent[1]:.3f}", file=sys.stderr)
 sys.exit(status)
 """
+)
 
 
 def child(args: list[str], cwd: Path) -> tuple[str, list[float]]:
