@@ -409,3 +409,26 @@ def test_an_entry_point_finds_its_node_class_however_it_imports_it(
     assert [(d.code, d.span.line) for d in found if d.path.endswith(".launch.py")] == [
         ("RF401", 7)
     ]
+
+
+def test_a_launch_files_suppressions_are_judged_by_the_check_that_owns_them(
+    tmp_path: Path,
+) -> None:
+    """In a Python launch file, an `ignore` of a rule only the file's own check
+    reports (RF201) that silences nothing is RF010, as in any file; one of the
+    launch check's rules (RF401 on a launch value), or a bare one, is left to the
+    launch check. Every suppression of a launch file was passed over before."""
+    pkg = racer(tmp_path)
+    write(
+        pkg / "launch" / "r.launch.py",
+        "from launch import LaunchDescription\nfrom launch_ros.actions import Node\n\n"
+        "def generate_launch_description():\n"
+        "    period = 0.5  # robotfix: ignore[RF201]\n"
+        "    return LaunchDescription([Node(\n"
+        "        package='racer', executable='racer',\n"
+        "        parameters=[{'max_speed': 'fast'}])])  # robotfix: ignore[RF401]\n",
+    )
+    found = check_paths([pkg], Config(root=tmp_path)).diagnostics
+    assert [(d.code, d.span.line) for d in found if d.path.endswith(".launch.py")] == [
+        ("RF010", 5)
+    ]

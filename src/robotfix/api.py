@@ -526,18 +526,20 @@ def _unused_suppressions(
     source: SourceFile, found: list[Diagnostic]
 ) -> list[Diagnostic]:
     """RF010: a `# robotfix: ignore[...]` that silences nothing, or names no rule.
-    Not in a Python launch file, whose suppressions also serve the launch check
-    (`launchcheck`), which runs after this one and finds what this one cannot; nor
-    for the graph's rules (`rules.GRAPH_RULES`), which the run's graph check uses."""
+    Not for the rules a later check of the run reports on this file's lines: the
+    graph's (`rules.GRAPH_RULES`), and in a Python launch file the launch check's
+    (`rules.LAUNCH_RULES`), which also gets its bare `ignore`s."""
     path = Path(source.path)
-    if is_launch_file(path.parent.name, path.name):
-        return []
+    launch = is_launch_file(path.parent.name, path.name)
+    later = rules.GRAPH_RULES | rules.LAUNCH_RULES if launch else rules.GRAPH_RULES
     out = []
     for line, (col, codes) in sorted(source.suppressions.items()):
         on_line = [d for d in found if d.span.line == line]
-        listed = sorted(c for c in codes or () if c not in rules.GRAPH_RULES)
+        if codes is None and launch:
+            continue  # a bare `ignore` may be the launch check's
+        listed = sorted(c for c in codes or () if c not in later)
         if codes and not listed:
-            continue  # only graph rules: the run's graph check uses them
+            continue  # only a later check's rules: it uses them
         unknown = [
             c
             for c in listed

@@ -214,3 +214,20 @@ GRAPH_RULES = frozenset(
         for name in (r.code, r.name)
     }
 )
+# reported on a Python launch file's lines by the run's launch check
+# (`launchcheck.py`: its values, its parameters, a file it cannot read), after the
+# file's own check: in a launch file, that check leaves their suppressions to it
+LAUNCH_RULES = frozenset(
+    {
+        name
+        for r in (
+            PATH_NOT_CHECKED,
+            REFINEMENT_VIOLATED,
+            REFINEMENT_UNPROVEN,
+            BASE_TYPE_MISMATCH,
+            LAUNCH_PARAMETER_UNDECLARED,
+            PARAMETER_SECTION_UNMATCHED,
+        )
+        for name in (r.code, r.name)
+    }
+)
