@@ -61,6 +61,8 @@ def _lines(root: Path, jobs: int = 1, cache: bool = False) -> list[str]:
         ("ros2_robot", "RF603", 2, set()),
         # publishers whose subscribers' contracts are checked again on every run
         ("ros2_contracts", "RF101", 1, {"joystick.py", "planner.py", "teleop.py"}),
+        # clients whose server's contract is checked again
+        ("ros2_services", "RF101", 1, {"cruise.py", "docking.py", "joy_limit.py"}),
     ],
 )
 def test_jobs_and_the_cache_give_the_same_graph(

@@ -337,8 +337,9 @@ class Contract:
     text: str  # the refinement, as the subscriber wrote it
     msg_type: str  # the catalog's `pkg/Name`
     label: str  # names it in notes: "the message to `/odom`"
-    path: str  # the subscriber's file and line
+    path: str  # the subscriber's (the server's) file and line
     line: int
+    family: str = "topic"  # or "service": a client's request
 
 
 def _contract_refinement(contract: Contract, catalog: MsgCatalog) -> Refinement | None:
@@ -389,10 +390,11 @@ def check_contracts(
     stubs: StubSet | None = None,
     resolver: Resolver | None = None,
 ) -> list[Diagnostic]:
-    """What a publisher's file violates of its subscribers' contracts: the file
-    analysed again with each `publish` of a publisher they listen to checked as a
-    call of their callbacks would be (RF101 violated, RF102 not proved); only
-    those findings, and not where suppressed."""
+    """What a publisher's file violates of its subscribers' contracts (a
+    client's, of its server's): the file analysed again with each `publish` of a
+    publisher they listen to (`call`, `call_async` of a client, a rospy proxy
+    called) checked as a call of their callbacks would be (RF101 violated, RF102
+    not proved); only those findings, and not where suppressed."""
     from robotfix.source import SourceFile
 
     source = SourceFile.from_bytes(path, data)
@@ -410,15 +412,26 @@ def check_contracts(
     ctx = _analyze(
         source, catalog, stubs=stubs, resolver=resolver, obligations=obligations
     )
-    labels = tuple(f"annotation of `{c.label}`" for c in contracts)
-    return [
-        replace(d, notes=(*d.notes, messages.contract_note()))
-        for d in ctx.diagnostics
-        if any(note.message.startswith(labels) for note in d.notes)
-        and not source.is_suppressed(d)
-        and d.code not in ignored
-        and d.rule.name not in ignored
-    ]
+    families = {f"annotation of `{c.label}`": c.family for c in contracts}
+    found = []
+    for d in ctx.diagnostics:
+        family = next(
+            (
+                families[label]
+                for note in d.notes
+                for label in families
+                if note.message.startswith(label)
+            ),
+            None,
+        )
+        if (
+            family is not None
+            and not source.is_suppressed(d)
+            and d.code not in ignored
+            and d.rule.name not in ignored
+        ):
+            found.append(replace(d, notes=(*d.notes, messages.contract_note(family))))
+    return found
 
 
 def _check(

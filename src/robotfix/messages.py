@@ -988,8 +988,14 @@ def graph_qos_incompatible(
     )
 
 
-def contract_note() -> Note:
-    """On a publisher's RF101/RF102 against a subscriber's contract (issue 23 §3)."""
+def contract_note(family: str = "topic") -> Note:
+    """On a publisher's RF101/RF102 against a subscriber's contract, or a
+    client's against its server's (issue 23 §3)."""
+    if family == "service":
+        return Note(
+            "a launch file starts this client and that service on one name: the "
+            "server's callback assumes this of every request it receives"
+        )
     return Note(
         "a launch file starts this publisher and that subscriber on one topic: the "
         "subscriber's callback assumes this of every message it receives"
