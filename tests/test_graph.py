@@ -731,3 +731,40 @@ def test_cpp_file_naming_no_endpoint_maker_is_not_parsed(
         b"  timer_ = create_wall_timer(1s, cb);\n}\n"
     )
     assert not read_cpp(data).endpoints
+
+
+def test_a_rospy_publisher_in_a_class_meets_its_subscribers_contract(
+    tmp_path: Path,
+) -> None:
+    """A ROS 1 file's endpoints have no owner (one node per file), but its
+    publisher kept in `self.pub` is that class's: the contract is checked there
+    (it was never matched before)."""
+    write(tmp_path / "bringup" / "package.xml", PACKAGE.format("bringup"))
+    write(
+        tmp_path / "bringup" / "launch" / "grip.launch",
+        '<launch>\n  <node pkg="grip" type="listener.py" name="listener"/>\n'
+        '  <node pkg="grip" type="talker.py" name="talker"/>\n</launch>\n',
+    )
+    write(tmp_path / "grip" / "package.xml", PACKAGE.format("grip"))
+    write(
+        tmp_path / "grip" / "scripts" / "listener.py",
+        "from typing import Annotated\nimport rospy\nfrom std_msgs.msg import Float64\n"
+        "def callback(msg: Annotated[Float64, '0 <= data <= 20']):\n"
+        "    rospy.loginfo(msg.data)\n"
+        "rospy.init_node('listener')\n"
+        "rospy.Subscriber('effort', Float64, callback)\n",
+    )
+    write(
+        tmp_path / "grip" / "scripts" / "talker.py",
+        "import rospy\nfrom std_msgs.msg import Float64\n"
+        "class Talker:\n"
+        "    def __init__(self):\n"
+        "        self.pub = rospy.Publisher('effort', Float64, queue_size=10)\n"
+        "    def squeeze(self):\n"
+        "        self.pub.publish(Float64(40.0))\n"
+        "rospy.init_node('talker')\n",
+    )
+    found = check_paths([tmp_path], Config(root=tmp_path)).diagnostics
+    assert [(Path(d.path).name, d.span.line, d.code) for d in found] == [
+        ("talker.py", 7, "RF101")
+    ]
