@@ -63,6 +63,8 @@ def _lines(root: Path, jobs: int = 1, cache: bool = False) -> list[str]:
         ("ros2_contracts", "RF101", 1, {"joystick.py", "planner.py", "teleop.py"}),
         # clients whose server's contract is checked again
         ("ros2_services", "RF101", 1, {"cruise.py", "docking.py", "joy_limit.py"}),
+        # a frame its subscriber assumes
+        ("ros2_frames", "RF201", 1, {"ahead.py", "clicked.py", "inspection.py"}),
     ],
 )
 def test_jobs_and_the_cache_give_the_same_graph(

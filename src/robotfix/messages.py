@@ -620,6 +620,24 @@ def frame_mismatch(
     return Diagnostic(rules.UNIT_MISMATCH, path, span, message)
 
 
+def message_frame_mismatch(
+    path: str,
+    span: Span,
+    stmt: str,
+    frame_path: str,
+    got: str,
+    expected: str,
+    declared: Declared,
+) -> Diagnostic:
+    """RF201: a stamped message whose header names one frame given where a
+    refinement says another (`Annotated[PoseStamped, "Frame('map')"]`)."""
+    message = (
+        f"`{stmt}` gives a message in frame `{got}` (its `{frame_path}`) where "
+        f"`{expected}` is assumed{_axes(got, expected)}: transform it with tf2 first"
+    )
+    return Diagnostic(rules.UNIT_MISMATCH, path, span, message, (declared.note(),))
+
+
 def transform_frame_mismatch(
     path: str, span: Span, stmt: str, frame: str, source: str, target: str | None
 ) -> Diagnostic:
