@@ -65,6 +65,13 @@ def _lines(root: Path, jobs: int = 1, cache: bool = False) -> list[str]:
         ("ros2_services", "RF101", 1, {"cruise.py", "docking.py", "joy_limit.py"}),
         # a frame its subscriber assumes
         ("ros2_frames", "RF201", 1, {"ahead.py", "clicked.py", "inspection.py"}),
+        # action clients whose server's goal callback refines the goal
+        (
+            "ros2_actions",
+            "RF101",
+            1,
+            {"circle_patrol.py", "patrol_client.py", "square_patrol.py"},
+        ),
     ],
 )
 def test_jobs_and_the_cache_give_the_same_graph(
@@ -769,4 +776,53 @@ def test_a_rospy_publisher_in_a_class_meets_its_subscribers_contract(
     found = check_paths([tmp_path], Config(root=tmp_path)).diagnostics
     assert [(Path(d.path).name, d.span.line, d.code) for d in found] == [
         ("talker.py", 7, "RF101")
+    ]
+
+
+def test_an_actionlib_goal_meets_its_simple_action_servers_contract(
+    tmp_path: Path,
+) -> None:
+    """actionlib_tutorials' Fibonacci: the server's `execute_cb` takes the goal,
+    and refines it (int32 overflows past the 46th number); a client's
+    `send_goal` of a goal that breaks it is RF101, one that keeps it nothing."""
+    write(tmp_path / "bringup" / "package.xml", PACKAGE.format("bringup"))
+    write(
+        tmp_path / "bringup" / "launch" / "fib.launch",
+        '<launch>\n  <node pkg="fib" type="server.py" name="fibonacci"/>\n'
+        '  <node pkg="fib" type="client.py" name="client"/>\n</launch>\n',
+    )
+    write(tmp_path / "fib" / "package.xml", PACKAGE.format("fib"))
+    write(
+        tmp_path / "fib" / "action" / "Fibonacci.action",
+        "int32 order\n---\nint32[] sequence\n---\nint32[] sequence\n",
+    )
+    write(
+        tmp_path / "fib" / "scripts" / "server.py",
+        "from typing import Annotated\nimport actionlib\nimport rospy\n"
+        "from fib.msg import FibonacciAction, FibonacciGoal\n"
+        "class FibonacciServer:\n"
+        "    def __init__(self):\n"
+        "        self._as = actionlib.SimpleActionServer(\n"
+        "            'fibonacci', FibonacciAction, execute_cb=self.execute_cb, auto_start=False)\n"
+        "        self._as.start()\n"
+        "    def execute_cb(self, goal: Annotated[FibonacciGoal, '0 <= order <= 46']):\n"
+        "        rospy.loginfo(goal.order)\n"
+        "rospy.init_node('fibonacci')\n"
+        "server = FibonacciServer()\n",
+    )
+    write(
+        tmp_path / "fib" / "scripts" / "client.py",
+        "import actionlib\nimport rospy\n"
+        "from fib.msg import FibonacciAction, FibonacciGoal\n"
+        "class Client:\n"
+        "    def __init__(self):\n"
+        "        self.client = actionlib.SimpleActionClient('fibonacci', FibonacciAction)\n"
+        "    def run(self):\n"
+        "        self.client.send_goal(FibonacciGoal(order=20))\n"
+        "        self.client.send_goal(FibonacciGoal(order=50))\n"
+        "rospy.init_node('client')\n",
+    )
+    found = check_paths([tmp_path], Config(root=tmp_path)).diagnostics
+    assert [(Path(d.path).name, d.span.line, d.code) for d in found] == [
+        ("client.py", 9, "RF101")
     ]

@@ -339,7 +339,7 @@ class Contract:
     label: str  # names it in notes: "the message to `/odom`"
     path: str  # the subscriber's (the server's) file and line
     line: int
-    family: str = "topic"  # or "service": a client's request
+    family: str = "topic"  # "service": a client's request; "action": a goal
 
 
 def _contract_refinement(contract: Contract, catalog: MsgCatalog) -> Refinement | None:

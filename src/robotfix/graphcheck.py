@@ -41,6 +41,8 @@ from robotfix.ros.graph import qos as Q
 from robotfix.ros.graph.build import End, Graph, Started, build
 from robotfix.ros.graph.cpp import MAX_CPP_BYTES, read_cpp
 from robotfix.ros.graph.model import (
+    ACTION_CLIENT,
+    ACTION_SERVER,
     CLIENT,
     PUBLISHER,
     SERVICE,
@@ -406,16 +408,21 @@ def _unmatched(
 CONTRACT_SIDES = {
     "topic": (PUBLISHER, SUBSCRIPTION, ""),
     "service": (CLIENT, SERVICE, "_Request"),
+    "action": (ACTION_CLIENT, ACTION_SERVER, "_Goal"),
 }
+# what the side whose callback takes it is called in a note's label
+TAKER = {"topic": "subscription to", "service": "service", "action": "action server"}
 
 
 def contracts(result: GraphResult) -> dict[str, list[Contract]]:
     """Sender file -> what the callbacks its senders reach assume of what they
     send (issue 23 §3): a subscription whose callback refines its message
     (`msg: Annotated[Twist, "abs(linear.x) <= 0.5"]`), a service whose callback
-    refines its request, and a Python publisher or client kept in an attribute
-    (`self.pub = self.create_publisher(...)`, one per attribute name in its
-    class; its `publish`, `call`, `call_async` in methods of that class), of the
+    refines its request, an action server whose goal callback refines the goal,
+    and a Python publisher or client kept in an attribute (`self.pub =
+    self.create_publisher(...)`, one per attribute name in its class; its
+    `publish`, `call`, `call_async`, `send_goal`, `send_goal_async` in methods of
+    that class), of the
     same certain type, on one certain name, started together by one package's
     launch files."""
     from robotfix.api import Contract
@@ -457,13 +464,14 @@ def contracts(result: GraphResult) -> dict[str, list[Contract]]:
                 ):
                     continue
                 package, _, kind = endpoint.types[0].split("/")
+                if family == "action" and endpoint.ros == 1:
+                    kind = kind.removesuffix("Action")  # actionlib's FibonacciAction
                 node = graph.nodes[taker.node].qualified
-                what = "subscription to" if family == "topic" else "service"
                 contract = Contract(
                     endpoint.holder,
                     taker.endpoint.contract or "",
                     f"{package}/{kind}{section}",
-                    f"{node}'s {what} {name}",
+                    f"{node}'s {TAKER[family]} {name}",
                     taker.path,
                     taker.endpoint.line,
                     family,

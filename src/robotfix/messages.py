@@ -1014,6 +1014,11 @@ def contract_note(family: str = "topic") -> Note:
             "a launch file starts this client and that service on one name: the "
             "server's callback assumes this of every request it receives"
         )
+    if family == "action":
+        return Note(
+            "a launch file starts this action client and that action server on one "
+            "name: the server's goal callback assumes this of every goal it receives"
+        )
     return Note(
         "a launch file starts this publisher and that subscriber on one topic: the "
         "subscriber's callback assumes this of every message it receives"

@@ -46,8 +46,9 @@ LEAVING = frozenset(
         "send_goal_async",
     }
 )
-# What sends a message a publisher's subscribers (a client's server) assume of.
-CONTRACTED = frozenset({"publish", "call", "call_async"})
+# What sends a message a publisher's subscribers (a client's server, an action
+# client's server) assume of.
+CONTRACTED = frozenset({"publish", "call", "call_async", "send_goal", "send_goal_async"})
 # Objects that send the message they are called with (`proxy(request)`).
 SENDING = frozenset({"rospy.ServiceProxy"})
 # Methods after which a container holds an element.

@@ -32,18 +32,10 @@ from robotfix.ros.api_model import (
     ENDPOINT_CLASSES,
     ENDPOINT_METHODS,
     NODE_CONSTRUCTORS,
-    REGISTRATIONS,
     EndpointCall,
 )
 from robotfix.ros.graph import qos as Q
-from robotfix.ros.graph.model import (
-    MIDDLE,
-    SERVICE,
-    SUBSCRIPTION,
-    Endpoint,
-    FileGraph,
-    Qos,
-)
+from robotfix.ros.graph.model import MIDDLE, Endpoint, FileGraph, Qos
 
 MAX_DEPTH = 8  # names followed through names
 CALL_STEPS = 5_000  # values looked at for one call (a name bound 3,000 times to a
@@ -547,9 +539,8 @@ def _call(
                 )
     file.spent(given)
     contract = None
-    taking = _TAKING.get((spec.kind, spec.ros))
-    if taking is not None:
-        callback = _argument(call, REGISTRATIONS[taking].callback_arg)
+    if spec.taken_arg is not None:
+        callback = _argument(call, spec.taken_arg)
         contract = _contract(file, callback, cls) if callback is not None else None
     file.found.endpoints.append(
         Endpoint(
@@ -565,16 +556,6 @@ def _call(
             holder=_holder(statement, call, cls),
         )
     )
-
-
-# The registration whose callback takes what the other side sends: a message,
-# a service request (the callback's first parameter, after `self`)
-_TAKING = {
-    (SUBSCRIPTION, 2): "create_subscription",
-    (SUBSCRIPTION, 1): "Subscriber",
-    (SERVICE, 2): "create_service",
-    (SERVICE, 1): "Service",
-}
 
 
 def _holder(statement: ast.stmt, call: ast.Call, cls: str | None) -> str:
@@ -595,8 +576,9 @@ def _contract(file: _File, callback: ast.expr, cls: str | None) -> str | None:
     """The refinement a subscription's callback declares on the message it takes
     (`def on_cmd(self, msg: Annotated[Twist, "abs(linear.x) <= 0.5"])`), or a
     service's on the request (`def handle(self, request: Annotated[...],
-    response)`), as written; None without one (or when the callback is not a
-    function of the file)."""
+    response)`), an action server's on the goal (rclpy's `goal_callback`,
+    actionlib's `execute_cb`), as written; None without one (or when the
+    callback is not a function of the file)."""
     function = None
     if isinstance(callback, ast.Name):
         function = file.functions.get("", {}).get(callback.id)
