@@ -742,41 +742,50 @@ def test_cpp_file_naming_no_endpoint_maker_is_not_parsed(
     assert not read_cpp(data).endpoints
 
 
+def _ros1_system(root: Path, package: str, files: dict[str, str]) -> list[tuple]:
+    """A ROS 1 package whose `scripts/` a bringup launch file starts (each script
+    as the node its stem names), checked: each finding's file, line and code."""
+    write(root / "bringup" / "package.xml", PACKAGE.format("bringup"))
+    nodes = "".join(
+        f'  <node pkg="{package}" type="{name}" name="{name[:-3]}"/>\n'
+        for name in files
+        if name.endswith(".py")
+    )
+    write(root / "bringup" / "launch" / "all.launch", f"<launch>\n{nodes}</launch>\n")
+    write(root / package / "package.xml", PACKAGE.format(package))
+    for name, text in files.items():
+        folder = "scripts" if name.endswith(".py") else "action"
+        write(root / package / folder / name, text)
+    found = check_paths([root], Config(root=root)).diagnostics
+    return [(Path(d.path).name, d.span.line, d.code) for d in found]
+
+
 def test_a_rospy_publisher_in_a_class_meets_its_subscribers_contract(
     tmp_path: Path,
 ) -> None:
     """A ROS 1 file's endpoints have no owner (one node per file), but its
     publisher kept in `self.pub` is that class's: the contract is checked there
     (it was never matched before)."""
-    write(tmp_path / "bringup" / "package.xml", PACKAGE.format("bringup"))
-    write(
-        tmp_path / "bringup" / "launch" / "grip.launch",
-        '<launch>\n  <node pkg="grip" type="listener.py" name="listener"/>\n'
-        '  <node pkg="grip" type="talker.py" name="talker"/>\n</launch>\n',
-    )
-    write(tmp_path / "grip" / "package.xml", PACKAGE.format("grip"))
-    write(
-        tmp_path / "grip" / "scripts" / "listener.py",
+    listener = (
         "from typing import Annotated\nimport rospy\nfrom std_msgs.msg import Float64\n"
         "def callback(msg: Annotated[Float64, '0 <= data <= 20']):\n"
         "    rospy.loginfo(msg.data)\n"
         "rospy.init_node('listener')\n"
-        "rospy.Subscriber('effort', Float64, callback)\n",
+        "rospy.Subscriber('effort', Float64, callback)\n"
     )
-    write(
-        tmp_path / "grip" / "scripts" / "talker.py",
+    talker = (
         "import rospy\nfrom std_msgs.msg import Float64\n"
         "class Talker:\n"
         "    def __init__(self):\n"
         "        self.pub = rospy.Publisher('effort', Float64, queue_size=10)\n"
         "    def squeeze(self):\n"
         "        self.pub.publish(Float64(40.0))\n"
-        "rospy.init_node('talker')\n",
+        "rospy.init_node('talker')\n"
     )
-    found = check_paths([tmp_path], Config(root=tmp_path)).diagnostics
-    assert [(Path(d.path).name, d.span.line, d.code) for d in found] == [
-        ("talker.py", 7, "RF101")
-    ]
+    found = _ros1_system(
+        tmp_path, "grip", {"listener.py": listener, "talker.py": talker}
+    )
+    assert found == [("talker.py", 7, "RF101")]
 
 
 def test_an_actionlib_goal_meets_its_simple_action_servers_contract(
@@ -785,44 +794,36 @@ def test_an_actionlib_goal_meets_its_simple_action_servers_contract(
     """actionlib_tutorials' Fibonacci: the server's `execute_cb` takes the goal,
     and refines it (int32 overflows past the 46th number); a client's
     `send_goal` of a goal that breaks it is RF101, one that keeps it nothing."""
-    write(tmp_path / "bringup" / "package.xml", PACKAGE.format("bringup"))
-    write(
-        tmp_path / "bringup" / "launch" / "fib.launch",
-        '<launch>\n  <node pkg="fib" type="server.py" name="fibonacci"/>\n'
-        '  <node pkg="fib" type="client.py" name="client"/>\n</launch>\n',
-    )
-    write(tmp_path / "fib" / "package.xml", PACKAGE.format("fib"))
-    write(
-        tmp_path / "fib" / "action" / "Fibonacci.action",
-        "int32 order\n---\nint32[] sequence\n---\nint32[] sequence\n",
-    )
-    write(
-        tmp_path / "fib" / "scripts" / "server.py",
+    server = (
         "from typing import Annotated\nimport actionlib\nimport rospy\n"
         "from fib.msg import FibonacciAction, FibonacciGoal\n"
         "class FibonacciServer:\n"
         "    def __init__(self):\n"
         "        self._as = actionlib.SimpleActionServer(\n"
-        "            'fibonacci', FibonacciAction, execute_cb=self.execute_cb, auto_start=False)\n"
+        "            'fibonacci', FibonacciAction, execute_cb=self.execute_cb,\n"
+        "            auto_start=False)\n"
         "        self._as.start()\n"
-        "    def execute_cb(self, goal: Annotated[FibonacciGoal, '0 <= order <= 46']):\n"
+        "    def execute_cb(\n"
+        "            self, goal: Annotated[FibonacciGoal, '0 <= order <= 46']):\n"
         "        rospy.loginfo(goal.order)\n"
         "rospy.init_node('fibonacci')\n"
-        "server = FibonacciServer()\n",
+        "server = FibonacciServer()\n"
     )
-    write(
-        tmp_path / "fib" / "scripts" / "client.py",
+    client = (
         "import actionlib\nimport rospy\n"
         "from fib.msg import FibonacciAction, FibonacciGoal\n"
         "class Client:\n"
         "    def __init__(self):\n"
-        "        self.client = actionlib.SimpleActionClient('fibonacci', FibonacciAction)\n"
+        "        self.client = actionlib.SimpleActionClient(\n"
+        "            'fibonacci', FibonacciAction)\n"
         "    def run(self):\n"
         "        self.client.send_goal(FibonacciGoal(order=20))\n"
         "        self.client.send_goal(FibonacciGoal(order=50))\n"
-        "rospy.init_node('client')\n",
+        "rospy.init_node('client')\n"
     )
-    found = check_paths([tmp_path], Config(root=tmp_path)).diagnostics
-    assert [(Path(d.path).name, d.span.line, d.code) for d in found] == [
-        ("client.py", 9, "RF101")
-    ]
+    files = {
+        "Fibonacci.action": "int32 order\n---\nint32[] sequence\n---\nint32[] a\n",
+        "fibonacci.py": server,
+        "client.py": client,
+    }
+    assert _ros1_system(tmp_path, "fib", files) == [("client.py", 10, "RF101")]

@@ -48,7 +48,9 @@ LEAVING = frozenset(
 )
 # What sends a message a publisher's subscribers (a client's server, an action
 # client's server) assume of.
-CONTRACTED = frozenset({"publish", "call", "call_async", "send_goal", "send_goal_async"})
+CONTRACTED = frozenset(
+    {"publish", "call", "call_async", "send_goal", "send_goal_async"}
+)
 # Objects that send the message they are called with (`proxy(request)`).
 SENDING = frozenset({"rospy.ServiceProxy"})
 # Methods after which a container holds an element.
@@ -133,7 +135,10 @@ class CallEvaluator(LibraryEvaluator):
         for label, refinement in self.ctx.obligations.get(holder, []):
             value = values[0] if values else None
             if fields is not None and (
-                fields or value is None or value.kind not in MESSAGE_LIKE or len(values) > 1
+                fields
+                or value is None
+                or value.kind not in MESSAGE_LIKE
+                or len(values) > 1
             ):  # the fields of a request rospy builds
                 kind = refinement.msg_type or ""
                 known = self.ctx.catalog.lookup(kind)

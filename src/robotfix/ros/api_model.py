@@ -140,7 +140,12 @@ ENDPOINT_CLASSES: dict[str, EndpointCall] = {
     ),
     "rospy.Publisher": EndpointCall("publisher", 1, (1, "data_class"), (0, "name")),
     "rospy.Subscriber": EndpointCall(
-        "subscription", 1, _type_of("Subscriber"), (0, "name"), None, _taken("Subscriber")
+        "subscription",
+        1,
+        _type_of("Subscriber"),
+        (0, "name"),
+        None,
+        _taken("Subscriber"),
     ),
     "rospy.Service": EndpointCall(
         "service", 1, _type_of("Service"), (0, "name"), None, _taken("Service")
