@@ -64,7 +64,12 @@ def _lines(root: Path, jobs: int = 1, cache: bool = False) -> list[str]:
         # clients whose server's contract is checked again
         ("ros2_services", "RF101", 1, {"cruise.py", "docking.py", "joy_limit.py"}),
         # a frame its subscriber assumes
-        ("ros2_frames", "RF201", 1, {"ahead.py", "clicked.py", "inspection.py"}),
+        (
+            "ros2_frames",
+            "RF201",
+            2,
+            {"ahead.py", "clicked.py", "inspection.py", "patrol_goals.py"},
+        ),
         # action clients whose server's goal callback refines the goal
         (
             "ros2_actions",

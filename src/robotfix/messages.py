@@ -628,14 +628,28 @@ def message_frame_mismatch(
     got: str,
     expected: str,
     declared: Declared,
+    default: bool = False,
 ) -> Diagnostic:
     """RF201: a stamped message whose header names one frame given where a
-    refinement says another (`Annotated[PoseStamped, "Frame('map')"]`)."""
+    refinement says another (`Annotated[PoseStamped, "Frame('map')"]`); a
+    warning when the frame is a parameter's default (`default`), which a launch
+    or parameter file may change."""
     message = (
         f"`{stmt}` gives a message in frame `{got}` (its `{frame_path}`) where "
         f"`{expected}` is assumed{_axes(got, expected)}: transform it with tf2 first"
     )
-    return Diagnostic(rules.UNIT_MISMATCH, path, span, message, (declared.note(),))
+    notes = [declared.note()]
+    if default:
+        notes.append(
+            Note(
+                f"`{got}` is a parameter's default, which a launch or parameter "
+                "file may change"
+            )
+        )
+    level = Severity.WARNING if default else None
+    return Diagnostic(
+        rules.UNIT_MISMATCH, path, span, message, tuple(notes), level=level
+    )
 
 
 def transform_frame_mismatch(

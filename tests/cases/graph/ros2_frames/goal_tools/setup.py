@@ -9,6 +9,7 @@ setup(
             'ahead = goal_tools.ahead:main',
             'inspection = goal_tools.inspection:main',
             'clicked = goal_tools.clicked:main',
+            'patrol_goals = goal_tools.patrol_goals:main',
         ],
     },
 )

@@ -8,4 +8,6 @@ def generate_launch_description():
         Node(package='goal_tools', executable='ahead', name='ahead'),
         Node(package='goal_tools', executable='inspection', name='inspection'),
         Node(package='goal_tools', executable='clicked', name='clicked'),
+        Node(package='goal_tools', executable='patrol_goals', name='patrol_goals',
+             parameters=[{'frame_id': 'map'}]),
     ])
