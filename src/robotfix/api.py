@@ -393,8 +393,9 @@ def check_contracts(
     """What a publisher's file violates of its subscribers' contracts (a
     client's, of its server's): the file analysed again with each `publish` of a
     publisher they listen to (`call`, `call_async` of a client, a rospy proxy
-    called) checked as a call of their callbacks would be (RF101 violated, RF102
-    not proved); only those findings, and not where suppressed."""
+    called, `send_goal_async` of an action client) checked as a call of their
+    callbacks would be (RF101 violated, RF102 not proved; RF201 a frame); only
+    those findings, and not where suppressed."""
     from robotfix.source import SourceFile
 
     source = SourceFile.from_bytes(path, data)

@@ -422,9 +422,8 @@ def contracts(result: GraphResult) -> dict[str, list[Contract]]:
     and a Python publisher or client kept in an attribute (`self.pub =
     self.create_publisher(...)`, one per attribute name in its class; its
     `publish`, `call`, `call_async`, `send_goal`, `send_goal_async` in methods of
-    that class), of the
-    same certain type, on one certain name, started together by one package's
-    launch files."""
+    that class), of the same certain type, on one certain name, started together
+    by one package's launch files."""
     from robotfix.api import Contract
 
     graph = result.graph
