@@ -832,3 +832,15 @@ def test_an_actionlib_goal_meets_its_simple_action_servers_contract(
         "client.py": client,
     }
     assert _ros1_system(tmp_path, "fib", files) == [("client.py", 10, "RF101")]
+
+
+def test_a_contract_finding_shows_the_way_through_the_graph() -> None:
+    """The note of a contract's finding names the sender, the name and the
+    taker, and points at the launch entry that starts the sender."""
+    root = CASES / "ros2_services"
+    found = check_paths([root], Config(root=root)).diagnostics
+    [error] = [d for d in found if d.code == "RF101"]
+    note = error.notes[-1]
+    assert "(/cruise -> /set_max_speed -> /limit_server)" in note.message
+    assert "the server's callback assumes this of every request" in note.message
+    assert (Path(note.path or "").name, note.line) == ("speed.launch.py", 8)

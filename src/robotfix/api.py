@@ -340,6 +340,11 @@ class Contract:
     path: str  # the subscriber's (the server's) file and line
     line: int
     family: str = "topic"  # "service": a client's request; "action": a goal
+    # the way through the graph (`/planner -> /cmd_vel -> /limiter`) and the
+    # launch entry that starts the sender: shown, not part of what is checked
+    # (one sender started twice is checked once)
+    route: str = field(default="", compare=False)
+    launch: tuple[str, int] | None = field(default=None, compare=False)
 
 
 def _contract_refinement(contract: Contract, catalog: MsgCatalog) -> Refinement | None:
@@ -413,25 +418,33 @@ def check_contracts(
     ctx = _analyze(
         source, catalog, stubs=stubs, resolver=resolver, obligations=obligations
     )
-    families = {f"annotation of `{c.label}`": c.family for c in contracts}
+    labels: dict[str, Contract] = {}
+    for c in contracts:
+        label = f"annotation of `{c.label}`"
+        first = labels.setdefault(label, c)
+        if (first.route, first.launch) != (c.route, c.launch):
+            # two senders of the file reach one subscriber: which one a finding
+            # is at is not known here, so no way is shown
+            labels[label] = replace(first, route="", launch=None)
     found = []
     for d in ctx.diagnostics:
-        family = next(
+        kept = next(
             (
-                families[label]
+                labels[label]
                 for note in d.notes
-                for label in families
+                for label in labels
                 if note.message.startswith(label)
             ),
             None,
         )
         if (
-            family is not None
+            kept is not None
             and not source.is_suppressed(d)
             and d.code not in ignored
             and d.rule.name not in ignored
         ):
-            found.append(replace(d, notes=(*d.notes, messages.contract_note(family))))
+            note = messages.contract_note(kept.family, kept.route, kept.launch)
+            found.append(replace(d, notes=(*d.notes, note)))
     return found
 
 

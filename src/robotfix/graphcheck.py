@@ -466,6 +466,8 @@ def contracts(result: GraphResult) -> dict[str, list[Contract]]:
                 if family == "action" and endpoint.ros == 1:
                     kind = kind.removesuffix("Action")  # actionlib's FibonacciAction
                 node = graph.nodes[taker.node].qualified
+                started = graph.nodes[sender.node].launch
+                route = f"{graph.nodes[sender.node].qualified} -> {name} -> {node}"
                 contract = Contract(
                     endpoint.holder,
                     taker.endpoint.contract or "",
@@ -474,6 +476,8 @@ def contracts(result: GraphResult) -> dict[str, list[Contract]]:
                     taker.path,
                     taker.endpoint.line,
                     family,
+                    route,
+                    (started.path, started.line) if started is not None else None,
                 )
                 if contract not in found.setdefault(sender.path, []):
                     found[sender.path].append(contract)

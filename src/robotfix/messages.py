@@ -1020,23 +1020,31 @@ def graph_qos_incompatible(
     )
 
 
-def contract_note(family: str = "topic") -> Note:
+def contract_note(
+    family: str = "topic", route: str = "", launch: tuple[str, int] | None = None
+) -> Note:
     """On a publisher's RF101/RF102 against a subscriber's contract, or a
-    client's against its server's (issue 23 §3)."""
-    if family == "service":
-        return Note(
-            "a launch file starts this client and that service on one name: the "
-            "server's callback assumes this of every request it receives"
-        )
-    if family == "action":
-        return Note(
-            "a launch file starts this action client and that action server on one "
-            "name: the server's goal callback assumes this of every goal it receives"
-        )
-    return Note(
-        "a launch file starts this publisher and that subscriber on one topic: the "
-        "subscriber's callback assumes this of every message it receives"
+    client's against its server's (issue 23 §3); `route`: the way the message
+    goes through the graph; `launch`: the launch entry that starts the sender."""
+    sides, what = {
+        "service": (
+            "this client and that service on one name",
+            "the server's callback assumes this of every request it receives",
+        ),
+        "action": (
+            "this action client and that action server on one name",
+            "the server's goal callback assumes this of every goal it receives",
+        ),
+    }.get(
+        family,
+        (
+            "this publisher and that subscriber on one topic",
+            "the subscriber's callback assumes this of every message it receives",
+        ),
     )
+    way = f" ({route})" if route else ""
+    path, line = launch if launch is not None else (None, None)
+    return Note(f"a launch file starts {sides}{way}: {what}", path, line)
 
 
 def graph_unmatched(
