@@ -844,3 +844,31 @@ def test_a_contract_finding_shows_the_way_through_the_graph() -> None:
     assert "(/cruise -> /set_max_speed -> /limit_server)" in note.message
     assert "the server's callback assumes this of every request" in note.message
     assert (Path(note.path or "").name, note.line) == ("speed.launch.py", 8)
+
+
+def test_a_rospy_proxy_called_with_some_fields_by_position_is_not_checked(
+    tmp_path: Path,
+) -> None:
+    """genpy builds a request of every field by position (or some by keyword):
+    `proxy(0.2)` of a two-field request raises TypeError before anything is
+    sent, so what the other field would hold is not checked; all of them by
+    position is (the server assumes `width <= 0.08`)."""
+    root = tmp_path / "ws"
+    shutil.copytree(CASES / "ros1_services", root)
+    place = root / "arm_control" / "scripts" / "place.py"
+    text = place.read_text()
+    place.write_text(
+        text.replace(
+            "self.set_gripper(width=0.05, effort=5.0)", "self.set_gripper(0.2)"
+        )
+    )
+    assert not [
+        d
+        for d in check_paths([root], Config(root=root)).diagnostics
+        if "place" in d.path
+    ]
+    place.write_text(text.replace("width=0.05, effort=5.0", "0.2, 5.0"))
+    found = check_paths([root], Config(root=root)).diagnostics
+    assert [(Path(d.path).name, d.code) for d in found if "place" in d.path] == [
+        ("place.py", "RF101")
+    ]

@@ -131,18 +131,18 @@ class CallEvaluator(LibraryEvaluator):
         assume of the message, or a service of a client's request
         (`FileContext.obligations`), checked as a refined argument is. `fields`:
         a rospy proxy's call, whose arguments are the request's fields unless
-        it is one message."""
+        it is one message: genpy builds it of every field by position, or of
+        some by keyword (others, or mixing the two, raise: not checked)."""
         for label, refinement in self.ctx.obligations.get(holder, []):
             value = values[0] if values else None
-            if fields is not None and (
-                fields
-                or value is None
-                or value.kind not in MESSAGE_LIKE
-                or len(values) > 1
-            ):  # the fields of a request rospy builds
+            whole = len(values) == 1 and not fields and values[0].kind in MESSAGE_LIKE
+            if fields is not None and not whole:
                 kind = refinement.msg_type or ""
-                known = self.ctx.catalog.lookup(kind)
-                value = self.construct(kind, values, fields, state) if known else None
+                spec = self.ctx.catalog.lookup(kind)
+                built = spec is not None and (
+                    not values or (not fields and len(values) == len(spec.fields))
+                )
+                value = self.construct(kind, values, fields, state) if built else None
             if value is not None and value.kind in MESSAGE_LIKE:
                 self.check.assign_refined(
                     state, label, refinement, value, self.site, {}, leaving=True
