@@ -62,7 +62,12 @@ def _lines(root: Path, jobs: int = 1, cache: bool = False) -> list[str]:
         # publishers whose subscribers' contracts are checked again on every run
         ("ros2_contracts", "RF101", 1, {"joystick.py", "planner.py", "teleop.py"}),
         # clients whose server's contract is checked again
-        ("ros2_services", "RF101", 1, {"cruise.py", "docking.py", "joy_limit.py"}),
+        (
+            "ros2_services",
+            "RF101",
+            2,
+            {"cruise.py", "day_mode.py", "docking.py", "joy_limit.py", "night_mode.py"},
+        ),
         # a frame its subscriber assumes
         (
             "ros2_frames",
@@ -839,7 +844,9 @@ def test_a_contract_finding_shows_the_way_through_the_graph() -> None:
     taker, and points at the launch entry that starts the sender."""
     root = CASES / "ros2_services"
     found = check_paths([root], Config(root=root)).diagnostics
-    [error] = [d for d in found if d.code == "RF101"]
+    [error] = [
+        d for d in found if d.code == "RF101" and Path(d.path).name == "cruise.py"
+    ]
     note = error.notes[-1]
     assert "(/cruise -> /set_max_speed -> /limit_server)" in note.message
     assert "the server's callback assumes this of every request" in note.message
@@ -872,3 +879,42 @@ def test_a_rospy_proxy_called_with_some_fields_by_position_is_not_checked(
     assert [(Path(d.path).name, d.code) for d in found if "place" in d.path] == [
         ("place.py", "RF101")
     ]
+
+
+def test_a_contract_through_an_alias_meets_publishers_held_in_locals(
+    tmp_path: Path,
+) -> None:
+    """rospy_tutorials' talker keeps its publisher in a local of `talker()`, and a
+    subscriber may write its refinement once as a module-level alias: both were
+    silent (a contract was read only as `Annotated[...]` written in the callback's
+    signature, and only publishers kept in `self.x` were matched). Each function's
+    local is its own publisher."""
+    listener = (
+        "from typing import Annotated\nimport rospy\nfrom std_msgs.msg import Float64\n"
+        "Effort = Annotated[Float64, '0 <= data <= 20']\n"
+        "def callback(msg: Effort):\n"
+        "    rospy.loginfo(msg.data)\n"
+        "rospy.init_node('listener')\n"
+        "rospy.Subscriber('effort', Float64, callback)\n"
+    )
+    talker = (
+        "import rospy\nfrom std_msgs.msg import Float64\n"
+        "def squeeze():\n"
+        "    pub = rospy.Publisher('effort', Float64, queue_size=10)\n"
+        "    pub.publish(Float64(40.0))\n"
+        "def hold():\n"
+        "    pub = rospy.Publisher('effort', Float64, queue_size=10)\n"
+        "    pub.publish(Float64(5.0))\n"
+        "class Recorder:\n"
+        "    def publish(self, msg):\n"
+        "        rospy.loginfo(msg)\n"
+        "def rehearse():\n"
+        "    pub = rospy.Publisher('effort', Float64, queue_size=10)\n"
+        "    pub = Recorder()  # a dry run: nothing is sent\n"
+        "    pub.publish(Float64(40.0))\n"
+        "rospy.init_node('talker')\n"
+    )
+    found = _ros1_system(
+        tmp_path, "grip", {"listener.py": listener, "talker.py": talker}
+    )
+    assert found == [("talker.py", 5, "RF101")]

@@ -88,8 +88,8 @@ class CallEvaluator(LibraryEvaluator):
             values = [self.eval(a, state) for a in node.args]
             self._leaving(values, state)
             if method in CONTRACTED and self.ctx.obligations:
-                holder = dotted(node.func.value)  # type: ignore[attr-defined]
-                self._contracts(values, state, f"{self._class_name()}:{holder}")
+                holder = self._holder(node.func.value)  # type: ignore[attr-defined]
+                self._contracts(values, state, holder)
             return self.unknown(node)
         if isinstance(func, ast.Attribute) and func.attr in SEQUENCE_METHODS:
             receiver = self.receiver(func.value, state)
@@ -107,8 +107,7 @@ class CallEvaluator(LibraryEvaluator):
             if callee.kind == "object" and callee.name in SENDING:
                 self._leaving(args, state)
                 if self.ctx.obligations and not imported.starred(node, kwargs):
-                    holder = f"{self._class_name()}:{dotted(func)}"
-                    self._contracts(args, state, holder, kwargs)
+                    self._contracts(args, state, self._holder(func), kwargs)
         result = self._dispatch(callee, node, args, kwargs, state)
         self._forget_after_call(node, args, kwargs, state, callee)
         return result
@@ -907,6 +906,22 @@ class CallEvaluator(LibraryEvaluator):
     def _class_name(self) -> str | None:
         """The class whose code is interpreted (the statement interpreter's)."""
         raise NotImplementedError
+
+    def _local_scope(self, name: str) -> Scope | None:
+        """The function that binds `name` here; None for a module name (the
+        statement interpreter's)."""
+        raise NotImplementedError
+
+    def _holder(self, receiver: ast.expr) -> str:
+        """The key of the endpoint a call's receiver holds, as the graph names it
+        (`ros.graph.python._holder`): `Planner:self.pub`, `:main/cli` (a local of
+        function `main`), `:pub` (a module name)."""
+        if isinstance(receiver, ast.Name):
+            scope = self._local_scope(receiver.id)
+            if scope is None:
+                return f":{receiver.id}"
+            return f"{self._class_name() or ''}:{scope.name}/{receiver.id}"
+        return f"{self._class_name()}:{dotted(receiver)}"
 
 
 def _index(value: Value) -> int | None:

@@ -435,13 +435,18 @@ class Interpreter(CallEvaluator):
 
     def _is_local(self, name: str) -> bool:
         """Bound in this function (or an enclosing one), not a module name."""
+        return self._local_scope(name) is not None
+
+    def _local_scope(self, name: str) -> Scope | None:
+        """The function (or class body) that binds `name` as the code being
+        interpreted sees it; None for a module name."""
         scope: Scope | None = self.scope
         while scope is not None and scope.parent is not None:
             visible = scope.kind != "class" or scope is self.scope
             if visible and name in scope.local_names:
-                return True
+                return scope
             scope = scope.parent
-        return False
+        return None
 
     def is_read_only_table(self, node: ast.expr) -> bool:
         return (

@@ -553,23 +553,36 @@ def _call(
             profile,
             spec.ros,
             contract=contract,
-            holder=_holder(statement, call, cls),
+            holder=_holder(file, statement, call, scope, cls),
         )
     )
 
 
-def _holder(statement: ast.stmt, call: ast.Call, cls: str | None) -> str:
-    """`Planner:self.pub` of `self.pub = self.create_publisher(...)` in a method of
-    class `Planner`; "" otherwise."""
+def _holder(
+    file: _File, statement: ast.stmt, call: ast.Call, scope: _Scope, cls: str | None
+) -> str:
+    """Where the endpoint is kept, as the analysis names it at a `publish` or
+    `call_async` (`analysis.calls`): `Planner:self.pub` of `self.pub =
+    self.create_publisher(...)` in a method of class `Planner`; `:main/cli` of
+    `cli = node.create_client(...)` in a function `main` (`Planner:__init__/pub` in
+    a method), `:pub` of a module's `pub = rospy.Publisher(...)`, each only for a
+    name bound once in its scope; "" otherwise."""
     if isinstance(statement, ast.Assign) and len(statement.targets) == 1:
         target: ast.expr = statement.targets[0]
     elif isinstance(statement, ast.AnnAssign):
         target = statement.target
     else:
         return ""
+    if statement.value is not call:
+        return ""
+    if isinstance(target, ast.Name) and not isinstance(scope, ast.Lambda):
+        if file.values(target, scope, cls) != [call]:
+            return ""  # bound again, or declared global: not followed
+        if isinstance(scope, ast.Module):
+            return f":{target.id}"
+        return f"{cls or ''}:{scope.name}/{target.id}"
     text = dotted(target) or ""
-    kept = statement.value is call and text.startswith("self.") and cls is not None
-    return f"{cls}:{text}" if kept else ""
+    return f"{cls}:{text}" if text.startswith("self.") and cls is not None else ""
 
 
 def _contract(file: _File, callback: ast.expr, cls: str | None) -> str | None:
@@ -604,7 +617,7 @@ def _contract(file: _File, callback: ast.expr, cls: str | None) -> str | None:
     params = [*function.args.posonlyargs, *function.args.args]
     if len(params) <= first:
         return None
-    annotation = params[first].annotation
+    annotation = _aliased(file, params[first].annotation)
     if not (
         isinstance(annotation, ast.Subscript)
         and (dotted(annotation.value) or "").rsplit(".", 1)[-1] == "Annotated"
@@ -617,6 +630,19 @@ def _contract(file: _File, callback: ast.expr, cls: str | None) -> str | None:
         if isinstance(e, ast.Constant) and isinstance(e.value, str)
     ]
     return " and ".join(f"({t})" if len(texts) > 1 else t for t in texts) or None
+
+
+def _aliased(file: _File, annotation: ast.expr | None) -> ast.expr | None:
+    """An annotation that names a module-level alias bound once and never changed
+    (`SafeTwist = Annotated[Twist, "..."]`, `SafeTwist: TypeAlias = ...`, then
+    `msg: SafeTwist`) stands for the alias's value; any other annotation for
+    itself. (An alias imported from another module is not followed here.)"""
+    if not isinstance(annotation, ast.Name):
+        return annotation
+    bound = file.values(annotation, file.tree, None)
+    if bound is not None and len(bound) == 1 and bound[0] is not None:
+        return bound[0]
+    return annotation
 
 
 def _node_call(

@@ -10,6 +10,8 @@ setup(
             'docking = speed_control.docking:main',
             'joy_limit = speed_control.joy_limit:main',
             'fleet = speed_control.fleet:main',
+            'night_mode = speed_control.night_mode:main',
+            'day_mode = speed_control.day_mode:main',
         ],
     },
 )

@@ -8,6 +8,8 @@ def generate_launch_description():
         Node(package='speed_control', executable='cruise', name='cruise'),
         Node(package='speed_control', executable='docking', name='docking'),
         Node(package='speed_control', executable='joy_limit', name='joy_limit'),
+        Node(package='speed_control', executable='night_mode', name='night_mode'),
+        Node(package='speed_control', executable='day_mode', name='day_mode'),
         # near miss: under a namespace its relative `set_max_speed` is another
         # robot's service, which this launch file does not start
         Node(package='speed_control', executable='fleet', name='fleet',
