@@ -306,7 +306,7 @@ class CallEvaluator(LibraryEvaluator):
         terms = {k: v.term for k, v in given.items() if v.term is not None}
         exprs = dict(zip(params, node.args, strict=False))
         exprs.update({k.arg: k.value for k in node.keywords if k.arg is not None})
-        log, where = self.ctx.unit_flows, self.flow_where()
+        log, where = self.flow_log(), self.flow_where()
         for name, value in given.items():
             decl = scope.decls.get(name)
             if decl is not None:
@@ -515,7 +515,7 @@ class CallEvaluator(LibraryEvaluator):
         """For `robotfix suggest`: `Twist(linear=...)`, `Vector3(x=speed)`,
         `Twist(Vector3(speed, 0.0, 0.0))` (analysis/flows.py)."""
         spec = self.ctx.catalog.lookup(message.name or "")
-        log, where = self.ctx.unit_flows, self.flow_where()
+        log, where = self.flow_log(), self.flow_where()
         if message.ref is None or message.ref not in state.heap or spec is None:
             return
         if log is None or where is None:

@@ -12,7 +12,7 @@ from fractions import Fraction
 from typing import NamedTuple
 
 from robotfix import messages
-from robotfix.analysis import containers, fixes, frames, heap, parameters
+from robotfix.analysis import containers, fixes, frames, heap, paramchecks
 from robotfix.analysis.context import SOLVER_BUDGET, FileContext
 from robotfix.analysis.state import State
 from robotfix.analysis.values import (
@@ -400,7 +400,7 @@ class Checker:
         if decl.item is not None:
             if decl.optional and value.kind == "none":
                 return value
-            read = parameters.read_of(self, value, site)
+            read = paramchecks.read_of(self, value, site)
             if read is not None:  # a parameter read: its default is checked
                 if read.default is not None and read.default_node is not None:
                     self.assign_sequence(
@@ -423,10 +423,12 @@ class Checker:
                 rules = self.message_rules(decl, name, lookup)
                 self.reach(state, value.ref, rules, site, name, leaving)
             return value
-        read = parameters.read_of(self, value, site)
-        if read is not None and parameters.attaches(read, decl, lookup):
+        read = paramchecks.read_of(self, value, site)
+        if read is not None and paramchecks.attaches(read, decl, lookup):
             # a parameter read: the refinement becomes its own
-            return parameters.attach(self, state, name, decl, value, site, lookup, read)
+            return paramchecks.attach(
+                self, state, name, decl, value, site, lookup, read
+            )
         if decl.elements is not None:
             return self._assign_elements(state, name, decl, value, site, lookup)
         if self.report_uninit(value, site, state):

@@ -16,11 +16,11 @@ from functools import partial
 from typing import TypeVar
 
 from robotfix import messages
-from robotfix.analysis import containers, frames, heap, hover, imported, types
+from robotfix.analysis import containers, frames, heap, hover, imported, typeterms
 from robotfix.analysis.checks import Checker
 from robotfix.analysis.constants import is_constant
 from robotfix.analysis.context import TERM_LIMIT, FileContext
-from robotfix.analysis.flows import Where
+from robotfix.analysis.flows import FlowLog, Where
 from robotfix.analysis.program import Program
 from robotfix.analysis.state import State
 from robotfix.analysis.values import NONE, SEQUENCES, Items, Value, replace
@@ -119,6 +119,11 @@ class ExpressionEvaluator:
         follows (provided by the statement interpreter)."""
         return None
 
+    def flow_log(self) -> FlowLog | None:
+        """The file's log of where units flow (`robotfix suggest`), if one is kept."""
+        log = self.ctx.unit_flows
+        return log if isinstance(log, FlowLog) else None
+
     def note_sink(
         self,
         expr: ast.expr,
@@ -128,7 +133,7 @@ class ExpressionEvaluator:
     ) -> None:
         """For `robotfix suggest`: `expr`, holding `value`, reached `unit`'s place
         (an `int` one if `integer`)."""
-        log, where = self.ctx.unit_flows, self.flow_where()
+        log, where = self.flow_log(), self.flow_where()
         if log is not None and where is not None:
             log.sink(where, expr, unit, value, integer=integer)
 
@@ -393,7 +398,7 @@ class ExpressionEvaluator:
 
     def typed(
         self,
-        found: types.Type | None,
+        found: typeterms.Type | None,
         node: ast.AST,
         state: State,
         label: str | None = None,
@@ -405,14 +410,14 @@ class ExpressionEvaluator:
             return self.unknown(node)
         if label is None:
             label = self.ctx.source.segment(node) or "the value"
-        found = types.plain(found)
-        if isinstance(found, types.Msg):
+        found = typeterms.plain(found)
+        if isinstance(found, typeterms.Msg):
             if self.ctx.catalog.lookup(found.name) is None:
                 return self.unknown(node)
             return heap.new_message(
                 self.ctx, state, found.name, "received", label=label
             )
-        if isinstance(found, types.Obj):
+        if isinstance(found, typeterms.Obj):
             if "." in found.name:  # another module's class: its refined attributes
                 known = imported.resolve(self.ctx.resolver, found.name)
                 if isinstance(known, imported.ClassSummary):
@@ -422,16 +427,16 @@ class ExpressionEvaluator:
             # an id of its own: whether it is None is not known (even a declared
             # `client: Client` may be given None), the same for each test of it
             return Value("instance", name=found.name, ref=self.ctx.fresh_id())
-        if isinstance(found, types.Lib):  # `self.last: Time`, a stub's result
+        if isinstance(found, typeterms.Lib):  # `self.last: Time`, a stub's result
             return Value("object", name=found.name)
-        if isinstance(found, types.Tup):
+        if isinstance(found, typeterms.Tup):
             parts = tuple(self.typed(t, node, state, label) for t in found.items)
             return Value("tuple", elements=parts)
-        if isinstance(found, types.Seq) and isinstance(found.item, types.Msg):
+        if isinstance(found, typeterms.Seq) and isinstance(found.item, typeterms.Msg):
             return Value("list", items=Items(message=(found.item.name, "received")))
-        if isinstance(found, types.Seq):
+        if isinstance(found, typeterms.Seq):
             return Value("list", items=Items(of=found.item))
-        if isinstance(found, types.Map):
+        if isinstance(found, typeterms.Map):
             return Value("dict", items=Items(of=found.value))
         return self.unknown(node)
 

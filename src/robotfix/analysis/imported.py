@@ -24,10 +24,10 @@ from robotfix.annotations.extract import Alias, Refinement
 from robotfix.stubs import load as stubs
 
 if TYPE_CHECKING:
-    from robotfix.analysis.calls import CallEvaluator
     from robotfix.analysis.index import FileIndex
     from robotfix.analysis.state import State
-    from robotfix.analysis.types import Type
+    from robotfix.analysis.typeterms import Type
+    from robotfix.annotations.units import Unit
 
 MAX_HOPS = 20  # re-exports followed for one name (`a` re-exports `b` re-exports...)
 
@@ -229,8 +229,64 @@ def starred(node: ast.Call, kwargs: dict[str | None, Value]) -> bool:
     return any(isinstance(a, ast.Starred) for a in node.args) or None in kwargs
 
 
+class Symbols(Protocol):
+    """What `call` needs of the file's context: a fresh unknown value."""
+
+    def fresh(
+        self, kind: str, description: str | ast.AST, unit: object = None
+    ) -> Value: ...
+
+
+class RefinedChecks(Protocol):
+    """What `call` needs of the checks (`analysis/checks.py`): an argument checked
+    against a parameter's refinement, a result assumed to meet its own."""
+
+    def assign_refined(
+        self,
+        state: State,
+        name: str,
+        decl: Refinement,
+        value: Value,
+        site: ast.AST,
+        lookup: dict[str, A.Expr],
+        leaving: bool = False,
+    ) -> Value: ...
+
+    def assumed(
+        self, state: State, name: str, decl: Refinement, lookup: dict[str, A.Expr]
+    ) -> Value: ...
+
+
+class Caller(Protocol):
+    """What `call` needs of the evaluator making the call (`analysis/calls.py`)."""
+
+    site: ast.AST  # the statement being interpreted
+
+    @property
+    def ctx(self) -> Symbols: ...
+
+    @property
+    def check(self) -> RefinedChecks: ...
+
+    def note_sink(
+        self,
+        expr: ast.expr,
+        unit: Unit | None,
+        value: Value | None,
+        integer: bool = False,
+    ) -> None: ...
+
+    def typed(
+        self,
+        found: Type | None,
+        node: ast.AST,
+        state: State,
+        label: str | None = None,
+    ) -> Value: ...
+
+
 def call(
-    ev: CallEvaluator,
+    ev: Caller,
     function: FunctionSummary,
     args: list[Value],
     kwargs: dict[str | None, Value],
@@ -259,7 +315,7 @@ def call(
     return ev.check.assumed(state, f"{function.name}()", function.returns, lookup)
 
 
-def _unknowns(ev: CallEvaluator, decl: Refinement) -> dict[str, A.Expr]:
+def _unknowns(ev: Caller, decl: Refinement) -> dict[str, A.Expr]:
     """Names a callee's refinement mentions besides its parameters (the summary
     already put in its module's constants): unknown values here."""
     found: dict[str, A.Expr] = {}

@@ -24,13 +24,13 @@ from robotfix.analysis import (
     heap,
     hover,
     imported,
-    types,
+    typeterms,
     writes,
 )
 from robotfix.analysis.calls import LEAVING, MUTATORS, CallEvaluator
 from robotfix.analysis.constants import bound_names, plain_kind, scan
 from robotfix.analysis.context import FileContext, Scope, build_scope
-from robotfix.analysis.flows import Where, array_kind
+from robotfix.analysis.flows import FlowLog, Where, array_kind
 from robotfix.analysis.index import index_of
 from robotfix.analysis.program import (
     Function,
@@ -40,6 +40,7 @@ from robotfix.analysis.program import (
     never_returns,
 )
 from robotfix.analysis.state import MAYBE, MaybeUnbound, State, join
+from robotfix.analysis.unitmemo import UnitMemo
 from robotfix.analysis.values import (
     CONTAINERS,
     MUTABLE,
@@ -92,7 +93,7 @@ def analyze_module(ctx: FileContext) -> None:
     ctx.constants = scan(tree, ctx.index, ctx.qualname, ":=" in ctx.source.text)
     module = build_scope(ctx, "module", "<module>", tree, None)
     program = collect(ctx, tree, module)
-    if ctx.unit_flows is not None:
+    if isinstance(ctx.unit_flows, FlowLog):
         ctx.unit_flows.program = program
     top = Interpreter(ctx, program, module, {})
     state = top.exec_block(tree.body, State())
@@ -110,7 +111,11 @@ def analyze_module(ctx: FileContext) -> None:
     seen: set[int] = set()
     # the editor's memo of items analysed by an earlier check (analysis/unitmemo.py)
     units = ctx.unit_memo
-    memo = None if units is None else units.begin(ctx, program, tree, statics)
+    memo = (
+        units.begin(ctx, program, tree, statics)
+        if isinstance(units, UnitMemo)
+        else None
+    )
     while pending or later:
         node, parent = pending.pop(0) if pending else later.pop(0)
         if id(node) not in seen:
@@ -752,9 +757,9 @@ class Interpreter(CallEvaluator):
         factors = () if value.literal else value.factors  # `[r * 100 for r in ranges]`
         message = (value.name, "unknown") if value.kind == "msg" else None
         of = (
-            types.Obj(value.name)
+            typeterms.Obj(value.name)
             if value.kind == "instance"
-            else types.Lib(value.name)
+            else typeterms.Lib(value.name)
             if value.kind == "object"
             else None
         )
@@ -1284,7 +1289,7 @@ class Interpreter(CallEvaluator):
         """For `robotfix suggest` (analysis/flows.py): `source` reached a place with
         a unit (a refined name or attribute, a message field with a unit), or an
         unannotated name or attribute takes its value."""
-        log = self.ctx.unit_flows
+        log = self.flow_log()
         if log is None:
             return
         decl: Refinement | None = None

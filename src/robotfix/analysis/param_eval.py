@@ -6,7 +6,7 @@ lies in the declared range and satisfies the refinements attached where it was
 declared. A default outside the declared range is RF101 at the default (rclpy
 refuses it). `rospy.get_param(name, default)` is an unknown; assigned to a refined
 target right away, its default is checked against the refinement and the
-refinement is assumed (`parameters.attach`).
+refinement is assumed (`paramchecks.attach`).
 """
 
 from __future__ import annotations
@@ -45,13 +45,15 @@ HANDLE_KINDS = frozenset({"parameter", "parameter_value"})
 
 class ParameterEvaluator(ExpressionEvaluator):
     def parameters(self) -> ParamContext:
-        if self.ctx.parameters is None:
-            self.ctx.parameters = ParamContext(
+        found = self.ctx.parameters
+        if not isinstance(found, ParamContext):
+            found = ParamContext(
                 summarize(
                     self.ctx.source, self.ctx.index, self.ctx.resolver, self.ctx.stubs
                 )
             )
-        return self.ctx.parameters
+            self.ctx.parameters = found
+        return found
 
     def parameter_call(
         self,
