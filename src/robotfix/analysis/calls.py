@@ -109,7 +109,7 @@ class CallEvaluator(LibraryEvaluator):
         """The message a call sends (its first argument) leaves the node."""
         for value in values[:1]:
             if value.kind == "msg" and value.ref is not None:
-                self.check.check_whole(state, value.ref, self.site, publishing=True)
+                self.fields.check_whole(state, value.ref, self.site, publishing=True)
                 frames.check_leaving(self.ctx, state, value.ref, self.site)
 
     def _contracts(self, values: list[Value], state: State, holder: str) -> None:
@@ -121,7 +121,7 @@ class CallEvaluator(LibraryEvaluator):
             if value.kind not in MESSAGE_LIKE:
                 continue
             for label, refinement in refinements:
-                self.check.assign_refined(
+                self.refined.assign_refined(
                     state, label, refinement, value, self.site, {}, leaving=True
                 )
 
@@ -311,7 +311,7 @@ class CallEvaluator(LibraryEvaluator):
             decl = scope.decls.get(name)
             if decl is not None:
                 lookup = {**self._callee_names(decl, function, state), **terms}
-                self.check.assign_refined(
+                self.refined.assign_refined(
                     state, name, decl, value, self.site, lookup, leaving=True
                 )
             if log is not None and where is not None and name in exprs:
@@ -326,7 +326,9 @@ class CallEvaluator(LibraryEvaluator):
                 return inlined  # else what its `return`s give, if they agree
             return self.typed(self.program.types.returns(function.key), node, state)
         lookup = {**self._callee_names(function.returns, function, state), **terms}
-        return self.check.assumed(state, f"{function.name}()", function.returns, lookup)
+        return self.refined.assumed(
+            state, f"{function.name}()", function.returns, lookup
+        )
 
     def helper_evaluator(self, function: Function) -> CallEvaluator | None:
         """An evaluator for `function`'s expression at a call (the statement
@@ -499,7 +501,7 @@ class CallEvaluator(LibraryEvaluator):
         given = list(zip(spec.fields, args, strict=False))
         given += [(k, v) for k, v in kwargs.items() if k]
         for name, value in given:
-            self.check.write_field(
+            self.fields.write_field(
                 state, message.ref, name, value, self.site, f"{short}.{name}"
             )
         return message

@@ -20,8 +20,10 @@ from robotfix.analysis import containers, frames, heap, hover, imported, typeter
 from robotfix.analysis.checks import Checker
 from robotfix.analysis.constants import is_constant
 from robotfix.analysis.context import TERM_LIMIT, FileContext
+from robotfix.analysis.fieldchecks import FieldChecker
 from robotfix.analysis.flows import FlowLog, Where
 from robotfix.analysis.program import Program
+from robotfix.analysis.refined import RefinedChecker
 from robotfix.analysis.state import State
 from robotfix.analysis.values import NONE, SEQUENCES, Items, Value, replace
 from robotfix.annotations import ast as A
@@ -83,7 +85,11 @@ class ExpressionEvaluator:
     def __init__(self, ctx: FileContext, program: Program) -> None:
         self.ctx = ctx
         self.program = program
+        # the checks that report diagnostics, as collaborators: the scalar checks,
+        # those of messages, and those of values that reach a refined target
         self.check = Checker(ctx)
+        self.fields = FieldChecker(self.check)
+        self.refined = RefinedChecker(self.check, self.fields)
         self.site: ast.AST = ast.Pass()  # the statement being interpreted
         self.lists_seen = False  # whether a list was stored in a name or attribute
         # the symbol each attribute read last gave (`decisions.py`: two tests of
@@ -243,7 +249,7 @@ class ExpressionEvaluator:
             text = self.ctx.source.segment(node) or node.attr
             ref = base.ref
             self.note_hover(node, lambda: hover.field(self.ctx, state, ref, node.attr))
-            value = self.check.read_field(state, base.ref, node.attr, self.site, text)
+            value = self.fields.read_field(state, base.ref, node.attr, self.site, text)
             return frames.framed_read(state, base.ref, node.attr, value)
         if base.kind in ("instance", "goal_handle") and isinstance(
             node.value, ast.Name
@@ -382,7 +388,7 @@ class ExpressionEvaluator:
             )
             if decl is not None:
                 lookup = self.refinement_lookup(decl, state)
-                value = self.check.assumed(state, key, decl, lookup)
+                value = self.refined.assumed(state, key, decl, lookup)
             elif typed is not None:
                 # a message or object kept on self: a message's fields are unknown
                 # but refined, as any attribute is in a method that did not set it

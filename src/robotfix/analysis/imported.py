@@ -238,8 +238,9 @@ class Symbols(Protocol):
 
 
 class RefinedChecks(Protocol):
-    """What `call` needs of the checks (`analysis/checks.py`): an argument checked
-    against a parameter's refinement, a result assumed to meet its own."""
+    """What `call` needs of the refinement checks (`analysis/refined.py`): an
+    argument checked against a parameter's refinement, a result assumed to meet
+    its own."""
 
     def assign_refined(
         self,
@@ -266,7 +267,7 @@ class Caller(Protocol):
     def ctx(self) -> Symbols: ...
 
     @property
-    def check(self) -> RefinedChecks: ...
+    def refined(self) -> RefinedChecks: ...
 
     def note_sink(
         self,
@@ -306,13 +307,13 @@ def call(
         decl = decls.get(name)
         if decl is not None:
             lookup = {**_unknowns(ev, decl), **terms}
-            ev.check.assign_refined(state, name, decl, value, ev.site, lookup)
+            ev.refined.assign_refined(state, name, decl, value, ev.site, lookup)
             if name in exprs:  # for `robotfix suggest`: the argument met a unit
                 ev.note_sink(exprs[name], decl.unit, value, decl.base == "int")
     if function.returns is None:
         return ev.typed(function.result, node, state)
     lookup = {**_unknowns(ev, function.returns), **terms}
-    return ev.check.assumed(state, f"{function.name}()", function.returns, lookup)
+    return ev.refined.assumed(state, f"{function.name}()", function.returns, lookup)
 
 
 def _unknowns(ev: Caller, decl: Refinement) -> dict[str, A.Expr]:

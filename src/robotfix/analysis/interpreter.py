@@ -368,7 +368,7 @@ class Interpreter(CallEvaluator):
         decl = self.scope.module().decls.get(name)
         if decl is not None and (decl.elements is not None or decl.item is not None):
             # a tuple of refined elements, or a refined list or tuple
-            value = self.check.assumed(
+            value = self.refined.assumed(
                 state, name, decl, self.refinement_lookup(decl, state)
             )
             self.globals_read[name] = (value, None)
@@ -498,7 +498,7 @@ class Interpreter(CallEvaluator):
     ) -> Value:
         if decl is None:
             return self.unknown(node)
-        return self.check.assumed(
+        return self.refined.assumed(
             state, name, decl, self.refinement_lookup(decl, state)
         )
 
@@ -521,7 +521,7 @@ class Interpreter(CallEvaluator):
             decl = self.decl_for(target.id)
             if decl is not None:
                 lookup = self.refinement_lookup(decl, state)
-                value = self.check.assign_refined(
+                value = self.refined.assign_refined(
                     state, target.id, decl, value, self.site, lookup
                 )
             bound = state.env[target.id] = value.settled()
@@ -552,7 +552,7 @@ class Interpreter(CallEvaluator):
                     target, lambda: hover.field(self.ctx, state, ref, target.attr)
                 )
                 text = self.ctx.source.segment(target) or target.attr
-                self.check.write_field(
+                self.fields.write_field(
                     state, base.ref, target.attr, value, self.site, text
                 )
             else:
@@ -589,7 +589,7 @@ class Interpreter(CallEvaluator):
         decl = self.program.attributes.get(base.name, {}).get(attr)
         if decl is not None:
             lookup = self.refinement_lookup(decl, state)
-            value = self.check.assign_refined(
+            value = self.refined.assign_refined(
                 state, key, decl, value, self.site, lookup
             )
         value = containers.stripped(value)  # an attribute's list is shared
@@ -806,14 +806,14 @@ class Interpreter(CallEvaluator):
                 value = arriving[arg.arg](state)
             elif decl is not None and decl.base == "msg":
                 lookup = self.refinement_lookup(decl, state)
-                value = self.check.assumed(state, arg.arg, decl, lookup)
+                value = self.refined.assumed(state, arg.arg, decl, lookup)
             elif msg_type is not None:
                 value = heap.new_message(
                     self.ctx, state, msg_type, "received", label=arg.arg
                 )
             elif decl is not None:
                 lookup = self.refinement_lookup(decl, state)
-                value = self.check.assumed(state, arg.arg, decl, lookup)
+                value = self.refined.assumed(state, arg.arg, decl, lookup)
             elif annotation is not None and (
                 typed := self.program.types.parameter(function, arg.arg)
             ):  # `driver: MotorDriver`, `scans: list[LaserScan]`
@@ -998,7 +998,7 @@ class Interpreter(CallEvaluator):
             before = state.env.get(name)
             if decl is not None:
                 lookup = self.refinement_lookup(decl, state)
-                state.env[name] = self.check.assumed(state, name, decl, lookup)
+                state.env[name] = self.refined.assumed(state, name, decl, lookup)
             elif isinstance(before, Value) and constant.get(name, {"?"}) <= _KEEPS.get(
                 before.kind, set()
             ):
@@ -1355,7 +1355,7 @@ class Interpreter(CallEvaluator):
         function = self.function
         if function is not None and function.returns is not None:
             lookup = self.refinement_lookup(function.returns, state)
-            self.check.assign_refined(
+            self.refined.assign_refined(
                 state, f"{function.name}()", function.returns, value, node, lookup
             )
             if node.value is not None:
@@ -1368,7 +1368,7 @@ class Interpreter(CallEvaluator):
             "action",
         )
         if leaves and value.kind == "msg" and value.ref is not None:
-            self.check.check_whole(state, value.ref, node, publishing=True)
+            self.fields.check_whole(state, value.ref, node, publishing=True)
         state.reachable = False
         return state
 

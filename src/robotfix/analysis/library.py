@@ -55,7 +55,7 @@ class LibraryEvaluator(ParameterEvaluator):
             return None
         if found.decl is not None:
             lookup = self._lookup(found.decl, {})
-            return self.check.assumed(state, f".{attr}", found.decl, lookup)
+            return self.refined.assumed(state, f".{attr}", found.decl, lookup)
         return self._object(found.type, state, f"`.{attr}`")
 
     def object_operation(
@@ -280,7 +280,7 @@ class LibraryEvaluator(ParameterEvaluator):
     ) -> Value:
         if function.returns is not None:
             lookup = self._lookup(function.returns, terms)
-            return self.check.assumed(
+            return self.refined.assumed(
                 state, f"{function.short}()", function.returns, lookup
             )
         if function.returns_type is not None:

@@ -2,7 +2,8 @@
 "0 < _ <= 1"] = self.declare_parameter('x', 0.5).value`): the refinement becomes
 the parameter's, its default is checked against it, and the value is assumed to
 satisfy it (parameter files are checked against it, `robotfix.paramcheck`).
-The checker (`analysis/checks.py`) calls them; what they need of it is `Checks`.
+The refinement checks (`analysis/refined.py`) call them; what they need of those
+is `Checks`.
 """
 
 from __future__ import annotations
@@ -22,22 +23,12 @@ from robotfix.messages import Declared
 from robotfix.vc import VC, Violated
 
 
-class Checks(Protocol):
-    """What the checks of a parameter read need of the checker."""
-
-    @property
-    def ctx(self) -> FileContext: ...
-
-    @property
-    def path(self) -> str: ...
+class Scalar(Protocol):
+    """What they need of the scalar checks (`checks.Checker`)."""
 
     def base_fits(
         self, expected: str, value: Value, site: ast.AST, target: str
     ) -> bool: ...
-
-    def assumed(
-        self, state: State, name: str, decl: Refinement, lookup: dict[str, A.Expr]
-    ) -> Value: ...
 
     def goal_holds(
         self,
@@ -49,6 +40,24 @@ class Checks(Protocol):
         subject: str,
         declared: Declared,
     ) -> str: ...
+
+
+class Checks(Protocol):
+    """What the checks of a parameter read need of the refinement checks
+    (`refined.RefinedChecker`), which call them."""
+
+    @property
+    def ctx(self) -> FileContext: ...
+
+    @property
+    def path(self) -> str: ...
+
+    @property
+    def core(self) -> Scalar: ...
+
+    def assumed(
+        self, state: State, name: str, decl: Refinement, lookup: dict[str, A.Expr]
+    ) -> Value: ...
 
 
 def read_of(check: Checks, value: Value, site: ast.AST) -> ParamRead | None:
@@ -94,7 +103,7 @@ def attach(
     against the refinement (RF101 naming the default), and the value is assumed to
     satisfy it (parameter files are checked against it, `robotfix.paramcheck`)."""
     target = f"`{name}`"
-    if not check.base_fits(decl.base, value, site, target):
+    if not check.core.base_fits(decl.base, value, site, target):
         return check.assumed(state, name, decl, lookup)
     if value.kind == decl.base or (value.kind == "int" and decl.base == "float"):
         stored = value
@@ -107,7 +116,7 @@ def attach(
         default is not None
         and default.term is not None
         and read.default_node is not None
-        and check.base_fits(decl.base, default, read.default_node, target)
+        and check.core.base_fits(decl.base, default, read.default_node, target)
     ):
         _check_default(check, state, name, decl, default, read, lookup)
     if stored.term is not None:
@@ -134,7 +143,7 @@ def _never(
         verdict = check.ctx.discharge(VC(tuple(state.facts), goal, (stored.term,)))
         if isinstance(verdict, Violated):
             shown = A.show(A.substitute(part, {"_": A.Name(name)}))
-            check.goal_holds(
+            check.core.goal_holds(
                 state, goal, stored.term, site, shown, f"`{name}`", declared
             )
             return True
