@@ -17,16 +17,9 @@ from fractions import Fraction
 
 from robotfix import messages
 from robotfix.analysis.expressions import ExpressionEvaluator
-from robotfix.analysis.parameters import (
-    MODULE,
-    Handle,
-    ParamContext,
-    ParamDecl,
-    ParamRead,
-    called_name,
-    owner_of,
-    summarize,
-)
+from robotfix.analysis.parameters import Handle, ParamContext, ParamRead, summarize
+from robotfix.analysis.paramsummary import MODULE, ParamDecl
+from robotfix.analysis.paramwalk import called_name, owner_of
 from robotfix.analysis.program import call_argument
 from robotfix.analysis.state import State
 from robotfix.analysis.values import Value
