@@ -11,7 +11,7 @@ from dataclasses import replace
 from fractions import Fraction
 from functools import partial
 
-from robotfix.analysis import containers, frames, heap, imported, inline
+from robotfix.analysis import arith, containers, frames, heap, imported, inline
 from robotfix.analysis.context import Scope
 from robotfix.analysis.library import LibraryEvaluator
 from robotfix.analysis.program import Function, attribute_key
@@ -588,8 +588,8 @@ class CallEvaluator(LibraryEvaluator):
         if name in ("min", "max"):
             result = first
             for other in args[1:]:
-                unit, literal = self.unit_of_sum(result, other, node, name)
-                kind = self.numeric_kind(result, other, "+")
+                unit, literal = self.check.unit_of_sum(result, other, node, name)
+                kind = arith.numeric_kind(result, other, "+")
                 if kind is None:
                     return None
                 term = A.Func(name, (result.known_term, other.known_term))

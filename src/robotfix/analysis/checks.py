@@ -22,7 +22,7 @@ from robotfix.analysis.values import (
 )
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
-from robotfix.annotations.units import Unit
+from robotfix.annotations.units import Unit, converted
 from robotfix.diagnostics import Span
 from robotfix.messages import Declared
 from robotfix.vc import VC, Proved, Undecided, Unproven, Violated
@@ -352,6 +352,85 @@ class Checker:
             if self.surely_possible(state, when):
                 return option.value
         return None
+
+    def unit_of_sum(
+        self, left: Value, right: Value, node: ast.AST, op: str
+    ) -> tuple[Unit | None, bool]:
+        if left.literal and right.literal:
+            return None, True
+        if left.literal or right.literal:
+            return (right.unit if left.literal else left.unit), False
+        if left.unit is None or right.unit is None:
+            return None, False
+        if left.unit.same_as(right.unit) and not left.factors and not right.factors:
+            return left.unit, False
+        # each side against the unit the other has after its converting factors
+        # (`x_kmh / 3.6 + v`; `age > stale_s * 1000` compares s with ms)
+        there = right.fit(converted(left.unit, left.factors))
+        back = left.fit(converted(right.unit, right.factors))
+        if (there is not None and there.kind == "ok") or (
+            back is not None and back.kind == "ok"
+        ):
+            # the unit of a side its literal factors did not convert
+            plain = [v for v in (left, right) if v.scale == 1.0 and not v.rad_free]
+            return (plain[0] if plain else left).unit, False
+        text = self.ctx.source.segment(node) or op
+        if (
+            there is not None
+            and there.kind == "time"
+            and (left.scale != 1.0 or right.scale != 1.0)
+        ):  # `x + vx * 0.1`: a literal time step (RF203)
+            stepped = right if right.scale != 1.0 else left
+            kept = left if stepped is right else right
+            found = stepped.fit(kept.unit)  # type: ignore[arg-type]
+            assert found is not None
+            self.ctx.report(
+                messages.implicit_operand_change(
+                    self.ctx.source.path,
+                    self.ctx.source.span(node),
+                    text,
+                    found.got,
+                    kept.unit,  # type: ignore[arg-type]
+                    found.seconds,
+                ),
+                once=("operands", id(node)),
+            )
+            return kept.unit, False
+        folded = [
+            (found, other, unit)
+            for found, other, unit in (
+                (there, left, left.unit),
+                (back, right, right.unit),
+            )
+            if found is not None and found.kind == "folded"
+        ]
+        if folded:  # `d < d_cm * 0.02`: maybe `/ 100 * 2` in one number (RF203)
+            found, other, unit = folded[0]
+            self.ctx.report(
+                messages.folded_conversion(
+                    self.ctx.source.path,
+                    self.ctx.source.span(node),
+                    text,
+                    f"combines {unit} with",
+                    converted(unit, other.factors),
+                    found.got,
+                    found.scale,
+                ),
+                once=("operands", id(node)),
+            )
+            return unit, False
+        self.ctx.report(
+            messages.operand_units(
+                self.ctx.source.path,
+                self.ctx.source.span(node),
+                text,
+                op,
+                converted(left.unit, left.factors),  # `t * 1000` is in ms
+                converted(right.unit, right.factors),
+            ),
+            once=("operands", id(node)),
+        )
+        return None, False
 
     def base_fits(
         self, expected: str, value: Value, site: ast.AST, target: str

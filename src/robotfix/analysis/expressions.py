@@ -15,8 +15,15 @@ from fractions import Fraction
 from functools import partial
 from typing import TypeVar
 
-from robotfix import messages
-from robotfix.analysis import containers, frames, heap, hover, imported, typeterms
+from robotfix.analysis import (
+    arith,
+    containers,
+    frames,
+    heap,
+    hover,
+    imported,
+    typeterms,
+)
 from robotfix.analysis.checks import Checker
 from robotfix.analysis.constants import is_constant
 from robotfix.analysis.context import TERM_LIMIT, FileContext
@@ -29,7 +36,7 @@ from robotfix.analysis.values import NONE, SEQUENCES, Items, Value, replace
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import NUMBERS, named_code, named_number
-from robotfix.annotations.units import DIMENSIONLESS, Factors, Unit, converted
+from robotfix.annotations.units import Factors, Unit
 from robotfix.diagnostics import Span
 from robotfix.ros.catalog import constant_term
 
@@ -537,7 +544,7 @@ class ExpressionEvaluator:
         factors: Factors = ()
         rad_free = left.rad_free or right.rad_free
         if op in "+-":
-            unit, literal = self.unit_of_sum(left, right, node, op)
+            unit, literal = self.check.unit_of_sum(left, right, node, op)
             factors = (
                 left.factors
                 if unit is not None and unit == left.unit
@@ -547,8 +554,8 @@ class ExpressionEvaluator:
             unit, literal = left.unit, left.literal and right.literal
             factors, rad_free = left.factors, left.rad_free
         else:
-            unit, literal = self.unit_of_product(left, right, op)
-            factors = self.factors_of_product(left, right, op)
+            unit, literal = arith.unit_of_product(left, right, op)
+            factors = arith.factors_of_product(left, right, op)
             rad_free = rad_free or any(
                 v.unit is not None and not v.literal and _has_length(v.unit)
                 for v in (left, right)
@@ -560,7 +567,7 @@ class ExpressionEvaluator:
             if op in "*/" and left.literal != right.literal and unit == scaled.unit
             else None
         )
-        kind = self.numeric_kind(left, right, op)
+        kind = arith.numeric_kind(left, right, op)
         if kind is None or left.term is None or right.term is None:
             return replace(
                 self.unknown(node, unit=unit),
@@ -620,136 +627,6 @@ class ExpressionEvaluator:
             return self.unknown(node, unit=left.unit.raised(exponent))
         return self.unknown(node)
 
-    def factors_of_product(self, left: Value, right: Value, op: str) -> Factors:
-        """Literal factors carried along (see `Value.factors`), each literal of a
-        chain on its own: `rpm * 2.0 * math.pi / 60.0` holds 2, pi and 1/60, which
-        together are the rpm -> rad/s conversion, and `2 * d_cm / 100` a gain of 2
-        and the cm -> m conversion (`units.fit` tells them apart)."""
-        if left.literal == right.literal:
-            if left.literal:
-                return ()
-            return left.factors + (
-                right.factors if op == "*" else tuple(1 / f for f in right.factors)
-            )
-        number = constant_value(right.term if right.literal else left.term)
-        if number is None or number == 0:
-            return ()
-        if right.literal:
-            factor = number if op == "*" else 1 / number
-            held = left.factors
-        else:  # `1000.0 / hz`: a period (1/Hz) scaled by 1000, i.e. in ms
-            factor = number
-            held = right.factors if op == "*" else tuple(1 / f for f in right.factors)
-        if factor == 1:
-            return held
-        return (*held, factor)
-
-    def numeric_kind(self, left: Value, right: Value, op: str) -> str | None:
-        kinds = {left.kind, right.kind}
-        if not kinds <= {"int", "float", "bool", "unknown"}:
-            return None
-        if "unknown" in kinds:
-            return "unknown"
-        if op == "/" or "float" in kinds:
-            return "float"
-        return "int"
-
-    def unit_of_sum(
-        self, left: Value, right: Value, node: ast.AST, op: str
-    ) -> tuple[Unit | None, bool]:
-        if left.literal and right.literal:
-            return None, True
-        if left.literal or right.literal:
-            return (right.unit if left.literal else left.unit), False
-        if left.unit is None or right.unit is None:
-            return None, False
-        if left.unit.same_as(right.unit) and not left.factors and not right.factors:
-            return left.unit, False
-        # each side against the unit the other has after its converting factors
-        # (`x_kmh / 3.6 + v`; `age > stale_s * 1000` compares s with ms)
-        there = right.fit(converted(left.unit, left.factors))
-        back = left.fit(converted(right.unit, right.factors))
-        if (there is not None and there.kind == "ok") or (
-            back is not None and back.kind == "ok"
-        ):
-            # the unit of a side its literal factors did not convert
-            plain = [v for v in (left, right) if v.scale == 1.0 and not v.rad_free]
-            return (plain[0] if plain else left).unit, False
-        text = self.ctx.source.segment(node) or op
-        if (
-            there is not None
-            and there.kind == "time"
-            and (left.scale != 1.0 or right.scale != 1.0)
-        ):  # `x + vx * 0.1`: a literal time step (RF203)
-            stepped = right if right.scale != 1.0 else left
-            kept = left if stepped is right else right
-            found = stepped.fit(kept.unit)  # type: ignore[arg-type]
-            assert found is not None
-            self.ctx.report(
-                messages.implicit_operand_change(
-                    self.ctx.source.path,
-                    self.ctx.source.span(node),
-                    text,
-                    found.got,
-                    kept.unit,  # type: ignore[arg-type]
-                    found.seconds,
-                ),
-                once=("operands", id(node)),
-            )
-            return kept.unit, False
-        folded = [
-            (found, other, unit)
-            for found, other, unit in (
-                (there, left, left.unit),
-                (back, right, right.unit),
-            )
-            if found is not None and found.kind == "folded"
-        ]
-        if folded:  # `d < d_cm * 0.02`: maybe `/ 100 * 2` in one number (RF203)
-            found, other, unit = folded[0]
-            self.ctx.report(
-                messages.folded_conversion(
-                    self.ctx.source.path,
-                    self.ctx.source.span(node),
-                    text,
-                    f"combines {unit} with",
-                    converted(unit, other.factors),
-                    found.got,
-                    found.scale,
-                ),
-                once=("operands", id(node)),
-            )
-            return unit, False
-        self.ctx.report(
-            messages.operand_units(
-                self.ctx.source.path,
-                self.ctx.source.span(node),
-                text,
-                op,
-                converted(left.unit, left.factors),  # `t * 1000` is in ms
-                converted(right.unit, right.factors),
-            ),
-            once=("operands", id(node)),
-        )
-        return None, False
-
-    def unit_of_product(
-        self, left: Value, right: Value, op: str
-    ) -> tuple[Unit | None, bool]:
-        if left.literal and right.literal:
-            return None, True
-        lu = DIMENSIONLESS if left.literal else left.unit
-        ru = DIMENSIONLESS if right.literal else right.unit
-        if lu is None or ru is None:
-            return None, False
-        # a number that is not a literal (`math.cos(yaw)`) may rotate a coordinate
-        # into another frame: the product's frame is not known
-        if ru == DIMENSIONLESS:
-            return (lu if right.literal else frames.unframed(lu)), False
-        if lu == DIMENSIONLESS and op == "*":
-            return (ru if left.literal else frames.unframed(ru)), False
-        return (lu * ru if op == "*" else lu / ru), False
-
     def eval_Compare(self, node: ast.Compare, state: State) -> Value:
         operands = [self.eval(node.left, state)] + [
             self.eval(c, state) for c in node.comparators
@@ -766,7 +643,7 @@ class ExpressionEvaluator:
             if (name is not None and name not in ("==", "!=")) or (
                 left.is_number and right.is_number
             ):
-                self.unit_of_sum(left, right, node, name or "==")
+                self.check.unit_of_sum(left, right, node, name or "==")
             if name is None or left.term is None or right.term is None:
                 return self.unknown(node, "bool")
             if name in ("==", "!=") and _sorts_differ(left, right):
@@ -846,7 +723,7 @@ class ExpressionEvaluator:
         ):
             then = replace(then, unit=frames.unframed(then.unit))
             orelse = replace(orelse, unit=frames.unframed(orelse.unit))
-        unit, literal = self.unit_of_sum(then, orelse, node, "if")
+        unit, literal = self.check.unit_of_sum(then, orelse, node, "if")
         factors = then.factors if unit is not None and unit == then.unit else ()
         if unit is not None and unit != then.unit:
             factors = orelse.factors
@@ -1170,29 +1047,3 @@ def _sorts_differ(left: Value, right: Value) -> bool:
         and isinstance(left.term, LEAVES)
         and isinstance(right.term, LEAVES)
     )
-
-
-def constant_value(term: A.Expr | None) -> float | None:
-    """The value of a term built from number literals only, if a float holds it
-    (None beyond floats: math.inf, or a literal near it)."""
-    try:
-        found = _constant_value(term)
-    except OverflowError:
-        return None
-    return found if found is None or math.isfinite(found) else None
-
-
-def _constant_value(term: A.Expr | None) -> float | None:
-    if isinstance(term, A.Num):
-        return float(term.value)
-    if isinstance(term, A.Unary) and term.op == "-":
-        inner = _constant_value(term.operand)
-        return None if inner is None else -inner
-    if isinstance(term, A.Binary) and term.op in "+-*/":
-        left, right = _constant_value(term.left), _constant_value(term.right)
-        if left is None or right is None or (term.op == "/" and right == 0):
-            return None
-        return {"+": left + right, "-": left - right, "*": left * right}.get(
-            term.op, left / right if right else 0.0
-        )
-    return None

@@ -331,7 +331,7 @@ class LibraryEvaluator(ParameterEvaluator):
         rule, short = function.rule, function.qualname.rsplit(".", 1)[-1]
         if rule == "agree":
             for other in values[1:]:
-                self.unit_of_sum(values[0], other, node, short)
+                self.check.unit_of_sum(values[0], other, node, short)
             return None  # the result is as annotated
         if rule == "scale":
             return self._scaled(function, first, node)
@@ -345,7 +345,9 @@ class LibraryEvaluator(ParameterEvaluator):
             state.assume(A.Binary(">=", value.known_term, ZERO))
             return replace(value, literal=first.literal)
         # same: the arguments' common unit
-        units = [self.unit_of_sum(first, other, node, short)[0] for other in values[1:]]
+        units = [
+            self.check.unit_of_sum(first, other, node, short)[0] for other in values[1:]
+        ]
         unit: Unit | None = first.unit if not first.literal else None
         if unit is None:
             unit = next((u for u in units if u is not None), None)
