@@ -8,11 +8,18 @@ the checks' (`checks.Checker.unit_of_sum`).
 from __future__ import annotations
 
 import math
+from fractions import Fraction
 
 from robotfix.analysis import frames
 from robotfix.analysis.values import Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.units import DIMENSIONLESS, Factors, Unit
+
+# A literal this large (or this finely divided) is an unknown number of its kind:
+# folded with others it would overflow floats, z3's input and the texts shown.
+MAX_NUMBER: int = 10**100
+LEAVES = (A.Sym, A.Str, A.Bool, A.Num)
+KIND_ORDER = ("bool", "int", "float")
 
 
 def factors_of_product(left: Value, right: Value, op: str) -> Factors:
@@ -91,3 +98,35 @@ def _constant_value(term: A.Expr | None) -> float | None:
             term.op, left / right if right else 0.0
         )
     return None
+
+
+def literal(term: A.Expr | None) -> Fraction | str | None:
+    """A dict key or index as Python compares it (`1 == 1.0 == True`)."""
+    if isinstance(term, A.Num):
+        return term.value
+    if isinstance(term, A.Bool):
+        return Fraction(int(term.value))
+    if isinstance(term, A.Str):
+        return term.value
+    if isinstance(term, A.Unary) and term.op == "-" and isinstance(term.operand, A.Num):
+        return -term.operand.value
+    return None
+
+
+def has_length(unit: Unit) -> bool:
+    return dict(unit.dims).get("meter", 0) != 0
+
+
+def too_large(value: Fraction) -> bool:
+    return abs(value.numerator) >= MAX_NUMBER or value.denominator >= MAX_NUMBER
+
+
+def sorts_differ(left: Value, right: Value) -> bool:
+    """An unknown (a real in the solver) against a str or a bool, both leaves."""
+    kinds = {left.kind, right.kind}
+    return (
+        "unknown" in kinds
+        and bool(kinds & {"str", "bool"})
+        and isinstance(left.term, LEAVES)
+        and isinstance(right.term, LEAVES)
+    )

@@ -324,7 +324,9 @@ class CallEvaluator(LibraryEvaluator):
             inlined = self.inline_call(function, args, kwargs, bound, state)
             if inlined is not None:
                 return inlined  # else what its `return`s give, if they agree
-            return self.typed(self.program.types.returns(function.key), node, state)
+            return self.lookups.typed(
+                self.program.types.returns(function.key), node, state
+            )
         lookup = {**self._callee_names(function.returns, function, state), **terms}
         return self.refined.assumed(
             state, f"{function.name}()", function.returns, lookup
@@ -700,7 +702,7 @@ class CallEvaluator(LibraryEvaluator):
             if len(known) == 1:
                 return known[0]
             return self.builtin(name, list(known), node, state)
-        element = self.element(sequence, node, state)
+        element = self.lookups.element(sequence, node, state)
         default = kwargs.get("default")
         if default is None:
             return element
@@ -753,7 +755,7 @@ class CallEvaluator(LibraryEvaluator):
         if count is not None and 0 <= count <= containers.MAX_SUMMED:
             total = first
             for _ in range(int(count)):
-                element = self.element(sequence, node, state)
+                element = self.lookups.element(sequence, node, state)
                 if element.term is None:
                     return None
                 total = A.Binary("+", total, element.term)
@@ -829,7 +831,7 @@ class CallEvaluator(LibraryEvaluator):
                     items=replace(updated.items or Items(), kept=kept),
                 )
         elif method == "pop" and len(args) <= 1 and receiver.kind == "list":
-            result = self.element(receiver, node, state)
+            result = self.lookups.element(receiver, node, state)
             updated = containers.forgetting(receiver, grows=False)
         elif method == "clear" and not args and receiver.kind == "list":
             updated = Value(

@@ -22,23 +22,21 @@ from robotfix.analysis import (
     heap,
     hover,
     imported,
-    typeterms,
 )
 from robotfix.analysis.checks import Checker
 from robotfix.analysis.constants import is_constant
 from robotfix.analysis.context import TERM_LIMIT, FileContext
 from robotfix.analysis.fieldchecks import FieldChecker
 from robotfix.analysis.flows import FlowLog, Where
+from robotfix.analysis.lookups import Lookups
 from robotfix.analysis.program import Program
 from robotfix.analysis.refined import RefinedChecker
 from robotfix.analysis.state import State
 from robotfix.analysis.values import NONE, SEQUENCES, Items, Value, replace
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
-from robotfix.annotations.numbers import NUMBERS, named_code, named_number
 from robotfix.annotations.units import Factors, Unit
 from robotfix.diagnostics import Span
-from robotfix.ros.catalog import constant_term
 
 T = TypeVar("T")
 ARITH = {
@@ -58,11 +56,6 @@ COMPARE = {
     ast.GtE: ">=",
 }
 _DECIMAL = re.compile(r"[0-9_]*\.?[0-9_]*([eE][+-]?[0-9_]+)?")
-# A literal this large (or this finely divided) is an unknown number of its kind:
-# folded with others it would overflow floats, z3's input and the texts shown.
-MAX_NUMBER: int = 10**100
-KIND_ORDER = ("bool", "int", "float")
-LEAVES = (A.Sym, A.Str, A.Bool, A.Num)
 # Values that are never None.
 STATIC_VALUES = frozenset(
     {
@@ -97,6 +90,8 @@ class ExpressionEvaluator:
         self.check = Checker(ctx)
         self.fields = FieldChecker(self.check)
         self.refined = RefinedChecker(self.check, self.fields)
+        # what a type, attribute, constant or element read here stands for
+        self.lookups = Lookups(ctx, program, self.check)
         self.site: ast.AST = ast.Pass()  # the statement being interpreted
         self.lists_seen = False  # whether a list was stored in a name or attribute
         # the symbol each attribute read last gave (`decisions.py`: two tests of
@@ -196,7 +191,7 @@ class ExpressionEvaluator:
         ):
             kind = "int" if isinstance(value, int) else "float"
             exact = Fraction(value) if kind == "int" else self._exact(node, value)
-            if _too_large(exact):
+            if arith.too_large(exact):
                 return replace(self.unknown(node, kind), literal=True)
             return Value(kind, A.Num(exact, kind == "int"), literal=True)
         if isinstance(value, str):
@@ -265,7 +260,9 @@ class ExpressionEvaluator:
             value = self.instance_attribute(base, var, node, state)
             self.note_hover(
                 node,
-                lambda: self.describe_attribute(base, var, node.attr, value, state),
+                lambda: self.lookups.describe_attribute(
+                    base, var, node.attr, value, state
+                ),
             )
             return value
         found = self.member(base, node.attr, state)
@@ -274,7 +271,7 @@ class ExpressionEvaluator:
         if base.kind == "instance":  # `self.chassis.left`: the attribute's type
             typed = self.program.types.attribute(base.name, node.attr)
             if typed is not None:
-                return self.typed(typed, node, state)
+                return self.lookups.typed(typed, node, state)
         if base.kind == "unknown" and isinstance(base.term, A.Sym):
             # `args.verbose` twice is one value, until something may change args
             version = state.version(base.term)
@@ -286,82 +283,19 @@ class ExpressionEvaluator:
         """`base.attr` when `base` is a module, an interface or message class, a
         message (its constants), or a class or instance (its class constants)."""
         if base.kind == "module":
-            return self._module_attribute(base.name, attr)
+            return self.lookups.module_attribute(base.name, attr)
         if base.kind == "msgclass":
-            return self._constant(base.name, attr)
+            return self.lookups.message_constant(base.name, attr)
         if base.kind == "msg" and base.ref in state.heap:
-            return self._constant(state.heap[base.ref].type, attr)
+            return self.lookups.message_constant(state.heap[base.ref].type, attr)
         if base.kind == "interface":
             found = self.ctx.msg_type_named(f"{base.name.replace('/', '.msg.')}_{attr}")
             return Value("msgclass", name=found) if found else None
         if base.kind in ("class", "instance"):
-            return self.class_constant(base.name, attr) or self._method(base, attr)
+            return self.lookups.class_constant(base.name, attr) or self.lookups.method(
+                base, attr
+            )
         return None
-
-    def _method(self, base: Value, attr: str) -> Value | None:
-        """A method, read from an instance (`self.turn`, `Path().turn`, also of
-        another module's class) or from a class of this file (`Path.turn`: a
-        staticmethod helper, called with every argument, or a classmethod, its
-        `cls` given)."""
-        key = f"{base.name}.{attr}"
-        function = self.program.functions.get(key)
-        if function is None:
-            if base.kind == "instance" and "." in base.name:  # another module's class
-                found = imported.resolve(self.ctx.resolver, key)
-                if isinstance(found, imported.FunctionSummary):
-                    return Value("method", name=key)
-            return None
-        if base.kind == "instance" or "classmethod" in function.decorators:
-            return Value("method", name=key)  # the first parameter is given
-        return Value("function", name=key)
-
-    def class_constant(self, class_name: str, attr: str) -> Value | None:
-        """A constant class attribute (`MAX_SPEED = 0.22` in the class body), also
-        one inherited from a class of this file."""
-        if attr not in self.ctx.constants.class_attrs:
-            return None
-        seen: set[str] = set()
-        todo = [class_name]
-        while todo:
-            name = todo.pop(0)
-            if name in seen:
-                continue
-            seen.add(name)
-            found = self.ctx.constants.class_constant(name, attr)
-            if found is not None:
-                return found
-            scope = self.program.classes.get(name)
-            if scope is not None and isinstance(scope.node, ast.ClassDef):
-                todo += [b.id for b in scope.node.bases if isinstance(b, ast.Name)]
-        return None
-
-    def describe_attribute(
-        self, base: Value, var: str, attr: str, value: Value, state: State
-    ) -> str:
-        """Hover text for `self.x`: its value and the class's refinement of `x`."""
-        decl = (
-            self.program.attributes.get(base.name, {}).get(attr)
-            if base.kind == "instance"
-            else None
-        )
-        return hover.variable(self.ctx, state, f"{var}.{attr}", value, decl)
-
-    def _module_attribute(self, module: str, attr: str) -> Value:
-        qualified = f"{module}.{attr}"
-        number = named_number(qualified) if attr in NUMBERS else None
-        if number is not None:
-            return Value("float", A.Num(number, False), literal=True)
-        code = named_code(qualified)
-        if code is not None:
-            return Value("int", A.Num(Fraction(code), True), literal=True)
-        msg_type = self.ctx.msg_type_named(qualified)
-        if msg_type is not None:
-            return Value("msgclass", name=msg_type)
-        interface = self.ctx.interface_named(qualified)
-        if interface is not None:
-            return Value("interface", name=interface)
-        constant = imported.constant(self.ctx.resolver, qualified)
-        return constant or Value("module", name=qualified)
 
     def instance_attribute(
         self, base: Value, var: str, node: ast.Attribute, state: State
@@ -372,14 +306,16 @@ class ExpressionEvaluator:
         bound = state.env.get(key)
         if isinstance(bound, Value):
             return state.use(bound)
-        method = self._method(base, node.attr) if base.kind == "instance" else None
+        method = (
+            self.lookups.method(base, node.attr) if base.kind == "instance" else None
+        )
         if method is not None:
             return method
         if base.kind == "instance" and "." in base.name:  # another module's constant
             found = imported.resolve(self.ctx.resolver, f"{base.name}.{node.attr}")
             if isinstance(found, Value):
                 return found
-        constant = self.class_constant(base.name, node.attr)
+        constant = self.lookups.class_constant(base.name, node.attr)
         if base.kind == "instance" and constant is not None:
             return constant
         if base.kind == "goal_handle" and node.attr == "request":
@@ -399,7 +335,7 @@ class ExpressionEvaluator:
             elif typed is not None:
                 # a message or object kept on self: a message's fields are unknown
                 # but refined, as any attribute is in a method that did not set it
-                value = self.typed(typed, node, state, key)
+                value = self.lookups.typed(typed, node, state, key)
             else:
                 remembered = frames.recall(self.ctx, base.name, node.attr)
                 value = remembered or self.unknown(node)
@@ -408,50 +344,6 @@ class ExpressionEvaluator:
             self.lists_seen = self.lists_seen or value.kind == "list"
         state.env[key] = value
         return value
-
-    def typed(
-        self,
-        found: typeterms.Type | None,
-        node: ast.AST,
-        state: State,
-        label: str | None = None,
-    ) -> Value:
-        """A value of the type the type model gives (`analysis/types.py`): a message
-        with unknown but refined fields, an instance, a container of typed
-        elements; an unknown value when no type is known."""
-        if found is None:
-            return self.unknown(node)
-        if label is None:
-            label = self.ctx.source.segment(node) or "the value"
-        found = typeterms.plain(found)
-        if isinstance(found, typeterms.Msg):
-            if self.ctx.catalog.lookup(found.name) is None:
-                return self.unknown(node)
-            return heap.new_message(
-                self.ctx, state, found.name, "received", label=label
-            )
-        if isinstance(found, typeterms.Obj):
-            if "." in found.name:  # another module's class: its refined attributes
-                known = imported.resolve(self.ctx.resolver, found.name)
-                if isinstance(known, imported.ClassSummary):
-                    self.program.attributes.setdefault(
-                        found.name, dict(known.attributes)
-                    )
-            # an id of its own: whether it is None is not known (even a declared
-            # `client: Client` may be given None), the same for each test of it
-            return Value("instance", name=found.name, ref=self.ctx.fresh_id())
-        if isinstance(found, typeterms.Lib):  # `self.last: Time`, a stub's result
-            return Value("object", name=found.name)
-        if isinstance(found, typeterms.Tup):
-            parts = tuple(self.typed(t, node, state, label) for t in found.items)
-            return Value("tuple", elements=parts)
-        if isinstance(found, typeterms.Seq) and isinstance(found.item, typeterms.Msg):
-            return Value("list", items=Items(message=(found.item.name, "received")))
-        if isinstance(found, typeterms.Seq):
-            return Value("list", items=Items(of=found.item))
-        if isinstance(found, typeterms.Map):
-            return Value("dict", items=Items(of=found.value))
-        return self.unknown(node)
 
     def refinement_lookup(self, decl: Refinement, state: State) -> dict[str, A.Expr]:
         """Terms for the other names a refinement mentions (`y == x`, `MAX_SPEED`,
@@ -486,25 +378,13 @@ class ExpressionEvaluator:
         class-level annotation names one); None if the two disagree."""
         found = self.constant_named(name, state)
         in_class = (
-            self.class_constant(class_name, name)
+            self.lookups.class_constant(class_name, name)
             if class_name and "." not in name
             else None
         )
         if in_class is None:
             return found
         return in_class if found is None or found.term == in_class.term else None
-
-    def _constant(self, msg_type: str, attr: str) -> Value | None:
-        spec = self.ctx.catalog.lookup(msg_type)
-        if spec is None or attr not in spec.constants or attr in spec.fields:
-            return None
-        type_, value = spec.constants[attr]
-        term = constant_term(type_, value)
-        if isinstance(term, A.Num):
-            return Value("int" if term.is_int else "float", term, literal=True)
-        if isinstance(term, A.Bool):
-            return Value("bool", term)
-        return None if term is None else Value("str", term)
 
     # -- arithmetic ----------------------------------------------------------
     def eval_UnaryOp(self, node: ast.UnaryOp, state: State) -> Value:
@@ -557,7 +437,7 @@ class ExpressionEvaluator:
             unit, literal = arith.unit_of_product(left, right, op)
             factors = arith.factors_of_product(left, right, op)
             rad_free = rad_free or any(
-                v.unit is not None and not v.literal and _has_length(v.unit)
+                v.unit is not None and not v.literal and arith.has_length(v.unit)
                 for v in (left, right)
             )
         # `-math.degrees(x) / 2.`: a literal factor keeps the call that gave the unit
@@ -616,7 +496,7 @@ class ExpressionEvaluator:
         return found if found is not None else self.unknown(node)
 
     def _other_binop(self, node: ast.BinOp, left: Value, right: Value) -> Value:
-        exponent = _literal(right.term) if right.literal else None
+        exponent = arith.literal(right.term) if right.literal else None
         if (
             isinstance(node.op, ast.Pow)
             and isinstance(exponent, Fraction)
@@ -646,7 +526,7 @@ class ExpressionEvaluator:
                 self.check.unit_of_sum(left, right, node, name or "==")
             if name is None or left.term is None or right.term is None:
                 return self.unknown(node, "bool")
-            if name in ("==", "!=") and _sorts_differ(left, right):
+            if name in ("==", "!=") and arith.sorts_differ(left, right):
                 # `command == "slow"` of an unknown: the solver cannot compare
                 # them, but the same test of the same values is the same
                 key = ("==", left.term, right.term)
@@ -712,7 +592,10 @@ class ExpressionEvaluator:
             or (len(kinds) > 1 and not kinds <= {"int", "float", "bool"})
         ):
             return self.unknown(node)
-        kind = max(kinds, key=lambda k: KIND_ORDER.index(k) if k in KIND_ORDER else -1)
+        kind = max(
+            kinds,
+            key=lambda k: arith.KIND_ORDER.index(k) if k in arith.KIND_ORDER else -1,
+        )
         term = A.Ite(cond, then.term, orelse.term)
         # the arms must agree as the sides of a sum do (`a_m if c else b_ft`: RF202);
         # a choice between frames (`p_map if use_map else p_odom`) is in neither
@@ -758,74 +641,16 @@ class ExpressionEvaluator:
         if base.elements is not None and (
             base.kind in ("tuple", "list") or self.is_read_only_table(node.value)
         ):  # a list keeps its elements only while nothing else can change it
-            found = self._look_up(base, key, node, state)
+            found = self.lookups.look_up(base, key, node, state)
             if found is not None:  # a list inside a table is shared with it
                 return containers.stripped(found)
         if base.kind == "dict" and base.items is not None and base.items.of:
-            return self.typed(base.items.of, node, state)  # `dict[str, Driver]`
+            return self.lookups.typed(base.items.of, node, state)  # `dict[str, Driver]`
         if base.kind in SEQUENCES and key.kind in ("int", "bool", "unknown"):
             if isinstance(node.slice, ast.Slice):
                 return containers.sliced(base, containers.slice_length(node.slice))
-            return self.element(base, node, state)
+            return self.lookups.element(base, node, state)
         return self.unknown(node, unit=base.unit if not base.literal else None)
-
-    def message_element(
-        self, message: tuple[str, str], node: ast.AST, state: State
-    ) -> Value:
-        """An element of a message array field (`path.poses[i]`, `for p in
-        msg.poses`): a message of the element type, received (its type's
-        invariants hold) when the array arrived, else unknown-but-typed."""
-        msg_type, origin = message
-        label = self.ctx.source.segment(node) or "an element"
-        return heap.new_message(
-            self.ctx,
-            state,
-            msg_type,
-            "received" if origin == "received" else "unknown",
-            label=label,
-        )
-
-    def element(self, sequence: Value, node: ast.AST, state: State) -> Value:
-        """One element of `sequence`: what holds of every element holds of it."""
-        if sequence.keys is not None and sequence.name in ("zip", "enumerate"):
-            parts = tuple(self.element(k, node, state) for k in sequence.keys)
-            return Value("tuple", elements=parts)
-        if sequence.elements and len(sequence.elements) <= containers.MAX_SPELLED:
-            found = self._one_of(list(sequence.elements), node, state)
-            if found is None:
-                found = self._any_message(sequence.elements, node, state)
-            if found is not None:
-                return containers.stripped(found)
-        if sequence.items is not None and sequence.items.message is not None:
-            return self.message_element(sequence.items.message, node, state)
-        if sequence.items is not None and sequence.items.of is not None:
-            return self.typed(sequence.items.of, node, state)
-        kind = containers.item_kind(sequence)
-        if kind not in ("int", "float", "bool", "str"):
-            kind = "unknown"
-        value = replace(
-            self.unknown(node, kind, sequence.unit), factors=sequence.factors
-        )
-        each = containers.each_of(sequence)
-        if each != A.TRUE:
-            state.assume(self.check.instantiate(each, value.known_term))
-        return value
-
-    def _any_message(
-        self, options: tuple[Value, ...], node: ast.AST, state: State
-    ) -> Value | None:
-        """One of several messages of one type (`for cmd in [left, right]`): a
-        message of that type with unknown fields. The code may change any of them
-        through it, so what they held is forgotten."""
-        names = {
-            o.name if o.kind == "msg" and o.ref is not None else "" for o in options
-        }
-        if len(names) != 1 or "" in names:
-            return None
-        for option in options:
-            heap.havoc(state, option.ref)  # type: ignore[arg-type]
-        label = self.ctx.source.segment(node) or "an element"
-        return heap.new_message(self.ctx, state, names.pop(), "unknown", label=label)
 
     def eval_Tuple(self, node: ast.Tuple | ast.List, state: State) -> Value:
         values = []
@@ -864,62 +689,6 @@ class ExpressionEvaluator:
             return self.sized(node, state)
         table = Value("dict", elements=tuple(values), keys=tuple(keys))
         return self.sized(node, state, table)
-
-    def _look_up(
-        self, table: Value, key: Value, node: ast.Subscript, state: State
-    ) -> Value | None:
-        """`table[key]`: the entry when the key is known, else one of the entries
-        (a value bounded by them); None when it is not modelled (a slice)."""
-        assert table.elements is not None
-        wanted = _literal(key.term)
-        if table.kind == "dict":
-            keys = [_literal(k.term) for k in table.keys or ()]
-            if None in keys:
-                return None
-            entries = dict(zip(keys, table.elements, strict=True))
-            if wanted is not None:
-                return entries.get(wanted)
-            return self._one_of(list(entries.values()), node, state)
-        if isinstance(node.slice, ast.Slice) or key.kind not in (
-            "int",
-            "bool",
-            "unknown",
-        ):
-            return None
-        if wanted is not None:
-            index = int(wanted)
-            inside = -len(table.elements) <= index < len(table.elements)
-            return table.elements[index] if inside else None
-        return self._one_of(list(table.elements), node, state)
-
-    def _one_of(
-        self, options: list[Value], node: ast.AST, state: State
-    ) -> Value | None:
-        """A value that is one of `options` (tuples element by element)."""
-        if not options:
-            return None
-        if all(o == options[0] for o in options):
-            return options[0]
-        sizes = {len(o.elements) for o in options if o.elements is not None}
-        if all(o.kind == "tuple" for o in options) and len(sizes) == 1:
-            parts = [
-                self._one_of([o.elements[i] for o in options], node, state)  # type: ignore[index]
-                for i in range(sizes.pop())
-            ]
-            if any(p is None for p in parts):
-                return None
-            return Value("tuple", elements=tuple(parts))  # type: ignore[arg-type]
-        kinds = {o.kind for o in options}
-        if any(o.term is None for o in options) or not (
-            kinds <= {"int", "float", "bool"} or kinds == {"str"}
-        ):
-            return None
-        kind = max(kinds, key=KIND_ORDER.index) if kinds != {"str"} else "str"
-        units = {o.unit for o in options if not o.literal}
-        value = self.ctx.fresh(kind, node, units.pop() if len(units) == 1 else None)
-        terms = list(dict.fromkeys(o.known_term for o in options))
-        state.assume(A.disjoin([A.Binary("==", value.known_term, t) for t in terms]))
-        return replace(value, literal=all(o.literal for o in options))
 
     def eval_NamedExpr(self, node: ast.NamedExpr, state: State) -> Value:
         value = self.eval(node.value, state)
@@ -1015,35 +784,3 @@ class ExpressionEvaluator:
                 return A.Bool(False)
             return self.ctx.derived(("truthy", value.name), "bool", node).known_term
         return self.unknown(node, "bool").term  # type: ignore[return-value]
-
-
-def _has_length(unit: Unit) -> bool:
-    return dict(unit.dims).get("meter", 0) != 0
-
-
-def _literal(term: A.Expr | None) -> Fraction | str | None:
-    """A dict key or index as Python compares it (`1 == 1.0 == True`)."""
-    if isinstance(term, A.Num):
-        return term.value
-    if isinstance(term, A.Bool):
-        return Fraction(int(term.value))
-    if isinstance(term, A.Str):
-        return term.value
-    if isinstance(term, A.Unary) and term.op == "-" and isinstance(term.operand, A.Num):
-        return -term.operand.value
-    return None
-
-
-def _too_large(value: Fraction) -> bool:
-    return abs(value.numerator) >= MAX_NUMBER or value.denominator >= MAX_NUMBER
-
-
-def _sorts_differ(left: Value, right: Value) -> bool:
-    """An unknown (a real in the solver) against a str or a bool, both leaves."""
-    kinds = {left.kind, right.kind}
-    return (
-        "unknown" in kinds
-        and bool(kinds & {"str", "bool"})
-        and isinstance(left.term, LEAVES)
-        and isinstance(right.term, LEAVES)
-    )

@@ -258,6 +258,19 @@ class RefinedChecks(Protocol):
     ) -> Value: ...
 
 
+class Typed(Protocol):
+    """What `call` needs of the evaluator's lookups (`analysis/lookups.py`): a
+    value of the type a summary gives a function's result."""
+
+    def typed(
+        self,
+        found: Type | None,
+        node: ast.AST,
+        state: State,
+        label: str | None = None,
+    ) -> Value: ...
+
+
 class Caller(Protocol):
     """What `call` needs of the evaluator making the call (`analysis/calls.py`)."""
 
@@ -277,13 +290,8 @@ class Caller(Protocol):
         integer: bool = False,
     ) -> None: ...
 
-    def typed(
-        self,
-        found: Type | None,
-        node: ast.AST,
-        state: State,
-        label: str | None = None,
-    ) -> Value: ...
+    @property
+    def lookups(self) -> Typed: ...
 
 
 def call(
@@ -311,7 +319,7 @@ def call(
             if name in exprs:  # for `robotfix suggest`: the argument met a unit
                 ev.note_sink(exprs[name], decl.unit, value, decl.base == "int")
     if function.returns is None:
-        return ev.typed(function.result, node, state)
+        return ev.lookups.typed(function.result, node, state)
     lookup = {**_unknowns(ev, function.returns), **terms}
     return ev.refined.assumed(state, f"{function.name}()", function.returns, lookup)
 

@@ -408,7 +408,7 @@ class Interpreter(CallEvaluator):
         if local and rest:
             owner = state.env.get(head)
             if isinstance(owner, Value) and owner.kind == "instance":
-                found = self.class_constant(owner.name, rest)
+                found = self.lookups.class_constant(owner.name, rest)
                 return found.term if found is not None else None
         if local:
             return None
@@ -490,7 +490,7 @@ class Interpreter(CallEvaluator):
                 ast.Name(id=name, ctx=ast.Load()), function
             )
             if typed is not None:
-                return self.typed(typed, node, state, name)
+                return self.lookups.typed(typed, node, state, name)
         return self._assumed_or_unknown(decl, name, state, node)
 
     def _assumed_or_unknown(
@@ -542,7 +542,7 @@ class Interpreter(CallEvaluator):
                 assert isinstance(stored, Value)
                 self.note_hover(
                     target,
-                    lambda: self.describe_attribute(
+                    lambda: self.lookups.describe_attribute(
                         base, var, target.attr, stored, state
                     ),
                 )
@@ -561,7 +561,9 @@ class Interpreter(CallEvaluator):
             parts = value.elements if value.kind in SEQUENCES else None
             starred = any(isinstance(e, ast.Starred) for e in target.elts)
             if parts is None and value.kind in SEQUENCES and not starred:
-                parts = tuple(self.element(value, e, state) for e in target.elts)
+                parts = tuple(
+                    self.lookups.element(value, e, state) for e in target.elts
+                )
             if parts is None or len(parts) != len(target.elts):
                 parts = None
             for index, element in enumerate(target.elts):
@@ -721,7 +723,7 @@ class Interpreter(CallEvaluator):
                 if len(node.generators) == 1 and iterable.kind in SEQUENCES:
                     size = containers.comprehension_size(iterable, bool(generator.ifs))
                 element = (
-                    self.element(iterable, generator.target, inner)
+                    self.lookups.element(iterable, generator.target, inner)
                     if iterable.kind in SEQUENCES
                     else self.unknown(generator.target)
                 )
@@ -817,7 +819,7 @@ class Interpreter(CallEvaluator):
             elif annotation is not None and (
                 typed := self.program.types.parameter(function, arg.arg)
             ):  # `driver: MotorDriver`, `scans: list[LaserScan]`
-                value = self.typed(typed, arg, state, arg.arg)
+                value = self.lookups.typed(typed, arg, state, arg.arg)
             else:
                 value = self.ctx.fresh(
                     "unknown", f"parameter `{arg.arg}` of {function.name}()"
@@ -1761,7 +1763,7 @@ class Interpreter(CallEvaluator):
         self, node: ast.For | ast.AsyncFor, iterable: Value | None, state: State
     ) -> None:
         element = (
-            self.element(iterable, node.target, state)
+            self.lookups.element(iterable, node.target, state)
             if iterable is not None
             and iterable.kind in SEQUENCES
             and isinstance(node, ast.For)

@@ -102,7 +102,7 @@ class LibraryEvaluator(ParameterEvaluator):
             and f"{var}.{attr}" not in state.env
             and f"{base.name}.{attr}" not in self.program.functions
             and attr not in self.program.attributes.get(base.name, {})
-            and self.class_constant(base.name, attr) is None
+            and self.lookups.class_constant(base.name, attr) is None
         ):
             for cls in self.program.types.library_bases(base.name):
                 function = self._stubs().member(cls, attr)

@@ -10,6 +10,7 @@ from __future__ import annotations
 import ast
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from fractions import Fraction
 
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import INFINITY, named_number
@@ -212,3 +213,8 @@ def constants_of(
             if constant is not UNKNOWN:
                 found[target.id] = constant
     return found
+
+
+def exact(value: int | float) -> Fraction:
+    """The decimal a float was most likely written as (`0.1` is 1/10)."""
+    return Fraction(value) if isinstance(value, int) else Fraction(repr(float(value)))

@@ -26,6 +26,7 @@ from robotfix.analysis.paramsummary import (
     Summary,
     constant_of,
     constants_of,
+    exact,
 )
 from robotfix.analysis.program import call_argument
 from robotfix.annotations import ast as A
@@ -97,11 +98,6 @@ def _number_text(value: object) -> str | None:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         return None
     return repr(value) if math.isfinite(value) else None
-
-
-def exact(value: int | float) -> Fraction:
-    """The decimal a float was most likely written as (`0.1` is 1/10)."""
-    return Fraction(value) if isinstance(value, int) else Fraction(repr(float(value)))
 
 
 def called_name(call: ast.Call) -> str:
