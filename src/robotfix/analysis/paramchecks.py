@@ -14,6 +14,7 @@ from typing import Protocol
 
 from robotfix import messages
 from robotfix.analysis.context import FileContext
+from robotfix.analysis.imported import RefinedChecks
 from robotfix.analysis.parameters import ParamContext, ParamRead
 from robotfix.analysis.state import State
 from robotfix.analysis.values import Value
@@ -42,9 +43,9 @@ class Scalar(Protocol):
     ) -> str: ...
 
 
-class Checks(Protocol):
+class Checks(RefinedChecks, Protocol):
     """What the checks of a parameter read need of the refinement checks
-    (`refined.RefinedChecker`), which call them."""
+    (`refined.RefinedChecker`), which call them: `assumed`, and the following."""
 
     @property
     def ctx(self) -> FileContext: ...
@@ -54,10 +55,6 @@ class Checks(Protocol):
 
     @property
     def core(self) -> Scalar: ...
-
-    def assumed(
-        self, state: State, name: str, decl: Refinement, lookup: dict[str, A.Expr]
-    ) -> Value: ...
 
 
 def read_of(check: Checks, value: Value, site: ast.AST) -> ParamRead | None:
