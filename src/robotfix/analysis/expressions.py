@@ -141,8 +141,8 @@ class ExpressionEvaluator:
     ) -> None:
         """For `robotfix suggest`: `expr`, holding `value`, reached `unit`'s place
         (an `int` one if `integer`)."""
-        log, where = self.flow_log(), self.flow_where()
-        if log is not None and where is not None:
+        log, where = self.ctx.unit_flows, self.flow_where()  # (no call: it is hot)
+        if isinstance(log, FlowLog) and where is not None:
             log.sink(where, expr, unit, value, integer=integer)
 
     # -- dispatch ------------------------------------------------------------
