@@ -175,7 +175,9 @@ class CallEvaluator(LibraryEvaluator):
             else ""
         )
         if name in PARAMETER_CALLS:
-            found = self.parameter_call(name, callee, node, args, kwargs, state)
+            found = self.params.parameter_call(
+                name, callee, node, args, kwargs, state, getattr(self, "function", None)
+            )
             if found is not None:
                 return found
         found = self.library_call(callee, node, args, kwargs, state)

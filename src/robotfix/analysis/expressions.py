@@ -29,6 +29,7 @@ from robotfix.analysis.context import TERM_LIMIT, FileContext
 from robotfix.analysis.fieldchecks import FieldChecker
 from robotfix.analysis.flows import FlowLog, Where
 from robotfix.analysis.lookups import Lookups
+from robotfix.analysis.param_eval import ParameterCalls
 from robotfix.analysis.program import Program
 from robotfix.analysis.refined import RefinedChecker
 from robotfix.analysis.state import State
@@ -92,6 +93,7 @@ class ExpressionEvaluator:
         self.refined = RefinedChecker(self.check, self.fields)
         # what a type, attribute, constant or element read here stands for
         self.lookups = Lookups(ctx, program, self.check)
+        self.params = ParameterCalls(ctx)  # parameter calls and their handles
         self.site: ast.AST = ast.Pass()  # the statement being interpreted
         self.lists_seen = False  # whether a list was stored in a name or attribute
         # the symbol each attribute read last gave (`decisions.py`: two tests of
@@ -230,12 +232,6 @@ class ExpressionEvaluator:
     def decl_of(self, name: str) -> Refinement | None:
         return None
 
-    def parameter_attribute(
-        self, base: Value, node: ast.Attribute, state: State
-    ) -> Value:
-        """`.value` of a parameter handle (see `analysis/param_eval.py`)."""
-        return self.unknown(node)
-
     def eval_Attribute(
         self, node: ast.Attribute, state: State, base: Value | None = None
     ) -> Value:
@@ -243,7 +239,7 @@ class ExpressionEvaluator:
         if base is None:
             base = self.eval(node.value, state)
         if base.kind in ("parameter", "parameter_value"):
-            return self.parameter_attribute(base, node, state)
+            return self.params.parameter_attribute(base, node, state)
         if base.kind == "msg" and base.ref in state.heap:
             constant = self.member(base, node.attr, state)
             if constant is not None:  # `msg.ULTRASOUND`

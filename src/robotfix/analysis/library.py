@@ -17,8 +17,8 @@ from fractions import Fraction
 
 from robotfix import messages
 from robotfix.analysis import fixes, frames, heap, imported
+from robotfix.analysis.expressions import ExpressionEvaluator
 from robotfix.analysis.imported import resolve_library
-from robotfix.analysis.param_eval import ParameterEvaluator
 from robotfix.analysis.state import State
 from robotfix.analysis.types import OPERATOR_METHODS
 from robotfix.analysis.values import Conversion, Value
@@ -32,7 +32,7 @@ from robotfix.stubs import load as stubs
 ZERO = A.Num(Fraction(0), True)
 
 
-class LibraryEvaluator(ParameterEvaluator):
+class LibraryEvaluator(ExpressionEvaluator):
     # -- names ---------------------------------------------------------------
     def member(self, base: Value, attr: str, state: State) -> Value | None:
         if base.kind == "object":
