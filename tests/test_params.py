@@ -486,8 +486,8 @@ def test_a_worker_summary_survives_the_trip() -> None:
     `UNKNOWN` (a default that is no constant) still the one `is` compares with."""
     import pickle
 
-    from robotfix.analysis.parameters import UNKNOWN
     from robotfix.analysis.parameters import summarize as summarize_parameters
+    from robotfix.analysis.paramsummary import UNKNOWN
     from robotfix.run import _portable
     from robotfix.source import SourceFile
 

@@ -274,7 +274,7 @@ def unit_suggestions(
         return []
     ctx = _analyze_as_checked(source, catalog, config, project, flows=True)
     log = ctx.unit_flows
-    if log is None or log.program is None:
+    if not isinstance(log, FlowLog) or log.program is None:
         return []
     if any(d.rule is rules.ANALYSIS_BUDGET for d in ctx.diagnostics):
         return []  # flows not seen could disagree with those seen

@@ -44,7 +44,7 @@ from robotfix.ros.package import package_folder, package_name
 from robotfix.ros.yamlfile import WALK_BUDGET
 
 if TYPE_CHECKING:  # the checks' own imports come with paramcheck, after the cache
-    from robotfix.analysis.parameters import Summary
+    from robotfix.analysis.paramsummary import Summary
     from robotfix.paramcheck import Parameter, Table
 
 BUILD_FILES = ("package.xml", "setup.py", "setup.cfg", "CMakeLists.txt")
@@ -269,7 +269,7 @@ def _statements(tree: ast.Module) -> Iterator[ast.AST]:
 
 
 def _owners_of(code: list[Summary]) -> list[tuple[Summary, str]]:
-    from robotfix.analysis.parameters import ROSPY
+    from robotfix.analysis.paramsummary import ROSPY
     from robotfix.paramcheck import owners as declaring_owners
 
     return [
@@ -471,7 +471,7 @@ def _ros1_entry(
 
 
 def _ros1_parameter(summary: Summary, name: str) -> Parameter | None:
-    from robotfix.analysis.parameters import ROSPY
+    from robotfix.analysis.paramsummary import ROSPY
     from robotfix.paramcheck import Parameter, ros1_name
 
     nodes = summary.node_names.get(ROSPY, [])

@@ -32,7 +32,8 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Protocol
 
 from robotfix import messages
-from robotfix.analysis.parameters import ROSPY, Attached, ParamDecl, Summary, summarize
+from robotfix.analysis.parameters import summarize
+from robotfix.analysis.paramsummary import ROSPY, Attached, ParamDecl, Summary
 from robotfix.annotations import ast as A
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic, Span

@@ -40,7 +40,7 @@ if TYPE_CHECKING:
     from concurrent.futures import Future, ProcessPoolExecutor
 
 if TYPE_CHECKING:  # the analysis is imported only when a file is checked
-    from robotfix.analysis.parameters import Summary as ParamSummary
+    from robotfix.analysis.paramsummary import Summary as ParamSummary
     from robotfix.api import Contract
     from robotfix.faults import Fault as ParamFault
     from robotfix.launchcheck import Imports, LaunchRun

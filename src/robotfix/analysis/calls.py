@@ -11,7 +11,7 @@ from dataclasses import replace
 from fractions import Fraction
 from functools import partial
 
-from robotfix.analysis import containers, frames, heap, imported, inline
+from robotfix.analysis import arith, containers, frames, heap, imported, inline
 from robotfix.analysis.context import Scope
 from robotfix.analysis.library import LibraryEvaluator
 from robotfix.analysis.program import Function, attribute_key
@@ -116,7 +116,7 @@ class CallEvaluator(LibraryEvaluator):
         """The message a call sends (its first argument) leaves the node."""
         for value in values[:1]:
             if value.kind == "msg" and value.ref is not None:
-                self.check.check_whole(state, value.ref, self.site, publishing=True)
+                self.fields.check_whole(state, value.ref, self.site, publishing=True)
                 frames.check_leaving(self.ctx, state, value.ref, self.site)
 
     def _contracts(
@@ -143,7 +143,7 @@ class CallEvaluator(LibraryEvaluator):
                 )
                 value = self.construct(kind, values, fields, state) if built else None
             if value is not None and value.kind in MESSAGE_LIKE:
-                self.check.assign_refined(
+                self.refined.assign_refined(
                     state, label, refinement, value, self.site, {}, leaving=True
                 )
 
@@ -197,7 +197,9 @@ class CallEvaluator(LibraryEvaluator):
             else ""
         )
         if name in PARAMETER_CALLS:
-            found = self.parameter_call(name, callee, node, args, kwargs, state)
+            found = self.params.parameter_call(
+                name, callee, node, args, kwargs, state, getattr(self, "function", None)
+            )
             if found is not None:
                 return found
         found = self.library_call(callee, node, args, kwargs, state)
@@ -328,12 +330,12 @@ class CallEvaluator(LibraryEvaluator):
         terms = {k: v.term for k, v in given.items() if v.term is not None}
         exprs = dict(zip(params, node.args, strict=False))
         exprs.update({k.arg: k.value for k in node.keywords if k.arg is not None})
-        log, where = self.ctx.unit_flows, self.flow_where()
+        log, where = self.flow_log(), self.flow_where()
         for name, value in given.items():
             decl = scope.decls.get(name)
             if decl is not None:
                 lookup = {**self._callee_names(decl, function, state), **terms}
-                self.check.assign_refined(
+                self.refined.assign_refined(
                     state, name, decl, value, self.site, lookup, leaving=True
                 )
             if log is not None and where is not None and name in exprs:
@@ -346,9 +348,13 @@ class CallEvaluator(LibraryEvaluator):
             inlined = self.inline_call(function, args, kwargs, bound, state)
             if inlined is not None:
                 return inlined  # else what its `return`s give, if they agree
-            return self.typed(self.program.types.returns(function.key), node, state)
+            return self.lookups.typed(
+                self.program.types.returns(function.key), node, state
+            )
         lookup = {**self._callee_names(function.returns, function, state), **terms}
-        return self.check.assumed(state, f"{function.name}()", function.returns, lookup)
+        return self.refined.assumed(
+            state, f"{function.name}()", function.returns, lookup
+        )
 
     def helper_evaluator(self, function: Function) -> CallEvaluator | None:
         """An evaluator for `function`'s expression at a call (the statement
@@ -521,7 +527,7 @@ class CallEvaluator(LibraryEvaluator):
         given = list(zip(spec.fields, args, strict=False))
         given += [(k, v) for k, v in kwargs.items() if k]
         for name, value in given:
-            self.check.write_field(
+            self.fields.write_field(
                 state, message.ref, name, value, self.site, f"{short}.{name}"
             )
         return message
@@ -537,7 +543,7 @@ class CallEvaluator(LibraryEvaluator):
         """For `robotfix suggest`: `Twist(linear=...)`, `Vector3(x=speed)`,
         `Twist(Vector3(speed, 0.0, 0.0))` (analysis/flows.py)."""
         spec = self.ctx.catalog.lookup(message.name or "")
-        log, where = self.ctx.unit_flows, self.flow_where()
+        log, where = self.flow_log(), self.flow_where()
         if message.ref is None or message.ref not in state.heap or spec is None:
             return
         if log is None or where is None:
@@ -608,8 +614,8 @@ class CallEvaluator(LibraryEvaluator):
         if name in ("min", "max"):
             result = first
             for other in args[1:]:
-                unit, literal = self.unit_of_sum(result, other, node, name)
-                kind = self.numeric_kind(result, other, "+")
+                unit, literal = self.check.unit_of_sum(result, other, node, name)
+                kind = arith.numeric_kind(result, other, "+")
                 if kind is None:
                     return None
                 term = A.Func(name, (result.known_term, other.known_term))
@@ -720,7 +726,7 @@ class CallEvaluator(LibraryEvaluator):
             if len(known) == 1:
                 return known[0]
             return self.builtin(name, list(known), node, state)
-        element = self.element(sequence, node, state)
+        element = self.lookups.element(sequence, node, state)
         default = kwargs.get("default")
         if default is None:
             return element
@@ -773,7 +779,7 @@ class CallEvaluator(LibraryEvaluator):
         if count is not None and 0 <= count <= containers.MAX_SUMMED:
             total = first
             for _ in range(int(count)):
-                element = self.element(sequence, node, state)
+                element = self.lookups.element(sequence, node, state)
                 if element.term is None:
                     return None
                 total = A.Binary("+", total, element.term)
@@ -849,7 +855,7 @@ class CallEvaluator(LibraryEvaluator):
                     items=replace(updated.items or Items(), kept=kept),
                 )
         elif method == "pop" and len(args) <= 1 and receiver.kind == "list":
-            result = self.element(receiver, node, state)
+            result = self.lookups.element(receiver, node, state)
             updated = containers.forgetting(receiver, grows=False)
         elif method == "clear" and not args and receiver.kind == "list":
             updated = Value(

@@ -29,11 +29,7 @@ from robotfix.stubs.load import StubSet
 from robotfix.vc import VC, Verdict
 
 if TYPE_CHECKING:
-    from robotfix.analysis.flows import FlowLog
-    from robotfix.analysis.frames import FrameFacts
     from robotfix.analysis.imported import Resolver
-    from robotfix.analysis.parameters import ParamContext
-    from robotfix.analysis.unitmemo import UnitMemo
 
 MSG_MODULES = ("msg", "srv", "action")
 ROS_CLIENTS = ("rclpy", "rospy")
@@ -126,8 +122,11 @@ class FileContext:
         # `publish` argument is checked against, each named for its notes ("the
         # message to `/odom`"); empty in a file's own check
         self.obligations: dict[str, list[tuple[str, Refinement]]] = {}
-        self.parameters: ParamContext | None = None  # at the first parameter call
-        self.frame_facts: FrameFacts | None = None  # analysis/frames.py, when asked
+        # Per-file state of parts above this module, which alone know its type
+        # (this module imports none of them): None until its part makes it.
+        # `parameters.ParamContext`, at the first parameter call
+        self.parameters: object = None
+        self.frame_facts: object = None  # `frames.FrameFacts`, when asked
         # symbols of satisfiability questions: never those of `fresh`
         self._question_ids = itertools.count(-1, -1)
         self._invariants: dict[str, list[Invariant]] = {}
@@ -137,11 +136,11 @@ class FileContext:
         self.hovers: list[tuple[Span, str]] | None = None
         # where unannotated names flow (analysis/flows.py), for `robotfix suggest`;
         # None when not asked for
-        self.unit_flows: FlowLog | None = None
+        self.unit_flows: object = None  # a `flows.FlowLog`
         # while analysis/unitmemo.py records one item: its reports in order, the
         # `once` keys it touched with whether they were set before it, the first
         # symbol it made, and whether it reused a cache entry of an earlier item
-        self.unit_memo: UnitMemo | None = None  # the editor's, per document
+        self.unit_memo: object = None  # the editor's `UnitMemo`, per document
         self.unit_log: list[tuple[Diagnostic | None, object]] | None = None
         self.unit_answers: dict[object, bool] | None = None
         self.unit_floor = 0

@@ -15,21 +15,29 @@ from fractions import Fraction
 from functools import partial
 from typing import TypeVar
 
-from robotfix import messages
-from robotfix.analysis import containers, frames, heap, hover, imported, types
+from robotfix.analysis import (
+    arith,
+    containers,
+    frames,
+    heap,
+    hover,
+    imported,
+)
 from robotfix.analysis.checks import Checker
 from robotfix.analysis.constants import is_constant
 from robotfix.analysis.context import TERM_LIMIT, FileContext
-from robotfix.analysis.flows import Where
+from robotfix.analysis.fieldchecks import FieldChecker
+from robotfix.analysis.flows import FlowLog, Where
+from robotfix.analysis.lookups import Lookups
+from robotfix.analysis.param_eval import ParameterCalls
 from robotfix.analysis.program import Program
+from robotfix.analysis.refined import RefinedChecker
 from robotfix.analysis.state import State
 from robotfix.analysis.values import NONE, SEQUENCES, Items, Value, replace
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
-from robotfix.annotations.numbers import NUMBERS, named_code, named_number
-from robotfix.annotations.units import DIMENSIONLESS, Factors, Unit, converted
+from robotfix.annotations.units import Factors, Unit
 from robotfix.diagnostics import Span
-from robotfix.ros.catalog import constant_term
 
 T = TypeVar("T")
 ARITH = {
@@ -49,11 +57,6 @@ COMPARE = {
     ast.GtE: ">=",
 }
 _DECIMAL = re.compile(r"[0-9_]*\.?[0-9_]*([eE][+-]?[0-9_]+)?")
-# A literal this large (or this finely divided) is an unknown number of its kind:
-# folded with others it would overflow floats, z3's input and the texts shown.
-MAX_NUMBER: int = 10**100
-KIND_ORDER = ("bool", "int", "float")
-LEAVES = (A.Sym, A.Str, A.Bool, A.Num)
 # Values that are never None.
 STATIC_VALUES = frozenset(
     {
@@ -83,7 +86,14 @@ class ExpressionEvaluator:
     def __init__(self, ctx: FileContext, program: Program) -> None:
         self.ctx = ctx
         self.program = program
+        # the checks that report diagnostics, as collaborators: the scalar checks,
+        # those of messages, and those of values that reach a refined target
         self.check = Checker(ctx)
+        self.fields = FieldChecker(self.check)
+        self.refined = RefinedChecker(self.check, self.fields)
+        # what a type, attribute, constant or element read here stands for
+        self.lookups = Lookups(ctx, program, self.check)
+        self.params = ParameterCalls(ctx)  # parameter calls and their handles
         self.site: ast.AST = ast.Pass()  # the statement being interpreted
         self.lists_seen = False  # whether a list was stored in a name or attribute
         # the symbol each attribute read last gave (`decisions.py`: two tests of
@@ -119,6 +129,11 @@ class ExpressionEvaluator:
         follows (provided by the statement interpreter)."""
         return None
 
+    def flow_log(self) -> FlowLog | None:
+        """The file's log of where units flow (`robotfix suggest`), if one is kept."""
+        log = self.ctx.unit_flows
+        return log if isinstance(log, FlowLog) else None
+
     def note_sink(
         self,
         expr: ast.expr,
@@ -128,8 +143,8 @@ class ExpressionEvaluator:
     ) -> None:
         """For `robotfix suggest`: `expr`, holding `value`, reached `unit`'s place
         (an `int` one if `integer`)."""
-        log, where = self.ctx.unit_flows, self.flow_where()
-        if log is not None and where is not None:
+        log, where = self.ctx.unit_flows, self.flow_where()  # (no call: it is hot)
+        if isinstance(log, FlowLog) and where is not None:
             log.sink(where, expr, unit, value, integer=integer)
 
     # -- dispatch ------------------------------------------------------------
@@ -178,7 +193,7 @@ class ExpressionEvaluator:
         ):
             kind = "int" if isinstance(value, int) else "float"
             exact = Fraction(value) if kind == "int" else self._exact(node, value)
-            if _too_large(exact):
+            if arith.too_large(exact):
                 return replace(self.unknown(node, kind), literal=True)
             return Value(kind, A.Num(exact, kind == "int"), literal=True)
         if isinstance(value, str):
@@ -217,12 +232,6 @@ class ExpressionEvaluator:
     def decl_of(self, name: str) -> Refinement | None:
         return None
 
-    def parameter_attribute(
-        self, base: Value, node: ast.Attribute, state: State
-    ) -> Value:
-        """`.value` of a parameter handle (see `analysis/param_eval.py`)."""
-        return self.unknown(node)
-
     def eval_Attribute(
         self, node: ast.Attribute, state: State, base: Value | None = None
     ) -> Value:
@@ -230,7 +239,7 @@ class ExpressionEvaluator:
         if base is None:
             base = self.eval(node.value, state)
         if base.kind in ("parameter", "parameter_value"):
-            return self.parameter_attribute(base, node, state)
+            return self.params.parameter_attribute(base, node, state)
         if base.kind == "msg" and base.ref in state.heap:
             constant = self.member(base, node.attr, state)
             if constant is not None:  # `msg.ULTRASOUND`
@@ -238,7 +247,7 @@ class ExpressionEvaluator:
             text = self.ctx.source.segment(node) or node.attr
             ref = base.ref
             self.note_hover(node, lambda: hover.field(self.ctx, state, ref, node.attr))
-            value = self.check.read_field(state, base.ref, node.attr, self.site, text)
+            value = self.fields.read_field(state, base.ref, node.attr, self.site, text)
             return frames.framed_read(state, base.ref, node.attr, value)
         if base.kind in ("instance", "goal_handle") and isinstance(
             node.value, ast.Name
@@ -247,7 +256,9 @@ class ExpressionEvaluator:
             value = self.instance_attribute(base, var, node, state)
             self.note_hover(
                 node,
-                lambda: self.describe_attribute(base, var, node.attr, value, state),
+                lambda: self.lookups.describe_attribute(
+                    base, var, node.attr, value, state
+                ),
             )
             return value
         found = self.member(base, node.attr, state)
@@ -256,7 +267,7 @@ class ExpressionEvaluator:
         if base.kind == "instance":  # `self.chassis.left`: the attribute's type
             typed = self.program.types.attribute(base.name, node.attr)
             if typed is not None:
-                return self.typed(typed, node, state)
+                return self.lookups.typed(typed, node, state)
         if base.kind == "unknown" and isinstance(base.term, A.Sym):
             # `args.verbose` twice is one value, until something may change args
             version = state.version(base.term)
@@ -268,82 +279,19 @@ class ExpressionEvaluator:
         """`base.attr` when `base` is a module, an interface or message class, a
         message (its constants), or a class or instance (its class constants)."""
         if base.kind == "module":
-            return self._module_attribute(base.name, attr)
+            return self.lookups.module_attribute(base.name, attr)
         if base.kind == "msgclass":
-            return self._constant(base.name, attr)
+            return self.lookups.message_constant(base.name, attr)
         if base.kind == "msg" and base.ref in state.heap:
-            return self._constant(state.heap[base.ref].type, attr)
+            return self.lookups.message_constant(state.heap[base.ref].type, attr)
         if base.kind == "interface":
             found = self.ctx.msg_type_named(f"{base.name.replace('/', '.msg.')}_{attr}")
             return Value("msgclass", name=found) if found else None
         if base.kind in ("class", "instance"):
-            return self.class_constant(base.name, attr) or self._method(base, attr)
+            return self.lookups.class_constant(base.name, attr) or self.lookups.method(
+                base, attr
+            )
         return None
-
-    def _method(self, base: Value, attr: str) -> Value | None:
-        """A method, read from an instance (`self.turn`, `Path().turn`, also of
-        another module's class) or from a class of this file (`Path.turn`: a
-        staticmethod helper, called with every argument, or a classmethod, its
-        `cls` given)."""
-        key = f"{base.name}.{attr}"
-        function = self.program.functions.get(key)
-        if function is None:
-            if base.kind == "instance" and "." in base.name:  # another module's class
-                found = imported.resolve(self.ctx.resolver, key)
-                if isinstance(found, imported.FunctionSummary):
-                    return Value("method", name=key)
-            return None
-        if base.kind == "instance" or "classmethod" in function.decorators:
-            return Value("method", name=key)  # the first parameter is given
-        return Value("function", name=key)
-
-    def class_constant(self, class_name: str, attr: str) -> Value | None:
-        """A constant class attribute (`MAX_SPEED = 0.22` in the class body), also
-        one inherited from a class of this file."""
-        if attr not in self.ctx.constants.class_attrs:
-            return None
-        seen: set[str] = set()
-        todo = [class_name]
-        while todo:
-            name = todo.pop(0)
-            if name in seen:
-                continue
-            seen.add(name)
-            found = self.ctx.constants.class_constant(name, attr)
-            if found is not None:
-                return found
-            scope = self.program.classes.get(name)
-            if scope is not None and isinstance(scope.node, ast.ClassDef):
-                todo += [b.id for b in scope.node.bases if isinstance(b, ast.Name)]
-        return None
-
-    def describe_attribute(
-        self, base: Value, var: str, attr: str, value: Value, state: State
-    ) -> str:
-        """Hover text for `self.x`: its value and the class's refinement of `x`."""
-        decl = (
-            self.program.attributes.get(base.name, {}).get(attr)
-            if base.kind == "instance"
-            else None
-        )
-        return hover.variable(self.ctx, state, f"{var}.{attr}", value, decl)
-
-    def _module_attribute(self, module: str, attr: str) -> Value:
-        qualified = f"{module}.{attr}"
-        number = named_number(qualified) if attr in NUMBERS else None
-        if number is not None:
-            return Value("float", A.Num(number, False), literal=True)
-        code = named_code(qualified)
-        if code is not None:
-            return Value("int", A.Num(Fraction(code), True), literal=True)
-        msg_type = self.ctx.msg_type_named(qualified)
-        if msg_type is not None:
-            return Value("msgclass", name=msg_type)
-        interface = self.ctx.interface_named(qualified)
-        if interface is not None:
-            return Value("interface", name=interface)
-        constant = imported.constant(self.ctx.resolver, qualified)
-        return constant or Value("module", name=qualified)
 
     def instance_attribute(
         self, base: Value, var: str, node: ast.Attribute, state: State
@@ -354,14 +302,16 @@ class ExpressionEvaluator:
         bound = state.env.get(key)
         if isinstance(bound, Value):
             return state.use(bound)
-        method = self._method(base, node.attr) if base.kind == "instance" else None
+        method = (
+            self.lookups.method(base, node.attr) if base.kind == "instance" else None
+        )
         if method is not None:
             return method
         if base.kind == "instance" and "." in base.name:  # another module's constant
             found = imported.resolve(self.ctx.resolver, f"{base.name}.{node.attr}")
             if isinstance(found, Value):
                 return found
-        constant = self.class_constant(base.name, node.attr)
+        constant = self.lookups.class_constant(base.name, node.attr)
         if base.kind == "instance" and constant is not None:
             return constant
         if base.kind == "goal_handle" and node.attr == "request":
@@ -377,11 +327,11 @@ class ExpressionEvaluator:
             )
             if decl is not None:
                 lookup = self.refinement_lookup(decl, state)
-                value = self.check.assumed(state, key, decl, lookup)
+                value = self.refined.assumed(state, key, decl, lookup)
             elif typed is not None:
                 # a message or object kept on self: a message's fields are unknown
                 # but refined, as any attribute is in a method that did not set it
-                value = self.typed(typed, node, state, key)
+                value = self.lookups.typed(typed, node, state, key)
             else:
                 remembered = frames.recall(self.ctx, base.name, node.attr)
                 value = remembered or self.unknown(node)
@@ -390,50 +340,6 @@ class ExpressionEvaluator:
             self.lists_seen = self.lists_seen or value.kind == "list"
         state.env[key] = value
         return value
-
-    def typed(
-        self,
-        found: types.Type | None,
-        node: ast.AST,
-        state: State,
-        label: str | None = None,
-    ) -> Value:
-        """A value of the type the type model gives (`analysis/types.py`): a message
-        with unknown but refined fields, an instance, a container of typed
-        elements; an unknown value when no type is known."""
-        if found is None:
-            return self.unknown(node)
-        if label is None:
-            label = self.ctx.source.segment(node) or "the value"
-        found = types.plain(found)
-        if isinstance(found, types.Msg):
-            if self.ctx.catalog.lookup(found.name) is None:
-                return self.unknown(node)
-            return heap.new_message(
-                self.ctx, state, found.name, "received", label=label
-            )
-        if isinstance(found, types.Obj):
-            if "." in found.name:  # another module's class: its refined attributes
-                known = imported.resolve(self.ctx.resolver, found.name)
-                if isinstance(known, imported.ClassSummary):
-                    self.program.attributes.setdefault(
-                        found.name, dict(known.attributes)
-                    )
-            # an id of its own: whether it is None is not known (even a declared
-            # `client: Client` may be given None), the same for each test of it
-            return Value("instance", name=found.name, ref=self.ctx.fresh_id())
-        if isinstance(found, types.Lib):  # `self.last: Time`, a stub's result
-            return Value("object", name=found.name)
-        if isinstance(found, types.Tup):
-            parts = tuple(self.typed(t, node, state, label) for t in found.items)
-            return Value("tuple", elements=parts)
-        if isinstance(found, types.Seq) and isinstance(found.item, types.Msg):
-            return Value("list", items=Items(message=(found.item.name, "received")))
-        if isinstance(found, types.Seq):
-            return Value("list", items=Items(of=found.item))
-        if isinstance(found, types.Map):
-            return Value("dict", items=Items(of=found.value))
-        return self.unknown(node)
 
     def refinement_lookup(self, decl: Refinement, state: State) -> dict[str, A.Expr]:
         """Terms for the other names a refinement mentions (`y == x`, `MAX_SPEED`,
@@ -468,25 +374,13 @@ class ExpressionEvaluator:
         class-level annotation names one); None if the two disagree."""
         found = self.constant_named(name, state)
         in_class = (
-            self.class_constant(class_name, name)
+            self.lookups.class_constant(class_name, name)
             if class_name and "." not in name
             else None
         )
         if in_class is None:
             return found
         return in_class if found is None or found.term == in_class.term else None
-
-    def _constant(self, msg_type: str, attr: str) -> Value | None:
-        spec = self.ctx.catalog.lookup(msg_type)
-        if spec is None or attr not in spec.constants or attr in spec.fields:
-            return None
-        type_, value = spec.constants[attr]
-        term = constant_term(type_, value)
-        if isinstance(term, A.Num):
-            return Value("int" if term.is_int else "float", term, literal=True)
-        if isinstance(term, A.Bool):
-            return Value("bool", term)
-        return None if term is None else Value("str", term)
 
     # -- arithmetic ----------------------------------------------------------
     def eval_UnaryOp(self, node: ast.UnaryOp, state: State) -> Value:
@@ -526,7 +420,7 @@ class ExpressionEvaluator:
         factors: Factors = ()
         rad_free = left.rad_free or right.rad_free
         if op in "+-":
-            unit, literal = self.unit_of_sum(left, right, node, op)
+            unit, literal = self.check.unit_of_sum(left, right, node, op)
             factors = (
                 left.factors
                 if unit is not None and unit == left.unit
@@ -536,10 +430,10 @@ class ExpressionEvaluator:
             unit, literal = left.unit, left.literal and right.literal
             factors, rad_free = left.factors, left.rad_free
         else:
-            unit, literal = self.unit_of_product(left, right, op)
-            factors = self.factors_of_product(left, right, op)
+            unit, literal = arith.unit_of_product(left, right, op)
+            factors = arith.factors_of_product(left, right, op)
             rad_free = rad_free or any(
-                v.unit is not None and not v.literal and _has_length(v.unit)
+                v.unit is not None and not v.literal and arith.has_length(v.unit)
                 for v in (left, right)
             )
         # `-math.degrees(x) / 2.`: a literal factor keeps the call that gave the unit
@@ -549,7 +443,7 @@ class ExpressionEvaluator:
             if op in "*/" and left.literal != right.literal and unit == scaled.unit
             else None
         )
-        kind = self.numeric_kind(left, right, op)
+        kind = arith.numeric_kind(left, right, op)
         if kind is None or left.term is None or right.term is None:
             return replace(
                 self.unknown(node, unit=unit),
@@ -598,7 +492,7 @@ class ExpressionEvaluator:
         return found if found is not None else self.unknown(node)
 
     def _other_binop(self, node: ast.BinOp, left: Value, right: Value) -> Value:
-        exponent = _literal(right.term) if right.literal else None
+        exponent = arith.literal(right.term) if right.literal else None
         if (
             isinstance(node.op, ast.Pow)
             and isinstance(exponent, Fraction)
@@ -608,136 +502,6 @@ class ExpressionEvaluator:
         ):  # `d ** 2`, `d ** 0.5` (a square root: the unit's root)
             return self.unknown(node, unit=left.unit.raised(exponent))
         return self.unknown(node)
-
-    def factors_of_product(self, left: Value, right: Value, op: str) -> Factors:
-        """Literal factors carried along (see `Value.factors`), each literal of a
-        chain on its own: `rpm * 2.0 * math.pi / 60.0` holds 2, pi and 1/60, which
-        together are the rpm -> rad/s conversion, and `2 * d_cm / 100` a gain of 2
-        and the cm -> m conversion (`units.fit` tells them apart)."""
-        if left.literal == right.literal:
-            if left.literal:
-                return ()
-            return left.factors + (
-                right.factors if op == "*" else tuple(1 / f for f in right.factors)
-            )
-        number = constant_value(right.term if right.literal else left.term)
-        if number is None or number == 0:
-            return ()
-        if right.literal:
-            factor = number if op == "*" else 1 / number
-            held = left.factors
-        else:  # `1000.0 / hz`: a period (1/Hz) scaled by 1000, i.e. in ms
-            factor = number
-            held = right.factors if op == "*" else tuple(1 / f for f in right.factors)
-        if factor == 1:
-            return held
-        return (*held, factor)
-
-    def numeric_kind(self, left: Value, right: Value, op: str) -> str | None:
-        kinds = {left.kind, right.kind}
-        if not kinds <= {"int", "float", "bool", "unknown"}:
-            return None
-        if "unknown" in kinds:
-            return "unknown"
-        if op == "/" or "float" in kinds:
-            return "float"
-        return "int"
-
-    def unit_of_sum(
-        self, left: Value, right: Value, node: ast.AST, op: str
-    ) -> tuple[Unit | None, bool]:
-        if left.literal and right.literal:
-            return None, True
-        if left.literal or right.literal:
-            return (right.unit if left.literal else left.unit), False
-        if left.unit is None or right.unit is None:
-            return None, False
-        if left.unit.same_as(right.unit) and not left.factors and not right.factors:
-            return left.unit, False
-        # each side against the unit the other has after its converting factors
-        # (`x_kmh / 3.6 + v`; `age > stale_s * 1000` compares s with ms)
-        there = right.fit(converted(left.unit, left.factors))
-        back = left.fit(converted(right.unit, right.factors))
-        if (there is not None and there.kind == "ok") or (
-            back is not None and back.kind == "ok"
-        ):
-            # the unit of a side its literal factors did not convert
-            plain = [v for v in (left, right) if v.scale == 1.0 and not v.rad_free]
-            return (plain[0] if plain else left).unit, False
-        text = self.ctx.source.segment(node) or op
-        if (
-            there is not None
-            and there.kind == "time"
-            and (left.scale != 1.0 or right.scale != 1.0)
-        ):  # `x + vx * 0.1`: a literal time step (RF203)
-            stepped = right if right.scale != 1.0 else left
-            kept = left if stepped is right else right
-            found = stepped.fit(kept.unit)  # type: ignore[arg-type]
-            assert found is not None
-            self.ctx.report(
-                messages.implicit_operand_change(
-                    self.ctx.source.path,
-                    self.ctx.source.span(node),
-                    text,
-                    found.got,
-                    kept.unit,  # type: ignore[arg-type]
-                    found.seconds,
-                ),
-                once=("operands", id(node)),
-            )
-            return kept.unit, False
-        folded = [
-            (found, other, unit)
-            for found, other, unit in (
-                (there, left, left.unit),
-                (back, right, right.unit),
-            )
-            if found is not None and found.kind == "folded"
-        ]
-        if folded:  # `d < d_cm * 0.02`: maybe `/ 100 * 2` in one number (RF203)
-            found, other, unit = folded[0]
-            self.ctx.report(
-                messages.folded_conversion(
-                    self.ctx.source.path,
-                    self.ctx.source.span(node),
-                    text,
-                    f"combines {unit} with",
-                    converted(unit, other.factors),
-                    found.got,
-                    found.scale,
-                ),
-                once=("operands", id(node)),
-            )
-            return unit, False
-        self.ctx.report(
-            messages.operand_units(
-                self.ctx.source.path,
-                self.ctx.source.span(node),
-                text,
-                op,
-                converted(left.unit, left.factors),  # `t * 1000` is in ms
-                converted(right.unit, right.factors),
-            ),
-            once=("operands", id(node)),
-        )
-        return None, False
-
-    def unit_of_product(
-        self, left: Value, right: Value, op: str
-    ) -> tuple[Unit | None, bool]:
-        if left.literal and right.literal:
-            return None, True
-        lu = DIMENSIONLESS if left.literal else left.unit
-        ru = DIMENSIONLESS if right.literal else right.unit
-        if lu is None or ru is None:
-            return None, False
-        # a number that is not a literal (`math.cos(yaw)`) may rotate a coordinate
-        # into another frame: the product's frame is not known
-        if ru == DIMENSIONLESS:
-            return (lu if right.literal else frames.unframed(lu)), False
-        if lu == DIMENSIONLESS and op == "*":
-            return (ru if left.literal else frames.unframed(ru)), False
-        return (lu * ru if op == "*" else lu / ru), False
 
     def eval_Compare(self, node: ast.Compare, state: State) -> Value:
         operands = [self.eval(node.left, state)] + [
@@ -755,10 +519,10 @@ class ExpressionEvaluator:
             if (name is not None and name not in ("==", "!=")) or (
                 left.is_number and right.is_number
             ):
-                self.unit_of_sum(left, right, node, name or "==")
+                self.check.unit_of_sum(left, right, node, name or "==")
             if name is None or left.term is None or right.term is None:
                 return self.unknown(node, "bool")
-            if name in ("==", "!=") and _sorts_differ(left, right):
+            if name in ("==", "!=") and arith.sorts_differ(left, right):
                 # `command == "slow"` of an unknown: the solver cannot compare
                 # them, but the same test of the same values is the same
                 key = ("==", left.term, right.term)
@@ -824,7 +588,10 @@ class ExpressionEvaluator:
             or (len(kinds) > 1 and not kinds <= {"int", "float", "bool"})
         ):
             return self.unknown(node)
-        kind = max(kinds, key=lambda k: KIND_ORDER.index(k) if k in KIND_ORDER else -1)
+        kind = max(
+            kinds,
+            key=lambda k: arith.KIND_ORDER.index(k) if k in arith.KIND_ORDER else -1,
+        )
         term = A.Ite(cond, then.term, orelse.term)
         # the arms must agree as the sides of a sum do (`a_m if c else b_ft`: RF202);
         # a choice between frames (`p_map if use_map else p_odom`) is in neither
@@ -835,7 +602,7 @@ class ExpressionEvaluator:
         ):
             then = replace(then, unit=frames.unframed(then.unit))
             orelse = replace(orelse, unit=frames.unframed(orelse.unit))
-        unit, literal = self.unit_of_sum(then, orelse, node, "if")
+        unit, literal = self.check.unit_of_sum(then, orelse, node, "if")
         factors = then.factors if unit is not None and unit == then.unit else ()
         if unit is not None and unit != then.unit:
             factors = orelse.factors
@@ -870,74 +637,16 @@ class ExpressionEvaluator:
         if base.elements is not None and (
             base.kind in ("tuple", "list") or self.is_read_only_table(node.value)
         ):  # a list keeps its elements only while nothing else can change it
-            found = self._look_up(base, key, node, state)
+            found = self.lookups.look_up(base, key, node, state)
             if found is not None:  # a list inside a table is shared with it
                 return containers.stripped(found)
         if base.kind == "dict" and base.items is not None and base.items.of:
-            return self.typed(base.items.of, node, state)  # `dict[str, Driver]`
+            return self.lookups.typed(base.items.of, node, state)  # `dict[str, Driver]`
         if base.kind in SEQUENCES and key.kind in ("int", "bool", "unknown"):
             if isinstance(node.slice, ast.Slice):
                 return containers.sliced(base, containers.slice_length(node.slice))
-            return self.element(base, node, state)
+            return self.lookups.element(base, node, state)
         return self.unknown(node, unit=base.unit if not base.literal else None)
-
-    def message_element(
-        self, message: tuple[str, str], node: ast.AST, state: State
-    ) -> Value:
-        """An element of a message array field (`path.poses[i]`, `for p in
-        msg.poses`): a message of the element type, received (its type's
-        invariants hold) when the array arrived, else unknown-but-typed."""
-        msg_type, origin = message
-        label = self.ctx.source.segment(node) or "an element"
-        return heap.new_message(
-            self.ctx,
-            state,
-            msg_type,
-            "received" if origin == "received" else "unknown",
-            label=label,
-        )
-
-    def element(self, sequence: Value, node: ast.AST, state: State) -> Value:
-        """One element of `sequence`: what holds of every element holds of it."""
-        if sequence.keys is not None and sequence.name in ("zip", "enumerate"):
-            parts = tuple(self.element(k, node, state) for k in sequence.keys)
-            return Value("tuple", elements=parts)
-        if sequence.elements and len(sequence.elements) <= containers.MAX_SPELLED:
-            found = self._one_of(list(sequence.elements), node, state)
-            if found is None:
-                found = self._any_message(sequence.elements, node, state)
-            if found is not None:
-                return containers.stripped(found)
-        if sequence.items is not None and sequence.items.message is not None:
-            return self.message_element(sequence.items.message, node, state)
-        if sequence.items is not None and sequence.items.of is not None:
-            return self.typed(sequence.items.of, node, state)
-        kind = containers.item_kind(sequence)
-        if kind not in ("int", "float", "bool", "str"):
-            kind = "unknown"
-        value = replace(
-            self.unknown(node, kind, sequence.unit), factors=sequence.factors
-        )
-        each = containers.each_of(sequence)
-        if each != A.TRUE:
-            state.assume(self.check.instantiate(each, value.known_term))
-        return value
-
-    def _any_message(
-        self, options: tuple[Value, ...], node: ast.AST, state: State
-    ) -> Value | None:
-        """One of several messages of one type (`for cmd in [left, right]`): a
-        message of that type with unknown fields. The code may change any of them
-        through it, so what they held is forgotten."""
-        names = {
-            o.name if o.kind == "msg" and o.ref is not None else "" for o in options
-        }
-        if len(names) != 1 or "" in names:
-            return None
-        for option in options:
-            heap.havoc(state, option.ref)  # type: ignore[arg-type]
-        label = self.ctx.source.segment(node) or "an element"
-        return heap.new_message(self.ctx, state, names.pop(), "unknown", label=label)
 
     def eval_Tuple(self, node: ast.Tuple | ast.List, state: State) -> Value:
         values = []
@@ -976,62 +685,6 @@ class ExpressionEvaluator:
             return self.sized(node, state)
         table = Value("dict", elements=tuple(values), keys=tuple(keys))
         return self.sized(node, state, table)
-
-    def _look_up(
-        self, table: Value, key: Value, node: ast.Subscript, state: State
-    ) -> Value | None:
-        """`table[key]`: the entry when the key is known, else one of the entries
-        (a value bounded by them); None when it is not modelled (a slice)."""
-        assert table.elements is not None
-        wanted = _literal(key.term)
-        if table.kind == "dict":
-            keys = [_literal(k.term) for k in table.keys or ()]
-            if None in keys:
-                return None
-            entries = dict(zip(keys, table.elements, strict=True))
-            if wanted is not None:
-                return entries.get(wanted)
-            return self._one_of(list(entries.values()), node, state)
-        if isinstance(node.slice, ast.Slice) or key.kind not in (
-            "int",
-            "bool",
-            "unknown",
-        ):
-            return None
-        if wanted is not None:
-            index = int(wanted)
-            inside = -len(table.elements) <= index < len(table.elements)
-            return table.elements[index] if inside else None
-        return self._one_of(list(table.elements), node, state)
-
-    def _one_of(
-        self, options: list[Value], node: ast.AST, state: State
-    ) -> Value | None:
-        """A value that is one of `options` (tuples element by element)."""
-        if not options:
-            return None
-        if all(o == options[0] for o in options):
-            return options[0]
-        sizes = {len(o.elements) for o in options if o.elements is not None}
-        if all(o.kind == "tuple" for o in options) and len(sizes) == 1:
-            parts = [
-                self._one_of([o.elements[i] for o in options], node, state)  # type: ignore[index]
-                for i in range(sizes.pop())
-            ]
-            if any(p is None for p in parts):
-                return None
-            return Value("tuple", elements=tuple(parts))  # type: ignore[arg-type]
-        kinds = {o.kind for o in options}
-        if any(o.term is None for o in options) or not (
-            kinds <= {"int", "float", "bool"} or kinds == {"str"}
-        ):
-            return None
-        kind = max(kinds, key=KIND_ORDER.index) if kinds != {"str"} else "str"
-        units = {o.unit for o in options if not o.literal}
-        value = self.ctx.fresh(kind, node, units.pop() if len(units) == 1 else None)
-        terms = list(dict.fromkeys(o.known_term for o in options))
-        state.assume(A.disjoin([A.Binary("==", value.known_term, t) for t in terms]))
-        return replace(value, literal=all(o.literal for o in options))
 
     def eval_NamedExpr(self, node: ast.NamedExpr, state: State) -> Value:
         value = self.eval(node.value, state)
@@ -1127,61 +780,3 @@ class ExpressionEvaluator:
                 return A.Bool(False)
             return self.ctx.derived(("truthy", value.name), "bool", node).known_term
         return self.unknown(node, "bool").term  # type: ignore[return-value]
-
-
-def _has_length(unit: Unit) -> bool:
-    return dict(unit.dims).get("meter", 0) != 0
-
-
-def _literal(term: A.Expr | None) -> Fraction | str | None:
-    """A dict key or index as Python compares it (`1 == 1.0 == True`)."""
-    if isinstance(term, A.Num):
-        return term.value
-    if isinstance(term, A.Bool):
-        return Fraction(int(term.value))
-    if isinstance(term, A.Str):
-        return term.value
-    if isinstance(term, A.Unary) and term.op == "-" and isinstance(term.operand, A.Num):
-        return -term.operand.value
-    return None
-
-
-def _too_large(value: Fraction) -> bool:
-    return abs(value.numerator) >= MAX_NUMBER or value.denominator >= MAX_NUMBER
-
-
-def _sorts_differ(left: Value, right: Value) -> bool:
-    """An unknown (a real in the solver) against a str or a bool, both leaves."""
-    kinds = {left.kind, right.kind}
-    return (
-        "unknown" in kinds
-        and bool(kinds & {"str", "bool"})
-        and isinstance(left.term, LEAVES)
-        and isinstance(right.term, LEAVES)
-    )
-
-
-def constant_value(term: A.Expr | None) -> float | None:
-    """The value of a term built from number literals only, if a float holds it
-    (None beyond floats: math.inf, or a literal near it)."""
-    try:
-        found = _constant_value(term)
-    except OverflowError:
-        return None
-    return found if found is None or math.isfinite(found) else None
-
-
-def _constant_value(term: A.Expr | None) -> float | None:
-    if isinstance(term, A.Num):
-        return float(term.value)
-    if isinstance(term, A.Unary) and term.op == "-":
-        inner = _constant_value(term.operand)
-        return None if inner is None else -inner
-    if isinstance(term, A.Binary) and term.op in "+-*/":
-        left, right = _constant_value(term.left), _constant_value(term.right)
-        if left is None or right is None or (term.op == "/" and right == 0):
-            return None
-        return {"+": left + right, "-": left - right, "*": left * right}.get(
-            term.op, left / right if right else 0.0
-        )
-    return None

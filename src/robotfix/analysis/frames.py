@@ -298,7 +298,8 @@ def is_tf2(name: str) -> bool:
 
 def followed(ctx: FileContext, node: ast.Call) -> bool:
     """Whether `node` is a tf2 call this module modelled (it changes no message)."""
-    return ctx.frame_facts is not None and id(node) in ctx.frame_facts.followed
+    found = ctx.frame_facts
+    return isinstance(found, FrameFacts) and id(node) in found.followed
 
 
 def tf2_call(
@@ -413,15 +414,14 @@ def _check_slashes(
 
 # -- instance attributes -----------------------------------------------------------
 def facts(ctx: FileContext) -> FrameFacts:
-    if (
-        ctx.frame_facts is None
-        and ctx.index.scopes  # indexed (`analyze_module`)
-        and "setattr" not in ctx.source.text
-    ):
+    found = ctx.frame_facts
+    if isinstance(found, FrameFacts):
+        return found
+    if ctx.index.scopes and "setattr" not in ctx.source.text:  # `analyze_module`
         # the module's one walk counted them (assignments are statements: all of
         # them are indexed, once)
-        ctx.frame_facts = FrameFacts(Counter(ctx.index.assigned))
-    if ctx.frame_facts is None:
+        found = FrameFacts(Counter(ctx.index.assigned))
+    else:
         counts: Counter[str] = Counter()
         tree = ctx.source.tree
         for item in walk(tree) if tree is not None else ():  # once per file
@@ -443,8 +443,9 @@ def facts(ctx: FileContext) -> FrameFacts:
                 for part in walk(target):
                     if isinstance(part, ast.Attribute):
                         counts[part.attr] += 1
-        ctx.frame_facts = FrameFacts(counts)
-    return ctx.frame_facts
+        found = FrameFacts(counts)
+    ctx.frame_facts = found
+    return found
 
 
 def remember(ctx: FileContext, class_name: str, attr: str, value: Value) -> None:

@@ -24,10 +24,10 @@ from robotfix.annotations.extract import Alias, Refinement
 from robotfix.stubs import load as stubs
 
 if TYPE_CHECKING:
-    from robotfix.analysis.calls import CallEvaluator
     from robotfix.analysis.index import FileIndex
     from robotfix.analysis.state import State
-    from robotfix.analysis.types import Type
+    from robotfix.analysis.typeterms import Type
+    from robotfix.annotations.units import Unit
 
 MAX_HOPS = 20  # re-exports followed for one name (`a` re-exports `b` re-exports...)
 
@@ -229,8 +229,73 @@ def starred(node: ast.Call, kwargs: dict[str | None, Value]) -> bool:
     return any(isinstance(a, ast.Starred) for a in node.args) or None in kwargs
 
 
+class Symbols(Protocol):
+    """What `call` needs of the file's context: a fresh unknown value."""
+
+    def fresh(
+        self, kind: str, description: str | ast.AST, unit: object = None
+    ) -> Value: ...
+
+
+class RefinedChecks(Protocol):
+    """What `call` needs of the refinement checks (`analysis/refined.py`): an
+    argument checked against a parameter's refinement, a result assumed to meet
+    its own."""
+
+    def assign_refined(
+        self,
+        state: State,
+        name: str,
+        decl: Refinement,
+        value: Value,
+        site: ast.AST,
+        lookup: dict[str, A.Expr],
+        leaving: bool = False,
+    ) -> Value: ...
+
+    def assumed(
+        self, state: State, name: str, decl: Refinement, lookup: dict[str, A.Expr]
+    ) -> Value: ...
+
+
+class Typed(Protocol):
+    """What `call` needs of the evaluator's lookups (`analysis/lookups.py`): a
+    value of the type a summary gives a function's result."""
+
+    def typed(
+        self,
+        found: Type | None,
+        node: ast.AST,
+        state: State,
+        label: str | None = None,
+    ) -> Value: ...
+
+
+class Caller(Protocol):
+    """What `call` needs of the evaluator making the call (`analysis/calls.py`)."""
+
+    site: ast.AST  # the statement being interpreted
+
+    @property
+    def ctx(self) -> Symbols: ...
+
+    @property
+    def refined(self) -> RefinedChecks: ...
+
+    def note_sink(
+        self,
+        expr: ast.expr,
+        unit: Unit | None,
+        value: Value | None,
+        integer: bool = False,
+    ) -> None: ...
+
+    @property
+    def lookups(self) -> Typed: ...
+
+
 def call(
-    ev: CallEvaluator,
+    ev: Caller,
     function: FunctionSummary,
     args: list[Value],
     kwargs: dict[str | None, Value],
@@ -250,16 +315,16 @@ def call(
         decl = decls.get(name)
         if decl is not None:
             lookup = {**_unknowns(ev, decl), **terms}
-            ev.check.assign_refined(state, name, decl, value, ev.site, lookup)
+            ev.refined.assign_refined(state, name, decl, value, ev.site, lookup)
             if name in exprs:  # for `robotfix suggest`: the argument met a unit
                 ev.note_sink(exprs[name], decl.unit, value, decl.base == "int")
     if function.returns is None:
-        return ev.typed(function.result, node, state)
+        return ev.lookups.typed(function.result, node, state)
     lookup = {**_unknowns(ev, function.returns), **terms}
-    return ev.check.assumed(state, f"{function.name}()", function.returns, lookup)
+    return ev.refined.assumed(state, f"{function.name}()", function.returns, lookup)
 
 
-def _unknowns(ev: CallEvaluator, decl: Refinement) -> dict[str, A.Expr]:
+def _unknowns(ev: Caller, decl: Refinement) -> dict[str, A.Expr]:
     """Names a callee's refinement mentions besides its parameters (the summary
     already put in its module's constants): unknown values here."""
     found: dict[str, A.Expr] = {}

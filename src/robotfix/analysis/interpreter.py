@@ -24,13 +24,13 @@ from robotfix.analysis import (
     heap,
     hover,
     imported,
-    types,
+    typeterms,
     writes,
 )
 from robotfix.analysis.calls import LEAVING, MUTATORS, CallEvaluator
 from robotfix.analysis.constants import bound_names, plain_kind, scan
 from robotfix.analysis.context import FileContext, Scope, build_scope
-from robotfix.analysis.flows import Where, array_kind
+from robotfix.analysis.flows import FlowLog, Where, array_kind
 from robotfix.analysis.index import index_of
 from robotfix.analysis.program import (
     Function,
@@ -40,6 +40,7 @@ from robotfix.analysis.program import (
     never_returns,
 )
 from robotfix.analysis.state import MAYBE, MaybeUnbound, State, join
+from robotfix.analysis.unitmemo import UnitMemo
 from robotfix.analysis.values import (
     CONTAINERS,
     MUTABLE,
@@ -92,7 +93,7 @@ def analyze_module(ctx: FileContext) -> None:
     ctx.constants = scan(tree, ctx.index, ctx.qualname, ":=" in ctx.source.text)
     module = build_scope(ctx, "module", "<module>", tree, None)
     program = collect(ctx, tree, module)
-    if ctx.unit_flows is not None:
+    if isinstance(ctx.unit_flows, FlowLog):
         ctx.unit_flows.program = program
     top = Interpreter(ctx, program, module, {})
     state = top.exec_block(tree.body, State())
@@ -110,7 +111,11 @@ def analyze_module(ctx: FileContext) -> None:
     seen: set[int] = set()
     # the editor's memo of items analysed by an earlier check (analysis/unitmemo.py)
     units = ctx.unit_memo
-    memo = None if units is None else units.begin(ctx, program, tree, statics)
+    memo = (
+        units.begin(ctx, program, tree, statics)
+        if isinstance(units, UnitMemo)
+        else None
+    )
     while pending or later:
         node, parent = pending.pop(0) if pending else later.pop(0)
         if id(node) not in seen:
@@ -363,7 +368,7 @@ class Interpreter(CallEvaluator):
         decl = self.scope.module().decls.get(name)
         if decl is not None and (decl.elements is not None or decl.item is not None):
             # a tuple of refined elements, or a refined list or tuple
-            value = self.check.assumed(
+            value = self.refined.assumed(
                 state, name, decl, self.refinement_lookup(decl, state)
             )
             self.globals_read[name] = (value, None)
@@ -403,7 +408,7 @@ class Interpreter(CallEvaluator):
         if local and rest:
             owner = state.env.get(head)
             if isinstance(owner, Value) and owner.kind == "instance":
-                found = self.class_constant(owner.name, rest)
+                found = self.lookups.class_constant(owner.name, rest)
                 return found.term if found is not None else None
         if local:
             return None
@@ -490,7 +495,7 @@ class Interpreter(CallEvaluator):
                 ast.Name(id=name, ctx=ast.Load()), function
             )
             if typed is not None:
-                return self.typed(typed, node, state, name)
+                return self.lookups.typed(typed, node, state, name)
         return self._assumed_or_unknown(decl, name, state, node)
 
     def _assumed_or_unknown(
@@ -498,7 +503,7 @@ class Interpreter(CallEvaluator):
     ) -> Value:
         if decl is None:
             return self.unknown(node)
-        return self.check.assumed(
+        return self.refined.assumed(
             state, name, decl, self.refinement_lookup(decl, state)
         )
 
@@ -521,7 +526,7 @@ class Interpreter(CallEvaluator):
             decl = self.decl_for(target.id)
             if decl is not None:
                 lookup = self.refinement_lookup(decl, state)
-                value = self.check.assign_refined(
+                value = self.refined.assign_refined(
                     state, target.id, decl, value, self.site, lookup
                 )
             bound = state.env[target.id] = value.settled()
@@ -542,7 +547,7 @@ class Interpreter(CallEvaluator):
                 assert isinstance(stored, Value)
                 self.note_hover(
                     target,
-                    lambda: self.describe_attribute(
+                    lambda: self.lookups.describe_attribute(
                         base, var, target.attr, stored, state
                     ),
                 )
@@ -552,7 +557,7 @@ class Interpreter(CallEvaluator):
                     target, lambda: hover.field(self.ctx, state, ref, target.attr)
                 )
                 text = self.ctx.source.segment(target) or target.attr
-                self.check.write_field(
+                self.fields.write_field(
                     state, base.ref, target.attr, value, self.site, text
                 )
             else:
@@ -561,7 +566,9 @@ class Interpreter(CallEvaluator):
             parts = value.elements if value.kind in SEQUENCES else None
             starred = any(isinstance(e, ast.Starred) for e in target.elts)
             if parts is None and value.kind in SEQUENCES and not starred:
-                parts = tuple(self.element(value, e, state) for e in target.elts)
+                parts = tuple(
+                    self.lookups.element(value, e, state) for e in target.elts
+                )
             if parts is None or len(parts) != len(target.elts):
                 parts = None
             for index, element in enumerate(target.elts):
@@ -589,7 +596,7 @@ class Interpreter(CallEvaluator):
         decl = self.program.attributes.get(base.name, {}).get(attr)
         if decl is not None:
             lookup = self.refinement_lookup(decl, state)
-            value = self.check.assign_refined(
+            value = self.refined.assign_refined(
                 state, key, decl, value, self.site, lookup
             )
         value = containers.stripped(value)  # an attribute's list is shared
@@ -721,7 +728,7 @@ class Interpreter(CallEvaluator):
                 if len(node.generators) == 1 and iterable.kind in SEQUENCES:
                     size = containers.comprehension_size(iterable, bool(generator.ifs))
                 element = (
-                    self.element(iterable, generator.target, inner)
+                    self.lookups.element(iterable, generator.target, inner)
                     if iterable.kind in SEQUENCES
                     else self.unknown(generator.target)
                 )
@@ -757,9 +764,9 @@ class Interpreter(CallEvaluator):
         factors = () if value.literal else value.factors  # `[r * 100 for r in ranges]`
         message = (value.name, "unknown") if value.kind == "msg" else None
         of = (
-            types.Obj(value.name)
+            typeterms.Obj(value.name)
             if value.kind == "instance"
-            else types.Lib(value.name)
+            else typeterms.Lib(value.name)
             if value.kind == "object"
             else None
         )
@@ -806,18 +813,18 @@ class Interpreter(CallEvaluator):
                 value = arriving[arg.arg](state)
             elif decl is not None and decl.base == "msg":
                 lookup = self.refinement_lookup(decl, state)
-                value = self.check.assumed(state, arg.arg, decl, lookup)
+                value = self.refined.assumed(state, arg.arg, decl, lookup)
             elif msg_type is not None:
                 value = heap.new_message(
                     self.ctx, state, msg_type, "received", label=arg.arg
                 )
             elif decl is not None:
                 lookup = self.refinement_lookup(decl, state)
-                value = self.check.assumed(state, arg.arg, decl, lookup)
+                value = self.refined.assumed(state, arg.arg, decl, lookup)
             elif annotation is not None and (
                 typed := self.program.types.parameter(function, arg.arg)
             ):  # `driver: MotorDriver`, `scans: list[LaserScan]`
-                value = self.typed(typed, arg, state, arg.arg)
+                value = self.lookups.typed(typed, arg, state, arg.arg)
             else:
                 value = self.ctx.fresh(
                     "unknown", f"parameter `{arg.arg}` of {function.name}()"
@@ -998,7 +1005,7 @@ class Interpreter(CallEvaluator):
             before = state.env.get(name)
             if decl is not None:
                 lookup = self.refinement_lookup(decl, state)
-                state.env[name] = self.check.assumed(state, name, decl, lookup)
+                state.env[name] = self.refined.assumed(state, name, decl, lookup)
             elif isinstance(before, Value) and constant.get(name, {"?"}) <= _KEEPS.get(
                 before.kind, set()
             ):
@@ -1289,7 +1296,7 @@ class Interpreter(CallEvaluator):
         """For `robotfix suggest` (analysis/flows.py): `source` reached a place with
         a unit (a refined name or attribute, a message field with a unit), or an
         unannotated name or attribute takes its value."""
-        log = self.ctx.unit_flows
+        log = self.flow_log()
         if log is None:
             return
         decl: Refinement | None = None
@@ -1355,7 +1362,7 @@ class Interpreter(CallEvaluator):
         function = self.function
         if function is not None and function.returns is not None:
             lookup = self.refinement_lookup(function.returns, state)
-            self.check.assign_refined(
+            self.refined.assign_refined(
                 state, f"{function.name}()", function.returns, value, node, lookup
             )
             if node.value is not None:
@@ -1368,7 +1375,7 @@ class Interpreter(CallEvaluator):
             "action",
         )
         if leaves and value.kind == "msg" and value.ref is not None:
-            self.check.check_whole(state, value.ref, node, publishing=True)
+            self.fields.check_whole(state, value.ref, node, publishing=True)
         state.reachable = False
         return state
 
@@ -1761,7 +1768,7 @@ class Interpreter(CallEvaluator):
         self, node: ast.For | ast.AsyncFor, iterable: Value | None, state: State
     ) -> None:
         element = (
-            self.element(iterable, node.target, state)
+            self.lookups.element(iterable, node.target, state)
             if iterable is not None
             and iterable.kind in SEQUENCES
             and isinstance(node, ast.For)

@@ -17,8 +17,8 @@ from fractions import Fraction
 
 from robotfix import messages
 from robotfix.analysis import fixes, frames, heap, imported
+from robotfix.analysis.expressions import ExpressionEvaluator
 from robotfix.analysis.imported import resolve_library
-from robotfix.analysis.param_eval import ParameterEvaluator
 from robotfix.analysis.state import State
 from robotfix.analysis.types import OPERATOR_METHODS
 from robotfix.analysis.values import Conversion, Value
@@ -32,7 +32,7 @@ from robotfix.stubs import load as stubs
 ZERO = A.Num(Fraction(0), True)
 
 
-class LibraryEvaluator(ParameterEvaluator):
+class LibraryEvaluator(ExpressionEvaluator):
     # -- names ---------------------------------------------------------------
     def member(self, base: Value, attr: str, state: State) -> Value | None:
         if base.kind == "object":
@@ -55,7 +55,7 @@ class LibraryEvaluator(ParameterEvaluator):
             return None
         if found.decl is not None:
             lookup = self._lookup(found.decl, {})
-            return self.check.assumed(state, f".{attr}", found.decl, lookup)
+            return self.refined.assumed(state, f".{attr}", found.decl, lookup)
         return self._object(found.type, state, f"`.{attr}`")
 
     def object_operation(
@@ -102,7 +102,7 @@ class LibraryEvaluator(ParameterEvaluator):
             and f"{var}.{attr}" not in state.env
             and f"{base.name}.{attr}" not in self.program.functions
             and attr not in self.program.attributes.get(base.name, {})
-            and self.class_constant(base.name, attr) is None
+            and self.lookups.class_constant(base.name, attr) is None
         ):
             for cls in self.program.types.library_bases(base.name):
                 function = self._stubs().member(cls, attr)
@@ -280,7 +280,7 @@ class LibraryEvaluator(ParameterEvaluator):
     ) -> Value:
         if function.returns is not None:
             lookup = self._lookup(function.returns, terms)
-            return self.check.assumed(
+            return self.refined.assumed(
                 state, f"{function.short}()", function.returns, lookup
             )
         if function.returns_type is not None:
@@ -331,7 +331,7 @@ class LibraryEvaluator(ParameterEvaluator):
         rule, short = function.rule, function.qualname.rsplit(".", 1)[-1]
         if rule == "agree":
             for other in values[1:]:
-                self.unit_of_sum(values[0], other, node, short)
+                self.check.unit_of_sum(values[0], other, node, short)
             return None  # the result is as annotated
         if rule == "scale":
             return self._scaled(function, first, node)
@@ -345,7 +345,9 @@ class LibraryEvaluator(ParameterEvaluator):
             state.assume(A.Binary(">=", value.known_term, ZERO))
             return replace(value, literal=first.literal)
         # same: the arguments' common unit
-        units = [self.unit_of_sum(first, other, node, short)[0] for other in values[1:]]
+        units = [
+            self.check.unit_of_sum(first, other, node, short)[0] for other in values[1:]
+        ]
         unit: Unit | None = first.unit if not first.literal else None
         if unit is None:
             unit = next((u for u in units if u is not None), None)

@@ -6,7 +6,7 @@ lies in the declared range and satisfies the refinements attached where it was
 declared. A default outside the declared range is RF101 at the default (rclpy
 refuses it). `rospy.get_param(name, default)` is an unknown; assigned to a refined
 target right away, its default is checked against the refinement and the
-refinement is assumed (`parameters.attach`).
+refinement is assumed (`paramchecks.attach`).
 """
 
 from __future__ import annotations
@@ -16,18 +16,11 @@ from dataclasses import replace
 from fractions import Fraction
 
 from robotfix import messages
-from robotfix.analysis.expressions import ExpressionEvaluator
-from robotfix.analysis.parameters import (
-    MODULE,
-    Handle,
-    ParamContext,
-    ParamDecl,
-    ParamRead,
-    called_name,
-    owner_of,
-    summarize,
-)
-from robotfix.analysis.program import call_argument
+from robotfix.analysis.context import FileContext
+from robotfix.analysis.parameters import Handle, ParamContext, ParamRead, summarize
+from robotfix.analysis.paramsummary import MODULE, ParamDecl
+from robotfix.analysis.paramwalk import called_name, owner_of
+from robotfix.analysis.program import Function, call_argument
 from robotfix.analysis.state import State
 from robotfix.analysis.values import Value
 from robotfix.annotations import ast as A
@@ -43,15 +36,24 @@ from robotfix.ros.catalog import suffix_unit
 HANDLE_KINDS = frozenset({"parameter", "parameter_value"})
 
 
-class ParameterEvaluator(ExpressionEvaluator):
+class ParameterCalls:
+    """Parameter API calls and reads of the handles they return; the evaluator
+    holds one (`self.params`). It reads the file's context alone: the summary of
+    the file's parameters (`ctx.parameters`, made at the first call)."""
+
+    def __init__(self, ctx: FileContext) -> None:
+        self.ctx = ctx
+
     def parameters(self) -> ParamContext:
-        if self.ctx.parameters is None:
-            self.ctx.parameters = ParamContext(
+        found = self.ctx.parameters
+        if not isinstance(found, ParamContext):
+            found = ParamContext(
                 summarize(
                     self.ctx.source, self.ctx.index, self.ctx.resolver, self.ctx.stubs
                 )
             )
-        return self.ctx.parameters
+            self.ctx.parameters = found
+        return found
 
     def parameter_call(
         self,
@@ -61,16 +63,17 @@ class ParameterEvaluator(ExpressionEvaluator):
         args: list[Value],
         kwargs: dict[str | None, Value],
         state: State,
+        function: Function | None,
     ) -> Value | None:
-        """The value of a parameter API call, or None when it is not one (or not
-        one this checker can follow)."""
+        """The value of a parameter API call made in `function` (None: at module
+        level), or None when it is not one (or not one this checker can follow)."""
         if name == "get_param":
             if callee.kind == "module" and callee.name == "rospy.get_param":
                 return self._ros1_read(node, args, kwargs)
             return None
         if not isinstance(node.func, ast.Attribute):
             return None
-        owner = self._owner(node.func.value)
+        owner = _owner(node.func.value, function)
         summary = self.parameters().summary
         if name == "declare_parameters":
             for item in ast.walk(node):
@@ -162,20 +165,6 @@ class ParameterEvaluator(ExpressionEvaluator):
         found = self.parameters().summary.constant(call_argument(node, 0, keyword))
         return found if isinstance(found, str) else None
 
-    def _owner(self, receiver: ast.expr) -> str | None:
-        function = getattr(self, "function", None)
-        if function is None:
-            return owner_of(receiver, MODULE, None, None)
-        args = getattr(function.node, "args", None)
-        params = [*args.posonlyargs, *args.args] if args is not None else []
-        is_method = function.is_method and params
-        return owner_of(
-            receiver,
-            function.key,
-            function.class_name if is_method else None,
-            params[0].arg if is_method else None,
-        )
-
     def _handle(self, handle: Handle) -> Value:
         params = self.parameters()
         key = str(len(params.handles) + 1)
@@ -215,7 +204,7 @@ class ParameterEvaluator(ExpressionEvaluator):
     ) -> Value:
         handle = self.parameters().handles.get(base.name)
         if handle is None:
-            return self.unknown(node)
+            return self.ctx.fresh("unknown", node)
         decl = handle.decl
         declared = decl.type if decl is not None and not decl.dynamic else None
         if base.kind == "parameter":
@@ -223,15 +212,15 @@ class ParameterEvaluator(ExpressionEvaluator):
                 return self._read(handle, node, state, declared)
             if node.attr == "get_parameter_value":
                 return Value("parameter_method", name=base.name)
-            return self.unknown(node)
+            return self.ctx.fresh("unknown", node)
         field_type = PARAMETER_VALUE_FIELDS.get(node.attr)
         if field_type is None:
-            return self.unknown(node)
+            return self.ctx.fresh("unknown", node)
         if declared is not None and field_type == declared:
             return self._read(handle, node, state, declared)
         if declared is not None and field_type in PARAMETER_FIELD_DEFAULTS:
             return _constant(PARAMETER_FIELD_DEFAULTS[field_type])
-        return self.unknown(node)
+        return self.ctx.fresh("unknown", node)
 
     def _read(
         self, handle: Handle, node: ast.Attribute, state: State, type_: str | None
@@ -327,3 +316,17 @@ def name_unit(name: str) -> Unit | None:
     `paramcheck` needs nothing.)"""
     text = suffix_unit(name)
     return resolve(text) if text is not None else None
+
+
+def _owner(receiver: ast.expr, function: Function | None) -> str | None:
+    if function is None:
+        return owner_of(receiver, MODULE, None, None)
+    args = getattr(function.node, "args", None)
+    params = [*args.posonlyargs, *args.args] if args is not None else []
+    is_method = function.is_method and params
+    return owner_of(
+        receiver,
+        function.key,
+        function.class_name if is_method else None,
+        params[0].arg if is_method else None,
+    )

@@ -34,77 +34,61 @@ from __future__ import annotations
 
 import ast
 import weakref
-from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Protocol
 
 from robotfix.analysis import imported
 from robotfix.analysis.imported import resolve_library
+from robotfix.analysis.typeterms import (
+    Lib,
+    Map,
+    Maybe,
+    Msg,
+    Obj,
+    Seq,
+    Tup,
+    Type,
+    element,
+    plain,
+)
 from robotfix.astwalk import children
 from robotfix.stubs import load as stubs
 
 if TYPE_CHECKING:
-    from robotfix.analysis.context import FileContext
-    from robotfix.analysis.program import Function, Program
+    from robotfix.analysis.context import FileContext, Scope
 
 
-# The types are values (compared, hashed, carried in summaries), never changed
-# once made. Only what they need is generated (no repr, no frozen setters): each
-# generated method is code compiled when the module is imported, in every run.
+class FunctionView(Protocol):
+    """What the model needs of a function of the file (`program.Function`)."""
+
+    @property
+    def node(self) -> ast.FunctionDef | ast.AsyncFunctionDef | ast.Lambda: ...
+
+    @property
+    def class_name(self) -> str | None: ...
+
+    @property
+    def decorators(self) -> frozenset[str]: ...
+
+    @property
+    def first_parameter(self) -> str | None: ...
+
+    @property
+    def is_method(self) -> bool: ...
 
 
-@dataclass(unsafe_hash=True, repr=False)
-class Msg:
-    """A message of the catalog's type `pkg/Name`."""
+class ProgramView(Protocol):
+    """What the model needs of the file's definitions (`program.Program`)."""
 
-    name: str
+    @property
+    def functions(self) -> Mapping[str, FunctionView]: ...
 
+    @property
+    def classes(self) -> Mapping[str, Scope]: ...
 
-@dataclass(unsafe_hash=True, repr=False)
-class Obj:
-    """An instance of a class of this file (`Driver`) or of another module of the
-    tree (`drive_pkg.motor.Driver`)."""
+    @property
+    def bases(self) -> Mapping[str, list[str]]: ...
 
-    name: str
-
-
-@dataclass(unsafe_hash=True, repr=False)
-class Lib:
-    """An object of a class a stub describes (`rclpy.time.Time`, `rospy.Duration`),
-    by the stub's qualified name: its properties, methods and operators are the
-    stub's."""
-
-    name: str
-
-
-@dataclass(unsafe_hash=True, repr=False)
-class Seq:
-    """A list, set, deque, iterable or homogeneous tuple of `item`s."""
-
-    item: Type
-
-
-@dataclass(unsafe_hash=True, repr=False)
-class Tup:
-    """A tuple of fixed length; None for an element of no known type."""
-
-    items: tuple[Type | None, ...]
-
-
-@dataclass(unsafe_hash=True, repr=False)
-class Map:
-    """A dict whose values are `value`s."""
-
-    value: Type
-
-
-@dataclass(unsafe_hash=True, repr=False)
-class Maybe:
-    """`Optional[T]`: a T, or None."""
-
-    type: Type
-
-
-Type = Msg | Obj | Lib | Seq | Tup | Map | Maybe
 
 SEQUENCE_FORMS = frozenset(
     {"list", "set", "frozenset", "deque", "Sequence", "MutableSequence"}
@@ -128,42 +112,6 @@ OPERATOR_METHODS = {
 MAX_DEPTH = 12  # inference follows at most this many names, calls and returns
 
 
-def plain(found: Type | None) -> Type | None:
-    """The type without its `None`: what a value is once it is used as one."""
-    return found.type if isinstance(found, Maybe) else found
-
-
-def element(found: Type | None) -> Type | None:
-    """The type of an element of a container (of a dict: of a value)."""
-    found = plain(found)
-    if isinstance(found, Seq):
-        return found.item
-    if isinstance(found, Map):
-        return found.value
-    if isinstance(found, Tup) and found.items:
-        first = found.items[0]
-        return first if all(i == first for i in found.items) else None
-    return None
-
-
-def qualified(found: Type | None, module: str, local: set[str]) -> Type | None:
-    """`found` as another module names it: this module's classes get its name."""
-    if isinstance(found, Obj) and found.name in local:
-        return Obj(f"{module}.{found.name}")
-    if isinstance(found, Seq):
-        item = qualified(found.item, module, local)
-        return Seq(item) if item is not None else None
-    if isinstance(found, Map):
-        value = qualified(found.value, module, local)
-        return Map(value) if value is not None else None
-    if isinstance(found, Maybe):
-        inner = qualified(found.type, module, local)
-        return Maybe(inner) if inner is not None else None
-    if isinstance(found, Tup):
-        return Tup(tuple(qualified(i, module, local) for i in found.items))
-    return found
-
-
 def _agree(found: list[Type | None]) -> Type | None:
     """The one type every source gives; None-only sources (a `None`) make it
     Optional; any unknown or disagreeing source makes it unknown."""
@@ -184,14 +132,14 @@ class TypeModel:
     """A module's types, asked by the interpreter: `annotation`, `attribute`,
     `returns`, `parameter`, `local`; each answer computed once."""
 
-    def __init__(self, ctx: FileContext, program: Program) -> None:
+    def __init__(self, ctx: FileContext, program: ProgramView) -> None:
         self.ctx = ctx
         # the program owns the model: a strong reference back would be a cycle
         # that keeps the file's tree alive until the cycle collector runs
         self._program = weakref.ref(program)
         self._attributes: dict[tuple[str, str], Type | None] = {}
         self._returns: dict[str, Type | None] = {}
-        self._assigned: dict[str, dict[str, list[tuple[ast.expr, Function]]]] | None
+        self._assigned: dict[str, dict[str, list[tuple[ast.expr, FunctionView]]]] | None
         self._assigned = None
         self._locals: dict[int, dict[str, list[Binding]]] = {}
         self._declared: dict[str, dict[str, ast.expr]] | None = None
@@ -200,7 +148,7 @@ class TypeModel:
         self._library_bases: dict[str, list[stubs.Class]] = {}
 
     @property
-    def program(self) -> Program:
+    def program(self) -> ProgramView:
         program = self._program()
         assert program is not None, "asked after its program was freed"
         return program
@@ -311,7 +259,7 @@ class TypeModel:
         return imported.stub_set_of(self.ctx).member(cls, attr)
 
     # -- what the interpreter asks --------------------------------------------
-    def parameter(self, function: Function, name: str) -> Type | None:
+    def parameter(self, function: FunctionView, name: str) -> Type | None:
         """A parameter's declared type (the first one of a method: its class)."""
         node = function.node
         args = node.args
@@ -471,14 +419,14 @@ class TypeModel:
                 )
         return self._declared
 
-    def _assignments(self) -> dict[str, dict[str, list[tuple[ast.expr, Function]]]]:
+    def _assignments(self) -> dict[str, dict[str, list[tuple[ast.expr, FunctionView]]]]:
         """class -> attribute -> the values assigned to `self.<attribute>` in its
         methods (and `x = ...` in its body); an assignment whose value cannot be
         told (`self.a, self.b = f()`, `self.n += 1`, `for self.x in ...`) is
         recorded as an unknown value (`ast.expr()`), which makes the type unknown."""
         if self._assigned is not None:
             return self._assigned
-        found: dict[str, dict[str, list[tuple[ast.expr, Function]]]] = {}
+        found: dict[str, dict[str, list[tuple[ast.expr, FunctionView]]]] = {}
         for function in self.program.functions.values():
             name = function.class_name
             node = function.node
@@ -494,7 +442,7 @@ class TypeModel:
         return found
 
     # -- returns -------------------------------------------------------------
-    def _function_returns(self, function: Function) -> Type | None:
+    def _function_returns(self, function: FunctionView) -> Type | None:
         node = function.node
         if isinstance(node, ast.Lambda):
             return self.infer(node.body, function)
@@ -519,7 +467,7 @@ class TypeModel:
     def infer(
         self,
         node: ast.expr,
-        function: Function | None,
+        function: FunctionView | None,
         env: dict[str, Type | None] | None = None,
     ) -> Type | None:
         """The type of `node` in `function` (None: at module level), syntactically;
@@ -569,7 +517,7 @@ class TypeModel:
     def _operation(
         self,
         node: ast.BinOp,
-        function: Function | None,
+        function: FunctionView | None,
         env: dict[str, Type | None] | None,
     ) -> Type | None:
         """`now - self.last`: what the left operand's operator method returns (its
@@ -591,7 +539,7 @@ class TypeModel:
     def _comprehension(
         self,
         node: ast.ListComp | ast.SetComp | ast.GeneratorExp,
-        function: Function | None,
+        function: FunctionView | None,
         env: dict[str, Type | None] | None,
     ) -> Type | None:
         inner = dict(env or {})
@@ -603,7 +551,7 @@ class TypeModel:
     def _call(
         self,
         node: ast.Call,
-        function: Function | None,
+        function: FunctionView | None,
         env: dict[str, Type | None] | None,
     ) -> Type | None:
         func = node.func
@@ -664,7 +612,7 @@ class TypeModel:
     def _receiver(
         self,
         owner: ast.expr,
-        function: Function | None,
+        function: FunctionView | None,
         env: dict[str, Type | None] | None,
     ) -> Type | None:
         """What a method is called on: `self` (or `cls`) is an instance of its
@@ -692,7 +640,7 @@ class TypeModel:
     def _attribute(
         self,
         node: ast.Attribute,
-        function: Function | None,
+        function: FunctionView | None,
         env: dict[str, Type | None] | None,
     ) -> Type | None:
         owner = node.value
@@ -729,7 +677,10 @@ class TypeModel:
         return Seq(Msg(found.msg_type)) if found.array else Msg(found.msg_type)
 
     def _name(
-        self, name: str, function: Function | None, env: dict[str, Type | None] | None
+        self,
+        name: str,
+        function: FunctionView | None,
+        env: dict[str, Type | None] | None,
     ) -> Type | None:
         if env is not None and name in env:
             return env[name]
@@ -756,7 +707,7 @@ class TypeModel:
         finally:
             self._busy.discard(key)
 
-    def _is_local(self, name: str, function: Function | None) -> bool:
+    def _is_local(self, name: str, function: FunctionView | None) -> bool:
         """Whether `name` is bound in `function` (a local shadows a class)."""
         if function is None:
             return False
@@ -764,7 +715,7 @@ class TypeModel:
         params = {a.arg for a in [*args.posonlyargs, *args.args, *args.kwonlyargs]}
         return name in params or name in self._bindings(function)
 
-    def _bindings(self, function: Function) -> dict[str, list[Binding]]:
+    def _bindings(self, function: FunctionView) -> dict[str, list[Binding]]:
         found = self._locals.get(id(function.node))
         if found is None:
             found = self._locals[id(function.node)] = _local_bindings(function.node)
@@ -959,7 +910,7 @@ def _attribute_stores(
 
 
 def _is_self(
-    owner: ast.expr, function: Function | None, env: dict[str, Type | None] | None
+    owner: ast.expr, function: FunctionView | None, env: dict[str, Type | None] | None
 ) -> bool:
     """Whether `owner` is the first parameter of a method (`self`, `cls`), not
     rebound by a comprehension."""

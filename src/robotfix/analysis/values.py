@@ -17,7 +17,7 @@ from robotfix.annotations.units import Factors, Fit, Unit, fit, product
 from robotfix.messages import Declared
 
 if TYPE_CHECKING:
-    from robotfix.analysis.types import Type
+    from robotfix.analysis.typeterms import Type
 
 NUMERIC = frozenset({"int", "float", "bool"})
 CONTAINERS = frozenset({"tuple", "list", "dict"})

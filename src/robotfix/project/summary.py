@@ -45,7 +45,7 @@ if TYPE_CHECKING:  # the analysis is imported only when a summary is built
     )
     from robotfix.analysis.program import Function, Program
     from robotfix.analysis.state import State
-    from robotfix.analysis.types import Type
+    from robotfix.analysis.typeterms import Type
     from robotfix.analysis.values import Value
     from robotfix.annotations import ast as A
     from robotfix.annotations.extract import Names, Refinement
@@ -711,7 +711,7 @@ def _class(
 def _typed(program: Program, module: str, found: Type | None) -> Type | None:
     """A type as an importer names it: this module's classes by their dotted
     name."""
-    from robotfix.analysis.types import qualified
+    from robotfix.analysis.typeterms import qualified
 
     return qualified(found, module, set(program.classes))
 
