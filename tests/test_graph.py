@@ -918,3 +918,42 @@ def test_a_contract_through_an_alias_meets_publishers_held_in_locals(
         tmp_path, "grip", {"listener.py": listener, "talker.py": talker}
     )
     assert found == [("talker.py", 5, "RF101")]
+
+
+def test_a_clash_a_remapping_makes_points_at_the_remapping(tmp_path: Path) -> None:
+    """A launch file's `<remap>` that puts a Twist publisher on a TwistStamped
+    topic: the RF603 at both endpoints says where the remapping is, the line a
+    user changes (fresh-eyes round w05: only the endpoints were shown)."""
+    write(tmp_path / "bringup" / "package.xml", PACKAGE.format("bringup"))
+    write(
+        tmp_path / "bringup" / "launch" / "teleop.launch",
+        "<launch>\n"
+        '  <node pkg="teleop" type="keys.py" name="keys">\n'
+        '    <remap from="key_vel" to="cmd_vel"/>\n'
+        "  </node>\n"
+        '  <node pkg="teleop" type="base.py" name="base"/>\n'
+        "</launch>\n",
+    )
+    write(tmp_path / "teleop" / "package.xml", PACKAGE.format("teleop"))
+    write(
+        tmp_path / "teleop" / "scripts" / "keys.py",
+        "import rospy\nfrom geometry_msgs.msg import Twist\n"
+        "rospy.init_node('keys')\n"
+        "pub = rospy.Publisher('key_vel', Twist, queue_size=1)\n",
+    )
+    write(
+        tmp_path / "teleop" / "scripts" / "base.py",
+        "import rospy\nfrom geometry_msgs.msg import TwistStamped\n"
+        "def on_cmd(msg):\n    pass\n"
+        "rospy.init_node('base')\n"
+        "rospy.Subscriber('cmd_vel', TwistStamped, on_cmd)\n",
+    )
+    found = check_paths([tmp_path], Config(root=tmp_path)).diagnostics
+    clashes = [d for d in found if d.code == "RF603"]
+    assert len(clashes) == 2
+    for diag in clashes:
+        [note] = [n for n in diag.notes if "remapping makes" in n.message]
+        assert (
+            note.message == "this remapping makes `key_vel` of node `/keys` `/cmd_vel`"
+        )
+        assert (Path(note.path or "").name, note.line) == ("teleop.launch", 3)

@@ -29,7 +29,7 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Iterable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -304,7 +304,9 @@ def _type_mismatch(
             ),
             relation == TOGETHER,
         )
-        result.findings.append(Finding(diag, first, other))
+        result.findings.append(
+            Finding(_remapped(graph, diag, first, other), first, other)
+        )
         reported = True
     return reported
 
@@ -346,8 +348,25 @@ def _qos(
                 certain and not apart,
                 apart,
             )
+            diag = _remapped(graph, diag, index, other)
             result.findings.append(Finding(diag, index, other))
             break
+
+
+def _remapped(graph: Graph, diag: Diagnostic, *ends: int) -> Diagnostic:
+    """`diag` with a note at each launch file's remapping that gave one of its
+    endpoints the name they meet on (the cause a user fixes, often)."""
+    notes = []
+    for index in ends:
+        end = graph.ends[index]
+        if end.remapped is not None and end.resolved is not None:
+            node = graph.nodes[end.node].qualified
+            notes.append(
+                messages.remapped_here(
+                    end.remapped, node, end.endpoint.name, end.resolved
+                )
+            )
+    return replace(diag, notes=(*diag.notes, *notes)) if notes else diag
 
 
 def _may_meet(one: Iterable[str], other: Iterable[str]) -> bool:

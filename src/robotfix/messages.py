@@ -17,6 +17,7 @@ from robotfix.diagnostics import Diagnostic, Edit, Fix, Note, Rule, Severity, Sp
 
 if TYPE_CHECKING:  # a cached run, reporting only what it kept, needs no units
     from robotfix.annotations.units import Unit
+    from robotfix.ros.launch.model import Place as Placed
 
 
 @dataclass(frozen=True)
@@ -927,6 +928,15 @@ def parameter_section_unmatched(
                 "its section apply"
             ),
         ),
+    )
+
+
+def remapped_here(place: Placed, node: str, written: str | None, resolved: str) -> Note:
+    """Where a launch file's remapping renamed an endpoint of a graph finding."""
+    return Note(
+        f"this remapping makes `{written or '?'}` of node `{node}` `{resolved}`",
+        place.path,
+        place.line,
     )
 
 

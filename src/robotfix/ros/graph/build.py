@@ -49,6 +49,7 @@ class Instance:
     executable: str | None = None
     remaps: list[tuple[str | None, str | None]] = field(default_factory=list)
     code: str = ""  # the file of its code, shown when its name is not known
+    remapped_at: list[Place] = field(default_factory=list)  # each rule's place
 
     @property
     def qualified(self) -> str:
@@ -67,6 +68,7 @@ class End:
     endpoint: Endpoint
     resolved: str | None
     certain: bool  # the name is known for sure (no remapping rule left unread)
+    remapped: Place | None = None  # the launch file's rule that renamed it
 
     @property
     def family(self) -> str:
@@ -156,6 +158,7 @@ def build(code: dict[str, FileGraph], started: list[Started]) -> Graph:
                     entry.package,
                     entry.executable,
                     remaps,
+                    remapped_at=[r.place for r in entry.remappings],
                 )
                 _add(graph, instance, path, found, owner)
     for path in sorted(code):
@@ -183,10 +186,32 @@ def _add(
         if endpoint.kind == PARAMETER:  # a node's own: not a graph name
             graph.ends.append(End(index, path, endpoint, endpoint.name, True))
             continue
-        resolved = expand(
+        named = expand(
             endpoint.name, instance.namespace, instance.name, endpoint.handle
         )
         resolved, uncertain = remap(
-            resolved, instance.remaps, instance.namespace, instance.name
+            named, instance.remaps, instance.namespace, instance.name
         )
-        graph.ends.append(End(index, path, endpoint, resolved, not uncertain))
+        graph.ends.append(
+            End(
+                index,
+                path,
+                endpoint,
+                resolved,
+                not uncertain,
+                _rule_place(named, resolved, instance),
+            )
+        )
+
+
+def _rule_place(
+    named: str | None, resolved: str | None, instance: Instance
+) -> Place | None:
+    """Where the remapping rule that turned `named` into `resolved` is written
+    (the first rule that matches, as `remap` applies it); None when no rule did."""
+    if named is None or resolved == named:
+        return None
+    for (source, _), place in zip(instance.remaps, instance.remapped_at, strict=False):
+        if expand(source, instance.namespace, instance.name) == named:
+            return place
+    return None
