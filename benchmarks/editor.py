@@ -22,12 +22,15 @@ environment as it is.
 
 Usage: python benchmarks/editor.py [EDITS] [COLD_RUNS] [REAL_NODE.py ...]
 A real node given on the command line (for example navigation2's
-nav2_simple_commander/robot_navigator.py, 1,294 lines) is measured too, with a comment
-line edited at its middle.
+nav2_simple_commander/robot_navigator.py, 1,294 lines) is measured too, twice: with a
+comment line edited at its middle (an edit of text the memo keys on: nothing can be
+replayed), and with the number nearest its middle inside a function body changed
+(`name@number`: the edit the memo replays the other functions around).
 """
 
 from __future__ import annotations
 
+import ast
 import json
 import os
 import re
@@ -86,6 +89,34 @@ def edited_real(text: str, n: int) -> str:
     middle = len(lines) // 2
     indent = re.match(r"[ \t]*", lines[middle]).group(0)  # type: ignore[union-attr]
     return "".join([*lines[:middle], f"{indent}# edit {n}\n", *lines[middle:]])
+
+
+def edited_real_number(text: str, n: int) -> str:
+    """A real node with the number nearest its middle that a function body holds
+    changed (a gain, a period, a limit tuned): the edit the memo can replay the
+    other functions around."""
+    tree = ast.parse(text)
+    middle = len(text.splitlines()) // 2
+    numbers = [
+        node
+        for function in ast.walk(tree)
+        if isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef))
+        for statement in function.body
+        for node in ast.walk(statement)
+        if isinstance(node, ast.Constant)
+        and type(node.value) in (int, float)
+        and node.lineno == node.end_lineno
+    ]
+    if not numbers:
+        return edited_real(text, n)
+    target = min(numbers, key=lambda c: (abs(c.lineno - middle), c.col_offset))
+    value = target.value + (n % 9 + 1) * (0.125 if type(target.value) is float else 1)
+    lines = text.splitlines(keepends=True)
+    line = lines[target.lineno - 1]
+    start = len(line.encode()[: target.col_offset].decode())
+    end = len(line.encode()[: target.end_col_offset].decode())
+    lines[target.lineno - 1] = line[:start] + repr(value) + line[end:]
+    return "".join(lines)
 
 
 def per_edit(
@@ -222,6 +253,9 @@ def main(edits: int, cold_runs: int, real: list[Path]) -> None:
             print(json.dumps(per_edit(name, text, edits, folder)), flush=True)
         for node in real:
             row = per_edit(node.stem, node.read_text(), edits, folder, edited_real)
+            print(json.dumps(row), flush=True)
+            name, text = f"{node.stem}@number", node.read_text()
+            row = per_edit(name, text, edits, folder, edited_real_number)
             print(json.dumps(row), flush=True)
         node = folder / "cold_node.py"
         node.write_text(files["annotated_300"])

@@ -114,6 +114,9 @@ class UnitMemo:
         self._table: OrderedDict[tuple[object, ...], Record] = OrderedDict()
         self._max = max_entries
         self._identity: tuple[object, ...] = ()
+        self._bases: dict[str, int] = {}  # skeleton digest -> its items in the table
+        self._last = ""  # the skeleton digest of the check before ("": not made)
+        self._text: str | None = None  # the text of the check before
         self.hits = 0
         self.misses = 0
 
@@ -141,8 +144,23 @@ class UnitMemo:
             a is not b for a, b in zip(identity, self._identity, strict=True)
         ):
             self._table.clear()
+            self._bases.clear()
             self._identity = identity
-        return Check(self, ctx, program, tree, statics)
+        # Every key holds the skeleton, which an edit of the code (not of a number
+        # in a body) changes at every keystroke: then no item can hit. Such an
+        # edit is told from the text alone (the skeleton is not made), and items
+        # are recorded only once a skeleton is checked twice in a row.
+        text, before = ctx.source.text, self._text
+        self._text = text
+        if before is not None and not _numbers_only(before, text):
+            self._last = ""
+            return None
+        lines = text.splitlines(keepends=True)
+        base = hashlib.sha1(skeleton(tree, lines).encode()).hexdigest()
+        last, self._last = self._last, base
+        if base != last and base not in self._bases:
+            return None
+        return Check(self, ctx, program, tree, statics, lines, base)
 
     def get(self, key: tuple[object, ...]) -> Record | None:
         found = self._table.get(key)
@@ -151,10 +169,20 @@ class UnitMemo:
         return found
 
     def put(self, key: tuple[object, ...], record: Record) -> None:
+        if key not in self._table:
+            self._count(key, 1)
         self._table[key] = record
         self._table.move_to_end(key)
         while len(self._table) > self._max:
-            self._table.popitem(last=False)
+            self._count(self._table.popitem(last=False)[0], -1)
+
+    def _count(self, key: tuple[object, ...], change: int) -> None:
+        base = str(key[0])
+        left = self._bases.get(base, 0) + change
+        if left > 0:
+            self._bases[base] = left
+        else:
+            self._bases.pop(base, None)
 
 
 def _resolver_state(ctx: FileContext) -> object:
@@ -172,14 +200,16 @@ class Check:
         program: Program,
         tree: ast.Module,
         statics: dict[str, Value],
+        lines: list[str],
+        base: str,
     ) -> None:
         self.memo = memo
         self.ctx = ctx
         self.program = program
         self.statics = statics
         self.tree = tree
-        self.lines = ctx.source.text.splitlines(keepends=True)
-        self.base = hashlib.sha1(skeleton(tree, self.lines).encode()).hexdigest()
+        self.lines = lines
+        self.base = base  # the skeleton's digest (`skeleton`)
         self.starts: list[tuple[int, int]] = []
         self.roots: list[ast.stmt] = []
         for statement in tree.body:
@@ -498,6 +528,37 @@ def _from_walk(key: object, nodes: list[ast.AST]) -> object:
 
 
 # -- the skeleton ------------------------------------------------------------------
+# the characters of most numbers' literals (`1_000`, `2.5e-3`, `3j`; an edit of a
+# hex literal is taken for one of code: only slower)
+_NUMBER_CHARS = frozenset("0123456789_.eE+-jJ")
+
+
+def _numbers_only(before: str, after: str) -> bool:
+    """Whether the one region where two texts differ holds only characters of
+    numbers: otherwise text that `skeleton` keeps as it is changed, and so did
+    the skeleton."""
+    old, new = before.splitlines(keepends=True), after.splitlines(keepends=True)
+    first, shortest = 0, min(len(old), len(new))
+    while first < shortest and old[first] == new[first]:
+        first += 1
+    last = 0
+    while last < shortest - first and old[-1 - last] == new[-1 - last]:
+        last += 1
+    a = "".join(old[first : len(old) - last])
+    b = "".join(new[first : len(new) - last])
+    start, end = 0, min(len(a), len(b))
+    while start < end and a[start] == b[start]:
+        start += 1
+    tail = 0
+    while tail < end - start and a[-1 - tail] == b[-1 - tail]:
+        tail += 1
+    if "#" in a[a.rfind("\n", 0, start) + 1 : start]:
+        return False  # in a comment (or after a `#` in a string: only slower)
+    return _NUMBER_CHARS.issuperset(a[start : len(a) - tail]) and (
+        _NUMBER_CHARS.issuperset(b[start : len(b) - tail])
+    )
+
+
 def skeleton(tree: ast.Module, lines: list[str]) -> str:
     """The module's text with the numeric literals of function bodies blanked where
     only their own function reads them (see the module docstring)."""
