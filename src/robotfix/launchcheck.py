@@ -173,11 +173,15 @@ class LaunchRun:
         for path, entries in by_file.items():
             with guard(path, out, faults):
                 for started in entries:
+                    cpp = table.cpp.owners_of(started.entry)  # its C++ node
+                    if cpp and started.entry.ros == 2:
+                        out += _ros2_entry(started.entry, cpp, table, loaded)
                     code = [by_real[f] for f in sorted(started.files) if f in by_real]
                     if not code:
                         continue
                     if started.entry.ros == 2:
-                        out += _ros2_entry(started.entry, code, table, loaded)
+                        owners = _owners_of(code)
+                        out += _ros2_entry(started.entry, owners, table, loaded)
                     else:
                         out += _ros1_entry(started.entry, code, table)
         from robotfix.paramcheck import unmatched_sections
@@ -308,9 +312,12 @@ def _node_words(entry: NodeEntry, owners: list[tuple[Summary, str]]) -> str:
 
 
 def _ros2_entry(
-    entry: NodeEntry, code: list[Summary], table: Table, loaded: dict[str, P.ParamFile]
+    entry: NodeEntry,
+    owners: list[tuple[Summary, str]],
+    table: Table,
+    loaded: dict[str, P.ParamFile],
 ) -> list[Diagnostic]:
-    owners = _owners_of(code)
+    """RF401/RF101 and RF601 for one entry, against its code's node objects."""
     if not owners:
         return []
     out: list[Diagnostic] = []

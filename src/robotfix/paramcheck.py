@@ -35,6 +35,7 @@ from robotfix import messages
 from robotfix.analysis.parameters import ROSPY, Attached, ParamDecl, Summary, summarize
 from robotfix.annotations import ast as A
 from robotfix.config import Config
+from robotfix.cppparams import CPP_TYPE_WHY, CppParams
 from robotfix.diagnostics import Diagnostic, Span
 from robotfix.faults import Fault, guard
 from robotfix.fs import UnreadableError, read_text
@@ -122,7 +123,7 @@ def check_parameter_files(
     project: Project | None = None,
     faults: list[Fault] | None = None,
     launches: Launches | None = None,
-    cpp_nodes: Iterable[str] = (),
+    cpp_nodes: CppParams | None = None,
 ) -> list[Diagnostic]:
     """Diagnostics for the parameter files and generate_parameter_library
     definitions of a run; `python_files` are those whose declarations count. A
@@ -137,8 +138,8 @@ def check_parameter_files(
     `launches`: what the run's launch files add (`launchcheck`): the names they
     give nodes, the parameter files they name, and their own checks, made with
     the same table (a fault on one launch file is a fault of that file).
-    `cpp_nodes`: the names of the run's C++ nodes (`ros.graph.cpp`): a section
-    naming one is no RF602, though its values are not checked."""
+    `cpp_nodes`: the run's C++ nodes (`cppparams`): their names (a section
+    naming one is no RF602) and declarations, checked as a Python node's."""
     if launches is not None:
         files = [*files, *(f for f in launches.files if f not in files)]
     loud = {str(p) for p in [*named, *definition_files]}
@@ -368,12 +369,16 @@ class Table:
         summaries: list[Summary],
         definitions: dict[str, list[tuple[P.Definition, str]]],
         renamed: dict[str, set[str]] | None = None,
-        cpp_nodes: Iterable[str] = (),
+        cpp_nodes: CppParams | None = None,
     ) -> None:
-        self.summaries = summaries
-        self.cpp_nodes = set(cpp_nodes)  # C++ nodes' names: their code is not read
+        self.cpp = cpp_nodes or CppParams()  # C++ nodes: read by `ros.graph.cpp`
+        self.summaries = summaries = [*summaries, *self.cpp.summaries]
+        self.cpp_nodes = self.cpp.names
         self.definitions = definitions
-        self.renamed = renamed or {}  # real paths
+        self.renamed = {  # real paths
+            name: {*(renamed or {}).get(name, ()), *self.cpp.renamed.get(name, ())}
+            for name in {*(renamed or {}), *self.cpp.renamed}
+        }
         self.real = {s.path: os.path.realpath(s.path) for s in summaries}
         self.packages = {s.path: _package_of(Path(s.path)) for s in summaries}
         # ROS 2 owners whose parameters a file may set: (summary, owner, names)
@@ -500,7 +505,7 @@ def _declaration_failure(decl: ParamDecl, typed: P.Typed) -> Failure | None:
             P.type_words(typed.type),
             P.type_words(decl.type),
             declared,
-            TYPE_WHY,
+            TYPE_WHY if decl.path.endswith(".py") else CPP_TYPE_WHY,
         )
     value = typed.value
     if (

@@ -117,6 +117,8 @@ def _owners(found: FileGraph, plugin: str | None) -> list[str]:
     seen: list[str] = []
     for endpoint in found.endpoints:
         owner = endpoint.owner
+        if endpoint.kind == PARAMETER and endpoint.name is None:
+            continue  # a parameter of unknown name: not in the graph
         if (
             plugin is not None
             and owner != plugin
@@ -179,6 +181,8 @@ def _add(
     graph.nodes.append(instance)
     for endpoint in found.endpoints:
         if endpoint.owner != owner:
+            continue
+        if endpoint.kind == PARAMETER and endpoint.name is None:
             continue
         if endpoint.kind == PARAMETER:  # a node's own: not a graph name
             graph.ends.append(End(index, path, endpoint, endpoint.name, True))

@@ -56,6 +56,7 @@ WORDS = (
     b"param",
     b"TwistPublisher",
     b"TwistSubscriber",
+    b"ClassLoader",
 )
 
 # method -> (kind, ros, name position, qos position, default position)
@@ -91,6 +92,21 @@ _MAKERS = re.compile(
     ).encode()
 )
 _NODE_BASES = frozenset({"Node", "LifecycleNode"})
+_RCLCPP_BASES = frozenset(
+    {"Node", "LifecycleNode", "rclcpp::Node", "rclcpp_lifecycle::LifecycleNode"}
+)
+# what declares parameters this file does not name: a node that takes its
+# parameters from overrides or lets any be set, parameters declared in bulk or by
+# a helper (nav2_util's, a base class's `add_parameter`), generated code
+# (generate_parameter_library's ParamListener), plugins (pluginlib, which declare
+# parameters under their own names). Each is a parameter endpoint without a name,
+# its `value` the word (`cppparams` reads them; the graph shows none).
+OPENING = re.compile(
+    rb"\b(?:(allow_undeclared_parameters|automatically_declare_parameters_from_"
+    rb"overrides)\s*\(\s*true\b|(declare_parameters|declare_parameter_if_not_"
+    rb"declared|add_parameter|ParamListener|ClassLoader|createUniqueInstance|"
+    rb"createSharedInstance|createUnmanagedInstance)\b)"
+)
 _PTR = re.compile(r"(::)?(ConstPtr|Ptr|SharedPtr|ConstSharedPtr|UniquePtr)$")
 
 _PARSER: Any = None
@@ -111,6 +127,8 @@ def read_cpp(data: bytes) -> FileGraph:
     found = FileGraph()
     if len(data) > MAX_CPP_BYTES or not any(w in data for w in WORDS):
         return found
+    if b"param" in data or b"ClassLoader" in data:
+        found.endpoints += _opening(data)
     if _MAKERS.search(data) is None:
         return found
     try:
@@ -120,6 +138,17 @@ def read_cpp(data: bytes) -> FileGraph:
     _File(found, data).read(tree.root_node)
     found.endpoints.sort(key=lambda e: (e.line, e.col, e.kind))
     return found
+
+
+def _opening(data: bytes) -> list[Endpoint]:
+    """The words of `OPENING` in a file, as parameter endpoints without a name."""
+    out = []
+    for match in OPENING.finditer(data):
+        line = data.count(b"\n", 0, match.start()) + 1
+        word = (match.group(1) or match.group(2)).decode()
+        col = match.start() - data.rfind(b"\n", 0, match.start()) - 1
+        out.append(Endpoint(PARAMETER, None, (), line, col, "", None, 2, "", word))
+    return out
 
 
 def _text(node: Any) -> str:
@@ -135,6 +164,8 @@ class _File:
         self.handles: dict[str, str] = {}  # NodeHandle variable -> its namespace
         self.calls: list[tuple[Any, str]] = []  # (call node, enclosing class)
         self.ros1 = False
+        # a descriptor may make a declaration's type dynamic: then none is certain
+        self.dynamic = b"dynamic_typing" in data
 
     def read(self, root: Any) -> None:
         # in source order: tree-sitter's order of one name's captures varies from
@@ -172,9 +203,27 @@ class _File:
         for child in node.children:
             if child.type == "base_class_clause":
                 for base in child.children:
-                    last = _text(base).split("<")[0].split("::")[-1]
+                    written = re.sub(r"\s+", "", _text(base).split("<")[0])
+                    last = written.split("::")[-1]
                     if last in _NODE_BASES:
                         self.found.nodes.setdefault(cls, [])
+                    if last in _NODE_BASES and written not in _RCLCPP_BASES:
+                        # another package's node class: it may declare parameters
+                        point = base.start_point
+                        self.found.endpoints.append(
+                            Endpoint(
+                                PARAMETER,
+                                None,
+                                (),
+                                point[0] + 1,
+                                point[1],
+                                cls,
+                                None,
+                                2,
+                                "",
+                                written,
+                            )
+                        )
 
     def _function(self, node: Any) -> None:
         """A function's first parameter's type, for a roscpp callback."""
@@ -329,9 +378,11 @@ class _File:
         if default_at is not None and len(args) > default_at:
             value = _text(args[default_at])[:80]
         if kind == PARAMETER and template is not None and not types:
-            types = (_text(template).strip("<>").strip(),)
+            types = (_text(template)[1:-1].strip(),)  # `<std::vector<double>>`
         elif kind == PARAMETER and ros == 2 and default_at is not None:
             types = _literal_type(args[default_at] if len(args) > default_at else None)
+        if kind == PARAMETER and ros == 2 and self.dynamic:
+            types = ()
         if handle == "?":
             name = name if name is not None and name.startswith("/") else None
             handle = ""
@@ -489,7 +540,9 @@ def _enclosing(node: Any) -> str:
 
 def _arguments(node: Any) -> list[Any]:
     """A call's arguments (its `argument_list`'s children but punctuation)."""
-    return [c for c in node.children if c.type not in ("(", ")", ",", "comment")]
+    return [
+        c for c in node.children if c.type not in ("(", ")", "{", "}", ",", "comment")
+    ]
 
 
 def _owner(cls: str, receiver: str) -> str:
@@ -519,10 +572,28 @@ def _interface(text: str, aliases: dict[str, str], kind: str) -> tuple[str, ...]
     return ()
 
 
-def _literal_type(node: Any) -> tuple[str, ...]:
+def _literal_type(node: Any, depth: int = 0) -> tuple[str, ...]:
     """The type a literal default gives a parameter (`declare_parameter("x",
-    false)`: bool, as rclcpp's ParameterValue of it); () for anything else."""
+    false)`: bool, as rclcpp's ParameterValue of it; `-0.5`,
+    `rclcpp::ParameterValue(0.5)` or `{0.5}`, `std::string("map")`); () for
+    anything else."""
     kind = node.type if node is not None else ""
+    if kind == "unary_expression" and _text(node).startswith("-") and depth < 4:
+        return _literal_type(node.child_by_field_name("argument"), depth + 1)
+    if kind in ("call_expression", "compound_literal_expression") and depth < 4:
+        func = node.child_by_field_name(
+            "function" if kind == "call_expression" else "type"
+        )
+        made = re.sub(r"\s+", "", _text(func))
+        args = node.child_by_field_name(
+            "arguments" if kind == "call_expression" else "value"
+        )
+        inner = _arguments(args) if args is not None else []
+        if made in ("rclcpp::ParameterValue", "ParameterValue") and len(inner) == 1:
+            return _literal_type(inner[0], depth + 1)
+        if made in ("std::string", "string") and len(inner) == 1:
+            return ("std::string",) if inner[0].type == "string_literal" else ()
+        return ()
     if kind in ("true", "false"):
         return ("bool",)
     if kind == "string_literal":

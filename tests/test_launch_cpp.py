@@ -1,0 +1,104 @@
+"""C++ nodes' parameters (issue 23, section 1) against launch files and parameter
+files: the workspaces under tests/cases/cpp_params/ (after ros2/demos' image_tools
+and navigation2's servers and nav2_params.yaml), with inline expectations in
+their launch and YAML files (strict for the parameter rules), and the reading of
+C++ declarations on its own."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from robotfix.api import check_paths
+from robotfix.config import Config
+from robotfix.cppparams import CppParams, ros2_type
+from robotfix.ros.graph.cpp import read_cpp
+from robotfix.testing.expectations import compare_files
+
+CASES = Path(__file__).parent / "cases" / "cpp_params"
+SUFFIXES = (".py", ".yaml", ".xml", ".launch")
+PARAMETER_RULES = {"RF101", "RF401", "RF601", "RF602", "RF004"}
+
+
+@pytest.mark.parametrize(
+    "workspace", sorted(p for p in CASES.iterdir() if p.is_dir()), ids=lambda p: p.name
+)
+def test_cpp_parameters_of_a_workspace(workspace: Path) -> None:
+    found = check_paths([workspace], Config(root=workspace)).diagnostics
+    found = [d for d in found if d.code in PARAMETER_RULES]
+    files = sorted(p for p in workspace.rglob("*") if p.name.endswith(SUFFIXES))
+    problems = compare_files(files, found)
+    assert not problems, "\n".join(problems)
+
+
+def test_a_cpp_declarations_type_is_certain_only_where_rclcpps_is() -> None:
+    source = b"""
+class Driver : public rclcpp::Node {
+  Driver() : Node("driver") {
+    declare_parameter<double>("a", 1);
+    declare_parameter("b", 0.5);
+    declare_parameter("c", -3);
+    declare_parameter("d", rclcpp::ParameterValue{2.0});
+    declare_parameter("e", std::string("map"));
+    declare_parameter<std::vector<double>>("f", {1.0});
+    declare_parameter("g", some_default_);
+    declare_parameter<rclcpp::Duration>("h", 1.0);
+  }
+};
+"""
+    graph = read_cpp(source)
+    types = {
+        e.name: ros2_type(e.types[0]) if e.types else None for e in graph.endpoints
+    }
+    assert types == {
+        "a": "double",
+        "b": "double",
+        "c": "integer",
+        "d": "double",
+        "e": "string",
+        "f": "double_array",
+        "g": None,
+        "h": None,
+    }
+    dynamic = read_cpp(source.replace(b"{\n  Driver", b"{ // dynamic_typing\n  D"))
+    assert all(not e.types for e in dynamic.endpoints)
+
+
+@pytest.mark.parametrize(
+    "opening",
+    [
+        'rclcpp::NodeOptions().allow_undeclared_parameters(true)',
+        "declare_parameter(name_ + \".x\", 1.0)",
+        "nav2_util::declare_parameter_if_not_declared(node, \"x\", 1.0)",
+        "loader_.createUniqueInstance(type)",
+        "params_ = std::make_shared<ParamListener>(node)",
+    ],
+)
+def test_code_that_may_declare_more_keeps_rf601_silent(opening: str) -> None:
+    source = f"""
+class Driver : public rclcpp::Node {{
+  Driver() : Node("driver") {{
+    declare_parameter("speed", 0.5);
+    auto x = {opening};
+  }}
+}};
+""".encode()
+    summary = CppParams({"driver.cpp": read_cpp(source)}).summaries[0]
+    assert "Driver" in summary.open_owners
+    without = source.replace(f"auto x = {opening};".encode(), b"")
+    closed = CppParams({"driver.cpp": read_cpp(without)})
+    assert "Driver" not in closed.summaries[0].open_owners
+
+
+def test_a_node_class_of_another_package_may_declare_more() -> None:
+    source = b"""
+class Smoother : public nav2_util::LifecycleNode {
+  Smoother() : nav2_util::LifecycleNode("velocity_smoother") {
+    declare_parameter("smoothing_frequency", 20.0);
+  }
+};
+"""
+    summary = CppParams({"smoother.cpp": read_cpp(source)}).summaries[0]
+    assert summary.node_names == {"Smoother": ["velocity_smoother"]}
+    assert "Smoother" in summary.open_owners
