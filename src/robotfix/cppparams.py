@@ -34,7 +34,7 @@ from typing import TYPE_CHECKING
 
 from robotfix.fs import UnreadableError, read_regular
 from robotfix.ros.executables import MAX_BUILD_BYTES
-from robotfix.ros.graph.model import PARAMETER, FileGraph
+from robotfix.ros.graph.model import OPENS, PARAMETER, FileGraph
 from robotfix.ros.package import package_folder
 
 if TYPE_CHECKING:  # the analysis is imported only when the summaries are made
@@ -125,7 +125,7 @@ class CppParams:
         folders: set[Path] = set()
         for path in sorted(self.graphs):
             graph = self.graphs[path]
-            params = [e for e in graph.endpoints if e.kind == PARAMETER]
+            params = [e for e in graph.endpoints if e.kind in (PARAMETER, OPENS)]
             if graph.ros != 2 or not (params or graph.nodes):
                 continue
             shown = [(e.owner, e.name, e.types, e.line, e.col, e.value) for e in params]
@@ -151,7 +151,7 @@ class CppParams:
             summary = _summary(path, graph) if graph.ros == 2 else None
             if summary is None:
                 continue
-            if any(e.kind == PARAMETER and e.value == AUTO for e in graph.endpoints):
+            if any(e.kind == OPENS and e.value == AUTO for e in graph.endpoints):
                 auto.add(package_folder(Path(path)))
             by_path[path] = summary
             summaries.append(summary)
@@ -177,7 +177,7 @@ def _summary(path: str, graph: FileGraph) -> Summary | None:
     summary = Summary(path)
     summary.node_names = {o: list(n) for o, n in graph.nodes.items()}
     for endpoint in graph.endpoints:
-        if endpoint.kind != PARAMETER or endpoint.ros != 2:
+        if endpoint.kind not in (PARAMETER, OPENS) or endpoint.ros != 2:
             continue
         if endpoint.name is None:  # computed, or code that declares more
             summary.open_owners.add(endpoint.owner)

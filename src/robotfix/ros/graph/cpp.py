@@ -37,6 +37,7 @@ from robotfix.ros.graph.model import (
     ACTION_SERVER,
     CLIENT,
     MIDDLE,
+    OPENS,
     PARAMETER,
     PUBLISHER,
     SERVICE,
@@ -100,7 +101,7 @@ _RCLCPP_BASES = frozenset(
 # a helper (nav2_util's, a base class's `add_parameter`), generated code
 # (generate_parameter_library's ParamListener), plugins (pluginlib, which declare
 # parameters under their own names). Each is a parameter endpoint without a name,
-# its `value` the word (`cppparams` reads them; the graph shows none).
+# its `value` the word (an OPENS endpoint: `cppparams` reads them, the graph not).
 OPENING = re.compile(
     rb"\b(?:(allow_undeclared_parameters|automatically_declare_parameters_from_"
     rb"overrides)\s*\(\s*true\b|(declare_parameters|declare_parameter_if_not_"
@@ -147,7 +148,7 @@ def _opening(data: bytes) -> list[Endpoint]:
         line = data.count(b"\n", 0, match.start()) + 1
         word = (match.group(1) or match.group(2)).decode()
         col = match.start() - data.rfind(b"\n", 0, match.start()) - 1
-        out.append(Endpoint(PARAMETER, None, (), line, col, "", None, 2, "", word))
+        out.append(Endpoint(OPENS, None, (), line, col, "", None, 2, "", word))
     return out
 
 
@@ -212,7 +213,7 @@ class _File:
                         point = base.start_point
                         self.found.endpoints.append(
                             Endpoint(
-                                PARAMETER,
+                                OPENS,
                                 None,
                                 (),
                                 point[0] + 1,
