@@ -68,9 +68,9 @@ class Driver : public rclcpp::Node {
 @pytest.mark.parametrize(
     "opening",
     [
-        'rclcpp::NodeOptions().allow_undeclared_parameters(true)',
-        "declare_parameter(name_ + \".x\", 1.0)",
-        "nav2_util::declare_parameter_if_not_declared(node, \"x\", 1.0)",
+        "rclcpp::NodeOptions().allow_undeclared_parameters(true)",
+        'declare_parameter(name_ + ".x", 1.0)',
+        'declare_parameter_if_not_declared(shared_from_this(), name_ + ".x", 1.0)',
         "loader_.createUniqueInstance(type)",
         "params_ = std::make_shared<ParamListener>(node)",
     ],
@@ -102,3 +102,26 @@ class Smoother : public nav2_util::LifecycleNode {
     summary = CppParams({"smoother.cpp": read_cpp(source)}).summaries[0]
     assert summary.node_names == {"Smoother": ["velocity_smoother"]}
     assert "Smoother" in summary.open_owners
+
+
+def test_nav2s_helper_declares_on_the_node_it_is_handed() -> None:
+    source = b"""
+class Smoother : public rclcpp_lifecycle::LifecycleNode {
+  Smoother() : LifecycleNode("velocity_smoother") {}
+  void on_configure() {
+    auto node = shared_from_this();
+    declare_parameter_if_not_declared(node, "odom_duration", ParameterValue(0.1));
+    declare_parameter_if_not_declared(
+      node, "max_velocity", rclcpp::ParameterValue(std::vector<double>{0.5, 0.0}));
+    nav2_util::declare_parameter_if_not_declared(other_, "scale", 1.0);
+  }
+};
+"""
+    summary = CppParams({"smoother.cpp": read_cpp(source)}).summaries[0]
+    found = {(d.owner, d.name, d.type) for d in summary.decls}
+    assert found == {
+        ("Smoother", "odom_duration", "double"),
+        ("Smoother", "max_velocity", "double_array"),
+        ("Smoother.other_", "scale", "double"),
+    }
+    assert not summary.open_owners

@@ -67,6 +67,8 @@ _METHODS: dict[str, tuple[str, int, int, int | None, int | None]] = {
     "create_service": (SERVICE, 2, 0, None, None),
     "create_client": (CLIENT, 2, 0, None, None),
     "declare_parameter": (PARAMETER, 2, 0, None, 1),
+    # nav2_util's helper: (node, name, default), declares when not yet declared
+    "declare_parameter_if_not_declared": (PARAMETER, 2, 1, None, 2),
     "advertise": (PUBLISHER, 1, 0, None, None),
     "subscribe": (SUBSCRIPTION, 1, 0, None, None),
     "advertiseService": (SERVICE, 1, 0, None, None),
@@ -98,15 +100,15 @@ _RCLCPP_BASES = frozenset(
 )
 # what declares parameters this file does not name: a node that takes its
 # parameters from overrides or lets any be set, parameters declared in bulk or by
-# a helper (nav2_util's, a base class's `add_parameter`), generated code
+# a base class's helper (nav2's `add_parameter`), generated code
 # (generate_parameter_library's ParamListener), plugins (pluginlib, which declare
 # parameters under their own names). Each is a parameter endpoint without a name,
 # its `value` the word (an OPENS endpoint: `cppparams` reads them, the graph not).
 OPENING = re.compile(
     rb"\b(?:(allow_undeclared_parameters|automatically_declare_parameters_from_"
-    rb"overrides)\s*\(\s*true\b|(declare_parameters|declare_parameter_if_not_"
-    rb"declared|add_parameter|ParamListener|ClassLoader|createUniqueInstance|"
-    rb"createSharedInstance|createUnmanagedInstance)\b)"
+    rb"overrides)\s*\(\s*true\b|(declare_parameters|add_parameter|ParamListener|"
+    rb"ClassLoader|createUniqueInstance|createSharedInstance|"
+    rb"createUnmanagedInstance)\b)"
 )
 _PTR = re.compile(r"(::)?(ConstPtr|Ptr|SharedPtr|ConstSharedPtr|UniquePtr)$")
 
@@ -363,6 +365,8 @@ class _File:
         args = _arguments(args_node)
         handle = ""
         recv_text = _text(receiver) if receiver is not None else "this"
+        if method == "declare_parameter_if_not_declared":
+            recv_text = _helper_node(call, args[0] if args else None)
         owner = _owner(_enclosing(call), recv_text)
         if ros == 1:
             self.ros1 = True
@@ -539,6 +543,28 @@ def _enclosing(node: Any) -> str:
     return ""
 
 
+_SELF = re.compile(r"(?:this->)?shared_from_this\(\)|\*?this")
+
+
+def _helper_node(call: Any, node: Any) -> str:
+    """The node a helper is handed (`declare_parameter_if_not_declared(node,
+    ...)`), as a receiver: "this" for `this`, `shared_from_this()`, or a local
+    bound to it in the same function (`auto node = shared_from_this();`, as
+    nav2's servers do); else as written."""
+    text = re.sub(r"\s+", "", _text(node))
+    if _SELF.fullmatch(text):
+        return "this"
+    body = _body(call)
+    if body is not None and re.fullmatch(r"[A-Za-z_]\w*", text):
+        bound = re.search(
+            rf"\b{text}\s*=\s*(?:this\s*->\s*)?shared_from_this\s*\(\s*\)\s*;",
+            _text(body),
+        )
+        if bound is not None:
+            return "this"
+    return text
+
+
 def _arguments(node: Any) -> list[Any]:
     """A call's arguments (its `argument_list`'s children but punctuation)."""
     return [
@@ -594,6 +620,8 @@ def _literal_type(node: Any, depth: int = 0) -> tuple[str, ...]:
             return _literal_type(inner[0], depth + 1)
         if made in ("std::string", "string") and len(inner) == 1:
             return ("std::string",) if inner[0].type == "string_literal" else ()
+        if made.startswith("std::vector<"):  # `std::vector<double>{0.5, 0.0}`
+            return (made,)
         return ()
     if kind in ("true", "false"):
         return ("bool",)
