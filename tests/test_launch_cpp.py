@@ -125,3 +125,22 @@ class Smoother : public rclcpp_lifecycle::LifecycleNode {
         ("Smoother.other_", "scale", "double"),
     }
     assert not summary.open_owners
+
+
+def test_a_tests_nodes_are_not_the_nodes_named_so(tmp_path: Path) -> None:
+    package = tmp_path / "tests" / "driver"
+    (package / "test").mkdir(parents=True)
+    (package / "package.xml").write_text("<package><name>driver</name></package>")
+    source = b"""
+class Driver : public rclcpp::Node {
+  Driver() : Node("driver") { declare_parameter("speed", 1); }
+};
+"""
+    found = CppParams(
+        {
+            str(package / "src" / "driver.cpp"): read_cpp(source),
+            str(package / "test" / "test_driver.cpp"): read_cpp(source),
+        }
+    )
+    assert [s.path for s in found.summaries] == [str(package / "src" / "driver.cpp")]
+    assert found.names == {"driver"}

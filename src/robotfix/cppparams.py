@@ -35,7 +35,7 @@ from typing import TYPE_CHECKING
 from robotfix.fs import UnreadableError, read_regular
 from robotfix.ros.executables import MAX_BUILD_BYTES
 from robotfix.ros.graph.model import OPENS, PARAMETER, FileGraph
-from robotfix.ros.package import package_folder
+from robotfix.ros.package import package_folder, test_code
 
 if TYPE_CHECKING:  # the analysis is imported only when the summaries are made
     from robotfix.analysis.parameters import Summary
@@ -148,7 +148,9 @@ class CppParams:
         by_path: dict[str, Summary] = {}
         for path in sorted(self.graphs):
             graph = self.graphs[path]
-            summary = _summary(path, graph) if graph.ros == 2 else None
+            if graph.ros != 2 or test_code(path, package_folder(Path(path))):
+                continue  # a test's nodes are throwaway: not the node named so
+            summary = _summary(path, graph)
             if summary is None:
                 continue
             if any(e.kind == OPENS and e.value == AUTO for e in graph.endpoints):

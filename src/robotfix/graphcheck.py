@@ -47,7 +47,7 @@ from robotfix.ros.graph.model import (
     dump,
     load,
 )
-from robotfix.ros.package import package_folder, package_name
+from robotfix.ros.package import package_folder, package_name, test_code
 from robotfix.source import suppresses
 
 if TYPE_CHECKING:
@@ -197,7 +197,6 @@ def _note(end: End, what: str) -> Note:
 
 
 TOGETHER, MAYBE = "together", "maybe"
-TEST_FOLDERS = frozenset({"test", "tests", "testing"})
 
 
 class _Systems:
@@ -227,13 +226,9 @@ class _Systems:
         if first.launch is not None and second.launch is not None:
             same = self._package(first.launch.path) == self._package(second.launch.path)
             return TOGETHER if same else None
-        if _test_code(a.path) or _test_code(b.path):
+        if test_code(a.path) or test_code(b.path):
             return None
         return MAYBE if self._package(a.path) == self._package(b.path) else None
-
-
-def _test_code(path: str) -> bool:
-    return not TEST_FOLDERS.isdisjoint(Path(path).parts[:-1])
 
 
 def _type_mismatch(
