@@ -144,3 +144,32 @@ class Driver : public rclcpp::Node {
     )
     assert [s.path for s in found.summaries] == [str(package / "src" / "driver.cpp")]
     assert found.names == {"driver"}
+
+
+def test_a_fault_on_one_cpp_file_is_its_internal_error(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    import robotfix.cppparams as cppparams
+
+    real = cppparams._summary
+
+    def broken(path: str, graph: object) -> object:
+        if path.endswith("velocity_smoother.cpp"):
+            raise RuntimeError("boom")
+        return real(path, graph)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(cppparams, "_summary", broken)
+    workspace = CASES / "nav_ws"
+    result = check_paths([workspace], Config(root=workspace))
+    assert [Path(e.path).name for e in result.internal_errors] == [
+        "velocity_smoother.cpp"
+    ]
+    found = {
+        (Path(d.path).name, d.span.line, d.code)
+        for d in result.diagnostics
+        if d.code in PARAMETER_RULES
+    }
+    assert found == {  # the controller server's, none of the smoother's
+        ("nav2_params.yaml", 4, "RF401"),
+        ("navigation_launch.py", 28, "RF401"),
+    }

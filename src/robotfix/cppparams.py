@@ -32,6 +32,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from robotfix.faults import Fault, guard
 from robotfix.fs import UnreadableError, read_regular
 from robotfix.ros.executables import MAX_BUILD_BYTES
 from robotfix.ros.graph.model import OPENS, PARAMETER, FileGraph
@@ -89,9 +90,13 @@ class CppParams:
         self,
         graphs: dict[str, FileGraph] | None = None,
         started: Callable[[], list[Started]] | None = None,
+        where: str = "",
     ) -> None:
+        """`where`: the file a fault of ours in finding the launch entries' code
+        is reported at (the run's first path)."""
         self.graphs = graphs or {}
         self._started = started
+        self.where = where
         self.names = {
             n for g in self.graphs.values() for names in g.nodes.values() for n in names
         }
@@ -99,12 +104,17 @@ class CppParams:
         self._entries: dict[int, list[tuple[Summary, str]]] = {}
         self._renamed: dict[str, set[str]] = {}  # launch name -> real paths
 
-    @property
-    def summaries(self) -> list[Summary]:
+    def read(self, faults: list[Fault] | None = None) -> list[Summary]:
+        """The summaries, made once; a fault of ours on one file goes to `faults`
+        as that file's (`faults.guard`; raised without a list)."""
         if self._summaries is None:
             self._summaries = []
-            self._read(self._summaries)
+            self._read(self._summaries, faults)
         return self._summaries
+
+    @property
+    def summaries(self) -> list[Summary]:
+        return self.read()
 
     @property
     def renamed(self) -> dict[str, set[str]]:
@@ -143,14 +153,19 @@ class CppParams:
             parts.append(f"cpp-cmake\0{folder}\0{digest}")
         return parts
 
-    def _read(self, summaries: list[Summary]) -> None:
+    def _read(self, summaries: list[Summary], faults: list[Fault] | None) -> None:
         auto: set[Path | None] = set()  # packages whose nodes declare any override
         by_path: dict[str, Summary] = {}
+        failed: set[str] = set()  # files a fault of ours left unread
         for path in sorted(self.graphs):
             graph = self.graphs[path]
             if graph.ros != 2 or test_code(path, package_folder(Path(path))):
                 continue  # a test's nodes are throwaway: not the node named so
-            summary = _summary(path, graph)
+            summary = None
+            failed.add(path)
+            with guard(path, [], faults):
+                summary = _summary(path, graph)
+                failed.discard(path)
             if summary is None:
                 continue
             if any(e.kind == OPENS and e.value == AUTO for e in graph.endpoints):
@@ -160,8 +175,11 @@ class CppParams:
         for summary in summaries:
             if package_folder(Path(summary.path)) in auto:
                 summary.auto_declare = {*summary.node_names, *summary.open_owners, ""}
-        for one in self._started() if self._started is not None else []:
-            owners = _entry_owners(one, by_path)
+        started: list[Started] = []
+        with guard(self.where, [], faults):
+            started = self._started() if self._started is not None else []
+        for one in started:
+            owners = _entry_owners(one, by_path, failed)
             if not owners:
                 continue
             self._entries[id(one.entry)] = owners
@@ -204,15 +222,18 @@ def _summary(path: str, graph: FileGraph) -> Summary | None:
 
 
 def _entry_owners(
-    one: Started, by_path: dict[str, Summary]
+    one: Started, by_path: dict[str, Summary], failed: set[str]
 ) -> list[tuple[Summary, str]]:
-    """The node object a launch entry starts (with `MORE` for each file of its
-    code where other objects declare parameters, or code it cannot see may,
-    so RF601 stays silent): the
-    plugin class of a composable node; else the node class (or variable) its
-    code has; of several, the one named as the entry names it or its
-    executable (`cam2image` is the node `cam2image` or the class `Cam2Image`);
-    none when that is not one, or when the package declares any override."""
+    """The node object a launch entry starts, with `MORE` for each file of its
+    code where other objects declare parameters or code it cannot see may (so
+    RF601 stays silent): a composable node's plugin class; else the node class
+    (or variable) of its code named as the entry names it or its executable
+    (`cam2image`: the node `cam2image` or the class `Cam2Image`), or the only
+    one when nothing else in its code declares parameters. None when that is
+    not one, when a file of its code was not read (a fault), or when the
+    package declares any override."""
+    if not failed.isdisjoint(one.files):
+        return []
     summaries = [by_path[f] for f in one.files if f in by_path]
     nodes = [
         (s, o)
@@ -220,14 +241,16 @@ def _entry_owners(
         for o in s.node_names
         if o and (one.plugin is None or o == one.plugin)
     ]
+    named = one.plugin is not None
     for wanted in (one.entry.name or "", one.entry.executable or ""):
-        if len(nodes) > 1 and wanted:  # the one named so, or its class so spelt
-            wanted = wanted.rsplit("/", 1)[-1]
-            nodes = [
-                (s, o)
-                for s, o in nodes
-                if wanted in s.node_names[o] or _spelt(o) == _spelt(wanted)
-            ] or nodes
+        wanted = wanted.rsplit("/", 1)[-1]
+        chosen = [
+            (s, o)
+            for s, o in nodes
+            if wanted in s.node_names[o] or _spelt(o) == _spelt(wanted)
+        ]
+        if wanted and not named and chosen:  # the one named so, or so spelt
+            nodes, named = chosen, True
     if len(nodes) != 1 or nodes[0][1] in nodes[0][0].auto_declare:
         return []
     node = nodes[0][1]
@@ -237,6 +260,8 @@ def _entry_owners(
         if {*s.open_owners, *(d.owner for d in s.decls)}
         - {node, *(o for o in s.node_names if o != "")}
     ]
+    if not named and others:
+        return []  # its node may be another object of its code
     return [nodes[0], *others]
 
 

@@ -172,6 +172,8 @@ def check_parameter_files(
         if words
         else []
     )
+    if cpp_nodes is not None:
+        cpp_nodes.read(faults)  # (a fault of ours on one C++ file is that file's)
     table = Table(found, definitions, launches.renamed if launches else None, cpp_nodes)
     for path in files:
         loaded = read.get(str(path))

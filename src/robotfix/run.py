@@ -316,7 +316,7 @@ def _check_paths(
     if group is None:
         launches = _launches(found, everything)
         cpp = _cpp_graphs(found, cache, paths[0] if paths else config.root, result)
-        cpp_nodes = _cpp_params(cpp, launches)
+        cpp_nodes = _cpp_params(cpp, launches, paths[0] if paths else config.root)
         result.diagnostics.extend(
             _parameter_problems(
                 found,
@@ -434,15 +434,17 @@ def _cpp_graphs(
 
 
 def _cpp_params(
-    cpp: dict[str, FileGraph], launches: tuple[LaunchRun, list[ParamFault]] | None
+    cpp: dict[str, FileGraph],
+    launches: tuple[LaunchRun, list[ParamFault]] | None,
+    where: Path,
 ) -> CppParams:
     """The C++ nodes' parameters (`cppparams`), with the code each launch entry
-    starts (as the graph finds it)."""
+    starts (as the graph finds it; a fault of ours there: `where`'s)."""
     from robotfix.cppparams import CppParams
     from robotfix.graphcheck import started_entries
 
     run = launches[0] if launches else None
-    return CppParams(cpp, lambda: started_entries(run, cpp))
+    return CppParams(cpp, lambda: started_entries(run, cpp), str(where))
 
 
 def _graph_problems(
