@@ -154,12 +154,20 @@ class CppParams:
         return parts
 
     def _read(self, summaries: list[Summary], faults: list[Fault] | None) -> None:
+        folders: dict[str, Path | None] = {}  # a file's folder -> its package
+
+        def package(path: str) -> Path | None:
+            folder = os.path.dirname(path)
+            if folder not in folders:
+                folders[folder] = package_folder(Path(path))
+            return folders[folder]
+
         auto: set[Path | None] = set()  # packages whose nodes declare any override
         by_path: dict[str, Summary] = {}
         failed: set[str] = set()  # files a fault of ours left unread
         for path in sorted(self.graphs):
             graph = self.graphs[path]
-            if graph.ros != 2 or test_code(path, package_folder(Path(path))):
+            if graph.ros != 2 or test_code(path, package(path)):
                 continue  # a test's nodes are throwaway: not the node named so
             summary = None
             failed.add(path)
@@ -169,11 +177,11 @@ class CppParams:
             if summary is None:
                 continue
             if any(e.kind == OPENS and e.value == AUTO for e in graph.endpoints):
-                auto.add(package_folder(Path(path)))
+                auto.add(package(path))
             by_path[path] = summary
             summaries.append(summary)
         for summary in summaries:
-            if package_folder(Path(summary.path)) in auto:
+            if package(summary.path) in auto:
                 summary.auto_declare = {*summary.node_names, *summary.open_owners, ""}
         started: list[Started] = []
         with guard(self.where, [], faults):

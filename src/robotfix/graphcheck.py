@@ -36,7 +36,6 @@ from typing import TYPE_CHECKING
 from robotfix import messages
 from robotfix.diagnostics import Diagnostic, Note
 from robotfix.fs import UnreadableError, read_regular
-from robotfix.ros.executables import Targets, cpp_executable_files
 from robotfix.ros.graph import qos as Q
 from robotfix.ros.graph.build import End, Graph, Started, build
 from robotfix.ros.graph.cpp import MAX_CPP_BYTES, read_cpp
@@ -134,7 +133,6 @@ def started_entries(
         if found is not None and name is not None:
             packages.setdefault(name, found)
     out: list[Started] = []
-    targets: dict[Path, Targets] = {}  # each package's CMake targets, read once
     for started in launches.started:
         entry = started.entry
         files = [by_real[f] for f in sorted(started.files) if f in by_real]
@@ -145,7 +143,7 @@ def started_entries(
             inside = os.path.realpath(package) + os.sep
             files += [p for r, p in sorted(by_real.items()) if r.startswith(inside)]
         elif package is not None and entry.executable and not files:
-            for source in cpp_executable_files(package, entry.executable, targets):
+            for source in launches.cpp_sources(package, entry.executable):
                 real = os.path.realpath(source)
                 if real in by_real:
                     files.append(by_real[real])
