@@ -6,6 +6,7 @@ C++ declarations on its own."""
 
 from __future__ import annotations
 
+import shutil
 from pathlib import Path
 
 import pytest
@@ -173,3 +174,32 @@ def test_a_fault_on_one_cpp_file_is_its_internal_error(
         ("nav2_params.yaml", 4, "RF401"),
         ("navigation_launch.py", 28, "RF401"),
     }
+
+
+def test_a_cached_run_sees_an_edited_cpp_declaration(tmp_path: Path) -> None:
+    """The C++ declarations (and the build files that map executables to them)
+    join the parameter check's cache key."""
+    shutil.copytree(CASES / "image_ws", tmp_path / "ws")
+    workspace = tmp_path / "ws"
+    config = Config(root=workspace)
+
+    def codes() -> list[tuple[str, str, int]]:
+        found = check_paths([workspace], config, use_cache=True).diagnostics
+        return sorted(
+            (d.code, Path(d.path).name, d.span.line)
+            for d in found
+            if d.code in PARAMETER_RULES
+        )
+
+    first = codes()
+    assert ("RF401", "camera.yaml", 3) in first and codes() == first
+    source = workspace / "image_tools" / "src" / "cam2image.cpp"
+    text = source.read_text()
+    source.write_text(text.replace('("frequency", 30.0)', '("frequency", 30)'))
+    second = codes()
+    assert ("RF401", "camera.yaml", 3) not in second
+    assert ("RF401", "camera.yaml", 11) in second  # `frequency: 0.5` now
+    cmake = workspace / "image_tools" / "CMakeLists.txt"
+    built = cmake.read_text().replace("EXECUTABLE cam2image", "EXECUTABLE cam")
+    cmake.write_text(built)
+    assert ("RF401", "camera.launch.py", 20) not in codes()  # `cam2image`: no code
