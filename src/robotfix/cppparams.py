@@ -17,8 +17,9 @@ entry's values are checked against a C++ node as against a Python one
   holds a word of `ros.graph.cpp.OPENING` (bulk or helper declarations, a base
   class's `add_parameter`, generated code, plugins, `allow_undeclared_parameters`),
   and its class derives from rclcpp's own node classes;
-- a package whose code says `automatically_declare_parameters_from_overrides(true)`
-  takes any override as declared: its nodes' values are not checked;
+- a node made with `automatically_declare_parameters_from_overrides(true)` takes
+  any override as declared: its values are not checked (those of every node of
+  the file that says so, or of its package when that file has no node class);
 - ROS 1 (roscpp's `param`) is not checked: roscpp converts what it can and falls
   back to the default when it cannot, so no value is certainly refused.
 """
@@ -162,7 +163,7 @@ class CppParams:
                 folders[folder] = package_folder(Path(path))
             return folders[folder]
 
-        auto: set[Path | None] = set()  # packages whose nodes declare any override
+        auto: set[Path | None] = set()  # packages whose mains declare any override
         by_path: dict[str, Summary] = {}
         failed: set[str] = set()  # files a fault of ours left unread
         for path in sorted(self.graphs):
@@ -177,7 +178,10 @@ class CppParams:
             if summary is None:
                 continue
             if any(e.kind == OPENS and e.value == AUTO for e in graph.endpoints):
-                auto.add(package(path))
+                if any(graph.nodes):  # a node class's own options: its file's
+                    summary.auto_declare = {*summary.node_names, *summary.open_owners}
+                else:  # a main's: any node of its package may get them
+                    auto.add(package(path))
             by_path[path] = summary
             summaries.append(summary)
         for summary in summaries:

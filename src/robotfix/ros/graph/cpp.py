@@ -132,8 +132,8 @@ def read_cpp(data: bytes) -> FileGraph:
         return found
     if b"param" in data or b"ClassLoader" in data:
         found.endpoints += _opening(data)
-    if _MAKERS.search(data) is None:
-        return found
+    if _MAKERS.search(data) is None and not found.endpoints:
+        return found  # (with an OPENS endpoint: parsed for the node it opens)
     try:
         tree = _parser().parse(data)
     except (ValueError, RuntimeError):
