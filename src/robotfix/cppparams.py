@@ -36,6 +36,7 @@ from typing import TYPE_CHECKING
 from robotfix.faults import Fault, guard
 from robotfix.fs import UnreadableError, read_regular
 from robotfix.ros.executables import MAX_BUILD_BYTES
+from robotfix.ros.graph.cpp import AUTO
 from robotfix.ros.graph.model import OPENS, PARAMETER, FileGraph
 from robotfix.ros.package import package_folder, test_code
 
@@ -44,7 +45,6 @@ if TYPE_CHECKING:  # the analysis is imported only when the summaries are made
     from robotfix.ros.graph.build import Started
     from robotfix.ros.launch.model import NodeEntry
 
-AUTO = "automatically_declare_parameters_from_overrides"
 # an owner that declares what is not known (`launchcheck._closed`: never closed)
 MORE = "#more"
 CPP_TYPE_WHY = (

@@ -383,6 +383,7 @@ class Table:
         }
         self.real = {s.path: os.path.realpath(s.path) for s in summaries}
         self.packages = {s.path: _package_of(Path(s.path)) for s in summaries}
+        self._by_node: dict[str, list[tuple[Summary, str, list[str]]]] = {}
         # ROS 2 owners whose parameters a file may set: (summary, owner, names)
         self.owners = [
             (summary, owner, summary.names_of(owner))
@@ -404,13 +405,8 @@ class Table:
         node = entry.node_name
         wildcard = node in ("*", "**")
         found: list[Parameter] = []
-        for summary, owner, names in self.owners:
-            if wildcard:
-                if package is None or self.packages[summary.path] != package:
-                    continue
-            elif node not in names and self.real[summary.path] not in self.renamed.get(
-                node, ()
-            ):
+        for summary, owner, _ in self.owners if wildcard else self._named(node):
+            if wildcard and (package is None or self.packages[summary.path] != package):
                 continue
             candidate = self.ros2_parameter(summary, owner, entry.name)
             if candidate is not None:
@@ -420,6 +416,18 @@ class Table:
                 if definition.matches(entry.name):
                     found.append(_gpl(entry.name, definition, path))
         return found
+
+    def _named(self, node: str) -> list[tuple[Summary, str, list[str]]]:
+        """The owners a section keyed `node` is for: named so by their code or
+        by a launch file (found once per name: a file has many values)."""
+        if node not in self._by_node:
+            renamed = self.renamed.get(node, ())
+            self._by_node[node] = [
+                one
+                for one in self.owners
+                if node in one[2] or self.real[one[0].path] in renamed
+            ]
+        return self._by_node[node]
 
     def ros2_parameter(
         self, summary: Summary, owner: str, name: str

@@ -110,6 +110,16 @@ OPENING = re.compile(
     rb"ClassLoader|createUniqueInstance|createSharedInstance|"
     rb"createUnmanagedInstance)\b)"
 )
+_OPENING_WORDS = (  # one of which `OPENING` needs (a quick test)
+    b"allow_undeclared",
+    b"automatically_declare",
+    b"declare_parameters",
+    b"add_parameter",
+    b"ParamListener",
+    b"ClassLoader",
+    b"Instance",
+)
+AUTO = "automatically_declare_parameters_from_overrides"
 _PTR = re.compile(r"(::)?(ConstPtr|Ptr|SharedPtr|ConstSharedPtr|UniquePtr)$")
 
 _PARSER: Any = None
@@ -130,10 +140,12 @@ def read_cpp(data: bytes) -> FileGraph:
     found = FileGraph()
     if len(data) > MAX_CPP_BYTES or not any(w in data for w in WORDS):
         return found
-    if b"param" in data or b"ClassLoader" in data:
+    if any(w in data for w in _OPENING_WORDS):
         found.endpoints += _opening(data)
-    if _MAKERS.search(data) is None and not found.endpoints:
-        return found  # (with an OPENS endpoint: parsed for the node it opens)
+    if _MAKERS.search(data) is None and not any(
+        e.value == AUTO for e in found.endpoints
+    ):
+        return found  # (given any override: parsed for the node it is given to)
     try:
         tree = _parser().parse(data)
     except (ValueError, RuntimeError):
