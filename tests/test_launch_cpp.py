@@ -45,6 +45,8 @@ class Driver : public rclcpp::Node {
     declare_parameter<std::vector<double>>("f", {1.0});
     declare_parameter("g", some_default_);
     declare_parameter<rclcpp::Duration>("h", 1.0);
+    declare_parameter("i", rclcpp::ParameterType::PARAMETER_INTEGER_ARRAY);
+    declare_parameter("j", rclcpp::PARAMETER_DOUBLE, descriptor);
   }
 };
 """
@@ -61,6 +63,8 @@ class Driver : public rclcpp::Node {
         "f": "double_array",
         "g": None,
         "h": None,
+        "i": "integer_array",
+        "j": "double",
     }
     dynamic = read_cpp(source.replace(b"{\n  Driver", b"{ // dynamic_typing\n  D"))
     assert all(not e.types for e in dynamic.endpoints)

@@ -611,12 +611,29 @@ def _interface(text: str, aliases: dict[str, str], kind: str) -> tuple[str, ...]
     return ()
 
 
+# rclcpp::ParameterType given in place of a default: the type it declares
+_PARAMETER_TYPES = {
+    "PARAMETER_BOOL": "bool",
+    "PARAMETER_INTEGER": "int64_t",
+    "PARAMETER_DOUBLE": "double",
+    "PARAMETER_STRING": "std::string",
+    "PARAMETER_BYTE_ARRAY": "std::vector<uint8_t>",
+    "PARAMETER_BOOL_ARRAY": "std::vector<bool>",
+    "PARAMETER_INTEGER_ARRAY": "std::vector<int64_t>",
+    "PARAMETER_DOUBLE_ARRAY": "std::vector<double>",
+    "PARAMETER_STRING_ARRAY": "std::vector<std::string>",
+}
+
+
 def _literal_type(node: Any, depth: int = 0) -> tuple[str, ...]:
     """The type a literal default gives a parameter (`declare_parameter("x",
     false)`: bool, as rclcpp's ParameterValue of it; `-0.5`,
-    `rclcpp::ParameterValue(0.5)` or `{0.5}`, `std::string("map")`); () for
-    anything else."""
+    `rclcpp::ParameterValue(0.5)` or `{0.5}`, `std::string("map")`, a
+    `rclcpp::PARAMETER_DOUBLE` given for the type); () for anything else."""
     kind = node.type if node is not None else ""
+    if kind in ("qualified_identifier", "identifier"):  # `rclcpp::PARAMETER_DOUBLE`
+        found = _PARAMETER_TYPES.get(_text(node).split("::")[-1])
+        return (found,) if found is not None else ()
     if kind == "unary_expression" and _text(node).startswith("-") and depth < 4:
         return _literal_type(node.child_by_field_name("argument"), depth + 1)
     if kind in ("call_expression", "compound_literal_expression") and depth < 4:
