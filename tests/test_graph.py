@@ -61,6 +61,22 @@ def _lines(root: Path, jobs: int = 1, cache: bool = False) -> list[str]:
         ("ros2_robot", "RF603", 2, set()),
         # publishers whose subscribers' contracts are checked again on every run
         ("ros2_contracts", "RF101", 1, {"joystick.py", "planner.py", "teleop.py"}),
+        # clients whose server's contract is checked again
+        ("ros2_services", "RF101", 1, {"cruise.py", "docking.py", "joy_limit.py"}),
+        # a frame its subscriber assumes
+        (
+            "ros2_frames",
+            "RF201",
+            2,
+            {"ahead.py", "clicked.py", "inspection.py", "patrol_goals.py"},
+        ),
+        # action clients whose server's goal callback refines the goal
+        (
+            "ros2_actions",
+            "RF101",
+            1,
+            {"circle_patrol.py", "patrol_client.py", "square_patrol.py"},
+        ),
     ],
 )
 def test_jobs_and_the_cache_give_the_same_graph(
@@ -729,3 +745,130 @@ def test_cpp_file_naming_no_endpoint_maker_is_not_parsed(
         b"  timer_ = create_wall_timer(1s, cb);\n}\n"
     )
     assert not read_cpp(data).endpoints
+
+
+def _ros1_system(root: Path, package: str, files: dict[str, str]) -> list[tuple]:
+    """A ROS 1 package whose `scripts/` a bringup launch file starts (each script
+    as the node its stem names), checked: each finding's file, line and code."""
+    write(root / "bringup" / "package.xml", PACKAGE.format("bringup"))
+    nodes = "".join(
+        f'  <node pkg="{package}" type="{name}" name="{name[:-3]}"/>\n'
+        for name in files
+        if name.endswith(".py")
+    )
+    write(root / "bringup" / "launch" / "all.launch", f"<launch>\n{nodes}</launch>\n")
+    write(root / package / "package.xml", PACKAGE.format(package))
+    for name, text in files.items():
+        folder = "scripts" if name.endswith(".py") else "action"
+        write(root / package / folder / name, text)
+    found = check_paths([root], Config(root=root)).diagnostics
+    return [(Path(d.path).name, d.span.line, d.code) for d in found]
+
+
+def test_a_rospy_publisher_in_a_class_meets_its_subscribers_contract(
+    tmp_path: Path,
+) -> None:
+    """A ROS 1 file's endpoints have no owner (one node per file), but its
+    publisher kept in `self.pub` is that class's: the contract is checked there
+    (it was never matched before)."""
+    listener = (
+        "from typing import Annotated\nimport rospy\nfrom std_msgs.msg import Float64\n"
+        "def callback(msg: Annotated[Float64, '0 <= data <= 20']):\n"
+        "    rospy.loginfo(msg.data)\n"
+        "rospy.init_node('listener')\n"
+        "rospy.Subscriber('effort', Float64, callback)\n"
+    )
+    talker = (
+        "import rospy\nfrom std_msgs.msg import Float64\n"
+        "class Talker:\n"
+        "    def __init__(self):\n"
+        "        self.pub = rospy.Publisher('effort', Float64, queue_size=10)\n"
+        "    def squeeze(self):\n"
+        "        self.pub.publish(Float64(40.0))\n"
+        "rospy.init_node('talker')\n"
+    )
+    found = _ros1_system(
+        tmp_path, "grip", {"listener.py": listener, "talker.py": talker}
+    )
+    assert found == [("talker.py", 7, "RF101")]
+
+
+def test_an_actionlib_goal_meets_its_simple_action_servers_contract(
+    tmp_path: Path,
+) -> None:
+    """actionlib_tutorials' Fibonacci: the server's `execute_cb` takes the goal,
+    and refines it (int32 overflows past the 46th number); a client's
+    `send_goal` of a goal that breaks it is RF101, one that keeps it nothing."""
+    server = (
+        "from typing import Annotated\nimport actionlib\nimport rospy\n"
+        "from fib.msg import FibonacciAction, FibonacciGoal\n"
+        "class FibonacciServer:\n"
+        "    def __init__(self):\n"
+        "        self._as = actionlib.SimpleActionServer(\n"
+        "            'fibonacci', FibonacciAction, execute_cb=self.execute_cb,\n"
+        "            auto_start=False)\n"
+        "        self._as.start()\n"
+        "    def execute_cb(\n"
+        "            self, goal: Annotated[FibonacciGoal, '0 <= order <= 46']):\n"
+        "        rospy.loginfo(goal.order)\n"
+        "rospy.init_node('fibonacci')\n"
+        "server = FibonacciServer()\n"
+    )
+    client = (
+        "import actionlib\nimport rospy\n"
+        "from fib.msg import FibonacciAction, FibonacciGoal\n"
+        "class Client:\n"
+        "    def __init__(self):\n"
+        "        self.client = actionlib.SimpleActionClient(\n"
+        "            'fibonacci', FibonacciAction)\n"
+        "    def run(self):\n"
+        "        self.client.send_goal(FibonacciGoal(order=20))\n"
+        "        self.client.send_goal(FibonacciGoal(order=50))\n"
+        "rospy.init_node('client')\n"
+    )
+    files = {
+        "Fibonacci.action": "int32 order\n---\nint32[] sequence\n---\nint32[] a\n",
+        "fibonacci.py": server,
+        "client.py": client,
+    }
+    assert _ros1_system(tmp_path, "fib", files) == [("client.py", 10, "RF101")]
+
+
+def test_a_contract_finding_shows_the_way_through_the_graph() -> None:
+    """The note of a contract's finding names the sender, the name and the
+    taker, and points at the launch entry that starts the sender."""
+    root = CASES / "ros2_services"
+    found = check_paths([root], Config(root=root)).diagnostics
+    [error] = [d for d in found if d.code == "RF101"]
+    note = error.notes[-1]
+    assert "(/cruise -> /set_max_speed -> /limit_server)" in note.message
+    assert "the server's callback assumes this of every request" in note.message
+    assert (Path(note.path or "").name, note.line) == ("speed.launch.py", 8)
+
+
+def test_a_rospy_proxy_called_with_some_fields_by_position_is_not_checked(
+    tmp_path: Path,
+) -> None:
+    """genpy builds a request of every field by position (or some by keyword):
+    `proxy(0.2)` of a two-field request raises TypeError before anything is
+    sent, so what the other field would hold is not checked; all of them by
+    position is (the server assumes `width <= 0.08`)."""
+    root = tmp_path / "ws"
+    shutil.copytree(CASES / "ros1_services", root)
+    place = root / "arm_control" / "scripts" / "place.py"
+    text = place.read_text()
+    place.write_text(
+        text.replace(
+            "self.set_gripper(width=0.05, effort=5.0)", "self.set_gripper(0.2)"
+        )
+    )
+    assert not [
+        d
+        for d in check_paths([root], Config(root=root)).diagnostics
+        if "place" in d.path
+    ]
+    place.write_text(text.replace("width=0.05, effort=5.0", "0.2, 5.0"))
+    found = check_paths([root], Config(root=root)).diagnostics
+    assert [(Path(d.path).name, d.code) for d in found if "place" in d.path] == [
+        ("place.py", "RF101")
+    ]

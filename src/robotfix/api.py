@@ -337,8 +337,14 @@ class Contract:
     text: str  # the refinement, as the subscriber wrote it
     msg_type: str  # the catalog's `pkg/Name`
     label: str  # names it in notes: "the message to `/odom`"
-    path: str  # the subscriber's file and line
+    path: str  # the subscriber's (the server's) file and line
     line: int
+    family: str = "topic"  # "service": a client's request; "action": a goal
+    # the way through the graph (`/planner -> /cmd_vel -> /limiter`) and the
+    # launch entry that starts the sender: shown, not part of what is checked
+    # (one sender started twice is checked once)
+    route: str = field(default="", compare=False)
+    launch: tuple[str, int] | None = field(default=None, compare=False)
 
 
 def _contract_refinement(contract: Contract, catalog: MsgCatalog) -> Refinement | None:
@@ -389,9 +395,11 @@ def check_contracts(
     stubs: StubSet | None = None,
     resolver: Resolver | None = None,
 ) -> list[Diagnostic]:
-    """What a publisher's file violates of its subscribers' contracts: the file
-    analysed again with each `publish` of a publisher they listen to checked as a
-    call of their callbacks would be (RF101 violated, RF102 not proved); only
+    """What a publisher's file violates of its subscribers' contracts (a
+    client's, of its server's): the file analysed again with each `publish` of a
+    publisher they listen to (`call`, `call_async` of a client, a rospy proxy
+    called, `send_goal_async` of an action client) checked as a call of their
+    callbacks would be (RF101 violated, RF102 not proved; RF201 a frame); only
     those findings, and not where suppressed."""
     from robotfix.source import SourceFile
 
@@ -410,15 +418,34 @@ def check_contracts(
     ctx = _analyze(
         source, catalog, stubs=stubs, resolver=resolver, obligations=obligations
     )
-    labels = tuple(f"annotation of `{c.label}`" for c in contracts)
-    return [
-        replace(d, notes=(*d.notes, messages.contract_note()))
-        for d in ctx.diagnostics
-        if any(note.message.startswith(labels) for note in d.notes)
-        and not source.is_suppressed(d)
-        and d.code not in ignored
-        and d.rule.name not in ignored
-    ]
+    labels: dict[str, Contract] = {}
+    for c in contracts:
+        label = f"annotation of `{c.label}`"
+        first = labels.setdefault(label, c)
+        if (first.route, first.launch) != (c.route, c.launch):
+            # two senders of the file reach one subscriber: which one a finding
+            # is at is not known here, so no way is shown
+            labels[label] = replace(first, route="", launch=None)
+    found = []
+    for d in ctx.diagnostics:
+        kept = next(
+            (
+                labels[label]
+                for note in d.notes
+                for label in labels
+                if note.message.startswith(label)
+            ),
+            None,
+        )
+        if (
+            kept is not None
+            and not source.is_suppressed(d)
+            and d.code not in ignored
+            and d.rule.name not in ignored
+        ):
+            note = messages.contract_note(kept.family, kept.route, kept.launch)
+            found.append(replace(d, notes=(*d.notes, note)))
+    return found
 
 
 def _check(

@@ -112,7 +112,10 @@ def build_parser() -> argparse.ArgumentParser:
         type=int,
         default=None,
         metavar="N",
-        help="check files in N processes (default: all cores)",
+        help=(
+            "check files in N processes (default and cap: the cores this process "
+            "may use, its CPU quota counted)"
+        ),
     )
     check.add_argument(
         "--no-cache",

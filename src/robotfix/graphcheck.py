@@ -40,7 +40,11 @@ from robotfix.ros.graph import qos as Q
 from robotfix.ros.graph.build import End, Graph, Started, build
 from robotfix.ros.graph.cpp import MAX_CPP_BYTES, read_cpp
 from robotfix.ros.graph.model import (
+    ACTION_CLIENT,
+    ACTION_SERVER,
+    CLIENT,
     PUBLISHER,
+    SERVICE,
     SUBSCRIPTION,
     FileGraph,
     dump,
@@ -392,63 +396,84 @@ def _unmatched(
         result.findings.append(Finding(diag, ends[0]))
 
 
+# per family: the side that sends (kept in an attribute), the side whose
+# callback takes what it sends, and the section of the interface taken
+CONTRACT_SIDES = {
+    "topic": (PUBLISHER, SUBSCRIPTION, ""),
+    "service": (CLIENT, SERVICE, "_Request"),
+    "action": (ACTION_CLIENT, ACTION_SERVER, "_Goal"),
+}
+# what the side whose callback takes it is called in a note's label
+TAKER = {"topic": "subscription to", "service": "service", "action": "action server"}
+
+
 def contracts(result: GraphResult) -> dict[str, list[Contract]]:
-    """Publisher file -> what the subscriptions its publishers reach assume of
-    the message (issue 23 §3): a subscription whose callback refines its message
-    (`msg: Annotated[Twist, "abs(linear.x) <= 0.5"]`) and a Python publisher kept in
-    an attribute (`self.pub = self.create_publisher(...)`, one publisher per
-    attribute name in its file; its `publish` calls in methods of that class), of
-    the same certain type, on one certain topic, started together by one
-    package's launch files."""
+    """Sender file -> what the callbacks its senders reach assume of what they
+    send (issue 23 §3): a subscription whose callback refines its message
+    (`msg: Annotated[Twist, "abs(linear.x) <= 0.5"]`), a service whose callback
+    refines its request, an action server whose goal callback refines the goal,
+    and a Python publisher or client kept in an attribute (`self.pub =
+    self.create_publisher(...)`, one per attribute name in its class; its
+    `publish`, `call`, `call_async`, `send_goal`, `send_goal_async` in methods of
+    that class), of the same certain type, on one certain name, started together
+    by one package's launch files."""
     from robotfix.api import Contract
 
     graph = result.graph
     systems = _Systems(graph)
     holders: dict[tuple[str, str], set[tuple[int, str | None]]] = {}
+    senders = {sides[0] for sides in CONTRACT_SIDES.values()}
     for end in graph.ends:
-        if end.endpoint.kind == PUBLISHER and end.endpoint.holder:
+        if end.endpoint.kind in senders and end.endpoint.holder:
             key = (end.path, end.endpoint.holder)
             holders.setdefault(key, set()).add((end.endpoint.line, end.resolved))
     found: dict[str, list[Contract]] = {}
     for (_, family, name), ends in _channels(graph).items():
-        if family != "topic":
+        if family not in CONTRACT_SIDES:
             continue
+        sending, taking, section = CONTRACT_SIDES[family]
         taken = [
             graph.ends[i]
             for i in ends
-            if graph.ends[i].endpoint.kind == SUBSCRIPTION
+            if graph.ends[i].endpoint.kind == taking
             and graph.ends[i].endpoint.contract is not None
             and len(graph.ends[i].endpoint.types) == 1
         ]
         for i in ends:
-            publisher = graph.ends[i]
-            endpoint = publisher.endpoint
-            key = (publisher.path, endpoint.holder)
+            sender = graph.ends[i]
+            endpoint = sender.endpoint
+            key = (sender.path, endpoint.holder)
             if (
-                endpoint.kind != PUBLISHER
-                or not publisher.path.endswith(".py")
-                or not endpoint.holder.startswith("self.")  # a local: its scope's
+                endpoint.kind != sending
+                or not sender.path.endswith(".py")
                 or len(holders.get(key, ())) != 1
             ):
                 continue
-            for sub in taken:
+            for taker in taken:
                 if (
-                    sub.endpoint.types != endpoint.types
-                    or systems.relation(publisher, sub) != TOGETHER
+                    taker.endpoint.types != endpoint.types
+                    or systems.relation(sender, taker) != TOGETHER
                 ):
                     continue
                 package, _, kind = endpoint.types[0].split("/")
-                node = graph.nodes[sub.node].qualified
+                if family == "action" and endpoint.ros == 1:
+                    kind = kind.removesuffix("Action")  # actionlib's FibonacciAction
+                node = graph.nodes[taker.node].qualified
+                started = graph.nodes[sender.node].launch
+                route = f"{graph.nodes[sender.node].qualified} -> {name} -> {node}"
                 contract = Contract(
-                    f"{endpoint.owner}:{endpoint.holder}",
-                    sub.endpoint.contract or "",
-                    f"{package}/{kind}",
-                    f"{node}'s subscription to {name}",
-                    sub.path,
-                    sub.endpoint.line,
+                    endpoint.holder,
+                    taker.endpoint.contract or "",
+                    f"{package}/{kind}{section}",
+                    f"{node}'s {TAKER[family]} {name}",
+                    taker.path,
+                    taker.endpoint.line,
+                    family,
+                    route,
+                    (started.path, started.line) if started is not None else None,
                 )
-                if contract not in found.setdefault(publisher.path, []):
-                    found[publisher.path].append(contract)
+                if contract not in found.setdefault(sender.path, []):
+                    found[sender.path].append(contract)
     return found
 
 

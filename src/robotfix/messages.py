@@ -620,6 +620,38 @@ def frame_mismatch(
     return Diagnostic(rules.UNIT_MISMATCH, path, span, message)
 
 
+def message_frame_mismatch(
+    path: str,
+    span: Span,
+    stmt: str,
+    frame_path: str,
+    got: str,
+    expected: str,
+    declared: Declared,
+    default: bool = False,
+) -> Diagnostic:
+    """RF201: a stamped message whose header names one frame given where a
+    refinement says another (`Annotated[PoseStamped, "Frame('map')"]`); a
+    warning when the frame is a parameter's default (`default`), which a launch
+    or parameter file may change."""
+    message = (
+        f"`{stmt}` gives a message in frame `{got}` (its `{frame_path}`) where "
+        f"`{expected}` is assumed{_axes(got, expected)}: transform it with tf2 first"
+    )
+    notes = [declared.note()]
+    if default:
+        notes.append(
+            Note(
+                f"`{got}` is a parameter's default, which a launch or parameter "
+                "file may change"
+            )
+        )
+    level = Severity.WARNING if default else None
+    return Diagnostic(
+        rules.UNIT_MISMATCH, path, span, message, tuple(notes), level=level
+    )
+
+
 def transform_frame_mismatch(
     path: str, span: Span, stmt: str, frame: str, source: str, target: str | None
 ) -> Diagnostic:
@@ -988,12 +1020,31 @@ def graph_qos_incompatible(
     )
 
 
-def contract_note() -> Note:
-    """On a publisher's RF101/RF102 against a subscriber's contract (issue 23 §3)."""
-    return Note(
-        "a launch file starts this publisher and that subscriber on one topic: the "
-        "subscriber's callback assumes this of every message it receives"
+def contract_note(
+    family: str = "topic", route: str = "", launch: tuple[str, int] | None = None
+) -> Note:
+    """On a publisher's RF101/RF102 against a subscriber's contract, or a
+    client's against its server's (issue 23 §3); `route`: the way the message
+    goes through the graph; `launch`: the launch entry that starts the sender."""
+    sides, what = {
+        "service": (
+            "this client and that service on one name",
+            "the server's callback assumes this of every request it receives",
+        ),
+        "action": (
+            "this action client and that action server on one name",
+            "the server's goal callback assumes this of every goal it receives",
+        ),
+    }.get(
+        family,
+        (
+            "this publisher and that subscriber on one topic",
+            "the subscriber's callback assumes this of every message it receives",
+        ),
     )
+    way = f" ({route})" if route else ""
+    path, line = launch if launch is not None else (None, None)
+    return Note(f"a launch file starts {sides}{way}: {what}", path, line)
 
 
 def graph_unmatched(

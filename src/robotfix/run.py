@@ -996,8 +996,8 @@ def _portable(parameters: ParamSummary) -> ParamSummary | None:
 
 
 def default_jobs() -> int:
-    return (
-        len(os.sched_getaffinity(0))
-        if hasattr(os, "sched_getaffinity")
-        else (os.cpu_count() or 1)
-    )
+    """The cores this process may use, its control group's CPU quota counted
+    (`cores`): `-j` is never more."""
+    from robotfix.cores import available
+
+    return available()

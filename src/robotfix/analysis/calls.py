@@ -46,6 +46,11 @@ LEAVING = frozenset(
         "send_goal_async",
     }
 )
+# What sends a message a publisher's subscribers (a client's server, an action
+# client's server) assume of.
+CONTRACTED = frozenset(
+    {"publish", "call", "call_async", "send_goal", "send_goal_async"}
+)
 # Objects that send the message they are called with (`proxy(request)`).
 SENDING = frozenset({"rospy.ServiceProxy"})
 # Methods after which a container holds an element.
@@ -82,7 +87,7 @@ class CallEvaluator(LibraryEvaluator):
             self.eval(node.func.value, state)  # type: ignore[attr-defined]
             values = [self.eval(a, state) for a in node.args]
             self._leaving(values, state)
-            if method == "publish" and self.ctx.obligations:
+            if method in CONTRACTED and self.ctx.obligations:
                 holder = dotted(node.func.value)  # type: ignore[attr-defined]
                 self._contracts(values, state, f"{self._class_name()}:{holder}")
             return self.unknown(node)
@@ -101,6 +106,9 @@ class CallEvaluator(LibraryEvaluator):
             kwargs = {k.arg: self.eval(k.value, state) for k in node.keywords}
             if callee.kind == "object" and callee.name in SENDING:
                 self._leaving(args, state)
+                if self.ctx.obligations and not imported.starred(node, kwargs):
+                    holder = f"{self._class_name()}:{dotted(func)}"
+                    self._contracts(args, state, holder, kwargs)
         result = self._dispatch(callee, node, args, kwargs, state)
         self._forget_after_call(node, args, kwargs, state, callee)
         return result
@@ -112,15 +120,30 @@ class CallEvaluator(LibraryEvaluator):
                 self.check.check_whole(state, value.ref, self.site, publishing=True)
                 frames.check_leaving(self.ctx, state, value.ref, self.site)
 
-    def _contracts(self, values: list[Value], state: State, holder: str) -> None:
+    def _contracts(
+        self,
+        values: list[Value],
+        state: State,
+        holder: str,
+        fields: dict[str | None, Value] | None = None,
+    ) -> None:
         """What the subscribers of the publisher in `holder` (`Class:self.pub`)
-        assume of the message (`FileContext.obligations`), checked as a refined
-        argument is."""
-        refinements = self.ctx.obligations.get(holder, [])
-        for value in values[:1]:
-            if value.kind not in MESSAGE_LIKE:
-                continue
-            for label, refinement in refinements:
+        assume of the message, or a service of a client's request
+        (`FileContext.obligations`), checked as a refined argument is. `fields`:
+        a rospy proxy's call, whose arguments are the request's fields unless
+        it is one message: genpy builds it of every field by position, or of
+        some by keyword (others, or mixing the two, raise: not checked)."""
+        for label, refinement in self.ctx.obligations.get(holder, []):
+            value = values[0] if values else None
+            whole = len(values) == 1 and not fields and values[0].kind in MESSAGE_LIKE
+            if fields is not None and not whole:
+                kind = refinement.msg_type or ""
+                spec = self.ctx.catalog.lookup(kind)
+                built = spec is not None and (
+                    not values or (not fields and len(values) == len(spec.fields))
+                )
+                value = self.construct(kind, values, fields, state) if built else None
+            if value is not None and value.kind in MESSAGE_LIKE:
                 self.check.assign_refined(
                     state, label, refinement, value, self.site, {}, leaving=True
                 )

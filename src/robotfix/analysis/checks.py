@@ -420,6 +420,9 @@ class Checker:
             return value
         if value.kind == "msg":
             if decl.base == "msg" and value.ref is not None:
+                frames.check_message(
+                    self.ctx, state, value.ref, decl.unit, site, declared
+                )
                 rules = self.message_rules(decl, name, lookup)
                 self.reach(state, value.ref, rules, site, name, leaving)
             return value

@@ -311,8 +311,9 @@ class FileContext:
 
     def msg_type_named(self, qualified: str | None) -> str | None:
         """`geometry_msgs.msg.Twist`, `std_msgs.Int32` or `pkg.srv.AddTwoIntsRequest`
-        -> the catalog's `pkg/Name`, if it is a known message."""
-        found = self._split(qualified)
+        -> the catalog's `pkg/Name`, if it is a known message; ROS 2's nested
+        section `pkg.srv.AddTwoInts.Request` -> `pkg/AddTwoInts_Request`."""
+        found = self._split(qualified) or _section(qualified)
         if found is None:
             return None
         package, name = found
@@ -557,3 +558,11 @@ def _in_scope(ctx: FileContext, scope: Scope, name: str) -> bool:
             return True
         current = current.parent
     return name in ctx.imports or ctx.star_import or hasattr(builtins, name)
+
+
+def _section(qualified: str | None) -> tuple[str, str] | None:
+    """`pkg.srv.AddTwoInts.Request` -> (`pkg`, `AddTwoInts_Request`)."""
+    parts = (qualified or "").split(".")
+    if len(parts) == 4 and parts[1] in MSG_MODULES and parts[3] in SECTION_SUFFIXES:
+        return parts[0], f"{parts[2]}_{parts[3]}"
+    return None

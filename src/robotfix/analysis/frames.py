@@ -194,6 +194,43 @@ def check_leaving(ctx: FileContext, state: State, ref: int, site: ast.AST) -> No
         todo.extend(v.ref for _, v in sorted(obj.fields.items()) if v.ref is not None)
 
 
+def check_message(
+    ctx: FileContext,
+    state: State,
+    ref: int,
+    unit: Unit | None,
+    site: ast.AST,
+    declared: Declared,
+) -> None:
+    """A stamped message given where a refinement names its frame (`msg:
+    Annotated[PoseStamped, "Frame('map')"]`: the data its header frames is in
+    `map`), whose header names another known frame: RF201 (a warning when that
+    frame is a parameter's default, which a launch file may change). A frame
+    not known compares with nothing."""
+    expected = frame_of(unit)
+    obj = state.heap.get(ref)
+    if expected is None or obj is None or not FRAMED_FIELDS.get(obj.type):
+        return
+    frame_path = FRAMED_FIELDS[obj.type][0][1]
+    named = peek(state, ref, frame_path)
+    frame = known_frame(named)
+    if named is None or frame is None or frame == normalize(expected):
+        return
+    ctx.report(
+        messages.message_frame_mismatch(
+            ctx.source.path,
+            ctx.source.span(site),
+            ctx.source.segment(site) or obj.type,
+            frame_path,
+            frame,
+            normalize(expected),
+            declared,
+            default=not isinstance(named.term, A.Str),
+        ),
+        once=("frames", id(site), declared.what),
+    )
+
+
 def _other_frame(state: State, data: Value | None, frame: str) -> str | None:
     """A frame other than `frame` of the numbers stored below `data`."""
     todo = [data]

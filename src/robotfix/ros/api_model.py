@@ -84,12 +84,24 @@ class EndpointCall:
     type_arg: tuple[int, str]  # (position, keyword) of the interface type
     name_arg: tuple[int, str]  # of the topic, service or action name
     qos_arg: tuple[int, str] | None = None  # of the ROS 2 QoS profile
+    # of the callback whose first parameter (after `self`) takes what the other
+    # side sends: a subscription's message, a service's request, an action's goal
+    taken_arg: tuple[int, str] | None = None
 
 
 def _type_of(called: str) -> tuple[int, str]:
     registration = REGISTRATIONS[called]
     assert registration.type_arg is not None
     return registration.type_arg
+
+
+def _taken(called: str) -> tuple[int, str]:
+    return REGISTRATIONS[called].callback_arg
+
+
+# rclpy's ActionServer takes `goal_callback` by keyword only (no position reaches
+# it); it receives the goal, the execute callback a goal handle
+GOAL_CALLBACK = (1 << 16, "goal_callback")
 
 
 # Node methods, by name whatever the receiver (as REGISTRATIONS)
@@ -103,28 +115,48 @@ ENDPOINT_METHODS: dict[str, EndpointCall] = {
         _type_of("create_subscription"),
         (1, "topic"),
         (3, "qos_profile"),
+        _taken("create_subscription"),
     ),
     "create_service": EndpointCall(
-        "service", 2, _type_of("create_service"), (1, "srv_name")
+        "service",
+        2,
+        _type_of("create_service"),
+        (1, "srv_name"),
+        taken_arg=_taken("create_service"),
     ),
     "create_client": EndpointCall("client", 2, (0, "srv_type"), (1, "srv_name")),
 }
 # Classes and functions, by qualified name (what the file's imports make of it)
 ENDPOINT_CLASSES: dict[str, EndpointCall] = {
     "rclpy.action.ActionServer": EndpointCall(
-        "action_server", 2, _type_of("ActionServer"), (2, "action_name")
+        "action_server",
+        2,
+        _type_of("ActionServer"),
+        (2, "action_name"),
+        taken_arg=GOAL_CALLBACK,
     ),
     "rclpy.action.ActionClient": EndpointCall(
         "action_client", 2, (1, "action_type"), (2, "action_name")
     ),
     "rospy.Publisher": EndpointCall("publisher", 1, (1, "data_class"), (0, "name")),
     "rospy.Subscriber": EndpointCall(
-        "subscription", 1, _type_of("Subscriber"), (0, "name")
+        "subscription",
+        1,
+        _type_of("Subscriber"),
+        (0, "name"),
+        None,
+        _taken("Subscriber"),
     ),
-    "rospy.Service": EndpointCall("service", 1, _type_of("Service"), (0, "name")),
+    "rospy.Service": EndpointCall(
+        "service", 1, _type_of("Service"), (0, "name"), None, _taken("Service")
+    ),
     "rospy.ServiceProxy": EndpointCall("client", 1, (1, "service_class"), (0, "name")),
     "actionlib.SimpleActionServer": EndpointCall(
-        "action_server", 1, _type_of("SimpleActionServer"), (0, "name")
+        "action_server",
+        1,
+        _type_of("SimpleActionServer"),
+        (0, "name"),
+        taken_arg=_taken("SimpleActionServer"),
     ),
     "actionlib.SimpleActionClient": EndpointCall(
         "action_client", 1, (1, "ActionSpec"), (0, "ns")

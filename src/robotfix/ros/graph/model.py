@@ -92,10 +92,12 @@ class Endpoint:
     handle: str = ""  # ROS 1 C++: the NodeHandle's namespace ("~" private)
     value: str | None = None  # a parameter's default, as written (C++)
     # what a subscription's callback assumes of the message: the refinement of
-    # its parameter (`msg: Annotated[Twist, "abs(linear.x) <= 0.5"]`), as written
+    # its parameter (`msg: Annotated[Twist, "abs(linear.x) <= 0.5"]`), as written;
+    # a service's callback, of the request
     contract: str | None = None
-    # where the code keeps a Python publisher (`self.pub = create_publisher(...)`:
-    # "self.pub"), for what its subscribers assume of `self.pub.publish(m)`
+    # where the code keeps a Python publisher or client (`self.pub =
+    # create_publisher(...)` in class Planner: "Planner:self.pub"), for what its
+    # subscribers or server assume of `self.pub.publish(m)`, `self.cli.call(r)`
     holder: str = ""
 
 

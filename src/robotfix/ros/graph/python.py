@@ -32,11 +32,10 @@ from robotfix.ros.api_model import (
     ENDPOINT_CLASSES,
     ENDPOINT_METHODS,
     NODE_CONSTRUCTORS,
-    REGISTRATIONS,
     EndpointCall,
 )
 from robotfix.ros.graph import qos as Q
-from robotfix.ros.graph.model import MIDDLE, SUBSCRIPTION, Endpoint, FileGraph, Qos
+from robotfix.ros.graph.model import MIDDLE, Endpoint, FileGraph, Qos
 
 MAX_DEPTH = 8  # names followed through names
 CALL_STEPS = 5_000  # values looked at for one call (a name bound 3,000 times to a
@@ -540,13 +539,8 @@ def _call(
                 )
     file.spent(given)
     contract = None
-    if spec.kind == SUBSCRIPTION:
-        callback = _argument(
-            call,
-            REGISTRATIONS[
-                "Subscriber" if spec.ros == 1 else "create_subscription"
-            ].callback_arg,
-        )
+    if spec.taken_arg is not None:
+        callback = _argument(call, spec.taken_arg)
         contract = _contract(file, callback, cls) if callback is not None else None
     file.found.endpoints.append(
         Endpoint(
@@ -559,27 +553,32 @@ def _call(
             profile,
             spec.ros,
             contract=contract,
-            holder=_holder(statement, call),
+            holder=_holder(statement, call, cls),
         )
     )
 
 
-def _holder(statement: ast.stmt, call: ast.Call) -> str:
-    """`self.pub` of `self.pub = self.create_publisher(...)`; "" otherwise."""
+def _holder(statement: ast.stmt, call: ast.Call, cls: str | None) -> str:
+    """`Planner:self.pub` of `self.pub = self.create_publisher(...)` in a method of
+    class `Planner`; "" otherwise."""
     if isinstance(statement, ast.Assign) and len(statement.targets) == 1:
         target: ast.expr = statement.targets[0]
     elif isinstance(statement, ast.AnnAssign):
         target = statement.target
     else:
         return ""
-    return (dotted(target) or "") if statement.value is call else ""
+    text = dotted(target) or ""
+    kept = statement.value is call and text.startswith("self.") and cls is not None
+    return f"{cls}:{text}" if kept else ""
 
 
 def _contract(file: _File, callback: ast.expr, cls: str | None) -> str | None:
     """The refinement a subscription's callback declares on the message it takes
-    (`def on_cmd(self, msg: Annotated[Twist, "abs(linear.x) <= 0.5"])`), as
-    written; None without one (or when the callback is not a function of the
-    file)."""
+    (`def on_cmd(self, msg: Annotated[Twist, "abs(linear.x) <= 0.5"])`), or a
+    service's on the request (`def handle(self, request: Annotated[...],
+    response)`), an action server's on the goal (rclpy's `goal_callback`,
+    actionlib's `execute_cb`), as written; None without one (or when the
+    callback is not a function of the file)."""
     function = None
     if isinstance(callback, ast.Name):
         function = file.functions.get("", {}).get(callback.id)
