@@ -574,7 +574,7 @@ def _params_key(
     launches: LaunchRun | None = None,
     cpp_nodes: CppParams | None = None,
 ) -> str:
-    """Everything `paramcheck` reads (and the C++ nodes' names, `cpp_nodes`): the
+    """Everything `paramcheck` reads (and the C++ nodes', `cpp_nodes.key()`): the
     parameter and definitions files (bytes, per-file ignores, package folder), and
     each Python file that mentions a parameter word (`cache.MENTION_WORDS`; the
     others are skipped unread there) with its bytes, the file it really is, its
