@@ -36,7 +36,6 @@ from typing import TYPE_CHECKING
 from robotfix import messages
 from robotfix.diagnostics import Diagnostic, Note
 from robotfix.fs import UnreadableError, read_regular
-from robotfix.ros.executables import Targets, cpp_executable_files
 from robotfix.ros.graph import qos as Q
 from robotfix.ros.graph.build import End, Graph, Started, build
 from robotfix.ros.graph.cpp import MAX_CPP_BYTES, read_cpp
@@ -51,7 +50,7 @@ from robotfix.ros.graph.model import (
     dump,
     load,
 )
-from robotfix.ros.package import package_folder, package_name
+from robotfix.ros.package import package_folder, package_name, test_code
 from robotfix.source import suppresses
 
 if TYPE_CHECKING:
@@ -138,7 +137,6 @@ def started_entries(
         if found is not None and name is not None:
             packages.setdefault(name, found)
     out: list[Started] = []
-    targets: dict[Path, Targets] = {}  # each package's CMake targets, read once
     for started in launches.started:
         entry = started.entry
         files = [by_real[f] for f in sorted(started.files) if f in by_real]
@@ -149,7 +147,7 @@ def started_entries(
             inside = os.path.realpath(package) + os.sep
             files += [p for r, p in sorted(by_real.items()) if r.startswith(inside)]
         elif package is not None and entry.executable and not files:
-            for source in cpp_executable_files(package, entry.executable, targets):
+            for source in launches.cpp_sources(package, entry.executable):
                 real = os.path.realpath(source)
                 if real in by_real:
                     files.append(by_real[real])
@@ -201,7 +199,6 @@ def _note(end: End, what: str) -> Note:
 
 
 TOGETHER, MAYBE = "together", "maybe"
-TEST_FOLDERS = frozenset({"test", "tests", "testing"})
 
 
 class _Systems:
@@ -231,13 +228,9 @@ class _Systems:
         if first.launch is not None and second.launch is not None:
             same = self._package(first.launch.path) == self._package(second.launch.path)
             return TOGETHER if same else None
-        if _test_code(a.path) or _test_code(b.path):
+        if test_code(a.path) or test_code(b.path):
             return None
         return MAYBE if self._package(a.path) == self._package(b.path) else None
-
-
-def _test_code(path: str) -> bool:
-    return not TEST_FOLDERS.isdisjoint(Path(path).parts[:-1])
 
 
 def _type_mismatch(

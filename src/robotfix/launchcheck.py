@@ -37,7 +37,13 @@ from robotfix.diagnostics import Diagnostic, Note, Span
 from robotfix.faults import Fault, guard
 from robotfix.fs import UnreadableError, read_text
 from robotfix.ros import paramfile as P
-from robotfix.ros.executables import MAX_BUILD_BYTES, executable_file, module_file
+from robotfix.ros.executables import (
+    MAX_BUILD_BYTES,
+    Targets,
+    cpp_executable_files,
+    executable_file,
+    module_file,
+)
 from robotfix.ros.launch.model import FileParam, InlineParam, NodeEntry
 from robotfix.ros.launch.reader import Reader
 from robotfix.ros.package import package_folder, package_name
@@ -88,6 +94,8 @@ class LaunchRun:
         self.reader = Reader(self.packages.get, parses or {})
         self._build: dict[tuple[str, Path], object] = {}  # packages' build files
         self._codes: dict[tuple[Path, str], set[str]] = {}  # by executable
+        self._targets: dict[Path, Targets] = {}  # packages' CMake targets
+        self._sources: dict[tuple[Path, str], list[Path]] = {}  # C++ executables
         for path in launch_files:
             with guard(path, self.notices, faults):
                 self._read(path)
@@ -155,6 +163,16 @@ class LaunchRun:
             )
         return set(self._codes[key])
 
+    def cpp_sources(self, package: Path, executable: str) -> list[Path]:
+        """The C++ files a package's executable is built from
+        (`cpp_executable_files`), read once a run."""
+        key = (package, executable)
+        if key not in self._sources:
+            self._sources[key] = cpp_executable_files(
+                package, executable, self._targets
+            )
+        return self._sources[key]
+
     # -- the checks (called by paramcheck with its table) -------------------------
     def check(
         self,
@@ -173,11 +191,15 @@ class LaunchRun:
         for path, entries in by_file.items():
             with guard(path, out, faults):
                 for started in entries:
+                    cpp = table.cpp.owners_of(started.entry)  # its C++ node
+                    if cpp and started.entry.ros == 2:
+                        out += _ros2_entry(started.entry, cpp, table, loaded)
                     code = [by_real[f] for f in sorted(started.files) if f in by_real]
                     if not code:
                         continue
                     if started.entry.ros == 2:
-                        out += _ros2_entry(started.entry, code, table, loaded)
+                        owners = _owners_of(code)
+                        out += _ros2_entry(started.entry, owners, table, loaded)
                     else:
                         out += _ros1_entry(started.entry, code, table)
         from robotfix.paramcheck import unmatched_sections
@@ -308,9 +330,12 @@ def _node_words(entry: NodeEntry, owners: list[tuple[Summary, str]]) -> str:
 
 
 def _ros2_entry(
-    entry: NodeEntry, code: list[Summary], table: Table, loaded: dict[str, P.ParamFile]
+    entry: NodeEntry,
+    owners: list[tuple[Summary, str]],
+    table: Table,
+    loaded: dict[str, P.ParamFile],
 ) -> list[Diagnostic]:
-    owners = _owners_of(code)
+    """RF401/RF101 and RF601 for one entry, against its code's node objects."""
     if not owners:
         return []
     out: list[Diagnostic] = []

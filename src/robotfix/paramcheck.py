@@ -36,6 +36,7 @@ from robotfix.analysis.parameters import summarize
 from robotfix.analysis.paramsummary import ROSPY, Attached, ParamDecl, Summary
 from robotfix.annotations import ast as A
 from robotfix.config import Config
+from robotfix.cppparams import CPP_TYPE_WHY, CppParams
 from robotfix.diagnostics import Diagnostic, Span
 from robotfix.faults import Fault, guard
 from robotfix.fs import UnreadableError, read_text
@@ -123,7 +124,7 @@ def check_parameter_files(
     project: Project | None = None,
     faults: list[Fault] | None = None,
     launches: Launches | None = None,
-    cpp_nodes: Iterable[str] = (),
+    cpp_nodes: CppParams | None = None,
 ) -> list[Diagnostic]:
     """Diagnostics for the parameter files and generate_parameter_library
     definitions of a run; `python_files` are those whose declarations count. A
@@ -138,8 +139,8 @@ def check_parameter_files(
     `launches`: what the run's launch files add (`launchcheck`): the names they
     give nodes, the parameter files they name, and their own checks, made with
     the same table (a fault on one launch file is a fault of that file).
-    `cpp_nodes`: the names of the run's C++ nodes (`ros.graph.cpp`): a section
-    naming one is no RF602, though its values are not checked."""
+    `cpp_nodes`: the run's C++ nodes (`cppparams`): their names (a section
+    naming one is no RF602) and declarations, checked as a Python node's."""
     if launches is not None:
         files = [*files, *(f for f in launches.files if f not in files)]
     loud = {str(p) for p in [*named, *definition_files]}
@@ -172,6 +173,8 @@ def check_parameter_files(
         if words
         else []
     )
+    if cpp_nodes is not None:
+        cpp_nodes.read(faults)  # (a fault of ours on one C++ file is that file's)
     table = Table(found, definitions, launches.renamed if launches else None, cpp_nodes)
     for path in files:
         loaded = read.get(str(path))
@@ -369,14 +372,19 @@ class Table:
         summaries: list[Summary],
         definitions: dict[str, list[tuple[P.Definition, str]]],
         renamed: dict[str, set[str]] | None = None,
-        cpp_nodes: Iterable[str] = (),
+        cpp_nodes: CppParams | None = None,
     ) -> None:
-        self.summaries = summaries
-        self.cpp_nodes = set(cpp_nodes)  # C++ nodes' names: their code is not read
+        self.cpp = cpp_nodes or CppParams()  # C++ nodes: read by `ros.graph.cpp`
+        self.summaries = summaries = [*summaries, *self.cpp.summaries]
+        self.cpp_nodes = self.cpp.names
         self.definitions = definitions
-        self.renamed = renamed or {}  # real paths
+        self.renamed = {  # real paths
+            name: {*(renamed or {}).get(name, ()), *self.cpp.renamed.get(name, ())}
+            for name in {*(renamed or {}), *self.cpp.renamed}
+        }
         self.real = {s.path: os.path.realpath(s.path) for s in summaries}
         self.packages = {s.path: _package_of(Path(s.path)) for s in summaries}
+        self._by_node: dict[str, list[tuple[Summary, str, list[str]]]] = {}
         # ROS 2 owners whose parameters a file may set: (summary, owner, names)
         self.owners = [
             (summary, owner, summary.names_of(owner))
@@ -398,13 +406,8 @@ class Table:
         node = entry.node_name
         wildcard = node in ("*", "**")
         found: list[Parameter] = []
-        for summary, owner, names in self.owners:
-            if wildcard:
-                if package is None or self.packages[summary.path] != package:
-                    continue
-            elif node not in names and self.real[summary.path] not in self.renamed.get(
-                node, ()
-            ):
+        for summary, owner, _ in self.owners if wildcard else self._named(node):
+            if wildcard and (package is None or self.packages[summary.path] != package):
                 continue
             candidate = self.ros2_parameter(summary, owner, entry.name)
             if candidate is not None:
@@ -414,6 +417,18 @@ class Table:
                 if definition.matches(entry.name):
                     found.append(_gpl(entry.name, definition, path))
         return found
+
+    def _named(self, node: str) -> list[tuple[Summary, str, list[str]]]:
+        """The owners a section keyed `node` is for: named so by their code or
+        by a launch file (found once per name: a file has many values)."""
+        if node not in self._by_node:
+            renamed = self.renamed.get(node, ())
+            self._by_node[node] = [
+                one
+                for one in self.owners
+                if node in one[2] or self.real[one[0].path] in renamed
+            ]
+        return self._by_node[node]
 
     def ros2_parameter(
         self, summary: Summary, owner: str, name: str
@@ -501,7 +516,7 @@ def _declaration_failure(decl: ParamDecl, typed: P.Typed) -> Failure | None:
             P.type_words(typed.type),
             P.type_words(decl.type),
             declared,
-            TYPE_WHY,
+            TYPE_WHY if decl.path.endswith(".py") else CPP_TYPE_WHY,
         )
     value = typed.value
     if (

@@ -42,6 +42,7 @@ if TYPE_CHECKING:
 if TYPE_CHECKING:  # the analysis is imported only when a file is checked
     from robotfix.analysis.paramsummary import Summary as ParamSummary
     from robotfix.api import Contract
+    from robotfix.cppparams import CppParams
     from robotfix.faults import Fault as ParamFault
     from robotfix.launchcheck import Imports, LaunchRun
     from robotfix.paramcheck import Known as ParamKnown
@@ -315,7 +316,7 @@ def _check_paths(
     if group is None:
         launches = _launches(found, everything)
         cpp = _cpp_graphs(found, cache, paths[0] if paths else config.root, result)
-        cpp_nodes = {n for g in cpp.values() for ns in g.nodes.values() for n in ns}
+        cpp_nodes = _cpp_params(cpp, launches, paths[0] if paths else config.root)
         result.diagnostics.extend(
             _parameter_problems(
                 found,
@@ -326,7 +327,7 @@ def _check_paths(
                 project,
                 result.internal_errors,
                 launches,
-                sorted(cpp_nodes),
+                cpp_nodes,
             )
         )
         result.files += len(found.parameter_files)
@@ -432,6 +433,20 @@ def _cpp_graphs(
     return {}
 
 
+def _cpp_params(
+    cpp: dict[str, FileGraph],
+    launches: tuple[LaunchRun, list[ParamFault]] | None,
+    where: Path,
+) -> CppParams:
+    """The C++ nodes' parameters (`cppparams`), with the code each launch entry
+    starts (as the graph finds it; a fault of ours there: `where`'s)."""
+    from robotfix.cppparams import CppParams
+    from robotfix.graphcheck import started_entries
+
+    run = launches[0] if launches else None
+    return CppParams(cpp, lambda: started_entries(run, cpp), str(where))
+
+
 def _graph_problems(
     found: Discovery,
     graphs: dict[str, list[Any]],
@@ -505,11 +520,10 @@ def _parameter_problems(
     project: Project | None = None,
     errors: list[InternalError] | None = None,
     read: tuple[LaunchRun, list[ParamFault]] | None = None,
-    cpp_nodes: list[str] | None = None,
+    cpp_nodes: CppParams | None = None,
 ) -> list[Diagnostic]:
     """Parameter files and launch files against the parameters the code declares;
-    `cpp_nodes`: the names the run's C++ nodes have (a section naming one is no
-    RF602);
+    `cpp_nodes`: the run's C++ nodes (`cppparams`: names, declarations);
     cached as a whole, under a key that hashes every input (`_params_key`);
     `parameters`: what the checks found of the files they read (the others are
     read there). Launch files are read first (`launchcheck.LaunchRun`): what
@@ -543,7 +557,7 @@ def _parameter_problems(
         project,
         faults,
         launches,
-        cpp_nodes or (),
+        cpp_nodes,
     )
     if errors is not None:
         errors += [InternalError(f.path, f.summary, f.detail) for f in faults]
@@ -558,9 +572,9 @@ def _params_key(
     config: Config,
     cache: ResultCache,
     launches: LaunchRun | None = None,
-    cpp_nodes: list[str] | None = None,
+    cpp_nodes: CppParams | None = None,
 ) -> str:
-    """Everything `paramcheck` reads (and the C++ nodes' names, `cpp_nodes`): the
+    """Everything `paramcheck` reads (and the C++ nodes', `cpp_nodes.key()`): the
     parameter and definitions files (bytes, per-file ignores, package folder), and
     each Python file that mentions a parameter word (`cache.MENTION_WORDS`; the
     others are skipped unread there) with its bytes, the file it really is, its
@@ -571,7 +585,7 @@ def _params_key(
     the modules it can import. With launch files: every file their reading touched
     (launch files, the parameter files and build files they lead to, the nodes'
     code, by its bytes)."""
-    parts = [f"cpp\0{name}" for name in cpp_nodes or ()]
+    parts = cpp_nodes.key() if cpp_nodes is not None else []
     if launches is not None:
         for touched in sorted(launches.touched()):
             file = Path(touched)

@@ -44,3 +44,15 @@ def package_folder(path: Path) -> Path | None:
         if os.path.isfile(candidate / "package.xml"):
             return candidate
     return None
+
+
+TEST_FOLDERS = frozenset({"test", "tests", "testing"})
+
+
+def test_code(path: str, within: Path | None = None) -> bool:
+    """Whether a file lies in a test folder (its nodes are throwaway); with
+    `within`, a folder of its own package's (the folder a package lies in may be
+    called `tests` too)."""
+    if within is not None:
+        path = os.path.relpath(os.path.abspath(path), within)
+    return not TEST_FOLDERS.isdisjoint(Path(path).parts[:-1])

@@ -17,6 +17,7 @@ from robotfix.ros.graph.model import (
     ACTION_CLIENT,
     ACTION_SERVER,
     CLIENT,
+    OPENS,
     PARAMETER,
     PUBLISHER,
     SERVICE,
@@ -119,6 +120,8 @@ def _owners(found: FileGraph, plugin: str | None) -> list[str]:
     seen: list[str] = []
     for endpoint in found.endpoints:
         owner = endpoint.owner
+        if endpoint.kind == OPENS:
+            continue  # not in the graph
         if (
             plugin is not None
             and owner != plugin
@@ -182,6 +185,8 @@ def _add(
     graph.nodes.append(instance)
     for endpoint in found.endpoints:
         if endpoint.owner != owner:
+            continue
+        if endpoint.kind == OPENS:
             continue
         if endpoint.kind == PARAMETER:  # a node's own: not a graph name
             graph.ends.append(End(index, path, endpoint, endpoint.name, True))

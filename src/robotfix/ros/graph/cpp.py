@@ -37,6 +37,7 @@ from robotfix.ros.graph.model import (
     ACTION_SERVER,
     CLIENT,
     MIDDLE,
+    OPENS,
     PARAMETER,
     PUBLISHER,
     SERVICE,
@@ -56,6 +57,7 @@ WORDS = (
     b"param",
     b"TwistPublisher",
     b"TwistSubscriber",
+    b"ClassLoader",
 )
 
 # method -> (kind, ros, name position, qos position, default position)
@@ -65,6 +67,8 @@ _METHODS: dict[str, tuple[str, int, int, int | None, int | None]] = {
     "create_service": (SERVICE, 2, 0, None, None),
     "create_client": (CLIENT, 2, 0, None, None),
     "declare_parameter": (PARAMETER, 2, 0, None, 1),
+    # nav2_util's helper: (node, name, default), declares when not yet declared
+    "declare_parameter_if_not_declared": (PARAMETER, 2, 1, None, 2),
     "advertise": (PUBLISHER, 1, 0, None, None),
     "subscribe": (SUBSCRIPTION, 1, 0, None, None),
     "advertiseService": (SERVICE, 1, 0, None, None),
@@ -91,6 +95,31 @@ _MAKERS = re.compile(
     ).encode()
 )
 _NODE_BASES = frozenset({"Node", "LifecycleNode"})
+_RCLCPP_BASES = frozenset(
+    {"Node", "LifecycleNode", "rclcpp::Node", "rclcpp_lifecycle::LifecycleNode"}
+)
+# what declares parameters this file does not name: a node that takes its
+# parameters from overrides or lets any be set, parameters declared in bulk or by
+# a base class's helper (nav2's `add_parameter`), generated code
+# (generate_parameter_library's ParamListener), plugins (pluginlib, which declare
+# parameters under their own names). Each is a parameter endpoint without a name,
+# its `value` the word (an OPENS endpoint: `cppparams` reads them, the graph not).
+OPENING = re.compile(
+    rb"\b(?:(allow_undeclared_parameters|automatically_declare_parameters_from_"
+    rb"overrides)\s*\(\s*true\b|(declare_parameters|add_parameter|ParamListener|"
+    rb"ClassLoader|createUniqueInstance|createSharedInstance|"
+    rb"createUnmanagedInstance)\b)"
+)
+_OPENING_WORDS = (  # one of which `OPENING` needs (a quick test)
+    b"allow_undeclared",
+    b"automatically_declare",
+    b"declare_parameters",
+    b"add_parameter",
+    b"ParamListener",
+    b"ClassLoader",
+    b"Instance",
+)
+AUTO = "automatically_declare_parameters_from_overrides"
 _PTR = re.compile(r"(::)?(ConstPtr|Ptr|SharedPtr|ConstSharedPtr|UniquePtr)$")
 
 _PARSER: Any = None
@@ -111,8 +140,12 @@ def read_cpp(data: bytes) -> FileGraph:
     found = FileGraph()
     if len(data) > MAX_CPP_BYTES or not any(w in data for w in WORDS):
         return found
-    if _MAKERS.search(data) is None:
-        return found
+    if any(w in data for w in _OPENING_WORDS):
+        found.endpoints += _opening(data)
+    if _MAKERS.search(data) is None and not any(
+        e.value == AUTO for e in found.endpoints
+    ):
+        return found  # (given any override: parsed for the node it is given to)
     try:
         tree = _parser().parse(data)
     except (ValueError, RuntimeError):
@@ -120,6 +153,17 @@ def read_cpp(data: bytes) -> FileGraph:
     _File(found, data).read(tree.root_node)
     found.endpoints.sort(key=lambda e: (e.line, e.col, e.kind))
     return found
+
+
+def _opening(data: bytes) -> list[Endpoint]:
+    """The words of `OPENING` in a file, as parameter endpoints without a name."""
+    out = []
+    for match in OPENING.finditer(data):
+        line = data.count(b"\n", 0, match.start()) + 1
+        word = (match.group(1) or match.group(2)).decode()
+        col = match.start() - data.rfind(b"\n", 0, match.start()) - 1
+        out.append(Endpoint(OPENS, None, (), line, col, "", None, 2, "", word))
+    return out
 
 
 def _text(node: Any) -> str:
@@ -135,6 +179,8 @@ class _File:
         self.handles: dict[str, str] = {}  # NodeHandle variable -> its namespace
         self.calls: list[tuple[Any, str]] = []  # (call node, enclosing class)
         self.ros1 = False
+        # a descriptor may make a declaration's type dynamic: then none is certain
+        self.dynamic = b"dynamic_typing" in data
 
     def read(self, root: Any) -> None:
         # in source order: tree-sitter's order of one name's captures varies from
@@ -172,9 +218,27 @@ class _File:
         for child in node.children:
             if child.type == "base_class_clause":
                 for base in child.children:
-                    last = _text(base).split("<")[0].split("::")[-1]
+                    written = re.sub(r"\s+", "", _text(base).split("<")[0])
+                    last = written.split("::")[-1]
                     if last in _NODE_BASES:
                         self.found.nodes.setdefault(cls, [])
+                    if last in _NODE_BASES and written not in _RCLCPP_BASES:
+                        # another package's node class: it may declare parameters
+                        point = base.start_point
+                        self.found.endpoints.append(
+                            Endpoint(
+                                OPENS,
+                                None,
+                                (),
+                                point[0] + 1,
+                                point[1],
+                                cls,
+                                None,
+                                2,
+                                "",
+                                written,
+                            )
+                        )
 
     def _function(self, node: Any) -> None:
         """A function's first parameter's type, for a roscpp callback."""
@@ -313,6 +377,8 @@ class _File:
         args = _arguments(args_node)
         handle = ""
         recv_text = _text(receiver) if receiver is not None else "this"
+        if method == "declare_parameter_if_not_declared":
+            recv_text = _helper_node(call, args[0] if args else None)
         owner = _owner(_enclosing(call), recv_text)
         if ros == 1:
             self.ros1 = True
@@ -329,9 +395,11 @@ class _File:
         if default_at is not None and len(args) > default_at:
             value = _text(args[default_at])[:80]
         if kind == PARAMETER and template is not None and not types:
-            types = (_text(template).strip("<>").strip(),)
+            types = (_text(template)[1:-1].strip(),)  # `<std::vector<double>>`
         elif kind == PARAMETER and ros == 2 and default_at is not None:
             types = _literal_type(args[default_at] if len(args) > default_at else None)
+        if kind == PARAMETER and ros == 2 and self.dynamic:
+            types = ()
         if handle == "?":
             name = name if name is not None and name.startswith("/") else None
             handle = ""
@@ -487,9 +555,33 @@ def _enclosing(node: Any) -> str:
     return ""
 
 
+_SELF = re.compile(r"(?:this->)?shared_from_this\(\)|\*?this")
+
+
+def _helper_node(call: Any, node: Any) -> str:
+    """The node a helper is handed (`declare_parameter_if_not_declared(node,
+    ...)`), as a receiver: "this" for `this`, `shared_from_this()`, or a local
+    bound to it in the same function (`auto node = shared_from_this();`, as
+    nav2's servers do); else as written."""
+    text = re.sub(r"\s+", "", _text(node))
+    if _SELF.fullmatch(text):
+        return "this"
+    body = _body(call)
+    if body is not None and re.fullmatch(r"[A-Za-z_]\w*", text):
+        bound = re.search(
+            rf"\b{text}\s*=\s*(?:this\s*->\s*)?shared_from_this\s*\(\s*\)\s*;",
+            _text(body),
+        )
+        if bound is not None:
+            return "this"
+    return text
+
+
 def _arguments(node: Any) -> list[Any]:
     """A call's arguments (its `argument_list`'s children but punctuation)."""
-    return [c for c in node.children if c.type not in ("(", ")", ",", "comment")]
+    return [
+        c for c in node.children if c.type not in ("(", ")", "{", "}", ",", "comment")
+    ]
 
 
 def _owner(cls: str, receiver: str) -> str:
@@ -519,10 +611,47 @@ def _interface(text: str, aliases: dict[str, str], kind: str) -> tuple[str, ...]
     return ()
 
 
-def _literal_type(node: Any) -> tuple[str, ...]:
+# rclcpp::ParameterType given in place of a default: the type it declares
+_PARAMETER_TYPES = {
+    "PARAMETER_BOOL": "bool",
+    "PARAMETER_INTEGER": "int64_t",
+    "PARAMETER_DOUBLE": "double",
+    "PARAMETER_STRING": "std::string",
+    "PARAMETER_BYTE_ARRAY": "std::vector<uint8_t>",
+    "PARAMETER_BOOL_ARRAY": "std::vector<bool>",
+    "PARAMETER_INTEGER_ARRAY": "std::vector<int64_t>",
+    "PARAMETER_DOUBLE_ARRAY": "std::vector<double>",
+    "PARAMETER_STRING_ARRAY": "std::vector<std::string>",
+}
+
+
+def _literal_type(node: Any, depth: int = 0) -> tuple[str, ...]:
     """The type a literal default gives a parameter (`declare_parameter("x",
-    false)`: bool, as rclcpp's ParameterValue of it); () for anything else."""
+    false)`: bool, as rclcpp's ParameterValue of it; `-0.5`,
+    `rclcpp::ParameterValue(0.5)` or `{0.5}`, `std::string("map")`, a
+    `rclcpp::PARAMETER_DOUBLE` given for the type); () for anything else."""
     kind = node.type if node is not None else ""
+    if kind in ("qualified_identifier", "identifier"):  # `rclcpp::PARAMETER_DOUBLE`
+        found = _PARAMETER_TYPES.get(_text(node).split("::")[-1])
+        return (found,) if found is not None else ()
+    if kind == "unary_expression" and _text(node).startswith("-") and depth < 4:
+        return _literal_type(node.child_by_field_name("argument"), depth + 1)
+    if kind in ("call_expression", "compound_literal_expression") and depth < 4:
+        func = node.child_by_field_name(
+            "function" if kind == "call_expression" else "type"
+        )
+        made = re.sub(r"\s+", "", _text(func))
+        args = node.child_by_field_name(
+            "arguments" if kind == "call_expression" else "value"
+        )
+        inner = _arguments(args) if args is not None else []
+        if made in ("rclcpp::ParameterValue", "ParameterValue") and len(inner) == 1:
+            return _literal_type(inner[0], depth + 1)
+        if made in ("std::string", "string") and len(inner) == 1:
+            return ("std::string",) if inner[0].type == "string_literal" else ()
+        if made.startswith("std::vector<"):  # `std::vector<double>{0.5, 0.0}`
+            return (made,)
+        return ()
     if kind in ("true", "false"):
         return ("bool",)
     if kind == "string_literal":

@@ -24,6 +24,9 @@ CLIENT = "client"
 ACTION_SERVER = "action_server"
 ACTION_CLIENT = "action_client"
 PARAMETER = "parameter"
+# C++ code that may declare parameters the file does not name (`value`: the word,
+# `cpp.OPENING`, or another package's node class): for `cppparams`, not the graph
+OPENS = "opens"
 KINDS = (
     PUBLISHER,
     SUBSCRIPTION,
@@ -32,6 +35,7 @@ KINDS = (
     ACTION_SERVER,
     ACTION_CLIENT,
     PARAMETER,
+    OPENS,
 )
 # the middle of a type's name (`pkg/msg/Name`) each kind's interface has
 MIDDLE = {
@@ -42,6 +46,7 @@ MIDDLE = {
     ACTION_SERVER: "action",
     ACTION_CLIENT: "action",
     PARAMETER: "",
+    OPENS: "",
 }
 # the kind on the other side of an edge
 PEER = {
