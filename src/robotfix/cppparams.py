@@ -41,7 +41,7 @@ from robotfix.ros.graph.model import OPENS, PARAMETER, FileGraph
 from robotfix.ros.package import package_folder, test_code
 
 if TYPE_CHECKING:  # the analysis is imported only when the summaries are made
-    from robotfix.analysis.parameters import Summary
+    from robotfix.analysis.paramsummary import Summary
     from robotfix.ros.graph.build import Started
     from robotfix.ros.launch.model import NodeEntry
 
@@ -204,7 +204,7 @@ class CppParams:
 def _summary(path: str, graph: FileGraph) -> Summary | None:
     """A C++ file's declarations as a parameter summary; None when it has none
     and names no node."""
-    from robotfix.analysis.parameters import ParamDecl, Summary
+    from robotfix.analysis.paramsummary import ParamDecl, Summary
 
     summary = Summary(path)
     summary.node_names = {o: list(n) for o, n in graph.nodes.items()}
