@@ -188,23 +188,23 @@ class LaunchRun:
         by_file: dict[str, list[_Started]] = {}
         for started in self.started:
             by_file.setdefault(started.entry.place.path, []).append(started)
+        known = self._known(table)
         for path, entries in by_file.items():
             with guard(path, out, faults):
                 for started in entries:
                     cpp = table.cpp.owners_of(started.entry)  # its C++ node
                     if cpp and started.entry.ros == 2:
-                        out += _ros2_entry(started.entry, cpp, table, loaded)
+                        out += _ros2_entry(started.entry, cpp, table, loaded, known)
                     code = [by_real[f] for f in sorted(started.files) if f in by_real]
                     if not code:
                         continue
                     if started.entry.ros == 2:
                         owners = _owners_of(code)
-                        out += _ros2_entry(started.entry, owners, table, loaded)
+                        out += _ros2_entry(started.entry, owners, table, loaded, known)
                     else:
                         out += _ros1_entry(started.entry, code, table)
         from robotfix.paramcheck import unmatched_sections
 
-        known = self._known(table)
         for path, parameters in sorted(loaded.items()):
             with guard(path, out, faults):
                 out += unmatched_sections(path, parameters, known)
@@ -334,8 +334,10 @@ def _ros2_entry(
     owners: list[tuple[Summary, str]],
     table: Table,
     loaded: dict[str, P.ParamFile],
+    known: set[str],
 ) -> list[Diagnostic]:
-    """RF401/RF101 and RF601 for one entry, against its code's node objects."""
+    """RF401/RF101, RF601 and RF602 for one entry, against its code's node
+    objects (`known`: every node name of the run)."""
     if not owners:
         return []
     out: list[Diagnostic] = []
@@ -364,9 +366,52 @@ def _ros2_entry(
                         _declared_in(owners),
                     )
                 )
-        elif parameter.path is not None and closed:
-            out += _file_typos(entry, parameter, owners, loaded, node, started_at)
+        elif parameter.path is not None:
+            nothing = _file_gives_nothing(entry, parameter, owners, loaded, known)
+            if nothing is not None:
+                out.append(nothing)
+            elif closed:
+                out += _file_typos(entry, parameter, owners, loaded, node, started_at)
     return out
+
+
+def _file_gives_nothing(
+    entry: NodeEntry,
+    parameter: FileParam,
+    owners: list[tuple[Summary, str]],
+    loaded: dict[str, P.ParamFile],
+    known: set[str],
+) -> Diagnostic | None:
+    """RF602 (a warning) at an entry that passes its node a parameter file none
+    of whose sections applies to it, nor to any other node of the run (a launch
+    name or the code's): f1tenth's `bridge:` file passed to a node renamed
+    `sim_bridge`. The node gets nothing of it. Not when a key has a wildcard."""
+    assert parameter.path is not None
+    parameters = loaded.get(parameter.path)
+    if parameters is None or parameters.layout != "ros2":
+        return None
+    given = (
+        {entry.name.rsplit("/", 1)[-1]}
+        if entry.name
+        else {n for s, o in owners for n in s.names_of(o)}
+    )
+    keys = sorted({item.node for item in parameters.entries if item.node})
+    if (
+        not given
+        or not keys
+        or any("*" in k for k in keys)
+        or any(_keyed_for(k, given | known, entry.namespace) for k in keys)
+    ):
+        return None
+    first = next(i for i in parameters.entries if i.node == keys[0])
+    return messages.section_applies_to_none(
+        entry.place.path,
+        entry.place.line,
+        entry.place.col,
+        sorted(given)[0],
+        keys,
+        Note(f"the section `{keys[0]}`", parameter.path, first.line),
+    )
 
 
 def _undeclared(name: str, owners: list[tuple[Summary, str]]) -> bool:

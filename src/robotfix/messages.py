@@ -931,6 +931,33 @@ def parameter_section_unmatched(
     )
 
 
+def section_applies_to_none(
+    path: str, line: int, col: int, name: str, keys: list[str], section: Note
+) -> Diagnostic:
+    """RF602 as a warning: a launch entry passes its node a parameter file none
+    of whose sections applies to it or to any other node of the run."""
+    shown = _join(
+        [f"`{k}`" for k in keys[:3]]
+        + ([f"{len(keys) - 3} more"] if len(keys) > 3 else [])
+    )
+    return Diagnostic(
+        rules.PARAMETER_SECTION_UNMATCHED,
+        path,
+        Span.point(line, col),
+        f"this entry passes node `{name}` a parameter file none of whose sections "
+        f"({shown}) applies to it: the node gets none of the file's parameters and "
+        "runs with its defaults",
+        (
+            section,
+            Note(
+                f"key a section `{name}` (or `/**`), or give the node the name its "
+                "section has (a launch file's `name=` renames it)"
+            ),
+        ),
+        level=Severity.WARNING,
+    )
+
+
 def remapped_here(place: Placed, node: str, written: str | None, resolved: str) -> Note:
     """Where a launch file's remapping renamed an endpoint of a graph finding."""
     return Note(
