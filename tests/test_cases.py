@@ -44,12 +44,13 @@ def _distro(folder: Path) -> str:
     return "ros1" if folder.is_relative_to(CASES / "ros1") else "ros2"
 
 
-# launch/, graph/: whole workspaces, whose launch files' and graph's findings need
-# the tree (tests/test_launch.py and test_graph.py check every file of them)
+# launch/, graph/, cpp_params/: whole workspaces, whose launch files' and graph's
+# findings need the tree (tests/test_launch.py, test_graph.py and
+# test_launch_cpp.py check every file of them)
 SINGLE_FILES = sorted(
     p
     for p in CASES.rglob("*.py")
-    if p.relative_to(CASES).parts[0] not in ("launch", "graph")
+    if p.relative_to(CASES).parts[0] not in ("launch", "graph", "cpp_params")
 )
 
 
