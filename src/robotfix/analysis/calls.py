@@ -12,9 +12,10 @@ from fractions import Fraction
 from functools import partial
 
 from robotfix.analysis import arith, containers, frames, heap, imported, inline
-from robotfix.analysis.context import Scope
-from robotfix.analysis.library import LibraryEvaluator
-from robotfix.analysis.program import Function, attribute_key
+from robotfix.analysis.context import FileContext, Scope
+from robotfix.analysis.expressions import ExpressionEvaluator
+from robotfix.analysis.library import Libraries
+from robotfix.analysis.program import Function, Program, attribute_key
 from robotfix.analysis.state import State
 from robotfix.analysis.values import (
     MESSAGE_LIKE,
@@ -77,8 +78,35 @@ ONE = A.Num(Fraction(1), True)
 ZERO = A.Num(Fraction(0), True)
 
 
-class CallEvaluator(LibraryEvaluator):
+class CallEvaluator(ExpressionEvaluator):
     inlined: tuple[str, ...] = ()  # helpers being evaluated at a call
+
+    def __init__(self, ctx: FileContext, program: Program) -> None:
+        super().__init__(ctx, program)
+        # calls into libraries and objects of stub classes, as their stubs say
+        self.libraries = Libraries(ctx, program, self.check, self.refined, self.lookups)
+
+    # -- what the stubs add to names and operators -----------------------------
+    def member(self, base: Value, attr: str, state: State) -> Value | None:
+        if base.kind == "object":
+            return self.libraries.object_member(base.name, attr, state)
+        return super().member(base, attr, state)
+
+    def instance_attribute(
+        self, base: Value, var: str, node: ast.Attribute, state: State
+    ) -> Value:
+        if base.kind == "instance" and f"{var}.{node.attr}" not in state.env:
+            found = self.libraries.inherited_method(base.name, node.attr)
+            if found is not None:
+                return found
+        return super().instance_attribute(base, var, node, state)
+
+    def object_operation(
+        self, node: ast.BinOp, left: Value, right: Value, state: State
+    ) -> Value | None:
+        return self.libraries.object_operation(self, node, left, right, state)
+
+    # -- calls -----------------------------------------------------------------
 
     def eval_Call(self, node: ast.Call, state: State) -> Value:
         func = node.func
@@ -202,7 +230,7 @@ class CallEvaluator(LibraryEvaluator):
             )
             if found is not None:
                 return found
-        found = self.library_call(callee, node, args, kwargs, state)
+        found = self.libraries.library_call(self, callee, node, args, kwargs, state)
         if frames.is_tf2(name):  # the stub checked the arguments; frames follow
             moved = frames.tf2_call(self.ctx, name, node, args, kwargs, state)
             if moved is not None:
