@@ -9,8 +9,8 @@ among the stubs' methods, and used only as far as they all agree.
 `Libraries` is a collaborator of the evaluator (`calls.CallEvaluator.libraries`),
 made with the file's context, program and the checks it reports through; what it
 needs of the walker at a call, the statement being run and where a value
-reaching a unit is logged for `robotfix suggest`, it is handed as `at` (`Site`),
-and it never calls the walker otherwise.
+reaching a unit is logged for `robotfix suggest`, it is handed as `at`
+(`imported.Site`), and it never calls the walker otherwise.
 """
 
 from __future__ import annotations
@@ -20,11 +20,11 @@ import math
 from collections.abc import Sequence
 from dataclasses import replace
 from fractions import Fraction
-from typing import TYPE_CHECKING, Protocol
+from typing import TYPE_CHECKING
 
 from robotfix import messages
 from robotfix.analysis import fixes, frames, heap, imported
-from robotfix.analysis.imported import resolve_library
+from robotfix.analysis.imported import Site, resolve_library
 from robotfix.analysis.state import State
 from robotfix.analysis.types import OPERATOR_METHODS
 from robotfix.analysis.values import Conversion, Value
@@ -43,21 +43,6 @@ if TYPE_CHECKING:
     from robotfix.analysis.refined import RefinedChecker
 
 ZERO = A.Num(Fraction(0), True)
-
-
-class Site(Protocol):
-    """What a library call needs of the walker that meets it."""
-
-    site: ast.AST  # the statement being interpreted
-
-    def note_sink(
-        self,
-        expr: ast.expr,
-        unit: Unit | None,
-        value: Value | None,
-        integer: bool = False,
-    ) -> None:
-        """For `robotfix suggest`: `expr`, holding `value`, reached `unit`'s place."""
 
 
 class Libraries:
