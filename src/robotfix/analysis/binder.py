@@ -16,6 +16,7 @@ import ast
 from collections.abc import Callable
 
 from robotfix.analysis import containers, decisions, frames, heap, hover, typeterms
+from robotfix.analysis.callfacts import CallFacts
 from robotfix.analysis.calls import CallEvaluator
 from robotfix.analysis.context import FileContext, Scope
 from robotfix.analysis.program import Function, Program
@@ -87,6 +88,8 @@ class Binder(CallEvaluator):
         self.elifs: set[int] = set()  # `if` statements that are an `elif`
         self.guarded = 0  # inside a `try` body whose handlers catch NameError
         self.nested: dict[str, ast.AST] = {}  # functions defined in this body
+        # which calls end a path, may end it, or only read a message
+        self.facts = CallFacts(ctx, program, scope, function, self.nested)
         self._shared: set[str] | None = None  # names whose lists may be shared
         # per loop being run, innermost last: the states at its `break`s, kept only
         # while a loop's first iteration is run again (`_first_breaks`), else None
@@ -512,6 +515,7 @@ class Binder(CallEvaluator):
             saved.local_names | own,
             saved.global_names - own,
         )
+        self.facts.scope = self.scope
         size: A.Expr = A.TRUE
         try:
             for generator in node.generators:
@@ -528,7 +532,7 @@ class Binder(CallEvaluator):
                     inner.assume(self.condition(test, inner))
             value = self.eval(node.elt, inner)
         finally:
-            self.scope = saved
+            self.scope = self.facts.scope = saved
         each: A.Expr = A.TRUE
         term = value.term
         if term is not None and value.kind in (

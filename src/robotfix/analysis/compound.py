@@ -280,7 +280,7 @@ class CompoundWalker(PathWalker):
         if not isinstance(stmt, PLAIN):
             return False
         return not isinstance(stmt, ast.Expr) or not (
-            isinstance(stmt.value, ast.Call) and self._may_stop(stmt.value.func)
+            isinstance(stmt.value, ast.Call) and self.facts.may_stop(stmt.value.func)
         )
 
     def _may_follow(self, suffix: list[ast.stmt]) -> bool:
@@ -291,7 +291,7 @@ class CompoundWalker(PathWalker):
             if isinstance(node, (ast.Return, ast.Raise)) or (
                 isinstance(node, ast.Expr)
                 and isinstance(node.value, ast.Call)
-                and self._may_stop(node.value.func)
+                and self.facts.may_stop(node.value.func)
             ):
                 return False
         return True

@@ -199,9 +199,10 @@ class Interpreter(CompoundWalker):
     def visit_Expr(self, node: ast.Expr, state: State) -> State:
         self.eval(node.value, state)
         if isinstance(node.value, ast.Call):
-            if self._never_returns(node.value.func):
+            facts = self.facts
+            if facts.never_returns(node.value.func):
                 state.reachable = False  # sys.exit(1) ends this path
-            elif self._may_stop(node.value.func):
+            elif facts.may_stop(node.value.func):
                 state.exits += 1
         return state
 

@@ -2,10 +2,10 @@
 
 `PathWalker` forgets what code may change (`havoc`: bound names, messages it may
 write or let escape, lists, and, in a loop that calls out, what callbacks set),
-tells which calls end a path or may (`_never_returns`, `_may_stop`) and which only
-read a message (`only_reads`), and joins two paths (`_join`, with the hooks
-`state.join` asks: `kept`, `merged`, `selector`, `complete`, `ties`). It uses the
-`Binder` below it and `stmtsyntax`; `compound` and `interpreter` use it.
+and joins two paths (`_join`, with the hooks `state.join` asks: `kept`, `merged`,
+`selector`, `complete`, `ties`); whether a call only reads a message it asks the
+walker's `facts` (`callfacts.CallFacts`). It uses the `Binder` below it and
+`stmtsyntax`; `compound` and `interpreter` use it.
 """
 
 from __future__ import annotations
@@ -14,28 +14,20 @@ import ast
 from collections.abc import Hashable
 from functools import partial
 
-from robotfix.analysis import containers, decisions, frames, heap, writes
+from robotfix.analysis import containers, decisions, heap, writes
 from robotfix.analysis.binder import Binder
-from robotfix.analysis.calls import LEAVING, MUTATORS
-from robotfix.analysis.program import Function, attribute_key, never_returns
+from robotfix.analysis.calls import MUTATORS
+from robotfix.analysis.program import attribute_key
 from robotfix.analysis.state import State, join
 from robotfix.analysis.stmtsyntax import (
     BINDER_KINDS,
-    BUILTINS,
     KEEPS,
-    LOGGING,
-    NO_RETURN_NAMES,
-    READING_BUILTINS,
-    RETURNS,
-    ROS_LOGGING,
     WHOLE,
     accumulated,
     assign_targets,
     bound_by,
     constant_stores,
     excuse,
-    may_raise,
-    no_return,
     note_sum,
     sums,
 )
@@ -52,6 +44,9 @@ from robotfix.astwalk import walk
 
 
 class PathWalker(Binder):
+    def only_reads(self, call: ast.Call, arg: ast.expr) -> bool:
+        return self.facts.only_reads(call, arg)
+
     def _forgotten(
         self,
         name: str,
@@ -201,12 +196,12 @@ class PathWalker(Binder):
         if not objects:
             return
         leaf = partial(self._leaf, state, objects)
-        found = writes.uses(nodes, set(objects), leaf, self.only_reads)
+        found = writes.uses(nodes, set(objects), leaf, self.facts.only_reads)
         kept = {name for name, kinds in found.items() if not kinds & WHOLE}
         if kept:
             tree = self.ctx.source.tree
             scope = [self.function.node] if self.function is not None else [tree]
-            escapes = writes.uses(scope, kept, leaf, self.only_reads)  # type: ignore[arg-type]
+            escapes = writes.uses(scope, kept, leaf, self.facts.only_reads)  # type: ignore[arg-type]
             kept -= {name for name, kinds in escapes.items() if writes.ESCAPE in kinds}
         whole = {ref for name, ref in objects.items() if name not in kept}
         for ref in whole:
@@ -236,187 +231,6 @@ class PathWalker(Binder):
             spec = self.ctx.catalog.lookup(field.msg_type) if field.msg_type else None
             index += 1
         return field is not None and field.kind != "msg"
-
-    def only_reads(self, call: ast.Call, arg: ast.expr, depth: int = 0) -> bool:
-        """Whether `call` only reads the argument `arg` (a message): a builtin that
-        reads, `math`, logging, publishing, a tf2 transform, or a function of this
-        file that only reads that parameter. Syntactic, so kept per call and
-        argument (asked again on every pass of a loop)."""
-        key = (id(call), id(arg), depth)
-        found = self.program.reading_calls.get(key)
-        if found is None:
-            found = self.program.reading_calls[key] = self._only_reads(call, arg, depth)
-        return found
-
-    def _only_reads(self, call: ast.Call, arg: ast.expr, depth: int) -> bool:
-        func = call.func
-        user = self._user_function(func)
-        if user is not None:
-            return depth < 2 and self._reads_parameter(user, call, arg, depth + 1)
-        if isinstance(func, ast.Name):
-            return (
-                func.id in READING_BUILTINS
-                and func.id not in self.scope.module().local_names
-            )
-        if not isinstance(func, ast.Attribute):
-            return False
-        name = func.attr
-        if name in LEAVING or name in ROS_LOGGING:
-            return True
-        if frames.is_tf2(name):  # unless this file defines a method of that name
-            return not any(k.rpartition(".")[2] == name for k in self.program.functions)
-        receiver = func.value
-        if isinstance(receiver, ast.Name) and receiver.id == "math":
-            return True
-        return self._logs(func)
-
-    def _user_function(self, func: ast.expr) -> Function | None:
-        """The function of this file a call's `func` names, syntactically."""
-        if isinstance(func, ast.Name):
-            return self.program.functions.get(func.id)
-        if (
-            isinstance(func, ast.Attribute)
-            and isinstance(func.value, ast.Name)
-            and self.function is not None
-            and self.function.class_name is not None
-            and func.value.id == self.function.first_parameter
-        ):
-            return self.program.functions.get(f"{self.function.class_name}.{func.attr}")
-        return None
-
-    def _reads_parameter(
-        self, function: Function, call: ast.Call, arg: ast.expr, depth: int
-    ) -> bool:
-        node = function.node
-        if isinstance(node, ast.Lambda):
-            return False
-        params = [a.arg for a in [*node.args.posonlyargs, *node.args.args]]
-        if function.is_method and isinstance(call.func, ast.Attribute):
-            params = params[1:]
-        name = next((k.arg for k in call.keywords if k.value is arg), None)
-        if name is None and arg in call.args:
-            index = call.args.index(arg)
-            starred = any(isinstance(a, ast.Starred) for a in call.args[: index + 1])
-            name = params[index] if index < len(params) and not starred else None
-        if name is None:
-            return False
-        found = writes.uses(
-            node.body,
-            {name},
-            lambda root, path: False,
-            partial(self.only_reads, depth=depth),
-        )
-        return not found[name]
-
-    def _logs(self, func: ast.Attribute) -> bool:
-        """`self.get_logger().error(...)`, `logger.error(...)`; not `parser.error`:
-        a logging method called on something its code calls a logger."""
-        receiver = self.ctx.source.segment(func.value) or ""
-        return func.attr in LOGGING and "log" in receiver.lower()
-
-    def _may_stop(self, func: ast.expr) -> bool:
-        """A call whose result is dropped, which may never return for all the
-        analysis can tell: a function of this file that can raise, or one it
-        cannot see (`self.fail(msg)`, `parser.exit(1)`), unless its name says it
-        returns (`print`, `logger.error`, `pub.publish`)."""
-        name = func.id if isinstance(func, ast.Name) else getattr(func, "attr", "")
-        if name in RETURNS:
-            return False
-        if name in LOGGING and isinstance(func, ast.Attribute):
-            return not self._logs(func)
-        known: Function | None = None
-        if isinstance(func, ast.Name):
-            if func.id in self.nested:
-                return self._function_may_raise(self.nested[func.id])
-            if func.id in BUILTINS and func.id not in self.scope.module().local_names:
-                return False
-            known = self.program.functions.get(func.id)
-        elif (
-            isinstance(func, ast.Attribute)
-            and self.function is not None
-            and self.function.class_name is not None
-            and isinstance(func.value, ast.Name)
-        ):
-            method = f"{self.function.class_name}.{func.attr}"
-            known = self.program.functions.get(method)
-        if known is not None:
-            return self._function_may_raise(known.node)
-        return True
-
-    def _function_may_raise(self, node: ast.AST) -> bool:
-        key = -id(node)  # `ends` holds never-returns by id(node); this by -id(node)
-        found = self.program.ends.get(key)
-        if found is None:
-            found = self.program.ends[key] = may_raise(node)
-        return found
-
-    def _may_not_return(self, func: ast.expr) -> bool:
-        """A cheap first look: a name that could be one of the calls below."""
-        if isinstance(func, ast.Name):
-            name = func.id
-            return (
-                name in NO_RETURN_NAMES
-                or name in self.ctx.imports
-                or name in self.program.functions
-                or name in self.nested
-            )
-        name = getattr(func, "attr", "")
-        if name in NO_RETURN_NAMES:
-            return True
-        return (
-            self.function is not None
-            and self.function.class_name is not None
-            and isinstance(getattr(func, "value", None), ast.Name)
-            and f"{self.function.class_name}.{name}" in self.program.functions
-        )
-
-    def _never_returns(self, func: ast.expr) -> bool:
-        """`sys.exit()`, `pytest.fail()`, or a function of this file that can only
-        raise: the path ends there."""
-        if not self._may_not_return(func):
-            return False
-        module = self.scope.module()
-        known: Function | None = None
-        if isinstance(func, ast.Name):
-            if func.id in self.nested:  # a helper defined in this function
-                return self._function_never_returns(self.nested[func.id])
-            if func.id in self.scope.local_names:  # `from pytest import fail` here
-                return no_return(self.ctx.qualname(func))
-            if func.id in ("exit", "quit") and func.id not in module.local_names:
-                return True
-            known = self.program.functions.get(func.id)
-        elif (
-            isinstance(func, ast.Attribute)
-            and isinstance(func.value, ast.Name)
-            and self.function is not None
-            and self.function.is_method
-            and func.value.id == self.function.first_parameter
-        ):
-            method = f"{self.function.class_name}.{func.attr}"
-            known = self.program.functions.get(method)
-        if known is not None:
-            return self._function_never_returns(known.node)
-        return no_return(self.ctx.qualname(func))
-
-    def _function_never_returns(self, node: ast.AST) -> bool:
-        known = self.program.ends.get(id(node))
-        if known is None:
-            known = self.program.ends[id(node)] = never_returns(node, self._ends_path)
-        return known
-
-    def _ends_path(self, stmt: ast.stmt) -> bool:
-        """A last statement after which a function cannot go on."""
-        if isinstance(stmt, ast.Raise):
-            return True
-        if not isinstance(stmt, ast.Expr) or not isinstance(stmt.value, ast.Call):
-            return False
-        func = stmt.value.func
-        name = func.id if isinstance(func, ast.Name) else getattr(func, "attr", "")
-        if name in ("exit", "quit") and isinstance(func, ast.Name):
-            return True
-        if name not in NO_RETURN_NAMES and name not in self.ctx.imports:
-            return False
-        return no_return(self.ctx.qualname(func))
 
     def _decided(self, test: ast.expr, *states: State) -> None:
         """`test` was decided on the paths of `states` (`decisions.py`)."""
@@ -499,7 +313,7 @@ class PathWalker(Binder):
             and any(isinstance(t, ast.Name) and t.id == name for t in node.targets)
         }
         leaf = partial(self._leaf, state, dict.fromkeys(roots, ref))
-        found = writes.uses([tree], roots, leaf, self.only_reads)
+        found = writes.uses([tree], roots, leaf, self.facts.only_reads)
         return not any(writes.ESCAPE in kinds for kinds in found.values())
 
     def merged(self, x: Value, y: Value) -> Value:
