@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from robotfix.analysis.interpreter import _accumulated, _note_sum
+from robotfix.analysis.stmtsyntax import accumulated, note_sum
 from robotfix.project.modules import import_names, imported_names
 
 CASES = Path(__file__).parent / "cases"
@@ -83,7 +83,7 @@ def _old_accumulated(nodes: list[ast.stmt]) -> set[str]:
     targets: set[int] = set()
     stores: list[ast.Name] = []
     for child in ast.walk(ast.Module(body=nodes, type_ignores=[])):
-        _note_sum(child, summed, targets)
+        note_sum(child, summed, targets)
         if isinstance(child, ast.Name) and isinstance(child.ctx, ast.Store):
             stores.append(child)
     return summed - {n.id for n in stores if id(n) not in targets}
@@ -94,4 +94,4 @@ def test_accumulated_names_are_those_only_ever_summed() -> None:
         "total += d\nother -= d\nscaled *= 2\nreset += 1\nreset = 0\n"
         "[seen for seen in xs]\nseen += 1\n(walrus := 3)\nwalrus += 1\n"
     ).body
-    assert _accumulated(body) == {"total", "other"} == _old_accumulated(body)
+    assert accumulated(body) == {"total", "other"} == _old_accumulated(body)

@@ -271,16 +271,11 @@ class Typed(Protocol):
     ) -> Value: ...
 
 
-class Caller(Protocol):
-    """What `call` needs of the evaluator making the call (`analysis/calls.py`)."""
+class Site(Protocol):
+    """What a call into code RobotFix does not walk (an imported function, a
+    library's stub: `library.Libraries`) needs of the walker that meets it."""
 
     site: ast.AST  # the statement being interpreted
-
-    @property
-    def ctx(self) -> Symbols: ...
-
-    @property
-    def refined(self) -> RefinedChecks: ...
 
     def note_sink(
         self,
@@ -289,6 +284,16 @@ class Caller(Protocol):
         value: Value | None,
         integer: bool = False,
     ) -> None: ...
+
+
+class Caller(Site, Protocol):
+    """What `call` needs of the evaluator making the call (`analysis/calls.py`)."""
+
+    @property
+    def ctx(self) -> Symbols: ...
+
+    @property
+    def refined(self) -> RefinedChecks: ...
 
     @property
     def lookups(self) -> Typed: ...

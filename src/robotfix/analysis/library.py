@@ -5,6 +5,12 @@ stub class whose properties and methods are known in turn (`self.get_clock().now
 .nanoseconds` is in ns). A subclass of a stub class (`class Ticker(Node)`) inherits
 its methods. A method called on a value of unknown type is looked up by its name
 among the stubs' methods, and used only as far as they all agree.
+
+`Libraries` is a collaborator of the evaluator (`calls.CallEvaluator.libraries`),
+made with the file's context, program and the checks it reports through; what it
+needs of the walker at a call, the statement being run and where a value
+reaching a unit is logged for `robotfix suggest`, it is handed as `at`
+(`imported.Site`), and it never calls the walker otherwise.
 """
 
 from __future__ import annotations
@@ -14,11 +20,11 @@ import math
 from collections.abc import Sequence
 from dataclasses import replace
 from fractions import Fraction
+from typing import TYPE_CHECKING
 
 from robotfix import messages
 from robotfix.analysis import fixes, frames, heap, imported
-from robotfix.analysis.expressions import ExpressionEvaluator
-from robotfix.analysis.imported import resolve_library
+from robotfix.analysis.imported import Site, resolve_library
 from robotfix.analysis.state import State
 from robotfix.analysis.types import OPERATOR_METHODS
 from robotfix.analysis.values import Conversion, Value
@@ -29,16 +35,32 @@ from robotfix.annotations.units import Unit, named
 from robotfix.messages import Declared
 from robotfix.stubs import load as stubs
 
+if TYPE_CHECKING:
+    from robotfix.analysis.checks import Checker
+    from robotfix.analysis.context import FileContext
+    from robotfix.analysis.lookups import Lookups
+    from robotfix.analysis.program import Program
+    from robotfix.analysis.refined import RefinedChecker
+
 ZERO = A.Num(Fraction(0), True)
 
 
-class LibraryEvaluator(ExpressionEvaluator):
-    # -- names ---------------------------------------------------------------
-    def member(self, base: Value, attr: str, state: State) -> Value | None:
-        if base.kind == "object":
-            return self.object_member(base.name, attr, state)
-        return super().member(base, attr, state)
+class Libraries:
+    def __init__(
+        self,
+        ctx: FileContext,
+        program: Program,
+        check: Checker,
+        refined: RefinedChecker,
+        lookups: Lookups,
+    ) -> None:
+        self.ctx = ctx
+        self.program = program
+        self.check = check
+        self.refined = refined
+        self.lookups = lookups
 
+    # -- names ---------------------------------------------------------------
     def object_member(self, cls_name: str, attr: str, state: State) -> Value | None:
         """`t.nanoseconds`, `d.to_sec` of an object of a stub class."""
         cls = resolve_library(self.ctx, cls_name)
@@ -59,7 +81,7 @@ class LibraryEvaluator(ExpressionEvaluator):
         return self._object(found.type, state, f"`.{attr}`")
 
     def object_operation(
-        self, node: ast.BinOp, left: Value, right: Value, state: State
+        self, at: Site, node: ast.BinOp, left: Value, right: Value, state: State
     ) -> Value | None:
         """`now - self.prev` (rclpy Times: a Duration), `d * 2` (a rospy Duration):
         the left operand's `__sub__`, or the right one's `__rsub__`, as its stub
@@ -88,31 +110,29 @@ class LibraryEvaluator(ExpressionEvaluator):
                 continue
             param = function.params[0] if function.params else None
             if param is not None and other.kind != "object":
-                self._check_argument(function, param, other, state)
+                self._check_argument(at, function, param, other, state)
             return self.library_result(function, {}, node, state)
         return None
 
-    def instance_attribute(
-        self, base: Value, var: str, node: ast.Attribute, state: State
-    ) -> Value:
-        """`self.create_timer` in a class derived from a stub class (`Node`)."""
-        attr = node.attr
+    def inherited_method(self, class_name: str, attr: str) -> Value | None:
+        """`self.create_timer` in a class derived from a stub class (`Node`), when
+        neither the class nor its code defines `attr`."""
         if (
-            base.kind == "instance"
-            and f"{var}.{attr}" not in state.env
-            and f"{base.name}.{attr}" not in self.program.functions
-            and attr not in self.program.attributes.get(base.name, {})
-            and self.lookups.class_constant(base.name, attr) is None
+            f"{class_name}.{attr}" in self.program.functions
+            or attr in self.program.attributes.get(class_name, {})
+            or self.lookups.class_constant(class_name, attr) is not None
         ):
-            for cls in self.program.types.library_bases(base.name):
-                function = self._stubs().member(cls, attr)
-                if function is not None and function.kind == "method":
-                    return Value("libmethod", name=function.qualname)
-        return super().instance_attribute(base, var, node, state)
+            return None
+        for cls in self.program.types.library_bases(class_name):
+            function = self._stubs().member(cls, attr)
+            if function is not None and function.kind == "method":
+                return Value("libmethod", name=function.qualname)
+        return None
 
     # -- calls ---------------------------------------------------------------
     def library_call(
         self,
+        at: Site,
         callee: Value,
         node: ast.Call,
         args: list[Value],
@@ -126,26 +146,27 @@ class LibraryEvaluator(ExpressionEvaluator):
         if callee.kind == "libmethod":
             found = resolve_library(self.ctx, callee.name)
             if isinstance(found, stubs.Function):
-                return self.call_function(found, args, kwargs, node, state, 0)
+                return self.call_function(at, found, args, kwargs, node, state, 0)
             return None
         if callee.kind == "module":
             found = resolve_library(self.ctx, callee.name)
             if isinstance(found, stubs.Class):
                 init = self._stubs().member(found, "__init__")
                 if init is not None:
-                    self.call_function(init, args, kwargs, node, state, 0)
+                    self.call_function(at, init, args, kwargs, node, state, 0)
                 return Value("object", name=found.qualname)
             if isinstance(found, stubs.Function):
                 # `Duration.to_sec(d)`: a method through its class takes self first
                 shift = 1 if found.kind == "method" else 0
-                return self.call_function(found, args, kwargs, node, state, shift)
+                return self.call_function(at, found, args, kwargs, node, state, shift)
             return None
         if callee.kind == "unknown" and isinstance(node.func, ast.Attribute):
-            return self._by_method_name(node.func.attr, node, args, kwargs, state)
+            return self._by_method_name(at, node.func.attr, node, args, kwargs, state)
         return None
 
     def _by_method_name(
         self,
+        at: Site,
         name: str,
         node: ast.Call,
         args: list[Value],
@@ -156,21 +177,22 @@ class LibraryEvaluator(ExpressionEvaluator):
         if not candidates:
             return None
         if len({_signature(f) for f in candidates}) == 1:
-            return self.call_function(candidates[0], args, kwargs, node, state, 0)
+            return self.call_function(at, candidates[0], args, kwargs, node, state, 0)
         # they differ: check only the arguments every candidate gives one unit
         for index, value in enumerate(args):
             params = [_param_at(f, index, None) for f in candidates]
             if all(p is not None for p in params) and _one_unit(params):
-                self._check_argument(candidates[0], params[0], value, state)  # type: ignore[arg-type]
+                self._check_argument(at, candidates[0], params[0], value, state)  # type: ignore[arg-type]
         for key, value in kwargs.items():
             params = [_param_at(f, None, key) for f in candidates]
             given = [p for p in params if p is not None]
             if given and _one_unit(given):
-                self._check_argument(candidates[0], given[0], value, state)
+                self._check_argument(at, candidates[0], given[0], value, state)
         return None
 
     def call_function(
         self,
+        at: Site,
         function: stubs.Function,
         args: list[Value],
         kwargs: dict[str | None, Value],
@@ -183,19 +205,21 @@ class LibraryEvaluator(ExpressionEvaluator):
             if param.keyword and param.name in kwargs:
                 given[param.name] = [kwargs[param.name]]
             elif param.positional is not None:
-                at = param.positional + shift
-                given[param.name] = args[at:] if param.variadic else args[at : at + 1]
+                start = param.positional + shift
+                given[param.name] = (
+                    args[start:] if param.variadic else args[start : start + 1]
+                )
         for param in function.params:
             for value in given.get(param.name, []):
                 if function.rule != "scale":  # see `_scaled`
-                    self._check_argument(function, param, value, state)
-        self._argument_flows(function, node, args, kwargs, shift)
+                    self._check_argument(at, function, param, value, state)
+        self._argument_flows(at, function, node, args, kwargs, shift)
         # a condition (`where(cond, x, y)`) has no part in a unit rule
         quantities = [p for p in function.params if not p.flag]
         first = [v for p in quantities for v in given.get(p.name, [])[:1]]
         values = [v for p in quantities for v in given.get(p.name, [])]
         if function.rule is not None and values:
-            found = self._unit_rule(function, first[0], values, node, state)
+            found = self._unit_rule(at, function, first[0], values, node, state)
             if found is not None:
                 return found
         terms = {
@@ -211,6 +235,7 @@ class LibraryEvaluator(ExpressionEvaluator):
 
     def _argument_flows(
         self,
+        at: Site,
         function: stubs.Function,
         node: ast.Call,
         args: list[Value],
@@ -227,14 +252,15 @@ class LibraryEvaluator(ExpressionEvaluator):
                 continue
             integer = param.decl.base == "int"
             if param.keyword and param.name in kwargs and param.name in keywords:
-                self.note_sink(keywords[param.name], unit, kwargs[param.name], integer)
+                at.note_sink(keywords[param.name], unit, kwargs[param.name], integer)
             elif param.positional is not None and not param.variadic and args:
-                at = param.positional + shift
-                if at < len(node.args) and at < len(args):
-                    self.note_sink(node.args[at], unit, args[at], integer)
+                index = param.positional + shift
+                if index < len(node.args) and index < len(args):
+                    at.note_sink(node.args[index], unit, args[index], integer)
 
     def _check_argument(
         self,
+        at: Site,
         function: stubs.Function,
         param: stubs.Param,
         value: Value,
@@ -256,7 +282,7 @@ class LibraryEvaluator(ExpressionEvaluator):
             )
         )
         if not self.check.units_agree(
-            decl.unit, value, self.site, target, declared, state
+            decl.unit, value, at.site, target, declared, state
         ):
             return
         if value.term is None or decl.predicate == A.TRUE or value.kind == "object":
@@ -266,7 +292,7 @@ class LibraryEvaluator(ExpressionEvaluator):
             goal = A.substitute(part, {**lookup, "_": value.term})
             shown = A.show(A.substitute(part, {"_": A.Name(param.name)}))
             outcome = self.check.goal_holds(
-                state, goal, value.term, self.site, shown, target, declared
+                state, goal, value.term, at.site, shown, target, declared
             )
             if outcome != "proved":
                 break
@@ -322,6 +348,7 @@ class LibraryEvaluator(ExpressionEvaluator):
     # -- results whose unit follows the arguments' ---------------------------
     def _unit_rule(
         self,
+        at: Site,
         function: stubs.Function,
         first: Value,
         values: list[Value],
@@ -334,7 +361,7 @@ class LibraryEvaluator(ExpressionEvaluator):
                 self.check.unit_of_sum(values[0], other, node, short)
             return None  # the result is as annotated
         if rule == "scale":
-            return self._scaled(function, first, node)
+            return self._scaled(at, function, first, node)
         if rule == "root":
             root = (
                 _root(first.unit)
@@ -371,7 +398,7 @@ class LibraryEvaluator(ExpressionEvaluator):
         return value.with_unit(unit) if value.term is not None else value
 
     def _scaled(
-        self, function: stubs.Function, first: Value, node: ast.Call
+        self, at: Site, function: stubs.Function, first: Value, node: ast.Call
     ) -> Value | None:
         """`radians(x)`: x times the ratio of the parameter's unit to the result's.
         The argument may carry more than the angle (`radians(deg_s)` is in rad/s);
@@ -399,7 +426,7 @@ class LibraryEvaluator(ExpressionEvaluator):
             and not math.isclose(param.unit.factor, result.unit.factor)
         )
         if converted:
-            span, stmt = self.check.where(self.site)
+            span, stmt = self.check.where(at.site)
             name = function.params[0].name
             declared = Declared(
                 f"the `{name}` argument of {function.short}() is in {param.unit.text}",

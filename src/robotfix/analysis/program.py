@@ -72,7 +72,7 @@ class Program:
     # lend its address to the next one's, silencing its finding
     augmented: dict[int, ast.BinOp | None] = field(default_factory=dict)
     # (id(call), id(argument), depth) -> the call only reads that argument
-    # (`Interpreter.only_reads`), kept with the tree for the same reason
+    # (`CallFacts.only_reads`), kept with the tree for the same reason
     reading_calls: dict[tuple[int, int, int], bool] = field(default_factory=dict)
 
     def add(self, function: Function) -> Function:

@@ -39,6 +39,17 @@ from typing import TYPE_CHECKING, Protocol
 
 from robotfix.analysis import imported
 from robotfix.analysis.imported import resolve_library
+from robotfix.analysis.typesyntax import (
+    Binding,
+    BoundAnnotation,
+    BoundElement,
+    bind_types,
+    is_ellipsis,
+    is_none,
+    last_name,
+    local_bindings,
+    self_stores,
+)
 from robotfix.analysis.typeterms import (
     Lib,
     Map,
@@ -51,7 +62,6 @@ from robotfix.analysis.typeterms import (
     element,
     plain,
 )
-from robotfix.astwalk import children
 from robotfix.stubs import load as stubs
 
 if TYPE_CHECKING:
@@ -176,7 +186,7 @@ class TypeModel:
         return None
 
     def _generic(self, node: ast.Subscript) -> Type | None:
-        head = _last(node.value)
+        head = last_name(node.value)
         args = (
             list(node.slice.elts) if isinstance(node.slice, ast.Tuple) else [node.slice]
         )
@@ -194,7 +204,7 @@ class TypeModel:
             value = self.annotation(args[1])
             return Map(value) if value is not None else None
         if head in ("tuple", "Tuple"):
-            if len(args) == 2 and _is_ellipsis(args[1]):
+            if len(args) == 2 and is_ellipsis(args[1]):
                 item = self.annotation(args[0])
                 return Seq(item) if item is not None else None
             return Tup(tuple(self.annotation(a) for a in args))
@@ -202,7 +212,7 @@ class TypeModel:
 
     def _union(self, parts: list[ast.expr]) -> Type | None:
         found = [
-            _NONE if _is_none(p) else self.annotation(p) for p in parts
+            _NONE if is_none(p) else self.annotation(p) for p in parts
         ]  # `T | None`
         return _agree(found)
 
@@ -277,7 +287,7 @@ class TypeModel:
         for arg in [*ordered, *args.kwonlyargs]:
             if arg.arg == name:
                 found = self.annotation(arg.annotation)
-                if found is not None and _is_none(defaults.get(name)):
+                if found is not None and is_none(defaults.get(name)):
                     # `client: Client = None`: it may be None
                     return Maybe(plain(found))  # type: ignore[arg-type]
                 return found
@@ -385,7 +395,7 @@ class TypeModel:
             if declared is not None:
                 found = self.annotation(declared)
                 if found is not None and any(
-                    _is_none(value)
+                    is_none(value)
                     for other in family
                     for value, _ in assignments.get(other, {}).get(attr, [])
                 ):  # `self.x: Driver = None`: it may be None
@@ -394,9 +404,7 @@ class TypeModel:
         sources: list[Type | None] = []
         for name in family:
             for value, function in assignments.get(name, {}).get(attr, []):
-                sources.append(
-                    _NONE if _is_none(value) else self.infer(value, function)
-                )
+                sources.append(_NONE if is_none(value) else self.infer(value, function))
                 if sources[-1] is None:
                     return None
         return _agree(sources) if sources else None
@@ -436,7 +444,7 @@ class TypeModel:
             if not params:
                 continue
             table = found.setdefault(name, {})
-            for attr, value in _self_stores(node, params[0].arg):
+            for attr, value in self_stores(node, params[0].arg):
                 table.setdefault(attr, []).append((value, function))
         self._assigned = found
         return found
@@ -452,7 +460,7 @@ class TypeModel:
         if not values or any(v is None for v in values):
             return None
         return _agree(
-            [_NONE if _is_none(v) else self.infer(v, function) for v in values]  # type: ignore[arg-type]
+            [_NONE if is_none(v) else self.infer(v, function) for v in values]  # type: ignore[arg-type]
         )
 
     def _returns_of(self, node: ast.AST) -> list[ast.Return]:
@@ -504,7 +512,7 @@ class TypeModel:
         if kind is ast.IfExp:
             return _agree(
                 [
-                    _NONE if _is_none(n) else self.infer(n, function, env)
+                    _NONE if is_none(n) else self.infer(n, function, env)
                     for n in (node.body, node.orelse)  # type: ignore[attr-defined]
                 ]
             )
@@ -545,7 +553,7 @@ class TypeModel:
         inner = dict(env or {})
         for generator in node.generators:
             item = element(self.infer(generator.iter, function, inner))
-            _bind(generator.target, item, inner)
+            bind_types(generator.target, item, inner)
         return self.infer(node.elt, function, inner)
 
     def _call(
@@ -699,9 +707,9 @@ class TypeModel:
         self._busy.add(key)
         try:
             value = bound[0]
-            if isinstance(value, _Annotation):
+            if isinstance(value, BoundAnnotation):
                 return self.annotation(value.node)
-            if isinstance(value, _Element):
+            if isinstance(value, BoundElement):
                 return element(self.infer(value.node, function))
             return self.infer(value, function)
         finally:
@@ -718,195 +726,8 @@ class TypeModel:
     def _bindings(self, function: FunctionView) -> dict[str, list[Binding]]:
         found = self._locals.get(id(function.node))
         if found is None:
-            found = self._locals[id(function.node)] = _local_bindings(function.node)
+            found = self._locals[id(function.node)] = local_bindings(function.node)
         return found
-
-
-class _Annotation:
-    """A local's declared type (`x: list[Twist] = []`), in a local's bindings."""
-
-    __slots__ = ("node",)
-
-    def __init__(self, node: ast.expr) -> None:
-        self.node = node
-
-
-class _Element:
-    """A `for` target's binding: an element of `node`."""
-
-    __slots__ = ("node",)
-
-    def __init__(self, node: ast.expr) -> None:
-        self.node = node
-
-
-Binding = ast.expr | _Annotation | _Element | None
-
-
-def _local_bindings(node: ast.AST) -> dict[str, list[Binding]]:
-    """name -> what each binding of it in the function gives it: a value, an
-    annotation, an element of an iterable, or None (a binding not followed)."""
-    found: dict[str, list[Binding]] = {}
-    declared: dict[str, ast.expr] = {}
-    body = node.body if isinstance(node.body, list) else []  # type: ignore[attr-defined]
-    todo: list[ast.AST] = list(body)
-    while todo:
-        child = todo.pop()
-        kind = type(child)
-        if kind in (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef):
-            found.setdefault(child.name, []).append(None)  # type: ignore[attr-defined]
-            continue
-        if kind is ast.Lambda or kind in _COMPREHENSIONS:
-            continue
-        if kind is ast.Assign:
-            for target in child.targets:  # type: ignore[attr-defined]
-                _record(found, target, child.value)  # type: ignore[attr-defined]
-        elif kind is ast.AnnAssign:
-            target = child.target  # type: ignore[attr-defined]
-            if isinstance(target, ast.Name):
-                declared.setdefault(target.id, child.annotation)  # type: ignore[attr-defined]
-                if child.value is not None:  # type: ignore[attr-defined]
-                    found.setdefault(target.id, []).append(child.value)  # type: ignore[attr-defined]
-        elif kind in (ast.For, ast.AsyncFor):
-            _record(found, child.target, _Element(child.iter))  # type: ignore[attr-defined]
-        elif kind is ast.NamedExpr:
-            _record(found, child.target, child.value)  # type: ignore[attr-defined]
-        elif kind in (ast.AugAssign, ast.Delete, ast.Global, ast.Nonlocal):
-            targets = getattr(child, "targets", None) or [
-                getattr(child, "target", None)
-            ]
-            names = getattr(child, "names", None) or []
-            for target in targets:
-                for leaf in _names(target):
-                    found.setdefault(leaf, []).append(None)
-            for name in names:
-                found.setdefault(name, []).append(None)
-        elif kind in (ast.Import, ast.ImportFrom):
-            for alias in child.names:  # type: ignore[attr-defined]
-                local = alias.asname or alias.name.split(".")[0]
-                found.setdefault(local, []).append(None)
-        elif kind in (ast.With, ast.AsyncWith):
-            for item in child.items:  # type: ignore[attr-defined]
-                for leaf in _names(item.optional_vars):
-                    found.setdefault(leaf, []).append(None)
-        elif kind in (ast.ExceptHandler, ast.MatchAs, ast.MatchStar) and getattr(
-            child, "name", None
-        ):
-            found.setdefault(child.name, []).append(None)  # type: ignore[attr-defined]
-        todo.extend(children(child))
-    for name, annotation in declared.items():
-        found[name] = [_Annotation(annotation)]  # a declaration is a fact
-    return found
-
-
-_COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
-
-
-def _record(found: dict[str, list[Binding]], target: ast.expr, value: Binding) -> None:
-    if isinstance(target, ast.Name):
-        found.setdefault(target.id, []).append(value)
-    elif isinstance(target, (ast.Tuple, ast.List)):
-        if isinstance(value, (ast.Tuple, ast.List)) and len(value.elts) == len(
-            target.elts
-        ):
-            for part, given in zip(target.elts, value.elts, strict=True):
-                _record(found, part, given)
-            return
-        for leaf in _names(target):
-            found.setdefault(leaf, []).append(None)
-    elif isinstance(target, ast.Starred):
-        _record(found, target.value, None)
-
-
-def _names(target: ast.AST | None) -> list[str]:
-    if target is None:
-        return []
-    return [n.id for n in ast.walk(target) if isinstance(n, ast.Name)]
-
-
-def _bind(target: ast.expr, item: Type | None, env: dict[str, Type | None]) -> None:
-    if isinstance(target, ast.Name):
-        env[target.id] = item
-    elif isinstance(target, (ast.Tuple, ast.List)):
-        parts = plain(item)
-        for index, part in enumerate(target.elts):
-            found = (
-                parts.items[index]
-                if isinstance(parts, Tup) and len(parts.items) == len(target.elts)
-                else None
-            )
-            _bind(part, found, env)
-
-
-def _self_stores(
-    node: ast.FunctionDef | ast.AsyncFunctionDef, self_name: str
-) -> list[tuple[str, ast.expr]]:
-    """(attribute, value) for each store to `self.<attribute>` in a method, found
-    through its statements only (an expression cannot store to an attribute;
-    nested functions and classes aside: their `self` may be another); a store whose
-    value is not told is given `ast.expr()`, which no inference types."""
-    found: list[tuple[str, ast.expr]] = []
-    todo: list[ast.stmt] = list(node.body)
-    while todo:
-        child = todo.pop()
-        kind = type(child)
-        if kind is ast.Assign:
-            for target in child.targets:  # type: ignore[attr-defined]
-                _attribute_stores(found, target, child.value, self_name)  # type: ignore[attr-defined]
-        elif kind is ast.AnnAssign:
-            if child.value is not None:  # type: ignore[attr-defined]
-                _attribute_stores(found, child.target, child.value, self_name)  # type: ignore[attr-defined]
-        elif kind is ast.AugAssign:
-            _attribute_stores(found, child.target, ast.expr(), self_name)  # type: ignore[attr-defined]
-        elif kind is ast.Delete:
-            for target in child.targets:  # type: ignore[attr-defined]
-                _attribute_stores(found, target, ast.expr(), self_name)
-        elif kind in _BLOCKS:
-            if kind is ast.For or kind is ast.AsyncFor:
-                _attribute_stores(found, child.target, ast.expr(), self_name)  # type: ignore[attr-defined]
-            elif kind is ast.With or kind is ast.AsyncWith:
-                for item in child.items:  # type: ignore[attr-defined]
-                    if item.optional_vars is not None:
-                        _attribute_stores(
-                            found, item.optional_vars, ast.expr(), self_name
-                        )
-            todo.extend(getattr(child, "body", ()))
-            todo.extend(getattr(child, "orelse", ()))
-            todo.extend(getattr(child, "finalbody", ()))
-            for handler in getattr(child, "handlers", ()):
-                todo.extend(handler.body)
-            for case in getattr(child, "cases", ()):
-                todo.extend(case.body)
-    found.reverse()
-    return found
-
-
-_BLOCKS = frozenset(
-    {ast.If, ast.For, ast.AsyncFor, ast.While, ast.With, ast.AsyncWith, ast.Try}
-    | {ast.TryStar, ast.Match}
-)
-
-
-def _attribute_stores(
-    found: list[tuple[str, ast.expr]], target: ast.AST, value: ast.expr, self_name: str
-) -> None:
-    if (
-        isinstance(target, ast.Attribute)
-        and isinstance(target.value, ast.Name)
-        and target.value.id == self_name
-    ):
-        found.append((target.attr, value))
-    elif isinstance(target, (ast.Tuple, ast.List)):
-        given = (
-            value.elts
-            if isinstance(value, (ast.Tuple, ast.List))
-            and len(value.elts) == len(target.elts)
-            else [ast.expr()] * len(target.elts)
-        )
-        for part, part_value in zip(target.elts, given, strict=True):
-            _attribute_stores(found, part, part_value, self_name)
-    elif isinstance(target, ast.Starred):
-        _attribute_stores(found, target.value, ast.expr(), self_name)
 
 
 def _is_self(
@@ -922,19 +743,3 @@ def _is_self(
         and owner.id == function.first_parameter
         and (env is None or owner.id not in env)
     )
-
-
-def _last(node: ast.expr) -> str:
-    if isinstance(node, ast.Name):
-        return node.id
-    if isinstance(node, ast.Attribute):
-        return node.attr
-    return ""
-
-
-def _is_none(node: ast.expr | None) -> bool:
-    return isinstance(node, ast.Constant) and node.value is None
-
-
-def _is_ellipsis(node: ast.expr) -> bool:
-    return isinstance(node, ast.Constant) and node.value is Ellipsis

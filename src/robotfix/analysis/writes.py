@@ -5,7 +5,8 @@ on one (`p.points.append(q)`), and the same through a name that aliases it there
 known to only read it, storing it elsewhere (`self.last = p`, `[p]`) or returning it
 lets other code change it: it *escapes*. A read (`p.point.x` in an expression, a
 number or string field anywhere, `do_transform_point(p, t)`, `pub.publish(p)`)
-changes nothing. A loop's head forgets only what its body changes (interpreter.py).
+changes nothing. A loop's head forgets only what its body changes
+(`paths.PathWalker.havoc`).
 """
 
 from __future__ import annotations

@@ -577,6 +577,7 @@ def summarize(
     """The summary of one parsed module: the pre-pass, and its module code run once
     for the values of its constants (what this reports is dropped: the module is
     checked on its own when it is part of the run)."""
+    from robotfix.analysis.binder import module_statics
     from robotfix.analysis.constants import scan
     from robotfix.analysis.context import (
         BudgetExceededError,
@@ -585,7 +586,7 @@ def summarize(
     )
     from robotfix.analysis.imported import ModuleSummary
     from robotfix.analysis.index import index_of
-    from robotfix.analysis.interpreter import Interpreter, class_body, module_statics
+    from robotfix.analysis.interpreter import Interpreter, class_body
     from robotfix.analysis.program import collect
     from robotfix.analysis.state import State
     from robotfix.annotations.extract import Alias
