@@ -435,30 +435,39 @@ def test_a_launch_files_suppressions_are_judged_by_the_check_that_owns_them(
 
 
 @pytest.mark.parametrize(
-    ("name", "keys", "warned"),
+    ("names", "keys", "warned"),
     [
         # f1tenth's bridge renamed again: its `bridge:` file applies to nothing
-        ("sim_bridge", ["bridge"], True),
-        ("bridge", ["bridge"], False),  # the section follows the rename
-        ("sim_bridge", ["/**"], False),  # a wildcard serves every node
-        ("sim_bridge", ["sim_bridge", "bridge"], False),
-        ("sim_bridge", ["racer"], False),  # a file shared with another node
-        (None, ["racer"], False),
+        (["sim_bridge"], ["bridge"], [8]),
+        # the node's own name as the key, renamed away by the launch file
+        (["sim_bridge"], ["racer"], [8]),
+        (["bridge"], ["bridge"], []),  # the section follows the rename
+        (["sim_bridge"], ["/**"], []),  # a wildcard serves every node
+        (["sim_bridge"], ["sim_bridge", "bridge"], []),
+        # one file for two entries: it configures one of them
+        (["sim_bridge", "racer"], ["racer"], []),
+        (["sim_bridge", "fast_racer"], ["racer"], [8, 10]),
+        ([None], ["racer"], []),  # a node the entry does not name: not judged
     ],
 )
-def test_a_parameter_file_that_gives_its_node_nothing_is_a_warning(
-    tmp_path: Path, name: str | None, keys: list[str], warned: bool
+def test_a_parameter_file_that_gives_its_nodes_nothing_is_a_warning(
+    tmp_path: Path, names: list[str | None], keys: list[str], warned: list[int]
 ) -> None:
-    """A launch entry that passes its node a parameter file none of whose
-    sections applies to it (nor to any other node of the run) is RF602 as a
-    warning at the entry: the node silently runs with its defaults (fresh-eyes
-    round w01: only the file's RF602 note said anything, and the run passed)."""
+    """Launch entries that pass a parameter file none of whose sections applies
+    to any node they start get RF602 as a warning each: the nodes silently run
+    with their defaults (fresh-eyes round w01: only the file's RF602 note said
+    anything, and the run passed)."""
     pkg = racer(tmp_path)
     write(
         pkg / "config" / "sim.yaml",
         "".join(f"{k}:\n  ros__parameters:\n    max_speed: 0.5\n" for k in keys),
     )
-    renamed = f", name='{name}'" if name else ""
+    entries = "".join(
+        f"        Node(package='racer', executable='racer'"
+        f"{f', name={name!r}' if name else ''},\n"
+        "             parameters=[os.path.join(share, 'config', 'sim.yaml')]),\n"
+        for name in names
+    )
     write(
         pkg / "launch" / "racer.launch.py",
         "import os\nfrom ament_index_python.packages import "
@@ -466,15 +475,10 @@ def test_a_parameter_file_that_gives_its_node_nothing_is_a_warning(
         "from launch import LaunchDescription\nfrom launch_ros.actions import Node\n"
         "def generate_launch_description():\n"
         "    share = get_package_share_directory('racer')\n"
-        "    return LaunchDescription([\n"
-        f"        Node(package='racer', executable='racer'{renamed},\n"
-        "             parameters=[os.path.join(share, 'config', 'sim.yaml')]),\n"
-        "    ])\n",
+        "    return LaunchDescription([\n" + entries + "    ])\n",
     )
     found = check_paths([pkg], Config(root=tmp_path)).diagnostics
-    warnings = [
-        (Path(d.path).name, d.span.line)
-        for d in found
-        if d.code == "RF602" and d.severity.name == "WARNING"
+    lines = [
+        d.span.line for d in found if d.code == "RF602" and d.severity.name == "WARNING"
     ]
-    assert warnings == ([("racer.launch.py", 8)] if warned else [])
+    assert lines == warned

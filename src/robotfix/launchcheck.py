@@ -194,13 +194,13 @@ class LaunchRun:
                 for started in entries:
                     cpp = table.cpp.owners_of(started.entry)  # its C++ node
                     if cpp and started.entry.ros == 2:
-                        out += _ros2_entry(started.entry, cpp, table, loaded, known)
+                        out += _ros2_entry(started.entry, cpp, table, loaded)
                     code = [by_real[f] for f in sorted(started.files) if f in by_real]
                     if not code:
                         continue
                     if started.entry.ros == 2:
                         owners = _owners_of(code)
-                        out += _ros2_entry(started.entry, owners, table, loaded, known)
+                        out += _ros2_entry(started.entry, owners, table, loaded)
                     else:
                         out += _ros1_entry(started.entry, code, table)
         from robotfix.paramcheck import unmatched_sections
@@ -208,8 +208,55 @@ class LaunchRun:
         for path, parameters in sorted(loaded.items()):
             with guard(path, out, faults):
                 out += unmatched_sections(path, parameters, known)
+                out += self._passed_for_nothing(path, parameters)
         unique = {(d.path, d.span, d.code, d.message): d for d in out}
         return list(unique.values())
+
+    def _passed_for_nothing(
+        self, path: str, parameters: P.ParamFile
+    ) -> list[Diagnostic]:
+        """RF602 (a warning) at each launch entry that passes a ROS 2 parameter
+        file none of whose sections applies to any node the entries passing it
+        start (each named by the entry: `Node(name='sim_bridge')`), no key with a
+        wildcard: the file gives those nodes nothing (a rename that left the
+        section behind: f1tenth's `bridge:` file passed to `sim_bridge`). An
+        entry that passes it without naming its node leaves the file unjudged."""
+        if parameters.layout != "ros2":
+            return []
+        keys = sorted({item.node for item in parameters.entries if item.node})
+        passing = [
+            s.entry
+            for s in self.started
+            if s.entry.ros == 2
+            and any(
+                isinstance(p, FileParam) and p.path == path for p in s.entry.parameters
+            )
+        ]
+        if (
+            not keys
+            or not passing
+            or any("*" in k for k in keys)
+            or any(not e.name or "$" in e.name or "{" in e.name for e in passing)
+            or any(
+                _keyed_for(k, {e.name.rsplit("/", 1)[-1]}, e.namespace)  # type: ignore[union-attr]
+                for k in keys
+                for e in passing
+            )
+        ):
+            return []
+        first = next(i for i in parameters.entries if i.node == keys[0])
+        section = Note(f"the section `{keys[0]}`", path, first.line)
+        return [
+            messages.section_applies_to_none(
+                e.place.path,
+                e.place.line,
+                e.place.col,
+                e.name.rsplit("/", 1)[-1],  # type: ignore[union-attr]
+                keys,
+                section,
+            )
+            for e in passing
+        ]
 
     def _known(self, table: Table) -> set[str]:
         """Every node name of the code and the launch files."""
@@ -334,10 +381,8 @@ def _ros2_entry(
     owners: list[tuple[Summary, str]],
     table: Table,
     loaded: dict[str, P.ParamFile],
-    known: set[str],
 ) -> list[Diagnostic]:
-    """RF401/RF101, RF601 and RF602 for one entry, against its code's node
-    objects (`known`: every node name of the run)."""
+    """RF401/RF101 and RF601 for one entry, against its code's node objects."""
     if not owners:
         return []
     out: list[Diagnostic] = []
@@ -366,52 +411,9 @@ def _ros2_entry(
                         _declared_in(owners),
                     )
                 )
-        elif parameter.path is not None:
-            nothing = _file_gives_nothing(entry, parameter, owners, loaded, known)
-            if nothing is not None:
-                out.append(nothing)
-            elif closed:
-                out += _file_typos(entry, parameter, owners, loaded, node, started_at)
+        elif parameter.path is not None and closed:
+            out += _file_typos(entry, parameter, owners, loaded, node, started_at)
     return out
-
-
-def _file_gives_nothing(
-    entry: NodeEntry,
-    parameter: FileParam,
-    owners: list[tuple[Summary, str]],
-    loaded: dict[str, P.ParamFile],
-    known: set[str],
-) -> Diagnostic | None:
-    """RF602 (a warning) at an entry that passes its node a parameter file none
-    of whose sections applies to it, nor to any other node of the run (a launch
-    name or the code's): f1tenth's `bridge:` file passed to a node renamed
-    `sim_bridge`. The node gets nothing of it. Not when a key has a wildcard."""
-    assert parameter.path is not None
-    parameters = loaded.get(parameter.path)
-    if parameters is None or parameters.layout != "ros2":
-        return None
-    given = (
-        {entry.name.rsplit("/", 1)[-1]}
-        if entry.name
-        else {n for s, o in owners for n in s.names_of(o)}
-    )
-    keys = sorted({item.node for item in parameters.entries if item.node})
-    if (
-        not given
-        or not keys
-        or any("*" in k for k in keys)
-        or any(_keyed_for(k, given | known, entry.namespace) for k in keys)
-    ):
-        return None
-    first = next(i for i in parameters.entries if i.node == keys[0])
-    return messages.section_applies_to_none(
-        entry.place.path,
-        entry.place.line,
-        entry.place.col,
-        sorted(given)[0],
-        keys,
-        Note(f"the section `{keys[0]}`", parameter.path, first.line),
-    )
 
 
 def _undeclared(name: str, owners: list[tuple[Summary, str]]) -> bool:
