@@ -142,6 +142,8 @@ class ResultCache:
         self._seen_cpp: dict[str, Any] = {}
         self._catalog: dict[str, Any] | None = None
         self._discovery: dict[str, Any] | None = None  # key, trace, what was found
+        # the launch files' reading and the graph's findings (`stage`)
+        self._stage: dict[str, Any] | None = None
         # the module index's answers with what they depend on (`ModuleIndex.keep`)
         self._resolution: dict[str, Any] | None = None
         self._dirty = False
@@ -196,6 +198,9 @@ class ResultCache:
                 plain or _names_only(found_resolution)
             ):
                 self._resolution = found_resolution
+            found_stage = data.get("stage")
+            if isinstance(found_stage, dict) and (plain or _names_only(found_stage)):
+                self._stage = found_stage
             found_catalog = data.get("catalog")
             if isinstance(found_catalog, dict):
                 self._catalog = found_catalog
@@ -346,6 +351,47 @@ class ResultCache:
         )
         if raw != self._discovery:
             self._discovery = raw
+            self._dirty = True
+
+    # -- the launch files and the graph ----------------------------------------
+    def stage(self, key: str) -> tuple[list[str], list[Diagnostic]] | None:
+        """What `put_stage` kept under `key` (`run._stage_key`: the launch files,
+        the code files, the graph endpoints), when every file the launch files'
+        reading and the graph's check read, and every path they probed, is as it
+        was (`Trace.holds`): the files the launch check depends on
+        (`LaunchRun.touched`) and the graph's findings."""
+        raw = self._stage
+        if raw is None or raw.get("key") != key:
+            return None
+        trace = Trace.from_json(raw.get("trace"))
+        touched, graph = raw.get("touched"), raw.get("graph")
+        if not (
+            trace is not None
+            and isinstance(touched, list)
+            and all(_name(t) for t in touched)
+            and isinstance(graph, list)
+            and all(_valid_diagnostic(d) for d in graph)
+            and trace.holds()
+        ):
+            return None
+        return touched, [_load(d) for d in graph]
+
+    def put_stage(
+        self, key: str, trace: Trace, touched: list[str], graph: list[Diagnostic]
+    ) -> None:
+        """Keep a stage with its trace (not one the trace cannot vouch for)."""
+        raw = (
+            None
+            if trace.spoiled
+            else {
+                "key": key,
+                "trace": trace.to_json(),
+                "touched": touched,
+                "graph": [_dump(d) for d in graph],
+            }
+        )
+        if raw != self._stage:
+            self._stage = raw
             self._dirty = True
 
     # -- the module index ------------------------------------------------------
@@ -533,6 +579,7 @@ class ResultCache:
             "params": list(self._params) if self._params is not None else None,
             "catalog": self._catalog,
             "discovery": self._discovery,
+            "stage": self._stage,
             "resolution": self._resolution,
             "cpp": self._seen_cpp,
         }

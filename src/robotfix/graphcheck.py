@@ -35,7 +35,7 @@ from typing import TYPE_CHECKING
 
 from robotfix import messages
 from robotfix.diagnostics import Diagnostic, Note
-from robotfix.fs import UnreadableError, read_regular
+from robotfix.fs import UnreadableError, probe, read_regular
 from robotfix.ros.executables import Targets, cpp_executable_files
 from robotfix.ros.graph import qos as Q
 from robotfix.ros.graph.build import End, Graph, Started, build
@@ -118,7 +118,7 @@ def started_entries(
         return []
     by_real: dict[str, str] = {}
     for path in sorted(code):  # sorted: the output of `-j N` is that of `-j 1`
-        by_real.setdefault(os.path.realpath(path), path)
+        by_real.setdefault(probe("realpath", path), path)
     packages = dict(launches.packages)
     folders: set[str] = set()
     names: dict[Path, str | None] = {}  # each package's package.xml read once
@@ -142,11 +142,11 @@ def started_entries(
         plugin = None
         if package is not None and entry.plugin:
             plugin = entry.plugin.split("::")[-1]
-            inside = os.path.realpath(package) + os.sep
+            inside = probe("realpath", package) + os.sep
             files += [p for r, p in sorted(by_real.items()) if r.startswith(inside)]
         elif package is not None and entry.executable and not files:
             for source in cpp_executable_files(package, entry.executable, targets):
-                real = os.path.realpath(source)
+                real = probe("realpath", source)
                 if real in by_real:
                     files.append(by_real[real])
         out.append(Started(entry, files, plugin))

@@ -35,7 +35,7 @@ from robotfix import messages
 from robotfix.astwalk import children
 from robotfix.diagnostics import Diagnostic, Note, Span
 from robotfix.faults import Fault, guard
-from robotfix.fs import UnreadableError, read_text
+from robotfix.fs import UnreadableError, probe, read_text
 from robotfix.ros import paramfile as P
 from robotfix.ros.executables import MAX_BUILD_BYTES, executable_file, module_file
 from robotfix.ros.launch.model import FileParam, InlineParam, NodeEntry
@@ -149,7 +149,7 @@ class LaunchRun:
                 set()
                 if main is None
                 else {
-                    os.path.realpath(p)
+                    probe("realpath", p)
                     for p in [main, *_imported(main, folder, self.imports)]
                 }
             )
@@ -214,7 +214,7 @@ def _package_folder(folder: Path) -> Path | None:
     """The package folder around `folder`, spelled as `folder` is (a relative run
     reports relative paths)."""
     for candidate in (folder, *folder.parents):
-        if os.path.isfile(candidate / "package.xml"):
+        if probe("isfile", candidate / "package.xml"):
             return candidate
     if not folder.is_absolute():
         return package_folder(folder / "x")

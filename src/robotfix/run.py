@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import gc
 import hashlib
+import json
 import os
 import signal
 import sys
@@ -30,7 +31,7 @@ from robotfix.cache import ResultCache, discovery_key, run_key
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
 from robotfix.discovery import Discovery, Trace, discover, install_space
-from robotfix.fs import RACY_NS, UnreadableError, read_regular, stamp
+from robotfix.fs import RACY_NS, UnreadableError, noting, read_regular, stamp
 from robotfix.ros.api_model import ENDPOINT_WORDS
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.ros.install import InstallSpace
@@ -313,9 +314,14 @@ def _check_paths(
     if group is not None:  # its files' graph endpoints, for the run's graph
         group.graphs.update(graphs)
     if group is None:
-        launches = _launches(found, everything)
-        cpp = _cpp_graphs(found, cache, paths[0] if paths else config.root, result)
+        where = paths[0] if paths else config.root
+        cpp = _cpp_graphs(found, cache, where, result)
         cpp_nodes = {n for g in cpp.values() for ns in g.nodes.values() for n in ns}
+        graphs.update(grouped_graphs)
+        workspace = any(os.path.isdir(p) for p in paths)  # it has a graph
+        stage = _Stage(found, everything, cache)
+        if cache is not None:
+            stage.look_up(_stage_key(found, everything, graphs, cpp, config, workspace))
         result.diagnostics.extend(
             _parameter_problems(
                 found,
@@ -325,27 +331,29 @@ def _check_paths(
                 parameters,
                 project,
                 result.internal_errors,
-                launches,
+                stage,
                 sorted(cpp_nodes),
             )
         )
         result.files += len(found.parameter_files)
-        graphs.update(grouped_graphs)
-        if any(os.path.isdir(p) for p in paths):  # a workspace: its graph
+        if stage.known is not None:
+            result.diagnostics.extend(stage.known[1])
+        elif workspace:
             result.diagnostics.extend(
                 _graph_problems(
-                    found,
                     graphs,
                     cpp,
-                    launches,
+                    stage,
                     config,
                     catalog,
                     project,
-                    cache,
-                    paths[0],
+                    where,
                     result.internal_errors,
                 )
             )
+        else:
+            stage.graph = []
+        stage.keep()
     for other in groups:
         _merge(result, other)
     if groups:
@@ -394,10 +402,87 @@ def _discover(
     return found
 
 
+class _Stage:
+    """The run's launch files, read once for the parameter check and the graph
+    (`read`), and with the cache, what reading them and checking the graph
+    gave an earlier run (`cache.stage`): when the launch files, the code files,
+    the graph endpoints (`_stage_key`) and every file and path the reading and
+    the graph's check looked at (a `discovery.Trace`, `fs.noting`) are as they
+    were, neither is done again: the parameter check's key takes the files the
+    launch check depends on from there (the parameter check, cached under that
+    key, reads the launch files only when its key changed), the run the graph's
+    findings."""
+
+    def __init__(
+        self, found: Discovery, files: list[Path], cache: ResultCache | None
+    ) -> None:
+        self.found, self.files, self.cache = found, files, cache
+        self.key: str | None = None
+        self.known: tuple[list[str], list[Diagnostic]] | None = None
+        self.trace = Trace()
+        self.launches: tuple[LaunchRun, list[ParamFault]] | None = None
+        self.was_read = False
+        self.graph: list[Diagnostic] | None = None  # the findings to keep
+
+    def look_up(self, key: str) -> None:
+        assert self.cache is not None
+        self.key, self.known = key, self.cache.stage(key)
+
+    def read(self) -> tuple[LaunchRun, list[ParamFault]] | None:
+        if not self.was_read:
+            self.was_read = True
+            with noting(self.trace):
+                self.launches = _launches(self.found, self.files)
+        return self.launches
+
+    def touched(self) -> list[str]:
+        if self.known is not None:
+            return self.known[0]
+        read = self.read()
+        return sorted(read[0].touched()) if read is not None else []
+
+    def keep(self) -> None:
+        """Into the cache, when this run read the launch files without a fault
+        and checked the graph without one (or has none)."""
+        if self.cache is None or self.key is None or self.known is not None:
+            return
+        read = self.read()
+        if self.graph is None or (read is not None and read[1]):
+            return
+        self.cache.put_stage(self.key, self.trace, self.touched(), self.graph)
+
+
+def _stage_key(
+    found: Discovery,
+    files: list[Path],
+    graphs: dict[str, list[Any]],
+    cpp: dict[str, FileGraph],
+    config: Config,
+    workspace: bool,
+) -> str:
+    """What the launch files' reading and the graph's findings depend on besides
+    the files and paths their trace notes: the launch and code files the run
+    found, each code file's endpoints and ignored rules, the current folder."""
+    from robotfix.ros.graph.model import dump
+
+    code = sorted({*graphs, *cpp})
+    parts = {
+        "cwd": os.getcwd(),
+        "workspace": workspace,
+        "launch": [str(p) for p in found.launch_files],
+        "code": [str(p) for p in [*files, *found.summary_files]],
+        "graphs": [graphs[p] if p in graphs else dump(cpp[p]) for p in code],
+        "ignored": [sorted(config.ignored_codes(Path(p))) for p in code],
+        "paths": code,
+    }
+    text = json.dumps(parts, sort_keys=True, separators=(",", ":"))
+    return hashlib.sha256(text.encode("utf-8", "surrogateescape")).hexdigest()
+
+
 def _launches(
     found: Discovery, files: list[Path]
 ) -> tuple[LaunchRun, list[ParamFault]] | None:
-    """The run's launch files, read once for the parameter check and the graph."""
+    """The run's launch files, read."""
     if not found.launch_files:
         return None
     from robotfix.launchcheck import LaunchRun
@@ -433,22 +518,23 @@ def _cpp_graphs(
 
 
 def _graph_problems(
-    found: Discovery,
     graphs: dict[str, list[Any]],
     cpp: dict[str, FileGraph],
-    launches: tuple[LaunchRun, list[ParamFault]] | None,
+    stage: _Stage,
     config: Config,
     catalog: MsgCatalog,
     project: Project,
-    cache: ResultCache | None,
     where: Path,
     errors: list[InternalError],
 ) -> list[Diagnostic]:
     """The findings of the run's static ROS graph (`graphcheck.py`), and what
     publishers violate of their subscribers' contracts (issue 23 §3). A fault
     of ours is an internal error (of `where`, the run's first path, or of the
-    publisher's file whose contracts were checked): the rest is reported."""
+    publisher's file whose contracts were checked): the rest is reported. The
+    graph's findings are kept in `stage` (for the cache) when no fault came and
+    no contract is checked (that analyses the publisher's file: not kept)."""
     if not graphs and not cpp:
+        stage.graph = []
         return []
     from robotfix.faults import Fault, guard
     from robotfix.graphcheck import check_graph, code_graphs
@@ -458,9 +544,14 @@ def _graph_problems(
     faults: list[Fault] = []
     with guard(where, out, faults):
         code = code_graphs(graphs, cpp)
-        result = check_graph(code, launches[0] if launches else None, config)
+        launches = stage.read()
+        with noting(stage.trace):
+            result = check_graph(code, launches[0] if launches else None, config)
         out += result.diagnostics()
-        for path, contracts in sorted(graph_contracts(result).items()):
+        found = sorted(graph_contracts(result).items())
+        if not found and not faults:
+            stage.graph = list(out)
+        for path, contracts in found:
             with guard(path, out, faults):
                 out += _contract_problems(
                     Path(path), contracts, config, catalog, project
@@ -504,7 +595,7 @@ def _parameter_problems(
     parameters: dict[str, ParamKnown] | None = None,
     project: Project | None = None,
     errors: list[InternalError] | None = None,
-    read: tuple[LaunchRun, list[ParamFault]] | None = None,
+    stage: _Stage | None = None,
     cpp_nodes: list[str] | None = None,
 ) -> list[Diagnostic]:
     """Parameter files and launch files against the parameters the code declares;
@@ -519,18 +610,19 @@ def _parameter_problems(
     if not (found.parameter_files or found.parameter_definitions or found.launch_files):
         return []
     python_files = [*files, *found.summary_files]
-    if read is None:
-        read = _launches(found, files)
-    launches, faults = read if read is not None else (None, [])
+    stage = stage or _Stage(found, files, cache)
     key = (
-        _params_key(found, python_files, config, cache, launches, cpp_nodes)
+        _params_key(found, python_files, config, cache, stage.touched(), cpp_nodes)
         if cache
         else None
     )
-    if cache is not None and key is not None and not faults:
+    faulty = stage.launches is not None and bool(stage.launches[1])
+    if cache is not None and key is not None and not faulty:
         known = cache.params(key)
         if known is not None:
             return known
+    read = stage.read()
+    launches, faults = read if read is not None else (None, [])
     from robotfix.paramcheck import check_parameter_files
 
     out = check_parameter_files(
@@ -557,7 +649,7 @@ def _params_key(
     python_files: list[Path],
     config: Config,
     cache: ResultCache,
-    launches: LaunchRun | None = None,
+    touched: list[str],
     cpp_nodes: list[str] | None = None,
 ) -> str:
     """Everything `paramcheck` reads (and the C++ nodes' names, `cpp_nodes`): the
@@ -572,11 +664,10 @@ def _params_key(
     (launch files, the parameter files and build files they lead to, the nodes'
     code, by its bytes)."""
     parts = [f"cpp\0{name}" for name in cpp_nodes or ()]
-    if launches is not None:
-        for touched in sorted(launches.touched()):
-            file = Path(touched)
-            ignored = ",".join(sorted(config.ignored_codes(file)))
-            parts.append(f"launch\0{touched}\0{cache.sha(file)}\0{ignored}")
+    for name in touched:
+        file = Path(name)
+        ignored = ",".join(sorted(config.ignored_codes(file)))
+        parts.append(f"launch\0{name}\0{cache.sha(file)}\0{ignored}")
     groups = (
         ("yaml", found.parameter_files),
         ("definitions", found.parameter_definitions),

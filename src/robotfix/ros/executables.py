@@ -18,7 +18,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import TypeVar
 
-from robotfix.fs import UnreadableError, read_regular, read_text
+from robotfix.fs import UnreadableError, probe, read_regular, read_text
 
 MAX_BUILD_BYTES = 1024 * 1024
 SCRIPT_FOLDERS = ("scripts", "nodes", "bin", "src", "")
@@ -43,12 +43,12 @@ def executable_file(
         if found is not None:
             return found
     for program in _once(memo, "programs", package, _cmake_programs):
-        if program.name == executable and program.is_file():
+        if program.name == executable and probe("isfile", program):
             return program
     for folder in SCRIPT_FOLDERS:
         candidate = package / folder / executable
         try:
-            if candidate.is_file():
+            if probe("isfile", candidate):
                 return candidate
         except (OSError, ValueError):
             return None
@@ -168,7 +168,7 @@ def module_file(package: Path, module: str) -> Path | None:
             base.joinpath(*parts).with_suffix(".py"),
             base.joinpath(*parts, "__init__.py"),
         ):
-            if candidate.is_file():
+            if probe("isfile", candidate):
                 return candidate
     return None
 
@@ -337,7 +337,7 @@ def _cmake_run(
                     continue
                 if word.endswith(CPP_SOURCE_SUFFIXES):
                     path = package / word
-                    if path.is_file() and path not in sources:
+                    if probe("isfile", path) and path not in sources:
                         sources.append(path)
         elif command == "target_link_libraries":
             _, links = targets.setdefault(words[0], ([], []))
@@ -424,7 +424,7 @@ def _included(package: Path, files: list[Path]) -> list[Path]:
             for base in bases:
                 candidate = base / name
                 try:
-                    if candidate.is_file() and candidate not in found:
+                    if probe("isfile", candidate) and candidate not in found:
                         found.append(candidate)
                         break
                 except (OSError, ValueError):

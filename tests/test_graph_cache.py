@@ -1,0 +1,248 @@
+"""The launch files' reading and the graph's findings kept in the result cache
+(issue 23, speed): a cached run over an unchanged tree reads no launch file and
+checks no graph, and each edit they depend on makes the next run see it. Each
+test edits one file so that the findings change, and compares the cached run
+with a run without the cache (a stale cache would give the old findings)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+import robotfix.cache
+import robotfix.discovery
+import robotfix.run
+from robotfix.api import check_paths
+from robotfix.config import Config
+
+TALKER = """import rclpy
+from rclpy.node import Node
+from std_msgs.msg import String
+
+
+class Talker(Node):
+    def __init__(self):
+        super().__init__("talker")
+        self.declare_parameter("rate", 1.0)
+        self.pub = self.create_publisher(String, "chatter", 10)
+
+
+def main():
+    rclpy.init()
+    rclpy.spin(Talker())
+"""
+
+LISTENER = """import rclpy
+from rclpy.node import Node
+from std_msgs.msg import Int32
+
+
+class Listener(Node):
+    def __init__(self):
+        super().__init__("listener")
+        self.create_subscription(Int32, "numbers", self.on_number, 10)
+
+    def on_number(self, msg):
+        pass
+
+
+def main():
+    rclpy.init()
+    rclpy.spin(Listener())
+"""
+
+MONITOR = LISTENER.replace("Listener", "Monitor").replace('"listener"', '"monitor"')
+
+SETUP = """from setuptools import setup
+
+setup(
+    name="demo",
+    entry_points={
+        "console_scripts": [
+            "talker = demo.talker:main",
+            "listener = demo.listener:main",
+        ],
+    },
+)
+"""
+
+OUTER = """import os
+
+from ament_index_python.packages import get_package_share_directory
+from launch import LaunchDescription
+from launch.actions import IncludeLaunchDescription
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    share = get_package_share_directory("demo")
+    return LaunchDescription([
+        IncludeLaunchDescription(
+            PythonLaunchDescriptionSource(
+                os.path.join(share, "launch", "inner.launch.py")
+            )
+        ),
+        Node(
+            package="demo",
+            executable="talker",
+            name="talker",
+            parameters=[{"rate": 2.0}, os.path.join(share, "settings", "talker.yaml")],
+        ),
+    ])
+"""
+
+INNER = """from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(
+            package="demo",
+            executable="listener",
+            name="listener",
+            remappings=[("numbers", "numbers")],
+        ),
+    ])
+"""
+
+PARAMS = "talker:\n  ros__parameters:\n    rate: 5.0\n"
+
+
+@pytest.fixture()
+def workspace(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    """A package whose launch file starts a talker and (through an included
+    launch file) a listener; no stamp is too recent to trust (every edit below
+    changes a file's size)."""
+    for module in (robotfix.cache, robotfix.discovery, robotfix.run):
+        monkeypatch.setattr(module, "RACY_NS", 0)
+    pkg = tmp_path / "src" / "demo"
+    files = {
+        "package.xml": "<package><name>demo</name></package>",
+        "setup.py": SETUP,
+        "demo/__init__.py": "",
+        "demo/talker.py": TALKER,
+        "demo/listener.py": LISTENER,
+        "demo/monitor.py": MONITOR,  # no launch file starts it
+        "launch/demo.launch.py": OUTER,
+        "launch/inner.launch.py": INNER,
+        "settings/talker.yaml": PARAMS,
+    }
+    for name, text in files.items():
+        (pkg / name).parent.mkdir(parents=True, exist_ok=True)
+        (pkg / name).write_text(text, encoding="utf-8")
+    return tmp_path
+
+
+def run(root: Path, cache: bool) -> list[str]:
+    config = Config(root=root, cache_dir=root / "cache")
+    found = check_paths([root / "src"], config, use_cache=cache).diagnostics
+    return [f"{d.path}:{d.span.line}: {d.code} {d.message}" for d in found]
+
+
+def edit(path: Path, old: str, new: str) -> None:
+    text = path.read_text(encoding="utf-8")
+    assert old in text
+    path.write_text(text.replace(old, new), encoding="utf-8")
+
+
+def settled(root: Path) -> list[str]:
+    """Two cached runs (the second from what the first kept) agree with a run
+    without the cache; the findings."""
+    fresh = run(root, cache=False)
+    assert run(root, cache=True) == fresh
+    assert run(root, cache=True) == fresh
+    return fresh
+
+
+def test_an_unchanged_tree_reads_no_launch_file(
+    workspace: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    before = settled(workspace)
+    read: list[object] = []
+    real = robotfix.run._launches
+    monkeypatch.setattr(
+        robotfix.run, "_launches", lambda *a: read.append(a) or real(*a)
+    )
+    graphed: list[object] = []
+    real_graph = robotfix.run._graph_problems
+    monkeypatch.setattr(
+        robotfix.run,
+        "_graph_problems",
+        lambda *a: graphed.append(a) or real_graph(*a),
+    )
+    assert run(workspace, cache=True) == before
+    assert not read and not graphed
+
+
+def test_an_edited_launch_file_is_read_again(workspace: Path) -> None:
+    """A remapping in the launch file that makes the talker's `chatter` the
+    listener's `numbers`: RF603 (String and Int32 on one topic)."""
+    before = settled(workspace)
+    assert not any("RF603" in line for line in before)
+    edit(
+        workspace / "src/demo/launch/demo.launch.py",
+        'name="talker",',
+        'name="talker",\n            remappings=[("chatter", "numbers")],',
+    )
+    after = settled(workspace)
+    assert any("RF603" in line for line in after)
+
+
+def test_an_edited_included_launch_file_is_read_again(workspace: Path) -> None:
+    """The same remapping made in the included file, on the listener's side."""
+    before = settled(workspace)
+    edit(
+        workspace / "src/demo/launch/inner.launch.py",
+        '("numbers", "numbers")',
+        '("numbers", "chatter")',
+    )
+    after = settled(workspace)
+    assert after != before and any("RF603" in line for line in after)
+
+
+def test_an_edited_parameter_file_is_checked_again(workspace: Path) -> None:
+    """A parameter the talker does not declare, in the section of the file its
+    launch entry names (in no folder discovery takes parameter files from: only
+    the launch file leads to it): RF601."""
+    before = settled(workspace)
+    assert not any("RF601" in line for line in before)
+    edit(
+        workspace / "src/demo/settings/talker.yaml",
+        "rate: 5.0",
+        "rate: 5.0\n    rte: 1",
+    )
+    after = settled(workspace)
+    assert any("RF601" in line and "talker.yaml" in line for line in after)
+
+
+def test_an_edited_node_is_checked_again(workspace: Path) -> None:
+    """The node's declarations (the launch entry's inline `rate` no longer
+    declared: RF601) and its endpoints (it publishes Int32 on `numbers` then,
+    the listener's topic: the notes of a topic published nowhere go)."""
+    before = settled(workspace)
+    edit(
+        workspace / "src/demo/demo/talker.py",
+        'self.declare_parameter("rate", 1.0)',
+        'self.declare_parameter("speed", 1.0)',
+    )
+    declared = settled(workspace)
+    assert any("RF601" in line and "demo.launch.py" in line for line in declared)
+    edit(
+        workspace / "src/demo/demo/talker.py", '(String, "chatter"', '(Int32, "numbers"'
+    )
+    edit(workspace / "src/demo/demo/talker.py", "import String", "import Int32")
+    moved = settled(workspace)
+    assert [x for x in before if "RF60" in x] != [x for x in moved if "RF60" in x]
+
+
+def test_an_edited_node_no_launch_file_starts_is_seen(workspace: Path) -> None:
+    """Code the launch files' reading never reads: its endpoints are part of the
+    graph's key (the monitor takes `chatter`, which the talker publishes as
+    String, as Int32: RF603)."""
+    before = settled(workspace)
+    assert not any("RF603" in line for line in before)
+    edit(workspace / "src/demo/demo/monitor.py", '"numbers"', '"chatter"')
+    assert any("RF603" in line for line in settled(workspace))
