@@ -41,6 +41,7 @@ from std_msgs.msg import Int32
 class Listener(Node):
     def __init__(self):
         super().__init__("listener")
+        self.declare_parameter("gain", 1.0)
         self.create_subscription(Int32, "numbers", self.on_number, 10)
 
     def on_number(self, msg):
@@ -246,3 +247,120 @@ def test_an_edited_node_no_launch_file_starts_is_seen(workspace: Path) -> None:
     assert not any("RF603" in line for line in before)
     edit(workspace / "src/demo/demo/monitor.py", '"numbers"', '"chatter"')
     assert any("RF603" in line for line in settled(workspace))
+
+
+def test_an_included_file_given_other_arguments_is_checked_again(
+    workspace: Path,
+) -> None:
+    """The included file's bytes stay, what its includer passes changes: the
+    name its node gets, so another section of the parameter file it names
+    applies (an undeclared `volume` in `ears:`: RF601 while the listener is
+    named `ears`)."""
+    pkg = workspace / "src/demo"
+    (pkg / "config").mkdir()
+    (pkg / "config/ears.yaml").write_text(
+        "ears:\n  ros__parameters:\n    volume: 3\n", encoding="utf-8"
+    )
+    inner = (
+        INNER.replace(
+            "from launch_ros.actions import Node",
+            "from launch.actions import DeclareLaunchArgument\n"
+            "from launch.substitutions import LaunchConfiguration\n"
+            "from launch_ros.actions import Node\n"
+            "from ament_index_python.packages import get_package_share_directory\n"
+            "import os",
+        )
+        .replace(
+            "    return LaunchDescription([\n",
+            "    share = get_package_share_directory('demo')\n"
+            "    return LaunchDescription([\n"
+            "        DeclareLaunchArgument('who', default_value='mouth'),\n",
+        )
+        .replace(
+            'name="listener",',
+            'name=LaunchConfiguration("who"),\n'
+            '            parameters=[os.path.join(share, "config", "ears.yaml")],',
+        )
+    )
+    (pkg / "launch/inner.launch.py").write_text(inner, encoding="utf-8")
+    edit(
+        pkg / "launch/demo.launch.py",
+        '"inner.launch.py")\n            )',
+        '"inner.launch.py")\n            ),\n'
+        '            launch_arguments={"who": "ears"}.items()',
+    )
+    before = settled(workspace)
+    assert any("RF601" in line and "ears.yaml" in line for line in before)
+    edit(pkg / "launch/demo.launch.py", '"who": "ears"', '"who": "mouths"')
+    after = settled(workspace)
+    assert not any("RF601" in line and "ears.yaml" in line for line in after)
+
+
+def test_an_edited_launch_file_summarises_only_the_code_it_starts(
+    workspace: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A value changed in one launch entry: the parameter files' findings and
+    the other launch files' are kept, only the talker's code is summarised."""
+    settled(workspace)
+    import robotfix.paramcheck
+
+    summarised: list[str] = []
+    real = robotfix.paramcheck.summarize
+    monkeypatch.setattr(
+        robotfix.paramcheck,
+        "summarize",
+        lambda source, **kw: summarised.append(source.path) or real(source, **kw),
+    )
+    edit(workspace / "src/demo/launch/demo.launch.py", '"rate": 2.0', '"rate": 3.0')
+    found = run(workspace, cache=True)
+    assert [Path(p).name for p in summarised] == ["talker.py"]
+    monkeypatch.setattr(robotfix.paramcheck, "summarize", real)
+    assert found == run(workspace, cache=False)
+
+
+def test_the_names_launch_files_give_decide_the_parameter_files_findings(
+    workspace: Path,
+) -> None:
+    """The parameter files' findings are kept apart from the launch files': they
+    depend on the names the launch files give and the code those start. Renaming
+    the talker `speaker` (the node names stay: another entry is called
+    `speaker`) makes `speaker:` apply to the talker's code (RF401: a string for
+    its double `rate`); naming another entry `nobody` matches `nobody:` (its
+    RF602 goes)."""
+    pkg = workspace / "src/demo"
+    (pkg / "config").mkdir()
+    (pkg / "config/speaker.yaml").write_text(
+        "speaker:\n  ros__parameters:\n    rate: fast\n"
+        "nobody:\n  ros__parameters:\n    x: 1\n",
+        encoding="utf-8",
+    )
+    edit(
+        pkg / "launch/demo.launch.py",
+        "        Node(\n",
+        '        Node(package="other", executable="x", name="speaker"),\n'
+        '        Node(package="other", executable="y", name="talker"),\n'
+        "        Node(\n",
+    )
+    before = settled(workspace)
+    assert any("RF602" in line and "speaker.yaml" in line for line in before)
+    assert not any("RF401" in line for line in before)
+    edit(pkg / "launch/demo.launch.py", 'name="talker",', 'name="speaker",')
+    renamed = settled(workspace)
+    assert any("RF401" in line and "speaker.yaml" in line for line in renamed)
+    edit(
+        pkg / "launch/demo.launch.py",
+        'executable="x", name="speaker"',
+        'executable="x", name="nobody"',
+    )
+    named = settled(workspace)
+    assert not any("RF602" in line and "speaker.yaml" in line for line in named)
+
+
+def test_a_parameter_file_only_a_launch_file_names_is_checked_again(
+    workspace: Path,
+) -> None:
+    """Its values against the talker's declarations (RF401: a string for the
+    double `rate`), though discovery does not find it."""
+    settled(workspace)
+    edit(workspace / "src/demo/settings/talker.yaml", "rate: 5.0", "rate: fast")
+    assert any("RF401" in line and "talker.yaml" in line for line in settled(workspace))

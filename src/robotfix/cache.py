@@ -136,6 +136,9 @@ class ResultCache:
         self._seen_stats: dict[str, list[Any]] = {}  # this run's, saved
         self._bytes: dict[str, bytes] = {}  # the last file `sha` read, to `take`
         self._params: tuple[str, list[Any]] | None = None
+        # the parameter check by part (`param_part`): "fixed" -> [key, findings,
+        # RF602], a launch file -> [key, its entries' findings]
+        self._parts: dict[str, Any] = {}
         # C++ file -> [sha256, its graph endpoints dumped, or None]: what
         # `graphcheck` read of it; this run's, saved (`put_cpp`)
         self._cpp: dict[str, Any] = {}
@@ -213,6 +216,9 @@ class ResultCache:
                 and all(_valid_diagnostic(d) for d in params[1])
             ):
                 self._params = (params[0], params[1])
+            parts = data.get("parts")
+            if isinstance(parts, dict):
+                self._parts = parts  # each entry checked when read (`param_part`)
             cpp = data.get("cpp")
             if isinstance(cpp, dict):
                 self._cpp = cpp  # each entry checked when read (`cpp_graph`)
@@ -414,6 +420,26 @@ class ResultCache:
         self._params = (key, [_dump(d) for d in diagnostics])
         self._dirty = True
 
+    def param_part(self, name: str, key: str) -> list[list[Diagnostic]] | None:
+        """A part of the parameter check (`run._ParamParts`) kept under `key`:
+        its lists of findings."""
+        entry = self._parts.get(name)
+        if not (
+            isinstance(entry, list)
+            and len(entry) >= 2
+            and entry[0] == key
+            and all(
+                isinstance(found, list) and all(_valid_diagnostic(d) for d in found)
+                for found in entry[1:]
+            )
+        ):
+            return None
+        return [[_load(d) for d in found] for found in entry[1:]]
+
+    def put_param_part(self, name: str, key: str, *found: list[Diagnostic]) -> None:
+        self._parts[name] = [key, *([_dump(d) for d in one] for one in found)]
+        self._dirty = True
+
     # -- C++ files' graph endpoints ---------------------------------------------
     def cpp_graph(self, path: Path, digest: str) -> tuple[bool, Any]:
         """(known, the endpoints dumped or None) of a C++ file whose bytes hash
@@ -577,6 +603,7 @@ class ResultCache:
             },
             "stats": {**self._stats, **self._seen_stats},
             "params": list(self._params) if self._params is not None else None,
+            "parts": self._parts,
             "catalog": self._catalog,
             "discovery": self._discovery,
             "stage": self._stage,

@@ -156,6 +156,54 @@ class LaunchRun:
         return set(self._codes[key])
 
     # -- the checks (called by paramcheck with its table) -------------------------
+    def by_file(self) -> dict[str, list[_Started]]:
+        """The entries by the file they are written in (an included file's
+        entries are its own), in the order they were read."""
+        found: dict[str, list[_Started]] = {}
+        for started in self.started:
+            found.setdefault(started.entry.place.path, []).append(started)
+        return found
+
+    def check_file(
+        self,
+        path: str,
+        entries: list[_Started],
+        table: Table,
+        loaded: dict[str, P.ParamFile],
+        faults: list[Fault] | None = None,
+    ) -> list[Diagnostic]:
+        """One file's entries against their nodes' code, under a `guard` of its
+        own; the table needs only the summaries of the code they start."""
+        out: list[Diagnostic] = []
+        by_real = {table.real[s.path]: s for s in table.summaries}
+        with guard(path, out, faults):
+            for started in entries:
+                code = [by_real[f] for f in sorted(started.files) if f in by_real]
+                if not code:
+                    continue
+                if started.entry.ros == 2:
+                    out += _ros2_entry(started.entry, code, table, loaded)
+                else:
+                    out += _ros1_entry(started.entry, code, table)
+        return out
+
+    def sections(
+        self,
+        table: Table,
+        loaded: dict[str, P.ParamFile],
+        faults: list[Fault] | None = None,
+    ) -> list[Diagnostic]:
+        """RF602 for each parameter file, with the node names of the code and of
+        the launch files."""
+        from robotfix.paramcheck import unmatched_sections
+
+        out: list[Diagnostic] = []
+        known = self._known(table)
+        for path, parameters in sorted(loaded.items()):
+            with guard(path, out, faults):
+                out += unmatched_sections(path, parameters, known)
+        return out
+
     def check(
         self,
         table: Table,
@@ -166,32 +214,19 @@ class LaunchRun:
         `guard` of its own (an entry's file: an included file's entries are its
         own), then RF602 for each parameter file."""
         out = list(self.notices)
-        by_real = {table.real[s.path]: s for s in table.summaries}
-        by_file: dict[str, list[_Started]] = {}
-        for started in self.started:
-            by_file.setdefault(started.entry.place.path, []).append(started)
-        for path, entries in by_file.items():
-            with guard(path, out, faults):
-                for started in entries:
-                    code = [by_real[f] for f in sorted(started.files) if f in by_real]
-                    if not code:
-                        continue
-                    if started.entry.ros == 2:
-                        out += _ros2_entry(started.entry, code, table, loaded)
-                    else:
-                        out += _ros1_entry(started.entry, code, table)
-        from robotfix.paramcheck import unmatched_sections
-
-        known = self._known(table)
-        for path, parameters in sorted(loaded.items()):
-            with guard(path, out, faults):
-                out += unmatched_sections(path, parameters, known)
-        unique = {(d.path, d.span, d.code, d.message): d for d in out}
-        return list(unique.values())
+        for path, entries in self.by_file().items():
+            out += self.check_file(path, entries, table, loaded, faults)
+        return unique([*out, *self.sections(table, loaded, faults)])
 
     def _known(self, table: Table) -> set[str]:
         """Every node name of the code and the launch files."""
         return set(self.names) | table.node_names()
+
+
+def unique(found: list[Diagnostic]) -> list[Diagnostic]:
+    """One diagnostic per place, rule and message (two launch files naming one
+    parameter file for one node find its typos twice)."""
+    return list({(d.path, d.span, d.code, d.message): d for d in found}.values())
 
 
 def _packages(files: list[Path]) -> dict[str, Path]:

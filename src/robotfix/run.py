@@ -625,6 +625,12 @@ def _parameter_problems(
     launches, faults = read if read is not None else (None, [])
     from robotfix.paramcheck import check_parameter_files
 
+    parts = (
+        _ParamParts(found, python_files, config, cache, launches, cpp_nodes)
+        if cache is not None and not faults
+        else None
+    )
+
     out = check_parameter_files(
         found.parameter_files,
         found.parameter_definitions,
@@ -636,12 +642,103 @@ def _parameter_problems(
         faults,
         launches,
         cpp_nodes or (),
+        parts,
     )
     if errors is not None:
         errors += [InternalError(f.path, f.summary, f.detail) for f in faults]
     if cache is not None and key is not None and not faults:
         cache.put_params(key, out)
     return out
+
+
+class _ParamParts:
+    """The parameter check's parts kept in the cache (`paramcheck.Parts`), each
+    under a key of what it depends on, so an edit re-checks only what it
+    touches: the parameter files' findings and RF602 ("fixed": what
+    `_params_key` hashes but the launch files, with what the launch files add to
+    the table instead: the names they give nodes and the code those start, the
+    parameter files they name), and each launch file's entries' findings (its
+    bytes, the entries as read, the bytes of the code they start with what its
+    check consulted, of the parameter files they name, of the definitions)."""
+
+    def __init__(
+        self,
+        found: Discovery,
+        python_files: list[Path],
+        config: Config,
+        cache: ResultCache,
+        launches: LaunchRun | None,
+        cpp_nodes: list[str] | None,
+    ) -> None:
+        self.found, self.python_files, self.config = found, python_files, config
+        self.cache, self.launches, self.cpp_nodes = cache, launches, cpp_nodes
+        self._keys: dict[str, str] = {}
+        self._real: dict[str, list[Path]] | None = None
+
+    def _file(self, label: str, path: Path | str) -> str:
+        file = Path(path)
+        ignored = ",".join(sorted(self.config.ignored_codes(file)))
+        where = package_folder(file)
+        return f"{label}\0{path}\0{self.cache.sha(file)}\0{ignored}\0{where}"
+
+    def _key(self, name: str, parts: list[str]) -> str:
+        text = "\n".join([name, *parts]).encode("utf-8", "surrogateescape")
+        self._keys[name] = hashlib.sha256(text).hexdigest()
+        return self._keys[name]
+
+    def fixed(self) -> tuple[list[Diagnostic], list[Diagnostic]] | None:
+        launches = self.launches
+        parts = [
+            _params_key(
+                self.found,
+                self.python_files,
+                self.config,
+                self.cache,
+                [],
+                self.cpp_nodes,
+            )
+        ]
+        if launches is not None:
+            parts.append(f"entries\0{bool(launches.entries)}")
+            parts += [f"name\0{n}" for n in sorted(launches.names)]
+            for name, files in sorted(launches.renamed.items()):
+                parts.append("\0".join(["renamed", name, *sorted(files)]))
+            parts += [self._file("file", p) for p in launches.files]
+        found = self.cache.param_part("fixed", self._key("fixed", parts))
+        return (found[0], found[1]) if found is not None and len(found) == 2 else None
+
+    def launch_file(self, path: str, entries: list[Any]) -> list[Diagnostic] | None:
+        if self._real is None:
+            self._real = {}
+            for file in self.python_files:
+                self._real.setdefault(os.path.realpath(file), []).append(file)
+        parts = [self._file("launch", path)]
+        for started in entries:
+            parts.append(f"entry\0{started.entry!r}\0{sorted(started.files)}")
+            for real in sorted(started.files):
+                for file in self._real.get(real, []):
+                    parts.append(self._file("code", file))
+                    parts += [f"reads\0{k}\0{v}" for k, v in self.cache.consulted(file)]
+            for parameter in started.entry.parameters:
+                if getattr(parameter, "path", None) is not None:
+                    parts.append(self._file("param", parameter.path))
+        parts += [
+            self._file("definitions", p) for p in self.found.parameter_definitions
+        ]
+        parts += [self._file("summary", p) for p in self.found.summary_files]
+        found = self.cache.param_part(f"launch:{path}", self._key(path, parts))
+        return found[0] if found is not None and len(found) == 1 else None
+
+    def keep(
+        self,
+        fixed: tuple[list[Diagnostic], list[Diagnostic]] | None,
+        launch: dict[str, list[Diagnostic]],
+    ) -> None:
+        if fixed is not None and "fixed" in self._keys:
+            self.cache.put_param_part("fixed", self._keys["fixed"], *fixed)
+        for path, found in launch.items():
+            if path in self._keys:
+                self.cache.put_param_part(f"launch:{path}", self._keys[path], found)
 
 
 def _params_key(
