@@ -364,3 +364,29 @@ def test_a_parameter_file_only_a_launch_file_names_is_checked_again(
     settled(workspace)
     edit(workspace / "src/demo/settings/talker.yaml", "rate: 5.0", "rate: fast")
     assert any("RF401" in line and "talker.yaml" in line for line in settled(workspace))
+
+
+def test_an_edited_launch_file_is_the_only_one_read_again(
+    workspace: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Each launch file's reading is kept with what it read: an edit re-reads the
+    file and those that include it, no other."""
+    import robotfix.ros.launch.reader as reader
+
+    launch = workspace / "src/demo/launch"
+    (launch / "other.launch.py").write_text(INNER, encoding="utf-8")
+    settled(workspace)
+    parsed: list[str] = []
+    real = reader._parse
+    monkeypatch.setattr(
+        reader, "_parse", lambda path, *a: parsed.append(path.name) or real(path, *a)
+    )
+    edit(launch / "other.launch.py", '"numbers", "numbers"', '"numbers", "other"')
+    found = run(workspace, cache=True)
+    assert parsed == ["other.launch.py"]
+    assert found == run(workspace, cache=False)
+    parsed.clear()
+    edit(launch / "inner.launch.py", '"numbers", "numbers"', '"numbers", "inner"')
+    found = run(workspace, cache=True)
+    assert sorted(parsed) == ["demo.launch.py", "inner.launch.py"]
+    assert found == run(workspace, cache=False)

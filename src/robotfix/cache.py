@@ -139,6 +139,8 @@ class ResultCache:
         # the parameter check by part (`param_part`): "fixed" -> [key, findings,
         # RF602], a launch file -> [key, its entries' findings]
         self._parts: dict[str, Any] = {}
+        # a launch file -> [key, its trace, its reading] (`launch_read`)
+        self._reads: dict[str, Any] = {}
         # C++ file -> [sha256, its graph endpoints dumped, or None]: what
         # `graphcheck` read of it; this run's, saved (`put_cpp`)
         self._cpp: dict[str, Any] = {}
@@ -216,6 +218,9 @@ class ResultCache:
                 and all(_valid_diagnostic(d) for d in params[1])
             ):
                 self._params = (params[0], params[1])
+            reads = data.get("reads")
+            if isinstance(reads, dict) and (plain or _names_only(reads)):
+                self._reads = reads  # each entry checked when read (`launch_read`)
             parts = data.get("parts")
             if isinstance(parts, dict):
                 self._parts = parts  # each entry checked when read (`param_part`)
@@ -420,6 +425,49 @@ class ResultCache:
         self._params = (key, [_dump(d) for d in diagnostics])
         self._dirty = True
 
+    def launch_read(self, path: str, context: str) -> tuple[Trace, Any] | None:
+        """A launch file's reading kept by `put_launch_read` under `context`:
+        its trace, and [problem or None, [[entry dumped, files]...], files read]
+        (the entries for `ros.launch.model.load`, which checks them); None when
+        not exactly that."""
+        entry = self._reads.get(path)
+        if not (isinstance(entry, list) and len(entry) == 3 and entry[0] == context):
+            return None
+        trace = Trace.from_json(entry[1])
+        raw = entry[2]
+        if not (trace is not None and isinstance(raw, list) and len(raw) == 3):
+            return None
+        problem, started, reading = raw
+        if not (
+            (
+                problem is None
+                or (
+                    isinstance(problem, list)
+                    and len(problem) == 3
+                    and _name(problem[0])
+                    and _number(problem[1], 1)
+                    and _number(problem[2], 0)
+                )
+            )
+            and isinstance(started, list)
+            and all(
+                isinstance(s, list)
+                and len(s) == 2
+                and isinstance(s[1], list)
+                and all(_name(f) for f in s[1])
+                for s in started
+            )
+            and isinstance(reading, list)
+            and all(_name(f) for f in reading)
+        ):
+            return None
+        found = tuple(problem) if problem is not None else None
+        return trace, [found, started, reading]
+
+    def put_launch_read(self, path: str, context: str, trace: Trace, raw: Any) -> None:
+        self._reads[path] = [context, trace.to_json(), raw]
+        self._dirty = True
+
     def param_part(self, name: str, key: str) -> list[list[Diagnostic]] | None:
         """A part of the parameter check (`run._ParamParts`) kept under `key`:
         its lists of findings."""
@@ -604,6 +652,7 @@ class ResultCache:
             "stats": {**self._stats, **self._seen_stats},
             "params": list(self._params) if self._params is not None else None,
             "parts": self._parts,
+            "reads": self._reads,
             "catalog": self._catalog,
             "discovery": self._discovery,
             "stage": self._stage,

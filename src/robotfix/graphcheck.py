@@ -31,12 +31,12 @@ import re
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from robotfix import messages
 from robotfix.diagnostics import Diagnostic, Note
 from robotfix.fs import UnreadableError, probe, read_regular
-from robotfix.ros.executables import Targets, cpp_executable_files
+from robotfix.ros.executables import cpp_executable_files
 from robotfix.ros.graph import qos as Q
 from robotfix.ros.graph.build import End, Graph, Started, build
 from robotfix.ros.graph.cpp import MAX_CPP_BYTES, read_cpp
@@ -134,7 +134,7 @@ def started_entries(
         if found is not None and name is not None:
             packages.setdefault(name, found)
     out: list[Started] = []
-    targets: dict[Path, Targets] = {}  # each package's CMake targets, read once
+    targets: dict[Path, Any] = {}  # each package's CMake targets, read once
     for started in launches.started:
         entry = started.entry
         files = [by_real[f] for f in sorted(started.files) if f in by_real]

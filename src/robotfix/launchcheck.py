@@ -25,21 +25,31 @@ A fault of ours on one launch file (reading it, or checking its entries) is a
 from __future__ import annotations
 
 import ast
+import contextlib
 import os
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any, Protocol
 
 from robotfix import messages
 from robotfix.astwalk import children
 from robotfix.diagnostics import Diagnostic, Note, Span
 from robotfix.faults import Fault, guard
-from robotfix.fs import UnreadableError, probe, read_text
+from robotfix.fs import (
+    Noted,
+    UnreadableError,
+    noting,
+    probe,
+    read_text,
+    remembered,
+    replay,
+)
 from robotfix.ros import paramfile as P
 from robotfix.ros.executables import MAX_BUILD_BYTES, executable_file, module_file
 from robotfix.ros.launch.model import FileParam, InlineParam, NodeEntry
 from robotfix.ros.launch.reader import Reader
+from robotfix.ros.launch.tree import MAX_LAUNCH_BYTES
 from robotfix.ros.package import package_folder, package_name
 from robotfix.ros.yamlfile import WALK_BUDGET
 
@@ -63,6 +73,26 @@ class _Started:
     files: set[str] = field(default_factory=set)  # real paths of its code
 
 
+@dataclass(frozen=True)
+class Read:
+    """What reading one launch file gave: why it was not read, or its entries
+    with the real paths of their code; the launch files it parsed (itself and
+    what it includes)."""
+
+    problem: tuple[str, int, int] | None
+    started: list[tuple[NodeEntry, list[str]]]
+    reading: list[str]
+
+
+class Kept(Protocol):
+    """Launch files' readings kept by an earlier run (`run._KeptReads`), each with
+    what it read and probed: `get` gives one only while that holds."""
+
+    def get(self, path: str, context: str) -> tuple[Noted, Read] | None: ...
+
+    def put(self, path: str, context: str, noted: Noted, read: Read) -> None: ...
+
+
 class LaunchRun:
     """The launch files of a run, read, and what they add to its parameter check
     (`paramcheck.Launches`)."""
@@ -74,43 +104,74 @@ class LaunchRun:
         faults: list[Fault] | None = None,
         parses: dict[str, tuple[str, ast.Module]] | None = None,
         imports: Imports | None = None,
+        kept: Kept | None = None,
     ) -> None:
         """`parses`: Python launch files as this process's checks parsed them
         (text, tree), and `imports`, the import statements of the files they
-        parsed: not parsed again (`Reader`, `_imported`)."""
+        parsed: not parsed again (`Reader`, `_imported`). `kept`: each launch
+        file's reading as an earlier run made it, while what it read holds
+        (`Kept`): not read again."""
         self.imports = imports
+        self.kept = kept
+        self._fresh: list[tuple[str, Noted, Read]] = []  # for `kept`, once all read
+        self._kept_texts: list[str] = []  # files read by kept readings
         self.packages = _packages([*launch_files, *code_files])
+        # what a launch file's reading depends on besides what it reads: where
+        # each package is, the current folder (a relative path is read from it)
+        where = sorted((k, str(v)) for k, v in self.packages.items())
+        self._context = repr([os.getcwd(), where])
         self.notices: list[Diagnostic] = []
         self.started: list[_Started] = []
         self.renamed: dict[str, set[str]] = {}
         self.files: list[Path] = []
         self.names: set[str] = set()  # every node name a launch entry gives
         self.reader = Reader(self.packages.get, parses or {})
-        self._build: dict[tuple[str, Path], object] = {}  # packages' build files
-        self._codes: dict[tuple[Path, str], set[str]] = {}  # by executable
+        self._build: dict[tuple[str, Path], Any] = {}  # packages' build files
+        self._codes: dict[tuple[Path, str], Any] = {}  # by executable
         for path in launch_files:
             with guard(path, self.notices, faults):
                 self._read(path)
         self.entries = len(self.started)
+        if kept is not None and not self.reader.order_dependent:
+            for name, noted, read in self._fresh:
+                kept.put(name, self._context, noted, read)
 
     def _read(self, path: Path) -> None:
         """One launch file's entries, kept only once all are read (a fault on
         the file leaves nothing of it)."""
-        launch = self.reader.read(path)
-        if launch.problem is not None:
-            text, line, col = launch.problem
-            self.notices.append(
-                messages.launch_file_not_read(str(path), line, col, text)
-            )
+        name = str(path)
+        known = self.kept.get(name, self._context) if self.kept is not None else None
+        if known is not None:
+            noted, read = known
+            replay(noted)
+            self.reader.touched.update(read.reading)
+            self._kept_texts += read.reading
+        else:
+            noted = Noted()
+            self.reader.reading = set()
+            with noting(noted):
+                launch = self.reader.read(path)
+                started = [
+                    (entry, sorted(self._code(entry)))
+                    for entry in (launch.entries if launch.launch else [])
+                ]
+            read = Read(launch.problem, started, sorted(self.reader.reading))
+            self._fresh.append((name, noted, read))
+        if read.problem is not None:
+            text, line, col = read.problem
+            self.notices.append(messages.launch_file_not_read(name, line, col, text))
             return
-        started = [
-            _Started(entry, self._code(entry))
-            for entry in (launch.entries if launch.launch else [])
-        ]
-        for one in started:
-            self._add(one)
+        for entry, files in read.started:
+            self._add(_Started(entry, set(files)))
 
     def texts(self) -> dict[str, str]:
+        """The texts of the launch files read (for suppressions), those a kept
+        reading read too."""
+        for name in self._kept_texts:
+            if name not in self.reader.texts:
+                with contextlib.suppress(UnreadableError):
+                    self.reader.texts[name] = read_text(name, MAX_LAUNCH_BYTES)
+        self._kept_texts = []
         return self.reader.texts
 
     def touched(self) -> set[str]:
@@ -142,18 +203,17 @@ class LaunchRun:
         folder = self.packages.get(entry.package or "")
         if folder is None or not entry.executable:
             return set()
-        key = (folder, entry.executable)
-        if key not in self._codes:  # many entries start one executable
-            main = executable_file(folder, entry.executable, self._build)
-            self._codes[key] = (
-                set()
-                if main is None
-                else {
-                    probe("realpath", p)
-                    for p in [main, *_imported(main, folder, self.imports)]
-                }
-            )
-        return set(self._codes[key])
+        executable = entry.executable
+
+        def code() -> set[str]:
+            main = executable_file(folder, executable, self._build)
+            if main is None:
+                return set()
+            imported = _imported(main, folder, self.imports)
+            return {probe("realpath", p) for p in [main, *imported]}
+
+        # many entries start one executable
+        return set(remembered(self._codes, (folder, executable), code))
 
     # -- the checks (called by paramcheck with its table) -------------------------
     def by_file(self) -> dict[str, list[_Started]]:

@@ -31,7 +31,7 @@ from robotfix.cache import ResultCache, discovery_key, run_key
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
 from robotfix.discovery import Discovery, Trace, discover, install_space
-from robotfix.fs import RACY_NS, UnreadableError, noting, read_regular, stamp
+from robotfix.fs import RACY_NS, Noted, UnreadableError, noting, read_regular, stamp
 from robotfix.ros.api_model import ENDPOINT_WORDS
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.ros.install import InstallSpace
@@ -44,7 +44,7 @@ if TYPE_CHECKING:  # the analysis is imported only when a file is checked
     from robotfix.analysis.parameters import Summary as ParamSummary
     from robotfix.api import Contract
     from robotfix.faults import Fault as ParamFault
-    from robotfix.launchcheck import Imports, LaunchRun
+    from robotfix.launchcheck import Imports, LaunchRun, Read
     from robotfix.paramcheck import Known as ParamKnown
     from robotfix.project.summary import Known, Project
     from robotfix.ros.graph.model import FileGraph
@@ -432,7 +432,7 @@ class _Stage:
         if not self.was_read:
             self.was_read = True
             with noting(self.trace):
-                self.launches = _launches(self.found, self.files)
+                self.launches = _launches(self.found, self.files, self.cache)
         return self.launches
 
     def touched(self) -> list[str]:
@@ -479,10 +479,55 @@ def _stage_key(
     return hashlib.sha256(text.encode("utf-8", "surrogateescape")).hexdigest()
 
 
+class _KeptReads:
+    """Each launch file's reading kept in the cache (`launchcheck.Kept`), with
+    the trace of what it read and probed (its includes' files, the packages'
+    build files, the nodes' code, the parameter files it looked for)."""
+
+    def __init__(self, cache: ResultCache) -> None:
+        self.cache = cache
+
+    def get(self, path: str, context: str) -> tuple[Noted, Read] | None:
+        from robotfix.launchcheck import Read
+        from robotfix.ros.launch.model import NodeEntry, load
+
+        raw = self.cache.launch_read(path, context)
+        if raw is None:
+            return None
+        trace, (problem, started, reading) = raw
+        entries = []
+        try:
+            for dumped, files in started:
+                entry = load(dumped)
+                if not isinstance(entry, NodeEntry):
+                    return None
+                entries.append((entry, files))
+        except (ValueError, TypeError):
+            return None
+        if not trace.holds():
+            return None
+        return trace, Read(problem, entries, reading)
+
+    def put(self, path: str, context: str, noted: Noted, read: Read) -> None:
+        from robotfix.ros.launch.model import dump
+
+        trace = Trace()
+        trace.take(noted)
+        if trace.spoiled:
+            return
+        try:
+            started = [[dump(entry), files] for entry, files in read.started]
+        except ValueError:
+            return
+        raw = [read.problem, started, read.reading]
+        self.cache.put_launch_read(path, context, trace, raw)
+
+
 def _launches(
-    found: Discovery, files: list[Path]
+    found: Discovery, files: list[Path], cache: ResultCache | None = None
 ) -> tuple[LaunchRun, list[ParamFault]] | None:
-    """The run's launch files, read."""
+    """The run's launch files, read (with the cache, a file whose reading was
+    kept and what it read holds is not read again)."""
     if not found.launch_files:
         return None
     from robotfix.launchcheck import LaunchRun
@@ -494,7 +539,8 @@ def _launches(
         if source is not None and source.tree is not None
     }
     code = [*files, *found.summary_files]
-    run = LaunchRun(found.launch_files, code, faults, parses, _IMPORTS)
+    kept = _KeptReads(cache) if cache is not None else None
+    run = LaunchRun(found.launch_files, code, faults, parses, _IMPORTS, kept)
     return run, faults
 
 
