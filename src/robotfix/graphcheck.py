@@ -135,6 +135,7 @@ def started_entries(
             packages.setdefault(name, found)
     out: list[Started] = []
     targets: dict[Path, Any] = {}  # each package's CMake targets, read once
+    built: dict[tuple[Path, str], list[Path]] = {}  # many entries start one
     for started in launches.started:
         entry = started.entry
         files = [by_real[f] for f in sorted(started.files) if f in by_real]
@@ -145,7 +146,10 @@ def started_entries(
             inside = probe("realpath", package) + os.sep
             files += [p for r, p in sorted(by_real.items()) if r.startswith(inside)]
         elif package is not None and entry.executable and not files:
-            for source in cpp_executable_files(package, entry.executable, targets):
+            one = (package, entry.executable)
+            if one not in built:
+                built[one] = cpp_executable_files(package, entry.executable, targets)
+            for source in built[one]:
                 real = probe("realpath", source)
                 if real in by_real:
                     files.append(by_real[real])

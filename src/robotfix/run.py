@@ -657,11 +657,10 @@ def _parameter_problems(
         return []
     python_files = [*files, *found.summary_files]
     stage = stage or _Stage(found, files, cache)
-    key = (
-        _params_key(found, python_files, config, cache, stage.touched(), cpp_nodes)
-        if cache
-        else None
+    inputs = (
+        _params_inputs(found, python_files, config, cache, cpp_nodes) if cache else []
     )
+    key = _params_key(config, cache, stage.touched(), inputs) if cache else None
     faulty = stage.launches is not None and bool(stage.launches[1])
     if cache is not None and key is not None and not faulty:
         known = cache.params(key)
@@ -672,7 +671,7 @@ def _parameter_problems(
     from robotfix.paramcheck import check_parameter_files
 
     parts = (
-        _ParamParts(found, python_files, config, cache, launches, cpp_nodes)
+        _ParamParts(found, python_files, config, cache, launches, inputs)
         if cache is not None and not faults
         else None
     )
@@ -714,18 +713,24 @@ class _ParamParts:
         config: Config,
         cache: ResultCache,
         launches: LaunchRun | None,
-        cpp_nodes: list[str] | None,
+        inputs: list[str],
     ) -> None:
         self.found, self.python_files, self.config = found, python_files, config
-        self.cache, self.launches, self.cpp_nodes = cache, launches, cpp_nodes
+        self.cache, self.launches, self.inputs = cache, launches, inputs
         self._keys: dict[str, str] = {}
         self._real: dict[str, list[Path]] | None = None
+        self._files: dict[tuple[str, str], str] = {}  # many keys name one file
 
     def _file(self, label: str, path: Path | str) -> str:
-        file = Path(path)
-        ignored = ",".join(sorted(self.config.ignored_codes(file)))
-        where = package_folder(file)
-        return f"{label}\0{path}\0{self.cache.sha(file)}\0{ignored}\0{where}"
+        name = (label, str(path))
+        if name not in self._files:
+            file = Path(path)
+            ignored = ",".join(sorted(self.config.ignored_codes(file)))
+            where = package_folder(file)
+            self._files[name] = (
+                f"{label}\0{path}\0{self.cache.sha(file)}\0{ignored}\0{where}"
+            )
+        return self._files[name]
 
     def _key(self, name: str, parts: list[str]) -> str:
         text = "\n".join([name, *parts]).encode("utf-8", "surrogateescape")
@@ -734,16 +739,7 @@ class _ParamParts:
 
     def fixed(self) -> tuple[list[Diagnostic], list[Diagnostic]] | None:
         launches = self.launches
-        parts = [
-            _params_key(
-                self.found,
-                self.python_files,
-                self.config,
-                self.cache,
-                [],
-                self.cpp_nodes,
-            )
-        ]
+        parts = list(self.inputs)
         if launches is not None:
             parts.append(f"entries\0{bool(launches.entries)}")
             parts += [f"name\0{n}" for n in sorted(launches.names)]
@@ -788,13 +784,27 @@ class _ParamParts:
 
 
 def _params_key(
+    config: Config, cache: ResultCache, touched: list[str], inputs: list[str]
+) -> str:
+    """The key of the parameter check as a whole: its `inputs` (`_params_inputs`)
+    and every file the launch files' reading touched (launch files, the parameter
+    files and build files they lead to, the nodes' code, by its bytes)."""
+    parts = list(inputs)
+    for name in touched:
+        file = Path(name)
+        ignored = ",".join(sorted(config.ignored_codes(file)))
+        parts.append(f"launch\0{name}\0{cache.sha(file)}\0{ignored}")
+    text = "\n".join(parts).encode("utf-8", "surrogateescape")
+    return hashlib.sha256(text).hexdigest()
+
+
+def _params_inputs(
     found: Discovery,
     python_files: list[Path],
     config: Config,
     cache: ResultCache,
-    touched: list[str],
     cpp_nodes: list[str] | None = None,
-) -> str:
+) -> list[str]:
     """Everything `paramcheck` reads (and the C++ nodes' names, `cpp_nodes`): the
     parameter and definitions files (bytes, per-file ignores, package folder), and
     each Python file that mentions a parameter word (`cache.MENTION_WORDS`; the
@@ -803,14 +813,9 @@ def _params_key(
     refinement imports: the entry holds each record's fingerprint as it is now, or
     the file was checked again). A file read only for its declarations
     (`summary_files`, no check) counts with every other such file's bytes: they are
-    the modules it can import. With launch files: every file their reading touched
-    (launch files, the parameter files and build files they lead to, the nodes'
-    code, by its bytes)."""
+    the modules it can import (the launch files apart: `_params_key`,
+    `_ParamParts`)."""
     parts = [f"cpp\0{name}" for name in cpp_nodes or ()]
-    for name in touched:
-        file = Path(name)
-        ignored = ",".join(sorted(config.ignored_codes(file)))
-        parts.append(f"launch\0{name}\0{cache.sha(file)}\0{ignored}")
     groups = (
         ("yaml", found.parameter_files),
         ("definitions", found.parameter_definitions),
@@ -829,8 +834,7 @@ def _params_key(
             where = package_folder(path)
             parts.append(f"py\0{path}\0{real}\0{cache.sha(path)}\0{where}")
             parts += [f"reads\0{k}\0{v}" for k, v in cache.consulted(path)]
-    text = "\n".join(parts).encode("utf-8", "surrogateescape")
-    return hashlib.sha256(text).hexdigest()
+    return parts
 
 
 def _catalog_key(interfaces: _Interfaces, config: Config) -> str | None:
