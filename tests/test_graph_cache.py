@@ -390,3 +390,52 @@ def test_an_edited_launch_file_is_the_only_one_read_again(
     found = run(workspace, cache=True)
     assert sorted(parsed) == ["demo.launch.py", "inner.launch.py"]
     assert found == run(workspace, cache=False)
+
+
+def test_an_edited_cpp_node_is_seen(workspace: Path) -> None:
+    """A C++ file's endpoints and node names count by its bytes: publishing
+    Int32 on `chatter` (RF603 with the talker's String), then naming its node
+    `driver` (the section `driver:` of a parameter file names a node then: its
+    RF602 goes)."""
+    driver = workspace / "src/demo"  # one package with the talker: they may meet
+    (driver / "src").mkdir(parents=True)
+    (driver / "config").mkdir()
+    (driver / "config/driver.yaml").write_text(
+        "driver:\n  ros__parameters:\n    max: 0.4\n", encoding="utf-8"
+    )
+    source = driver / "src/driver.cpp"
+    source.write_text(
+        "class Driver : public rclcpp::Node {\n public:\n"
+        '  Driver() : Node("motor") {\n'
+        '    pub_ = create_publisher<std_msgs::msg::Int32>("numbers", 10);\n'
+        "  }\n};\n",
+        encoding="utf-8",
+    )
+    before = settled(workspace)
+    assert any("RF602" in line and "driver.yaml" in line for line in before)
+    edit(source, '"numbers"', '"/chatter"')
+    published = settled(workspace)
+    assert any("RF603" in line for line in published)
+    edit(source, 'Node("motor")', 'Node("driver")')
+    named = settled(workspace)
+    assert not any("RF602" in line and "driver.yaml" in line for line in named)
+
+
+def test_per_file_ignores_apply_to_kept_graph_findings(workspace: Path) -> None:
+    """The graph's findings are kept before `per-file-ignores`: a run with other
+    settings over the same cache silences what they say."""
+    edit(
+        workspace / "src/demo/launch/demo.launch.py",
+        'name="talker",',
+        'name="talker",\n            remappings=[("chatter", "numbers")],',
+    )
+    found = settled(workspace)
+    assert any("RF603" in line for line in found)
+    ignoring = (("*.py", frozenset({"RF603"})),)
+    config = Config(
+        root=workspace, cache_dir=workspace / "cache", per_file_ignores=ignoring
+    )
+    for _ in range(2):
+        quiet = check_paths([workspace / "src"], config, use_cache=True).diagnostics
+        assert not any(d.code == "RF603" for d in quiet)
+    assert run(workspace, cache=True) == found

@@ -468,9 +468,7 @@ def _silenced(
 ) -> bool:
     """`per-file-ignores`, or `# robotfix: ignore[...]` (in C++ `// robotfix:
     ignore[...]`) on the endpoint's line."""
-    if config is not None and (
-        {diag.code, diag.rule.name} & config.ignored_codes(Path(diag.path))
-    ):
+    if config is not None and config.silences(diag.path, diag.code, diag.rule.name):
         return True
     if diag.path not in texts:
         try:

@@ -315,13 +315,11 @@ def _check_paths(
         group.graphs.update(graphs)
     if group is None:
         where = paths[0] if paths else config.root
-        cpp = _cpp_graphs(found, cache, where, result)
-        cpp_nodes = {n for g in cpp.values() for ns in g.nodes.values() for n in ns}
         graphs.update(grouped_graphs)
         workspace = any(os.path.isdir(p) for p in paths)  # it has a graph
-        stage = _Stage(found, everything, cache)
+        stage = _Stage(found, everything, cache, where, result)
         if cache is not None:
-            stage.look_up(_stage_key(found, everything, graphs, cpp, config, workspace))
+            stage.look_up(_stage_key(found, everything, graphs, cache, workspace))
         result.diagnostics.extend(
             _parameter_problems(
                 found,
@@ -332,17 +330,19 @@ def _check_paths(
                 project,
                 result.internal_errors,
                 stage,
-                sorted(cpp_nodes),
             )
         )
         result.files += len(found.parameter_files)
         if stage.known is not None:
-            result.diagnostics.extend(stage.known[1])
+            result.diagnostics += [
+                d
+                for d in stage.known[1]
+                if not config.silences(d.path, d.code, d.rule.name)
+            ]
         elif workspace:
             result.diagnostics.extend(
                 _graph_problems(
                     graphs,
-                    cpp,
                     stage,
                     config,
                     catalog,
@@ -414,9 +414,18 @@ class _Stage:
     findings."""
 
     def __init__(
-        self, found: Discovery, files: list[Path], cache: ResultCache | None
+        self,
+        found: Discovery,
+        files: list[Path],
+        cache: ResultCache | None,
+        where: Path | None = None,
+        result: Result | None = None,
     ) -> None:
+        """`where`, `result`: where a fault reading the C++ files goes."""
         self.found, self.files, self.cache = found, files, cache
+        self.where, self.result = where, result
+        self._cpp: dict[str, FileGraph] | None = None
+        self.cpp_faulted = False
         self.key: str | None = None
         self.known: tuple[list[str], list[Diagnostic]] | None = None
         self.trace = Trace()
@@ -435,6 +444,22 @@ class _Stage:
                 self.launches = _launches(self.found, self.files, self.cache)
         return self.launches
 
+    def cpp(self) -> dict[str, FileGraph]:
+        """The C++ files' graphs (`_cpp_graphs`), read when first asked: a run
+        whose parameter check and graph are kept reads none."""
+        if self._cpp is None:
+            result = self.result or Result()
+            before = len(result.internal_errors)
+            self._cpp = _cpp_graphs(
+                self.found, self.cache, self.where or Path("."), result
+            )
+            self.cpp_faulted = len(result.internal_errors) > before
+        return self._cpp
+
+    def cpp_nodes(self) -> list[str]:
+        graphs = self.cpp().values()
+        return sorted({n for g in graphs for ns in g.nodes.values() for n in ns})
+
     def touched(self) -> list[str]:
         if self.known is not None:
             return self.known[0]
@@ -447,7 +472,7 @@ class _Stage:
         if self.cache is None or self.key is None or self.known is not None:
             return
         read = self.read()
-        if self.graph is None or (read is not None and read[1]):
+        if self.graph is None or self.cpp_faulted or (read is not None and read[1]):
             return
         self.cache.put_stage(self.key, self.trace, self.touched(), self.graph)
 
@@ -456,24 +481,21 @@ def _stage_key(
     found: Discovery,
     files: list[Path],
     graphs: dict[str, list[Any]],
-    cpp: dict[str, FileGraph],
-    config: Config,
+    cache: ResultCache,
     workspace: bool,
 ) -> str:
     """What the launch files' reading and the graph's findings depend on besides
     the files and paths their trace notes: the launch and code files the run
-    found, each code file's endpoints and ignored rules, the current folder."""
-    from robotfix.ros.graph.model import dump
-
-    code = sorted({*graphs, *cpp})
+    found, each Python file's endpoints, each C++ file's bytes (its endpoints
+    are a function of them), the current folder. (The findings are kept before
+    `per-file-ignores`, applied to them as they are used: `Config.silences`.)"""
     parts = {
         "cwd": os.getcwd(),
         "workspace": workspace,
         "launch": [str(p) for p in found.launch_files],
         "code": [str(p) for p in [*files, *found.summary_files]],
-        "graphs": [graphs[p] if p in graphs else dump(cpp[p]) for p in code],
-        "ignored": [sorted(config.ignored_codes(Path(p))) for p in code],
-        "paths": code,
+        "graphs": sorted(graphs.items()),
+        "cpp": [[str(p), cache.sha(p)] for p in found.cpp_files],
     }
     text = json.dumps(parts, sort_keys=True, separators=(",", ":"))
     return hashlib.sha256(text.encode("utf-8", "surrogateescape")).hexdigest()
@@ -565,7 +587,6 @@ def _cpp_graphs(
 
 def _graph_problems(
     graphs: dict[str, list[Any]],
-    cpp: dict[str, FileGraph],
     stage: _Stage,
     config: Config,
     catalog: MsgCatalog,
@@ -579,6 +600,7 @@ def _graph_problems(
     publisher's file whose contracts were checked): the rest is reported. The
     graph's findings are kept in `stage` (for the cache) when no fault came and
     no contract is checked (that analyses the publisher's file: not kept)."""
+    cpp = stage.cpp()
     if not graphs and not cpp:
         stage.graph = []
         return []
@@ -591,12 +613,16 @@ def _graph_problems(
     with guard(where, out, faults):
         code = code_graphs(graphs, cpp)
         launches = stage.read()
-        with noting(stage.trace):
-            result = check_graph(code, launches[0] if launches else None, config)
-        out += result.diagnostics()
+        with noting(stage.trace):  # `per-file-ignores` after: not in the trace
+            result = check_graph(code, launches[0] if launches else None)
+        out += [
+            d
+            for d in result.diagnostics()
+            if not config.silences(d.path, d.code, d.rule.name)
+        ]
         found = sorted(graph_contracts(result).items())
         if not found and not faults:
-            stage.graph = list(out)
+            stage.graph = result.diagnostics()
         for path, contracts in found:
             with guard(path, out, faults):
                 out += _contract_problems(
@@ -642,11 +668,10 @@ def _parameter_problems(
     project: Project | None = None,
     errors: list[InternalError] | None = None,
     stage: _Stage | None = None,
-    cpp_nodes: list[str] | None = None,
 ) -> list[Diagnostic]:
-    """Parameter files and launch files against the parameters the code declares;
-    `cpp_nodes`: the names the run's C++ nodes have (a section naming one is no
-    RF602);
+    """Parameter files and launch files against the parameters the code declares,
+    and the names the run's C++ nodes have (`stage.cpp_nodes`: a section naming
+    one is no RF602);
     cached as a whole, under a key that hashes every input (`_params_key`);
     `parameters`: what the checks found of the files they read (the others are
     read there). Launch files are read first (`launchcheck.LaunchRun`): what
@@ -657,9 +682,7 @@ def _parameter_problems(
         return []
     python_files = [*files, *found.summary_files]
     stage = stage or _Stage(found, files, cache)
-    inputs = (
-        _params_inputs(found, python_files, config, cache, cpp_nodes) if cache else []
-    )
+    inputs = _params_inputs(found, python_files, config, cache) if cache else []
     key = _params_key(config, cache, stage.touched(), inputs) if cache else None
     faulty = stage.launches is not None and bool(stage.launches[1])
     if cache is not None and key is not None and not faulty:
@@ -686,12 +709,12 @@ def _parameter_problems(
         project,
         faults,
         launches,
-        cpp_nodes or (),
+        stage.cpp_nodes(),
         parts,
     )
     if errors is not None:
         errors += [InternalError(f.path, f.summary, f.detail) for f in faults]
-    if cache is not None and key is not None and not faults:
+    if cache is not None and key is not None and not faults and not stage.cpp_faulted:
         cache.put_params(key, out)
     return out
 
@@ -803,9 +826,9 @@ def _params_inputs(
     python_files: list[Path],
     config: Config,
     cache: ResultCache,
-    cpp_nodes: list[str] | None = None,
 ) -> list[str]:
-    """Everything `paramcheck` reads (and the C++ nodes' names, `cpp_nodes`): the
+    """Everything `paramcheck` reads (and the C++ files, by their bytes: the names
+    of their nodes count), the
     parameter and definitions files (bytes, per-file ignores, package folder), and
     each Python file that mentions a parameter word (`cache.MENTION_WORDS`; the
     others are skipped unread there) with its bytes, the file it really is, its
@@ -815,7 +838,7 @@ def _params_inputs(
     (`summary_files`, no check) counts with every other such file's bytes: they are
     the modules it can import (the launch files apart: `_params_key`,
     `_ParamParts`)."""
-    parts = [f"cpp\0{name}" for name in cpp_nodes or ()]
+    parts = [f"cpp\0{path}\0{cache.sha(path)}" for path in found.cpp_files]
     groups = (
         ("yaml", found.parameter_files),
         ("definitions", found.parameter_definitions),
