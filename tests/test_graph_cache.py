@@ -439,3 +439,20 @@ def test_per_file_ignores_apply_to_kept_graph_findings(workspace: Path) -> None:
         quiet = check_paths([workspace / "src"], config, use_cache=True).diagnostics
         assert not any(d.code == "RF603" for d in quiet)
     assert run(workspace, cache=True) == found
+
+
+def test_a_parameter_file_made_where_a_launch_file_looks_is_seen(
+    workspace: Path,
+) -> None:
+    """A launch file names a parameter file that is not there (nothing to check),
+    then it is made, with a typo (RF601): the launch file's reading is done again
+    (what it found missing is kept as the stamp of the folder above)."""
+    pkg = workspace / "src/demo"
+    params = pkg / "settings/talker.yaml"
+    params.unlink()
+    params.parent.rmdir()
+    before = settled(workspace)
+    assert not any("talker.yaml" in line for line in before)
+    params.parent.mkdir()
+    params.write_text(PARAMS + "    rte: 1\n", encoding="utf-8")
+    assert any("RF601" in line and "talker.yaml" in line for line in settled(workspace))

@@ -643,6 +643,29 @@ class Trace(Noted):
                 self.stamps[name] = found
         self.probes.update(other.probes)
 
+    def folded(self) -> Trace:
+        """This trace with fewer probes, to keep: `isfile` of a file it stamped
+        (the stamp says it), and `isfile` answered False as the stamp of the
+        deepest folder above the path that exists (a file made below it adds an
+        entry to that folder, which changes its stamp)."""
+        out = Trace()
+        out._now, out.spoiled = self._now, self.spoiled
+        out.stamps = dict(self.stamps)
+        folders: dict[str, bool] = {}  # isdir, asked once
+        for (kind, arg), answer in self.probes.items():
+            if kind != "isfile" or (answer and arg not in self.stamps):
+                out.probes[(kind, arg)] = answer
+            elif not answer:
+                folder = os.path.dirname(arg)
+                while folder:
+                    if folder not in folders:
+                        folders[folder] = os.path.isdir(folder)
+                    if folders[folder]:
+                        break
+                    folder = os.path.dirname(folder)
+                out.stamp(folder or ".")
+        return out
+
     def holds(self) -> bool:
         """Whether every stamp and probe answers as it did."""
         if self.spoiled:

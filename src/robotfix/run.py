@@ -474,7 +474,7 @@ class _Stage:
         read = self.read()
         if self.graph is None or self.cpp_faulted or (read is not None and read[1]):
             return
-        self.cache.put_stage(self.key, self.trace, self.touched(), self.graph)
+        self.cache.put_stage(self.key, self.trace.folded(), self.touched(), self.graph)
 
 
 def _stage_key(
@@ -533,8 +533,9 @@ class _KeptReads:
     def put(self, path: str, context: str, noted: Noted, read: Read) -> None:
         from robotfix.ros.launch.model import dump
 
-        trace = Trace()
-        trace.take(noted)
+        taken = Trace()
+        taken.take(noted)
+        trace = taken.folded()
         if trace.spoiled:
             return
         try:
