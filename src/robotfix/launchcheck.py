@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import ast
 import contextlib
+import hashlib
 import os
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
@@ -119,7 +120,8 @@ class LaunchRun:
         # what a launch file's reading depends on besides what it reads: where
         # each package is, the current folder (a relative path is read from it)
         where = sorted((k, str(v)) for k, v in self.packages.items())
-        self._context = repr([os.getcwd(), where])
+        text = repr([os.getcwd(), where]).encode("utf-8", "surrogateescape")
+        self._context = hashlib.sha256(text).hexdigest()
         self.notices: list[Diagnostic] = []
         self.started: list[_Started] = []
         self.renamed: dict[str, set[str]] = {}
