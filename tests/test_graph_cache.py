@@ -158,6 +158,16 @@ def settled(root: Path) -> list[str]:
     return fresh
 
 
+def finds_after(
+    root: Path, file: str, old: str, new: str, code: str, where: str
+) -> None:
+    """No `code` finding in a file named `where` before the edit, one after."""
+    before = settled(root)
+    assert not any(code in line and where in line for line in before)
+    edit(root / file, old, new)
+    assert any(code in line and where in line for line in settled(root))
+
+
 def test_an_unchanged_tree_reads_no_launch_file(
     workspace: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
@@ -181,42 +191,40 @@ def test_an_unchanged_tree_reads_no_launch_file(
 def test_an_edited_launch_file_is_read_again(workspace: Path) -> None:
     """A remapping in the launch file that makes the talker's `chatter` the
     listener's `numbers`: RF603 (String and Int32 on one topic)."""
-    before = settled(workspace)
-    assert not any("RF603" in line for line in before)
-    edit(
-        workspace / "src/demo/launch/demo.launch.py",
+    finds_after(
+        workspace,
+        "src/demo/launch/demo.launch.py",
         'name="talker",',
         'name="talker",\n            remappings=[("chatter", "numbers")],',
+        "RF603",
+        "",
     )
-    after = settled(workspace)
-    assert any("RF603" in line for line in after)
 
 
 def test_an_edited_included_launch_file_is_read_again(workspace: Path) -> None:
     """The same remapping made in the included file, on the listener's side."""
-    before = settled(workspace)
-    edit(
-        workspace / "src/demo/launch/inner.launch.py",
+    finds_after(
+        workspace,
+        "src/demo/launch/inner.launch.py",
         '("numbers", "numbers")',
         '("numbers", "chatter")',
+        "RF603",
+        "",
     )
-    after = settled(workspace)
-    assert after != before and any("RF603" in line for line in after)
 
 
 def test_an_edited_parameter_file_is_checked_again(workspace: Path) -> None:
     """A parameter the talker does not declare, in the section of the file its
     launch entry names (in no folder discovery takes parameter files from: only
     the launch file leads to it): RF601."""
-    before = settled(workspace)
-    assert not any("RF601" in line for line in before)
-    edit(
-        workspace / "src/demo/settings/talker.yaml",
+    finds_after(
+        workspace,
+        "src/demo/settings/talker.yaml",
         "rate: 5.0",
         "rate: 5.0\n    rte: 1",
+        "RF601",
+        "talker.yaml",
     )
-    after = settled(workspace)
-    assert any("RF601" in line and "talker.yaml" in line for line in after)
 
 
 def test_an_edited_node_is_checked_again(workspace: Path) -> None:
@@ -243,10 +251,8 @@ def test_an_edited_node_no_launch_file_starts_is_seen(workspace: Path) -> None:
     """Code the launch files' reading never reads: its endpoints are part of the
     graph's key (the monitor takes `chatter`, which the talker publishes as
     String, as Int32: RF603)."""
-    before = settled(workspace)
-    assert not any("RF603" in line for line in before)
-    edit(workspace / "src/demo/demo/monitor.py", '"numbers"', '"chatter"')
-    assert any("RF603" in line for line in settled(workspace))
+    monitor = "src/demo/demo/monitor.py"
+    finds_after(workspace, monitor, '"numbers"', '"chatter"', "RF603", "")
 
 
 def test_an_included_file_given_other_arguments_is_checked_again(
@@ -361,9 +367,8 @@ def test_a_parameter_file_only_a_launch_file_names_is_checked_again(
 ) -> None:
     """Its values against the talker's declarations (RF401: a string for the
     double `rate`), though discovery does not find it."""
-    settled(workspace)
-    edit(workspace / "src/demo/settings/talker.yaml", "rate: 5.0", "rate: fast")
-    assert any("RF401" in line and "talker.yaml" in line for line in settled(workspace))
+    params = "src/demo/settings/talker.yaml"
+    finds_after(workspace, params, "rate: 5.0", "rate: fast", "RF401", "talker.yaml")
 
 
 def test_an_edited_launch_file_is_the_only_one_read_again(
