@@ -171,7 +171,13 @@ def finds_after(
 def test_an_unchanged_tree_reads_no_launch_file(
     workspace: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
+    """Not even when a folder above the workspace changed: a file outside any
+    package makes `package.xml` be looked for up to `/`, and those answers are
+    kept as they are, not as the stamps of those folders."""
+    (workspace / "src/tool.py").write_text(LISTENER, encoding="utf-8")
     before = settled(workspace)
+    (workspace.parent / f"{workspace.name}.tmp").write_text("", encoding="utf-8")
+    (workspace.parent / f"{workspace.name}.tmp").unlink()
     read: list[object] = []
     real = robotfix.run._launches
     monkeypatch.setattr(
@@ -461,3 +467,24 @@ def test_a_parameter_file_made_where_a_launch_file_looks_is_seen(
     params.parent.mkdir()
     params.write_text(PARAMS + "    rte: 1\n", encoding="utf-8")
     assert any("RF601" in line and "talker.yaml" in line for line in settled(workspace))
+
+
+def test_a_module_made_where_a_node_imports_from_is_seen(workspace: Path) -> None:
+    """The talker imports `limits`, which its package does not have (the places
+    looked at are kept as the stamp of the package's folder); once made, its
+    node class declares `rte`: the typo RF601 in the talker's parameter file
+    goes."""
+    pkg = workspace / "src/demo"
+    edit(pkg / "demo/talker.py", "import rclpy\n", "import rclpy\nimport limits\n")
+    edit(pkg / "settings/talker.yaml", "rate: 5.0", "rate: 5.0\n    rte: 1")
+    before = settled(workspace)
+    assert any("RF601" in line and "talker.yaml" in line for line in before)
+    (pkg / "limits.py").write_text(
+        "from rclpy.node import Node\n\n\nclass Limits(Node):\n"
+        "    def __init__(self):\n"
+        '        super().__init__("talker")\n'
+        '        self.declare_parameter("rte", 1)\n',
+        encoding="utf-8",
+    )
+    after = settled(workspace)
+    assert not any("RF601" in line and "talker.yaml" in line for line in after)

@@ -643,15 +643,19 @@ class Trace(Noted):
                 self.stamps[name] = found
         self.probes.update(other.probes)
 
-    def folded(self) -> Trace:
+    def folded(self, least: int = 3) -> Trace:
         """This trace with fewer probes, to keep: `isfile` of a file it stamped
-        (the stamp says it), and `isfile` answered False as the stamp of the
-        deepest folder above the path that exists (a file made below it adds an
-        entry to that folder, which changes its stamp)."""
+        (the stamp says it) goes, and the `isfile` answers False that share the
+        deepest existing folder above them, `least` of them or more (a node's
+        imports looked for in its package), become that folder's stamp (a file
+        made below it adds an entry to that folder, which changes its stamp);
+        a lone one stays a probe (`package.xml` looked for up to `/`: a folder
+        such as `/tmp` or a home changes all the time)."""
         out = Trace()
         out._now, out.spoiled = self._now, self.spoiled
         out.stamps = dict(self.stamps)
         folders: dict[str, bool] = {}  # isdir, asked once
+        missing: dict[str, list[str]] = {}
         for (kind, arg), answer in self.probes.items():
             if kind != "isfile" or (answer and arg not in self.stamps):
                 out.probes[(kind, arg)] = answer
@@ -663,7 +667,12 @@ class Trace(Noted):
                     if folders[folder]:
                         break
                     folder = os.path.dirname(folder)
-                out.stamp(folder or ".")
+                missing.setdefault(folder or ".", []).append(arg)
+        for folder, paths in missing.items():
+            if len(paths) >= least:
+                out.stamp(folder)
+            else:
+                out.probes.update({("isfile", p): False for p in paths})
         return out
 
     def holds(self) -> bool:
