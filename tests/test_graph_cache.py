@@ -6,6 +6,7 @@ with a run without the cache (a stale cache would give the old findings)."""
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import pytest
@@ -488,3 +489,33 @@ def test_a_module_made_where_a_node_imports_from_is_seen(workspace: Path) -> Non
     )
     after = settled(workspace)
     assert not any("RF601" in line and "talker.yaml" in line for line in after)
+
+
+def test_damaged_kept_parts_are_done_again(workspace: Path) -> None:
+    """A kept reading, part or stage that is not exactly what RobotFix writes is
+    not used (the run does that part again), never a crash."""
+    fresh = settled(workspace)
+    results = workspace / "cache/results.json"
+    data = json.loads(results.read_text(encoding="utf-8"))
+    reads, parts = data["reads"], data["parts"]
+    for name in reads:
+        reads[name][2][1] = [[["NodeEntry", 2], []], [["Nope"], ["x"]]]
+    for name in parts:
+        parts[name][1] = [["RF999", "x", [0, 0, 0, 0], "m", []]]
+    data["stage"]["graph"] = "nothing"
+    results.write_text(json.dumps(data), encoding="utf-8")
+    assert run(workspace, cache=True) == fresh
+
+
+def test_entries_come_back_from_their_json_form_or_not_at_all() -> None:
+    from robotfix.ros.launch.model import NodeEntry, Place, dump, load
+    from robotfix.ros.paramfile import Typed
+
+    entry = NodeEntry(2, Place("a.py", 3, 4), "p", "x", "n", "/ns")
+    entry.arguments = ["--a", None]
+    assert repr(load(json.loads(json.dumps(dump(entry))))) == repr(entry)
+    with pytest.raises(ValueError):
+        dump(Typed("integer_array", (1, 2), "[1, 2]"))  # a tuple: a list back
+    for bad in (["Place", "a.py", 1], ["Other", 1], {"x": 1}, [[]] * 2):
+        with pytest.raises((ValueError, TypeError)):
+            load(bad)
