@@ -519,3 +519,14 @@ def test_entries_come_back_from_their_json_form_or_not_at_all() -> None:
     for bad in (["Place", "a.py", 1], ["Other", 1], {"x": 1}, [[]] * 2):
         with pytest.raises((ValueError, TypeError)):
             load(bad)
+
+
+def test_a_deleted_launch_files_kept_parts_go(workspace: Path) -> None:
+    launch = workspace / "src/demo/launch/other.launch.py"
+    launch.write_text(INNER, encoding="utf-8")
+    settled(workspace)
+    results = workspace / "cache/results.json"
+    assert str(launch) in results.read_text(encoding="utf-8")
+    launch.unlink()
+    settled(workspace)
+    assert str(launch) not in results.read_text(encoding="utf-8")

@@ -636,6 +636,18 @@ class ResultCache:
         for name in gone:
             del self.summaries[name]
         stale += gone
+        # launch files' readings and parts of deleted launch files
+        for kept, prefix in ((self._reads, ""), (self._parts, "launch:")):
+            dropped = [
+                name
+                for name in kept
+                if name.startswith(prefix)
+                and name != "fixed"
+                and not os.path.isfile(name[len(prefix) :])
+            ]
+            for name in dropped:
+                del kept[name]
+            stale += dropped
         self._dirty = self._dirty or bool(stale)
 
     def save(self) -> None:
