@@ -482,3 +482,38 @@ def test_a_parameter_file_that_gives_its_nodes_nothing_is_a_warning(
         d.span.line for d in found if d.code == "RF602" and d.severity.name == "WARNING"
     ]
     assert lines == warned
+
+
+def test_a_cached_run_judges_a_passed_file_again_when_the_namespace_changes(
+    tmp_path: Path,
+) -> None:
+    """RF602's warning at an entry is kept with the parameter files' part of the
+    cache: a namespace changed in the launch file (names and files the same)
+    makes it judged again."""
+    pkg = racer(tmp_path)
+    write(
+        pkg / "config" / "fleet.yaml",
+        "/robot2/racer:\n  ros__parameters:\n    max_speed: 0.5\n",
+    )
+    launch = write(
+        pkg / "launch" / "racer.launch.py",
+        "import os\nfrom ament_index_python.packages import "
+        "get_package_share_directory\n"
+        "from launch import LaunchDescription\nfrom launch_ros.actions import Node\n"
+        "def generate_launch_description():\n"
+        "    share = get_package_share_directory('racer')\n"
+        "    return LaunchDescription([\n"
+        "        Node(package='racer', executable='racer', name='racer',\n"
+        "             namespace='robot1',\n"
+        "             parameters=[os.path.join(share, 'config', 'fleet.yaml')]),\n"
+        "    ])\n",
+    )
+    config = Config(root=tmp_path)
+
+    def warned() -> bool:
+        found = check_paths([pkg], config, use_cache=True).diagnostics
+        return any(d.code == "RF602" and d.severity.name == "WARNING" for d in found)
+
+    assert warned() and warned()
+    launch.write_text(launch.read_text().replace("'robot1'", "'robot2'"))
+    assert not warned()

@@ -203,6 +203,10 @@ def test_a_cached_run_sees_an_edited_cpp_declaration(tmp_path: Path) -> None:
     second = codes()
     assert ("RF401", "camera.yaml", 3) not in second
     assert ("RF401", "camera.yaml", 11) in second  # `frequency: 0.5` now
+    # a launch file's own part (kept apart since fix/graphcache23) sees it too
+    assert ("RF401", "camera.launch.py", 19) in first
+    assert ("RF401", "camera.launch.py", 19) not in second  # `frequency: 15` fits
+    assert ("RF401", "camera.launch.py", 33) in second  # `frequency: 1.0` does not
     cmake = workspace / "image_tools" / "CMakeLists.txt"
     built = cmake.read_text().replace("EXECUTABLE cam2image", "EXECUTABLE cam")
     cmake.write_text(built)

@@ -136,12 +136,19 @@ class ResultCache:
         self._seen_stats: dict[str, list[Any]] = {}  # this run's, saved
         self._bytes: dict[str, bytes] = {}  # the last file `sha` read, to `take`
         self._params: tuple[str, list[Any]] | None = None
+        # the parameter check by part (`param_part`): "fixed" -> [key, findings,
+        # RF602], a launch file -> [key, its entries' findings]
+        self._parts: dict[str, Any] = {}
+        # a launch file -> [key, its trace, its reading] (`launch_read`)
+        self._reads: dict[str, Any] = {}
         # C++ file -> [sha256, its graph endpoints dumped, or None]: what
         # `graphcheck` read of it; this run's, saved (`put_cpp`)
         self._cpp: dict[str, Any] = {}
         self._seen_cpp: dict[str, Any] = {}
         self._catalog: dict[str, Any] | None = None
         self._discovery: dict[str, Any] | None = None  # key, trace, what was found
+        # the launch files' reading and the graph's findings (`stage`)
+        self._stage: dict[str, Any] | None = None
         # the module index's answers with what they depend on (`ModuleIndex.keep`)
         self._resolution: dict[str, Any] | None = None
         self._dirty = False
@@ -196,6 +203,9 @@ class ResultCache:
                 plain or _names_only(found_resolution)
             ):
                 self._resolution = found_resolution
+            found_stage = data.get("stage")
+            if isinstance(found_stage, dict) and (plain or _names_only(found_stage)):
+                self._stage = found_stage
             found_catalog = data.get("catalog")
             if isinstance(found_catalog, dict):
                 self._catalog = found_catalog
@@ -208,6 +218,12 @@ class ResultCache:
                 and all(_valid_diagnostic(d) for d in params[1])
             ):
                 self._params = (params[0], params[1])
+            reads = data.get("reads")
+            if isinstance(reads, dict) and (plain or _names_only(reads)):
+                self._reads = reads  # each entry checked when read (`launch_read`)
+            parts = data.get("parts")
+            if isinstance(parts, dict):
+                self._parts = parts  # each entry checked when read (`param_part`)
             cpp = data.get("cpp")
             if isinstance(cpp, dict):
                 self._cpp = cpp  # each entry checked when read (`cpp_graph`)
@@ -348,6 +364,47 @@ class ResultCache:
             self._discovery = raw
             self._dirty = True
 
+    # -- the launch files and the graph ----------------------------------------
+    def stage(self, key: str) -> tuple[list[str], list[Diagnostic]] | None:
+        """What `put_stage` kept under `key` (`run._stage_key`: the launch files,
+        the code files, the graph endpoints), when every file the launch files'
+        reading and the graph's check read, and every path they probed, is as it
+        was (`Trace.holds`): the files the launch check depends on
+        (`LaunchRun.touched`) and the graph's findings."""
+        raw = self._stage
+        if raw is None or raw.get("key") != key:
+            return None
+        trace = Trace.from_json(raw.get("trace"))
+        touched, graph = raw.get("touched"), raw.get("graph")
+        if not (
+            trace is not None
+            and isinstance(touched, list)
+            and all(_name(t) for t in touched)
+            and isinstance(graph, list)
+            and all(_valid_diagnostic(d) for d in graph)
+            and trace.holds()
+        ):
+            return None
+        return touched, [_load(d) for d in graph]
+
+    def put_stage(
+        self, key: str, trace: Trace, touched: list[str], graph: list[Diagnostic]
+    ) -> None:
+        """Keep a stage with its trace (not one the trace cannot vouch for)."""
+        raw = (
+            None
+            if trace.spoiled
+            else {
+                "key": key,
+                "trace": trace.to_json(),
+                "touched": touched,
+                "graph": [_dump(d) for d in graph],
+            }
+        )
+        if raw != self._stage:
+            self._stage = raw
+            self._dirty = True
+
     # -- the module index ------------------------------------------------------
     def resolution(self) -> dict[str, Any] | None:
         """What an earlier run's `ModuleIndex.keep` wrote (its `restore` checks it)."""
@@ -366,6 +423,69 @@ class ResultCache:
 
     def put_params(self, key: str, diagnostics: list[Diagnostic]) -> None:
         self._params = (key, [_dump(d) for d in diagnostics])
+        self._dirty = True
+
+    def launch_read(self, path: str, context: str) -> tuple[Trace, Any] | None:
+        """A launch file's reading kept by `put_launch_read` under `context`:
+        its trace, and [problem or None, [[entry dumped, files]...], files read]
+        (the entries for `ros.launch.model.load`, which checks them); None when
+        not exactly that."""
+        entry = self._reads.get(path)
+        if not (isinstance(entry, list) and len(entry) == 3 and entry[0] == context):
+            return None
+        trace = Trace.from_json(entry[1])
+        raw = entry[2]
+        if not (trace is not None and isinstance(raw, list) and len(raw) == 3):
+            return None
+        problem, started, reading = raw
+        if not (
+            (
+                problem is None
+                or (
+                    isinstance(problem, list)
+                    and len(problem) == 3
+                    and _name(problem[0])
+                    and _number(problem[1], 1)
+                    and _number(problem[2], 0)
+                )
+            )
+            and isinstance(started, list)
+            and all(
+                isinstance(s, list)
+                and len(s) == 2
+                and isinstance(s[1], list)
+                and all(_name(f) for f in s[1])
+                for s in started
+            )
+            and isinstance(reading, list)
+            and all(_name(f) for f in reading)
+        ):
+            return None
+        found = tuple(problem) if problem is not None else None
+        return trace, [found, started, reading]
+
+    def put_launch_read(self, path: str, context: str, trace: Trace, raw: Any) -> None:
+        self._reads[path] = [context, trace.to_json(), raw]
+        self._dirty = True
+
+    def param_part(self, name: str, key: str) -> list[list[Diagnostic]] | None:
+        """A part of the parameter check (`run._ParamParts`) kept under `key`:
+        its lists of findings."""
+        entry = self._parts.get(name)
+        if not (
+            isinstance(entry, list)
+            and len(entry) >= 2
+            and entry[0] == key
+            and all(
+                isinstance(found, list) and all(_valid_diagnostic(d) for d in found)
+                for found in entry[1:]
+            )
+        ):
+            return None
+        return [[_load(d) for d in found] for found in entry[1:]]
+
+    def put_param_part(self, name: str, key: str, *found: list[Diagnostic]) -> None:
+        self._parts[name] = [key, *([_dump(d) for d in one] for one in found)]
         self._dirty = True
 
     # -- C++ files' graph endpoints ---------------------------------------------
@@ -516,6 +636,18 @@ class ResultCache:
         for name in gone:
             del self.summaries[name]
         stale += gone
+        # launch files' readings and parts of deleted launch files
+        for kept, prefix in ((self._reads, ""), (self._parts, "launch:")):
+            dropped = [
+                name
+                for name in kept
+                if name.startswith(prefix)
+                and name != "fixed"
+                and not os.path.isfile(name[len(prefix) :])
+            ]
+            for name in dropped:
+                del kept[name]
+            stale += dropped
         self._dirty = self._dirty or bool(stale)
 
     def save(self) -> None:
@@ -531,8 +663,11 @@ class ResultCache:
             },
             "stats": {**self._stats, **self._seen_stats},
             "params": list(self._params) if self._params is not None else None,
+            "parts": self._parts,
+            "reads": self._reads,
             "catalog": self._catalog,
             "discovery": self._discovery,
+            "stage": self._stage,
             "resolution": self._resolution,
             "cpp": self._seen_cpp,
         }

@@ -129,6 +129,11 @@ class Config:
         relative = self._relative(path)
         return any(matches(pattern, relative, folder) for pattern in self.exclude)
 
+    def silences(self, path: str | Path, *codes: str) -> bool:
+        """Whether `per-file-ignores` silences one of `codes` (a rule's code, its
+        name) in the file."""
+        return not self.ignored_codes(Path(path)).isdisjoint(codes)
+
     def ignored_codes(self, path: Path) -> frozenset[str]:
         """The codes `per-file-ignores` silences in the file, by its nearest
         configuration (and those it extends)."""

@@ -35,7 +35,15 @@ from typing import Any
 from robotfix import messages
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
-from robotfix.fs import RACY_NS, UnreadableError, read_head, read_text, stamp, within
+from robotfix.fs import (
+    RACY_NS,
+    Noted,
+    UnreadableError,
+    read_head,
+    read_text,
+    stamp,
+    within,
+)
 from robotfix.ros.executables import CPP_SOURCE_SUFFIXES
 from robotfix.ros.install import IGNORE_MARKERS, InstallSpace
 from robotfix.ros.launch.names import YAML_SUFFIXES, is_launch_file
@@ -598,7 +606,7 @@ def _reason(err: OSError) -> str:
 # -- what a discovery looked at, for a cached run ----------------------------
 
 
-class Trace:
+class Trace(Noted):
     """What a discovery looked at on disk: the stamp (os.stat, taken before the
     read) of each folder it listed and file it read, and the answer of every other
     probe (isdir, isfile, islink, realpath). A discovery is a function of
@@ -613,8 +621,7 @@ class Trace:
     inode, device, size and mode."""
 
     def __init__(self) -> None:
-        self.stamps: dict[str, list[int] | None] = {}
-        self.probes: dict[tuple[str, str], Any] = {}
+        super().__init__()
         self.spoiled = False
         self._now = time.time_ns()
 
@@ -625,6 +632,48 @@ class Trace:
             if found is not None and self._now - max(found[0], found[1]) < RACY_NS:
                 self.spoiled = True
             self.stamps[name] = found
+
+    def take(self, other: Noted) -> None:
+        """What another computation noted (`fs.remembered`), as if noted here."""
+        self.spoiled = self.spoiled or getattr(other, "spoiled", False)
+        for name, found in other.stamps.items():
+            if name not in self.stamps:
+                racy = found is not None and self._now - max(found[:2]) < RACY_NS
+                self.spoiled = self.spoiled or racy
+                self.stamps[name] = found
+        self.probes.update(other.probes)
+
+    def folded(self, least: int = 3) -> Trace:
+        """This trace with fewer probes, to keep: `isfile` of a file it stamped
+        (the stamp says it) goes, and the `isfile` answers False that share the
+        deepest existing folder above them, `least` of them or more (a node's
+        imports looked for in its package), become that folder's stamp (a file
+        made below it adds an entry to that folder, which changes its stamp);
+        a lone one stays a probe (`package.xml` looked for up to `/`: a folder
+        such as `/tmp` or a home changes all the time)."""
+        out = Trace()
+        out._now, out.spoiled = self._now, self.spoiled
+        out.stamps = dict(self.stamps)
+        folders: dict[str, bool] = {}  # isdir, asked once
+        missing: dict[str, list[str]] = {}
+        for (kind, arg), answer in self.probes.items():
+            if kind != "isfile" or (answer and arg not in self.stamps):
+                out.probes[(kind, arg)] = answer
+            elif not answer:
+                folder = os.path.dirname(arg)
+                while folder:
+                    if folder not in folders:
+                        folders[folder] = os.path.isdir(folder)
+                    if folders[folder]:
+                        break
+                    folder = os.path.dirname(folder)
+                missing.setdefault(folder or ".", []).append(arg)
+        for folder, paths in missing.items():
+            if len(paths) >= least:
+                out.stamp(folder)
+            else:
+                out.probes.update({("isfile", p): False for p in paths})
+        return out
 
     def holds(self) -> bool:
         """Whether every stamp and probe answers as it did."""

@@ -18,8 +18,9 @@ import errno
 import os
 import stat
 import tempfile
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
 from pathlib import Path
+from typing import Any
 
 try:
     import fcntl
@@ -59,7 +60,10 @@ def read_regular(
 
     O_NONBLOCK makes opening a FIFO return at once, and fstat on the open descriptor
     (not the path) decides, so a file swapped after a check is still judged by what
-    was opened. With follow=False a symlink at `path` itself is refused."""
+    was opened. With follow=False a symlink at `path` itself is refused. While
+    `noting`, the file's stamp is noted first."""
+    for trace in _NOTING:
+        trace.stamp(path)
     try:
         fd = os.open(path, _FLAGS | (0 if follow else _NOFOLLOW))
     except OSError as err:
@@ -85,6 +89,73 @@ def read_regular(
         raise UnreadableError(_reason(err)) from None
     finally:
         os.close(fd)
+
+
+# the traces noting what is read and probed (`noting`), innermost last
+_NOTING: list[Any] = []
+
+
+@contextlib.contextmanager
+def noting(trace: Any) -> Iterator[Any]:
+    """While inside, every file `read_regular` reads is stamped in `trace` and
+    every `probe` answer kept there (a `Noted`, a `discovery.Trace`): a cached
+    stage that reads the disk only through these holds while the trace does."""
+    _NOTING.append(trace)
+    try:
+        yield trace
+    finally:
+        _NOTING.remove(trace)
+
+
+class Noted:
+    """What a computation read and probed (`noting`), to be handed to the traces
+    noting when its result is used again (`remembered`)."""
+
+    def __init__(self) -> None:
+        self.stamps: dict[str, list[int] | None] = {}
+        self.probes: dict[tuple[str, str], Any] = {}
+
+    def stamp(self, path: str | os.PathLike[str]) -> None:
+        name = os.fspath(path)
+        if name not in self.stamps:
+            self.stamps[name] = stamp(name)
+
+    def take(self, other: Noted) -> None:
+        for name, found in other.stamps.items():
+            self.stamps.setdefault(name, found)
+        self.probes.update(other.probes)
+
+
+def replay(noted: Noted) -> None:
+    """Hand what a computation noted to the traces noting now."""
+    for trace in _NOTING:
+        trace.take(noted)
+
+
+def remembered(
+    memo: dict[Any, tuple[Any, Noted]], key: Any, make: Callable[[], Any]
+) -> Any:
+    """`make()`, kept in `memo` under `key`: used again, what making it read and
+    probed is handed to the traces noting then, as if it were made again."""
+    if key in memo:
+        value, noted = memo[key]
+        replay(noted)
+        return value
+    noted = Noted()
+    with noting(noted):
+        value = make()
+    memo[key] = (value, noted)
+    return value
+
+
+def probe(kind: str, path: str | os.PathLike[str]) -> Any:
+    """`os.path.isfile` ("isfile") or `os.path.realpath` ("realpath") of `path`,
+    noted in the traces `noting` holds."""
+    name = os.fspath(path)
+    answer = os.path.isfile(name) if kind == "isfile" else os.path.realpath(name)
+    for trace in _NOTING:
+        trace.probes[(kind, name)] = answer
+    return answer
 
 
 def read_head(path: str | os.PathLike[str], size: int) -> bytes:

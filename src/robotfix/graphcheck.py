@@ -31,11 +31,12 @@ import re
 from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from robotfix import messages
 from robotfix.diagnostics import Diagnostic, Note
-from robotfix.fs import UnreadableError, read_regular
+from robotfix.fs import UnreadableError, probe, read_regular
+from robotfix.ros.executables import cpp_executable_files
 from robotfix.ros.graph import qos as Q
 from robotfix.ros.graph.build import End, Graph, Started, build
 from robotfix.ros.graph.cpp import MAX_CPP_BYTES, read_cpp
@@ -121,7 +122,7 @@ def started_entries(
         return []
     by_real: dict[str, str] = {}
     for path in sorted(code):  # sorted: the output of `-j N` is that of `-j 1`
-        by_real.setdefault(os.path.realpath(path), path)
+        by_real.setdefault(probe("realpath", path), path)
     packages = dict(launches.packages)
     folders: set[str] = set()
     names: dict[Path, str | None] = {}  # each package's package.xml read once
@@ -137,6 +138,8 @@ def started_entries(
         if found is not None and name is not None:
             packages.setdefault(name, found)
     out: list[Started] = []
+    targets: dict[Path, Any] = {}  # each package's CMake targets, read once
+    built: dict[tuple[Path, str], list[Path]] = {}  # many entries start one
     for started in launches.started:
         entry = started.entry
         files = [by_real[f] for f in sorted(started.files) if f in by_real]
@@ -144,11 +147,14 @@ def started_entries(
         plugin = None
         if package is not None and entry.plugin:
             plugin = entry.plugin.split("::")[-1]
-            inside = os.path.realpath(package) + os.sep
+            inside = probe("realpath", package) + os.sep
             files += [p for r, p in sorted(by_real.items()) if r.startswith(inside)]
         elif package is not None and entry.executable and not files:
-            for source in launches.cpp_sources(package, entry.executable):
-                real = os.path.realpath(source)
+            one = (package, entry.executable)
+            if one not in built:
+                built[one] = cpp_executable_files(package, entry.executable, targets)
+            for source in built[one]:
+                real = probe("realpath", source)
                 if real in by_real:
                     files.append(by_real[real])
         out.append(Started(entry, files, plugin))
@@ -501,9 +507,7 @@ def _silenced(
 ) -> bool:
     """`per-file-ignores`, or `# robotfix: ignore[...]` (in C++ `// robotfix:
     ignore[...]`) on the endpoint's line."""
-    if config is not None and (
-        {diag.code, diag.rule.name} & config.ignored_codes(Path(diag.path))
-    ):
+    if config is not None and config.silences(diag.path, diag.code, diag.rule.name):
         return True
     if diag.path not in texts:
         try:

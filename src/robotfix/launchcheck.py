@@ -25,27 +25,36 @@ A fault of ours on one launch file (reading it, or checking its entries) is a
 from __future__ import annotations
 
 import ast
+import contextlib
+import hashlib
 import os
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any, Protocol
 
 from robotfix import messages
 from robotfix.astwalk import children
 from robotfix.diagnostics import Diagnostic, Note, Span
 from robotfix.faults import Fault, guard
-from robotfix.fs import UnreadableError, read_text
+from robotfix.fs import (
+    Noted,
+    UnreadableError,
+    noting,
+    probe,
+    read_text,
+    remembered,
+    replay,
+)
 from robotfix.ros import paramfile as P
 from robotfix.ros.executables import (
     MAX_BUILD_BYTES,
-    Targets,
-    cpp_executable_files,
     executable_file,
     module_file,
 )
 from robotfix.ros.launch.model import FileParam, InlineParam, NodeEntry
 from robotfix.ros.launch.reader import Reader
+from robotfix.ros.launch.tree import MAX_LAUNCH_BYTES
 from robotfix.ros.package import package_folder, package_name
 from robotfix.ros.yamlfile import WALK_BUDGET
 
@@ -69,6 +78,26 @@ class _Started:
     files: set[str] = field(default_factory=set)  # real paths of its code
 
 
+@dataclass(frozen=True)
+class Read:
+    """What reading one launch file gave: why it was not read, or its entries
+    with the real paths of their code; the launch files it parsed (itself and
+    what it includes)."""
+
+    problem: tuple[str, int, int] | None
+    started: list[tuple[NodeEntry, list[str]]]
+    reading: list[str]
+
+
+class Kept(Protocol):
+    """Launch files' readings kept by an earlier run (`run._KeptReads`), each with
+    what it read and probed: `get` gives one only while that holds."""
+
+    def get(self, path: str, context: str) -> tuple[Noted, Read] | None: ...
+
+    def put(self, path: str, context: str, noted: Noted, read: Read) -> None: ...
+
+
 class LaunchRun:
     """The launch files of a run, read, and what they add to its parameter check
     (`paramcheck.Launches`)."""
@@ -80,45 +109,75 @@ class LaunchRun:
         faults: list[Fault] | None = None,
         parses: dict[str, tuple[str, ast.Module]] | None = None,
         imports: Imports | None = None,
+        kept: Kept | None = None,
     ) -> None:
         """`parses`: Python launch files as this process's checks parsed them
         (text, tree), and `imports`, the import statements of the files they
-        parsed: not parsed again (`Reader`, `_imported`)."""
+        parsed: not parsed again (`Reader`, `_imported`). `kept`: each launch
+        file's reading as an earlier run made it, while what it read holds
+        (`Kept`): not read again."""
         self.imports = imports
+        self.kept = kept
+        self._fresh: list[tuple[str, Noted, Read]] = []  # for `kept`, once all read
+        self._kept_texts: list[str] = []  # files read by kept readings
         self.packages = _packages([*launch_files, *code_files])
+        # what a launch file's reading depends on besides what it reads: where
+        # each package is, the current folder (a relative path is read from it)
+        where = sorted((k, str(v)) for k, v in self.packages.items())
+        text = repr([os.getcwd(), where]).encode("utf-8", "surrogateescape")
+        self._context = hashlib.sha256(text).hexdigest()
         self.notices: list[Diagnostic] = []
         self.started: list[_Started] = []
         self.renamed: dict[str, set[str]] = {}
         self.files: list[Path] = []
         self.names: set[str] = set()  # every node name a launch entry gives
         self.reader = Reader(self.packages.get, parses or {})
-        self._build: dict[tuple[str, Path], object] = {}  # packages' build files
-        self._codes: dict[tuple[Path, str], set[str]] = {}  # by executable
-        self._targets: dict[Path, Targets] = {}  # packages' CMake targets
-        self._sources: dict[tuple[Path, str], list[Path]] = {}  # C++ executables
+        self._build: dict[tuple[str, Path], Any] = {}  # packages' build files
+        self._codes: dict[tuple[Path, str], Any] = {}  # by executable
         for path in launch_files:
             with guard(path, self.notices, faults):
                 self._read(path)
         self.entries = len(self.started)
+        if kept is not None and not self.reader.order_dependent:
+            for name, noted, read in self._fresh:
+                kept.put(name, self._context, noted, read)
 
     def _read(self, path: Path) -> None:
         """One launch file's entries, kept only once all are read (a fault on
         the file leaves nothing of it)."""
-        launch = self.reader.read(path)
-        if launch.problem is not None:
-            text, line, col = launch.problem
-            self.notices.append(
-                messages.launch_file_not_read(str(path), line, col, text)
-            )
+        name = str(path)
+        known = self.kept.get(name, self._context) if self.kept is not None else None
+        if known is not None:
+            noted, read = known
+            replay(noted)
+            self.reader.touched.update(read.reading)
+            self._kept_texts += read.reading
+        else:
+            noted = Noted()
+            self.reader.reading = set()
+            with noting(noted):
+                launch = self.reader.read(path)
+                started = [
+                    (entry, sorted(self._code(entry)))
+                    for entry in (launch.entries if launch.launch else [])
+                ]
+            read = Read(launch.problem, started, sorted(self.reader.reading))
+            self._fresh.append((name, noted, read))
+        if read.problem is not None:
+            text, line, col = read.problem
+            self.notices.append(messages.launch_file_not_read(name, line, col, text))
             return
-        started = [
-            _Started(entry, self._code(entry))
-            for entry in (launch.entries if launch.launch else [])
-        ]
-        for one in started:
-            self._add(one)
+        for entry, files in read.started:
+            self._add(_Started(entry, set(files)))
 
     def texts(self) -> dict[str, str]:
+        """The texts of the launch files read (for suppressions), those a kept
+        reading read too."""
+        for name in self._kept_texts:
+            if name not in self.reader.texts:
+                with contextlib.suppress(UnreadableError):
+                    self.reader.texts[name] = read_text(name, MAX_LAUNCH_BYTES)
+        self._kept_texts = []
         return self.reader.texts
 
     def touched(self) -> set[str]:
@@ -150,30 +209,71 @@ class LaunchRun:
         folder = self.packages.get(entry.package or "")
         if folder is None or not entry.executable:
             return set()
-        key = (folder, entry.executable)
-        if key not in self._codes:  # many entries start one executable
-            main = executable_file(folder, entry.executable, self._build)
-            self._codes[key] = (
-                set()
-                if main is None
-                else {
-                    os.path.realpath(p)
-                    for p in [main, *_imported(main, folder, self.imports)]
-                }
-            )
-        return set(self._codes[key])
+        executable = entry.executable
 
-    def cpp_sources(self, package: Path, executable: str) -> list[Path]:
-        """The C++ files a package's executable is built from
-        (`cpp_executable_files`), read once a run."""
-        key = (package, executable)
-        if key not in self._sources:
-            self._sources[key] = cpp_executable_files(
-                package, executable, self._targets
-            )
-        return self._sources[key]
+        def code() -> set[str]:
+            main = executable_file(folder, executable, self._build)
+            if main is None:
+                return set()
+            imported = _imported(main, folder, self.imports)
+            return {probe("realpath", p) for p in [main, *imported]}
+
+        # many entries start one executable
+        return set(remembered(self._codes, (folder, executable), code))
 
     # -- the checks (called by paramcheck with its table) -------------------------
+    def by_file(self) -> dict[str, list[_Started]]:
+        """The entries by the file they are written in (an included file's
+        entries are its own), in the order they were read."""
+        found: dict[str, list[_Started]] = {}
+        for started in self.started:
+            found.setdefault(started.entry.place.path, []).append(started)
+        return found
+
+    def check_file(
+        self,
+        path: str,
+        entries: list[_Started],
+        table: Table,
+        loaded: dict[str, P.ParamFile],
+        faults: list[Fault] | None = None,
+    ) -> list[Diagnostic]:
+        """One file's entries against their nodes' code, under a `guard` of its
+        own; the table needs only the summaries of the code they start."""
+        out: list[Diagnostic] = []
+        by_real = {table.real[s.path]: s for s in table.summaries}
+        with guard(path, out, faults):
+            for started in entries:
+                cpp = table.cpp.owners_of(started.entry)  # its C++ node
+                if cpp and started.entry.ros == 2:
+                    out += _ros2_entry(started.entry, cpp, table, loaded)
+                code = [by_real[f] for f in sorted(started.files) if f in by_real]
+                if not code:
+                    continue
+                if started.entry.ros == 2:
+                    out += _ros2_entry(started.entry, _owners_of(code), table, loaded)
+                else:
+                    out += _ros1_entry(started.entry, code, table)
+        return out
+
+    def sections(
+        self,
+        table: Table,
+        loaded: dict[str, P.ParamFile],
+        faults: list[Fault] | None = None,
+    ) -> list[Diagnostic]:
+        """RF602 for each parameter file, with the node names of the code and of
+        the launch files."""
+        from robotfix.paramcheck import unmatched_sections
+
+        out: list[Diagnostic] = []
+        known = self._known(table)
+        for path, parameters in sorted(loaded.items()):
+            with guard(path, out, faults):
+                out += unmatched_sections(path, parameters, known)
+                out += self._passed_for_nothing(path, parameters)
+        return out
+
     def check(
         self,
         table: Table,
@@ -184,33 +284,9 @@ class LaunchRun:
         `guard` of its own (an entry's file: an included file's entries are its
         own), then RF602 for each parameter file."""
         out = list(self.notices)
-        by_real = {table.real[s.path]: s for s in table.summaries}
-        by_file: dict[str, list[_Started]] = {}
-        for started in self.started:
-            by_file.setdefault(started.entry.place.path, []).append(started)
-        known = self._known(table)
-        for path, entries in by_file.items():
-            with guard(path, out, faults):
-                for started in entries:
-                    cpp = table.cpp.owners_of(started.entry)  # its C++ node
-                    if cpp and started.entry.ros == 2:
-                        out += _ros2_entry(started.entry, cpp, table, loaded)
-                    code = [by_real[f] for f in sorted(started.files) if f in by_real]
-                    if not code:
-                        continue
-                    if started.entry.ros == 2:
-                        owners = _owners_of(code)
-                        out += _ros2_entry(started.entry, owners, table, loaded)
-                    else:
-                        out += _ros1_entry(started.entry, code, table)
-        from robotfix.paramcheck import unmatched_sections
-
-        for path, parameters in sorted(loaded.items()):
-            with guard(path, out, faults):
-                out += unmatched_sections(path, parameters, known)
-                out += self._passed_for_nothing(path, parameters)
-        unique = {(d.path, d.span, d.code, d.message): d for d in out}
-        return list(unique.values())
+        for path, entries in self.by_file().items():
+            out += self.check_file(path, entries, table, loaded, faults)
+        return unique([*out, *self.sections(table, loaded, faults)])
 
     def _passed_for_nothing(
         self, path: str, parameters: P.ParamFile
@@ -263,6 +339,12 @@ class LaunchRun:
         return set(self.names) | table.node_names()
 
 
+def unique(found: list[Diagnostic]) -> list[Diagnostic]:
+    """One diagnostic per place, rule and message (two launch files naming one
+    parameter file for one node find its typos twice)."""
+    return list({(d.path, d.span, d.code, d.message): d for d in found}.values())
+
+
 def _packages(files: list[Path]) -> dict[str, Path]:
     """Package name -> folder, for the packages the run's files lie in."""
     folders: dict[Path, Path | None] = {}
@@ -283,7 +365,7 @@ def _package_folder(folder: Path) -> Path | None:
     """The package folder around `folder`, spelled as `folder` is (a relative run
     reports relative paths)."""
     for candidate in (folder, *folder.parents):
-        if os.path.isfile(candidate / "package.xml"):
+        if probe("isfile", candidate / "package.xml"):
             return candidate
     if not folder.is_absolute():
         return package_folder(folder / "x")

@@ -29,7 +29,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
-from typing import TYPE_CHECKING, Protocol
+from typing import TYPE_CHECKING, Any, Protocol
 
 from robotfix import messages
 from robotfix.analysis.parameters import summarize
@@ -125,6 +125,7 @@ def check_parameter_files(
     faults: list[Fault] | None = None,
     launches: Launches | None = None,
     cpp_nodes: CppParams | None = None,
+    parts: Parts | None = None,
 ) -> list[Diagnostic]:
     """Diagnostics for the parameter files and generate_parameter_library
     definitions of a run; `python_files` are those whose declarations count. A
@@ -140,15 +141,39 @@ def check_parameter_files(
     give nodes, the parameter files they name, and their own checks, made with
     the same table (a fault on one launch file is a fault of that file).
     `cpp_nodes`: the run's C++ nodes (`cppparams`): their names (a section
-    naming one is no RF602) and declarations, checked as a Python node's."""
+    naming one is no RF602) and declarations, checked as a Python node's.
+    `parts`: what an earlier run found, by part (the parameter files' findings,
+    RF602, each launch file's entries'): a part kept is not checked again, and
+    then only the code the other launch files' entries start is summarised."""
     if launches is not None:
         files = [*files, *(f for f in launches.files if f not in files)]
+    by_file = launches.by_file() if launches is not None else {}
+    fixed = parts.fixed() if parts is not None else None
+    kept: dict[
+        str, list[Diagnostic]
+    ] = {}  # a launch file -> its entries' findings, as an earlier run found them
+    if parts is not None:
+        for name, entries in by_file.items():
+            part = parts.launch_file(name, entries)
+            if part is not None:
+                kept[name] = part
+    todo = [name for name in by_file if name not in kept]
+    loading = [*definition_files, *files]
+    if fixed is not None:  # only the files the entries still to check name
+        named_here = {
+            parameter.path
+            for name in todo
+            for started in by_file[name]
+            for parameter in started.entry.parameters
+            if getattr(parameter, "path", None) is not None
+        }
+        loading = [*definition_files, *(f for f in files if str(f) in named_here)]
     loud = {str(p) for p in [*named, *definition_files]}
     texts: dict[str, str] = {}
     out: list[Diagnostic] = []
     definitions: dict[str, list[tuple[P.Definition, str]]] = {}
     read: dict[str, P.ParamFile] = {}
-    for path in [*definition_files, *files]:
+    for path in loading:
         key = str(path)
         if key in read:
             continue
@@ -168,29 +193,57 @@ def check_parameter_files(
     if launches is not None and launches.entries:
         layouts |= set(MENTIONS)
     words = tuple(w for layout in sorted(layouts) for w in MENTIONS.get(layout, ()))
+    if fixed is not None:  # only the code of the entries still to check
+        started = {f for name in todo for s in by_file[name] for f in s.files}
+        python_files = [p for p in python_files if os.path.realpath(p) in started]
     found = (
         _summaries(python_files, words, known or {}, project, faults, config)
-        if words
+        if words and (fixed is None or todo)
         else []
     )
     if cpp_nodes is not None:
         cpp_nodes.read(faults)  # (a fault of ours on one C++ file is that file's)
     table = Table(found, definitions, launches.renamed if launches else None, cpp_nodes)
-    for path in files:
-        loaded = read.get(str(path))
-        if loaded is None or loaded.layout == "definitions":
-            continue
-        with guard(path, out, faults):
-            out.extend(_check_file(path, loaded, table))
+    sections: list[Diagnostic] = []
+    if fixed is None:
+        for path in files:
+            loaded = read.get(str(path))
+            if loaded is None or loaded.layout == "definitions":
+                continue
+            with guard(path, out, faults):
+                out.extend(_check_file(path, loaded, table))
+        if launches is not None:
+            sections = launches.sections(table, read, faults)
+        else:  # RF602 with the code's node names alone (launchcheck adds launch's)
+            names = table.node_names()
+            for key, loaded in sorted(read.items()):
+                with guard(key, out, faults):
+                    out += unmatched_sections(key, loaded, names)
     if launches is not None:
-        out.extend(launches.check(table, read, faults))
         texts.update(launches.texts())
-    else:  # RF602 with the code's node names alone (launchcheck adds launch's)
-        names = table.node_names()
-        for key, loaded in sorted(read.items()):
-            with guard(key, out, faults):
-                out += unmatched_sections(key, loaded, names)
-    return [d for d in out if not _silenced(d, texts.get(d.path, ""), config)]
+
+    def heard(found: list[Diagnostic]) -> list[Diagnostic]:
+        return [d for d in found if not _silenced(d, texts.get(d.path, ""), config)]
+
+    checked = {name: heard(kept.get(name) or []) for name in by_file}
+    for name in todo:
+        checked[name] = heard(
+            launches.check_file(name, by_file[name], table, read, faults)
+            if launches is not None
+            else []
+        )
+    if fixed is None:
+        fixed = (heard(out), heard(sections))
+        if parts is not None and not faults:
+            parts.keep(fixed, checked)
+    elif parts is not None and not faults:
+        parts.keep(None, {name: checked[name] for name in todo})
+    if launches is None:
+        return fixed[0]
+    from robotfix.launchcheck import unique
+
+    found_here = [*launches.notices, *(d for n in by_file for d in checked[n])]
+    return [*fixed[0], *heard(unique([*found_here, *fixed[1]]))]
 
 
 def unmatched_sections(
@@ -345,21 +398,54 @@ class Launches(Protocol):
     renamed: dict[str, set[str]]  # a node name -> the Python files of its code
     files: list[Path]  # parameter files the launch entries name
     entries: int  # launch entries read
+    notices: list[Diagnostic]  # launch files not read (RF004)
 
-    def check(
+    def by_file(self) -> dict[str, list[Any]]:
+        """The entries by the launch file they are written in."""
+        ...
+
+    def check_file(
+        self,
+        path: str,
+        entries: list[Any],
+        table: Table,
+        read: dict[str, P.ParamFile],
+        faults: list[Fault] | None = None,
+    ) -> list[Diagnostic]:
+        """One launch file's entries against their code (`read`: the parameter
+        files loaded); a fault of ours goes to `faults` (`guard`)."""
+        ...
+
+    def sections(
         self,
         table: Table,
         read: dict[str, P.ParamFile],
         faults: list[Fault] | None = None,
     ) -> list[Diagnostic]:
-        """The launch files' own findings (`read`: the parameter files loaded); a
-        fault of ours on one file goes to `faults` (`guard`), the others are
-        checked."""
+        """RF602 with the names of the code's and the launch files' nodes."""
         ...
 
     def texts(self) -> dict[str, str]:
         """The launch files' texts (a `# robotfix: ignore` on a line)."""
         ...
+
+
+class Parts(Protocol):
+    """What an earlier run's check found, by part (`run._ParamParts`, each part
+    under a key of what it depends on); `keep` hands over this run's."""
+
+    def fixed(self) -> tuple[list[Diagnostic], list[Diagnostic]] | None:
+        """The parameter files' findings (with RF602 when no launch file is
+        read) and RF602 with launch files."""
+        ...
+
+    def launch_file(self, path: str, entries: list[Any]) -> list[Diagnostic] | None: ...
+
+    def keep(
+        self,
+        fixed: tuple[list[Diagnostic], list[Diagnostic]] | None,
+        launch: dict[str, list[Diagnostic]],
+    ) -> None: ...
 
 
 class Table:

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import gc
 import hashlib
+import json
 import os
 import signal
 import sys
@@ -30,7 +31,7 @@ from robotfix.cache import ResultCache, discovery_key, run_key
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
 from robotfix.discovery import Discovery, Trace, discover, install_space
-from robotfix.fs import RACY_NS, UnreadableError, read_regular, stamp
+from robotfix.fs import RACY_NS, Noted, UnreadableError, noting, read_regular, stamp
 from robotfix.ros.api_model import ENDPOINT_WORDS
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.ros.install import InstallSpace
@@ -44,7 +45,7 @@ if TYPE_CHECKING:  # the analysis is imported only when a file is checked
     from robotfix.api import Contract
     from robotfix.cppparams import CppParams
     from robotfix.faults import Fault as ParamFault
-    from robotfix.launchcheck import Imports, LaunchRun
+    from robotfix.launchcheck import Imports, LaunchRun, Read
     from robotfix.paramcheck import Known as ParamKnown
     from robotfix.project.summary import Known, Project
     from robotfix.ros.graph.model import FileGraph
@@ -314,9 +315,12 @@ def _check_paths(
     if group is not None:  # its files' graph endpoints, for the run's graph
         group.graphs.update(graphs)
     if group is None:
-        launches = _launches(found, everything)
-        cpp = _cpp_graphs(found, cache, paths[0] if paths else config.root, result)
-        cpp_nodes = _cpp_params(cpp, launches, paths[0] if paths else config.root)
+        where = paths[0] if paths else config.root
+        graphs.update(grouped_graphs)
+        workspace = any(os.path.isdir(p) for p in paths)  # it has a graph
+        stage = _Stage(found, everything, cache, where, result)
+        if cache is not None:
+            stage.look_up(_stage_key(found, everything, graphs, cache, workspace))
         result.diagnostics.extend(
             _parameter_problems(
                 found,
@@ -326,27 +330,31 @@ def _check_paths(
                 parameters,
                 project,
                 result.internal_errors,
-                launches,
-                cpp_nodes,
+                stage,
             )
         )
         result.files += len(found.parameter_files)
-        graphs.update(grouped_graphs)
-        if any(os.path.isdir(p) for p in paths):  # a workspace: its graph
+        if stage.known is not None:
+            result.diagnostics += [
+                d
+                for d in stage.known[1]
+                if not config.silences(d.path, d.code, d.rule.name)
+            ]
+        elif workspace:
             result.diagnostics.extend(
                 _graph_problems(
-                    found,
                     graphs,
-                    cpp,
-                    launches,
+                    stage,
                     config,
                     catalog,
                     project,
-                    cache,
-                    paths[0],
+                    where,
                     result.internal_errors,
                 )
             )
+        else:
+            stage.graph = []
+        stage.keep()
     for other in groups:
         _merge(result, other)
     if groups:
@@ -395,10 +403,159 @@ def _discover(
     return found
 
 
+class _Stage:
+    """The run's launch files, read once for the parameter check and the graph
+    (`read`), and with the cache, what reading them and checking the graph
+    gave an earlier run (`cache.stage`): when the launch files, the code files,
+    the graph endpoints (`_stage_key`) and every file and path the reading and
+    the graph's check looked at (a `discovery.Trace`, `fs.noting`) are as they
+    were, neither is done again: the parameter check's key takes the files the
+    launch check depends on from there (the parameter check, cached under that
+    key, reads the launch files only when its key changed), the run the graph's
+    findings."""
+
+    def __init__(
+        self,
+        found: Discovery,
+        files: list[Path],
+        cache: ResultCache | None,
+        where: Path | None = None,
+        result: Result | None = None,
+    ) -> None:
+        """`where`, `result`: where a fault reading the C++ files goes."""
+        self.found, self.files, self.cache = found, files, cache
+        self.where, self.result = where, result
+        self._cpp: dict[str, FileGraph] | None = None
+        self.cpp_faulted = False
+        self.key: str | None = None
+        self.known: tuple[list[str], list[Diagnostic]] | None = None
+        self.trace = Trace()
+        self.launches: tuple[LaunchRun, list[ParamFault]] | None = None
+        self.was_read = False
+        self.graph: list[Diagnostic] | None = None  # the findings to keep
+        self._params: CppParams | None = None
+
+    def look_up(self, key: str) -> None:
+        assert self.cache is not None
+        self.key, self.known = key, self.cache.stage(key)
+
+    def read(self) -> tuple[LaunchRun, list[ParamFault]] | None:
+        if not self.was_read:
+            self.was_read = True
+            with noting(self.trace):
+                self.launches = _launches(self.found, self.files, self.cache)
+        return self.launches
+
+    def cpp(self) -> dict[str, FileGraph]:
+        """The C++ files' graphs (`_cpp_graphs`), read when first asked: a run
+        whose parameter check and graph are kept reads none."""
+        if self._cpp is None:
+            result = self.result or Result()
+            before = len(result.internal_errors)
+            self._cpp = _cpp_graphs(
+                self.found, self.cache, self.where or Path("."), result
+            )
+            self.cpp_faulted = len(result.internal_errors) > before
+        return self._cpp
+
+    def cpp_nodes(self) -> CppParams:
+        """The C++ nodes' names and parameters (`cppparams`), with the code each
+        launch entry starts."""
+        if self._params is None:
+            self._params = _cpp_params(self.cpp(), self.read(), self.where or Path("."))
+        return self._params
+
+    def touched(self) -> list[str]:
+        if self.known is not None:
+            return self.known[0]
+        read = self.read()
+        return sorted(read[0].touched()) if read is not None else []
+
+    def keep(self) -> None:
+        """Into the cache, when this run read the launch files without a fault
+        and checked the graph without one (or has none)."""
+        if self.cache is None or self.key is None or self.known is not None:
+            return
+        read = self.read()
+        if self.graph is None or self.cpp_faulted or (read is not None and read[1]):
+            return
+        self.cache.put_stage(self.key, self.trace.folded(), self.touched(), self.graph)
+
+
+def _stage_key(
+    found: Discovery,
+    files: list[Path],
+    graphs: dict[str, list[Any]],
+    cache: ResultCache,
+    workspace: bool,
+) -> str:
+    """What the launch files' reading and the graph's findings depend on besides
+    the files and paths their trace notes: the launch and code files the run
+    found, each Python file's endpoints, each C++ file's bytes (its endpoints
+    are a function of them), the current folder. (The findings are kept before
+    `per-file-ignores`, applied to them as they are used: `Config.silences`.)"""
+    parts = {
+        "cwd": os.getcwd(),
+        "workspace": workspace,
+        "launch": [str(p) for p in found.launch_files],
+        "code": [str(p) for p in [*files, *found.summary_files]],
+        "graphs": sorted(graphs.items()),
+        "cpp": [[str(p), cache.sha(p)] for p in found.cpp_files],
+    }
+    text = json.dumps(parts, sort_keys=True, separators=(",", ":"))
+    return hashlib.sha256(text.encode("utf-8", "surrogateescape")).hexdigest()
+
+
+class _KeptReads:
+    """Each launch file's reading kept in the cache (`launchcheck.Kept`), with
+    the trace of what it read and probed (its includes' files, the packages'
+    build files, the nodes' code, the parameter files it looked for)."""
+
+    def __init__(self, cache: ResultCache) -> None:
+        self.cache = cache
+
+    def get(self, path: str, context: str) -> tuple[Noted, Read] | None:
+        from robotfix.launchcheck import Read
+        from robotfix.ros.launch.model import NodeEntry, load
+
+        raw = self.cache.launch_read(path, context)
+        if raw is None:
+            return None
+        trace, (problem, started, reading) = raw
+        entries = []
+        try:
+            for dumped, files in started:
+                entry = load(dumped)
+                if not isinstance(entry, NodeEntry):
+                    return None
+                entries.append((entry, files))
+        except (ValueError, TypeError):
+            return None
+        if not trace.holds():
+            return None
+        return trace, Read(problem, entries, reading)
+
+    def put(self, path: str, context: str, noted: Noted, read: Read) -> None:
+        from robotfix.ros.launch.model import dump
+
+        taken = Trace()
+        taken.take(noted)
+        trace = taken.folded()
+        if trace.spoiled:
+            return
+        try:
+            started = [[dump(entry), files] for entry, files in read.started]
+        except ValueError:
+            return
+        raw = [read.problem, started, read.reading]
+        self.cache.put_launch_read(path, context, trace, raw)
+
+
 def _launches(
-    found: Discovery, files: list[Path]
+    found: Discovery, files: list[Path], cache: ResultCache | None = None
 ) -> tuple[LaunchRun, list[ParamFault]] | None:
-    """The run's launch files, read once for the parameter check and the graph."""
+    """The run's launch files, read (with the cache, a file whose reading was
+    kept and what it read holds is not read again)."""
     if not found.launch_files:
         return None
     from robotfix.launchcheck import LaunchRun
@@ -410,7 +567,8 @@ def _launches(
         if source is not None and source.tree is not None
     }
     code = [*files, *found.summary_files]
-    run = LaunchRun(found.launch_files, code, faults, parses, _IMPORTS)
+    kept = _KeptReads(cache) if cache is not None else None
+    run = LaunchRun(found.launch_files, code, faults, parses, _IMPORTS, kept)
     return run, faults
 
 
@@ -448,22 +606,23 @@ def _cpp_params(
 
 
 def _graph_problems(
-    found: Discovery,
     graphs: dict[str, list[Any]],
-    cpp: dict[str, FileGraph],
-    launches: tuple[LaunchRun, list[ParamFault]] | None,
+    stage: _Stage,
     config: Config,
     catalog: MsgCatalog,
     project: Project,
-    cache: ResultCache | None,
     where: Path,
     errors: list[InternalError],
 ) -> list[Diagnostic]:
     """The findings of the run's static ROS graph (`graphcheck.py`), and what
     publishers violate of their subscribers' contracts (issue 23 §3). A fault
     of ours is an internal error (of `where`, the run's first path, or of the
-    publisher's file whose contracts were checked): the rest is reported."""
+    publisher's file whose contracts were checked): the rest is reported. The
+    graph's findings are kept in `stage` (for the cache) when no fault came and
+    no contract is checked (that analyses the publisher's file: not kept)."""
+    cpp = stage.cpp()
     if not graphs and not cpp:
+        stage.graph = []
         return []
     from robotfix.faults import Fault, guard
     from robotfix.graphcheck import check_graph, code_graphs
@@ -473,9 +632,18 @@ def _graph_problems(
     faults: list[Fault] = []
     with guard(where, out, faults):
         code = code_graphs(graphs, cpp)
-        result = check_graph(code, launches[0] if launches else None, config)
-        out += result.diagnostics()
-        for path, contracts in sorted(graph_contracts(result).items()):
+        launches = stage.read()
+        with noting(stage.trace):  # `per-file-ignores` after: not in the trace
+            result = check_graph(code, launches[0] if launches else None)
+        out += [
+            d
+            for d in result.diagnostics()
+            if not config.silences(d.path, d.code, d.rule.name)
+        ]
+        found = sorted(graph_contracts(result).items())
+        if not found and not faults:
+            stage.graph = result.diagnostics()
+        for path, contracts in found:
             with guard(path, out, faults):
                 out += _contract_problems(
                     Path(path), contracts, config, catalog, project
@@ -519,11 +687,10 @@ def _parameter_problems(
     parameters: dict[str, ParamKnown] | None = None,
     project: Project | None = None,
     errors: list[InternalError] | None = None,
-    read: tuple[LaunchRun, list[ParamFault]] | None = None,
-    cpp_nodes: CppParams | None = None,
+    stage: _Stage | None = None,
 ) -> list[Diagnostic]:
-    """Parameter files and launch files against the parameters the code declares;
-    `cpp_nodes`: the run's C++ nodes (`cppparams`: names, declarations);
+    """Parameter files and launch files against the parameters the code declares,
+    and the run's C++ nodes (`stage.cpp_nodes`, `cppparams`: names, declarations);
     cached as a whole, under a key that hashes every input (`_params_key`);
     `parameters`: what the checks found of the files they read (the others are
     read there). Launch files are read first (`launchcheck.LaunchRun`): what
@@ -533,19 +700,23 @@ def _parameter_problems(
     if not (found.parameter_files or found.parameter_definitions or found.launch_files):
         return []
     python_files = [*files, *found.summary_files]
-    if read is None:
-        read = _launches(found, files)
-    launches, faults = read if read is not None else (None, [])
-    key = (
-        _params_key(found, python_files, config, cache, launches, cpp_nodes)
-        if cache
-        else None
-    )
-    if cache is not None and key is not None and not faults:
+    stage = stage or _Stage(found, files, cache)
+    inputs = _params_inputs(found, python_files, config, cache) if cache else []
+    key = _params_key(config, cache, stage.touched(), inputs) if cache else None
+    faulty = stage.launches is not None and bool(stage.launches[1])
+    if cache is not None and key is not None and not faulty:
         known = cache.params(key)
         if known is not None:
             return known
+    read = stage.read()
+    launches, faults = read if read is not None else (None, [])
     from robotfix.paramcheck import check_parameter_files
+
+    parts = (
+        _ParamParts(found, python_files, config, cache, launches, inputs)
+        if cache is not None and not faults
+        else None
+    )
 
     out = check_parameter_files(
         found.parameter_files,
@@ -557,24 +728,136 @@ def _parameter_problems(
         project,
         faults,
         launches,
-        cpp_nodes,
+        stage.cpp_nodes(),
+        parts,
     )
     if errors is not None:
         errors += [InternalError(f.path, f.summary, f.detail) for f in faults]
-    if cache is not None and key is not None and not faults:
+    if cache is not None and key is not None and not faults and not stage.cpp_faulted:
         cache.put_params(key, out)
     return out
 
 
+class _ParamParts:
+    """The parameter check's parts kept in the cache (`paramcheck.Parts`), each
+    under a key of what it depends on, so an edit re-checks only what it
+    touches: the parameter files' findings and RF602 ("fixed": what
+    `_params_key` hashes but the launch files, with what the launch files add to
+    the table instead: the names they give nodes and the code those start, the
+    parameter files they name), and each launch file's entries' findings (its
+    bytes, the entries as read, the bytes of the code they start with what its
+    check consulted, of the parameter files they name, of the definitions)."""
+
+    def __init__(
+        self,
+        found: Discovery,
+        python_files: list[Path],
+        config: Config,
+        cache: ResultCache,
+        launches: LaunchRun | None,
+        inputs: list[str],
+    ) -> None:
+        self.found, self.python_files, self.config = found, python_files, config
+        self.cache, self.launches, self.inputs = cache, launches, inputs
+        self._keys: dict[str, str] = {}
+        self._real: dict[str, list[Path]] | None = None
+        self._files: dict[tuple[str, str], str] = {}  # many keys name one file
+
+    def _file(self, label: str, path: Path | str) -> str:
+        name = (label, str(path))
+        if name not in self._files:
+            file = Path(path)
+            ignored = ",".join(sorted(self.config.ignored_codes(file)))
+            where = package_folder(file)
+            self._files[name] = (
+                f"{label}\0{path}\0{self.cache.sha(file)}\0{ignored}\0{where}"
+            )
+        return self._files[name]
+
+    def _key(self, name: str, parts: list[str]) -> str:
+        text = "\n".join([name, *parts]).encode("utf-8", "surrogateescape")
+        self._keys[name] = hashlib.sha256(text).hexdigest()
+        return self._keys[name]
+
+    def fixed(self) -> tuple[list[Diagnostic], list[Diagnostic]] | None:
+        launches = self.launches
+        parts = list(self.inputs)
+        if launches is not None:
+            parts.append(f"entries\0{bool(launches.entries)}")
+            parts += [f"name\0{n}" for n in sorted(launches.names)]
+            for name, files in sorted(launches.renamed.items()):
+                parts.append("\0".join(["renamed", name, *sorted(files)]))
+            parts += [self._file("file", p) for p in launches.files]
+            for started in launches.started:  # RF602 at an entry: what it passes
+                entry = started.entry
+                passed = [getattr(p, "path", None) for p in entry.parameters]
+                parts.append(
+                    f"passes\0{entry.place!r}\0{entry.name}\0{entry.namespace}"
+                )
+                parts += [f"passed\0{p}" for p in passed if p is not None]
+        found = self.cache.param_part("fixed", self._key("fixed", parts))
+        return (found[0], found[1]) if found is not None and len(found) == 2 else None
+
+    def launch_file(self, path: str, entries: list[Any]) -> list[Diagnostic] | None:
+        if self._real is None:
+            self._real = {}
+            for file in self.python_files:
+                self._real.setdefault(os.path.realpath(file), []).append(file)
+        parts = [self._file("launch", path)]
+        for started in entries:
+            parts.append(f"entry\0{started.entry!r}\0{sorted(started.files)}")
+            for real in sorted(started.files):
+                for file in self._real.get(real, []):
+                    parts.append(self._file("code", file))
+                    parts += [f"reads\0{k}\0{v}" for k, v in self.cache.consulted(file)]
+            for parameter in started.entry.parameters:
+                if getattr(parameter, "path", None) is not None:
+                    parts.append(self._file("param", parameter.path))
+        parts += [
+            self._file("definitions", p) for p in self.found.parameter_definitions
+        ]
+        parts += [self._file("summary", p) for p in self.found.summary_files]
+        # the C++ nodes an entry may start, their declarations (`cppparams`)
+        parts += [p for p in self.inputs if p.startswith(("cpp\0", "cmake\0"))]
+        found = self.cache.param_part(f"launch:{path}", self._key(path, parts))
+        return found[0] if found is not None and len(found) == 1 else None
+
+    def keep(
+        self,
+        fixed: tuple[list[Diagnostic], list[Diagnostic]] | None,
+        launch: dict[str, list[Diagnostic]],
+    ) -> None:
+        if fixed is not None and "fixed" in self._keys:
+            self.cache.put_param_part("fixed", self._keys["fixed"], *fixed)
+        for path, found in launch.items():
+            if path in self._keys:
+                self.cache.put_param_part(f"launch:{path}", self._keys[path], found)
+
+
 def _params_key(
+    config: Config, cache: ResultCache, touched: list[str], inputs: list[str]
+) -> str:
+    """The key of the parameter check as a whole: its `inputs` (`_params_inputs`)
+    and every file the launch files' reading touched (launch files, the parameter
+    files and build files they lead to, the nodes' code, by its bytes)."""
+    parts = list(inputs)
+    for name in touched:
+        file = Path(name)
+        ignored = ",".join(sorted(config.ignored_codes(file)))
+        parts.append(f"launch\0{name}\0{cache.sha(file)}\0{ignored}")
+    text = "\n".join(parts).encode("utf-8", "surrogateescape")
+    return hashlib.sha256(text).hexdigest()
+
+
+def _params_inputs(
     found: Discovery,
     python_files: list[Path],
     config: Config,
     cache: ResultCache,
-    launches: LaunchRun | None = None,
-    cpp_nodes: CppParams | None = None,
-) -> str:
-    """Everything `paramcheck` reads (and the C++ nodes', `cpp_nodes.key()`): the
+) -> list[str]:
+    """Everything `paramcheck` reads (and the C++ files, by their bytes: their
+    nodes' names and declarations count, with the CMakeLists.txt of their
+    packages, which says what an executable is built from), the
     parameter and definitions files (bytes, per-file ignores, package folder), and
     each Python file that mentions a parameter word (`cache.MENTION_WORDS`; the
     others are skipped unread there) with its bytes, the file it really is, its
@@ -582,15 +865,13 @@ def _params_key(
     refinement imports: the entry holds each record's fingerprint as it is now, or
     the file was checked again). A file read only for its declarations
     (`summary_files`, no check) counts with every other such file's bytes: they are
-    the modules it can import. With launch files: every file their reading touched
-    (launch files, the parameter files and build files they lead to, the nodes'
-    code, by its bytes)."""
-    parts = cpp_nodes.key() if cpp_nodes is not None else []
-    if launches is not None:
-        for touched in sorted(launches.touched()):
-            file = Path(touched)
-            ignored = ",".join(sorted(config.ignored_codes(file)))
-            parts.append(f"launch\0{touched}\0{cache.sha(file)}\0{ignored}")
+    the modules it can import (the launch files apart: `_params_key`,
+    `_ParamParts`)."""
+    parts = [f"cpp\0{path}\0{cache.sha(path)}" for path in found.cpp_files]
+    builds = {package_folder(path) for path in found.cpp_files}
+    for folder in sorted(f for f in builds if f is not None):  # (cppparams)
+        cmake = folder / "CMakeLists.txt"  # what an executable is built from
+        parts.append(f"cmake\0{cmake}\0{cache.sha(cmake) if cmake.is_file() else ''}")
     groups = (
         ("yaml", found.parameter_files),
         ("definitions", found.parameter_definitions),
@@ -609,8 +890,7 @@ def _params_key(
             where = package_folder(path)
             parts.append(f"py\0{path}\0{real}\0{cache.sha(path)}\0{where}")
             parts += [f"reads\0{k}\0{v}" for k, v in cache.consulted(path)]
-    text = "\n".join(parts).encode("utf-8", "surrogateescape")
-    return hashlib.sha256(text).hexdigest()
+    return parts
 
 
 def _catalog_key(interfaces: _Interfaces, config: Config) -> str | None:

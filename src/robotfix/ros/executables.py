@@ -16,9 +16,9 @@ import ast
 import re
 from collections.abc import Callable
 from pathlib import Path
-from typing import TypeVar
+from typing import Any, TypeVar
 
-from robotfix.fs import UnreadableError, read_regular, read_text
+from robotfix.fs import UnreadableError, probe, read_regular, read_text, remembered
 
 MAX_BUILD_BYTES = 1024 * 1024
 SCRIPT_FOLDERS = ("scripts", "nodes", "bin", "src", "")
@@ -29,7 +29,7 @@ _PROGRAMS = re.compile(
 
 
 def executable_file(
-    package: Path, executable: str, memo: dict[tuple[str, Path], object] | None = None
+    package: Path, executable: str, memo: dict[tuple[str, Path], Any] | None = None
 ) -> Path | None:
     """The Python file `executable` of the package in folder `package` runs;
     `memo` keeps each package's build files as read (one run: a launch file's
@@ -43,12 +43,12 @@ def executable_file(
         if found is not None:
             return found
     for program in _once(memo, "programs", package, _cmake_programs):
-        if program.name == executable and program.is_file():
+        if program.name == executable and probe("isfile", program):
             return program
     for folder in SCRIPT_FOLDERS:
         candidate = package / folder / executable
         try:
-            if candidate.is_file():
+            if probe("isfile", candidate):
                 return candidate
         except (OSError, ValueError):
             return None
@@ -56,15 +56,12 @@ def executable_file(
 
 
 def _once(
-    memo: dict[tuple[str, Path], object],
+    memo: dict[tuple[str, Path], Any],
     kind: str,
     package: Path,
     read: Callable[[Path], T],
 ) -> T:
-    key = (kind, package)
-    if key not in memo:
-        memo[key] = read(package)
-    return memo[key]  # type: ignore[return-value]
+    return remembered(memo, (kind, package), lambda: read(package))  # type: ignore[no-any-return]
 
 
 def _read(path: Path) -> str | None:
@@ -168,7 +165,7 @@ def module_file(package: Path, module: str) -> Path | None:
             base.joinpath(*parts).with_suffix(".py"),
             base.joinpath(*parts, "__init__.py"),
         ):
-            if candidate.is_file():
+            if probe("isfile", candidate):
                 return candidate
     return None
 
@@ -218,7 +215,7 @@ Targets = dict[str, tuple[list[Path], list[str]]]
 
 
 def cpp_executable_files(
-    package: Path, executable: str, memo: dict[Path, Targets] | None = None
+    package: Path, executable: str, memo: dict[Path, Any] | None = None
 ) -> list[Path]:
     """The C++ files an executable of the package is built from, read from its
     CMakeLists.txt (never run): `add_executable(name src/x.cpp)`, the package's
@@ -229,9 +226,7 @@ def cpp_executable_files(
     `set()` variables and `${PROJECT_NAME}` are substituted; a word still holding a
     `${...}` is unknown (left out). `memo` keeps each package's targets for a run."""
     memo = {} if memo is None else memo
-    if package not in memo:
-        memo[package] = _cmake_targets(package)
-    targets = memo[package]
+    targets: Targets = remembered(memo, package, lambda: _cmake_targets(package))
     todo = [executable]
     seen: set[str] = set()
     files: list[Path] = []
@@ -337,7 +332,7 @@ def _cmake_run(
                     continue
                 if word.endswith(CPP_SOURCE_SUFFIXES):
                     path = package / word
-                    if path.is_file() and path not in sources:
+                    if probe("isfile", path) and path not in sources:
                         sources.append(path)
         elif command == "target_link_libraries":
             _, links = targets.setdefault(words[0], ([], []))
@@ -424,7 +419,7 @@ def _included(package: Path, files: list[Path]) -> list[Path]:
             for base in bases:
                 candidate = base / name
                 try:
-                    if candidate.is_file() and candidate not in found:
+                    if probe("isfile", candidate) and candidate not in found:
                         found.append(candidate)
                         break
                 except (OSError, ValueError):

@@ -11,7 +11,7 @@ import re
 from pathlib import Path
 from xml.etree import ElementTree
 
-from robotfix.fs import UnreadableError, read_regular
+from robotfix.fs import UnreadableError, probe, read_regular
 
 MAX_PACKAGE_XML_BYTES = 1024 * 1024  # real ones are a few kB
 _NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")  # what a `pkg/Type` name can hold
@@ -41,7 +41,7 @@ def package_folder(path: Path) -> Path | None:
     its own folder) that holds a package.xml."""
     folder = Path(os.path.abspath(path)).parent
     for candidate in (folder, *folder.parents):
-        if os.path.isfile(candidate / "package.xml"):
+        if probe("isfile", candidate / "package.xml"):
             return candidate
     return None
 

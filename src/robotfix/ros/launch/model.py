@@ -13,7 +13,8 @@ reports at the launch file, and a later graph module can build on the node entri
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
+from typing import Any
 
 from robotfix.ros.paramfile import Typed, Unread
 
@@ -89,3 +90,42 @@ class LaunchFile:
     global_params: list[InlineParam] = field(default_factory=list)
     problem: tuple[str, int, int] | None = None  # why it was not read: text, l, c
     launch: bool = True  # False: a Python file that is no launch file at all
+
+
+# -- the JSON form of node entries, for the result cache -------------------------
+_KINDS = {
+    cls.__name__: cls
+    for cls in (Place, InlineParam, FileParam, Remap, NodeEntry, Typed, Unread)
+}
+
+
+def dump(value: object) -> object:
+    """Node entries (and what they hold) as JSON data: a dataclass as a list of
+    its class name and its fields' values in order."""
+    name = type(value).__name__
+    if _KINDS.get(name) is type(value):
+        return [name, *(dump(getattr(value, f.name)) for f in fields(value))]
+    if isinstance(value, list):
+        return [[dump(v) for v in value]]
+    if value is None or type(value) in (bool, int, float, str):
+        return value
+    raise ValueError(f"no JSON form for {name}")  # a tuple would come back a list
+
+
+def load(raw: object) -> object:
+    """What `dump` wrote; ValueError when `raw` is not that (the caller checks
+    that the result's `repr` is the original's)."""
+    if not isinstance(raw, list):
+        if raw is None or type(raw) in (bool, int, float, str):
+            return raw
+        raise ValueError("not a dumped value")
+    if len(raw) == 1 and isinstance(raw[0], list):
+        return [load(v) for v in raw[0]]
+    if not raw or not isinstance(raw[0], str) or raw[0] not in _KINDS:
+        raise ValueError("not a dumped value")
+    cls = _KINDS[raw[0]]
+    names = [f.name for f in fields(cls)]
+    if len(raw) != len(names) + 1:
+        raise ValueError("not a dumped value")
+    values: dict[str, Any] = {n: load(v) for n, v in zip(names, raw[1:], strict=True)}
+    return cls(**values)

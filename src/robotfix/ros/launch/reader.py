@@ -13,7 +13,7 @@ import warnings
 from collections.abc import Callable
 from pathlib import Path
 
-from robotfix.fs import UnreadableError, read_text
+from robotfix.fs import Noted, UnreadableError, read_text, remembered
 from robotfix.ros import yamlfile as Y
 from robotfix.ros.launch.frontend import read_tree
 from robotfix.ros.launch.model import LaunchFile
@@ -44,11 +44,17 @@ class Reader:
         a file whose text is still that is not parsed again."""
         self.packages = packages
         self.parses = parses or {}
-        self.parsed: dict[str, Parsed] = {}
+        # each file's parse and each reading's result, with what it read
+        # (`fs.remembered`: a cached launch file's trace holds what its includes read)
+        self.parsed: dict[str, tuple[Parsed, Noted]] = {}
         self.results: dict[
-            tuple[str, tuple[tuple[str, str | None], ...]], LaunchFile
+            tuple[str, tuple[tuple[str, str | None], ...]], tuple[LaunchFile, Noted]
         ] = {}
         self.touched: set[str] = set()
+        self.reading: set[str] = set()  # the files parsed since the caller emptied it
+        # an include cut (a cycle, MAX_INCLUDE_DEPTH) or MAX_READS met: what a file
+        # reads then depends on the order files are read in (not kept apart)
+        self.order_dependent = False
         self.texts: dict[str, str] = {}  # each file's text, for suppressions
 
     def read(
@@ -62,12 +68,21 @@ class Reader:
         key = str(path)
         memo = (key, tuple(sorted((args or {}).items())))
         if memo in self.results:
-            return _copy(self.results[memo])
+            return _copy(remembered(self.results, memo, _unused))
         if len(self.results) >= MAX_READS:
+            self.order_dependent = True
             return LaunchFile(key, 2, launch=False)
+        found = remembered(self.results, memo, lambda: self._read(path, args, chain))
+        return _copy(found)
+
+    def _read(
+        self, path: Path, args: dict[str, str | None] | None, chain: tuple[str, ...]
+    ) -> LaunchFile:
+        key = str(path)
 
         def follow(included: Path, passed: dict[str, str | None]) -> LaunchFile | None:
             if str(included) in chain or len(chain) >= MAX_INCLUDE_DEPTH:
+                self.order_dependent = True
                 return None
             return self.read(included, passed, (*chain, key))
 
@@ -79,15 +94,20 @@ class Reader:
             found = read_tree(parsed, ctx, 2 if key.endswith(YAML_SUFFIXES) else None)
         else:
             found = read_python(parsed[0], parsed[1], ctx)
-        self.results[memo] = found
-        return _copy(found)
+        return found
 
     def parse(self, path: Path) -> Parsed:
         key = str(path)
-        if key not in self.parsed:
-            self.touched.add(key)
-            self.parsed[key] = _parse(path, self.texts, self.parses.get(key))
-        return self.parsed[key]
+        self.touched.add(key)
+        self.reading.add(key)
+        parsed: Parsed = remembered(
+            self.parsed, key, lambda: _parse(path, self.texts, self.parses.get(key))
+        )
+        return parsed
+
+
+def _unused() -> LaunchFile:
+    raise AssertionError("remembered")
 
 
 def _copy(found: LaunchFile) -> LaunchFile:

@@ -15,6 +15,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from robotfix.fs import probe
+
 if TYPE_CHECKING:
     from robotfix.ros.launch.model import LaunchFile
 
@@ -60,7 +62,7 @@ def in_tree(ctx: Context, text: str | None) -> str | None:
         return None
     path = Path(text[1:])
     try:
-        return str(path) if path.is_file() else None
+        return str(path) if probe("isfile", path) else None
     except (OSError, ValueError):
         return None
 
