@@ -25,7 +25,7 @@ import ast
 import sys
 from bisect import bisect_left
 from collections import Counter
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 from dataclasses import replace
 
 from robotfix.astwalk import children, dotted
@@ -363,7 +363,7 @@ def _bind(file: _File) -> None:
                 if isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
                     file.scope_class[id(item)] = node.name
                     file.functions.setdefault(node.name, {})[item.name] = item
-        for name in _BLOCKS:
+        for name in _BLOCKS:  # inline: `_statements` per node costs more
             block = getattr(node, name, None)
             if block.__class__ is list:
                 todo.extend(block)
@@ -593,9 +593,9 @@ def _responses(file: _File) -> None:
     is, is not followed.)"""
     found: dict[tuple[str, bool], list[tuple[int, int, str]]] = {}
     todo: list[tuple[ast.AST, _Scope, str | None]] = [(file.tree, file.tree, None)]
-    while todo:
+    while todo:  # statements only: an annotated assignment is one
         node, scope, cls = todo.pop()
-        for child in ast.iter_child_nodes(node):
+        for child in _statements(node):
             if isinstance(child, ast.ClassDef):
                 todo.append((child, scope, child.name))
                 continue
@@ -625,6 +625,14 @@ def _responses(file: _File) -> None:
         if texts:
             joined = " and ".join(f"({t})" if len(texts) > 1 else t for t in texts)
             endpoints[i] = replace(end, contract=joined)
+
+
+def _statements(node: ast.AST) -> Iterator[ast.AST]:
+    """What `node`'s blocks hold (`_BLOCKS`): statements, handlers, cases."""
+    for name in _BLOCKS:
+        block = getattr(node, name, None)
+        if block.__class__ is list:
+            yield from block
 
 
 def _receiver_key(
