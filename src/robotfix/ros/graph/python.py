@@ -22,6 +22,7 @@ variable a node is in (`node = rclpy.create_node('name')`); rospy's
 from __future__ import annotations
 
 import ast
+import re
 import sys
 from bisect import bisect_left
 from collections import Counter
@@ -591,6 +592,13 @@ def _responses(file: _File) -> None:
     assumption of one client joined; none for a place two clients are kept in.
     (`future.result()` after `call_async` is not read: which client's future it
     is, is not followed.)"""
+    # the last name of each place a client is kept (`cli` of `C:self.cli`,
+    # `:main/cli`): other calls are not looked at further
+    tails = {
+        re.split(r"[:/.]", e.holder)[-1]
+        for e in file.found.endpoints
+        if e.kind == "client" and e.holder
+    }
     found: dict[tuple[str, bool], list[tuple[int, int, str]]] = {}
     todo: list[tuple[ast.AST, _Scope, str | None]] = [(file.tree, file.tree, None)]
     while todo:  # statements only: an annotated assignment is one
@@ -603,15 +611,17 @@ def _responses(file: _File) -> None:
                 todo.append((child, child, cls))
                 continue
             if isinstance(child, ast.AnnAssign) and isinstance(child.value, ast.Call):
-                text = _annotated_text(file, child.annotation)
                 func = child.value.func
+                receivers = [(func, True)]
+                if isinstance(func, ast.Attribute) and func.attr == "call":
+                    receivers.append((func.value, False))
+                receivers = [r for r in receivers if _tail(r[0]) in tails]
+                text = _annotated_text(file, child.annotation) if receivers else None
                 if text is not None:
                     where = (child.lineno, child.col_offset, text)
-                    if isinstance(func, ast.Attribute) and func.attr == "call":
-                        key = _receiver_key(file, func.value, scope, cls)
-                        found.setdefault((key, False), []).append(where)
-                    key = _receiver_key(file, func, scope, cls)
-                    found.setdefault((key, True), []).append(where)
+                    for receiver, direct in receivers:
+                        key = _receiver_key(file, receiver, scope, cls)
+                        found.setdefault((key, direct), []).append(where)
             todo.append((child, scope, cls))
     endpoints = file.found.endpoints
     held = Counter(e.holder for e in endpoints if e.kind == "client")
@@ -625,6 +635,13 @@ def _responses(file: _File) -> None:
         if texts:
             joined = " and ".join(f"({t})" if len(texts) > 1 else t for t in texts)
             endpoints[i] = replace(end, contract=joined)
+
+
+def _tail(node: ast.expr) -> str:
+    """The last name of `x` or `self.x`."""
+    if isinstance(node, ast.Name):
+        return node.id
+    return node.attr if isinstance(node, ast.Attribute) else ""
 
 
 def _statements(node: ast.AST) -> Iterator[ast.AST]:
