@@ -68,6 +68,13 @@ def _lines(root: Path, jobs: int = 1, cache: bool = False) -> list[str]:
             2,
             {"cruise.py", "day_mode.py", "docking.py", "joy_limit.py", "night_mode.py"},
         ),
+        # servers whose clients refine the response they receive
+        (
+            "ros2_responses",
+            "RF101",
+            1,
+            {"boost_server.py", "clamp_server.py", "scale_server.py"},
+        ),
         # a frame its subscriber assumes
         (
             "ros2_frames",
@@ -294,6 +301,47 @@ def test_python_read_with_the_calls_is_the_whole_walk() -> None:
     )
     assert [e.name for e in found.endpoints] == ["a", "b"]
     assert found.nodes == {"node": ["solo"], "A": ["two", "one"], "B": ["b"]}
+
+
+def test_what_a_client_assumes_of_the_response_is_read_where_it_receives_it() -> None:
+    """A synchronous call's refined result is the client's contract (a local
+    client of `main` as demos' add_two_ints_client; every assumption joined,
+    with the server's callback key); none through a future, none for a place
+    two clients are kept in."""
+    found = _py(
+        "from typing import Annotated\n"
+        "from rclpy.node import Node\n"
+        "from example_interfaces.srv import AddTwoInts as A\n"
+        "Small = Annotated[A.Response, 'sum <= 10']\n"
+        "class C(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('c')\n"
+        "        self.cli = self.create_client(A, 'add')\n"
+        "        self.twice = self.create_client(A, 'one')\n"
+        "        self.twice = self.create_client(A, 'two')\n"
+        "        self.later = self.create_client(A, 'later')\n"
+        "        self.create_service(A, 'serve', self.handle)\n"
+        "    def handle(self, request, response):\n"
+        "        return response\n"
+        "    def ask(self, req):\n"
+        "        r: Annotated[A.Response, '0 <= sum'] = self.cli.call(req)\n"
+        "        s: Small = self.cli.call(req)\n"
+        "        t: Small = self.twice.call(req)\n"
+        "        f = self.later.call_async(req)\n"
+        "        u: Small = f.result()\n"
+        "def main(node):\n"
+        "    cli = node.create_client(A, 'add')\n"
+        "    r: Small = cli.call(A.Request(a=1, b=2))\n"
+    )
+    got = [(e.kind, e.name, e.contract, e.returns) for e in found.endpoints]
+    assert got == [
+        ("client", "add", "(0 <= sum) and (sum <= 10)", ""),
+        ("client", "one", None, ""),
+        ("client", "two", None, ""),
+        ("client", "later", None, ""),
+        ("service", "serve", None, "C.handle"),
+        ("client", "add", "sum <= 10", ""),
+    ]
 
 
 def test_python_types_through_imports_names_and_choices() -> None:
@@ -879,6 +927,56 @@ def test_a_rospy_proxy_called_with_some_fields_by_position_is_not_checked(
     assert [(Path(d.path).name, d.code) for d in found if "place" in d.path] == [
         ("place.py", "RF101")
     ]
+
+
+ASSUMED = "success == True"  # what place.py assumes of the gripper's response
+
+
+@pytest.mark.parametrize(
+    ("returned", "codes"),
+    [
+        ("SetGripperResponse(True)", []),
+        ("SetGripperResponse(False)", ["RF101"]),
+        ("SetGripperResponse(success=req.width <= 0.05)", ["RF102"]),
+    ],
+)
+@pytest.mark.parametrize(
+    "received",
+    [
+        "self.set_gripper(0.05, 5.0)",
+        "self.set_gripper.call(SetGripperRequest(0.05, 0))",
+    ],
+)
+def test_a_rospy_clients_refined_response_is_checked_at_the_servers_return(
+    tmp_path: Path, returned: str, codes: list[str], received: str
+) -> None:
+    """What a rospy client assumes of the response a proxy's call returns
+    (`ok: Annotated[SetGripperResponse, "success == True"] = self.set_gripper(...)`)
+    is checked at the `return` of its server's handler."""
+    root = tmp_path / "ws"
+    shutil.copytree(CASES / "ros1_services", root)
+    place = root / "arm_control" / "scripts" / "place.py"
+    place.write_text(
+        place.read_text()
+        .replace(
+            "import rospy\n",
+            "from typing import Annotated\n\nimport rospy\n",
+        )
+        .replace("SetGripperRequest\n", "SetGripperRequest, SetGripperResponse\n")
+        .replace(
+            "        self.set_gripper(width=0.05, effort=5.0)\n",
+            f"        ok: Annotated[SetGripperResponse, {ASSUMED!r}] = {received}\n",
+        )
+    )
+    server = root / "arm_control" / "scripts" / "gripper_server.py"
+    server.write_text(server.read_text().replace("SetGripperResponse(True)", returned))
+    found = check_paths([root], Config(root=root)).diagnostics
+    at_server = [d for d in found if d.path == str(server)]
+    assert [d.code for d in at_server] == codes
+    for d in at_server:
+        assert d.span.line == 12
+        assert d.notes[0].path == str(place)
+        assert "the client assumes this of every response" in d.notes[-1].message
 
 
 def test_a_contract_through_an_alias_meets_publishers_held_in_locals(

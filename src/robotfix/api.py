@@ -339,7 +339,9 @@ class Contract:
     label: str  # names it in notes: "the message to `/odom`"
     path: str  # the subscriber's (the server's) file and line
     line: int
-    family: str = "topic"  # "service": a client's request; "action": a goal
+    # "service": a client's request; "response": a server's, at its callback's
+    # `return` (`holder`: `return:Server.handle`); "action": a goal
+    family: str = "topic"
     # the way through the graph (`/planner -> /cmd_vel -> /limiter`) and the
     # launch entry that starts the sender: shown, not part of what is checked
     # (one sender started twice is checked once)
@@ -398,7 +400,8 @@ def check_contracts(
     """What a publisher's file violates of its subscribers' contracts (a
     client's, of its server's): the file analysed again with each `publish` of a
     publisher they listen to (`call`, `call_async` of a client, a rospy proxy
-    called, `send_goal_async` of an action client) checked as a call of their
+    called, `send_goal_async` of an action client; a service callback's
+    `return`, against its clients' refined responses) checked as a call of their
     callbacks would be (RF101 violated, RF102 not proved; RF201 a frame); only
     those findings, and not where suppressed."""
     from robotfix.source import SourceFile

@@ -47,6 +47,7 @@ from robotfix.ros.graph.model import (
     PUBLISHER,
     SERVICE,
     SUBSCRIPTION,
+    Endpoint,
     FileGraph,
     dump,
     load,
@@ -421,15 +422,34 @@ def _unmatched(
         result.findings.append(Finding(diag, ends[0]))
 
 
-# per family: the side that sends (kept in an attribute), the side whose
-# callback takes what it sends, and the section of the interface taken
+# channel family -> (the contract's family, the side that sends, the side that
+# states what it assumes of it, and the section of the interface sent): a
+# subscription's callback, a service's of the request, an action server's goal
+# callback; a client of the response its server's callback returns
 CONTRACT_SIDES = {
-    "topic": (PUBLISHER, SUBSCRIPTION, ""),
-    "service": (CLIENT, SERVICE, "_Request"),
-    "action": (ACTION_CLIENT, ACTION_SERVER, "_Goal"),
+    "topic": (("topic", PUBLISHER, SUBSCRIPTION, ""),),
+    "service": (
+        ("service", CLIENT, SERVICE, "_Request"),
+        ("response", SERVICE, CLIENT, "_Response"),
+    ),
+    "action": (("action", ACTION_CLIENT, ACTION_SERVER, "_Goal"),),
 }
-# what the side whose callback takes it is called in a note's label
-TAKER = {"topic": "subscription to", "service": "service", "action": "action server"}
+# what the side that takes it is called in a note's label
+TAKER = {
+    "topic": "subscription to",
+    "service": "service",
+    "action": "action server",
+    "response": "client of",
+}
+
+
+def _sender_key(endpoint: Endpoint) -> str:
+    """Where the analysis meets what an endpoint sends (`analysis.calls`): a
+    service's response at its callback's `return` (`return:Server.handle`), the
+    rest where they are kept (`Planner:self.pub`); "" not known."""
+    if endpoint.kind == SERVICE:
+        return f"return:{endpoint.returns}" if endpoint.returns else ""
+    return endpoint.holder
 
 
 def contracts(result: GraphResult) -> dict[str, list[Contract]]:
@@ -440,65 +460,68 @@ def contracts(result: GraphResult) -> dict[str, list[Contract]]:
     and a Python publisher or client kept in an attribute (`self.pub =
     self.create_publisher(...)`, one per attribute name in its class; its
     `publish`, `call`, `call_async`, `send_goal`, `send_goal_async` in methods of
-    that class), of the same certain type, on one certain name, started together
-    by one package's launch files."""
+    that class); a client that refines the response it receives, of its Python
+    server's callback's `return`; of the same certain type, on one certain
+    name, started together by one package's launch files."""
     from robotfix.api import Contract
 
     graph = result.graph
     systems = _Systems(graph)
     holders: dict[tuple[str, str], set[tuple[int, str | None]]] = {}
-    senders = {sides[0] for sides in CONTRACT_SIDES.values()}
+    senders = {side[1] for sides in CONTRACT_SIDES.values() for side in sides}
     for end in graph.ends:
-        if end.endpoint.kind in senders and end.endpoint.holder:
-            key = (end.path, end.endpoint.holder)
-            holders.setdefault(key, set()).add((end.endpoint.line, end.resolved))
+        key = _sender_key(end.endpoint) if end.endpoint.kind in senders else ""
+        if key:
+            holders.setdefault((end.path, key), set()).add(
+                (end.endpoint.line, end.resolved)
+            )
     found: dict[str, list[Contract]] = {}
-    for (_, family, name), ends in _channels(graph).items():
-        if family not in CONTRACT_SIDES:
-            continue
-        sending, taking, section = CONTRACT_SIDES[family]
-        taken = [
-            graph.ends[i]
-            for i in ends
-            if graph.ends[i].endpoint.kind == taking
-            and graph.ends[i].endpoint.contract is not None
-            and len(graph.ends[i].endpoint.types) == 1
-        ]
-        for i in ends:
-            sender = graph.ends[i]
-            endpoint = sender.endpoint
-            key = (sender.path, endpoint.holder)
-            if (
-                endpoint.kind != sending
-                or not sender.path.endswith(".py")
-                or len(holders.get(key, ())) != 1
-            ):
-                continue
-            for taker in taken:
+    for (_, channel, name), ends in _channels(graph).items():
+        for family, sending, taking, section in CONTRACT_SIDES.get(channel, ()):
+            taken = [
+                graph.ends[i]
+                for i in ends
+                if graph.ends[i].endpoint.kind == taking
+                and graph.ends[i].endpoint.contract is not None
+                and len(graph.ends[i].endpoint.types) == 1
+            ]
+            for i in ends:
+                sender = graph.ends[i]
+                endpoint = sender.endpoint
+                key = _sender_key(endpoint)
                 if (
-                    taker.endpoint.types != endpoint.types
-                    or systems.relation(sender, taker) != TOGETHER
+                    endpoint.kind != sending
+                    or not sender.path.endswith(".py")
+                    or len(holders.get((sender.path, key), ())) != 1
                 ):
                     continue
-                package, _, kind = endpoint.types[0].split("/")
-                if family == "action" and endpoint.ros == 1:
-                    kind = kind.removesuffix("Action")  # actionlib's FibonacciAction
-                node = graph.nodes[taker.node].qualified
-                started = graph.nodes[sender.node].launch
-                route = f"{graph.nodes[sender.node].qualified} -> {name} -> {node}"
-                contract = Contract(
-                    endpoint.holder,
-                    taker.endpoint.contract or "",
-                    f"{package}/{kind}{section}",
-                    f"{node}'s {TAKER[family]} {name}",
-                    taker.path,
-                    taker.endpoint.line,
-                    family,
-                    route,
-                    (started.path, started.line) if started is not None else None,
-                )
-                if contract not in found.setdefault(sender.path, []):
-                    found[sender.path].append(contract)
+                for taker in taken:
+                    if (
+                        taker.endpoint.types != endpoint.types
+                        or systems.relation(sender, taker) != TOGETHER
+                    ):
+                        continue
+                    package, _, kind = endpoint.types[0].split("/")
+                    if family == "action" and endpoint.ros == 1:
+                        kind = kind.removesuffix(
+                            "Action"
+                        )  # actionlib's FibonacciAction
+                    node = graph.nodes[taker.node].qualified
+                    started = graph.nodes[sender.node].launch
+                    route = f"{graph.nodes[sender.node].qualified} -> {name} -> {node}"
+                    contract = Contract(
+                        key,
+                        taker.endpoint.contract or "",
+                        f"{package}/{kind}{section}",
+                        f"{node}'s {TAKER[family]} {name}",
+                        taker.path,
+                        taker.endpoint.line,
+                        family,
+                        route,
+                        (started.path, started.line) if started is not None else None,
+                    )
+                    if contract not in found.setdefault(sender.path, []):
+                        found[sender.path].append(contract)
     return found
 
 

@@ -1060,13 +1060,18 @@ def graph_qos_incompatible(
 def contract_note(
     family: str = "topic", route: str = "", launch: tuple[str, int] | None = None
 ) -> Note:
-    """On a publisher's RF101/RF102 against a subscriber's contract, or a
-    client's against its server's (issue 23 §3); `route`: the way the message
-    goes through the graph; `launch`: the launch entry that starts the sender."""
+    """On a publisher's RF101/RF102 against a subscriber's contract, a client's
+    against its server's, a server's response against its client's (issue 23
+    §3); `route`: the way the message goes through the graph; `launch`: the
+    launch entry that starts the sender."""
     sides, what = {
         "service": (
             "this client and that service on one name",
             "the server's callback assumes this of every request it receives",
+        ),
+        "response": (
+            "this service and that client on one name",
+            "the client assumes this of every response it receives",
         ),
         "action": (
             "this action client and that action server on one name",

@@ -314,6 +314,9 @@ class Interpreter(CompoundWalker):
         )
         if leaves and value.kind == "msg" and value.ref is not None:
             self.fields.check_whole(state, value.ref, node, publishing=True)
+        if leaves and self.ctx.obligations and function is not None:
+            # what the service's clients assume of the response it returns
+            self._contracts([value], state, f"return:{function.key}")
         state.reachable = False
         return state
 

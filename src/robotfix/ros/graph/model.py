@@ -93,12 +93,16 @@ class Endpoint:
     value: str | None = None  # a parameter's default, as written (C++)
     # what a subscription's callback assumes of the message: the refinement of
     # its parameter (`msg: Annotated[Twist, "abs(linear.x) <= 0.5"]`), as written;
-    # a service's callback, of the request
+    # a service's callback, of the request; a Python client, of the response
+    # (`resp: Annotated[SetSpeed.Response, "actual <= 2"] = self.cli.call(req)`)
     contract: str | None = None
     # where the code keeps a Python publisher or client (`self.pub =
     # create_publisher(...)` in class Planner: "Planner:self.pub"), for what its
     # subscribers or server assume of `self.pub.publish(m)`, `self.cli.call(r)`
     holder: str = ""
+    # a Python service's callback, as the analysis keys it (`Server.handle`,
+    # `handle`): what it returns is the response its clients' contracts meet
+    returns: str = ""
 
 
 @dataclass
@@ -131,6 +135,7 @@ def dump(found: FileGraph) -> list[Any]:
                 e.value,
                 e.contract,
                 e.holder,
+                e.returns,
             ]
             for e in found.endpoints
         ],
@@ -165,10 +170,10 @@ def load(raw: Any) -> FileGraph | None:
         return None
     found = FileGraph([], {k: list(v) for k, v in nodes.items()}, ros)
     for item in endpoints:
-        if not (isinstance(item, list) and len(item) == 12):
+        if not (isinstance(item, list) and len(item) == 13):
             return None
         kind, name, types, line, col, owner, qos, eros, handle, value = item[:10]
-        contract, holder = item[10:]
+        contract, holder, returns = item[10:]
         if not (
             kind in KINDS
             and _opt(name)
@@ -182,6 +187,7 @@ def load(raw: Any) -> FileGraph | None:
             and _opt(value)
             and _opt(contract)
             and _text(holder)
+            and _text(returns)
         ):
             return None
         profile = None
@@ -210,6 +216,7 @@ def load(raw: Any) -> FileGraph | None:
                 value,
                 contract,
                 holder,
+                returns,
             )
         )
     return found

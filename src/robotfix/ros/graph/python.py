@@ -22,9 +22,12 @@ variable a node is in (`node = rclpy.create_node('name')`); rospy's
 from __future__ import annotations
 
 import ast
+import re
 import sys
 from bisect import bisect_left
-from collections.abc import Iterable
+from collections import Counter
+from collections.abc import Iterable, Iterator
+from dataclasses import replace
 
 from robotfix.astwalk import children, dotted
 from robotfix.astwalk import walk as walk_all
@@ -288,6 +291,8 @@ def _read(
     _visit(found, tree.body, tree, None)
     if calls is not None and found.met != len(found.wanted):
         return None
+    if any(e.kind == "client" and e.holder for e in found.found.endpoints):
+        _responses(found)
     super_names(tree, found.found, calls)
     found.found.ros = 1 if found.rospy else 2
     return found.found
@@ -359,7 +364,7 @@ def _bind(file: _File) -> None:
                 if isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
                     file.scope_class[id(item)] = node.name
                     file.functions.setdefault(node.name, {})[item.name] = item
-        for name in _BLOCKS:
+        for name in _BLOCKS:  # inline: `_statements` per node costs more
             block = getattr(node, name, None)
             if block.__class__ is list:
                 todo.extend(block)
@@ -539,9 +544,12 @@ def _call(
                 )
     file.spent(given)
     contract = None
+    returns = ""
     if spec.taken_arg is not None:
         callback = _argument(call, spec.taken_arg)
         contract = _contract(file, callback, cls) if callback is not None else None
+        if spec.kind == "service" and callback is not None:
+            returns = _callback_key(file, callback, cls)
     file.found.endpoints.append(
         Endpoint(
             spec.kind,
@@ -554,8 +562,110 @@ def _call(
             spec.ros,
             contract=contract,
             holder=_holder(file, statement, call, scope, cls),
+            returns=returns,
         )
     )
+
+
+def _callback_key(file: _File, callback: ast.expr, cls: str | None) -> str:
+    """A service's callback as the analysis keys it (`analysis.program`): `handle`
+    of a module function, `Server.handle` of `self.handle` defined in the class
+    itself; "" otherwise (inherited, a lambda, a `partial`)."""
+    if isinstance(callback, ast.Name) and callback.id in file.functions.get("", {}):
+        return callback.id
+    if (
+        isinstance(callback, ast.Attribute)
+        and isinstance(callback.value, ast.Name)
+        and callback.value.id == "self"
+        and cls is not None
+        and callback.attr in file.functions.get(cls, {})
+    ):
+        return f"{cls}.{callback.attr}"
+    return ""
+
+
+def _responses(file: _File) -> None:
+    """What each client kept in a holder (`_holder`) assumes of the responses it
+    receives: the refinement of the name a synchronous call binds (`resp:
+    Annotated[SetSpeed.Response, "actual <= 2"] = self.cli.call(req)`; rospy's
+    `proxy(req)`, `proxy.call(req)`), as the client's `contract`; every such
+    assumption of one client joined; none for a place two clients are kept in.
+    (`future.result()` after `call_async` is not read: which client's future it
+    is, is not followed.)"""
+    # the last name of each place a client is kept (`cli` of `C:self.cli`,
+    # `:main/cli`): other calls are not looked at further
+    tails = {
+        re.split(r"[:/.]", e.holder)[-1]
+        for e in file.found.endpoints
+        if e.kind == "client" and e.holder
+    }
+    found: dict[tuple[str, bool], list[tuple[int, int, str]]] = {}
+    todo: list[tuple[ast.AST, _Scope, str | None]] = [(file.tree, file.tree, None)]
+    while todo:  # statements only: an annotated assignment is one
+        node, scope, cls = todo.pop()
+        for child in _statements(node):
+            if isinstance(child, ast.ClassDef):
+                todo.append((child, scope, child.name))
+                continue
+            if isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                todo.append((child, child, cls))
+                continue
+            if isinstance(child, ast.AnnAssign) and isinstance(child.value, ast.Call):
+                func = child.value.func
+                receivers = [(func, True)]
+                if isinstance(func, ast.Attribute) and func.attr == "call":
+                    receivers.append((func.value, False))
+                receivers = [r for r in receivers if _tail(r[0]) in tails]
+                text = _annotated_text(file, child.annotation) if receivers else None
+                if text is not None:
+                    where = (child.lineno, child.col_offset, text)
+                    for receiver, direct in receivers:
+                        key = _receiver_key(file, receiver, scope, cls)
+                        found.setdefault((key, direct), []).append(where)
+            todo.append((child, scope, cls))
+    endpoints = file.found.endpoints
+    held = Counter(e.holder for e in endpoints if e.kind == "client")
+    for i, end in enumerate(endpoints):
+        if end.kind != "client" or not end.holder or held[end.holder] != 1:
+            continue  # two clients kept in one place: which one answers is not known
+        sites = found.get((end.holder, False), []) + (
+            found.get((end.holder, True), []) if end.ros == 1 else []
+        )
+        texts = list(dict.fromkeys(text for _, _, text in sorted(sites)))
+        if texts:
+            joined = " and ".join(f"({t})" if len(texts) > 1 else t for t in texts)
+            endpoints[i] = replace(end, contract=joined)
+
+
+def _tail(node: ast.expr) -> str:
+    """The last name of `x` or `self.x`."""
+    if isinstance(node, ast.Name):
+        return node.id
+    return node.attr if isinstance(node, ast.Attribute) else ""
+
+
+def _statements(node: ast.AST) -> Iterator[ast.AST]:
+    """What `node`'s blocks hold (`_BLOCKS`): statements, handlers, cases."""
+    for name in _BLOCKS:
+        block = getattr(node, name, None)
+        if block.__class__ is list:
+            yield from block
+
+
+def _receiver_key(
+    file: _File, receiver: ast.expr, scope: _Scope, cls: str | None
+) -> str:
+    """`receiver` as `_holder` names where an endpoint is kept."""
+    if isinstance(receiver, ast.Name):
+        if isinstance(scope, (ast.Module, ast.Lambda)):
+            return f":{receiver.id}"
+        file.bind(scope)
+        local = receiver.id in file.params.get(id(scope), set()) or (
+            receiver.id in file.bindings.get(id(scope), {})
+        )
+        return f"{cls or ''}:{scope.name}/{receiver.id}" if local else f":{receiver.id}"
+    text = dotted(receiver) or ""
+    return f"{cls}:{text}" if text.startswith("self.") and cls is not None else ""
 
 
 def _holder(
@@ -617,7 +727,13 @@ def _contract(file: _File, callback: ast.expr, cls: str | None) -> str | None:
     params = [*function.args.posonlyargs, *function.args.args]
     if len(params) <= first:
         return None
-    annotation = _aliased(file, params[first].annotation)
+    return _annotated_text(file, params[first].annotation)
+
+
+def _annotated_text(file: _File, written: ast.expr | None) -> str | None:
+    """The refinement texts of an `Annotated[T, "..."]` (or of an alias of one),
+    joined; None without one."""
+    annotation = _aliased(file, written)
     if not (
         isinstance(annotation, ast.Subscript)
         and (dotted(annotation.value) or "").rsplit(".", 1)[-1] == "Annotated"
