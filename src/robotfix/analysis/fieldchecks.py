@@ -614,6 +614,9 @@ class FieldChecker:
                 u.text,
             )
             for u in decl.field_units
+            # a unit the interface gives the field comes first (a different one
+            # is RF507 where the annotation is read)
+            if self.ctx.catalog.unit_at(decl.msg_type, u.target or "") is None
         ]
         return tuple(found)
 

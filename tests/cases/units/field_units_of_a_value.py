@@ -1,9 +1,11 @@
 """A message refinement gives a field whose interface has no unit one, for this
 value only: std_msgs/Float64 `data` as a joint command in rad (ros2_control's
 forward_command_controller, turtlebot3_manipulation)."""
+
 import math
 from typing import Annotated
 
+from geometry_msgs.msg import Twist
 from std_msgs.msg import Float64, Float64MultiArray
 
 
@@ -51,3 +53,12 @@ def fill(angle: Annotated[float, "Unit('rad')"]) -> None:
 def on_commands(msg: Annotated[Float64MultiArray, "Unit(data) == 'rad'"]) -> None:
     first: Annotated[float, "Unit('degree')"] = msg.data[0]  # error: RF201
     print(first)
+
+
+def declared(msg: Annotated[Twist, "Unit(linear.x) == 'km/h'"]) -> None:  # error: RF507
+    speed: Annotated[float, "Unit('m/s')"] = msg.linear.x  # REP 103's unit is kept
+    print(speed)
+
+
+def agreed(msg: Annotated[Twist, "Unit(angular.z) == 'rad/s'"]) -> None:
+    print(msg.angular.z)
