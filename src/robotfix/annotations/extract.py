@@ -409,16 +409,7 @@ class _Reader:
             kind = self.field_kind(mtype, path)
             if kind is None or kind == "msg":
                 line, col = _at(start, part.pos)
-                what = (
-                    f"is a message in {mtype}, not a value"
-                    if kind == "msg"
-                    else f"is not a field of {mtype}"
-                )
-                self.problems.append(
-                    AnnotationProblem(
-                        rules.UNKNOWN_FIELD, line, col, f"`{path}` {what}"
-                    )
-                )
+                self.problems.append(_not_a_field(path, mtype, kind, line, col))
                 continue
             found.append(A.UnitIs(part.kind, part.text, path, part.pos))
         return rest
@@ -767,16 +758,22 @@ def _fields_known(
         if kind is None and path == name.name and known(root):
             continue
         line, col = _at(start, name.pos)
-        what = (
-            f"is a message in {msg_type}, not a value"
-            if kind == "msg"
-            else f"is not a field of {msg_type}"
-        )
-        problems.append(
-            AnnotationProblem(rules.UNKNOWN_FIELD, line, col, f"`{path}` {what}")
-        )
+        problems.append(_not_a_field(path, msg_type, kind, line, col))
         return False
     return True
+
+
+def _not_a_field(
+    path: str, msg_type: str, kind: str | None, line: int, col: int
+) -> AnnotationProblem:
+    """RF505: a refinement of a `msg_type` names `path`, which is no field of it
+    (`kind` None) or a message in it, not a value."""
+    what = (
+        f"is a message in {msg_type}, not a value"
+        if kind == "msg"
+        else f"is not a field of {msg_type}"
+    )
+    return AnnotationProblem(rules.UNKNOWN_FIELD, line, col, f"`{path}` {what}")
 
 
 def _names_known(
