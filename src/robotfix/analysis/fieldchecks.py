@@ -129,8 +129,8 @@ class FieldChecker:
                 and ok
             )
         elif unit is not None:  # a refined value's `Unit(field) == "u"`
-            inv = heap.unit_extras(state, ref, name)[0]
-            ok = self._unit_holds_of(value, inv, site, f"`{target}`") and ok
+            for inv in heap.unit_extras(state, ref, name)[:1]:
+                ok = self._unit_holds_of(value, inv, site, f"`{target}`") and ok
         stored = value.with_unit(unit) if unit is not None else value
         if stored.term is None:
             stored = self.ctx.fresh(spec.kind, f"`{target}`", unit)

@@ -184,7 +184,7 @@ def field_unit(
         declared = spec.units.get(path)
         if declared is not None:
             return unit_of(declared.text), declared, spec
-    extras = unit_extras(state, ref, name)
+    extras = unit_extras(state, ref, name) if state.shared.extras else []
     return (unit_of(extras[0].unit or ""), None, None) if extras else (None, None, None)
 
 
