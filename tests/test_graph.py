@@ -82,6 +82,8 @@ def _lines(root: Path, jobs: int = 1, cache: bool = False) -> list[str]:
             2,
             {"ahead.py", "clicked.py", "inspection.py", "patrol_goals.py"},
         ),
+        # a unit its subscriber gives a field whose interface gives none
+        ("ros2_joint_units", "RF201", 1, {"dial.py", "home.py", "slider.py"}),
         # action clients whose server's goal callback refines the goal
         (
             "ros2_actions",

@@ -21,6 +21,7 @@ from robotfix.analysis.index import FileIndex, index_scope
 from robotfix.analysis.values import SORTS, Value, sort_of
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Alias, Names, Refinement, extract
+from robotfix.annotations.units import UnitError, resolve
 from robotfix.budget import Budget
 from robotfix.diagnostics import Diagnostic, Span
 from robotfix.ros.catalog import Invariant, MsgCatalog, MsgSpec
@@ -355,6 +356,31 @@ class FileContext:
             return parts[0], name
         return None
 
+    def _field_units_declared(
+        self, found: Refinement, msg_type: str, text: ast.expr
+    ) -> None:
+        """`Unit(field) == "u"` on a value names a field whose interface gives
+        it another unit: RF507 (the interface's is kept)."""
+        for part in found.field_units:
+            declared = self.catalog.unit_at(msg_type, part.target or "")
+            if declared is None or _same_unit(declared, part.text):
+                continue
+            message = (
+                f"`{part.target}` of {msg_type} is in {declared}, as its interface "
+                f"declares: Unit({part.target}) == '{part.text}' on a value gives "
+                "a unit only to a field whose interface gives none"
+            )
+            self.report(
+                messages.annotation_problem(
+                    self.source.path,
+                    text.lineno,
+                    self.source.char_col(text.lineno, text.col_offset),
+                    rules.MISPLACED_UNIT,
+                    message,
+                ),
+                once=("field unit", text.lineno, part.target, part.text),
+            )
+
     def msg_type_of(self, node: ast.expr) -> str | None:
         return self.msg_type_named(self.qualname(node))
 
@@ -402,6 +428,8 @@ class FileContext:
                 ),
                 once=("annotation", problem.line, problem.col, problem.message),
             )
+        if found is not None and found.field_units and found.msg_type:
+            self._field_units_declared(found, found.msg_type, _text_node(annotation))
         if found is not None and self._contradictory(found):
             text = _text_node(annotation)
             self.report(
@@ -538,6 +566,14 @@ def build_scope(
             if found is not None:
                 scope.decls[target] = found
     return scope
+
+
+def _same_unit(declared: str, written: str) -> bool:
+    """Whether an interface's unit text and a `Unit()`'s are one unit."""
+    try:
+        return resolve(declared).same_as(resolve(written))
+    except UnitError:
+        return declared == written  # a label (`frame:map`) or reported elsewhere
 
 
 def _text_node(annotation: ast.expr) -> ast.expr:

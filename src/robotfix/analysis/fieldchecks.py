@@ -68,7 +68,7 @@ class FieldChecker:
             if spec
             else []
         )
-        return found + [_object_rule(inv) for inv in obj.extra]
+        return found + [_object_rule(i) for i in obj.extra if i.unit is None]
 
     def write_field(
         self,
@@ -128,6 +128,9 @@ class FieldChecker:
                 self.core.units_agree(framed, value, site, f"`{target}`", decl, state)
                 and ok
             )
+        elif unit is not None:  # a refined value's `Unit(field) == "u"`
+            for inv in heap.unit_extras(state, ref, name)[:1]:
+                ok = self._unit_holds_of(value, inv, site, f"`{target}`") and ok
         stored = value.with_unit(unit) if unit is not None else value
         if stored.term is None:
             stored = self.ctx.fresh(spec.kind, f"`{target}`", unit)
@@ -600,6 +603,21 @@ class FieldChecker:
                     decl.line,
                 )
             )
+        found += [
+            ObjInvariant(
+                A.TRUE,
+                frozenset({u.target or ""}),
+                f'Unit({u.target}) == "{u.text}"',
+                f"annotation of `{name}`",
+                decl.origin or self.path,
+                decl.line,
+                u.text,
+            )
+            for u in decl.field_units
+            # a unit the interface gives the field comes first (a different one
+            # is RF507 where the annotation is read)
+            if self.ctx.catalog.unit_at(decl.msg_type, u.target or "") is None
+        ]
         return tuple(found)
 
     def reach(
@@ -619,11 +637,33 @@ class FieldChecker:
         if obj is None or not rules:
             return
         for inv in rules:
+            if inv.unit is not None:
+                self._unit_holds(state, ref, inv, site, label)
+                continue
             self._check_invariant(
                 state, ref, _object_rule(inv), site, label, leaving, True, leaving
             )
         obj.extra += tuple(inv for inv in rules if inv not in obj.extra)
         state.shared.extras = True
+
+    def _unit_holds(
+        self, state: State, ref: int, inv: ObjInvariant, site: ast.AST, label: str
+    ) -> None:
+        """A message reaching a value whose refinement gives field `path` a unit:
+        what that field holds now must be in it (a plain number fits, RF201's
+        rule for literals)."""
+        path = next(iter(inv.paths))
+        value = heap.resolve_path(self.ctx, state, ref, path, label)
+        shown = f"`{label}.{path}`" if label.isidentifier() else f"`{path}` of {label}"
+        self._unit_holds_of(value, inv, site, shown)
+
+    def _unit_holds_of(
+        self, value: Value, inv: ObjInvariant, site: ast.AST, target: str
+    ) -> bool:
+        declared = Declared(inv.what, inv.path, inv.line, written=f"`{inv.text}`")
+        return self.core.units_agree(
+            heap.unit_of(inv.unit or ""), value, site, target, declared
+        )
 
     def assume_rules(
         self, state: State, ref: int, rules: tuple[ObjInvariant, ...], label: str
@@ -633,7 +673,13 @@ class FieldChecker:
         obj = state.heap.get(ref)
         if obj is None:
             return
+        obj.extra += tuple(
+            i for i in rules if i.unit is not None and i not in obj.extra
+        )
+        state.shared.extras = state.shared.extras or obj.extra != ()
         for inv in rules:
+            if inv.unit is not None:
+                continue  # above: a field read from here on is in its unit
             values = {
                 p: heap.resolve_path(self.ctx, state, ref, p, label) for p in inv.paths
             }

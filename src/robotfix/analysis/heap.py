@@ -146,7 +146,9 @@ def extras_on(state: State, ref: int, name: str) -> list[tuple[ObjInvariant, str
         if obj is None:
             break
         for inv in obj.extra:
-            if all(p == path or p.startswith(path + ".") for p in inv.paths):
+            if inv.unit is None and all(
+                p == path or p.startswith(path + ".") for p in inv.paths
+            ):
                 found.append((inv, path))
         if obj.owner is None:
             break
@@ -182,7 +184,19 @@ def field_unit(
         declared = spec.units.get(path)
         if declared is not None:
             return unit_of(declared.text), declared, spec
-    return None, None, None
+    extras = unit_extras(state, ref, name) if state.shared.extras else []
+    return (unit_of(extras[0].unit or ""), None, None) if extras else (None, None, None)
+
+
+def unit_extras(state: State, ref: int, name: str) -> list[ObjInvariant]:
+    """`Unit(field) == "u"` of the refined values the message holding field `name`
+    (or one enclosing it) reached."""
+    return [
+        inv
+        for current, path in chain(state, ref, name)
+        for inv in state.heap[current].extra
+        if inv.unit is not None and inv.paths == {path}
+    ]
 
 
 def unit_declared_at(owner: MsgSpec, name: str, unit_decl: FieldUnit) -> Declared:

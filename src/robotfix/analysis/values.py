@@ -266,6 +266,7 @@ class ObjInvariant:
     what: str  # "annotation of `cmd`"
     path: str
     line: int
+    unit: str | None = None  # `Unit(field) == "u"`: the field's unit (predicate TRUE)
 
 
 @dataclass

@@ -74,6 +74,9 @@ class Refinement:
     item: str | None = None  # a container's element base type
     size: A.Expr = A.TRUE  # a container's length, as `_`
     origin: str | None = None  # the file that declares it, if not the checked one
+    # a message's `Unit(field) == "u"` parts: that field of this value has unit u,
+    # as an interface file's `#RobotFix# Unit(field) == "u"` says of every message
+    field_units: tuple[A.UnitIs, ...] = ()
 
     def predicates(self) -> list[A.Expr]:
         """Its predicate and its elements': where the names it mentions are."""
@@ -341,8 +344,13 @@ class _Reader:
         unit = nested.unit if nested is not None else None
         parts = [nested.predicate] if nested is not None else []
         texts = [nested.text] if nested is not None else []
+        field_units: list[A.UnitIs] = []
         for predicate, text, start, text_names in used:
-            found, values = _split(predicate, self.self_name, start, self.problems)
+            found, values = _split(
+                predicate, self.self_name, start, self.problems, mtype is not None
+            )
+            if mtype is not None:
+                values = self._field_units(values, mtype, start, field_units)
             if found is not None:
                 unit = found if unit is None else unit * found
             if text_names.constants is not None:
@@ -377,7 +385,34 @@ class _Reader:
             item=item,
             size=A.conjoin([s for s in size if s != A.TRUE]),
             origin=names.path,
+            field_units=tuple(field_units),
         )
+
+    def _field_units(
+        self,
+        values: list[A.Expr],
+        mtype: str,
+        start: tuple[int, int, bool],
+        found: list[A.UnitIs],
+    ) -> list[A.Expr]:
+        """The parts of a message's refinement that are not `Unit(field) == "u"`;
+        those, on a field that holds a value, go to `found` (a path that is not
+        one is reported as a refinement's unknown field is)."""
+        rest: list[A.Expr] = []
+        for part in values:
+            if not isinstance(part, A.UnitIs):
+                rest.append(part)
+                continue
+            target = part.target or ""
+            root, dot, tail = target.partition(".")
+            path = tail if dot and root in (SELF, self.self_name) else target
+            kind = self.field_kind(mtype, path)
+            if kind is None or kind == "msg":
+                line, col = _at(start, part.pos)
+                self.problems.append(_not_a_field(path, mtype, kind, line, col))
+                continue
+            found.append(A.UnitIs(part.kind, part.text, path, part.pos))
+        return rest
 
     def known_parts(
         self,
@@ -641,11 +676,29 @@ def _split(
     self_name: str,
     start: tuple[int, int, bool],
     problems: list[AnnotationProblem],
+    message: bool = False,
 ) -> tuple[Unit | None, list[A.Expr]]:
+    """The unit of the annotated value and the other parts; on a `message`,
+    `Unit(field) == "u"` stays among the other parts (its unit checked here)."""
     unit: Unit | None = None
     values: list[A.Expr] = []
     for part in A.conjuncts(predicate):
-        if isinstance(part, A.UnitIs) and part.target in (None, SELF, self_name):
+        if (
+            message
+            and isinstance(part, A.UnitIs)
+            and part.kind == "unit"
+            and part.target not in (None, SELF, self_name)
+        ):
+            try:
+                resolve(part.text)
+            except UnitError as err:
+                line, col = _at(start, part.pos)
+                problems.append(
+                    AnnotationProblem(rules.UNKNOWN_UNIT, line, col, err.message)
+                )
+                continue
+            values.append(part)
+        elif isinstance(part, A.UnitIs) and part.target in (None, SELF, self_name):
             try:
                 found = (
                     resolve(part.text)
@@ -705,16 +758,22 @@ def _fields_known(
         if kind is None and path == name.name and known(root):
             continue
         line, col = _at(start, name.pos)
-        what = (
-            f"is a message in {msg_type}, not a value"
-            if kind == "msg"
-            else f"is not a field of {msg_type}"
-        )
-        problems.append(
-            AnnotationProblem(rules.UNKNOWN_FIELD, line, col, f"`{path}` {what}")
-        )
+        problems.append(_not_a_field(path, msg_type, kind, line, col))
         return False
     return True
+
+
+def _not_a_field(
+    path: str, msg_type: str, kind: str | None, line: int, col: int
+) -> AnnotationProblem:
+    """RF505: a refinement of a `msg_type` names `path`, which is no field of it
+    (`kind` None) or a message in it, not a value."""
+    what = (
+        f"is a message in {msg_type}, not a value"
+        if kind == "msg"
+        else f"is not a field of {msg_type}"
+    )
+    return AnnotationProblem(rules.UNKNOWN_FIELD, line, col, f"`{path}` {what}")
 
 
 def _names_known(

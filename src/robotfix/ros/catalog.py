@@ -331,6 +331,24 @@ class MsgCatalog:
             spec = self.lookup(found.msg_type)
         return None
 
+    def unit_at(self, msg_type: str, path: str) -> str | None:
+        """The unit an interface gives the field at a dotted path inside
+        `msg_type` (REP 103, a comment, `#RobotFix#`), written on it or on a
+        message type that holds it; None without one."""
+        spec = self.lookup(msg_type)
+        parts = path.split(".")
+        for index, part in enumerate(parts):
+            if spec is None:
+                return None
+            declared = spec.units.get(".".join(parts[index:]))
+            if declared is not None:
+                return declared.text
+            found = spec.fields.get(part)
+            if found is None or found.kind != "msg" or found.array:
+                return None
+            spec = self.lookup(found.msg_type or "")
+        return None
+
     _resolved_digests: dict[str, str] | None = None  # fingerprint_types' memo
 
     def fingerprint_types(self, names: list[str]) -> str:
