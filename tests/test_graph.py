@@ -72,8 +72,13 @@ def _lines(root: Path, jobs: int = 1, cache: bool = False) -> list[str]:
         (
             "ros2_responses",
             "RF101",
-            1,
-            {"boost_server.py", "clamp_server.py", "scale_server.py"},
+            2,
+            {
+                "boost_server.py",
+                "clamp_server.py",
+                "scale_server.py",
+                "turbo_server.py",
+            },
         ),
         # a frame its subscriber assumes
         (
@@ -308,8 +313,7 @@ def test_python_read_with_the_calls_is_the_whole_walk() -> None:
 def test_what_a_client_assumes_of_the_response_is_read_where_it_receives_it() -> None:
     """A synchronous call's refined result is the client's contract (a local
     client of `main` as demos' add_two_ints_client; every assumption joined,
-    with the server's callback key); none through a future, none for a place
-    two clients are kept in."""
+    with the server's callback key); none for a place two clients are kept in."""
     found = _py(
         "from typing import Annotated\n"
         "from rclpy.node import Node\n"
@@ -340,9 +344,80 @@ def test_what_a_client_assumes_of_the_response_is_read_where_it_receives_it() ->
         ("client", "add", "(0 <= sum) and (sum <= 10)", ""),
         ("client", "one", None, ""),
         ("client", "two", None, ""),
-        ("client", "later", None, ""),
+        ("client", "later", "sum <= 10", ""),
         ("service", "serve", None, "C.handle"),
         ("client", "add", "sum <= 10", ""),
+    ]
+
+
+def test_a_futures_refined_result_is_read_only_where_its_client_is_certain() -> None:
+    """`future.result()` after `call_async` is read as the call's refined result
+    (demos' async add_two_ints_client: a local of `main`; a `self.future` of the
+    class, read in another method), only when every binding of the future is a
+    `call_async` of one client: not for a name bound to two clients' futures,
+    bound otherwise, a parameter (a done callback's), declared `global`, nor an
+    attribute a subclass of the file may bind too."""
+    found = _py(
+        "from typing import Annotated\n"
+        "from rclpy.node import Node\n"
+        "from example_interfaces.srv import AddTwoInts as A\n"
+        "Small = Annotated[A.Response, 'sum <= 10']\n"
+        "future = None\n"
+        "class C(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('c')\n"
+        "        self.cli = self.create_client(A, 'kept')\n"
+        "        self.one = self.create_client(A, 'one')\n"
+        "        self.two = self.create_client(A, 'two')\n"
+        "        self.cb = self.create_client(A, 'cb')\n"
+        "        self.glob = self.create_client(A, 'glob')\n"
+        "    def send(self, req):\n"
+        "        self.future = self.cli.call_async(req)\n"
+        "        self.cb.call_async(req).add_done_callback(self.done)\n"
+        "    def done(self, future):\n"
+        "        r: Small = future.result()\n"
+        "    def got(self):\n"
+        "        r: Small = self.future.result()\n"
+        "    def ask(self, req, which):\n"
+        "        f = self.one.call_async(req)\n"
+        "        if which:\n"
+        "            f = self.two.call_async(req)\n"
+        "        u: Small = f.result()\n"
+        "        g = self.one.call_async(req)\n"
+        "        g = g or None\n"
+        "        v: Small = g.result()\n"
+        "    def far(self, req):\n"
+        "        global future\n"
+        "        future = self.glob.call_async(req)\n"
+        "        w: Small = future.result()\n"
+        "class D(Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('d')\n"
+        "        self.base = self.create_client(A, 'base')\n"
+        "        self.other = self.create_client(A, 'other')\n"
+        "    def send(self, req):\n"
+        "        self.future = self.base.call_async(req)\n"
+        "    def got(self):\n"
+        "        r: Small = self.future.result()\n"
+        "class E(D):\n"
+        "    def send(self, req):\n"
+        "        self.future = self.other.call_async(req)\n"
+        "def main(node):\n"
+        "    cli = node.create_client(A, 'add_two_ints')\n"
+        "    future = cli.call_async(A.Request(a=2, b=3))\n"
+        "    node.spin_until_future_complete(future)\n"
+        "    response: Annotated[A.Response, 'sum == 5'] = future.result()\n"
+    )
+    got = [(e.name, e.contract) for e in found.endpoints]
+    assert got == [
+        ("kept", "sum <= 10"),
+        ("one", None),
+        ("two", None),
+        ("cb", None),
+        ("glob", None),
+        ("base", None),
+        ("other", None),
+        ("add_two_ints", "sum == 5"),
     ]
 
 

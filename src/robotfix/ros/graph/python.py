@@ -590,8 +590,7 @@ def _responses(file: _File) -> None:
     Annotated[SetSpeed.Response, "actual <= 2"] = self.cli.call(req)`; rospy's
     `proxy(req)`, `proxy.call(req)`), as the client's `contract`; every such
     assumption of one client joined; none for a place two clients are kept in.
-    (`future.result()` after `call_async` is not read: which client's future it
-    is, is not followed.)"""
+    A future's refined `result()` is read as the call's (`_future_client`)."""
     # the last name of each place a client is kept (`cli` of `C:self.cli`,
     # `:main/cli`): other calls are not looked at further
     tails = {
@@ -612,6 +611,14 @@ def _responses(file: _File) -> None:
                 continue
             if isinstance(child, ast.AnnAssign) and isinstance(child.value, ast.Call):
                 func = child.value.func
+                key = _future_client(file, child.value, scope, cls)
+                if key:  # `response: Annotated[...] = future.result()`
+                    text = _annotated_text(file, child.annotation)
+                    if text is not None:
+                        where = (child.lineno, child.col_offset, text)
+                        found.setdefault((key, False), []).append(where)
+                    todo.append((child, scope, cls))
+                    continue
                 receivers = [(func, True)]
                 if isinstance(func, ast.Attribute) and func.attr == "call":
                     receivers.append((func.value, False))
@@ -635,6 +642,67 @@ def _responses(file: _File) -> None:
         if texts:
             joined = " and ".join(f"({t})" if len(texts) > 1 else t for t in texts)
             endpoints[i] = replace(end, contract=joined)
+
+
+def _future_client(file: _File, call: ast.Call, scope: _Scope, cls: str | None) -> str:
+    """Where the client is kept (`_holder`) whose future `call` reads the result
+    of: `future.result()` of a local `future` every binding of which in its
+    function (or module) is `<client>.call_async(...)` of one client, or of a
+    `self.future` every assignment of which in its class is (the client kept in
+    `self.x`, and no base of the file's binds it), or `None`; "" otherwise (a
+    parameter, a name bound otherwise, declared `global` or `nonlocal`, a class
+    another of the file derives from)."""
+    func = call.func
+    if not (
+        isinstance(func, ast.Attribute)
+        and func.attr == "result"
+        and not call.args
+        and not call.keywords
+    ):
+        return ""
+    future = func.value
+    if isinstance(future, ast.Name) and not isinstance(scope, ast.Lambda):
+        file.bind(scope)
+        if future.id in file.params.get(id(scope), set()) or (
+            (id(scope), future.id) in file.mutated
+        ):
+            return ""
+        bound = file.bindings.get(id(scope), {}).get(future.id)
+        if any(
+            isinstance(n, (ast.Global, ast.Nonlocal)) and future.id in n.names
+            for n in walk_all(scope)
+        ):
+            return ""  # another function may bind it
+    elif (
+        isinstance(future, ast.Attribute)
+        and isinstance(future.value, ast.Name)
+        and future.value.id == "self"
+        and cls is not None
+        and not any(cls in bases for bases in file.bases.values())
+    ):
+        file._attribute(cls, future.attr, 0)  # binds every method of the class
+        bound = file.attributes.get(cls, {}).get(future.attr)
+        if any(file._attribute(b, future.attr, 0) for b in file.bases.get(cls, [])):
+            return ""  # a base of the file binds it too
+    else:
+        return ""
+    keys = set()
+    for value in bound or [None]:
+        if isinstance(value, ast.Constant) and value.value is None:
+            continue  # `self.future = None` until a call: no client's future
+        if not (
+            isinstance(value, ast.Call)
+            and isinstance(value.func, ast.Attribute)
+            and value.func.attr == "call_async"
+        ):
+            return ""
+        receiver = value.func.value
+        if isinstance(future, ast.Attribute) and not (
+            (dotted(receiver) or "").startswith("self.")
+        ):
+            return ""  # a local client of another method: its scope is not known
+        keys.add(_receiver_key(file, receiver, scope, cls))
+    return keys.pop() if len(keys) == 1 else ""
 
 
 def _tail(node: ast.expr) -> str:
