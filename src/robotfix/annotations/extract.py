@@ -323,6 +323,7 @@ class _Reader:
         if not used:
             return nested
         item: str | None = None  # a container's elements' base type
+        unknown_interface = False  # a message class the catalog does not know
         size: list[A.Expr] = []  # what a container's length satisfies
         if nested is not None:
             base, mtype = nested.base, nested.msg_type
@@ -341,6 +342,9 @@ class _Reader:
                     )
             else:
                 base, mtype = _base(typed, base_names.msg_type)
+                unknown_interface = base == "other" and _interface_class(
+                    base_names.qualname(typed)
+                )
         unit = nested.unit if nested is not None else None
         parts = [nested.predicate] if nested is not None else []
         texts = [nested.text] if nested is not None else []
@@ -358,6 +362,10 @@ class _Reader:
                 # and a name unknown there is reported there (at its own line)
                 constants = dict(text_names.constants)
                 values = [A.substitute(v, constants) for v in values]
+                values = self.known_parts(values, mtype, start, [])
+            elif unknown_interface:
+                # a message type the catalog lacks (RF508 says its fields are not
+                # checked): a name of it is no error, the part is not used
                 values = self.known_parts(values, mtype, start, [])
             else:
                 values = self.known_parts(values, mtype, start, self.problems)
@@ -660,6 +668,13 @@ def _is_refinement(predicate: A.Expr, self_name: str) -> bool:
         if isinstance(node, A.Name) and node.name.split(".")[0] in (SELF, self_name):
             return True
     return False
+
+
+def _interface_class(qualified: str | None) -> bool:
+    """`pkg.srv.AddTwoInts.Request`, `pkg.msg.Float64`: a class of a ROS interface
+    module (`msg`, `srv`, `action`), whether or not the catalog knows it."""
+    parts = (qualified or "").split(".")
+    return any(p in ("msg", "srv", "action") for p in parts[1:-1])
 
 
 def _base(
