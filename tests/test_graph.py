@@ -1132,3 +1132,38 @@ def test_a_clash_a_remapping_makes_points_at_the_remapping(tmp_path: Path) -> No
             note.message == "this remapping makes `key_vel` of node `/keys` `/cmd_vel`"
         )
         assert (Path(note.path or "").name, note.line) == ("teleop.launch", 3)
+
+
+def test_an_extensionless_rospy_script_meets_its_subscribers_contract(
+    tmp_path: Path,
+) -> None:
+    """ROS 1's usual layout: `scripts/draw_square` with a shebang and no `.py`.
+    Its publisher was read for the graph but never checked against a contract
+    (only `.py` files were taken for Python; the second fresh-eyes round, c08)."""
+    write(tmp_path / "bringup" / "package.xml", PACKAGE.format("bringup"))
+    write(
+        tmp_path / "bringup" / "launch" / "all.launch",
+        '<launch>\n  <node pkg="guard" type="draw_square" name="draw_square"/>\n'
+        '  <node pkg="guard" type="guard" name="guard"/>\n</launch>\n',
+    )
+    write(tmp_path / "guard" / "package.xml", PACKAGE.format("guard"))
+    write(
+        tmp_path / "guard" / "scripts" / "guard",
+        "#!/usr/bin/env python\nfrom typing import Annotated\nimport rospy\n"
+        "from geometry_msgs.msg import Twist\n"
+        "def on_cmd(msg: Annotated[Twist, 'abs(linear.x) <= 2.0']):\n"
+        "    rospy.loginfo(msg.linear.x)\n"
+        "rospy.init_node('guard')\n"
+        "rospy.Subscriber('turtle1/cmd_vel', Twist, on_cmd)\n",
+    )
+    write(
+        tmp_path / "guard" / "scripts" / "draw_square",
+        "#!/usr/bin/env python\nimport rospy\nfrom geometry_msgs.msg import Twist\n"
+        "rospy.init_node('draw_square')\n"
+        "pub = rospy.Publisher('turtle1/cmd_vel', Twist, queue_size=1)\n"
+        "twist = Twist()\ntwist.linear.x = 4.0\npub.publish(twist)\n",
+    )
+    found = check_paths([tmp_path], Config(root=tmp_path)).diagnostics
+    assert [(Path(d.path).name, d.span.line, d.code) for d in found] == [
+        ("draw_square", 8, "RF101")
+    ]

@@ -36,7 +36,7 @@ from typing import TYPE_CHECKING, Any
 from robotfix import messages
 from robotfix.diagnostics import Diagnostic, Note
 from robotfix.fs import UnreadableError, probe, read_regular
-from robotfix.ros.executables import cpp_executable_files
+from robotfix.ros.executables import CPP_SOURCE_SUFFIXES, cpp_executable_files
 from robotfix.ros.graph import qos as Q
 from robotfix.ros.graph.build import End, Graph, Started, build
 from robotfix.ros.graph.cpp import MAX_CPP_BYTES, read_cpp
@@ -491,7 +491,7 @@ def contracts(result: GraphResult) -> dict[str, list[Contract]]:
                 key = _sender_key(endpoint)
                 if (
                     endpoint.kind != sending
-                    or not sender.path.endswith(".py")
+                    or sender.path.endswith(CPP_SOURCE_SUFFIXES)  # Python only
                     or len(holders.get((sender.path, key), ())) != 1
                 ):
                     continue
