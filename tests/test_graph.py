@@ -1167,3 +1167,29 @@ def test_an_extensionless_rospy_script_meets_its_subscribers_contract(
     assert [(Path(d.path).name, d.span.line, d.code) for d in found] == [
         ("draw_square", 8, "RF101")
     ]
+
+
+def test_a_frame_contract_on_any_message_with_a_header(tmp_path: Path) -> None:
+    """`Frame('laser')` on a `sensor_msgs/LaserScan` callback: the header's frame
+    is compared for every message type with a `header`, not only the geometry
+    types whose data the header frames (the second fresh-eyes round's c02, after
+    f1tenth's gym_bridge, was a miss); the near miss names the frame assumed."""
+    listener = (
+        "from typing import Annotated\nimport rospy\n"
+        "from sensor_msgs.msg import LaserScan\n"
+        "def on_scan(msg: Annotated[LaserScan, \"Frame('laser')\"]):\n"
+        "    rospy.loginfo(msg.range_max)\n"
+        "rospy.init_node('follower')\n"
+        "rospy.Subscriber('scan', LaserScan, on_scan)\n"
+    )
+    talker = (
+        "import rospy\nfrom sensor_msgs.msg import LaserScan\n"
+        "rospy.init_node('bridge')\n"
+        "pub = rospy.Publisher('scan', LaserScan, queue_size=1)\n"
+        "scan = LaserScan()\nscan.header.frame_id = 'base_link'\npub.publish(scan)\n"
+        "ok = LaserScan()\nok.header.frame_id = 'laser'\npub.publish(ok)\n"
+    )
+    found = _ros1_system(
+        tmp_path, "scanner", {"follower.py": listener, "bridge.py": talker}
+    )
+    assert found == [("bridge.py", 7, "RF201")]

@@ -209,9 +209,15 @@ def check_message(
     not known compares with nothing."""
     expected = frame_of(unit)
     obj = state.heap.get(ref)
-    if expected is None or obj is None or not FRAMED_FIELDS.get(obj.type):
+    if expected is None or obj is None:
         return
-    frame_path = FRAMED_FIELDS[obj.type][0][1]
+    if FRAMED_FIELDS.get(obj.type):
+        frame_path = FRAMED_FIELDS[obj.type][0][1]
+    else:  # any message with a header (sensor_msgs/LaserScan, Imu, Range, ...)
+        spec = ctx.catalog.field_at(obj.type, "header.frame_id")
+        if spec is None or spec.kind != "str" or spec.array:
+            return
+        frame_path = "header.frame_id"
     named = peek(state, ref, frame_path)
     frame = known_frame(named)
     if named is None or frame is None or frame == normalize(expected):
