@@ -606,12 +606,12 @@ class Binder(CallEvaluator):
                 value = Value("instance", name=function.class_name or "")
             elif arg.arg in arriving:
                 value = arriving[arg.arg](state)
-                if decl is not None and decl.field_units and value.ref is not None:
-                    # the units it gives fields hold of what arrives (its other
-                    # parts are the publishers' to prove: contracts across nodes)
-                    units = self.fields.message_rules(decl, arg.arg, {})
-                    units = tuple(u for u in units if u.unit is not None)
-                    self.fields.assume_rules(state, value.ref, units, arg.arg)
+                if decl is not None and decl.base == "msg" and value.ref is not None:
+                    # what the refinement says holds of what arrives: the
+                    # senders prove it (contracts across nodes)
+                    lookup = self.refinement_lookup(decl, state)
+                    rules = self.fields.message_rules(decl, arg.arg, lookup)
+                    self.fields.assume_rules(state, value.ref, rules, arg.arg)
             elif decl is not None and decl.base == "msg":
                 lookup = self.refinement_lookup(decl, state)
                 value = self.refined.assumed(state, arg.arg, decl, lookup)
