@@ -15,12 +15,12 @@ import os
 from pathlib import Path
 
 from robotfix.fs import UnreadableError, read_regular
+from robotfix.interface_names import INTERFACE_MODULES
 from robotfix.project.modules import ModuleIndex, imported_names
 from robotfix.ros.catalog import MsgCatalog, normalize
 from robotfix.ros.msg import read_interface
 from robotfix.source import SourceFile
 
-INTERFACE_MODULES = ("msg", "srv", "action")
 SECTIONS = ("", "_Request", "_Response", "_Goal", "_Result", "_Feedback")
 ROS1_SUFFIXES = ("Request", "Response", "Goal", "Result", "Feedback", "Action")
 MAX_TYPES = 2000  # nested types followed per document

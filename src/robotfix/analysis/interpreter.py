@@ -35,11 +35,7 @@ from robotfix.analysis.values import NONE, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import named_code, named_number
-
-# Python packages with a `msg`/`srv`/`action` module that is not an interface package.
-CLIENT_LIBRARIES = frozenset(
-    {"rclpy", "rospy", "actionlib", "tf", "tf2_ros", "rosbag", "launch", "launch_ros"}
-)
+from robotfix.interface_names import interface_class
 
 
 def analyze_module(ctx: FileContext) -> None:
@@ -392,11 +388,9 @@ class Interpreter(CompoundWalker):
 
     def _note_unknown_interface(self, node: ast.ImportFrom, qualified: str) -> None:
         """RF508, only in files that use refinements: unannotated code stays silent."""
-        parts = qualified.split(".")
         if (
-            len(parts) == 3
-            and parts[1] in ("msg", "srv", "action")
-            and parts[0] not in CLIENT_LIBRARIES
+            qualified.count(".") == 2
+            and interface_class(qualified)
             and "Annotated" in self.ctx.source.text
         ):
             self.ctx.report(

@@ -28,6 +28,7 @@ from robotfix.annotations import foreign
 from robotfix.annotations.parser import AnnotationSyntaxError, parse_predicate
 from robotfix.annotations.units import Unit, UnitError, label, resolve
 from robotfix.diagnostics import Rule
+from robotfix.interface_names import interface_class
 
 ANNOTATED = frozenset({"typing.Annotated", "typing_extensions.Annotated"})
 BASE_TYPES = {"int": "int", "float": "float", "bool": "bool", "str": "str"}
@@ -342,7 +343,7 @@ class _Reader:
                     )
             else:
                 base, mtype = _base(typed, base_names.msg_type)
-                unknown_interface = base == "other" and _interface_class(
+                unknown_interface = base == "other" and interface_class(
                     base_names.qualname(typed)
                 )
         unit = nested.unit if nested is not None else None
@@ -668,13 +669,6 @@ def _is_refinement(predicate: A.Expr, self_name: str) -> bool:
         if isinstance(node, A.Name) and node.name.split(".")[0] in (SELF, self_name):
             return True
     return False
-
-
-def _interface_class(qualified: str | None) -> bool:
-    """`pkg.srv.AddTwoInts.Request`, `pkg.msg.Float64`: a class of a ROS interface
-    module (`msg`, `srv`, `action`), whether or not the catalog knows it."""
-    parts = (qualified or "").split(".")
-    return any(p in ("msg", "srv", "action") for p in parts[1:-1])
 
 
 def _base(
