@@ -76,7 +76,7 @@ import hashlib
 import itertools
 import re
 from collections import OrderedDict
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -533,25 +533,26 @@ def _from_walk(key: object, nodes: list[ast.AST]) -> object:
 _NUMBER_CHARS = frozenset("0123456789_.eE+-jJ")
 
 
+def _same_ends(a: Sequence[object], b: Sequence[object]) -> tuple[int, int]:
+    """How many items two sequences share at their start, and then at their end."""
+    first, shortest = 0, min(len(a), len(b))
+    while first < shortest and a[first] == b[first]:
+        first += 1
+    last = 0
+    while last < shortest - first and a[-1 - last] == b[-1 - last]:
+        last += 1
+    return first, last
+
+
 def _numbers_only(before: str, after: str) -> bool:
     """Whether the one region where two texts differ holds only characters of
     numbers: otherwise text that `skeleton` keeps as it is changed, and so did
     the skeleton."""
     old, new = before.splitlines(keepends=True), after.splitlines(keepends=True)
-    first, shortest = 0, min(len(old), len(new))
-    while first < shortest and old[first] == new[first]:
-        first += 1
-    last = 0
-    while last < shortest - first and old[-1 - last] == new[-1 - last]:
-        last += 1
+    first, last = _same_ends(old, new)  # whole lines first: cheap on long texts
     a = "".join(old[first : len(old) - last])
     b = "".join(new[first : len(new) - last])
-    start, end = 0, min(len(a), len(b))
-    while start < end and a[start] == b[start]:
-        start += 1
-    tail = 0
-    while tail < end - start and a[-1 - tail] == b[-1 - tail]:
-        tail += 1
+    start, tail = _same_ends(a, b)
     if "#" in a[a.rfind("\n", 0, start) + 1 : start]:
         return False  # in a comment (or after a `#` in a string: only slower)
     return _NUMBER_CHARS.issuperset(a[start : len(a) - tail]) and (
