@@ -25,7 +25,7 @@ from robotfix.ros.graph.model import (
     Endpoint,
     FileGraph,
 )
-from robotfix.ros.graph.names import expand, namespace_of, remap
+from robotfix.ros.graph.names import expand, namespace_of, remap_rule
 from robotfix.ros.launch.model import NodeEntry, Place
 
 FAMILY = {
@@ -194,29 +194,11 @@ def _add(
         named = expand(
             endpoint.name, instance.namespace, instance.name, endpoint.handle
         )
-        resolved, uncertain = remap(
+        resolved, uncertain, rule = remap_rule(
             named, instance.remaps, instance.namespace, instance.name
         )
-        graph.ends.append(
-            End(
-                index,
-                path,
-                endpoint,
-                resolved,
-                not uncertain,
-                _rule_place(named, resolved, instance),
-            )
-        )
-
-
-def _rule_place(
-    named: str | None, resolved: str | None, instance: Instance
-) -> Place | None:
-    """Where the remapping rule that turned `named` into `resolved` is written
-    (the first rule that matches, as `remap` applies it); None when no rule did."""
-    if named is None or resolved == named:
-        return None
-    for (source, _), place in zip(instance.remaps, instance.remapped_at, strict=False):
-        if expand(source, instance.namespace, instance.name) == named:
-            return place
-    return None
+        # where the launch file's rule that renamed it is written (`remapped_at`
+        # is parallel to `remaps`)
+        renamed = rule is not None and resolved != named
+        place = instance.remapped_at[rule] if renamed and rule is not None else None
+        graph.ends.append(End(index, path, endpoint, resolved, not uncertain, place))

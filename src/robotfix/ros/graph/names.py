@@ -78,15 +78,26 @@ def remap(
     """The name after the first rule that matches it (rcl's order: the first
     rule wins), and whether any rule could not be read (a rule with an unknown
     side may match: the name is then not certain)."""
+    out, uncertain, _ = remap_rule(resolved, rules, namespace, node)
+    return out, uncertain
+
+
+def remap_rule(
+    resolved: str | None,
+    rules: list[tuple[str | None, str | None]],
+    namespace: str | None,
+    node: str | None,
+) -> tuple[str | None, bool, int | None]:
+    """`remap`, with the index of the rule that matched (None: none did)."""
     if resolved is None:
-        return None, False
+        return None, False, None
     uncertain = False
-    for source, target in rules:
+    for index, (source, target) in enumerate(rules):
         expanded = expand(source, namespace, node)
         if expanded is None:
             uncertain = True
             continue
         if expanded == resolved:
             out = expand(target, namespace, node)
-            return out, uncertain or out is None
-    return resolved, uncertain
+            return out, uncertain or out is None, index
+    return resolved, uncertain, None
