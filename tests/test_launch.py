@@ -434,6 +434,15 @@ def test_a_launch_files_suppressions_are_judged_by_the_check_that_owns_them(
     ]
 
 
+# a launch file that names racer's parameter files in its share folder, as real ones do
+SHARE_LAUNCH = (
+    "import os\nfrom ament_index_python.packages import get_package_share_directory\n"
+    "from launch import LaunchDescription\nfrom launch_ros.actions import Node\n"
+    "def generate_launch_description():\n"
+    "    share = get_package_share_directory('racer')\n"
+)
+
+
 @pytest.mark.parametrize(
     ("names", "keys", "warned"),
     [
@@ -470,12 +479,7 @@ def test_a_parameter_file_that_gives_its_nodes_nothing_is_a_warning(
     )
     write(
         pkg / "launch" / "racer.launch.py",
-        "import os\nfrom ament_index_python.packages import "
-        "get_package_share_directory\n"
-        "from launch import LaunchDescription\nfrom launch_ros.actions import Node\n"
-        "def generate_launch_description():\n"
-        "    share = get_package_share_directory('racer')\n"
-        "    return LaunchDescription([\n" + entries + "    ])\n",
+        SHARE_LAUNCH + "    return LaunchDescription([\n" + entries + "    ])\n",
     )
     found = check_paths([pkg], Config(root=tmp_path)).diagnostics
     lines = [
@@ -497,12 +501,7 @@ def test_a_cached_run_judges_a_passed_file_again_when_the_namespace_changes(
     )
     launch = write(
         pkg / "launch" / "racer.launch.py",
-        "import os\nfrom ament_index_python.packages import "
-        "get_package_share_directory\n"
-        "from launch import LaunchDescription\nfrom launch_ros.actions import Node\n"
-        "def generate_launch_description():\n"
-        "    share = get_package_share_directory('racer')\n"
-        "    return LaunchDescription([\n"
+        SHARE_LAUNCH + "    return LaunchDescription([\n"
         "        Node(package='racer', executable='racer', name='racer',\n"
         "             namespace='robot1',\n"
         "             parameters=[os.path.join(share, 'config', 'fleet.yaml')]),\n"

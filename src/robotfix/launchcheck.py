@@ -308,15 +308,16 @@ class LaunchRun:
                 isinstance(p, FileParam) and p.path == path for p in s.entry.parameters
             )
         ]
+        names = [e.name.rsplit("/", 1)[-1] if e.name else "" for e in passing]
         if (
             not keys
             or not passing
             or any("*" in k for k in keys)
-            or any(not e.name or "$" in e.name or "{" in e.name for e in passing)
+            or any(not n or "$" in n or "{" in n for n in names)
             or any(
-                _keyed_for(k, {e.name.rsplit("/", 1)[-1]}, e.namespace)  # type: ignore[union-attr]
+                _keyed_for(k, {n}, e.namespace)
                 for k in keys
-                for e in passing
+                for n, e in zip(names, passing, strict=True)
             )
         ):
             return []
@@ -324,14 +325,9 @@ class LaunchRun:
         section = Note(f"the section `{keys[0]}`", path, first.line)
         return [
             messages.section_applies_to_none(
-                e.place.path,
-                e.place.line,
-                e.place.col,
-                e.name.rsplit("/", 1)[-1],  # type: ignore[union-attr]
-                keys,
-                section,
+                e.place.path, e.place.line, e.place.col, n, keys, section
             )
-            for e in passing
+            for n, e in zip(names, passing, strict=True)
         ]
 
     def _known(self, table: Table) -> set[str]:
