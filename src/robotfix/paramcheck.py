@@ -56,6 +56,9 @@ MENTIONS = {
     "ros2": (b"declare_parameter", b"get_parameter", b"ParamListener"),
     "ros1": (b"rospy",),
 }
+# a summary with its rospy node names and the names its rospy parameters resolve
+# to (`ros1_name`)
+Rospy = tuple[Summary, list[str], set[str]]
 # what a run's check of a Python file found: the words of MENTIONS its bytes hold,
 # and its summary (None: none made, and so made here if one of them is wanted)
 Known = tuple[tuple[bytes, ...], Summary | None]
@@ -471,6 +474,9 @@ class Table:
         self.real = {s.path: os.path.realpath(s.path) for s in summaries}
         self.packages = {s.path: _package_of(Path(s.path)) for s in summaries}
         self._by_node: dict[str, list[tuple[Summary, str, list[str]]]] = {}
+        # ROS 1: each summary's rospy nodes and parameter names, by package
+        self._declared: list[Rospy] | None = None
+        self._by_package: dict[Path | None, list[Rospy]] = {}
         # ROS 2 owners whose parameters a file may set: (summary, owner, names)
         self.owners = [
             (summary, owner, summary.names_of(owner))
@@ -535,21 +541,13 @@ class Table:
 
     def ros1(self, entry: P.Entry, package: Path | None) -> list[Parameter]:
         found: list[Parameter] = []
-        for summary in self.summaries:
-            if package is not None and self.packages[summary.path] != package:
-                continue
-            nodes = summary.node_names.get(ROSPY, [])
-            head, _, rest = entry.name.partition("/")
+        head, _, rest = entry.name.partition("/")
+        for summary, nodes, declared in self._ros1(package):
             wanted = {f"/{entry.name}", f"~{entry.name}"}
             if rest and head in nodes:
                 wanted.add(f"~{rest}")
             for name in sorted(wanted):
-                sites = [
-                    d
-                    for d in summary.decls
-                    if d.ros == 1 and ros1_name(d.name, nodes) == name
-                ]
-                if sites:
+                if name in declared:
                     candidate = Parameter(name, 1)
                     candidate.refinements = [
                         a
@@ -558,6 +556,30 @@ class Table:
                     ]
                     found.append(candidate)
         return found
+
+    def _ros1(self, package: Path | None) -> list[Rospy]:
+        """The summaries with rospy parameters a flat file of `package` may set
+        (all for None), each with its rospy node names and the names its
+        parameters resolve to (`ros1_name`): found once per package and summary,
+        not for every value of every file."""
+        if package not in self._by_package:
+            if self._declared is None:
+                found = [
+                    (
+                        s,
+                        nodes,
+                        {ros1_name(d.name, nodes) for d in s.decls if d.ros == 1},
+                    )
+                    for s in self.summaries
+                    for nodes in [s.node_names.get(ROSPY, [])]
+                ]
+                self._declared = [one for one in found if one[2]]  # others: none
+            self._by_package[package] = [
+                one
+                for one in self._declared
+                if package is None or self.packages[one[0].path] == package
+            ]
+        return self._by_package[package]
 
 
 def ros1_name(name: str, nodes: list[str]) -> str:
