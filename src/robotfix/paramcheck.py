@@ -24,7 +24,6 @@ parameter nobody declares is silent.
 
 from __future__ import annotations
 
-import os
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -39,7 +38,7 @@ from robotfix.config import Config
 from robotfix.cppparams import CPP_TYPE_WHY, CppParams
 from robotfix.diagnostics import Diagnostic, Span
 from robotfix.faults import Fault, guard
-from robotfix.fs import UnreadableError, read_text
+from robotfix.fs import UnreadableError, probe, read_text
 from robotfix.messages import Declared
 from robotfix.ros import paramfile as P
 from robotfix.ros import yamlfile as Y
@@ -198,7 +197,7 @@ def check_parameter_files(
     words = tuple(w for layout in sorted(layouts) for w in MENTIONS.get(layout, ()))
     if fixed is not None:  # only the code of the entries still to check
         started = {f for name in todo for s in by_file[name] for f in s.files}
-        python_files = [p for p in python_files if os.path.realpath(p) in started]
+        python_files = [p for p in python_files if probe("realpath", p) in started]
     found = (
         _summaries(python_files, words, known or {}, project, faults, config)
         if words and (fixed is None or todo)
@@ -328,7 +327,7 @@ def _summaries(
         mentioned, summary = known.get(str(path), (None, None))
         if mentioned is not None and not any(w in mentioned for w in words):
             continue
-        real = os.path.realpath(path)
+        real = probe("realpath", path)
         if real in seen:
             continue
         seen.add(real)
@@ -471,7 +470,7 @@ class Table:
             name: {*(renamed or {}).get(name, ()), *self.cpp.renamed.get(name, ())}
             for name in {*(renamed or {}), *self.cpp.renamed}
         }
-        self.real = {s.path: os.path.realpath(s.path) for s in summaries}
+        self.real = {s.path: probe("realpath", s.path) for s in summaries}
         self.packages = {s.path: _package_of(Path(s.path)) for s in summaries}
         self._by_node: dict[str, list[tuple[Summary, str, list[str]]]] = {}
         # ROS 1: each summary's rospy nodes and parameter names, by package
