@@ -92,3 +92,58 @@ def test_each_package_manifest_is_read_once_for_the_launch_files(
     )
     assert launchcheck._packages(files) == {"good": tmp_path / "good"}
     assert sorted(read) == [tmp_path / "bad", tmp_path / "good"]
+
+
+def _counting_realpath(monkeypatch: pytest.MonkeyPatch) -> list[str]:
+    import os
+
+    asked: list[str] = []
+    realpath = os.path.realpath
+    monkeypatch.setattr(
+        os.path,
+        "realpath",
+        lambda p, **k: asked.append(os.fspath(p)) or realpath(p, **k),
+    )
+    return asked
+
+
+def test_discovery_resolves_no_walked_folder_again(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The walk knows each folder's real path (its parent's and its name, when it
+    is no link), but the `exclude` of the folder's nearest configuration looked
+    for that configuration from `os.path.realpath` of the folder again (1,004 of
+    the issue-25 corpus's 3,541 real paths); now it is handed over."""
+    from robotfix.config import Config, Flags
+    from robotfix.discovery import discover
+
+    folder = tmp_path
+    for i in range(12):
+        folder = folder / f"level{i}"
+        (folder / "side").mkdir(parents=True)
+        (folder / "side" / "node.py").write_text("x = 1\n")
+    config = Config(root=tmp_path, flags=Flags())
+    asked = _counting_realpath(monkeypatch)
+    found = discover([tmp_path], config)
+    assert len(found.python_files) == 12
+    assert len(asked) < 12, asked
+
+
+def test_a_run_asks_the_disk_each_real_path_once(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """The stages after the checks asked `os.path.realpath` of one file many times
+    (a C++ file for its node's parameters and for the graph; a Python file for
+    the parameter table and for its summary): 3,541 times for 918 paths on the
+    issue-25 corpus. Now a run answers each probe once (`fs.answering`)."""
+    from collections import Counter
+
+    from robotfix.api import check_paths
+    from robotfix.config import Config
+
+    workspace = Path(__file__).parent / "cases" / "cpp_params" / "nav_ws"
+    plain = check_paths([workspace], Config(root=workspace)).diagnostics
+    asked = _counting_realpath(monkeypatch)
+    assert check_paths([workspace], Config(root=workspace)).diagnostics == plain
+    again = {p: n for p, n in Counter(asked).items() if n > 1}
+    assert not again, again
