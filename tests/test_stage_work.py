@@ -147,3 +147,49 @@ def test_a_run_asks_the_disk_each_real_path_once(
     assert check_paths([workspace], Config(root=workspace)).diagnostics == plain
     again = {p: n for p, n in Counter(asked).items() if n > 1}
     assert not again, again
+
+
+def test_composable_nodes_sort_the_code_files_once(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Each composable node's entry (its package's C++ files are the code it may
+    load) sorted every code file of the run again: 562 sorts of some 800 files
+    on the issue-25 corpus; now one sort, whatever the number of entries."""
+    from types import SimpleNamespace
+
+    from robotfix import graphcheck
+    from robotfix.launchcheck import _Started
+    from robotfix.ros.graph.model import FileGraph
+    from robotfix.ros.launch.model import NodeEntry, Place
+
+    package = tmp_path / "pkg"
+    (package / "src").mkdir(parents=True)
+    (package / "package.xml").write_text("<package><name>pkg</name></package>")
+    code = {}
+    for i in range(5):
+        (package / "src" / f"c{i}.cpp").write_text("")
+        code[str(package / "src" / f"c{i}.cpp")] = FileGraph()
+
+    def entries(count: int) -> SimpleNamespace:
+        started = [
+            _Started(
+                NodeEntry(2, Place("l.py", i, 0), "pkg", None, None, "", plugin="a::B")
+            )
+            for i in range(count)
+        ]
+        return SimpleNamespace(packages={"pkg": package}, started=started)
+
+    sorts: list[int] = []  # the sorts of every code file (an entry's own: not)
+    monkeypatch.setattr(
+        graphcheck,
+        "sorted",
+        lambda items, **k: sorts.append(len(items)) or sorted(items, **k),
+        raising=False,
+    )
+    counts = []
+    for count in (2, 20):
+        sorts.clear()
+        found = graphcheck.started_entries(entries(count), code)  # type: ignore[arg-type]
+        assert [s.files for s in found] == [sorted(code)] * count
+        counts.append(sum(1 for n in sorts if n == len(code)))
+    assert counts[0] == counts[1]
