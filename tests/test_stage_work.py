@@ -153,8 +153,9 @@ def test_composable_nodes_sort_the_code_files_once(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     """Each composable node's entry (its package's C++ files are the code it may
-    load) sorted every code file of the run again: 562 sorts of some 800 files
-    on the issue-25 corpus; now one sort, whatever the number of entries."""
+    load) sorted every code file of the run again and looked through them for
+    its package's: 562 sorts and scans of some 800 files on the issue-25
+    corpus; now one sort, and one scan per package."""
     from types import SimpleNamespace
 
     from robotfix import graphcheck
@@ -186,12 +187,21 @@ def test_composable_nodes_sort_the_code_files_once(
         lambda items, **k: sorts.append(len(items)) or sorted(items, **k),
         raising=False,
     )
+    probed: list[str] = []  # the package's files looked for: once, not per entry
+    probe = graphcheck.probe
+    monkeypatch.setattr(
+        graphcheck,
+        "probe",
+        lambda kind, path: probed.append(str(path)) or probe(kind, path),
+    )
     counts = []
     for count in (2, 20):
         sorts.clear()
+        probed.clear()
         found = graphcheck.started_entries(entries(count), code)  # type: ignore[arg-type]
         assert [s.files for s in found] == [sorted(code)] * count
         counts.append(sum(1 for n in sorts if n == len(code)))
+        assert probed.count(str(package)) == 1
     assert counts[0] == counts[1]
 
 
