@@ -234,3 +234,31 @@ def test_a_cpp_call_that_names_no_maker_is_not_read(
         assert [(e.kind, e.name) for e in graph.endpoints] == [("publisher", "chatter")]
         counts.append(len(decoded))
     assert counts[0] == counts[1]
+
+
+def test_looking_for_a_configuration_makes_no_path_per_folder(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """`config.find` made a Path of the folder, of all its parents and of two
+    candidate files for each folder a walk asked about (a fifth of the stages'
+    26,000 Path objects on the issue-25 corpus); the folders are text now, and
+    only a configuration found is a Path."""
+    from robotfix import config
+
+    deep = tmp_path / "a" / "b" / "c" / "d"
+    deep.mkdir(parents=True)
+    (tmp_path / "a" / "robotfix.toml").write_text("strict = true\n")
+    memo: dict[str, Path | None] = {}
+    made: list[object] = []
+    real_path = config.Path
+
+    def counted(*parts: object) -> Path:
+        made.append(parts)
+        return real_path(*parts)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(config, "Path", counted)
+    assert config.find(tmp_path / "a", memo) == tmp_path / "a" / "robotfix.toml"
+    made.clear()
+    for folder in (deep.parent.parent, deep.parent, deep):
+        assert config.find(folder, memo) == tmp_path / "a" / "robotfix.toml"
+    assert made == []

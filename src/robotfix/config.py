@@ -17,7 +17,6 @@ patterns, which add up), comes from the configuration nearest the first path.
 from __future__ import annotations
 
 import fnmatch
-import itertools
 import os
 import re
 from dataclasses import dataclass, field, replace
@@ -100,7 +99,7 @@ class Config:
         if folder_name in self._spelled:
             found = self._spelled[folder_name]
         else:
-            found = find(Path(folder_name), self._found, real if folder else None)
+            found = find(folder_name, self._found, real if folder else None)
             self._spelled[folder_name] = found
         if found == self.source:
             return self
@@ -214,33 +213,41 @@ def matches(pattern: str, relative: str, folder: bool = False) -> bool:
 
 
 def find(
-    start: Path, memo: dict[str, Path | None] | None = None, real: str | None = None
+    start: str | os.PathLike[str],
+    memo: dict[str, Path | None] | None = None,
+    real: str | None = None,
 ) -> Path | None:
     """The nearest configuration at or above `start` (a file: its folder): a
     `robotfix.toml`, or a `pyproject.toml` with a [tool.robotfix] table. `real`:
-    `start`'s real path, when known. Only the folders up to the first in `memo`
-    are made and looked at."""
-    here = Path(real if real is not None else os.path.realpath(start))
-    if not os.path.isdir(here):  # os.path never raises (a path too long, a loop)
-        here = here.parent
+    `start`'s real path, when known. The folders are real paths, walked up as
+    text: only a configuration found is made a Path (a walk asks for every
+    folder, whose parent `memo` knows)."""
+    folder = real if real is not None else os.path.realpath(start)
+    if not os.path.isdir(folder):  # os.path never raises (a path too long, a loop)
+        folder = os.path.dirname(folder)
     seen: list[str] = []  # the folders looked at, each with the answer
     found: Path | None = None
-    for folder in itertools.chain((here,), here.parents):
-        if memo is not None and str(folder) in memo:
-            found = memo[str(folder)]
+    while True:
+        if memo is not None and folder in memo:
+            found = memo[folder]
             break
-        seen.append(str(folder))
-        candidates = [folder / name for name in CONFIG_FILES]
-        found = next((c for c in candidates if _is_config(c)), None)
-        if found is not None:
+        seen.append(folder)
+        candidates = [os.path.join(folder, name) for name in CONFIG_FILES]
+        config = next((c for c in candidates if _is_config(c)), None)
+        if config is not None:
+            found = Path(config)
             break
+        parent = os.path.dirname(folder)
+        if parent == folder:
+            break
+        folder = parent
     if memo is not None:
         memo.update(dict.fromkeys(seen, found))
     return found
 
 
-def _is_config(path: Path) -> bool:
-    return os.path.isfile(path) and _table(path) is not None
+def _is_config(path: str) -> bool:
+    return os.path.isfile(path) and _table(Path(path)) is not None
 
 
 def load(start: Path, base: Config | None = None) -> Config:
