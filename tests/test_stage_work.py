@@ -262,3 +262,40 @@ def test_looking_for_a_configuration_makes_no_path_per_folder(
     for folder in (deep.parent.parent, deep.parent, deep):
         assert config.find(folder, memo) == tmp_path / "a" / "robotfix.toml"
     assert made == []
+
+
+def test_a_runs_real_paths_are_os_paths_and_resolve_each_folder_once(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """In a run (`fs.answering`) a file's real path is its folder's, asked once,
+    and its name, unless it is a symlink: `os.path.realpath` looked at every
+    folder above each path again (38,831 lstats on the issue-25 corpus, whose
+    repositories are symlinks). Every answer is `os.path.realpath`'s."""
+    import os
+
+    from robotfix import fs
+
+    real = tmp_path / "real"
+    (real / "pkg" / "src").mkdir(parents=True)
+    (tmp_path / "linked").symlink_to(real)
+    (real / "pkg" / "src" / "a.cpp").write_text("")
+    (real / "pkg" / "src" / "b.cpp").symlink_to(real / "pkg" / "src" / "a.cpp")
+    (real / "loop").symlink_to(real / "loop")
+    monkeypatch.chdir(tmp_path)
+    names = [
+        *(str(tmp_path / "linked" / "pkg" / "src" / f"f{i}.cpp") for i in range(20)),
+        str(tmp_path / "linked" / "pkg" / "src" / "a.cpp"),
+        str(tmp_path / "linked" / "pkg" / "src" / "b.cpp"),
+        str(tmp_path / "linked" / "pkg" / "src" / ".." / "src" / "a.cpp"),
+        str(tmp_path / "linked" / "loop" / "x" / "y.cpp"),
+        str(tmp_path / "linked" / "pkg" / "src") + "/",
+        "linked/pkg/src/a.cpp",
+        "./linked/pkg/../pkg/src/a.cpp",
+        "a.cpp",
+        "/",
+    ]
+    expected = [os.path.realpath(n) for n in names]
+    asked = _counting_realpath(monkeypatch)
+    with fs.answering():
+        assert [fs.probe("realpath", n) for n in names] == expected
+    assert len(asked) < 12, asked

@@ -174,13 +174,28 @@ def probe(kind: str, path: str | os.PathLike[str]) -> Any:
     known = _ANSWERS[-1] if _ANSWERS else None
     if known is not None and (kind, name) in known:
         answer = known[(kind, name)]
+    elif kind == "isfile":
+        answer = os.path.isfile(name)
     else:
-        answer = os.path.isfile(name) if kind == "isfile" else os.path.realpath(name)
-        if known is not None:
-            known[(kind, name)] = answer
+        answer = _realpath(name, known)
+    if known is not None:
+        known[(kind, name)] = answer
     for trace in _NOTING:
         trace.probes[(kind, name)] = answer
     return answer
+
+
+def _realpath(name: str, known: dict[tuple[str, str], Any] | None) -> str:
+    """`os.path.realpath(name)`; in a run, a file that is no symlink is its
+    folder's real path (asked once: `known`) and its name: `realpath` looks
+    at every folder above a path again (an lstat each: 38,831 for the 4,385
+    real paths of the issue-25 corpus's stages, its repositories symlinks)."""
+    folder, base = os.path.split(name)
+    if known is None or not folder or base in ("", ".", "..") or os.path.islink(name):
+        return os.path.realpath(name)
+    if ("realpath", folder) not in known:
+        known[("realpath", folder)] = _realpath(folder, known)
+    return os.path.join(known[("realpath", folder)], base)
 
 
 def read_head(path: str | os.PathLike[str], size: int) -> bytes:
