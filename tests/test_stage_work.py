@@ -299,3 +299,34 @@ def test_a_runs_real_paths_are_os_paths_and_resolve_each_folder_once(
     with fs.answering():
         assert [fs.probe("realpath", n) for n in names] == expected
     assert len(asked) < 12, asked
+
+
+def test_discovery_shares_the_runs_answers(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Discovery resolved each package's interface folders and parameter folders
+    with `os.path.realpath` of its own (345 on the issue-25 corpus), which the
+    later stages asked again; in a run it takes the run's answers
+    (`fs.asked`), still noting them in its own trace."""
+    from robotfix import fs
+    from robotfix.config import Config
+    from robotfix.discovery import discover
+
+    for i in range(15):
+        package = tmp_path / f"pkg{i}"
+        (package / "msg").mkdir(parents=True)
+        (package / "config").mkdir()
+        (package / "package.xml").write_text(f"<package><name>pkg{i}</name></package>")
+        (package / "msg" / "Num.msg").write_text("int64 num\n")
+        (package / "config" / "p.yaml").write_text("a: 1\n")
+        (package / "node.py").write_text("x = 1\n")
+    import os
+
+    from robotfix import discovery
+
+    asked = _counting_realpath(monkeypatch)
+    monkeypatch.setitem(discovery._PROBES, "realpath", os.path.realpath)
+    with fs.answering():
+        found = discover([tmp_path], Config(root=tmp_path))
+    assert len(found.python_files) == 15 and len(found.parameter_files) == 15
+    assert len(asked) < 15, len(asked)

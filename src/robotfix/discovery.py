@@ -39,6 +39,7 @@ from robotfix.fs import (
     RACY_NS,
     Noted,
     UnreadableError,
+    asked,
     read_head,
     read_text,
     stamp,
@@ -752,7 +753,8 @@ def _probe(kind: str, arg: str) -> Any:
 
 
 def _noted(kind: str, arg: str) -> Any:
-    answer = _PROBES[kind](arg)
+    # a real path or a file asked once in a run, as the later stages ask them
+    answer = asked(kind, arg) if kind in ("isfile", "realpath") else _PROBES[kind](arg)
     if _TRACE is not None:
         _TRACE.probes[(kind, arg)] = answer
     return answer

@@ -171,17 +171,20 @@ def probe(kind: str, path: str | os.PathLike[str]) -> Any:
     """`os.path.isfile` ("isfile") or `os.path.realpath` ("realpath") of `path`,
     noted in the traces `noting` holds (asked once in a run: `answering`)."""
     name = os.fspath(path)
-    known = _ANSWERS[-1] if _ANSWERS else None
-    if known is not None and (kind, name) in known:
-        answer = known[(kind, name)]
-    elif kind == "isfile":
-        answer = os.path.isfile(name)
-    else:
-        answer = _realpath(name, known)
-    if known is not None:
-        known[(kind, name)] = answer
+    answer = asked(kind, name)
     for trace in _NOTING:
         trace.probes[(kind, name)] = answer
+    return answer
+
+
+def asked(kind: str, name: str) -> Any:
+    """`probe`'s answer, not noted (discovery notes its own, in its trace)."""
+    known = _ANSWERS[-1] if _ANSWERS else None
+    if known is not None and (kind, name) in known:
+        return known[(kind, name)]
+    answer = os.path.isfile(name) if kind == "isfile" else _realpath(name, known)
+    if known is not None:
+        known[(kind, name)] = answer
     return answer
 
 
