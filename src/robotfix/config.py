@@ -83,10 +83,13 @@ class Config:
         default_factory=dict, compare=False, repr=False
     )
 
-    def for_file(self, path: Path, folder: bool | None = None) -> Config:
+    def for_file(
+        self, path: Path, folder: bool | None = None, real: str | None = None
+    ) -> Config:
         """The settings of one file (or, with `folder`, a folder; None: either):
         those of the nearest configuration above it with the flags over them, or
-        these when that is this run's own."""
+        these when that is this run's own. `real`: a folder's real path, when
+        the caller knows it (a walk does: not resolved again)."""
         if self.flags is None:
             return self
         raw = os.fspath(path)  # the folder as spelled: no realpath, no stat
@@ -96,7 +99,7 @@ class Config:
         if folder_name in self._spelled:
             found = self._spelled[folder_name]
         else:
-            found = find(Path(folder_name), self._found)
+            found = find(folder_name, self._found, real if folder else None)
             self._spelled[folder_name] = found
         if found == self.source:
             return self
@@ -112,13 +115,15 @@ class Config:
         trace: their `exclude` decides what it finds)."""
         return [key for key in self._nearest if key != "None"]
 
-    def excluded(self, path: Path, folder: bool = False) -> bool:
+    def excluded(
+        self, path: Path, folder: bool = False, real: str | None = None
+    ) -> bool:
         """Whether an `exclude` pattern matches the file (or, with folder=True, the
         folder and so everything below it): this run's patterns, and those of the
-        nearest configuration (each from its own folder)."""
+        nearest configuration (each from its own folder; `real`: `for_file`'s)."""
         if self._excluded(path, folder):
             return True
-        nearest = self.for_file(path, folder)
+        nearest = self.for_file(path, folder, real)
         return nearest is not self and nearest._excluded(path, folder)
 
     def _excluded(self, path: Path, folder: bool) -> bool:
@@ -207,30 +212,42 @@ def matches(pattern: str, relative: str, folder: bool = False) -> bool:
     return any(1 <= at <= last for at in reached)
 
 
-def find(start: Path, memo: dict[str, Path | None] | None = None) -> Path | None:
+def find(
+    start: str | os.PathLike[str],
+    memo: dict[str, Path | None] | None = None,
+    real: str | None = None,
+) -> Path | None:
     """The nearest configuration at or above `start` (a file: its folder): a
-    `robotfix.toml`, or a `pyproject.toml` with a [tool.robotfix] table."""
-    here = Path(os.path.realpath(start))
-    if not os.path.isdir(here):  # os.path never raises (a path too long, a loop)
-        here = here.parent
+    `robotfix.toml`, or a `pyproject.toml` with a [tool.robotfix] table. `real`:
+    `start`'s real path, when known. The folders are real paths, walked up as
+    text: only a configuration found is made a Path (a walk asks for every
+    folder, whose parent `memo` knows)."""
+    folder = real if real is not None else os.path.realpath(start)
+    if not os.path.isdir(folder):  # os.path never raises (a path too long, a loop)
+        folder = os.path.dirname(folder)
     seen: list[str] = []  # the folders looked at, each with the answer
     found: Path | None = None
-    for folder in (here, *here.parents):
-        if memo is not None and str(folder) in memo:
-            found = memo[str(folder)]
+    while True:
+        if memo is not None and folder in memo:
+            found = memo[folder]
             break
-        seen.append(str(folder))
-        candidates = [folder / name for name in CONFIG_FILES]
-        found = next((c for c in candidates if _is_config(c)), None)
-        if found is not None:
+        seen.append(folder)
+        candidates = [os.path.join(folder, name) for name in CONFIG_FILES]
+        config = next((c for c in candidates if _is_config(c)), None)
+        if config is not None:
+            found = Path(config)
             break
+        parent = os.path.dirname(folder)
+        if parent == folder:
+            break
+        folder = parent
     if memo is not None:
         memo.update(dict.fromkeys(seen, found))
     return found
 
 
-def _is_config(path: Path) -> bool:
-    return os.path.isfile(path) and _table(path) is not None
+def _is_config(path: str) -> bool:
+    return os.path.isfile(path) and _table(Path(path)) is not None
 
 
 def load(start: Path, base: Config | None = None) -> Config:

@@ -34,7 +34,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from robotfix.faults import Fault, guard
-from robotfix.fs import UnreadableError, read_regular
+from robotfix.fs import UnreadableError, probe, read_regular
 from robotfix.ros.executables import MAX_BUILD_BYTES
 from robotfix.ros.graph.cpp import AUTO
 from robotfix.ros.graph.model import OPENS, PARAMETER, FileGraph
@@ -197,7 +197,7 @@ class CppParams:
             self._entries[id(one.entry)] = owners
             if one.entry.name:
                 name = one.entry.name.rsplit("/", 1)[-1]
-                real = os.path.realpath(owners[0][0].path)
+                real = probe("realpath", owners[0][0].path)
                 self._renamed.setdefault(name, set()).add(real)
 
 

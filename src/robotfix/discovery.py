@@ -39,6 +39,7 @@ from robotfix.fs import (
     RACY_NS,
     Noted,
     UnreadableError,
+    asked,
     read_head,
     read_text,
     stamp,
@@ -204,7 +205,7 @@ def _parameter_files(
     chosen = _OnePathEach()
     for path in named:
         chosen.add(path, _realpath(path), False)
-    pruned = lambda folder: config.excluded(folder, folder=True)  # noqa: E731
+    pruned = lambda folder, real: config.excluded(folder, True, real)  # noqa: E731
     for _, _, entries in walker.walk(folders, _is_yaml, pruned):
         for entry in entries:
             if (
@@ -361,13 +362,13 @@ class _Walker:
         self,
         tops: list[Path],
         wanted: Callable[[str], bool],
-        pruned: Callable[[Path], bool],
+        pruned: Callable[[Path, str | None], bool],
     ) -> Iterator[tuple[Path, str, list[_Entry]]]:
         """Each folder under `tops` (themselves included) with its real path and its
         entries that are not folders; `wanted` names the files whose leaving links
-        deserve a notice, `pruned` the folders not to enter. Folders reached through
-        a symlink are walked last, so a folder also reachable without one keeps that
-        spelling."""
+        deserve a notice, `pruned` the folders not to enter (with their real path
+        when the walk knows it). Folders reached through a symlink are walked
+        last, so a folder also reachable without one keeps that spelling."""
         stack = [(top, _realpath(top), False, True) for top in reversed(tops)]
         linked: list[tuple[Path, str, bool, bool]] = []
         walked = self.walked
@@ -407,7 +408,10 @@ class _Walker:
                     if _skipped(name):
                         continue
                     path = folder / name
-                    if _output(path, workspace) or pruned(path):
+                    # (a folder that is no link is real under its parent's real path)
+                    if _output(path, workspace) or pruned(
+                        path, None if link else prefix + name
+                    ):
                         continue
                 target = ""
                 if link:
@@ -453,8 +457,8 @@ def _python_files(
     sources: list[tuple[Path, str]] = []  # C++ files, with their real paths
     packages: dict[str, Path] = {}
 
-    def pruned(folder: Path) -> bool:
-        return config is not None and config.excluded(folder, folder=True)
+    def pruned(folder: Path, real: str | None) -> bool:
+        return config is not None and config.excluded(folder, True, real)
 
     for path in paths:
         package = _package_around(path)
@@ -539,7 +543,7 @@ def _interface_files(
             tops.append(folder)
         elif _is_interface(folder.name) and _isfile(folder):
             chosen.add(folder, real, False)
-    for _, _, entries in walker.walk(tops, _is_interface, lambda _: False):
+    for _, _, entries in walker.walk(tops, _is_interface, lambda _, __: False):
         for entry in entries:
             if _is_interface(entry.name) and entry.regular:
                 chosen.add(entry.path, entry.real, entry.link)
@@ -749,7 +753,8 @@ def _probe(kind: str, arg: str) -> Any:
 
 
 def _noted(kind: str, arg: str) -> Any:
-    answer = _PROBES[kind](arg)
+    # a real path or a file asked once in a run, as the later stages ask them
+    answer = asked(kind, arg) if kind in ("isfile", "realpath") else _PROBES[kind](arg)
     if _TRACE is not None:
         _TRACE.probes[(kind, arg)] = answer
     return answer

@@ -148,14 +148,57 @@ def remembered(
     return value
 
 
+# the answers `probe` gave in the run under way (`answering`), by question
+_ANSWERS: list[dict[tuple[str, str], Any]] = []
+
+
+@contextlib.contextmanager
+def answering() -> Iterator[None]:
+    """While inside (a run), `probe` asks the disk each question once: the
+    stages ask many again (the real path of a C++ file for its node's
+    parameters and for the graph, `package.xml` up the folders above every
+    file: 2,319 real paths of 512 files and 7,983 `isfile` of 3,536 on the
+    issue-25 corpus). Each answer is still noted in the traces noting when it
+    is asked."""
+    _ANSWERS.append(_ANSWERS[-1] if _ANSWERS else {})
+    try:
+        yield
+    finally:
+        _ANSWERS.pop()
+
+
 def probe(kind: str, path: str | os.PathLike[str]) -> Any:
     """`os.path.isfile` ("isfile") or `os.path.realpath` ("realpath") of `path`,
-    noted in the traces `noting` holds."""
+    noted in the traces `noting` holds (asked once in a run: `answering`)."""
     name = os.fspath(path)
-    answer = os.path.isfile(name) if kind == "isfile" else os.path.realpath(name)
+    answer = asked(kind, name)
     for trace in _NOTING:
         trace.probes[(kind, name)] = answer
     return answer
+
+
+def asked(kind: str, name: str) -> Any:
+    """`probe`'s answer, not noted (discovery notes its own, in its trace)."""
+    known = _ANSWERS[-1] if _ANSWERS else None
+    if known is not None and (kind, name) in known:
+        return known[(kind, name)]
+    answer = os.path.isfile(name) if kind == "isfile" else _realpath(name, known)
+    if known is not None:
+        known[(kind, name)] = answer
+    return answer
+
+
+def _realpath(name: str, known: dict[tuple[str, str], Any] | None) -> str:
+    """`os.path.realpath(name)`; in a run, a file that is no symlink is its
+    folder's real path (asked once: `known`) and its name: `realpath` looks
+    at every folder above a path again (an lstat each: 38,831 for the 4,385
+    real paths of the issue-25 corpus's stages, its repositories symlinks)."""
+    folder, base = os.path.split(name)
+    if known is None or not folder or base in ("", ".", "..") or os.path.islink(name):
+        return os.path.realpath(name)
+    if ("realpath", folder) not in known:
+        known[("realpath", folder)] = _realpath(folder, known)
+    return os.path.join(known[("realpath", folder)], base)
 
 
 def read_head(path: str | os.PathLike[str], size: int) -> bytes:

@@ -139,6 +139,8 @@ def started_entries(
         if found is not None and name is not None:
             packages.setdefault(name, found)
     out: list[Started] = []
+    reals = sorted(by_real.items())  # (a plugin's package: the files inside it)
+    inside: dict[Path, list[str]] = {}  # each plugin package's files, found once
     targets: dict[Path, Any] = {}  # each package's CMake targets, read once
     built: dict[tuple[Path, str], list[Path]] = {}  # many entries start one
     for started in launches.started:
@@ -148,8 +150,10 @@ def started_entries(
         plugin = None
         if package is not None and entry.plugin:
             plugin = entry.plugin.split("::")[-1]
-            inside = probe("realpath", package) + os.sep
-            files += [p for r, p in sorted(by_real.items()) if r.startswith(inside)]
+            if package not in inside:
+                folder = probe("realpath", package) + os.sep
+                inside[package] = [p for r, p in reals if r.startswith(folder)]
+            files += inside[package]
         elif package is not None and entry.executable and not files:
             one = (package, entry.executable)
             if one not in built:

@@ -345,12 +345,14 @@ def _packages(files: list[Path]) -> dict[str, Path]:
     """Package name -> folder, for the packages the run's files lie in."""
     folders: dict[Path, Path | None] = {}
     found: dict[str, Path] = {}
+    named: set[Path] = set()  # package folders whose name was read (once each)
     for path in files:
         parent = path.parent
         if parent not in folders:
             folders[parent] = _package_folder(parent)
         folder = folders[parent]
-        if folder is not None and folder not in found.values():
+        if folder is not None and folder not in named:
+            named.add(folder)
             name = package_name(folder)
             if name is not None:
                 found.setdefault(name, folder)

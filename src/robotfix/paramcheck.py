@@ -24,7 +24,6 @@ parameter nobody declares is silent.
 
 from __future__ import annotations
 
-import os
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -39,7 +38,7 @@ from robotfix.config import Config
 from robotfix.cppparams import CPP_TYPE_WHY, CppParams
 from robotfix.diagnostics import Diagnostic, Span
 from robotfix.faults import Fault, guard
-from robotfix.fs import UnreadableError, read_text
+from robotfix.fs import UnreadableError, probe, read_text
 from robotfix.messages import Declared
 from robotfix.ros import paramfile as P
 from robotfix.ros import yamlfile as Y
@@ -56,6 +55,9 @@ MENTIONS = {
     "ros2": (b"declare_parameter", b"get_parameter", b"ParamListener"),
     "ros1": (b"rospy",),
 }
+# a summary with its rospy node names and the names its rospy parameters resolve
+# to (`ros1_name`)
+Rospy = tuple[Summary, list[str], set[str]]
 # what a run's check of a Python file found: the words of MENTIONS its bytes hold,
 # and its summary (None: none made, and so made here if one of them is wanted)
 Known = tuple[tuple[bytes, ...], Summary | None]
@@ -195,7 +197,7 @@ def check_parameter_files(
     words = tuple(w for layout in sorted(layouts) for w in MENTIONS.get(layout, ()))
     if fixed is not None:  # only the code of the entries still to check
         started = {f for name in todo for s in by_file[name] for f in s.files}
-        python_files = [p for p in python_files if os.path.realpath(p) in started]
+        python_files = [p for p in python_files if probe("realpath", p) in started]
     found = (
         _summaries(python_files, words, known or {}, project, faults, config)
         if words and (fixed is None or todo)
@@ -325,7 +327,7 @@ def _summaries(
         mentioned, summary = known.get(str(path), (None, None))
         if mentioned is not None and not any(w in mentioned for w in words):
             continue
-        real = os.path.realpath(path)
+        real = probe("realpath", path)
         if real in seen:
             continue
         seen.add(real)
@@ -468,9 +470,12 @@ class Table:
             name: {*(renamed or {}).get(name, ()), *self.cpp.renamed.get(name, ())}
             for name in {*(renamed or {}), *self.cpp.renamed}
         }
-        self.real = {s.path: os.path.realpath(s.path) for s in summaries}
+        self.real = {s.path: probe("realpath", s.path) for s in summaries}
         self.packages = {s.path: _package_of(Path(s.path)) for s in summaries}
         self._by_node: dict[str, list[tuple[Summary, str, list[str]]]] = {}
+        # ROS 1: each summary's rospy nodes and parameter names, by package
+        self._declared: list[Rospy] | None = None
+        self._by_package: dict[Path | None, list[Rospy]] = {}
         # ROS 2 owners whose parameters a file may set: (summary, owner, names)
         self.owners = [
             (summary, owner, summary.names_of(owner))
@@ -535,21 +540,13 @@ class Table:
 
     def ros1(self, entry: P.Entry, package: Path | None) -> list[Parameter]:
         found: list[Parameter] = []
-        for summary in self.summaries:
-            if package is not None and self.packages[summary.path] != package:
-                continue
-            nodes = summary.node_names.get(ROSPY, [])
-            head, _, rest = entry.name.partition("/")
+        head, _, rest = entry.name.partition("/")
+        for summary, nodes, declared in self._ros1(package):
             wanted = {f"/{entry.name}", f"~{entry.name}"}
             if rest and head in nodes:
                 wanted.add(f"~{rest}")
             for name in sorted(wanted):
-                sites = [
-                    d
-                    for d in summary.decls
-                    if d.ros == 1 and ros1_name(d.name, nodes) == name
-                ]
-                if sites:
+                if name in declared:
                     candidate = Parameter(name, 1)
                     candidate.refinements = [
                         a
@@ -558,6 +555,30 @@ class Table:
                     ]
                     found.append(candidate)
         return found
+
+    def _ros1(self, package: Path | None) -> list[Rospy]:
+        """The summaries with rospy parameters a flat file of `package` may set
+        (all for None), each with its rospy node names and the names its
+        parameters resolve to (`ros1_name`): found once per package and summary,
+        not for every value of every file."""
+        if package not in self._by_package:
+            if self._declared is None:
+                found = [
+                    (
+                        s,
+                        nodes,
+                        {ros1_name(d.name, nodes) for d in s.decls if d.ros == 1},
+                    )
+                    for s in self.summaries
+                    for nodes in [s.node_names.get(ROSPY, [])]
+                ]
+                self._declared = [one for one in found if one[2]]  # others: none
+            self._by_package[package] = [
+                one
+                for one in self._declared
+                if package is None or self.packages[one[0].path] == package
+            ]
+        return self._by_package[package]
 
 
 def ros1_name(name: str, nodes: list[str]) -> str:

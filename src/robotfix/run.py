@@ -31,7 +31,15 @@ from robotfix.cache import ResultCache, discovery_key, run_key
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
 from robotfix.discovery import Discovery, Trace, discover, install_space
-from robotfix.fs import RACY_NS, Noted, UnreadableError, noting, read_regular, stamp
+from robotfix.fs import (
+    RACY_NS,
+    Noted,
+    UnreadableError,
+    answering,
+    noting,
+    read_regular,
+    stamp,
+)
 from robotfix.ros.api_model import ENDPOINT_WORDS
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.ros.install import InstallSpace
@@ -104,13 +112,15 @@ def check_paths(
     gc.set_threshold(GC_THRESHOLD, 50, 1000)
     try:
         try:
-            return _check_paths(paths, config, progress, jobs, use_cache)
+            with answering():  # each path probed once (the stages share them)
+                return _check_paths(paths, config, progress, jobs, use_cache)
         except Exception:
             if not use_cache:
                 raise
             # a state of the result cache no validation foresaw must not fail
             # every run: the run again without reading it (it is rewritten)
-            return _check_paths(paths, config, progress, jobs, use_cache, False)
+            with answering():
+                return _check_paths(paths, config, progress, jobs, use_cache, False)
     finally:
         gc.set_threshold(*threshold)
         gc.unfreeze()

@@ -94,6 +94,15 @@ _MAKERS = re.compile(
         sorted({*_METHODS, *_ACTIONS, *(c.split("::")[-1] for c in _CLASSES)})
     ).encode()
 )
+# a call whose callee's text holds none of these makes nothing (`_File._call`)
+_CALLED = re.compile(
+    b"|".join(
+        re.escape(w.encode())
+        for w in sorted(
+            {*_METHODS, "make_unique", "make_shared", "rclcpp_action", "init"}
+        )
+    )
+)
 _NODE_BASES = frozenset({"Node", "LifecycleNode"})
 _RCLCPP_BASES = frozenset(
     {"Node", "LifecycleNode", "rclcpp::Node", "rclcpp_lifecycle::LifecycleNode"}
@@ -327,8 +336,12 @@ class _File:
     # -- calls -------------------------------------------------------------------
     def _call(self, call: Any) -> None:
         func = call.child_by_field_name("function")
+        if func is None or not _CALLED.search(
+            self.data, func.start_byte, func.end_byte
+        ):
+            return  # (most calls: 85% of the issue-25 corpus's 12,487)
         args_node = call.child_by_field_name("arguments")
-        if func is None or args_node is None:
+        if args_node is None:
             return
         receiver = None
         if func.type == "field_expression":
