@@ -117,6 +117,61 @@ def test_plain_helper_code_is_skipped() -> None:
     assert _skipped(text, CASES / "init" / "x.py", catalog_for(CASES / "init"))
 
 
+# -- imports of the tree: a member counts when its summary carries something -----
+TREE = {
+    "pkg/__init__.py": "",
+    "pkg/util.py": "import os\n\nSCALE = 2\n\n"
+    "def scale(v, k=SCALE):\n    return v * k\n\n"
+    "class Counter:\n    START = 0\n\n    def bump(self, n):\n        return n + 1\n",
+    "pkg/limits.py": "from typing import Annotated\n\n"
+    "def set_speed(v: Annotated[float, 'Unit(\"m/s\") and 0 <= v <= 2']) -> None:\n"
+    "    pass\n",
+    "pkg/reexport.py": "from pkg.limits import set_speed\n",
+}
+IMPORTERS = {
+    # the near misses: each gives the file something to find with
+    "refined function": ("from pkg.limits import set_speed\n", False),
+    "re-export": ("from pkg.reexport import set_speed\n", False),
+    "module": ("from pkg import util\n", False),
+    "plain import": ("import pkg.util\n", False),
+    "star": ("from pkg.util import *\n", False),
+    # plain members: nothing an unknown name would not give
+    "plain function": ("from pkg.util import scale\n", True),
+    "plain class and constant": ("from pkg.util import Counter, SCALE\n", True),
+    "relative": ("from .util import scale\n", True),
+}
+
+
+@pytest.mark.parametrize("name", sorted(IMPORTERS))
+def test_an_import_of_the_tree_counts_when_it_carries_something(
+    tmp_path: Path, name: str
+) -> None:
+    for relative, text in TREE.items():
+        (tmp_path / relative).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / relative).write_text(text, encoding="utf-8")
+    head, skipped = IMPORTERS[name]
+    text = head + "\n\ndef main():\n    return set_speed(5.0)\n"
+    if "set_speed" not in head:
+        text = head + "\n\ndef main(v):\n    return v\n"
+    node = tmp_path / "pkg" / "node.py"
+    node.write_text(text, encoding="utf-8")
+    catalog = catalog_for(CASES / "init")
+    project = make_project([tmp_path], Config(), catalog)
+    tree = ast.parse(text)
+    assert (
+        relevance.skippable(tree, text, catalog, stub_set(), project.resolver(node))
+        is skipped
+    )
+    saved = relevance.ENABLED
+    relevance.ENABLED = False
+    try:
+        full = check_source(text, str(node), Config(), catalog)
+    finally:
+        relevance.ENABLED = saved
+    codes = [d.code for d in full]
+    assert codes == (["RF101"] if "set_speed" in head else []), codes
+
+
 # -- generated programs: nested control flow over a few names ---------------------
 NAMES = ["a", "b", "c"]
 
@@ -198,3 +253,29 @@ def test_a_checked_tree_is_freed_without_the_cycle_collector(text: str) -> None:
         assert tree() is None
     finally:
         gc.enable()
+
+
+def test_a_skipped_importer_is_checked_again_when_its_member_carries_something(
+    tmp_path: Path,
+) -> None:
+    """The skip read the member's summary: the cache keeps that, so a member that
+    gains a refinement re-checks the file that was skipped."""
+    from robotfix.api import check_paths
+
+    (tmp_path / "pkg").mkdir()
+    (tmp_path / "pkg" / "__init__.py").write_text("")
+    util = tmp_path / "pkg" / "util.py"
+    util.write_text("def scale(v):\n    return v * 2\n")
+    node = tmp_path / "pkg" / "node.py"
+    node.write_text("from pkg.util import scale\n\n\ndef main():\n    scale(5.0)\n")
+
+    def run() -> list[str]:
+        result = check_paths([tmp_path], Config(root=tmp_path), use_cache=True)
+        return [f"{Path(d.path).name}:{d.code}" for d in result.diagnostics]
+
+    assert run() == []
+    util.write_text(
+        "from typing import Annotated\n\n\n"
+        "def scale(v: Annotated[float, '0 <= v <= 2']):\n    return v * 2\n"
+    )
+    assert run() == ["node.py:RF101"]
