@@ -89,6 +89,10 @@ RELEVANT = {
     "stub api": "import time\n\ndef f():\n    return time.time()\n",
     "method by name": "def f(node):\n    node.create_timer(1.0, f)\n",
     "parameter": "def f(node):\n    return node.get_parameter('x')\n",
+    "ros 1 parameter": "import rospy\nrate = rospy.get_param('~rate', 10)\n",
+    "declared parameters": "def f(node):\n"
+    "    node.declare_parameters('', [('a', 1.0)])\n",
+    "parameter listener": "def f(node, ns):\n    return ns.ParamListener(node)\n",
 }
 
 
@@ -115,6 +119,21 @@ def test_plain_helper_code_is_skipped() -> None:
         "    return first, [n.upper() for n in found]\n"
     )
     assert _skipped(text, CASES / "init" / "x.py", catalog_for(CASES / "init"))
+
+
+def test_a_name_with_param_in_it_is_no_parameter() -> None:
+    """Only the calls the analysis follows make a parameter (`load_params` does not)."""
+    text = (
+        "import yaml\n\n"
+        "def load_params(path, _param_cache={}):\n"
+        "    if path not in _param_cache:\n"
+        "        with open(path) as f:\n"
+        "            _param_cache[path] = yaml.safe_load(f)\n"
+        "    return _param_cache[path]\n"
+    )
+    catalog = catalog_for(CASES / "init")
+    assert _skipped(text, CASES / "init" / "x.py", catalog)
+    assert _full(text, CASES / "init" / "x.py", catalog) == []
 
 
 # -- imports of the tree: a member counts when its summary carries something -----
