@@ -29,8 +29,8 @@ or refinement enters a file only through
   fault of ours) counts too. A plain member (a function with nothing refined or
   typed, a class with nothing of these, a plain constant) gives the analysis
   only what an unknown name would: its tests can prune paths, which only ever
-  removes findings. This is asked last: it may build summaries, which the
-  files' own checks would build anyway;
+  removes findings. This is asked after the cheaper tests: it may build
+  summaries (which the file's analysis would build too);
 - a declaration without a value (`x: float` in a body), whose read is RF301.
 
 RF301 needs no annotation, so `_may_be_unbound` runs a plain definite-assignment
@@ -131,9 +131,11 @@ def skippable(
     # no stub word anywhere in the text: no name or attribute can be one
     if _pattern(vocabulary).search(text) is not None and _names_one(tree, vocabulary):
         return False
-    if _may_be_unbound(tree, frozenset(declared)):
+    # before the definite-assignment pass: what it builds, the file's analysis
+    # would build too (the summaries of the modules it imports)
+    if resolver is not None and _tree_relevant(resolver, imported):
         return False
-    return resolver is None or not _tree_relevant(resolver, imported)
+    return not _may_be_unbound(tree, frozenset(declared))
 
 
 def _names_one(tree: ast.Module, vocabulary: frozenset[str]) -> bool:
