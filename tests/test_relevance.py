@@ -93,6 +93,16 @@ RELEVANT = {
     "declared parameters": "def f(node):\n"
     "    node.declare_parameters('', [('a', 1.0)])\n",
     "parameter listener": "def f(node, ns):\n    return ns.ParamListener(node)\n",
+    # a stub member known only by the name it is imported as
+    "stub member renamed": "import time\nfrom math import degrees as deg\n\n"
+    "def wait(angle):\n    time.sleep(deg(angle))\n",
+    "stub members renamed": "from time import time as wall, monotonic_ns as ticks\n\n"
+    "def spent():\n    return ticks() - wall()\n",
+    # Python reads identifiers NFKC-normalised: `\uff52adians` is `radians`
+    "fullwidth name": "import math\n\ndef f(a):\n"
+    "    return math.\uff52adians(a) + math.\uff44egrees(a)\n",
+    "fullwidth marker": "from typing import \uff21nnotated\n"
+    "speed: \uff21nnotated[float, '_ <= 1'] = 2.0\n",
 }
 
 
@@ -335,3 +345,55 @@ def test_a_skipped_importer_is_checked_again_when_its_member_carries_something(
         "def scale(v: Annotated[float, '0 <= v <= 2']):\n    return v * 2\n"
     )
     assert run() == ["node.py:RF101"]
+
+
+def _write(root: Path, files: dict[str, str]) -> None:
+    for relative, text in files.items():
+        (root / relative).parent.mkdir(parents=True, exist_ok=True)
+        (root / relative).write_text(text, encoding="utf-8")
+
+
+def _codes(root: Path) -> list[str]:
+    from robotfix.api import check_paths
+    from robotfix.config import load
+
+    result = check_paths([root], load(root))
+    return sorted(f"{Path(d.path).name}:{d.code}" for d in result.diagnostics)
+
+
+def test_a_message_imported_from_its_own_package_relatively_is_a_source(
+    tmp_path: Path,
+) -> None:
+    """`from . import Cmd` in a package that is also an interface package: the
+    analysis reads `robot_cmds.Cmd` as the message `robot_cmds/Cmd`."""
+    _write(
+        tmp_path,
+        {
+            "robot_cmds/package.xml": "<package format='3'>"
+            "<name>robot_cmds</name></package>",
+            "robot_cmds/msg/Cmd.msg": "float64 speed #RobotFix# speed <= 1.0\n",
+            "robot_cmds/robot_cmds/__init__.py": "",
+            "robot_cmds/robot_cmds/node.py": "from . import Cmd\n\n\n"
+            "def fill(c: Cmd):\n    c.speed = 5.0\n",
+        },
+    )
+    assert _codes(tmp_path) == ["node.py:RF101"]
+
+
+def test_a_user_stub_member_re_exported_under_another_name_is_a_source(
+    tmp_path: Path,
+) -> None:
+    _write(
+        tmp_path,
+        {
+            "pyproject.toml": '[tool.robotfix]\nstub-paths = ["stubs"]\n',
+            "stubs/motorlib/__init__.pyi": "from motorlib.core import (\n"
+            "    read_speed as speed,\n    read_heading as heading,\n)\n",
+            "stubs/motorlib/core.pyi": "from typing import Annotated\n\n"
+            "def read_speed() -> Annotated[float, \"Unit('m/s')\"]: ...\n"
+            "def read_heading() -> Annotated[float, \"Unit('rad')\"]: ...\n",
+            "drive.py": "import motorlib\n\n\ndef drive():\n"
+            "    return motorlib.speed() + motorlib.heading()\n",
+        },
+    )
+    assert _codes(tmp_path) == ["drive.py:RF202"]

@@ -56,6 +56,7 @@ import builtins
 import functools
 import os
 import re
+import unicodedata
 import weakref
 from collections.abc import Iterable, Sequence
 
@@ -94,6 +95,8 @@ def skippable(
     resolver: Resolver | None,
 ) -> bool:
     """Can the analysis of this file report nothing? (True only when sure.)"""
+    if not text.isascii():  # Python reads identifiers NFKC-normalised, so do we
+        text = unicodedata.normalize("NFKC", text)
     if (
         not ENABLED
         or len(text) * BYTES_PER_STEP_BUDGET > budget.FILE_STEPS
@@ -119,6 +122,10 @@ def skippable(
             assert isinstance(node, ast.ImportFrom)
             if node.module and _interface(node.module, catalog):
                 return False
+            if node.level and resolver is not None:  # `from . import Cmd`
+                base = absolute(resolver.package, node.level, node.module)
+                if base and _interface(base, catalog):
+                    return False
             names = tuple(a.name for a in node.names)
             if any(n in INTERFACE_PARTS for n in names):
                 return False
@@ -128,6 +135,9 @@ def skippable(
         elif kind is ast.Global:
             declared.update(node.names)  # type: ignore[attr-defined]
     vocabulary = _vocabulary(stubs)
+    # a stub member imported under another name (`from math import degrees as d`)
+    if any(n in vocabulary for _, _, names in imported for n in names):
+        return False
     # no stub word anywhere in the text: no name or attribute can be one
     if _pattern(vocabulary).search(text) is not None and _names_one(tree, vocabulary):
         return False
