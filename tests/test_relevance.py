@@ -284,43 +284,6 @@ def test_a_checked_tree_is_freed_without_the_cycle_collector(text: str) -> None:
         gc.enable()
 
 
-def test_a_loop_is_freed_with_its_tree() -> None:
-    """What the analysis keeps per loop while its tree lives (`stmtsyntax.nodes_under`,
-    `accumulated_in`) does not keep the loop itself alive after the check."""
-    import gc
-    import weakref
-
-    from robotfix.api import check_file
-    from robotfix.source import SourceFile
-
-    text = (
-        "from geometry_msgs.msg import Twist\n\n"
-        "def drive(pub, speeds):\n"
-        "    total = 0.0\n"
-        "    for s in speeds:\n"
-        "        total += s\n"
-        "        t = Twist()\n"
-        "        t.linear.x = total\n"
-        "        try:\n"
-        "            pub.publish(t)\n"
-        "        except ValueError:\n"
-        "            break\n"
-    )
-    source = SourceFile.from_text("node.py", text)
-    assert source.tree is not None
-    function = source.tree.body[1]
-    assert isinstance(function, ast.FunctionDef)
-    loop = weakref.ref(function.body[1])
-    del function
-    gc.disable()
-    try:
-        check_file("node.py", text.encode(), catalog_for(CASES), parsed=source)
-        del source
-        assert loop() is None
-    finally:
-        gc.enable()
-
-
 def test_a_skipped_importer_is_checked_again_when_its_member_carries_something(
     tmp_path: Path,
 ) -> None:

@@ -78,7 +78,7 @@ class CompoundWalker(PathWalker):
         body_state.assume(self.condition(node.test, body_state))
         self._decided(node.test, body_state, loop)
         end = self._iterate(node.body, body_state)
-        self._loop_units(loop, end, node)
+        self._loop_units(loop, end, [node])
         breaks = has_break(node.body)
         first: list[State] = []
         if self._first_may_break(node.body, breaks, stored, entry):
@@ -127,7 +127,7 @@ class CompoundWalker(PathWalker):
                     body_state.env[name] = MAYBE
         self._bind_element(node, iterable, body_state)
         end = self._iterate(node.body, body_state)
-        self._loop_units(loop, end, node)
+        self._loop_units(loop, end, [node])
         breaks = has_break(node.body)
         first: list[State] = []
         if self._first_may_break(node.body, breaks, stored, entry):

@@ -13,7 +13,6 @@ from __future__ import annotations
 import ast
 from collections.abc import Hashable
 from functools import partial
-from itertools import chain
 
 from robotfix.analysis import containers, decisions, heap, writes
 from robotfix.analysis.binder import Binder
@@ -24,12 +23,11 @@ from robotfix.analysis.stmtsyntax import (
     BINDER_KINDS,
     KEEPS,
     WHOLE,
-    accumulated_in,
+    accumulated,
     assign_targets,
     bound_by,
     constant_stores,
     excuse,
-    nodes_under,
     note_sum,
     sums,
 )
@@ -69,12 +67,12 @@ class PathWalker(Binder):
             return self.unknown(node, unit=found.unit)
         return replace(self.unknown(node), literal=True)
 
-    def _loop_units(self, loop: State, end: State, node: ast.stmt) -> None:
-        """A sum that started as a literal (`total = 0.0`) takes, after the loop
-        `node`, the unit its body gave it."""
+    def _loop_units(self, loop: State, end: State, nodes: list[ast.stmt]) -> None:
+        """A sum that started as a literal (`total = 0.0`) takes, after the loop,
+        the unit its body gave it."""
         if not end.reachable:
             return
-        for name in sorted(accumulated_in(node)):
+        for name in accumulated(nodes):
             value, found = loop.env.get(name), end.env.get(name)
             if (
                 isinstance(value, Value)
@@ -109,7 +107,7 @@ class PathWalker(Binder):
         assigned: set[int] = set()  # the name nodes `=` and `op=` bind
         objects: dict[str, int] = {}  # names of messages that `nodes` mention
         for node in nodes:
-            for child in chain((node,), nodes_under(node)):
+            for child in walk(node):
                 kind = type(child)
                 if kind is ast.Name:
                     bound = state.env.get(child.id)  # type: ignore[attr-defined]

@@ -10,7 +10,6 @@ from __future__ import annotations
 import ast
 import builtins
 import copy
-import weakref
 
 from robotfix.analysis import writes
 from robotfix.analysis.constants import plain_kind
@@ -224,35 +223,6 @@ def excuse(side: State, other: State) -> None:
         mine = side.env.get(name)
         if not isinstance(mine, Value) or mine.uninit is not None:
             side.env[name] = MAYBE
-
-
-# `accumulated` of one loop, which a loop's every pass and every enclosing loop's
-# asks again: kept while its tree lives
-_ACCUMULATED: weakref.WeakKeyDictionary[ast.stmt, frozenset[str]] = (
-    weakref.WeakKeyDictionary()
-)
-
-
-_NODES: weakref.WeakKeyDictionary[ast.stmt, list[ast.AST]] = weakref.WeakKeyDictionary()
-
-
-def nodes_under(statement: ast.stmt) -> list[ast.AST]:
-    """`walk(statement)` but the statement itself, in its order, made once per
-    statement: a loop's or a `try`'s body is forgotten (`havoc`) on every pass and
-    in every enclosing loop. (Without the statement: a value that held its key
-    would keep every tree alive.)"""
-    found = _NODES.get(statement)
-    if found is None:
-        found = _NODES[statement] = list(walk(children(statement)))
-    return found
-
-
-def accumulated_in(loop: ast.stmt) -> frozenset[str]:
-    """`accumulated([loop])`, worked out once per loop."""
-    found = _ACCUMULATED.get(loop)
-    if found is None:
-        found = _ACCUMULATED[loop] = frozenset(accumulated([loop]))
-    return found
 
 
 def accumulated(nodes: list[ast.stmt]) -> set[str]:
