@@ -131,21 +131,6 @@ def test_plain_helper_code_is_skipped() -> None:
     assert _skipped(text, CASES / "init" / "x.py", catalog_for(CASES / "init"))
 
 
-def test_a_name_with_param_in_it_is_no_parameter() -> None:
-    """Only the calls the analysis follows make a parameter (`load_params` does not)."""
-    text = (
-        "import yaml\n\n"
-        "def load_params(path, _param_cache={}):\n"
-        "    if path not in _param_cache:\n"
-        "        with open(path) as f:\n"
-        "            _param_cache[path] = yaml.safe_load(f)\n"
-        "    return _param_cache[path]\n"
-    )
-    catalog = catalog_for(CASES / "init")
-    assert _skipped(text, CASES / "init" / "x.py", catalog)
-    assert _full(text, CASES / "init" / "x.py", catalog) == []
-
-
 # -- imports of the tree: a member counts when its summary carries something -----
 TREE = {
     "pkg/__init__.py": "",
