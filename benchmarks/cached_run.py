@@ -75,6 +75,7 @@ def make_tree(corpus: Path, tree: Path, copies: int) -> int:
 
 def run(tree: Path, cache: Path, jobs: int) -> tuple[str, dict[str, float]]:
     env = dict(os.environ, ROBOTFIX_CACHE_DIR=str(cache))
+    env.pop("PYTHONDONTWRITEBYTECODE", None)  # as installed: bytecode kept
     command = [sys.executable, "-c", DRIVER, "check", str(tree), "-j", str(jobs)]
     command += ["--format", "concise", "--cache-dir", str(cache)]
     before = os.times()

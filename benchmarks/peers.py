@@ -128,12 +128,17 @@ def download(folder: Path) -> Path:
     return folder
 
 
+# as installed: bytecode written and read (PYTHONDONTWRITEBYTECODE would have an
+# edited checkout compile its changed modules in every timed run)
+ENV = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+
+
 def timed(
     command: list[str], cwd: Path | None = None, statuses: tuple[int, ...] = (0, 1)
 ) -> float:
     """Seconds of one process, which must end with one of `statuses`."""
     started = time.perf_counter()
-    done = subprocess.run(command, cwd=cwd, capture_output=True, check=False)
+    done = subprocess.run(command, cwd=cwd, capture_output=True, check=False, env=ENV)
     seconds = time.perf_counter() - started
     if done.returncode not in statuses:
         shown = " ".join(command[:5])

@@ -125,6 +125,9 @@ def main(argv: list[str]) -> None:
         floor_script.write_text(FLOOR, encoding="utf-8")
         env = dict(os.environ)
         env.setdefault("ROBOTFIX_CACHE_DIR", str(Path(tmp, "machine-cache")))
+        # as installed (pip writes bytecode): with PYTHONDONTWRITEBYTECODE set, an
+        # edited checkout would compile its changed modules again in every run
+        env.pop("PYTHONDONTWRITEBYTECODE", None)
         floor = [sys.executable, str(floor_script), str(listing)]
         check = [sys.executable, "-m", "robotfix", "check", *map(str, folders)]
         check += ["--no-cache", "-j", "1", "--format", "concise"]

@@ -89,6 +89,20 @@ RELEVANT = {
     "stub api": "import time\n\ndef f():\n    return time.time()\n",
     "method by name": "def f(node):\n    node.create_timer(1.0, f)\n",
     "parameter": "def f(node):\n    return node.get_parameter('x')\n",
+    "ros 1 parameter": "import rospy\nrate = rospy.get_param('~rate', 10)\n",
+    "declared parameters": "def f(node):\n"
+    "    node.declare_parameters('', [('a', 1.0)])\n",
+    "parameter listener": "def f(node, ns):\n    return ns.ParamListener(node)\n",
+    # a stub member known only by the name it is imported as
+    "stub member renamed": "import time\nfrom math import degrees as deg\n\n"
+    "def wait(angle):\n    time.sleep(deg(angle))\n",
+    "stub members renamed": "from time import time as wall, monotonic_ns as ticks\n\n"
+    "def spent():\n    return ticks() - wall()\n",
+    # Python reads identifiers NFKC-normalised: `\uff52adians` is `radians`
+    "fullwidth name": "import math\n\ndef f(a):\n"
+    "    return math.\uff52adians(a) + math.\uff44egrees(a)\n",
+    "fullwidth marker": "from typing import \uff21nnotated\n"
+    "speed: \uff21nnotated[float, '_ <= 1'] = 2.0\n",
 }
 
 
@@ -115,6 +129,61 @@ def test_plain_helper_code_is_skipped() -> None:
         "    return first, [n.upper() for n in found]\n"
     )
     assert _skipped(text, CASES / "init" / "x.py", catalog_for(CASES / "init"))
+
+
+# -- imports of the tree: a member counts when its summary carries something -----
+TREE = {
+    "pkg/__init__.py": "",
+    "pkg/util.py": "import os\n\nSCALE = 2\n\n"
+    "def scale(v, k=SCALE):\n    return v * k\n\n"
+    "class Counter:\n    START = 0\n\n    def bump(self, n):\n        return n + 1\n",
+    "pkg/limits.py": "from typing import Annotated\n\n"
+    "def set_speed(v: Annotated[float, 'Unit(\"m/s\") and 0 <= v <= 2']) -> None:\n"
+    "    pass\n",
+    "pkg/reexport.py": "from pkg.limits import set_speed\n",
+}
+IMPORTERS = {
+    # the near misses: each gives the file something to find with
+    "refined function": ("from pkg.limits import set_speed\n", False),
+    "re-export": ("from pkg.reexport import set_speed\n", False),
+    "module": ("from pkg import util\n", False),
+    "plain import": ("import pkg.util\n", False),
+    "star": ("from pkg.util import *\n", False),
+    # plain members: nothing an unknown name would not give
+    "plain function": ("from pkg.util import scale\n", True),
+    "plain class and constant": ("from pkg.util import Counter, SCALE\n", True),
+    "relative": ("from .util import scale\n", True),
+}
+
+
+@pytest.mark.parametrize("name", sorted(IMPORTERS))
+def test_an_import_of_the_tree_counts_when_it_carries_something(
+    tmp_path: Path, name: str
+) -> None:
+    for relative, text in TREE.items():
+        (tmp_path / relative).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / relative).write_text(text, encoding="utf-8")
+    head, skipped = IMPORTERS[name]
+    text = head + "\n\ndef main():\n    return set_speed(5.0)\n"
+    if "set_speed" not in head:
+        text = head + "\n\ndef main(v):\n    return v\n"
+    node = tmp_path / "pkg" / "node.py"
+    node.write_text(text, encoding="utf-8")
+    catalog = catalog_for(CASES / "init")
+    project = make_project([tmp_path], Config(), catalog)
+    tree = ast.parse(text)
+    assert (
+        relevance.skippable(tree, text, catalog, stub_set(), project.resolver(node))
+        is skipped
+    )
+    saved = relevance.ENABLED
+    relevance.ENABLED = False
+    try:
+        full = check_source(text, str(node), Config(), catalog)
+    finally:
+        relevance.ENABLED = saved
+    codes = [d.code for d in full]
+    assert codes == (["RF101"] if "set_speed" in head else []), codes
 
 
 # -- generated programs: nested control flow over a few names ---------------------
@@ -198,3 +267,81 @@ def test_a_checked_tree_is_freed_without_the_cycle_collector(text: str) -> None:
         assert tree() is None
     finally:
         gc.enable()
+
+
+def test_a_skipped_importer_is_checked_again_when_its_member_carries_something(
+    tmp_path: Path,
+) -> None:
+    """The skip read the member's summary: the cache keeps that, so a member that
+    gains a refinement re-checks the file that was skipped."""
+    from robotfix.api import check_paths
+
+    (tmp_path / "pkg").mkdir()
+    (tmp_path / "pkg" / "__init__.py").write_text("")
+    util = tmp_path / "pkg" / "util.py"
+    util.write_text("def scale(v):\n    return v * 2\n")
+    node = tmp_path / "pkg" / "node.py"
+    node.write_text("from pkg.util import scale\n\n\ndef main():\n    scale(5.0)\n")
+
+    def run() -> list[str]:
+        result = check_paths([tmp_path], Config(root=tmp_path), use_cache=True)
+        return [f"{Path(d.path).name}:{d.code}" for d in result.diagnostics]
+
+    assert run() == []
+    util.write_text(
+        "from typing import Annotated\n\n\n"
+        "def scale(v: Annotated[float, '0 <= v <= 2']):\n    return v * 2\n"
+    )
+    assert run() == ["node.py:RF101"]
+
+
+def _write(root: Path, files: dict[str, str]) -> None:
+    for relative, text in files.items():
+        (root / relative).parent.mkdir(parents=True, exist_ok=True)
+        (root / relative).write_text(text, encoding="utf-8")
+
+
+def _codes(root: Path) -> list[str]:
+    from robotfix.api import check_paths
+    from robotfix.config import load
+
+    result = check_paths([root], load(root))
+    return sorted(f"{Path(d.path).name}:{d.code}" for d in result.diagnostics)
+
+
+def test_a_message_imported_from_its_own_package_relatively_is_a_source(
+    tmp_path: Path,
+) -> None:
+    """`from . import Cmd` in a package that is also an interface package: the
+    analysis reads `robot_cmds.Cmd` as the message `robot_cmds/Cmd`."""
+    _write(
+        tmp_path,
+        {
+            "robot_cmds/package.xml": "<package format='3'>"
+            "<name>robot_cmds</name></package>",
+            "robot_cmds/msg/Cmd.msg": "float64 speed #RobotFix# speed <= 1.0\n",
+            "robot_cmds/robot_cmds/__init__.py": "",
+            "robot_cmds/robot_cmds/node.py": "from . import Cmd\n\n\n"
+            "def fill(c: Cmd):\n    c.speed = 5.0\n",
+        },
+    )
+    assert _codes(tmp_path) == ["node.py:RF101"]
+
+
+def test_a_user_stub_member_re_exported_under_another_name_is_a_source(
+    tmp_path: Path,
+) -> None:
+    _write(
+        tmp_path,
+        {
+            "pyproject.toml": '[tool.robotfix]\nstub-paths = ["stubs"]\n',
+            "stubs/motorlib/__init__.pyi": "from motorlib.core import (\n"
+            "    read_speed as speed,\n    read_heading as heading,\n)\n",
+            "stubs/motorlib/core.pyi": "from typing import Annotated\n\n"
+            "def read_speed() -> Annotated[float, \"Unit('m/s')\"]: ...\n"
+            "def read_heading() -> Annotated[float, \"Unit('rad')\"]: ...\n",
+            "drive.py": "import motorlib\n\n\ndef drive():\n"
+            "    return motorlib.speed() + motorlib.heading()\n",
+        },
+    )
+    assert _codes(tmp_path) == ["drive.py:RF202"]

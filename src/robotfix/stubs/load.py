@@ -806,13 +806,16 @@ def _shipped_names() -> set[str]:
 def root_names(root: Path) -> set[str]:
     """`defined_names` of the stubs under one folder."""
     names: set[str] = set()
+    renamed: set[tuple[str, str]] = set()  # `from m import f as g`: g is f too
     for path in _stub_files(root):
         try:
             tree = ast.parse(_text_of(path))
         except (SyntaxError, ValueError, RecursionError):
             continue
         for node in ast.walk(tree):
-            if isinstance(node, ast.ClassDef) and _class_gives(node):
+            if isinstance(node, ast.ImportFrom):
+                renamed.update((a.name, a.asname) for a in node.names if a.asname)
+            elif isinstance(node, ast.ClassDef) and _class_gives(node):
                 names.add(node.name)
             elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
                 if node.name != "__init__" and _function_gives(node):
@@ -825,6 +828,8 @@ def root_names(root: Path) -> set[str]:
                     for t in ast.walk(node)
                     if isinstance(t, ast.Name) and isinstance(t.ctx, ast.Store)
                 )
+    while fresh := {new for old, new in renamed if old in names} - names:
+        names |= fresh  # a re-export of a re-export, under a third name
     return names
 
 
