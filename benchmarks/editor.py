@@ -95,8 +95,9 @@ def edited_real(text: str, n: int) -> str:
 
 def edited_real_number(text: str, n: int) -> str:
     """A real node with the number nearest its middle that a function body holds
-    changed (a gain, a period, a limit tuned): the edit the memo can replay the
-    other functions around."""
+    changed (a gain, a period, a limit tuned): the memo replays the other
+    functions around it when the skeleton blanks that number (on the real nodes
+    measured it lies in a call's arguments, which it keeps)."""
     tree = ast.parse(text)
     middle = len(text.splitlines()) // 2
     numbers = [
