@@ -515,3 +515,39 @@ def test_an_unchanged_skeleton_is_told_from_the_number_edited(path: Path) -> Non
             continue
         after = skeleton(tree, edited.splitlines(keepends=True))
         assert same == (after == before), edited
+
+
+def test_what_an_earlier_method_wrote_is_in_a_method_key(tmp_path: Path) -> None:
+    """`__init__` is not kept (it writes the frame of `self.odom_frame`, which
+    `tick` reads), and the frame it writes comes from a number the skeleton
+    blanks (`frames[0]` made `frames[1]`): `tick`'s key holds what `__init__`
+    was (`_wrote`), so `tick` is analysed again and finds the two frames."""
+    text = (
+        "from geometry_msgs.msg import PointStamped\n"
+        "from rclpy.node import Node\n"
+        "\n"
+        "\n"
+        "class Follower(Node):\n"
+        "    def __init__(self) -> None:\n"
+        '        super().__init__("follower")\n'
+        '        frames = ("map", "odom")\n'
+        "        chosen = frames[0]\n"
+        "        self.odom_frame = chosen\n"
+        "        self.timer = self.create_timer(0.2, self.tick)\n"
+        "\n"
+        "    def tick(self) -> None:\n"
+        "        here = PointStamped()\n"
+        "        here.header.frame_id = self.odom_frame\n"
+        "        goal = PointStamped()\n"
+        '        goal.header.frame_id = "map"\n'
+        "        error = goal.point.x - here.point.x\n"
+    )
+    catalog = catalog_for(CASES / "frames")
+    path = tmp_path / "node.py"
+    memo = ProofMemo()
+    for _ in range(2):
+        assert not check_source(text, str(path), Config(), catalog, memo=memo)
+    edited = text.replace("frames[0]", "frames[1]")
+    found = check_source(edited, str(path), Config(), catalog, memo=memo)
+    assert [d.rule.code for d in found] == ["RF202"]
+    assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
