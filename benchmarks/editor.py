@@ -123,7 +123,7 @@ def edited_real_blanked(text: str, n: int) -> str:
     followed by more code keeps its length in the skeleton) and different at
     every edit (at least two digits): the edit after which the memo can replay
     the other items. A comment edit when the file has no such number."""
-    from robotfix.analysis.unitmemo import skeleton
+    from robotfix.analysis.skeleton import skeleton
 
     lines = text.splitlines(keepends=True)
     kept = skeleton(ast.parse(text), lines).splitlines(keepends=True)

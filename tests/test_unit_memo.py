@@ -13,7 +13,8 @@ from pathlib import Path
 
 import pytest
 
-from robotfix.analysis.unitmemo import UnitMemo, _numbers_only, same_skeleton, skeleton
+from robotfix.analysis.skeleton import numbers_only, same_skeleton, skeleton
+from robotfix.analysis.unitmemo import UnitMemo
 from robotfix.api import check_source
 from robotfix.config import Config
 from robotfix.smt.memo import ProofMemo
@@ -376,7 +377,7 @@ def test_edits_of_code_cost_the_memo_no_recording(tmp_path: Path) -> None:
 def test_an_edit_of_numbers_only_is_told_from_the_text(
     before: str, after: str, numbers: bool
 ) -> None:
-    assert _numbers_only(before, after) is numbers
+    assert numbers_only(before, after) is numbers
 
 
 def _class_node(methods: int) -> str:
@@ -455,6 +456,21 @@ SIBLING_READ = {
 }
 
 
+def _clean_then_edited(
+    tmp_path: Path, text: str, edited: str, folder: Path
+) -> list[object]:
+    """`text` checked twice with one memo (clean, and recorded), then `edited`
+    with it: its diagnostics, which must be a fresh check's."""
+    catalog = catalog_for(folder)
+    path = tmp_path / "node.py"
+    memo = ProofMemo()
+    for _ in range(2):
+        assert not check_source(text, str(path), Config(), catalog, memo=memo)
+    found = check_source(edited, str(path), Config(), catalog, memo=memo)
+    assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
+    return found  # type: ignore[return-value]
+
+
 @pytest.mark.parametrize("where", sorted(SIBLING_READ))
 def test_what_an_item_reads_of_a_sibling_body_is_in_its_key(
     tmp_path: Path, where: str
@@ -464,15 +480,9 @@ def test_what_an_item_reads_of_a_sibling_body_is_in_its_key(
     velocity to a position. `use`'s own text did not change; what it asked the
     model did (`Record.reads`), so it is analysed again, not replayed."""
     text = SIBLING_READ[where]
-    catalog = catalog_for(CASES / "types")
-    path = tmp_path / "node.py"
-    memo = ProofMemo()
-    for _ in range(2):
-        assert not check_source(text, str(path), Config(), catalog, memo=memo)
     edited = text.replace("t[0]", "t[1]")
-    found = check_source(edited, str(path), Config(), catalog, memo=memo)
+    found = _clean_then_edited(tmp_path, text, edited, CASES / "types")
     assert [d.rule.code for d in found] == ["RF202"]
-    assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
 
 
 def _number_edits(text: str) -> Iterator[str]:
@@ -542,12 +552,6 @@ def test_what_an_earlier_method_wrote_is_in_a_method_key(tmp_path: Path) -> None
         '        goal.header.frame_id = "map"\n'
         "        error = goal.point.x - here.point.x\n"
     )
-    catalog = catalog_for(CASES / "frames")
-    path = tmp_path / "node.py"
-    memo = ProofMemo()
-    for _ in range(2):
-        assert not check_source(text, str(path), Config(), catalog, memo=memo)
     edited = text.replace("frames[0]", "frames[1]")
-    found = check_source(edited, str(path), Config(), catalog, memo=memo)
+    found = _clean_then_edited(tmp_path, text, edited, CASES / "frames")
     assert [d.rule.code for d in found] == ["RF202"]
-    assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
