@@ -25,7 +25,9 @@ A real node given on the command line (for example navigation2's
 nav2_simple_commander/robot_navigator.py, 1,294 lines) is measured too, twice: with a
 comment line edited at its middle (an edit of text the memo keys on: nothing can be
 replayed), and with the number nearest its middle inside a function body changed
-(`name@number`: the edit the memo replays the other functions around).
+(`name@number`: the edit the memo replays the other functions around, when the
+skeleton blanks that number), and with the number nearest its middle that the
+skeleton blanks changed (`name@blanked`: one the memo can always replay around).
 """
 
 from __future__ import annotations
@@ -93,8 +95,9 @@ def edited_real(text: str, n: int) -> str:
 
 def edited_real_number(text: str, n: int) -> str:
     """A real node with the number nearest its middle that a function body holds
-    changed (a gain, a period, a limit tuned): the edit the memo can replay the
-    other functions around."""
+    changed (a gain, a period, a limit tuned): the memo replays the other
+    functions around it when the skeleton blanks that number (on the real nodes
+    measured it lies in a call's arguments, which it keeps)."""
     tree = ast.parse(text)
     middle = len(text.splitlines()) // 2
     numbers = [
@@ -110,6 +113,56 @@ def edited_real_number(text: str, n: int) -> str:
     if not numbers:
         return edited_real(text, n)
     target = min(numbers, key=lambda c: (abs(c.lineno - middle), c.col_offset))
+    return _changed(text, target, n)
+
+
+def edited_real_blanked(text: str, n: int) -> str:
+    """A real node with the number nearest its middle that the memo's skeleton
+    blanks changed (a local's value, an index, a return; not a call's argument,
+    which other items may read), to another of the same length (a literal
+    followed by more code keeps its length in the skeleton) and different at
+    every edit (at least two digits): the edit after which the memo can replay
+    the other items. A comment edit when the file has no such number."""
+    from robotfix.analysis.skeleton import skeleton
+
+    lines = text.splitlines(keepends=True)
+    kept = skeleton(ast.parse(text), lines).splitlines(keepends=True)
+    middle = len(lines) // 2
+    numbers = [
+        node
+        for node in ast.walk(ast.parse(text))
+        if isinstance(node, ast.Constant)
+        and type(node.value) in (int, float)
+        and node.lineno == node.end_lineno
+        and kept[node.lineno - 1].encode()[node.col_offset :].startswith(b"#")
+        and sum(c.isdigit() for c in _literal(lines, node)) >= 2
+    ]
+    if not numbers:
+        return edited_real(text, n)
+    target = min(numbers, key=lambda c: (abs(c.lineno - middle), c.col_offset))
+    literal = _literal(lines, target)
+    digits = [i for i, c in enumerate(literal) if c.isdigit()]
+    value = int("".join(literal[i] for i in digits))
+    low = 10 ** (len(digits) - 1) if type(target.value) is int else 0
+    value = low + (value - low + n + 1) % (10 ** len(digits) - low)
+    chars = list(literal)
+    for i, c in zip(digits, f"{value:0{len(digits)}d}", strict=True):
+        chars[i] = c
+    line = lines[target.lineno - 1].encode()
+    lines[target.lineno - 1] = (
+        line[: target.col_offset]
+        + "".join(chars).encode()
+        + line[target.end_col_offset :]
+    ).decode()
+    return "".join(lines)
+
+
+def _literal(lines: list[str], node: ast.Constant) -> str:
+    raw = lines[node.lineno - 1].encode()
+    return raw[node.col_offset : node.end_col_offset].decode()
+
+
+def _changed(text: str, target: ast.Constant, n: int) -> str:
     value = target.value + (n % 9 + 1) * (0.125 if type(target.value) is float else 1)
     lines = text.splitlines(keepends=True)
     line = lines[target.lineno - 1]
@@ -130,7 +183,6 @@ def per_edit(
     catalog = _server_catalog(path)
     # the document's proof memo, as `server._publish` passes it (none before it was)
     kept = {"memo": server._memo(path.as_uri())} if hasattr(server, "_memo") else {}
-    units = getattr(kept.get("memo"), "units", None)
 
     def once(n: int, extra: dict[str, object]) -> tuple[float, float, list[object]]:
         source = (edit or edited)(text, n)  # type: ignore[operator]
@@ -160,6 +212,8 @@ def per_edit(
         same = same and repr(found[0]) == repr(found[1])
     times.sort()
     plain.sort()
+    # made by the first check that is given the memo (read after the edits)
+    units = getattr(kept.get("memo"), "units", None)
     return {
         "file": name,
         "lines": text.count("\n"),
@@ -256,6 +310,9 @@ def main(edits: int, cold_runs: int, real: list[Path]) -> None:
             print(json.dumps(row), flush=True)
             name, text = f"{node.stem}@number", node.read_text()
             row = per_edit(name, text, edits, folder, edited_real_number)
+            print(json.dumps(row), flush=True)
+            name = f"{node.stem}@blanked"
+            row = per_edit(name, text, edits, folder, edited_real_blanked)
             print(json.dumps(row), flush=True)
         node = folder / "cold_node.py"
         node.write_text(files["annotated_300"])

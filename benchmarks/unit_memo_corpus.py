@@ -4,13 +4,17 @@ code: for each Python file under a folder, EDITS random edits of one unit each
 fresh; prints the number of edits compared, the mismatches (must be 0) and the
 memo's hits and misses.
 
-Usage: python benchmarks/unit_memo_corpus.py FOLDER [EDITS] [literal]
+Usage: python benchmarks/unit_memo_corpus.py FOLDER [EDITS] [literal|blanked]
 With `literal`, every edit changes a number inside a function (the edits that leave
-the other units' keys alone, so most of them are replayed).
+the other units' keys alone, so most of them are replayed); with `blanked`, a number
+the skeleton blanks (`same_skeleton`), after the text was checked twice (so its
+items are recorded), in files with a class: the edits after which the memo replays
+a method around the edited one.
 """
 
 from __future__ import annotations
 
+import ast
 import json
 import random
 import sys
@@ -18,8 +22,9 @@ import zlib
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).parent.parent / "tests"))
-from test_unit_memo import KINDS, _parses, edit
+from test_unit_memo import KINDS, _number_edits, _parses, edit
 
+from robotfix.analysis.skeleton import same_skeleton
 from robotfix.api import check_source
 from robotfix.config import Config
 from robotfix.ros.catalog import MsgCatalog
@@ -42,11 +47,14 @@ def main(folder: Path, edits: int, kinds: tuple[str, ...]) -> None:
         memo = ProofMemo(max_entries=0)  # the units alone (see the test)
         check_source(text, str(path), config, catalog, memo=memo)
         done = 0
+        chosen = _blanked(text, rng, edits) if kinds == ("blanked",) else None
+        if chosen is not None:  # recorded: a skeleton is, once checked twice
+            check_source(text, str(path), config, catalog, memo=memo)
         for _ in range(edits * 3):
-            if done >= edits:
+            if done >= edits or chosen == []:
                 break
             try:
-                new = edit(text, rng, kinds)
+                new = chosen.pop() if chosen else edit(text, rng, kinds)
             except (SyntaxError, ValueError, UnicodeError, IndexError):
                 continue
             if new is None or new == text or not _parses(new):
@@ -58,8 +66,9 @@ def main(folder: Path, edits: int, kinds: tuple[str, ...]) -> None:
                 mismatches += 1
                 print(f"MISMATCH {path}", flush=True)
         compared += done
-        hits += memo.units.hits
-        misses += memo.units.misses
+        units = memo.units  # None: no check analysed the file (skipped)
+        hits += getattr(units, "hits", 0)
+        misses += getattr(units, "misses", 0)
     print(
         json.dumps(
             {
@@ -73,9 +82,18 @@ def main(folder: Path, edits: int, kinds: tuple[str, ...]) -> None:
     )
 
 
+def _blanked(text: str, rng: random.Random, edits: int) -> list[str]:
+    """Up to `edits` edits of a number the skeleton blanks (none in a file without
+    a class)."""
+    if "class " not in text:
+        return []
+    found = [e for e in _number_edits(text) if same_skeleton(ast.parse(e), text, e)]
+    return rng.sample(found, min(edits, len(found)))
+
+
 if __name__ == "__main__":
     main(
         Path(sys.argv[1]),
         int(sys.argv[2]) if len(sys.argv) > 2 else 3,
-        ("literal",) if sys.argv[3:4] == ["literal"] else KINDS,
+        tuple(sys.argv[3:4]) if sys.argv[3:4] in (["literal"], ["blanked"]) else KINDS,
     )

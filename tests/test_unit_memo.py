@@ -13,7 +13,8 @@ from pathlib import Path
 
 import pytest
 
-from robotfix.analysis.unitmemo import UnitMemo, _numbers_only, skeleton
+from robotfix.analysis.skeleton import numbers_only, same_skeleton, skeleton
+from robotfix.analysis.unitmemo import UnitMemo
 from robotfix.api import check_source
 from robotfix.config import Config
 from robotfix.smt.memo import ProofMemo
@@ -376,4 +377,181 @@ def test_edits_of_code_cost_the_memo_no_recording(tmp_path: Path) -> None:
 def test_an_edit_of_numbers_only_is_told_from_the_text(
     before: str, after: str, numbers: bool
 ) -> None:
-    assert _numbers_only(before, after) is numbers
+    assert numbers_only(before, after) is numbers
+
+
+def _class_node(methods: int) -> str:
+    """A node class of `methods` methods, each computing with a local number (one
+    the skeleton blanks) and reporting a unit error of its own."""
+    out = [
+        "from typing import Annotated\n",
+        "\n",
+        "Speed = Annotated[float, \"Unit('m/s')\"]\n",
+        "Length = Annotated[float, \"Unit('m')\"]\n",
+        "\n",
+        "\n",
+        "class Drive:\n",
+    ]
+    for i in range(methods):
+        out += [
+            f"    def step_{i}(self, v: Speed, d: Length) -> None:\n",
+            f"        gain = {i + 1}.5\n",
+            "        total: Length = d + v * gain\n",
+            "\n",
+        ]
+    return "".join(out)
+
+
+def test_a_method_is_replayed_after_an_edit_of_a_sibling(tmp_path: Path) -> None:
+    """A node's methods share one top-level statement, their class: a number
+    edited in one method must not make the others run again (each is keyed by
+    its own text; the rest of the class is in the skeleton)."""
+    from robotfix.ros.catalog import MsgCatalog
+
+    catalog = MsgCatalog([])
+    text = _class_node(8)
+    path = tmp_path / "node.py"
+    memo = ProofMemo()
+    for _ in range(2):
+        check_source(text, str(path), Config(), catalog, memo=memo)
+    units = memo.units
+    assert isinstance(units, UnitMemo)
+    edited = text.replace("gain = 4.5", "gain = 4.7")
+    before = units.hits
+    found = check_source(edited, str(path), Config(), catalog, memo=memo)
+    assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
+    assert [d.rule.code for d in found] == ["RF203"] * 8
+    assert units.hits - before >= 7  # every method but the edited one
+
+
+SIBLING_READ = {
+    "module": (
+        "from geometry_msgs.msg import Pose, Twist\n"
+        "\n"
+        "\n"
+        "def pair(a: Pose, b: Twist):\n"
+        "    t = (a, b)\n"
+        "    u = t[0]\n"
+        "    return u\n"
+        "\n"
+        "\n"
+        "def use(a: Pose, b: Twist):\n"
+        "    v = pair(a, b)\n"
+        "    a.position.x += v.linear.x\n"
+    ),
+    "class": (
+        "from geometry_msgs.msg import Pose, Twist\n"
+        "\n"
+        "\n"
+        "class Node:\n"
+        "    def pair(self, a: Pose, b: Twist):\n"
+        "        t = (a, b)\n"
+        "        u = t[0]\n"
+        "        return u\n"
+        "\n"
+        "    def use(self, a: Pose, b: Twist):\n"
+        "        v = self.pair(a, b)\n"
+        "        a.position.x += v.linear.x\n"
+    ),
+}
+
+
+def _clean_then_edited(
+    tmp_path: Path, text: str, edited: str, folder: Path
+) -> list[object]:
+    """`text` checked twice with one memo (clean, and recorded), then `edited`
+    with it: its diagnostics, which must be a fresh check's."""
+    catalog = catalog_for(folder)
+    path = tmp_path / "node.py"
+    memo = ProofMemo()
+    for _ in range(2):
+        assert not check_source(text, str(path), Config(), catalog, memo=memo)
+    found = check_source(edited, str(path), Config(), catalog, memo=memo)
+    assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
+    return found  # type: ignore[return-value]
+
+
+@pytest.mark.parametrize("where", sorted(SIBLING_READ))
+def test_what_an_item_reads_of_a_sibling_body_is_in_its_key(
+    tmp_path: Path, where: str
+) -> None:
+    """The type model reads other functions' bodies: `pair` returns a Pose, then
+    (`t[0]` made `t[1]`, a number the skeleton blanks) a Twist, so `use` adds a
+    velocity to a position. `use`'s own text did not change; what it asked the
+    model did (`Record.reads`), so it is analysed again, not replayed."""
+    text = SIBLING_READ[where]
+    edited = text.replace("t[0]", "t[1]")
+    found = _clean_then_edited(tmp_path, text, edited, CASES / "types")
+    assert [d.rule.code for d in found] == ["RF202"]
+
+
+def _number_edits(text: str) -> Iterator[str]:
+    """`text` with each of its numbers changed, to one of the same length and to
+    a longer one."""
+    lines = text.splitlines(keepends=True)
+    for node in ast.walk(ast.parse(text)):
+        if not (
+            isinstance(node, ast.Constant)
+            and type(node.value) in (int, float)
+            and node.lineno == node.end_lineno
+        ):
+            continue
+        raw = lines[node.lineno - 1].encode()[node.col_offset : node.end_col_offset]
+        digit = next((i for i in range(len(raw)) if raw[i : i + 1].isdigit()), None)
+        if digit is None:
+            continue
+        other = b"7" if raw[digit : digit + 1] != b"7" else b"3"
+        for new in (raw[:digit] + other + raw[digit + 1 :], raw + b"5"):
+            edited = _replace(lines, node, new.decode())
+            if edited is not None and _parses(edited):
+                yield edited
+
+
+@pytest.mark.parametrize(
+    "path", CASE_FILES[::7], ids=lambda p: str(p.relative_to(CASES))
+)
+def test_an_unchanged_skeleton_is_told_from_the_number_edited(path: Path) -> None:
+    """`same_skeleton` (which spares making the skeleton when one number changed)
+    says what making it would: True only when it is the same, False only when
+    it changed."""
+    text = path.read_text(encoding="utf-8")
+    if not _parses(text):
+        return
+    before = skeleton(ast.parse(text), text.splitlines(keepends=True))
+    for edited in _number_edits(text):
+        tree = ast.parse(edited)
+        same = same_skeleton(tree, text, edited)
+        if same is None:
+            continue
+        after = skeleton(tree, edited.splitlines(keepends=True))
+        assert same == (after == before), edited
+
+
+def test_what_an_earlier_method_wrote_is_in_a_method_key(tmp_path: Path) -> None:
+    """`__init__` is not kept (it writes the frame of `self.odom_frame`, which
+    `tick` reads), and the frame it writes comes from a number the skeleton
+    blanks (`frames[0]` made `frames[1]`): `tick`'s key holds what `__init__`
+    was (`_wrote`), so `tick` is analysed again and finds the two frames."""
+    text = (
+        "from geometry_msgs.msg import PointStamped\n"
+        "from rclpy.node import Node\n"
+        "\n"
+        "\n"
+        "class Follower(Node):\n"
+        "    def __init__(self) -> None:\n"
+        '        super().__init__("follower")\n'
+        '        frames = ("map", "odom")\n'
+        "        chosen = frames[0]\n"
+        "        self.odom_frame = chosen\n"
+        "        self.timer = self.create_timer(0.2, self.tick)\n"
+        "\n"
+        "    def tick(self) -> None:\n"
+        "        here = PointStamped()\n"
+        "        here.header.frame_id = self.odom_frame\n"
+        "        goal = PointStamped()\n"
+        '        goal.header.frame_id = "map"\n'
+        "        error = goal.point.x - here.point.x\n"
+    )
+    edited = text.replace("frames[0]", "frames[1]")
+    found = _clean_then_edited(tmp_path, text, edited, CASES / "frames")
+    assert [d.rule.code for d in found] == ["RF202"]

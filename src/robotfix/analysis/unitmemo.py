@@ -20,7 +20,17 @@ Key of an item (`Check.analyze`):
   analysis reads other functions only through their signatures (def headers) and
   syntactic facts (`ends`, may-raise: statements, not numbers);
 - the exact text, with its first line number, of the top-level statement holding
-  the item, and the item's position in it;
+  the item, and the item's position in it; for an item of a method of a
+  top-level class (a node's callbacks share their class), the method's own text
+  instead, with the text, place and type-model answers of every item of the
+  class run before it that wrote what another item can read (`_wrote`: its exit
+  fingerprint differs, or it asked z3); the rest of the class (its header,
+  constants, the methods' headers) is in the skeleton;
+- what the type model answered the item (`Record.reads`, any item): the model
+  reads other functions' bodies (what a function returns, what `self.x` is
+  assigned; `t[1]` of a tuple is a number the skeleton blanks), so the questions
+  are logged with their answers while the item runs (`_Reads`) and asked again,
+  in their order, before a replay (`_same_reads`);
 - the identities of the catalog, the stubs and the discharger's kind (a change
   clears the memo), and what the resolver answered so far (`consulted`: every
   imported module and member with its fingerprint); what the item itself resolved
@@ -56,7 +66,8 @@ Writes of an item (read from the code), and what happens to each on a replay:
 - `ctx.sym_names`, `_derived`, `_sub_ids`, `unchanged`, `_first_reads`, `sizes`:
   entries keyed by the item's own fresh symbols only (a hit on an older entry made
   by another item makes it unkept), never looked up by another item;
-- `program.ends`, `program.augmented`, `ctx._invariants`, `ctx.follow_lists`,
+- `program.ends`, `program.augmented`, `program.reading_calls`,
+  `ctx._invariants`, `ctx.follow_lists`,
   the creation of `ctx.parameters` / `ctx.frame_facts`: caches of pure functions of
   the tree (their contents, which items do change, are in the fingerprint);
 - the item's own signature (`program.signature`, `_function_for`): built by the
@@ -76,19 +87,22 @@ import hashlib
 import itertools
 import re
 from collections import OrderedDict
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from robotfix.analysis import inline
 from robotfix.analysis.context import Scope
+from robotfix.analysis.skeleton import numbers_only, same_skeleton, skeleton
 from robotfix.astwalk import walk
 
 if TYPE_CHECKING:
     from robotfix.analysis.context import FileContext
-    from robotfix.analysis.program import Program
+    from robotfix.analysis.program import Function, Program
+    from robotfix.analysis.types import TypeModel
+    from robotfix.analysis.typeterms import Type
     from robotfix.analysis.values import Value
     from robotfix.diagnostics import Diagnostic
+    from robotfix.stubs import load as stubs
 
 MAX_ENTRIES = 4_000  # items per document
 
@@ -107,6 +121,7 @@ class Record:
     spawned: tuple[tuple[tuple[object, ...], bool], ...]  # locator, own scope
     walked: bool  # some once key names a node (by walk index)
     consulted: tuple[tuple[str, object], ...] = ()  # what imports it resolved
+    reads: tuple[tuple[tuple[object, ...], object], ...] = ()  # of the type model
 
 
 class UnitMemo:
@@ -152,11 +167,21 @@ class UnitMemo:
         # are recorded only once a skeleton is checked twice in a row.
         text, before = ctx.source.text, self._text
         self._text = text
-        if before is not None and not _numbers_only(before, text):
+        if before is not None and not numbers_only(before, text):
+            self._last = ""
+            return None
+        # one number changed: whether the skeleton did is told from where it is
+        # (on a 791-line node making the skeleton takes 4 ms); a kept number
+        # changed it, so no item can hit (but in a skeleton checked before)
+        same = same_skeleton(tree, before, text) if before is not None else None
+        if same is False:
             self._last = ""
             return None
         lines = text.splitlines(keepends=True)
-        base = hashlib.sha1(skeleton(tree, lines).encode()).hexdigest()
+        if same and self._last:
+            base = self._last
+        else:
+            base = hashlib.sha1(skeleton(tree, lines).encode()).hexdigest()
         last, self._last = self._last, base
         if base != last and base not in self._bases:
             return None
@@ -216,6 +241,12 @@ class Check:
             self.starts.append(_first_line(statement))
             self.roots.append(statement)
         self._root_text: dict[int, str] = {}
+        # a top-level class's methods, each an item's unit (`_unit`)
+        self._methods: dict[int, tuple[list[tuple[int, int]], list[ast.stmt]]] = {}
+        self._unit_text: dict[int, str] = {}
+        # per top-level class: what its items not kept, run so far, were (`_wrote`)
+        self._writers: dict[int, tuple[object, ...]] = {}
+        self._whole = False  # an item outside every statement ran: no unit keys
         # symbols made by the module phase: the same for the same skeleton
         ctx.unit_base = ctx._next
 
@@ -229,14 +260,69 @@ class Check:
         end = (root.end_lineno or 0, root.end_col_offset or 0)
         return index if where <= end else None
 
+    def _text(self, statement: ast.stmt) -> str:
+        first = _first_line(statement)[0]
+        text = "".join(self.lines[first - 1 : statement.end_lineno])
+        return f"{first}\0{text}"
+
+    def _unit(self, node: ast.AST, index: int) -> ast.stmt | None:
+        """The method of a top-level class that holds `node` (None: the class
+        body itself, or anything else), whose text keys the item in place of
+        its class's."""
+        root = self.roots[index]
+        if not isinstance(root, ast.ClassDef) or node is root or self._whole:
+            return None
+        methods = self._methods.get(index)
+        if methods is None:
+            chosen: list[ast.stmt] = [
+                s
+                for s in root.body
+                if isinstance(s, (ast.FunctionDef, ast.AsyncFunctionDef))
+            ]
+            methods = ([_first_line(s) for s in chosen], chosen)
+            self._methods[index] = methods
+        where = (getattr(node, "lineno", 0), getattr(node, "col_offset", 0))
+        at = bisect.bisect_right(methods[0], where) - 1
+        if at < 0:
+            return None
+        method = methods[1][at]
+        end = (method.end_lineno or 0, method.end_col_offset or 0)
+        return method if where <= end else None
+
     def _key(self, node: ast.AST, index: int) -> tuple[object, ...]:
+        unit = self._unit(node, index)
+        if unit is not None:
+            # the method's own text; its siblings' bodies are read through the
+            # type model (`Record.reads`, asked again on a replay) and through what
+            # those not kept wrote (`_writers`); the rest of the class is in the
+            # skeleton
+            text = self._unit_text.get(id(unit))
+            if text is None:
+                text = self._unit_text[id(unit)] = self._text(unit)
+            writers = self._writers.get(index, ())
+            return (self.base, text, _locator(node), _resolver_state(self.ctx), writers)
         text = self._root_text.get(index)
         if text is None:
-            root = self.roots[index]
-            first = self.starts[index][0]
-            text = "".join(self.lines[first - 1 : root.end_lineno])
-            self._root_text[index] = text = f"{first}\0{text}"
+            text = self._root_text[index] = self._text(self.roots[index])
         return (self.base, text, _locator(node), _resolver_state(self.ctx))
+
+    def _walked(self, node: ast.AST, index: int) -> ast.stmt:
+        """The statement whose walk numbers the nodes an item's `once` keys name:
+        the one whose text keys it (a method's, not its whole class's)."""
+        return self._unit(node, index) or self.roots[index]
+
+    def _wrote(
+        self, index: int | None, key: tuple[object, ...] | None, reads: object
+    ) -> None:
+        """An item ran and wrote what a later item of its class may read (or
+        raised, or was not keyed), so those items' keys hold what it was (its text and
+        place, and the type model's answers it got; the skeleton and what the
+        resolver answered are in their keys already)."""
+        if index is None or key is None:
+            self._whole = True
+        elif isinstance(self.roots[index], ast.ClassDef):
+            entry = (key[1], key[2], reads)
+            self._writers[index] = (*self._writers.get(index, ()), entry)
 
     # -- one item ------------------------------------------------------------
     def analyze(
@@ -246,6 +332,7 @@ class Check:
         ctx = self.ctx
         index = self._root(node)
         if index is None or ctx.muted:
+            self._wrote(index, None if index is None else self._key(node, index), None)
             return run(node, parent, scope, function)  # type: ignore[no-any-return]
         key = self._key(node, index)
         record = self.memo.get(key)
@@ -270,7 +357,7 @@ class Check:
         ctx = self.ctx
         if record.entering != entering or not ctx.budget.affords(record.steps):
             return None
-        nodes = list(walk(self.roots[index])) if record.walked else []
+        nodes = list(walk(self._walked(node, index))) if record.walked else []
         answers = record.answers
         if record.walked:
             answers = tuple((_from_walk(o, nodes), w) for o, w in answers)
@@ -285,6 +372,8 @@ class Check:
                     return None
                 spawned.append((found, scope if own else parent))
         if record.consulted and not _still(ctx, record.consulted):
+            return None
+        if record.reads and not _same_reads(self.program, record.reads):
             return None
         ctx.budget.spend(record.steps)
         ctx._next += record.fresh
@@ -320,57 +409,90 @@ class Check:
         ctx.unit_floor, ctx.unit_shared = fresh, False
         consulted = getattr(ctx.resolver, "consulted", None)
         before = dict(consulted) if consulted else {}
+        model = self.program.types
+        reads = _Reads(model, self.program)
+        self.program.types = reads  # type: ignore[assignment]
         try:
             spawned: list[tuple[ast.AST, Scope]] = run(node, parent, scope, function)
+        except BaseException:
+            self._wrote(index, key, None)
+            raise
         finally:
+            self.program.types = model
             ctx.unit_log = ctx.unit_answers = None
             shared, ctx.unit_shared = ctx.unit_shared, False
-        # but the counters and the resolver's record (checked again on a replay)
-        if shared or self._fingerprint()[2:-1] != entering[2:-1]:
+        # it wrote what another item can read: the fingerprint changed (but the
+        # counters and the resolver's record, checked again on a replay), or z3
+        # was asked (its later models may depend on this ask)
+        wrote = (
+            self._fingerprint()[2:-1] != entering[2:-1]
+            or ctx.discharge.solver_calls() != calls  # type: ignore[attr-defined]
+        )
+        record = None
+        if not (wrote or shared or reads.unknown):
+            record = self._replayable(index, node, parent, scope, spawned, log, answers)
+        if record is None:
+            if wrote:
+                self._wrote(index, key, tuple(reads.log))
             return spawned
-        if ctx.discharge.solver_calls() != calls:  # type: ignore[attr-defined]
-            return spawned  # z3 was asked: its later models may depend on this ask
-        own = {id(n) for n in walk(node)}
+        events, kept_answers, spawns, walked = record
+        self.memo.put(
+            key,
+            Record(
+                entering,
+                kept_answers,
+                events,
+                ctx.budget.used - steps,
+                ctx._next - fresh,
+                _count(ctx._question_ids) - questions,
+                spawns,
+                walked,
+                tuple(
+                    (k, v) for k, v in (consulted or {}).items() if before.get(k) != v
+                ),
+                tuple(reads.log),
+            ),
+        )
+        return spawned
+
+    def _replayable(
+        self,
+        index: int,
+        node: ast.AST,
+        parent: Scope,
+        scope: Scope,
+        spawned: list[tuple[ast.AST, Scope]],
+        log: list[tuple[Diagnostic | None, object]],
+        answers: dict[object, bool],
+    ) -> tuple[tuple[Any, ...], tuple[Any, ...], tuple[Any, ...], bool] | None:
+        """The item's reports, `once` answers and spawned items as a replay finds
+        them again (node ids as walk indexes), and whether any names a node; None
+        when one cannot be found again."""
+        own = {id(n) for n in walk(node)} if spawned else set()
         kept: list[tuple[tuple[object, ...], bool]] = []
         for child, where in spawned:
             if id(child) not in own or where not in (scope, parent):
-                return spawned
+                return None
             kept.append((_locator(child), where is scope))
         ids: dict[int, int] = {}
         walked = any(_has_int(once) for _, once in log) or any(
             _has_int(once) for once in answers
         )
         if walked:
-            ids = {id(n): i for i, n in enumerate(walk(self.roots[index]))}
+            ids = {id(n): i for i, n in enumerate(walk(self._walked(node, index)))}
         events = []
         for diag, once in log:
             translated = _to_walk(once, ids) if walked else once
             if translated is _UNKEPT:
-                return spawned
+                return None
             events.append((diag, translated))
         kept_answers = []
         for once, was in answers.items():
             translated = _to_walk(once, ids) if walked else once
             if translated is _UNKEPT:
-                return spawned
+                return None
             kept_answers.append((translated, was))
-        self.memo.put(
-            key,
-            Record(
-                entering,
-                tuple(kept_answers),
-                tuple(events),
-                ctx.budget.used - steps,
-                ctx._next - fresh,
-                _count(ctx._question_ids) - questions,
-                tuple(kept),
-                walked,
-                tuple(
-                    (k, v) for k, v in (consulted or {}).items() if before.get(k) != v
-                ),
-            ),
-        )
-        return spawned
+        return tuple(events), tuple(kept_answers), tuple(kept), walked
 
     # -- the state other items can see ---------------------------------------
     def _fingerprint(self) -> tuple[object, ...]:
@@ -421,8 +543,95 @@ _OWN_CTX = frozenset(
         "unit_shared",
     }
 )
-_OWN_PROGRAM = frozenset({"ends", "augmented", "types"})
+_OWN_PROGRAM = frozenset({"ends", "augmented", "reading_calls", "types"})
 _UNKEPT = object()
+
+
+class _Reads:
+    """The type model as an item's run sees it (`program.types` while it runs):
+    every question the interpreter asks is answered by the model and logged with
+    its answer, by names that find it again in a later check. The model reads
+    other functions' bodies (what a method returns, what `self.x` is assigned),
+    so a replay asks the log again (`_same_reads`): the answers must be alike,
+    and the model's tables fill in the order a run fills them."""
+
+    def __init__(self, model: TypeModel, program: Program) -> None:
+        self.model = model
+        self.program = program
+        self.log: list[tuple[tuple[object, ...], object]] = []
+        self.unknown = False  # asked something it cannot name
+
+    def __getattr__(self, name: str) -> object:
+        self.unknown = True
+        return getattr(self.model, name)
+
+    def _named(self, function: Function) -> str | None:
+        if self.program.functions.get(function.key) is function:
+            return function.key
+        self.unknown = True
+        return None
+
+    def infer(
+        self, node: ast.expr, function: Function | None, env: object = None
+    ) -> Type | None:
+        found = self.model.infer(node, function, env)  # type: ignore[arg-type]
+        if not isinstance(node, ast.Name) or function is None or env is not None:
+            self.unknown = True
+        else:
+            self.log.append((("infer", self._named(function), node.id), found))
+        return found
+
+    def parameter(self, function: Function, name: str) -> Type | None:
+        found = self.model.parameter(function, name)
+        self.log.append((("parameter", self._named(function), name), found))
+        return found
+
+    def returns(self, key: str) -> Type | None:
+        found = self.model.returns(key)
+        self.log.append((("returns", key), found))
+        return found
+
+    def attribute(self, class_name: str, attr: str) -> Type | None:
+        found = self.model.attribute(class_name, attr)
+        self.log.append((("attribute", class_name, attr), found))
+        return found
+
+    def library_bases(self, class_name: str) -> list[stubs.Class]:
+        found = self.model.library_bases(class_name)
+        self.log.append((("library_bases", class_name), _qualnames(found)))
+        return found
+
+
+def _qualnames(classes: list[stubs.Class]) -> tuple[str, ...]:
+    return tuple(c.qualname for c in classes)
+
+
+def _same_reads(
+    program: Program, reads: tuple[tuple[tuple[object, ...], object], ...]
+) -> bool:
+    """Whether the type model answers an item's logged questions alike now (asked
+    in their order, as its run asked them)."""
+    model = program.types
+    for question, answer in reads:
+        kind = question[0]
+        if kind in ("infer", "parameter"):
+            function = program.functions.get(str(question[1]))
+            if function is None:
+                return False
+            name = str(question[2])
+            if kind == "infer":
+                found: object = model.infer(ast.Name(id=name, ctx=ast.Load()), function)
+            else:
+                found = model.parameter(function, name)
+        elif kind == "returns":
+            found = model.returns(str(question[1]))
+        elif kind == "attribute":
+            found = model.attribute(str(question[1]), str(question[2]))
+        else:
+            found = _qualnames(model.library_bases(str(question[1])))
+        if found != answer:
+            return False
+    return True
 
 
 def _still(ctx: FileContext, consulted: tuple[tuple[str, object], ...]) -> bool:
@@ -525,103 +734,3 @@ def _from_walk(key: object, nodes: list[ast.AST]) -> object:
     if isinstance(key, _Walk):
         return id(nodes[key.index])
     return key
-
-
-# -- the skeleton ------------------------------------------------------------------
-# the characters of most numbers' literals (`1_000`, `2.5e-3`, `3j`; an edit of a
-# hex literal is taken for one of code: only slower)
-_NUMBER_CHARS = frozenset("0123456789_.eE+-jJ")
-
-
-def _same_ends(a: Sequence[object], b: Sequence[object]) -> tuple[int, int]:
-    """How many items two sequences share at their start, and then at their end."""
-    first, shortest = 0, min(len(a), len(b))
-    while first < shortest and a[first] == b[first]:
-        first += 1
-    last = 0
-    while last < shortest - first and a[-1 - last] == b[-1 - last]:
-        last += 1
-    return first, last
-
-
-def _numbers_only(before: str, after: str) -> bool:
-    """Whether the one region where two texts differ holds only characters of
-    numbers: otherwise text that `skeleton` keeps as it is changed, and so did
-    the skeleton."""
-    old, new = before.splitlines(keepends=True), after.splitlines(keepends=True)
-    first, last = _same_ends(old, new)  # whole lines first: cheap on long texts
-    a = "".join(old[first : len(old) - last])
-    b = "".join(new[first : len(new) - last])
-    start, tail = _same_ends(a, b)
-    if "#" in a[a.rfind("\n", 0, start) + 1 : start]:
-        return False  # in a comment (or after a `#` in a string: only slower)
-    return _NUMBER_CHARS.issuperset(a[start : len(a) - tail]) and (
-        _NUMBER_CHARS.issuperset(b[start : len(b) - tail])
-    )
-
-
-def skeleton(tree: ast.Module, lines: list[str]) -> str:
-    """The module's text with the numeric literals of function bodies blanked where
-    only their own function reads them (see the module docstring)."""
-    spans: dict[int, list[tuple[int, int]]] = {}
-    todo: list[ast.AST] = []
-    for node in walk(tree):
-        # a helper its callers evaluate (`return v / 3.6`) is kept whole
-        if (
-            isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef))
-            and inline.returned(node) is None
-        ):
-            todo.extend(node.body)
-    seen: set[int] = set()
-    while todo:
-        node = todo.pop()
-        if id(node) in seen:
-            continue
-        seen.add(id(node))
-        kind = type(node)
-        if kind is ast.Constant:
-            value = node.value  # type: ignore[attr-defined]
-            if type(value) in (int, float) and node.lineno == node.end_lineno:  # type: ignore[attr-defined]
-                spans.setdefault(node.lineno, []).append(  # type: ignore[attr-defined]
-                    (node.col_offset, node.end_col_offset)  # type: ignore[attr-defined]
-                )
-            continue
-        if kind in _KEPT:
-            continue
-        if kind in (ast.FunctionDef, ast.AsyncFunctionDef):
-            continue  # its own body is queued above; its header is kept
-        if kind in (ast.Assign, ast.AugAssign, ast.AnnAssign):
-            targets = node.targets if kind is ast.Assign else [node.target]  # type: ignore[attr-defined]
-            if any(not isinstance(t, ast.Name) for t in targets):
-                continue  # a store to an attribute or an item: kept whole
-            if kind is ast.AnnAssign:
-                if node.value is not None:  # type: ignore[attr-defined]
-                    todo.append(node.value)  # type: ignore[attr-defined]
-                continue  # the annotation is kept
-            todo.append(node.value)  # type: ignore[attr-defined]
-            continue
-        if kind in (ast.If, ast.While):
-            todo.extend(node.body)  # type: ignore[attr-defined]
-            todo.extend(node.orelse)  # type: ignore[attr-defined]
-            continue  # the test is kept
-        if kind in (ast.Lambda, ast.ClassDef):
-            continue
-        todo.extend(ast.iter_child_nodes(node))
-    if not spans:
-        return "".join(lines)
-    out = list(lines)
-    for number, columns in spans.items():
-        if number - 1 >= len(out):
-            continue
-        raw = out[number - 1].encode("utf-8", "surrogatepass")
-        for start, end in sorted(columns, reverse=True):
-            rest = raw[end:].strip()
-            mark = (
-                b"#" if not rest or rest.startswith(b"#") else b"#%d#" % (end - start)
-            )
-            raw = raw[:start] + mark + raw[end:]
-        out[number - 1] = raw.decode("utf-8", "surrogatepass")
-    return "".join(out)
-
-
-_KEPT = (ast.Call, ast.Assert, ast.Raise, ast.Global, ast.Nonlocal)

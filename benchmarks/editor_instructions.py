@@ -1,0 +1,35 @@
+"""Per-edit work of the editor's check, to be counted by callgrind (deterministic on a
+busy machine, where `editor.py`'s CPU times move): checks WARMUP + EDITS versions of
+one real node in one process, each one edit of `editor.py`'s kind, with the
+document's memo (`memo`) or without (`plain`); prints the memo's hits.
+
+Usage (the difference of two runs is what the memo costs or saves):
+    valgrind --tool=callgrind --callgrind-out-file=cg.out \\
+        python benchmarks/editor_instructions.py NODE.py edited_real_blanked memo 10
+    callgrind_annotate cg.out | grep "PROGRAM TOTALS"
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import editor
+
+from robotfix import api
+from robotfix.smt.memo import ProofMemo
+
+
+def main(path: Path, kind: str, mode: str, edits: int) -> None:
+    text = path.read_text()
+    catalog = editor._server_catalog(path)
+    make = getattr(editor, kind)
+    sources = [make(text, n) for n in range(editor.WARMUP + edits)]
+    memo = ProofMemo() if mode == "memo" else None
+    for source in sources:
+        api.check_source(source, str(path), catalog=catalog, memo=memo)
+    print(getattr(getattr(memo, "units", None), "hits", 0))
+
+
+if __name__ == "__main__":
+    main(Path(sys.argv[1]), sys.argv[2], sys.argv[3], int(sys.argv[4]))

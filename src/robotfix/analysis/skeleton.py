@@ -1,0 +1,180 @@
+"""The editor memo's view of a module's text (`analysis/unitmemo.py`): its
+skeleton, the text with the numbers of function bodies blanked where only their own
+function reads them (the module docstring of `unitmemo` says which are kept), and
+what an edit of numbers only changed of it, told from the text.
+"""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Sequence
+
+from robotfix.analysis import inline
+from robotfix.astwalk import walk
+
+# the characters of most numbers' literals (`1_000`, `2.5e-3`, `3j`; an edit of a
+# hex literal is taken for one of code: only slower)
+_NUMBER_CHARS = frozenset("0123456789_.eE+-jJ")
+
+
+def _same_ends(a: Sequence[object], b: Sequence[object]) -> tuple[int, int]:
+    """How many items two sequences share at their start, and then at their end."""
+    first, shortest = 0, min(len(a), len(b))
+    while first < shortest and a[first] == b[first]:
+        first += 1
+    last = 0
+    while last < shortest - first and a[-1 - last] == b[-1 - last]:
+        last += 1
+    return first, last
+
+
+def numbers_only(before: str, after: str) -> bool:
+    """Whether the one region where two texts differ holds only characters of
+    numbers: otherwise text that `skeleton` keeps as it is changed, and so did
+    the skeleton."""
+    old, new = before.splitlines(keepends=True), after.splitlines(keepends=True)
+    first, last = _same_ends(old, new)  # whole lines first: cheap on long texts
+    a = "".join(old[first : len(old) - last])
+    b = "".join(new[first : len(new) - last])
+    start, tail = _same_ends(a, b)
+    if "#" in a[a.rfind("\n", 0, start) + 1 : start]:
+        return False  # in a comment (or after a `#` in a string: only slower)
+    return _NUMBER_CHARS.issuperset(a[start : len(a) - tail]) and (
+        _NUMBER_CHARS.issuperset(b[start : len(b) - tail])
+    )
+
+
+def skeleton(tree: ast.Module, lines: list[str]) -> str:
+    """The module's text with the numeric literals of function bodies blanked where
+    only their own function reads them (see the module docstring)."""
+    spans: dict[int, list[tuple[int, int]]] = {}
+    todo: list[ast.AST] = []
+    for node in walk(tree):
+        # a helper its callers evaluate (`return v / 3.6`) is kept whole
+        if (
+            isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef))
+            and inline.returned(node) is None
+        ):
+            todo.extend(node.body)
+    seen: set[int] = set()
+    while todo:
+        node = todo.pop()
+        if id(node) in seen:
+            continue
+        seen.add(id(node))
+        if _blanked(node):
+            spans.setdefault(node.lineno, []).append(  # type: ignore[attr-defined]
+                (node.col_offset, node.end_col_offset)  # type: ignore[attr-defined]
+            )
+        else:
+            todo.extend(_inside(node))
+    if not spans:
+        return "".join(lines)
+    out = list(lines)
+    for number, columns in spans.items():
+        if number - 1 >= len(out):
+            continue
+        raw = out[number - 1].encode("utf-8", "surrogatepass")
+        for start, end in sorted(columns, reverse=True):
+            rest = raw[end:].strip()
+            mark = (
+                b"#" if not rest or rest.startswith(b"#") else b"#%d#" % (end - start)
+            )
+            raw = raw[:start] + mark + raw[end:]
+        out[number - 1] = raw.decode("utf-8", "surrogatepass")
+    return "".join(out)
+
+
+def _blanked(node: ast.AST) -> bool:
+    """A number the skeleton blanks where it meets it (`_inside`)."""
+    return (
+        type(node) is ast.Constant
+        and type(node.value) in (int, float)
+        and node.lineno == node.end_lineno
+    )
+
+
+def _inside(node: ast.AST) -> Sequence[ast.AST]:
+    """The parts of a node of a function body in which the skeleton blanks
+    numbers: none of a call, an `assert`, `raise`, a nested function (its own
+    body is queued on its own), a lambda or a class; of a store to a name its
+    value only (a store to an attribute or an item is kept whole, and so is an
+    annotation); of an `if` or `while` its body, not its test."""
+    kind = type(node)
+    if kind is ast.Constant or kind in _KEPT:
+        return ()
+    if kind in (ast.Assign, ast.AugAssign, ast.AnnAssign):
+        targets = node.targets if kind is ast.Assign else [node.target]  # type: ignore[attr-defined]
+        if any(not isinstance(t, ast.Name) for t in targets):
+            return ()
+        value = node.value  # type: ignore[attr-defined]
+        return () if value is None else (value,)
+    if kind in (ast.If, ast.While):
+        return [*node.body, *node.orelse]  # type: ignore[attr-defined]
+    return list(ast.iter_child_nodes(node))
+
+
+def same_skeleton(tree: ast.Module, before: str, after: str) -> bool | None:
+    """Whether an edit of numbers only (`numbers_only`) left the skeleton as it
+    was, told without making it: True when it changed one number the skeleton
+    blanks (and its length, or nothing but a comment follows it), False when
+    the number it changed is kept, None when that cannot be told this way."""
+    old, new = before.splitlines(keepends=True), after.splitlines(keepends=True)
+    first, last = _same_ends(old, new)
+    if len(old) - first - last != 1 or len(new) - first - last != 1:
+        return None
+    a, b = old[first], new[first]
+    start, tail = _same_ends(a, b)
+    begin, end = len(b[:start].encode()), len(b[: len(b) - tail].encode())
+    path: list[ast.AST] = [tree]
+    line = first + 1
+    while True:  # down to the node holding the change
+        for child in ast.iter_child_nodes(path[-1]):
+            if not hasattr(child, "end_lineno"):
+                continue
+            if (child.lineno, child.col_offset) <= (line, begin) and (  # type: ignore[attr-defined]
+                (line, end) <= (child.end_lineno, child.end_col_offset)  # type: ignore[attr-defined]
+            ):
+                path.append(child)
+                break
+        else:
+            break
+    number = path[-1]
+    if not _blanked(number) or type(number.value) is bool:  # type: ignore[attr-defined]
+        return None
+    functions = [
+        i
+        for i, n in enumerate(path)
+        if isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef))
+    ]
+    if not functions:
+        return False  # a module's or a class's number: kept
+    function = path[functions[-1]]
+    if (
+        inline.returned(function) is not None
+        or not any(path[functions[-1] + 1] is s for s in function.body)  # type: ignore[attr-defined]
+        or not all(
+            any(child is c for c in _inside(parent))
+            for parent, child in zip(
+                path[functions[-1] + 1 : -1], path[functions[-1] + 2 :], strict=True
+            )
+        )
+    ):
+        return False
+    raw = b.encode()
+    delta = len(a.encode()) - len(raw)
+    was = a.encode()[number.col_offset : number.end_col_offset + delta].decode()  # type: ignore[attr-defined]
+    try:
+        parsed = ast.parse(was, mode="eval").body
+    except SyntaxError:
+        return None
+    if not _blanked(parsed) or type(parsed.value) is bool:  # type: ignore[attr-defined]
+        return None  # it was more than one number (`1+2` made `12`)
+    rest = raw[number.end_col_offset :].strip()  # type: ignore[attr-defined]
+    return delta == 0 or not rest or rest.startswith(b"#")
+
+
+_KEPT = (
+    *(ast.Call, ast.Assert, ast.Raise, ast.Global, ast.Nonlocal),
+    *(ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef),
+)
