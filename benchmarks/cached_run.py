@@ -25,8 +25,8 @@ import tempfile
 import time
 from pathlib import Path
 
-HELPER = Path("ros-navigation+navigation2/nav2_simple_commander/nav2_simple_commander")
-HELPER_FILE = HELPER / "robot_navigator.py"
+# under the navigation2 checkout, whatever its folder is called (`owner+repo`)
+HELPER_FILE = Path("nav2_simple_commander/nav2_simple_commander/robot_navigator.py")
 TARGET_LINES = 200_000
 
 # In a child process: api.check_paths wrapped to keep each run's result in `seen`
@@ -132,7 +132,7 @@ def main() -> None:
             if path.is_file() and not path.is_symlink():
                 os.utime(path, (now - 5, now - 5))
         step("warm, every file touched (same bytes)")
-        helper = tree / "copy1" / HELPER_FILE
+        helper = next((tree / "copy1").glob(f"*/{HELPER_FILE}"))
         text = helper.read_text()
         helper.write_text(text + "\n\ndef _edited_for_benchmark():\n    return 1\n")
         edit_out, edit = run(tree, cache, args.jobs)
