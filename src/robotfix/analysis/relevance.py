@@ -63,6 +63,7 @@ import weakref
 from collections.abc import Iterable, Sequence
 
 from robotfix import budget
+from robotfix.analysis.constants import SCALARS
 from robotfix.analysis.imported import (
     ClassSummary,
     FunctionSummary,
@@ -263,7 +264,7 @@ def _in_tree(resolver: Resolver, exists: object, name: str) -> bool:
     return resolver.module(name) is not None
 
 
-PLAIN_KINDS = frozenset({"int", "float", "bool", "str", "none", "unknown"})
+PLAIN_KINDS = SCALARS | {"none", "unknown"}  # what a plain constant holds
 
 
 def carries(member: object, depth: int = 0) -> bool:
