@@ -216,7 +216,8 @@ class ExpressionEvaluator:
 
     def eval_Name(self, node: ast.Name, state: State) -> Value:
         value = self.lookup_name(node.id, state, node)
-        self.note_hover(node, lambda: self.describe_name(node.id, value, state))
+        if self.ctx.hovers is not None:  # the editor asks: one closure per name read
+            self.note_hover(node, lambda: self.describe_name(node.id, value, state))
         return value
 
     def note_hover(self, node: ast.AST | Span, describe: Callable[[], str]) -> None:

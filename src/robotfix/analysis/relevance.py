@@ -85,6 +85,7 @@ BYTES_PER_STEP_BUDGET = 16  # a file over FILE_STEPS / 16 bytes is analysed: RF9
 BUILTINS = frozenset(dir(builtins)) | {"__file__", "__name__", "__doc__", "__spec__"}
 FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef)
 COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
+DEFINITIONS = (*FUNCTIONS, ast.ClassDef)  # built once: tested at every node
 
 ENABLED = os.environ.get("ROBOTFIX_NO_SKIP", "") == ""  # off: analyse every file
 
@@ -448,7 +449,7 @@ class _Scope:
                 for a in node.names
                 if a.name != "*"
             }
-        if isinstance(node, (*FUNCTIONS, ast.ClassDef)):
+        if isinstance(node, DEFINITIONS):
             for decorator in node.decorator_list:
                 bound = self.expr(decorator, bound)
             if isinstance(node, ast.ClassDef):
@@ -559,7 +560,7 @@ def _binders(node: ast.AST) -> tuple[frozenset[str], frozenset[str]]:
     for child in _own_nodes(node):
         if isinstance(child, ast.Name) and not isinstance(child.ctx, ast.Load):
             bound.add(child.id)
-        elif isinstance(child, (*FUNCTIONS, ast.ClassDef)):
+        elif isinstance(child, DEFINITIONS):
             bound.add(child.name)
         elif isinstance(child, ast.alias) and child.name != "*":
             bound.add(child.asname or child.name.partition(".")[0])
@@ -592,7 +593,7 @@ def _own_nodes(scope: ast.AST) -> Iterable[ast.AST]:
     while todo:
         node = todo.pop()
         yield node
-        if isinstance(node, (*FUNCTIONS, ast.ClassDef)):
+        if isinstance(node, DEFINITIONS):
             parts: list[ast.AST] = list(node.decorator_list)
             if isinstance(node, ast.ClassDef):
                 parts += [*node.bases, *node.keywords]

@@ -726,7 +726,9 @@ class TypeModel:
     def _bindings(self, function: FunctionView) -> dict[str, list[Binding]]:
         found = self._locals.get(id(function.node))
         if found is None:
-            found = self._locals[id(function.node)] = local_bindings(function.node)
+            walrus = ":=" in self.ctx.source.text
+            found = local_bindings(function.node, walrus)
+            self._locals[id(function.node)] = found
         return found
 
 

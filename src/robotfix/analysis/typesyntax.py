@@ -34,9 +34,12 @@ class BoundElement:
 Binding = ast.expr | BoundAnnotation | BoundElement | None
 
 
-def local_bindings(node: ast.AST) -> dict[str, list[Binding]]:
+def local_bindings(node: ast.AST, walrus: bool = True) -> dict[str, list[Binding]]:
     """name -> what each binding of it in the function gives it: a value, an
-    annotation, an element of an iterable, or None (a binding not followed)."""
+    annotation, an element of an iterable, or None (a binding not followed).
+    Without `walrus` (the file has no `:=`) expressions are not entered: `:=` is
+    the one expression that binds a name of the function (comprehensions and
+    lambdas have scopes of their own), so they hold nothing to find."""
     found: dict[str, list[Binding]] = {}
     declared: dict[str, ast.expr] = {}
     body = node.body if isinstance(node.body, list) else []  # type: ignore[attr-defined]
@@ -84,7 +87,10 @@ def local_bindings(node: ast.AST) -> dict[str, list[Binding]]:
             child, "name", None
         ):
             found.setdefault(child.name, []).append(None)  # type: ignore[attr-defined]
-        todo.extend(children(child))
+        if walrus:
+            todo.extend(children(child))
+        else:
+            todo.extend(c for c in children(child) if not isinstance(c, ast.expr))
     for name, annotation in declared.items():
         found[name] = [BoundAnnotation(annotation)]  # a declaration is a fact
     return found
