@@ -769,6 +769,9 @@ class _ParamParts:
     ) -> None:
         self.found, self.python_files, self.config = found, python_files, config
         self.cache, self.launches, self.inputs = cache, launches, inputs
+        # the C++ nodes an entry may start, their declarations (`cppparams`):
+        # in every launch file's key (picked out once, not per launch file)
+        self._cpp = [p for p in inputs if p.startswith(("cpp\0", "cmake\0"))]
         self._keys: dict[str, str] = {}
         self._real: dict[str, list[Path]] | None = None
         self._files: dict[tuple[str, str], str] = {}  # many keys name one file
@@ -827,8 +830,7 @@ class _ParamParts:
             self._file("definitions", p) for p in self.found.parameter_definitions
         ]
         parts += [self._file("summary", p) for p in self.found.summary_files]
-        # the C++ nodes an entry may start, their declarations (`cppparams`)
-        parts += [p for p in self.inputs if p.startswith(("cpp\0", "cmake\0"))]
+        parts += self._cpp
         found = self.cache.param_part(f"launch:{path}", self._key(path, parts))
         return found[0] if found is not None and len(found) == 1 else None
 
