@@ -530,3 +530,50 @@ def test_a_deleted_launch_files_kept_parts_go(workspace: Path) -> None:
     launch.unlink()
     settled(workspace)
     assert str(launch) not in results.read_text(encoding="utf-8")
+
+
+ARGUED = """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument("who", default_value="listener"),
+        DeclareLaunchArgument("level", default_value="info"),
+        Node(
+            package="demo",
+            executable="listener",
+            name=LaunchConfiguration("who"),
+            arguments=["--ros-args", "--log-level", LaunchConfiguration("level")],
+        ),
+    ])
+"""
+
+
+def test_a_launch_file_read_with_its_arguments_is_kept(
+    workspace: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """An entry whose name and arguments are a launch argument's text is kept
+    like any other (that text was not kept: such a file was read again on every
+    run that read launch files, 68 of nav2's and turtlebot3's 470)."""
+    import robotfix.ros.launch.reader as reader
+
+    launch = workspace / "src/demo/launch"
+    (launch / "argued.launch.py").write_text(ARGUED, encoding="utf-8")
+    settled(workspace)
+    parsed: list[str] = []
+    real = reader._parse
+    monkeypatch.setattr(
+        reader, "_parse", lambda path, *a: parsed.append(path.name) or real(path, *a)
+    )
+    edit(launch / "inner.launch.py", '"numbers", "numbers"', '"numbers", "inner"')
+    found = run(workspace, cache=True)
+    assert sorted(parsed) == ["demo.launch.py", "inner.launch.py"]
+    assert found == run(workspace, cache=False)
+    parsed.clear()
+    edit(launch / "argued.launch.py", '"info"', '"debug"')
+    found = run(workspace, cache=True)
+    assert parsed == ["argued.launch.py"]
+    assert found == run(workspace, cache=False)

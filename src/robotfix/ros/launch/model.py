@@ -109,6 +109,8 @@ def dump(value: object) -> object:
         return [[dump(v) for v in value]]
     if value is None or type(value) in (bool, int, float, str):
         return value
+    if isinstance(value, str):  # a launch argument's text (`python._ArgText`):
+        return str(value)  # read, an entry's strings are text, equal and alike
     raise ValueError(f"no JSON form for {name}")  # a tuple would come back a list
 
 
