@@ -36,6 +36,7 @@ from robotfix.fs import (
     Noted,
     UnreadableError,
     answering,
+    asked,
     noting,
     read_regular,
     stamp,
@@ -898,7 +899,7 @@ def _params_inputs(
     for path in python_files:
         mentions = cache.mentions(path)
         if mentions or path not in checked:
-            real = os.path.realpath(path)
+            real = asked("realpath", os.fspath(path))  # the run's answer
             where = package_folder(path)
             parts.append(f"py\0{path}\0{real}\0{cache.sha(path)}\0{where}")
             parts += [f"reads\0{k}\0{v}" for k, v in cache.consulted(path)]
