@@ -13,6 +13,7 @@ from typing import Any
 
 import pytest
 
+import robotfix.cache
 from robotfix import cli, discovery
 from robotfix.cache import ResultCache, run_key
 from robotfix.config import Config
@@ -339,6 +340,25 @@ def test_a_link_to_the_same_file_by_another_way_is_seen(
     (outside / "hop").symlink_to(outside / "d")
     assert same_as_uncached(tree, monkeypatch) > 0
     assert f"a symlink to `{outside / 'd' / 'e.py'}`" in run(tree)[0]
+
+
+def test_a_touched_tree_is_not_walked_again(
+    tree: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Every file given new stamps, same bytes (a checkout, a CI cache restored
+    onto a fresh clone): the files the walk read (the script's first line) hold
+    by their bytes (`ResultCache.same_bytes`), so the tree is not walked; the
+    trace is kept with the new stamps. A script whose first line changes with
+    its size and mtime kept is walked again (its own test, above)."""
+    monkeypatch.setattr(robotfix.cache, "RACY_NS", 0)
+    cold = run(tree)
+    earlier = time.time() - 5
+    for path in (tree / "src").rglob("*"):
+        if path.is_file():
+            os.utime(path, (earlier, earlier))
+    text, files, listed = walks(tree, monkeypatch)
+    assert (text, files) == cold and listed == 0
+    assert same_as_uncached(tree, monkeypatch) == 0
 
 
 def test_a_recently_changed_tree_is_not_kept(

@@ -7,12 +7,15 @@ with a run without the cache (a stale cache would give the old findings)."""
 from __future__ import annotations
 
 import json
+import os
+import time
 from pathlib import Path
 
 import pytest
 
 import robotfix.cache
 import robotfix.discovery
+import robotfix.fs
 import robotfix.run
 from robotfix.api import check_paths
 from robotfix.config import Config
@@ -577,3 +580,76 @@ def test_a_launch_file_read_with_its_arguments_is_kept(
     found = run(workspace, cache=True)
     assert parsed == ["argued.launch.py"]
     assert found == run(workspace, cache=False)
+
+
+def touch_all(root: Path, seconds: float = 5.0) -> None:
+    """Every file of the tree rewritten alike, as a checkout or a CI cache
+    restored onto a fresh clone leaves it: new mtimes and ctimes, same bytes."""
+    earlier = time.time() - seconds
+    for path in (root / "src").rglob("*"):
+        if path.is_file():
+            os.utime(path, (earlier, earlier))
+
+
+def test_a_touched_tree_reads_no_launch_file_again(
+    workspace: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Files whose stamps changed but whose bytes did not (hashed at the stamp
+    a trace noted, and alike now) hold: no launch file is read and no graph
+    checked (every one was, and the discovery walked again), and the traces
+    are kept with the new stamps: the run after that does not hash them."""
+    before = settled(workspace)
+    touch_all(workspace)
+    read: list[object] = []
+    real = robotfix.run._launches
+    monkeypatch.setattr(
+        robotfix.run, "_launches", lambda *a: read.append(a) or real(*a)
+    )
+    walked: list[object] = []
+    real_walk = robotfix.discovery._Walker.walk
+    monkeypatch.setattr(
+        robotfix.discovery._Walker,
+        "walk",
+        lambda *a: walked.append(a) or real_walk(*a),
+    )
+    assert run(workspace, cache=True) == before
+    assert not read and not walked
+    kept = json.loads((workspace / "cache/results.json").read_text(encoding="utf-8"))
+    launch = str(workspace / "src/demo/launch/demo.launch.py")
+    now = robotfix.fs.stamp(launch)
+    assert kept["stage"]["trace"]["stamps"][launch] == now
+    assert kept["reads"][launch][1]["stamps"][launch] == now
+    assert run(workspace, cache=True) == before
+    assert not read and not walked
+
+
+def test_a_touched_file_with_other_bytes_or_mode_is_read_again(
+    workspace: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The bytes decide, with the size and the mode: an edit of the same size
+    whose mtime is put back (RF401: a string for the talker's double `rate`)
+    and a launch file made executable are read again."""
+    import robotfix.ros.launch.reader as reader
+
+    before = settled(workspace)
+    assert not any("RF401" in line for line in before)
+    touch_all(workspace)
+    parsed: list[str] = []
+    real = reader._parse
+    monkeypatch.setattr(
+        reader, "_parse", lambda path, *a: parsed.append(path.name) or real(path, *a)
+    )
+    outer = workspace / "src/demo/launch/demo.launch.py"
+    stamp = outer.stat()
+    edit(outer, '{"rate": 2.0}', '{"rate": "x"}')
+    os.utime(outer, ns=(stamp.st_atime_ns, stamp.st_mtime_ns))
+    assert outer.stat().st_size == stamp.st_size
+    found = run(workspace, cache=True)
+    assert any("RF401" in line and "demo.launch.py" in line for line in found)
+    assert sorted(parsed) == ["demo.launch.py", "inner.launch.py"]  # it includes
+    assert found == run(workspace, cache=False)
+    settled(workspace)
+    parsed.clear()
+    outer.chmod(0o755)
+    assert run(workspace, cache=True) == run(workspace, cache=False)
+    assert "demo.launch.py" in parsed

@@ -45,6 +45,7 @@ import functools
 import hashlib
 import json
 import os
+import stat
 import sys
 import time
 from collections.abc import Iterable
@@ -73,6 +74,7 @@ MENTION_WORDS = (b"declare_parameter", b"get_parameter", b"ParamListener", b"ros
 MAX_BYTES = 512 * 1024 * 1024  # results.json of ~4 million files
 MAX_INT = 2**31  # lines and columns; anything larger is not ours
 STAMP = 6  # the length of an `fs.stamp`, which begins a stat record
+TRACED_BYTES = 1024 * 1024  # larger files a trace stamped are not hashed for it
 GITIGNORE = b"# Created by robotfix\n*\n"
 
 
@@ -151,6 +153,7 @@ class ResultCache:
         self._stage: dict[str, Any] | None = None
         # the module index's answers with what they depend on (`ModuleIndex.keep`)
         self._resolution: dict[str, Any] | None = None
+        self._traced: list[Any] = []  # the traces kept by this run (`_record`)
         self._dirty = False
         self._dropped = False  # `drop`: nothing of this cache is saved
         if not trusted:
@@ -270,6 +273,27 @@ class ResultCache:
         self._dirty = True
         return record
 
+    def same_bytes(self, name: str, was: list[int], now: list[int]) -> bool:
+        """Whether the file `name`, whose stamp was `was` when a trace noted it
+        and is `now`, holds the bytes it held then (`Trace.holds`): an earlier
+        run hashed it at that very stamp, and it hashes alike now, with the same
+        device, size and mode (what a walk or a reading sees besides its bytes);
+        its mtime, ctime and inode may differ, as after a `touch`, a checkout
+        that wrote it alike or a CI cache restored onto a fresh clone. A folder,
+        or a file no run hashed, does not hold; nor does a stamp too recent to
+        trust (`_stat_record`: its record never matches)."""
+        if was[3:] != now[3:]:
+            return False
+        known = self._stats.get(entry_key(Path(name)))
+        if known is None or known[:STAMP] != was:
+            return False
+        record = self._stat_record(Path(name))
+        return (
+            record is not None
+            and record[:STAMP] == now
+            and record[STAMP] == known[STAMP]
+        )
+
     # -- the catalog -------------------------------------------------------------
     def catalog(
         self, key: str
@@ -349,8 +373,11 @@ class ResultCache:
             return None
         trace = Trace.from_json(raw.get("trace"))
         found = _load_discovery(raw.get("found"))
-        if trace is None or found is None or not trace.holds():
+        if trace is None or found is None or not trace.holds(self.same_bytes):
             return None
+        if trace.renewed:
+            self._discovery = {**raw, "trace": trace.to_json()}
+            self._dirty = True
         return found
 
     def put_discovery(self, key: str, found: Discovery, trace: Trace) -> None:
@@ -360,6 +387,8 @@ class ResultCache:
             if trace.spoiled
             else {"key": key, "trace": trace.to_json(), "found": _dump_discovery(found)}
         )
+        if raw is not None:
+            self._traced.append(raw["trace"])
         if raw != self._discovery:
             self._discovery = raw
             self._dirty = True
@@ -382,10 +411,25 @@ class ResultCache:
             and all(_name(t) for t in touched)
             and isinstance(graph, list)
             and all(_valid_diagnostic(d) for d in graph)
-            and trace.holds()
+            and trace.holds(self.same_bytes)
         ):
             return None
+        if trace.renewed:
+            self._stage = {**raw, "trace": trace.to_json()}
+            self._dirty = True
+            self._renew_reads()
         return touched, [_load(d) for d in graph]
+
+    def _renew_reads(self) -> None:
+        """The kept launch files' readings renewed as the stage was (a run whose
+        stage holds reads none of them; left with the old stamps, each would be
+        read again the next time the stage does not hold)."""
+        for path, entry in self._reads.items():
+            if not (isinstance(entry, list) and len(entry) == 3):
+                continue
+            trace = Trace.from_json(entry[1])
+            if trace is not None and trace.holds(self.same_bytes) and trace.renewed:
+                self._reads[path] = [entry[0], trace.to_json(), entry[2]]
 
     def put_stage(
         self, key: str, trace: Trace, touched: list[str], graph: list[Diagnostic]
@@ -401,6 +445,8 @@ class ResultCache:
                 "graph": [_dump(d) for d in graph],
             }
         )
+        if raw is not None:
+            self._traced.append(raw["trace"])
         if raw != self._stage:
             self._stage = raw
             self._dirty = True
@@ -466,6 +512,13 @@ class ResultCache:
 
     def put_launch_read(self, path: str, context: str, trace: Trace, raw: Any) -> None:
         self._reads[path] = [context, trace.to_json(), raw]
+        self._traced.append(self._reads[path][1])
+        self._dirty = True
+
+    def renew_launch_read(self, path: str, trace: Trace) -> None:
+        """A kept reading's trace whose stamps `holds` renewed (`same_bytes`)."""
+        entry = self._reads[path]
+        self._reads[path] = [entry[0], trace.to_json(), entry[2]]
         self._dirty = True
 
     def param_part(self, name: str, key: str) -> list[list[Diagnostic]] | None:
@@ -623,10 +676,12 @@ class ResultCache:
         ]
         for name in stale:
             del self._entries[name]
+        traced = self._record_traced()
         dropped = [
             name
             for name in self._stats
             if name not in self._seen_stats
+            and name not in traced
             and (name.startswith(prefixes) or not os.path.isfile(name))
         ]
         for name in dropped:
@@ -649,6 +704,41 @@ class ResultCache:
                 del kept[name]
             stale += dropped
         self._dirty = self._dirty or bool(stale)
+
+    def _record_traced(self) -> set[str]:
+        """The files the kept traces stamped (their hashes are kept, for
+        `same_bytes`), each of those this run kept hashed now if no run has:
+        a file read only by the walk or the launch files' reading (a package's
+        package.xml or CMakeLists.txt, an extensionless file's first line), at
+        most `TRACED_BYTES` long (a rosbag without an extension is not read)."""
+        fresh = {id(t) for t in self._traced}
+        traces = [self._discovery, self._stage]
+        traces += [entry for entry in self._reads.values() if isinstance(entry, list)]
+        traced: set[str] = set()
+        for trace in (
+            t.get("trace") if isinstance(t, dict) else t[1] if len(t) == 3 else None
+            for t in traces
+            if t is not None
+        ):
+            stamps = trace.get("stamps") if isinstance(trace, dict) else None
+            if not isinstance(stamps, dict):
+                continue
+            for name, found in stamps.items():
+                if not (
+                    isinstance(found, list)
+                    and len(found) == STAMP
+                    and all(type(n) is int for n in found)
+                    and stat.S_ISREG(found[5])
+                    and found[4] <= TRACED_BYTES
+                ):
+                    continue
+                key = entry_key(Path(name))
+                traced.add(key)
+                if id(trace) in fresh and key not in self._seen_stats:
+                    known = self._stats.get(key)
+                    if known is None or known[:STAMP] != found:
+                        self._stat_record(Path(name))
+        return traced
 
     def save(self) -> None:
         if not self._dirty:

@@ -627,6 +627,7 @@ class Trace(Noted):
     def __init__(self) -> None:
         super().__init__()
         self.spoiled = False
+        self.renewed = False  # `holds` renewed a stamp: to be kept again
         self._now = time.time_ns()
 
     def stamp(self, path: str | os.PathLike[str]) -> None:
@@ -690,16 +691,30 @@ class Trace(Noted):
                 out.probes.update({("isfile", p): False for p in paths})
         return out
 
-    def holds(self) -> bool:
-        """Whether every stamp and probe answers as it did."""
+    def holds(
+        self, same: Callable[[str, list[int], list[int]], bool] | None = None
+    ) -> bool:
+        """Whether every stamp and probe answers as it did. With `same`, a file
+        whose stamp changed holds while `same(name, was, now)` says it holds the
+        bytes it held (a `touch`, a checkout or a restored CI cache that wrote
+        it alike; `ResultCache.same_bytes`): its stamp is renewed here
+        (`renewed`), for the caller to keep."""
         if self.spoiled:
             return False
+        renewed: dict[str, list[int] | None] = {}
         for name, known in self.stamps.items():
-            if stamp(name) != known:
-                return False
+            now = stamp(name)
+            if now != known:
+                if same is None or known is None or now is None:
+                    return False
+                if not same(name, known, now):
+                    return False
+                renewed[name] = now
         for (kind, arg), answer in self.probes.items():
             if _probe(kind, arg) != answer:
                 return False
+        self.stamps.update(renewed)
+        self.renewed = bool(renewed)
         return True
 
     def to_json(self) -> dict[str, Any]:

@@ -542,8 +542,10 @@ class _KeptReads:
                 entries.append((entry, files))
         except (ValueError, TypeError):
             return None
-        if not trace.holds():
+        if not trace.holds(self.cache.same_bytes):
             return None
+        if trace.renewed:
+            self.cache.renew_launch_read(path, trace)
         return trace, Read(problem, entries, reading)
 
     def put(self, path: str, context: str, noted: Noted, read: Read) -> None:
