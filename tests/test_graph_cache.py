@@ -653,3 +653,31 @@ def test_a_touched_file_with_other_bytes_or_mode_is_read_again(
     outer.chmod(0o755)
     assert run(workspace, cache=True) == run(workspace, cache=False)
     assert "demo.launch.py" in parsed
+
+
+def test_a_file_touched_just_now_holds_by_its_bytes_and_is_renewed_later(
+    workspace: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A new stamp too young to trust (`RACY_NS`): the bytes, read now, still
+    decide for this run (no launch file read), but the trace keeps the old stamp
+    and the record of the bytes at it, so the next run hashes the file again
+    and then keeps the new stamp."""
+    before = settled(workspace)
+    touch_all(workspace)
+    read: list[object] = []
+    real = robotfix.run._launches
+    monkeypatch.setattr(
+        robotfix.run, "_launches", lambda *a: read.append(a) or real(*a)
+    )
+    launch = str(workspace / "src/demo/launch/demo.launch.py")
+    results = workspace / "cache/results.json"
+    monkeypatch.setattr(robotfix.cache, "RACY_NS", 3600 * 10**9)
+    assert run(workspace, cache=True) == before
+    assert not read
+    stamps = json.loads(results.read_text(encoding="utf-8"))["stage"]["trace"]["stamps"]
+    assert stamps[launch] != robotfix.fs.stamp(launch)
+    monkeypatch.setattr(robotfix.cache, "RACY_NS", 0)
+    assert run(workspace, cache=True) == before
+    assert not read
+    stamps = json.loads(results.read_text(encoding="utf-8"))["stage"]["trace"]["stamps"]
+    assert stamps[launch] == robotfix.fs.stamp(launch)

@@ -136,6 +136,9 @@ class ResultCache:
         # file -> [*fs.stamp, sha256, mentions]: `sha`'s memory
         self._stats: dict[str, list[Any]] = {}
         self._seen_stats: dict[str, list[Any]] = {}  # this run's, saved
+        # an earlier record of the same bytes kept instead of a record too young
+        # to trust (`_stat_record`): it still says what they were at its stamp
+        self._older: dict[str, list[Any]] = {}
         self._bytes: dict[str, bytes] = {}  # the last file `sha` read, to `take`
         self._params: tuple[str, list[Any]] | None = None
         # the parameter check by part (`param_part`): "fixed" -> [key, findings,
@@ -269,30 +272,31 @@ class ResultCache:
         record = [*stamp, hashlib.sha256(data).hexdigest(), mentions]
         if len(data) != stamp[4] or time.time_ns() - max(stamp[:2]) < RACY_NS:
             record[0] = -1  # changed while read, or too recent: never matches
+            if known is not None and known[0] != -1 and known[STAMP] == record[STAMP]:
+                self._older[key] = known  # for `same_bytes` in the next run
         self._seen_stats[key] = record
         self._dirty = True
         return record
 
-    def same_bytes(self, name: str, was: list[int], now: list[int]) -> bool:
+    def same_bytes(self, name: str, was: list[int], now: list[int]) -> list[int] | None:
         """Whether the file `name`, whose stamp was `was` when a trace noted it
         and is `now`, holds the bytes it held then (`Trace.holds`): an earlier
         run hashed it at that very stamp, and it hashes alike now, with the same
         device, size and mode (what a walk or a reading sees besides its bytes);
         its mtime, ctime and inode may differ, as after a `touch`, a checkout
-        that wrote it alike or a CI cache restored onto a fresh clone. A folder,
-        or a file no run hashed, does not hold; nor does a stamp too recent to
-        trust (`_stat_record`: its record never matches)."""
+        that wrote it alike or a CI cache restored onto a fresh clone. The
+        stamp the trace keeps for it then: `now`, or `was` while `now` is too
+        recent to trust (`_stat_record`; the next run hashes it again); None
+        when it differs, or is a folder or a file no run hashed."""
         if was[3:] != now[3:]:
-            return False
+            return None
         known = self._stats.get(entry_key(Path(name)))
         if known is None or known[:STAMP] != was:
-            return False
+            return None
         record = self._stat_record(Path(name))
-        return (
-            record is not None
-            and record[:STAMP] == now
-            and record[STAMP] == known[STAMP]
-        )
+        if record is None or record[STAMP] != known[STAMP]:
+            return None
+        return now if record[:STAMP] == now else was
 
     # -- the catalog -------------------------------------------------------------
     def catalog(
@@ -751,7 +755,7 @@ class ResultCache:
                 k: [v[0], v[1], dict(sorted(v[2].items())), dict(sorted(v[3].items()))]
                 for k, v in sorted(self.summaries.items())
             },
-            "stats": {**self._stats, **self._seen_stats},
+            "stats": {**self._stats, **self._seen_stats, **self._older},
             "params": list(self._params) if self._params is not None else None,
             "parts": self._parts,
             "reads": self._reads,

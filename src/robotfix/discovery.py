@@ -692,13 +692,14 @@ class Trace(Noted):
         return out
 
     def holds(
-        self, same: Callable[[str, list[int], list[int]], bool] | None = None
+        self,
+        same: Callable[[str, list[int], list[int]], list[int] | None] | None = None,
     ) -> bool:
         """Whether every stamp and probe answers as it did. With `same`, a file
         whose stamp changed holds while `same(name, was, now)` says it holds the
         bytes it held (a `touch`, a checkout or a restored CI cache that wrote
-        it alike; `ResultCache.same_bytes`): its stamp is renewed here
-        (`renewed`), for the caller to keep."""
+        it alike; `ResultCache.same_bytes`), and which stamp to keep for it: a
+        new one is renewed here (`renewed`), for the caller to keep."""
         if self.spoiled:
             return False
         renewed: dict[str, list[int] | None] = {}
@@ -707,9 +708,11 @@ class Trace(Noted):
             if now != known:
                 if same is None or known is None or now is None:
                     return False
-                if not same(name, known, now):
+                kept = same(name, known, now)
+                if kept is None:
                     return False
-                renewed[name] = now
+                if kept != known:
+                    renewed[name] = kept
         for (kind, arg), answer in self.probes.items():
             if _probe(kind, arg) != answer:
                 return False
