@@ -147,7 +147,8 @@ class ResultCache:
         # a launch file -> [key, its trace, its reading] (`launch_read`)
         self._reads: dict[str, Any] = {}
         # C++ file -> [sha256, its graph endpoints dumped, or None]: what
-        # `graphcheck` read of it; this run's, saved (`put_cpp`)
+        # `graphcheck` read of it; this run's, saved (`put_cpp`), with those of
+        # files that still exist (a run whose stage holds reads none: `prune`)
         self._cpp: dict[str, Any] = {}
         self._seen_cpp: dict[str, Any] = {}
         self._catalog: dict[str, Any] | None = None
@@ -695,6 +696,16 @@ class ResultCache:
         for name in gone:
             del self.summaries[name]
         stale += gone
+        # C++ files no longer there (the others are kept though this run read
+        # none of them: the next run that needs them parses none again)
+        gone_cpp = [
+            name
+            for name in self._cpp
+            if name not in self._seen_cpp and not os.path.isfile(name)
+        ]
+        for name in gone_cpp:
+            del self._cpp[name]
+        stale += gone_cpp
         # launch files' readings and parts of deleted launch files
         for kept, prefix in ((self._reads, ""), (self._parts, "launch:")):
             dropped = [
@@ -763,7 +774,7 @@ class ResultCache:
             "discovery": self._discovery,
             "stage": self._stage,
             "resolution": self._resolution,
-            "cpp": self._seen_cpp,
+            "cpp": {**self._cpp, **self._seen_cpp},
         }
         if self._dropped:
             payload = {"key": self.key, "entries": {}}
