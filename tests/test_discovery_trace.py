@@ -361,6 +361,24 @@ def test_a_touched_tree_is_not_walked_again(
     assert same_as_uncached(tree, monkeypatch) == 0
 
 
+def test_the_hashes_of_files_the_walk_read_outlive_a_run_that_did_not_ask(
+    tree: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """scripts/README is read only by the walk (its first line): its hash,
+    taken when the trace was kept, stays through a saving run that walked
+    nothing (one module touched), so a later touch of the tree still holds."""
+    monkeypatch.setattr(robotfix.cache, "RACY_NS", 0)
+    cold = run(tree)
+    earlier = time.time() - 10
+    os.utime(tree / "src" / "demo" / "demo" / "limits.py", (earlier, earlier))
+    assert walks(tree, monkeypatch) == (*cold, 0)
+    earlier = time.time() - 5
+    for path in (tree / "src").rglob("*"):
+        if path.is_file():
+            os.utime(path, (earlier, earlier))
+    assert walks(tree, monkeypatch) == (*cold, 0)
+
+
 def test_a_recently_changed_tree_is_not_kept(
     tree: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:

@@ -48,7 +48,7 @@ import os
 import stat
 import sys
 import time
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -681,14 +681,17 @@ class ResultCache:
         ]
         for name in stale:
             del self._entries[name]
-        traced = self._record_traced()
+        for trace in self._traced:  # kept by this run: its files hashed
+            self._record(trace)
         dropped = [
             name
             for name in self._stats
             if name not in self._seen_stats
-            and name not in traced
             and (name.startswith(prefixes) or not os.path.isfile(name))
         ]
+        if dropped:  # not those a kept trace stamped (`same_bytes`)
+            traced = self._traced_files()
+            dropped = [name for name in dropped if name not in traced]
         for name in dropped:
             del self._stats[name]
         stale += dropped
@@ -720,40 +723,29 @@ class ResultCache:
             stale += dropped
         self._dirty = self._dirty or bool(stale)
 
-    def _record_traced(self) -> set[str]:
-        """The files the kept traces stamped (their hashes are kept, for
-        `same_bytes`), each of those this run kept hashed now if no run has:
-        a file read only by the walk or the launch files' reading (a package's
-        package.xml or CMakeLists.txt, an extensionless file's first line), at
-        most `TRACED_BYTES` long (a rosbag without an extension is not read)."""
-        fresh = {id(t) for t in self._traced}
+    def _record(self, trace: Any) -> None:
+        """Each file a trace this run keeps stamped hashed now, if no run has
+        at that stamp (for `same_bytes`): a file read only by the walk or the
+        launch files' reading (a package.xml, a CMakeLists.txt, the first line
+        of a file without an extension), at most `TRACED_BYTES` long (a rosbag
+        without an extension is not read for it)."""
+        for name, found in _traced_stamps(trace):
+            key = os.path.abspath(name)
+            if key not in self._seen_stats:
+                known = self._stats.get(key)
+                if known is None or known[:STAMP] != found:
+                    self._stat_record(Path(name))
+
+    def _traced_files(self) -> set[str]:
+        """The files the kept traces stamped (`_record`)."""
         traces = [self._discovery, self._stage]
-        traces += [entry for entry in self._reads.values() if isinstance(entry, list)]
-        traced: set[str] = set()
-        for trace in (
-            t.get("trace") if isinstance(t, dict) else t[1] if len(t) == 3 else None
+        traces += [e for e in self._reads.values() if isinstance(e, list) and e[1:]]
+        return {
+            os.path.abspath(name)
             for t in traces
             if t is not None
-        ):
-            stamps = trace.get("stamps") if isinstance(trace, dict) else None
-            if not isinstance(stamps, dict):
-                continue
-            for name, found in stamps.items():
-                if not (
-                    isinstance(found, list)
-                    and len(found) == STAMP
-                    and all(type(n) is int for n in found)
-                    and stat.S_ISREG(found[5])
-                    and found[4] <= TRACED_BYTES
-                ):
-                    continue
-                key = entry_key(Path(name))
-                traced.add(key)
-                if id(trace) in fresh and key not in self._seen_stats:
-                    known = self._stats.get(key)
-                    if known is None or known[:STAMP] != found:
-                        self._stat_record(Path(name))
-        return traced
+            for name, _ in _traced_stamps(t["trace"] if isinstance(t, dict) else t[1])
+        }
 
     def save(self) -> None:
         if not self._dirty:
@@ -921,6 +913,22 @@ def _load_outline(raw: Any) -> Outline | None:
             return None
         found.append((item[0], item[1], [(x[0], x[1]) for x in item[2]]))
     return found
+
+
+def _traced_stamps(trace: Any) -> Iterator[tuple[str, list[int]]]:
+    """The stamps of regular files of at most `TRACED_BYTES` a kept trace
+    (`Trace.to_json`, unchecked) holds."""
+    stamps = trace.get("stamps") if isinstance(trace, dict) else None
+    for name, found in stamps.items() if isinstance(stamps, dict) else ():
+        if (
+            isinstance(name, str)
+            and isinstance(found, list)
+            and len(found) == STAMP
+            and all(type(n) is int for n in found)
+            and stat.S_ISREG(found[5])
+            and found[4] <= TRACED_BYTES
+        ):
+            yield name, found
 
 
 def _valid_stat(raw: Any) -> bool:
