@@ -500,14 +500,20 @@ def test_damaged_kept_parts_are_done_again(workspace: Path) -> None:
     fresh = settled(workspace)
     results = workspace / "cache/results.json"
     data = json.loads(results.read_text(encoding="utf-8"))
-    reads, parts = data["reads"], data["parts"]
+    reads, parts = json.loads(data["reads"]), data["parts"]  # reads: as text
     for name in reads:
         reads[name][2][1] = [[["NodeEntry", 2], []], [["Nope"], ["x"]]]
     for name in parts:
         parts[name][1] = [["RF999", "x", [0, 0, 0, 0], "m", []]]
+    data["reads"] = json.dumps(reads)
     data["stage"]["graph"] = "nothing"
     results.write_text(json.dumps(data), encoding="utf-8")
     assert run(workspace, cache=True) == fresh
+    for damaged in ("[1, 2]", "{", '{"x": "\\udc80"}', "{" * 100_000):
+        data = json.loads(results.read_text(encoding="utf-8"))
+        data["reads"], data["stage"] = damaged, None
+        results.write_text(json.dumps(data), encoding="utf-8")
+        assert run(workspace, cache=True) == fresh
 
 
 def test_entries_come_back_from_their_json_form_or_not_at_all() -> None:
@@ -618,7 +624,7 @@ def test_a_touched_tree_reads_no_launch_file_again(
     launch = str(workspace / "src/demo/launch/demo.launch.py")
     now = robotfix.fs.stamp(launch)
     assert kept["stage"]["trace"]["stamps"][launch] == now
-    assert kept["reads"][launch][1]["stamps"][launch] == now
+    assert json.loads(kept["reads"])[launch][1]["stamps"][launch] == now
     assert run(workspace, cache=True) == before
     assert not read and not walked
 
