@@ -271,6 +271,13 @@ def links(tree: Path) -> None:
         pytest.skip("no symlinks here")
 
 
+def repoint(link: Path, target: Path) -> None:
+    """The symlink `link` made again, to `target`, a clock tick later."""
+    later()
+    link.unlink()
+    link.symlink_to(target)
+
+
 def test_a_tree_with_symlinks_is_not_walked_again(
     tree: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
@@ -307,9 +314,7 @@ def test_what_a_link_reaches_outside_the_walk_is_seen(
     (outside / "a" / "data").mkdir()
     assert same_as_uncached(tree, monkeypatch) > 0
     assert f"a symlink to `{outside / 'a' / 'data'}`" in run(tree)[0]
-    later()
-    (outside / "hop").unlink()
-    (outside / "hop").symlink_to(outside / "b")
+    repoint(outside / "hop", outside / "b")
     assert same_as_uncached(tree, monkeypatch) > 0
     assert f"a symlink to `{outside / 'b' / 'data'}`" in run(tree)[0]
     assert same_as_uncached(tree, monkeypatch) == 0
@@ -335,9 +340,7 @@ def test_a_link_to_the_same_file_by_another_way_is_seen(
         pytest.skip("no links here")
     run(tree)
     assert f"a symlink to `{outside / 'c' / 'e.py'}`" in run(tree)[0]
-    later()
-    (outside / "hop").unlink()
-    (outside / "hop").symlink_to(outside / "d")
+    repoint(outside / "hop", outside / "d")
     assert same_as_uncached(tree, monkeypatch) > 0
     assert f"a symlink to `{outside / 'd' / 'e.py'}`" in run(tree)[0]
 

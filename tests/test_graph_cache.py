@@ -172,6 +172,39 @@ def finds_after(
     assert any(code in line and where in line for line in settled(root))
 
 
+def counting_parses(monkeypatch: pytest.MonkeyPatch) -> list[str]:
+    """The names of the launch files parsed from now on."""
+    import robotfix.ros.launch.reader as reader
+
+    parsed: list[str] = []
+    real = reader._parse
+    monkeypatch.setattr(
+        reader, "_parse", lambda path, *a: parsed.append(path.name) or real(path, *a)
+    )
+    return parsed
+
+
+def one_more_launch_file(
+    root: Path, monkeypatch: pytest.MonkeyPatch, name: str, text: str
+) -> tuple[Path, list[str]]:
+    """`<name>.launch.py` beside the others, the runs settled; the launch folder
+    and the names of the launch files parsed from then on."""
+    launch = root / "src/demo/launch"
+    (launch / f"{name}.launch.py").write_text(text, encoding="utf-8")
+    settled(root)
+    return launch, counting_parses(monkeypatch)
+
+
+def counting_readings(monkeypatch: pytest.MonkeyPatch) -> list[object]:
+    """Each reading of the run's launch files (`run._launches`) from now on."""
+    read: list[object] = []
+    real = robotfix.run._launches
+    monkeypatch.setattr(
+        robotfix.run, "_launches", lambda *a: read.append(a) or real(*a)
+    )
+    return read
+
+
 def test_an_unchanged_tree_reads_no_launch_file(
     workspace: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
@@ -182,11 +215,7 @@ def test_an_unchanged_tree_reads_no_launch_file(
     before = settled(workspace)
     (workspace.parent / f"{workspace.name}.tmp").write_text("", encoding="utf-8")
     (workspace.parent / f"{workspace.name}.tmp").unlink()
-    read: list[object] = []
-    real = robotfix.run._launches
-    monkeypatch.setattr(
-        robotfix.run, "_launches", lambda *a: read.append(a) or real(*a)
-    )
+    read = counting_readings(monkeypatch)
     graphed: list[object] = []
     real_graph = robotfix.run._graph_problems
     monkeypatch.setattr(
@@ -386,16 +415,7 @@ def test_an_edited_launch_file_is_the_only_one_read_again(
 ) -> None:
     """Each launch file's reading is kept with what it read: an edit re-reads the
     file and those that include it, no other."""
-    import robotfix.ros.launch.reader as reader
-
-    launch = workspace / "src/demo/launch"
-    (launch / "other.launch.py").write_text(INNER, encoding="utf-8")
-    settled(workspace)
-    parsed: list[str] = []
-    real = reader._parse
-    monkeypatch.setattr(
-        reader, "_parse", lambda path, *a: parsed.append(path.name) or real(path, *a)
-    )
+    launch, parsed = one_more_launch_file(workspace, monkeypatch, "other", INNER)
     edit(launch / "other.launch.py", '"numbers", "numbers"', '"numbers", "other"')
     found = run(workspace, cache=True)
     assert parsed == ["other.launch.py"]
@@ -567,16 +587,7 @@ def test_a_launch_file_read_with_its_arguments_is_kept(
     """An entry whose name and arguments are a launch argument's text is kept
     like any other (that text was not kept: such a file was read again on every
     run that read launch files, 68 of nav2's and turtlebot3's 470)."""
-    import robotfix.ros.launch.reader as reader
-
-    launch = workspace / "src/demo/launch"
-    (launch / "argued.launch.py").write_text(ARGUED, encoding="utf-8")
-    settled(workspace)
-    parsed: list[str] = []
-    real = reader._parse
-    monkeypatch.setattr(
-        reader, "_parse", lambda path, *a: parsed.append(path.name) or real(path, *a)
-    )
+    launch, parsed = one_more_launch_file(workspace, monkeypatch, "argued", ARGUED)
     edit(launch / "inner.launch.py", '"numbers", "numbers"', '"numbers", "inner"')
     found = run(workspace, cache=True)
     assert sorted(parsed) == ["demo.launch.py", "inner.launch.py"]
@@ -606,11 +617,7 @@ def test_a_touched_tree_reads_no_launch_file_again(
     are kept with the new stamps: the run after that does not hash them."""
     before = settled(workspace)
     touch_all(workspace)
-    read: list[object] = []
-    real = robotfix.run._launches
-    monkeypatch.setattr(
-        robotfix.run, "_launches", lambda *a: read.append(a) or real(*a)
-    )
+    read = counting_readings(monkeypatch)
     walked: list[object] = []
     real_walk = robotfix.discovery._Walker.walk
     monkeypatch.setattr(
@@ -635,16 +642,10 @@ def test_a_touched_file_with_other_bytes_or_mode_is_read_again(
     """The bytes decide, with the size and the mode: an edit of the same size
     whose mtime is put back (RF401: a string for the talker's double `rate`)
     and a launch file made executable are read again."""
-    import robotfix.ros.launch.reader as reader
-
     before = settled(workspace)
     assert not any("RF401" in line for line in before)
     touch_all(workspace)
-    parsed: list[str] = []
-    real = reader._parse
-    monkeypatch.setattr(
-        reader, "_parse", lambda path, *a: parsed.append(path.name) or real(path, *a)
-    )
+    parsed = counting_parses(monkeypatch)
     outer = workspace / "src/demo/launch/demo.launch.py"
     stamp = outer.stat()
     edit(outer, '{"rate": 2.0}', '{"rate": "x"}')
@@ -670,11 +671,7 @@ def test_a_file_touched_just_now_holds_by_its_bytes_and_is_renewed_later(
     and then keeps the new stamp."""
     before = settled(workspace)
     touch_all(workspace)
-    read: list[object] = []
-    real = robotfix.run._launches
-    monkeypatch.setattr(
-        robotfix.run, "_launches", lambda *a: read.append(a) or real(*a)
-    )
+    read = counting_readings(monkeypatch)
     launch = str(workspace / "src/demo/launch/demo.launch.py")
     results = workspace / "cache/results.json"
     monkeypatch.setattr(robotfix.cache, "RACY_NS", 3600 * 10**9)
