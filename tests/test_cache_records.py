@@ -99,3 +99,48 @@ def test_the_run_key_holds_the_own_digest(monkeypatch: pytest.MonkeyPatch) -> No
     first = cache.run_key(Config())
     monkeypatch.setattr(cache, "own_digest", lambda: "another build")
     assert cache.run_key(Config()) != first
+
+
+DIAMOND = {  # `a` imports `p` and `q`, `q` imports `p`; the node imports `a`
+    "demo/p.py": "LIMIT = 2.0\n",
+    "demo/q.py": "from demo.p import LIMIT\n\nSCALE = LIMIT * 2\n",
+    "demo/a.py": (
+        "from demo.p import LIMIT\nfrom demo.q import SCALE\n\nBOTH = LIMIT + SCALE\n"
+    ),
+    "demo/_node.py": (  # checked first: it asks for `a` before `a.py` does
+        "from typing import Annotated\n\nfrom demo.a import BOTH\n\n\n"
+        'def speed() -> Annotated[float, "_ <= 5.0"]:\n    return BOTH\n'
+    ),
+}
+
+
+def test_a_diamond_of_imports_is_not_built_again(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The kept summaries of a diamond hold on a cached run: `p`, met under
+    `q` while it waited on the stack under `a`, was taken for a cycle and built
+    again on every cached run (six of the corpus's, and the analysis imported
+    for them). An edit of `p` still reaches the node through both ways."""
+    from robotfix.project import summary
+
+    demo = tmp_path / "src" / "demo"
+    write(demo / "package.xml", "<package><name>demo</name></package>\n")
+    write(demo / "demo" / "__init__.py", "")
+    for name, text in DIAMOND.items():
+        write(demo / name, text)
+    age(demo / "demo")
+    cold = run(tmp_path, [tmp_path / "src"])
+    assert "_node.py" in cold[0]  # 2 + 4 > 5
+    built: list[Path] = []
+    real = summary.Project._build
+    monkeypatch.setattr(
+        summary.Project, "_build", lambda self, p: built.append(p) or real(self, p)
+    )
+    assert run(tmp_path, [tmp_path / "src"]) == (cold[0], cold[1], cold[1])
+    assert built == []
+    write(demo / "demo" / "p.py", "LIMIT = 1.0\n")
+    age(demo / "demo")
+    text = run(tmp_path, [tmp_path / "src"])[0]
+    assert (
+        "_node.py" not in text and text == run(tmp_path, [tmp_path / "src"], False)[0]
+    )

@@ -13,6 +13,7 @@ from typing import Any
 
 import pytest
 
+import robotfix.cache
 from robotfix import cli, discovery
 from robotfix.cache import ResultCache, run_key
 from robotfix.config import Config
@@ -259,19 +260,126 @@ def test_a_file_rewritten_with_its_old_mtime_is_seen(tree: Path) -> None:
     assert not trace.holds()
 
 
-def test_a_symlink_in_the_tree_is_never_trusted(
-    tree: Path, monkeypatch: pytest.MonkeyPatch
-) -> None:
-    """What a link reaches is not in its folder's stamp: such a tree is walked."""
-    shared = tree / "shared"
+def links(tree: Path) -> None:
+    """A folder and a file of the tree reached through links as well."""
+    shared = tree / "src" / "shared"
     write(shared / "helper.py", "h = 1\n")
     try:
         (tree / "src" / "demo" / "demo" / "linked").symlink_to(shared)
+        (tree / "src" / "demo" / "scripts" / "speaker").symlink_to("talker")
     except OSError:
         pytest.skip("no symlinks here")
+
+
+def repoint(link: Path, target: Path) -> None:
+    """The symlink `link` made again, to `target`, a clock tick later."""
+    later()
+    link.unlink()
+    link.symlink_to(target)
+
+
+def test_a_tree_with_symlinks_is_not_walked_again(
+    tree: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A link is noted by what it reaches (its real path and that one's stamp):
+    an unchanged tree with links is kept like any other (it was walked on every
+    run: 0.13 s of a cached run over the corpus, whose ros_tutorials has four)."""
+    links(tree)
+    cold = run(tree)
+    assert kept(tree)
+    assert same_as_uncached(tree, monkeypatch) == 0
+    assert run(tree) == cold
+
+
+def test_what_a_link_reaches_outside_the_walk_is_seen(
+    tree: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Changes no folder the walk lists sees: the file a link reaches, outside
+    the tree, becomes a folder (a link to a folder outside is RF004); a link on
+    the way is pointed elsewhere (the real path is in the notice)."""
+    outside = tmp_path / "outside"
+    write(outside / "a" / "data", "x\n")
+    write(outside / "b" / "data" / "x.py", "x = 1\n")
+    try:
+        (outside / "hop").symlink_to(outside / "a")
+        (tree / "src" / "demo" / "data").symlink_to(outside / "hop" / "data")
+    except OSError:
+        pytest.skip("no symlinks here")
+    links(tree)
     run(tree)
-    assert not kept(tree)
+    assert kept(tree)
+    assert "RF004" not in run(tree)[0]
+    later()
+    (outside / "a" / "data").unlink()
+    (outside / "a" / "data").mkdir()
     assert same_as_uncached(tree, monkeypatch) > 0
+    assert f"a symlink to `{outside / 'a' / 'data'}`" in run(tree)[0]
+    repoint(outside / "hop", outside / "b")
+    assert same_as_uncached(tree, monkeypatch) > 0
+    assert f"a symlink to `{outside / 'b' / 'data'}`" in run(tree)[0]
+    assert same_as_uncached(tree, monkeypatch) == 0
+    later()
+    shutil.rmtree(outside / "b")  # a broken link is no folder: no notice
+    assert same_as_uncached(tree, monkeypatch) > 0
+    assert "RF004" not in run(tree)[0]
+
+
+def test_a_link_to_the_same_file_by_another_way_is_seen(
+    tree: Path, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Two names of one file outside the tree (hard links: one stamp): the link
+    on the way pointed from one to the other changes only the real path."""
+    outside = tmp_path / "outside"
+    write(outside / "c" / "e.py", "e = 1\n")
+    (outside / "d").mkdir()
+    try:
+        os.link(outside / "c" / "e.py", outside / "d" / "e.py")
+        (outside / "hop").symlink_to(outside / "c")
+        (tree / "src" / "demo" / "ext.py").symlink_to(outside / "hop" / "e.py")
+    except OSError:
+        pytest.skip("no links here")
+    run(tree)
+    assert f"a symlink to `{outside / 'c' / 'e.py'}`" in run(tree)[0]
+    repoint(outside / "hop", outside / "d")
+    assert same_as_uncached(tree, monkeypatch) > 0
+    assert f"a symlink to `{outside / 'd' / 'e.py'}`" in run(tree)[0]
+
+
+def test_a_touched_tree_is_not_walked_again(
+    tree: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Every file given new stamps, same bytes (a checkout, a CI cache restored
+    onto a fresh clone): the files the walk read (the script's first line) hold
+    by their bytes (`ResultCache.same_bytes`), so the tree is not walked; the
+    trace is kept with the new stamps. A script whose first line changes with
+    its size and mtime kept is walked again (its own test, above)."""
+    monkeypatch.setattr(robotfix.cache, "RACY_NS", 0)
+    cold = run(tree)
+    earlier = time.time() - 5
+    for path in (tree / "src").rglob("*"):
+        if path.is_file():
+            os.utime(path, (earlier, earlier))
+    text, files, listed = walks(tree, monkeypatch)
+    assert (text, files) == cold and listed == 0
+    assert same_as_uncached(tree, monkeypatch) == 0
+
+
+def test_the_hashes_of_files_the_walk_read_outlive_a_run_that_did_not_ask(
+    tree: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """scripts/README is read only by the walk (its first line): its hash,
+    taken when the trace was kept, stays through a saving run that walked
+    nothing (one module touched), so a later touch of the tree still holds."""
+    monkeypatch.setattr(robotfix.cache, "RACY_NS", 0)
+    cold = run(tree)
+    earlier = time.time() - 10
+    os.utime(tree / "src" / "demo" / "demo" / "limits.py", (earlier, earlier))
+    assert walks(tree, monkeypatch) == (*cold, 0)
+    earlier = time.time() - 5
+    for path in (tree / "src").rglob("*"):
+        if path.is_file():
+            os.utime(path, (earlier, earlier))
+    assert walks(tree, monkeypatch) == (*cold, 0)
 
 
 def test_a_recently_changed_tree_is_not_kept(

@@ -7,12 +7,15 @@ with a run without the cache (a stale cache would give the old findings)."""
 from __future__ import annotations
 
 import json
+import os
+import time
 from pathlib import Path
 
 import pytest
 
 import robotfix.cache
 import robotfix.discovery
+import robotfix.fs
 import robotfix.run
 from robotfix.api import check_paths
 from robotfix.config import Config
@@ -169,6 +172,39 @@ def finds_after(
     assert any(code in line and where in line for line in settled(root))
 
 
+def counting_parses(monkeypatch: pytest.MonkeyPatch) -> list[str]:
+    """The names of the launch files parsed from now on."""
+    import robotfix.ros.launch.reader as reader
+
+    parsed: list[str] = []
+    real = reader._parse
+    monkeypatch.setattr(
+        reader, "_parse", lambda path, *a: parsed.append(path.name) or real(path, *a)
+    )
+    return parsed
+
+
+def one_more_launch_file(
+    root: Path, monkeypatch: pytest.MonkeyPatch, name: str, text: str
+) -> tuple[Path, list[str]]:
+    """`<name>.launch.py` beside the others, the runs settled; the launch folder
+    and the names of the launch files parsed from then on."""
+    launch = root / "src/demo/launch"
+    (launch / f"{name}.launch.py").write_text(text, encoding="utf-8")
+    settled(root)
+    return launch, counting_parses(monkeypatch)
+
+
+def counting_readings(monkeypatch: pytest.MonkeyPatch) -> list[object]:
+    """Each reading of the run's launch files (`run._launches`) from now on."""
+    read: list[object] = []
+    real = robotfix.run._launches
+    monkeypatch.setattr(
+        robotfix.run, "_launches", lambda *a: read.append(a) or real(*a)
+    )
+    return read
+
+
 def test_an_unchanged_tree_reads_no_launch_file(
     workspace: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:
@@ -179,11 +215,7 @@ def test_an_unchanged_tree_reads_no_launch_file(
     before = settled(workspace)
     (workspace.parent / f"{workspace.name}.tmp").write_text("", encoding="utf-8")
     (workspace.parent / f"{workspace.name}.tmp").unlink()
-    read: list[object] = []
-    real = robotfix.run._launches
-    monkeypatch.setattr(
-        robotfix.run, "_launches", lambda *a: read.append(a) or real(*a)
-    )
+    read = counting_readings(monkeypatch)
     graphed: list[object] = []
     real_graph = robotfix.run._graph_problems
     monkeypatch.setattr(
@@ -383,16 +415,7 @@ def test_an_edited_launch_file_is_the_only_one_read_again(
 ) -> None:
     """Each launch file's reading is kept with what it read: an edit re-reads the
     file and those that include it, no other."""
-    import robotfix.ros.launch.reader as reader
-
-    launch = workspace / "src/demo/launch"
-    (launch / "other.launch.py").write_text(INNER, encoding="utf-8")
-    settled(workspace)
-    parsed: list[str] = []
-    real = reader._parse
-    monkeypatch.setattr(
-        reader, "_parse", lambda path, *a: parsed.append(path.name) or real(path, *a)
-    )
+    launch, parsed = one_more_launch_file(workspace, monkeypatch, "other", INNER)
     edit(launch / "other.launch.py", '"numbers", "numbers"', '"numbers", "other"')
     found = run(workspace, cache=True)
     assert parsed == ["other.launch.py"]
@@ -497,14 +520,20 @@ def test_damaged_kept_parts_are_done_again(workspace: Path) -> None:
     fresh = settled(workspace)
     results = workspace / "cache/results.json"
     data = json.loads(results.read_text(encoding="utf-8"))
-    reads, parts = data["reads"], data["parts"]
+    reads, parts = json.loads(data["reads"]), data["parts"]  # reads: as text
     for name in reads:
         reads[name][2][1] = [[["NodeEntry", 2], []], [["Nope"], ["x"]]]
     for name in parts:
         parts[name][1] = [["RF999", "x", [0, 0, 0, 0], "m", []]]
+    data["reads"] = json.dumps(reads)
     data["stage"]["graph"] = "nothing"
     results.write_text(json.dumps(data), encoding="utf-8")
     assert run(workspace, cache=True) == fresh
+    for damaged in ("[1, 2]", "{", '{"x": "\\udc80"}', "{" * 100_000):
+        data = json.loads(results.read_text(encoding="utf-8"))
+        data["reads"], data["stage"] = damaged, None
+        results.write_text(json.dumps(data), encoding="utf-8")
+        assert run(workspace, cache=True) == fresh
 
 
 def test_entries_come_back_from_their_json_form_or_not_at_all() -> None:
@@ -530,3 +559,163 @@ def test_a_deleted_launch_files_kept_parts_go(workspace: Path) -> None:
     launch.unlink()
     settled(workspace)
     assert str(launch) not in results.read_text(encoding="utf-8")
+
+
+ARGUED = """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument("who", default_value="listener"),
+        DeclareLaunchArgument("level", default_value="info"),
+        Node(
+            package="demo",
+            executable="listener",
+            name=LaunchConfiguration("who"),
+            arguments=["--ros-args", "--log-level", LaunchConfiguration("level")],
+        ),
+    ])
+"""
+
+
+def test_a_launch_file_read_with_its_arguments_is_kept(
+    workspace: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """An entry whose name and arguments are a launch argument's text is kept
+    like any other (that text was not kept: such a file was read again on every
+    run that read launch files, 68 of nav2's and turtlebot3's 470)."""
+    launch, parsed = one_more_launch_file(workspace, monkeypatch, "argued", ARGUED)
+    edit(launch / "inner.launch.py", '"numbers", "numbers"', '"numbers", "inner"')
+    found = run(workspace, cache=True)
+    assert sorted(parsed) == ["demo.launch.py", "inner.launch.py"]
+    assert found == run(workspace, cache=False)
+    parsed.clear()
+    edit(launch / "argued.launch.py", '"info"', '"debug"')
+    found = run(workspace, cache=True)
+    assert parsed == ["argued.launch.py"]
+    assert found == run(workspace, cache=False)
+
+
+def touch_all(root: Path, seconds: float = 5.0) -> None:
+    """Every file of the tree rewritten alike, as a checkout or a CI cache
+    restored onto a fresh clone leaves it: new mtimes and ctimes, same bytes."""
+    earlier = time.time() - seconds
+    for path in (root / "src").rglob("*"):
+        if path.is_file():
+            os.utime(path, (earlier, earlier))
+
+
+def test_a_touched_tree_reads_no_launch_file_again(
+    workspace: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Files whose stamps changed but whose bytes did not (hashed at the stamp
+    a trace noted, and alike now) hold: no launch file is read and no graph
+    checked (every one was, and the discovery walked again), and the traces
+    are kept with the new stamps: the run after that does not hash them."""
+    before = settled(workspace)
+    touch_all(workspace)
+    read = counting_readings(monkeypatch)
+    walked: list[object] = []
+    real_walk = robotfix.discovery._Walker.walk
+    monkeypatch.setattr(
+        robotfix.discovery._Walker,
+        "walk",
+        lambda *a: walked.append(a) or real_walk(*a),
+    )
+    assert run(workspace, cache=True) == before
+    assert not read and not walked
+    kept = json.loads((workspace / "cache/results.json").read_text(encoding="utf-8"))
+    launch = str(workspace / "src/demo/launch/demo.launch.py")
+    now = robotfix.fs.stamp(launch)
+    assert kept["stage"]["trace"]["stamps"][launch] == now
+    assert json.loads(kept["reads"])[launch][1]["stamps"][launch] == now
+    assert run(workspace, cache=True) == before
+    assert not read and not walked
+
+
+def test_a_touched_file_with_other_bytes_or_mode_is_read_again(
+    workspace: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The bytes decide, with the size and the mode: an edit of the same size
+    whose mtime is put back (RF401: a string for the talker's double `rate`)
+    and a launch file made executable are read again."""
+    before = settled(workspace)
+    assert not any("RF401" in line for line in before)
+    touch_all(workspace)
+    parsed = counting_parses(monkeypatch)
+    outer = workspace / "src/demo/launch/demo.launch.py"
+    stamp = outer.stat()
+    edit(outer, '{"rate": 2.0}', '{"rate": "x"}')
+    os.utime(outer, ns=(stamp.st_atime_ns, stamp.st_mtime_ns))
+    assert outer.stat().st_size == stamp.st_size
+    found = run(workspace, cache=True)
+    assert any("RF401" in line and "demo.launch.py" in line for line in found)
+    assert sorted(parsed) == ["demo.launch.py", "inner.launch.py"]  # it includes
+    assert found == run(workspace, cache=False)
+    settled(workspace)
+    parsed.clear()
+    outer.chmod(0o755)
+    assert run(workspace, cache=True) == run(workspace, cache=False)
+    assert "demo.launch.py" in parsed
+
+
+def test_a_file_touched_just_now_holds_by_its_bytes_and_is_renewed_later(
+    workspace: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A new stamp too young to trust (`RACY_NS`): the bytes, read now, still
+    decide for this run (no launch file read), but the trace keeps the old stamp
+    and the record of the bytes at it, so the next run hashes the file again
+    and then keeps the new stamp."""
+    before = settled(workspace)
+    touch_all(workspace)
+    read = counting_readings(monkeypatch)
+    launch = str(workspace / "src/demo/launch/demo.launch.py")
+    results = workspace / "cache/results.json"
+    monkeypatch.setattr(robotfix.cache, "RACY_NS", 3600 * 10**9)
+    assert run(workspace, cache=True) == before
+    assert not read
+    stamps = json.loads(results.read_text(encoding="utf-8"))["stage"]["trace"]["stamps"]
+    assert stamps[launch] != robotfix.fs.stamp(launch)
+    monkeypatch.setattr(robotfix.cache, "RACY_NS", 0)
+    assert run(workspace, cache=True) == before
+    assert not read
+    stamps = json.loads(results.read_text(encoding="utf-8"))["stage"]["trace"]["stamps"]
+    assert stamps[launch] == robotfix.fs.stamp(launch)
+
+
+def test_the_cpp_files_graphs_outlive_a_run_that_read_none(
+    workspace: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A run whose stage and parameter check hold reads no C++ file; when it
+    saves the cache (here: a touched node's hash kept again), the C++ files'
+    graphs are kept too. They were dropped, and the next edit that re-did the
+    parameter check parsed every C++ file again (1,528 in the corpus)."""
+    import robotfix.graphcheck
+
+    driver = workspace / "src/demo/src/driver.cpp"
+    driver.parent.mkdir(parents=True)
+    driver.write_text(
+        'class Driver : public rclcpp::Node {\n public:\n  Driver() : Node("driver")'
+        ' {\n    declare_parameter("gain", 1.0);\n  }\n};\n',
+        encoding="utf-8",
+    )
+    settled(workspace)
+    monitor = workspace / "src/demo/demo/monitor.py"
+    earlier = time.time() - 5
+    os.utime(monitor, (earlier, earlier))
+    assert run(workspace, cache=True) == run(workspace, cache=False)
+    parsed: list[object] = []
+    real = robotfix.graphcheck.read_cpp
+    monkeypatch.setattr(
+        robotfix.graphcheck, "read_cpp", lambda *a: parsed.append(a) or real(*a)
+    )
+    edit(
+        monitor,
+        '"gain", 1.0)',
+        '"gain", 1.0)\n        self.declare_parameter("bias", 0.0)',
+    )
+    assert run(workspace, cache=True) == run(workspace, cache=False)
+    assert len(parsed) == 1  # the run without the cache's

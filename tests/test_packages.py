@@ -233,3 +233,45 @@ def test_a_travelling_refinement_is_shown_with_its_constants_names(
     cruise = "\n".join(line for line in after if "cruise.py" in line)
     assert "violates `speed <= TOP_SPEED`" in cruise
     assert "MAX_SPEED" not in cruise  # (teleop_script.py imports the old name)
+
+
+def test_package_folder_climbs_as_pathlib_did(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """`package_folder` climbs the folders as strings (a cached run asks it
+    thousands of times): the nearest folder with a package.xml, as the pathlib
+    climb found it, for nested packages, a file beside its package.xml, a
+    relative spelling, `..` and no package at all (probing up to `/`)."""
+    import os
+
+    from robotfix.fs import probe
+    from robotfix.ros.package import package_folder
+
+    def by_pathlib(path: Path) -> Path | None:
+        folder = Path(os.path.abspath(path)).parent
+        for candidate in (folder, *folder.parents):
+            if probe("isfile", candidate / "package.xml"):
+                return candidate
+        return None
+
+    outer = tmp_path / "ws" / "outer"
+    inner = outer / "sub" / "inner"
+    for folder in (outer, inner):
+        folder.mkdir(parents=True)
+        (folder / "package.xml").write_text("<package/>")
+    (inner / "deep" / "er").mkdir(parents=True)
+    monkeypatch.chdir(outer)
+    for path in [
+        inner / "deep" / "er" / "x.py",
+        inner / "x.py",
+        outer / "sub" / "y.py",
+        outer / "package.xml",
+        Path("sub/inner/deep/x.py"),
+        Path("sub/../sub/inner/x.py"),
+        Path("z.py"),
+        tmp_path / "ws" / "none.py",
+        Path("/"),
+    ]:
+        assert package_folder(path) == by_pathlib(path), path
+    assert package_folder(inner / "x.py") == inner
+    assert package_folder(tmp_path / "ws" / "none.py") is None

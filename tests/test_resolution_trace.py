@@ -231,15 +231,47 @@ def test_a_module_added_in_a_python_path_folder(tmp_path: Path) -> None:
     assert FINDING not in same_as_cold(tmp_path, (shared,))
 
 
-def test_a_symlink_is_never_kept(tmp_path: Path, trusted: list[bool]) -> None:
+def test_a_symlink_is_kept_with_what_it_reaches(
+    tmp_path: Path, trusted: list[bool]
+) -> None:
+    """A listing that met a symlink is kept, with what the link is (a module, a
+    folder, neither), checked when the answers are taken over (it was never
+    kept: one link anywhere on a search path and the whole tree's answers were
+    worked out again on every run). The link dangles: its folder's stamp is
+    unchanged, the answers are not taken over."""
     demo = package(tmp_path, "helpers")
     target = tmp_path / "elsewhere" / "helpers.py"
     write(target, TOO_HIGH)
     os.symlink(target, demo / "helpers.py")
     assert FINDING in run(tmp_path)
-    target.unlink()  # the link dangles; its folder's stamp is unchanged
+    assert FINDING in same_as_cold(tmp_path)
+    assert trusted[1] is True
+    target.unlink()
+    trusted.clear()
     assert FINDING not in same_as_cold(tmp_path)
-    assert True not in trusted
+    assert trusted[0] is False
+
+
+def test_a_linked_folder_become_a_module_is_seen(
+    tmp_path: Path, trusted: list[bool]
+) -> None:
+    """`helpers` is a link to a folder without `__init__.py` (no module), then
+    a link on the way outside the tree points to a file of that name instead:
+    `helpers.py` is a link too, a module now (no folder of the tree changed)."""
+    demo = package(tmp_path, "helpers")
+    outside = tmp_path / "outside"
+    write(outside / "a" / "helpers.py" / "readme.txt", "a folder\n")
+    write(outside / "b" / "helpers.py", TOO_HIGH)
+    os.symlink(outside / "a", outside / "hop")
+    os.symlink(outside / "hop" / "helpers.py", demo / "helpers.py")
+    assert FINDING not in run(tmp_path)
+    assert FINDING not in same_as_cold(tmp_path)
+    assert trusted[1] is True
+    os.unlink(outside / "hop")
+    os.symlink(outside / "b", outside / "hop")
+    trusted.clear()
+    assert FINDING in same_as_cold(tmp_path)
+    assert trusted[0] is False
 
 
 def test_an_atomic_save_keeps_the_other_answers(tmp_path: Path) -> None:

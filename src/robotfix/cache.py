@@ -45,9 +45,10 @@ import functools
 import hashlib
 import json
 import os
+import stat
 import sys
 import time
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -66,13 +67,14 @@ if TYPE_CHECKING:
 # an interface problem before `messages.interface_problem`: its diagnostic, the
 # package no type of which is known (if so), the types of its file
 InterfaceProblem = tuple[Diagnostic, "str | None", tuple[str, ...]]
-FORMAT = 9  # 9: an entry holds the file's graph endpoints
+FORMAT = 10  # 9: an entry holds the file's graph endpoints; 10: "reads" as text
 # which parameter-related words a file mentions (`paramcheck.MENTIONS`, all layouts),
 # kept with its hash so that an unchanged file need not be read to know
 MENTION_WORDS = (b"declare_parameter", b"get_parameter", b"ParamListener", b"rospy")
 MAX_BYTES = 512 * 1024 * 1024  # results.json of ~4 million files
 MAX_INT = 2**31  # lines and columns; anything larger is not ours
 STAMP = 6  # the length of an `fs.stamp`, which begins a stat record
+TRACED_BYTES = 1024 * 1024  # larger files a trace stamped are not hashed for it
 GITIGNORE = b"# Created by robotfix\n*\n"
 
 
@@ -134,15 +136,22 @@ class ResultCache:
         # file -> [*fs.stamp, sha256, mentions]: `sha`'s memory
         self._stats: dict[str, list[Any]] = {}
         self._seen_stats: dict[str, list[Any]] = {}  # this run's, saved
+        # an earlier record of the same bytes kept instead of a record too young
+        # to trust (`_stat_record`): it still says what they were at its stamp
+        self._older: dict[str, list[Any]] = {}
         self._bytes: dict[str, bytes] = {}  # the last file `sha` read, to `take`
         self._params: tuple[str, list[Any]] | None = None
         # the parameter check by part (`param_part`): "fixed" -> [key, findings,
         # RF602], a launch file -> [key, its entries' findings]
         self._parts: dict[str, Any] = {}
-        # a launch file -> [key, its trace, its reading] (`launch_read`)
-        self._reads: dict[str, Any] = {}
+        # a launch file -> [key, its trace, its reading] (`launch_read`): kept
+        # as the JSON text it was saved as until a run reads a launch file
+        # (`_reads`; 2.7 MB of the corpus's 11.8: 37 ms to parse, 3.5 as text)
+        self._reads_text: str | None = None
+        self._reads_found: dict[str, Any] | None = None
         # C++ file -> [sha256, its graph endpoints dumped, or None]: what
-        # `graphcheck` read of it; this run's, saved (`put_cpp`)
+        # `graphcheck` read of it; this run's, saved (`put_cpp`), with those of
+        # files that still exist (a run whose stage holds reads none: `prune`)
         self._cpp: dict[str, Any] = {}
         self._seen_cpp: dict[str, Any] = {}
         self._catalog: dict[str, Any] | None = None
@@ -151,6 +160,7 @@ class ResultCache:
         self._stage: dict[str, Any] | None = None
         # the module index's answers with what they depend on (`ModuleIndex.keep`)
         self._resolution: dict[str, Any] | None = None
+        self._traced: list[Any] = []  # the traces kept by this run (`_record`)
         self._dirty = False
         self._dropped = False  # `drop`: nothing of this cache is saved
         if not trusted:
@@ -219,14 +229,38 @@ class ResultCache:
             ):
                 self._params = (params[0], params[1])
             reads = data.get("reads")
-            if isinstance(reads, dict) and (plain or _names_only(reads)):
-                self._reads = reads  # each entry checked when read (`launch_read`)
+            if isinstance(reads, str):
+                self._reads_text = reads  # parsed when first needed (`_reads`)
             parts = data.get("parts")
             if isinstance(parts, dict):
                 self._parts = parts  # each entry checked when read (`param_part`)
             cpp = data.get("cpp")
             if isinstance(cpp, dict):
                 self._cpp = cpp  # each entry checked when read (`cpp_graph`)
+
+    @property
+    def _reads(self) -> dict[str, Any]:
+        """The kept launch files' readings, parsed from their text when first
+        needed (a run whose stage holds reads none); each entry is checked when
+        read (`launch_read`), every string here (as `__init__` does the rest)."""
+        if self._reads_found is None:
+            text, self._reads_text = self._reads_text, None
+            found: Any = None
+            if text is not None:
+                try:
+                    found = json.loads(text)
+                except (ValueError, RecursionError):
+                    found = None
+            plain = (
+                text is not None
+                and text.isascii()
+                and "\\ud" not in text
+                and "\\uD" not in text
+            )
+            if not (isinstance(found, dict) and (plain or _names_only(found))):
+                found = {}
+            self._reads_found = found
+        return self._reads_found
 
     # -- the stat fast path ----------------------------------------------------
     def sha(self, path: Path) -> str | None:
@@ -266,9 +300,31 @@ class ResultCache:
         record = [*stamp, hashlib.sha256(data).hexdigest(), mentions]
         if len(data) != stamp[4] or time.time_ns() - max(stamp[:2]) < RACY_NS:
             record[0] = -1  # changed while read, or too recent: never matches
+            if known is not None and known[0] != -1 and known[STAMP] == record[STAMP]:
+                self._older[key] = known  # for `same_bytes` in the next run
         self._seen_stats[key] = record
         self._dirty = True
         return record
+
+    def same_bytes(self, name: str, was: list[int], now: list[int]) -> list[int] | None:
+        """Whether the file `name`, whose stamp was `was` when a trace noted it
+        and is `now`, holds the bytes it held then (`Trace.holds`): an earlier
+        run hashed it at that very stamp, and it hashes alike now, with the same
+        device, size and mode (what a walk or a reading sees besides its bytes);
+        its mtime, ctime and inode may differ, as after a `touch`, a checkout
+        that wrote it alike or a CI cache restored onto a fresh clone. The
+        stamp the trace keeps for it then: `now`, or `was` while `now` is too
+        recent to trust (`_stat_record`; the next run hashes it again); None
+        when it differs, or is a folder or a file no run hashed."""
+        if was[3:] != now[3:]:
+            return None
+        known = self._stats.get(entry_key(Path(name)))
+        if known is None or known[:STAMP] != was:
+            return None
+        record = self._stat_record(Path(name))
+        if record is None or record[STAMP] != known[STAMP]:
+            return None
+        return now if record[:STAMP] == now else was
 
     # -- the catalog -------------------------------------------------------------
     def catalog(
@@ -349,8 +405,11 @@ class ResultCache:
             return None
         trace = Trace.from_json(raw.get("trace"))
         found = _load_discovery(raw.get("found"))
-        if trace is None or found is None or not trace.holds():
+        if trace is None or found is None or not trace.holds(self.same_bytes):
             return None
+        if trace.renewed:
+            self._discovery = {**raw, "trace": trace.to_json()}
+            self._dirty = True
         return found
 
     def put_discovery(self, key: str, found: Discovery, trace: Trace) -> None:
@@ -360,6 +419,8 @@ class ResultCache:
             if trace.spoiled
             else {"key": key, "trace": trace.to_json(), "found": _dump_discovery(found)}
         )
+        if raw is not None:
+            self._traced.append(raw["trace"])
         if raw != self._discovery:
             self._discovery = raw
             self._dirty = True
@@ -382,10 +443,25 @@ class ResultCache:
             and all(_name(t) for t in touched)
             and isinstance(graph, list)
             and all(_valid_diagnostic(d) for d in graph)
-            and trace.holds()
+            and trace.holds(self.same_bytes)
         ):
             return None
+        if trace.renewed:
+            self._stage = {**raw, "trace": trace.to_json()}
+            self._dirty = True
+            self._renew_reads()
         return touched, [_load(d) for d in graph]
+
+    def _renew_reads(self) -> None:
+        """The kept launch files' readings renewed as the stage was (a run whose
+        stage holds reads none of them; left with the old stamps, each would be
+        read again the next time the stage does not hold)."""
+        for path, entry in self._reads.items():
+            if not (isinstance(entry, list) and len(entry) == 3):
+                continue
+            trace = Trace.from_json(entry[1])
+            if trace is not None and trace.holds(self.same_bytes) and trace.renewed:
+                self._reads[path] = [entry[0], trace.to_json(), entry[2]]
 
     def put_stage(
         self, key: str, trace: Trace, touched: list[str], graph: list[Diagnostic]
@@ -401,6 +477,8 @@ class ResultCache:
                 "graph": [_dump(d) for d in graph],
             }
         )
+        if raw is not None:
+            self._traced.append(raw["trace"])
         if raw != self._stage:
             self._stage = raw
             self._dirty = True
@@ -466,6 +544,13 @@ class ResultCache:
 
     def put_launch_read(self, path: str, context: str, trace: Trace, raw: Any) -> None:
         self._reads[path] = [context, trace.to_json(), raw]
+        self._traced.append(self._reads[path][1])
+        self._dirty = True
+
+    def renew_launch_read(self, path: str, trace: Trace) -> None:
+        """A kept reading's trace whose stamps `holds` renewed (`same_bytes`)."""
+        entry = self._reads[path]
+        self._reads[path] = [entry[0], trace.to_json(), entry[2]]
         self._dirty = True
 
     def param_part(self, name: str, key: str) -> list[list[Diagnostic]] | None:
@@ -623,12 +708,17 @@ class ResultCache:
         ]
         for name in stale:
             del self._entries[name]
+        for trace in self._traced:  # kept by this run: its files hashed
+            self._record(trace)
         dropped = [
             name
             for name in self._stats
             if name not in self._seen_stats
             and (name.startswith(prefixes) or not os.path.isfile(name))
         ]
+        if dropped:  # not those a kept trace stamped (`same_bytes`)
+            traced = self._traced_files()
+            dropped = [name for name in dropped if name not in traced]
         for name in dropped:
             del self._stats[name]
         stale += dropped
@@ -636,8 +726,20 @@ class ResultCache:
         for name in gone:
             del self.summaries[name]
         stale += gone
-        # launch files' readings and parts of deleted launch files
-        for kept, prefix in ((self._reads, ""), (self._parts, "launch:")):
+        # C++ files no longer there (the others are kept though this run read
+        # none of them: the next run that needs them parses none again)
+        gone_cpp = [
+            name
+            for name in self._cpp
+            if name not in self._seen_cpp and not os.path.isfile(name)
+        ]
+        for name in gone_cpp:
+            del self._cpp[name]
+        stale += gone_cpp
+        # launch files' readings (when this run looked at them) and parts of
+        # deleted launch files
+        readings = [] if self._reads_found is None else [(self._reads_found, "")]
+        for kept, prefix in (*readings, (self._parts, "launch:")):
             dropped = [
                 name
                 for name in kept
@@ -650,6 +752,30 @@ class ResultCache:
             stale += dropped
         self._dirty = self._dirty or bool(stale)
 
+    def _record(self, trace: Any) -> None:
+        """Each file a trace this run keeps stamped hashed now, if no run has
+        at that stamp (for `same_bytes`): a file read only by the walk or the
+        launch files' reading (a package.xml, a CMakeLists.txt, the first line
+        of a file without an extension), at most `TRACED_BYTES` long (a rosbag
+        without an extension is not read for it)."""
+        for name, found in _traced_stamps(trace):
+            key = os.path.abspath(name)
+            if key not in self._seen_stats:
+                known = self._stats.get(key)
+                if known is None or known[:STAMP] != found:
+                    self._stat_record(Path(name))
+
+    def _traced_files(self) -> set[str]:
+        """The files the kept traces stamped (`_record`)."""
+        traces = [self._discovery, self._stage]
+        traces += [e for e in self._reads.values() if isinstance(e, list) and e[1:]]
+        return {
+            os.path.abspath(name)
+            for t in traces
+            if t is not None
+            for name, _ in _traced_stamps(t["trace"] if isinstance(t, dict) else t[1])
+        }
+
     def save(self) -> None:
         if not self._dirty:
             return
@@ -661,15 +787,19 @@ class ResultCache:
                 k: [v[0], v[1], dict(sorted(v[2].items())), dict(sorted(v[3].items()))]
                 for k, v in sorted(self.summaries.items())
             },
-            "stats": {**self._stats, **self._seen_stats},
+            "stats": {**self._stats, **self._seen_stats, **self._older},
             "params": list(self._params) if self._params is not None else None,
             "parts": self._parts,
-            "reads": self._reads,
+            "reads": (
+                self._reads_text
+                if self._reads_found is None and self._reads_text is not None
+                else json.dumps(self._reads, sort_keys=True, separators=(",", ":"))
+            ),
             "catalog": self._catalog,
             "discovery": self._discovery,
             "stage": self._stage,
             "resolution": self._resolution,
-            "cpp": self._seen_cpp,
+            "cpp": {**self._cpp, **self._seen_cpp},
         }
         if self._dropped:
             payload = {"key": self.key, "entries": {}}
@@ -816,6 +946,22 @@ def _load_outline(raw: Any) -> Outline | None:
             return None
         found.append((item[0], item[1], [(x[0], x[1]) for x in item[2]]))
     return found
+
+
+def _traced_stamps(trace: Any) -> Iterator[tuple[str, list[int]]]:
+    """The stamps of regular files of at most `TRACED_BYTES` a kept trace
+    (`Trace.to_json`, unchecked) holds."""
+    stamps = trace.get("stamps") if isinstance(trace, dict) else None
+    for name, found in stamps.items() if isinstance(stamps, dict) else ():
+        if (
+            isinstance(name, str)
+            and isinstance(found, list)
+            and len(found) == STAMP
+            and all(type(n) is int for n in found)
+            and stat.S_ISREG(found[5])
+            and found[4] <= TRACED_BYTES
+        ):
+            yield name, found
 
 
 def _valid_stat(raw: Any) -> bool:

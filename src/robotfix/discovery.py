@@ -401,7 +401,7 @@ class _Walker:
                 name = entry.name
                 link = _test(entry.is_symlink)
                 if link and _TRACE is not None:
-                    _TRACE.spoiled = True  # what it reaches is not in `folder`'s stamp
+                    _TRACE.link(folder / name)
                 is_folder = _test(entry.is_dir)  # follows a symlink; False if broken
                 path: Path | None = None
                 if is_folder:
@@ -618,15 +618,16 @@ class Trace(Noted):
     caller's key holds those), so when every stamp and answer is the same again it
     finds the same: a cached run checks them (`holds`) instead of walking again.
 
-    Not kept (`spoiled`) when the walk met a symlink (what it reaches is not in its
-    folder's stamp) or a stamp younger than `RACY_NS` (the next change could land
-    in the same tick, as git's racily clean files). A stamp holds the mtime and the
-    ctime (a `touch -d` or a chmod, say a folder made unreadable, changes it), the
-    inode, device, size and mode."""
+    A symlink the walk meets is noted by what it reaches (`link`), which is not
+    in its folder's stamp. Not kept (`spoiled`) when a stamp is younger than
+    `RACY_NS` (the next change could land in the same tick, as git's racily clean
+    files). A stamp holds the mtime and the ctime (a `touch -d` or a chmod, say a
+    folder made unreadable, changes it), the inode, device, size and mode."""
 
     def __init__(self) -> None:
         super().__init__()
         self.spoiled = False
+        self.renewed = False  # `holds` renewed a stamp: to be kept again
         self._now = time.time_ns()
 
     def stamp(self, path: str | os.PathLike[str]) -> None:
@@ -636,6 +637,17 @@ class Trace(Noted):
             if found is not None and self._now - max(found[0], found[1]) < RACY_NS:
                 self.spoiled = True
             self.stamps[name] = found
+
+    def link(self, path: Path) -> None:
+        """A symlink among a listed folder's entries (the folder's stamp says it
+        is there, a link): what it reaches, its real path (a probe), and the stamp
+        of that (through any chain of links; None when broken), which says whether
+        it is a folder or a file, and for a file its head, as the walk reads them
+        through the link (a folder it reaches is listed, and stamped, by the walk)."""
+        name = os.fspath(path)
+        real = os.path.realpath(name)
+        self.probes[("realpath", name)] = real
+        self.stamp(real)
 
     def take(self, other: Noted) -> None:
         """What another computation noted (`fs.remembered`), as if noted here."""
@@ -679,16 +691,33 @@ class Trace(Noted):
                 out.probes.update({("isfile", p): False for p in paths})
         return out
 
-    def holds(self) -> bool:
-        """Whether every stamp and probe answers as it did."""
+    def holds(
+        self,
+        same: Callable[[str, list[int], list[int]], list[int] | None] | None = None,
+    ) -> bool:
+        """Whether every stamp and probe answers as it did. With `same`, a file
+        whose stamp changed holds while `same(name, was, now)` says it holds the
+        bytes it held (a `touch`, a checkout or a restored CI cache that wrote
+        it alike; `ResultCache.same_bytes`), and which stamp to keep for it: a
+        new one is renewed here (`renewed`), for the caller to keep."""
         if self.spoiled:
             return False
+        renewed: dict[str, list[int] | None] = {}
         for name, known in self.stamps.items():
-            if stamp(name) != known:
-                return False
+            now = stamp(name)
+            if now != known:
+                if same is None or known is None or now is None:
+                    return False
+                kept = same(name, known, now)
+                if kept is None:
+                    return False
+                if kept != known:
+                    renewed[name] = kept
         for (kind, arg), answer in self.probes.items():
             if _probe(kind, arg) != answer:
                 return False
+        self.stamps.update(renewed)
+        self.renewed = bool(renewed)
         return True
 
     def to_json(self) -> dict[str, Any]:
@@ -747,6 +776,8 @@ _PROBES: dict[str, Callable[[str], Any]] = {
 
 def _probe(kind: str, arg: str) -> Any:
     try:
+        if kind in ("isfile", "realpath"):  # the run's answer (`fs.answering`):
+            return asked(kind, arg)  # 470 launch files' traces ask many alike
         return _PROBES[kind](arg)
     except (OSError, ValueError):
         return None  # never equal to an answer noted

@@ -36,6 +36,7 @@ from robotfix.fs import (
     Noted,
     UnreadableError,
     answering,
+    asked,
     noting,
     read_regular,
     stamp,
@@ -541,8 +542,10 @@ class _KeptReads:
                 entries.append((entry, files))
         except (ValueError, TypeError):
             return None
-        if not trace.holds():
+        if not trace.holds(self.cache.same_bytes):
             return None
+        if trace.renewed:
+            self.cache.renew_launch_read(path, trace)
         return trace, Read(problem, entries, reading)
 
     def put(self, path: str, context: str, noted: Noted, read: Read) -> None:
@@ -769,6 +772,7 @@ class _ParamParts:
     ) -> None:
         self.found, self.python_files, self.config = found, python_files, config
         self.cache, self.launches, self.inputs = cache, launches, inputs
+        self._shared: str | None = None  # what every launch file's key holds
         self._keys: dict[str, str] = {}
         self._real: dict[str, list[Path]] | None = None
         self._files: dict[tuple[str, str], str] = {}  # many keys name one file
@@ -811,8 +815,9 @@ class _ParamParts:
     def launch_file(self, path: str, entries: list[Any]) -> list[Diagnostic] | None:
         if self._real is None:
             self._real = {}
-            for file in self.python_files:
-                self._real.setdefault(os.path.realpath(file), []).append(file)
+            for file in self.python_files:  # real paths: the run's answers
+                real = asked("realpath", os.fspath(file))
+                self._real.setdefault(real, []).append(file)
         parts = [self._file("launch", path)]
         for started in entries:
             parts.append(f"entry\0{started.entry!r}\0{sorted(started.files)}")
@@ -823,14 +828,24 @@ class _ParamParts:
             for parameter in started.entry.parameters:
                 if getattr(parameter, "path", None) is not None:
                     parts.append(self._file("param", parameter.path))
-        parts += [
-            self._file("definitions", p) for p in self.found.parameter_definitions
-        ]
-        parts += [self._file("summary", p) for p in self.found.summary_files]
-        # the C++ nodes an entry may start, their declarations (`cppparams`)
-        parts += [p for p in self.inputs if p.startswith(("cpp\0", "cmake\0"))]
+        parts.append(self.shared())
         found = self.cache.param_part(f"launch:{path}", self._key(path, parts))
         return found[0] if found is not None and len(found) == 1 else None
+
+    def shared(self) -> str:
+        """What every launch file's key holds, hashed once (not joined and
+        hashed again for each of 328 launch files: 1,528 C++ files): the
+        parameter definitions, the files read only for their declarations, and
+        the C++ nodes an entry may start, their declarations (`cppparams`)."""
+        if self._shared is None:
+            parts = [
+                self._file("definitions", p) for p in self.found.parameter_definitions
+            ]
+            parts += [self._file("summary", p) for p in self.found.summary_files]
+            parts += [p for p in self.inputs if p.startswith(("cpp\0", "cmake\0"))]
+            text = "\n".join(parts).encode("utf-8", "surrogateescape")
+            self._shared = f"shared\0{hashlib.sha256(text).hexdigest()}"
+        return self._shared
 
     def keep(
         self,
@@ -896,7 +911,7 @@ def _params_inputs(
     for path in python_files:
         mentions = cache.mentions(path)
         if mentions or path not in checked:
-            real = os.path.realpath(path)
+            real = asked("realpath", os.fspath(path))  # the run's answer
             where = package_folder(path)
             parts.append(f"py\0{path}\0{real}\0{cache.sha(path)}\0{where}")
             parts += [f"reads\0{k}\0{v}" for k, v in cache.consulted(path)]

@@ -15,8 +15,9 @@ listing) of every folder listed and the answer of every existence probe
 answered by that folder's stamp). When a probe answers otherwise, nothing is
 reused; when a folder's stamp changed, the answers that may have listed it are
 dropped (every answer of a search path holding it; below one, the names under it)
-and the others reused. Not kept when a listing met a symlink (what it reaches is
-not in its folder's stamp); a folder whose stamp is younger than `RACY_NS` counts
+and the others reused. A symlink a listing met is kept with what the listing made
+of it (a Python file, a folder, neither: what it reaches is not in its folder's
+stamp), checked like a probe; a folder whose stamp is younger than `RACY_NS` counts
 as changed in the next run.
 """
 
@@ -37,7 +38,7 @@ from robotfix.fs import RACY_NS, stamp
 
 _UNKNOWN = Path("\0")  # not looked up yet
 MAX_DEPTH = 32  # folders climbed looking for a package top or a package.xml
-KEPT_FORMAT = 1
+KEPT_FORMAT = 2  # 2: symlinks listed kept with their answers
 MAX_CHANGED = 64  # folders changed since the answers were kept: beyond, none is
 
 
@@ -70,7 +71,9 @@ class ModuleIndex:
         self._probes: dict[str, tuple[bool, bool]] = {}
         # probes in a folder stamped before them: the stamp answers for them
         self._covered: set[str] = set()
-        self._spoiled = False  # a symlink listed
+        # each symlink a listing met -> what the listing made of it (`_list`)
+        self._links: dict[str, bool | None] = {}
+        self._spoiled = False  # a worker's answer differed (`merge`)
         self._now = time.time_ns()
         self._restored: tuple[dict[str, Any], tuple[int, ...]] | None = None
         self._handed = (0, 0, 0)  # `fresh`: the stamps, probes, answers handed out
@@ -91,9 +94,8 @@ class ModuleIndex:
                     # the same tick): the next run counts the folder as changed
                     stamped = [-1] * len(stamped)
                 self._stamps[folder] = stamped
-            found, linked = _list(folder)
+            found = _list(folder, self._links)
             self._listings[folder] = found
-            self._spoiled = self._spoiled or linked
         return found
 
     def _isfile(self, path: Path) -> bool:
@@ -155,6 +157,7 @@ class ModuleIndex:
             "stamps": self._stamps,
             "probes": [[k, d, e] for k, (d, e) in probes if k not in covered],
             "covered": [[k, d, e] for k, (d, e) in probes if k in covered],
+            "links": self._links,
             "paths": self._spelled,
             "ids": self._ids,
             "files": [str(f) for f in files],
@@ -174,6 +177,9 @@ class ModuleIndex:
             stamps = raw["stamps"]
             probes = {str(k): (bool(d), bool(e)) for k, d, e in raw["probes"]}
             covered = {str(k): (bool(d), bool(e)) for k, d, e in raw["covered"]}
+            links = {str(k): v for k, v in raw["links"].items()}
+            if not set(map(type, links.values())) <= {bool, type(None)}:
+                return False
             paths = [tuple(str(p) for p in roots) for roots in raw["paths"]]
             ids = {str(k): int(v) for k, v in raw["ids"].items()}
             table: list[Path | None] = [None, *map(Path, raw["files"])]
@@ -208,11 +214,14 @@ class ModuleIndex:
             now = _is_dir(Path(name)) if folder_probe else os.path.isfile(name)
             if now != answer:
                 return False
+        if any(_reached(name) != answer for name, answer in links.items()):
+            return False
         if changed:
             resolved = _without(resolved, paths, changed)
         self._stamps = {str(k): v for k, v in stamps.items() if k not in changed}
         self._probes = {**probes, **covered}
         self._covered = set(covered) - recheck
+        self._links = links
         self._spelled = paths
         self._paths = [None] * len(paths)
         self._numbers = {roots: n for n, roots in enumerate(paths)}
@@ -240,6 +249,7 @@ class ModuleIndex:
             "paths": [self._spelled[n] for n in numbers],
             "ids": {k: numbers[n] for k, n in self._ids.items() if n in numbers},
             "stamps": dict(islice(self._stamps.items(), stamps, None)),
+            "links": self._links,  # few: all of them
             "probes": [
                 (k, d, e, k in self._covered)
                 for k, (d, e) in islice(self._probes.items(), probes, None)
@@ -260,6 +270,8 @@ class ModuleIndex:
         for folder, stamped in fresh["stamps"].items():
             known = self._stamps.setdefault(folder, stamped)
             spoiled = spoiled or known != stamped
+        for name, reached in fresh["links"].items():
+            spoiled = spoiled or self._links.setdefault(name, reached) != reached
         for name, folder_probe, answer, covered in fresh["probes"]:
             known_probe = self._probes.setdefault(name, (folder_probe, answer))
             spoiled = spoiled or known_probe != (folder_probe, answer)
@@ -289,6 +301,7 @@ class ModuleIndex:
             len(self._paths),
             len(self._ids),
             len(self._resolved),
+            len(self._links),
         )
 
     def find(self, name: str, importer: Path | str) -> Path | None:
@@ -504,25 +517,36 @@ def _module_file(
     return None
 
 
-def _list(folder: str) -> tuple[dict[str, bool], bool]:
-    """A folder's sub-folders (True) and Python files (False), and whether it
-    holds a symlink."""
+def _list(folder: str, links: dict[str, bool | None]) -> dict[str, bool]:
+    """A folder's sub-folders (True) and Python files (False); `links` learns
+    what each symlink among its entries is of these (None: neither)."""
     found: dict[str, bool] = {}
-    linked = False
     try:
         with os.scandir(folder) as entries:
             for entry in entries:
                 try:
-                    linked = linked or entry.is_symlink()
+                    link = entry.is_symlink()
                     if entry.name.endswith(".py") and entry.is_file():
                         found[entry.name] = False
                     elif entry.is_dir():
                         found[entry.name] = True
+                    if link:
+                        links[entry.path] = found.get(entry.name)
                 except OSError:
                     continue
     except OSError:
         pass
-    return found, linked
+    return found
+
+
+def _reached(path: str) -> bool | None:
+    """What `_list` makes of the symlink `path` now (following it)."""
+    try:
+        if os.path.basename(path).endswith(".py") and os.path.isfile(path):
+            return False
+        return True if os.path.isdir(path) else None
+    except (OSError, ValueError):
+        return None
 
 
 def _is_dir(path: Path) -> bool:

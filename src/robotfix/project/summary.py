@@ -99,7 +99,7 @@ class Project:
         self._fresh: list[str] = []  # those built since `fresh_summaries` last ran
         # a kept summary whose records all still read the same (`_holds`)
         self._holding: dict[Path, bool] = {}
-        self._deciding: set[Path] = set()  # those `_holds` is deciding
+        self._deciding: set[Path] = set()  # on the path `_holds` walks
         # the sha256 of a file's bytes, when the caller knows a faster way (the
         # result cache's stat fast path); None: unreadable
         self.sha_of: Callable[[Path], str | None] | None = None
@@ -268,9 +268,13 @@ class Project:
         """Whether every record the kept summary of `start` (of unchanged bytes) was
         built on reads the same now, so that its fingerprints hold. The kept
         summaries those records name are decided first, by a loop rather than
-        recursion (an import chain may be thousands of modules deep); one met
-        again while it is being decided (an import cycle, as the graph was when
-        they were built) does not hold: it is built again, which is always right."""
+        recursion (an import chain may be thousands of modules deep): a depth-first
+        walk, each module decided once all it stands on is. One met again on the
+        path being walked (an import cycle, as the graph was when they were built)
+        does not hold: it is built again, which is always right. (One waiting on
+        the stack below, met again under another module, is decided there first:
+        it was taken for a cycle, and a diamond - `a` importing `p` and `q`, `q`
+        importing `p` - built `p` again on every cached run.)"""
         holding = self._holding
         if start in holding:
             return holding[start]
@@ -279,26 +283,27 @@ class Project:
         if str(start) in self.built:
             return True  # built in this run: from what it consulted now
         stack = [start]
-        self._deciding.add(start)
         while stack:
             path = stack[-1]
+            if path in holding:  # met again under another module: decided there
+                stack.pop()
+                continue
             known = self._kept(path)
             assert known is not None
             records = _records(path, known[3])
-            targets = dict.fromkeys(self._target(key) for key in records)
-            below = [
-                target
-                for target in targets
-                if target is not None
-                and target not in holding
-                and target not in self._deciding
-                and str(target) not in self.built
-                and (kept := self._kept(target)) is not None
-                and self._digest(target) == kept[0]
-            ]
-            if below:
-                stack.extend(below)
-                self._deciding.update(below)
+            if path not in self._deciding:  # first met: what it stands on first
+                self._deciding.add(path)
+                targets = dict.fromkeys(self._target(key) for key in records)
+                stack.extend(
+                    target
+                    for target in targets
+                    if target is not None
+                    and target not in holding
+                    and target not in self._deciding
+                    and str(target) not in self.built
+                    and (kept := self._kept(target)) is not None
+                    and self._digest(target) == kept[0]
+                )
                 continue
             stack.pop()
             holding[path] = all(self.fingerprint(k) == v for k, v in records.items())

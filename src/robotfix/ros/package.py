@@ -38,12 +38,17 @@ def package_name(folder: Path) -> str | None:
 
 def package_folder(path: Path) -> Path | None:
     """The folder of the ROS package a file lies in: the nearest one above it (or
-    its own folder) that holds a package.xml."""
-    folder = Path(os.path.abspath(path)).parent
-    for candidate in (folder, *folder.parents):
-        if probe("isfile", candidate / "package.xml"):
-            return candidate
-    return None
+    its own folder) that holds a package.xml. (Climbed as strings: a cached
+    run asks it of every C++, parameter and Python file it keys, 2,244 times
+    over the corpus, and made ten `Path`s a folder.)"""
+    folder = os.path.dirname(os.path.abspath(path))
+    while True:
+        if probe("isfile", os.path.join(folder, "package.xml")):
+            return Path(folder)
+        above = os.path.dirname(folder)
+        if above == folder:
+            return None
+        folder = above
 
 
 TEST_FOLDERS = frozenset({"test", "tests", "testing"})
