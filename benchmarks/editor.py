@@ -181,13 +181,16 @@ def per_edit(
     path = folder / f"{name}.py"
     path.write_text(text)
     catalog = _server_catalog(path)
-    # the document's proof memo, as `server._publish` passes it (none before it was)
-    kept = {"memo": server._memo(path.as_uri())} if hasattr(server, "_memo") else {}
+    uri = path.as_uri()
+    # the document's proof memo, as `server._publish` passes it (none before it
+    # was): asked for at each edit, and the path a new string each time, as there
+    kept = {"memo": True} if hasattr(server, "_memo") else {}
 
     def once(n: int, extra: dict[str, object]) -> tuple[float, float, list[object]]:
         source = (edit or edited)(text, n)  # type: ignore[operator]
         started, cpu = time.perf_counter(), time.process_time()
-        found = api.check_source(source, str(path), catalog=catalog, **extra)  # type: ignore[arg-type]
+        memo = {"memo": server._memo(uri)} if extra else {}
+        found = api.check_source(source, str(Path(path)), catalog=catalog, **memo)  # type: ignore[arg-type]
         wall = (time.perf_counter() - started) * 1000
         return wall, (time.process_time() - cpu) * 1000, found
 
@@ -213,7 +216,7 @@ def per_edit(
     times.sort()
     plain.sort()
     # made by the first check that is given the memo (read after the edits)
-    units = getattr(kept.get("memo"), "units", None)
+    units = getattr(server._memos.get(uri), "units", None)
     return {
         "file": name,
         "lines": text.count("\n"),

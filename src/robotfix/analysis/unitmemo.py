@@ -129,6 +129,7 @@ class UnitMemo:
         self._table: OrderedDict[tuple[object, ...], Record] = OrderedDict()
         self._max = max_entries
         self._identity: tuple[object, ...] = ()
+        self._path = ""  # of the document
         self._bases: dict[str, int] = {}  # skeleton digest -> its items in the table
         self._last = ""  # the skeleton digest of the check before ("": not made)
         self._text: str | None = None  # the text of the check before
@@ -154,13 +155,17 @@ class UnitMemo:
             or not hasattr(discharge, "solver_calls")
         ):
             return None
-        identity = (ctx.catalog, ctx.stubs, type(discharge), ctx.source.path)
-        if len(identity) != len(self._identity) or any(
-            a is not b for a, b in zip(identity, self._identity, strict=True)
+        # the catalog, stubs and discharger by identity; the path by its value
+        # (the server makes a new string of it at each keystroke)
+        identity = (ctx.catalog, ctx.stubs, type(discharge))
+        if (
+            ctx.source.path != self._path
+            or len(identity) != len(self._identity)
+            or any(a is not b for a, b in zip(identity, self._identity, strict=True))
         ):
             self._table.clear()
             self._bases.clear()
-            self._identity = identity
+            self._identity, self._path = identity, ctx.source.path
         # Every key holds the skeleton, which an edit of the code (not of a number
         # in a body) changes at every keystroke: then no item can hit. Such an
         # edit is told from the text alone (the skeleton is not made), and items
