@@ -13,7 +13,13 @@ from pathlib import Path
 
 import pytest
 
-from robotfix.analysis.skeleton import numbers_only, same_skeleton, skeleton
+from robotfix.analysis.skeleton import (
+    TEXT_WORDS,
+    comment_only,
+    numbers_only,
+    same_skeleton,
+    skeleton,
+)
 from robotfix.analysis.unitmemo import UnitMemo
 from robotfix.api import check_source
 from robotfix.config import Config
@@ -555,3 +561,166 @@ def test_what_an_earlier_method_wrote_is_in_a_method_key(tmp_path: Path) -> None
     edited = text.replace("frames[0]", "frames[1]")
     found = _clean_then_edited(tmp_path, text, edited, CASES / "frames")
     assert [d.rule.code for d in found] == ["RF202"]
+
+
+COMMENTED = """class A:
+    # c0
+    def f(self, x=(1,
+                   # c1
+                   2)):
+        # c2
+        y = foo(1,
+                # c3
+                2)
+        # c4
+        if (y and
+            # c5
+            x):
+            pass
+        # c6
+        try:
+            pass
+        # c7
+        except (ValueError,
+                # c8
+                KeyError):
+            # c9
+            pass
+        s = '''
+        # c10
+        '''
+# c11
+"""
+
+
+@pytest.mark.parametrize(
+    ("line", "alone"),
+    [
+        (0, True),  # between a class's statements
+        (1, False),  # inside a default value
+        (2, True),
+        (3, False),  # inside a call
+        (4, True),
+        (5, False),  # inside an `if` test
+        (6, True),
+        (7, True),  # between a `try` body and its handler
+        (8, False),  # inside the handler's exception types
+        (9, True),
+        (10, False),  # inside a string
+        (11, True),
+    ],
+)
+def test_a_comment_line_between_statements_is_told_from_the_text(
+    line: int, alone: bool
+) -> None:
+    edited = COMMENTED.replace(f"# c{line}\n", f"# c{line} edited\n")
+    assert comment_only(ast.parse(edited), COMMENTED, edited) is alone
+
+
+@pytest.mark.parametrize(
+    "new", ["# c4\n\n", "z = 1\n", "# the node\n", "# Annotated\n", "# a := b\n"]
+)
+def test_more_than_a_comment_is_not_a_comment_edit(new: str) -> None:
+    """A line added, code, or a word the analysis looks for in the text."""
+    edited = COMMENTED.replace("# c4\n", new)
+    assert not comment_only(ast.parse(edited), COMMENTED, edited)
+
+
+def test_every_word_the_analysis_reads_in_the_text_is_a_text_word() -> None:
+    """The analysis tests the whole text for some words (`":=" in
+    source.text`): a comment holding one is not a comment alone (`TEXT_WORDS`)."""
+    import re
+
+    found = set()
+    for module in (ROOT / "src" / "robotfix" / "analysis").glob("*.py"):
+        found.update(
+            re.findall(r'"([^"]+)" (?:not )?in [\w.]*source\.text', module.read_text())
+        )
+    assert found and found <= set(TEXT_WORDS)
+
+
+def test_methods_are_replayed_after_a_comment_edit(tmp_path: Path) -> None:
+    """Typing in a comment line between statements leaves the skeleton as it
+    was: every method but the one whose text holds the comment is replayed."""
+    from robotfix.ros.catalog import MsgCatalog
+
+    catalog = MsgCatalog([])
+    text = _class_node(8).replace(
+        "        gain = 4.5\n", "        gain = 4.5\n        # a note\n"
+    )
+    path = tmp_path / "node.py"
+    memo = ProofMemo()
+    for _ in range(2):
+        check_source(text, str(path), Config(), catalog, memo=memo)
+    units = memo.units
+    assert isinstance(units, UnitMemo)
+    before = units.hits
+    for note in ("# a note!", "# a note!!"):
+        edited = text.replace("# a note", note)
+        found = check_source(edited, str(path), Config(), catalog, memo=memo)
+        assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
+    assert units.hits - before >= 2 * 7
+
+
+def test_a_comment_holding_a_text_word_is_not_replayed_around(tmp_path: Path) -> None:
+    """RF508 is reported only in a file that says `Annotated` somewhere, a
+    comment too: a comment that comes to say it is an edit of what the analysis
+    reads (fails with "Annotated" left out of `TEXT_WORDS`)."""
+    from robotfix.ros.catalog import MsgCatalog
+
+    catalog = MsgCatalog([])
+    text = (
+        "from geometry_msgs.msg import Twist\n"
+        "\n"
+        "\n"
+        "class Node:\n"
+        "    def first(self, cmd: Twist):\n"
+        "        gain = 1.5\n"
+        "        # a note\n"
+        "        cmd.linear.x = gain\n"
+        "\n"
+        "    def second(self, cmd: Twist):\n"
+        "        from nav_msgs.msg import Odometryy\n"
+        "        cmd.linear.x = 2.5\n"
+    )
+    path = tmp_path / "node.py"
+    memo = ProofMemo()
+    for _ in range(2):
+        assert not check_source(text, str(path), Config(), catalog, memo=memo)
+    edited = text.replace("# a note", "# Annotated")
+    found = check_source(edited, str(path), Config(), catalog, memo=memo)
+    assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
+    assert [d.rule.code for d in found] == ["RF508"]
+
+
+def test_a_class_body_is_keyed_without_its_methods_bodies(tmp_path: Path) -> None:
+    """A class body with a constant writes what its methods read, so each
+    method's key holds what it was (`_writers`); it does not run its methods'
+    bodies, so a number edited in one method leaves it, and the keys of the
+    methods after it, alike (keyed by the whole class text, none was replayed)."""
+    from robotfix.ros.catalog import MsgCatalog
+
+    catalog = MsgCatalog([])
+    text = "".join(
+        [
+            "from geometry_msgs.msg import Twist\n\n\nclass Node:\n",
+            "    RATE = 10.0\n",
+            *(
+                f"    def step_{i}(self, cmd: Twist):\n"
+                f"        gain = {i + 1}.5\n"
+                "        cmd.linear.x = gain\n\n"
+                for i in range(6)
+            ),
+        ]
+    )
+    path = tmp_path / "node.py"
+    memo = ProofMemo()
+    for _ in range(2):
+        check_source(text, str(path), Config(), catalog, memo=memo)
+    units = memo.units
+    assert isinstance(units, UnitMemo)
+    before = units.hits
+    edited = text.replace("gain = 1.5", "gain = 1.7")
+    found = check_source(edited, str(path), Config(), catalog, memo=memo)
+    assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
+    assert units.hits - before >= 5

@@ -1,15 +1,18 @@
 """The editor memo's view of a module's text (`analysis/unitmemo.py`): its
 skeleton, the text with the numbers of function bodies blanked where only their own
 function reads them (the module docstring of `unitmemo` says which are kept), and
-what an edit of numbers only changed of it, told from the text.
+what an edit of numbers only, or of a comment line between statements, changed of
+it, told from the text.
 """
 
 from __future__ import annotations
 
 import ast
+import re
 from collections.abc import Sequence
 
 from robotfix.analysis import inline
+from robotfix.analysis.parameters import WORDS
 from robotfix.astwalk import walk
 
 # the characters of most numbers' literals (`1_000`, `2.5e-3`, `3j`; an edit of a
@@ -42,6 +45,81 @@ def numbers_only(before: str, after: str) -> bool:
     return _NUMBER_CHARS.issuperset(a[start : len(a) - tail]) and (
         _NUMBER_CHARS.issuperset(b[start : len(b) - tail])
     )
+
+
+# What the analysis reads of a text besides its tree: whether the whole text holds
+# one of these (`":=" in source.text`: interpreter, binder, frames), and whether a
+# function's lines do (`parameters.WORDS`, `parameters._mentions`). A comment
+# holding one is not taken for a comment alone (`comment_only`).
+TEXT_WORDS = ("Annotated", "setattr", ":=", *WORDS)
+_LINES = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+$")  # the lines ast counts
+
+
+def comment_only(tree: ast.Module, before: str, after: str) -> bool:
+    """Whether two texts differ in one line only, which holds a comment or blanks
+    and nothing else in both, none of `TEXT_WORDS`, and lies between statements
+    (`tree` is `after`'s): no expression or simple statement spans it, so nothing
+    the analysis reads holds it but the text of the statements around it (a
+    method's, a class's, which key their items) and the skeleton, which then
+    counts as unchanged."""
+    old, new = _LINES.findall(before), _LINES.findall(after)
+    first, last = _same_ends(old, new)
+    if len(old) - first - last != 1 or len(new) - first - last != 1:
+        return False
+    for line in (old[first], new[first]):
+        kept = line.strip(" \t\f\r\n")
+        if (kept and not kept.startswith("#")) or any(w in line for w in TEXT_WORDS):
+            return False
+    return _between(tree.body, first + 1)
+
+
+def _between(block: list[ast.stmt], line: int) -> bool:
+    """Whether `line` lies in `block` between statements, or inside a compound one
+    between its parts (`_in_compound`)."""
+    for statement in block:
+        if line < _first(statement):
+            return True
+        if line <= _last(statement):
+            return _in_compound(statement, line)
+    return True
+
+
+def _in_compound(node: ast.stmt | ast.excepthandler, line: int) -> bool:
+    """Whether `line`, within compound `node` (a statement or an `except` clause),
+    lies outside every expression of its header and between the statements of
+    its blocks; False in a simple statement."""
+    if isinstance(node, ast.Match):
+        return False  # its cases carry no lines of their own
+    names = ("body", "orelse", "finalbody")
+    blocks = [b for b in (getattr(node, n, None) for n in names) if b]
+    if not blocks:
+        return False
+    handlers = getattr(node, "handlers", [])
+    inner = {id(s) for b in blocks for s in b} | {id(h) for h in handlers}
+    for child in ast.iter_child_nodes(node):
+        if id(child) not in inner and any(_spans(p, line) for p in walk(child)):
+            return False
+    for handler in handlers:
+        if _first(handler) <= line <= _last(handler):
+            return _in_compound(handler, line)
+    for block in blocks:
+        if _first(block[0]) <= line <= _last(block[-1]):
+            return _between(block, line)
+    return True
+
+
+def _spans(node: ast.AST, line: int) -> bool:
+    first = getattr(node, "lineno", None)
+    return first is not None and first <= line <= (node.end_lineno or first)  # type: ignore[attr-defined]
+
+
+def _first(node: ast.stmt | ast.excepthandler) -> int:
+    decorators = getattr(node, "decorator_list", [])
+    return min([node.lineno, *(d.lineno for d in decorators)])
+
+
+def _last(node: ast.stmt | ast.excepthandler) -> int:
+    return node.end_lineno or node.lineno
 
 
 def skeleton(tree: ast.Module, lines: list[str]) -> str:

@@ -92,7 +92,12 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from robotfix.analysis.context import Scope
-from robotfix.analysis.skeleton import numbers_only, same_skeleton, skeleton
+from robotfix.analysis.skeleton import (
+    comment_only,
+    numbers_only,
+    same_skeleton,
+    skeleton,
+)
 from robotfix.astwalk import walk
 
 if TYPE_CHECKING:
@@ -172,13 +177,19 @@ class UnitMemo:
         # are recorded only once a skeleton is checked twice in a row.
         text, before = ctx.source.text, self._text
         self._text = text
-        if before is not None and not numbers_only(before, text):
-            self._last = ""
-            return None
-        # one number changed: whether the skeleton did is told from where it is
-        # (on a 791-line node making the skeleton takes 4 ms); a kept number
-        # changed it, so no item can hit (but in a skeleton checked before)
-        same = same_skeleton(tree, before, text) if before is not None else None
+        same: bool | None = None
+        if before is not None:
+            if numbers_only(before, text):
+                # one number changed: whether the skeleton did is told from where
+                # it is (on a 791-line node making the skeleton takes 4 ms); a kept
+                # number changed it, so no item can hit (but in a skeleton checked
+                # before)
+                same = same_skeleton(tree, before, text)
+            else:
+                # a comment line between statements: the skeleton counts as the
+                # one before (no analysis reads it; the items whose text holds it
+                # are keyed by that text)
+                same = comment_only(tree, before, text) or False
         if same is False:
             self._last = ""
             return None
@@ -308,8 +319,29 @@ class Check:
             return (self.base, text, _locator(node), _resolver_state(self.ctx), writers)
         text = self._root_text.get(index)
         if text is None:
-            text = self._root_text[index] = self._text(self.roots[index])
+            root = self.roots[index]
+            if node is root and isinstance(root, ast.ClassDef):
+                text = self._class_text(root)
+            else:
+                text = self._text(root)
+            self._root_text[index] = text
         return (self.base, text, _locator(node), _resolver_state(self.ctx))
+
+    def _class_text(self, root: ast.ClassDef) -> str:
+        """The text keying a class body's item: the class's lines but its methods'
+        bodies, which the class body does not run (their syntax is in the
+        skeleton; their blanked numbers and comments only their own items read),
+        so that an edit in one method leaves the class body, and the keys of the
+        methods after it (`_writers`), alike."""
+        first = _first_line(root)[0]
+        skipped: set[int] = set()
+        for statement in root.body:
+            if isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                end = statement.end_lineno or statement.lineno
+                skipped.update(range(statement.body[0].lineno, end + 1))
+        lines = self.lines[first - 1 : root.end_lineno]
+        kept = [t for n, t in enumerate(lines, start=first) if n not in skipped]
+        return f"{first}\0{''.join(kept)}"
 
     def _walked(self, node: ast.AST, index: int) -> ast.stmt:
         """The statement whose walk numbers the nodes an item's `once` keys name:
