@@ -724,3 +724,66 @@ def test_a_class_body_is_keyed_without_its_methods_bodies(tmp_path: Path) -> Non
     found = check_source(edited, str(path), Config(), catalog, memo=memo)
     assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
     assert units.hits - before >= 5
+
+
+def _callers_of_later_helpers(helper_header: str) -> str:
+    """A node whose methods each call a helper defined below them (the call
+    builds the helper's signature), each with a local number of its own."""
+    return "".join(
+        [
+            "from typing import Annotated\n",
+            "from geometry_msgs.msg import Twist\n\n\nclass Node:\n",
+            *(
+                f"    def step_{i}(self, cmd: Twist):\n"
+                f"        gain = {i + 1}.5\n"
+                f"        cmd.linear.x = self.helper_{i}(gain)\n\n"
+                for i in range(6)
+            ),
+            *(
+                f"    def helper_{i}(self, {helper_header}):\n        return v\n\n"
+                for i in range(6)
+            ),
+        ]
+    )
+
+
+def test_a_method_that_builds_a_later_signature_is_replayed(tmp_path: Path) -> None:
+    """Calling a method defined below builds its signature, which other items
+    read: the replay builds it again (`Record.signed`), so the caller is kept
+    and the items after it still find the state they were recorded in (with
+    the signatures not built again on a replay, or callers not kept, 5 fewer
+    hits)."""
+    from robotfix.ros.catalog import MsgCatalog
+
+    catalog = MsgCatalog([])
+    text = _callers_of_later_helpers("v")
+    path = tmp_path / "node.py"
+    memo = ProofMemo()
+    for _ in range(2):
+        check_source(text, str(path), Config(), catalog, memo=memo)
+    units = memo.units
+    assert isinstance(units, UnitMemo)
+    before = units.hits
+    edited = text.replace("gain = 1.5", "gain = 1.7")
+    found = check_source(edited, str(path), Config(), catalog, memo=memo)
+    assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
+    assert units.hits - before >= 5 + 6  # the other steps, the helpers
+
+
+def test_a_signature_that_reports_is_not_built_on_a_replay(tmp_path: Path) -> None:
+    """A signature whose refinement is reported when it is built belongs to the
+    item that built it: that item is not kept, and the output is a fresh
+    check's."""
+    from robotfix.ros.catalog import MsgCatalog
+
+    catalog = MsgCatalog([])
+    text = _callers_of_later_helpers("v: Annotated[float, \"Unit('parsec/')\"]")
+    path = tmp_path / "node.py"
+    memo = ProofMemo()
+    for _ in range(2):
+        check_source(text, str(path), Config(), catalog, memo=memo)
+    for gain in ("1.7", "1.9"):
+        edited = text.replace("gain = 1.5", f"gain = {gain}")
+        found = check_source(edited, str(path), Config(), catalog, memo=memo)
+        assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
+        assert found

@@ -14,7 +14,12 @@ Key of an item (`Check.analyze`):
   3.6`, `analysis/inline.py`), not the value of a store to an attribute or subscript
   (`self.x = 0.5`, `r.from_value = 0.0`), not an `if`/`while` test, not an
   annotation or anything in a `def` header. A literal's length is kept when text
-  follows it on its line, so every other token's position is in the key. The
+  follows it on its line, so every other token's position is in the key. An edit
+  of one line that holds a comment or blanks only, before and after, lying
+  between statements (no expression or simple statement spans it) and holding
+  none of the words the analysis looks for in the text (`skeleton.TEXT_WORDS`),
+  leaves the skeleton counted as it was (`comment_only`): nothing reads such a
+  line but the text of the statements around it, which keys their items. The
   module phase (index, constants, module body, `collect`, statics) reads function
   bodies only syntactically through names, calls and attribute stores, and a body's
   analysis reads other functions only through their signatures (def headers) and
@@ -25,7 +30,9 @@ Key of an item (`Check.analyze`):
   instead, with the text, place and type-model answers of every item of the
   class run before it that wrote what another item can read (`_wrote`: its exit
   fingerprint differs, or it asked z3); the rest of the class (its header,
-  constants, the methods' headers) is in the skeleton;
+  constants, the methods' headers) is in the skeleton. A class body's own item
+  is keyed by its class's text without its methods' bodies (`_class_text`),
+  which it does not run;
 - what the type model answered the item (`Record.reads`, any item): the model
   reads other functions' bodies (what a function returns, what `self.x` is
   assigned; `t[1]` of a tuple is a number the skeleton blanks), so the questions
@@ -71,7 +78,12 @@ Writes of an item (read from the code), and what happens to each on a replay:
   the creation of `ctx.parameters` / `ctx.frame_facts`: caches of pure functions of
   the tree (their contents, which items do change, are in the fingerprint);
 - the item's own signature (`program.signature`, `_function_for`): built by the
-  prologue, which runs on a replay too;
+  prologue, which runs on a replay too; the signatures it built of other
+  functions (a method defined below that it calls): logged by key and built
+  again on a replay, in their order (`_Signing`), when building each changed
+  nothing else (`_quiet`: no report, symbol, question, work step or table); a
+  build that did makes the item unkept (the count of signatures not built is in
+  the fingerprint);
 - `pending`: the nested items it spawned, recorded by position and found again.
 Everything else (program tables, statics, parameter handles and reads, frames of
 instance attributes, metadata notes, `uses_refinements`, index scopes, resolver
@@ -127,6 +139,7 @@ class Record:
     walked: bool  # some once key names a node (by walk index)
     consulted: tuple[tuple[str, object], ...] = ()  # what imports it resolved
     reads: tuple[tuple[tuple[object, ...], object], ...] = ()  # of the type model
+    signed: tuple[str, ...] = ()  # signatures it built, built again on a replay
 
 
 class UnitMemo:
@@ -412,6 +425,11 @@ class Check:
             return None
         if record.reads and not _same_reads(self.program, record.reads):
             return None
+        signed = [self.program.functions.get(k) for k in record.signed]
+        if any(f is None or f.scope is not None for f in signed):
+            return None
+        for function in signed:
+            self.program.signature(ctx, function)  # type: ignore[arg-type]
         ctx.budget.spend(record.steps)
         ctx._next += record.fresh
         for _ in range(record.questions):
@@ -449,6 +467,8 @@ class Check:
         model = self.program.types
         reads = _Reads(model, self.program)
         self.program.types = reads  # type: ignore[assignment]
+        signing = _Signing(self, self.program.signature)
+        self.program.signature = signing  # type: ignore[method-assign]
         try:
             spawned: list[tuple[ast.AST, Scope]] = run(node, parent, scope, function)
         except BaseException:
@@ -456,13 +476,18 @@ class Check:
             raise
         finally:
             self.program.types = model
+            del self.program.signature  # the class's again
             ctx.unit_log = ctx.unit_answers = None
             shared, ctx.unit_shared = ctx.unit_shared, False
         # it wrote what another item can read: the fingerprint changed (but the
-        # counters and the resolver's record, checked again on a replay), or z3
-        # was asked (its later models may depend on this ask)
+        # counters and the resolver's record, checked again on a replay, and the
+        # signatures it built that a replay builds again), or z3 was asked (its
+        # later models may depend on this ask)
+        leaving = self._fingerprint()
+        signed = tuple(signing.signed) if not signing.impure else ()
         wrote = (
-            self._fingerprint()[2:-1] != entering[2:-1]
+            leaving[3:-1] != entering[3:-1]
+            or leaving[2] != entering[2] - len(signed)  # type: ignore[operator]
             or ctx.discharge.solver_calls() != calls  # type: ignore[attr-defined]
         )
         record = None
@@ -488,6 +513,7 @@ class Check:
                     (k, v) for k, v in (consulted or {}).items() if before.get(k) != v
                 ),
                 tuple(reads.log),
+                signed,
             ),
         )
         return spawned
@@ -534,7 +560,11 @@ class Check:
     # -- the state other items can see ---------------------------------------
     def _fingerprint(self) -> tuple[object, ...]:
         ctx, program = self.ctx, self.program
-        parts: list[object] = [ctx._next, _count(ctx._question_ids)]
+        parts: list[object] = [
+            ctx._next,
+            _count(ctx._question_ids),
+            sum(1 for f in program.functions.values() if f.scope is None),
+        ]
         for name, value in vars(ctx).items():
             if name not in _OWN_CTX:
                 parts.append(_shape(value))
@@ -542,7 +572,6 @@ class Check:
             if name not in _OWN_PROGRAM:
                 parts.append(_shape(value))
         parts.append(sum(len(t) for t in program.attributes.values()))
-        parts.append(sum(1 for f in program.functions.values() if f.scope is None))
         parts.append(len(self.statics))
         parts.append(_inner(ctx.parameters))
         parts.append(_inner(ctx.frame_facts))
@@ -551,6 +580,46 @@ class Check:
         parts.append(ctx.discharge.work_state())  # type: ignore[attr-defined]
         parts.append(_resolver_state(ctx))
         return tuple(parts)
+
+
+class _Signing:
+    """`program.signature` as an item's run sees it: the signatures it builds of
+    other functions (a method defined below it that it calls) are logged by key,
+    to be built again on a replay, when building one changed nothing else (no
+    report, symbol, work step or table of the context: `_quiet`); else the item
+    wrote what it did (`impure`)."""
+
+    def __init__(self, check: Check, build: Callable[..., Scope]) -> None:
+        self.check = check
+        self.build = build
+        self.signed: list[str] = []
+        self.impure = False
+
+    def __call__(self, ctx: FileContext, function: Function) -> Scope:
+        if function.scope is not None:
+            return self.build(ctx, function)  # type: ignore[no-any-return]
+        check = self.check
+        before = _quiet(check)
+        scope: Scope = self.build(ctx, function)
+        if (
+            _quiet(check) != before
+            or check.program.functions.get(function.key) is not function
+        ):
+            self.impure = True
+        else:
+            self.signed.append(function.key)
+        return scope
+
+
+def _quiet(check: Check) -> tuple[object, ...]:
+    """What building a signature must leave alone to be built again on a replay:
+    the fingerprint but the count of signatures not built, the sizes of what the
+    context keeps per item (`_OWN_CTX`), and the work spent."""
+    ctx = check.ctx
+    own = tuple(
+        _shape(v) for k, v in vars(ctx).items() if k in _OWN_CTX and k != "budget"
+    )
+    return (check._fingerprint()[3:], own, ctx.budget.used, _count(ctx._question_ids))
 
 
 # written only as the docstring says (logged, counted, or keyed by own symbols)
