@@ -201,7 +201,7 @@ def per_edit(
     uri = path.as_uri()
     # the document's proof memo, as `server._publish` passes it (none before it
     # was): asked for at each edit, and the path a new string each time, as there
-    kept = {"memo": True} if hasattr(server, "_memo") else {}
+    kept: dict[str, object] = {"memo": True} if hasattr(server, "_memo") else {}
 
     def once(n: int, extra: dict[str, object]) -> tuple[float, float, list[object]]:
         source = (edit or edited)(text, n)  # type: ignore[operator]

@@ -114,7 +114,7 @@ def _spans(node: ast.AST, line: int) -> bool:
 
 
 def _first(node: ast.stmt | ast.excepthandler) -> int:
-    decorators = getattr(node, "decorator_list", [])
+    decorators: list[ast.expr] = getattr(node, "decorator_list", [])
     return min([node.lineno, *(d.lineno for d in decorators)])
 
 

@@ -36,8 +36,8 @@ Key of an item (`Check.analyze`):
 - what the type model answered the item (`Record.reads`, any item): the model
   reads other functions' bodies (what a function returns, what `self.x` is
   assigned; `t[1]` of a tuple is a number the skeleton blanks), so the questions
-  are logged with their answers while the item runs (`_Reads`) and asked again,
-  in their order, before a replay (`_same_reads`);
+  are logged with their answers while the item runs (`unitreads.Reads`) and asked again,
+  in their order, before a replay (`unitreads.same_reads`);
 - the identities of the catalog, the stubs and the discharger's kind (a change
   clears the memo), and what the resolver answered so far (`consulted`: every
   imported module and member with its fingerprint); what the item itself resolved
@@ -109,16 +109,14 @@ from robotfix.analysis.skeleton import (
     same_skeleton,
     skeleton,
 )
+from robotfix.analysis.unitreads import Reads, same_reads
 from robotfix.astwalk import walk
 
 if TYPE_CHECKING:
     from robotfix.analysis.context import FileContext
     from robotfix.analysis.program import Function, Program
-    from robotfix.analysis.types import TypeModel
-    from robotfix.analysis.typeterms import Type
     from robotfix.analysis.values import Value
     from robotfix.diagnostics import Diagnostic
-    from robotfix.stubs import load as stubs
 
 MAX_ENTRIES = 4_000  # items per document
 
@@ -422,7 +420,7 @@ class Check:
                 spawned.append((found, scope if own else parent))
         if record.consulted and not _still(ctx, record.consulted):
             return None
-        if record.reads and not _same_reads(self.program, record.reads):
+        if record.reads and not same_reads(self.program, record.reads):
             return None
         signed = [self.program.functions.get(k) for k in record.signed]
         if any(f is None or f.scope is not None for f in signed):
@@ -464,7 +462,7 @@ class Check:
         consulted = getattr(ctx.resolver, "consulted", None)
         before = dict(consulted) if consulted else {}
         model = self.program.types
-        reads = _Reads(model, self.program)
+        reads = Reads(model, self.program)
         self.program.types = reads  # type: ignore[assignment]
         signing = _Signing(self, self.program.signature)
         self.program.signature = signing  # type: ignore[method-assign]
@@ -596,7 +594,7 @@ class _Signing:
 
     def __call__(self, ctx: FileContext, function: Function) -> Scope:
         if function.scope is not None:
-            return self.build(ctx, function)  # type: ignore[no-any-return]
+            return self.build(ctx, function)
         check = self.check
         before = _quiet(check)
         scope: Scope = self.build(ctx, function)
@@ -650,93 +648,6 @@ _OWN_CTX = frozenset(
 )
 _OWN_PROGRAM = frozenset({"ends", "augmented", "reading_calls", "types"})
 _UNKEPT = object()
-
-
-class _Reads:
-    """The type model as an item's run sees it (`program.types` while it runs):
-    every question the interpreter asks is answered by the model and logged with
-    its answer, by names that find it again in a later check. The model reads
-    other functions' bodies (what a method returns, what `self.x` is assigned),
-    so a replay asks the log again (`_same_reads`): the answers must be alike,
-    and the model's tables fill in the order a run fills them."""
-
-    def __init__(self, model: TypeModel, program: Program) -> None:
-        self.model = model
-        self.program = program
-        self.log: list[tuple[tuple[object, ...], object]] = []
-        self.unknown = False  # asked something it cannot name
-
-    def __getattr__(self, name: str) -> object:
-        self.unknown = True
-        return getattr(self.model, name)
-
-    def _named(self, function: Function) -> str | None:
-        if self.program.functions.get(function.key) is function:
-            return function.key
-        self.unknown = True
-        return None
-
-    def infer(
-        self, node: ast.expr, function: Function | None, env: object = None
-    ) -> Type | None:
-        found = self.model.infer(node, function, env)  # type: ignore[arg-type]
-        if not isinstance(node, ast.Name) or function is None or env is not None:
-            self.unknown = True
-        else:
-            self.log.append((("infer", self._named(function), node.id), found))
-        return found
-
-    def parameter(self, function: Function, name: str) -> Type | None:
-        found = self.model.parameter(function, name)
-        self.log.append((("parameter", self._named(function), name), found))
-        return found
-
-    def returns(self, key: str) -> Type | None:
-        found = self.model.returns(key)
-        self.log.append((("returns", key), found))
-        return found
-
-    def attribute(self, class_name: str, attr: str) -> Type | None:
-        found = self.model.attribute(class_name, attr)
-        self.log.append((("attribute", class_name, attr), found))
-        return found
-
-    def library_bases(self, class_name: str) -> list[stubs.Class]:
-        found = self.model.library_bases(class_name)
-        self.log.append((("library_bases", class_name), _qualnames(found)))
-        return found
-
-
-def _qualnames(classes: list[stubs.Class]) -> tuple[str, ...]:
-    return tuple(c.qualname for c in classes)
-
-
-def _same_reads(
-    program: Program, reads: tuple[tuple[tuple[object, ...], object], ...]
-) -> bool:
-    """Whether the type model answers an item's logged questions alike now (asked
-    in their order, as its run asked them)."""
-    model = program.types
-    for question, answer in reads:
-        kind = question[0]
-        if kind in ("infer", "parameter"):
-            function = program.functions.get(str(question[1]))
-            if function is None:
-                return False
-            name = str(question[2])
-            if kind == "infer":
-                found: object = model.infer(ast.Name(id=name, ctx=ast.Load()), function)
-            else:
-                found = model.parameter(function, name)
-        elif kind == "returns":
-            found = model.returns(str(question[1]))
-        elif kind == "attribute":
-            found = model.attribute(str(question[1]), str(question[2]))
-        else:
-            found = _qualnames(model.library_bases(str(question[1])))
-        if found != answer:
-            return False
-    return True
 
 
 def _still(ctx: FileContext, consulted: tuple[tuple[str, object], ...]) -> bool:
