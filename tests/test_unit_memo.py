@@ -639,15 +639,12 @@ def test_every_word_the_analysis_reads_in_the_text_is_a_text_word() -> None:
     assert found and found <= set(TEXT_WORDS)
 
 
-def test_methods_are_replayed_after_a_comment_edit(tmp_path: Path) -> None:
-    """Typing in a comment line between statements leaves the skeleton as it
-    was: every method but the one whose text holds the comment is replayed."""
+def _replayed(tmp_path: Path, text: str, *edits: str) -> int:
+    """Items replayed over `edits`, each checked after `text` was checked twice
+    with one memo (recorded), and each a fresh check's output."""
     from robotfix.ros.catalog import MsgCatalog
 
     catalog = MsgCatalog([])
-    text = _class_node(8).replace(
-        "        gain = 4.5\n", "        gain = 4.5\n        # a note\n"
-    )
     path = tmp_path / "node.py"
     memo = ProofMemo()
     for _ in range(2):
@@ -655,11 +652,20 @@ def test_methods_are_replayed_after_a_comment_edit(tmp_path: Path) -> None:
     units = memo.units
     assert isinstance(units, UnitMemo)
     before = units.hits
-    for note in ("# a note!", "# a note!!"):
-        edited = text.replace("# a note", note)
+    for edited in edits:
         found = check_source(edited, str(path), Config(), catalog, memo=memo)
         assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
-    assert units.hits - before >= 2 * 7
+    return units.hits - before
+
+
+def test_methods_are_replayed_after_a_comment_edit(tmp_path: Path) -> None:
+    """Typing in a comment line between statements leaves the skeleton as it
+    was: every method but the one whose text holds the comment is replayed."""
+    text = _class_node(8).replace(
+        "        gain = 4.5\n", "        gain = 4.5\n        # a note\n"
+    )
+    edits = [text.replace("# a note", note) for note in ("# a note!", "# a note!!")]
+    assert _replayed(tmp_path, text, *edits) >= 2 * 7
 
 
 def test_a_comment_holding_a_text_word_is_not_replayed_around(tmp_path: Path) -> None:
@@ -698,9 +704,6 @@ def test_a_class_body_is_keyed_without_its_methods_bodies(tmp_path: Path) -> Non
     method's key holds what it was (`_writers`); it does not run its methods'
     bodies, so a number edited in one method leaves it, and the keys of the
     methods after it, alike (keyed by the whole class text, none was replayed)."""
-    from robotfix.ros.catalog import MsgCatalog
-
-    catalog = MsgCatalog([])
     text = "".join(
         [
             "from geometry_msgs.msg import Twist\n\n\nclass Node:\n",
@@ -713,17 +716,8 @@ def test_a_class_body_is_keyed_without_its_methods_bodies(tmp_path: Path) -> Non
             ),
         ]
     )
-    path = tmp_path / "node.py"
-    memo = ProofMemo()
-    for _ in range(2):
-        check_source(text, str(path), Config(), catalog, memo=memo)
-    units = memo.units
-    assert isinstance(units, UnitMemo)
-    before = units.hits
     edited = text.replace("gain = 1.5", "gain = 1.7")
-    found = check_source(edited, str(path), Config(), catalog, memo=memo)
-    assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
-    assert units.hits - before >= 5
+    assert _replayed(tmp_path, text, edited) >= 5
 
 
 def _callers_of_later_helpers(helper_header: str) -> str:
@@ -753,21 +747,9 @@ def test_a_method_that_builds_a_later_signature_is_replayed(tmp_path: Path) -> N
     and the items after it still find the state they were recorded in (with
     the signatures not built again on a replay, or callers not kept, 5 fewer
     hits)."""
-    from robotfix.ros.catalog import MsgCatalog
-
-    catalog = MsgCatalog([])
     text = _callers_of_later_helpers("v")
-    path = tmp_path / "node.py"
-    memo = ProofMemo()
-    for _ in range(2):
-        check_source(text, str(path), Config(), catalog, memo=memo)
-    units = memo.units
-    assert isinstance(units, UnitMemo)
-    before = units.hits
     edited = text.replace("gain = 1.5", "gain = 1.7")
-    found = check_source(edited, str(path), Config(), catalog, memo=memo)
-    assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
-    assert units.hits - before >= 5 + 6  # the other steps, the helpers
+    assert _replayed(tmp_path, text, edited) >= 5 + 6  # the other steps, helpers
 
 
 def test_a_signature_that_reports_is_not_built_on_a_replay(tmp_path: Path) -> None:
