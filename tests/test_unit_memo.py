@@ -769,3 +769,28 @@ def test_a_signature_that_reports_is_not_built_on_a_replay(tmp_path: Path) -> No
         found = check_source(edited, str(path), Config(), catalog, memo=memo)
         assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
         assert found
+
+
+def test_a_replay_spends_the_work_a_fresh_check_spends() -> None:
+    """Building some signatures spends work steps (`SimBridge.stop`'s here): such
+    a build is not built again on a replay (the item that did it is not kept),
+    or its steps would be spent twice, and a file near its budget would stop
+    (RF902) where a fresh check does not (707 steps against 702 with every build
+    taken for quiet)."""
+    from robotfix import api
+    from robotfix.source import SourceFile
+    from robotfix.stubs.load import stub_set
+
+    path = ROOT / "tests" / "cases" / "types" / "stub_class_objects.py"
+    catalog, stubs = catalog_for(path.parent), stub_set()
+
+    def spent(memo: ProofMemo | None) -> tuple[int, int, int]:
+        source = SourceFile.from_text(str(path), path.read_text())
+        ctx = api._analyze(source, catalog, stubs=stubs, memo=memo)
+        return ctx._next, ctx.budget.used, len(ctx.diagnostics)
+
+    memo = ProofMemo()
+    for _ in range(2):
+        spent(memo)
+    assert spent(memo) == spent(None)
+    assert isinstance(memo.units, UnitMemo) and memo.units.hits >= 10
