@@ -794,3 +794,30 @@ def test_a_replay_spends_the_work_a_fresh_check_spends() -> None:
         spent(memo)
     assert spent(memo) == spent(None)
     assert isinstance(memo.units, UnitMemo) and memo.units.hits >= 10
+
+
+def test_the_region_an_edit_changed_is_found_by_halves() -> None:
+    """`skeleton._region` (slices compared by halves) finds what a character
+    by character walk from both ends finds."""
+    from robotfix.analysis.skeleton import _region
+
+    def walked(x: str, y: str) -> tuple[int, int, int]:
+        start = 0
+        while start < min(len(x), len(y)) and x[start] == y[start]:
+            start += 1
+        tail = 0
+        while tail < min(len(x), len(y)) - start and x[-1 - tail] == y[-1 - tail]:
+            tail += 1
+        return start, len(x) - tail, len(y) - tail
+
+    rng = random.Random(25)
+    for _ in range(3000):
+        x = "".join(rng.choice("ab\n") for _ in range(rng.randrange(12)))
+        y = list(x)
+        for _ in range(rng.randrange(3)):
+            at = rng.randrange(len(y) + 1)
+            if rng.random() < 0.5 or not y:
+                y.insert(at, rng.choice("ab\n"))
+            else:
+                y[min(at, len(y) - 1)] = rng.choice("ab\n#")
+        assert _region(x, "".join(y)) == walked(x, "".join(y))
