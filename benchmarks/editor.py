@@ -1,8 +1,9 @@
 """Editor latency: what one keystroke costs in `robotfix lsp`, and its cold start.
 
 Per-edit latency is measured in-process, calling `api.check_source` exactly as the
-server's `_publish` does (the server's catalog, the full text each time, the
-document's proof memo), after WARMUP edits; each edit changes one literal inside one
+server's `_publish` does (the document's settings, the server's catalog and kept
+module summaries, the full text each time, the document's proof memo asked for
+at each edit), after WARMUP edits; each edit changes one literal inside one
 function in the middle of the file, so the text, and that function's proofs, differ
 from every earlier edit. Each edit is also checked without the memo, the two in
 alternating order, so that both columns see the same machine load, and the two
@@ -42,6 +43,7 @@ import subprocess
 import sys
 import tempfile
 import time
+from collections.abc import Callable
 from pathlib import Path
 
 from generate_annotated import generate
@@ -83,6 +85,21 @@ def _server_catalog(path: Path) -> object:
         texts={},
         installed=server._INSTALLED,
     )
+
+
+def _server_inputs(path: Path) -> Callable[[Path], tuple[object, object, object]]:
+    """What `server._check` passes `api.check_source` besides the text at each
+    keystroke: the document's settings, the catalog and the module summaries the
+    server keeps (`server._project`), asked for again at each edit, as there."""
+    from robotfix.lsp import server
+
+    catalog = _server_catalog(path)
+
+    def inputs(path: Path) -> tuple[object, object, object]:
+        settings = server._settings(path)
+        return settings, catalog, server._project(catalog, path, settings)
+
+    return inputs
 
 
 def edited_real(text: str, n: int) -> str:
@@ -180,14 +197,17 @@ def per_edit(
 
     path = folder / f"{name}.py"
     path.write_text(text)
-    catalog = _server_catalog(path)
-    # the document's proof memo, as `server._publish` passes it (none before it was)
-    kept = {"memo": server._memo(path.as_uri())} if hasattr(server, "_memo") else {}
+    as_server = _server_inputs(path)
+    uri = path.as_uri()
+    # the document's proof memo, as `server._publish` passes it (none before it
+    # was): asked for at each edit, and the path a new string each time, as there
+    kept: dict[str, object] = {"memo": True} if hasattr(server, "_memo") else {}
 
     def once(n: int, extra: dict[str, object]) -> tuple[float, float, list[object]]:
         source = (edit or edited)(text, n)  # type: ignore[operator]
         started, cpu = time.perf_counter(), time.process_time()
-        found = api.check_source(source, str(path), catalog=catalog, **extra)  # type: ignore[arg-type]
+        memo = {"memo": server._memo(uri)} if extra else {}
+        found = api.check_source(source, str(Path(path)), *as_server(path), **memo)  # type: ignore[arg-type]
         wall = (time.perf_counter() - started) * 1000
         return wall, (time.process_time() - cpu) * 1000, found
 
@@ -213,7 +233,7 @@ def per_edit(
     times.sort()
     plain.sort()
     # made by the first check that is given the memo (read after the edits)
-    units = getattr(kept.get("memo"), "units", None)
+    units = getattr(server._memos.get(uri), "units", None)
     return {
         "file": name,
         "lines": text.count("\n"),

@@ -1,7 +1,8 @@
 """Per-edit work of the editor's check, to be counted by callgrind (deterministic on a
 busy machine, where `editor.py`'s CPU times move): checks WARMUP + EDITS versions of
 one real node in one process, each one edit of `editor.py`'s kind, with the
-document's memo (`memo`) or without (`plain`); prints the memo's hits.
+document's memo (`memo`) or without (`plain`), and the settings, catalog and
+module summaries the server keeps; prints the memo's hits.
 
 Usage (the difference of two runs is what the memo costs or saves):
     valgrind --tool=callgrind --callgrind-out-file=cg.out \\
@@ -22,12 +23,12 @@ from robotfix.smt.memo import ProofMemo
 
 def main(path: Path, kind: str, mode: str, edits: int) -> None:
     text = path.read_text()
-    catalog = editor._server_catalog(path)
+    as_server = editor._server_inputs(path)
     make = getattr(editor, kind)
     sources = [make(text, n) for n in range(editor.WARMUP + edits)]
     memo = ProofMemo() if mode == "memo" else None
     for source in sources:
-        api.check_source(source, str(path), catalog=catalog, memo=memo)
+        api.check_source(source, str(path), *as_server(path), memo=memo)  # type: ignore[arg-type]
     print(getattr(getattr(memo, "units", None), "hits", 0))
 
 

@@ -4,12 +4,16 @@ code: for each Python file under a folder, EDITS random edits of one unit each
 fresh; prints the number of edits compared, the mismatches (must be 0) and the
 memo's hits and misses.
 
-Usage: python benchmarks/unit_memo_corpus.py FOLDER [EDITS] [literal|blanked]
+Usage: python benchmarks/unit_memo_corpus.py FOLDER [EDITS] [literal|blanked|comment]
 With `literal`, every edit changes a number inside a function (the edits that leave
 the other units' keys alone, so most of them are replayed); with `blanked`, a number
 the skeleton blanks (`same_skeleton`), after the text was checked twice (so its
 items are recorded), in files with a class: the edits after which the memo replays
-a method around the edited one.
+a method around the edited one; with `comment`, a chain of edits each of one line
+that holds a comment or blanks only (a comment written there, some with a word the
+analysis reads in the text), after the text was checked twice, in files with a
+class: the edits after which the memo counts the skeleton unchanged
+(`comment_only`).
 """
 
 from __future__ import annotations
@@ -17,6 +21,7 @@ from __future__ import annotations
 import ast
 import json
 import random
+import re
 import sys
 import zlib
 from pathlib import Path
@@ -47,7 +52,11 @@ def main(folder: Path, edits: int, kinds: tuple[str, ...]) -> None:
         memo = ProofMemo(max_entries=0)  # the units alone (see the test)
         check_source(text, str(path), config, catalog, memo=memo)
         done = 0
-        chosen = _blanked(text, rng, edits) if kinds == ("blanked",) else None
+        chosen = None
+        if kinds == ("blanked",):
+            chosen = _blanked(text, rng, edits)
+        elif kinds == ("comment",):
+            chosen = _commented(text, rng, edits)[::-1]  # popped in their order
         if chosen is not None:  # recorded: a skeleton is, once checked twice
             check_source(text, str(path), config, catalog, memo=memo)
         for _ in range(edits * 3):
@@ -91,9 +100,31 @@ def _blanked(text: str, rng: random.Random, edits: int) -> list[str]:
     return rng.sample(found, min(edits, len(found)))
 
 
+NOTES = ("note", "TODO 2", "x = 1", "the node", "Annotated", "setattr", ":=", "")
+
+
+def _commented(text: str, rng: random.Random, edits: int) -> list[str]:
+    """A chain of up to `edits` texts, each the one before with one line that held
+    a comment or blanks only made another comment (none without a class)."""
+    lines = text.splitlines(keepends=True)
+    spots = [i for i, line in enumerate(lines) if line.strip()[:1] in ("", "#")]
+    if "class " not in text or not spots:
+        return []
+    chain = []
+    for _ in range(edits):
+        at = rng.choice(spots)
+        indent = re.match(r"[ \t]*", lines[at]).group(0)  # type: ignore[union-attr]
+        end = lines[at][len(lines[at].rstrip("\r\n")) :] or "\n"
+        lines[at] = f"{indent}# {rng.choice(NOTES)} {rng.randrange(100)}{end}"
+        chain.append("".join(lines))
+    return chain
+
+
 if __name__ == "__main__":
     main(
         Path(sys.argv[1]),
         int(sys.argv[2]) if len(sys.argv) > 2 else 3,
-        tuple(sys.argv[3:4]) if sys.argv[3:4] in (["literal"], ["blanked"]) else KINDS,
+        tuple(sys.argv[3:4])
+        if sys.argv[3:4] in (["literal"], ["blanked"], ["comment"])
+        else KINDS,
     )

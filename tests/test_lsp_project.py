@@ -195,3 +195,32 @@ def test_a_module_added_in_a_listed_folder_drops_the_kept_project(
     (package / "mod.py").write_text(HELPER.format(unit="km/h"))
     _later(package)
     assert _kept_and_fresh(session, node, text) == ["RF201"]
+
+
+def test_a_document_that_proved_nothing_keeps_its_memo(tmp_path: Path) -> None:
+    """The document's memo holds its analysis kept per item (`memo.units`) next to
+    its proofs: a document with nothing to prove (most real nodes) keeps it across
+    keystrokes too (an empty memo was dropped, so every edit made a new one and
+    nothing was ever replayed)."""
+    path = tmp_path / "node.py"
+    text = "".join(
+        [
+            "from geometry_msgs.msg import Twist\n\n\nclass Node:\n",
+            *(
+                f"    def step_{i}(self, cmd: Twist):\n"
+                f"        gain = {i + 1}.5\n"
+                "        cmd.linear.x = gain\n\n"
+                for i in range(6)
+            ),
+        ]
+    )
+    session = server.Session()
+    uri = path.as_uri()
+    server.did_open(session, {"textDocument": {"uri": uri, "text": text}})
+    for version, gain in enumerate(("2.5", "2.5", "2.7"), start=1):
+        edited = text.replace("gain = 2.5", f"gain = {gain}")
+        change = {"textDocument": {"uri": uri, "version": version}}
+        server.did_change(session, {**change, "contentChanges": [{"text": edited}]})
+    memo = server._memo(uri)
+    assert len(memo) == 0  # nothing proved: the memo is empty, so false
+    assert memo.units is not None and memo.units.hits >= 5  # type: ignore[attr-defined]

@@ -13,7 +13,13 @@ from pathlib import Path
 
 import pytest
 
-from robotfix.analysis.skeleton import numbers_only, same_skeleton, skeleton
+from robotfix.analysis.skeleton import (
+    TEXT_WORDS,
+    comment_only,
+    numbers_only,
+    same_skeleton,
+    skeleton,
+)
 from robotfix.analysis.unitmemo import UnitMemo
 from robotfix.api import check_source
 from robotfix.config import Config
@@ -408,20 +414,11 @@ def test_a_method_is_replayed_after_an_edit_of_a_sibling(tmp_path: Path) -> None
     its own text; the rest of the class is in the skeleton)."""
     from robotfix.ros.catalog import MsgCatalog
 
-    catalog = MsgCatalog([])
     text = _class_node(8)
-    path = tmp_path / "node.py"
-    memo = ProofMemo()
-    for _ in range(2):
-        check_source(text, str(path), Config(), catalog, memo=memo)
-    units = memo.units
-    assert isinstance(units, UnitMemo)
     edited = text.replace("gain = 4.5", "gain = 4.7")
-    before = units.hits
-    found = check_source(edited, str(path), Config(), catalog, memo=memo)
-    assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
+    assert _replayed(tmp_path, text, edited) >= 7  # every method but the edited one
+    found = check_source(edited, str(tmp_path / "node.py"), Config(), MsgCatalog([]))
     assert [d.rule.code for d in found] == ["RF203"] * 8
-    assert units.hits - before >= 7  # every method but the edited one
 
 
 SIBLING_READ = {
@@ -555,3 +552,261 @@ def test_what_an_earlier_method_wrote_is_in_a_method_key(tmp_path: Path) -> None
     edited = text.replace("frames[0]", "frames[1]")
     found = _clean_then_edited(tmp_path, text, edited, CASES / "frames")
     assert [d.rule.code for d in found] == ["RF202"]
+
+
+COMMENTED = """class A:
+    # c0
+    def f(self, x=(1,
+                   # c1
+                   2)):
+        # c2
+        y = foo(1,
+                # c3
+                2)
+        # c4
+        if (y and
+            # c5
+            x):
+            pass
+        # c6
+        try:
+            pass
+        # c7
+        except (ValueError,
+                # c8
+                KeyError):
+            # c9
+            pass
+        s = '''
+        # c10
+        '''
+# c11
+"""
+
+
+@pytest.mark.parametrize(
+    ("line", "alone"),
+    [
+        (0, True),  # between a class's statements
+        (1, False),  # inside a default value
+        (2, True),
+        (3, False),  # inside a call
+        (4, True),
+        (5, False),  # inside an `if` test
+        (6, True),
+        (7, True),  # between a `try` body and its handler
+        (8, False),  # inside the handler's exception types
+        (9, True),
+        (10, False),  # inside a string
+        (11, True),
+    ],
+)
+def test_a_comment_line_between_statements_is_told_from_the_text(
+    line: int, alone: bool
+) -> None:
+    edited = COMMENTED.replace(f"# c{line}\n", f"# c{line} edited\n")
+    assert comment_only(ast.parse(edited), COMMENTED, edited) is alone
+
+
+@pytest.mark.parametrize(
+    "new", ["# c4\n\n", "z = 1\n", "# the node\n", "# Annotated\n", "# a := b\n"]
+)
+def test_more_than_a_comment_is_not_a_comment_edit(new: str) -> None:
+    """A line added, code, or a word the analysis looks for in the text."""
+    edited = COMMENTED.replace("# c4\n", new)
+    assert not comment_only(ast.parse(edited), COMMENTED, edited)
+
+
+def test_every_word_the_analysis_reads_in_the_text_is_a_text_word() -> None:
+    """The analysis tests the whole text for some words (`":=" in
+    source.text`): a comment holding one is not a comment alone (`TEXT_WORDS`)."""
+    import re
+
+    found = set()
+    for module in (ROOT / "src" / "robotfix" / "analysis").glob("*.py"):
+        found.update(
+            re.findall(r'"([^"]+)" (?:not )?in [\w.]*source\.text', module.read_text())
+        )
+    assert found and found <= set(TEXT_WORDS)
+
+
+def _replayed(tmp_path: Path, text: str, *edits: str) -> int:
+    """Items replayed over `edits`, each checked after `text` was checked twice
+    with one memo (recorded), and each a fresh check's output."""
+    from robotfix.ros.catalog import MsgCatalog
+
+    catalog = MsgCatalog([])
+    path = tmp_path / "node.py"
+    memo = ProofMemo()
+    for _ in range(2):
+        check_source(text, str(path), Config(), catalog, memo=memo)
+    units = memo.units
+    assert isinstance(units, UnitMemo)
+    before = units.hits
+    for edited in edits:
+        found = check_source(edited, str(path), Config(), catalog, memo=memo)
+        assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
+    return units.hits - before
+
+
+def test_methods_are_replayed_after_a_comment_edit(tmp_path: Path) -> None:
+    """Typing in a comment line between statements leaves the skeleton as it
+    was: every method but the one whose text holds the comment is replayed."""
+    text = _class_node(8).replace(
+        "        gain = 4.5\n", "        gain = 4.5\n        # a note\n"
+    )
+    edits = [text.replace("# a note", note) for note in ("# a note!", "# a note!!")]
+    assert _replayed(tmp_path, text, *edits) >= 2 * 7
+
+
+def test_a_comment_holding_a_text_word_is_not_replayed_around(tmp_path: Path) -> None:
+    """RF508 is reported only in a file that says `Annotated` somewhere, a
+    comment too: a comment that comes to say it is an edit of what the analysis
+    reads (fails with "Annotated" left out of `TEXT_WORDS`)."""
+    from robotfix.ros.catalog import MsgCatalog
+
+    catalog = MsgCatalog([])
+    text = (
+        "from geometry_msgs.msg import Twist\n"
+        "\n"
+        "\n"
+        "class Node:\n"
+        "    def first(self, cmd: Twist):\n"
+        "        gain = 1.5\n"
+        "        # a note\n"
+        "        cmd.linear.x = gain\n"
+        "\n"
+        "    def second(self, cmd: Twist):\n"
+        "        from nav_msgs.msg import Odometryy\n"
+        "        cmd.linear.x = 2.5\n"
+    )
+    path = str(tmp_path / "node.py")
+    assert not check_source(text, path, Config(), catalog)
+    edited = text.replace("# a note", "# Annotated")
+    _replayed(tmp_path, text, edited)  # the memo's output is a fresh check's
+    found = check_source(edited, path, Config(), catalog)
+    assert [d.rule.code for d in found] == ["RF508"]
+
+
+def test_a_class_body_is_keyed_without_its_methods_bodies(tmp_path: Path) -> None:
+    """A class body with a constant writes what its methods read, so each
+    method's key holds what it was (`_writers`); it does not run its methods'
+    bodies, so a number edited in one method leaves it, and the keys of the
+    methods after it, alike (keyed by the whole class text, none was replayed)."""
+    text = "".join(
+        [
+            "from geometry_msgs.msg import Twist\n\n\nclass Node:\n",
+            "    RATE = 10.0\n",
+            *(
+                f"    def step_{i}(self, cmd: Twist):\n"
+                f"        gain = {i + 1}.5\n"
+                "        cmd.linear.x = gain\n\n"
+                for i in range(6)
+            ),
+        ]
+    )
+    edited = text.replace("gain = 1.5", "gain = 1.7")
+    assert _replayed(tmp_path, text, edited) >= 5
+
+
+def _callers_of_later_helpers(helper_header: str) -> str:
+    """A node whose methods each call a helper defined below them (the call
+    builds the helper's signature), each with a local number of its own."""
+    return "".join(
+        [
+            "from typing import Annotated\n",
+            "from geometry_msgs.msg import Twist\n\n\nclass Node:\n",
+            *(
+                f"    def step_{i}(self, cmd: Twist):\n"
+                f"        gain = {i + 1}.5\n"
+                f"        cmd.linear.x = self.helper_{i}(gain)\n\n"
+                for i in range(6)
+            ),
+            *(
+                f"    def helper_{i}(self, {helper_header}):\n        return v\n\n"
+                for i in range(6)
+            ),
+        ]
+    )
+
+
+def test_a_method_that_builds_a_later_signature_is_replayed(tmp_path: Path) -> None:
+    """Calling a method defined below builds its signature, which other items
+    read: the replay builds it again (`Record.signed`), so the caller is kept
+    and the items after it still find the state they were recorded in (with
+    the signatures not built again on a replay, or callers not kept, 5 fewer
+    hits)."""
+    text = _callers_of_later_helpers("v")
+    edited = text.replace("gain = 1.5", "gain = 1.7")
+    assert _replayed(tmp_path, text, edited) >= 5 + 6  # the other steps, helpers
+
+
+def test_a_signature_that_reports_is_not_built_on_a_replay(tmp_path: Path) -> None:
+    """A signature whose refinement is reported when it is built belongs to the
+    item that built it: that item is not kept, and the output is a fresh
+    check's."""
+    from robotfix.ros.catalog import MsgCatalog
+
+    catalog = MsgCatalog([])
+    text = _callers_of_later_helpers("v: Annotated[float, \"Unit('parsec/')\"]")
+    path = tmp_path / "node.py"
+    memo = ProofMemo()
+    for _ in range(2):
+        check_source(text, str(path), Config(), catalog, memo=memo)
+    for gain in ("1.7", "1.9"):
+        edited = text.replace("gain = 1.5", f"gain = {gain}")
+        found = check_source(edited, str(path), Config(), catalog, memo=memo)
+        assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
+        assert found
+
+
+def test_a_replay_spends_the_work_a_fresh_check_spends() -> None:
+    """Building some signatures spends work steps (`SimBridge.stop`'s here): such
+    a build is not built again on a replay (the item that did it is not kept),
+    or its steps would be spent twice, and a file near its budget would stop
+    (RF902) where a fresh check does not (707 steps against 702 with every build
+    taken for quiet)."""
+    from robotfix import api
+    from robotfix.source import SourceFile
+    from robotfix.stubs.load import stub_set
+
+    path = ROOT / "tests" / "cases" / "types" / "stub_class_objects.py"
+    catalog, stubs = catalog_for(path.parent), stub_set()
+
+    def spent(memo: ProofMemo | None) -> tuple[int, int, int]:
+        source = SourceFile.from_text(str(path), path.read_text())
+        ctx = api._analyze(source, catalog, stubs=stubs, memo=memo)
+        return ctx._next, ctx.budget.used, len(ctx.diagnostics)
+
+    memo = ProofMemo()
+    for _ in range(2):
+        spent(memo)
+    assert spent(memo) == spent(None)
+    assert isinstance(memo.units, UnitMemo) and memo.units.hits >= 10
+
+
+def test_the_region_an_edit_changed_is_found_by_halves() -> None:
+    """`skeleton._region` (slices compared by halves) finds what a character
+    by character walk from both ends finds."""
+    from robotfix.analysis.skeleton import _region
+
+    def walked(x: str, y: str) -> tuple[int, int, int]:
+        start = 0
+        while start < min(len(x), len(y)) and x[start] == y[start]:
+            start += 1
+        tail = 0
+        while tail < min(len(x), len(y)) - start and x[-1 - tail] == y[-1 - tail]:
+            tail += 1
+        return start, len(x) - tail, len(y) - tail
+
+    rng = random.Random(25)
+    for _ in range(3000):
+        x = "".join(rng.choice("ab\n") for _ in range(rng.randrange(12)))
+        y = list(x)
+        for _ in range(rng.randrange(3)):
+            at = rng.randrange(len(y) + 1)
+            if rng.random() < 0.5 or not y:
+                y.insert(at, rng.choice("ab\n"))
+            else:
+                y[min(at, len(y) - 1)] = rng.choice("ab\n#")
+        assert _region(x, "".join(y)) == walked(x, "".join(y))

@@ -1,7 +1,8 @@
 """The editor memo's view of a module's text (`analysis/unitmemo.py`): its
 skeleton, the text with the numbers of function bodies blanked where only their own
 function reads them (the module docstring of `unitmemo` says which are kept), and
-what an edit of numbers only changed of it, told from the text.
+what an edit of numbers only, or of a comment line between statements, changed of
+it, told from the text.
 """
 
 from __future__ import annotations
@@ -10,6 +11,7 @@ import ast
 from collections.abc import Sequence
 
 from robotfix.analysis import inline
+from robotfix.analysis.parameters import WORDS
 from robotfix.astwalk import walk
 
 # the characters of most numbers' literals (`1_000`, `2.5e-3`, `3j`; an edit of a
@@ -28,20 +30,125 @@ def _same_ends(a: Sequence[object], b: Sequence[object]) -> tuple[int, int]:
     return first, last
 
 
+def _common(a: str, b: str, bound: int, from_end: bool) -> int:
+    """How many characters two texts share at their start (or end), at most
+    `bound`, found by comparing halves (slices compared in C: a keystroke in a
+    30 kB text costs microseconds)."""
+    low, high = 0, bound
+    while low < high:
+        middle = (low + high + 1) // 2
+        if from_end:
+            same = (
+                a[len(a) - middle : len(a) - low] == b[len(b) - middle : len(b) - low]
+            )
+        else:
+            same = a[low:middle] == b[low:middle]
+        if same:
+            low = middle
+        else:
+            high = middle - 1
+    return low
+
+
+def _region(before: str, after: str) -> tuple[int, int, int]:
+    """Where two texts differ: the length of their common start, and where the
+    differing part ends in each (the common end follows)."""
+    start = _common(before, after, min(len(before), len(after)), from_end=False)
+    bound = min(len(before), len(after)) - start
+    tail = _common(before, after, bound, from_end=True)
+    return start, len(before) - tail, len(after) - tail
+
+
 def numbers_only(before: str, after: str) -> bool:
     """Whether the one region where two texts differ holds only characters of
     numbers: otherwise text that `skeleton` keeps as it is changed, and so did
     the skeleton."""
-    old, new = before.splitlines(keepends=True), after.splitlines(keepends=True)
-    first, last = _same_ends(old, new)  # whole lines first: cheap on long texts
-    a = "".join(old[first : len(old) - last])
-    b = "".join(new[first : len(new) - last])
-    start, tail = _same_ends(a, b)
-    if "#" in a[a.rfind("\n", 0, start) + 1 : start]:
+    start, end, new_end = _region(before, after)
+    if "#" in before[before.rfind("\n", 0, start) + 1 : start]:
         return False  # in a comment (or after a `#` in a string: only slower)
-    return _NUMBER_CHARS.issuperset(a[start : len(a) - tail]) and (
-        _NUMBER_CHARS.issuperset(b[start : len(b) - tail])
+    return _NUMBER_CHARS.issuperset(before[start:end]) and (
+        _NUMBER_CHARS.issuperset(after[start:new_end])
     )
+
+
+# What the analysis reads of a text besides its tree: whether the whole text holds
+# one of these (`":=" in source.text`: interpreter, binder, frames), and whether a
+# function's lines do (`parameters.WORDS`, `parameters._mentions`). A comment
+# holding one is not taken for a comment alone (`comment_only`).
+TEXT_WORDS = ("Annotated", "setattr", ":=", *WORDS)
+
+
+def comment_only(tree: ast.Module, before: str, after: str) -> bool:
+    """Whether two texts differ in one line only, which holds a comment or blanks
+    and nothing else in both, none of `TEXT_WORDS`, and lies between statements
+    (`tree` is `after`'s): no expression or simple statement spans it, so nothing
+    the analysis reads holds it but the text of the statements around it (a
+    method's, a class's, which key their items) and the skeleton, which then
+    counts as unchanged. Not told in a text with a line that ends at a lone
+    `\r` (ast counts it as a line break)."""
+    if any("\r" in t and t.count("\r") != t.count("\r\n") for t in (before, after)):
+        return False
+    start, end, new_end = _region(before, after)
+    changed = (before[start:end], after[start:new_end])
+    if changed == ("", "") or any("\n" in c for c in changed):
+        return False  # no change, or a line added, removed or split
+    first = before.rfind("\n", 0, start) + 1  # the line's start, in both texts
+    for text, stop in ((before, end), (after, new_end)):
+        last = text.find("\n", stop)
+        line = text[first : len(text) if last < 0 else last]
+        kept = line.strip(" \t\f\r")
+        if (kept and not kept.startswith("#")) or any(w in line for w in TEXT_WORDS):
+            return False
+    return _between(tree.body, before.count("\n", 0, start) + 1)
+
+
+def _between(block: list[ast.stmt], line: int) -> bool:
+    """Whether `line` lies in `block` between statements, or inside a compound one
+    between its parts (`_in_compound`)."""
+    for statement in block:
+        if line < _first(statement):
+            return True
+        if line <= _last(statement):
+            return _in_compound(statement, line)
+    return True
+
+
+def _in_compound(node: ast.stmt | ast.excepthandler, line: int) -> bool:
+    """Whether `line`, within compound `node` (a statement or an `except` clause),
+    lies outside every expression of its header and between the statements of
+    its blocks; False in a simple statement."""
+    if isinstance(node, ast.Match):
+        return False  # its cases carry no lines of their own
+    names = ("body", "orelse", "finalbody")
+    blocks = [b for b in (getattr(node, n, None) for n in names) if b]
+    if not blocks:
+        return False
+    handlers = getattr(node, "handlers", [])
+    inner = {id(s) for b in blocks for s in b} | {id(h) for h in handlers}
+    for child in ast.iter_child_nodes(node):
+        if id(child) not in inner and any(_spans(p, line) for p in walk(child)):
+            return False
+    for handler in handlers:
+        if _first(handler) <= line <= _last(handler):
+            return _in_compound(handler, line)
+    for block in blocks:
+        if _first(block[0]) <= line <= _last(block[-1]):
+            return _between(block, line)
+    return True
+
+
+def _spans(node: ast.AST, line: int) -> bool:
+    first = getattr(node, "lineno", None)
+    return first is not None and first <= line <= (node.end_lineno or first)  # type: ignore[attr-defined]
+
+
+def _first(node: ast.stmt | ast.excepthandler) -> int:
+    decorators: list[ast.expr] = getattr(node, "decorator_list", [])
+    return min([node.lineno, *(d.lineno for d in decorators)])
+
+
+def _last(node: ast.stmt | ast.excepthandler) -> int:
+    return node.end_lineno or node.lineno
 
 
 def skeleton(tree: ast.Module, lines: list[str]) -> str:

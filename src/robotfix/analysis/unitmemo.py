@@ -14,7 +14,12 @@ Key of an item (`Check.analyze`):
   3.6`, `analysis/inline.py`), not the value of a store to an attribute or subscript
   (`self.x = 0.5`, `r.from_value = 0.0`), not an `if`/`while` test, not an
   annotation or anything in a `def` header. A literal's length is kept when text
-  follows it on its line, so every other token's position is in the key. The
+  follows it on its line, so every other token's position is in the key. An edit
+  of one line that holds a comment or blanks only, before and after, lying
+  between statements (no expression or simple statement spans it) and holding
+  none of the words the analysis looks for in the text (`skeleton.TEXT_WORDS`),
+  leaves the skeleton counted as it was (`comment_only`): nothing reads such a
+  line but the text of the statements around it, which keys their items. The
   module phase (index, constants, module body, `collect`, statics) reads function
   bodies only syntactically through names, calls and attribute stores, and a body's
   analysis reads other functions only through their signatures (def headers) and
@@ -25,12 +30,14 @@ Key of an item (`Check.analyze`):
   instead, with the text, place and type-model answers of every item of the
   class run before it that wrote what another item can read (`_wrote`: its exit
   fingerprint differs, or it asked z3); the rest of the class (its header,
-  constants, the methods' headers) is in the skeleton;
+  constants, the methods' headers) is in the skeleton. A class body's own item
+  is keyed by its class's text without its methods' bodies (`_class_text`),
+  which it does not run;
 - what the type model answered the item (`Record.reads`, any item): the model
   reads other functions' bodies (what a function returns, what `self.x` is
   assigned; `t[1]` of a tuple is a number the skeleton blanks), so the questions
-  are logged with their answers while the item runs (`_Reads`) and asked again,
-  in their order, before a replay (`_same_reads`);
+  are logged with their answers while the item runs (`unitreads.Reads`) and asked again,
+  in their order, before a replay (`unitreads.same_reads`);
 - the identities of the catalog, the stubs and the discharger's kind (a change
   clears the memo), and what the resolver answered so far (`consulted`: every
   imported module and member with its fingerprint); what the item itself resolved
@@ -71,7 +78,12 @@ Writes of an item (read from the code), and what happens to each on a replay:
   the creation of `ctx.parameters` / `ctx.frame_facts`: caches of pure functions of
   the tree (their contents, which items do change, are in the fingerprint);
 - the item's own signature (`program.signature`, `_function_for`): built by the
-  prologue, which runs on a replay too;
+  prologue, which runs on a replay too; the signatures it built of other
+  functions (a method defined below that it calls): logged by key and built
+  again on a replay, in their order (`_Signing`), when building each changed
+  nothing else (`_quiet`: no report, symbol, question, work step or table); a
+  build that did makes the item unkept (the count of signatures not built is in
+  the fingerprint);
 - `pending`: the nested items it spawned, recorded by position and found again.
 Everything else (program tables, statics, parameter handles and reads, frames of
 instance attributes, metadata notes, `uses_refinements`, index scopes, resolver
@@ -85,24 +97,26 @@ import ast
 import bisect
 import hashlib
 import itertools
-import re
 from collections import OrderedDict
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from robotfix.analysis.context import Scope
-from robotfix.analysis.skeleton import numbers_only, same_skeleton, skeleton
+from robotfix.analysis.skeleton import (
+    comment_only,
+    numbers_only,
+    same_skeleton,
+    skeleton,
+)
+from robotfix.analysis.unitreads import Reads, same_reads
 from robotfix.astwalk import walk
 
 if TYPE_CHECKING:
     from robotfix.analysis.context import FileContext
     from robotfix.analysis.program import Function, Program
-    from robotfix.analysis.types import TypeModel
-    from robotfix.analysis.typeterms import Type
     from robotfix.analysis.values import Value
     from robotfix.diagnostics import Diagnostic
-    from robotfix.stubs import load as stubs
 
 MAX_ENTRIES = 4_000  # items per document
 
@@ -122,6 +136,7 @@ class Record:
     walked: bool  # some once key names a node (by walk index)
     consulted: tuple[tuple[str, object], ...] = ()  # what imports it resolved
     reads: tuple[tuple[tuple[object, ...], object], ...] = ()  # of the type model
+    signed: tuple[str, ...] = ()  # signatures it built, built again on a replay
 
 
 class UnitMemo:
@@ -129,6 +144,7 @@ class UnitMemo:
         self._table: OrderedDict[tuple[object, ...], Record] = OrderedDict()
         self._max = max_entries
         self._identity: tuple[object, ...] = ()
+        self._path = ""  # of the document
         self._bases: dict[str, int] = {}  # skeleton digest -> its items in the table
         self._last = ""  # the skeleton digest of the check before ("": not made)
         self._text: str | None = None  # the text of the check before
@@ -154,26 +170,36 @@ class UnitMemo:
             or not hasattr(discharge, "solver_calls")
         ):
             return None
-        identity = (ctx.catalog, ctx.stubs, type(discharge), ctx.source.path)
-        if len(identity) != len(self._identity) or any(
-            a is not b for a, b in zip(identity, self._identity, strict=True)
+        # the catalog, stubs and discharger by identity; the path by its value
+        # (the server makes a new string of it at each keystroke)
+        identity = (ctx.catalog, ctx.stubs, type(discharge))
+        if (
+            ctx.source.path != self._path
+            or len(identity) != len(self._identity)
+            or any(a is not b for a, b in zip(identity, self._identity, strict=True))
         ):
             self._table.clear()
             self._bases.clear()
-            self._identity = identity
+            self._identity, self._path = identity, ctx.source.path
         # Every key holds the skeleton, which an edit of the code (not of a number
         # in a body) changes at every keystroke: then no item can hit. Such an
         # edit is told from the text alone (the skeleton is not made), and items
         # are recorded only once a skeleton is checked twice in a row.
         text, before = ctx.source.text, self._text
         self._text = text
-        if before is not None and not numbers_only(before, text):
-            self._last = ""
-            return None
-        # one number changed: whether the skeleton did is told from where it is
-        # (on a 791-line node making the skeleton takes 4 ms); a kept number
-        # changed it, so no item can hit (but in a skeleton checked before)
-        same = same_skeleton(tree, before, text) if before is not None else None
+        same: bool | None = None
+        if before is not None:
+            if numbers_only(before, text):
+                # one number changed: whether the skeleton did is told from where
+                # it is (on a 791-line node making the skeleton takes 4 ms); a kept
+                # number changed it, so no item can hit (but in a skeleton checked
+                # before)
+                same = same_skeleton(tree, before, text)
+            else:
+                # a comment line between statements: the skeleton counts as the
+                # one before (no analysis reads it; the items whose text holds it
+                # are keyed by that text)
+                same = comment_only(tree, before, text) or False
         if same is False:
             self._last = ""
             return None
@@ -303,8 +329,29 @@ class Check:
             return (self.base, text, _locator(node), _resolver_state(self.ctx), writers)
         text = self._root_text.get(index)
         if text is None:
-            text = self._root_text[index] = self._text(self.roots[index])
+            root = self.roots[index]
+            if node is root and isinstance(root, ast.ClassDef):
+                text = self._class_text(root)
+            else:
+                text = self._text(root)
+            self._root_text[index] = text
         return (self.base, text, _locator(node), _resolver_state(self.ctx))
+
+    def _class_text(self, root: ast.ClassDef) -> str:
+        """The text keying a class body's item: the class's lines but its methods'
+        bodies, which the class body does not run (their syntax is in the
+        skeleton; their blanked numbers and comments only their own items read),
+        so that an edit in one method leaves the class body, and the keys of the
+        methods after it (`_writers`), alike."""
+        first = _first_line(root)[0]
+        skipped: set[int] = set()
+        for statement in root.body:
+            if isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                end = statement.end_lineno or statement.lineno
+                skipped.update(range(statement.body[0].lineno, end + 1))
+        lines = self.lines[first - 1 : root.end_lineno]
+        kept = [t for n, t in enumerate(lines, start=first) if n not in skipped]
+        return f"{first}\0{''.join(kept)}"
 
     def _walked(self, node: ast.AST, index: int) -> ast.stmt:
         """The statement whose walk numbers the nodes an item's `once` keys name:
@@ -373,8 +420,13 @@ class Check:
                 spawned.append((found, scope if own else parent))
         if record.consulted and not _still(ctx, record.consulted):
             return None
-        if record.reads and not _same_reads(self.program, record.reads):
+        if record.reads and not same_reads(self.program, record.reads):
             return None
+        signed = [self.program.functions.get(k) for k in record.signed]
+        if any(f is None or f.scope is not None for f in signed):
+            return None
+        for function in signed:
+            self.program.signature(ctx, function)  # type: ignore[arg-type]
         ctx.budget.spend(record.steps)
         ctx._next += record.fresh
         for _ in range(record.questions):
@@ -410,8 +462,10 @@ class Check:
         consulted = getattr(ctx.resolver, "consulted", None)
         before = dict(consulted) if consulted else {}
         model = self.program.types
-        reads = _Reads(model, self.program)
+        reads = Reads(model, self.program)
         self.program.types = reads  # type: ignore[assignment]
+        signing = _Signing(self, self.program.signature)
+        self.program.signature = signing  # type: ignore[method-assign]
         try:
             spawned: list[tuple[ast.AST, Scope]] = run(node, parent, scope, function)
         except BaseException:
@@ -419,13 +473,18 @@ class Check:
             raise
         finally:
             self.program.types = model
+            del self.program.signature  # the class's again
             ctx.unit_log = ctx.unit_answers = None
             shared, ctx.unit_shared = ctx.unit_shared, False
         # it wrote what another item can read: the fingerprint changed (but the
-        # counters and the resolver's record, checked again on a replay), or z3
-        # was asked (its later models may depend on this ask)
+        # counters and the resolver's record, checked again on a replay, and the
+        # signatures it built that a replay builds again), or z3 was asked (its
+        # later models may depend on this ask)
+        leaving = self._fingerprint()
+        signed = tuple(signing.signed) if not signing.impure else ()
         wrote = (
-            self._fingerprint()[2:-1] != entering[2:-1]
+            leaving[3:-1] != entering[3:-1]
+            or leaving[2] != entering[2] - len(signed)  # type: ignore[operator]
             or ctx.discharge.solver_calls() != calls  # type: ignore[attr-defined]
         )
         record = None
@@ -451,6 +510,7 @@ class Check:
                     (k, v) for k, v in (consulted or {}).items() if before.get(k) != v
                 ),
                 tuple(reads.log),
+                signed,
             ),
         )
         return spawned
@@ -497,7 +557,11 @@ class Check:
     # -- the state other items can see ---------------------------------------
     def _fingerprint(self) -> tuple[object, ...]:
         ctx, program = self.ctx, self.program
-        parts: list[object] = [ctx._next, _count(ctx._question_ids)]
+        parts: list[object] = [
+            ctx._next,
+            _count(ctx._question_ids),
+            sum(1 for f in program.functions.values() if f.scope is None),
+        ]
         for name, value in vars(ctx).items():
             if name not in _OWN_CTX:
                 parts.append(_shape(value))
@@ -505,7 +569,6 @@ class Check:
             if name not in _OWN_PROGRAM:
                 parts.append(_shape(value))
         parts.append(sum(len(t) for t in program.attributes.values()))
-        parts.append(sum(1 for f in program.functions.values() if f.scope is None))
         parts.append(len(self.statics))
         parts.append(_inner(ctx.parameters))
         parts.append(_inner(ctx.frame_facts))
@@ -514,6 +577,46 @@ class Check:
         parts.append(ctx.discharge.work_state())  # type: ignore[attr-defined]
         parts.append(_resolver_state(ctx))
         return tuple(parts)
+
+
+class _Signing:
+    """`program.signature` as an item's run sees it: the signatures it builds of
+    other functions (a method defined below it that it calls) are logged by key,
+    to be built again on a replay, when building one changed nothing else (no
+    report, symbol, work step or table of the context: `_quiet`); else the item
+    wrote what it did (`impure`)."""
+
+    def __init__(self, check: Check, build: Callable[..., Scope]) -> None:
+        self.check = check
+        self.build = build
+        self.signed: list[str] = []
+        self.impure = False
+
+    def __call__(self, ctx: FileContext, function: Function) -> Scope:
+        if function.scope is not None:
+            return self.build(ctx, function)
+        check = self.check
+        before = _quiet(check)
+        scope: Scope = self.build(ctx, function)
+        if (
+            _quiet(check) != before
+            or check.program.functions.get(function.key) is not function
+        ):
+            self.impure = True
+        else:
+            self.signed.append(function.key)
+        return scope
+
+
+def _quiet(check: Check) -> tuple[object, ...]:
+    """What building a signature must leave alone to be built again on a replay:
+    the fingerprint but the count of signatures not built, the sizes of what the
+    context keeps per item (`_OWN_CTX`), and the work spent."""
+    ctx = check.ctx
+    own = tuple(
+        _shape(v) for k, v in vars(ctx).items() if k in _OWN_CTX and k != "budget"
+    )
+    return (check._fingerprint()[3:], own, ctx.budget.used, _count(ctx._question_ids))
 
 
 # written only as the docstring says (logged, counted, or keyed by own symbols)
@@ -547,93 +650,6 @@ _OWN_PROGRAM = frozenset({"ends", "augmented", "reading_calls", "types"})
 _UNKEPT = object()
 
 
-class _Reads:
-    """The type model as an item's run sees it (`program.types` while it runs):
-    every question the interpreter asks is answered by the model and logged with
-    its answer, by names that find it again in a later check. The model reads
-    other functions' bodies (what a method returns, what `self.x` is assigned),
-    so a replay asks the log again (`_same_reads`): the answers must be alike,
-    and the model's tables fill in the order a run fills them."""
-
-    def __init__(self, model: TypeModel, program: Program) -> None:
-        self.model = model
-        self.program = program
-        self.log: list[tuple[tuple[object, ...], object]] = []
-        self.unknown = False  # asked something it cannot name
-
-    def __getattr__(self, name: str) -> object:
-        self.unknown = True
-        return getattr(self.model, name)
-
-    def _named(self, function: Function) -> str | None:
-        if self.program.functions.get(function.key) is function:
-            return function.key
-        self.unknown = True
-        return None
-
-    def infer(
-        self, node: ast.expr, function: Function | None, env: object = None
-    ) -> Type | None:
-        found = self.model.infer(node, function, env)  # type: ignore[arg-type]
-        if not isinstance(node, ast.Name) or function is None or env is not None:
-            self.unknown = True
-        else:
-            self.log.append((("infer", self._named(function), node.id), found))
-        return found
-
-    def parameter(self, function: Function, name: str) -> Type | None:
-        found = self.model.parameter(function, name)
-        self.log.append((("parameter", self._named(function), name), found))
-        return found
-
-    def returns(self, key: str) -> Type | None:
-        found = self.model.returns(key)
-        self.log.append((("returns", key), found))
-        return found
-
-    def attribute(self, class_name: str, attr: str) -> Type | None:
-        found = self.model.attribute(class_name, attr)
-        self.log.append((("attribute", class_name, attr), found))
-        return found
-
-    def library_bases(self, class_name: str) -> list[stubs.Class]:
-        found = self.model.library_bases(class_name)
-        self.log.append((("library_bases", class_name), _qualnames(found)))
-        return found
-
-
-def _qualnames(classes: list[stubs.Class]) -> tuple[str, ...]:
-    return tuple(c.qualname for c in classes)
-
-
-def _same_reads(
-    program: Program, reads: tuple[tuple[tuple[object, ...], object], ...]
-) -> bool:
-    """Whether the type model answers an item's logged questions alike now (asked
-    in their order, as its run asked them)."""
-    model = program.types
-    for question, answer in reads:
-        kind = question[0]
-        if kind in ("infer", "parameter"):
-            function = program.functions.get(str(question[1]))
-            if function is None:
-                return False
-            name = str(question[2])
-            if kind == "infer":
-                found: object = model.infer(ast.Name(id=name, ctx=ast.Load()), function)
-            else:
-                found = model.parameter(function, name)
-        elif kind == "returns":
-            found = model.returns(str(question[1]))
-        elif kind == "attribute":
-            found = model.attribute(str(question[1]), str(question[2]))
-        else:
-            found = _qualnames(model.library_bases(str(question[1])))
-        if found != answer:
-            return False
-    return True
-
-
 def _still(ctx: FileContext, consulted: tuple[tuple[str, object], ...]) -> bool:
     """Whether the imports an item resolved resolve alike now: asked again, as its
     analysis did (which records them for the file as that would), and compared."""
@@ -657,29 +673,38 @@ def _still(ctx: FileContext, consulted: tuple[tuple[str, object], ...]) -> bool:
     return all(record.get(key) == value for key, value in consulted)
 
 
+_SIZED = (dict, list, set, frozenset, tuple)
+_SCALARS = (bool, int, float, str)
+
+
 def _shape(value: object) -> object:
-    if isinstance(value, (dict, list, set, frozenset, tuple)):
-        return len(value)
-    if value is None or isinstance(value, (bool, int, float, str)):
+    kind = type(value)  # the exact types first: ~50 of these per item
+    if kind in _SIZED:
+        return len(value)  # type: ignore[arg-type]
+    if value is None or kind in _SCALARS:
         return value
-    return type(value).__name__
+    if isinstance(value, _SIZED):
+        return len(value)
+    if isinstance(value, _SCALARS):
+        return value
+    return kind.__name__
 
 
 def _inner(value: object) -> object:
     """The sizes of an object's containers (0s for an absent one, created empty)."""
     if value is None:
         return None
+    found = vars(value)
     return tuple(
-        len(v) if isinstance(v, (dict, list, set)) else 0
-        for k, v in sorted(vars(value).items())
-        if isinstance(v, (dict, list, set))
+        len(found[k]) for k in sorted(found) if isinstance(found[k], (dict, list, set))
     )
 
 
 def _count(counter: itertools.count[int]) -> int:
     """How many question ids were handed out (`count(-1, -1)` reads `count(-n, -1)`)."""
-    found = re.match(r"count\((-?\d+)", repr(counter))
-    return -int(found.group(1)) if found else 0
+    shown = repr(counter)  # `count(-n, -1)`
+    found = shown[6 : shown.find(",")] if shown.startswith("count(") else ""
+    return -int(found) if found.lstrip("-").isdigit() else 0
 
 
 def _first_line(statement: ast.stmt) -> tuple[int, int]:

@@ -233,7 +233,11 @@ def _forget_projects() -> None:
 
 
 def _memo(uri: str) -> ProofMemo:
-    memo = _memos.pop(uri, None) or ProofMemo()
+    # `is None`, not `or`: a memo that kept no proof is empty, so false, and its
+    # analysis kept per item (`memo.units`) would be dropped at every keystroke
+    memo = _memos.pop(uri, None)
+    if memo is None:
+        memo = ProofMemo()
     _memos[uri] = memo  # the most recent last
     while len(_memos) > MAX_MEMOS:
         del _memos[next(iter(_memos))]
