@@ -421,9 +421,10 @@ def import_lines(statements: Iterable[ast.AST]) -> list[ImportLine]:
     found: list[ImportLine] = []
     for node in statements:
         if isinstance(node, ast.ImportFrom):
-            found.append((node.level, node.module, tuple(a.name for a in node.names)))
+            names = tuple([a.name for a in node.names])
+            found.append((node.level, node.module, names))
         elif isinstance(node, ast.Import):
-            found.append((None, None, tuple(a.name for a in node.names)))
+            found.append((None, None, tuple([a.name for a in node.names])))
     return found
 
 
