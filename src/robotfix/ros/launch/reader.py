@@ -114,9 +114,7 @@ class Reader:
         self.reading.add(key)
         if chain:
             self.included.add(key)
-        parsed: Parsed = remembered(
-            self.parsed, key, lambda: _parse(path, self.texts)
-        )
+        parsed: Parsed = remembered(self.parsed, key, lambda: _parse(path, self.texts))
         return parsed
 
 
