@@ -68,8 +68,12 @@ IMPLICIT = ("use_sim_time", "start_type_description_service")
 IMPLICIT_PREFIXES = ("qos_overrides.",)
 
 
+# one import statement as `_imported` reads it: the level of a `from` import
+# (None for `import a, b`), its module, the names it takes
+ImportLine = tuple[int | None, str | None, tuple[str, ...]]
 # a file's path -> the length and hash of its text, and its import statements
-Imports = dict[str, tuple[int, int, list[ast.Import | ast.ImportFrom]]]
+# (as `import_lines`: no syntax tree is kept for the launch files' reading)
+Imports = dict[str, tuple[int, int, list[ImportLine]]]
 
 
 @dataclass
@@ -107,13 +111,11 @@ class LaunchRun:
         launch_files: list[Path],
         code_files: list[Path],
         faults: list[Fault] | None = None,
-        parses: dict[str, tuple[str, ast.Module]] | None = None,
         imports: Imports | None = None,
         kept: Kept | None = None,
     ) -> None:
-        """`parses`: Python launch files as this process's checks parsed them
-        (text, tree), and `imports`, the import statements of the files they
-        parsed: not parsed again (`Reader`, `_imported`). `kept`: each launch
+        """`imports`: the import statements of the files this process's checks
+        parsed (`import_lines`): not parsed again (`_imported`). `kept`: each launch
         file's reading as an earlier run made it, while what it read holds
         (`Kept`): not read again."""
         self.imports = imports
@@ -131,16 +133,23 @@ class LaunchRun:
         self.renamed: dict[str, set[str]] = {}
         self.files: list[Path] = []
         self.names: set[str] = set()  # every node name a launch entry gives
-        self.reader = Reader(self.packages.get, parses or {})
+        self.reader = Reader(self.packages.get)
         self._build: dict[tuple[str, Path], Any] = {}  # packages' build files
         self._codes: dict[tuple[Path, str], Any] = {}  # by executable
         for path in launch_files:
             with guard(path, self.notices, faults):
                 self._read(path)
+            self.reader.release()  # a later include parses a file again
         self.entries = len(self.started)
         if kept is not None and not self.reader.order_dependent:
             for name, noted, read in self._fresh:
                 kept.put(name, self._context, noted, read)
+        # the entries are read: what reading them held (trees, readings, the
+        # packages' build files) goes now, before the checks that use them
+        self._fresh = []
+        self._build.clear()
+        self._codes.clear()
+        self.reader.done()
 
     def _read(self, path: Path) -> None:
         """One launch file's entries, kept only once all are read (a fault on
@@ -381,29 +390,41 @@ def _imported(main: Path, package: Path, known: Imports | None = None) -> list[P
         text = read_text(main, MAX_BUILD_BYTES)
         kept = (known or {}).get(str(main))
         if kept is not None and kept[:2] == (len(text), hash(text)):
-            statements: Iterable[ast.AST] = kept[2]
+            lines = kept[2]
         else:
-            statements = _statements(ast.parse(text))
+            lines = import_lines(_statements(ast.parse(text)))
     except (UnreadableError, SyntaxError, ValueError, RecursionError, MemoryError):
         return []
     here = Path(os.path.relpath(main.parent, package)).parts
     here = () if here == (".",) else here
     found = []
-    for node in statements:
+    for level, module, taken in lines:
         modules: list[str] = []
-        if isinstance(node, ast.ImportFrom):
-            if node.level > len(here) + 1:
+        if level is not None:  # `from ... import`
+            if level > len(here) + 1:
                 continue  # above the package: not one of its modules
-            base = here[: len(here) - node.level + 1] if node.level else ()
-            head = ".".join([*base, *(node.module or "").split(".")]).strip(".")
-            names = [a.name for a in node.names if a.name != "*"]
+            base = here[: len(here) - level + 1] if level else ()
+            head = ".".join([*base, *(module or "").split(".")]).strip(".")
+            names = [n for n in taken if n != "*"]
             modules = [head] + [f"{head}.{n}" if head else n for n in names]
-        elif isinstance(node, ast.Import):
-            modules = [a.name for a in node.names]
+        else:
+            modules = list(taken)
         for module in modules:
             path = module_file(package, module) if module else None
             if path is not None and path != main:
                 found.append(path)
+    return found
+
+
+def import_lines(statements: Iterable[ast.AST]) -> list[ImportLine]:
+    """The import statements among `statements`, as `_imported` reads them."""
+    found: list[ImportLine] = []
+    for node in statements:
+        if isinstance(node, ast.ImportFrom):
+            names = tuple([a.name for a in node.names])
+            found.append((node.level, node.module, names))
+        elif isinstance(node, ast.Import):
+            found.append((None, None, tuple([a.name for a in node.names])))
     return found
 
 

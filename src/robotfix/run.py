@@ -277,8 +277,8 @@ def _check_paths(
         from robotfix.paramcheck import MENTIONS  # not on a fully cached run
 
         project.parameter_words = tuple(w for ws in MENTIONS.values() for w in ws)
-    global _LAUNCH_PARSES
-    _LAUNCH_PARSES = {str(p): None for p in found.launch_files} or None
+    global _READS_LAUNCHES
+    _READS_LAUNCHES = bool(found.launch_files)
     _IMPORTS.clear()
     checks = _check_all(todo, interfaces, config, catalog, project, jobs, cache)
     for outcome in checks:
@@ -370,7 +370,7 @@ def _check_paths(
         _merge(result, other)
     if groups:
         result.checked = [str(file) for file in everything]
-    _LAUNCH_PARSES = None
+    _READS_LAUNCHES = False
     _IMPORTS.clear()
     result.diagnostics = finish(result.diagnostics)
     if cache is not None:
@@ -574,14 +574,9 @@ def _launches(
     from robotfix.launchcheck import LaunchRun
 
     faults: list[ParamFault] = []
-    parses = {  # what this process's checks parsed: not parsed again
-        name: (source.text, source.tree)
-        for name, source in (_LAUNCH_PARSES or {}).items()
-        if source is not None and source.tree is not None
-    }
     code = [*files, *found.summary_files]
     kept = _KeptReads(cache) if cache is not None else None
-    run = LaunchRun(found.launch_files, code, faults, parses, _IMPORTS, kept)
+    run = LaunchRun(found.launch_files, code, faults, _IMPORTS, kept)
     return run, faults
 
 
@@ -1157,10 +1152,8 @@ def _check_one(
         ignored = config.ignored_codes(path)
         stubs = stub_set(config.stub_paths)
         parsed = project.take(path, data)  # parsed once, for a summary, if imported
-        if _LAUNCH_PARSES is not None:  # a run with launch files
+        if _READS_LAUNCHES:  # its import statements are kept (`_keep_imports`)
             parsed = parsed or SourceFile.from_bytes(str(path), data)
-            if str(path) in _LAUNCH_PARSES:
-                _LAUNCH_PARSES[str(path)] = parsed
         parameters = None
         mentions = tuple(w for w in project.parameter_words if w in data)
         if mentions:
@@ -1180,7 +1173,7 @@ def _check_one(
             parsed = SourceFile.from_bytes(str(path), data)
         found = check_file(str(path), data, catalog, ignored, stubs, resolver, parsed)
         graph = _graph_of(parsed) if endpoints and parsed is not None else None
-        if _LAUNCH_PARSES is not None and parsed is not None:
+        if _READS_LAUNCHES and parsed is not None:
             _keep_imports(str(path), parsed)
         types = sorted(catalog.touched)
         catalog.touched = None
@@ -1226,22 +1219,26 @@ def _graph_of(parsed: Any) -> list[Any] | None:
 
 
 def _keep_imports(path: str, parsed: SourceFile) -> None:
-    """The import statements the check's index found (none kept when the check
-    built no index: the launch reading parses the file if it needs them)."""
+    """The import statements the check's index found, as plain data (none kept
+    when the check built no index: the launch reading parses the file if it
+    needs them). Nothing of the tree is kept: it goes with the check."""
     from robotfix.analysis.index import built
+    from robotfix.launchcheck import import_lines
 
     index = built(parsed.tree) if parsed.tree is not None else None
     if index is not None:
         text = parsed.text
-        _IMPORTS[path] = (len(text), hash(text), index.import_statements)
+        lines = import_lines(index.import_statements)
+        _IMPORTS[path] = (len(text), hash(text), lines)
 
 
 # (catalog, config, project, lean): `lean`, the run keeps no cache (`_lean`)
 _WORKER: tuple[MsgCatalog, Config, Project, bool] | None = None
-# the run's launch files -> the parse this process's check made of each Python one,
-# and every checked file's import statements (`launchcheck.Imports`), which their
-# reading (`launchcheck.LaunchRun`) then uses: no file is parsed twice
-_LAUNCH_PARSES: dict[str, SourceFile | None] | None = None
+# a run with launch files: every checked file's import statements
+# (`launchcheck.Imports`, plain data), which their reading (`launchcheck.LaunchRun`)
+# then uses, so a node's code is not parsed again for them; the launch files'
+# trees are not kept (their reading parses them, one at a time)
+_READS_LAUNCHES = False
 _IMPORTS: Imports = {}
 
 

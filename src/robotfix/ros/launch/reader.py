@@ -1,8 +1,12 @@
 """Read launch files, following the includes of files in the checked tree.
 
-A `Reader` parses each file once (its tree kept for the run) and evaluates it
-once per set of arguments: an included file is read again only when it is given
-other arguments. `touched` is every file it read, for the run's cache key.
+A `Reader` evaluates each file once per set of arguments: an included file is
+read again only when it is given other arguments. A file's parse is kept until
+the caller `release`s the parses (after each launch file it reads), but those of
+files an include read, which may be read again with other arguments (a file
+included once released is parsed again); `done` drops them all. So the run's
+launch files' trees are not all held at once. `touched` is every file it read,
+for the run's cache key.
 """
 
 from __future__ import annotations
@@ -35,15 +39,8 @@ Parsed = tuple[ast.Module, str] | Element | LaunchFile  # LaunchFile: not read
 
 
 class Reader:
-    def __init__(
-        self,
-        packages: Callable[[str], Path | None],
-        parses: dict[str, tuple[str, ast.Module]] | None = None,
-    ) -> None:
-        """`parses`: Python files already parsed in this run, by path: (text, tree);
-        a file whose text is still that is not parsed again."""
+    def __init__(self, packages: Callable[[str], Path | None]) -> None:
         self.packages = packages
-        self.parses = parses or {}
         # each file's parse and each reading's result, with what it read
         # (`fs.remembered`: a cached launch file's trace holds what its includes read)
         self.parsed: dict[str, tuple[Parsed, Noted]] = {}
@@ -56,6 +53,7 @@ class Reader:
         # reads then depends on the order files are read in (not kept apart)
         self.order_dependent = False
         self.texts: dict[str, str] = {}  # each file's text, for suppressions
+        self.included: set[str] = set()  # files an include read: parses kept
 
     def read(
         self,
@@ -87,7 +85,7 @@ class Reader:
             return self.read(included, passed, (*chain, key))
 
         ctx = Context(path, self.packages, dict(args or {}), len(chain), follow)
-        parsed = self.parse(path)
+        parsed = self.parse(path, chain)
         if isinstance(parsed, LaunchFile):
             found = parsed
         elif isinstance(parsed, Element):
@@ -96,13 +94,27 @@ class Reader:
             found = read_python(parsed[0], parsed[1], ctx)
         return found
 
-    def parse(self, path: Path) -> Parsed:
+    def release(self) -> None:
+        """Drop the parses (trees, XML elements) kept for the readings to come,
+        but those of files another includes (read again with other arguments)."""
+        included = self.included
+        for key in [k for k in self.parsed if k not in included]:
+            del self.parsed[key]
+
+    def done(self) -> None:
+        """Nothing more is read: the readings' memo goes too (`touched`,
+        `texts` and `order_dependent` stay)."""
+        self.included = set()
+        self.release()
+        self.results.clear()
+
+    def parse(self, path: Path, chain: tuple[str, ...] = ()) -> Parsed:
         key = str(path)
         self.touched.add(key)
         self.reading.add(key)
-        parsed: Parsed = remembered(
-            self.parsed, key, lambda: _parse(path, self.texts, self.parses.get(key))
-        )
+        if chain:
+            self.included.add(key)
+        parsed: Parsed = remembered(self.parsed, key, lambda: _parse(path, self.texts))
         return parsed
 
 
@@ -117,9 +129,7 @@ def _copy(found: LaunchFile) -> LaunchFile:
     return fresh
 
 
-def _parse(
-    path: Path, texts: dict[str, str], parsed: tuple[str, ast.Module] | None = None
-) -> Parsed:
+def _parse(path: Path, texts: dict[str, str]) -> Parsed:
     key = str(path)
     try:
         text = read_text(path, MAX_LAUNCH_BYTES)
@@ -130,8 +140,6 @@ def _parse(
     if name.endswith(".launch") and not text.lstrip("\ufeff \t\r\n").startswith("<"):
         name += ".py"  # nav2's test_case_py.launch is Python
     if name.endswith(".py"):
-        if parsed is not None and parsed[0] == text:
-            return parsed[1], text
         try:
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")  # SyntaxWarning: not ours to show
