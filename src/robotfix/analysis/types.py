@@ -156,6 +156,7 @@ class TypeModel:
         self._busy: set[object] = set()  # questions being answered (recursion)
         self._families: dict[str, list[str]] = {}
         self._library_bases: dict[str, list[stubs.Class]] = {}
+        self._walrus: bool | None = None  # the file's text holds `:=` (asked once)
 
     @property
     def program(self) -> ProgramView:
@@ -726,8 +727,9 @@ class TypeModel:
     def _bindings(self, function: FunctionView) -> dict[str, list[Binding]]:
         found = self._locals.get(id(function.node))
         if found is None:
-            walrus = ":=" in self.ctx.source.text
-            found = local_bindings(function.node, walrus)
+            if self._walrus is None:
+                self._walrus = ":=" in self.ctx.source.text
+            found = local_bindings(function.node, self._walrus)
             self._locals[id(function.node)] = found
         return found
 
