@@ -115,7 +115,7 @@ def run_key(config: Config) -> str:
     return hashlib.sha256("\n".join(parts).encode()).hexdigest()
 
 
-def entry_key(path: Path) -> str:
+def entry_key(path: str | os.PathLike[str]) -> str:
     """One entry per file, whatever the cwd or spelling it was named by."""
     try:
         return os.path.abspath(path)
@@ -318,7 +318,7 @@ class ResultCache:
         when it differs, or is a folder or a file no run hashed."""
         if was[3:] != now[3:]:
             return None
-        known = self._stats.get(entry_key(Path(name)))
+        known = self._stats.get(entry_key(name))
         if known is None or known[:STAMP] != was:
             return None
         record = self._stat_record(Path(name))
@@ -759,7 +759,7 @@ class ResultCache:
         of a file without an extension), at most `TRACED_BYTES` long (a rosbag
         without an extension is not read for it)."""
         for name, found in _traced_stamps(trace):
-            key = os.path.abspath(name)
+            key = entry_key(name)
             if key not in self._seen_stats:
                 known = self._stats.get(key)
                 if known is None or known[:STAMP] != found:
@@ -767,10 +767,10 @@ class ResultCache:
 
     def _traced_files(self) -> set[str]:
         """The files the kept traces stamped (`_record`)."""
-        traces = [self._discovery, self._stage]
+        traces: list[Any] = [self._discovery, self._stage]
         traces += [e for e in self._reads.values() if isinstance(e, list) and e[1:]]
         return {
-            os.path.abspath(name)
+            entry_key(name)
             for t in traces
             if t is not None
             for name, _ in _traced_stamps(t["trace"] if isinstance(t, dict) else t[1])
