@@ -16,6 +16,7 @@ import pytest
 from robotfix.analysis.skeleton import (
     TEXT_WORDS,
     comment_only,
+    lines_of,
     numbers_only,
     same_skeleton,
     skeleton,
@@ -810,3 +811,24 @@ def test_the_region_an_edit_changed_is_found_by_halves() -> None:
             else:
                 y[min(at, len(y) - 1)] = rng.choice("ab\n#")
         assert _region(x, "".join(y)) == walked(x, "".join(y))
+
+
+@pytest.mark.parametrize("breaks", ["\x0c", "\x1c", "\u2028"])
+def test_a_line_break_only_str_splitlines_sees_leaves_lines_alike(breaks: str) -> None:
+    """`same_skeleton` counts lines as ast does: a comment holding a form feed
+    (or another break `str.splitlines` makes but ast does not) before the edit
+    must not shift it onto the line below, where a blanked number sits in the
+    same columns (the call's `10` is kept: the skeleton changed)."""
+    text = (
+        "class A:\n"
+        "    def f(self):\n"
+        f"        # page{breaks} break\n"
+        "        foo(10)\n"
+        "        y = 20\n"
+    )
+    edited = text.replace("foo(10)", "foo(11)")
+    tree = ast.parse(edited)
+    changed = skeleton(tree, lines_of(edited)) != skeleton(
+        ast.parse(text), lines_of(text)
+    )
+    assert changed and same_skeleton(tree, text, edited) is not True

@@ -105,6 +105,7 @@ from typing import TYPE_CHECKING, Any
 from robotfix.analysis.context import Scope
 from robotfix.analysis.skeleton import (
     comment_only,
+    lines_of,
     numbers_only,
     same_skeleton,
     skeleton,
@@ -203,7 +204,7 @@ class UnitMemo:
         if same is False:
             self._last = ""
             return None
-        lines = text.splitlines(keepends=True)
+        lines = lines_of(text)  # as ast numbers them
         if same and self._last:
             base = self._last
         else:
