@@ -122,7 +122,7 @@ def _between(block: list[ast.stmt], line: int) -> bool:
     """Whether `line` lies in `block` between statements, or inside a compound one
     between its parts (`_in_compound`)."""
     for statement in block:
-        if line < _first(statement):
+        if line < first_place(statement)[0]:
             return True
         if line <= _last(statement):
             return _in_compound(statement, line)
@@ -145,10 +145,10 @@ def _in_compound(node: ast.stmt | ast.excepthandler, line: int) -> bool:
         if id(child) not in inner and any(_spans(p, line) for p in walk(child)):
             return False
     for handler in handlers:
-        if _first(handler) <= line <= _last(handler):
+        if first_place(handler)[0] <= line <= _last(handler):
             return _in_compound(handler, line)
     for block in blocks:
-        if _first(block[0]) <= line <= _last(block[-1]):
+        if first_place(block[0])[0] <= line <= _last(block[-1]):
             return _between(block, line)
     return True
 
@@ -158,9 +158,12 @@ def _spans(node: ast.AST, line: int) -> bool:
     return first is not None and first <= line <= (node.end_lineno or first)  # type: ignore[attr-defined]
 
 
-def _first(node: ast.stmt | ast.excepthandler) -> int:
+def first_place(node: ast.stmt | ast.excepthandler) -> tuple[int, int]:
+    """Where a statement starts: at its first decorator's line, if any."""
     decorators: list[ast.expr] = getattr(node, "decorator_list", [])
-    return min([node.lineno, *(d.lineno for d in decorators)])
+    if decorators:
+        return (min(d.lineno for d in decorators), 0)
+    return (node.lineno, node.col_offset)
 
 
 def _last(node: ast.stmt | ast.excepthandler) -> int:

@@ -105,6 +105,7 @@ from typing import TYPE_CHECKING, Any
 from robotfix.analysis.context import Scope
 from robotfix.analysis.skeleton import (
     comment_only,
+    first_place,
     lines_of,
     numbers_only,
     same_skeleton,
@@ -265,7 +266,7 @@ class Check:
         self.starts: list[tuple[int, int]] = []
         self.roots: list[ast.stmt] = []
         for statement in tree.body:
-            self.starts.append(_first_line(statement))
+            self.starts.append(first_place(statement))
             self.roots.append(statement)
         self._root_text: dict[int, str] = {}
         # a top-level class's methods, each an item's unit (`_unit`)
@@ -288,7 +289,7 @@ class Check:
         return index if where <= end else None
 
     def _text(self, statement: ast.stmt) -> str:
-        first = _first_line(statement)[0]
+        first = first_place(statement)[0]
         text = "".join(self.lines[first - 1 : statement.end_lineno])
         return f"{first}\0{text}"
 
@@ -306,7 +307,7 @@ class Check:
                 for s in root.body
                 if isinstance(s, (ast.FunctionDef, ast.AsyncFunctionDef))
             ]
-            methods = ([_first_line(s) for s in chosen], chosen)
+            methods = ([first_place(s) for s in chosen], chosen)
             self._methods[index] = methods
         where = (getattr(node, "lineno", 0), getattr(node, "col_offset", 0))
         at = bisect.bisect_right(methods[0], where) - 1
@@ -344,7 +345,7 @@ class Check:
         skeleton; their blanked numbers and comments only their own items read),
         so that an edit in one method leaves the class body, and the keys of the
         methods after it (`_writers`), alike."""
-        first = _first_line(root)[0]
+        first = first_place(root)[0]
         skipped: set[int] = set()
         for statement in root.body:
             if isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef)):
@@ -706,14 +707,6 @@ def _count(counter: itertools.count[int]) -> int:
     shown = repr(counter)  # `count(-n, -1)`
     found = shown[6 : shown.find(",")] if shown.startswith("count(") else ""
     return -int(found) if found.lstrip("-").isdigit() else 0
-
-
-def _first_line(statement: ast.stmt) -> tuple[int, int]:
-    decorators = getattr(statement, "decorator_list", [])
-    if decorators:
-        first = min(d.lineno for d in decorators)
-        return (first, 0)
-    return (statement.lineno, statement.col_offset)
 
 
 def _locator(node: ast.AST) -> tuple[object, ...]:
