@@ -516,13 +516,18 @@ def test_an_unchanged_skeleton_is_told_from_the_number_edited(path: Path) -> Non
     if not _parses(text):
         return
     before = skeleton(ast.parse(text), text.splitlines(keepends=True))
+    edits = decided = 0
     for edited in _number_edits(text):
+        edits += 1
         tree = ast.parse(edited)
         same = same_skeleton(tree, text, edited)
         if same is None:
             continue
+        decided += 1
         after = skeleton(tree, edited.splitlines(keepends=True))
         assert same == (after == before), edited
+    # None ("cannot be told") for every edit would pass the loop above unchecked
+    assert decided or not edits
 
 
 def test_what_an_earlier_method_wrote_is_in_a_method_key(tmp_path: Path) -> None:
