@@ -458,15 +458,12 @@ def _clean_then_edited(
     tmp_path: Path, text: str, edited: str, folder: Path
 ) -> list[object]:
     """`text` checked twice with one memo (clean, and recorded), then `edited`
-    with it: its diagnostics, which must be a fresh check's."""
+    with it: its diagnostics, which must be a fresh check's (`_replayed`)."""
     catalog = catalog_for(folder)
-    path = tmp_path / "node.py"
-    memo = ProofMemo()
-    for _ in range(2):
-        assert not check_source(text, str(path), Config(), catalog, memo=memo)
-    found = check_source(edited, str(path), Config(), catalog, memo=memo)
-    assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
-    return found  # type: ignore[return-value]
+    path = str(tmp_path / "node.py")
+    assert not check_source(text, path, Config(), catalog)
+    _replayed(tmp_path, text, edited, catalog=catalog)
+    return check_source(edited, path, Config(), catalog)  # type: ignore[return-value]
 
 
 @pytest.mark.parametrize("where", sorted(SIBLING_READ))
@@ -636,22 +633,28 @@ def test_every_word_the_analysis_reads_in_the_text_is_a_text_word() -> None:
     assert found and found <= set(TEXT_WORDS)
 
 
-def _replayed(tmp_path: Path, text: str, *edits: str) -> int:
+def _replayed(
+    tmp_path: Path, text: str, *edits: str, catalog: object = None
+) -> int:
     """Items replayed over `edits`, each checked after `text` was checked twice
-    with one memo (recorded), and each a fresh check's output."""
+    with one memo (recorded), every check a fresh check's output."""
     from robotfix.ros.catalog import MsgCatalog
 
-    catalog = MsgCatalog([])
-    path = tmp_path / "node.py"
+    catalog = MsgCatalog([]) if catalog is None else catalog
+    path = str(tmp_path / "node.py")
     memo = ProofMemo()
+
+    def alike(source: str) -> None:
+        found = check_source(source, path, Config(), catalog, memo=memo)  # type: ignore[arg-type]
+        assert repr(found) == repr(check_source(source, path, Config(), catalog))  # type: ignore[arg-type]
+
     for _ in range(2):
-        check_source(text, str(path), Config(), catalog, memo=memo)
+        alike(text)
     units = memo.units
     assert isinstance(units, UnitMemo)
     before = units.hits
     for edited in edits:
-        found = check_source(edited, str(path), Config(), catalog, memo=memo)
-        assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
+        alike(edited)
     return units.hits - before
 
 
@@ -755,15 +758,10 @@ def test_a_signature_that_reports_is_not_built_on_a_replay(tmp_path: Path) -> No
 
     catalog = MsgCatalog([])
     text = _callers_of_later_helpers("v: Annotated[float, \"Unit('parsec/')\"]")
-    path = tmp_path / "node.py"
-    memo = ProofMemo()
-    for _ in range(2):
-        check_source(text, str(path), Config(), catalog, memo=memo)
-    for gain in ("1.7", "1.9"):
-        edited = text.replace("gain = 1.5", f"gain = {gain}")
-        found = check_source(edited, str(path), Config(), catalog, memo=memo)
-        assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
-        assert found
+    edits = [text.replace("gain = 1.5", f"gain = {gain}") for gain in ("1.7", "1.9")]
+    _replayed(tmp_path, text, *edits)  # the memo's output is a fresh check's
+    for edited in edits:
+        assert check_source(edited, str(tmp_path / "node.py"), Config(), catalog)
 
 
 def test_a_replay_spends_the_work_a_fresh_check_spends() -> None:
