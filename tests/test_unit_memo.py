@@ -835,3 +835,22 @@ def test_a_line_break_only_str_splitlines_sees_leaves_lines_alike(breaks: str) -
         ast.parse(text), lines_of(text)
     )
     assert changed and same_skeleton(tree, text, edited) is not True
+
+
+def test_an_item_keyed_by_its_whole_class_holds_the_methods_bodies() -> None:
+    """A class body's item is keyed by its class without its methods' bodies
+    (`_class_text`); an item keyed by the whole class (a method once an item
+    outside every statement ran: `_whole`) holds them, whichever was keyed
+    first (a blanked number edited in `f` must change `f`'s key)."""
+    from types import SimpleNamespace
+
+    from robotfix.analysis.unitmemo import Check
+
+    text = "class A:\n    X = 1\n\n    def f(self):\n        y = 1.5\n"
+    tree = ast.parse(text)
+    ctx = SimpleNamespace(_next=0, resolver=None)
+    check = Check(UnitMemo(), ctx, None, tree, {}, lines_of(text), "")  # type: ignore[arg-type]
+    body, method = tree.body[0], tree.body[0].body[1]  # type: ignore[attr-defined]
+    assert "y = 1.5" not in str(check._key(body, 0)[1])
+    check._whole = True
+    assert "y = 1.5" in str(check._key(method, 0)[1])

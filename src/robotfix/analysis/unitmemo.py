@@ -268,7 +268,7 @@ class Check:
         for statement in tree.body:
             self.starts.append(first_place(statement))
             self.roots.append(statement)
-        self._root_text: dict[int, str] = {}
+        self._root_text: dict[tuple[int, bool], str] = {}  # (index, class body)
         # a top-level class's methods, each an item's unit (`_unit`)
         self._methods: dict[int, tuple[list[tuple[int, int]], list[ast.stmt]]] = {}
         self._unit_text: dict[int, str] = {}
@@ -329,14 +329,12 @@ class Check:
                 text = self._unit_text[id(unit)] = self._text(unit)
             writers = self._writers.get(index, ())
             return (self.base, text, _locator(node), _resolver_state(self.ctx), writers)
-        text = self._root_text.get(index)
+        root = self.roots[index]
+        body = node is root and isinstance(root, ast.ClassDef)  # its own text
+        text = self._root_text.get((index, body))
         if text is None:
-            root = self.roots[index]
-            if node is root and isinstance(root, ast.ClassDef):
-                text = self._class_text(root)
-            else:
-                text = self._text(root)
-            self._root_text[index] = text
+            text = self._class_text(root) if body else self._text(root)  # type: ignore[arg-type]
+            self._root_text[(index, body)] = text
         return (self.base, text, _locator(node), _resolver_state(self.ctx))
 
     def _class_text(self, root: ast.ClassDef) -> str:
