@@ -136,9 +136,9 @@ class Record:
     questions: int
     spawned: tuple[tuple[tuple[object, ...], bool], ...]  # locator, own scope
     walked: bool  # some once key names a node (by walk index)
-    consulted: tuple[tuple[str, object], ...] = ()  # what imports it resolved
-    reads: tuple[tuple[tuple[object, ...], object], ...] = ()  # of the type model
-    signed: tuple[str, ...] = ()  # signatures it built, built again on a replay
+    consulted: tuple[tuple[str, object], ...]  # what imports it resolved
+    reads: tuple[tuple[tuple[object, ...], object], ...]  # of the type model
+    signed: tuple[str, ...]  # signatures it built, built again on a replay
 
 
 class UnitMemo:
