@@ -330,7 +330,9 @@ class Check:
             writers = self._writers.get(index, ())
             return (self.base, text, _locator(node), _resolver_state(self.ctx), writers)
         root = self.roots[index]
-        body = node is root and isinstance(root, ast.ClassDef)  # its own text
+        # the class body, and an item of it outside its methods, by the class's
+        # text but its methods' bodies; a method (`_whole`) by the whole text
+        body = isinstance(root, ast.ClassDef) and (node is root or not self._whole)
         text = self._root_text.get((index, body))
         if text is None:
             text = self._class_text(root) if body else self._text(root)  # type: ignore[arg-type]
