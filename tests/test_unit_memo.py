@@ -16,6 +16,7 @@ import pytest
 from robotfix.analysis.skeleton import (
     TEXT_WORDS,
     comment_only,
+    lines_of,
     numbers_only,
     same_skeleton,
     skeleton,
@@ -457,15 +458,12 @@ def _clean_then_edited(
     tmp_path: Path, text: str, edited: str, folder: Path
 ) -> list[object]:
     """`text` checked twice with one memo (clean, and recorded), then `edited`
-    with it: its diagnostics, which must be a fresh check's."""
+    with it: its diagnostics, which must be a fresh check's (`_replayed`)."""
     catalog = catalog_for(folder)
-    path = tmp_path / "node.py"
-    memo = ProofMemo()
-    for _ in range(2):
-        assert not check_source(text, str(path), Config(), catalog, memo=memo)
-    found = check_source(edited, str(path), Config(), catalog, memo=memo)
-    assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
-    return found  # type: ignore[return-value]
+    path = str(tmp_path / "node.py")
+    assert not check_source(text, path, Config(), catalog)
+    _replayed(tmp_path, text, edited, catalog=catalog)
+    return check_source(edited, path, Config(), catalog)  # type: ignore[return-value]
 
 
 @pytest.mark.parametrize("where", sorted(SIBLING_READ))
@@ -515,13 +513,18 @@ def test_an_unchanged_skeleton_is_told_from_the_number_edited(path: Path) -> Non
     if not _parses(text):
         return
     before = skeleton(ast.parse(text), text.splitlines(keepends=True))
+    edits = decided = 0
     for edited in _number_edits(text):
+        edits += 1
         tree = ast.parse(edited)
         same = same_skeleton(tree, text, edited)
         if same is None:
             continue
+        decided += 1
         after = skeleton(tree, edited.splitlines(keepends=True))
         assert same == (after == before), edited
+    # None ("cannot be told") for every edit would pass the loop above unchecked
+    assert decided or not edits
 
 
 def test_what_an_earlier_method_wrote_is_in_a_method_key(tmp_path: Path) -> None:
@@ -630,22 +633,28 @@ def test_every_word_the_analysis_reads_in_the_text_is_a_text_word() -> None:
     assert found and found <= set(TEXT_WORDS)
 
 
-def _replayed(tmp_path: Path, text: str, *edits: str) -> int:
+def _replayed(
+    tmp_path: Path, text: str, *edits: str, catalog: object = None
+) -> int:
     """Items replayed over `edits`, each checked after `text` was checked twice
-    with one memo (recorded), and each a fresh check's output."""
+    with one memo (recorded), every check a fresh check's output."""
     from robotfix.ros.catalog import MsgCatalog
 
-    catalog = MsgCatalog([])
-    path = tmp_path / "node.py"
+    catalog = MsgCatalog([]) if catalog is None else catalog
+    path = str(tmp_path / "node.py")
     memo = ProofMemo()
+
+    def alike(source: str) -> None:
+        found = check_source(source, path, Config(), catalog, memo=memo)  # type: ignore[arg-type]
+        assert repr(found) == repr(check_source(source, path, Config(), catalog))  # type: ignore[arg-type]
+
     for _ in range(2):
-        check_source(text, str(path), Config(), catalog, memo=memo)
+        alike(text)
     units = memo.units
     assert isinstance(units, UnitMemo)
     before = units.hits
     for edited in edits:
-        found = check_source(edited, str(path), Config(), catalog, memo=memo)
-        assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
+        alike(edited)
     return units.hits - before
 
 
@@ -749,15 +758,10 @@ def test_a_signature_that_reports_is_not_built_on_a_replay(tmp_path: Path) -> No
 
     catalog = MsgCatalog([])
     text = _callers_of_later_helpers("v: Annotated[float, \"Unit('parsec/')\"]")
-    path = tmp_path / "node.py"
-    memo = ProofMemo()
-    for _ in range(2):
-        check_source(text, str(path), Config(), catalog, memo=memo)
-    for gain in ("1.7", "1.9"):
-        edited = text.replace("gain = 1.5", f"gain = {gain}")
-        found = check_source(edited, str(path), Config(), catalog, memo=memo)
-        assert repr(found) == repr(check_source(edited, str(path), Config(), catalog))
-        assert found
+    edits = [text.replace("gain = 1.5", f"gain = {gain}") for gain in ("1.7", "1.9")]
+    _replayed(tmp_path, text, *edits)  # the memo's output is a fresh check's
+    for edited in edits:
+        assert check_source(edited, str(tmp_path / "node.py"), Config(), catalog)
 
 
 def test_a_replay_spends_the_work_a_fresh_check_spends() -> None:
@@ -810,3 +814,43 @@ def test_the_region_an_edit_changed_is_found_by_halves() -> None:
             else:
                 y[min(at, len(y) - 1)] = rng.choice("ab\n#")
         assert _region(x, "".join(y)) == walked(x, "".join(y))
+
+
+@pytest.mark.parametrize("breaks", ["\x0c", "\x1c", "\u2028"])
+def test_a_line_break_only_str_splitlines_sees_leaves_lines_alike(breaks: str) -> None:
+    """`same_skeleton` counts lines as ast does: a comment holding a form feed
+    (or another break `str.splitlines` makes but ast does not) before the edit
+    must not shift it onto the line below, where a blanked number sits in the
+    same columns (the call's `10` is kept: the skeleton changed)."""
+    text = (
+        "class A:\n"
+        "    def f(self):\n"
+        f"        # page{breaks} break\n"
+        "        foo(10)\n"
+        "        y = 20\n"
+    )
+    edited = text.replace("foo(10)", "foo(11)")
+    tree = ast.parse(edited)
+    changed = skeleton(tree, lines_of(edited)) != skeleton(
+        ast.parse(text), lines_of(text)
+    )
+    assert changed and same_skeleton(tree, text, edited) is not True
+
+
+def test_an_item_keyed_by_its_whole_class_holds_the_methods_bodies() -> None:
+    """A class body's item is keyed by its class without its methods' bodies
+    (`_class_text`); an item keyed by the whole class (a method once an item
+    outside every statement ran: `_whole`) holds them, whichever was keyed
+    first (a blanked number edited in `f` must change `f`'s key)."""
+    from types import SimpleNamespace
+
+    from robotfix.analysis.unitmemo import Check
+
+    text = "class A:\n    X = 1\n\n    def f(self):\n        y = 1.5\n"
+    tree = ast.parse(text)
+    ctx = SimpleNamespace(_next=0, resolver=None)
+    check = Check(UnitMemo(), ctx, None, tree, {}, lines_of(text), "")  # type: ignore[arg-type]
+    body, method = tree.body[0], tree.body[0].body[1]  # type: ignore[attr-defined]
+    assert "y = 1.5" not in str(check._key(body, 0)[1])
+    check._whole = True
+    assert "y = 1.5" in str(check._key(method, 0)[1])

@@ -8,6 +8,7 @@ it, told from the text.
 from __future__ import annotations
 
 import ast
+import re
 from collections.abc import Sequence
 
 from robotfix.analysis import inline
@@ -17,17 +18,22 @@ from robotfix.astwalk import walk
 # the characters of most numbers' literals (`1_000`, `2.5e-3`, `3j`; an edit of a
 # hex literal is taken for one of code: only slower)
 _NUMBER_CHARS = frozenset("0123456789_.eE+-jJ")
+# what `str.splitlines` takes for a line break and ast does not (ast: `\n`, `\r\n`
+# and a lone `\r`, as `source.LINE_BREAK`)
+_OTHER_BREAKS = "\x0b\x0c\x1c\x1d\x1e\x85\u2028\u2029"
+_AST_BREAK = re.compile(r"(?<=\n)|(?<=\r)(?!\n)")
 
 
-def _same_ends(a: Sequence[object], b: Sequence[object]) -> tuple[int, int]:
-    """How many items two sequences share at their start, and then at their end."""
-    first, shortest = 0, min(len(a), len(b))
-    while first < shortest and a[first] == b[first]:
-        first += 1
-    last = 0
-    while last < shortest - first and a[-1 - last] == b[-1 - last]:
-        last += 1
-    return first, last
+def lines_of(text: str) -> list[str]:
+    """`text`'s lines with their ends, as ast numbers them (a form feed in a
+    comment is no line break): `str.splitlines` when the text holds none of
+    the breaks only it sees (a scan of microseconds), else split on ast's."""
+    if not any(c in text for c in _OTHER_BREAKS):
+        return text.splitlines(keepends=True)
+    lines = _AST_BREAK.split(text)
+    if lines and not lines[-1]:
+        lines.pop()
+    return lines
 
 
 def _common(a: str, b: str, bound: int, from_end: bool) -> int:
@@ -86,7 +92,7 @@ def comment_only(tree: ast.Module, before: str, after: str) -> bool:
     method's, a class's, which key their items) and the skeleton, which then
     counts as unchanged. Not told in a text with a line that ends at a lone
     `\r` (ast counts it as a line break)."""
-    if any("\r" in t and t.count("\r") != t.count("\r\n") for t in (before, after)):
+    if _lone_cr(before) or _lone_cr(after):
         return False
     start, end, new_end = _region(before, after)
     changed = (before[start:end], after[start:new_end])
@@ -102,11 +108,21 @@ def comment_only(tree: ast.Module, before: str, after: str) -> bool:
     return _between(tree.body, before.count("\n", 0, start) + 1)
 
 
+def _lone_cr(text: str) -> bool:
+    """Whether a line of `text` ends at a lone `\r` (a break ast counts)."""
+    return "\r" in text and text.count("\r") != text.count("\r\n")
+
+
+def _line_end(text: str, at: int) -> int:
+    found = text.find("\n", at)
+    return len(text) if found < 0 else found
+
+
 def _between(block: list[ast.stmt], line: int) -> bool:
     """Whether `line` lies in `block` between statements, or inside a compound one
     between its parts (`_in_compound`)."""
     for statement in block:
-        if line < _first(statement):
+        if line < first_place(statement)[0]:
             return True
         if line <= _last(statement):
             return _in_compound(statement, line)
@@ -129,10 +145,10 @@ def _in_compound(node: ast.stmt | ast.excepthandler, line: int) -> bool:
         if id(child) not in inner and any(_spans(p, line) for p in walk(child)):
             return False
     for handler in handlers:
-        if _first(handler) <= line <= _last(handler):
+        if first_place(handler)[0] <= line <= _last(handler):
             return _in_compound(handler, line)
     for block in blocks:
-        if _first(block[0]) <= line <= _last(block[-1]):
+        if first_place(block[0])[0] <= line <= _last(block[-1]):
             return _between(block, line)
     return True
 
@@ -142,9 +158,12 @@ def _spans(node: ast.AST, line: int) -> bool:
     return first is not None and first <= line <= (node.end_lineno or first)  # type: ignore[attr-defined]
 
 
-def _first(node: ast.stmt | ast.excepthandler) -> int:
+def first_place(node: ast.stmt | ast.excepthandler) -> tuple[int, int]:
+    """Where a statement starts: at its first decorator's line, if any."""
     decorators: list[ast.expr] = getattr(node, "decorator_list", [])
-    return min([node.lineno, *(d.lineno for d in decorators)])
+    if decorators:
+        return (min(d.lineno for d in decorators), 0)
+    return (node.lineno, node.col_offset)
 
 
 def _last(node: ast.stmt | ast.excepthandler) -> int:
@@ -226,15 +245,19 @@ def same_skeleton(tree: ast.Module, before: str, after: str) -> bool | None:
     was, told without making it: True when it changed one number the skeleton
     blanks (and its length, or nothing but a comment follows it), False when
     the number it changed is kept, None when that cannot be told this way."""
-    old, new = before.splitlines(keepends=True), after.splitlines(keepends=True)
-    first, last = _same_ends(old, new)
-    if len(old) - first - last != 1 or len(new) - first - last != 1:
+    if _lone_cr(before) or _lone_cr(after):
+        return None  # lines are counted by `\n` here
+    start, stop, new_stop = _region(before, after)
+    changed = (before[start:stop], after[start:new_stop])
+    if changed == ("", "") or any("\n" in c for c in changed):
         return None
-    a, b = old[first], new[first]
-    start, tail = _same_ends(a, b)
-    begin, end = len(b[:start].encode()), len(b[: len(b) - tail].encode())
+    first = before.rfind("\n", 0, start) + 1  # the line's start, in both texts
+    a = before[first : _line_end(before, stop)]
+    b = after[first : _line_end(after, new_stop)]
+    begin = len(after[first:start].encode())
+    end = len(after[first:new_stop].encode())
     path: list[ast.AST] = [tree]
-    line = first + 1
+    line = before.count("\n", 0, start) + 1
     while True:  # down to the node holding the change
         for child in ast.iter_child_nodes(path[-1]):
             if not hasattr(child, "end_lineno"):

@@ -105,6 +105,8 @@ from typing import TYPE_CHECKING, Any
 from robotfix.analysis.context import Scope
 from robotfix.analysis.skeleton import (
     comment_only,
+    first_place,
+    lines_of,
     numbers_only,
     same_skeleton,
     skeleton,
@@ -134,9 +136,9 @@ class Record:
     questions: int
     spawned: tuple[tuple[tuple[object, ...], bool], ...]  # locator, own scope
     walked: bool  # some once key names a node (by walk index)
-    consulted: tuple[tuple[str, object], ...] = ()  # what imports it resolved
-    reads: tuple[tuple[tuple[object, ...], object], ...] = ()  # of the type model
-    signed: tuple[str, ...] = ()  # signatures it built, built again on a replay
+    consulted: tuple[tuple[str, object], ...]  # what imports it resolved
+    reads: tuple[tuple[tuple[object, ...], object], ...]  # of the type model
+    signed: tuple[str, ...]  # signatures it built, built again on a replay
 
 
 class UnitMemo:
@@ -203,7 +205,7 @@ class UnitMemo:
         if same is False:
             self._last = ""
             return None
-        lines = text.splitlines(keepends=True)
+        lines = lines_of(text)  # as ast numbers them
         if same and self._last:
             base = self._last
         else:
@@ -264,9 +266,9 @@ class Check:
         self.starts: list[tuple[int, int]] = []
         self.roots: list[ast.stmt] = []
         for statement in tree.body:
-            self.starts.append(_first_line(statement))
+            self.starts.append(first_place(statement))
             self.roots.append(statement)
-        self._root_text: dict[int, str] = {}
+        self._root_text: dict[tuple[int, bool], str] = {}  # (index, class body)
         # a top-level class's methods, each an item's unit (`_unit`)
         self._methods: dict[int, tuple[list[tuple[int, int]], list[ast.stmt]]] = {}
         self._unit_text: dict[int, str] = {}
@@ -287,7 +289,7 @@ class Check:
         return index if where <= end else None
 
     def _text(self, statement: ast.stmt) -> str:
-        first = _first_line(statement)[0]
+        first = first_place(statement)[0]
         text = "".join(self.lines[first - 1 : statement.end_lineno])
         return f"{first}\0{text}"
 
@@ -305,7 +307,7 @@ class Check:
                 for s in root.body
                 if isinstance(s, (ast.FunctionDef, ast.AsyncFunctionDef))
             ]
-            methods = ([_first_line(s) for s in chosen], chosen)
+            methods = ([first_place(s) for s in chosen], chosen)
             self._methods[index] = methods
         where = (getattr(node, "lineno", 0), getattr(node, "col_offset", 0))
         at = bisect.bisect_right(methods[0], where) - 1
@@ -327,14 +329,14 @@ class Check:
                 text = self._unit_text[id(unit)] = self._text(unit)
             writers = self._writers.get(index, ())
             return (self.base, text, _locator(node), _resolver_state(self.ctx), writers)
-        text = self._root_text.get(index)
+        root = self.roots[index]
+        # the class body, and an item of it outside its methods, by the class's
+        # text but its methods' bodies; a method (`_whole`) by the whole text
+        body = isinstance(root, ast.ClassDef) and (node is root or not self._whole)
+        text = self._root_text.get((index, body))
         if text is None:
-            root = self.roots[index]
-            if node is root and isinstance(root, ast.ClassDef):
-                text = self._class_text(root)
-            else:
-                text = self._text(root)
-            self._root_text[index] = text
+            text = self._class_text(root) if body else self._text(root)  # type: ignore[arg-type]
+            self._root_text[(index, body)] = text
         return (self.base, text, _locator(node), _resolver_state(self.ctx))
 
     def _class_text(self, root: ast.ClassDef) -> str:
@@ -343,7 +345,7 @@ class Check:
         skeleton; their blanked numbers and comments only their own items read),
         so that an edit in one method leaves the class body, and the keys of the
         methods after it (`_writers`), alike."""
-        first = _first_line(root)[0]
+        first = first_place(root)[0]
         skipped: set[int] = set()
         for statement in root.body:
             if isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef)):
@@ -705,14 +707,6 @@ def _count(counter: itertools.count[int]) -> int:
     shown = repr(counter)  # `count(-n, -1)`
     found = shown[6 : shown.find(",")] if shown.startswith("count(") else ""
     return -int(found) if found.lstrip("-").isdigit() else 0
-
-
-def _first_line(statement: ast.stmt) -> tuple[int, int]:
-    decorators = getattr(statement, "decorator_list", [])
-    if decorators:
-        first = min(d.lineno for d in decorators)
-        return (first, 0)
-    return (statement.lineno, statement.col_offset)
 
 
 def _locator(node: ast.AST) -> tuple[object, ...]:
