@@ -61,11 +61,13 @@ IMPOSSIBLE_BY_SKELETON = [
     ("b and 10 <= 0",),  # a closed comparison is a constant
     ("n == -1 or b", "not b", "n == 1"),  # one symbol, two constants
     ("x > 0", "not (x > 0)"),
+    ("x > 2", "x < 1"),  # two bounds of one symbol no number meets
+    ("n == -111 or b", "not b", "not (n <= 0)"),
 ]
 
 LEFT_TO_Z3 = [
-    ("n > 0", "n < 1"),  # impossible only by the numbers
-    ("x > 2", "x < 1"),
+    ("n > 0", "n < 1"),  # impossible only by the integers
+    ("x > y", "y > x"),  # two symbols
     ("x * x == 2",),  # possible, but not at any candidate
 ]
 
