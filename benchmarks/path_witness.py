@@ -54,8 +54,10 @@ def main(roots: list[str]) -> int:
             if question:
                 same = isinstance(alone, Proved) == isinstance(verdict, Proved)
             else:
-                same = isinstance(verdict, Proved) if isinstance(alone, Proved) else (
-                    verdict == alone
+                same = (
+                    isinstance(verdict, Proved)
+                    if isinstance(alone, Proved)
+                    else (verdict == alone)
                 )
             if not same:
                 disagree += 1
