@@ -61,11 +61,13 @@ IMPOSSIBLE_BY_SKELETON = [
     ("b and 10 <= 0",),  # a closed comparison is a constant
     ("n == -1 or b", "not b", "n == 1"),  # one symbol, two constants
     ("x > 0", "not (x > 0)"),
+    ("x > 2", "x < 1"),  # two bounds of one symbol no number meets
+    ("n == -111 or b", "not b", "not (n <= 0)"),
 ]
 
 LEFT_TO_Z3 = [
-    ("n > 0", "n < 1"),  # impossible only by the numbers
-    ("x > 2", "x < 1"),
+    ("n > 0", "n < 1"),  # impossible only by the integers
+    ("x > y", "y > x"),  # two symbols
     ("x * x == 2",),  # possible, but not at any candidate
 ]
 
@@ -92,10 +94,24 @@ def test_what_is_neither_witnessed_nor_ruled_out_goes_to_z3(
     assert api._without_solver(question(*parts)) is None
 
 
-def test_a_witness_is_only_for_questions() -> None:
-    vc = question("x > 0", "x < 1")
-    plain = VC(vc.facts, vc.goal)  # a check wants z3's counterexample
-    assert api._without_solver(plain) is None
+def test_a_check_with_witnesses_either_way_needs_no_z3() -> None:
+    """A check (not a question) is Unproven without z3 when exact values break the
+    goal and others keep it, with the counterexample z3's session shows; Violated
+    when the skeleton rules out keeping it; with probes, or a string to show, it
+    is z3's."""
+    int64 = "-9223372036854775808 <= {0} and {0} <= 9223372036854775807"
+    facts = (term(int64.format("n")), term(int64.format("y")))
+    plain = VC(facts, term("-9223372036854775808 <= n + y"))
+    assert api._without_solver(plain) == check(plain)
+    assert isinstance(check(plain), Unproven) and check(plain).sym_values
+    broken = VC((term("b"), term("x > 2")), term("x < 1"))
+    assert api._without_solver(broken) == check(broken) == Violated(())
+    half = VC((term("x > 0"),), term("x > 0.5"))
+    assert api._without_solver(half) == check(half)
+    probed = VC(facts, plain.goal, probes=(N,))
+    assert api._without_solver(probed) is None
+    text = VC((), A.Binary("==", S, A.Str("a")))
+    assert api._without_solver(text) is None
 
 
 def test_strings_compared_for_equality_have_witnesses() -> None:

@@ -41,7 +41,7 @@ def test_a_long_exact_value_is_shown_as_the_float_near_it() -> None:
     """A value the solver works out exactly (`radians(10.0)` as a rational) is shown
     as the float Python computes, marked as near, not as a 35-digit fraction; short
     fractions and floats stay as they were."""
-    from robotfix.smt.solver import _decimal
+    from robotfix.smt.shown import _decimal
 
     ten_degrees = Fraction(25152845340545565, 144115188075855872)
     assert _decimal(ten_degrees) == "about 0.17453292519943295"

@@ -130,23 +130,52 @@ def satisfiable(parts: list[A.Expr], budget: Budget | None = None) -> bool | Non
 
 
 def _exclusions(atoms: dict[object, int]) -> list[Formula]:
-    """`s == 1` and `s == -1` are not both true: one clause per such pair, so that
-    a path that sets a symbol to one constant and tests it for another is ruled out
+    """What the numbers say of two comparisons of one symbol with constants: `s == 1`
+    and `s == -1` are not both true, nor `s == -111` and `s > 0`, and `s < 0` holds
+    whenever `s < -5` does. One clause per truth values of such a pair that no real
+    number takes (true of an integer symbol too), so that a path that sets a symbol
+    to a constant, or bounds it, and tests it against another constant is ruled out
     as it is by the numbers (the only arithmetic the skeleton knows)."""
-    seen: dict[A.Sym, list[tuple[Fraction, int]]] = {}
+    seen: dict[A.Sym, list[tuple[str, Fraction, int]]] = {}
     for key, index in atoms.items():
-        if not isinstance(key, A.Binary) or key.op != "==":
+        if not isinstance(key, A.Binary) or key.op not in _BOUNDS:
             continue
-        for sym, other in ((key.left, key.right), (key.right, key.left)):
+        for sym, other, op in (
+            (key.left, key.right, key.op),
+            (key.right, key.left, _MIRRORED[key.op]),
+        ):
             value = closed_value(other)
             if isinstance(sym, A.Sym) and isinstance(value, Fraction):
-                seen.setdefault(sym, []).append((value, index))
+                seen.setdefault(sym, []).append((op, value, index))
     clauses: list[Formula] = []
     for found in seen.values():
-        for (a, i), (b, j) in itertools.combinations(found, 2):
-            if a != b:
-                clauses.append(("not", ("and", ("atom", i), ("atom", j))))
+        for (op_a, a, i), (op_b, b, j) in itertools.combinations(found, 2):
+            points = (a, b, (a + b) / 2, min(a, b) - 1, max(a, b) + 1)
+            for truth_a, truth_b in _TRUTHS:
+                if not any(
+                    _BOUNDS[op_a](x, a) is truth_a and _BOUNDS[op_b](x, b) is truth_b
+                    for x in points
+                ):
+                    clauses.append(
+                        ("not", ("and", _literal(i, truth_a), _literal(j, truth_b)))
+                    )
     return clauses
+
+
+# The comparisons an atom may be (`NEGATED` leaves no other), and the same with
+# its sides swapped. Between and beyond two constants every real number compares
+# with both as one of the five points tried does.
+_BOUNDS = {
+    "==": lambda x, c: x == c,
+    "<": lambda x, c: x < c,
+    ">": lambda x, c: x > c,
+}
+_MIRRORED = {"==": "==", "<": ">", ">": "<"}
+_TRUTHS = ((True, True), (True, False), (False, True), (False, False))
+
+
+def _literal(index: int, truth: bool) -> Formula:
+    return ("atom", index) if truth else ("not", ("atom", index))
 
 
 def components(parts: list[A.Expr], budget: Budget | None = None) -> list[list[A.Expr]]:

@@ -13,7 +13,6 @@ check, so no file can keep the solver busy for long.
 
 from __future__ import annotations
 
-import math
 import operator
 from fractions import Fraction
 from typing import Any
@@ -22,8 +21,8 @@ import z3
 
 from robotfix.annotations import ast as A
 from robotfix.annotations import witness
-from robotfix.annotations.numbers import shown_as_infinity
 from robotfix.budget import ENCODE_STEPS, RLIMIT, Z3_UNITS_PER_STEP, Budget
+from robotfix.smt import shown
 from robotfix.smt.encode import Encoder
 from robotfix.vc import (
     OUT_OF_BUDGET,
@@ -297,15 +296,10 @@ def _work_done(solver: Any) -> int:
 
 def _show(value: Any) -> str:
     if z3.is_int_value(value):
-        return _integer(value.as_string())
+        return shown.integer(value.as_string())
     if z3.is_rational_value(value):
         numerator = value.numerator().as_string()
-        denominator = value.denominator().as_string()
-        if len(numerator) + len(denominator) > SHOWN_DIGITS:
-            if len(numerator.lstrip("-")) - len(denominator) > 309:  # beyond a double
-                return "-inf" if numerator.startswith("-") else "inf"
-            return _scientific(numerator, denominator)
-        return _decimal(Fraction(int(numerator), int(denominator)))
+        return shown.rational(numerator, value.denominator().as_string())
     if z3.is_algebraic_value(value):
         return str(value.as_decimal(6)).rstrip("?")
     if z3.is_true(value) or z3.is_false(value):
@@ -313,46 +307,3 @@ def _show(value: Any) -> str:
     if z3.is_string_value(value):
         return repr(value.as_string())
     return str(value)
-
-
-SHOWN_DIGITS = 40  # longer model values are shown rounded
-
-
-def _integer(digits: str) -> str:
-    return digits if len(digits) <= SHOWN_DIGITS else _scientific(digits, "1")
-
-
-def _scientific(numerator: str, denominator: str) -> str:
-    """numerator/denominator (decimal texts, of any length) as 1.23457e+400."""
-    sign = "-" if numerator.startswith("-") else ""
-    numerator = numerator.lstrip("-")
-    if numerator == "0":
-        return "0"
-    log = (
-        math.log10(int(numerator[:17]))
-        + len(numerator[17:])
-        - math.log10(int(denominator[:17]))
-        - len(denominator[17:])
-    )
-    exponent = math.floor(log)
-    return f"{sign}{10 ** (log - exponent):.6g}e{exponent:+d}"
-
-
-def _decimal(value: Fraction) -> str:
-    infinite = shown_as_infinity(value)
-    if infinite is not None:
-        return infinite
-    if value.denominator == 1:
-        return str(value.numerator)
-    as_float = float(value)
-    if Fraction(as_float) == value or len(repr(as_float)) < 12:
-        return repr(as_float)
-    exact = f"{value.numerator}/{value.denominator}"
-    if len(exact) <= SHOWN_FRACTION:  # 1/3, 22/7: exact and readable
-        return exact
-    # e.g. radians(10.0) worked out exactly, 25152845340545565/144115188075855872:
-    # the float Python would compute, said to be near
-    return f"about {as_float!r}"
-
-
-SHOWN_FRACTION = 15  # longer exact fractions are shown as the float near them
