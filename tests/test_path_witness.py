@@ -238,6 +238,36 @@ def test_z3_agrees_with_every_answer_without_it(
         assert same_class(verdict, check(vc)), (vc, verdict)
 
 
+def _terms() -> st.SearchStrategy[A.Expr]:
+    leaves = st.one_of(
+        st.sampled_from([X, Y, N]),
+        st.integers(-2, 2).map(lambda v: A.Num(Fraction(v), True)),
+    )
+    return st.recursive(
+        leaves,
+        lambda inner: st.builds(
+            A.Binary, st.sampled_from(["+", "-", "*"]), inner, inner
+        ),
+        max_leaves=3,
+    )
+
+
+@settings(max_examples=300, deadline=None)
+@given(
+    facts=st.lists(_conditions(), max_size=3),
+    goal=_conditions(),
+    probes=st.lists(_terms(), max_size=2),
+)
+def test_z3_gives_every_check_answered_without_it(
+    facts: list[A.Expr], goal: A.Expr, probes: list[A.Expr]
+) -> None:
+    """Verdict, probes' values and counterexample: byte for byte z3's."""
+    vc = VC(tuple(facts), goal, probes=tuple(probes))
+    verdict = api._without_solver(vc)
+    if verdict is not None and not isinstance(slow := check(vc), Undecided):
+        assert verdict == slow, (vc, verdict, slow)
+
+
 # Item 7's other half: a run without the cache reads each file when it checks it.
 
 NODE = """import rclpy
