@@ -97,8 +97,8 @@ def test_what_is_neither_witnessed_nor_ruled_out_goes_to_z3(
 def test_a_check_with_witnesses_either_way_needs_no_z3() -> None:
     """A check (not a question) is Unproven without z3 when exact values break the
     goal and others keep it, with the counterexample z3's session shows; Violated
-    when the skeleton rules out keeping it; with probes, or a string to show, it
-    is z3's."""
+    when the skeleton rules out keeping it; with a probe that has no exact value
+    there, a string or a long number to show, it is z3's."""
     int64 = "-9223372036854775808 <= {0} and {0} <= 9223372036854775807"
     facts = (term(int64.format("n")), term(int64.format("y")))
     plain = VC(facts, term("-9223372036854775808 <= n + y"))
@@ -108,10 +108,19 @@ def test_a_check_with_witnesses_either_way_needs_no_z3() -> None:
     assert api._without_solver(broken) == check(broken) == Violated(())
     half = VC((term("x > 0"),), term("x > 0.5"))
     assert api._without_solver(half) == check(half)
-    probed = VC(facts, plain.goal, probes=(N,))
-    assert api._without_solver(probed) is None
+    probed = VC(facts, plain.goal, probes=(N, term("n + y"), term("x / 2")))
+    assert api._without_solver(probed) is None  # x has no value in the example
+    probed = VC(facts, plain.goal, probes=(N, term("n + y"), term("n / 3 > 1")))
+    assert api._without_solver(probed) == check(probed)
+    assert None not in check(probed).probe_values
+    speed = VC((term("x >= 0"),), term("x * 2 <= 1"), probes=(term("x * 2"),))
+    assert api._without_solver(speed) == check(speed)
     text = VC((), A.Binary("==", S, A.Str("a")))
     assert api._without_solver(text) is None
+    long = VC(
+        (), term("n < 1000000000000000000000000000000000000000000000"), probes=(N,)
+    )
+    assert api._without_solver(long) is None  # shown rounded: z3's to show
 
 
 def test_strings_compared_for_equality_have_witnesses() -> None:
@@ -227,6 +236,36 @@ def test_z3_agrees_with_every_answer_without_it(
     verdict = api._without_solver(vc)
     if verdict is not None:
         assert same_class(verdict, check(vc)), (vc, verdict)
+
+
+def _terms() -> st.SearchStrategy[A.Expr]:
+    leaves = st.one_of(
+        st.sampled_from([X, Y, N]),
+        st.integers(-2, 2).map(lambda v: A.Num(Fraction(v), True)),
+    )
+    return st.recursive(
+        leaves,
+        lambda inner: st.builds(
+            A.Binary, st.sampled_from(["+", "-", "*"]), inner, inner
+        ),
+        max_leaves=3,
+    )
+
+
+@settings(max_examples=300, deadline=None)
+@given(
+    facts=st.lists(_conditions(), max_size=3),
+    goal=_conditions(),
+    probes=st.lists(_terms(), max_size=2),
+)
+def test_z3_gives_every_check_answered_without_it(
+    facts: list[A.Expr], goal: A.Expr, probes: list[A.Expr]
+) -> None:
+    """Verdict, probes' values and counterexample: byte for byte z3's."""
+    vc = VC(tuple(facts), goal, probes=tuple(probes))
+    verdict = api._without_solver(vc)
+    if verdict is not None and not isinstance(slow := check(vc), Undecided):
+        assert verdict == slow, (vc, verdict, slow)
 
 
 # Item 7's other half: a run without the cache reads each file when it checks it.

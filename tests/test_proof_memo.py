@@ -44,6 +44,14 @@ def scaled(v: Annotated[float, "_ >= 0"], gain: float) -> Annotated[float, "_ <=
     return v * gain
 
 
+def diagonal(side: Annotated[float, "_ > 0"]) -> Annotated[float, "_ * _ != 2"]:
+    return side  # broken only at an irrational side: z3's to find
+
+
+def root_three(side: Annotated[float, "_ > 0"]) -> Annotated[float, "_ * _ != 3"]:
+    return side
+
+
 class Driver(Node):
     def __init__(self) -> None:
         super().__init__("driver")
@@ -53,6 +61,7 @@ class Driver(Node):
     def tick(self) -> None:
         cmd = Twist()
         cmd.linear.x = clamp(3.0, MAX_SPEED)
+        cmd.linear.y = diagonal(MAX_SPEED)
         steps: Annotated[int, "_ < 10"] = 10
         self.pub.publish(cmd)
 '''
@@ -114,7 +123,7 @@ def test_an_edit_in_one_function_asks_only_about_that_function(
     path = tmp_path / "driver.py"
     memo = ProofMemo()
     check(NODE, path, memo)
-    edited = NODE.replace("return v * gain", "return v * gain * 0.5")
+    edited = NODE.replace("return side  #", "return side * 1.0  #")
     before = len(z3_questions)
     kept = check(edited, path, memo)
     middle = len(z3_questions)

@@ -375,9 +375,10 @@ def test_a_spent_budget_is_one_rf901(monkeypatch: pytest.MonkeyPatch) -> None:
     # z3's first question spends the whole budget: RF901 there, and the analysis
     # stops (no RF902 after it, no report for the later questions)
     monkeypatch.setattr(solver, "_work_done", lambda _: 10 * budget.FILE_STEPS**2)
+    # (broken only at irrational values: no witness answers for z3)
     text = "".join(
-        f'def f{i}(v: float) -> None:\n    x: Annotated[float, "_ < {i}"] = v\n'
-        for i in range(3)
+        f'def f{i}(v: float) -> None:\n    x: Annotated[float, "_ * _ != {p}"] = v\n'
+        for i, p in enumerate((2, 3, 5))
     )
     found = check_source(
         f"from typing import Annotated\n{text}", "b.py", catalog=MsgCatalog([])

@@ -181,7 +181,7 @@ def _without_solver(vc: VC, budget: Budget | None = None) -> Verdict | None:
             negated = None
     if negated is True and vc.question:
         return Unproven((), ())
-    if vc.question or vc.probes:
+    if vc.question:
         return None
     return _check_without_solver(vc, budget)
 
@@ -191,10 +191,10 @@ def _check_without_solver(vc: VC, budget: Budget | None) -> Verdict | None:
     shows: the counterexample is the one z3's session shows first (`witness.example`
     on the facts and the goal's negation, `Session._witnessed`); then values that
     keep the goal make it Unproven, and a skeleton without a model of the facts and
-    the goal makes it Violated. Otherwise None: z3 decides. Only a check without
-    probes: their values are z3's to show."""
+    the goal makes it Violated. Otherwise None: z3 decides; so too when a probe or
+    a symbol has no exact value there that z3 would show alike (`shown.exact`)."""
     from robotfix.annotations import ast as A
-    from robotfix.annotations.witness import example, holds_somewhere
+    from robotfix.annotations.witness import example, holds_somewhere, value_at
     from robotfix.smt import shown
     from robotfix.smt.propositional import components, satisfiable
     from robotfix.vc import Unproven, Violated
@@ -202,18 +202,21 @@ def _check_without_solver(vc: VC, budget: Budget | None) -> Verdict | None:
     found = example([*vc.facts, A.Unary("not", vc.goal)], budget=budget)
     if found is None:
         return None
+    probes = tuple(shown.exact(value_at(probe, found)) for probe in vc.probes)
     syms: list[tuple[int, str]] = []
     for sym in sorted(found, key=lambda sym: sym.ident):
-        text = shown.scalar(found[sym], sym.sort)
+        text = shown.exact(found[sym])
         if text is None:
             return None
         syms.append((sym.ident, text))
+    if None in probes:
+        return None
     kept = [*vc.facts, vc.goal]
     if holds_somewhere(kept, budget):
-        return Unproven((), tuple(syms))
+        return Unproven(probes, tuple(syms))
     groups = components(kept, budget)
     if any(satisfiable(group, budget) is False for group in groups):
-        return Violated(())
+        return Violated(probes)
     return None
 
 

@@ -352,6 +352,23 @@ def closed_value(expr: A.Expr) -> Fraction | bool | None:
     return None if isinstance(found, str) else found
 
 
+def value_at(term: A.Expr, values: dict[A.Sym, Scalar]) -> Value:
+    """The exact value of `term` where its solver symbols take `values` (a
+    counterexample's probe), as the solver gives it; None where `closed_value`
+    would give none."""
+    for node in A.walk(term):
+        if isinstance(node, A.Num):
+            if abs(node.value.numerator) > _LIMIT or node.value.denominator > _LIMIT:
+                return None
+        elif isinstance(node, A.Sym):
+            if node not in values:
+                return None
+        elif not isinstance(node, (A.Bool, A.Unary, A.Binary, A.Func, A.Ite)):
+            return None
+    known: Values = {sym: value for sym, value in values.items()}
+    return _value(term, known)
+
+
 def _fits(value: object, sort: str) -> bool:
     """A value a symbol of `sort` can take."""
     if isinstance(value, bool):

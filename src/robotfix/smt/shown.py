@@ -13,16 +13,19 @@ SHOWN_DIGITS = 40  # longer model values are shown rounded
 SHOWN_FRACTION = 15  # longer exact fractions are shown as the float near them
 
 
-def scalar(value: Fraction | bool | str, sort: str) -> str | None:
-    """A value of a symbol of `sort` as z3 would show it; None for a string (z3
-    spells its characters its own way)."""
+def exact(value: Fraction | bool | str | None) -> str | None:
+    """An exact value (of a witness) as z3 would show it, whether z3 took it for an
+    integer or a real; None for none, for a string (z3 spells its characters its
+    own way), and for a number too long to show in full (its rounding differs
+    between the two)."""
     if isinstance(value, bool):
         return "True" if value else "False"
-    if isinstance(value, str):
+    if not isinstance(value, Fraction):
         return None
-    if sort == "int":
-        return integer(str(value.numerator))
-    return rational(str(value.numerator), str(value.denominator))
+    numerator, denominator = str(value.numerator), str(value.denominator)
+    if len(numerator) + len(denominator) > SHOWN_DIGITS:
+        return None
+    return numerator if denominator == "1" else rational(numerator, denominator)
 
 
 def integer(digits: str) -> str:
