@@ -17,6 +17,7 @@ from robotfix import api, run
 from robotfix.annotations import ast as A
 from robotfix.annotations.parser import parse_predicate
 from robotfix.annotations.witness import example, holds_somewhere
+from robotfix.budget import Budget
 from robotfix.config import Config
 from robotfix.rules import UNREADABLE_FILE
 from robotfix.smt.propositional import components, satisfiable
@@ -121,6 +122,24 @@ def test_a_check_with_witnesses_either_way_needs_no_z3() -> None:
         (), term("n < 1000000000000000000000000000000000000000000000"), probes=(N,)
     )
     assert api._without_solver(long) is None  # shown rounded: z3's to show
+
+
+def test_a_check_z3_proves_costs_little_witness_search_first() -> None:
+    """A check the pre-pass cannot prove and no value breaks: the witness search
+    tried before z3 stops at `api.CHECK_WORK` nodes (unbounded, this one walks
+    25,884), and z3 proves it as before."""
+    syms = [A.Sym(20 + i, "real") for i in range(6)]
+    zero = A.Num(Fraction(0), True)
+    facts = tuple(A.Binary(">", sym, zero) for sym in syms)
+    goal: A.Expr = A.Binary(">", A.Binary("*", syms[0], syms[1]), zero)
+    for sym in syms[2:]:
+        product = A.Binary(">", A.Binary("*", sym, syms[0]), zero)
+        goal = A.Binary("and", goal, product)
+    vc = VC(facts, goal)
+    spent = Budget()
+    assert api._without_solver(vc, spent) is None
+    assert spent.used <= api.CHECK_WORK + 200
+    assert check(vc) == Proved()
 
 
 def test_strings_compared_for_equality_have_witnesses() -> None:
@@ -266,6 +285,15 @@ def test_z3_gives_every_check_answered_without_it(
     verdict = api._without_solver(vc)
     if verdict is not None and not isinstance(slow := check(vc), Undecided):
         assert verdict == slow, (vc, verdict, slow)
+
+
+@settings(max_examples=200, deadline=None)
+@given(parts=st.lists(_conditions(), min_size=1, max_size=4), most=st.integers(1, 400))
+def test_a_search_stopped_sooner_finds_what_a_longer_one_finds_first(
+    parts: list[A.Expr], most: int
+) -> None:
+    sooner = example(parts, most=most)
+    assert sooner is None or sooner == example(parts)
 
 
 # Item 7's other half: a run without the cache reads each file when it checks it.

@@ -97,18 +97,20 @@ def _candidates(constants: Iterable[Fraction | str], integer: bool) -> list[Frac
     return sorted(found, key=lambda c: (abs(c), c))
 
 
-def holds_somewhere(parts: Sequence[A.Expr], budget: Budget | None = None) -> bool:
+def holds_somewhere(
+    parts: Sequence[A.Expr], budget: Budget | None = None, most: int = MAX_WORK
+) -> bool:
     """Whether some values of the solver symbols in `parts` make every part true
     (a path question: can this condition hold under these facts?): `example`."""
-    return example(parts, bounds=False, budget=budget) is not None
+    return example(parts, bounds=False, budget=budget, most=most) is not None
 
 
 class _Work:
     """The nodes one search has walked and evaluated, within what it may."""
 
-    def __init__(self, budget: Budget | None) -> None:
+    def __init__(self, budget: Budget | None, most: int) -> None:
         self.done = 0
-        self.allowed = MAX_WORK if budget is None else min(MAX_WORK, budget.left)
+        self.allowed = most if budget is None else min(most, budget.left)
 
     def add(self, nodes: int) -> None:
         self.done += nodes
@@ -121,7 +123,10 @@ class _OutOfWorkError(Exception):
 
 
 def example(
-    parts: Sequence[A.Expr], bounds: bool = True, budget: Budget | None = None
+    parts: Sequence[A.Expr],
+    bounds: bool = True,
+    budget: Budget | None = None,
+    most: int = MAX_WORK,
 ) -> dict[A.Sym, Scalar] | None:
     """Values of the solver symbols in `parts` that make every part true (a path
     question, or a counterexample: the facts and the goal's negation). Each symbol
@@ -133,8 +138,10 @@ def example(
     corpus run); a conjunct is evaluated exactly once its last
     symbol has a value. They depend on `parts` alone (the same values in every
     run); None says none was found, not that none exists (nor when the search
-    ran out of work: `MAX_WORK`, or what is left of `budget`, which is charged)."""
-    work = _Work(budget)
+    ran out of work: `most`, or what is left of `budget`, which is charged). The
+    search's order does not depend on `most`: a search stopped sooner finds what a
+    longer one finds first, or nothing."""
+    work = _Work(budget, most)
     try:
         return _example(parts, bounds, work)
     except _OutOfWorkError:
