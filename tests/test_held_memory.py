@@ -1,0 +1,59 @@
+"""What a `--no-cache` run holds through its checks (issue 25, target 4: memory):
+the module index keeps no answer a folder's listing already gives."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+from robotfix.project.modules import ModuleIndex
+
+
+def _workspace(root: Path) -> Path:
+    """A package `a` (a node importing) and two library folders: `lib1` (a
+    module `x`), `lib2` (a module `lone` and a package `b`)."""
+    (root / "ws" / "a" / "a").mkdir(parents=True)
+    (root / "ws" / "a" / "package.xml").write_text("<package><name>a</name></package>")
+    (root / "ws" / "a" / "a" / "__init__.py").write_text("")
+    (root / "ws" / "a" / "a" / "tool.py").write_text("SPEED = 1.0\n")
+    (root / "lib1").mkdir()
+    (root / "lib1" / "x.py").write_text("")
+    (root / "lib2" / "b" / "sub").mkdir(parents=True)
+    (root / "lib2" / "b" / "__init__.py").write_text("")
+    (root / "lib2" / "b" / "tool.py").write_text("")
+    (root / "lib2" / "b" / "sub" / "__init__.py").write_text("")
+    (root / "lib2" / "lone.py").write_text("")
+    node = root / "ws" / "a" / "a" / "node.py"
+    node.write_text(
+        "from a.tool import SPEED\nimport b.sub\nimport rclpy\n"
+        "from std_msgs.msg import String\nmsg = String()\nmsg.data = 'go'\n"
+    )
+    return node
+
+
+def test_the_index_keeps_no_answer_a_listing_gives(tmp_path: Path) -> None:
+    node = _workspace(tmp_path)
+    index = ModuleIndex([tmp_path / "ws"], [tmp_path / "lib1", tmp_path / "lib2"])
+    assert len(index.search_path(node)) > 2  # several folders, most without a name
+    names = ("a.tool", "b.tool", "b.sub", "b.nothing", "rclpy.node", "lone", "x")
+    found = {name: index.find(name, node) for name in names}
+    assert found == {
+        "a.tool": tmp_path / "ws" / "a" / "a" / "tool.py",
+        "b.tool": tmp_path / "lib2" / "b" / "tool.py",
+        "b.sub": tmp_path / "lib2" / "b" / "sub" / "__init__.py",
+        "b.nothing": None,
+        "rclpy.node": None,
+        "lone": tmp_path / "lib2" / "lone.py",
+        "x": tmp_path / "lib1" / "x.py",
+    }
+    assert index._found  # answers kept: where a folder offers the name's top
+    for root, name in index._found:
+        top = name.partition(".")[0]
+        listed = os.listdir(root)
+        # a root whose listing lacks the name's top answers None without a memo
+        assert top in listed or f"{top}.py" in listed, (root, name)
+    # no set of top-level names per search path: the listings answer
+    assert not any(
+        isinstance(v, dict) and any(isinstance(x, frozenset) for x in v.values())
+        for v in vars(index).values()
+    )
