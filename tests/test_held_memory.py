@@ -1,11 +1,17 @@
 """What a `--no-cache` run holds through its checks (issue 25, target 4: memory):
-the module index keeps no answer a folder's listing already gives."""
+the module index keeps no answer a folder's listing already gives, and no
+summary's fingerprints are kept when no result cache will ask for them."""
 
 from __future__ import annotations
 
 import os
 from pathlib import Path
+from typing import Any
 
+import pytest
+
+from robotfix import run
+from robotfix.config import Config
 from robotfix.project.modules import ModuleIndex
 
 
@@ -57,3 +63,33 @@ def test_the_index_keeps_no_answer_a_listing_gives(tmp_path: Path) -> None:
         isinstance(v, dict) and any(isinstance(x, frozenset) for x in v.values())
         for v in vars(index).values()
     )
+
+
+def _project(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, cached: bool) -> Any:
+    """The project of a run of the workspace, with the result cache or without."""
+    _workspace(tmp_path)
+    root = tmp_path / "ws"
+    made: list[Any] = []
+    make = run.make_project
+
+    def project(*args: Any, **kwargs: Any) -> Any:
+        made.append(make(*args, **kwargs))
+        return made[-1]
+
+    monkeypatch.setattr(run, "make_project", project)
+    config = Config(root=root, cache_dir=tmp_path / "cache")
+    result = run.check_paths([root], config, jobs=1, use_cache=cached)
+    assert not result.internal_errors
+    (found,) = made
+    return found
+
+
+@pytest.mark.parametrize("cached", [False, True])
+def test_summary_fingerprints_are_kept_only_for_the_cache(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, cached: bool
+) -> None:
+    built = _project(tmp_path, monkeypatch, cached).built
+    if cached:  # the cache keeps them: a later run's check of an importer needs them
+        assert str(tmp_path / "ws" / "a" / "a" / "tool.py") in built
+    else:  # nothing would read them
+        assert built == {}

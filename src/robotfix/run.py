@@ -227,6 +227,7 @@ def _check_paths(
         catalog.preload_digests(known[0])
         if known[2] is not None:  # a type is read from its own file when needed
             catalog.preload_outline(known[2])
+    project.for_cache = cache is not None  # what only the cache reads
     if cache is not None:
         # a module whose summary a cached result needs, parsed for it, keeps its
         # tree if it is then checked (`Project.expect`, `take`)
@@ -1254,6 +1255,7 @@ def _start_worker(interfaces: _Interfaces | None, config: Config, lean: bool) ->
     if interfaces is not None:
         catalog = _catalog(interfaces, config)
         project = make_project(list(interfaces.roots), config, catalog)
+        project.for_cache = not lean
         _WORKER = (catalog, config, project, lean)
 
 
