@@ -1,6 +1,7 @@
 """What a `--no-cache` run holds through its checks (issue 25, target 4: memory):
-the module index keeps no answer a folder's listing already gives, and no
-summary's fingerprints are kept when no result cache will ask for them."""
+the module index keeps no answer a folder's listing already gives, and neither
+a summary's fingerprints nor the message types' digests are made when no result
+cache will ask for them."""
 
 from __future__ import annotations
 
@@ -93,3 +94,14 @@ def test_summary_fingerprints_are_kept_only_for_the_cache(
         assert str(tmp_path / "ws" / "a" / "a" / "tool.py") in built
     else:  # nothing would read them
         assert built == {}
+
+
+@pytest.mark.parametrize("cached", [False, True])
+def test_message_type_digests_are_made_only_for_the_cache(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, cached: bool
+) -> None:
+    catalog = _project(tmp_path, monkeypatch, cached).catalog
+    if cached:  # a cached result holds while its types read the same
+        assert "std_msgs/String" in catalog._resolved_digests
+    else:
+        assert not catalog._resolved_digests and not catalog._combined

@@ -1183,7 +1183,8 @@ def _check_one(
             found,
             None,
             types,
-            catalog.fingerprint_types(types),
+            # the types' digests, for the cache only: their memos held 2.6 MB
+            catalog.fingerprint_types(types) if project.for_cache else "",
             dict(resolver.consulted),
             project.fresh_summaries(),
             parameters,

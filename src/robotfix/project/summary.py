@@ -97,7 +97,8 @@ class Project:
         self.known: dict[str, Known] = {}
         self.built: dict[str, Known] = {}  # the same, for this run's
         # False: no result cache reads this run's fingerprints (a `--no-cache`
-        # run): `built` keeps none (0.9 MB on corpus25, held to the end of the run)
+        # run): `built` keeps none (0.9 MB on corpus25, held to the end of the
+        # run), and a check computes none of its message types (`run._check_one`)
         self.for_cache = True
         self._fresh: list[str] = []  # those built since `fresh_summaries` last ran
         # a kept summary whose records all still read the same (`_holds`)
