@@ -1,11 +1,13 @@
 """What a `--no-cache` run holds through its checks (issue 25, target 4: memory):
-the module index keeps no answer a folder's listing already gives, and neither
-a summary's fingerprints nor the message types' digests are made when no result
-cache will ask for them."""
+the module index keeps no answer a folder's listing already gives, neither a
+summary's fingerprints nor the message types' digests are made when no result
+cache will ask for them, and the checked files' import statements go once the
+launch files are read, before the C++ files are (the run's peak)."""
 
 from __future__ import annotations
 
 import os
+import shutil
 from pathlib import Path
 from typing import Any
 
@@ -105,3 +107,28 @@ def test_message_type_digests_are_made_only_for_the_cache(
         assert "std_msgs/String" in catalog._resolved_digests
     else:
         assert not catalog._resolved_digests and not catalog._combined
+
+
+def test_the_import_statements_go_once_the_launch_files_are_read(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    root = tmp_path / "ws"
+    cases = Path(__file__).parent / "cases" / "launch"
+    shutil.copytree(cases / "gym_bridge", root / "gym_bridge")
+    seen: dict[str, int] = {}
+    launches, cpp = run._launches, run._cpp_graphs
+
+    def reading(*args: Any, **kwargs: Any) -> Any:
+        seen["read"] = len(run._IMPORTS)
+        return launches(*args, **kwargs)
+
+    def graphs(*args: Any, **kwargs: Any) -> Any:
+        seen["cpp"] = len(run._IMPORTS)
+        return cpp(*args, **kwargs)
+
+    monkeypatch.setattr(run, "_launches", reading)
+    monkeypatch.setattr(run, "_cpp_graphs", graphs)
+    result = run.check_paths([root], Config(root=root), jobs=1, use_cache=False)
+    assert not result.internal_errors
+    assert seen["read"] > 0  # the node's imports, for the launch reading
+    assert seen["cpp"] == 0
