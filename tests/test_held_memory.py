@@ -132,3 +132,15 @@ def test_the_import_statements_go_once_the_launch_files_are_read(
     assert not result.internal_errors
     assert seen["read"] > 0  # the node's imports, for the launch reading
     assert seen["cpp"] == 0
+
+
+def test_the_index_keeps_one_string_per_name(tmp_path: Path) -> None:
+    node = _workspace(tmp_path)
+    other = tmp_path / "lib2" / "b" / "tool.py"  # another search path
+    index = ModuleIndex([tmp_path / "ws"], [tmp_path / "lib1", tmp_path / "lib2"])
+    for importer in (node, other):
+        for name in ("rclpy", "b.tool"):
+            index.find("".join(name), importer)  # a new string each time
+    keys = list(index._resolved)
+    assert len({number for number, _ in keys}) == 2
+    assert len({id(name) for _, name in keys}) == 2

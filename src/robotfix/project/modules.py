@@ -27,6 +27,7 @@ import ast
 import functools
 import json
 import os
+import sys
 import time
 from collections import deque
 from collections.abc import Callable, Iterable, Sequence
@@ -319,7 +320,9 @@ class ModuleIndex:
                 found = None  # rclpy, numpy: not in any folder searched
             else:
                 found = self._lookup(self.search_path(importer), name)
-            self._resolved[key] = found
+            # one string per name, not per asking: each call spells it anew
+            # (10,716 strings for 4,556 names on corpus25)
+            self._resolved[(number, sys.intern(name))] = found
         if found is None or os.path.isabs(importer):
             return found
         return _relative(found)
