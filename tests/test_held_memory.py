@@ -14,6 +14,7 @@ from typing import Any
 import pytest
 
 from robotfix import run
+from robotfix.api import make_project
 from robotfix.config import Config
 from robotfix.project.modules import ModuleIndex
 
@@ -73,10 +74,9 @@ def _project(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, cached: bool) -> A
     _workspace(tmp_path)
     root = tmp_path / "ws"
     made: list[Any] = []
-    make = run.make_project
 
     def project(*args: Any, **kwargs: Any) -> Any:
-        made.append(make(*args, **kwargs))
+        made.append(make_project(*args, **kwargs))
         return made[-1]
 
     monkeypatch.setattr(run, "make_project", project)
