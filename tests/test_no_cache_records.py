@@ -63,3 +63,30 @@ def test_a_run_without_the_cache_makes_no_fingerprints(
     assert cached == plain
     counted.clear()
     assert _shown(root, use_cache=True) == plain  # from the cache
+
+
+def test_a_run_without_the_cache_notes_nothing_of_what_it_reads(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The launch files' reading and the graph's check noted every file and path
+    they looked at (`fs.noting`) for the cache's traces, with no cache too (the
+    memos' own notes, `fs.remembered`, are not counted: a cached run replays
+    them)."""
+    from robotfix import fs
+
+    root = tmp_path / "ros2_services"  # launch files, a graph
+    shutil.copytree(PACKAGES.parent / "graph" / "ros2_services", root)
+    noted: list[object] = []
+    real = fs.noting
+
+    def counting(trace: object):  # type: ignore[no-untyped-def]
+        if trace is not None:
+            noted.append(trace)
+        return real(trace)
+
+    for module in ("run", "launchcheck"):
+        monkeypatch.setattr(f"robotfix.{module}.noting", counting)
+    plain = _shown(root, use_cache=False)
+    assert noted == []
+    assert _shown(root, use_cache=True) == plain
+    assert noted  # the cache's traces: the test sees them

@@ -441,7 +441,8 @@ class _Stage:
         self.cpp_faulted = False
         self.key: str | None = None
         self.known: tuple[list[str], list[Diagnostic]] | None = None
-        self.trace = Trace()
+        # what the reading and the graph's check looked at: for the cache only
+        self.trace = Trace() if cache is not None else None
         self.launches: tuple[LaunchRun, list[ParamFault]] | None = None
         self.was_read = False
         self.graph: list[Diagnostic] | None = None  # the findings to keep
@@ -491,6 +492,7 @@ class _Stage:
         read = self.read()
         if self.graph is None or self.cpp_faulted or (read is not None and read[1]):
             return
+        assert self.trace is not None
         self.cache.put_stage(self.key, self.trace.folded(), self.touched(), self.graph)
 
 
