@@ -41,6 +41,7 @@ if TYPE_CHECKING:  # the analysis is imported only when a summary is built
     from robotfix.analysis.imported import (
         ClassSummary,
         FunctionSummary,
+        Imported,
         ModuleSummary,
     )
     from robotfix.analysis.program import Function, Program
@@ -533,6 +534,9 @@ class FileResolver:
         self._package = project.index.package_of(path)
         # name -> the module file it is here (_CYCLE: not consulted while building)
         self._targets: dict[str, Path | None] = {}
+        # dotted name -> what it stands for (`imported.resolve`'s memo): what
+        # resolving it recorded is in `consulted` already
+        self.resolved: dict[str, Imported | None] = {}
 
     @property
     def package(self) -> str | None:
