@@ -24,7 +24,7 @@ from pathlib import Path
 from typing import Any
 
 from robotfix import tomlfile
-from robotfix.fs import UnreadableError, read_text, stamp
+from robotfix.fs import UnreadableError, asked, read_text, stamp
 
 KEYS = {
     "extend",
@@ -82,6 +82,9 @@ class Config:
     _spelled: dict[str, Path | None] = field(  # the same, by the folder as spelled
         default_factory=dict, compare=False, repr=False
     )
+    _folders: dict[str, str] = field(  # a path asked of `for_file` -> its folder
+        default_factory=dict, init=False, compare=False, repr=False
+    )
 
     def for_file(
         self, path: Path, folder: bool | None = None, real: str | None = None
@@ -93,9 +96,14 @@ class Config:
         if self.flags is None:
             return self
         raw = os.fspath(path)  # the folder as spelled: no realpath, no stat
-        if folder is None:
-            folder = os.path.isdir(raw)
-        folder_name = raw if folder else os.path.dirname(raw) or "."
+        # a file's or a folder's: asked of the disk once a path (a run asks
+        # again of every file: the cache's key, its check, its findings)
+        folder_name = self._folders.get(raw) if folder is None else None
+        if folder_name is None:
+            if folder is None:
+                folder = os.path.isdir(raw)
+            folder_name = raw if folder else os.path.dirname(raw) or "."
+            self._folders[raw] = folder_name
         if folder_name in self._spelled:
             found = self._spelled[folder_name]
         else:
@@ -159,12 +167,9 @@ class Config:
     def _relative(self, path: Path) -> str:
         """The path as seen from the root: as spelled first (a folder reached
         through a symlink keeps the link's name), else with symlinks resolved."""
-        for here, root in (
-            (os.path.abspath(path), os.path.abspath(self.root)),
-            (os.path.realpath(path), os.path.realpath(self.root)),
-        ):
+        for resolve in (os.path.abspath, os.path.realpath):  # realpath: if need be
             try:
-                return Path(here).relative_to(root).as_posix()
+                return Path(resolve(path)).relative_to(resolve(self.root)).as_posix()
             except ValueError:
                 continue
         return path.as_posix()
@@ -222,7 +227,8 @@ def find(
     `start`'s real path, when known. The folders are real paths, walked up as
     text: only a configuration found is made a Path (a walk asks for every
     folder, whose parent `memo` knows)."""
-    folder = real if real is not None else os.path.realpath(start)
+    # in a run, a folder's real path is its parent's, once asked (`fs.asked`)
+    folder = real if real is not None else asked("realpath", os.fspath(start))
     if not os.path.isdir(folder):  # os.path never raises (a path too long, a loop)
         folder = os.path.dirname(folder)
     seen: list[str] = []  # the folders looked at, each with the answer

@@ -99,7 +99,11 @@ _NOTING: list[Any] = []
 def noting(trace: Any) -> Iterator[Any]:
     """While inside, every file `read_regular` reads is stamped in `trace` and
     every `probe` answer kept there (a `Noted`, a `discovery.Trace`): a cached
-    stage that reads the disk only through these holds while the trace does."""
+    stage that reads the disk only through these holds while the trace does.
+    None: nothing is noted (no cache will keep it)."""
+    if trace is None:
+        yield None
+        return
     _NOTING.append(trace)
     try:
         yield trace

@@ -162,16 +162,18 @@ class LaunchRun:
             self.reader.touched.update(read.reading)
             self._kept_texts += read.reading
         else:
-            noted = Noted()
+            # what it read, for `kept` (none without it: nothing to keep)
+            fresh = Noted() if self.kept is not None else None
             self.reader.reading = set()
-            with noting(noted):
+            with noting(fresh):
                 launch = self.reader.read(path)
                 started = [
                     (entry, sorted(self._code(entry)))
                     for entry in (launch.entries if launch.launch else [])
                 ]
             read = Read(launch.problem, started, sorted(self.reader.reading))
-            self._fresh.append((name, noted, read))
+            if fresh is not None:
+                self._fresh.append((name, fresh, read))
         if read.problem is not None:
             text, line, col = read.problem
             self.notices.append(messages.launch_file_not_read(name, line, col, text))

@@ -217,6 +217,7 @@ def _check_paths(
     )
     catalog = _catalog(interfaces, config)
     project = make_project(paths, config, catalog)
+    project.records = cache is not None  # what only the cache reads
     files = found.python_files
     result.files = len(files)
     result.checked = [str(file) for file in files]
@@ -227,7 +228,6 @@ def _check_paths(
         catalog.preload_digests(known[0])
         if known[2] is not None:  # a type is read from its own file when needed
             catalog.preload_outline(known[2])
-    project.for_cache = cache is not None  # what only the cache reads
     if cache is not None:
         # a module whose summary a cached result needs, parsed for it, keeps its
         # tree if it is then checked (`Project.expect`, `take`)
@@ -441,7 +441,8 @@ class _Stage:
         self.cpp_faulted = False
         self.key: str | None = None
         self.known: tuple[list[str], list[Diagnostic]] | None = None
-        self.trace = Trace()
+        # what the reading and the graph's check looked at: for the cache only
+        self.trace = Trace() if cache is not None else None
         self.launches: tuple[LaunchRun, list[ParamFault]] | None = None
         self.was_read = False
         self.graph: list[Diagnostic] | None = None  # the findings to keep
@@ -491,6 +492,7 @@ class _Stage:
         read = self.read()
         if self.graph is None or self.cpp_faulted or (read is not None and read[1]):
             return
+        assert self.trace is not None
         self.cache.put_stage(self.key, self.trace.folded(), self.touched(), self.graph)
 
 
@@ -973,8 +975,9 @@ def _check_all(
 ) -> Iterator[FileResult]:
     """Each file's result, as it comes. With jobs > 1, in worker processes: at most
     one per core and per file; if the pool cannot start (no process or file
-    descriptor left), the files are checked here instead. Without a `cache`, a
-    worker does not send what only the cache keeps (`_lean`)."""
+    descriptor left), the files are checked here instead. Without a `cache`, no
+    check makes what only the cache keeps (`Project.records`), nor does a worker
+    send it."""
     jobs = min(jobs, default_jobs(), len(todo))
     size = sum(_size(path, data) for path, data in todo)
     if jobs <= 1 or len(todo) < MIN_PARALLEL or size < MIN_PARALLEL_BYTES:
@@ -995,15 +998,15 @@ def _check_all(
     try:
         if method == "fork":  # read the interface files once: the workers share them
             catalog.prepare()
-            _WORKER = (catalog, config, project, cache is None)
+            _WORKER = (catalog, config, project)
         pool = ProcessPoolExecutor(
             max_workers=jobs,
             mp_context=multiprocessing.get_context(method),
             initializer=_start_worker,
             initargs=(
-                (None, config, cache is None)
+                (None, config, project.records)
                 if method == "fork"
-                else (interfaces, config, cache is None)
+                else (interfaces, config, project.records)
             ),
         )
         unsent: list[list[tuple[Path, bytes | None]]] = []
@@ -1186,8 +1189,8 @@ def _check_one(
             found,
             None,
             types,
-            # the types' digests, for the cache only: their memos held 2.6 MB
-            catalog.fingerprint_types(types) if project.for_cache else "",
+            # what the result cache keeps of the types (a run without it: none)
+            catalog.fingerprint_types(types) if project.records else "",
             dict(resolver.consulted),
             project.fresh_summaries(),
             parameters,
@@ -1237,8 +1240,8 @@ def _keep_imports(path: str, parsed: SourceFile) -> None:
         _IMPORTS[path] = (len(text), hash(text), lines)
 
 
-# (catalog, config, project, lean): `lean`, the run keeps no cache (`_lean`)
-_WORKER: tuple[MsgCatalog, Config, Project, bool] | None = None
+# (catalog, config, project): `project.records` off, the run keeps no cache
+_WORKER: tuple[MsgCatalog, Config, Project] | None = None
 # a run with launch files: every checked file's import statements
 # (`launchcheck.Imports`, plain data), which their reading (`launchcheck.LaunchRun`)
 # then uses, so a node's code is not parsed again for them (dropped once they are
@@ -1248,7 +1251,9 @@ _READS_LAUNCHES = False
 _IMPORTS: Imports = {}
 
 
-def _start_worker(interfaces: _Interfaces | None, config: Config, lean: bool) -> None:
+def _start_worker(
+    interfaces: _Interfaces | None, config: Config, records: bool
+) -> None:
     """In a worker: the same interface files as the main process (a forked worker
     has the main process's catalog already: `interfaces` is None); Ctrl-C is the
     main process's to handle (it ends the workers), so no traceback here."""
@@ -1260,32 +1265,22 @@ def _start_worker(interfaces: _Interfaces | None, config: Config, lean: bool) ->
     if interfaces is not None:
         catalog = _catalog(interfaces, config)
         project = make_project(list(interfaces.roots), config, catalog)
-        project.for_cache = not lean
-        _WORKER = (catalog, config, project, lean)
+        project.records = records
+        _WORKER = (catalog, config, project)
 
 
 def _worker_check(chunk: list[tuple[Path, bytes | None]]) -> list[FileResult]:
     assert _WORKER is not None
-    catalog, config, project, lean = _WORKER
+    catalog, config, project = _WORKER
     project.expect([path for path, _ in chunk])
     results = [_check_one(path, data, catalog, config, project) for path, data in chunk]
     for result in results:
         if result.parameters is not None:
             result.parameters = _portable(result.parameters)
-        if lean:
-            _lean(result)
-    if results and not lean:
+    if results and project.records:  # for the cache, which the main process saves
         results[-1].answers = project.index.fresh()
         results[-1].digests = catalog.fresh_digests()
     return results
-
-
-def _lean(result: FileResult) -> None:
-    """Without the result cache, a worker's result need not carry what only the
-    cache keeps: the summaries its check consulted and built (4.5 of the 5.7 MB
-    the workers send back on corpus2, pickled there and read here)."""
-    result.modules = {}
-    result.summaries = {}
 
 
 def _portable(parameters: ParamSummary) -> ParamSummary | None:

@@ -41,6 +41,7 @@ if TYPE_CHECKING:  # the analysis is imported only when a summary is built
     from robotfix.analysis.imported import (
         ClassSummary,
         FunctionSummary,
+        Imported,
         ModuleSummary,
     )
     from robotfix.analysis.program import Function, Program
@@ -96,10 +97,6 @@ class Project:
         # path -> (sha256 of its bytes, fingerprints), from an earlier run's cache
         self.known: dict[str, Known] = {}
         self.built: dict[str, Known] = {}  # the same, for this run's
-        # False: no result cache reads this run's fingerprints (a `--no-cache`
-        # run): `built` keeps none (0.9 MB on corpus25, held to the end of the
-        # run), and a check computes none of its message types (`run._check_one`)
-        self.for_cache = True
         self._fresh: list[str] = []  # those built since `fresh_summaries` last ran
         # a kept summary whose records all still read the same (`_holds`)
         self._holding: dict[Path, bool] = {}
@@ -131,6 +128,10 @@ class Project:
         self._weak = frozenset(str(root) for root in index.roots)
         self._checking: Path | None = None  # the file `take`n last
         self.released = 0  # modules dropped so (tests count them)
+        # what only the result cache and the editor's memo read is made: each
+        # resolver's records (`consulted`), the summaries' fingerprints, `built`;
+        # a run that keeps no cache turns it off (`run.py`): nothing reads them
+        self.records = True
 
     def resolver(self, path: Path, building: Path | None = None) -> FileResolver:
         return FileResolver(self, path, building)
@@ -185,7 +186,7 @@ class Project:
         self._types[path] = frozenset(touched)
         self._summaries[path] = found
         self._hold(path)
-        if found is not None and parsed is not None and self.for_cache:
+        if found is not None and parsed is not None and self.records:
             own = f"{path}\0"
             cut = len(own) - 1
             self.built[str(path)] = (
@@ -526,10 +527,16 @@ class FileResolver:
         self.path = path
         self.building = building
         # "<importing file>\0<name>" -> the fingerprint of what it resolved to
+        # (nothing when the project keeps no records)
         self.consulted: dict[str, str] = {}
+        self.records = project.records
+        self._own = f"{path}\0"  # the records' keys start so
         self._package = project.index.package_of(path)
         # name -> the module file it is here (_CYCLE: not consulted while building)
         self._targets: dict[str, Path | None] = {}
+        # dotted name -> what it stands for (`imported.resolve`'s memo): what
+        # resolving it recorded is in `consulted` already
+        self.resolved: dict[str, Imported | None] = {}
 
     @property
     def package(self) -> str | None:
@@ -540,7 +547,8 @@ class FileResolver:
         does, so a cached result is re-checked once the module appears.)"""
         if self.project.index.find(name, self.path) is not None:
             return True
-        self.consulted[f"{self.path}\0{name}"] = ABSENT
+        if self.records:
+            self.consulted[self._own + name] = ABSENT
         return False
 
     def module(self, name: str) -> ModuleSummary | None:
@@ -555,25 +563,27 @@ class FileResolver:
             ):
                 target = _CYCLE
             self._targets[name] = target
-        key = f"{self.path}\0{name}"
         if target is None:
-            self.consulted[key] = ABSENT
+            if self.records:
+                self.consulted[self._own + name] = ABSENT
             return None
         if target is _CYCLE:
             return None  # a cycle: not consulted, whichever side is built first
         found = project.summary(target)
-        # its fingerprint stands for what building it read too: its members may
-        # stand on any of it
-        self.consulted[key] = found.fingerprint if found is not None else ABSENT
+        if self.records:
+            # its fingerprint stands for what building it read too: its members
+            # may stand on any of it
+            fingerprint = found.fingerprint if found is not None else ABSENT
+            self.consulted[self._own + name] = fingerprint
         if project.catalog.touched is not None:
             project.catalog.touched.update(project.types(target))
         return found
 
     def member(self, module: str, summary: ModuleSummary, name: str) -> None:
         """The member `name` of `summary` (asked for as `module`) was looked up."""
-        self.consulted[f"{self.path}\0{module}\0{name}"] = summary.members.get(
-            name, MISSING
-        )
+        if self.records:
+            key = f"{self._own}{module}\0{name}"
+            self.consulted[key] = summary.members.get(name, MISSING)
 
 
 def summarize(
@@ -617,7 +627,7 @@ def summarize(
             if isinstance(statement, ast.ClassDef):
                 class_body(ctx, program, statement, module, statics)
     except (BudgetExceededError, RecursionError):
-        return _finish(summary, resolver.consulted)
+        return _finish(summary, resolver)
     summary.constants = ctx.constants.module_constants()
     terms = {k: v.term for k, v in summary.constants.items() if v.term is not None}
     read = {
@@ -645,7 +655,7 @@ def summarize(
         names = names or replace(_detached(ctx), constants=terms)
         summary.aliases[alias_name] = Alias(ctx.index.aliases[alias_name], names)
     summary.reexports = _top_level_imports(tree, ctx.imports)
-    return _finish(summary, resolver.consulted)
+    return _finish(summary, resolver)
 
 
 def _function(
@@ -848,12 +858,16 @@ def _top_level_imports(tree: ast.Module, imports: dict[str, str]) -> dict[str, s
     return found
 
 
-def _finish(summary: ModuleSummary, consulted: dict[str, str]) -> ModuleSummary:
+def _finish(summary: ModuleSummary, resolver: FileResolver) -> ModuleSummary:
     """The fingerprints: the module's own (its name, its file, and what building it
-    `consulted`, each record with its fingerprint: any member may stand on any of
+    consulted, each record with its fingerprint: any member may stand on any of
     it), and each member's, from everything `imported._member` reads for that name
     (which table holds it decides what it is). An alias reads the module's other
-    aliases and imports, so its fingerprint holds them too."""
+    aliases and imports, so its fingerprint holds them too. None without records
+    (nothing reads them)."""
+    if not resolver.records:
+        return summary
+    consulted = resolver.consulted
     summary.fingerprint = _hash(
         _stable((summary.name, summary.path, sorted(consulted.items())))
     )
