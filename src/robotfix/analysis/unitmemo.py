@@ -48,7 +48,8 @@ Key of an item (`Check.analyze`):
   reads other functions' bodies (what a function returns, what `self.x` is
   assigned; `t[1]` of a tuple is a number the skeleton blanks), so the questions
   are logged with their answers while the item runs (`unitreads.Reads`) and asked again,
-  in their order, before a replay (`unitreads.same_reads`);
+  in their order, before a replay (`unitreads.same_reads`; an answer the model
+  keeps once asked is taken from an earlier replay of the same check);
 - the identities of the catalog, the stubs and the discharger's kind (a change
   clears the memo), and what the resolver answered so far (`consulted`: every
   imported module and member with its fingerprint); what the item itself resolved
@@ -315,6 +316,7 @@ class Check:
         # every key holds every item that wrote so far (`_wrote`), and an item
         # outside every statement turns the memo off
         self.method_edit = base.startswith(_METHOD)
+        self._answered: dict[tuple[object, ...], object] = {}  # `same_reads`
         self._all: tuple[object, ...] = ()
         # symbols made by the module phase: the same for the same skeleton
         ctx.unit_base = ctx._next
@@ -468,7 +470,7 @@ class Check:
                 spawned.append((found, scope if own else parent))
         if record.consulted and not _still(ctx, record.consulted):
             return None
-        if record.reads and not same_reads(self.program, record.reads):
+        if record.reads and not same_reads(self.program, record.reads, self._answered):
             return None
         signed = [self.program.functions.get(k) for k in record.signed]
         if any(f is None or f.scope is not None for f in signed):
