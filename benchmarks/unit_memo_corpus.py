@@ -4,7 +4,8 @@ code: for each Python file under a folder, EDITS random edits of one unit each
 fresh; prints the number of edits compared, the mismatches (must be 0) and the
 memo's hits and misses.
 
-Usage: python benchmarks/unit_memo_corpus.py FOLDER [EDITS] [literal|blanked|comment|method]
+Usage: python benchmarks/unit_memo_corpus.py FOLDER [EDITS] [MODE]
+MODE: literal, blanked, comment or method (else every kind of edit).
 With `literal`, every edit changes a number inside a function (the edits that leave
 the other units' keys alone, so most of them are replayed); with `blanked`, a number
 the skeleton blanks (`same_skeleton`), after the text was checked twice (so its
@@ -123,7 +124,11 @@ def _method_number(text: str, rng: random.Random, edits: int) -> list[str]:
         ):
             continue
         new = _replace(lines, node, repr(_bumped(node.value, 0)))
-        if new is not None and _parses(new) and method_number(ast.parse(new), text, new):
+        if (
+            new is not None
+            and _parses(new)
+            and method_number(ast.parse(new), text, new)
+        ):
             numbers.append(node)
     if not numbers:
         return []

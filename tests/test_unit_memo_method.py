@@ -112,3 +112,43 @@ def test_what_a_method_wrote_is_in_every_later_key(tmp_path: Path) -> None:
     # every check a fresh check's output (`_replayed`); `use` is replayed where
     # `configure` was the same
     assert _replayed(tmp_path, text, other, text, other, text, catalog=catalog) >= 1
+
+
+def test_a_replay_takes_the_answers_the_model_keeps_once_per_check() -> None:
+    """The model keeps its answers about attributes, a file function's result and
+    a class's library bases: the replays of one check ask each once (each asked
+    them again: on nav2's robot_navigator.py 41 replayed items asked 273
+    questions, 41 of them distinct); what it does not keep (`infer`, a result
+    of a function not made yet) is asked every time."""
+    from types import SimpleNamespace
+
+    from robotfix.analysis.unitreads import same_reads
+
+    asked: list[tuple[object, ...]] = []
+
+    class Model:
+        def attribute(self, class_name: str, attr: str) -> object:
+            asked.append(("attribute", class_name, attr))
+            return "float"
+
+        def returns(self, key: str) -> object:
+            asked.append(("returns", key))
+            return None
+
+        def library_bases(self, class_name: str) -> list[object]:
+            asked.append(("library_bases", class_name))
+            return [SimpleNamespace(qualname="rclpy.node.Node")]
+
+    program = SimpleNamespace(types=Model(), functions={"Drive.step": object()})
+    reads = (
+        (("library_bases", "Drive"), ("rclpy.node.Node",)),
+        (("attribute", "Drive", "gain"), "float"),
+        (("returns", "Drive.step"), None),
+        (("returns", "Drive.later"), None),  # not made yet: asked again
+    )
+    answered: dict[tuple[object, ...], object] = {}
+    for _ in range(3):
+        assert same_reads(program, reads, answered)  # type: ignore[arg-type]
+    assert len(asked) == 4 + 2
+    # a kept answer that differs from the logged one is no replay
+    assert not same_reads(program, ((("attribute", "Drive", "gain"), "int"),), answered)  # type: ignore[arg-type]

@@ -371,8 +371,9 @@ class Check:
             if text is None:
                 text = self._unit_text[id(unit)] = self._text(unit)
             writers = self._writers.get(index, ())
-            key = (self.base, text, _locator(node), _resolver_state(self.ctx), writers)
-            return (*key, self._all) if self.method_edit else key
+            where, state = _locator(node), _resolver_state(self.ctx)
+            found = (self.base, text, where, state, writers)
+            return (*found, self._all) if self.method_edit else found
         root = self.roots[index]
         # the class body, and an item of it outside its methods, by the class's
         # text but its methods' bodies; a method (`_whole`) by the whole text
