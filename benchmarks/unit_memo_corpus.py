@@ -115,21 +115,16 @@ def _method_number(text: str, rng: random.Random, edits: int) -> list[str]:
     if "class " not in text:
         return []
     lines = text.splitlines(keepends=True)
-    numbers = []
-    for node in ast.walk(ast.parse(text)):
-        if not (
-            isinstance(node, ast.Constant)
-            and type(node.value) in (int, float)
-            and node.lineno == node.end_lineno
-        ):
-            continue
-        new = _replace(lines, node, repr(_bumped(node.value, 0)))
-        if (
-            new is not None
-            and _parses(new)
-            and method_number(ast.parse(new), text, new)
-        ):
-            numbers.append(node)
+    places = set()
+    for edited in _number_edits(text):
+        found = method_number(ast.parse(edited), text, edited)
+        if found is not None:
+            places.add(found[:2])
+    numbers = [
+        n
+        for n in ast.walk(ast.parse(text))
+        if isinstance(n, ast.Constant) and (n.lineno, n.col_offset) in places
+    ]
     if not numbers:
         return []
     node = rng.choice(numbers)

@@ -6,6 +6,7 @@ every item before them that wrote was; every check gives a fresh check's output.
 from __future__ import annotations
 
 import ast
+import re
 import sys
 from pathlib import Path
 
@@ -16,29 +17,13 @@ from robotfix.config import Config
 
 sys.path.insert(0, str(Path(__file__).parent))
 from test_cases import CASES, catalog_for
-from test_unit_memo import _replayed
+from test_unit_memo import _class_node, _replayed
 
 
 def _node(methods: int) -> str:
-    """A node class whose methods each compute with a number in a call (one the
-    skeleton keeps) and report a unit error of their own."""
-    out = [
-        "from typing import Annotated\n",
-        "\n",
-        "Speed = Annotated[float, \"Unit('m/s')\"]\n",
-        "Length = Annotated[float, \"Unit('m')\"]\n",
-        "\n",
-        "\n",
-        "class Drive:\n",
-    ]
-    for i in range(methods):
-        out += [
-            f"    def step_{i}(self, v: Speed, d: Length) -> None:\n",
-            f"        gain = max({i + 1}.5, 0.5)\n",
-            "        total: Length = d + v * gain\n",
-            "\n",
-        ]
-    return "".join(out)
+    """`_class_node`'s class, each method's gain computed by a call (a number the
+    skeleton keeps)."""
+    return re.sub(r"gain = ([0-9.]+)\n", r"gain = max(\1, 0.5)\n", _class_node(methods))
 
 
 def test_a_number_in_a_call_edited_in_a_method_replays_the_others(
