@@ -24,17 +24,12 @@ Key of an item (`Check.analyze`):
   bodies only syntactically through names, calls and attribute stores, and a body's
   analysis reads other functions only through their signatures (def headers) and
   syntactic facts (`ends`, may-raise: statements, not numbers). After an edit of
-  one number the skeleton keeps, lying in the body of a method of a top-level
-  class (not a one-expression one) whose text holds none of `TEXT_WORDS`
-  (`skeleton.method_number`), the skeleton with that number blanked, length and
-  all, keys the check instead (a base starting `_METHOD`, kept while the number
-  is edited again, or a comment or a blanked number elsewhere): no other item
-  reads such a number but through the type model (its answers are asked again),
-  the parameter summary (which reads only functions whose text holds a parameter
-  word) or what its method's items wrote, so in such a check every key holds
-  every item before it that wrote (`_all`: an item outside its class may read
-  it), and an item outside every statement turns the memo off for the rest of
-  the check;
+  a kept number in a method whose text holds none of `TEXT_WORDS`
+  (`skeleton.method_number`), the skeleton with it blanked keys the check (a
+  `_METHOD` base): other items read it only through the type model (asked
+  again) or what its method's items wrote, so every key of such a check holds
+  every item before it that wrote (`_all`), and an item outside every
+  statement turns the memo off;
 - the exact text, with its first line number, of the top-level statement holding
   the item, and the item's position in it; for an item of a method of a
   top-level class (a node's callbacks share their class), the method's own text
