@@ -27,7 +27,8 @@ nav2_simple_commander/robot_navigator.py, 1,294 lines) is measured too, twice: w
 comment line edited at its middle (an edit of text the memo keys on: nothing can be
 replayed), and with the number nearest its middle inside a function body changed
 (`name@number`: the edit the memo replays the other functions around, when the
-skeleton blanks that number), and with the number nearest its middle that the
+skeleton blanks that number or it lies in a method: `skeleton.method_number`),
+and with the number nearest its middle that the
 skeleton blanks changed (`name@blanked`: one the memo can always replay around).
 """
 
@@ -113,8 +114,9 @@ def edited_real(text: str, n: int) -> str:
 def edited_real_number(text: str, n: int) -> str:
     """A real node with the number nearest its middle that a function body holds
     changed (a gain, a period, a limit tuned): the memo replays the other
-    functions around it when the skeleton blanks that number (on the real nodes
-    measured it lies in a call's arguments, which it keeps)."""
+    functions around it when the skeleton blanks that number, or when it lies in
+    a method whose text holds no word the analysis reads (on nav2's file it is a
+    timeout in a call's arguments in a method: `skeleton.method_number`)."""
     tree = ast.parse(text)
     middle = len(text.splitlines()) // 2
     numbers = [

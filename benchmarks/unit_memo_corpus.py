@@ -4,7 +4,8 @@ code: for each Python file under a folder, EDITS random edits of one unit each
 fresh; prints the number of edits compared, the mismatches (must be 0) and the
 memo's hits and misses.
 
-Usage: python benchmarks/unit_memo_corpus.py FOLDER [EDITS] [literal|blanked|comment]
+Usage: python benchmarks/unit_memo_corpus.py FOLDER [EDITS] [MODE]
+MODE: literal, blanked, comment or method (else every kind of edit).
 With `literal`, every edit changes a number inside a function (the edits that leave
 the other units' keys alone, so most of them are replayed); with `blanked`, a number
 the skeleton blanks (`same_skeleton`), after the text was checked twice (so its
@@ -13,7 +14,12 @@ a method around the edited one; with `comment`, a chain of edits each of one lin
 that holds a comment or blanks only (a comment written there, some with a word the
 analysis reads in the text), after the text was checked twice, in files with a
 class: the edits after which the memo counts the skeleton unchanged
-(`comment_only`).
+(`comment_only`); with `method`, a chain of edits of one number the skeleton
+keeps (in a call, a test, a store to an attribute) inside a method whose text
+holds no word the analysis reads (`method_number`), made other numbers of the
+same length and then longer ones, after the text was checked twice, in files
+with a class: the edits after which the memo keys the items by the skeleton
+with that number blanked, and replays the other methods.
 """
 
 from __future__ import annotations
@@ -27,9 +33,9 @@ import zlib
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).parent.parent / "tests"))
-from test_unit_memo import KINDS, _number_edits, _parses, edit
+from test_unit_memo import KINDS, _number_edits, _parses, _replace, edit
 
-from robotfix.analysis.skeleton import same_skeleton
+from robotfix.analysis.skeleton import method_number, same_skeleton
 from robotfix.api import check_source
 from robotfix.config import Config
 from robotfix.ros.catalog import MsgCatalog
@@ -57,6 +63,8 @@ def main(folder: Path, edits: int, kinds: tuple[str, ...]) -> None:
             chosen = _blanked(text, rng, edits)
         elif kinds == ("comment",):
             chosen = _commented(text, rng, edits)[::-1]  # popped in their order
+        elif kinds == ("method",):
+            chosen = _method_number(text, rng, edits)[::-1]
         if chosen is not None:  # recorded: a skeleton is, once checked twice
             check_source(text, str(path), config, catalog, memo=memo)
         for _ in range(edits * 3):
@@ -100,6 +108,38 @@ def _blanked(text: str, rng: random.Random, edits: int) -> list[str]:
     return rng.sample(found, min(edits, len(found)))
 
 
+def _method_number(text: str, rng: random.Random, edits: int) -> list[str]:
+    """A chain of up to `edits` texts, each `text` with the same number, one the
+    skeleton keeps inside a method (`method_number`), made another value (of
+    another length at times; none in a file without a class)."""
+    if "class " not in text:
+        return []
+    lines = text.splitlines(keepends=True)
+    places = set()
+    for edited in _number_edits(text):
+        found = method_number(ast.parse(edited), text, edited)
+        if found is not None:
+            places.add(found[:2])
+    numbers = [
+        n
+        for n in ast.walk(ast.parse(text))
+        if isinstance(n, ast.Constant) and (n.lineno, n.col_offset) in places
+    ]
+    if not numbers:
+        return []
+    node = rng.choice(numbers)
+    chain = []
+    for step in range(edits):
+        new = _replace(lines, node, repr(_bumped(node.value, step)))
+        if new is not None:
+            chain.append(new)
+    return chain
+
+
+def _bumped(value: float, step: int) -> float:
+    return value + (step + 1) * (0.125 if type(value) is float else 1)
+
+
 NOTES = ("note", "TODO 2", "x = 1", "the node", "Annotated", "setattr", ":=", "")
 
 
@@ -125,6 +165,6 @@ if __name__ == "__main__":
         Path(sys.argv[1]),
         int(sys.argv[2]) if len(sys.argv) > 2 else 3,
         tuple(sys.argv[3:4])
-        if sys.argv[3:4] in (["literal"], ["blanked"], ["comment"])
+        if sys.argv[3:4] in (["literal"], ["blanked"], ["comment"], ["method"])
         else KINDS,
     )

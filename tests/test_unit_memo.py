@@ -790,9 +790,9 @@ def test_a_replay_spends_the_work_a_fresh_check_spends() -> None:
 
 
 def test_the_region_an_edit_changed_is_found_by_halves() -> None:
-    """`skeleton._region` (slices compared by halves) finds what a character
+    """`skeleton.region` (slices compared by halves) finds what a character
     by character walk from both ends finds."""
-    from robotfix.analysis.skeleton import _region
+    from robotfix.analysis.skeleton import region
 
     def walked(x: str, y: str) -> tuple[int, int, int]:
         start = 0
@@ -813,7 +813,7 @@ def test_the_region_an_edit_changed_is_found_by_halves() -> None:
                 y.insert(at, rng.choice("ab\n"))
             else:
                 y[min(at, len(y) - 1)] = rng.choice("ab\n#")
-        assert _region(x, "".join(y)) == walked(x, "".join(y))
+        assert region(x, "".join(y)) == walked(x, "".join(y))
 
 
 @pytest.mark.parametrize("breaks", ["\x0c", "\x1c", "\u2028"])

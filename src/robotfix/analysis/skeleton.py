@@ -56,20 +56,24 @@ def _common(a: str, b: str, bound: int, from_end: bool) -> int:
     return low
 
 
-def _region(before: str, after: str) -> tuple[int, int, int]:
+Region = tuple[int, int, int]
+
+
+def region(before: str, after: str) -> Region:
     """Where two texts differ: the length of their common start, and where the
-    differing part ends in each (the common end follows)."""
+    differing part ends in each (the common end follows). Found once per edit
+    and handed to the tests below (each finds it when not given it)."""
     start = _common(before, after, min(len(before), len(after)), from_end=False)
     bound = min(len(before), len(after)) - start
     tail = _common(before, after, bound, from_end=True)
     return start, len(before) - tail, len(after) - tail
 
 
-def numbers_only(before: str, after: str) -> bool:
+def numbers_only(before: str, after: str, where: Region | None = None) -> bool:
     """Whether the one region where two texts differ holds only characters of
     numbers: otherwise text that `skeleton` keeps as it is changed, and so did
     the skeleton."""
-    start, end, new_end = _region(before, after)
+    start, end, new_end = where or region(before, after)
     if "#" in before[before.rfind("\n", 0, start) + 1 : start]:
         return False  # in a comment (or after a `#` in a string: only slower)
     return _NUMBER_CHARS.issuperset(before[start:end]) and (
@@ -84,7 +88,9 @@ def numbers_only(before: str, after: str) -> bool:
 TEXT_WORDS = ("Annotated", "setattr", ":=", *WORDS)
 
 
-def comment_only(tree: ast.Module, before: str, after: str) -> bool:
+def comment_only(
+    tree: ast.Module, before: str, after: str, where: Region | None = None
+) -> bool:
     """Whether two texts differ in one line only, which holds a comment or blanks
     and nothing else in both, none of `TEXT_WORDS`, and lies between statements
     (`tree` is `after`'s): no expression or simple statement spans it, so nothing
@@ -94,7 +100,7 @@ def comment_only(tree: ast.Module, before: str, after: str) -> bool:
     `\r` (ast counts it as a line break)."""
     if _lone_cr(before) or _lone_cr(after):
         return False
-    start, end, new_end = _region(before, after)
+    start, end, new_end = where or region(before, after)
     changed = (before[start:end], after[start:new_end])
     if changed == ("", "") or any("\n" in c for c in changed):
         return False  # no change, or a line added, removed or split
@@ -170,10 +176,17 @@ def _last(node: ast.stmt | ast.excepthandler) -> int:
     return node.end_lineno or node.lineno
 
 
-def skeleton(tree: ast.Module, lines: list[str]) -> str:
+def skeleton(
+    tree: ast.Module, lines: list[str], also: tuple[int, int, int] | None = None
+) -> str:
     """The module's text with the numeric literals of function bodies blanked where
-    only their own function reads them (see the module docstring)."""
+    only their own function reads them (see the module docstring); `also`: one
+    more number (line, start and end column: `method_number`'s), blanked with its
+    length (only its method's nodes lie on its line), which only that method's
+    items read (their keys hold its text)."""
     spans: dict[int, list[tuple[int, int]]] = {}
+    if also is not None:
+        spans[also[0]] = [(also[1], -also[2])]  # a negative end: length too
     todo: list[ast.AST] = []
     for node in walk(tree):
         # a helper its callers evaluate (`return v / 3.6`) is kept whole
@@ -202,9 +215,12 @@ def skeleton(tree: ast.Module, lines: list[str]) -> str:
             continue
         raw = out[number - 1].encode("utf-8", "surrogatepass")
         for start, end in sorted(columns, reverse=True):
+            whole, end = end < 0, abs(end)
             rest = raw[end:].strip()
             mark = (
-                b"#" if not rest or rest.startswith(b"#") else b"#%d#" % (end - start)
+                b"#"
+                if whole or not rest or rest.startswith(b"#")
+                else b"#%d#" % (end - start)
             )
             raw = raw[:start] + mark + raw[end:]
         out[number - 1] = raw.decode("utf-8", "surrogatepass")
@@ -240,14 +256,87 @@ def _inside(node: ast.AST) -> Sequence[ast.AST]:
     return list(ast.iter_child_nodes(node))
 
 
-def same_skeleton(tree: ast.Module, before: str, after: str) -> bool | None:
+def same_skeleton(
+    tree: ast.Module, before: str, after: str, where: Region | None = None
+) -> bool | None:
     """Whether an edit of numbers only (`numbers_only`) left the skeleton as it
     was, told without making it: True when it changed one number the skeleton
     blanks (and its length, or nothing but a comment follows it), False when
     the number it changed is kept, None when that cannot be told this way."""
+    found = _edited_number(tree, before, after, where)
+    if found is None:
+        return None
+    path, a, b = found
+    number = path[-1]
+    functions = [
+        i
+        for i, n in enumerate(path)
+        if isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef))
+    ]
+    if not functions:
+        return False  # a module's or a class's number: kept
+    function = path[functions[-1]]
+    if (
+        inline.returned(function) is not None
+        or not any(path[functions[-1] + 1] is s for s in function.body)  # type: ignore[attr-defined]
+        or not all(
+            any(child is c for c in _inside(parent))
+            for parent, child in zip(
+                path[functions[-1] + 1 : -1], path[functions[-1] + 2 :], strict=True
+            )
+        )
+    ):
+        return False
+    if not _one_number(number, a, b):
+        return None
+    raw = b.encode()
+    delta = len(a.encode()) - len(raw)
+    rest = raw[number.end_col_offset :].strip()  # type: ignore[attr-defined]
+    return delta == 0 or not rest or rest.startswith(b"#")
+
+
+def method_number(
+    tree: ast.Module, before: str, after: str, where: Region | None = None
+) -> tuple[int, int, int] | None:
+    """Where (line, start and end column in `after`) an edit of numbers only
+    changed one number that lies in the body of a method of a top-level class
+    whose text holds none of `TEXT_WORDS`, and that is no one-expression helper:
+    a number only that method's own items read, whatever its place (see
+    `unitmemo`: the parameter summary reads only functions whose text holds a
+    parameter word; the module phase and the syntactic facts other items ask of
+    a method, `ends` and may-raise, read no number; helpers evaluated at their
+    calls are module-level ones; the type model's answers are asked again).
+    None for any other edit."""
+    found = _edited_number(tree, before, after, where)
+    if found is None or len(found[0]) < 4:
+        return None
+    path = found[0]
+    root, method = path[1], path[2]
+    if not (
+        isinstance(root, ast.ClassDef)
+        and isinstance(method, (ast.FunctionDef, ast.AsyncFunctionDef))
+        and any(method is s for s in root.body)
+        and any(path[3] is s for s in method.body)
+        and inline.returned(method) is None
+    ):
+        return None
+    lines = lines_of(after)
+    text = "".join(lines[first_place(method)[0] - 1 : method.end_lineno])
+    number = path[-1]
+    if any(word in text for word in TEXT_WORDS) or not _one_number(number, *found[1:]):
+        return None
+    return number.lineno, number.col_offset, number.end_col_offset  # type: ignore[attr-defined]
+
+
+def _edited_number(
+    tree: ast.Module, before: str, after: str, where: Region | None
+) -> tuple[list[ast.AST], str, str] | None:
+    """For an edit of numbers only within one line, the nodes from the module
+    down to the one number it changed (`tree` is `after`'s), and the edited
+    line before and after; None when the edit is not of one whole number."""
     if _lone_cr(before) or _lone_cr(after):
         return None  # lines are counted by `\n` here
-    start, stop, new_stop = _region(before, after)
+    start, stop, new_stop = where or region(before, after)
     changed = (before[start:stop], after[start:new_stop])
     if changed == ("", "") or any("\n" in c for c in changed):
         return None
@@ -272,36 +361,19 @@ def same_skeleton(tree: ast.Module, before: str, after: str) -> bool | None:
     number = path[-1]
     if not _blanked(number) or type(number.value) is bool:  # type: ignore[attr-defined]
         return None
-    functions = [
-        i
-        for i, n in enumerate(path)
-        if isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef))
-    ]
-    if not functions:
-        return False  # a module's or a class's number: kept
-    function = path[functions[-1]]
-    if (
-        inline.returned(function) is not None
-        or not any(path[functions[-1] + 1] is s for s in function.body)  # type: ignore[attr-defined]
-        or not all(
-            any(child is c for c in _inside(parent))
-            for parent, child in zip(
-                path[functions[-1] + 1 : -1], path[functions[-1] + 2 :], strict=True
-            )
-        )
-    ):
-        return False
-    raw = b.encode()
-    delta = len(a.encode()) - len(raw)
+    return path, a, b
+
+
+def _one_number(number: ast.AST, a: str, b: str) -> bool:
+    """Whether the text `number` replaced on its line (`a` before, `b` after)
+    was one number too (not `1+2` made `12`)."""
+    delta = len(a.encode()) - len(b.encode())
     was = a.encode()[number.col_offset : number.end_col_offset + delta].decode()  # type: ignore[attr-defined]
     try:
         parsed = ast.parse(was, mode="eval").body
     except SyntaxError:
-        return None
-    if not _blanked(parsed) or type(parsed.value) is bool:  # type: ignore[attr-defined]
-        return None  # it was more than one number (`1+2` made `12`)
-    rest = raw[number.end_col_offset :].strip()  # type: ignore[attr-defined]
-    return delta == 0 or not rest or rest.startswith(b"#")
+        return False
+    return _blanked(parsed) and type(parsed.value) is not bool  # type: ignore[attr-defined]
 
 
 _KEPT = (

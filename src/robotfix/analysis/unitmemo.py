@@ -23,7 +23,13 @@ Key of an item (`Check.analyze`):
   module phase (index, constants, module body, `collect`, statics) reads function
   bodies only syntactically through names, calls and attribute stores, and a body's
   analysis reads other functions only through their signatures (def headers) and
-  syntactic facts (`ends`, may-raise: statements, not numbers);
+  syntactic facts (`ends`, may-raise: statements, not numbers). After an edit of
+  a kept number in a method whose text holds none of `TEXT_WORDS`
+  (`skeleton.method_number`), the skeleton with it blanked keys the check (a
+  `_METHOD` base): other items read it only through the type model (asked
+  again) or what its method's items wrote, so every key of such a check holds
+  every item before it that wrote (`_all`), and an item outside every
+  statement turns the memo off;
 - the exact text, with its first line number, of the top-level statement holding
   the item, and the item's position in it; for an item of a method of a
   top-level class (a node's callbacks share their class), the method's own text
@@ -37,7 +43,8 @@ Key of an item (`Check.analyze`):
   reads other functions' bodies (what a function returns, what `self.x` is
   assigned; `t[1]` of a tuple is a number the skeleton blanks), so the questions
   are logged with their answers while the item runs (`unitreads.Reads`) and asked again,
-  in their order, before a replay (`unitreads.same_reads`);
+  in their order, before a replay (`unitreads.same_reads`; an answer the model
+  keeps once asked is taken from an earlier replay of the same check);
 - the identities of the catalog, the stubs and the discharger's kind (a change
   clears the memo), and what the resolver answered so far (`consulted`: every
   imported module and member with its fingerprint); what the item itself resolved
@@ -107,7 +114,9 @@ from robotfix.analysis.skeleton import (
     comment_only,
     first_place,
     lines_of,
+    method_number,
     numbers_only,
+    region,
     same_skeleton,
     skeleton,
 )
@@ -121,6 +130,9 @@ if TYPE_CHECKING:
     from robotfix.diagnostics import Diagnostic
 
 MAX_ENTRIES = 4_000  # items per document
+# the start of a base made with a kept number blanked (`method_number`): its
+# checks key every item with what every item before it that wrote was
+_METHOD = "method:"
 
 Run = Callable[[ast.AST, Scope], list[tuple[ast.AST, Scope]]]
 Prologue = Callable[[ast.AST, Scope], tuple[Scope, Any]]
@@ -150,6 +162,8 @@ class UnitMemo:
         self._bases: dict[str, int] = {}  # skeleton digest -> its items in the table
         self._last = ""  # the skeleton digest of the check before ("": not made)
         self._text: str | None = None  # the text of the check before
+        # where the number `_last` was made without is in that text (`method_number`)
+        self._also: tuple[int, int, int] | None = None
         self.hits = 0
         self.misses = 0
 
@@ -190,29 +204,46 @@ class UnitMemo:
         text, before = ctx.source.text, self._text
         self._text = text
         same: bool | None = None
+        also = None  # a kept number only its method's items read (`method_number`)
         if before is not None:
-            if numbers_only(before, text):
+            where = region(before, text)  # found once, asked by each test below
+            if numbers_only(before, text, where):
                 # one number changed: whether the skeleton did is told from where
                 # it is (on a 791-line node making the skeleton takes 4 ms); a kept
                 # number changed it, so no item can hit (but in a skeleton checked
-                # before)
-                same = same_skeleton(tree, before, text)
+                # before), unless only its method's items read it: then the
+                # skeleton with it blanked keys the items (a base of its own,
+                # `_METHOD`, where every key holds every item that wrote)
+                same = same_skeleton(tree, before, text, where)
+                if same is False:
+                    also = method_number(tree, before, text, where)
+                    same = None if also is not None else False
             else:
                 # a comment line between statements: the skeleton counts as the
                 # one before (no analysis reads it; the items whose text holds it
                 # are keyed by that text)
-                same = comment_only(tree, before, text) or False
+                same = comment_only(tree, before, text, where) or False
         if same is False:
-            self._last = ""
+            self._last, self._also = "", None
             return None
         lines = lines_of(text)  # as ast numbers them
         if same and self._last:
-            base = self._last
+            base = self._last  # and the number `_also` is where it was
+        elif (
+            also is not None
+            and self._also is not None
+            and self._last.startswith(_METHOD)
+            and self._also == (*also[:2], also[2] + len(before) - len(text))  # type: ignore[arg-type]
+        ):
+            base = self._last  # the same number edited again: blanked in both
+            self._also = also
         else:
-            base = hashlib.sha1(skeleton(tree, lines).encode()).hexdigest()
+            made = hashlib.sha1(skeleton(tree, lines, also).encode()).hexdigest()
+            base = made if also is None else _METHOD + made
+            self._also = also
         last, self._last = self._last, base
-        if base != last and base not in self._bases:
-            return None
+        if base != last and base not in self._bases and also is None:
+            return None  # (a number typed in a method is likely typed again)
         return Check(self, ctx, program, tree, statics, lines, base)
 
     def get(self, key: tuple[object, ...]) -> Record | None:
@@ -275,6 +306,13 @@ class Check:
         # per top-level class: what its items not kept, run so far, were (`_wrote`)
         self._writers: dict[int, tuple[object, ...]] = {}
         self._whole = False  # an item outside every statement ran: no unit keys
+        # a base with a kept number blanked (`method_number`): what that number is
+        # may reach any later item through what its method's items wrote, so
+        # every key holds every item that wrote so far (`_wrote`), and an item
+        # outside every statement turns the memo off
+        self.method_edit = base.startswith(_METHOD)
+        self._answered: dict[tuple[object, ...], object] = {}  # `same_reads`
+        self._all: tuple[object, ...] = ()
         # symbols made by the module phase: the same for the same skeleton
         ctx.unit_base = ctx._next
 
@@ -328,7 +366,9 @@ class Check:
             if text is None:
                 text = self._unit_text[id(unit)] = self._text(unit)
             writers = self._writers.get(index, ())
-            return (self.base, text, _locator(node), _resolver_state(self.ctx), writers)
+            where, state = _locator(node), _resolver_state(self.ctx)
+            found = (self.base, text, where, state, writers)
+            return (*found, self._all) if self.method_edit else found
         root = self.roots[index]
         # the class body, and an item of it outside its methods, by the class's
         # text but its methods' bodies; a method (`_whole`) by the whole text
@@ -337,7 +377,8 @@ class Check:
         if text is None:
             text = self._class_text(root) if body else self._text(root)  # type: ignore[arg-type]
             self._root_text[(index, body)] = text
-        return (self.base, text, _locator(node), _resolver_state(self.ctx))
+        key = (self.base, text, _locator(node), _resolver_state(self.ctx))
+        return (*key, self._all) if self.method_edit else key
 
     def _class_text(self, root: ast.ClassDef) -> str:
         """The text keying a class body's item: the class's lines but its methods'
@@ -369,9 +410,12 @@ class Check:
         resolver answered are in their keys already)."""
         if index is None or key is None:
             self._whole = True
-        elif isinstance(self.roots[index], ast.ClassDef):
-            entry = (key[1], key[2], reads)
+            return
+        entry = (key[1], key[2], reads)
+        if isinstance(self.roots[index], ast.ClassDef):
             self._writers[index] = (*self._writers.get(index, ()), entry)
+        if self.method_edit:
+            self._all = (*self._all, entry)
 
     # -- one item ------------------------------------------------------------
     def analyze(
@@ -380,7 +424,7 @@ class Check:
         scope, function = prologue(node, parent)
         ctx = self.ctx
         index = self._root(node)
-        if index is None or ctx.muted:
+        if index is None or ctx.muted or (self._whole and self.method_edit):
             self._wrote(index, None if index is None else self._key(node, index), None)
             return run(node, parent, scope, function)  # type: ignore[no-any-return]
         key = self._key(node, index)
@@ -422,7 +466,7 @@ class Check:
                 spawned.append((found, scope if own else parent))
         if record.consulted and not _still(ctx, record.consulted):
             return None
-        if record.reads and not same_reads(self.program, record.reads):
+        if record.reads and not same_reads(self.program, record.reads, self._answered):
             return None
         signed = [self.program.functions.get(k) for k in record.signed]
         if any(f is None or f.scope is not None for f in signed):

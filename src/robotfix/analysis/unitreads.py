@@ -73,13 +73,30 @@ def _qualnames(classes: list[stubs.Class]) -> tuple[str, ...]:
     return tuple(c.qualname for c in classes)
 
 
+# questions whose answer the model keeps once asked (`TypeModel._attributes`,
+# `_returns` of a function of the file, `_library_bases`): asking one again
+# within a check gives the kept answer and fills nothing
+_KEPT = frozenset({"attribute", "returns", "library_bases"})
+_UNASKED = object()
+
+
 def same_reads(
-    program: Program, reads: tuple[tuple[tuple[object, ...], object], ...]
+    program: Program,
+    reads: tuple[tuple[tuple[object, ...], object], ...],
+    answered: dict[tuple[object, ...], object],
 ) -> bool:
     """Whether the type model answers an item's logged questions alike now (asked
-    in their order, as its run asked them)."""
+    in their order, as its run asked them). `answered`: what the model answered
+    so far in this check to the questions whose answers it keeps (`_KEPT`),
+    taken from there instead of asked again (items of a node ask the same ones:
+    `library_bases` of the node's class at every `self.x`)."""
     model = program.types
     for question, answer in reads:
+        known = answered.get(question, _UNASKED)
+        if known is not _UNASKED:
+            if known != answer:
+                return False
+            continue
         kind = question[0]
         if kind in ("infer", "parameter"):
             function = program.functions.get(str(question[1]))
@@ -96,6 +113,8 @@ def same_reads(
             found = model.attribute(str(question[1]), str(question[2]))
         else:
             found = _qualnames(model.library_bases(str(question[1])))
+        if kind in _KEPT and (kind != "returns" or question[1] in program.functions):
+            answered[question] = found  # (a function not made yet is not kept)
         if found != answer:
             return False
     return True
