@@ -212,14 +212,14 @@ def _check_without_solver(vc: VC, budget: Budget | None) -> Verdict | None:
     if found is None:
         return None
     probes = tuple(shown.exact(value_at(probe, found)) for probe in vc.probes)
+    if None in probes:
+        return None
     syms: list[tuple[int, str]] = []
     for sym in sorted(found, key=lambda sym: sym.ident):
         text = shown.exact(found[sym])
         if text is None:
             return None
         syms.append((sym.ident, text))
-    if None in probes:
-        return None
     kept = [*vc.facts, vc.goal]
     if holds_somewhere(kept, budget, most=CHECK_WORK):
         return Unproven(probes, tuple(syms))

@@ -349,20 +349,20 @@ def _assign(
 def closed_value(expr: A.Expr) -> Fraction | bool | None:
     """The exact value of a term without names or symbols (`10 <= 0`), as the
     solver gives it; None for anything else."""
-    for node in A.walk(expr):
-        if isinstance(node, A.Num):
-            if abs(node.value.numerator) > _LIMIT or node.value.denominator > _LIMIT:
-                return None
-        elif not isinstance(node, (A.Bool, A.Unary, A.Binary, A.Func, A.Ite)):
-            return None
-    found = _value(expr, {})
+    found = _exact(expr, {})
     return None if isinstance(found, str) else found
 
 
 def value_at(term: A.Expr, values: dict[A.Sym, Scalar]) -> Value:
     """The exact value of `term` where its solver symbols take `values` (a
-    counterexample's probe), as the solver gives it; None where `closed_value`
-    would give none."""
+    counterexample's probe), as the solver gives it; None where a symbol has no
+    value or `closed_value` would give none."""
+    return _exact(term, {sym: value for sym, value in values.items()})
+
+
+def _exact(term: A.Expr, values: Values) -> Value:
+    """`_value`, once every node of `term` is one the solver reads as written: no
+    names, no number beyond `_LIMIT`, no symbol without a value."""
     for node in A.walk(term):
         if isinstance(node, A.Num):
             if abs(node.value.numerator) > _LIMIT or node.value.denominator > _LIMIT:
@@ -372,8 +372,7 @@ def value_at(term: A.Expr, values: dict[A.Sym, Scalar]) -> Value:
                 return None
         elif not isinstance(node, (A.Bool, A.Unary, A.Binary, A.Func, A.Ite)):
             return None
-    known: Values = {sym: value for sym, value in values.items()}
-    return _value(term, known)
+    return _value(term, values)
 
 
 def _fits(value: object, sort: str) -> bool:

@@ -14,6 +14,7 @@ given (`robotfix.budget`).
 from __future__ import annotations
 
 import itertools
+import operator
 from fractions import Fraction
 from typing import Any
 
@@ -165,11 +166,7 @@ def _exclusions(atoms: dict[object, int]) -> list[Formula]:
 # The comparisons an atom may be (`NEGATED` leaves no other), and the same with
 # its sides swapped. Between and beyond two constants every real number compares
 # with both as one of the five points tried does.
-_BOUNDS = {
-    "==": lambda x, c: x == c,
-    "<": lambda x, c: x < c,
-    ">": lambda x, c: x > c,
-}
+_BOUNDS = {"==": operator.eq, "<": operator.lt, ">": operator.gt}
 _MIRRORED = {"==": "==", "<": ">", ">": "<"}
 _TRUTHS = ((True, True), (True, False), (False, True), (False, False))
 
