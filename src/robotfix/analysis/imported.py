@@ -90,6 +90,11 @@ class Resolver(Protocol):
         """Note that the member `name` of `summary` (asked for as `module`) was
         looked up: what was read of it decides the result."""
 
+    @property
+    def resolved(self) -> dict[str, Imported | None]:
+        """What each dotted name stands for, kept by `resolve` (the analysis asks
+        most names again: 7 of 10 on real code, each failing prefix a lookup)."""
+
 
 def absolute(package: str | None, level: int, module: str | None) -> str | None:
     """`from ..limits import X` in package `a.b.c` -> `a.b.limits`; None when the
@@ -136,11 +141,7 @@ def resolve(resolver: Resolver | None, qualified: str) -> Imported | None:
     (Stubs of libraries outside the tree would be asked here, after the tree.)"""
     if resolver is None or not qualified:
         return None
-    # a file's resolver keeps each answer (`FileResolver.resolved`): the analysis
-    # asks most names again (7 of 10 on real code), each failing prefix a lookup
-    memo: dict[str, Imported | None] | None = getattr(resolver, "resolved", None)
-    if memo is None:
-        return _resolve(resolver, qualified, 0)
+    memo = resolver.resolved
     if qualified not in memo:
         memo[qualified] = _resolve(resolver, qualified, 0)
     return memo[qualified]
