@@ -231,11 +231,11 @@ class UnitMemo:
             base = self._last  # and the number `_also` is where it was
         elif (
             also is not None
-            and self._also is not None
-            and self._last.startswith(_METHOD)
             and self._also == (*also[:2], also[2] + len(before) - len(text))  # type: ignore[arg-type]
         ):
-            base = self._last  # the same number edited again: blanked in both
+            # the same number edited again: blanked in both (`_also` is set just
+            # when `_last` is a `_METHOD` base)
+            base = self._last
             self._also = also
         else:
             made = hashlib.sha1(skeleton(tree, lines, also).encode()).hexdigest()
