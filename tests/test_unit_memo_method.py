@@ -53,6 +53,15 @@ def test_a_number_in_a_call_edited_in_a_method_replays_the_others(
         ("    @d(1.5)\n    def f(self):\n        g(2)\n", "1.5", False),
         # the class body's own number, a module-level function's
         ("    rate = g(1.5)\n", "1.5", False),
+        # a return annotation (a def header), more than one number made one
+        ("    def f(self) -> g(1.5):\n        g(2)\n        return 2\n", "1.5", False),
+        ("    def f(self):\n        g(1+2)\n", "1+2", False),
+        # a function nested in a module-level function (no method)
+        (
+            "    pass\n\n\ndef k():\n    def f():\n        g(1.5)\n        return 2\n",
+            "1.5",
+            False,
+        ),
     ],
 )
 def test_a_number_only_its_method_reads(source: str, edited: str, found: bool) -> None:

@@ -315,7 +315,6 @@ def method_number(
     if not (
         isinstance(root, ast.ClassDef)
         and isinstance(method, (ast.FunctionDef, ast.AsyncFunctionDef))
-        and any(method is s for s in root.body)
         and any(path[3] is s for s in method.body)
         and inline.returned(method) is None
     ):

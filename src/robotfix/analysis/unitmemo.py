@@ -231,11 +231,11 @@ class UnitMemo:
             base = self._last  # and the number `_also` is where it was
         elif (
             also is not None
-            and self._also is not None
-            and self._last.startswith(_METHOD)
             and self._also == (*also[:2], also[2] + len(before) - len(text))  # type: ignore[arg-type]
         ):
-            base = self._last  # the same number edited again: blanked in both
+            # the same number edited again: blanked in both (`_also` is set just
+            # when `_last` is a `_METHOD` base)
+            base = self._last
             self._also = also
         else:
             made = hashlib.sha1(skeleton(tree, lines, also).encode()).hexdigest()
@@ -356,6 +356,7 @@ class Check:
         return method if where <= end else None
 
     def _key(self, node: ast.AST, index: int) -> tuple[object, ...]:
+        key: tuple[object, ...]
         unit = self._unit(node, index)
         if unit is not None:
             # the method's own text; its siblings' bodies are read through the
@@ -366,18 +367,17 @@ class Check:
             if text is None:
                 text = self._unit_text[id(unit)] = self._text(unit)
             writers = self._writers.get(index, ())
-            where, state = _locator(node), _resolver_state(self.ctx)
-            found = (self.base, text, where, state, writers)
-            return (*found, self._all) if self.method_edit else found
-        root = self.roots[index]
-        # the class body, and an item of it outside its methods, by the class's
-        # text but its methods' bodies; a method (`_whole`) by the whole text
-        body = isinstance(root, ast.ClassDef) and (node is root or not self._whole)
-        text = self._root_text.get((index, body))
-        if text is None:
-            text = self._class_text(root) if body else self._text(root)  # type: ignore[arg-type]
-            self._root_text[(index, body)] = text
-        key = (self.base, text, _locator(node), _resolver_state(self.ctx))
+            key = (self.base, text, _locator(node), _resolver_state(self.ctx), writers)
+        else:
+            root = self.roots[index]
+            # the class body, and an item of it outside its methods, by the class's
+            # text but its methods' bodies; a method (`_whole`) by the whole text
+            body = isinstance(root, ast.ClassDef) and (node is root or not self._whole)
+            text = self._root_text.get((index, body))
+            if text is None:
+                text = self._class_text(root) if body else self._text(root)  # type: ignore[arg-type]
+                self._root_text[(index, body)] = text
+            key = (self.base, text, _locator(node), _resolver_state(self.ctx))
         return (*key, self._all) if self.method_edit else key
 
     def _class_text(self, root: ast.ClassDef) -> str:
