@@ -7,7 +7,7 @@ whose common prefix is shared, so a join only has to disjoin what the branches a
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Protocol
 
@@ -220,18 +220,18 @@ def join(a: State, b: State, joiner: Joiner) -> State:
         )
         return MaybeDefault(when, known.default, known.owner)
 
+    tests = a.tests[: _common(a.tests, b.tests)]  # the decisions before the split
+    early: list[frozenset[int]] = []
+
     def common_tests() -> frozenset[int]:
-        shared = 0
-        while (
-            shared < min(len(a.tests), len(b.tests))
-            and a.tests[shared] is b.tests[shared]
-        ):
-            shared += 1
-        return frozenset(one[0] for one in a.tests[:shared])
+        if not early:
+            early.append(frozenset(one[0] for one in tests))
+        return early[0]
 
     env: dict[str, Binding] = {}
+    get_a, get_b = a.env.get, b.env.get
     for name in sorted(a.env.keys() | b.env.keys()):
-        x, y = a.env.get(name), b.env.get(name)
+        x, y = get_a(name), get_b(name)
         if x is y:
             env[name] = x  # type: ignore[assignment]
         elif isinstance(x, Value) and isinstance(y, Value):
@@ -261,12 +261,6 @@ def join(a: State, b: State, joiner: Joiner) -> State:
             versions[term] = max(versions.get(term, 0), version) + 1
     defined = a.defined & b.defined if a.defined and b.defined else None
     exits = max(a.exits, b.exits)
-    shared = 0
-    while (
-        shared < min(len(a.tests), len(b.tests)) and a.tests[shared] is b.tests[shared]
-    ):
-        shared += 1
-    tests = a.tests[:shared]
     return State(env, heap, facts, True, versions, defined, a.shared, exits, tests)
 
 
@@ -601,8 +595,11 @@ def _renamed(b: State, name: str, pairs: dict[int, int], drop: set[int]) -> Stat
     )
 
 
-def _common(a: list[A.Expr], b: list[A.Expr]) -> int:
+def _common(a: Sequence[object], b: Sequence[object]) -> int:
+    """The length of the prefix `a` and `b` share (the same objects)."""
     common = 0
-    while common < min(len(a), len(b)) and a[common] is b[common]:
+    for x, y in zip(a, b, strict=False):
+        if x is not y:
+            break
         common += 1
     return common
