@@ -115,8 +115,11 @@ class PathWalker(Binder):
         todo: list[ast.AST] = [*reversed(nodes)]  # `walk` of each node in turn
         while todo:
             child = todo.pop()
-            todo.extend(children(child))
             kind = type(child)
+            if kind is ast.Constant:
+                continue
+            if kind is not ast.Name:  # a name has no children
+                todo.extend(children(child))
             if kind is ast.Name:
                 bound = get(child.id)  # type: ignore[attr-defined]
                 if isinstance(bound, Value) and bound.ref is not None:
