@@ -280,8 +280,13 @@ class PathWalker(Binder):
         """A list of a known length on each path (`hits = []`, `hits = [r]`): one
         length symbol, equal to each on its path, so that a later `if hits:` agrees
         with the path that filled it."""
-        for name in sorted(a.env.keys() & b.env.keys()):
-            x, y = a.env[name], b.env[name]
+        differ = [
+            name
+            for name, x in a.env.items()
+            if isinstance(x, Value) and x.kind == "list" and b.env.get(name) is not x
+        ]
+        for name in sorted(differ):
+            x, y = a.env[name], b.env.get(name)
             if (
                 not isinstance(x, Value)
                 or not isinstance(y, Value)
