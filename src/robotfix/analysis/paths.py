@@ -107,7 +107,10 @@ class PathWalker(Binder):
         stores: list[ast.Name] = []
         watched = state.shared.watched  # only their changes need a new version
         bound_at: dict[str, ast.AST] = {}
-        constant: dict[str, set[str]] = {}
+        # the assignments, whose constants (`constant_stores`) are read only if a
+        # name they bind held a number, a bool or a string
+        assigns: list[ast.Assign | ast.AugAssign] = []
+        constant: dict[str, set[str]] | None = None
         other_binders: set[str] = set()  # bound otherwise than by `=` or `op=`
         assigned: set[int] = set()  # the name nodes `=` and `op=` bind
         objects: dict[str, int] = {}  # names of messages that `nodes` mention
@@ -155,7 +158,7 @@ class PathWalker(Binder):
                     for arg in [*call.args, *call.keywords]:
                         self._changed_root(arg, state)
             elif kind is ast.Assign or kind is ast.AugAssign:
-                constant_stores(child, constant, self.statics)  # type: ignore[arg-type]
+                assigns.append(child)  # type: ignore[arg-type]
                 assigned.update(map(id, assign_targets(child)))  # type: ignore[arg-type]
                 note_sum(child, summed, sum_targets)
             elif kind in BINDER_KINDS:
@@ -181,11 +184,19 @@ class PathWalker(Binder):
                 continue
             decl = self.decl_for(name)
             before = state.env.get(name)
+            keeps = KEEPS.get(before.kind) if isinstance(before, Value) else None
+            if keeps and decl is None and constant is None:  # once, when first asked
+                constant = {}
+                for assign in assigns:
+                    constant_stores(assign, constant, self.statics)
             if decl is not None:
                 lookup = self.refinement_lookup(decl, state)
                 state.env[name] = self.refined.assumed(state, name, decl, lookup)
-            elif isinstance(before, Value) and constant.get(name, {"?"}) <= KEEPS.get(
-                before.kind, set()
+            elif (
+                isinstance(before, Value)
+                and keeps
+                and constant is not None
+                and constant.get(name, {"?"}) <= keeps
             ):
                 kept = self.unknown(child, before.kind, before.unit)
                 # a literal set to literals only (`z = 0.0`, then `z = table[k][1]`)
