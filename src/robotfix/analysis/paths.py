@@ -18,7 +18,7 @@ from robotfix.analysis import containers, decisions, heap, writes
 from robotfix.analysis.binder import Binder
 from robotfix.analysis.calls import MUTATORS
 from robotfix.analysis.program import attribute_key
-from robotfix.analysis.state import State, join
+from robotfix.analysis.state import State, join, rebound
 from robotfix.analysis.stmtsyntax import (
     BINDER_KINDS,
     KEEPS,
@@ -291,12 +291,7 @@ class PathWalker(Binder):
         """A list of a known length on each path (`hits = []`, `hits = [r]`): one
         length symbol, equal to each on its path, so that a later `if hits:` agrees
         with the path that filled it."""
-        differ = [
-            name
-            for name, x in a.env.items()
-            if isinstance(x, Value) and x.kind == "list" and b.env.get(name) is not x
-        ]
-        for name in sorted(differ):
+        for name in rebound(a, b, "list"):
             x, y = a.env[name], b.env.get(name)
             if (
                 not isinstance(x, Value)

@@ -452,6 +452,15 @@ def _either(
     return A.conjoin([fact for _, fact in defines] + [result])
 
 
+def rebound(a: State, b: State, kind: str) -> list[str]:
+    """The names `a` binds to a value of `kind` that `b` binds otherwise, sorted."""
+    return sorted(
+        name
+        for name, x in a.env.items()
+        if isinstance(x, Value) and x.kind == kind and b.env.get(name) is not x
+    )
+
+
 def _one_message(a: State, b: State, joiner: Joiner) -> State:
     """A name bound to a different message of one type on each path (`twist =
     Twist()`, and on one branch `twist = go_straight(1.0)`): when nothing else on
@@ -460,12 +469,7 @@ def _one_message(a: State, b: State, joiner: Joiner) -> State:
     message set on both paths). Otherwise the name is unknown after the join."""
     if not a.heap or not b.heap:
         return b
-    differ = [
-        name
-        for name, x in a.env.items()
-        if isinstance(x, Value) and x.kind == "msg" and b.env.get(name) is not x
-    ]
-    for name in sorted(differ):
+    for name in rebound(a, b, "msg"):
         x, y = a.env[name], b.env.get(name)
         if (
             isinstance(x, Value)
