@@ -114,6 +114,7 @@ class PathWalker(Binder):
         other_binders: set[str] = set()  # bound otherwise than by `=` or `op=`
         assigned: set[int] = set()  # the name nodes `=` and `op=` bind
         objects: dict[str, int] = {}  # names of messages that `nodes` mention
+        looked: set[str] = set()  # the names whose binding was looked at
         get = state.env.get
         todo: list[ast.AST] = [*reversed(nodes)]  # `walk` of each node in turn
         while todo:
@@ -124,15 +125,18 @@ class PathWalker(Binder):
             if kind is not ast.Name:  # a name has no children
                 todo.extend(children(child))
             if kind is ast.Name:
-                bound = get(child.id)  # type: ignore[attr-defined]
-                if isinstance(bound, Value) and bound.ref is not None:
-                    objects.setdefault(child.id, bound.ref)  # type: ignore[attr-defined]
-                elif isinstance(bound, Value) and bound.kind == "list":
-                    lists.add(child.id)  # type: ignore[attr-defined]
+                name: str = child.id  # type: ignore[attr-defined]
+                if name not in looked:  # (the walk pops dotted keys only)
+                    looked.add(name)
+                    bound = get(name)
+                    if isinstance(bound, Value) and bound.ref is not None:
+                        objects[name] = bound.ref
+                    elif isinstance(bound, Value) and bound.kind == "list":
+                        lists.add(name)
                 if type(child.ctx) is not ast.Load:  # type: ignore[attr-defined]
-                    bound_at.setdefault(child.id, child)  # type: ignore[attr-defined]
+                    bound_at.setdefault(name, child)
                     if id(child) not in assigned:
-                        other_binders.add(child.id)  # type: ignore[attr-defined]
+                        other_binders.add(name)
                     if type(child.ctx) is ast.Store:  # type: ignore[attr-defined]
                         stores.append(child)  # type: ignore[arg-type]
             elif kind is ast.Attribute:
