@@ -84,7 +84,7 @@ class State:
     def fork(self) -> State:
         return State(
             dict(self.env),
-            {k: v.copy() for k, v in self.heap.items()},
+            {k: v.copy() for k, v in self.heap.items()} if self.heap else {},
             list(self.facts),
             self.reachable,
             dict(self.versions) if self.versions else None,
