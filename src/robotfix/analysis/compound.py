@@ -18,6 +18,7 @@ from robotfix.analysis.paths import PathWalker
 from robotfix.analysis.state import MAYBE, MaybeUnbound, State
 from robotfix.analysis.stmtsyntax import (
     PLAIN,
+    accumulated,
     bound_before_raising,
     cannot_raise,
     catches_name_error,
@@ -73,12 +74,13 @@ class CompoundWalker(PathWalker):
     def visit_While(self, node: ast.While, state: State) -> State:
         entry = state
         loop = entry.fork()
-        stored = self.havoc(loop, [iteration_of(node)], loop=True)
+        iteration = iteration_of(node)
+        stored, summed = self.havoc_sums(loop, [iteration], loop=True)
         body_state = loop.fork()
         body_state.assume(self.condition(node.test, body_state))
         self._decided(node.test, body_state, loop)
         end = self._iterate(node.body, body_state)
-        self._loop_units(loop, end, [node])
+        self._loop_units(loop, end, self._summed(node, iteration, summed))
         breaks = has_break(node.body)
         first: list[State] = []
         if self._first_may_break(node.body, breaks, stored, entry):
@@ -115,7 +117,8 @@ class CompoundWalker(PathWalker):
         empty, nonempty, iterable = self._empty_when(node.iter, state)
         entry = state
         loop = entry.fork()
-        stored = self.havoc(loop, [iteration_of(node)], loop=True)
+        iteration = iteration_of(node)
+        stored, summed = self.havoc_sums(loop, [iteration], loop=True)
         body_state = loop.fork()
         body_state.assume(nonempty)  # an iteration: the iterable had an element
         if empty is None:
@@ -127,7 +130,7 @@ class CompoundWalker(PathWalker):
                     body_state.env[name] = MAYBE
         self._bind_element(node, iterable, body_state)
         end = self._iterate(node.body, body_state)
-        self._loop_units(loop, end, [node])
+        self._loop_units(loop, end, self._summed(node, iteration, summed))
         breaks = has_break(node.body)
         first: list[State] = []
         if self._first_may_break(node.body, breaks, stored, entry):
@@ -152,6 +155,13 @@ class CompoundWalker(PathWalker):
         if failed is not None:
             normal = self._join(failed, normal)
         return self._after_loop(node, normal, loop, breaks, first)
+
+    def _summed(
+        self, node: ast.stmt, iteration: ast.stmt, summed: set[str]
+    ) -> set[str]:
+        """`accumulated([node])`: `summed`, what havoc found of the loop without
+        its `else`, unless it has one."""
+        return summed if iteration is node else accumulated([node])
 
     def _bind_element(
         self, node: ast.For | ast.AsyncFor, iterable: Value | None, state: State

@@ -18,12 +18,11 @@ from robotfix.analysis import containers, decisions, heap, writes
 from robotfix.analysis.binder import Binder
 from robotfix.analysis.calls import MUTATORS
 from robotfix.analysis.program import attribute_key
-from robotfix.analysis.state import State, join
+from robotfix.analysis.state import State, join, rebound
 from robotfix.analysis.stmtsyntax import (
     BINDER_KINDS,
     KEEPS,
     WHOLE,
-    accumulated,
     assign_targets,
     bound_by,
     constant_stores,
@@ -40,7 +39,7 @@ from robotfix.analysis.values import (
     replace,
 )
 from robotfix.annotations import ast as A
-from robotfix.astwalk import walk
+from robotfix.astwalk import children, walk
 
 
 class PathWalker(Binder):
@@ -67,12 +66,12 @@ class PathWalker(Binder):
             return self.unknown(node, unit=found.unit)
         return replace(self.unknown(node), literal=True)
 
-    def _loop_units(self, loop: State, end: State, nodes: list[ast.stmt]) -> None:
+    def _loop_units(self, loop: State, end: State, summed: set[str]) -> None:
         """A sum that started as a literal (`total = 0.0`) takes, after the loop,
-        the unit its body gave it."""
+        the unit its body gave it (`summed`: the loop's `accumulated` names)."""
         if not end.reachable:
             return
-        for name in accumulated(nodes):
+        for name in summed:
             value, found = loop.env.get(name), end.env.get(name)
             if (
                 isinstance(value, Value)
@@ -87,13 +86,19 @@ class PathWalker(Binder):
     def havoc(
         self, state: State, nodes: list[ast.stmt], loop: bool = False
     ) -> set[str]:
+        return self.havoc_sums(state, nodes, loop)[0]
+
+    def havoc_sums(
+        self, state: State, nodes: list[ast.stmt], loop: bool = False
+    ) -> tuple[set[str], set[str]]:
         """Forget what `nodes` may write: bound names and mentioned messages. A
         name only ever set to constants of the kind it has keeps that kind (a flag
         stays a bool), so that tests of it agree with what was set. A loop that
         calls anything (`rospy.sleep`, `spin_once`) lets callbacks run: the node's
         attributes and the globals that functions set may change there too.
         What lists they change (`xs.append(v)`, `xs[i] = v`) hold is forgotten.
-        Returns the names they may bind."""
+        Returns the names they may bind, and `accumulated(nodes)` (read by the
+        same walk)."""
         calls = False
         lists: set[str] = set()  # names of lists that `nodes` mention
         # what `accumulated(nodes)` reads, gathered by the walk below
@@ -102,55 +107,68 @@ class PathWalker(Binder):
         stores: list[ast.Name] = []
         watched = state.shared.watched  # only their changes need a new version
         bound_at: dict[str, ast.AST] = {}
-        constant: dict[str, set[str]] = {}
+        # the assignments, whose constants (`constant_stores`) are read only if a
+        # name they bind held a number, a bool or a string
+        assigns: list[ast.Assign | ast.AugAssign] = []
+        constant: dict[str, set[str]] | None = None
         other_binders: set[str] = set()  # bound otherwise than by `=` or `op=`
         assigned: set[int] = set()  # the name nodes `=` and `op=` bind
         objects: dict[str, int] = {}  # names of messages that `nodes` mention
-        for node in nodes:
-            for child in walk(node):
-                kind = type(child)
-                if kind is ast.Name:
-                    bound = state.env.get(child.id)  # type: ignore[attr-defined]
+        looked: set[str] = set()  # the names whose binding was looked at
+        get = state.env.get
+        todo: list[ast.AST] = [*reversed(nodes)]  # `walk` of each node in turn
+        while todo:
+            child = todo.pop()
+            kind = type(child)
+            if kind is ast.Constant:
+                continue
+            if kind is not ast.Name:  # a name has no children
+                todo.extend(children(child))
+            if kind is ast.Name:
+                name: str = child.id  # type: ignore[attr-defined]
+                if name not in looked:  # (the walk pops dotted keys only)
+                    looked.add(name)
+                    bound = get(name)
                     if isinstance(bound, Value) and bound.ref is not None:
-                        objects.setdefault(child.id, bound.ref)  # type: ignore[attr-defined]
+                        objects[name] = bound.ref
                     elif isinstance(bound, Value) and bound.kind == "list":
-                        lists.add(child.id)  # type: ignore[attr-defined]
-                    if type(child.ctx) is not ast.Load:  # type: ignore[attr-defined]
-                        bound_at.setdefault(child.id, child)  # type: ignore[attr-defined]
-                        if id(child) not in assigned:
-                            other_binders.add(child.id)  # type: ignore[attr-defined]
-                        if type(child.ctx) is ast.Store:  # type: ignore[attr-defined]
-                            stores.append(child)  # type: ignore[arg-type]
-                elif kind is ast.Attribute:
-                    if type(child.ctx) is ast.Store:  # type: ignore[attr-defined]
-                        key = attribute_key(child)  # type: ignore[arg-type]
-                        state.env.pop(key or "", None)
-                        if watched:
-                            self._changed_root(child, state, firm=True)
-                    elif self.lists_seen:  # `self.xs.append(v)`: forget what it held
-                        key = attribute_key(child) or ""  # type: ignore[arg-type]
-                        kept = state.env.get(key)
-                        if isinstance(kept, Value) and kept.kind == "list":
-                            state.env.pop(key, None)
-                elif kind is ast.Subscript:
-                    if watched and type(child.ctx) is not ast.Load:  # type: ignore[attr-defined]
-                        self._changed_root(child, state, firm=True)
-                elif kind is ast.Call:
-                    calls = True
-                    if watched:
-                        call: ast.Call = child  # type: ignore[assignment]
-                        method = getattr(call.func, "attr", "")
-                        self._changed_root(call.func, state, method in MUTATORS)
-                        for arg in [*call.args, *call.keywords]:
-                            self._changed_root(arg, state)
-                elif kind is ast.Assign or kind is ast.AugAssign:
-                    constant_stores(child, constant, self.statics)  # type: ignore[arg-type]
-                    assigned.update(map(id, assign_targets(child)))  # type: ignore[arg-type]
-                    note_sum(child, summed, sum_targets)
-                elif kind in BINDER_KINDS:
-                    for name in bound_by(child):
-                        bound_at.setdefault(name, child)
+                        lists.add(name)
+                if type(child.ctx) is not ast.Load:  # type: ignore[attr-defined]
+                    bound_at.setdefault(name, child)
+                    if id(child) not in assigned:
                         other_binders.add(name)
+                    if type(child.ctx) is ast.Store:  # type: ignore[attr-defined]
+                        stores.append(child)  # type: ignore[arg-type]
+            elif kind is ast.Attribute:
+                if type(child.ctx) is ast.Store:  # type: ignore[attr-defined]
+                    key = attribute_key(child)  # type: ignore[arg-type]
+                    state.env.pop(key or "", None)
+                    if watched:
+                        self._changed_root(child, state, firm=True)
+                elif self.lists_seen:  # `self.xs.append(v)`: forget what it held
+                    key = attribute_key(child) or ""  # type: ignore[arg-type]
+                    kept = state.env.get(key)
+                    if isinstance(kept, Value) and kept.kind == "list":
+                        state.env.pop(key, None)
+            elif kind is ast.Subscript:
+                if watched and type(child.ctx) is not ast.Load:  # type: ignore[attr-defined]
+                    self._changed_root(child, state, firm=True)
+            elif kind is ast.Call:
+                calls = True
+                if watched:
+                    call: ast.Call = child  # type: ignore[assignment]
+                    method = getattr(call.func, "attr", "")
+                    self._changed_root(call.func, state, method in MUTATORS)
+                    for arg in [*call.args, *call.keywords]:
+                        self._changed_root(arg, state)
+            elif kind is ast.Assign or kind is ast.AugAssign:
+                assigns.append(child)  # type: ignore[arg-type]
+                assigned.update(map(id, assign_targets(child)))  # type: ignore[arg-type]
+                note_sum(child, summed, sum_targets)
+            elif kind in BINDER_KINDS:
+                for name in bound_by(child):
+                    bound_at.setdefault(name, child)
+                    other_binders.add(name)
         self._changed_objects(state, nodes, objects)
         keeps_unit = sums(summed, sum_targets, stores)
         if lists:  # those `nodes` may change (`xs.append(v)`, `xs[i] = v`, `b = xs`)
@@ -170,11 +188,19 @@ class PathWalker(Binder):
                 continue
             decl = self.decl_for(name)
             before = state.env.get(name)
+            keeps = KEEPS.get(before.kind) if isinstance(before, Value) else None
+            if keeps and decl is None and constant is None:  # once, when first asked
+                constant = {}
+                for assign in assigns:
+                    constant_stores(assign, constant, self.statics)
             if decl is not None:
                 lookup = self.refinement_lookup(decl, state)
                 state.env[name] = self.refined.assumed(state, name, decl, lookup)
-            elif isinstance(before, Value) and constant.get(name, {"?"}) <= KEEPS.get(
-                before.kind, set()
+            elif (
+                isinstance(before, Value)
+                and keeps
+                and constant is not None
+                and constant.get(name, {"?"}) <= keeps
             ):
                 kept = self.unknown(child, before.kind, before.unit)
                 # a literal set to literals only (`z = 0.0`, then `z = table[k][1]`)
@@ -183,7 +209,7 @@ class PathWalker(Binder):
                 state.env[name] = replace(kept, literal=True) if plain else kept
             else:
                 state.env[name] = self._forgotten(name, child, before, keeps_unit, None)
-        return set(bound_at)
+        return set(bound_at), keeps_unit
 
     def _changed_objects(
         self, state: State, nodes: list[ast.stmt], objects: dict[str, int]
@@ -269,8 +295,8 @@ class PathWalker(Binder):
         """A list of a known length on each path (`hits = []`, `hits = [r]`): one
         length symbol, equal to each on its path, so that a later `if hits:` agrees
         with the path that filled it."""
-        for name in sorted(a.env.keys() & b.env.keys()):
-            x, y = a.env[name], b.env[name]
+        for name in rebound(a, b, "list"):
+            x, y = a.env[name], b.env.get(name)
             if (
                 not isinstance(x, Value)
                 or not isinstance(y, Value)

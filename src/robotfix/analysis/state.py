@@ -7,7 +7,7 @@ whose common prefix is shared, so a join only has to disjoin what the branches a
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Protocol
 
@@ -84,7 +84,7 @@ class State:
     def fork(self) -> State:
         return State(
             dict(self.env),
-            {k: v.copy() for k, v in self.heap.items()},
+            {k: v.copy() for k, v in self.heap.items()} if self.heap else {},
             list(self.facts),
             self.reachable,
             dict(self.versions) if self.versions else None,
@@ -220,18 +220,18 @@ def join(a: State, b: State, joiner: Joiner) -> State:
         )
         return MaybeDefault(when, known.default, known.owner)
 
+    tests = a.tests[: _common(a.tests, b.tests)]  # the decisions before the split
+    early: list[frozenset[int]] = []
+
     def common_tests() -> frozenset[int]:
-        shared = 0
-        while (
-            shared < min(len(a.tests), len(b.tests))
-            and a.tests[shared] is b.tests[shared]
-        ):
-            shared += 1
-        return frozenset(one[0] for one in a.tests[:shared])
+        if not early:
+            early.append(frozenset(one[0] for one in tests))
+        return early[0]
 
     env: dict[str, Binding] = {}
+    get_a, get_b = a.env.get, b.env.get
     for name in sorted(a.env.keys() | b.env.keys()):
-        x, y = a.env.get(name), b.env.get(name)
+        x, y = get_a(name), get_b(name)
         if x is y:
             env[name] = x  # type: ignore[assignment]
         elif isinstance(x, Value) and isinstance(y, Value):
@@ -261,12 +261,6 @@ def join(a: State, b: State, joiner: Joiner) -> State:
             versions[term] = max(versions.get(term, 0), version) + 1
     defined = a.defined & b.defined if a.defined and b.defined else None
     exits = max(a.exits, b.exits)
-    shared = 0
-    while (
-        shared < min(len(a.tests), len(b.tests)) and a.tests[shared] is b.tests[shared]
-    ):
-        shared += 1
-    tests = a.tests[:shared]
     return State(env, heap, facts, True, versions, defined, a.shared, exits, tests)
 
 
@@ -458,6 +452,15 @@ def _either(
     return A.conjoin([fact for _, fact in defines] + [result])
 
 
+def rebound(a: State, b: State, kind: str) -> list[str]:
+    """The names `a` binds to a value of `kind` that `b` binds otherwise, sorted."""
+    return sorted(
+        name
+        for name, x in a.env.items()
+        if isinstance(x, Value) and x.kind == kind and b.env.get(name) is not x
+    )
+
+
 def _one_message(a: State, b: State, joiner: Joiner) -> State:
     """A name bound to a different message of one type on each path (`twist =
     Twist()`, and on one branch `twist = go_straight(1.0)`): when nothing else on
@@ -466,12 +469,7 @@ def _one_message(a: State, b: State, joiner: Joiner) -> State:
     message set on both paths). Otherwise the name is unknown after the join."""
     if not a.heap or not b.heap:
         return b
-    differ = [
-        name
-        for name, x in a.env.items()
-        if isinstance(x, Value) and x.kind == "msg" and b.env.get(name) is not x
-    ]
-    for name in sorted(differ):
+    for name in rebound(a, b, "msg"):
         x, y = a.env[name], b.env.get(name)
         if (
             isinstance(x, Value)
@@ -601,8 +599,11 @@ def _renamed(b: State, name: str, pairs: dict[int, int], drop: set[int]) -> Stat
     )
 
 
-def _common(a: list[A.Expr], b: list[A.Expr]) -> int:
+def _common(a: Sequence[object], b: Sequence[object]) -> int:
+    """The length of the prefix `a` and `b` share (the same objects)."""
     common = 0
-    while common < min(len(a), len(b)) and a[common] is b[common]:
+    for x, y in zip(a, b, strict=False):
+        if x is not y:
+            break
         common += 1
     return common
