@@ -7,6 +7,7 @@ forget what they may change in the messages and instances they are handed.
 from __future__ import annotations
 
 import ast
+from collections.abc import Iterable
 from functools import partial
 
 from robotfix.analysis import containers, frames, heap, imported, inline
@@ -66,6 +67,8 @@ MUTATORS = FILLING | {
 }
 # Methods of lists that RobotFix follows (others give unknown values).
 SEQUENCE_METHODS = containers.MUTATORS | containers.READERS
+# Callees that change nothing they are handed (math functions too).
+_CHANGE_NOTHING = frozenset({"msgclass", "builtin", "parameter_method"})
 
 
 class CallEvaluator(BuiltinEvaluator):
@@ -120,8 +123,13 @@ class CallEvaluator(BuiltinEvaluator):
             callee = self.eval_Attribute(func, state, receiver)
         else:
             callee = self.eval(func, state)
-            args = [self.eval(a, state) for a in node.args]
-            kwargs = {k.arg: self.eval(k.value, state) for k in node.keywords}
+            # (no comprehension for a call without arguments: `self.get_clock()`)
+            args = [self.eval(a, state) for a in node.args] if node.args else []
+            kwargs = (
+                {k.arg: self.eval(k.value, state) for k in node.keywords}
+                if node.keywords
+                else {}
+            )
             if callee.kind == "object" and callee.name in SENDING:
                 self._leaving(args, state)
                 if self.ctx.obligations and not imported.starred(node, kwargs):
@@ -272,57 +280,61 @@ class CallEvaluator(BuiltinEvaluator):
         callee: Value,
     ) -> None:
         """Unknown code may change the messages and instances it is handed."""
-        for lent_name in containers.lends(node):  # the callee may keep, change it
-            lent = state.env.get(lent_name)
-            if isinstance(lent, Value) and lent.kind == "list":
-                state.env[lent_name] = containers.stripped(lent)
-        if callee.kind in ("msgclass", "builtin", "parameter_method") or (
-            callee.kind == "module" and callee.name.startswith("math.")
+        env = state.env
+        if node.args:
+            for lent_name in containers.lends(node):  # the callee may keep, change it
+                lent = env.get(lent_name)
+                if isinstance(lent, Value) and lent.kind == "list":
+                    env[lent_name] = containers.stripped(lent)
+        kind = callee.kind
+        if kind in _CHANGE_NOTHING or (
+            kind == "module" and callee.name.startswith("math.")
         ):
             return
-        if isinstance(node.func, ast.Attribute) and node.func.attr in PARAMETER_CALLS:
+        func = node.func
+        attr = func.attr if isinstance(func, ast.Attribute) else ""
+        if attr in PARAMETER_CALLS:
             return  # rclpy and rospy change no attribute of the node's class
         if frames.followed(self.ctx, node):
             return  # tf2 reads the stamped values and transforms it is given
-        keywords = {k.arg: k.value for k in node.keywords}
-        given = [
-            *zip(args, node.args, strict=False),
-            *((v, keywords[k]) for k, v in kwargs.items()),
-        ]
+        given: Iterable[tuple[Value, ast.expr]] = zip(args, node.args, strict=False)
+        if kwargs:
+            keywords = {k.arg: k.value for k in node.keywords}
+            given = [*given, *((v, keywords[k]) for k, v in kwargs.items())]
         for value, expr in given:
             if value.kind == "msg" and value.ref is not None:
                 if not self.only_reads(node, expr):
                     heap.havoc(state, value.ref)
             elif value.kind in MUTABLE and type(value.term) is A.Sym:
                 state.changed(value)
-        names = [a for a in node.args if isinstance(a, ast.Name)]
-        if isinstance(node.func, ast.Attribute):
-            owner = node.func.value
+        names = [a for a in node.args if isinstance(a, ast.Name)] if node.args else []
+        if isinstance(func, ast.Attribute):
+            owner = func.value
             if isinstance(owner, ast.Name):
                 # a method of this file's class may change `self.x`; rclpy's and
                 # rospy's own (`self.get_clock()`) do not touch its attributes
-                receiver = state.env.get(owner.id)
+                receiver = env.get(owner.id)
                 if (
-                    callee.kind == "method"
+                    kind == "method"
                     or not isinstance(receiver, Value)
                     or receiver.kind != "instance"
                 ):
                     names.append(owner)
             elif isinstance(owner, ast.Attribute):  # self.x.reset()
-                state.env.pop(attribute_key(owner) or "", None)
+                env.pop(attribute_key(owner) or "", None)
         for name in names:
-            bound = state.env.get(name.id)
-            if isinstance(bound, Value) and bound.kind in MUTABLE:
-                state.changed(bound, getattr(node.func, "attr", "") in MUTATORS)
-                if (
-                    isinstance(bound.term, A.Sym)
-                    and getattr(node.func, "attr", "") in FILLING
-                ):  # `xs.append(v)`: xs is not empty now
+            bound = env.get(name.id)
+            if not isinstance(bound, Value):
+                continue
+            if bound.kind in MUTABLE:
+                state.changed(bound, attr in MUTATORS)
+                if isinstance(bound.term, A.Sym) and attr in FILLING:
+                    # `xs.append(v)`: xs is not empty now
                     state.assume(self.truthy(bound, node, state))
-            if isinstance(bound, Value) and bound.kind == "instance":
+            elif bound.kind == "instance":
                 prefix = name.id + "."
-                for key in [k for k in state.env if k.startswith(prefix)]:
-                    del state.env[key]
+                for key in [k for k in env if k.startswith(prefix)]:
+                    del env[key]
 
     def only_reads(self, call: ast.Call, arg: ast.expr) -> bool:
         """Whether `call` only reads the argument `arg` (the interpreter knows)."""
