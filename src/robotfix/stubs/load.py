@@ -67,6 +67,7 @@ MAX_HOPS = 8  # re-exports followed for one name
 ROS_PARAM = "ros_parameter"  # the decorator of a parameter API (`_parameter`)
 PARAMETER_ROLES = ("name", "default", "low", "high")
 MAX_STAR_DEPTH = 8  # `from m import *` followed through at most so many modules
+_UNSEEN = object()  # `StubSet.lookup`: a name not looked up yet
 
 
 @dataclass(frozen=True)
@@ -189,6 +190,7 @@ class StubSet:
         self._modules: dict[str, Module | None] = {}
         self._methods: dict[str, tuple[Function, ...]] = {}
         self._files: dict[str, tuple[Path, str, bool] | None] = {}
+        self._found: dict[str, Function | Class | None] = {}  # `lookup`'s answers
 
     # -- modules -------------------------------------------------------------
     def module(self, name: str) -> Module | None:
@@ -224,8 +226,11 @@ class StubSet:
         """The stub function or class a qualified name stands for: the longest
         stubbed module prefix, then classes and their members (`rospy.Duration.
         from_sec`); re-exports (`from .rostime import Duration as Duration`) are
-        followed."""
-        return self._lookup(qualified, 0)
+        followed. Once per name: the modules it reads are kept as well."""
+        found = self._found.get(qualified, _UNSEEN)
+        if found is _UNSEEN:
+            found = self._found[qualified] = self._lookup(qualified, 0)
+        return found  # type: ignore[return-value]
 
     def _lookup(self, qualified: str, hops: int) -> Function | Class | None:
         parts = qualified.split(".")
