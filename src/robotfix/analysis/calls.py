@@ -181,15 +181,16 @@ class CallEvaluator(BuiltinEvaluator):
         kwargs: dict[str | None, Value],
         state: State,
     ) -> Value:
-        if callee.kind == "msgclass":
+        kind = callee.kind
+        if kind == "msgclass":
             message = self.construct(callee.name, args, kwargs, state)
             if self.ctx.unit_flows is not None:
                 self._constructor_flows(message, node, args, kwargs, state)
             return message
-        if callee.kind == "parameter_method":  # p.get_parameter_value()
+        if kind == "parameter_method":  # p.get_parameter_value()
             return Value("parameter_value", name=callee.name)
         if (
-            callee.kind in ("function", "method")
+            kind in ("function", "method")
             and callee.name in self.program.functions
             and not imported.starred(node, kwargs)
         ):
@@ -199,27 +200,29 @@ class CallEvaluator(BuiltinEvaluator):
                 kwargs,
                 node,
                 state,
-                bound=callee.kind == "method",
+                bound=kind == "method",
             )
-        if callee.kind == "class" and callee.name in self.program.classes:
+        if kind == "class" and callee.name in self.program.classes:
             init = self.program.functions.get(f"{callee.name}.__init__")
             if init is not None and not any(
                 isinstance(a, ast.Starred) for a in node.args
             ):
                 self.call_known(init, args, kwargs, node, state, bound=True)
             return Value("instance", name=callee.name)
-        if callee.kind == "builtin":
+        if kind == "builtin":
             found = self.builtin(callee.name, args, node, state, kwargs)
             if found is not None:
                 return found
-        found = self.imported_call(callee, node, args, kwargs, state)
-        if found is not None:
-            return found
+        if kind in ("module", "method"):
+            found = self.imported_call(callee, node, args, kwargs, state)
+            if found is not None:
+                return found
+        func = node.func
         name = (
             callee.name.rsplit(".", 1)[-1]
-            if callee.kind == "module"
-            else node.func.attr
-            if isinstance(node.func, ast.Attribute)
+            if kind == "module"
+            else func.attr
+            if isinstance(func, ast.Attribute)
             else ""
         )
         if name in PARAMETER_CALLS:
@@ -237,7 +240,7 @@ class CallEvaluator(BuiltinEvaluator):
             return found
         value = self.unknown(node)
         if (
-            callee.kind == "module"
+            kind == "module"
             and isinstance(value.term, A.Sym)
             and all(isinstance(a, ast.Constant) for a in node.args)
             and all(isinstance(k.value, ast.Constant) for k in node.keywords)
@@ -253,8 +256,9 @@ class CallEvaluator(BuiltinEvaluator):
         kwargs: dict[str | None, Value],
         state: State,
     ) -> Value | None:
-        """A function, class or method of another module of the tree."""
-        if callee.kind not in ("module", "method") or self.ctx.resolver is None:
+        """A function, class or method of another module of the tree (`callee` a
+        module's name or a method)."""
+        if self.ctx.resolver is None:
             return None
         found = imported.resolve(self.ctx.resolver, callee.name)
         if imported.starred(node, kwargs):
