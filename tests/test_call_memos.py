@@ -6,13 +6,14 @@ stub set, the answer of another."""
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
 
 from robotfix.api import check_paths
 from robotfix.config import Config
-from robotfix.stubs.load import Function, StubSet
+from robotfix.stubs.load import DATA, Function, StubSet, _module_names, _text_of
 
 NODE = """from typing import Annotated
 
@@ -64,3 +65,44 @@ def test_a_stub_lookup_is_kept_per_stub_set(
         assert shipped.lookup("my_motor.move") is None
         assert isinstance(shipped.lookup("math.radians"), Function)
     assert searched == ["my_motor.move", "my_motor.move", "math.radians"]
+
+
+def test_the_modules_defining_a_method_are_those_whose_text_has_its_def(
+    tmp_path: Path,
+) -> None:
+    """`StubSet._modules_defining` reads every stub's text once for all names: its
+    answer for a method's name is still every module whose text has `def name(`
+    (a user stub's odd spellings too), in the modules' order, as a search of each
+    text for that name finds them."""
+    (tmp_path / "motors.pyi").write_text(
+        "class Motor:\n"
+        "    def spin(self, speed: float) -> None: ...\n"
+        "    async def stop(self) -> None: ...\n"
+        "    def café(self) -> None: ...\n"
+        "    def def_(self) -> None: ...\n"
+        "xdef odd(\n"
+        "def  spaced(self) -> None: ...\n"
+    )
+    (tmp_path / "wheels.pyi").write_text(
+        "class Wheel:\n    def spin(self, rate: float) -> None: ...\n"
+    )
+    stubs, shipped = StubSet((tmp_path,)), StubSet()
+    assert shipped._modules_defining("spin")  # the shipped set reads its texts first
+    modules = sorted({*_module_names(tmp_path), *_module_names(DATA)})
+
+    def searched(name: str) -> list[str]:
+        return [
+            m
+            for m in modules
+            if (where := stubs._file_of(m)) is not None
+            and f"def {name}(" in _text_of(where[0])
+        ]
+
+    texts = "".join(_text_of(stubs._file_of(m)[0]) for m in modules)  # type: ignore[index]
+    names = {*re.findall(r"def (\w+)", texts), "odd", "spaced", "de", "café"}
+    for name in sorted(names):  # method names: identifiers
+        assert [m.name for m in stubs._modules_defining(name)] == searched(name)
+        assert [m.name for m in shipped._modules_defining(name)] == [
+            m for m in searched(name) if m not in ("motors", "wheels")
+        ]
+    assert {"motors", "wheels"} <= {m.name for m in stubs._modules_defining("spin")}
