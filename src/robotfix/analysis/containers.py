@@ -21,6 +21,7 @@ from fractions import Fraction
 from robotfix.analysis.values import SEQUENCES, Items, Kept, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.units import Unit
+from robotfix.astwalk import FIELDS, fields
 
 SELF = A.Name("_")
 MAX_SPELLED = 32  # elements named one by one in `each` (`_ == a or _ == b ...`)
@@ -502,7 +503,8 @@ def shared_names(
     name_class, load_class = ast.Name, ast.Load
     while todo:
         node, nested = todo.pop()
-        for field in node._fields:
+        # the fields that may hold a node (no name string, context or operator)
+        for field in FIELDS.get(node.__class__) or fields(node.__class__):
             value = getattr(node, field, None)
             for child in value if value.__class__ is list else (value,):
                 kind = child.__class__
