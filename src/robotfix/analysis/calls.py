@@ -112,7 +112,8 @@ class CallEvaluator(BuiltinEvaluator):
                 holder = self._holder(node.func.value)  # type: ignore[attr-defined]
                 self._contracts(values, state, holder)
             return self.unknown(node)
-        if isinstance(func, ast.Attribute) and func.attr in SEQUENCE_METHODS:
+        if method in SEQUENCE_METHODS:
+            assert isinstance(func, ast.Attribute)
             receiver = self.receiver(func.value, state)
             args = [self.eval(a, state) for a in node.args]
             kwargs = {k.arg: self.eval(k.value, state) for k in node.keywords}
@@ -364,7 +365,8 @@ class CallEvaluator(BuiltinEvaluator):
         terms = {k: v.term for k, v in given.items() if v.term is not None}
         exprs = dict(zip(params, node.args, strict=False))
         exprs.update({k.arg: k.value for k in node.keywords if k.arg is not None})
-        log, where = self.flow_log(), self.flow_where()
+        log = self.flow_log()
+        where = self.flow_where() if log is not None else None
         for name, value in given.items():
             decl = scope.decls.get(name)
             if decl is not None:
