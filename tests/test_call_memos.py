@@ -34,7 +34,8 @@ def test_a_module_attribute_is_what_its_own_file_imports(tmp_path: Path) -> None
     for folder, unit in (("a", "m"), ("b", "s")):
         (tmp_path / folder).mkdir()
         (tmp_path / folder / "limits.py").write_text(
-            f"from typing import Annotated\n\nMAX: Annotated[float, \"Unit('{unit}')\"] = 1.0\n"
+            "from typing import Annotated\n\n"
+            f"MAX: Annotated[float, \"Unit('{unit}')\"] = 1.0\n"
         )
         (tmp_path / folder / "node.py").write_text(NODE)
     for order in (["a", "b"], ["b", "a"]):

@@ -529,9 +529,9 @@ def lends(call: ast.Call) -> list[str]:
     """The names whose lists `call` is handed (`g(xs)`): from then on the callee may
     have kept or changed them. Calls that only read a list lend nothing."""
     func = call.func  # (`_lent` of each name argument, its tests made once)
-    if func.__class__ is ast.Name and func.id in READING_CALLS:  # type: ignore[attr-defined]
+    if func.__class__ is ast.Name and func.id in READING_CALLS:
         return []
-    return [a.id for a in call.args if a.__class__ is ast.Name]  # type: ignore[attr-defined]
+    return [a.id for a in call.args if a.__class__ is ast.Name]
 
 
 def _lent(parent: ast.AST, name: ast.Name) -> bool:
