@@ -7,6 +7,7 @@ forget what they may change in the messages and instances they are handed.
 from __future__ import annotations
 
 import ast
+from collections.abc import Iterable
 from functools import partial
 
 from robotfix.analysis import containers, frames, heap, imported, inline
@@ -66,6 +67,8 @@ MUTATORS = FILLING | {
 }
 # Methods of lists that RobotFix follows (others give unknown values).
 SEQUENCE_METHODS = containers.MUTATORS | containers.READERS
+# Callees that change nothing they are handed (math functions too).
+_CHANGE_NOTHING = frozenset({"msgclass", "builtin", "parameter_method"})
 
 
 class CallEvaluator(BuiltinEvaluator):
@@ -109,7 +112,8 @@ class CallEvaluator(BuiltinEvaluator):
                 holder = self._holder(node.func.value)  # type: ignore[attr-defined]
                 self._contracts(values, state, holder)
             return self.unknown(node)
-        if isinstance(func, ast.Attribute) and func.attr in SEQUENCE_METHODS:
+        if method in SEQUENCE_METHODS:
+            assert isinstance(func, ast.Attribute)
             receiver = self.receiver(func.value, state)
             args = [self.eval(a, state) for a in node.args]
             kwargs = {k.arg: self.eval(k.value, state) for k in node.keywords}
@@ -120,8 +124,13 @@ class CallEvaluator(BuiltinEvaluator):
             callee = self.eval_Attribute(func, state, receiver)
         else:
             callee = self.eval(func, state)
-            args = [self.eval(a, state) for a in node.args]
-            kwargs = {k.arg: self.eval(k.value, state) for k in node.keywords}
+            # (no comprehension for a call without arguments: `self.get_clock()`)
+            args = [self.eval(a, state) for a in node.args] if node.args else []
+            kwargs = (
+                {k.arg: self.eval(k.value, state) for k in node.keywords}
+                if node.keywords
+                else {}
+            )
             if callee.kind == "object" and callee.name in SENDING:
                 self._leaving(args, state)
                 if self.ctx.obligations and not imported.starred(node, kwargs):
@@ -173,15 +182,16 @@ class CallEvaluator(BuiltinEvaluator):
         kwargs: dict[str | None, Value],
         state: State,
     ) -> Value:
-        if callee.kind == "msgclass":
+        kind = callee.kind
+        if kind == "msgclass":
             message = self.construct(callee.name, args, kwargs, state)
             if self.ctx.unit_flows is not None:
                 self._constructor_flows(message, node, args, kwargs, state)
             return message
-        if callee.kind == "parameter_method":  # p.get_parameter_value()
+        if kind == "parameter_method":  # p.get_parameter_value()
             return Value("parameter_value", name=callee.name)
         if (
-            callee.kind in ("function", "method")
+            kind in ("function", "method")
             and callee.name in self.program.functions
             and not imported.starred(node, kwargs)
         ):
@@ -191,27 +201,29 @@ class CallEvaluator(BuiltinEvaluator):
                 kwargs,
                 node,
                 state,
-                bound=callee.kind == "method",
+                bound=kind == "method",
             )
-        if callee.kind == "class" and callee.name in self.program.classes:
+        if kind == "class" and callee.name in self.program.classes:
             init = self.program.functions.get(f"{callee.name}.__init__")
             if init is not None and not any(
                 isinstance(a, ast.Starred) for a in node.args
             ):
                 self.call_known(init, args, kwargs, node, state, bound=True)
             return Value("instance", name=callee.name)
-        if callee.kind == "builtin":
+        if kind == "builtin":
             found = self.builtin(callee.name, args, node, state, kwargs)
             if found is not None:
                 return found
-        found = self.imported_call(callee, node, args, kwargs, state)
-        if found is not None:
-            return found
+        if kind in ("module", "method"):
+            found = self.imported_call(callee, node, args, kwargs, state)
+            if found is not None:
+                return found
+        func = node.func
         name = (
             callee.name.rsplit(".", 1)[-1]
-            if callee.kind == "module"
-            else node.func.attr
-            if isinstance(node.func, ast.Attribute)
+            if kind == "module"
+            else func.attr
+            if isinstance(func, ast.Attribute)
             else ""
         )
         if name in PARAMETER_CALLS:
@@ -229,7 +241,7 @@ class CallEvaluator(BuiltinEvaluator):
             return found
         value = self.unknown(node)
         if (
-            callee.kind == "module"
+            kind == "module"
             and isinstance(value.term, A.Sym)
             and all(isinstance(a, ast.Constant) for a in node.args)
             and all(isinstance(k.value, ast.Constant) for k in node.keywords)
@@ -245,8 +257,9 @@ class CallEvaluator(BuiltinEvaluator):
         kwargs: dict[str | None, Value],
         state: State,
     ) -> Value | None:
-        """A function, class or method of another module of the tree."""
-        if callee.kind not in ("module", "method") or self.ctx.resolver is None:
+        """A function, class or method of another module of the tree (`callee` a
+        module's name or a method)."""
+        if self.ctx.resolver is None:
             return None
         found = imported.resolve(self.ctx.resolver, callee.name)
         if imported.starred(node, kwargs):
@@ -272,57 +285,61 @@ class CallEvaluator(BuiltinEvaluator):
         callee: Value,
     ) -> None:
         """Unknown code may change the messages and instances it is handed."""
-        for lent_name in containers.lends(node):  # the callee may keep, change it
-            lent = state.env.get(lent_name)
-            if isinstance(lent, Value) and lent.kind == "list":
-                state.env[lent_name] = containers.stripped(lent)
-        if callee.kind in ("msgclass", "builtin", "parameter_method") or (
-            callee.kind == "module" and callee.name.startswith("math.")
+        env = state.env
+        if node.args:
+            for lent_name in containers.lends(node):  # the callee may keep, change it
+                lent = env.get(lent_name)
+                if isinstance(lent, Value) and lent.kind == "list":
+                    env[lent_name] = containers.stripped(lent)
+        kind = callee.kind
+        if kind in _CHANGE_NOTHING or (
+            kind == "module" and callee.name.startswith("math.")
         ):
             return
-        if isinstance(node.func, ast.Attribute) and node.func.attr in PARAMETER_CALLS:
+        func = node.func
+        attr = func.attr if isinstance(func, ast.Attribute) else ""
+        if attr in PARAMETER_CALLS:
             return  # rclpy and rospy change no attribute of the node's class
         if frames.followed(self.ctx, node):
             return  # tf2 reads the stamped values and transforms it is given
-        keywords = {k.arg: k.value for k in node.keywords}
-        given = [
-            *zip(args, node.args, strict=False),
-            *((v, keywords[k]) for k, v in kwargs.items()),
-        ]
+        given: Iterable[tuple[Value, ast.expr]] = zip(args, node.args, strict=False)
+        if kwargs:
+            keywords = {k.arg: k.value for k in node.keywords}
+            given = [*given, *((v, keywords[k]) for k, v in kwargs.items())]
         for value, expr in given:
             if value.kind == "msg" and value.ref is not None:
                 if not self.only_reads(node, expr):
                     heap.havoc(state, value.ref)
             elif value.kind in MUTABLE and type(value.term) is A.Sym:
                 state.changed(value)
-        names = [a for a in node.args if isinstance(a, ast.Name)]
-        if isinstance(node.func, ast.Attribute):
-            owner = node.func.value
+        names = [a for a in node.args if isinstance(a, ast.Name)] if node.args else []
+        if isinstance(func, ast.Attribute):
+            owner = func.value
             if isinstance(owner, ast.Name):
                 # a method of this file's class may change `self.x`; rclpy's and
                 # rospy's own (`self.get_clock()`) do not touch its attributes
-                receiver = state.env.get(owner.id)
+                receiver = env.get(owner.id)
                 if (
-                    callee.kind == "method"
+                    kind == "method"
                     or not isinstance(receiver, Value)
                     or receiver.kind != "instance"
                 ):
                     names.append(owner)
             elif isinstance(owner, ast.Attribute):  # self.x.reset()
-                state.env.pop(attribute_key(owner) or "", None)
+                env.pop(attribute_key(owner) or "", None)
         for name in names:
-            bound = state.env.get(name.id)
-            if isinstance(bound, Value) and bound.kind in MUTABLE:
-                state.changed(bound, getattr(node.func, "attr", "") in MUTATORS)
-                if (
-                    isinstance(bound.term, A.Sym)
-                    and getattr(node.func, "attr", "") in FILLING
-                ):  # `xs.append(v)`: xs is not empty now
+            bound = env.get(name.id)
+            if not isinstance(bound, Value):
+                continue
+            if bound.kind in MUTABLE:
+                state.changed(bound, attr in MUTATORS)
+                if isinstance(bound.term, A.Sym) and attr in FILLING:
+                    # `xs.append(v)`: xs is not empty now
                     state.assume(self.truthy(bound, node, state))
-            if isinstance(bound, Value) and bound.kind == "instance":
+            elif bound.kind == "instance":
                 prefix = name.id + "."
-                for key in [k for k in state.env if k.startswith(prefix)]:
-                    del state.env[key]
+                for key in [k for k in env if k.startswith(prefix)]:
+                    del env[key]
 
     def only_reads(self, call: ast.Call, arg: ast.expr) -> bool:
         """Whether `call` only reads the argument `arg` (the interpreter knows)."""
@@ -348,7 +365,8 @@ class CallEvaluator(BuiltinEvaluator):
         terms = {k: v.term for k, v in given.items() if v.term is not None}
         exprs = dict(zip(params, node.args, strict=False))
         exprs.update({k.arg: k.value for k in node.keywords if k.arg is not None})
-        log, where = self.flow_log(), self.flow_where()
+        log = self.flow_log()
+        where = self.flow_where() if log is not None else None
         for name, value in given.items():
             decl = scope.decls.get(name)
             if decl is not None:

@@ -21,6 +21,7 @@ from fractions import Fraction
 from robotfix.analysis.values import SEQUENCES, Items, Kept, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.units import Unit
+from robotfix.astwalk import FIELDS, fields
 
 SELF = A.Name("_")
 MAX_SPELLED = 32  # elements named one by one in `each` (`_ == a or _ == b ...`)
@@ -502,7 +503,8 @@ def shared_names(
     name_class, load_class = ast.Name, ast.Load
     while todo:
         node, nested = todo.pop()
-        for field in node._fields:
+        # the fields that may hold a node (no name string, context or operator)
+        for field in FIELDS.get(node.__class__) or fields(node.__class__):
             value = getattr(node, field, None)
             for child in value if value.__class__ is list else (value,):
                 kind = child.__class__
@@ -526,7 +528,10 @@ def shared_names(
 def lends(call: ast.Call) -> list[str]:
     """The names whose lists `call` is handed (`g(xs)`): from then on the callee may
     have kept or changed them. Calls that only read a list lend nothing."""
-    return [a.id for a in call.args if a.__class__ is ast.Name and _lent(call, a)]
+    func = call.func  # (`_lent` of each name argument, its tests made once)
+    if func.__class__ is ast.Name and func.id in READING_CALLS:
+        return []
+    return [a.id for a in call.args if a.__class__ is ast.Name]
 
 
 def _lent(parent: ast.AST, name: ast.Name) -> bool:

@@ -234,7 +234,9 @@ def call_arguments(
 
 def starred(node: ast.Call, kwargs: dict[str | None, Value]) -> bool:
     """`f(*xs)` or `f(**kw)`: which parameter gets which argument is unknown."""
-    return any(isinstance(a, ast.Starred) for a in node.args) or None in kwargs
+    if None in kwargs:
+        return True
+    return bool(node.args) and any(isinstance(a, ast.Starred) for a in node.args)
 
 
 class Symbols(Protocol):

@@ -141,14 +141,18 @@ class Libraries:
     ) -> Value | None:
         """The value of a call of a stubbed function, method or class; None when
         no stub speaks of it."""
+        kind = callee.kind
+        by_name = kind == "unknown" and isinstance(node.func, ast.Attribute)
+        if kind not in ("libmethod", "module") and not by_name:
+            return None
         if imported.starred(node, kwargs):
             args = []  # positions unknown: only keywords are checked
-        if callee.kind == "libmethod":
+        if kind == "libmethod":
             found = resolve_library(self.ctx, callee.name)
             if isinstance(found, stubs.Function):
                 return self.call_function(at, found, args, kwargs, node, state, 0)
             return None
-        if callee.kind == "module":
+        if kind == "module":
             found = resolve_library(self.ctx, callee.name)
             if isinstance(found, stubs.Class):
                 init = self._stubs().member(found, "__init__")
@@ -160,9 +164,8 @@ class Libraries:
                 shift = 1 if found.kind == "method" else 0
                 return self.call_function(at, found, args, kwargs, node, state, shift)
             return None
-        if callee.kind == "unknown" and isinstance(node.func, ast.Attribute):
-            return self._by_method_name(at, node.func.attr, node, args, kwargs, state)
-        return None
+        assert isinstance(node.func, ast.Attribute)
+        return self._by_method_name(at, node.func.attr, node, args, kwargs, state)
 
     def _by_method_name(
         self,

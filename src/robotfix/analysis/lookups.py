@@ -133,7 +133,17 @@ class Lookups:
         return hover.variable(self.ctx, state, f"{var}.{attr}", value, decl)
 
     def module_attribute(self, module: str, attr: str) -> Value:
+        """`math.pi`, `std_msgs.msg.String`, an imported constant, else a module
+        (a module's function): once per name and file (`Program.module_attributes`;
+        nothing here depends on the path walked)."""
         qualified = f"{module}.{attr}"
+        known = self.program.module_attributes
+        found = known.get(qualified)
+        if found is None:
+            found = known[qualified] = self._module_attribute(qualified, attr)
+        return found
+
+    def _module_attribute(self, qualified: str, attr: str) -> Value:
         number = named_number(qualified) if attr in NUMBERS else None
         if number is not None:
             return Value("float", A.Num(number, False), literal=True)

@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 
 from robotfix.analysis.context import FileContext, Scope, build_scope
 from robotfix.analysis.types import TypeModel
+from robotfix.analysis.values import Value
 from robotfix.annotations.extract import Refinement
 from robotfix.ros.api_model import REGISTRATIONS
 
@@ -74,6 +75,9 @@ class Program:
     # (id(call), id(argument), depth) -> the call only reads that argument
     # (`CallFacts.only_reads`), kept with the tree for the same reason
     reading_calls: dict[tuple[int, int, int], bool] = field(default_factory=dict)
+    # `pkg.name` -> what a module's attribute read stands for (`Lookups.
+    # module_attribute`: the same in every function of the file)
+    module_attributes: dict[str, Value] = field(default_factory=dict)
 
     def add(self, function: Function) -> Function:
         self.functions[function.key] = function

@@ -67,6 +67,10 @@ MAX_HOPS = 8  # re-exports followed for one name
 ROS_PARAM = "ros_parameter"  # the decorator of a parameter API (`_parameter`)
 PARAMETER_ROLES = ("name", "default", "low", "high")
 MAX_STAR_DEPTH = 8  # `from m import *` followed through at most so many modules
+_UNSEEN = object()  # `StubSet.lookup`: a name not looked up yet
+# `def name(` in a stub's text (a name runs to the first space or parenthesis: each
+# `def name(` the text holds is one match)
+_DEF = re.compile(r"def ([^\s(]+)\(")
 
 
 @dataclass(frozen=True)
@@ -189,6 +193,8 @@ class StubSet:
         self._modules: dict[str, Module | None] = {}
         self._methods: dict[str, tuple[Function, ...]] = {}
         self._files: dict[str, tuple[Path, str, bool] | None] = {}
+        self._found: dict[str, Function | Class | None] = {}  # `lookup`'s answers
+        self._defining: dict[str, list[str]] | None = None  # `_definitions`
 
     # -- modules -------------------------------------------------------------
     def module(self, name: str) -> Module | None:
@@ -224,8 +230,11 @@ class StubSet:
         """The stub function or class a qualified name stands for: the longest
         stubbed module prefix, then classes and their members (`rospy.Duration.
         from_sec`); re-exports (`from .rostime import Duration as Duration`) are
-        followed."""
-        return self._lookup(qualified, 0)
+        followed. Once per name: the modules it reads are kept as well."""
+        found = self._found.get(qualified, _UNSEEN)
+        if found is _UNSEEN:
+            found = self._found[qualified] = self._lookup(qualified, 0)
+        return found  # type: ignore[return-value]
 
     def _lookup(self, qualified: str, hops: int) -> Function | Class | None:
         parts = qualified.split(".")
@@ -343,17 +352,27 @@ class StubSet:
 
     def _modules_defining(self, name: str) -> list[Module]:
         """The stub modules whose text has `def name(`: only those are parsed."""
-        names: set[str] = set()
-        for root in [*self.paths, DATA]:
-            names |= set(_module_names(root))
+        if self._defining is None:
+            self._defining = self._definitions()
         found = []
-        for module_name in sorted(names):
-            where = self._file_of(module_name)
-            if where is None or f"def {name}(" not in _text_of(where[0]):
-                continue
+        for module_name in self._defining.get(name, ()):
             module = self.module(module_name)
             if module is not None:
                 found.append(module)
+        return found
+
+    def _definitions(self) -> dict[str, list[str]]:
+        """For each `def name(` in the stubs' texts, the modules whose text has it,
+        in order: every text searched once, not once for each method name."""
+        names: set[str] = set()
+        for root in [*self.paths, DATA]:
+            names |= set(_module_names(root))
+        found: dict[str, list[str]] = {}
+        for module_name in sorted(names):
+            where = self._file_of(module_name)
+            text = _text_of(where[0]) if where is not None else ""
+            for defined in dict.fromkeys(_DEF.findall(text)):
+                found.setdefault(defined, []).append(module_name)
         return found
 
     def problems(self) -> list[Problem]:
