@@ -73,9 +73,9 @@ STATIC_VALUES = frozenset(
 )
 
 
-# (evaluator class, node class) -> its `eval_<node class>` function, or None: the
+# evaluator class -> node class -> its `eval_<node class>` function, or None: the
 # dispatch of `ExpressionEvaluator.eval` without building a name and a bound method
-_EVAL: dict[tuple[type, type], Callable[..., Value] | None] = {}
+_EVAL: dict[type, dict[type, Callable[..., Value] | None]] = {}
 _MISSING: Callable[..., Value] = lambda *_: NONE  # noqa: E731 - a marker only
 MAX_ROOT = 4  # `x ** 0.25` has a unit; `x ** 0.3` (3/10) is left without one
 # terms with no subterms: never larger than TERM_LIMIT
@@ -99,6 +99,7 @@ class ExpressionEvaluator:
         # the symbol each attribute read last gave (`decisions.py`: two tests of
         # `scan.range_min` read one tracked value)
         self.attribute_terms: dict[int, int] = {}
+        self._eval_table = _EVAL.setdefault(type(self), {})  # `eval`'s dispatch
 
     # -- to be provided by the statement interpreter --------------------------
     def lookup_name(self, name: str, state: State, node: ast.AST) -> Value:
@@ -151,10 +152,11 @@ class ExpressionEvaluator:
     def eval(self, node: ast.expr, state: State) -> Value:
         self.ctx.step(node)
         kind = type(node)
-        key = (type(self), kind)
-        method = _EVAL.get(key, _MISSING)
+        method = self._eval_table.get(kind, _MISSING)
         if method is _MISSING:  # the evaluator's class's method for this node class
-            method = _EVAL[key] = getattr(type(self), f"eval_{kind.__name__}", None)
+            method = self._eval_table[kind] = getattr(
+                type(self), f"eval_{kind.__name__}", None
+            )
         if method is None:
             self.eval_children(node, state)
             return self.unknown(node)

@@ -16,6 +16,7 @@ entry points); what statements say by their syntax alone is `stmtsyntax`.
 from __future__ import annotations
 
 import ast
+from collections.abc import Callable
 from fractions import Fraction
 from functools import partial
 
@@ -161,6 +162,12 @@ def _function_for(program: Program, node: ast.AST, parent: Scope) -> Function:
     return program.add(Function(key, node, parent))
 
 
+# walker class -> statement class -> its `visit_<statement class>` function, or
+# None: `exec_block`'s dispatch without building a name and a bound method
+_VISIT: dict[type, dict[type, Callable[..., State] | None]] = {}
+_MISSING: Callable[..., State] = lambda *_: State()  # noqa: E731 - a marker only
+
+
 class Interpreter(CompoundWalker):
     # -- blocks --------------------------------------------------------------
     def exec_block(
@@ -168,13 +175,19 @@ class Interpreter(CompoundWalker):
     ) -> State:
         """Run statements; each one's deferred reports are made after it (not
         `flush`: a helper's body run inside the caller's statement)."""
+        visits = _VISIT.setdefault(type(self), {})
         for stmt in body:
             if not state.reachable:
                 break
             self.ctx.step(stmt)
             self.site = stmt
-            method = getattr(self, f"visit_{type(stmt).__name__}", None)
-            state = method(stmt, state) if method else self.generic(stmt, state)
+            kind = type(stmt)
+            method = visits.get(kind, _MISSING)
+            if method is _MISSING:  # the walker's class's method for this statement
+                method = visits[kind] = getattr(
+                    type(self), f"visit_{kind.__name__}", None
+                )
+            state = method(self, stmt, state) if method else self.generic(stmt, state)
             if flush:
                 self.ctx.flush()
         return state
