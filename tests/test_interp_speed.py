@@ -141,3 +141,17 @@ def test_local_bindings_walks_expressions_when_the_file_has_a_walrus() -> None:
     function = tree.body[0]
     assert "n" in local_bindings(function)
     assert "n" not in local_bindings(function, walrus=False)
+
+
+def test_int_literal_terms_are_made_once_per_value() -> None:
+    """The int literal memo (issue 25 target 1) gives the term a literal had
+    before it, and None (unknown) for one too large to model."""
+    from fractions import Fraction
+
+    from robotfix.analysis.expressions import _int_term
+    from robotfix.annotations import ast as A
+
+    for value in (0, 1, -7, 2**40):
+        assert _int_term(value) == A.Num(Fraction(value), True)
+        assert _int_term(value) is _int_term(value)
+    assert _int_term(10**100) is None

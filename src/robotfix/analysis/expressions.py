@@ -12,7 +12,7 @@ import math
 import re
 from collections.abc import Callable
 from fractions import Fraction
-from functools import partial
+from functools import lru_cache, partial
 from typing import TypeVar
 
 from robotfix.analysis import (
@@ -80,6 +80,15 @@ _MISSING: Callable[..., Value] = lambda *_: NONE  # noqa: E731 - a marker only
 MAX_ROOT = 4  # `x ** 0.25` has a unit; `x ** 0.3` (3/10) is left without one
 # terms with no subterms: never larger than TERM_LIMIT
 _LEAF_TERMS = (A.Sym, A.Num, A.Bool, A.Str, A.Name)
+
+
+@lru_cache(maxsize=4096)
+def _int_term(value: int) -> A.Num | None:
+    """The term of an int literal, None if too large to model: one term per value,
+    not per occurrence (terms are immutable, and what is kept by a term's identity
+    answers alike for equal leaves)."""
+    exact = Fraction(value)
+    return None if arith.too_large(exact) else A.Num(exact, True)
 
 
 class ExpressionEvaluator:
@@ -190,14 +199,16 @@ class ExpressionEvaluator:
         value = node.value
         if isinstance(value, bool):
             return Value("bool", A.Bool(value))
-        if isinstance(value, int) or (
-            isinstance(value, float) and math.isfinite(value)
-        ):
-            kind = "int" if isinstance(value, int) else "float"
-            exact = Fraction(value) if kind == "int" else self._exact(node, value)
+        if value.__class__ is int:  # (a literal's value is never of a subclass)
+            term = _int_term(value)
+            if term is None:
+                return replace(self.unknown(node, "int"), literal=True)
+            return Value("int", term, literal=True)
+        if isinstance(value, float) and math.isfinite(value):
+            exact = self._exact(node, value)
             if arith.too_large(exact):
-                return replace(self.unknown(node, kind), literal=True)
-            return Value(kind, A.Num(exact, kind == "int"), literal=True)
+                return replace(self.unknown(node, "float"), literal=True)
+            return Value("float", A.Num(exact, False), literal=True)
         if isinstance(value, str):
             return Value("str", A.Str(value))
         if value is None:
