@@ -143,6 +143,35 @@ def test_local_bindings_walks_expressions_when_the_file_has_a_walrus() -> None:
     assert "n" not in local_bindings(function, walrus=False)
 
 
+def test_type_names_memo_keeps_messages_and_interfaces_apart_per_file(
+    tmp_path: Path,
+) -> None:
+    """`FileContext`'s memo of `msg_type_named` and `interface_named` (issue 25
+    target 1): each question keeps its own answer for the same dotted name, in
+    either order, and a later file's check still records the types it looked up
+    in the catalog's `touched` (which decides its cache entry)."""
+    from robotfix.analysis.context import FileContext
+    from robotfix.ros.catalog import MsgCatalog
+    from robotfix.source import SourceFile
+
+    srv = tmp_path / "pkg" / "srv" / "AddTwoInts.srv"
+    srv.parent.mkdir(parents=True)
+    srv.write_text("int64 a\n---\nint64 sum\n")
+    catalog = MsgCatalog([srv])
+    for interface_first in (False, True):
+        catalog.touched = set()
+        ctx = FileContext(SourceFile.from_bytes("n.py", b""), catalog, print)
+        for _ in range(2):
+            if interface_first:
+                assert ctx.interface_named("pkg.srv.AddTwoInts") == "pkg/AddTwoInts"
+            assert ctx.msg_type_named("pkg.srv.AddTwoInts") is None
+            assert ctx.interface_named("pkg.srv.AddTwoInts") == "pkg/AddTwoInts"
+            request = ctx.msg_type_named("pkg.srv.AddTwoInts.Request")
+            assert request == "pkg/AddTwoInts_Request"
+            assert ctx.interface_named("pkg.srv.AddTwoInts.Request") is None
+        assert "pkg/AddTwoInts_Request" in catalog.touched
+
+
 def test_int_literal_terms_are_made_once_per_value() -> None:
     """The int literal memo (issue 25 target 1) gives the term a literal had
     before it, and None (unknown) for one too large to model."""
