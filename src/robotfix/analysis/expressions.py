@@ -25,7 +25,7 @@ from robotfix.analysis import (
 )
 from robotfix.analysis.checks import Checker
 from robotfix.analysis.constants import is_constant
-from robotfix.analysis.context import TERM_LIMIT, FileContext
+from robotfix.analysis.context import TERM_LIMIT, BudgetExceededError, FileContext
 from robotfix.analysis.fieldchecks import FieldChecker
 from robotfix.analysis.flows import FlowLog, Where
 from robotfix.analysis.lookups import Lookups
@@ -159,7 +159,10 @@ class ExpressionEvaluator:
 
     # -- dispatch ------------------------------------------------------------
     def eval(self, node: ast.expr, state: State) -> Value:
-        self.ctx.step(node)
+        budget = self.ctx.budget  # `FileContext.step`, inline: a call per node
+        budget.used += 1
+        if budget.used > budget.limit:
+            raise BudgetExceededError(getattr(node, "lineno", 1))
         kind = type(node)
         method = self._eval_table.get(kind, _MISSING)
         if method is _MISSING:  # the evaluator's class's method for this node class

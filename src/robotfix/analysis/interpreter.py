@@ -25,7 +25,12 @@ from robotfix.analysis import heap, imported
 from robotfix.analysis.binder import module_statics
 from robotfix.analysis.compound import CompoundWalker
 from robotfix.analysis.constants import scan
-from robotfix.analysis.context import FileContext, Scope, build_scope
+from robotfix.analysis.context import (
+    BudgetExceededError,
+    FileContext,
+    Scope,
+    build_scope,
+)
 from robotfix.analysis.flows import FlowLog, Where, array_kind
 from robotfix.analysis.index import index_of
 from robotfix.analysis.program import Function, Program, collect
@@ -176,10 +181,13 @@ class Interpreter(CompoundWalker):
         """Run statements; each one's deferred reports are made after it (not
         `flush`: a helper's body run inside the caller's statement)."""
         visits = _VISIT.setdefault(type(self), {})
+        budget = self.ctx.budget
         for stmt in body:
             if not state.reachable:
                 break
-            self.ctx.step(stmt)
+            budget.used += 1  # `FileContext.step`, inline: a call per statement
+            if budget.used > budget.limit:
+                raise BudgetExceededError(getattr(stmt, "lineno", 1))
             self.site = stmt
             kind = type(stmt)
             method = visits.get(kind, _MISSING)
