@@ -117,7 +117,7 @@ class FileContext:
         self.follow_lists: bool | None = None
         self._reported: set[tuple[object, ...]] = set()
         # reports a later one at the same statement may replace (`defer`)
-        self._deferred: dict[tuple[object, ...], Diagnostic] = {}
+        self.deferred: dict[tuple[object, ...], Diagnostic] = {}
         # RF511 notes, kept only if the file turns out RobotFix-like (`metadata_notes`)
         self._metadata_notes: list[Diagnostic] = []
         self.uses_refinements = False  # some annotation of the file is a refinement
@@ -284,12 +284,12 @@ class FileContext:
         `math.radians()`", not "drop the call")."""
         self.dropped += bool(self.muted)
         if not self.muted and once not in self._reported:
-            self._deferred.setdefault(once, diag)
+            self.deferred.setdefault(once, diag)
 
     def flush(self) -> None:
         """Report what `defer` kept and nothing replaced."""
-        if self._deferred:
-            waiting, self._deferred = self._deferred, {}
+        if self.deferred:
+            waiting, self.deferred = self.deferred, {}
             for once, diag in waiting.items():
                 self.report(diag, once=once)
 

@@ -181,7 +181,8 @@ class Interpreter(CompoundWalker):
         """Run statements; each one's deferred reports are made after it (not
         `flush`: a helper's body run inside the caller's statement)."""
         visits = _VISIT.setdefault(type(self), {})
-        budget = self.ctx.budget
+        ctx = self.ctx
+        budget = ctx.budget
         for stmt in body:
             if not state.reachable:
                 break
@@ -196,8 +197,8 @@ class Interpreter(CompoundWalker):
                     type(self), f"visit_{kind.__name__}", None
                 )
             state = method(self, stmt, state) if method else self.generic(stmt, state)
-            if flush:
-                self.ctx.flush()
+            if flush and ctx.deferred:  # (no call for the many that defer nothing)
+                ctx.flush()
         return state
 
     def generic(self, stmt: ast.stmt, state: State) -> State:
