@@ -263,7 +263,10 @@ class ExpressionEvaluator:
                 return constant
             text = self.ctx.source.segment(node) or node.attr
             ref = base.ref
-            self.note_hover(node, lambda: hover.field(self.ctx, state, ref, node.attr))
+            if self.ctx.hovers is not None:  # the editor asks: else no closure
+                self.note_hover(
+                    node, lambda: hover.field(self.ctx, state, ref, node.attr)
+                )
             value = self.fields.read_field(state, base.ref, node.attr, self.site, text)
             return frames.framed_read(state, base.ref, node.attr, value)
         if base.kind in ("instance", "goal_handle") and isinstance(
@@ -271,12 +274,13 @@ class ExpressionEvaluator:
         ):
             var = node.value.id
             value = self.instance_attribute(base, var, node, state)
-            self.note_hover(
-                node,
-                lambda: self.lookups.describe_attribute(
-                    base, var, node.attr, value, state
-                ),
-            )
+            if self.ctx.hovers is not None:
+                self.note_hover(
+                    node,
+                    lambda: self.lookups.describe_attribute(
+                        base, var, node.attr, value, state
+                    ),
+                )
             return value
         found = self.member(base, node.attr, state)
         if found is not None:

@@ -239,7 +239,7 @@ class Interpreter(CompoundWalker):
         value = self.eval(node.value, state)
         for target in node.targets:
             self.bind(target, value, state)
-            if len(node.targets) == 1:
+            if len(node.targets) == 1 and self.ctx.unit_flows is not None:
                 self._record_flow(node.value, target, value, state)
         return state
 
