@@ -27,6 +27,7 @@ from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.diagnostics import Span
 
+_BUILTIN_VALUES: dict[str, Value] = {}  # a builtin's name -> its value, once made
 STATIC_KINDS = frozenset({"module", "msgclass", "interface", "function", "class"})
 
 
@@ -149,8 +150,11 @@ class Binder(CallEvaluator):
                 decl = module.decls.get(name)
                 return self._assumed_or_unknown(decl, name, state, node)
             return self._global(name, state)
-        if name in BUILTINS:
-            return Value("builtin", name=name)
+        if name in BUILTINS:  # (values are never changed: one per builtin)
+            found = _BUILTIN_VALUES.get(name)
+            if found is None:
+                found = _BUILTIN_VALUES[name] = Value("builtin", name=name)
+            return found
         closure = self.function is not None and (
             isinstance(self.function.node, ast.Lambda)
             or self.function.key.startswith("<")
