@@ -80,6 +80,9 @@ _MISSING: Callable[..., Value] = lambda *_: NONE  # noqa: E731 - a marker only
 MAX_ROOT = 4  # `x ** 0.25` has a unit; `x ** 0.3` (3/10) is left without one
 # terms with no subterms: never larger than TERM_LIMIT
 _LEAF_TERMS = (A.Sym, A.Num, A.Bool, A.Str, A.Name)
+# what a number's or a string's truth compares it with (terms are immutable)
+_ZEROS = {False: A.Num(Fraction(0), False), True: A.Num(Fraction(0), True)}
+_EMPTY = A.Str("")
 
 
 @lru_cache(maxsize=4096)
@@ -776,16 +779,16 @@ class ExpressionEvaluator:
         if value.term is not None and value.kind == "bool":
             return value.term
         if value.term is not None and value.kind in ("int", "float"):
-            return A.Binary("!=", value.term, A.Num(Fraction(0), value.kind == "int"))
+            return A.Binary("!=", value.term, _ZEROS[value.kind == "int"])
         if value.term is not None and value.kind == "str":
-            return A.Binary("!=", value.term, A.Str(""))
+            return A.Binary("!=", value.term, _EMPTY)
         if value.kind == "none":
             return A.Bool(False)
         length = containers.length_term(value) if value.kind in SEQUENCES else None
         if (
             length is not None and value.kind != "generator"
         ):  # a list is true if not empty
-            return A.Binary(">", length, A.Num(Fraction(0), True))
+            return A.Binary(">", length, _ZEROS[True])
         if value.kind == "tuple" and value.elements is not None:
             return A.Bool(len(value.elements) > 0)
         term = value.term
