@@ -184,3 +184,22 @@ def test_int_literal_terms_are_made_once_per_value() -> None:
         assert _int_term(value) == A.Num(Fraction(value), True)
         assert _int_term(value) is _int_term(value)
     assert _int_term(10**100) is None
+
+
+def test_float_literal_terms_are_kept_per_text_and_value() -> None:
+    """The float literal memo (issue 25 target 1) is keyed by the literal's text:
+    two texts of one float are two exact numbers, and a text that is no plain
+    decimal (or no text) falls back to the float's value."""
+    from fractions import Fraction
+
+    from robotfix.analysis.expressions import _float_term
+    from robotfix.annotations import ast as A
+
+    assert _float_term("0.1", 0.1) == A.Num(Fraction(1, 10), False)
+    long = "0.1000000000000000000001"
+    assert float(long) == 0.1
+    assert _float_term(long, 0.1) == A.Num(Fraction(long), False)
+    assert _float_term("", 0.1) == A.Num(Fraction(0.1), False)
+    assert _float_term("1e-9999999", 0.0) == A.Num(Fraction(0), False)
+    assert _float_term("1e200", 1e200) is None  # too large to model
+    assert _float_term("0.1", 0.1) is _float_term("0.1", 0.1)

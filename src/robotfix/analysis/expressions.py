@@ -94,6 +94,28 @@ def _int_term(value: int) -> A.Num | None:
     return None if arith.too_large(exact) else A.Num(exact, True)
 
 
+@lru_cache(maxsize=4096)
+def _float_term(text: str, value: float) -> A.Num | None:
+    """The term of a float literal written `text`, as `_int_term`'s (one per text
+    and value, not per occurrence)."""
+    exact = _decimal(text)
+    if exact is None:
+        exact = Fraction(value)
+    return None if arith.too_large(exact) else A.Num(exact, False)
+
+
+def _decimal(text: str) -> Fraction | None:
+    """Reals are exact: `3.141592653589793238` is read from the source text."""
+    match = _DECIMAL.fullmatch(text) if text else None
+    # the exponent bounded: Fraction("1e-999999999") computes 10**999999999
+    if match and len(match.group(1) or "") < 6:
+        try:
+            return Fraction(text.replace("_", ""))
+        except (ValueError, ZeroDivisionError):
+            pass
+    return None
+
+
 class ExpressionEvaluator:
     def __init__(self, ctx: FileContext, program: Program) -> None:
         self.ctx = ctx
@@ -211,27 +233,15 @@ class ExpressionEvaluator:
                 return replace(self.unknown(node, "int"), literal=True)
             return Value("int", term, literal=True)
         if isinstance(value, float) and math.isfinite(value):
-            exact = self._exact(node, value)
-            if arith.too_large(exact):
+            term = _float_term(self.ctx.source.segment(node) or "", value)
+            if term is None:
                 return replace(self.unknown(node, "float"), literal=True)
-            return Value("float", A.Num(exact, False), literal=True)
+            return Value("float", term, literal=True)
         if isinstance(value, str):
             return Value("str", A.Str(value))
         if value is None:
             return NONE
         return self.unknown(node)
-
-    def _exact(self, node: ast.Constant, value: float) -> Fraction:
-        """Reals are exact: `3.141592653589793238` is read from the source text."""
-        text = self.ctx.source.segment(node) or ""
-        match = _DECIMAL.fullmatch(text) if text else None
-        # the exponent bounded: Fraction("1e-999999999") computes 10**999999999
-        if match and len(match.group(1) or "") < 6:
-            try:
-                return Fraction(text.replace("_", ""))
-            except (ValueError, ZeroDivisionError):
-                pass
-        return Fraction(value)
 
     def eval_Name(self, node: ast.Name, state: State) -> Value:
         value = self.lookup_name(node.id, state, node)
