@@ -170,7 +170,6 @@ def _function_for(program: Program, node: ast.AST, parent: Scope) -> Function:
 # walker class -> statement class -> its `visit_<statement class>` function, or
 # None: `exec_block`'s dispatch without building a name and a bound method
 _VISIT: dict[type, dict[type, Callable[..., State] | None]] = {}
-_MISSING: Callable[..., State] = lambda *_: State()  # noqa: E731 - a marker only
 
 
 class Interpreter(CompoundWalker):
@@ -191,8 +190,9 @@ class Interpreter(CompoundWalker):
                 raise BudgetExceededError(getattr(stmt, "lineno", 1))
             self.site = stmt
             kind = type(stmt)
-            method = visits.get(kind, _MISSING)
-            if method is _MISSING:  # the walker's class's method for this statement
+            try:  # (as `eval`'s dispatch)
+                method = visits[kind]
+            except KeyError:  # the walker's class's method for this statement
                 method = visits[kind] = getattr(
                     type(self), f"visit_{kind.__name__}", None
                 )
