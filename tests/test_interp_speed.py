@@ -203,3 +203,49 @@ def test_float_literal_terms_are_kept_per_text_and_value() -> None:
     assert _float_term("1e-9999999", 0.0) == A.Num(Fraction(0), False)
     assert _float_term("1e200", 1e200) is None  # too large to model
     assert _float_term("0.1", 0.1) is _float_term("0.1", 0.1)
+
+
+def test_dispatch_tables_are_kept_per_evaluator_class() -> None:
+    """`eval` and `exec_block` keep one method table per class (issue 25 target
+    1): a subclass that overrides a method is dispatched to its own, also after
+    its base class dispatched the same node class, and the base to its own after
+    (a table keyed by the node class alone fails one or the other)."""
+    from fractions import Fraction
+
+    from robotfix.analysis.constants import scan
+    from robotfix.analysis.context import FileContext, build_scope
+    from robotfix.analysis.index import index_of
+    from robotfix.analysis.interpreter import Interpreter
+    from robotfix.analysis.program import collect
+    from robotfix.analysis.state import State
+    from robotfix.analysis.values import NONE, Value
+    from robotfix.annotations import ast as A
+    from robotfix.ros.catalog import MsgCatalog
+    from robotfix.source import SourceFile
+
+    source = SourceFile.from_bytes("n.py", b"x = 1\npass\n")
+    assert source.tree is not None
+    ctx = FileContext(source, MsgCatalog([]), print)
+    ctx.record_imports(index_of(source.tree))
+    ctx.constants = scan(source.tree, ctx.index, ctx.qualname, False)
+    module = build_scope(ctx, "module", "<module>", source.tree, None)
+    program = collect(ctx, source.tree, module)
+
+    class Marked(Interpreter):
+        def eval_Constant(self, node: ast.Constant, state: State) -> Value:  # noqa: N802
+            return Value("str", A.Str("marked"))
+
+        def visit_Pass(self, node: ast.stmt, state: State) -> State:  # noqa: N802
+            state.env["passed"] = NONE
+            return state
+
+    def run(kind: type[Interpreter]) -> dict[str, object]:
+        walker = kind(ctx, program, module, {})
+        return dict(walker.exec_block(source.tree.body, State()).env)  # type: ignore[union-attr]
+
+    one = Value("int", A.Num(Fraction(1), True), literal=True)
+    for kind in (Interpreter, Marked, Interpreter, Marked):
+        env = run(kind)
+        marked = kind is Marked
+        assert env["x"] == (Value("str", A.Str("marked")) if marked else one)
+        assert ("passed" in env) == marked
