@@ -177,13 +177,13 @@ def test_int_literal_terms_are_made_once_per_value() -> None:
     before it, and None (unknown) for one too large to model."""
     from fractions import Fraction
 
-    from robotfix.analysis.expressions import _int_term
+    from robotfix.analysis.literals import int_term
     from robotfix.annotations import ast as A
 
     for value in (0, 1, -7, 2**40):
-        assert _int_term(value) == A.Num(Fraction(value), True)
-        assert _int_term(value) is _int_term(value)
-    assert _int_term(10**100) is None
+        assert int_term(value) == A.Num(Fraction(value), True)
+        assert int_term(value) is int_term(value)
+    assert int_term(10**100) is None
 
 
 def test_float_literal_terms_are_kept_per_text_and_value() -> None:
@@ -192,17 +192,17 @@ def test_float_literal_terms_are_kept_per_text_and_value() -> None:
     decimal (or no text) falls back to the float's value."""
     from fractions import Fraction
 
-    from robotfix.analysis.expressions import _float_term
+    from robotfix.analysis.literals import float_term
     from robotfix.annotations import ast as A
 
-    assert _float_term("0.1", 0.1) == A.Num(Fraction(1, 10), False)
+    assert float_term("0.1", 0.1) == A.Num(Fraction(1, 10), False)
     long = "0.1000000000000000000001"
     assert float(long) == 0.1
-    assert _float_term(long, 0.1) == A.Num(Fraction(long), False)
-    assert _float_term("", 0.1) == A.Num(Fraction(0.1), False)
-    assert _float_term("1e-9999999", 0.0) == A.Num(Fraction(0), False)
-    assert _float_term("1e200", 1e200) is None  # too large to model
-    assert _float_term("0.1", 0.1) is _float_term("0.1", 0.1)
+    assert float_term(long, 0.1) == A.Num(Fraction(long), False)
+    assert float_term("", 0.1) == A.Num(Fraction(0.1), False)
+    assert float_term("1e-9999999", 0.0) == A.Num(Fraction(0), False)
+    assert float_term("1e200", 1e200) is None  # too large to model
+    assert float_term("0.1", 0.1) is float_term("0.1", 0.1)
 
 
 def test_dispatch_tables_are_kept_per_evaluator_class() -> None:

@@ -9,10 +9,9 @@ from __future__ import annotations
 
 import ast
 import math
-import re
 from collections.abc import Callable
 from fractions import Fraction
-from functools import lru_cache, partial
+from functools import partial
 from typing import TypeVar
 
 from robotfix.analysis import (
@@ -28,6 +27,7 @@ from robotfix.analysis.constants import is_constant
 from robotfix.analysis.context import TERM_LIMIT, BudgetExceededError, FileContext
 from robotfix.analysis.fieldchecks import FieldChecker
 from robotfix.analysis.flows import FlowLog, Where
+from robotfix.analysis.literals import float_term, int_term
 from robotfix.analysis.lookups import Lookups
 from robotfix.analysis.param_eval import ParameterCalls
 from robotfix.analysis.program import Program
@@ -56,7 +56,6 @@ COMPARE = {
     ast.Gt: ">",
     ast.GtE: ">=",
 }
-_DECIMAL = re.compile(r"[0-9_]*\.?[0-9_]*([eE][+-]?[0-9_]+)?")
 # Values that are never None.
 STATIC_VALUES = frozenset(
     {
@@ -82,37 +81,6 @@ _LEAF_TERMS = (A.Sym, A.Num, A.Bool, A.Str, A.Name)
 # what a number's or a string's truth compares it with (terms are immutable)
 _ZEROS = {False: A.Num(Fraction(0), False), True: A.Num(Fraction(0), True)}
 _EMPTY = A.Str("")
-
-
-@lru_cache(maxsize=4096)
-def _int_term(value: int) -> A.Num | None:
-    """The term of an int literal, None if too large to model: one term per value,
-    not per occurrence (terms are immutable, and what is kept by a term's identity
-    answers alike for equal leaves)."""
-    exact = Fraction(value)
-    return None if arith.too_large(exact) else A.Num(exact, True)
-
-
-@lru_cache(maxsize=4096)
-def _float_term(text: str, value: float) -> A.Num | None:
-    """The term of a float literal written `text`, as `_int_term`'s (one per text
-    and value, not per occurrence)."""
-    exact = _decimal(text)
-    if exact is None:
-        exact = Fraction(value)
-    return None if arith.too_large(exact) else A.Num(exact, False)
-
-
-def _decimal(text: str) -> Fraction | None:
-    """Reals are exact: `3.141592653589793238` is read from the source text."""
-    match = _DECIMAL.fullmatch(text) if text else None
-    # the exponent bounded: Fraction("1e-999999999") computes 10**999999999
-    if match and len(match.group(1) or "") < 6:
-        try:
-            return Fraction(text.replace("_", ""))
-        except (ValueError, ZeroDivisionError):
-            pass
-    return None
 
 
 class ExpressionEvaluator:
@@ -228,12 +196,12 @@ class ExpressionEvaluator:
         if isinstance(value, bool):
             return Value("bool", A.Bool(value))
         if value.__class__ is int:  # (a literal's value is never of a subclass)
-            term = _int_term(value)
+            term = int_term(value)
             if term is None:
                 return replace(self.unknown(node, "int"), literal=True)
             return Value("int", term, literal=True)
         if isinstance(value, float) and math.isfinite(value):
-            term = _float_term(self.ctx.source.segment(node) or "", value)
+            term = float_term(self.ctx.source.segment(node) or "", value)
             if term is None:
                 return replace(self.unknown(node, "float"), literal=True)
             return Value("float", term, literal=True)
