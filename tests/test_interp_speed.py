@@ -141,3 +141,111 @@ def test_local_bindings_walks_expressions_when_the_file_has_a_walrus() -> None:
     function = tree.body[0]
     assert "n" in local_bindings(function)
     assert "n" not in local_bindings(function, walrus=False)
+
+
+def test_type_names_memo_keeps_messages_and_interfaces_apart_per_file(
+    tmp_path: Path,
+) -> None:
+    """`FileContext`'s memo of `msg_type_named` and `interface_named` (issue 25
+    target 1): each question keeps its own answer for the same dotted name, in
+    either order, and a later file's check still records the types it looked up
+    in the catalog's `touched` (which decides its cache entry)."""
+    from robotfix.analysis.context import FileContext
+    from robotfix.ros.catalog import MsgCatalog
+    from robotfix.source import SourceFile
+
+    srv = tmp_path / "pkg" / "srv" / "AddTwoInts.srv"
+    srv.parent.mkdir(parents=True)
+    srv.write_text("int64 a\n---\nint64 sum\n")
+    catalog = MsgCatalog([srv])
+    for interface_first in (False, True):
+        catalog.touched = set()
+        ctx = FileContext(SourceFile.from_bytes("n.py", b""), catalog, print)
+        for _ in range(2):
+            if interface_first:
+                assert ctx.interface_named("pkg.srv.AddTwoInts") == "pkg/AddTwoInts"
+            assert ctx.msg_type_named("pkg.srv.AddTwoInts") is None
+            assert ctx.interface_named("pkg.srv.AddTwoInts") == "pkg/AddTwoInts"
+            request = ctx.msg_type_named("pkg.srv.AddTwoInts.Request")
+            assert request == "pkg/AddTwoInts_Request"
+            assert ctx.interface_named("pkg.srv.AddTwoInts.Request") is None
+        assert "pkg/AddTwoInts_Request" in catalog.touched
+
+
+def test_int_literal_terms_are_made_once_per_value() -> None:
+    """The int literal memo (issue 25 target 1) gives the term a literal had
+    before it, and None (unknown) for one too large to model."""
+    from fractions import Fraction
+
+    from robotfix.analysis.literals import int_term
+    from robotfix.annotations import ast as A
+
+    for value in (0, 1, -7, 2**40):
+        assert int_term(value) == A.Num(Fraction(value), True)
+        assert int_term(value) is int_term(value)
+    assert int_term(10**100) is None
+
+
+def test_float_literal_terms_are_kept_per_text_and_value() -> None:
+    """The float literal memo (issue 25 target 1) is keyed by the literal's text:
+    two texts of one float are two exact numbers, and a text that is no plain
+    decimal (or no text) falls back to the float's value."""
+    from fractions import Fraction
+
+    from robotfix.analysis.literals import float_term
+    from robotfix.annotations import ast as A
+
+    assert float_term("0.1", 0.1) == A.Num(Fraction(1, 10), False)
+    long = "0.1000000000000000000001"
+    assert float(long) == 0.1
+    assert float_term(long, 0.1) == A.Num(Fraction(long), False)
+    assert float_term("", 0.1) == A.Num(Fraction(0.1), False)
+    assert float_term("1e-9999999", 0.0) == A.Num(Fraction(0), False)
+    assert float_term("1e200", 1e200) is None  # too large to model
+    assert float_term("0.1", 0.1) is float_term("0.1", 0.1)
+
+
+def test_dispatch_tables_are_kept_per_evaluator_class() -> None:
+    """`eval` and `exec_block` keep one method table per class (issue 25 target
+    1): a subclass that overrides a method is dispatched to its own, also after
+    its base class dispatched the same node class, and the base to its own after
+    (a table keyed by the node class alone fails one or the other)."""
+    from fractions import Fraction
+
+    from robotfix.analysis.constants import scan
+    from robotfix.analysis.context import FileContext, build_scope
+    from robotfix.analysis.index import index_of
+    from robotfix.analysis.interpreter import Interpreter
+    from robotfix.analysis.program import collect
+    from robotfix.analysis.state import State
+    from robotfix.analysis.values import NONE, Value
+    from robotfix.annotations import ast as A
+    from robotfix.ros.catalog import MsgCatalog
+    from robotfix.source import SourceFile
+
+    source = SourceFile.from_bytes("n.py", b"x = 1\npass\n")
+    assert source.tree is not None
+    ctx = FileContext(source, MsgCatalog([]), print)
+    ctx.record_imports(index_of(source.tree))
+    ctx.constants = scan(source.tree, ctx.index, ctx.qualname, False)
+    module = build_scope(ctx, "module", "<module>", source.tree, None)
+    program = collect(ctx, source.tree, module)
+
+    class Marked(Interpreter):
+        def eval_Constant(self, node: ast.Constant, state: State) -> Value:  # noqa: N802
+            return Value("str", A.Str("marked"))
+
+        def visit_Pass(self, node: ast.stmt, state: State) -> State:  # noqa: N802
+            state.env["passed"] = NONE
+            return state
+
+    def run(kind: type[Interpreter]) -> dict[str, object]:
+        walker = kind(ctx, program, module, {})
+        return dict(walker.exec_block(source.tree.body, State()).env)  # type: ignore[union-attr]
+
+    one = Value("int", A.Num(Fraction(1), True), literal=True)
+    for kind in (Interpreter, Marked, Interpreter, Marked):
+        env = run(kind)
+        marked = kind is Marked
+        assert env["x"] == (Value("str", A.Str("marked")) if marked else one)
+        assert ("passed" in env) == marked

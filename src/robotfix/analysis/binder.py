@@ -27,6 +27,7 @@ from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.diagnostics import Span
 
+_BUILTIN_VALUES: dict[str, Value] = {}  # a builtin's name -> its value, once made
 STATIC_KINDS = frozenset({"module", "msgclass", "interface", "function", "class"})
 
 
@@ -141,16 +142,19 @@ class Binder(CallEvaluator):
             if outer.kind == "function" and name in outer.local_names:
                 return self._enclosing(outer, name, state, node)
             outer = outer.parent
-        module = scope.module()
         if name in self.statics:
             return self.statics[name]
+        module = scope.module()
         if scope is not module and name in module.local_names:
             if name in self.ctx.constants.changed_globals:
                 decl = module.decls.get(name)
                 return self._assumed_or_unknown(decl, name, state, node)
             return self._global(name, state)
-        if name in BUILTINS:
-            return Value("builtin", name=name)
+        if name in BUILTINS:  # (values are never changed: one per builtin)
+            found = _BUILTIN_VALUES.get(name)
+            if found is None:
+                found = _BUILTIN_VALUES[name] = Value("builtin", name=name)
+            return found
         closure = self.function is not None and (
             isinstance(self.function.node, ast.Lambda)
             or self.function.key.startswith("<")
@@ -325,7 +329,10 @@ class Binder(CallEvaluator):
                 )
             bound = state.env[target.id] = value.settled()
             self.lists_seen = self.lists_seen or value.kind == "list"
-            self.note_hover(target, lambda: self.describe_name(target.id, bound, state))
+            if self.ctx.hovers is not None:  # the editor asks: else no closure
+                self.note_hover(
+                    target, lambda: self.describe_name(target.id, bound, state)
+                )
             if self.scope.kind == "module" or (
                 self.scope.kind == "class" and self.scope.parent is self.scope.module()
             ):
@@ -339,12 +346,13 @@ class Binder(CallEvaluator):
                 self.bind_attribute(base, var, target.attr, value, state)
                 stored = state.env[f"{var}.{target.attr}"]
                 assert isinstance(stored, Value)
-                self.note_hover(
-                    target,
-                    lambda: self.lookups.describe_attribute(
-                        base, var, target.attr, stored, state
-                    ),
-                )
+                if self.ctx.hovers is not None:
+                    self.note_hover(
+                        target,
+                        lambda: self.lookups.describe_attribute(
+                            base, var, target.attr, stored, state
+                        ),
+                    )
             elif base.kind == "msg" and base.ref in state.heap:
                 ref = base.ref
                 self.note_hover(
@@ -632,10 +640,11 @@ class Binder(CallEvaluator):
                 )
             state.env[arg.arg] = value
             self.lists_seen = self.lists_seen or value.kind == "list"
-            self.note_hover(
-                self._name_span(arg),
-                lambda: self.describe_name(arg.arg, value, state),  # noqa: B023
-            )
+            if self.ctx.hovers is not None:  # the editor asks: else no span
+                self.note_hover(
+                    self._name_span(arg),
+                    lambda: self.describe_name(arg.arg, value, state),  # noqa: B023
+                )
 
     def _name_span(self, arg: ast.arg) -> Span:
         """Where a parameter's name is written (not its annotation)."""

@@ -88,6 +88,10 @@ class FileContext:
         # the other modules of the tree (`analysis/imported.py`); None: none known
         self.resolver = resolver
         self.catalog = catalog
+        # (`msg` or `interface`, a dotted name) -> what `msg_type_named` or
+        # `interface_named` says: the catalog does not change during a file's check,
+        # and the types it looked up are in its `touched` from the first time
+        self._type_names: dict[tuple[str, str | None], str | None] = {}
         self.discharge = discharge
         self.diagnostics: list[Diagnostic] = []
         self.sym_names: dict[int, str | ast.AST] = {}  # text, or a node to quote
@@ -113,7 +117,7 @@ class FileContext:
         self.follow_lists: bool | None = None
         self._reported: set[tuple[object, ...]] = set()
         # reports a later one at the same statement may replace (`defer`)
-        self._deferred: dict[tuple[object, ...], Diagnostic] = {}
+        self.deferred: dict[tuple[object, ...], Diagnostic] = {}
         # RF511 notes, kept only if the file turns out RobotFix-like (`metadata_notes`)
         self._metadata_notes: list[Diagnostic] = []
         self.uses_refinements = False  # some annotation of the file is a refinement
@@ -280,12 +284,12 @@ class FileContext:
         `math.radians()`", not "drop the call")."""
         self.dropped += bool(self.muted)
         if not self.muted and once not in self._reported:
-            self._deferred.setdefault(once, diag)
+            self.deferred.setdefault(once, diag)
 
     def flush(self) -> None:
         """Report what `defer` kept and nothing replaced."""
-        if self._deferred:
-            waiting, self._deferred = self._deferred, {}
+        if self.deferred:
+            waiting, self.deferred = self.deferred, {}
             for once, diag in waiting.items():
                 self.report(diag, once=once)
 
@@ -313,6 +317,12 @@ class FileContext:
         """`geometry_msgs.msg.Twist`, `std_msgs.Int32` or `pkg.srv.AddTwoIntsRequest`
         -> the catalog's `pkg/Name`, if it is a known message; ROS 2's nested
         section `pkg.srv.AddTwoInts.Request` -> `pkg/AddTwoInts_Request`."""
+        key = ("msg", qualified)
+        if key not in self._type_names:
+            self._type_names[key] = self._msg_type_named(qualified)
+        return self._type_names[key]
+
+    def _msg_type_named(self, qualified: str | None) -> str | None:
         found = self._split(qualified) or _section(qualified)
         if found is None:
             return None
@@ -331,6 +341,12 @@ class FileContext:
     def interface_named(self, qualified: str | None) -> str | None:
         """`pkg.srv.AddTwoInts` or `pkg.action.Fibonacci` -> `pkg/AddTwoInts`, when the
         catalog knows its sections."""
+        key = ("interface", qualified)
+        if key not in self._type_names:
+            self._type_names[key] = self._interface_named(qualified)
+        return self._type_names[key]
+
+    def _interface_named(self, qualified: str | None) -> str | None:
         found = self._split(qualified)
         if found is None:
             return None

@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import ast
 import math
-import re
 from collections.abc import Callable
 from fractions import Fraction
 from functools import partial
@@ -25,9 +24,10 @@ from robotfix.analysis import (
 )
 from robotfix.analysis.checks import Checker
 from robotfix.analysis.constants import is_constant
-from robotfix.analysis.context import TERM_LIMIT, FileContext
+from robotfix.analysis.context import TERM_LIMIT, BudgetExceededError, FileContext
 from robotfix.analysis.fieldchecks import FieldChecker
 from robotfix.analysis.flows import FlowLog, Where
+from robotfix.analysis.literals import float_term, int_term
 from robotfix.analysis.lookups import Lookups
 from robotfix.analysis.param_eval import ParameterCalls
 from robotfix.analysis.program import Program
@@ -56,7 +56,6 @@ COMPARE = {
     ast.Gt: ">",
     ast.GtE: ">=",
 }
-_DECIMAL = re.compile(r"[0-9_]*\.?[0-9_]*([eE][+-]?[0-9_]+)?")
 # Values that are never None.
 STATIC_VALUES = frozenset(
     {
@@ -73,13 +72,15 @@ STATIC_VALUES = frozenset(
 )
 
 
-# (evaluator class, node class) -> its `eval_<node class>` function, or None: the
+# evaluator class -> node class -> its `eval_<node class>` function, or None: the
 # dispatch of `ExpressionEvaluator.eval` without building a name and a bound method
-_EVAL: dict[tuple[type, type], Callable[..., Value] | None] = {}
-_MISSING: Callable[..., Value] = lambda *_: NONE  # noqa: E731 - a marker only
+_EVAL: dict[type, dict[type, Callable[..., Value] | None]] = {}
 MAX_ROOT = 4  # `x ** 0.25` has a unit; `x ** 0.3` (3/10) is left without one
 # terms with no subterms: never larger than TERM_LIMIT
 _LEAF_TERMS = (A.Sym, A.Num, A.Bool, A.Str, A.Name)
+# what a number's or a string's truth compares it with (terms are immutable)
+_ZEROS = {False: A.Num(Fraction(0), False), True: A.Num(Fraction(0), True)}
+_EMPTY = A.Str("")
 
 
 class ExpressionEvaluator:
@@ -99,6 +100,7 @@ class ExpressionEvaluator:
         # the symbol each attribute read last gave (`decisions.py`: two tests of
         # `scan.range_min` read one tracked value)
         self.attribute_terms: dict[int, int] = {}
+        self._eval_table = _EVAL.setdefault(type(self), {})  # `eval`'s dispatch
 
     # -- to be provided by the statement interpreter --------------------------
     def lookup_name(self, name: str, state: State, node: ast.AST) -> Value:
@@ -149,12 +151,17 @@ class ExpressionEvaluator:
 
     # -- dispatch ------------------------------------------------------------
     def eval(self, node: ast.expr, state: State) -> Value:
-        self.ctx.step(node)
+        budget = self.ctx.budget  # `FileContext.step`, inline: a call per node
+        budget.used += 1
+        if budget.used > budget.limit:
+            raise BudgetExceededError(getattr(node, "lineno", 1))
         kind = type(node)
-        key = (type(self), kind)
-        method = _EVAL.get(key, _MISSING)
-        if method is _MISSING:  # the evaluator's class's method for this node class
-            method = _EVAL[key] = getattr(type(self), f"eval_{kind.__name__}", None)
+        try:  # (a subscript: cheaper than a `get` call; found all but once a class)
+            method = self._eval_table[kind]
+        except KeyError:  # the evaluator's class's method for this node class
+            method = self._eval_table[kind] = getattr(
+                type(self), f"eval_{kind.__name__}", None
+            )
         if method is None:
             self.eval_children(node, state)
             return self.unknown(node)
@@ -188,31 +195,21 @@ class ExpressionEvaluator:
         value = node.value
         if isinstance(value, bool):
             return Value("bool", A.Bool(value))
-        if isinstance(value, int) or (
-            isinstance(value, float) and math.isfinite(value)
-        ):
-            kind = "int" if isinstance(value, int) else "float"
-            exact = Fraction(value) if kind == "int" else self._exact(node, value)
-            if arith.too_large(exact):
-                return replace(self.unknown(node, kind), literal=True)
-            return Value(kind, A.Num(exact, kind == "int"), literal=True)
+        if value.__class__ is int:  # (a literal's value is never of a subclass)
+            term = int_term(value)
+            if term is None:
+                return replace(self.unknown(node, "int"), literal=True)
+            return Value("int", term, literal=True)
+        if isinstance(value, float) and math.isfinite(value):
+            term = float_term(self.ctx.source.segment(node) or "", value)
+            if term is None:
+                return replace(self.unknown(node, "float"), literal=True)
+            return Value("float", term, literal=True)
         if isinstance(value, str):
             return Value("str", A.Str(value))
         if value is None:
             return NONE
         return self.unknown(node)
-
-    def _exact(self, node: ast.Constant, value: float) -> Fraction:
-        """Reals are exact: `3.141592653589793238` is read from the source text."""
-        text = self.ctx.source.segment(node) or ""
-        match = _DECIMAL.fullmatch(text) if text else None
-        # the exponent bounded: Fraction("1e-999999999") computes 10**999999999
-        if match and len(match.group(1) or "") < 6:
-            try:
-                return Fraction(text.replace("_", ""))
-            except (ValueError, ZeroDivisionError):
-                pass
-        return Fraction(value)
 
     def eval_Name(self, node: ast.Name, state: State) -> Value:
         value = self.lookup_name(node.id, state, node)
@@ -247,7 +244,10 @@ class ExpressionEvaluator:
                 return constant
             text = self.ctx.source.segment(node) or node.attr
             ref = base.ref
-            self.note_hover(node, lambda: hover.field(self.ctx, state, ref, node.attr))
+            if self.ctx.hovers is not None:  # the editor asks: else no closure
+                self.note_hover(
+                    node, lambda: hover.field(self.ctx, state, ref, node.attr)
+                )
             value = self.fields.read_field(state, base.ref, node.attr, self.site, text)
             return frames.framed_read(state, base.ref, node.attr, value)
         if base.kind in ("instance", "goal_handle") and isinstance(
@@ -255,12 +255,13 @@ class ExpressionEvaluator:
         ):
             var = node.value.id
             value = self.instance_attribute(base, var, node, state)
-            self.note_hover(
-                node,
-                lambda: self.lookups.describe_attribute(
-                    base, var, node.attr, value, state
-                ),
-            )
+            if self.ctx.hovers is not None:
+                self.note_hover(
+                    node,
+                    lambda: self.lookups.describe_attribute(
+                        base, var, node.attr, value, state
+                    ),
+                )
             return value
         found = self.member(base, node.attr, state)
         if found is not None:
@@ -756,16 +757,16 @@ class ExpressionEvaluator:
         if value.term is not None and value.kind == "bool":
             return value.term
         if value.term is not None and value.kind in ("int", "float"):
-            return A.Binary("!=", value.term, A.Num(Fraction(0), value.kind == "int"))
+            return A.Binary("!=", value.term, _ZEROS[value.kind == "int"])
         if value.term is not None and value.kind == "str":
-            return A.Binary("!=", value.term, A.Str(""))
+            return A.Binary("!=", value.term, _EMPTY)
         if value.kind == "none":
             return A.Bool(False)
         length = containers.length_term(value) if value.kind in SEQUENCES else None
         if (
             length is not None and value.kind != "generator"
         ):  # a list is true if not empty
-            return A.Binary(">", length, A.Num(Fraction(0), True))
+            return A.Binary(">", length, _ZEROS[True])
         if value.kind == "tuple" and value.elements is not None:
             return A.Bool(len(value.elements) > 0)
         term = value.term

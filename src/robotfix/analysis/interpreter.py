@@ -16,6 +16,7 @@ entry points); what statements say by their syntax alone is `stmtsyntax`.
 from __future__ import annotations
 
 import ast
+from collections.abc import Callable
 from fractions import Fraction
 from functools import partial
 
@@ -24,7 +25,12 @@ from robotfix.analysis import heap, imported
 from robotfix.analysis.binder import module_statics
 from robotfix.analysis.compound import CompoundWalker
 from robotfix.analysis.constants import scan
-from robotfix.analysis.context import FileContext, Scope, build_scope
+from robotfix.analysis.context import (
+    BudgetExceededError,
+    FileContext,
+    Scope,
+    build_scope,
+)
 from robotfix.analysis.flows import FlowLog, Where, array_kind
 from robotfix.analysis.index import index_of
 from robotfix.analysis.program import Function, Program, collect
@@ -161,6 +167,11 @@ def _function_for(program: Program, node: ast.AST, parent: Scope) -> Function:
     return program.add(Function(key, node, parent))
 
 
+# walker class -> statement class -> its `visit_<statement class>` function, or
+# None: `exec_block`'s dispatch without building a name and a bound method
+_VISIT: dict[type, dict[type, Callable[..., State] | None]] = {}
+
+
 class Interpreter(CompoundWalker):
     # -- blocks --------------------------------------------------------------
     def exec_block(
@@ -168,15 +179,26 @@ class Interpreter(CompoundWalker):
     ) -> State:
         """Run statements; each one's deferred reports are made after it (not
         `flush`: a helper's body run inside the caller's statement)."""
+        visits = _VISIT.setdefault(type(self), {})
+        ctx = self.ctx
+        budget = ctx.budget
         for stmt in body:
             if not state.reachable:
                 break
-            self.ctx.step(stmt)
+            budget.used += 1  # `FileContext.step`, inline: a call per statement
+            if budget.used > budget.limit:
+                raise BudgetExceededError(getattr(stmt, "lineno", 1))
             self.site = stmt
-            method = getattr(self, f"visit_{type(stmt).__name__}", None)
-            state = method(stmt, state) if method else self.generic(stmt, state)
-            if flush:
-                self.ctx.flush()
+            kind = type(stmt)
+            try:  # (as `eval`'s dispatch)
+                method = visits[kind]
+            except KeyError:  # the walker's class's method for this statement
+                method = visits[kind] = getattr(
+                    type(self), f"visit_{kind.__name__}", None
+                )
+            state = method(self, stmt, state) if method else self.generic(stmt, state)
+            if flush and ctx.deferred:  # (no call for the many that defer nothing)
+                ctx.flush()
         return state
 
     def generic(self, stmt: ast.stmt, state: State) -> State:
@@ -217,7 +239,7 @@ class Interpreter(CompoundWalker):
         value = self.eval(node.value, state)
         for target in node.targets:
             self.bind(target, value, state)
-            if len(node.targets) == 1:
+            if len(node.targets) == 1 and self.ctx.unit_flows is not None:
                 self._record_flow(node.value, target, value, state)
         return state
 

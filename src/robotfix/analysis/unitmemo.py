@@ -53,10 +53,10 @@ Key of an item (`Check.analyze`):
 Then, before a replay, the *entering state* must equal the one recorded
 (`_fingerprint`): the fresh-symbol counter and question counter (symbols a replayed
 item made keep their numbers, so everything after it numbers alike), the sizes of
-every container of the context, the program, the statics, the parameter and frame
-facts and the index, the number of functions whose signature is not built yet, the
-solver session's existence, and each `once` key the item asked about
-(`already`/`report`) that was set before it, with the answer it got.
+every container of the context (not its memo of catalog answers), the program, the
+statics, the parameter and frame facts and the index, the number of functions whose
+signature is not built yet, the solver session's existence, and each `once` key
+the item asked about (`already`/`report`) that was set before it, with its answer.
 
 An item is kept only when analysing it wrote nothing another item can read:
 its exit fingerprint equals its entering one but for the writes replay performs,
@@ -609,7 +609,7 @@ class Check:
             sum(1 for f in program.functions.values() if f.scope is None),
         ]
         for name, value in vars(ctx).items():
-            if name not in _OWN_CTX:
+            if name not in _OWN_CTX and name not in _MEMO_CTX:
                 parts.append(_shape(value))
         for name, value in vars(program).items():
             if name not in _OWN_PROGRAM:
@@ -692,6 +692,7 @@ _OWN_CTX = frozenset(
         "unit_shared",
     }
 )
+_MEMO_CTX = frozenset({"_type_names"})  # the catalog's answers: no item's state
 _OWN_PROGRAM = frozenset({"ends", "augmented", "reading_calls", "types"})
 _UNKEPT = object()
 
