@@ -23,8 +23,8 @@ the run against the floor that any demand rule can reach on these files:
 
     run / floor * (1 - spared / watched run)
 
-(shares of the watched run, as its watching slows every statement alike). Nothing
-of the analysis is changed.
+(CPU time throughout; shares of the watched run, as its watching slows every
+statement alike). Nothing of the analysis is changed.
 """
 
 from __future__ import annotations
@@ -101,12 +101,12 @@ class Oracle:
                 frame = [False, 0.0]  # carried, what its plain parts took
                 oracle.frames.append(frame)
                 oracle.carried = False
-                started = time.perf_counter()
+                started = time.process_time()
                 try:
                     state = real_block(self, [stmt], state, flush)
                 finally:
                     oracle.frames.pop()
-                took, kind = time.perf_counter() - started, type(stmt).__name__
+                took, kind = time.process_time() - started, type(stmt).__name__
                 carried = (
                     frame[0]
                     or oracle.carried
@@ -131,12 +131,12 @@ class Oracle:
             carrying, spent = oracle.carrying, sum(oracle.spent.values())
             oracle.carried = False
             oracle.watching += 1
-            started = time.perf_counter()
+            started = time.process_time()
             try:
                 result = real_run(*args, **kwargs)
             finally:
                 oracle.watching -= 1
-            took = time.perf_counter() - started
+            took = time.process_time() - started
             oracle.functions["all"] += took
             lambda_carried = isinstance(args[2], ast.Lambda) and oracle.carried
             if oracle.carrying == carrying and not lambda_carried:
@@ -158,10 +158,10 @@ class Oracle:
 
 
 def run(folders: list[Path]) -> float:
-    started = time.perf_counter()
+    started = time.process_time()
     with open(os.devnull, "w") as quiet, contextlib.redirect_stdout(quiet):
         cli.main(["check", *map(str, folders), "--no-cache", "-j", "1"])
-    return time.perf_counter() - started
+    return time.process_time() - started
 
 
 def main(argv: list[str]) -> None:
