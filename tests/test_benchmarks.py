@@ -82,3 +82,31 @@ def test_a_timed_seed_run_replays_no_result_cache(
     for _ in range(2):
         seed_programs.fresh([str(seed / "buggy.py")], [seed / "buggy.py"])
     assert len(set(caches)) == 2
+
+
+def test_the_demand_bound_tells_plain_statements_from_carrying_ones(
+    tmp_path: Path,
+) -> None:
+    """benchmarks/demand_bound.py's oracle watches the evaluator it names: a log
+    call carries nothing, a message built and published does, and a function of
+    log calls only is spared whole. Renamed stages would stop the script, not make
+    it report that nothing is spared."""
+    import demand_bound
+
+    (tmp_path / "node.py").write_text(
+        "from geometry_msgs.msg import Twist\n"
+        "class Node:\n"
+        "    def log(self, n):\n"
+        "        self.get_logger().info(f'{n} left')\n"
+        "    def tick(self):\n"
+        "        print('tick')\n"
+        "        msg = Twist()\n"
+        "        msg.linear.x = 0.5\n"
+        "        self.pub.publish(msg)\n"
+    )
+    with demand_bound.Oracle().installed() as oracle:
+        demand_bound.run([tmp_path])
+    assert oracle.spent["Expr"] > oracle.spared["Expr"] > 0
+    assert oracle.spared["Assign"] == 0 < oracle.spent["Assign"]
+    assert oracle.carrying == 3  # msg = Twist(), msg.linear.x = ..., publish
+    assert 0 < oracle.functions["plain"] < oracle.functions["all"]
