@@ -53,7 +53,7 @@ Key of an item (`Check.analyze`):
 Then, before a replay, the *entering state* must equal the one recorded
 (`_fingerprint`): the fresh-symbol counter and question counter (symbols a replayed
 item made keep their numbers, so everything after it numbers alike), the sizes of
-every container of the context (not its memo of catalog answers), the program, the
+every container of the context and the program (not their memos, `_MEMOS`), the
 statics, the parameter and frame facts and the index, the number of functions whose
 signature is not built yet, the solver session's existence, and each `once` key
 the item asked about (`already`/`report`) that was set before it, with its answer.
@@ -609,10 +609,10 @@ class Check:
             sum(1 for f in program.functions.values() if f.scope is None),
         ]
         for name, value in vars(ctx).items():
-            if name not in _OWN_CTX and name not in _MEMO_CTX:
+            if name not in _OWN_CTX and name not in _MEMOS:
                 parts.append(_shape(value))
         for name, value in vars(program).items():
-            if name not in _OWN_PROGRAM:
+            if name not in _OWN_PROGRAM and name not in _MEMOS:
                 parts.append(_shape(value))
         parts.append(sum(len(t) for t in program.attributes.values()))
         parts.append(len(self.statics))
@@ -692,8 +692,8 @@ _OWN_CTX = frozenset(
         "unit_shared",
     }
 )
-_MEMO_CTX = frozenset({"_type_names"})  # the catalog's answers: no item's state
 _OWN_PROGRAM = frozenset({"ends", "augmented", "reading_calls", "types"})
+_MEMOS = frozenset({"_type_names", "module_attributes"})  # same for any asker
 _UNKEPT = object()
 
 
