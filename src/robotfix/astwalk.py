@@ -56,7 +56,9 @@ def walk(roots: ast.AST | Iterable[ast.AST]) -> Iterator[ast.AST]:
     while todo:
         node = pop()
         yield node
-        extend(children(node))
+        kind = node.__class__
+        if kind is not ast.Name and kind is not ast.Constant:  # they have none
+            extend(children(node))
 
 
 def dotted(node: ast.expr) -> str | None:
