@@ -633,9 +633,7 @@ def test_every_word_the_analysis_reads_in_the_text_is_a_text_word() -> None:
     assert found and found <= set(TEXT_WORDS)
 
 
-def _replayed(
-    tmp_path: Path, text: str, *edits: str, catalog: object = None
-) -> int:
+def _replayed(tmp_path: Path, text: str, *edits: str, catalog: object = None) -> int:
     """Items replayed over `edits`, each checked after `text` was checked twice
     with one memo (recorded), every check a fresh check's output."""
     from robotfix.ros.catalog import MsgCatalog
