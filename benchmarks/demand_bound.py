@@ -86,7 +86,7 @@ class Oracle:
             return value
 
         def reports(ctx: Any) -> tuple[int, ...]:
-            return (len(ctx.diagnostics), len(ctx._deferred), len(ctx._reported))
+            return (len(ctx.diagnostics), len(ctx.deferred), len(ctx._reported))
 
         def watched_block(self: Any, body: Any, state: Any, flush: bool = True) -> Any:
             function = self.function
