@@ -877,6 +877,35 @@ def test_cpp_file_naming_no_endpoint_maker_is_not_parsed(
     assert not read_cpp(data).endpoints
 
 
+def test_cpp_file_naming_a_maker_in_its_comments_only_is_not_parsed(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """`@param` in a header's comments, `subscribe` in prose: a word, but no
+    call; what the parse would find besides (a base class of another package's
+    node, `::rclcpp::Node` too, or a maker called) still makes it parsed."""
+    from robotfix.ros.graph import cpp
+
+    parsed: list[bytes] = []
+    real = cpp._parser()
+
+    class Counting:
+        def parse(self, data: bytes) -> object:
+            parsed.append(data)
+            return real.parse(data)
+
+    monkeypatch.setattr(cpp, "_parser", Counting)
+    comment = b"/**\n * @param node the node to subscribe with\n */\n"
+    header = comment + b"class Server : public rclcpp::Node {\n  void run();\n};\n"
+    assert not read_cpp(header).endpoints and not parsed
+    for base in (b"nav2_util::LifecycleNode", b"::rclcpp::Node", b"util :: Node"):
+        other = comment + b"class Server : public " + base + b" {\n};\n"
+        found = read_cpp(other).endpoints
+        assert [e.value for e in found] == [base.replace(b" ", b"").decode()]
+    spaced = comment + b'void f() {\n  nh.param /* x */ ("rate", rate_, 1.0);\n}\n'
+    assert [e.kind for e in read_cpp(spaced).endpoints] == ["parameter"]
+    assert len(parsed) == 4
+
+
 def test_python_graph_looks_up_only_calls_whose_last_name_may_make_something(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
