@@ -31,7 +31,7 @@ import re
 from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from robotfix import messages
 from robotfix.diagnostics import Diagnostic, Note
@@ -141,7 +141,7 @@ def started_entries(
     out: list[Started] = []
     reals = sorted(by_real.items())  # (a plugin's package: the files inside it)
     inside: dict[Path, list[str]] = {}  # each plugin package's files, found once
-    targets: dict[Path, Any] = {}  # each package's CMake targets, read once
+    targets = launches.targets  # each package's CMake targets, read once a run
     built: dict[tuple[Path, str], list[Path]] = {}  # many entries start one
     for started in launches.started:
         entry = started.entry

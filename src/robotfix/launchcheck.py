@@ -136,6 +136,10 @@ class LaunchRun:
         self.reader = Reader(self.packages.get)
         self._build: dict[tuple[str, Path], Any] = {}  # packages' build files
         self._codes: dict[tuple[Path, str], Any] = {}  # by executable
+        # each package's CMake targets, read once a run for the C++ nodes'
+        # parameters and the graph (`graphcheck.started_entries`; kept through
+        # `fs.remembered`: a use hands the traces what the reading read)
+        self.targets: dict[Path, Any] = {}
         for path in launch_files:
             with guard(path, self.notices, faults):
                 self._read(path)
