@@ -218,7 +218,9 @@ def test_a_packages_cmake_targets_are_read_once_a_run(
 ) -> None:
     """The C++ nodes' parameters and the graph both ask what each launch entry's
     executable is built from: a package's CMakeLists.txt is read once a run (it
-    was read for each), and again in the next run (the memo is the run's)."""
+    was read for each, and each executable's sources and headers found), and
+    again in the next run (the memos are the run's)."""
+    from robotfix import graphcheck
     from robotfix.ros import executables
 
     workspace = tmp_path / "image_ws"
@@ -229,6 +231,13 @@ def test_a_packages_cmake_targets_are_read_once_a_run(
         executables,
         "_cmake_targets",
         lambda package: read.append(package.name) or real(package),
+    )
+    built: list[str] = []  # what an executable is built from: found once too
+    files = graphcheck.cpp_executable_files
+    monkeypatch.setattr(
+        graphcheck,
+        "cpp_executable_files",
+        lambda package, name, memo: built.append(name) or files(package, name, memo),
     )
     config = Config(root=workspace)
 
@@ -241,11 +250,12 @@ def test_a_packages_cmake_targets_are_read_once_a_run(
         )
 
     first = codes()
-    assert read == ["image_tools"]
+    assert read == ["image_tools"] and sorted(built) == ["cam2image", "showimage"]
     assert ("RF401", "camera.launch.py", 19) in first
     cmake = workspace / "image_tools" / "CMakeLists.txt"
-    built = cmake.read_text().replace("EXECUTABLE cam2image", "EXECUTABLE cam")
-    cmake.write_text(built)
+    cmake.write_text(
+        cmake.read_text().replace("EXECUTABLE cam2image", "EXECUTABLE cam")
+    )
     read.clear()
     second = codes()
     assert read == ["image_tools"]

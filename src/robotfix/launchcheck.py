@@ -140,6 +140,8 @@ class LaunchRun:
         # parameters and the graph (`graphcheck.started_entries`; kept through
         # `fs.remembered`: a use hands the traces what the reading read)
         self.targets: dict[Path, Any] = {}
+        # and what each (package, executable) is built from, alike
+        self.executables: dict[tuple[Path, str], Any] = {}
         for path in launch_files:
             with guard(path, self.notices, faults):
                 self._read(path)
