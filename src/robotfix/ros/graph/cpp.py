@@ -22,8 +22,9 @@ variable (`node->create_...`).
 
 Bad C++ never fails: tree-sitter recovers from errors; a file over
 `MAX_CPP_BYTES` is not read, and one without any of `WORDS` (or where no name
-that makes an endpoint stands as a word) not parsed. What the
-reading needs of the tree is matched by one tree-sitter query, in C.
+that makes an endpoint stands as a word, or none is called: `_may_make`) not
+parsed. What the reading needs of the tree is matched by one tree-sitter query,
+in C.
 """
 
 from __future__ import annotations
