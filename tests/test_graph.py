@@ -877,6 +877,68 @@ def test_cpp_file_naming_no_endpoint_maker_is_not_parsed(
     assert not read_cpp(data).endpoints
 
 
+def test_cpp_file_naming_a_maker_in_its_comments_only_is_not_parsed(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """`@param` in a header's comments, `subscribe` in prose: a word, but no
+    call; what the parse would find besides (a base class of another package's
+    node, `::rclcpp::Node` too, or a maker called) still makes it parsed."""
+    from robotfix.ros.graph import cpp
+
+    parsed: list[bytes] = []
+    real = cpp._parser()
+
+    class Counting:
+        def parse(self, data: bytes) -> object:
+            parsed.append(data)
+            return real.parse(data)
+
+    monkeypatch.setattr(cpp, "_parser", Counting)
+    comment = b"/**\n * @param node the node to subscribe with\n */\n"
+    header = comment + b"class Server : public rclcpp::Node {\n  void run();\n};\n"
+    assert not read_cpp(header).endpoints and not parsed
+    for base in (b"nav2_util::LifecycleNode", b"::rclcpp::Node", b"util :: Node"):
+        other = comment + b"class Server : public " + base + b" {\n};\n"
+        found = read_cpp(other).endpoints
+        assert [e.value for e in found] == [base.replace(b" ", b"").decode()]
+    spaced = comment + b'void f() {\n  nh.param /* x */ ("rate", rate_, 1.0);\n}\n'
+    assert [e.kind for e in read_cpp(spaced).endpoints] == ["parameter"]
+    assert len(parsed) == 4
+
+
+def test_python_graph_looks_up_only_calls_whose_last_name_may_make_something(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """With the check's calls given, a call `x.y()` whose `y` names neither an
+    endpoint nor a node maker is not looked up through the imports (nor met
+    again in the walk); an alias imported under another name still is."""
+    from robotfix.ros.graph import python as graph_python
+
+    source = (
+        "import rclpy\nfrom rospy import Publisher as P\nimport std_msgs.msg as m\n"
+        "class A(rclpy.node.Node):\n"
+        "    def __init__(self):\n"
+        "        super().__init__('a')\n"
+        "        self.log.info(len(str(self.x.y.z())))\n"
+        "        self.p = P('chatter', m.String, queue_size=1)\n"
+        "        rclpy.create_node('b')\n"
+    )
+    tree = ast.parse(source)
+    looked: list[str] = []
+    qualified = graph_python._File.qualified
+
+    def counting(self: object, node: ast.expr) -> str | None:
+        looked.append(ast.unparse(node))
+        return qualified(self, node)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(graph_python._File, "qualified", counting)
+    found = read_python(tree, index_of(tree).calls)
+    assert [(e.kind, e.name) for e in found.endpoints] == [("publisher", "chatter")]
+    assert found.nodes == {"A": ["a"]}
+    assert "self.log.info" not in looked and "self.x.y.z" not in looked
+    assert "P" in looked and "rclpy.create_node" in looked
+
+
 def _ros1_system(root: Path, package: str, files: dict[str, str]) -> list[tuple]:
     """A ROS 1 package whose `scripts/` a bringup launch file starts (each script
     as the node its stem names), checked: each finding's file, line and code."""

@@ -211,3 +211,52 @@ def test_a_cached_run_sees_an_edited_cpp_declaration(tmp_path: Path) -> None:
     built = cmake.read_text().replace("EXECUTABLE cam2image", "EXECUTABLE cam")
     cmake.write_text(built)
     assert ("RF401", "camera.launch.py", 20) not in codes()  # `cam2image`: no code
+
+
+def test_a_packages_cmake_targets_are_read_once_a_run(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The C++ nodes' parameters and the graph both ask what each launch entry's
+    executable is built from: a package's CMakeLists.txt is read once a run (it
+    was read for each, and each executable's sources and headers found), and
+    again in the next run (the memos are the run's)."""
+    from robotfix import graphcheck
+    from robotfix.ros import executables
+
+    workspace = tmp_path / "image_ws"
+    shutil.copytree(CASES / "image_ws", workspace)
+    read: list[str] = []
+    real = executables._cmake_targets
+    monkeypatch.setattr(
+        executables,
+        "_cmake_targets",
+        lambda package: read.append(package.name) or real(package),
+    )
+    built: list[str] = []  # what an executable is built from: found once too
+    files = graphcheck.cpp_executable_files
+    monkeypatch.setattr(
+        graphcheck,
+        "cpp_executable_files",
+        lambda package, name, memo: built.append(name) or files(package, name, memo),
+    )
+    config = Config(root=workspace)
+
+    def codes() -> list[tuple[str, str, int]]:
+        found = check_paths([workspace], config).diagnostics
+        return sorted(
+            (d.code, Path(d.path).name, d.span.line)
+            for d in found
+            if d.code in PARAMETER_RULES
+        )
+
+    first = codes()
+    assert read == ["image_tools"] and sorted(built) == ["cam2image", "showimage"]
+    assert ("RF401", "camera.launch.py", 19) in first
+    cmake = workspace / "image_tools" / "CMakeLists.txt"
+    cmake.write_text(
+        cmake.read_text().replace("EXECUTABLE cam2image", "EXECUTABLE cam")
+    )
+    read.clear()
+    second = codes()
+    assert read == ["image_tools"]
+    assert ("RF401", "camera.launch.py", 19) not in second  # `cam2image`: no code

@@ -178,7 +178,9 @@ def test_composable_nodes_sort_the_code_files_once(
             )
             for i in range(count)
         ]
-        return SimpleNamespace(packages={"pkg": package}, started=started)
+        return SimpleNamespace(
+            packages={"pkg": package}, started=started, targets={}, executables={}
+        )
 
     sorts: list[int] = []  # the sorts of every code file (an entry's own: not)
     monkeypatch.setattr(

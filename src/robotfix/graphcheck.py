@@ -30,12 +30,13 @@ import os
 import re
 from collections.abc import Iterable
 from dataclasses import dataclass, field, replace
+from functools import partial
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from robotfix import messages
 from robotfix.diagnostics import Diagnostic, Note
-from robotfix.fs import UnreadableError, probe, read_regular
+from robotfix.fs import UnreadableError, probe, read_regular, remembered
 from robotfix.ros.executables import CPP_SOURCE_SUFFIXES, cpp_executable_files
 from robotfix.ros.graph import qos as Q
 from robotfix.ros.graph.build import End, Graph, Started, build
@@ -141,8 +142,8 @@ def started_entries(
     out: list[Started] = []
     reals = sorted(by_real.items())  # (a plugin's package: the files inside it)
     inside: dict[Path, list[str]] = {}  # each plugin package's files, found once
-    targets: dict[Path, Any] = {}  # each package's CMake targets, read once
-    built: dict[tuple[Path, str], list[Path]] = {}  # many entries start one
+    targets = launches.targets  # each package's CMake targets, read once a run
+    built = launches.executables  # many entries start one, in both calls a run
     for started in launches.started:
         entry = started.entry
         files = [by_real[f] for f in sorted(started.files) if f in by_real]
@@ -156,9 +157,9 @@ def started_entries(
             files += inside[package]
         elif package is not None and entry.executable and not files:
             one = (package, entry.executable)
-            if one not in built:
-                built[one] = cpp_executable_files(package, entry.executable, targets)
-            for source in built[one]:
+            make = partial(cpp_executable_files, package, entry.executable, targets)
+            sources = remembered(built, one, make)
+            for source in sources:
                 real = probe("realpath", source)
                 if real in by_real:
                     files.append(by_real[real])

@@ -136,6 +136,12 @@ class LaunchRun:
         self.reader = Reader(self.packages.get)
         self._build: dict[tuple[str, Path], Any] = {}  # packages' build files
         self._codes: dict[tuple[Path, str], Any] = {}  # by executable
+        # each package's CMake targets, read once a run for the C++ nodes'
+        # parameters and the graph (`graphcheck.started_entries`; kept through
+        # `fs.remembered`: a use hands the traces what the reading read)
+        self.targets: dict[Path, Any] = {}
+        # and what each (package, executable) is built from, alike
+        self.executables: dict[tuple[Path, str], Any] = {}
         for path in launch_files:
             with guard(path, self.notices, faults):
                 self._read(path)
@@ -279,11 +285,29 @@ class LaunchRun:
 
         out: list[Diagnostic] = []
         known = self._known(table)
+        passing = self._passing()
         for path, parameters in sorted(loaded.items()):
             with guard(path, out, faults):
                 out += unmatched_sections(path, parameters, known)
-                out += self._passed_for_nothing(path, parameters)
+                out += self._passed_for_nothing(path, parameters, passing.get(path, []))
         return out
+
+    def _passing(self) -> dict[str, list[NodeEntry]]:
+        """Each parameter file's ROS 2 entries that pass it, in their order (found
+        once: not each file against every entry, 1,500 on corpus25)."""
+        found: dict[str, list[NodeEntry]] = {}
+        for started in self.started:
+            entry = started.entry
+            if entry.ros != 2:
+                continue
+            paths = {
+                p.path
+                for p in entry.parameters
+                if isinstance(p, FileParam) and p.path is not None
+            }
+            for path in paths:
+                found.setdefault(path, []).append(entry)
+        return found
 
     def check(
         self,
@@ -300,25 +324,18 @@ class LaunchRun:
         return unique([*out, *self.sections(table, loaded, faults)])
 
     def _passed_for_nothing(
-        self, path: str, parameters: P.ParamFile
+        self, path: str, parameters: P.ParamFile, passing: list[NodeEntry]
     ) -> list[Diagnostic]:
         """RF602 (a warning) at each launch entry that passes a ROS 2 parameter
         file none of whose sections applies to any node the entries passing it
         start (each named by the entry: `Node(name='sim_bridge')`), no key with a
         wildcard: the file gives those nodes nothing (a rename that left the
         section behind: f1tenth's `bridge:` file passed to `sim_bridge`). An
-        entry that passes it without naming its node leaves the file unjudged."""
+        entry that passes it without naming its node leaves the file unjudged.
+        `passing`: the ROS 2 entries that pass it (`_passing`)."""
         if parameters.layout != "ros2":
             return []
         keys = sorted({item.node for item in parameters.entries if item.node})
-        passing = [
-            s.entry
-            for s in self.started
-            if s.entry.ros == 2
-            and any(
-                isinstance(p, FileParam) and p.path == path for p in s.entry.parameters
-            )
-        ]
         names = [e.name.rsplit("/", 1)[-1] if e.name else "" for e in passing]
         if (
             not keys

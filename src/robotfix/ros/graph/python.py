@@ -298,11 +298,25 @@ def _read(
     return found.found
 
 
+# the last names of what `_call` makes something of but a method's: a call of
+# `x.y.z` is looked up (`qualified`) only when `z` is one of them
+_TAILS = frozenset(
+    {name.rsplit(".", 1)[-1] for name in ENDPOINT_CLASSES}
+    | NODE_CONSTRUCTORS
+    | {"init_node"}
+)
+
+
 def _wanted(file: _File, call: ast.Call) -> bool:
     """Whether `_call` makes anything of `call` (an endpoint, a node's name)."""
     func = call.func
-    if isinstance(func, ast.Attribute) and func.attr in ENDPOINT_METHODS:
-        return True
+    if func.__class__ is ast.Attribute:
+        if func.attr in ENDPOINT_METHODS:
+            return True
+        if func.attr not in _TAILS:  # what it names ends so: none of them
+            return False
+    elif func.__class__ is not ast.Name:
+        return False  # no chain of names: `qualified` finds nothing
     called = file.qualified(func)
     return called is not None and (called in ENDPOINT_CLASSES or _names_node(called))
 
@@ -335,26 +349,16 @@ def _bind(file: _File) -> None:
     """Imports, class bases and methods, module functions: the statements only
     (in the order a walk of the whole tree meets them), not the expressions."""
     todo: list[ast.AST] = [file.tree]
+    blocks = _BLOCK_FIELDS
     while todo:  # a class before its methods
         node = todo.pop()
-        if isinstance(node, ast.Import):
-            for alias in node.names:
-                if alias.asname:
-                    file.imports[alias.asname] = alias.name
-                else:
-                    head = alias.name.split(".")[0]
-                    file.imports[head] = head
-            if any(a.name == "rospy" for a in node.names):
-                file.rospy = True
-            continue
-        if isinstance(node, ast.ImportFrom):
-            if node.module and not node.level:
-                for alias in node.names:
-                    file.imports[alias.asname or alias.name] = (
-                        f"{node.module}.{alias.name}"
-                    )
-                if node.module == "rospy" or node.module.startswith("rospy."):
-                    file.rospy = True
+        kind = node.__class__
+        names = blocks.get(kind)
+        if names is None:
+            names = blocks[kind] = tuple(n for n in _BLOCKS if n in kind._fields)
+        if not names:  # an expression statement, an assignment ...: no block
+            if isinstance(node, (ast.Import, ast.ImportFrom)):
+                _import(file, node)
             continue
         if isinstance(node, ast.ClassDef):
             file.bases[node.name] = [
@@ -364,13 +368,35 @@ def _bind(file: _File) -> None:
                 if isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
                     file.scope_class[id(item)] = node.name
                     file.functions.setdefault(node.name, {})[item.name] = item
-        for name in _BLOCKS:  # inline: `_statements` per node costs more
+        for name in names:
             block = getattr(node, name, None)
             if block.__class__ is list:
                 todo.extend(block)
     for item in file.tree.body:
         if isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
             file.functions.setdefault("", {})[item.name] = item
+
+
+# each statement class's fields of `_BLOCKS` (none: it holds no statement)
+_BLOCK_FIELDS: dict[type, tuple[str, ...]] = {}
+
+
+def _import(file: _File, node: ast.Import | ast.ImportFrom) -> None:
+    """The names an import statement binds, and whether it imports rospy."""
+    if isinstance(node, ast.Import):
+        for alias in node.names:
+            if alias.asname:
+                file.imports[alias.asname] = alias.name
+            else:
+                head = alias.name.split(".")[0]
+                file.imports[head] = head
+        if any(a.name == "rospy" for a in node.names):
+            file.rospy = True
+    elif node.module and not node.level:
+        for alias in node.names:
+            file.imports[alias.asname or alias.name] = f"{node.module}.{alias.name}"
+        if node.module == "rospy" or node.module.startswith("rospy."):
+            file.rospy = True
 
 
 def _bind_scope(file: _File, scope: _Scope, cls: str | None) -> None:
@@ -492,7 +518,9 @@ def _visit(file: _File, body: list[ast.stmt], scope: _Scope, cls: str | None) ->
             if isinstance(node, ast.Call):
                 if id(node) in file.wanted:
                     file.met += 1
-                _call(file, node, where, cls, statement)
+                    _call(file, node, where, cls, statement)
+                elif file.starts is None:  # the file's calls not known
+                    _call(file, node, where, cls, statement)
             todo.extend((child, where) for child in children(node))
 
 
