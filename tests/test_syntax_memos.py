@@ -1,8 +1,10 @@
-"""Issue 25 target 1 (sixth session): the syntactic passes keep what they find of
-a node as long as the node lives (`decisions._MENTIONS`, `writes._SYNTAX`), and
-walk only what can hold what they look for (`stmtsyntax.may_raise`,
-`typesyntax.local_bindings` without `:=`). A memo that answered for another
-node, or that kept its tree alive, fails here."""
+"""Issue 25 target 1 (sixth session): the escape scan keeps what it finds of a
+node as long as the node lives (`writes._SYNTAX`), and the syntactic passes walk
+only what can hold what they look for (`stmtsyntax.may_raise`,
+`typesyntax.local_bindings` without `:=`, `relevance._binders`). A memo that
+answered for another node or root, or that kept its tree alive, fails here; so
+would a decision kept for a node (a memo of `decisions.decision` was measured
+and dropped: +3.2 M instructions on the subset)."""
 
 from __future__ import annotations
 

@@ -373,10 +373,15 @@ class _Scope:
         """Check the reads of an expression in order; the names it binds (`:=`)."""
         if node is None:
             return bound
-        if isinstance(node, ast.Name):
-            if isinstance(node.ctx, ast.Load):
-                self.read(node.id, bound)
+        kind = node.__class__
+        if kind is ast.Name:
+            if node.ctx.__class__ is ast.Load:  # type: ignore[attr-defined]
+                self.read(node.id, bound)  # type: ignore[attr-defined]
             return bound
+        if kind is ast.Constant:
+            return bound
+        if kind is ast.Attribute:  # its one child
+            return self.expr(node.value, bound)  # type: ignore[attr-defined]
         if isinstance(node, ast.NamedExpr):
             bound = self.expr(node.value, bound)
             return bound | {node.target.id}
@@ -548,7 +553,9 @@ def _params(args: ast.arguments) -> frozenset[str]:
 
 def _binders(node: ast.AST) -> tuple[frozenset[str], frozenset[str]]:
     """The names a scope binds (its locals, as Python decides them), and those it
-    declares `global` or `nonlocal`."""
+    declares `global` or `nonlocal`: a walk of the nodes of its body, not of the
+    scopes nested in it (their names, decorators and defaults are the outer
+    scope's; the first iterable of a comprehension too)."""
     bound: set[str] = set()
     declared: set[str] = set()
     if isinstance(node, (*FUNCTIONS, ast.Lambda)):
@@ -557,20 +564,56 @@ def _binders(node: ast.AST) -> tuple[frozenset[str], frozenset[str]]:
         for gen in node.generators:
             bound |= _stores(gen.target)
         return frozenset(bound), frozenset()
-    for child in _own_nodes(node):
-        if isinstance(child, ast.Name) and not isinstance(child.ctx, ast.Load):
-            bound.add(child.id)
-        elif isinstance(child, DEFINITIONS):
-            bound.add(child.name)
-        elif isinstance(child, ast.alias) and child.name != "*":
-            bound.add(child.asname or child.name.partition(".")[0])
-        elif isinstance(child, ast.ExceptHandler) and child.name:
-            bound.add(child.name)
-        elif isinstance(child, (ast.Global, ast.Nonlocal)):
-            declared.update(child.names)
-        elif isinstance(child, ast.NamedExpr):
-            bound.add(child.target.id)
+    if isinstance(node, ast.Lambda):
+        todo: list[ast.AST] = [node.body]
+    else:
+        todo = list(getattr(node, "body", []))
+    pop, extend = todo.pop, todo.extend
+    while todo:
+        child = pop()
+        kind = child.__class__
+        if kind is ast.Name:
+            if child.ctx.__class__ is not ast.Load:  # type: ignore[attr-defined]
+                bound.add(child.id)  # type: ignore[attr-defined]
+            continue
+        if kind is ast.Constant:
+            continue
+        if kind in _DEFINITION_KINDS:
+            bound.add(child.name)  # type: ignore[attr-defined]
+            extend(child.decorator_list)  # type: ignore[attr-defined]
+            if kind is ast.ClassDef:
+                extend(child.bases)  # type: ignore[attr-defined]
+                extend(child.keywords)  # type: ignore[attr-defined]
+            else:
+                extend(child.args.defaults)  # type: ignore[attr-defined]
+                extend(d for d in child.args.kw_defaults if d is not None)  # type: ignore[attr-defined]
+            continue
+        if kind is ast.Lambda:
+            args = child.args  # type: ignore[attr-defined]
+            extend(d for d in [*args.defaults, *args.kw_defaults] if d)
+            continue
+        if kind in _COMPREHENSION_KINDS:
+            # `:=` inside binds here, but comprehensions with one are not followed
+            todo.append(child.generators[0].iter)  # type: ignore[attr-defined]
+            continue
+        if kind is ast.alias:
+            if child.name != "*":  # type: ignore[attr-defined]
+                bound.add(child.asname or child.name.partition(".")[0])  # type: ignore[attr-defined]
+            continue
+        if kind is ast.Global or kind is ast.Nonlocal:
+            declared.update(child.names)  # type: ignore[attr-defined]
+            continue
+        if kind is ast.ExceptHandler:
+            if child.name:  # type: ignore[attr-defined]
+                bound.add(child.name)  # type: ignore[attr-defined]
+        elif kind is ast.NamedExpr:
+            bound.add(child.target.id)  # type: ignore[attr-defined]
+        extend(children(child))
     return frozenset(bound - declared), frozenset(declared)
+
+
+_DEFINITION_KINDS = frozenset(DEFINITIONS)
+_COMPREHENSION_KINDS = frozenset(COMPREHENSIONS)
 
 
 def _stores(node: ast.AST) -> set[str]:
@@ -579,32 +622,3 @@ def _stores(node: ast.AST) -> set[str]:
         for n in ast.walk(node)
         if isinstance(n, ast.Name) and not isinstance(n.ctx, ast.Load)
     }
-
-
-def _own_nodes(scope: ast.AST) -> Iterable[ast.AST]:
-    """The nodes of a scope's body, not of the scopes nested in it (their names,
-    decorators and defaults are the outer scope's)."""
-    body: list[ast.AST]
-    if isinstance(scope, ast.Lambda):
-        body = [scope.body]
-    else:
-        body = list(getattr(scope, "body", []))
-    todo = list(reversed(body))
-    while todo:
-        node = todo.pop()
-        yield node
-        if isinstance(node, DEFINITIONS):
-            parts: list[ast.AST] = list(node.decorator_list)
-            if isinstance(node, ast.ClassDef):
-                parts += [*node.bases, *node.keywords]
-            else:
-                parts += node.args.defaults
-                parts += [d for d in node.args.kw_defaults if d is not None]
-            todo.extend(parts)
-        elif isinstance(node, ast.Lambda):
-            todo.extend(d for d in [*node.args.defaults, *node.args.kw_defaults] if d)
-        elif isinstance(node, COMPREHENSIONS):
-            todo.append(node.generators[0].iter)
-            # `:=` inside binds here, but comprehensions with one are not followed
-        else:
-            todo.extend(children(node))
