@@ -13,7 +13,6 @@ Unless a name holds the same value the analysis tracks in both (`level > 0.5`, t
 from __future__ import annotations
 
 import ast
-import weakref
 from collections.abc import Callable, Hashable
 
 from robotfix.astwalk import walk
@@ -38,40 +37,22 @@ def decision(
     """The data `test` looks at: the locals it reads (with `tracked(name)`) and the
     attributes it reads (with the symbol each gave, in `attributes`), not the
     functions or methods it calls, nor module names (`math`, a class)."""
-    names, reads = _MENTIONS.get(test) or _mentions(test)
-    found = {(name, tracked(name)) for name in names if name in local_names}
-    found.update((attr, attributes.get(ident)) for attr, ident in reads)
-    return id(test), frozenset(found)
-
-
-# test -> what its syntax mentions (`_mentions`), kept as long as the test's tree:
-# a loop's test is decided again at every iteration of the walk over it
-_MENTIONS: weakref.WeakKeyDictionary[
-    ast.expr, tuple[frozenset[str], tuple[tuple[str, int], ...]]
-] = weakref.WeakKeyDictionary()
-
-
-def _mentions(test: ast.expr) -> tuple[frozenset[str], tuple[tuple[str, int], ...]]:
-    """The names `test` reads as data (not callees, not the objects of attributes,
-    not `self`), and (".attr", id) for each attribute it reads as data."""
     skipped: set[int] = set()  # callees and the objects of attributes
-    names: set[str] = set()
-    reads: list[tuple[str, int]] = []
-    for node in walk([test]):  # parents before children
+    found: set[tuple[str, Hashable]] = set()
+    for node in walk([test]):
         if isinstance(node, ast.Call):
             skipped.add(id(node.func))
         elif isinstance(node, ast.Attribute):
             skipped.add(id(node.value))  # `scan.range_min`: the field is the data
-            if id(node) not in skipped:
-                reads.append(("." + node.attr, id(node)))
-        elif (
-            isinstance(node, ast.Name)
-            and id(node) not in skipped
+        elif isinstance(node, ast.Name) and (
+            id(node) not in skipped
+            and node.id in local_names
             and node.id not in RECEIVERS
         ):
-            names.add(node.id)
-    found = _MENTIONS[test] = (frozenset(names), tuple(reads))
-    return found
+            found.add((node.id, tracked(node.id)))
+        if isinstance(node, ast.Attribute) and id(node) not in skipped:
+            found.add(("." + node.attr, attributes.get(id(node))))
+    return id(test), frozenset(found)
 
 
 def merged(*parts: Decisions) -> Decisions:
