@@ -181,12 +181,22 @@ def _statements(body: list[ast.stmt]) -> Iterable[ast.stmt]:
     while todo:
         stmt = todo.pop()
         yield stmt
+        if stmt.__class__ not in _COMPOUND:  # most statements hold none
+            continue
         for field in ("body", "orelse", "finalbody"):
             todo.extend(reversed(getattr(stmt, field, ())))
         for handler in getattr(stmt, "handlers", ()):
             todo.extend(reversed(handler.body))
         for case in getattr(stmt, "cases", ()):
             todo.extend(reversed(case.body))
+
+
+# the statements that hold statements (`_statements`)
+_COMPOUND = frozenset(
+    {ast.If, ast.For, ast.AsyncFor, ast.While, ast.With, ast.AsyncWith, ast.Try}
+    | {ast.Match, ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef}
+    | {getattr(ast, "TryStar", ast.Try)}  # 3.11
+)
 
 
 def _interface(dotted: str, catalog: MsgCatalog) -> bool:
