@@ -127,3 +127,41 @@ def test_may_raise_walks_statements_only() -> None:
         for node in ast.walk(tree):
             if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
                 assert may_raise(node) == _may_raise_by_every_node(node), path
+
+
+def test_binders_of_a_scope_leave_out_what_nested_scopes_bind() -> None:
+    from robotfix.analysis.relevance import _binders, _statements
+
+    function = ast.parse(
+        "def f(a, *b, c=d0, **e):\n"
+        "    global g\n"
+        "    import os.path, numpy as np\n"
+        "    from x import *\n"
+        "    @dec(k := 1)\n"
+        "    def inner(p=default, *, q=kw):\n"
+        "        hidden = 1\n"
+        "    class K(Base, metaclass=M):\n"
+        "        inside = 2\n"
+        "    h = lambda r=lam: (s := r)\n"
+        "    t = [u for u in items if (w := u)]\n"
+        "    try:\n"
+        "        g = 1\n"
+        "    except E as err:\n"
+        "        del v\n"
+        "    for (i, j) in pairs:\n"
+        "        (y := i)\n"
+        "    with open(n) as (fa, fb):\n"
+        "        pass\n"
+    ).body[0]
+    bound, declared = _binders(function)
+    assert declared == {"g"}
+    assert bound == {
+        "a", "b", "c", "e", "os", "np", "k", "inner", "K", "h", "t", "err",
+        "v", "i", "j", "y", "fa", "fb",
+    }  # fmt: skip
+    kinds = [type(s).__name__ for s in _statements(function.body)]
+    assert kinds == [
+        "Global", "Import", "ImportFrom", "FunctionDef", "Assign", "ClassDef",
+        "Assign", "Assign", "Assign", "Try", "Delete", "Assign", "For", "Expr",
+        "With", "Pass",
+    ]  # fmt: skip
