@@ -165,3 +165,24 @@ def test_binders_of_a_scope_leave_out_what_nested_scopes_bind() -> None:
         "Assign", "Assign", "Assign", "Try", "Delete", "Assign", "For", "Expr",
         "With", "Pass",
     ]  # fmt: skip
+
+
+def test_binders_without_walrus_find_what_the_walk_of_every_node_finds() -> None:
+    from robotfix.analysis.relevance import _binders
+
+    scopes = 0
+    for path in sorted(CASES.rglob("*.py")):
+        text = path.read_text(encoding="utf-8")
+        if ":=" in text:
+            continue
+        for node in ast.walk(ast.parse(text)):
+            if isinstance(node, (ast.Module, ast.FunctionDef, ast.ClassDef, ast.Lambda)):
+                assert _binders(node, walrus=False) == _binders(node), path
+                scopes += 1
+    assert scopes > 100
+    # `a[...] =` reads `a`; a comprehension's target is its own; `:=` only when asked
+    tree = ast.parse("a[[i for i in y]] = 1\nfor (b, *c) in d:\n    del e[f], g\n")
+    assert _binders(tree, walrus=False) == (frozenset({"b", "c", "g"}), frozenset())
+    walrus = ast.parse("if (n := 1):\n    pass\n")
+    assert _binders(walrus)[0] == {"n"}
+    assert _binders(walrus, walrus=False)[0] == frozenset()

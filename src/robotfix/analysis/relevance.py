@@ -148,7 +148,7 @@ def skippable(
     # would build too (the summaries of the modules it imports)
     if resolver is not None and _tree_relevant(resolver, imported):
         return False
-    return not _may_be_unbound(tree, frozenset(declared))
+    return not _may_be_unbound(tree, frozenset(declared), ":=" in text)
 
 
 def _names_one(tree: ast.Module, vocabulary: frozenset[str]) -> bool:
@@ -318,9 +318,13 @@ class _RiskError(Exception):
     """A read the analysis might report as unbound."""
 
 
-def _may_be_unbound(tree: ast.Module, declared: frozenset[str]) -> bool:
+def _may_be_unbound(
+    tree: ast.Module, declared: frozenset[str], walrus: bool = True
+) -> bool:
+    """`walrus`: whether the text may hold `:=` (without, an expression binds
+    nothing of its scope, and only statements are searched for bindings)."""
     try:
-        _Scope(tree, None, declared).run(tree.body, frozenset())
+        _Scope(tree, None, declared, walrus).run(tree.body, frozenset())
     except (_RiskError, RecursionError):
         return True
     return False
@@ -342,11 +346,13 @@ class _Scope:
         node: ast.AST,
         parent: _Scope | None,
         declared: frozenset[str] = frozenset(),
+        walrus: bool = True,
     ) -> None:
         self.node = node
         self.parent = parent
         self.is_class = isinstance(node, ast.ClassDef)
-        self.locals, self.declared = _binders(node)
+        self.walrus: bool = parent.walrus if parent is not None else walrus
+        self.locals, self.declared = _binders(node, self.walrus)
         # the module scope (None: this one); not `self`, which would make a
         # reference cycle that keeps the file's tree alive until a collection
         self._module = parent.module if parent is not None else None
@@ -561,11 +567,14 @@ def _params(args: ast.arguments) -> frozenset[str]:
     return frozenset(a.arg for a in every)
 
 
-def _binders(node: ast.AST) -> tuple[frozenset[str], frozenset[str]]:
+def _binders(node: ast.AST, walrus: bool = True) -> tuple[frozenset[str], frozenset[str]]:
     """The names a scope binds (its locals, as Python decides them), and those it
     declares `global` or `nonlocal`: a walk of the nodes of its body, not of the
     scopes nested in it (their names, decorators and defaults are the outer
-    scope's; the first iterable of a comprehension too)."""
+    scope's; the first iterable of a comprehension too). Without `walrus` (no
+    `:=` in the text) only the statements and their targets are walked: no other
+    expression stores a name of this scope (a comprehension's target is its
+    own)."""
     bound: set[str] = set()
     declared: set[str] = set()
     if isinstance(node, (*FUNCTIONS, ast.Lambda)):
@@ -575,9 +584,11 @@ def _binders(node: ast.AST) -> tuple[frozenset[str], frozenset[str]]:
             bound |= _stores(gen.target)
         return frozenset(bound), frozenset()
     if isinstance(node, ast.Lambda):
-        todo: list[ast.AST] = [node.body]
-    else:
+        todo: list[ast.AST] = [node.body] if walrus else []
+    elif walrus:
         todo = list(getattr(node, "body", []))
+    else:
+        todo = _statement_binders(node.body, bound, declared)  # type: ignore[attr-defined]
     pop, extend = todo.pop, todo.extend
     while todo:
         child = pop()
@@ -624,6 +635,60 @@ def _binders(node: ast.AST) -> tuple[frozenset[str], frozenset[str]]:
 
 _DEFINITION_KINDS = frozenset(DEFINITIONS)
 _COMPREHENSION_KINDS = frozenset(COMPREHENSIONS)
+_TARGETS = {  # statement class -> its fields that hold targets
+    ast.Assign: "targets",
+    ast.AugAssign: "target",
+    ast.AnnAssign: "target",
+    ast.For: "target",
+    ast.AsyncFor: "target",
+    ast.Delete: "targets",
+}
+
+
+def _statement_binders(
+    body: list[ast.stmt], bound: set[str], declared: set[str]
+) -> list[ast.AST]:
+    """What a scope's statements bind by name (definitions, imports, handlers'
+    names) and declare; the targets they store to, for `_binders` to walk."""
+    targets: list[ast.AST] = []
+    todo: list[ast.AST] = list(body)
+    while todo:
+        stmt = todo.pop()
+        kind = stmt.__class__
+        field = _TARGETS.get(kind)
+        if field is not None:
+            found = getattr(stmt, field)
+            if found.__class__ is list:
+                targets.extend(found)
+            else:
+                targets.append(found)
+        if kind in _DEFINITION_KINDS:
+            bound.add(stmt.name)  # type: ignore[attr-defined]
+            continue
+        if kind is ast.Import or kind is ast.ImportFrom:
+            for alias in stmt.names:  # type: ignore[attr-defined]
+                if alias.name != "*":
+                    bound.add(alias.asname or alias.name.partition(".")[0])
+            continue
+        if kind is ast.Global or kind is ast.Nonlocal:
+            declared.update(stmt.names)  # type: ignore[attr-defined]
+            continue
+        if kind is ast.With or kind is ast.AsyncWith:
+            for item in stmt.items:  # type: ignore[attr-defined]
+                if item.optional_vars is not None:
+                    targets.append(item.optional_vars)
+        if kind not in _COMPOUND:
+            continue
+        todo.extend(getattr(stmt, "body", ()))
+        todo.extend(getattr(stmt, "orelse", ()))
+        todo.extend(getattr(stmt, "finalbody", ()))
+        for handler in getattr(stmt, "handlers", ()):
+            if handler.name:
+                bound.add(handler.name)
+            todo.extend(handler.body)
+        for case in getattr(stmt, "cases", ()):
+            todo.extend(case.body)
+    return targets
 
 
 def _stores(node: ast.AST) -> set[str]:
