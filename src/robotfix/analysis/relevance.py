@@ -456,16 +456,8 @@ class _Scope:
         return bound
 
     def stmt(self, node: ast.stmt, bound: frozenset[str]) -> Bound:
-        kind = node.__class__  # the commonest first
-        if kind is ast.Expr:
-            return self.expr(node.value, bound)  # type: ignore[attr-defined]
-        if kind is ast.Assign:
-            bound = self.expr(node.value, bound)  # type: ignore[attr-defined]
-            for target in node.targets:  # type: ignore[attr-defined]
-                bound = self.target(target, bound)
-            return bound
         if isinstance(node, (ast.Return, ast.Raise)):
-            for child in children(node):
+            for child in ast.iter_child_nodes(node):
                 self.expr(child, bound)
             return None
         if isinstance(node, (ast.Break, ast.Continue)):
@@ -489,6 +481,11 @@ class _Scope:
                 bound = self.defaults(node.args, bound)
                 _Scope(node, self).run(node.body, _params(node.args))
             return bound | {node.name}
+        if isinstance(node, ast.Assign):
+            bound = self.expr(node.value, bound)
+            for target in node.targets:
+                bound = self.target(target, bound)
+            return bound
         if isinstance(node, ast.AnnAssign):
             if node.value is None:
                 raise _RiskError
@@ -508,6 +505,8 @@ class _Scope:
                 self.read(target.id, bound)
                 bound = bound - {target.id}
             return bound
+        if isinstance(node, ast.Expr):
+            return self.expr(node.value, bound)
         if isinstance(node, ast.If):
             bound = self.expr(node.test, bound)
             return _meet(self.run(node.body, bound), self.run(node.orelse, bound))
