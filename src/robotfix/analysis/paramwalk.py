@@ -109,7 +109,7 @@ def called_name(call: ast.Call) -> str:
 _UNIT_KINDS = frozenset({ast.Call, ast.Assign, ast.AnnAssign})  # what `unit` reads
 
 
-def _position(node: ast.AST) -> tuple[int, int]:
+def _place(node: ast.AST) -> tuple[int, int]:
     return node.lineno, node.col_offset  # type: ignore[attr-defined]
 
 
@@ -177,7 +177,7 @@ class Walker:
         nodes = walk(body) if function is not None else self._module_nodes(body)
         for node in sorted(
             [n for n in nodes if n.__class__ in _UNIT_KINDS],
-            key=_position,
+            key=_place,
         ):
             if isinstance(node, ast.Call):
                 self.call(node)
