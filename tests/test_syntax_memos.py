@@ -176,7 +176,9 @@ def test_binders_without_walrus_find_what_the_walk_of_every_node_finds() -> None
         if ":=" in text:
             continue
         for node in ast.walk(ast.parse(text)):
-            if isinstance(node, (ast.Module, ast.FunctionDef, ast.ClassDef, ast.Lambda)):
+            if isinstance(
+                node, (ast.Module, ast.FunctionDef, ast.ClassDef, ast.Lambda)
+            ):
                 assert _binders(node, walrus=False) == _binders(node), path
                 scopes += 1
     assert scopes > 100

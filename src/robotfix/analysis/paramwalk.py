@@ -182,7 +182,7 @@ class Walker:
             if isinstance(node, ast.Call):
                 self.call(node)
             else:
-                self.assignment(node)
+                self.assignment(node)  # type: ignore[arg-type]
 
     def _module_nodes(self, body: list[ast.stmt]) -> list[ast.AST]:
         found: list[ast.AST] = []

@@ -567,7 +567,9 @@ def _params(args: ast.arguments) -> frozenset[str]:
     return frozenset(a.arg for a in every)
 
 
-def _binders(node: ast.AST, walrus: bool = True) -> tuple[frozenset[str], frozenset[str]]:
+def _binders(
+    node: ast.AST, walrus: bool = True
+) -> tuple[frozenset[str], frozenset[str]]:
     """The names a scope binds (its locals, as Python decides them), and those it
     declares `global` or `nonlocal`: a walk of the nodes of its body, not of the
     scopes nested in it (their names, decorators and defaults are the outer

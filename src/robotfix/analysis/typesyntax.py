@@ -113,9 +113,8 @@ _INNER: dict[type, tuple[str, ...]] = {}
 
 
 def _inner(kind: type) -> tuple[str, ...]:
-    found = _INNER[kind] = tuple(
-        f for f in kind._fields if f in _NOT_EXPRESSIONS  # type: ignore[attr-defined]
-    )
+    every: tuple[str, ...] = kind._fields  # type: ignore[attr-defined]
+    found = _INNER[kind] = tuple(f for f in every if f in _NOT_EXPRESSIONS)
     return found
 
 

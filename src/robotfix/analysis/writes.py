@@ -44,19 +44,22 @@ def uses(
     time)."""
     nodes = list(nodes)
     top = nodes[0] if len(nodes) == 1 and type(nodes[0]) is not ast.Name else None
+    under: dict[int, ast.AST] = {}
     if top is not None:  # a function or a module: asked again at every loop
-        syntax = _SYNTAX.get(top)
-        if syntax is None:
-            syntax = _SYNTAX[top] = _syntax(nodes, kept=True)
+        known = _SYNTAX.get(top)
+        if known is None:
+            known = _SYNTAX[top] = _syntax(nodes, kept=True)
+        syntax = known
         # the memo leaves out the edges to `top` (a value holding its key would
         # keep it alive): they are made again here
         under = {id(child): top for child in children(top)}
-
-        def parent_of(ident: int) -> ast.AST | None:
-            return syntax[0].get(ident) or under.get(ident)
     else:
         syntax = _syntax(nodes)
-        parent_of = syntax[0].get
+    parents = syntax[0]
+
+    def parent_of(ident: int) -> ast.AST | None:
+        return parents.get(ident) or under.get(ident)
+
     _, mentions, nested = syntax
     found: dict[str, set[str | tuple[str, ...]]] = {}
     for root in roots:
