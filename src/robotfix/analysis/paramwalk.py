@@ -33,7 +33,7 @@ from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Alias, Names, Refinement, extract
 from robotfix.annotations.numbers import named_number
 from robotfix.annotations.parser import parse_predicate
-from robotfix.astwalk import walk
+from robotfix.astwalk import children, walk
 from robotfix.ros.api_model import (
     NODE_CONSTRUCTORS,
     PARAMETER_TYPES,
@@ -106,6 +106,13 @@ def called_name(call: ast.Call) -> str:
     return func.attr if isinstance(func, ast.Attribute) else getattr(func, "id", "")
 
 
+_UNIT_KINDS = frozenset({ast.Call, ast.Assign, ast.AnnAssign})  # what `unit` reads
+
+
+def _place(node: ast.AST) -> tuple[int, int]:
+    return node.lineno, node.col_offset  # type: ignore[attr-defined]
+
+
 @dataclass
 class _Local:
     """A local variable bound once, by a direct statement: the value it was bound
@@ -167,15 +174,15 @@ class Walker:
         self.function = function
         self.body = body
         self._bound: dict[str, _Local] | None = None
-        nodes = list(walk(body)) if function is not None else self._module_nodes(body)
+        nodes = walk(body) if function is not None else self._module_nodes(body)
         for node in sorted(
-            (n for n in nodes if isinstance(n, (ast.Call, ast.Assign, ast.AnnAssign))),
-            key=lambda n: (n.lineno, n.col_offset),
+            [n for n in nodes if n.__class__ in _UNIT_KINDS],
+            key=_place,
         ):
             if isinstance(node, ast.Call):
                 self.call(node)
             else:
-                self.assignment(node)
+                self.assignment(node)  # type: ignore[arg-type]
 
     def _module_nodes(self, body: list[ast.stmt]) -> list[ast.AST]:
         found: list[ast.AST] = []
@@ -187,7 +194,7 @@ class Walker:
             ):
                 continue
             found.append(node)
-            todo.extend(ast.iter_child_nodes(node))
+            todo.extend(children(node))  # not contexts and operators: never asked
         return found
 
     def _locals(self, body: list[ast.stmt]) -> dict[str, _Local]:

@@ -148,7 +148,7 @@ def skippable(
     # would build too (the summaries of the modules it imports)
     if resolver is not None and _tree_relevant(resolver, imported):
         return False
-    return not _may_be_unbound(tree, frozenset(declared))
+    return not _may_be_unbound(tree, frozenset(declared), ":=" in text)
 
 
 def _names_one(tree: ast.Module, vocabulary: frozenset[str]) -> bool:
@@ -181,12 +181,22 @@ def _statements(body: list[ast.stmt]) -> Iterable[ast.stmt]:
     while todo:
         stmt = todo.pop()
         yield stmt
+        if stmt.__class__ not in _COMPOUND:  # most statements hold none
+            continue
         for field in ("body", "orelse", "finalbody"):
             todo.extend(reversed(getattr(stmt, field, ())))
         for handler in getattr(stmt, "handlers", ()):
             todo.extend(reversed(handler.body))
         for case in getattr(stmt, "cases", ()):
             todo.extend(reversed(case.body))
+
+
+# the statements that hold statements (`_statements`)
+_COMPOUND = frozenset(
+    {ast.If, ast.For, ast.AsyncFor, ast.While, ast.With, ast.AsyncWith, ast.Try}
+    | {ast.Match, ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef}
+    | {getattr(ast, "TryStar", ast.Try)}  # 3.11
+)
 
 
 def _interface(dotted: str, catalog: MsgCatalog) -> bool:
@@ -308,9 +318,13 @@ class _RiskError(Exception):
     """A read the analysis might report as unbound."""
 
 
-def _may_be_unbound(tree: ast.Module, declared: frozenset[str]) -> bool:
+def _may_be_unbound(
+    tree: ast.Module, declared: frozenset[str], walrus: bool = True
+) -> bool:
+    """`walrus`: whether the text may hold `:=` (without, an expression binds
+    nothing of its scope, and only statements are searched for bindings)."""
     try:
-        _Scope(tree, None, declared).run(tree.body, frozenset())
+        _Scope(tree, None, declared, walrus).run(tree.body, frozenset())
     except (_RiskError, RecursionError):
         return True
     return False
@@ -332,11 +346,13 @@ class _Scope:
         node: ast.AST,
         parent: _Scope | None,
         declared: frozenset[str] = frozenset(),
+        walrus: bool = True,
     ) -> None:
         self.node = node
         self.parent = parent
         self.is_class = isinstance(node, ast.ClassDef)
-        self.locals, self.declared = _binders(node)
+        self.walrus: bool = parent.walrus if parent is not None else walrus
+        self.locals, self.declared = _binders(node, self.walrus)
         # the module scope (None: this one); not `self`, which would make a
         # reference cycle that keeps the file's tree alive until a collection
         self._module = parent.module if parent is not None else None
@@ -373,10 +389,15 @@ class _Scope:
         """Check the reads of an expression in order; the names it binds (`:=`)."""
         if node is None:
             return bound
-        if isinstance(node, ast.Name):
-            if isinstance(node.ctx, ast.Load):
-                self.read(node.id, bound)
+        kind = node.__class__
+        if kind is ast.Name:
+            if node.ctx.__class__ is ast.Load:  # type: ignore[attr-defined]
+                self.read(node.id, bound)  # type: ignore[attr-defined]
             return bound
+        if kind is ast.Constant:
+            return bound
+        if kind is ast.Attribute:  # its one child
+            return self.expr(node.value, bound)  # type: ignore[attr-defined]
         if isinstance(node, ast.NamedExpr):
             bound = self.expr(node.value, bound)
             return bound | {node.target.id}
@@ -546,9 +567,16 @@ def _params(args: ast.arguments) -> frozenset[str]:
     return frozenset(a.arg for a in every)
 
 
-def _binders(node: ast.AST) -> tuple[frozenset[str], frozenset[str]]:
+def _binders(
+    node: ast.AST, walrus: bool = True
+) -> tuple[frozenset[str], frozenset[str]]:
     """The names a scope binds (its locals, as Python decides them), and those it
-    declares `global` or `nonlocal`."""
+    declares `global` or `nonlocal`: a walk of the nodes of its body, not of the
+    scopes nested in it (their names, decorators and defaults are the outer
+    scope's; the first iterable of a comprehension too). Without `walrus` (no
+    `:=` in the text) only the statements and their targets are walked: no other
+    expression stores a name of this scope (a comprehension's target is its
+    own)."""
     bound: set[str] = set()
     declared: set[str] = set()
     if isinstance(node, (*FUNCTIONS, ast.Lambda)):
@@ -557,20 +585,112 @@ def _binders(node: ast.AST) -> tuple[frozenset[str], frozenset[str]]:
         for gen in node.generators:
             bound |= _stores(gen.target)
         return frozenset(bound), frozenset()
-    for child in _own_nodes(node):
-        if isinstance(child, ast.Name) and not isinstance(child.ctx, ast.Load):
-            bound.add(child.id)
-        elif isinstance(child, DEFINITIONS):
-            bound.add(child.name)
-        elif isinstance(child, ast.alias) and child.name != "*":
-            bound.add(child.asname or child.name.partition(".")[0])
-        elif isinstance(child, ast.ExceptHandler) and child.name:
-            bound.add(child.name)
-        elif isinstance(child, (ast.Global, ast.Nonlocal)):
-            declared.update(child.names)
-        elif isinstance(child, ast.NamedExpr):
-            bound.add(child.target.id)
+    if isinstance(node, ast.Lambda):
+        todo: list[ast.AST] = [node.body] if walrus else []
+    elif walrus:
+        todo = list(getattr(node, "body", []))
+    else:
+        todo = _statement_binders(node.body, bound, declared)  # type: ignore[attr-defined]
+    pop, extend = todo.pop, todo.extend
+    while todo:
+        child = pop()
+        kind = child.__class__
+        if kind is ast.Name:
+            if child.ctx.__class__ is not ast.Load:  # type: ignore[attr-defined]
+                bound.add(child.id)  # type: ignore[attr-defined]
+            continue
+        if kind is ast.Constant:
+            continue
+        if kind in _DEFINITION_KINDS:
+            bound.add(child.name)  # type: ignore[attr-defined]
+            extend(child.decorator_list)  # type: ignore[attr-defined]
+            if kind is ast.ClassDef:
+                extend(child.bases)  # type: ignore[attr-defined]
+                extend(child.keywords)  # type: ignore[attr-defined]
+            else:
+                extend(child.args.defaults)  # type: ignore[attr-defined]
+                extend(d for d in child.args.kw_defaults if d is not None)  # type: ignore[attr-defined]
+            continue
+        if kind is ast.Lambda:
+            args = child.args  # type: ignore[attr-defined]
+            extend(d for d in [*args.defaults, *args.kw_defaults] if d)
+            continue
+        if kind in _COMPREHENSION_KINDS:
+            # `:=` inside binds here, but comprehensions with one are not followed
+            todo.append(child.generators[0].iter)  # type: ignore[attr-defined]
+            continue
+        if kind is ast.alias:
+            if child.name != "*":  # type: ignore[attr-defined]
+                bound.add(child.asname or child.name.partition(".")[0])  # type: ignore[attr-defined]
+            continue
+        if kind is ast.Global or kind is ast.Nonlocal:
+            declared.update(child.names)  # type: ignore[attr-defined]
+            continue
+        if kind is ast.ExceptHandler:
+            if child.name:  # type: ignore[attr-defined]
+                bound.add(child.name)  # type: ignore[attr-defined]
+        elif kind is ast.NamedExpr:
+            bound.add(child.target.id)  # type: ignore[attr-defined]
+        extend(children(child))
     return frozenset(bound - declared), frozenset(declared)
+
+
+_DEFINITION_KINDS = frozenset(DEFINITIONS)
+_COMPREHENSION_KINDS = frozenset(COMPREHENSIONS)
+_TARGETS = {  # statement class -> its fields that hold targets
+    ast.Assign: "targets",
+    ast.AugAssign: "target",
+    ast.AnnAssign: "target",
+    ast.For: "target",
+    ast.AsyncFor: "target",
+    ast.Delete: "targets",
+}
+
+
+def _statement_binders(
+    body: list[ast.stmt], bound: set[str], declared: set[str]
+) -> list[ast.AST]:
+    """What a scope's statements bind by name (definitions, imports, handlers'
+    names) and declare; the targets they store to, for `_binders` to walk."""
+    targets: list[ast.AST] = []
+    todo: list[ast.AST] = list(body)
+    while todo:
+        stmt = todo.pop()
+        kind = stmt.__class__
+        field = _TARGETS.get(kind)
+        if field is not None:
+            found = getattr(stmt, field)
+            if found.__class__ is list:
+                targets.extend(found)
+            else:
+                targets.append(found)
+        if kind in _DEFINITION_KINDS:
+            bound.add(stmt.name)  # type: ignore[attr-defined]
+            continue
+        if kind is ast.Import or kind is ast.ImportFrom:
+            for alias in stmt.names:  # type: ignore[attr-defined]
+                if alias.name != "*":
+                    bound.add(alias.asname or alias.name.partition(".")[0])
+            continue
+        if kind is ast.Global or kind is ast.Nonlocal:
+            declared.update(stmt.names)  # type: ignore[attr-defined]
+            continue
+        if kind is ast.With or kind is ast.AsyncWith:
+            for item in stmt.items:  # type: ignore[attr-defined]
+                if item.optional_vars is not None:
+                    targets.append(item.optional_vars)
+        if kind not in _COMPOUND:
+            continue
+        todo.extend(getattr(stmt, "body", ()))
+        todo.extend(getattr(stmt, "orelse", ()))
+        todo.extend(getattr(stmt, "finalbody", ()))
+        for handler in getattr(stmt, "handlers", ()):
+            if handler.name:
+                bound.add(handler.name)
+            todo.extend(handler.body)
+        for case in getattr(stmt, "cases", ()):
+            todo.extend(case.body)
+    return targets
 
 
 def _stores(node: ast.AST) -> set[str]:
@@ -579,32 +699,3 @@ def _stores(node: ast.AST) -> set[str]:
         for n in ast.walk(node)
         if isinstance(n, ast.Name) and not isinstance(n.ctx, ast.Load)
     }
-
-
-def _own_nodes(scope: ast.AST) -> Iterable[ast.AST]:
-    """The nodes of a scope's body, not of the scopes nested in it (their names,
-    decorators and defaults are the outer scope's)."""
-    body: list[ast.AST]
-    if isinstance(scope, ast.Lambda):
-        body = [scope.body]
-    else:
-        body = list(getattr(scope, "body", []))
-    todo = list(reversed(body))
-    while todo:
-        node = todo.pop()
-        yield node
-        if isinstance(node, DEFINITIONS):
-            parts: list[ast.AST] = list(node.decorator_list)
-            if isinstance(node, ast.ClassDef):
-                parts += [*node.bases, *node.keywords]
-            else:
-                parts += node.args.defaults
-                parts += [d for d in node.args.kw_defaults if d is not None]
-            todo.extend(parts)
-        elif isinstance(node, ast.Lambda):
-            todo.extend(d for d in [*node.args.defaults, *node.args.kw_defaults] if d)
-        elif isinstance(node, COMPREHENSIONS):
-            todo.append(node.generators[0].iter)
-            # `:=` inside binds here, but comprehensions with one are not followed
-        else:
-            todo.extend(children(node))

@@ -102,17 +102,28 @@ LOGGING = frozenset(
 
 
 def may_raise(node: ast.AST) -> bool:
-    """A function with a `raise` or an `assert` in its own body."""
-    todo: list[ast.AST] = list(getattr(node, "body", []))
+    """A function with a `raise` or an `assert` in its own body. Both are
+    statements, and no expression holds a statement: only the statement lists
+    are walked (a lambda's body is an expression)."""
+    if isinstance(node, ast.Lambda):
+        return False
+    todo: list[ast.stmt] = list(getattr(node, "body", []))
     while todo:
         child = todo.pop()
-        if isinstance(child, (ast.Raise, ast.Assert)):
+        kind = type(child)
+        if kind is ast.Raise or kind is ast.Assert:
             return True
-        if not isinstance(
-            child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef)
-        ):
-            todo.extend(ast.iter_child_nodes(child))
+        if kind in _NESTED_SCOPES:
+            continue
+        for block in _STATEMENT_LISTS:
+            todo.extend(getattr(child, block, ()))
+        for part in getattr(child, "handlers", ()) or getattr(child, "cases", ()):
+            todo.extend(part.body)
     return False
+
+
+_NESTED_SCOPES = frozenset({ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef})
+_STATEMENT_LISTS = ("body", "orelse", "finalbody")
 
 
 def is_case(test: ast.expr) -> bool:

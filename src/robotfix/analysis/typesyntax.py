@@ -89,14 +89,33 @@ def local_bindings(node: ast.AST, walrus: bool = True) -> dict[str, list[Binding
             found.setdefault(child.name, []).append(None)  # type: ignore[attr-defined]
         if walrus:
             todo.extend(children(child))
-        else:
-            todo.extend(c for c in children(child) if not isinstance(c, ast.expr))
+        else:  # the fields that hold statements, handlers, cases and patterns
+            inner = _INNER.get(kind)
+            for name in inner if inner is not None else _inner(kind):
+                value = getattr(child, name)
+                if value.__class__ is list:
+                    todo.extend(value)
+                elif value is not None:
+                    todo.append(value)
     for name, annotation in declared.items():
         found[name] = [BoundAnnotation(annotation)]  # a declaration is a fact
     return found
 
 
 _COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
+# the fields of a statement, handler, case or pattern that hold no expression
+# (`children` in field order, but for expressions, which bind nothing without `:=`)
+_NOT_EXPRESSIONS = frozenset(
+    {"body", "handlers", "orelse", "finalbody", "cases", "pattern", "patterns"}
+    | {"kwd_patterns"}
+)
+_INNER: dict[type, tuple[str, ...]] = {}
+
+
+def _inner(kind: type) -> tuple[str, ...]:
+    every: tuple[str, ...] = kind._fields  # type: ignore[attr-defined]
+    found = _INNER[kind] = tuple(f for f in every if f in _NOT_EXPRESSIONS)
+    return found
 
 
 def _record(found: dict[str, list[Binding]], target: ast.expr, value: Binding) -> None:

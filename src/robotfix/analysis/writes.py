@@ -12,6 +12,7 @@ changes nothing. A loop's head forgets only what its body changes
 from __future__ import annotations
 
 import ast
+import weakref
 from collections.abc import Callable, Iterable
 
 from robotfix.analysis import containers
@@ -41,29 +42,36 @@ def uses(
     the paths of the fields they store into (`("header", "stamp")`); a mention
     inside a function or class they define lets it escape (it may run at any
     time)."""
-    parents: dict[int, ast.AST] = {}
-    mentions: dict[str, list[ast.Name]] = {}
+    nodes = list(nodes)
+    top = nodes[0] if len(nodes) == 1 and type(nodes[0]) is not ast.Name else None
+    under: dict[int, ast.AST] = {}
+    if top is not None:  # a function or a module: asked again at every loop
+        known = _SYNTAX.get(top)
+        if known is None:
+            known = _SYNTAX[top] = _syntax(nodes, kept=True)
+        syntax = known
+        # the memo leaves out the edges to `top` (a value holding its key would
+        # keep it alive): they are made again here
+        under = {id(child): top for child in children(top)}
+    else:
+        syntax = _syntax(nodes)
+    parents = syntax[0]
+
+    def parent_of(ident: int) -> ast.AST | None:
+        return parents.get(ident) or under.get(ident)
+
+    _, mentions, nested = syntax
     found: dict[str, set[str | tuple[str, ...]]] = {}
-    todo: list[tuple[ast.AST, bool]] = [(top, False) for top in nodes]
-    while todo:
-        node, nested = todo.pop()
-        if isinstance(node, ast.Name):
-            mentions.setdefault(node.id, []).append(node)
-            if nested and node.id in roots:
-                found.setdefault(node.id, set()).add(ESCAPE)
-            continue
-        inner = nested or (node not in nodes and isinstance(node, _NESTED))
-        for child in children(node):
-            parents[id(child)] = node
-            todo.append((child, inner))
     for root in roots:
         kinds = found.setdefault(root, set())
+        if root in nested:
+            kinds.add(ESCAPE)
         aliases: list[tuple[str, tuple[str, ...]]] = [(root, ())]
         seen = {root}
         while aliases:
             name, prefix = aliases.pop()
             for mention in mentions.get(name, ()):
-                use = _use(mention, prefix, root, parents, leaf, reads)
+                use = _use(mention, prefix, root, parent_of, leaf, reads)
                 if isinstance(use, str):
                     if use != READ:
                         kinds.add(use)
@@ -77,11 +85,40 @@ def uses(
     return found
 
 
+# what `_syntax` found under one node, kept as long as the node's tree
+Syntax = tuple[dict[int, ast.AST], dict[str, list[ast.Name]], set[str]]
+_SYNTAX: weakref.WeakKeyDictionary[ast.AST, Syntax] = weakref.WeakKeyDictionary()
+
+
+def _syntax(nodes: list[ast.AST], kept: bool = False) -> Syntax:
+    """Each node's parent, the mentions of each name, and the names mentioned
+    inside a function or class `nodes` define. `kept`: not the parent of a child
+    of `nodes` (what `_SYNTAX` keeps must not hold its key)."""
+    parents: dict[int, ast.AST] = {}
+    mentions: dict[str, list[ast.Name]] = {}
+    nested_names: set[str] = set()
+    todo: list[tuple[ast.AST, bool]] = [(top, False) for top in nodes]
+    while todo:
+        node, nested = todo.pop()
+        if isinstance(node, ast.Name):
+            mentions.setdefault(node.id, []).append(node)
+            if nested:
+                nested_names.add(node.id)
+            continue
+        top = node in nodes
+        inner = nested or (not top and isinstance(node, _NESTED))
+        for child in children(node):
+            if not (kept and top):
+                parents[id(child)] = node
+            todo.append((child, inner))
+    return parents, mentions, nested_names
+
+
 def _use(
     mention: ast.Name,
     prefix: tuple[str, ...],
     root: str,
-    parents: dict[int, ast.AST],
+    parent_of: Callable[[int], ast.AST | None],
     leaf: Leaf,
     reads: Reads,
 ) -> str | list[tuple[str, tuple[str, ...]]]:
@@ -92,10 +129,10 @@ def _use(
         return READ  # (re)binding the name changes no object
     node: ast.expr = mention
     path = list(prefix)
-    parent = parents.get(id(node))
+    parent = parent_of(id(node))
     while isinstance(parent, (ast.Attribute, ast.Subscript)) and parent.value is node:
         path.append(parent.attr if isinstance(parent, ast.Attribute) else "[]")
-        node, parent = parent, parents.get(id(parent))
+        node, parent = parent, parent_of(id(parent))
     context = getattr(node, "ctx", None)
     if isinstance(context, ast.Store) and "[]" not in path:
         return [("", tuple(path))]  # a field stored into: only it changes
@@ -104,7 +141,7 @@ def _use(
     if leaf(root, tuple(path)):
         return READ  # a number or a string: nothing to change through it
     while isinstance(parent, _PASSING) and getattr(parent, "test", None) is not node:
-        node, parent = parent, parents.get(id(parent))
+        node, parent = parent, parent_of(id(parent))
     if isinstance(parent, ast.IfExp):
         return READ  # its test
     if isinstance(parent, ast.Call):
@@ -112,7 +149,7 @@ def _use(
             return CHANGE if node is not mention else ESCAPE
         return READ if reads(parent, node) else ESCAPE
     if isinstance(parent, (ast.keyword, ast.Starred)):
-        call = parents.get(id(parent))
+        call = parent_of(id(parent))
         return READ if isinstance(call, ast.Call) and reads(call, node) else ESCAPE
     if isinstance(parent, ast.Assign) and parent.value is node:
         targets = parent.targets
