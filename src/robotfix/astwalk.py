@@ -12,6 +12,9 @@ from __future__ import annotations
 import ast
 from collections.abc import Iterable, Iterator
 
+# `try` statements: `try ... except*` (`ast.TryStar`) is Python 3.11's; the package
+# runs on 3.10 (ROS 2 Humble), where naming it at import failed
+TRIES: tuple[type, ...] = (ast.Try, getattr(ast, "TryStar", ast.Try))
 # fields that hold a str, a number, or a context or operator singleton
 LEAF_FIELDS = frozenset(
     {"ctx", "op", "ops", "id", "attr", "arg", "name", "asname", "module", "level"}

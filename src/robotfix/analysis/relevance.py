@@ -71,7 +71,7 @@ from robotfix.analysis.imported import (
     absolute,
 )
 from robotfix.analysis.values import Value
-from robotfix.astwalk import children, walk
+from robotfix.astwalk import TRIES, children, walk
 from robotfix.ros import api_model, frames_model
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.stubs.load import StubSet, defined_names
@@ -194,8 +194,7 @@ def _statements(body: list[ast.stmt]) -> Iterable[ast.stmt]:
 # the statements that hold statements (`_statements`)
 _COMPOUND = frozenset(
     {ast.If, ast.For, ast.AsyncFor, ast.While, ast.With, ast.AsyncWith, ast.Try}
-    | {ast.Match, ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef}
-    | {getattr(ast, "TryStar", ast.Try)}  # 3.11
+    | {ast.Match, ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, *TRIES}
 )
 
 
@@ -526,7 +525,7 @@ class _Scope:
                 if item.optional_vars is not None:
                     bound = self.target(item.optional_vars, bound)
             return self.run(node.body, bound)
-        if isinstance(node, (ast.Try, ast.TryStar)):
+        if isinstance(node, TRIES):
             # a handler may start anywhere in the body: only what was sure before
             after = self.run(node.orelse, self.run(node.body, bound))
             for handler in node.handlers:

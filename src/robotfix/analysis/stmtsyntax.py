@@ -16,7 +16,7 @@ from robotfix.analysis.constants import plain_kind
 from robotfix.analysis.state import MAYBE, State
 from robotfix.analysis.values import Value
 from robotfix.annotations import ast as A
-from robotfix.astwalk import children, walk
+from robotfix.astwalk import TRIES, children, walk
 
 NO_RETURN = frozenset(
     {
@@ -449,7 +449,7 @@ def has_break(body: list[ast.stmt]) -> bool:
 LOOPS = frozenset({ast.For, ast.AsyncFor, ast.While})
 # Statements with statements inside (a `break` cannot hide in an expression).
 COMPOUND = frozenset(
-    {ast.If, ast.With, ast.AsyncWith, ast.Try, ast.TryStar, ast.Match, ast.match_case}
+    {ast.If, ast.With, ast.AsyncWith, *TRIES, ast.Match, ast.match_case}
     | {ast.ExceptHandler}
 )
 

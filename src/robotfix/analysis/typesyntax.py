@@ -10,7 +10,7 @@ from __future__ import annotations
 import ast
 
 from robotfix.analysis.typeterms import Tup, Type, plain
-from robotfix.astwalk import children
+from robotfix.astwalk import TRIES, children
 
 
 class BoundAnnotation:
@@ -200,8 +200,8 @@ def self_stores(
 
 
 _BLOCKS = frozenset(
-    {ast.If, ast.For, ast.AsyncFor, ast.While, ast.With, ast.AsyncWith, ast.Try}
-    | {ast.TryStar, ast.Match}
+    {ast.If, ast.For, ast.AsyncFor, ast.While, ast.With, ast.AsyncWith, *TRIES}
+    | {ast.Match}
 )
 
 
