@@ -131,13 +131,13 @@ def test_a_resolver_finds_each_name_once(tmp_path: Path) -> None:
     first = resolver.module("my_pkg.limits")
     assert first is not None
     asked: list[str] = []
-    find = project.index.find
+    find_in = project.index.find_in
 
-    def spy(name: str, importer: Path | str) -> Path | None:
+    def spy(number: int, name: str, importer: Path | str) -> Path | None:
         asked.append(name)
-        return find(name, importer)
+        return find_in(number, name, importer)
 
-    project.index.find = spy  # type: ignore[method-assign]
+    project.index.find_in = spy  # type: ignore[method-assign]
     assert resolver.module("my_pkg.limits") is first
     assert resolver.module("rclpy") is None
     assert resolver.module("rclpy") is None

@@ -64,6 +64,10 @@ class ModuleIndex:
         # 35,549 entries on corpus25)
         self._found: dict[tuple[str, str], Path | None] = {}
         self._packages: dict[Path, str | None] = {}
+        self._package_by_spelling: dict[str, str | None] = {}  # a folder as spelled
+        # each search path's folders' listings (by number), once listed: `_offered`
+        # reads them for every name no module of the tree answers (rclpy, numpy)
+        self._offering: dict[int, tuple[dict[str, bool], ...]] = {}
         self._listings: dict[str, dict[str, bool]] = {}
         # folders in which a file's existence was tested (`__init__.py`,
         # `package.xml`, `src/`): a change there can change an answer too
@@ -319,7 +323,7 @@ class ModuleIndex:
             if not self._offered(number, name.partition(".")[0]):
                 found = None  # rclpy, numpy: not in any folder searched
             else:
-                found = self._lookup(self.search_path(importer), name)
+                found = self._lookup(self._spelled[number], name)
             # one string per name, not per asking: each call spells it anew
             # (10,716 strings for 4,556 names on corpus25)
             self._resolved[(number, sys.intern(name))] = found
@@ -327,14 +331,14 @@ class ModuleIndex:
             return found
         return _relative(found)
 
-    def _lookup(self, roots: tuple[Path, ...], name: str) -> Path | None:
+    def _lookup(self, roots: tuple[str, ...], name: str) -> Path | None:
         if not name or not all(part.isidentifier() for part in name.split(".")):
             return None
         top = name.partition(".")[0]
         for root in roots:
-            if not _offers(self._listing(str(root)), top):
+            if not _offers(self._listing(root), top):
                 continue  # its listing answers: nothing to keep
-            key = (str(root), name)
+            key = (root, name)
             found = self._found.get(key, _UNKNOWN)
             if found is _UNKNOWN:
                 found = self._found[key] = _module_file(root, name, self._listing)
@@ -357,8 +361,15 @@ class ModuleIndex:
         module or a folder). Every folder is listed: a miss holds while none
         changes. Read from the listings, not kept as a set of names per search
         path (1.3 MB on corpus25, each folder's names again in every path)."""
-        listings = [self._listing(str(root)) for root in self._path(number)]
-        return any(_offers(entries, top) for entries in listings)
+        listings = self._offering.get(number)
+        if listings is None:
+            listed = map(self._listing, self._spelled[number])
+            listings = self._offering[number] = tuple(listed)
+        module = top + ".py"
+        for entries in listings:
+            if top in entries or module in entries:
+                return True
+        return False
 
     def search_id(self, importer: Path | str) -> int:
         """A number for the search path of `importer` (files with the same one
@@ -405,6 +416,9 @@ class ModuleIndex:
     def package_of(self, path: Path) -> str | None:
         """The dotted package `path` is a module of; None when its folder is no
         package (a script's folder: relative imports do not work there)."""
+        spelled = os.path.dirname(path)
+        if spelled in self._package_by_spelling:
+            return self._package_by_spelling[spelled]
         folder = _absolute(path.parent)
         if folder not in self._packages:
             parts: list[str] = []
@@ -418,7 +432,8 @@ class ModuleIndex:
                 current = current.parent
             valid = parts and all(p.isidentifier() for p in parts)
             self._packages[folder] = ".".join(reversed(parts)) if valid else None
-        return self._packages[folder]
+        found = self._package_by_spelling[spelled] = self._packages[folder]
+        return found
 
     def module_name(self, path: Path) -> str:
         """The dotted name `path` has as a module (`my_pkg.util`)."""
@@ -505,12 +520,12 @@ def _offers(entries: dict[str, bool], top: str) -> bool:
 
 
 def _module_file(
-    root: Path, name: str, listing: Callable[[str], dict[str, bool]]
+    root: str, name: str, listing: Callable[[str], dict[str, bool]]
 ) -> Path | None:
     """`root/a/b.py` or `root/a/b/__init__.py`, looked up in folder listings: an
     absent top-level name (rclpy, numpy) costs one listing of the root per run."""
     *packages, last = name.split(".")
-    folder = str(root)
+    folder = root
     for part in packages:
         if listing(folder).get(part) is not True:
             return None

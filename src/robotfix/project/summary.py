@@ -390,11 +390,17 @@ class Project:
             parsed = self._parse(path)
             found: set[Path] = set()
             if parsed is not None and parsed[1].tree is not None:
-                package = self.index.package_of(path)
-                for name in imported_names(parsed[1].tree, package):
+                index = self.index
+                number = index.search_id(path)
+                asked: set[str] = set()  # `a.b.c` and `a.b.d` both ask `a.b`, `a`
+                for name in imported_names(parsed[1].tree, index.package_of(path)):
                     parts = name.split(".")
                     for cut in range(len(parts), 0, -1):
-                        target = self.index.find(".".join(parts[:cut]), path)
+                        prefix = ".".join(parts[:cut])
+                        if prefix in asked:
+                            continue
+                        asked.add(prefix)
+                        target = index.find_in(number, prefix, path)
                         if target is not None:
                             found.add(target)
             self._edges[path] = frozenset(found)
@@ -532,6 +538,7 @@ class FileResolver:
         self.records = project.records
         self._own = f"{path}\0"  # the records' keys start so
         self._package = project.index.package_of(path)
+        self._number: int | None = None  # the index's `search_id` of `path`
         # name -> the module file it is here (_CYCLE: not consulted while building)
         self._targets: dict[str, Path | None] = {}
         # dotted name -> what it stands for (`imported.resolve`'s memo): what
@@ -545,7 +552,7 @@ class FileResolver:
     def exists(self, name: str) -> bool:
         """Is `name` a module of the tree? (Recorded when it is not, as `module`
         does, so a cached result is re-checked once the module appears.)"""
-        if self.project.index.find(name, self.path) is not None:
+        if self._find(name) is not None:
             return True
         if self.records:
             self.consulted[self._own + name] = ABSENT
@@ -555,7 +562,7 @@ class FileResolver:
         project = self.project
         target = self._targets.get(name, _UNASKED)
         if target is _UNASKED:
-            target = project.index.find(name, self.path)
+            target = self._find(name)
             if (
                 target is not None
                 and self.building is not None
@@ -578,6 +585,13 @@ class FileResolver:
         if project.catalog.touched is not None:
             project.catalog.touched.update(project.types(target))
         return found
+
+    def _find(self, name: str) -> Path | None:
+        """The index's `find`, its search path's number asked once per file."""
+        index = self.project.index
+        if self._number is None:
+            self._number = index.search_id(self.path)
+        return index.find_in(self._number, name, self.path)
 
     def member(self, module: str, summary: ModuleSummary, name: str) -> None:
         """The member `name` of `summary` (asked for as `module`) was looked up."""
