@@ -65,7 +65,7 @@ class ModuleIndex:
         self._found: dict[tuple[str, str], Path | None] = {}
         self._packages: dict[Path, str | None] = {}
         self._package_by_spelling: dict[str, str | None] = {}  # a folder as spelled
-        # each search path's folders' listings (by number), once listed: `_offered`
+        # each search path's folders' listings (by number), once listed: `_lookup`
         # reads them for every name no module of the tree answers (rclpy, numpy)
         self._offering: dict[int, tuple[dict[str, bool], ...]] = {}
         self._listings: dict[str, dict[str, bool]] = {}
@@ -320,10 +320,7 @@ class ModuleIndex:
         key = (number, name)
         found = self._resolved.get(key, _UNKNOWN)
         if found is _UNKNOWN:
-            if not self._offered(number, name.partition(".")[0]):
-                found = None  # rclpy, numpy: not in any folder searched
-            else:
-                found = self._lookup(self._spelled[number], name)
+            found = self._lookup(number, name)
             # one string per name, not per asking: each call spells it anew
             # (10,716 strings for 4,556 names on corpus25)
             self._resolved[(number, sys.intern(name))] = found
@@ -331,13 +328,19 @@ class ModuleIndex:
             return found
         return _relative(found)
 
-    def _lookup(self, roots: tuple[str, ...], name: str) -> Path | None:
+    def _lookup(self, number: int, name: str) -> Path | None:
+        top = name.partition(".")[0]
+        module = top + ".py"
+        roots = [
+            root
+            for root, entries in zip(self._spelled[number], self._offering_of(number))
+            if top in entries or module in entries
+        ]  # a root without it answers from its listing: nothing to keep
+        if not roots:
+            return None  # rclpy, numpy: not in any folder searched
         if not name or not all(part.isidentifier() for part in name.split(".")):
             return None
-        top = name.partition(".")[0]
         for root in roots:
-            if not _offers(self._listing(root), top):
-                continue  # its listing answers: nothing to keep
             key = (root, name)
             found = self._found.get(key, _UNKNOWN)
             if found is _UNKNOWN:
@@ -356,20 +359,17 @@ class ModuleIndex:
             found += [base.with_name(base.name + ".py"), base / "__init__.py"]
         return found
 
-    def _offered(self, number: int, top: str) -> bool:
-        """Whether a folder of a search path offers the top-level name `top` (a
-        module or a folder). Every folder is listed: a miss holds while none
-        changes. Read from the listings, not kept as a set of names per search
-        path (1.3 MB on corpus25, each folder's names again in every path)."""
+    def _offering_of(self, number: int) -> tuple[dict[str, bool], ...]:
+        """The listings of the folders of a search path, which say whether one
+        offers a top-level name (a module or a folder). Every folder is listed: a
+        miss holds while none changes. Read from the listings, not kept as a set
+        of names per search path (1.3 MB on corpus25, each folder's names again in
+        every path)."""
         listings = self._offering.get(number)
         if listings is None:
             listed = map(self._listing, self._spelled[number])
             listings = self._offering[number] = tuple(listed)
-        module = top + ".py"
-        for entries in listings:
-            if top in entries or module in entries:
-                return True
-        return False
+        return listings
 
     def search_id(self, importer: Path | str) -> int:
         """A number for the search path of `importer` (files with the same one
@@ -512,11 +512,6 @@ def _relative(path: Path) -> Path:
         return Path(os.path.relpath(path))
     except (OSError, ValueError):
         return path
-
-
-def _offers(entries: dict[str, bool], top: str) -> bool:
-    """Whether a folder listed as `entries` (`_list`) has a module or folder `top`."""
-    return top in entries or top + ".py" in entries
 
 
 def _module_file(
