@@ -89,6 +89,10 @@ class Project:
         self._types: dict[Path, frozenset[str]] = {}  # message types it looked up
         self._parsed: dict[Path, tuple[bytes, SourceFile] | None] = {}
         self._pending: dict[str, tuple[bytes, SourceFile]] = {}
+        # each file parsed here (by `_key`) -> its path in `_parsed`: a module
+        # parsed for its import edges only and not summarised yet hands its parse
+        # to its own check too (`take`), rather than being parsed again
+        self._spellings: dict[str, Path] = {}
         self._edges: dict[Path, frozenset[Path]] = {}
         # each module's strongly connected component of the import graph, by the
         # order in which the components were completed (`_ranked`)
@@ -419,6 +423,7 @@ class Project:
                 self.parses += 1
                 source = SourceFile.from_bytes(str(path), data)
                 self._parsed[path] = (data, source) if source.tree else None
+                self._spellings[_key(path)] = path
                 self._hold(path)
         return self._parsed[path]
 
@@ -501,9 +506,14 @@ class Project:
                 self._released(self._checking)
             self._checking = path
         parsed = self._pending.pop(key, None)
-        if parsed is None:
-            return None
-        self._pending_bytes -= len(parsed[0])
+        if parsed is not None:
+            self._pending_bytes -= len(parsed[0])
+        else:  # parsed for its import edges, not summarised yet: built again if
+            spelled = self._spellings.pop(key, None)  # some file asks later
+            if spelled is not None:
+                parsed = self._parsed.pop(spelled, None)
+            if parsed is None:
+                return None
         if parsed[0] != data:  # changed on disk in between: parse what is checked
             return None
         source, shown = parsed[1], str(path)
