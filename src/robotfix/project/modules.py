@@ -68,6 +68,10 @@ class ModuleIndex:
         # each search path's folders' listings (by number), once listed: `_lookup`
         # reads them for every name no module of the tree answers (rclpy, numpy)
         self._offering: dict[int, tuple[dict[str, bool], ...]] = {}
+        # (search path's number, top-level name) -> its folders that offer the
+        # name: 2,152 on corpus25 for 11,466 names looked up (`rclpy.node`,
+        # `rclpy.qos` ask the same folders)
+        self._tops: dict[tuple[int, str], tuple[str, ...]] = {}
         self._listings: dict[str, dict[str, bool]] = {}
         # folders in which a file's existence was tested (`__init__.py`,
         # `package.xml`, `src/`): a change there can change an answer too
@@ -330,12 +334,16 @@ class ModuleIndex:
 
     def _lookup(self, number: int, name: str) -> Path | None:
         top = name.partition(".")[0]
-        module = top + ".py"
-        roots = [
-            root
-            for root, entries in zip(self._spelled[number], self._offering_of(number))
-            if top in entries or module in entries
-        ]  # a root without it answers from its listing: nothing to keep
+        roots = self._tops.get((number, top))
+        if roots is None:
+            module = top + ".py"
+            roots = self._tops[(number, top)] = tuple(
+                root
+                for root, entries in zip(
+                    self._spelled[number], self._offering_of(number)
+                )
+                if top in entries or module in entries
+            )  # a root without it answers from its listing: nothing to keep
         if not roots:
             return None  # rclpy, numpy: not in any folder searched
         if not name or not all(part.isidentifier() for part in name.split(".")):
