@@ -497,8 +497,9 @@ class Project:
                 self._parsed.pop(module, None)
 
     def take(self, path: Path, data: bytes) -> SourceFile | None:
-        """The parse of `path` made for its summary, if these are its bytes; the
-        check of `path` then owns it (nothing here holds it any longer)."""
+        """The parse of `path` made for its summary (or its import edges), if these
+        are its bytes; the check of `path` then owns it (nothing here holds it any
+        longer)."""
         key = _key(path)
         self.to_check.discard(key)
         if self._live:  # the file checked before this one is done with
