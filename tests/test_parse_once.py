@@ -230,7 +230,8 @@ def test_a_module_parsed_for_its_import_edges_only_is_parsed_once(
         "a_driver.py": "from pkg import b\n\nSPEED = b.LIMIT\n",
         "b.py": "from pkg import c\n\nLIMIT = c.OTHER\n",
         "c.py": "OTHER = 2.0\n\n\ndef later():\n    import pkg.d  # noqa\n",
-        "d.py": 'from typing import Annotated\n\nimport rclpy\n\nR: Annotated[float, "m"] = 0.1\n',
+        "d.py": "from typing import Annotated\n\nimport rclpy\n\n"
+        'R: Annotated[float, "m"] = 0.1\n',
     }
     for name, text in files.items():
         (root / "pkg" / name).write_text(text)

@@ -236,10 +236,7 @@ def starred(node: ast.Call, kwargs: dict[str | None, Value]) -> bool:
     """`f(*xs)` or `f(**kw)`: which parameter gets which argument is unknown."""
     if None in kwargs:
         return True
-    for arg in node.args:  # a loop, not `any`: asked for every call made
-        if isinstance(arg, ast.Starred):
-            return True
-    return False
+    return bool(node.args) and any(isinstance(a, ast.Starred) for a in node.args)
 
 
 class Symbols(Protocol):

@@ -340,7 +340,7 @@ class ModuleIndex:
             roots = self._tops[(number, top)] = tuple(
                 root
                 for root, entries in zip(
-                    self._spelled[number], self._offering_of(number)
+                    self._spelled[number], self._offering_of(number), strict=True
                 )
                 if top in entries or module in entries
             )  # a root without it answers from its listing: nothing to keep
