@@ -131,13 +131,13 @@ def test_a_resolver_finds_each_name_once(tmp_path: Path) -> None:
     first = resolver.module("my_pkg.limits")
     assert first is not None
     asked: list[str] = []
-    find = project.index.find
+    find_in = project.index.find_in
 
-    def spy(name: str, importer: Path | str) -> Path | None:
+    def spy(number: int, name: str, importer: Path | str) -> Path | None:
         asked.append(name)
-        return find(name, importer)
+        return find_in(number, name, importer)
 
-    project.index.find = spy  # type: ignore[method-assign]
+    project.index.find_in = spy  # type: ignore[method-assign]
     assert resolver.module("my_pkg.limits") is first
     assert resolver.module("rclpy") is None
     assert resolver.module("rclpy") is None
@@ -215,3 +215,29 @@ def test_fresh_summaries_hands_each_summary_over_once(tmp_path: Path) -> None:
     assert project.summary(package / "units.py") is not None
     assert list(project.fresh_summaries()) == [str(package / "units.py")]
     assert project.fresh_summaries() == {}
+
+
+def test_a_module_parsed_for_its_import_edges_only_is_parsed_once(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """`b`'s summary reads `c`, so the import ranks parse `c`'s imports: `d`, which
+    `c` imports only inside a function nobody runs. No summary of `d` is built
+    before its own check, which takes that parse (it was parsed again)."""
+    root = tmp_path / "ws"
+    (root / "pkg").mkdir(parents=True)
+    files = {
+        "__init__.py": "",
+        "a_driver.py": "from pkg import b\n\nSPEED = b.LIMIT\n",
+        "b.py": "from pkg import c\n\nLIMIT = c.OTHER\n",
+        "c.py": "OTHER = 2.0\n\n\ndef later():\n    import pkg.d  # noqa\n",
+        "d.py": "from typing import Annotated\n\nimport rclpy\n\n"
+        'R: Annotated[float, "m"] = 0.1\n',
+    }
+    for name, text in files.items():
+        (root / "pkg" / name).write_text(text)
+    counted = _parses(monkeypatch)
+    shown = _shown(root)
+    assert any(":RF511:" in line for line in shown)  # `d`'s own check ran
+    assert counted[str(root / "pkg" / "d.py")] == 1
+    monkeypatch.setattr(summary_module.Project, "take", lambda *_: None)
+    assert _shown(root) == shown  # as when the check parses it itself

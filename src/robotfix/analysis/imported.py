@@ -236,7 +236,10 @@ def starred(node: ast.Call, kwargs: dict[str | None, Value]) -> bool:
     """`f(*xs)` or `f(**kw)`: which parameter gets which argument is unknown."""
     if None in kwargs:
         return True
-    return bool(node.args) and any(isinstance(a, ast.Starred) for a in node.args)
+    for arg in node.args:  # noqa: SIM110 (no generator per call: 51,588 on corpus25)
+        if isinstance(arg, ast.Starred):
+            return True
+    return False
 
 
 class Symbols(Protocol):

@@ -89,6 +89,10 @@ class Project:
         self._types: dict[Path, frozenset[str]] = {}  # message types it looked up
         self._parsed: dict[Path, tuple[bytes, SourceFile] | None] = {}
         self._pending: dict[str, tuple[bytes, SourceFile]] = {}
+        # each file parsed here (by `_key`) -> its path in `_parsed`: a module
+        # parsed for its import edges only and not summarised yet hands its parse
+        # to its own check too (`take`), rather than being parsed again
+        self._spellings: dict[str, Path] = {}
         self._edges: dict[Path, frozenset[Path]] = {}
         # each module's strongly connected component of the import graph, by the
         # order in which the components were completed (`_ranked`)
@@ -390,11 +394,17 @@ class Project:
             parsed = self._parse(path)
             found: set[Path] = set()
             if parsed is not None and parsed[1].tree is not None:
-                package = self.index.package_of(path)
-                for name in imported_names(parsed[1].tree, package):
+                index = self.index
+                number = index.search_id(path)
+                asked: set[str] = set()  # `a.b.c` and `a.b.d` both ask `a.b`, `a`
+                for name in imported_names(parsed[1].tree, index.package_of(path)):
                     parts = name.split(".")
                     for cut in range(len(parts), 0, -1):
-                        target = self.index.find(".".join(parts[:cut]), path)
+                        prefix = ".".join(parts[:cut])
+                        if prefix in asked:
+                            continue
+                        asked.add(prefix)
+                        target = index.find_in(number, prefix, path)
                         if target is not None:
                             found.add(target)
             self._edges[path] = frozenset(found)
@@ -413,6 +423,7 @@ class Project:
                 self.parses += 1
                 source = SourceFile.from_bytes(str(path), data)
                 self._parsed[path] = (data, source) if source.tree else None
+                self._spellings[_key(path)] = path
                 self._hold(path)
         return self._parsed[path]
 
@@ -486,8 +497,9 @@ class Project:
                 self._parsed.pop(module, None)
 
     def take(self, path: Path, data: bytes) -> SourceFile | None:
-        """The parse of `path` made for its summary, if these are its bytes; the
-        check of `path` then owns it (nothing here holds it any longer)."""
+        """The parse of `path` made for its summary (or its import edges), if these
+        are its bytes; the check of `path` then owns it (nothing here holds it any
+        longer)."""
         key = _key(path)
         self.to_check.discard(key)
         if self._live:  # the file checked before this one is done with
@@ -495,9 +507,14 @@ class Project:
                 self._released(self._checking)
             self._checking = path
         parsed = self._pending.pop(key, None)
-        if parsed is None:
-            return None
-        self._pending_bytes -= len(parsed[0])
+        if parsed is not None:
+            self._pending_bytes -= len(parsed[0])
+        else:  # parsed for its import edges, not summarised yet: built again if
+            spelled = self._spellings.pop(key, None)  # some file asks later
+            if spelled is not None:
+                parsed = self._parsed.pop(spelled, None)
+            if parsed is None:
+                return None
         if parsed[0] != data:  # changed on disk in between: parse what is checked
             return None
         source, shown = parsed[1], str(path)
@@ -532,6 +549,7 @@ class FileResolver:
         self.records = project.records
         self._own = f"{path}\0"  # the records' keys start so
         self._package = project.index.package_of(path)
+        self._number: int | None = None  # the index's `search_id` of `path`
         # name -> the module file it is here (_CYCLE: not consulted while building)
         self._targets: dict[str, Path | None] = {}
         # dotted name -> what it stands for (`imported.resolve`'s memo): what
@@ -545,7 +563,7 @@ class FileResolver:
     def exists(self, name: str) -> bool:
         """Is `name` a module of the tree? (Recorded when it is not, as `module`
         does, so a cached result is re-checked once the module appears.)"""
-        if self.project.index.find(name, self.path) is not None:
+        if self._find(name) is not None:
             return True
         if self.records:
             self.consulted[self._own + name] = ABSENT
@@ -555,7 +573,7 @@ class FileResolver:
         project = self.project
         target = self._targets.get(name, _UNASKED)
         if target is _UNASKED:
-            target = project.index.find(name, self.path)
+            target = self._find(name)
             if (
                 target is not None
                 and self.building is not None
@@ -578,6 +596,13 @@ class FileResolver:
         if project.catalog.touched is not None:
             project.catalog.touched.update(project.types(target))
         return found
+
+    def _find(self, name: str) -> Path | None:
+        """The index's `find`, its search path's number asked once per file."""
+        index = self.project.index
+        if self._number is None:
+            self._number = index.search_id(self.path)
+        return index.find_in(self._number, name, self.path)
 
     def member(self, module: str, summary: ModuleSummary, name: str) -> None:
         """The member `name` of `summary` (asked for as `module`) was looked up."""
