@@ -46,6 +46,8 @@ if TYPE_CHECKING:
     from robotfix.stubs.load import Param as StubParam
     from robotfix.stubs.load import StubSet
 
+_UNIT_KINDS = frozenset({ast.Call, ast.Assign, ast.AnnAssign})  # what `unit` reads
+
 
 def _python_constant(name: str, value: object) -> A.Expr | None:
     """A module constant (`_module_constants`) as a term labelled with its name; a
@@ -104,13 +106,6 @@ def called_name(call: ast.Call) -> str:
     """The name a call calls: `declare_parameter` of `self.declare_parameter(...)`."""
     func = call.func
     return func.attr if isinstance(func, ast.Attribute) else getattr(func, "id", "")
-
-
-_UNIT_KINDS = frozenset({ast.Call, ast.Assign, ast.AnnAssign})  # what `unit` reads
-
-
-def _place(node: ast.AST) -> tuple[int, int]:
-    return node.lineno, node.col_offset  # type: ignore[attr-defined]
 
 
 @dataclass
@@ -177,7 +172,7 @@ class Walker:
         nodes = walk(body) if function is not None else self._module_nodes(body)
         for node in sorted(
             [n for n in nodes if n.__class__ in _UNIT_KINDS],
-            key=_place,
+            key=lambda n: (n.lineno, n.col_offset),  # type: ignore[attr-defined]
         ):
             if isinstance(node, ast.Call):
                 self.call(node)
