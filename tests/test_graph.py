@@ -882,7 +882,8 @@ def test_cpp_file_naming_a_maker_in_its_comments_only_is_not_parsed(
 ) -> None:
     """`@param` in a header's comments, `subscribe` in prose: a word, but no
     call; what the parse would find besides (a base class of another package's
-    node, `::rclcpp::Node` too, or a maker called) still makes it parsed."""
+    node, `::rclcpp::Node` too, a node class, or a maker called) still makes it
+    parsed."""
     from robotfix.ros.graph import cpp
 
     parsed: list[bytes] = []
@@ -895,7 +896,7 @@ def test_cpp_file_naming_a_maker_in_its_comments_only_is_not_parsed(
 
     monkeypatch.setattr(cpp, "_parser", Counting)
     comment = b"/**\n * @param node the node to subscribe with\n */\n"
-    header = comment + b"class Server : public rclcpp::Node {\n  void run();\n};\n"
+    header = comment + b"class Server {\n  rclcpp::Node::SharedPtr node_;\n};\n"
     assert not read_cpp(header).endpoints and not parsed
     for base in (b"nav2_util::LifecycleNode", b"::rclcpp::Node", b"util :: Node"):
         other = comment + b"class Server : public " + base + b" {\n};\n"
@@ -904,6 +905,52 @@ def test_cpp_file_naming_a_maker_in_its_comments_only_is_not_parsed(
     spaced = comment + b'void f() {\n  nh.param /* x */ ("rate", rate_, 1.0);\n}\n'
     assert [e.kind for e in read_cpp(spaced).endpoints] == ["parameter"]
     assert len(parsed) == 4
+
+
+@pytest.mark.parametrize(
+    ("code", "nodes", "ros"),
+    [
+        (  # a node class's header: its endpoints are made in its .cpp
+            b"class Talker : public rclcpp::Node {\n public:\n"
+            b"  /** @param options node options */\n"
+            b"  explicit Talker(const rclcpp::NodeOptions & options);\n};\n",
+            {"Talker": []},
+            2,
+        ),
+        (
+            b"class Talker : public rclcpp::Node {\n  /// @param options the options\n"
+            b'  Talker() : Node("talker") {}\n};\n',
+            {"Talker": ["talker"]},
+            2,
+        ),
+        (  # ros_comm's rosbag/src/play.cpp, test_roscpp's nodes
+            b"/**\n * @param argc the count\n */\nint main(int argc, char ** argv)\n"
+            b'{\n  ros::init(argc, argv, "play");\n  ros::spin();\n}\n',
+            {"": ["play"]},
+            1,
+        ),
+        (
+            b"/// @param argc the count\nint main(int argc, char ** argv) {\n"
+            b'  auto node = rclcpp::Node::make_shared("talker");\n}\n',
+            {"node": ["talker"]},
+            2,
+        ),
+        (  # ros_comm's ros/topic.h: a ROS 1 file
+            b"/** @param nh the handle to subscribe with */\n"
+            b"void wait() {\n  ros::NodeHandle nh;\n  spin(nh);\n}\n",
+            {},
+            1,
+        ),
+    ],
+)
+def test_cpp_file_naming_a_maker_in_its_comments_only_still_names_its_node(
+    code: bytes, nodes: dict[str, list[str]], ros: int
+) -> None:
+    """A file whose makers stand in comments only is still read for the node it
+    names and whether it is ROS 1 (regression: the text test skipped the parse,
+    and `@param` headers lost their node classes, roscpp mains their names)."""
+    found = read_cpp(code)
+    assert (found.nodes, found.ros, found.endpoints) == (nodes, ros, [])
 
 
 def test_python_graph_looks_up_only_calls_whose_last_name_may_make_something(

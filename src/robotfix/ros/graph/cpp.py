@@ -22,9 +22,9 @@ variable (`node->create_...`).
 
 Bad C++ never fails: tree-sitter recovers from errors; a file over
 `MAX_CPP_BYTES` is not read, and one without any of `WORDS` (or where no name
-that makes an endpoint stands as a word, or none is called: `_may_make`) not
-parsed. What the reading needs of the tree is matched by one tree-sitter query,
-in C.
+that makes an endpoint stands as a word, or none is called and no node is
+named: `_may_make`) not parsed. What the reading needs of the tree is matched
+by one tree-sitter query, in C.
 """
 
 from __future__ import annotations
@@ -136,6 +136,9 @@ _OPENING_WORDS = (  # one of which `OPENING` needs (a quick test)
     b"Instance",
 )
 AUTO = "automatically_declare_parameters_from_overrides"
+# what may make a file ROS 1 or name a node without any endpoint (`_File._handle`,
+# `ros::init(argc, argv, "talker")`; a base class or an initializer: `_other_node`)
+_NAMING = re.compile(rb"NodeHandle|make_shared|\bros\s*::\s*init\b")
 _OURS = frozenset(b.encode() for b in _RCLCPP_BASES)  # (`_other_node`)
 _PTR = re.compile(r"(::)?(ConstPtr|Ptr|SharedPtr|ConstSharedPtr|UniquePtr)$")
 
@@ -180,36 +183,51 @@ def _may_make(
     """Whether a parse of `data` may find an endpoint, `_opening`'s apart: a
     name of `_MAKERS` called (then `<` or `(`, or a comment, a line continued:
     `first` and the `rest` of the matches), a class of `_CLASSES`, or a base
-    class `x::Node` not rclcpp's (`_other_node`). Nav2's and ros_comm's headers
-    say `@param` in their comments: 36% of corpus25's parsed C++ bytes."""
+    class `x::Node` not rclcpp's or a node class or name (`_other_node`), or a
+    ROS 1 file or a node named otherwise (`_NAMING`). Nav2's and ros_comm's
+    headers say `@param` in their comments: 36% of corpus25's parsed C++ bytes."""
     for found in itertools.chain((first,) if first is not None else (), rest):
         if found.group() in _CLASS_WORDS:
             return True
         after = data[found.end() : found.end() + 80].lstrip()
         if not after or after[:1] in b"<(/\\":  # (all blanks: unsure, parsed)
             return True
-    return _other_node(data)
+    return _other_node(data) or _NAMING.search(data) is not None
 
 
 def _other_node(data: bytes) -> bool:
     """Whether `data` names `Node` or `LifecycleNode` with a qualifier that is not
     rclcpp's (`nav2_util::LifecycleNode`, `::rclcpp::Node`), as `_File._bases`
-    reads a base class (its text without blanks): an endpoint if it is one."""
+    reads a base class (its text without blanks): an endpoint if it is one; or
+    any as a base class or built (`: public rclcpp::Node`, `: Node("talker")`):
+    a node class, its name."""
     at = data.find(b"Node")
     while at >= 0:
         end = at + 4
         if end == len(data) or not _WORD.match(data, end):
             start = at - 9 if data[max(at - 9, 0) : at] == b"Lifecycle" else at
-            qualifier = _qualifier(data, start)
-            if qualifier is not None and qualifier + data[start:end] not in _OURS:
-                return True
+            found = _qualifier(data, start)
+            if found is not None:
+                qualifier, begin = found
+                if qualifier + data[start:end] not in _OURS:
+                    return True
+                if data[end : end + 80].lstrip()[:1] in (b"(", b"{"):
+                    return True
+                before = data[max(begin - 80, 0) : begin].rstrip()
+                if before.endswith(_BEFORE_BASE) and not before.endswith(b"::"):
+                    return True
         at = data.find(b"Node", end)
     return False
 
 
-def _qualifier(data: bytes, start: int) -> bytes | None:
+# what stands before a base class (`class A : public B, virtual C`)
+_BEFORE_BASE = (b":", b",", b"public", b"protected", b"private", b"virtual")
+
+
+def _qualifier(data: bytes, start: int) -> tuple[bytes, int] | None:
     """The names and `::`s that stand before `start`, without blanks
-    (`::a :: b::` of `::a :: b::Node`); None when a word goes on into it."""
+    (`::a :: b::` of `::a :: b::Node`), and where they begin; None when a word
+    goes on into it."""
     if start > 0 and _WORD.match(data, start - 1):
         return None  # `MyNode`: no name of its own
     parts: list[bytes] = []
@@ -231,7 +249,7 @@ def _qualifier(data: bytes, start: int) -> bytes | None:
             break  # a leading `::`
         parts.append(data[word:at])
         start = word
-    return b"".join(reversed(parts))
+    return b"".join(reversed(parts)), start
 
 
 def _opening(data: bytes) -> list[Endpoint]:
