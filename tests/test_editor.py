@@ -336,7 +336,7 @@ def test_interface_changes_recheck_the_open_documents_that_use_them(
     (registration,) = steps["registrations"][0]["registrations"]
     assert registration["method"] == "workspace/didChangeWatchedFiles"
     watchers = registration["registerOptions"]["watchers"]
-    assert [w["globPattern"] for w in watchers] == ["**/*.{msg,srv,action}"]
+    assert [w["globPattern"] for w in watchers] == ["**/*.{msg,srv,action,pyi}"]
     declaration = steps["hover_declaration"]["contents"]["value"]
     assert declaration.startswith("**far**: `float` in `km`")
     target = steps["hover_target"]["contents"]["value"]

@@ -42,3 +42,38 @@ def test_the_editor_checks_and_hovers_with_the_users_stubs(tmp_path: Path) -> No
     found = [(d["code"], d["range"]["start"]["line"]) for d in opened["diagnostics"]]
     assert found == [("RF201", 4)]  # ms into the stub's s
     assert "`s`" in hover["result"]["contents"]["value"]
+
+
+def test_a_stub_changed_on_disk_is_read_again(tmp_path: Path) -> None:
+    """The server kept every stub it had read for its whole life: a user who
+    corrected a stub's unit saw the old diagnostics until the editor restarted.
+    A `.pyi` reported changed (watched files) or saved is read again, and the open
+    Python documents are checked again."""
+    (tmp_path / "pyproject.toml").write_text(
+        '[tool.robotfix]\nstub-paths = ["stubs"]\n', encoding="utf-8"
+    )
+    (tmp_path / "stubs").mkdir()
+    stub = tmp_path / "stubs" / "mylib.pyi"
+    stub.write_text(
+        "from typing import Annotated\n"
+        "def wait(duration: Annotated[float, \"Unit('s')\"]) -> None: ...\n",
+        encoding="utf-8",
+    )
+    path = tmp_path / "node.py"
+    path.write_text(SOURCE, encoding="utf-8")
+    client = Client()
+    try:
+        client.initialize(tmp_path)
+        client.open(path, SOURCE)
+        before = client.diagnostics()
+        stub.write_text(stub.read_text().replace("'s'", "'ms'"), encoding="utf-8")
+        client.notify(
+            "workspace/didChangeWatchedFiles",
+            {"changes": [{"uri": stub.as_uri(), "type": 2}]},
+        )
+        after = client.diagnostics()
+        client.stop()
+    finally:
+        client.kill()
+    assert [d["code"] for d in before["diagnostics"]] == ["RF201"]
+    assert after["uri"] == path.as_uri() and after["diagnostics"] == []

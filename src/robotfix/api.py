@@ -229,6 +229,13 @@ def _check_without_solver(vc: VC, budget: Budget | None) -> Verdict | None:
     return None
 
 
+def forget_stubs() -> None:
+    """The user's `.pyi` stubs changed on disk: read them again (the editor)."""
+    from robotfix.stubs.load import forget
+
+    forget()
+
+
 def check_source(
     text: str,
     path: str,

@@ -11,7 +11,8 @@ interface file shows its own problems. When one changes (typed, saved, closed, o
 changed on disk: the server asks a client that allows it to watch interface files),
 the open Python documents that use its types are checked again; when a Python module
 is saved or changed on disk, the open documents that import it (see
-`robotfix.dependents`). A document the editor never opened is read from disk only
+`robotfix.dependents`); when a `.pyi` stub is, every open Python document, its
+stubs read again. A document the editor never opened is read from disk only
 through `fs.read_regular` (a FIFO or `/dev/zero` gets no answer, not a hang).
 
 The modules a document imports are summarised once per catalog (`_project`), not on
@@ -57,7 +58,7 @@ if TYPE_CHECKING:
 SEVERITIES = {Severity.ERROR: 1, Severity.WARNING: 2, Severity.NOTE: 3}
 LOG_ERROR = 1  # window/logMessage's MessageType.Error
 SYNC_INCREMENTAL = 2  # TextDocumentSyncKind (documents.py says why)
-INTERFACE_GLOB = "**/*.{msg,srv,action}"
+INTERFACE_GLOB = "**/*.{msg,srv,action,pyi}"  # and the user's stubs
 MAX_CATALOGS = 32  # catalogs kept (one per set of interface files and settings)
 MAX_MEMOS = 8  # documents, most recently checked, whose proofs are kept
 MAX_PROJECTS = 8  # module summaries kept, one set per catalog
@@ -478,8 +479,20 @@ def did_save(ls: Session, params: Any) -> None:
     path = path_of(uri)
     if path.suffix == ".py":
         _forget_projects()  # a module on disk changed: summaries built again
+    if path.suffix == ".pyi":
+        _stubs_changed(ls)
     _publish(ls, uri)
     _publish_dependents(ls, [path])
+
+
+def _stubs_changed(ls: Session) -> None:
+    """A `.pyi` saved or changed on disk: any document may call into it, so the
+    stubs are read again and every open Python document is checked again."""
+    api.forget_stubs()
+    _forget_projects()
+    for uri, path in _open_documents(ls):
+        if path.suffix == ".py":
+            _publish(ls, uri)
 
 
 def did_close(ls: Session, params: Any) -> None:
@@ -500,6 +513,8 @@ def did_change_watched_files(ls: Session, params: Any) -> None:
     changed = [path_of(_get(event, "uri")) for event in events]
     if any(p.suffix == ".py" for p in changed):
         _forget_projects()
+    if any(p.suffix == ".pyi" for p in changed):
+        _stubs_changed(ls)
     _publish_dependents(
         ls, [p for p in changed if _is_interface(p) or p.suffix == ".py"]
     )

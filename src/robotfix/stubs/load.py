@@ -407,6 +407,14 @@ def stub_set(paths: tuple[Path, ...] = ()) -> StubSet:
     return StubSet(paths)
 
 
+def forget() -> None:
+    """A stub file changed under a process that lives on (the editor's server):
+    every stub set, text and listing is read again when next asked for."""
+    stub_set.cache_clear()
+    _text_of.cache_clear()
+    _module_names.cache_clear()
+
+
 def methods_named(stubs: StubSet, name: str) -> tuple[Function, ...]:
     """`StubSet.methods_named`, once per name and process."""
     found = stubs._methods.get(name)
