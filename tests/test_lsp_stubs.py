@@ -17,19 +17,28 @@ took = mylib.elapsed()
 """
 
 
-def test_the_editor_checks_and_hovers_with_the_users_stubs(tmp_path: Path) -> None:
+STUB = (
+    "from typing import Annotated\n"
+    "def wait(duration: Annotated[float, \"Unit('s')\"]) -> None: ...\n"
+    "def elapsed() -> Annotated[float, \"Unit('s')\"]: ...\n"
+)
+
+
+def _project(tmp_path: Path) -> tuple[Path, Path]:
+    """A package whose `stub-paths` holds `mylib.pyi`, and its node: (stub, node)."""
     (tmp_path / "pyproject.toml").write_text(
         '[tool.robotfix]\nstub-paths = ["stubs"]\n', encoding="utf-8"
     )
     (tmp_path / "stubs").mkdir()
-    (tmp_path / "stubs" / "mylib.pyi").write_text(
-        "from typing import Annotated\n"
-        "def wait(duration: Annotated[float, \"Unit('s')\"]) -> None: ...\n"
-        "def elapsed() -> Annotated[float, \"Unit('s')\"]: ...\n",
-        encoding="utf-8",
-    )
+    stub = tmp_path / "stubs" / "mylib.pyi"
+    stub.write_text(STUB, encoding="utf-8")
     path = tmp_path / "node.py"
     path.write_text(SOURCE, encoding="utf-8")
+    return stub, path
+
+
+def test_the_editor_checks_and_hovers_with_the_users_stubs(tmp_path: Path) -> None:
+    _, path = _project(tmp_path)
     client = Client()
     try:
         client.initialize(tmp_path)
@@ -49,31 +58,25 @@ def test_a_stub_changed_on_disk_is_read_again(tmp_path: Path) -> None:
     corrected a stub's unit saw the old diagnostics until the editor restarted.
     A `.pyi` reported changed (watched files) or saved is read again, and the open
     Python documents are checked again."""
-    (tmp_path / "pyproject.toml").write_text(
-        '[tool.robotfix]\nstub-paths = ["stubs"]\n', encoding="utf-8"
-    )
-    (tmp_path / "stubs").mkdir()
-    stub = tmp_path / "stubs" / "mylib.pyi"
-    stub.write_text(
-        "from typing import Annotated\n"
-        "def wait(duration: Annotated[float, \"Unit('s')\"]) -> None: ...\n",
-        encoding="utf-8",
-    )
-    path = tmp_path / "node.py"
-    path.write_text(SOURCE, encoding="utf-8")
+    stub, path = _project(tmp_path)
     client = Client()
     try:
         client.initialize(tmp_path)
         client.open(path, SOURCE)
         before = client.diagnostics()
-        stub.write_text(stub.read_text().replace("'s'", "'ms'"), encoding="utf-8")
+        stub.write_text(STUB.replace("'s'", "'ms'", 1), encoding="utf-8")
         client.notify(
             "workspace/didChangeWatchedFiles",
             {"changes": [{"uri": stub.as_uri(), "type": 2}]},
         )
-        after = client.diagnostics()
+        watched = client.diagnostics()
+        stub.write_text(STUB, encoding="utf-8")
+        client.notify("textDocument/didSave", {"textDocument": {"uri": stub.as_uri()}})
+        saved = client.diagnostics()
         client.stop()
     finally:
         client.kill()
     assert [d["code"] for d in before["diagnostics"]] == ["RF201"]
-    assert after["uri"] == path.as_uri() and after["diagnostics"] == []
+    assert watched["uri"] == path.as_uri() and watched["diagnostics"] == []
+    assert saved["uri"] == path.as_uri()
+    assert [d["code"] for d in saved["diagnostics"]] == ["RF201"]
