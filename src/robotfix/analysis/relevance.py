@@ -197,6 +197,8 @@ def _pattern(vocabulary: frozenset[str]) -> re.Pattern[str]:
 
 def _trie(words: list[str]) -> str:
     """A pattern of exactly `words` (sorted), their common prefixes shared."""
+    if len(words) == 1:
+        return re.escape(words[0])
     rests: dict[str, list[str]] = {}
     for word in words:
         rests.setdefault(word[:1], []).append(word[1:])
