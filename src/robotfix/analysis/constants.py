@@ -25,11 +25,12 @@ import ast
 from collections import Counter
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
+from typing import Any
 
 from robotfix.analysis.index import FileIndex
 from robotfix.analysis.values import CONTAINERS, Value
 from robotfix.annotations import ast as A
-from robotfix.astwalk import children
+from robotfix.astwalk import FIELDS, children, fields
 
 FINAL = frozenset({"typing.Final", "typing_extensions.Final"})
 # Methods and builtins that only read a dict or list they are given.
@@ -309,17 +310,31 @@ def _literal_display(node: ast.expr) -> bool:
 
 
 def _only_read(tree: ast.Module, names: set[str]) -> set[str]:
-    """Those of `names` whose every use reads the dict or list and nothing else."""
+    """Those of `names` whose every use reads the dict or list and nothing else.
+    A name is asked about under its parent; names and constants are never
+    stacked."""
     changed: set[str] = set()
     todo: list[ast.AST] = [tree]
+    pop, append = todo.pop, todo.append
+    name_class, constant_class, node_class, known = (
+        ast.Name,
+        ast.Constant,
+        ast.AST,
+        FIELDS,
+    )
+    child: Any
     while todo:
-        node = todo.pop()
-        for child in children(node):
-            if type(child) is ast.Name:
-                if child.id in names and not _reads(node, child):
-                    changed.add(child.id)
-            else:
-                todo.append(child)
+        node = pop()
+        kind = node.__class__
+        for field_name in known.get(kind) or fields(kind):
+            value = getattr(node, field_name, None)
+            for child in value if value.__class__ is list else (value,):
+                part = child.__class__
+                if part is name_class:
+                    if child.id in names and not _reads(node, child):
+                        changed.add(child.id)
+                elif part is not constant_class and isinstance(child, node_class):
+                    append(child)
     return names - changed
 
 
