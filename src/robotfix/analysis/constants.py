@@ -165,14 +165,13 @@ def _is_final(annotation: ast.expr, qualname: Callable[[ast.expr], str | None]) 
 def _setattr_names(index: FileIndex) -> set[str] | None:
     """Attribute names `setattr` is called with; None if one is not a literal."""
     names: set[str] = set()
-    for _, call in index.calls:
-        if isinstance(call.func, ast.Name) and call.func.id == "setattr":
-            if len(call.args) < 2:
-                return None
-            name = call.args[1]
-            if not (isinstance(name, ast.Constant) and isinstance(name.value, str)):
-                return None
-            names.add(name.value)
+    for call in index.setattrs:
+        if len(call.args) < 2:
+            return None
+        name = call.args[1]
+        if not (isinstance(name, ast.Constant) and isinstance(name.value, str)):
+            return None
+        names.add(name.value)
     return names
 
 

@@ -36,6 +36,8 @@ class FileIndex:
     calls: list[tuple[str | None, ast.Call]] = field(
         default_factory=list
     )  # (class, call)
+    # the calls of a function named `setattr` (any attribute they name may change)
+    setattrs: list[ast.Call] = field(default_factory=list)
     # (class name, attribute, annotation) for `self.x: Annotated[...]` in methods
     attributes: list[tuple[str, str, ast.expr]] = field(default_factory=list)
     class_scopes: set[int] = field(default_factory=set)
@@ -211,6 +213,9 @@ def _drain(index: FileIndex, todo: Todo, where: Where, root: int) -> None:
                 continue
             if special is _CALL:
                 calls.append((cls, node))
+                func = node.func
+                if func.__class__ is name_class and func.id == "setattr":
+                    index.setattrs.append(node)
             elif special is _ATTRIBUTE:  # one a scope's own statement holds
                 if node.ctx.__class__ is not load:
                     attribute_stores.add(node.attr)
