@@ -225,6 +225,8 @@ def _drain(index: FileIndex, todo: Todo, where: Where, root: int) -> None:
                 index.generators.add(owner)
             else:
                 _record(index, scopes[owner], node, kind, cls, self_name)
+                if special is _IMPORT:  # its aliases hold nothing more
+                    continue
         names = known.get(kind)
         if names is None:
             names = fields(kind)
@@ -253,7 +255,8 @@ _RECORDED = frozenset(
 
 
 # how `_drain` treats a node class it does not just walk under
-_MARK, _NAME, _CONSTANT, _SCOPE, _CALL, _ATTRIBUTE, _RETURN, _YIELD, _RECORD = range(9)
+_MARK, _NAME, _CONSTANT, _SCOPE, _CALL, _ATTRIBUTE, _RETURN, _YIELD = range(8)
+_RECORD, _IMPORT = 8, 9
 _SPECIAL: dict[type, int] = {
     tuple: _MARK,
     ast.Name: _NAME,
@@ -265,6 +268,8 @@ _SPECIAL: dict[type, int] = {
     ast.Yield: _YIELD,
     ast.YieldFrom: _YIELD,
     **dict.fromkeys(_RECORDED, _RECORD),
+    ast.Import: _IMPORT,
+    ast.ImportFrom: _IMPORT,
 }
 
 
