@@ -64,6 +64,36 @@ def walk(roots: ast.AST | Iterable[ast.AST]) -> Iterator[ast.AST]:
             extend(children(node))
 
 
+def select(
+    roots: Iterable[ast.AST],
+    kinds: frozenset[type],
+    skip: frozenset[type] = frozenset(),
+) -> list[ast.AST]:
+    """The nodes under `roots` (roots included) of a class in `kinds`, as `walk`
+    meets them, not entering those of a class in `skip` (nor returning them).
+    Names and constants are never stacked, so `kinds` holds neither."""
+    found: list[ast.AST] = []
+    todo = list(roots)
+    pop, append = todo.pop, todo.append
+    leaves, node_class, known = (ast.Name, ast.Constant), ast.AST, _FIELDS
+    while todo:
+        node = pop()
+        kind = node.__class__
+        if kind in skip:
+            continue
+        if kind in kinds:
+            found.append(node)
+        names = known.get(kind)
+        if names is None:
+            names = fields(kind)
+        for name in names:
+            value = getattr(node, name, None)
+            for child in value if value.__class__ is list else (value,):
+                if child.__class__ not in leaves and isinstance(child, node_class):
+                    append(child)
+    return found
+
+
 def dotted(node: ast.expr) -> str | None:
     """`np.linalg.norm` -> "np.linalg.norm"; None when not a chain of names."""
     parts: list[str] = []
