@@ -433,6 +433,13 @@ class _Scope:
             return bound
         if kind is ast.Attribute:  # its one child
             return self.expr(node.value, bound)  # type: ignore[attr-defined]
+        if kind is ast.Call:  # its children in order, a keyword's value for it
+            bound = self.expr(node.func, bound)  # type: ignore[attr-defined]
+            for argument in node.args:  # type: ignore[attr-defined]
+                bound = self.expr(argument, bound)
+            for keyword in node.keywords:  # type: ignore[attr-defined]
+                bound = self.expr(keyword.value, bound)
+            return bound
         if isinstance(node, ast.NamedExpr):
             bound = self.expr(node.value, bound)
             return bound | {node.target.id}
