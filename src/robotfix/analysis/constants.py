@@ -25,12 +25,11 @@ import ast
 from collections import Counter
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
-from typing import Any
 
 from robotfix.analysis.index import FileIndex
 from robotfix.analysis.values import CONTAINERS, Value
 from robotfix.annotations import ast as A
-from robotfix.astwalk import FIELDS, children, fields
+from robotfix.astwalk import children, names_under
 
 FINAL = frozenset({"typing.Final", "typing_extensions.Final"})
 # Methods and builtins that only read a dict or list they are given.
@@ -309,31 +308,12 @@ def _literal_display(node: ast.expr) -> bool:
 
 
 def _only_read(tree: ast.Module, names: set[str]) -> set[str]:
-    """Those of `names` whose every use reads the dict or list and nothing else.
-    A name is asked about under its parent; names and constants are never
-    stacked."""
-    changed: set[str] = set()
-    todo: list[ast.AST] = [tree]
-    pop, append = todo.pop, todo.append
-    name_class, constant_class, node_class, known = (
-        ast.Name,
-        ast.Constant,
-        ast.AST,
-        FIELDS,
-    )
-    child: Any
-    while todo:
-        node = pop()
-        kind = node.__class__
-        for field_name in known.get(kind) or fields(kind):
-            value = getattr(node, field_name, None)
-            for child in value if value.__class__ is list else (value,):
-                part = child.__class__
-                if part is name_class:
-                    if child.id in names and not _reads(node, child):
-                        changed.add(child.id)
-                elif part is not constant_class and isinstance(child, node_class):
-                    append(child)
+    """Those of `names` whose every use reads the dict or list and nothing else."""
+    changed = {
+        name.id
+        for parent, name in names_under(tree)
+        if name.id in names and not _reads(parent, name)
+    }
     return names - changed
 
 

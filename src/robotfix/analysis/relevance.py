@@ -165,10 +165,7 @@ def _names_one(tree: ast.Module, vocabulary: frozenset[str]) -> bool:
     while todo:
         node = pop()
         kind = node.__class__
-        names = known.get(kind)
-        if names is None:
-            names = fields(kind)
-        for name in names:
+        for name in known.get(kind) or fields(kind):
             value = getattr(node, name, None)
             for child in value if value.__class__ is list else (value,):
                 part = child.__class__
