@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import ast
 from collections.abc import Iterable, Iterator
+from typing import Any
 
 # `try` statements: `try ... except*` (`ast.TryStar`) is Python 3.11's; the package
 # runs on 3.10 (ROS 2 Humble), where naming it at import failed
@@ -62,6 +63,59 @@ def walk(roots: ast.AST | Iterable[ast.AST]) -> Iterator[ast.AST]:
         kind = node.__class__
         if kind is not ast.Name and kind is not ast.Constant:  # they have none
             extend(children(node))
+
+
+def select(
+    roots: Iterable[ast.AST],
+    kinds: frozenset[type],
+    skip: frozenset[type] = frozenset(),
+) -> list[ast.AST]:
+    """The nodes under `roots` (roots included) of a class in `kinds`, as `walk`
+    meets them, not entering those of a class in `skip` (nor returning them).
+    Names and constants are never stacked, so `kinds` holds neither."""
+    found: list[ast.AST] = []
+    todo = list(roots)
+    pop, append = todo.pop, todo.append
+    leaves, node_class, known = (ast.Name, ast.Constant), ast.AST, _FIELDS
+    while todo:
+        node = pop()
+        kind = node.__class__
+        if kind in skip:
+            continue
+        if kind in kinds:
+            found.append(node)
+        for name in known.get(kind) or fields(kind):
+            value = getattr(node, name, None)
+            for child in value if value.__class__ is list else (value,):
+                if child.__class__ not in leaves and isinstance(child, node_class):
+                    append(child)
+    return found
+
+
+def names_under(root: ast.AST) -> list[tuple[ast.AST, ast.Name]]:
+    """Every name under `root`, with its parent (names and constants are never
+    stacked: they hold no node)."""
+    found: list[tuple[ast.AST, ast.Name]] = []
+    todo = [root]
+    pop, append, add = todo.pop, todo.append, found.append
+    name_class, constant_class, node_class, known = (
+        ast.Name,
+        ast.Constant,
+        ast.AST,
+        _FIELDS,
+    )
+    child: Any
+    while todo:
+        node = pop()
+        for field in known.get(node.__class__) or fields(node.__class__):
+            value = getattr(node, field, None)
+            for child in value if value.__class__ is list else (value,):
+                kind = child.__class__
+                if kind is name_class:
+                    add((node, child))
+                elif kind is not constant_class and isinstance(child, node_class):
+                    append(child)
+    return found
 
 
 def dotted(node: ast.expr) -> str | None:

@@ -29,7 +29,7 @@ from dataclasses import dataclass, field
 from robotfix.analysis.index import FileIndex
 from robotfix.analysis.values import CONTAINERS, Value
 from robotfix.annotations import ast as A
-from robotfix.astwalk import children
+from robotfix.astwalk import children, names_under
 
 FINAL = frozenset({"typing.Final", "typing_extensions.Final"})
 # Methods and builtins that only read a dict or list they are given.
@@ -164,14 +164,13 @@ def _is_final(annotation: ast.expr, qualname: Callable[[ast.expr], str | None]) 
 def _setattr_names(index: FileIndex) -> set[str] | None:
     """Attribute names `setattr` is called with; None if one is not a literal."""
     names: set[str] = set()
-    for _, call in index.calls:
-        if isinstance(call.func, ast.Name) and call.func.id == "setattr":
-            if len(call.args) < 2:
-                return None
-            name = call.args[1]
-            if not (isinstance(name, ast.Constant) and isinstance(name.value, str)):
-                return None
-            names.add(name.value)
+    for call in index.setattrs:
+        if len(call.args) < 2:
+            return None
+        name = call.args[1]
+        if not (isinstance(name, ast.Constant) and isinstance(name.value, str)):
+            return None
+        names.add(name.value)
     return names
 
 
@@ -310,16 +309,11 @@ def _literal_display(node: ast.expr) -> bool:
 
 def _only_read(tree: ast.Module, names: set[str]) -> set[str]:
     """Those of `names` whose every use reads the dict or list and nothing else."""
-    changed: set[str] = set()
-    todo: list[ast.AST] = [tree]
-    while todo:
-        node = todo.pop()
-        for child in children(node):
-            if type(child) is ast.Name:
-                if child.id in names and not _reads(node, child):
-                    changed.add(child.id)
-            else:
-                todo.append(child)
+    changed = {
+        name.id
+        for parent, name in names_under(tree)
+        if name.id in names and not _reads(parent, name)
+    }
     return names - changed
 
 

@@ -423,10 +423,12 @@ def facts(ctx: FileContext) -> FrameFacts:
     found = ctx.frame_facts
     if isinstance(found, FrameFacts):
         return found
-    if ctx.index.scopes and "setattr" not in ctx.source.text:  # `analyze_module`
+    if ctx.index.scopes:  # `analyze_module`
         # the module's one walk counted them (assignments are statements: all of
-        # them are indexed, once)
+        # them are indexed, once) and found the `setattr` calls
         found = FrameFacts(Counter(ctx.index.assigned))
+        if ctx.index.setattrs:
+            found.assigned["*"] += 2 * len(ctx.index.setattrs)
     else:
         counts: Counter[str] = Counter()
         tree = ctx.source.tree

@@ -9,6 +9,7 @@ import ast
 import weakref
 from collections import Counter
 from dataclasses import dataclass, field
+from typing import Any
 
 from robotfix.astwalk import FIELDS, children, fields, walk
 
@@ -35,6 +36,8 @@ class FileIndex:
     calls: list[tuple[str | None, ast.Call]] = field(
         default_factory=list
     )  # (class, call)
+    # the calls of a function named `setattr` (any attribute they name may change)
+    setattrs: list[ast.Call] = field(default_factory=list)
     # (class name, attribute, annotation) for `self.x: Annotated[...]` in methods
     attributes: list[tuple[str, str, ast.expr]] = field(default_factory=list)
     class_scopes: set[int] = field(default_factory=set)
@@ -62,7 +65,10 @@ class FileIndex:
     import_statements: list[ast.Import | ast.ImportFrom] = field(default_factory=list)
 
 
-Todo = list[tuple[ast.AST, int, str | None, str | None]]
+# what a walk is in: the owning scope node's id, the enclosing top-level class and
+# the method's `self` name; on the walk's stack it marks where a nested scope ends
+Where = tuple[int, str | None, str | None]
+Todo = list[ast.AST | Where]
 
 
 # each tree's index, built once and shared by everything that reads it in a run
@@ -88,7 +94,7 @@ def index_module(tree: ast.Module) -> FileIndex:
     index = FileIndex()
     index.scopes[id(tree)] = ScopeNames()
     # (node, owning scope node id, enclosing top-level class, method's self name)
-    _drain(index, [(node, id(tree), None, None) for node in tree.body], id(tree))
+    _drain(index, list(tree.body), (id(tree), None, None), id(tree))
     index.aliases = _aliases(tree)
     return index
 
@@ -98,9 +104,11 @@ ALIAS_FORMS = (ast.Subscript, ast.BinOp, ast.Name, ast.Attribute, ast.Constant)
 
 def _aliases(tree: ast.Module) -> dict[str, ast.expr]:
     """Top-level `Name = <type form or string>`, kept only when the name is bound by
-    no other top-level statement (a rebound name is no alias)."""
+    no other top-level statement (a rebound name is no alias). The other
+    statements' names are looked for only when there is an alias to lose."""
     found: dict[str, ast.expr] = {}
     seen: set[str] = set()
+    others: list[ast.stmt] = []  # statements that bind otherwise
     for statement in tree.body:
         target: ast.expr | None = None
         value: ast.expr | None = None
@@ -112,9 +120,7 @@ def _aliases(tree: ast.Module) -> dict[str, ast.expr]:
             target = getattr(statement, "name", None)
             value = getattr(statement, "value", None)
         else:
-            for name in _bound(statement):
-                seen.add(name)
-                found.pop(name, None)
+            others.append(statement)
             continue
         if not isinstance(target, ast.Name):
             continue
@@ -124,6 +130,9 @@ def _aliases(tree: ast.Module) -> dict[str, ast.expr]:
         elif isinstance(value, ALIAS_FORMS) and _type_like(value):
             found[name] = value
         seen.add(name)
+    for statement in others if found else ():
+        for name in _bound(statement):
+            found.pop(name, None)
     return found
 
 
@@ -135,8 +144,8 @@ def _bound(statement: ast.stmt) -> set[str]:
         return {(a.asname or a.name).split(".")[0] for a in statement.names}
     return {
         child.id
-        for child in ast.walk(statement)
-        if isinstance(child, ast.Name) and not isinstance(child.ctx, ast.Load)
+        for child in walk(statement)
+        if child.__class__ is ast.Name and child.ctx.__class__ is not ast.Load
     }
 
 
@@ -158,74 +167,84 @@ def index_scope(index: FileIndex, node: ast.AST) -> ScopeNames:
     scratch = FileIndex()
     outside = -id(node)  # a throwaway owner for the node itself
     scratch.scopes[outside] = ScopeNames()
-    _drain(scratch, [(node, outside, None, None)], outside)
+    _drain(scratch, [node], (outside, None, None), outside)
     del scratch.scopes[outside]
     found = scratch.scopes.get(id(node), ScopeNames())
     index.extra[id(node)] = (node, found)
     return found
 
 
-def _drain(index: FileIndex, todo: Todo, root: int) -> None:
+def _drain(index: FileIndex, todo: Todo, where: Where, root: int) -> None:
+    """Walk `todo` (nodes of the scope `where`, last first). A nested scope's nodes
+    go on the same stack above a marker, the `Where` to go back to, so that the
+    nodes are met in one stack walk's order (that of the calls, returns and
+    imports recorded); `Name`s and `Constant`s are read as they are met under
+    their parent, never put on the stack."""
     scopes, pop, append = index.scopes, todo.pop, todo.append
-    stores = index.stores
+    stores, calls = index.stores, index.calls
+    attribute_stores, attribute_class = index.attribute_stores, ast.Attribute
     known = FIELDS  # node class -> fields that may hold nodes
-    node_class = ast.AST
+    node_class, name_class, constant_class = ast.AST, ast.Name, ast.Constant
+    load = ast.Load
+    owner, cls, self_name = where
+    local_names = scopes[owner].local_names
+    node: Any  # a node, or the marker at the end of a nested scope
+    v: Any
     while todo:
-        node, owner, cls, self_name = pop()
-        kind = type(node)
-        if kind is ast.Name:
-            if node.ctx.__class__ is not ast.Load:  # type: ignore[attr-defined]
-                scopes[owner].local_names.add(node.id)  # type: ignore[attr-defined]
-                stores[node.id] += 1  # type: ignore[attr-defined]
-            continue
-        if kind in FUNCTIONS or kind is ast.Lambda:
-            _enter_function(index, node, owner, cls, self_name, todo)  # type: ignore[arg-type]
-            continue
-        if kind is ast.ClassDef:
-            assert isinstance(node, ast.ClassDef)
-            scopes[owner].local_names.add(node.name)
-            scopes[id(node)] = ScopeNames()
-            index.class_scopes.add(id(node))
-            top = node.name if owner == root else cls
-            todo.extend(
-                (d, owner, cls, self_name) for d in [*node.decorator_list, *node.bases]
-            )
-            todo.extend((d, owner, cls, self_name) for d in node.keywords)
-            todo.extend((s, id(node), top, None) for s in node.body)
-            continue
-        if kind in COMPREHENSIONS:  # a scope of its own; its first iterable is not
-            inner = id(node)
-            scopes[inner] = ScopeNames()
-            first = node.generators[0]  # type: ignore[attr-defined]
-            append((first.iter, owner, cls, self_name))
-            rest = [first.target, *first.ifs, *node.generators[1:]]  # type: ignore[attr-defined]
-            rest += [c for c in children(node) if not isinstance(c, ast.comprehension)]
-            todo.extend((child, inner, cls, self_name) for child in rest)
-            continue
-        if kind is ast.Call:
-            index.calls.append((cls, node))  # type: ignore[arg-type]
-        elif kind is ast.Attribute:
-            if node.ctx.__class__ is not ast.Load:  # type: ignore[attr-defined]
-                index.attribute_stores.add(node.attr)  # type: ignore[attr-defined]
-        elif kind is ast.Constant:
-            continue  # no node under it
-        elif kind is ast.Return:
-            index.returns.setdefault(owner, []).append(node)  # type: ignore[arg-type]
-        elif kind is ast.Yield or kind is ast.YieldFrom:
-            index.generators.add(owner)
-        elif kind in _RECORDED:
-            _record(index, scopes[owner], node, kind, cls, self_name)
+        node = pop()
+        kind = node.__class__
+        special = _SPECIAL.get(kind)
+        if special is not None:
+            if special is _MARK:  # the end of a nested scope: back to its parent
+                owner, cls, self_name = node
+                local_names = scopes[owner].local_names
+                continue
+            if special is _NAME:  # one a scope's own statement holds directly
+                if node.ctx.__class__ is not load:
+                    local_names.add(node.id)
+                    stores[node.id] += 1
+                continue
+            if special is _CONSTANT:
+                continue
+            if special is _SCOPE:
+                where = _enter(index, node, owner, cls, self_name, root, todo)
+                owner, cls, self_name = where
+                local_names = scopes[owner].local_names
+                continue
+            if special is _CALL:
+                calls.append((cls, node))
+                func = node.func
+                if func.__class__ is name_class and func.id == "setattr":
+                    index.setattrs.append(node)
+            elif special is _ATTRIBUTE:  # one a scope's own statement holds
+                if node.ctx.__class__ is not load:
+                    attribute_stores.add(node.attr)
+            elif special is _RETURN:
+                index.returns.setdefault(owner, []).append(node)
+            elif special is _YIELD:
+                index.generators.add(owner)
+            else:
+                _record(index, scopes[owner], node, kind, cls, self_name)
+                if special is _IMPORT:  # its aliases hold nothing more
+                    continue
         names = known.get(kind)
         if names is None:
             names = fields(kind)
         for name in names:  # not contexts, operators and strings
             value = getattr(node, name, None)
-            if value.__class__ is list:
-                for v in value:
-                    if isinstance(v, node_class):
-                        append((v, owner, cls, self_name))
-            elif isinstance(value, node_class):
-                append((value, owner, cls, self_name))
+            for v in value if value.__class__ is list else (value,):
+                child = v.__class__
+                while child is attribute_class:  # `a.b.c`: read here, not stacked
+                    if v.ctx.__class__ is not load:
+                        attribute_stores.add(v.attr)
+                    v = v.value
+                    child = v.__class__
+                if child is name_class:
+                    if v.ctx.__class__ is not load:
+                        local_names.add(v.id)
+                        stores[v.id] += 1
+                elif child is not constant_class and isinstance(v, node_class):
+                    append(v)
 
 
 # the statements and nodes `_record` reads (besides walking under them)
@@ -233,6 +252,25 @@ _RECORDED = frozenset(
     {ast.Assign, ast.AugAssign, ast.AnnAssign, ast.Import, ast.ImportFrom}
     | {ast.Global, ast.Nonlocal, ast.ExceptHandler}
 )
+
+
+# how `_drain` treats a node class it does not just walk under
+_MARK, _NAME, _CONSTANT, _SCOPE, _CALL, _ATTRIBUTE, _RETURN, _YIELD = range(8)
+_RECORD, _IMPORT = 8, 9
+_SPECIAL: dict[type, int] = {
+    tuple: _MARK,
+    ast.Name: _NAME,
+    ast.Constant: _CONSTANT,
+    **dict.fromkeys([*FUNCTIONS, ast.Lambda, ast.ClassDef, *COMPREHENSIONS], _SCOPE),
+    ast.Call: _CALL,
+    ast.Attribute: _ATTRIBUTE,
+    ast.Return: _RETURN,
+    ast.Yield: _YIELD,
+    ast.YieldFrom: _YIELD,
+    **dict.fromkeys(_RECORDED, _RECORD),
+    ast.Import: _IMPORT,
+    ast.ImportFrom: _IMPORT,
+}
 
 
 def _record(
@@ -244,10 +282,14 @@ def _record(
     self_name: str | None,
 ) -> None:
     if kind is ast.Assign or kind is ast.AugAssign or kind is ast.AnnAssign:
-        targets = getattr(node, "targets", None) or [node.target]  # type: ignore[attr-defined]
-        for part in walk(targets):
-            if type(part) is ast.Attribute:
+        todo = list(getattr(node, "targets", None) or [node.target])  # type: ignore[attr-defined]
+        while todo:  # every node of the targets (`walk`), most are one `Name`
+            part: Any = todo.pop()
+            if part.__class__ is ast.Name:
+                continue
+            if part.__class__ is ast.Attribute:
                 index.assigned[part.attr] += 1
+            todo += children(part)
     if kind is ast.Import or kind is ast.ImportFrom:
         index.import_statements.append(node)  # type: ignore[arg-type]
         _record_import(index, names, node)  # type: ignore[arg-type]
@@ -259,21 +301,36 @@ def _record(
         _record_annotation(index, names, node, cls, self_name)  # type: ignore[arg-type]
 
 
-def _enter_function(
+def _enter(
     index: FileIndex,
-    node: ast.FunctionDef | ast.AsyncFunctionDef | ast.Lambda,
+    node: ast.AST,
     owner: int,
     cls: str | None,
     self_name: str | None,
-    todo: list[tuple[ast.AST, int, str | None, str | None]],
-) -> None:
-    outer = index.scopes[owner]
+    root: int,
+    todo: Todo,
+) -> Where:
+    """Open the scope of a function, lambda, class or comprehension: push what the
+    enclosing scope evaluates (defaults, decorators, bases, a comprehension's first
+    iterable), the marker back to it, then the scope's own nodes; its `Where`."""
+    outer = (owner, cls, self_name)
     inner = index.scopes[id(node)] = ScopeNames()
+    if isinstance(node, ast.ClassDef):
+        index.scopes[owner].local_names.add(node.name)
+        index.class_scopes.add(id(node))
+        todo += [*node.decorator_list, *node.bases, *node.keywords, outer, *node.body]
+        return id(node), node.name if owner == root else cls, None
+    if isinstance(node, COMPREHENSIONS):  # its first iterable is the enclosing one's
+        first = node.generators[0]
+        todo += [first.iter, outer, first.target, *first.ifs, *node.generators[1:]]
+        todo += [c for c in children(node) if not isinstance(c, ast.comprehension)]
+        return id(node), cls, self_name
+    assert isinstance(node, (*FUNCTIONS, ast.Lambda))
     args = node.args
     every = [*args.posonlyargs, *args.args, *args.kwonlyargs]
     every += [a for a in (args.vararg, args.kwarg) if a is not None]
-    defaults = [*args.defaults, *[d for d in args.kw_defaults if d is not None]]
-    todo.extend((d, owner, cls, self_name) for d in defaults)
+    todo += args.defaults
+    todo += [d for d in args.kw_defaults if d is not None]
     for arg in every:
         inner.local_names.add(arg.arg)
         if arg.annotation is not None:
@@ -283,13 +340,12 @@ def _enter_function(
     if returns is not None:
         _count_stores(index, returns)
     if isinstance(node, ast.Lambda):
-        todo.append((node.body, id(node), cls, None))
-        return
-    outer.local_names.add(node.name)
-    todo.extend((d, owner, cls, self_name) for d in node.decorator_list)
+        todo += [outer, node.body]
+        return id(node), cls, None
+    index.scopes[owner].local_names.add(node.name)
     is_method = owner in index.class_scopes
-    method_self = args.args[0].arg if is_method and args.args else None
-    todo.extend((s, id(node), cls, method_self) for s in node.body)
+    todo += [*node.decorator_list, outer, *node.body]
+    return id(node), cls, args.args[0].arg if is_method and args.args else None
 
 
 def _count_stores(index: FileIndex, annotation: ast.expr) -> None:

@@ -33,7 +33,7 @@ from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Alias, Names, Refinement, extract
 from robotfix.annotations.numbers import named_number
 from robotfix.annotations.parser import parse_predicate
-from robotfix.astwalk import children, walk
+from robotfix.astwalk import select, walk
 from robotfix.ros.api_model import (
     NODE_CONSTRUCTORS,
     PARAMETER_TYPES,
@@ -47,6 +47,9 @@ if TYPE_CHECKING:
     from robotfix.stubs.load import StubSet
 
 _UNIT_KINDS = frozenset({ast.Call, ast.Assign, ast.AnnAssign})  # what `unit` reads
+_DEFINITIONS = frozenset(
+    {ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda}
+)
 
 
 def _python_constant(name: str, value: object) -> A.Expr | None:
@@ -169,28 +172,16 @@ class Walker:
         self.function = function
         self.body = body
         self._bound: dict[str, _Local] | None = None
-        nodes = walk(body) if function is not None else self._module_nodes(body)
+        # a function's every node; the module's, but for its functions and classes
+        skip = frozenset() if function is not None else _DEFINITIONS
         for node in sorted(
-            [n for n in nodes if n.__class__ in _UNIT_KINDS],
+            select(body, _UNIT_KINDS, skip),
             key=lambda n: (n.lineno, n.col_offset),  # type: ignore[attr-defined]
         ):
             if isinstance(node, ast.Call):
                 self.call(node)
             else:
                 self.assignment(node)  # type: ignore[arg-type]
-
-    def _module_nodes(self, body: list[ast.stmt]) -> list[ast.AST]:
-        found: list[ast.AST] = []
-        todo: list[ast.AST] = list(body)
-        while todo:
-            node = todo.pop()
-            if isinstance(
-                node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)
-            ):
-                continue
-            found.append(node)
-            todo.extend(children(node))  # not contexts and operators: never asked
-        return found
 
     def _locals(self, body: list[ast.stmt]) -> dict[str, _Local]:
         """Names bound exactly once in the body, by a direct statement, whose

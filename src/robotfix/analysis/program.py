@@ -173,15 +173,15 @@ def _add_function(
 
 
 def _collect_callbacks(ctx: FileContext, program: Program) -> None:
-    for class_name, call in ctx.index.calls:
-        name = (
-            call.func.attr
-            if isinstance(call.func, ast.Attribute)
-            else call.func.id
-            if isinstance(call.func, ast.Name)
-            else ""
-        )
-        registration = REGISTRATIONS.get(name)
+    for class_name, call in ctx.index.calls:  # every call of the file: one test each
+        func = call.func
+        kind = func.__class__
+        if kind is ast.Attribute:
+            registration = REGISTRATIONS.get(func.attr)  # type: ignore[attr-defined]
+        elif kind is ast.Name:
+            registration = REGISTRATIONS.get(func.id)  # type: ignore[attr-defined]
+        else:
+            continue
         if registration is None:
             continue
         callback = call_argument(call, *registration.callback_arg)

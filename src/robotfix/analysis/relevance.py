@@ -61,6 +61,7 @@ import re
 import unicodedata
 import weakref
 from collections.abc import Iterable, Sequence
+from typing import Any
 
 from robotfix import budget
 from robotfix.analysis.constants import SCALARS
@@ -71,7 +72,7 @@ from robotfix.analysis.imported import (
     absolute,
 )
 from robotfix.analysis.values import Value
-from robotfix.astwalk import TRIES, children, walk
+from robotfix.astwalk import FIELDS, TRIES, children, fields
 from robotfix.ros import api_model, frames_model
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.stubs.load import StubSet, defined_names
@@ -154,25 +155,57 @@ def skippable(
 def _names_one(tree: ast.Module, vocabulary: frozenset[str]) -> bool:
     """Is a name or attribute of the tree a stub word? A name read only as the
     receiver of an attribute (`time` in `time.sleep`) counts through the
-    attribute."""
-    receivers: set[int] = set()
-    for node in walk(tree):  # parents first: an attribute before its receiver
-        kind = type(node)
-        if kind is ast.Name:
-            if node.id in vocabulary and id(node) not in receivers:  # type: ignore[attr-defined]
-                return True
-        elif kind is ast.Attribute:
-            value = node.value  # type: ignore[attr-defined]
-            if type(value) is ast.Name:
-                receivers.add(id(value))
-            if node.attr in vocabulary:  # type: ignore[attr-defined]
-                return True
+    attribute. Names, constants and attribute chains are read under their
+    parent, never stacked."""
+    todo: list[ast.AST] = [tree]
+    pop, append = todo.pop, todo.append
+    name_class, attribute_class, constant_class = ast.Name, ast.Attribute, ast.Constant
+    node_class, known = ast.AST, FIELDS
+    child: Any
+    while todo:
+        node = pop()
+        kind = node.__class__
+        for name in known.get(kind) or fields(kind):
+            value = getattr(node, name, None)
+            for child in value if value.__class__ is list else (value,):
+                part = child.__class__
+                if part is attribute_class:
+                    while part is attribute_class:
+                        if child.attr in vocabulary:
+                            return True
+                        child = child.value
+                        part = child.__class__
+                    if part is name_class:
+                        continue  # a receiver
+                if part is name_class:
+                    if child.id in vocabulary:
+                        return True
+                elif part is not constant_class and isinstance(child, node_class):
+                    append(child)
     return False
 
 
 @functools.lru_cache(maxsize=8)
 def _pattern(vocabulary: frozenset[str]) -> re.Pattern[str]:
-    return re.compile(r"\b(?:" + "|".join(map(re.escape, sorted(vocabulary))) + r")\b")
+    """A stub word, whole: its alternatives a trie (`Time(?:Msg|r)?`), which `re`
+    searches at about twice the speed of the 84 words side by side."""
+    return re.compile(r"\b(?:" + _trie(sorted(vocabulary)) + r")\b")
+
+
+def _trie(words: list[str]) -> str:
+    """A pattern of exactly `words` (sorted), their common prefixes shared."""
+    if len(words) == 1:
+        return re.escape(words[0])
+    rests: dict[str, list[str]] = {}
+    for word in words:
+        rests.setdefault(word[:1], []).append(word[1:])
+    ends = "" in rests  # a word ends here, a longer one goes on
+    branches = [re.escape(c) + _trie(after) for c, after in rests.items() if c]
+    if not branches:
+        return ""
+    if len(branches) == 1 and not ends:
+        return branches[0]
+    return "(?:" + "|".join(branches) + (")?" if ends else ")")
 
 
 def _statements(body: list[ast.stmt]) -> Iterable[ast.stmt]:
@@ -397,6 +430,13 @@ class _Scope:
             return bound
         if kind is ast.Attribute:  # its one child
             return self.expr(node.value, bound)  # type: ignore[attr-defined]
+        if kind is ast.Call:  # its children in order, a keyword's value for it
+            bound = self.expr(node.func, bound)  # type: ignore[attr-defined]
+            for argument in node.args:  # type: ignore[attr-defined]
+                bound = self.expr(argument, bound)
+            for keyword in node.keywords:  # type: ignore[attr-defined]
+                bound = self.expr(keyword.value, bound)
+            return bound
         if isinstance(node, ast.NamedExpr):
             bound = self.expr(node.value, bound)
             return bound | {node.target.id}

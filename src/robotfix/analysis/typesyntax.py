@@ -47,46 +47,47 @@ def local_bindings(node: ast.AST, walrus: bool = True) -> dict[str, list[Binding
     while todo:
         child = todo.pop()
         kind = type(child)
-        if kind in (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef):
-            found.setdefault(child.name, []).append(None)  # type: ignore[attr-defined]
-            continue
-        if kind is ast.Lambda or kind in _COMPREHENSIONS:
-            continue
-        if kind is ast.Assign:
-            for target in child.targets:  # type: ignore[attr-defined]
-                _record(found, target, child.value)  # type: ignore[attr-defined]
-        elif kind is ast.AnnAssign:
-            target = child.target  # type: ignore[attr-defined]
-            if isinstance(target, ast.Name):
-                declared.setdefault(target.id, child.annotation)  # type: ignore[attr-defined]
-                if child.value is not None:  # type: ignore[attr-defined]
-                    found.setdefault(target.id, []).append(child.value)  # type: ignore[attr-defined]
-        elif kind in (ast.For, ast.AsyncFor):
-            _record(found, child.target, BoundElement(child.iter))  # type: ignore[attr-defined]
-        elif kind is ast.NamedExpr:
-            _record(found, child.target, child.value)  # type: ignore[attr-defined]
-        elif kind in (ast.AugAssign, ast.Delete, ast.Global, ast.Nonlocal):
-            targets = getattr(child, "targets", None) or [
-                getattr(child, "target", None)
-            ]
-            names = getattr(child, "names", None) or []
-            for target in targets:
-                for leaf in _names(target):
-                    found.setdefault(leaf, []).append(None)
-            for name in names:
-                found.setdefault(name, []).append(None)
-        elif kind in (ast.Import, ast.ImportFrom):
-            for alias in child.names:  # type: ignore[attr-defined]
-                local = alias.asname or alias.name.split(".")[0]
-                found.setdefault(local, []).append(None)
-        elif kind in (ast.With, ast.AsyncWith):
-            for item in child.items:  # type: ignore[attr-defined]
-                for leaf in _names(item.optional_vars):
-                    found.setdefault(leaf, []).append(None)
-        elif kind in (ast.ExceptHandler, ast.MatchAs, ast.MatchStar) and getattr(
-            child, "name", None
-        ):
-            found.setdefault(child.name, []).append(None)  # type: ignore[attr-defined]
+        if kind in _READ:  # the others bind nothing: only walked under
+            if kind in (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef):
+                found.setdefault(child.name, []).append(None)  # type: ignore[attr-defined]
+                continue
+            if kind is ast.Lambda or kind in _COMPREHENSIONS:
+                continue
+            if kind is ast.Assign:
+                for target in child.targets:  # type: ignore[attr-defined]
+                    _record(found, target, child.value)  # type: ignore[attr-defined]
+            elif kind is ast.AnnAssign:
+                target = child.target  # type: ignore[attr-defined]
+                if isinstance(target, ast.Name):
+                    declared.setdefault(target.id, child.annotation)  # type: ignore[attr-defined]
+                    if child.value is not None:  # type: ignore[attr-defined]
+                        found.setdefault(target.id, []).append(child.value)  # type: ignore[attr-defined]
+            elif kind in (ast.For, ast.AsyncFor):
+                _record(found, child.target, BoundElement(child.iter))  # type: ignore[attr-defined]
+            elif kind is ast.NamedExpr:
+                _record(found, child.target, child.value)  # type: ignore[attr-defined]
+            elif kind in (ast.AugAssign, ast.Delete, ast.Global, ast.Nonlocal):
+                targets = getattr(child, "targets", None) or [
+                    getattr(child, "target", None)
+                ]
+                names = getattr(child, "names", None) or []
+                for target in targets:
+                    for leaf in _names(target):
+                        found.setdefault(leaf, []).append(None)
+                for name in names:
+                    found.setdefault(name, []).append(None)
+            elif kind in (ast.Import, ast.ImportFrom):
+                for alias in child.names:  # type: ignore[attr-defined]
+                    local = alias.asname or alias.name.split(".")[0]
+                    found.setdefault(local, []).append(None)
+            elif kind in (ast.With, ast.AsyncWith):
+                for item in child.items:  # type: ignore[attr-defined]
+                    for leaf in _names(item.optional_vars):
+                        found.setdefault(leaf, []).append(None)
+            elif kind in (ast.ExceptHandler, ast.MatchAs, ast.MatchStar) and getattr(
+                child, "name", None
+            ):
+                found.setdefault(child.name, []).append(None)  # type: ignore[attr-defined]
         if walrus:
             todo.extend(children(child))
         else:  # the fields that hold statements, handlers, cases and patterns
@@ -103,6 +104,13 @@ def local_bindings(node: ast.AST, walrus: bool = True) -> dict[str, list[Binding
 
 
 _COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
+# what `local_bindings` reads of a node, or does not enter
+_READ = frozenset(
+    {ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda, *_COMPREHENSIONS}
+    | {ast.Assign, ast.AnnAssign, ast.For, ast.AsyncFor, ast.NamedExpr, ast.AugAssign}
+    | {ast.Delete, ast.Global, ast.Nonlocal, ast.Import, ast.ImportFrom, ast.With}
+    | {ast.AsyncWith, ast.ExceptHandler, ast.MatchAs, ast.MatchStar}
+)
 # the fields of a statement, handler, case or pattern that hold no expression
 # (`children` in field order, but for expressions, which bind nothing without `:=`)
 _NOT_EXPRESSIONS = frozenset(
