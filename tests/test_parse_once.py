@@ -241,3 +241,37 @@ def test_a_module_parsed_for_its_import_edges_only_is_parsed_once(
     assert counted[str(root / "pkg" / "d.py")] == 1
     monkeypatch.setattr(summary_module.Project, "take", lambda *_: None)
     assert _shown(root) == shown  # as when the check parses it itself
+
+
+def test_a_stub_is_parsed_once_by_the_summaries_and_the_checks(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The checks ask `stub_set(config.stub_paths)`, the summaries `stub_set()`:
+    one set for `()` (two before: every stub both read was parsed twice)."""
+    from robotfix.stubs import load
+
+    assert load.stub_set() is load.stub_set(())
+    root = tmp_path / "ws"
+    (root / "pkg").mkdir(parents=True)
+    helper = "import rclpy.node\n\n\nclass Base(rclpy.node.Node):\n    pass\n"
+    node = (
+        "import rclpy\n\nfrom pkg.helper import Base\n\n\n"
+        "class Talker(Base):\n    def tick(self):\n"
+        "        return self.get_clock().now()\n\n\n"
+        "def main():\n    rclpy.init()\n    rclpy.spin(Talker('talker'))\n"
+    )
+    (root / "pkg" / "__init__.py").write_text("")
+    (root / "pkg" / "helper.py").write_text(helper)
+    (root / "pkg" / "a_node.py").write_text(node)
+    read: Counter[str] = Counter()
+    original = load.read_module
+
+    def counting(name: str, *rest: object) -> load.Module:
+        read[name] += 1
+        return original(name, *rest)  # type: ignore[arg-type]
+
+    load.forget()  # the stubs read by earlier tests
+    monkeypatch.setattr(load, "read_module", counting)
+    _shown(root)
+    assert read["rclpy.node"] == 1, read
+    assert max(read.values()) == 1, read
