@@ -275,3 +275,22 @@ def test_a_stub_is_parsed_once_by_the_summaries_and_the_checks(
     _shown(root)
     assert read["rclpy.node"] == 1, read
     assert max(read.values()) == 1, read
+
+
+def test_a_file_that_does_not_parse_is_not_parsed_again_for_parameters(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A Python 2 script naming `rospy` (a parameter word): its check finds no tree
+    and no declaration; the parameter check does not parse it again to find none."""
+    root = tmp_path / "ros1_tracker"
+    shutil.copytree(PARAMS / "ros1_tracker", root)
+    old = root / "scripts" / "old_tool"
+    old.parent.mkdir(exist_ok=True)
+    old.write_text(
+        "#!/usr/bin/env python\nimport rospy\n\nrate = rospy.get_param('~rate')\n"
+        'print "rate", rate\n'
+    )
+    counted = _parses(monkeypatch)
+    shown = _shown(root)
+    assert any(":RF002:" in line and "old_tool" in line for line in shown)
+    assert counted[str(old.resolve())] == 1, counted
