@@ -256,7 +256,7 @@ def _syntax_problem(path: str, text: str, err: SyntaxError | ValueError) -> Diag
         )
     line = err.lineno or 1
     col = max((err.offset or 1) - 1, 0)
-    lines = LINE_BREAK.split(text)
+    lines = split_lines(text)
     failing = lines[line - 1] if 0 < line <= len(lines) else ""
     if sys.version_info < (3, 12) and _PY312_FORMS.match(failing):
         return messages.syntax_error(
@@ -273,7 +273,7 @@ def _is_python2(text: str, err: SyntaxError, retabbed: bool = False) -> bool:
     for a Python 2 reason, once its indentation tabs are expanded is Python 2."""
     if any(hint in err.msg for hint in _PY2_HINTS):
         return True
-    lines = LINE_BREAK.split(text)
+    lines = split_lines(text)
     line = err.lineno or 1
     if 0 < line <= len(lines) and _PY2_TOKENS.search(lines[line - 1]):
         return True
