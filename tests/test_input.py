@@ -2,7 +2,10 @@
 
 from __future__ import annotations
 
-from robotfix.source import SourceFile
+from hypothesis import given
+from hypothesis import strategies as st
+
+from robotfix.source import LINE_BREAK, SourceFile, split_lines
 
 
 def codes(data: bytes) -> list[str]:
@@ -78,3 +81,12 @@ def test_python_312_syntax_on_an_older_python_is_a_warning() -> None:
     expected = [] if sys.version_info >= (3, 12) else ["RF005"]
     assert [codes(data) for data in newer] == [expected] * 3
     assert codes(b"type = 3\nx = type +\n") == ["RF001"]  # `type`, a name
+
+
+@given(st.text(alphabet="ab \n\r\f\v\x1c\x85\u2028", max_size=40))
+def test_lines_are_split_as_ast_numbers_them(text: str) -> None:
+    """`split_lines` splits a text without `\\r` by `str.split`: the same lines
+    as the pattern of `\\r\\n`, `\\r` and `\\n` (a form feed, U+2028 and the other
+    breaks of `str.splitlines` are no line break for `ast`)."""
+    assert split_lines(text) == LINE_BREAK.split(text)
+    assert SourceFile.from_text("f.py", text).lines == LINE_BREAK.split(text)

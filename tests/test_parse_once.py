@@ -241,3 +241,56 @@ def test_a_module_parsed_for_its_import_edges_only_is_parsed_once(
     assert counted[str(root / "pkg" / "d.py")] == 1
     monkeypatch.setattr(summary_module.Project, "take", lambda *_: None)
     assert _shown(root) == shown  # as when the check parses it itself
+
+
+def test_a_stub_is_parsed_once_by_the_summaries_and_the_checks(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The checks ask `stub_set(config.stub_paths)`, the summaries `stub_set()`:
+    one set for `()` (two before: every stub both read was parsed twice)."""
+    from robotfix.stubs import load
+
+    assert load.stub_set() is load.stub_set(())
+    root = tmp_path / "ws"
+    (root / "pkg").mkdir(parents=True)
+    helper = "import rclpy.node\n\n\nclass Base(rclpy.node.Node):\n    pass\n"
+    node = (
+        "import rclpy\n\nfrom pkg.helper import Base\n\n\n"
+        "class Talker(Base):\n    def tick(self):\n"
+        "        return self.get_clock().now()\n\n\n"
+        "def main():\n    rclpy.init()\n    rclpy.spin(Talker('talker'))\n"
+    )
+    (root / "pkg" / "__init__.py").write_text("")
+    (root / "pkg" / "helper.py").write_text(helper)
+    (root / "pkg" / "a_node.py").write_text(node)
+    read: Counter[str] = Counter()
+    original = load.read_module
+
+    def counting(name: str, *rest: object) -> load.Module:
+        read[name] += 1
+        return original(name, *rest)  # type: ignore[arg-type]
+
+    load.forget()  # the stubs read by earlier tests
+    monkeypatch.setattr(load, "read_module", counting)
+    _shown(root)
+    assert read["rclpy.node"] == 1, read
+    assert max(read.values()) == 1, read
+
+
+def test_a_file_that_does_not_parse_is_not_parsed_again_for_parameters(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A Python 2 script naming `rospy` (a parameter word): its check finds no tree
+    and no declaration; the parameter check does not parse it again to find none."""
+    root = tmp_path / "ros1_tracker"
+    shutil.copytree(PARAMS / "ros1_tracker", root)
+    old = root / "scripts" / "old_tool"
+    old.parent.mkdir(exist_ok=True)
+    old.write_text(
+        "#!/usr/bin/env python\nimport rospy\n\nrate = rospy.get_param('~rate')\n"
+        'print "rate", rate\n'
+    )
+    counted = _parses(monkeypatch)
+    shown = _shown(root)
+    assert any(":RF002:" in line and "old_tool" in line for line in shown)
+    assert counted[str(old.resolve())] == 1, counted

@@ -13,7 +13,7 @@ import pytest
 from robotfix.api import check_paths, check_source
 from robotfix.config import Config, load
 from robotfix.run import check_paths as run_paths
-from robotfix.stubs.load import DATA, StubSet, stub_set
+from robotfix.stubs.load import DATA, StubSet, forget, stub_set
 
 CALLER = """\
 from typing import Annotated
@@ -274,7 +274,7 @@ def test_a_changed_user_stub_invalidates_cached_results(project: Path) -> None:
         "from typing import Annotated\n"
         "def move(distance: Annotated[float, \"Unit('rad')\"]) -> None: ...\n"
     )
-    stub_set.cache_clear()  # a new run in a new process would read the stub anew
+    forget()  # a new run in a new process would read the stub anew
     again = check_paths([project / "node.py"], config, use_cache=True)
     assert again.from_cache == 0
     assert codes_at(again.diagnostics, "node.py") == [(6, "RF201"), (7, "RF201")]

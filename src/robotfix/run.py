@@ -1167,6 +1167,8 @@ def _check_one(
             from robotfix.analysis.parameters import summarize
 
             parsed = parsed or SourceFile.from_bytes(str(path), data)
+            if parsed.tree is None:  # it declares nothing: not parsed again there
+                mentions = ()
             try:  # a fault here is paramcheck's to meet, as without this
                 parameters = (
                     summarize(parsed, resolver=resolver, stubs=stubs)

@@ -401,16 +401,22 @@ class StubSet:
         return digest.hexdigest()
 
 
-@functools.lru_cache(maxsize=8)
 def stub_set(paths: tuple[Path, ...] = ()) -> StubSet:
-    """One StubSet per process and stub paths: a module is read once."""
+    """One StubSet per process and stub paths: a module is read once. `stub_set()`
+    is `stub_set(())` (`lru_cache` alone keys the two calls apart: the summaries
+    and the checks each read and parsed every stub they asked for)."""
+    return _stub_set(tuple(paths))
+
+
+@functools.lru_cache(maxsize=8)
+def _stub_set(paths: tuple[Path, ...]) -> StubSet:
     return StubSet(paths)
 
 
 def forget() -> None:
     """A stub file changed under a process that lives on (the editor's server):
     every stub set, text and listing is read again when next asked for."""
-    stub_set.cache_clear()
+    _stub_set.cache_clear()
     _text_of.cache_clear()
     _module_names.cache_clear()
 
