@@ -953,6 +953,55 @@ def test_cpp_file_naming_a_maker_in_its_comments_only_still_names_its_node(
     assert (found.nodes, found.ros, found.endpoints) == (nodes, ros, [])
 
 
+def test_the_runs_cpp_reading_parses_no_file_that_can_make_no_endpoint(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The run keeps no graph without endpoints (`read_cpp_files`): a header
+    that only names its node class, a roscpp header that declares
+    `Publisher advertise(...)` (no call on a receiver: `_File._call` takes none
+    without) are not parsed for it; `read_cpp` alone still reads their names,
+    and a maker called on a receiver is parsed as before."""
+    from robotfix.graphcheck import read_cpp_files
+    from robotfix.ros.graph import cpp
+
+    parsed: list[bytes] = []
+    real = cpp._parser()
+
+    class Counting:
+        def parse(self, data: bytes) -> object:
+            parsed.append(data)
+            return real.parse(data)
+
+    monkeypatch.setattr(cpp, "_parser", Counting)
+    header = (
+        b"class Talker : public rclcpp::Node {\n  /// @param options the options\n"
+        b'  Talker() : Node("talker") {}\n};\n'
+    )
+    declares = (
+        b"namespace ros {\nclass NodeHandle {\n public:\n"
+        b"  Publisher advertise(AdvertiseOptions & ops);\n"
+        b"  Subscriber subscribe (SubscribeOptions & ops);\n};\n}\n"
+    )
+    calls = [
+        b'void f() {\n  ros::NodeHandle nh;\n  nh.advertise<T>("a", 1);\n}\n',
+        b'void f() {\n  auto nh = g();\n  nh->subscribe("/b", 1, cb);\n}\n',
+        b'void f() {\n  ros::NodeHandle nh;\n  nh .\n    param("c", c, 1.0);\n}\n',
+    ]
+    paths = []
+    for i, data in enumerate([header, declares, *calls]):
+        paths.append(tmp_path / f"f{i}.cpp")
+        paths[-1].write_bytes(data)
+    found = read_cpp_files(paths)
+    assert sorted(found) == [str(p) for p in paths[2:]]
+    assert [e.name for p in paths[2:] for e in found[str(p)].endpoints] == [
+        "a",
+        "/b",
+        "c",
+    ]
+    assert parsed == calls
+    assert read_cpp(header).nodes == {"Talker": ["talker"]}
+
+
 def test_python_graph_looks_up_only_calls_whose_last_name_may_make_something(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:

@@ -99,6 +99,8 @@ _MAKERS = re.compile(
 )
 # the last names of `_CLASSES`: one of them is made by a parse wherever it stands
 _CLASS_WORDS = frozenset(c.split("::")[-1].encode() for c in _CLASSES)
+# roscpp's methods: made of only on a receiver (`nh.advertise`), as `_File._call` reads
+_RECEIVED = frozenset(m.encode() for m, spec in _METHODS.items() if spec[1] == 1)
 _WORD = re.compile(rb"\w")
 _BLANKS = b" \t\r\n\f\v"  # what `bytes.strip` and `re`'s `\s` take
 # a call whose callee's text holds none of these makes nothing (`_File._call`)
@@ -155,8 +157,11 @@ def _parser() -> Any:
     return _PARSER
 
 
-def read_cpp(data: bytes) -> FileGraph:
-    """The endpoints and node names of a C++ file's bytes."""
+def read_cpp(data: bytes, names: bool = True) -> FileGraph:
+    """The endpoints and node names of a C++ file's bytes. Without `names`, a
+    file that can make no endpoint is not parsed for the node names and the ROS
+    version it may hold: a graph without endpoints adds nothing to the run's
+    (`graphcheck.read_cpp_files` keeps none)."""
     found = FileGraph()
     if len(data) > MAX_CPP_BYTES or not any(w in data for w in WORDS):
         return found
@@ -166,7 +171,7 @@ def read_cpp(data: bytes) -> FileGraph:
     first = next(makers, None)
     if first is None and not any(e.value == AUTO for e in found.endpoints):
         return found  # (given any override: parsed for the node it is given to)
-    if not found.endpoints and not _may_make(data, first, makers):
+    if not found.endpoints and not _may_make(data, first, makers, names):
         return found  # a maker's name in comments only (`@param`): nothing found
     try:
         tree = _parser().parse(data)
@@ -178,29 +183,44 @@ def read_cpp(data: bytes) -> FileGraph:
 
 
 def _may_make(
-    data: bytes, first: re.Match[bytes] | None, rest: Iterator[re.Match[bytes]]
+    data: bytes,
+    first: re.Match[bytes] | None,
+    rest: Iterator[re.Match[bytes]],
+    names: bool,
 ) -> bool:
     """Whether a parse of `data` may find an endpoint, `_opening`'s apart: a
     name of `_MAKERS` called (then `<` or `(`, or a comment, a line continued:
-    `first` and the `rest` of the matches), a class of `_CLASSES`, or a base
-    class `x::Node` not rclcpp's or a node class or name (`_other_node`), or a
-    ROS 1 file or a node named otherwise (`_NAMING`). Nav2's and ros_comm's
-    headers say `@param` in their comments: 36% of corpus25's parsed C++ bytes."""
+    `first` and the `rest` of the matches; roscpp's methods on a receiver
+    only), a class of `_CLASSES`, or a base class `x::Node` not rclcpp's; with
+    `names`, also a node class or name (`_other_node`), or a ROS 1 file or a
+    node named otherwise (`_NAMING`). Nav2's and ros_comm's headers say
+    `@param` in their comments: 36% of corpus25's parsed C++ bytes; roscpp's
+    headers declare `Publisher advertise(...)`."""
     for found in itertools.chain((first,) if first is not None else (), rest):
-        if found.group() in _CLASS_WORDS:
+        word = found.group()
+        if word in _CLASS_WORDS:
             return True
         after = data[found.end() : found.end() + 80].lstrip()
-        if not after or after[:1] in b"<(/\\":  # (all blanks: unsure, parsed)
+        called = not after or after[:1] in b"<(/\\"  # (all blanks: unsure, parsed)
+        if called and (word not in _RECEIVED or _received(data, found.start())):
             return True
-    return _other_node(data) or _NAMING.search(data) is not None
+    return _other_node(data, names) or (names and _NAMING.search(data) is not None)
 
 
-def _other_node(data: bytes) -> bool:
+def _received(data: bytes, start: int) -> bool:
+    """Whether the name at `start` may be called on a receiver (`nh.advertise`,
+    `nh->param`), as `_File._call` takes roscpp's methods; when a comment or a
+    continued line stands before it, or only blanks: unsure, True."""
+    before = data[max(start - 80, 0) : start].rstrip()
+    return not before or before.endswith((b".", b"->", b"/", b"\\"))
+
+
+def _other_node(data: bytes, names: bool) -> bool:
     """Whether `data` names `Node` or `LifecycleNode` with a qualifier that is not
     rclcpp's (`nav2_util::LifecycleNode`, `::rclcpp::Node`), as `_File._bases`
-    reads a base class (its text without blanks): an endpoint if it is one; or
-    any as a base class or built (`: public rclcpp::Node`, `: Node("talker")`):
-    a node class, its name."""
+    reads a base class (its text without blanks): an endpoint if it is one; or,
+    with `names`, any as a base class or built (`: public rclcpp::Node`,
+    `: Node("talker")`): a node class, its name."""
     at = data.find(b"Node")
     while at >= 0:
         end = at + 4
@@ -211,13 +231,19 @@ def _other_node(data: bytes) -> bool:
                 qualifier, begin = found
                 if qualifier + data[start:end] not in _OURS:
                     return True
-                if data[end : end + 80].lstrip()[:1] in (b"(", b"{"):
-                    return True
-                before = data[max(begin - 80, 0) : begin].rstrip()
-                if before.endswith(_BEFORE_BASE) and not before.endswith(b"::"):
+                if names and _based_or_built(data, begin, end):
                     return True
         at = data.find(b"Node", end)
     return False
+
+
+def _based_or_built(data: bytes, begin: int, end: int) -> bool:
+    """Whether the `Node` named from `begin` to `end` is built (`Node("x")`) or
+    stands as a base class."""
+    if data[end : end + 80].lstrip()[:1] in (b"(", b"{"):
+        return True
+    before = data[max(begin - 80, 0) : begin].rstrip()
+    return before.endswith(_BEFORE_BASE) and not before.endswith(b"::")
 
 
 # what stands before a base class (`class A : public B, virtual C`)
