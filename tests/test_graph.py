@@ -1002,6 +1002,34 @@ def test_the_runs_cpp_reading_parses_no_file_that_can_make_no_endpoint(
     assert read_cpp(header).nodes == {"Talker": ["talker"]}
 
 
+def test_python_graph_walks_no_nested_statement_where_no_wanted_call_starts(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """With the check's calls given, a loop or branch inside a statement that
+    holds an endpoint call is not walked when none of the wanted calls starts
+    in it (regression: the whole `try` around a `main` was walked node by node)."""
+    from robotfix.ros.graph import python as G
+
+    tree = ast.parse(
+        "import rclpy\nimport std_msgs.msg\ndef main():\n"
+        "    node = rclpy.create_node('n')\n    try:\n"
+        "        for i in range(3):\n            print(sum(x * x for x in range(i)))\n"
+        "        node.create_publisher(std_msgs.msg.String, 'out', 10)\n"
+        "    finally:\n        rclpy.shutdown()\n"
+    )
+    loop = tree.body[2].body[1].body[0]
+    inside = {id(n) for n in ast.walk(loop)}
+    seen: list[ast.AST] = []
+    real = G.children
+    monkeypatch.setattr(G, "children", lambda node: seen.append(node) or real(node))
+    found = G.read_python(tree, index_of(tree).calls)
+    assert [(e.name, e.types, e.owner) for e in found.endpoints] == [
+        ("out", ("std_msgs/msg/String",), "node")
+    ]
+    assert found.nodes == {"node": ["n"]}
+    assert seen and not [n for n in seen if id(n) in inside]
+
+
 def test_python_graph_looks_up_only_calls_whose_last_name_may_make_something(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:
