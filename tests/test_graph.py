@@ -794,6 +794,41 @@ def test_a_cpp_profile_held_in_a_local_bound_once(body: str, expected: object) -
     assert found.endpoints[0].qos == expected
 
 
+def test_a_cpp_local_profile_is_found_without_a_walk_of_the_body(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """The mentions of a local profile are found in the body's bytes, each at
+    its node (regression: every node of the function body was walked in
+    Python, for each local a call passes: 7% of the subset's C++ reading); a
+    body over `MAX_BODY_NODES` (counted in C) still makes it unknown."""
+    from robotfix.ros.graph import cpp
+
+    walked: list[object] = []
+
+    class Body:  # the body node, noting whether its children are listed
+        def __init__(self, node: object) -> None:
+            self.node = node
+
+        def __getattr__(self, name: str) -> object:
+            if name == "children":
+                walked.append(self.node)
+            return getattr(self.node, name)
+
+    real = cpp._body
+    monkeypatch.setattr(cpp, "_body", lambda node: Body(real(node)))
+    code = (
+        b"class Base : public rclcpp::Node {\n public:\n"
+        b'  Base() : Node("base") {\n    rclcpp::QoS qos(10);  // qos\n'
+        b"    auto qos_other = 1;\n"
+        b'    sub_ = create_subscription<T>("chatter", qos.best_effort(), cb);\n'
+        b"  }\n};\n"
+    )
+    assert read_cpp(code).endpoints[0].qos == Qos(Q.BEST_EFFORT, Q.VOLATILE, 10)
+    assert not walked
+    monkeypatch.setattr(cpp, "MAX_BODY_NODES", 20)
+    assert read_cpp(code).endpoints[0].qos is None
+
+
 def test_qos_is_compared_only_between_endpoints_whose_types_can_meet(
     tmp_path: Path,
 ) -> None:

@@ -870,7 +870,7 @@ def _made(name: str, args: list[Any], depth: int) -> Qos | None:
     return None
 
 
-MAX_BODY_NODES = 20_000  # syntax nodes of a function body looked at for a local
+MAX_BODY_NODES = 20_000  # syntax nodes of a function body a local is looked for in
 # the calls a local profile may be passed to without being changed
 _READERS = frozenset({*_METHODS, "make_unique", "make_shared"})
 
@@ -882,26 +882,18 @@ def _local_qos(use: Any, depth: int) -> Qos | None:
     a setter (`qos.best_effort();`) outside `use`, and passed to no call but those
     that make endpoints. Anything else is unknown, as is a body over
     `MAX_BODY_NODES`."""
-    name = _text(use)
     body = _body(use)
-    if body is None:
+    if body is None or body.descendant_count > MAX_BODY_NODES:
         return None
     found: list[Any] = []  # the declaration's init_declarator or declaration
-    stack, seen = [body], 0
-    while stack:
-        node = stack.pop()
-        seen += 1
-        if seen > MAX_BODY_NODES:
+    for node in _mentions(body, use):
+        parent = node.parent
+        if parent.type in ("init_declarator", "declaration") and (
+            parent.child_by_field_name("declarator") == node
+        ):
+            found.append(parent)
+        elif not _read(node, use):
             return None
-        if node.type == "identifier" and _text(node) == name and node != use:
-            parent = node.parent
-            if parent.type in ("init_declarator", "declaration") and (
-                parent.child_by_field_name("declarator") == node
-            ):
-                found.append(parent)
-            elif not _read(node, use):
-                return None
-        stack.extend(node.children)
     if len(found) != 1 or found[0].start_byte > use.start_byte:
         return None
     declared = found[0]
@@ -915,6 +907,24 @@ def _local_qos(use: Any, depth: int) -> Qos | None:
         args = [c for c in value.children if c.type not in ("(", ")", ",", "{", "}")]
         return _made(cls, args, depth)
     return _qos(value, depth + 1)
+
+
+def _mentions(body: Any, use: Any) -> Iterator[Any]:
+    """The identifiers of `body` spelled as the identifier `use`, but `use`:
+    found in its bytes, each the node at the place (not a walk of its nodes)."""
+    word, text = use.text, body.text
+    at = text.find(word)
+    while at >= 0:
+        start = body.start_byte + at
+        node = body.descendant_for_byte_range(start, start + len(word))
+        if (
+            node is not None
+            and node.type == "identifier"
+            and (node.start_byte, node.end_byte) == (start, start + len(word))
+            and node != use
+        ):
+            yield node
+        at = text.find(word, at + 1)
 
 
 def _body(node: Any) -> Any:
