@@ -829,6 +829,37 @@ def test_a_cpp_local_profile_is_found_without_a_walk_of_the_body(
     assert read_cpp(code).endpoints[0].qos is None
 
 
+def test_cpp_functions_are_read_for_callbacks_only_when_a_subscription_asks(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """A function's first parameter is a roscpp subscription's message type only
+    when the subscription names the function: a file without one reads none of
+    its functions (regression: every function of every file was read)."""
+    from robotfix.ros.graph import cpp
+
+    read: list[object] = []
+    real = cpp._File._function
+    monkeypatch.setattr(
+        cpp._File, "_function", lambda self, *a: read.append(a) or real(self, *a)
+    )
+    ros2 = (
+        b"class Talker : public rclcpp::Node {\n public:\n"
+        b'  Talker() : Node("talker") {\n'
+        b'    pub_ = create_publisher<std_msgs::msg::String>("chatter", 10);\n  }\n'
+        b"  void tick(int n) {}\n};\n"
+    )
+    assert [e.types for e in read_cpp(ros2).endpoints] == [("std_msgs/msg/String",)]
+    assert not read
+    ros1 = (
+        b"void other(int n) {}\n"
+        b"void cb(const std_msgs::String::ConstPtr & msg) {}\n"
+        b"int main() {\n  ros::NodeHandle nh;\n"
+        b'  ros::Subscriber s = nh.subscribe("chatter", 10, cb);\n}\n'
+    )
+    assert [e.types for e in read_cpp(ros1).endpoints] == [("std_msgs/msg/String",)]
+    assert len(read) == 3
+
+
 def test_qos_is_compared_only_between_endpoints_whose_types_can_meet(
     tmp_path: Path,
 ) -> None:

@@ -30,6 +30,7 @@ by one tree-sitter query, in C.
 from __future__ import annotations
 
 import itertools
+import operator
 import re
 from collections.abc import Iterator
 from typing import Any
@@ -298,7 +299,8 @@ class _File:
         self.found = found
         self.data = data
         self.aliases: dict[str, str] = {}  # `using Twist = geometry_msgs::msg::Twist`
-        self.callbacks: dict[str, str] = {}  # function name -> its first param type
+        self.functions: list[Any] = []  # the function definitions (`callbacks`)
+        self._callbacks: dict[str, str] | None = None
         self.handles: dict[str, str] = {}  # NodeHandle variable -> its namespace
         self.calls: list[tuple[Any, str]] = []  # (call node, enclosing class)
         self.ros1 = False
@@ -310,15 +312,14 @@ class _File:
         # run to run (which of two `chatterCallback`s a callback is, the order of
         # a class's node names)
         captures = {
-            name: sorted(nodes, key=lambda n: (n.start_byte, n.end_byte))
+            name: sorted(nodes, key=_PLACE)
             for name, nodes in _query().captures(root).items()
         }
         for node in captures.get("cls", []):
             name = node.child_by_field_name("name")
             if name is not None:
                 self._bases(node, _text(name).split("::")[-1])
-        for node in captures.get("fn", []):
-            self._function(node)
+        self.functions = captures.get("fn", [])
         for node in captures.get("alias", []):
             name = node.child_by_field_name("name")
             value = node.child_by_field_name("type")
@@ -363,7 +364,17 @@ class _File:
                             )
                         )
 
-    def _function(self, node: Any) -> None:
+    @property
+    def callbacks(self) -> dict[str, str]:
+        """Function name -> its first parameter's type (a roscpp callback's
+        message type), made when a subscription first asks: most files make none."""
+        if self._callbacks is None:
+            self._callbacks = {}
+            for node in self.functions:
+                self._function(node, self._callbacks)
+        return self._callbacks
+
+    def _function(self, node: Any, callbacks: dict[str, str]) -> None:
         """A function's first parameter's type, for a roscpp callback."""
         declarator = _declarator(node)
         if declarator is None:
@@ -378,7 +389,7 @@ class _File:
         if first:
             kind = first[0].child_by_field_name("type")
             if kind is not None:
-                self.callbacks[text.split("::")[-1]] = _text(kind)
+                callbacks[text.split("::")[-1]] = _text(kind)
 
     def _initializer(self, node: Any) -> None:
         """`: Node("talker")` names the class's node; `pnh_("~")` a private handle."""
@@ -618,6 +629,7 @@ class _File:
 
 
 _QUERY: Any = None
+_PLACE = operator.attrgetter("start_byte", "end_byte")  # a capture's source order
 # what the file's reading needs of its syntax tree, matched in C
 _PATTERNS = """
 (call_expression) @call
