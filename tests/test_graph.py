@@ -943,13 +943,8 @@ def test_cpp_file_naming_no_endpoint_maker_is_not_parsed(
     assert not read_cpp(data).endpoints
 
 
-def test_cpp_file_naming_a_maker_in_its_comments_only_is_not_parsed(
-    monkeypatch: pytest.MonkeyPatch,
-) -> None:
-    """`@param` in a header's comments, `subscribe` in prose: a word, but no
-    call; what the parse would find besides (a base class of another package's
-    node, `::rclcpp::Node` too, a node class, or a maker called) still makes it
-    parsed."""
+def _counting_parses(monkeypatch: pytest.MonkeyPatch) -> list[bytes]:
+    """The bytes of each C++ file tree-sitter parses from now on."""
     from robotfix.ros.graph import cpp
 
     parsed: list[bytes] = []
@@ -961,6 +956,18 @@ def test_cpp_file_naming_a_maker_in_its_comments_only_is_not_parsed(
             return real.parse(data)
 
     monkeypatch.setattr(cpp, "_parser", Counting)
+    return parsed
+
+
+def test_cpp_file_naming_a_maker_in_its_comments_only_is_not_parsed(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """`@param` in a header's comments, `subscribe` in prose: a word, but no
+    call; what the parse would find besides (a base class of another package's
+    node, `::rclcpp::Node` too, a node class, or a maker called) still makes it
+    parsed."""
+
+    parsed = _counting_parses(monkeypatch)
     comment = b"/**\n * @param node the node to subscribe with\n */\n"
     header = comment + b"class Server {\n  rclcpp::Node::SharedPtr node_;\n};\n"
     assert not read_cpp(header).endpoints and not parsed
@@ -1028,17 +1035,8 @@ def test_the_runs_cpp_reading_parses_no_file_that_can_make_no_endpoint(
     without) are not parsed for it; `read_cpp` alone still reads their names,
     and a maker called on a receiver is parsed as before."""
     from robotfix.graphcheck import read_cpp_files
-    from robotfix.ros.graph import cpp
 
-    parsed: list[bytes] = []
-    real = cpp._parser()
-
-    class Counting:
-        def parse(self, data: bytes) -> object:
-            parsed.append(data)
-            return real.parse(data)
-
-    monkeypatch.setattr(cpp, "_parser", Counting)
+    parsed = _counting_parses(monkeypatch)
     header = (
         b"class Talker : public rclcpp::Node {\n  /// @param options the options\n"
         b'  Talker() : Node("talker") {}\n};\n'
