@@ -794,6 +794,72 @@ def test_a_cpp_profile_held_in_a_local_bound_once(body: str, expected: object) -
     assert found.endpoints[0].qos == expected
 
 
+def test_a_cpp_local_profile_is_found_without_a_walk_of_the_body(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """The mentions of a local profile are found in the body's bytes, each at
+    its node (regression: every node of the function body was walked in
+    Python, for each local a call passes: 7% of the subset's C++ reading); a
+    body over `MAX_BODY_NODES` (counted in C) still makes it unknown."""
+    from robotfix.ros.graph import cpp
+
+    walked: list[object] = []
+
+    class Body:  # the body node, noting whether its children are listed
+        def __init__(self, node: object) -> None:
+            self.node = node
+
+        def __getattr__(self, name: str) -> object:
+            if name == "children":
+                walked.append(self.node)
+            return getattr(self.node, name)
+
+    real = cpp._body
+    monkeypatch.setattr(cpp, "_body", lambda node: Body(real(node)))
+    code = (
+        b"class Base : public rclcpp::Node {\n public:\n"
+        b'  Base() : Node("base") {\n    rclcpp::QoS qos(10);  // qos\n'
+        b"    auto qos_other = 1;\n"
+        b'    sub_ = create_subscription<T>("chatter", qos.best_effort(), cb);\n'
+        b"  }\n};\n"
+    )
+    assert read_cpp(code).endpoints[0].qos == Qos(Q.BEST_EFFORT, Q.VOLATILE, 10)
+    assert not walked
+    monkeypatch.setattr(cpp, "MAX_BODY_NODES", 20)
+    assert read_cpp(code).endpoints[0].qos is None
+
+
+def test_cpp_functions_are_read_for_callbacks_only_when_a_subscription_asks(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """A function's first parameter is a roscpp subscription's message type only
+    when the subscription names the function: a file without one reads none of
+    its functions (regression: every function of every file was read)."""
+    from robotfix.ros.graph import cpp
+
+    read: list[object] = []
+    real = cpp._File._function
+    monkeypatch.setattr(
+        cpp._File, "_function", lambda self, *a: read.append(a) or real(self, *a)
+    )
+    ros2 = (
+        b"class Talker : public rclcpp::Node {\n public:\n"
+        b'  Talker() : Node("talker") {\n'
+        b'    pub_ = create_publisher<std_msgs::msg::String>("chatter", 10);\n  }\n'
+        b"  void tick(int n) {}\n};\n"
+    )
+    assert [e.types for e in read_cpp(ros2).endpoints] == [("std_msgs/msg/String",)]
+    assert not read
+    ros1 = (
+        b"void other(int n) {}\n"
+        b"void cb(const std_msgs::String::ConstPtr & msg) {}\n"
+        b"int main() {\n  ros::NodeHandle nh;\n"
+        b'  ros::Subscriber s = nh.subscribe("chatter", 10, cb);\n}\n'
+    )
+    assert [e.types for e in read_cpp(ros1).endpoints] == [("std_msgs/msg/String",)]
+    assert len(read) == 3
+
+
 def test_qos_is_compared_only_between_endpoints_whose_types_can_meet(
     tmp_path: Path,
 ) -> None:
@@ -877,13 +943,8 @@ def test_cpp_file_naming_no_endpoint_maker_is_not_parsed(
     assert not read_cpp(data).endpoints
 
 
-def test_cpp_file_naming_a_maker_in_its_comments_only_is_not_parsed(
-    monkeypatch: pytest.MonkeyPatch,
-) -> None:
-    """`@param` in a header's comments, `subscribe` in prose: a word, but no
-    call; what the parse would find besides (a base class of another package's
-    node, `::rclcpp::Node` too, a node class, or a maker called) still makes it
-    parsed."""
+def _counting_parses(monkeypatch: pytest.MonkeyPatch) -> list[bytes]:
+    """The bytes of each C++ file tree-sitter parses from now on."""
     from robotfix.ros.graph import cpp
 
     parsed: list[bytes] = []
@@ -895,6 +956,18 @@ def test_cpp_file_naming_a_maker_in_its_comments_only_is_not_parsed(
             return real.parse(data)
 
     monkeypatch.setattr(cpp, "_parser", Counting)
+    return parsed
+
+
+def test_cpp_file_naming_a_maker_in_its_comments_only_is_not_parsed(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """`@param` in a header's comments, `subscribe` in prose: a word, but no
+    call; what the parse would find besides (a base class of another package's
+    node, `::rclcpp::Node` too, a node class, or a maker called) still makes it
+    parsed."""
+
+    parsed = _counting_parses(monkeypatch)
     comment = b"/**\n * @param node the node to subscribe with\n */\n"
     header = comment + b"class Server {\n  rclcpp::Node::SharedPtr node_;\n};\n"
     assert not read_cpp(header).endpoints and not parsed
@@ -951,6 +1024,74 @@ def test_cpp_file_naming_a_maker_in_its_comments_only_still_names_its_node(
     and `@param` headers lost their node classes, roscpp mains their names)."""
     found = read_cpp(code)
     assert (found.nodes, found.ros, found.endpoints) == (nodes, ros, [])
+
+
+def test_the_runs_cpp_reading_parses_no_file_that_can_make_no_endpoint(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The run keeps no graph without endpoints (`read_cpp_files`): a header
+    that only names its node class, a roscpp header that declares
+    `Publisher advertise(...)` (no call on a receiver: `_File._call` takes none
+    without) are not parsed for it; `read_cpp` alone still reads their names,
+    and a maker called on a receiver is parsed as before."""
+    from robotfix.graphcheck import read_cpp_files
+
+    parsed = _counting_parses(monkeypatch)
+    header = (
+        b"class Talker : public rclcpp::Node {\n  /// @param options the options\n"
+        b'  Talker() : Node("talker") {}\n};\n'
+    )
+    declares = (
+        b"namespace ros {\nclass NodeHandle {\n public:\n"
+        b"  Publisher advertise(AdvertiseOptions & ops);\n"
+        b"  Subscriber subscribe (SubscribeOptions & ops);\n};\n}\n"
+    )
+    calls = [
+        b'void f() {\n  ros::NodeHandle nh;\n  nh.advertise<T>("a", 1);\n}\n',
+        b'void f() {\n  auto nh = g();\n  nh->subscribe("/b", 1, cb);\n}\n',
+        b'void f() {\n  ros::NodeHandle nh;\n  nh .\n    param("c", c, 1.0);\n}\n',
+    ]
+    paths = []
+    for i, data in enumerate([header, declares, *calls]):
+        paths.append(tmp_path / f"f{i}.cpp")
+        paths[-1].write_bytes(data)
+    found = read_cpp_files(paths)
+    assert sorted(found) == [str(p) for p in paths[2:]]
+    assert [e.name for p in paths[2:] for e in found[str(p)].endpoints] == [
+        "a",
+        "/b",
+        "c",
+    ]
+    assert parsed == calls
+    assert read_cpp(header).nodes == {"Talker": ["talker"]}
+
+
+def test_python_graph_walks_no_nested_statement_where_no_wanted_call_starts(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """With the check's calls given, a loop or branch inside a statement that
+    holds an endpoint call is not walked when none of the wanted calls starts
+    in it (regression: the whole `try` around a `main` was walked node by node)."""
+    from robotfix.ros.graph import python as G
+
+    tree = ast.parse(
+        "import rclpy\nimport std_msgs.msg\ndef main():\n"
+        "    node = rclpy.create_node('n')\n    try:\n"
+        "        for i in range(3):\n            print(sum(x * x for x in range(i)))\n"
+        "        node.create_publisher(std_msgs.msg.String, 'out', 10)\n"
+        "    finally:\n        rclpy.shutdown()\n"
+    )
+    loop = tree.body[2].body[1].body[0]
+    inside = {id(n) for n in ast.walk(loop)}
+    seen: list[ast.AST] = []
+    real = G.children
+    monkeypatch.setattr(G, "children", lambda node: seen.append(node) or real(node))
+    found = G.read_python(tree, index_of(tree).calls)
+    assert [(e.name, e.types, e.owner) for e in found.endpoints] == [
+        ("out", ("std_msgs/msg/String",), "node")
+    ]
+    assert found.nodes == {"node": ["n"]}
+    assert seen and not [n for n in seen if id(n) in inside]
 
 
 def test_python_graph_looks_up_only_calls_whose_last_name_may_make_something(

@@ -710,7 +710,9 @@ def test_the_cpp_files_graphs_outlive_a_run_that_read_none(
     parsed: list[object] = []
     real = robotfix.graphcheck.read_cpp
     monkeypatch.setattr(
-        robotfix.graphcheck, "read_cpp", lambda *a: parsed.append(a) or real(*a)
+        robotfix.graphcheck,
+        "read_cpp",
+        lambda *a, **k: parsed.append(a) or real(*a, **k),
     )
     edit(
         monitor,

@@ -62,6 +62,40 @@ def test_a_flat_file_resolves_each_rospy_parameter_once(
     assert counts[0] == counts[1]
 
 
+def test_each_launch_file_looks_its_code_up_in_the_tables_one_map(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """`LaunchRun.check_file` mapped every summary of the table by its real path
+    again for each launch file (165 times on the issue-25 corpus); the table
+    maps them once, and a launch file's entries find their code there."""
+    from robotfix import launchcheck
+    from robotfix.ros.launch.model import NodeEntry, Place
+
+    summaries = [
+        summarize(SourceFile.from_text(f"pkg/nodes/node_{i}.py", NODE))
+        for i in range(3)
+    ]
+    table = paramcheck.Table(summaries, {})
+
+    class Walked(list):
+        def __iter__(self):
+            raise AssertionError("the table's summaries walked again")
+
+    table.summaries = Walked(table.summaries)
+    given: list[list[str]] = []
+    monkeypatch.setattr(
+        launchcheck,
+        "_ros1_entry",
+        lambda entry, code, table: given.append([s.path for s in code]) or [],
+    )
+    run = launchcheck.LaunchRun([], [])
+    entry = NodeEntry(1, Place("a.launch", 3, 2), "pkg", "node_1.py", None, "")
+    started = launchcheck._Started(entry, {table.real[summaries[1].path]})
+    for name in ("a.launch", "b.launch"):
+        assert run.check_file(name, [started], table, {}) == []
+    assert given == [["pkg/nodes/node_1.py"]] * 2
+
+
 def test_each_package_manifest_is_read_once_for_the_launch_files(
     tmp_path: Path, monkeypatch: pytest.MonkeyPatch
 ) -> None:

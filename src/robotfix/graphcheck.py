@@ -108,7 +108,7 @@ def read_cpp_files(
             )
         except UnreadableError:
             continue
-        one = read_cpp(data)
+        one = read_cpp(data, names=False)  # (a graph without endpoints: not kept)
         if cache is not None and digest is not None:
             cache.put_cpp(path, digest, dump(one) if one.endpoints else None)
         if one.endpoints:

@@ -258,7 +258,7 @@ class LaunchRun:
         """One file's entries against their nodes' code, under a `guard` of its
         own; the table needs only the summaries of the code they start."""
         out: list[Diagnostic] = []
-        by_real = {table.real[s.path]: s for s in table.summaries}
+        by_real = table.by_real  # each summary by its file's real path
         with guard(path, out, faults):
             for started in entries:
                 cpp = table.cpp.owners_of(started.entry)  # its C++ node

@@ -471,6 +471,8 @@ class Table:
             for name in {*(renamed or {}), *self.cpp.renamed}
         }
         self.real = {s.path: probe("realpath", s.path) for s in summaries}
+        # by real path, made once (each launch file's check looks its code up)
+        self.by_real = {self.real[s.path]: s for s in summaries}
         self.packages = {s.path: _package_of(Path(s.path)) for s in summaries}
         self._by_node: dict[str, list[tuple[Summary, str, list[str]]]] = {}
         # ROS 1: each summary's rospy nodes and parameter names, by package

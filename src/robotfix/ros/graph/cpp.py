@@ -30,6 +30,7 @@ by one tree-sitter query, in C.
 from __future__ import annotations
 
 import itertools
+import operator
 import re
 from collections.abc import Iterator
 from typing import Any
@@ -99,6 +100,8 @@ _MAKERS = re.compile(
 )
 # the last names of `_CLASSES`: one of them is made by a parse wherever it stands
 _CLASS_WORDS = frozenset(c.split("::")[-1].encode() for c in _CLASSES)
+# roscpp's methods: made of only on a receiver (`nh.advertise`), as `_File._call` reads
+_RECEIVED = frozenset(m.encode() for m, spec in _METHODS.items() if spec[1] == 1)
 _WORD = re.compile(rb"\w")
 _BLANKS = b" \t\r\n\f\v"  # what `bytes.strip` and `re`'s `\s` take
 # a call whose callee's text holds none of these makes nothing (`_File._call`)
@@ -155,8 +158,11 @@ def _parser() -> Any:
     return _PARSER
 
 
-def read_cpp(data: bytes) -> FileGraph:
-    """The endpoints and node names of a C++ file's bytes."""
+def read_cpp(data: bytes, names: bool = True) -> FileGraph:
+    """The endpoints and node names of a C++ file's bytes. Without `names`, a
+    file that can make no endpoint is not parsed for the node names and the ROS
+    version it may hold: a graph without endpoints adds nothing to the run's
+    (`graphcheck.read_cpp_files` keeps none)."""
     found = FileGraph()
     if len(data) > MAX_CPP_BYTES or not any(w in data for w in WORDS):
         return found
@@ -166,7 +172,7 @@ def read_cpp(data: bytes) -> FileGraph:
     first = next(makers, None)
     if first is None and not any(e.value == AUTO for e in found.endpoints):
         return found  # (given any override: parsed for the node it is given to)
-    if not found.endpoints and not _may_make(data, first, makers):
+    if not found.endpoints and not _may_make(data, first, makers, names):
         return found  # a maker's name in comments only (`@param`): nothing found
     try:
         tree = _parser().parse(data)
@@ -178,29 +184,44 @@ def read_cpp(data: bytes) -> FileGraph:
 
 
 def _may_make(
-    data: bytes, first: re.Match[bytes] | None, rest: Iterator[re.Match[bytes]]
+    data: bytes,
+    first: re.Match[bytes] | None,
+    rest: Iterator[re.Match[bytes]],
+    names: bool,
 ) -> bool:
     """Whether a parse of `data` may find an endpoint, `_opening`'s apart: a
     name of `_MAKERS` called (then `<` or `(`, or a comment, a line continued:
-    `first` and the `rest` of the matches), a class of `_CLASSES`, or a base
-    class `x::Node` not rclcpp's or a node class or name (`_other_node`), or a
-    ROS 1 file or a node named otherwise (`_NAMING`). Nav2's and ros_comm's
-    headers say `@param` in their comments: 36% of corpus25's parsed C++ bytes."""
+    `first` and the `rest` of the matches; roscpp's methods on a receiver
+    only), a class of `_CLASSES`, or a base class `x::Node` not rclcpp's; with
+    `names`, also a node class or name (`_other_node`), or a ROS 1 file or a
+    node named otherwise (`_NAMING`). Nav2's and ros_comm's headers say
+    `@param` in their comments: 36% of corpus25's parsed C++ bytes; roscpp's
+    headers declare `Publisher advertise(...)`."""
     for found in itertools.chain((first,) if first is not None else (), rest):
-        if found.group() in _CLASS_WORDS:
+        word = found.group()
+        if word in _CLASS_WORDS:
             return True
         after = data[found.end() : found.end() + 80].lstrip()
-        if not after or after[:1] in b"<(/\\":  # (all blanks: unsure, parsed)
+        called = not after or after[:1] in b"<(/\\"  # (all blanks: unsure, parsed)
+        if called and (word not in _RECEIVED or _received(data, found.start())):
             return True
-    return _other_node(data) or _NAMING.search(data) is not None
+    return _other_node(data, names) or (names and _NAMING.search(data) is not None)
 
 
-def _other_node(data: bytes) -> bool:
+def _received(data: bytes, start: int) -> bool:
+    """Whether the name at `start` may be called on a receiver (`nh.advertise`,
+    `nh->param`), as `_File._call` takes roscpp's methods; when a comment or a
+    continued line stands before it, or only blanks: unsure, True."""
+    before = data[max(start - 80, 0) : start].rstrip()
+    return not before or before.endswith((b".", b"->", b"/", b"\\"))
+
+
+def _other_node(data: bytes, names: bool) -> bool:
     """Whether `data` names `Node` or `LifecycleNode` with a qualifier that is not
     rclcpp's (`nav2_util::LifecycleNode`, `::rclcpp::Node`), as `_File._bases`
-    reads a base class (its text without blanks): an endpoint if it is one; or
-    any as a base class or built (`: public rclcpp::Node`, `: Node("talker")`):
-    a node class, its name."""
+    reads a base class (its text without blanks): an endpoint if it is one; or,
+    with `names`, any as a base class or built (`: public rclcpp::Node`,
+    `: Node("talker")`): a node class, its name."""
     at = data.find(b"Node")
     while at >= 0:
         end = at + 4
@@ -211,13 +232,19 @@ def _other_node(data: bytes) -> bool:
                 qualifier, begin = found
                 if qualifier + data[start:end] not in _OURS:
                     return True
-                if data[end : end + 80].lstrip()[:1] in (b"(", b"{"):
-                    return True
-                before = data[max(begin - 80, 0) : begin].rstrip()
-                if before.endswith(_BEFORE_BASE) and not before.endswith(b"::"):
+                if names and _based_or_built(data, begin, end):
                     return True
         at = data.find(b"Node", end)
     return False
+
+
+def _based_or_built(data: bytes, begin: int, end: int) -> bool:
+    """Whether the `Node` named from `begin` to `end` is built (`Node("x")`) or
+    stands as a base class."""
+    if data[end : end + 80].lstrip()[:1] in (b"(", b"{"):
+        return True
+    before = data[max(begin - 80, 0) : begin].rstrip()
+    return before.endswith(_BEFORE_BASE) and not before.endswith(b"::")
 
 
 # what stands before a base class (`class A : public B, virtual C`)
@@ -272,7 +299,8 @@ class _File:
         self.found = found
         self.data = data
         self.aliases: dict[str, str] = {}  # `using Twist = geometry_msgs::msg::Twist`
-        self.callbacks: dict[str, str] = {}  # function name -> its first param type
+        self.functions: list[Any] = []  # the function definitions (`callbacks`)
+        self._callbacks: dict[str, str] | None = None
         self.handles: dict[str, str] = {}  # NodeHandle variable -> its namespace
         self.calls: list[tuple[Any, str]] = []  # (call node, enclosing class)
         self.ros1 = False
@@ -284,15 +312,14 @@ class _File:
         # run to run (which of two `chatterCallback`s a callback is, the order of
         # a class's node names)
         captures = {
-            name: sorted(nodes, key=lambda n: (n.start_byte, n.end_byte))
+            name: sorted(nodes, key=_PLACE)
             for name, nodes in _query().captures(root).items()
         }
         for node in captures.get("cls", []):
             name = node.child_by_field_name("name")
             if name is not None:
                 self._bases(node, _text(name).split("::")[-1])
-        for node in captures.get("fn", []):
-            self._function(node)
+        self.functions = captures.get("fn", [])
         for node in captures.get("alias", []):
             name = node.child_by_field_name("name")
             value = node.child_by_field_name("type")
@@ -337,7 +364,17 @@ class _File:
                             )
                         )
 
-    def _function(self, node: Any) -> None:
+    @property
+    def callbacks(self) -> dict[str, str]:
+        """Function name -> its first parameter's type (a roscpp callback's
+        message type), made when a subscription first asks: most files make none."""
+        if self._callbacks is None:
+            self._callbacks = {}
+            for node in self.functions:
+                self._function(node, self._callbacks)
+        return self._callbacks
+
+    def _function(self, node: Any, callbacks: dict[str, str]) -> None:
         """A function's first parameter's type, for a roscpp callback."""
         declarator = _declarator(node)
         if declarator is None:
@@ -352,7 +389,7 @@ class _File:
         if first:
             kind = first[0].child_by_field_name("type")
             if kind is not None:
-                self.callbacks[text.split("::")[-1]] = _text(kind)
+                callbacks[text.split("::")[-1]] = _text(kind)
 
     def _initializer(self, node: Any) -> None:
         """`: Node("talker")` names the class's node; `pnh_("~")` a private handle."""
@@ -592,6 +629,7 @@ class _File:
 
 
 _QUERY: Any = None
+_PLACE = operator.attrgetter("start_byte", "end_byte")  # a capture's source order
 # what the file's reading needs of its syntax tree, matched in C
 _PATTERNS = """
 (call_expression) @call
@@ -844,7 +882,7 @@ def _made(name: str, args: list[Any], depth: int) -> Qos | None:
     return None
 
 
-MAX_BODY_NODES = 20_000  # syntax nodes of a function body looked at for a local
+MAX_BODY_NODES = 20_000  # syntax nodes of a function body a local is looked for in
 # the calls a local profile may be passed to without being changed
 _READERS = frozenset({*_METHODS, "make_unique", "make_shared"})
 
@@ -856,26 +894,18 @@ def _local_qos(use: Any, depth: int) -> Qos | None:
     a setter (`qos.best_effort();`) outside `use`, and passed to no call but those
     that make endpoints. Anything else is unknown, as is a body over
     `MAX_BODY_NODES`."""
-    name = _text(use)
     body = _body(use)
-    if body is None:
+    if body is None or body.descendant_count > MAX_BODY_NODES:
         return None
     found: list[Any] = []  # the declaration's init_declarator or declaration
-    stack, seen = [body], 0
-    while stack:
-        node = stack.pop()
-        seen += 1
-        if seen > MAX_BODY_NODES:
+    for node in _mentions(body, use):
+        parent = node.parent
+        if parent.type in ("init_declarator", "declaration") and (
+            parent.child_by_field_name("declarator") == node
+        ):
+            found.append(parent)
+        elif not _read(node, use):
             return None
-        if node.type == "identifier" and _text(node) == name and node != use:
-            parent = node.parent
-            if parent.type in ("init_declarator", "declaration") and (
-                parent.child_by_field_name("declarator") == node
-            ):
-                found.append(parent)
-            elif not _read(node, use):
-                return None
-        stack.extend(node.children)
     if len(found) != 1 or found[0].start_byte > use.start_byte:
         return None
     declared = found[0]
@@ -889,6 +919,24 @@ def _local_qos(use: Any, depth: int) -> Qos | None:
         args = [c for c in value.children if c.type not in ("(", ")", ",", "{", "}")]
         return _made(cls, args, depth)
     return _qos(value, depth + 1)
+
+
+def _mentions(body: Any, use: Any) -> Iterator[Any]:
+    """The identifiers of `body` spelled as the identifier `use`, but `use`:
+    found in its bytes, each the node at the place (not a walk of its nodes)."""
+    word, text = use.text, body.text
+    at = text.find(word)
+    while at >= 0:
+        start = body.start_byte + at
+        node = body.descendant_for_byte_range(start, start + len(word))
+        if (
+            node is not None
+            and node.type == "identifier"
+            and (node.start_byte, node.end_byte) == (start, start + len(word))
+            and node != use
+        ):
+            yield node
+        at = text.find(word, at + 1)
 
 
 def _body(node: Any) -> Any:

@@ -409,19 +409,23 @@ def _bind_scope(file: _File, scope: _Scope, cls: str | None) -> None:
             a.arg for a in [*args.posonlyargs, *args.args, *args.kwonlyargs]
         } | {a.arg for a in (args.vararg, args.kwarg) if a is not None}
     todo: list[ast.AST] = list(scope.body)
-    while todo:
+    while todo:  # each node's class tested once: most are names and constants
         node = todo.pop()
-        if isinstance(node, ast.Name):  # most of a scope's nodes: no children
-            if isinstance(node.ctx, (ast.Store, ast.Del)):  # for, with, walrus, del
-                names.setdefault(node.id, []).append(None)
+        kind = node.__class__
+        if kind is ast.Name:
+            if node.ctx.__class__ is not ast.Load:  # type: ignore[attr-defined]
+                # for, with, walrus, del
+                names.setdefault(node.id, []).append(None)  # type: ignore[attr-defined]
             continue
-        if isinstance(node, ast.Constant):
+        if kind is ast.Assign or kind is ast.AnnAssign:
+            _bind_assignment(file, scope, cls, node, names)  # type: ignore[arg-type]
+            if node.value is not None:  # type: ignore[attr-defined]
+                todo.append(node.value)  # type: ignore[attr-defined]
             continue
-        if isinstance(
-            node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)
-        ):  # their own scopes; a name here, and what they may store in `self.x`
-            if not isinstance(node, ast.Lambda):
-                names.setdefault(node.name, []).append(None)
+        if kind in _SCOPES:  # their own scopes; a name here, and what they
+            # may store in `self.x`
+            if kind is not ast.Lambda:
+                names.setdefault(node.name, []).append(None)  # type: ignore[attr-defined]
             if cls is not None:
                 for inner in walk_all(node):
                     if (
@@ -433,62 +437,74 @@ def _bind_scope(file: _File, scope: _Scope, cls: str | None) -> None:
                         attributes = file.attributes.setdefault(cls, {})
                         attributes.setdefault(inner.attr, []).append(None)
             continue
-        if isinstance(node, (ast.Assign, ast.AnnAssign)):
-            targets = node.targets if isinstance(node, ast.Assign) else [node.target]
-            value = node.value
-            for target in targets:
-                if isinstance(target, ast.Name):
-                    names.setdefault(target.id, []).append(value)
-                elif isinstance(target, ast.Attribute) and isinstance(
-                    target.value, ast.Name
-                ):
-                    if target.value.id == "self" and cls is not None:
-                        file.attributes.setdefault(cls, {}).setdefault(
-                            target.attr, []
-                        ).append(value)
-                    else:
-                        file.mutated.add((id(scope), target.value.id))
-                else:  # a, b = ...: each bound otherwise
-                    for inner in walk_all(target):
-                        if isinstance(inner, ast.Name):
-                            names.setdefault(inner.id, []).append(None)
-                        elif (
-                            isinstance(inner, ast.Attribute)
-                            and isinstance(inner.value, ast.Name)
-                            and inner.value.id == "self"
-                            and cls is not None
-                        ):
-                            file.attributes.setdefault(cls, {}).setdefault(
-                                inner.attr, []
-                            ).append(None)
-        elif (
-            isinstance(node, ast.Attribute)
-            and isinstance(node.ctx, ast.Store)
-            and isinstance(node.value, ast.Name)
+        if kind is ast.AugAssign:
+            target = node.target  # type: ignore[attr-defined]
+            if isinstance(target, ast.Name):
+                names.setdefault(target.id, []).append(None)
+            todo.append(node.value)  # type: ignore[attr-defined]
+            continue
+        if (
+            kind is ast.Attribute
+            and node.ctx.__class__ is ast.Store  # type: ignore[attr-defined]
+            and isinstance(node.value, ast.Name)  # type: ignore[attr-defined]
         ):
+            assert isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name)
             if node.value.id == "self" and cls is not None:
                 file.attributes.setdefault(cls, {}).setdefault(node.attr, []).append(
                     None
                 )
             else:
                 file.mutated.add((id(scope), node.value.id))
-        if isinstance(node, (ast.Assign, ast.AnnAssign)):
-            if node.value is not None:
-                todo.append(node.value)
-            continue
-        if isinstance(node, ast.AugAssign):
-            target = node.target
-            if isinstance(target, ast.Name):
-                names.setdefault(target.id, []).append(None)
-            todo.append(node.value)
-            continue
-        todo.extend(children(node))  # not contexts and operators: none binds
+        for child in children(node):  # not contexts and operators: none binds
+            if child.__class__ is not ast.Constant:
+                todo.append(child)
     file.bindings[id(scope)] = names
+
+
+_SCOPES = frozenset({ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda})
+
+
+def _bind_assignment(
+    file: _File,
+    scope: _Scope,
+    cls: str | None,
+    node: ast.Assign | ast.AnnAssign,
+    names: dict[str, list[ast.expr | None]],
+) -> None:
+    """What an assignment's targets bind: a name or `self.x` its value, another
+    object's attribute marks the object changed, anything else binds otherwise."""
+    targets = node.targets if isinstance(node, ast.Assign) else [node.target]
+    value = node.value
+    for target in targets:
+        if isinstance(target, ast.Name):
+            names.setdefault(target.id, []).append(value)
+        elif isinstance(target, ast.Attribute) and isinstance(target.value, ast.Name):
+            if target.value.id == "self" and cls is not None:
+                file.attributes.setdefault(cls, {}).setdefault(target.attr, []).append(
+                    value
+                )
+            else:
+                file.mutated.add((id(scope), target.value.id))
+        else:  # a, b = ...: each bound otherwise
+            for inner in walk_all(target):
+                if isinstance(inner, ast.Name):
+                    names.setdefault(inner.id, []).append(None)
+                elif (
+                    isinstance(inner, ast.Attribute)
+                    and isinstance(inner.value, ast.Name)
+                    and inner.value.id == "self"
+                    and cls is not None
+                ):
+                    file.attributes.setdefault(cls, {}).setdefault(
+                        inner.attr, []
+                    ).append(None)
 
 
 def _visit(file: _File, body: list[ast.stmt], scope: _Scope, cls: str | None) -> None:
     """The endpoint and node calls of `body`, each with the scope its names are
-    looked up in: a nested function or lambda is a scope of its own."""
+    looked up in: a nested function or lambda is a scope of its own. With the
+    file's calls known, a statement (nested ones too) where none starts is not
+    walked: every node but a decorator lies within its statement's lines."""
     for statement in body:
         if not _holds(file, statement):
             continue
@@ -521,7 +537,15 @@ def _visit(file: _File, body: list[ast.stmt], scope: _Scope, cls: str | None) ->
                     _call(file, node, where, cls, statement)
                 elif file.starts is None:  # the file's calls not known
                     _call(file, node, where, cls, statement)
-            todo.extend((child, where) for child in children(node))
+            elif isinstance(node, ast.stmt) and not _holds(file, node):
+                continue  # (an `if`'s branch, a loop's body: no call starts there)
+            for child in children(node):
+                if child.__class__ not in _LEAVES:
+                    todo.append((child, where))
+
+
+# nodes without children, neither calls nor scopes: not put on a walk's stack
+_LEAVES = frozenset({ast.Name, ast.Constant})
 
 
 def _call(

@@ -11,6 +11,7 @@ limit, and elements are bounded in number and depth.
 from __future__ import annotations
 
 import re
+from bisect import bisect_right
 from dataclasses import dataclass, field
 from xml.parsers import expat
 
@@ -53,7 +54,7 @@ def parse_xml(text: str) -> Element:
     roots: list[Element] = []
 
     def place(index: int) -> tuple[int, int]:
-        line = _bisect(starts, index)
+        line = bisect_right(starts, index)  # (1-based: `starts[0]` is 0)
         return line, len(data[starts[line - 1] : index].decode("utf-8", "replace"))
 
     def refuse(*_: object) -> None:
@@ -101,17 +102,6 @@ def parse_xml(text: str) -> Element:
 
 def _line_starts(data: bytes) -> list[int]:
     return [0] + [m.end() for m in re.finditer(rb"\n", data)]
-
-
-def _bisect(starts: list[int], index: int) -> int:
-    low, high = 0, len(starts)
-    while low + 1 < high:
-        mid = (low + high) // 2
-        if starts[mid] <= index:
-            low = mid
-        else:
-            high = mid
-    return low + 1
 
 
 def _attribute_places(
