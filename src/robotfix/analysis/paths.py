@@ -375,16 +375,27 @@ class PathWalker(Binder):
     def complete(self, state: State, ref: int, name: str) -> Value:
         return heap.read_raw(self.ctx, state, ref, name, f"`{name}`")
 
-    def ties(self, merged: Value, side: Value, state: State) -> list[A.Expr]:
-        found: list[A.Expr] = []
-        is_none = self._none_test(merged)
-        side_none = self._none_test(side)
-        if is_none is not None and side_none is not None:
-            found.append(A.Binary("==", is_none, side_none))
-        truth = self.truthy(merged, self.site)
-        side_truth = self._truth_of(side, state)
-        if side_truth is not None:
-            found.append(A.Binary("==", truth, side_truth))
+    def ties(
+        self, merged: Value, sides: tuple[tuple[Value, State], ...]
+    ) -> list[list[A.Expr]]:
+        found: list[list[A.Expr]] = []
+        # what `merged` is asked once (it is the same on every side), in the order
+        # of the first side's questions: the symbols they make are numbered so
+        is_none: A.Expr | None = None
+        truth: A.Expr = A.TRUE
+        for side, state in sides:
+            facts: list[A.Expr] = []
+            if not found:
+                is_none = self._none_test(merged)
+            side_none = self._none_test(side)
+            if is_none is not None and side_none is not None:
+                facts.append(A.Binary("==", is_none, side_none))
+            if not found:
+                truth = self.truthy(merged, self.site)
+            side_truth = self._truth_of(side, state)
+            if side_truth is not None:
+                facts.append(A.Binary("==", truth, side_truth))
+            found.append(facts)
         return found
 
     def _none_test(self, value: Value) -> A.Expr | None:

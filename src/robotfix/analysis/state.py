@@ -146,10 +146,12 @@ class Joiner(Protocol):
     def selector(self) -> A.Expr:
         """A fresh boolean: true on the first path of a join, false on the second."""
 
-    def ties(self, merged: Value, side: Value, state: State) -> list[A.Expr]:
-        """Facts that hold of a merged value of unknown kind on the path where it
-        is `side`: whether it is None, whether it is true (`x = None` on one
-        path, an object on the other, and `if x:` after)."""
+    def ties(
+        self, merged: Value, sides: tuple[tuple[Value, State], ...]
+    ) -> list[list[A.Expr]]:
+        """Facts that hold of a merged value of unknown kind on each path (`sides`:
+        what it is there, and the path's state): whether it is None, whether it is
+        true (`x = None` on one path, an object on the other, and `if x:` after)."""
 
     def complete(self, state: State, ref: int, name: str) -> Value:
         """What `state` holds in field `name` of message `ref`, which it never
@@ -376,13 +378,14 @@ def _tie(
 ) -> A.Expr | None:
     """`merged` is x where p holds, y where it does not (and what x and y are, if
     they were merged earlier and their paths never read them)."""
+    paths = ((x, a), (y, b))
+    ties = joiner.ties(merged, paths) if merged.kind == "unknown" else ([], [])
     sides: list[list[A.Expr]] = []
-    for side, state in ((x, a), (y, b)):
+    for (side, state), tied in zip(paths, ties, strict=True):
         parts: list[A.Expr] = []
         if merged.term is not None and side.term is not None:
             parts.append(A.Binary("==", merged.term, side.term))
-        if merged.kind == "unknown":
-            parts += joiner.ties(merged, side, state)
+        parts += tied
         parts += state.pending(state.defs_of(side))
         sides.append(parts)
     if not sides[0] and not sides[1]:
