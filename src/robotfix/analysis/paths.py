@@ -39,7 +39,7 @@ from robotfix.analysis.values import (
     replace,
 )
 from robotfix.annotations import ast as A
-from robotfix.astwalk import children, walk
+from robotfix.astwalk import FIELDS, fields, walk
 
 
 class PathWalker(Binder):
@@ -117,14 +117,11 @@ class PathWalker(Binder):
         looked: set[str] = set()  # the names whose binding was looked at
         get = state.env.get
         todo: list[ast.AST] = [*reversed(nodes)]  # `walk` of each node in turn
+        push = todo.append
         while todo:
             child = todo.pop()
             kind = type(child)
-            if kind is ast.Constant:
-                continue
-            if kind is not ast.Name:  # a name has no children
-                todo.extend(children(child))
-            if kind is ast.Name:
+            if kind is ast.Name:  # (a name and a constant have no children)
                 name: str = child.id  # type: ignore[attr-defined]
                 if name not in looked:  # (the walk pops dotted keys only)
                     looked.add(name)
@@ -139,7 +136,18 @@ class PathWalker(Binder):
                         other_binders.add(name)
                     if type(child.ctx) is ast.Store:  # type: ignore[attr-defined]
                         stores.append(child)  # type: ignore[arg-type]
-            elif kind is ast.Attribute:
+                continue
+            if kind is ast.Constant:
+                continue
+            for field in FIELDS.get(kind) or fields(kind):  # `children`, inline
+                value = getattr(child, field, None)
+                if value.__class__ is list:
+                    for one in value:
+                        if isinstance(one, ast.AST):
+                            push(one)
+                elif isinstance(value, ast.AST):
+                    push(value)
+            if kind is ast.Attribute:
                 if type(child.ctx) is ast.Store:  # type: ignore[attr-defined]
                     key = attribute_key(child)  # type: ignore[arg-type]
                     state.env.pop(key or "", None)
