@@ -140,18 +140,15 @@ class CompoundWalker(PathWalker):
             self._bind_element(node, iterable, start)
             first = self._first_breaks(node.body, start)
         normal = loop.fork() if breaks and node.orelse else loop
-        targets = {t.id for t in walk(node.target) if isinstance(t, ast.Name)}
-        if (
-            empty is not None
-            and empty != A.Bool(False)
-            and self._binds_new_names(stored - targets, entry)
-        ):
-            zero = entry.fork()
-            zero.assume(empty)
-            for target in targets:
-                if target not in zero.env:
-                    zero.env[target] = MAYBE  # a loop variable: never an error
-            normal = self._join(zero, normal)
+        if empty is not None and empty != A.Bool(False):  # a path with no iteration
+            targets = {t.id for t in walk(node.target) if isinstance(t, ast.Name)}
+            if self._binds_new_names(stored - targets, entry):
+                zero = entry.fork()
+                zero.assume(empty)
+                for target in targets:
+                    if target not in zero.env:
+                        zero.env[target] = MAYBE  # a loop variable: never an error
+                normal = self._join(zero, normal)
         failed = self._all_attempts_failed(node, entry, loop)
         if failed is not None:
             normal = self._join(failed, normal)
