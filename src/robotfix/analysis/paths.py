@@ -167,12 +167,16 @@ class PathWalker(Binder):
                     call: ast.Call = child  # type: ignore[assignment]
                     method = getattr(call.func, "attr", "")
                     self._changed_root(call.func, state, method in MUTATORS)
-                    for arg in [*call.args, *call.keywords]:
-                        self._changed_root(arg, state)
+                    for arg in call.args:
+                        if type(arg) is not ast.Constant:  # (changes no object)
+                            self._changed_root(arg, state)
+                    for keyword in call.keywords:
+                        self._changed_root(keyword, state)
             elif kind is ast.Assign or kind is ast.AugAssign:
                 assigns.append(child)  # type: ignore[arg-type]
                 assigned.update(map(id, assign_targets(child)))  # type: ignore[arg-type]
-                note_sum(child, summed, sum_targets)
+                if kind is ast.AugAssign:
+                    note_sum(child, summed, sum_targets)
             elif kind in BINDER_KINDS:
                 for name in bound_by(child):
                     bound_at.setdefault(name, child)

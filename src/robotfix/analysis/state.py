@@ -1,8 +1,9 @@
 """The abstract state of one path: bindings, message heap, and path facts.
 
 A state is mutated while one straight-line path is interpreted and copied (`fork`)
-where paths split; `join` merges two paths back into one. Facts are kept as a list
-whose common prefix is shared, so a join only has to disjoin what the branches added.
+where paths split (the last path to start goes on in the state itself: nothing reads
+it after); `join` merges two paths back into one. Facts are kept as a list whose
+common prefix is shared, so a join only has to disjoin what the branches added.
 """
 
 from __future__ import annotations
@@ -457,10 +458,13 @@ def _either(
 
 def rebound(a: State, b: State, kind: str) -> list[str]:
     """The names `a` binds to a value of `kind` that `b` binds otherwise, sorted."""
+    other = b.env.get  # (most names hold the same value on both paths: asked first)
     return sorted(
-        name
-        for name, x in a.env.items()
-        if isinstance(x, Value) and x.kind == kind and b.env.get(name) is not x
+        [
+            name
+            for name, x in a.env.items()
+            if other(name) is not x and isinstance(x, Value) and x.kind == kind
+        ]
     )
 
 
