@@ -50,7 +50,9 @@ class CompoundWalker(PathWalker):
     # -- compound statements -------------------------------------------------
     def visit_If(self, node: ast.If, state: State) -> State:
         cond = self.condition(node.test, state)
-        then_state, else_state = state.fork(), state.fork()
+        since = state.exits
+        # the `else` path goes on in the state itself: nothing reads it after this
+        then_state, else_state = state.fork(), state
         then_state.assume(cond)
         else_state.assume(A.Unary("not", cond))
         if (
@@ -65,7 +67,6 @@ class CompoundWalker(PathWalker):
             # past `if m == A: ... elif m == B: ...` its author may know no case
             # is left (an enum, a closed set of strings)
             else_state.exits += 1
-        since = state.exits
         then_state = self.exec_block(node.body, then_state)
         else_state = self.exec_block(node.orelse, else_state)
         return self._join(then_state, else_state, since)
@@ -139,18 +140,15 @@ class CompoundWalker(PathWalker):
             self._bind_element(node, iterable, start)
             first = self._first_breaks(node.body, start)
         normal = loop.fork() if breaks and node.orelse else loop
-        targets = {t.id for t in walk(node.target) if isinstance(t, ast.Name)}
-        if (
-            empty is not None
-            and empty != A.Bool(False)
-            and self._binds_new_names(stored - targets, entry)
-        ):
-            zero = entry.fork()
-            zero.assume(empty)
-            for target in targets:
-                if target not in zero.env:
-                    zero.env[target] = MAYBE  # a loop variable: never an error
-            normal = self._join(zero, normal)
+        if empty is not None and empty != A.Bool(False):  # a path with no iteration
+            targets = {t.id for t in walk(node.target) if isinstance(t, ast.Name)}
+            if self._binds_new_names(stored - targets, entry):
+                zero = entry.fork()
+                zero.assume(empty)
+                for target in targets:
+                    if target not in zero.env:
+                        zero.env[target] = MAYBE  # a loop variable: never an error
+                normal = self._join(zero, normal)
         failed = self._all_attempts_failed(node, entry, loop)
         if failed is not None:
             normal = self._join(failed, normal)
@@ -387,11 +385,11 @@ class CompoundWalker(PathWalker):
         if safe and node.handlers:
             state = self.exec_block(body[:safe], state)
             body = body[safe:]
-        entry = state.fork()
-        raised = entry.fork()  # an exception somewhere in the body
+        raised = state.fork()  # an exception somewhere in the body
         stored = self.havoc(raised, body)
         inside = raised
-        binds = bool(node.handlers) and self._binds_new_names(stored, entry)
+        binds = bool(node.handlers) and self._binds_new_names(stored, state)
+        entry = state.fork() if binds else state  # (read only where it `binds`)
         if binds:
             raised = self._join(entry.fork(), inside.fork())  # ... or before binding
         guards = any(catches_name_error(h.type) for h in node.handlers)
@@ -399,14 +397,16 @@ class CompoundWalker(PathWalker):
         state = self.exec_block(body, state)
         self.guarded -= guards
         result = self.exec_block(node.orelse, state)
+        last = node.handlers[-1] if node.handlers and not node.finalbody else None
         for handler in node.handlers:
             first = bound_before_raising(body, handler) if binds else set()
-            handler_state = raised.fork()
             if first & self.scope.local_names:
                 before = entry.fork()  # it raised after these were bound
                 for name in sorted(first & self.scope.local_names):
                     before.env[name] = self.unknown(node)
                 handler_state = self._join(before, inside.fork())
+            else:  # (the last handler, with no `finally`, is the last to read it)
+                handler_state = raised if handler is last else raised.fork()
             since = handler_state.exits
             if handler.type is not None:  # evaluated only if no earlier one matched
                 self.guarded += 1

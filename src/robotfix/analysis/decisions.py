@@ -15,7 +15,7 @@ from __future__ import annotations
 import ast
 from collections.abc import Callable, Hashable
 
-from robotfix.astwalk import walk
+from robotfix.astwalk import children
 
 # One decision: the test's node id (the same test on a path counts once) and the
 # names and attributes it mentions, each with the value the analysis tracks for it
@@ -39,19 +39,25 @@ def decision(
     functions or methods it calls, nor module names (`math`, a class)."""
     skipped: set[int] = set()  # callees and the objects of attributes
     found: set[tuple[str, Hashable]] = set()
-    for node in walk([test]):
-        if isinstance(node, ast.Call):
-            skipped.add(id(node.func))
-        elif isinstance(node, ast.Attribute):
-            skipped.add(id(node.value))  # `scan.range_min`: the field is the data
-        elif isinstance(node, ast.Name) and (
-            id(node) not in skipped
-            and node.id in local_names
-            and node.id not in RECEIVERS
-        ):
-            found.add((node.id, tracked(node.id)))
-        if isinstance(node, ast.Attribute) and id(node) not in skipped:
-            found.add(("." + node.attr, attributes.get(id(node))))
+    todo: list[ast.AST] = [test]  # (`walk`: parents before their children)
+    while todo:
+        node = todo.pop()
+        kind = node.__class__
+        if kind is ast.Name:  # (a name and a constant have no children)
+            name: str = node.id  # type: ignore[attr-defined]
+            local = name in local_names and name not in RECEIVERS
+            if local and id(node) not in skipped:
+                found.add((name, tracked(name)))
+            continue
+        if kind is ast.Constant:
+            continue
+        if kind is ast.Call:
+            skipped.add(id(node.func))  # type: ignore[attr-defined]
+        elif kind is ast.Attribute:
+            skipped.add(id(node.value))  # type: ignore[attr-defined]
+            if id(node) not in skipped:  # `scan.range_min`: the field is the data
+                found.add(("." + node.attr, attributes.get(id(node))))  # type: ignore[attr-defined]
+        todo.extend(children(node))
     return id(test), frozenset(found)
 
 

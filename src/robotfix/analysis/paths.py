@@ -39,7 +39,7 @@ from robotfix.analysis.values import (
     replace,
 )
 from robotfix.annotations import ast as A
-from robotfix.astwalk import children, walk
+from robotfix.astwalk import FIELDS, fields, walk
 
 
 class PathWalker(Binder):
@@ -117,14 +117,11 @@ class PathWalker(Binder):
         looked: set[str] = set()  # the names whose binding was looked at
         get = state.env.get
         todo: list[ast.AST] = [*reversed(nodes)]  # `walk` of each node in turn
+        push = todo.append
         while todo:
             child = todo.pop()
             kind = type(child)
-            if kind is ast.Constant:
-                continue
-            if kind is not ast.Name:  # a name has no children
-                todo.extend(children(child))
-            if kind is ast.Name:
+            if kind is ast.Name:  # (a name and a constant have no children)
                 name: str = child.id  # type: ignore[attr-defined]
                 if name not in looked:  # (the walk pops dotted keys only)
                     looked.add(name)
@@ -139,7 +136,18 @@ class PathWalker(Binder):
                         other_binders.add(name)
                     if type(child.ctx) is ast.Store:  # type: ignore[attr-defined]
                         stores.append(child)  # type: ignore[arg-type]
-            elif kind is ast.Attribute:
+                continue
+            if kind is ast.Constant:
+                continue
+            for field in FIELDS.get(kind) or fields(kind):  # `children`, inline
+                value = getattr(child, field, None)
+                if value.__class__ is list:
+                    for one in value:
+                        if isinstance(one, ast.AST):
+                            push(one)
+                elif isinstance(value, ast.AST):
+                    push(value)
+            if kind is ast.Attribute:
                 if type(child.ctx) is ast.Store:  # type: ignore[attr-defined]
                     key = attribute_key(child)  # type: ignore[arg-type]
                     state.env.pop(key or "", None)
@@ -159,12 +167,16 @@ class PathWalker(Binder):
                     call: ast.Call = child  # type: ignore[assignment]
                     method = getattr(call.func, "attr", "")
                     self._changed_root(call.func, state, method in MUTATORS)
-                    for arg in [*call.args, *call.keywords]:
-                        self._changed_root(arg, state)
+                    for arg in call.args:
+                        if type(arg) is not ast.Constant:  # (changes no object)
+                            self._changed_root(arg, state)
+                    for keyword in call.keywords:
+                        self._changed_root(keyword, state)
             elif kind is ast.Assign or kind is ast.AugAssign:
                 assigns.append(child)  # type: ignore[arg-type]
                 assigned.update(map(id, assign_targets(child)))  # type: ignore[arg-type]
-                note_sum(child, summed, sum_targets)
+                if kind is ast.AugAssign:
+                    note_sum(child, summed, sum_targets)
             elif kind in BINDER_KINDS:
                 for name in bound_by(child):
                     bound_at.setdefault(name, child)
@@ -375,16 +387,27 @@ class PathWalker(Binder):
     def complete(self, state: State, ref: int, name: str) -> Value:
         return heap.read_raw(self.ctx, state, ref, name, f"`{name}`")
 
-    def ties(self, merged: Value, side: Value, state: State) -> list[A.Expr]:
-        found: list[A.Expr] = []
-        is_none = self._none_test(merged)
-        side_none = self._none_test(side)
-        if is_none is not None and side_none is not None:
-            found.append(A.Binary("==", is_none, side_none))
-        truth = self.truthy(merged, self.site)
-        side_truth = self._truth_of(side, state)
-        if side_truth is not None:
-            found.append(A.Binary("==", truth, side_truth))
+    def ties(
+        self, merged: Value, sides: tuple[tuple[Value, State], ...]
+    ) -> list[list[A.Expr]]:
+        found: list[list[A.Expr]] = []
+        # what `merged` is asked once (it is the same on every side), in the order
+        # of the first side's questions: the symbols they make are numbered so
+        is_none: A.Expr | None = None
+        truth: A.Expr = A.TRUE
+        for side, state in sides:
+            facts: list[A.Expr] = []
+            if not found:
+                is_none = self._none_test(merged)
+            side_none = self._none_test(side)
+            if is_none is not None and side_none is not None:
+                facts.append(A.Binary("==", is_none, side_none))
+            if not found:
+                truth = self.truthy(merged, self.site)
+            side_truth = self._truth_of(side, state)
+            if side_truth is not None:
+                facts.append(A.Binary("==", truth, side_truth))
+            found.append(facts)
         return found
 
     def _none_test(self, value: Value) -> A.Expr | None:

@@ -1,8 +1,9 @@
 """The abstract state of one path: bindings, message heap, and path facts.
 
 A state is mutated while one straight-line path is interpreted and copied (`fork`)
-where paths split; `join` merges two paths back into one. Facts are kept as a list
-whose common prefix is shared, so a join only has to disjoin what the branches added.
+where paths split (the last path to start goes on in the state itself: nothing reads
+it after); `join` merges two paths back into one. Facts are kept as a list whose
+common prefix is shared, so a join only has to disjoin what the branches added.
 """
 
 from __future__ import annotations
@@ -146,10 +147,12 @@ class Joiner(Protocol):
     def selector(self) -> A.Expr:
         """A fresh boolean: true on the first path of a join, false on the second."""
 
-    def ties(self, merged: Value, side: Value, state: State) -> list[A.Expr]:
-        """Facts that hold of a merged value of unknown kind on the path where it
-        is `side`: whether it is None, whether it is true (`x = None` on one
-        path, an object on the other, and `if x:` after)."""
+    def ties(
+        self, merged: Value, sides: tuple[tuple[Value, State], ...]
+    ) -> list[list[A.Expr]]:
+        """Facts that hold of a merged value of unknown kind on each path (`sides`:
+        what it is there, and the path's state): whether it is None, whether it is
+        true (`x = None` on one path, an object on the other, and `if x:` after)."""
 
     def complete(self, state: State, ref: int, name: str) -> Value:
         """What `state` holds in field `name` of message `ref`, which it never
@@ -376,13 +379,14 @@ def _tie(
 ) -> A.Expr | None:
     """`merged` is x where p holds, y where it does not (and what x and y are, if
     they were merged earlier and their paths never read them)."""
+    paths = ((x, a), (y, b))
+    ties = joiner.ties(merged, paths) if merged.kind == "unknown" else ([], [])
     sides: list[list[A.Expr]] = []
-    for side, state in ((x, a), (y, b)):
+    for (side, state), tied in zip(paths, ties, strict=True):
         parts: list[A.Expr] = []
         if merged.term is not None and side.term is not None:
             parts.append(A.Binary("==", merged.term, side.term))
-        if merged.kind == "unknown":
-            parts += joiner.ties(merged, side, state)
+        parts += tied
         parts += state.pending(state.defs_of(side))
         sides.append(parts)
     if not sides[0] and not sides[1]:
@@ -454,10 +458,13 @@ def _either(
 
 def rebound(a: State, b: State, kind: str) -> list[str]:
     """The names `a` binds to a value of `kind` that `b` binds otherwise, sorted."""
+    other = b.env.get  # (most names hold the same value on both paths: asked first)
     return sorted(
-        name
-        for name, x in a.env.items()
-        if isinstance(x, Value) and x.kind == kind and b.env.get(name) is not x
+        [
+            name
+            for name, x in a.env.items()
+            if other(name) is not x and isinstance(x, Value) and x.kind == kind
+        ]
     )
 
 
