@@ -12,8 +12,8 @@ from functools import partial
 
 from robotfix.analysis import containers, frames, heap, imported, inline
 from robotfix.analysis.builtincalls import BuiltinEvaluator
+from robotfix.analysis.collaborators import Collaborators
 from robotfix.analysis.context import FileContext, Scope
-from robotfix.analysis.library import Libraries
 from robotfix.analysis.program import Function, Program, attribute_key
 from robotfix.analysis.state import State
 from robotfix.analysis.values import (
@@ -74,10 +74,11 @@ _CHANGE_NOTHING = frozenset({"msgclass", "builtin", "parameter_method"})
 class CallEvaluator(BuiltinEvaluator):
     inlined: tuple[str, ...] = ()  # helpers being evaluated at a call
 
-    def __init__(self, ctx: FileContext, program: Program) -> None:
-        super().__init__(ctx, program)
-        # calls into libraries and objects of stub classes, as their stubs say
-        self.libraries = Libraries(ctx, program, self.check, self.refined, self.lookups)
+    def __init__(
+        self, ctx: FileContext, program: Program, parts: Collaborators | None = None
+    ) -> None:
+        super().__init__(ctx, program, parts)
+        self.libraries = self.parts.libraries
 
     # -- what the stubs add to names and operators -----------------------------
     def member(self, base: Value, attr: str, state: State) -> Value | None:

@@ -22,16 +22,12 @@ from robotfix.analysis import (
     hover,
     imported,
 )
-from robotfix.analysis.checks import Checker
+from robotfix.analysis.collaborators import Collaborators
 from robotfix.analysis.constants import is_constant
 from robotfix.analysis.context import TERM_LIMIT, BudgetExceededError, FileContext
-from robotfix.analysis.fieldchecks import FieldChecker
 from robotfix.analysis.flows import FlowLog, Where
 from robotfix.analysis.literals import float_term, int_term
-from robotfix.analysis.lookups import Lookups
-from robotfix.analysis.param_eval import ParameterCalls
 from robotfix.analysis.program import Program
-from robotfix.analysis.refined import RefinedChecker
 from robotfix.analysis.state import State
 from robotfix.analysis.values import NONE, SEQUENCES, Items, Value, replace
 from robotfix.annotations import ast as A
@@ -84,17 +80,19 @@ _EMPTY = A.Str("")
 
 
 class ExpressionEvaluator:
-    def __init__(self, ctx: FileContext, program: Program) -> None:
+    def __init__(
+        self, ctx: FileContext, program: Program, parts: Collaborators | None = None
+    ) -> None:
         self.ctx = ctx
         self.program = program
-        # the checks that report diagnostics, as collaborators: the scalar checks,
-        # those of messages, and those of values that reach a refined target
-        self.check = Checker(ctx)
-        self.fields = FieldChecker(self.check)
-        self.refined = RefinedChecker(self.check, self.fields)
-        # what a type, attribute, constant or element read here stands for
-        self.lookups = Lookups(ctx, program, self.check)
-        self.params = ParameterCalls(ctx)  # parameter calls and their handles
+        if parts is None:
+            parts = Collaborators(ctx, program)
+        self.parts = parts
+        self.check = parts.check
+        self.fields = parts.fields
+        self.refined = parts.refined
+        self.lookups = parts.lookups
+        self.params = parts.params
         self.site: ast.AST = ast.Pass()  # the statement being interpreted
         self.lists_seen = False  # whether a list was stored in a name or attribute
         # the symbol each attribute read last gave (`decisions.py`: two tests of
