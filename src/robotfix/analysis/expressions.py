@@ -26,7 +26,7 @@ from robotfix.analysis.collaborators import Collaborators
 from robotfix.analysis.constants import is_constant
 from robotfix.analysis.context import TERM_LIMIT, BudgetExceededError, FileContext
 from robotfix.analysis.flows import FlowLog, Where
-from robotfix.analysis.literals import float_term, int_term
+from robotfix.analysis.literals import float_term, int_value, str_value
 from robotfix.analysis.program import Program
 from robotfix.analysis.state import State
 from robotfix.analysis.values import NONE, SEQUENCES, Items, Value, replace
@@ -77,6 +77,7 @@ _LEAF_TERMS = (A.Sym, A.Num, A.Bool, A.Str, A.Name)
 # what a number's or a string's truth compares it with (terms are immutable)
 _ZEROS = {False: A.Num(Fraction(0), False), True: A.Num(Fraction(0), True)}
 _EMPTY = A.Str("")
+_BOOLS = {False: Value("bool", A.Bool(False)), True: Value("bool", A.Bool(True))}
 
 
 class ExpressionEvaluator:
@@ -191,22 +192,23 @@ class ExpressionEvaluator:
     # -- leaves --------------------------------------------------------------
     def eval_Constant(self, node: ast.Constant, state: State) -> Value:
         value = node.value
-        if isinstance(value, bool):
-            return Value("bool", A.Bool(value))
-        if value.__class__ is int:  # (a literal's value is never of a subclass)
-            term = int_term(value)
-            if term is None:
+        kind = value.__class__  # (a literal's value is never of a subclass)
+        if kind is str:
+            return str_value(value)
+        if kind is int:
+            found = int_value(value)
+            if found is None:
                 return replace(self.unknown(node, "int"), literal=True)
-            return Value("int", term, literal=True)
-        if isinstance(value, float) and math.isfinite(value):
+            return found
+        if value is None:
+            return NONE
+        if kind is bool:
+            return _BOOLS[value]
+        if kind is float and math.isfinite(value):
             term = float_term(self.ctx.source.segment(node) or "", value)
             if term is None:
                 return replace(self.unknown(node, "float"), literal=True)
             return Value("float", term, literal=True)
-        if isinstance(value, str):
-            return Value("str", A.Str(value))
-        if value is None:
-            return NONE
         return self.unknown(node)
 
     def eval_Name(self, node: ast.Name, state: State) -> Value:
