@@ -9,6 +9,7 @@ from __future__ import annotations
 import ast
 from collections.abc import Iterable
 from functools import partial
+from itertools import chain
 
 from robotfix.analysis import containers, frames, heap, imported, inline
 from robotfix.analysis.builtincalls import BuiltinEvaluator
@@ -285,9 +286,12 @@ class CallEvaluator(BuiltinEvaluator):
         state: State,
         callee: Value,
     ) -> None:
-        """Unknown code may change the messages and instances it is handed."""
+        """Unknown code may change the messages and instances it is handed. (Most
+        calls change nothing: a value the walk never read a version of, which
+        `State.changed` leaves alone, is passed over without the call.)"""
         env = state.env
-        if node.args:
+        given = node.args
+        if given:
             for lent_name in containers.lends(node):  # the callee may keep, change it
                 lent = env.get(lent_name)
                 if isinstance(lent, Value) and lent.kind == "list":
@@ -298,25 +302,29 @@ class CallEvaluator(BuiltinEvaluator):
         ):
             return
         func = node.func
-        attr = func.attr if isinstance(func, ast.Attribute) else ""
+        attr = func.attr if func.__class__ is ast.Attribute else ""
         if attr in PARAMETER_CALLS:
             return  # rclpy and rospy change no attribute of the node's class
         if frames.followed(self.ctx, node):
             return  # tf2 reads the stamped values and transforms it is given
-        given: Iterable[tuple[Value, ast.expr]] = zip(args, node.args, strict=False)
+        pairs: Iterable[tuple[Value, ast.expr]] = zip(args, given, strict=False)
         if kwargs:
             keywords = {k.arg: k.value for k in node.keywords}
-            given = [*given, *((v, keywords[k]) for k, v in kwargs.items())]
-        for value, expr in given:
+            pairs = chain(pairs, ((v, keywords[k]) for k, v in kwargs.items()))
+        watched = state.shared.watched  # (`State.changed` changes only these)
+        for value, expr in pairs:
+            term = value.term
             if value.kind == "msg" and value.ref is not None:
                 if not self.only_reads(node, expr):
                     heap.havoc(state, value.ref)
-            elif value.kind in MUTABLE and type(value.term) is A.Sym:
+            elif (
+                type(term) is A.Sym and term.ident in watched and value.kind in MUTABLE
+            ):
                 state.changed(value)
-        names = [a for a in node.args if isinstance(a, ast.Name)] if node.args else []
-        if isinstance(func, ast.Attribute):
+        names = [a for a in given if a.__class__ is ast.Name] if given else []
+        if func.__class__ is ast.Attribute:
             owner = func.value
-            if isinstance(owner, ast.Name):
+            if owner.__class__ is ast.Name:
                 # a method of this file's class may change `self.x`; rclpy's and
                 # rospy's own (`self.get_clock()`) do not touch its attributes
                 receiver = env.get(owner.id)
@@ -326,7 +334,7 @@ class CallEvaluator(BuiltinEvaluator):
                     or receiver.kind != "instance"
                 ):
                     names.append(owner)
-            elif isinstance(owner, ast.Attribute):  # self.x.reset()
+            elif owner.__class__ is ast.Attribute:  # self.x.reset()
                 env.pop(attribute_key(owner) or "", None)
         for name in names:
             bound = env.get(name.id)
