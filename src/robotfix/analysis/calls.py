@@ -87,14 +87,8 @@ class CallEvaluator(BuiltinEvaluator):
             return self.libraries.object_member(base.name, attr, state)
         return super().member(base, attr, state)
 
-    def instance_attribute(
-        self, base: Value, var: str, node: ast.Attribute, state: State
-    ) -> Value:
-        if base.kind == "instance" and f"{var}.{node.attr}" not in state.env:
-            found = self.libraries.inherited_method(base.name, node.attr)
-            if found is not None:
-                return found
-        return super().instance_attribute(base, var, node, state)
+    def inherited_method(self, class_name: str, attr: str) -> Value | None:
+        return self.libraries.inherited_method(class_name, attr)
 
     def object_operation(
         self, node: ast.BinOp, left: Value, right: Value, state: State
