@@ -109,6 +109,9 @@ class FileContext:
         self.ranged: dict[int, tuple[int, int]] = {}
         self.index = FileIndex()
         self.imports: dict[str, str] = {}  # local name -> qualified name
+        # `ros_code` of these imports (asked at every annotation read; a summary's
+        # context is handed the imports of another, so kept with the dict asked of)
+        self._ros_code: tuple[dict[str, str] | None, bool] = (None, False)
         self.star_import = False
         self.ros1 = False  # ROS 1 code: standard messages have no default values
         self.constants = ConstantNames()  # which names are constants, and their values
@@ -503,10 +506,15 @@ class FileContext:
     @property
     def ros_code(self) -> bool:
         """Whether the file imports a ROS interface package, rclpy or rospy."""
-        return any(
-            (len(parts) >= 3 and parts[1] in MSG_MODULES) or parts[0] in ROS_CLIENTS
-            for parts in (q.split(".") for q in self.imports.values())
-        )
+        imports, known = self._ros_code
+        if imports is not self.imports:
+            imports = self.imports
+            known = any(
+                (len(parts) >= 3 and parts[1] in MSG_MODULES) or parts[0] in ROS_CLIENTS
+                for parts in (q.split(".") for q in imports.values())
+            )
+            self._ros_code = (imports, known)
+        return known
 
     def metadata_notes(self) -> None:
         """RF511, only in files that are RobotFix's business: ROS code (`ros_code`)
