@@ -115,3 +115,48 @@ def _module_walker(source: str) -> tuple[Any, Any]:
     module = build_scope(ctx, "module", "<module>", parsed.tree, None)
     program = collect(ctx, parsed.tree, module)
     return interpreter.Interpreter(ctx, program, module, {}), State()
+
+
+def test_ros_code_is_kept_with_the_imports_it_was_asked_of() -> None:
+    """`FileContext.ros_code` is asked at every annotation read; it is kept with
+    the imports it was worked out of, and a context handed other imports (a
+    summary's, `project/summary.py`) answers for those (a memo kept without
+    them fails this)."""
+    from robotfix.analysis.context import FileContext
+    from robotfix.ros.catalog import MsgCatalog
+    from robotfix.source import SourceFile
+
+    parsed = SourceFile.from_bytes("m.py", b"import os\n")
+    ctx = FileContext(parsed, MsgCatalog([]), print)
+    ctx.imports = {"os": "os"}
+    assert ctx.ros_code is False
+    assert ctx.ros_code is False
+    ctx.imports = {"rclpy": "rclpy"}
+    assert ctx.ros_code is True
+    ctx.imports = {"String": "std_msgs.msg.String"}
+    assert ctx.ros_code is True
+    ctx.imports = {}
+    assert ctx.ros_code is False
+
+
+def test_a_call_asks_no_change_of_values_the_walk_never_watched(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    """What a call may change is asked only of values whose version the walk read
+    (`State.changed` changes nothing else): `g(a.x, b[0])` hands two unknowns no
+    read watched, `g(c.y)` after `if c.y:` one that is."""
+    from robotfix.analysis.state import State
+
+    asked: list[object] = []
+    real = State.changed
+
+    def changed(self: State, value: Any, firm: bool = False) -> None:
+        asked.append(value)
+        real(self, value, firm)
+
+    monkeypatch.setattr(State, "changed", changed)
+    api.check_source("def f(a, b):\n    g(a.x, b[0])\n", str(tmp_path / "a.py"))
+    assert asked == []
+    source = "def f(c):\n    if c.y:\n        pass\n    g(c.y)\n"
+    api.check_source(source, str(tmp_path / "b.py"))
+    assert len(asked) == 1  # `c.y`'s version was read by the test
