@@ -68,7 +68,9 @@ def test_the_bodies_of_one_file_share_one_set_of_collaborators(
     assert made[len(bodies)].parts is not parts
 
 
-def test_literal_values_are_made_once_per_literal() -> None:
+def test_literal_values_are_made_once_per_literal(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
     """A string or int literal met again shares its value (values are never
     changed; 34,870 string and 12,307 int literals evaluated on corpus25), equal
     to the one made at each occurrence before; True and 1 stay apart."""
@@ -85,8 +87,12 @@ def test_literal_values_are_made_once_per_literal() -> None:
     assert int_value(10) is int_value(10)
     assert int_value(10**100) is None  # too large to model: an unknown, as before
 
-    source = "a = 'x'\nb = 'x'\nc = 1\nd = True\ne = 1\nf = None\n"
-    walker, state = _module_walker(source)
+    from robotfix.analysis.state import State
+
+    source = NODE + "a = 'x'\nb = 'x'\nc = 1\nd = True\ne = 1\nf = None\n"
+    made = _interpreters(monkeypatch)
+    api.check_source(source, str(tmp_path / "m.py"))
+    walker, state = made[0], State()  # the module code's walker
     values = [
         walker.eval(stmt.value, state)
         for stmt in ast.parse(source).body
@@ -95,26 +101,6 @@ def test_literal_values_are_made_once_per_literal() -> None:
     assert values[0] is values[1] and values[2] is values[4]
     assert values[3] == Value("bool", A.Bool(True)) and values[3] is not values[2]
     assert values[2] == Value("int", A.Num(Fraction(1), True), literal=True)
-
-
-def _module_walker(source: str) -> tuple[Any, Any]:
-    """A walker of a module's code, as `analyze_module` makes it, and a state."""
-    from robotfix.analysis.constants import scan
-    from robotfix.analysis.context import FileContext, build_scope
-    from robotfix.analysis.index import index_of
-    from robotfix.analysis.program import collect
-    from robotfix.analysis.state import State
-    from robotfix.ros.catalog import MsgCatalog
-    from robotfix.source import SourceFile
-
-    parsed = SourceFile.from_bytes("m.py", source.encode())
-    assert parsed.tree is not None
-    ctx = FileContext(parsed, MsgCatalog([]), print)
-    ctx.record_imports(index_of(parsed.tree))
-    ctx.constants = scan(parsed.tree, ctx.index, ctx.qualname, False)
-    module = build_scope(ctx, "module", "<module>", parsed.tree, None)
-    program = collect(ctx, parsed.tree, module)
-    return interpreter.Interpreter(ctx, program, module, {}), State()
 
 
 def test_ros_code_is_kept_with_the_imports_it_was_asked_of() -> None:
