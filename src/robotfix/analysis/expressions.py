@@ -203,9 +203,9 @@ class ExpressionEvaluator:
             return found
         if value is None:
             return NONE
-        if kind is bool:
+        if isinstance(value, bool):
             return _BOOLS[value]
-        if kind is float and math.isfinite(value):
+        if isinstance(value, float) and math.isfinite(value):
             term = float_term(self.ctx.source.segment(node) or "", value)
             if term is None:
                 return replace(self.unknown(node, "float"), literal=True)
