@@ -134,12 +134,12 @@ def install(frames: Frames, checked: dict[str, int], built: dict[str, int]) -> N
     original_body = interpreter._analyze_body
 
     def analyze_body(
-        ctx: Any, prog: Any, node: ast.AST, parent: Any, statics: Any
+        ctx: Any, prog: Any, node: ast.AST, parent: Any, *rest: Any
     ) -> Any:
         top_class = isinstance(node, ast.ClassDef) and parent.parent is None
         frames.stage("phase" if top_class else "functions")
         try:
-            return original_body(ctx, prog, node, parent, statics)
+            return original_body(ctx, prog, node, parent, *rest)
         finally:
             frames.stage("functions")
 

@@ -18,6 +18,7 @@ from collections.abc import Callable
 from robotfix.analysis import containers, decisions, frames, heap, hover, typeterms
 from robotfix.analysis.callfacts import CallFacts
 from robotfix.analysis.calls import CallEvaluator
+from robotfix.analysis.collaborators import Collaborators
 from robotfix.analysis.context import FileContext, Scope
 from robotfix.analysis.program import Function, Program
 from robotfix.analysis.state import MAYBE, MaybeUnbound, State
@@ -77,8 +78,9 @@ class Binder(CallEvaluator):
         scope: Scope,
         statics: dict[str, Value],
         function: Function | None = None,
+        parts: Collaborators | None = None,
     ) -> None:
-        super().__init__(ctx, program)
+        super().__init__(ctx, program, parts)
         self.scope = scope
         self.statics = statics
         self.function = function
@@ -214,7 +216,9 @@ class Binder(CallEvaluator):
         if self.scope.kind == "module":  # module code: the statics are not made yet,
             # its imports and classes are bound on this path (`math.pi`, `Limits.MAX`)
             statics = module_statics(self.ctx, state)
-            reader = type(self)(self.ctx, self.program, self.scope, statics)
+            reader = type(self)(
+                self.ctx, self.program, self.scope, statics, parts=self.parts
+            )
         constant = reader.scoped_constant(name, state, self._class_name())
         if constant is not None:
             return constant.term

@@ -9,11 +9,12 @@ from __future__ import annotations
 import ast
 from collections.abc import Iterable
 from functools import partial
+from itertools import chain
 
 from robotfix.analysis import containers, frames, heap, imported, inline
 from robotfix.analysis.builtincalls import BuiltinEvaluator
+from robotfix.analysis.collaborators import Collaborators
 from robotfix.analysis.context import FileContext, Scope
-from robotfix.analysis.library import Libraries
 from robotfix.analysis.program import Function, Program, attribute_key
 from robotfix.analysis.state import State
 from robotfix.analysis.values import (
@@ -74,10 +75,11 @@ _CHANGE_NOTHING = frozenset({"msgclass", "builtin", "parameter_method"})
 class CallEvaluator(BuiltinEvaluator):
     inlined: tuple[str, ...] = ()  # helpers being evaluated at a call
 
-    def __init__(self, ctx: FileContext, program: Program) -> None:
-        super().__init__(ctx, program)
-        # calls into libraries and objects of stub classes, as their stubs say
-        self.libraries = Libraries(ctx, program, self.check, self.refined, self.lookups)
+    def __init__(
+        self, ctx: FileContext, program: Program, parts: Collaborators | None = None
+    ) -> None:
+        super().__init__(ctx, program, parts)
+        self.libraries = self.parts.libraries
 
     # -- what the stubs add to names and operators -----------------------------
     def member(self, base: Value, attr: str, state: State) -> Value | None:
@@ -85,14 +87,8 @@ class CallEvaluator(BuiltinEvaluator):
             return self.libraries.object_member(base.name, attr, state)
         return super().member(base, attr, state)
 
-    def instance_attribute(
-        self, base: Value, var: str, node: ast.Attribute, state: State
-    ) -> Value:
-        if base.kind == "instance" and f"{var}.{node.attr}" not in state.env:
-            found = self.libraries.inherited_method(base.name, node.attr)
-            if found is not None:
-                return found
-        return super().instance_attribute(base, var, node, state)
+    def inherited_method(self, class_name: str, attr: str) -> Value | None:
+        return self.libraries.inherited_method(class_name, attr)
 
     def object_operation(
         self, node: ast.BinOp, left: Value, right: Value, state: State
@@ -284,9 +280,12 @@ class CallEvaluator(BuiltinEvaluator):
         state: State,
         callee: Value,
     ) -> None:
-        """Unknown code may change the messages and instances it is handed."""
+        """Unknown code may change the messages and instances it is handed. (Most
+        calls change nothing: a value the walk never read a version of, which
+        `State.changed` leaves alone, is passed over without the call.)"""
         env = state.env
-        if node.args:
+        given = node.args
+        if given:
             for lent_name in containers.lends(node):  # the callee may keep, change it
                 lent = env.get(lent_name)
                 if isinstance(lent, Value) and lent.kind == "list":
@@ -297,25 +296,29 @@ class CallEvaluator(BuiltinEvaluator):
         ):
             return
         func = node.func
-        attr = func.attr if isinstance(func, ast.Attribute) else ""
+        attr = func.attr if func.__class__ is ast.Attribute else ""
         if attr in PARAMETER_CALLS:
             return  # rclpy and rospy change no attribute of the node's class
         if frames.followed(self.ctx, node):
             return  # tf2 reads the stamped values and transforms it is given
-        given: Iterable[tuple[Value, ast.expr]] = zip(args, node.args, strict=False)
+        pairs: Iterable[tuple[Value, ast.expr]] = zip(args, given, strict=False)
         if kwargs:
             keywords = {k.arg: k.value for k in node.keywords}
-            given = [*given, *((v, keywords[k]) for k, v in kwargs.items())]
-        for value, expr in given:
+            pairs = chain(pairs, ((v, keywords[k]) for k, v in kwargs.items()))
+        watched = state.shared.watched  # (`State.changed` changes only these)
+        for value, expr in pairs:
+            term = value.term
             if value.kind == "msg" and value.ref is not None:
                 if not self.only_reads(node, expr):
                     heap.havoc(state, value.ref)
-            elif value.kind in MUTABLE and type(value.term) is A.Sym:
+            elif (
+                type(term) is A.Sym and term.ident in watched and value.kind in MUTABLE
+            ):
                 state.changed(value)
-        names = [a for a in node.args if isinstance(a, ast.Name)] if node.args else []
-        if isinstance(func, ast.Attribute):
+        names = [a for a in given if a.__class__ is ast.Name] if given else []
+        if func.__class__ is ast.Attribute:
             owner = func.value
-            if isinstance(owner, ast.Name):
+            if owner.__class__ is ast.Name:
                 # a method of this file's class may change `self.x`; rclpy's and
                 # rospy's own (`self.get_clock()`) do not touch its attributes
                 receiver = env.get(owner.id)
@@ -325,7 +328,7 @@ class CallEvaluator(BuiltinEvaluator):
                     or receiver.kind != "instance"
                 ):
                     names.append(owner)
-            elif isinstance(owner, ast.Attribute):  # self.x.reset()
+            elif owner.__class__ is ast.Attribute:  # self.x.reset()
                 env.pop(attribute_key(owner) or "", None)
         for name in names:
             bound = env.get(name.id)

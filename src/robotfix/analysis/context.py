@@ -109,6 +109,9 @@ class FileContext:
         self.ranged: dict[int, tuple[int, int]] = {}
         self.index = FileIndex()
         self.imports: dict[str, str] = {}  # local name -> qualified name
+        # `ros_code` of these imports (asked at every annotation read; a summary's
+        # context is handed the imports of another, so kept with the dict asked of)
+        self._ros_code: tuple[dict[str, str] | None, bool] = (None, False)
         self.star_import = False
         self.ros1 = False  # ROS 1 code: standard messages have no default values
         self.constants = ConstantNames()  # which names are constants, and their values
@@ -163,15 +166,16 @@ class FileContext:
         """An unknown value that is a function of `key` (`x is None` for one value
         of x): the same symbol wherever it is asked for."""
         found = self._derived.get(key)
-        if found is not None and self.unit_log is not None:
-            self._shared(found.term)
-        if found is None:
-            found = self._derived[key] = self.fresh(kind, description)
-            first, read = _first_version(key, self.unchanged)
-            if first != key and isinstance(found.term, A.Sym):
-                base = self.derived(first, kind, description)
-                if isinstance(base.term, A.Sym):
-                    self.unchanged[found.term.ident] = (base.term, read)
+        if found is not None:
+            if self.unit_log is not None:
+                self._shared(found.term)
+            return found
+        found = self._derived[key] = self.fresh(kind, description)
+        first, read = _first_version(key, self.unchanged)
+        if first is not key and isinstance(found.term, A.Sym):
+            base = self.derived(first, kind, description)
+            if isinstance(base.term, A.Sym):
+                self.unchanged[found.term.ident] = (base.term, read)
         return found
 
     def first_read(self, read: object, sym: A.Sym) -> None:
@@ -502,10 +506,15 @@ class FileContext:
     @property
     def ros_code(self) -> bool:
         """Whether the file imports a ROS interface package, rclpy or rospy."""
-        return any(
-            (len(parts) >= 3 and parts[1] in MSG_MODULES) or parts[0] in ROS_CLIENTS
-            for parts in (q.split(".") for q in self.imports.values())
-        )
+        imports, known = self._ros_code
+        if imports is not self.imports:
+            imports = self.imports
+            known = any(
+                (len(parts) >= 3 and parts[1] in MSG_MODULES) or parts[0] in ROS_CLIENTS
+                for parts in (q.split(".") for q in imports.values())
+            )
+            self._ros_code = (imports, known)
+        return known
 
     def metadata_notes(self) -> None:
         """RF511, only in files that are RobotFix's business: ROS code (`ros_code`)
@@ -547,13 +556,18 @@ def _first_version(
     key: tuple[object, ...], unchanged: dict[int, tuple[A.Sym, object]]
 ) -> tuple[tuple[object, ...], object]:
     """The key of the same read of the object as it first was (`self.flag` before
-    calls that may have changed it)."""
+    calls that may have changed it); `key` itself when it is that read."""
     if len(key) < 2:
         return key, None
     head = key[1]  # an object's symbol, or its id
     ident = head.ident if isinstance(head, A.Sym) else head
     if not isinstance(ident, int):
         return key, None
+    last = key[-1]  # (most reads: an object read first, at its first version)
+    if ident not in unchanged and not (
+        len(key) > 2 and isinstance(last, int) and last and key[0] in VERSIONED
+    ):
+        return key, ident
     rest, changed = key[2:], False
     read: object = ident
     if ident in unchanged:

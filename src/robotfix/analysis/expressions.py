@@ -22,16 +22,12 @@ from robotfix.analysis import (
     hover,
     imported,
 )
-from robotfix.analysis.checks import Checker
+from robotfix.analysis.collaborators import Collaborators
 from robotfix.analysis.constants import is_constant
 from robotfix.analysis.context import TERM_LIMIT, BudgetExceededError, FileContext
-from robotfix.analysis.fieldchecks import FieldChecker
 from robotfix.analysis.flows import FlowLog, Where
-from robotfix.analysis.literals import float_term, int_term
-from robotfix.analysis.lookups import Lookups
-from robotfix.analysis.param_eval import ParameterCalls
+from robotfix.analysis.literals import float_term, int_value, str_value
 from robotfix.analysis.program import Program
-from robotfix.analysis.refined import RefinedChecker
 from robotfix.analysis.state import State
 from robotfix.analysis.values import NONE, SEQUENCES, Items, Value, replace
 from robotfix.annotations import ast as A
@@ -81,20 +77,24 @@ _LEAF_TERMS = (A.Sym, A.Num, A.Bool, A.Str, A.Name)
 # what a number's or a string's truth compares it with (terms are immutable)
 _ZEROS = {False: A.Num(Fraction(0), False), True: A.Num(Fraction(0), True)}
 _EMPTY = A.Str("")
+_UNREAD = object()  # `self.x` not read nor stored on this path yet
+_BOOLS = {False: Value("bool", A.Bool(False)), True: Value("bool", A.Bool(True))}
 
 
 class ExpressionEvaluator:
-    def __init__(self, ctx: FileContext, program: Program) -> None:
+    def __init__(
+        self, ctx: FileContext, program: Program, parts: Collaborators | None = None
+    ) -> None:
         self.ctx = ctx
         self.program = program
-        # the checks that report diagnostics, as collaborators: the scalar checks,
-        # those of messages, and those of values that reach a refined target
-        self.check = Checker(ctx)
-        self.fields = FieldChecker(self.check)
-        self.refined = RefinedChecker(self.check, self.fields)
-        # what a type, attribute, constant or element read here stands for
-        self.lookups = Lookups(ctx, program, self.check)
-        self.params = ParameterCalls(ctx)  # parameter calls and their handles
+        if parts is None:
+            parts = Collaborators(ctx, program)
+        self.parts = parts
+        self.check = parts.check
+        self.fields = parts.fields
+        self.refined = parts.refined
+        self.lookups = parts.lookups
+        self.params = parts.params
         self.site: ast.AST = ast.Pass()  # the statement being interpreted
         self.lists_seen = False  # whether a list was stored in a name or attribute
         # the symbol each attribute read last gave (`decisions.py`: two tests of
@@ -193,22 +193,23 @@ class ExpressionEvaluator:
     # -- leaves --------------------------------------------------------------
     def eval_Constant(self, node: ast.Constant, state: State) -> Value:
         value = node.value
-        if isinstance(value, bool):
-            return Value("bool", A.Bool(value))
-        if value.__class__ is int:  # (a literal's value is never of a subclass)
-            term = int_term(value)
-            if term is None:
+        kind = value.__class__  # (a literal's value is never of a subclass)
+        if kind is str:
+            return str_value(value)
+        if kind is int:
+            found = int_value(value)
+            if found is None:
                 return replace(self.unknown(node, "int"), literal=True)
-            return Value("int", term, literal=True)
+            return found
+        if value is None:
+            return NONE
+        if isinstance(value, bool):
+            return _BOOLS[value]
         if isinstance(value, float) and math.isfinite(value):
             term = float_term(self.ctx.source.segment(node) or "", value)
             if term is None:
                 return replace(self.unknown(node, "float"), literal=True)
             return Value("float", term, literal=True)
-        if isinstance(value, str):
-            return Value("str", A.Str(value))
-        if value is None:
-            return NONE
         return self.unknown(node)
 
     def eval_Name(self, node: ast.Name, state: State) -> Value:
@@ -301,9 +302,13 @@ class ExpressionEvaluator:
         """`self.x`: the value last stored in this path, else what its refinement says
         (or, for a goal handle, the goal that arrived)."""
         key = f"{var}.{node.attr}"
-        bound = state.env.get(key)
+        bound = state.env.get(key, _UNREAD)
         if isinstance(bound, Value):
             return state.use(bound)
+        if bound is _UNREAD and base.kind == "instance":
+            inherited = self.inherited_method(base.name, node.attr)
+            if inherited is not None:
+                return inherited
         method = (
             self.lookups.method(base, node.attr) if base.kind == "instance" else None
         )
@@ -342,6 +347,11 @@ class ExpressionEvaluator:
             self.lists_seen = self.lists_seen or value.kind == "list"
         state.env[key] = value
         return value
+
+    def inherited_method(self, class_name: str, attr: str) -> Value | None:
+        """`self.create_timer` where the class derives it from a library's class
+        (the call evaluator knows the stubs)."""
+        return None
 
     def refinement_lookup(self, decl: Refinement, state: State) -> dict[str, A.Expr]:
         """Terms for the other names a refinement mentions (`y == x`, `MAX_SPEED`,

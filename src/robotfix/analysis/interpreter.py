@@ -23,6 +23,7 @@ from functools import partial
 from robotfix import messages
 from robotfix.analysis import heap, imported
 from robotfix.analysis.binder import module_statics
+from robotfix.analysis.collaborators import Collaborators
 from robotfix.analysis.compound import CompoundWalker
 from robotfix.analysis.constants import scan
 from robotfix.analysis.context import (
@@ -53,7 +54,8 @@ def analyze_module(ctx: FileContext) -> None:
     program = collect(ctx, tree, module)
     if isinstance(ctx.unit_flows, FlowLog):
         ctx.unit_flows.program = program
-    top = Interpreter(ctx, program, module, {})
+    parts = Collaborators(ctx, program)  # one set for every body of the file
+    top = Interpreter(ctx, program, module, {}, parts=parts)
     state = top.exec_block(tree.body, State())
     statics = module_statics(ctx, state)
     pending: list[tuple[ast.AST, Scope]] = list(top.pending)
@@ -79,7 +81,9 @@ def analyze_module(ctx: FileContext) -> None:
         if id(node) not in seen:
             seen.add(id(node))
             if memo is None:
-                pending.extend(_analyze_body(ctx, program, node, parent, statics))
+                pending.extend(
+                    _analyze_body(ctx, program, node, parent, statics, parts)
+                )
                 ctx.flush()
                 continue
             pending.extend(
@@ -87,7 +91,7 @@ def analyze_module(ctx: FileContext) -> None:
                     node,
                     parent,
                     partial(_body_scope, ctx, program),
-                    partial(_run_body, ctx, program, statics=statics),
+                    partial(_run_body, ctx, program, statics=statics, parts=parts),
                 )
             )
     ctx.flush()
@@ -114,9 +118,12 @@ def _analyze_body(
     node: ast.AST,
     parent: Scope,
     statics: dict[str, Value],
+    parts: Collaborators,
 ) -> list[tuple[ast.AST, Scope]]:
     scope, function = _body_scope(ctx, program, node, parent)
-    return _run_body(ctx, program, node, parent, scope, function, statics=statics)
+    return _run_body(
+        ctx, program, node, parent, scope, function, statics=statics, parts=parts
+    )
 
 
 def _body_scope(
@@ -139,13 +146,14 @@ def _run_body(
     function: Function | None,
     *,
     statics: dict[str, Value],
+    parts: Collaborators,
 ) -> list[tuple[ast.AST, Scope]]:
     if function is None:
         assert isinstance(node, ast.ClassDef)
-        interp = Interpreter(ctx, program, scope, statics)
+        interp = Interpreter(ctx, program, scope, statics, parts=parts)
         interp.exec_block(node.body, State())
         return [(n, parent) for n, _ in interp.pending]  # methods don't see class names
-    interp = Interpreter(ctx, program, scope, statics, function)
+    interp = Interpreter(ctx, program, scope, statics, function, parts)
     state = State()
     interp.bind_parameters(state)
     if isinstance(function.node, ast.Lambda):
@@ -208,7 +216,9 @@ class Interpreter(CompoundWalker):
     def helper_evaluator(self, function: Function) -> Interpreter:
         """An interpreter for a helper's expression evaluated at a call."""
         scope = self.program.signature(self.ctx, function)
-        sub = Interpreter(self.ctx, self.program, scope, self.statics, function)
+        sub = Interpreter(
+            self.ctx, self.program, scope, self.statics, function, self.parts
+        )
         sub.inlined = (*self.inlined, function.key)
         sub.site = self.site
         return sub
