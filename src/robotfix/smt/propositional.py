@@ -248,5 +248,6 @@ def _search(
     try:
         return go(0, formulas)
     finally:
+        del go  # it calls itself through its cell: a cycle only the collector frees
         if budget is not None:
             budget.spend(evaluated)

@@ -94,6 +94,8 @@ def parse_xml(text: str) -> Element:
             err.lineno,
             err.offset,
         ) from None
+    finally:  # the handlers hold it through their cells: a cycle only the
+        parser = None  # collector frees, with every element of the file
     if not roots:
         raise LaunchSyntaxError("no root element", 1, 0)
     return roots[0]
