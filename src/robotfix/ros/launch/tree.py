@@ -94,8 +94,10 @@ def parse_xml(text: str) -> Element:
             err.lineno,
             err.offset,
         ) from None
-    finally:  # the handlers hold it through their cells: a cycle only the
-        parser = None  # collector frees, with every element of the file
+    finally:  # those that close over the parser: else a cycle only the collector
+        # frees, with every element of the file
+        parser.StartElementHandler = parser.StartDoctypeDeclHandler = None
+        parser.EntityDeclHandler = None
     if not roots:
         raise LaunchSyntaxError("no root element", 1, 0)
     return roots[0]
