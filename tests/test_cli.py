@@ -23,6 +23,16 @@ def run(*args: str, cwd: Path) -> subprocess.CompletedProcess[str]:
     )
 
 
+def run_python(script: str, cwd: Path) -> subprocess.CompletedProcess[str]:
+    return subprocess.run(
+        [sys.executable, "-c", script],
+        cwd=cwd,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+
+
 @pytest.fixture
 def project(tmp_path: Path) -> Path:
     (tmp_path / "a.py").write_text(BUGGY)
@@ -145,13 +155,29 @@ def test_internal_error_names_the_file_without_a_traceback(project: Path) -> Non
         "from robotfix.cli import main\n"
         "sys.exit(main(['check', 'sub/c.py', 'a.py']))\n"
     )
-    result = subprocess.run(
-        [sys.executable, "-c", script],
-        cwd=project,
-        capture_output=True,
-        text=True,
-        timeout=120,
-    )
+    result = run_python(script, cwd=project)
     assert result.returncode == 2
     assert "internal error while checking a.py: RuntimeError: boom" in result.stderr
     assert "Traceback" not in result.stderr
+
+
+def test_the_command_ends_without_tearing_down_its_heap(project: Path) -> None:
+    """`robotfix` (`cli.run`) writes everything and runs the `atexit` handlers, then
+    ends the process without freeing its objects one by one (a module's global
+    is never finalized), with `main`'s exit status."""
+    script = (
+        "import atexit, sys\n"
+        "atexit.register(lambda: print('atexit ran', file=sys.stderr))\n"
+        "class Kept:\n"
+        "    def __del__(self):\n"
+        "        print('freed at exit', file=sys.stderr)\n"
+        "kept = Kept()\n"
+        "sys.argv = ['robotfix', 'check', 'a.py']\n"
+        "from robotfix.cli import run\n"
+        "run()\n"
+    )
+    result = run_python(script, cwd=project)
+    assert result.returncode == 1
+    assert result.stdout.endswith("Found 1 error and 0 warnings in 1 file.\n")
+    assert "atexit ran" in result.stderr
+    assert "freed at exit" not in result.stderr

@@ -294,3 +294,33 @@ def test_overloaded_operators_are_read_by_operand_type() -> None:
     assert minus_time.returns_type == "rclpy.duration.Duration"
     assert minus_duration.returns_type == "rclpy.time.Time"
     assert stubs.member(time, "__sub__") is None  # no meaning without the operand
+
+
+def test_the_shipped_stubs_are_found_as_by_probing_each_file(tmp_path: Path) -> None:
+    """`_find_file` takes the shipped files from one listing (`_shipped_files`):
+    every module answers as two probes on disk did, packages and their modules,
+    names with no stub, and a user stub path's file first."""
+
+    def probed(stubs: StubSet, name: str) -> tuple[Path, str, bool] | None:
+        relative = name.replace(".", "/")
+        for root, shipped in [*((p, False) for p in stubs.paths), (DATA, True)]:
+            for candidate in (f"{relative}.pyi", f"{relative}/__init__.pyi"):
+                path = root / candidate
+                if path.exists() and not path.is_dir():
+                    return path, candidate if shipped else str(path), shipped
+        return None
+
+    files = [p.relative_to(DATA).with_suffix("") for p in DATA.rglob("*.pyi")]
+    names = {".".join(f.parts[:-1] if f.name == "__init__" else f.parts) for f in files}
+    assert {"rclpy", "rclpy.node", "math"} <= names
+    (tmp_path / "rclpy").mkdir()
+    (tmp_path / "rclpy" / "node.pyi").write_text("def f() -> None: ...\n")
+    asked = [*sorted(names), "rclpy.nothing", "no_such_module", "tf2_ros.x.y"]
+    for stubs in (StubSet(()), StubSet((tmp_path,))):
+        for name in asked:
+            assert stubs._find_file(name) == probed(stubs, name), name
+    assert StubSet((tmp_path,))._find_file("rclpy.node") == (
+        tmp_path / "rclpy" / "node.pyi",
+        str(tmp_path / "rclpy" / "node.pyi"),
+        False,
+    )

@@ -1,5 +1,5 @@
 """`python -m robotfix` runs the command line."""
 
-from robotfix.cli import main
+from robotfix.cli import run
 
-raise SystemExit(main())
+run()

@@ -611,6 +611,8 @@ def _unused_suppressions(
     Not for the rules a later check of the run reports on this file's lines: the
     graph's (`rules.GRAPH_RULES`), and in a Python launch file the launch check's
     (`rules.LAUNCH_RULES`), which also gets its bare `ignore`s."""
+    if not source.suppressions:  # most files: no launch-file test for them
+        return []
     path = Path(source.path)
     launch = is_launch_file(path.parent.name, path.name)
     later = rules.GRAPH_RULES | rules.LAUNCH_RULES if launch else rules.GRAPH_RULES

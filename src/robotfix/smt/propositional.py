@@ -238,7 +238,7 @@ def _search(
             return False
         for choice in (True, False):
             model[index] = choice
-            found = go(index + 1, undecided)
+            found = go(index + 1, undecided)  # noqa: F821 (deleted after the search)
             if found is not False:
                 del model[index]
                 return found
@@ -248,5 +248,6 @@ def _search(
     try:
         return go(0, formulas)
     finally:
+        del go  # it calls itself through its cell: a cycle only the collector frees
         if budget is not None:
             budget.spend(evaluated)

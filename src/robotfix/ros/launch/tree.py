@@ -95,6 +95,10 @@ def parse_xml(text: str) -> Element:
             err.lineno,
             err.offset,
         ) from None
+    finally:  # those that close over the parser: else a cycle only the collector
+        # frees, with every element of the file
+        parser.StartElementHandler = parser.StartDoctypeDeclHandler = None
+        parser.EntityDeclHandler = None
     if not roots:
         raise LaunchSyntaxError("no root element", 1, 0)
     return roots[0]
