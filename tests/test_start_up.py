@@ -1,0 +1,69 @@
+"""The fixed cost of every `robotfix check` process (issue 25): a cold check loads
+no module only another command or another kind of file needs (each one's
+dataclasses cost an `exec` per generated method at import)."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import robotfix
+
+NODE = """\
+import rclpy
+from rclpy.node import Node
+from geometry_msgs.msg import Twist
+
+
+class Driver(Node):
+    def __init__(self) -> None:
+        super().__init__("driver")
+        self.pub = self.create_publisher(Twist, "cmd_vel", 10)
+
+    def tick(self) -> None:
+        msg = Twist()
+        msg.linear.x = 0.5
+        self.pub.publish(msg)
+"""
+# the editor's memo (api.py), `robotfix suggest`'s flow log, and the readers of
+# launch files, parameter YAML and C++ sources
+NOT_LOADED = (
+    "robotfix.analysis.unitmemo",
+    "robotfix.analysis.skeleton",
+    "robotfix.analysis.unitreads",
+    "robotfix.analysis.flows",
+    "robotfix.ros.launch.model",
+    "robotfix.ros.paramfile",
+    "robotfix.ros.yamlfile",
+    "robotfix.ros.graph.cpp",
+)
+
+
+def test_a_check_of_python_alone_loads_no_other_commands_modules(
+    tmp_path: Path,
+) -> None:
+    package = tmp_path / "src" / "demo"
+    (package / "demo").mkdir(parents=True)
+    (package / "package.xml").write_text("<package><name>demo</name></package>")
+    (package / "demo" / "__init__.py").write_text("")
+    (package / "demo" / "driver.py").write_text(NODE)
+    probe = (
+        "import sys\n"
+        "from robotfix.cli import main\n"
+        f"main(['check', {str(tmp_path / 'src')!r}, '--no-cache', '-j', '1'])\n"
+        f"print(sorted(m for m in {NOT_LOADED!r} if m in sys.modules))\n"
+        "print('robotfix.analysis.interpreter' in sys.modules)\n"
+    )
+    env = {**os.environ, "PYTHONPATH": str(Path(robotfix.__file__).parent.parent)}
+    done = subprocess.run(
+        [sys.executable, "-c", probe],
+        capture_output=True,
+        text=True,
+        env=env,
+        cwd=tmp_path,
+        check=False,
+    )
+    lines = done.stdout.strip().splitlines()
+    assert lines[-2:] == ["[]", "True"], done.stdout + done.stderr
