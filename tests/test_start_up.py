@@ -4,12 +4,15 @@ dataclasses cost an `exec` per generated method at import)."""
 
 from __future__ import annotations
 
+import hashlib
 import os
 import subprocess
 import sys
 from pathlib import Path
 
 import robotfix
+from robotfix import fs
+from robotfix.cache import _OWN_SUFFIXES, own_digest
 
 NODE = """\
 import rclpy
@@ -67,3 +70,14 @@ def test_a_check_of_python_alone_loads_no_other_commands_modules(
     )
     lines = done.stdout.strip().splitlines()
     assert lines[-2:] == ["[]", "True"], done.stdout + done.stderr
+
+
+def test_own_digest_is_the_full_walks() -> None:
+    """The walk that skips `__pycache__` folders digests what the full walk did
+    (sorted as paths, each file's stamp), in the same order."""
+    package = Path(robotfix.__file__).resolve().parent
+    digest = hashlib.blake2b(digest_size=16)
+    for path in sorted(package.rglob("*")):
+        if path.suffix in _OWN_SUFFIXES and "__pycache__" not in path.parts:
+            digest.update(f"{path.relative_to(package)} {fs.stamp(path)}".encode())
+    assert own_digest.__wrapped__() == digest.hexdigest()

@@ -89,11 +89,20 @@ def own_digest() -> str:
     stamps, not their bytes (a run starts on every save): a pull or a reinstall
     writes the files, which moves their ctime."""
     package = Path(__file__).resolve().parent
+    found: list[tuple[str, ...]] = []  # each file's parts below the package
+    for folder, folders, files in os.walk(package):  # (no symlinked folder, as rglob)
+        folders[:] = [f for f in folders if f != "__pycache__"]  # bytecode: not read
+        where = Path(folder).relative_to(package).parts
+        found += [(*where, n) for n in files + folders if _own_suffix(n)]
     digest = hashlib.blake2b(digest_size=16)
-    for path in sorted(package.rglob("*")):
-        if path.suffix in _OWN_SUFFIXES and "__pycache__" not in path.parts:
-            digest.update(f"{path.relative_to(package)} {fs.stamp(path)}".encode())
+    for parts in sorted(found):  # the order of `sorted(Path, ...)`: by parts
+        stamp = fs.stamp(os.path.join(package, *parts))
+        digest.update(f"{'/'.join(parts)} {stamp}".encode())
     return digest.hexdigest()
+
+
+def _own_suffix(name: str) -> bool:
+    return os.path.splitext(name)[1] in _OWN_SUFFIXES
 
 
 def run_key(config: Config) -> str:
