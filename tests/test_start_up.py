@@ -10,9 +10,14 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 import robotfix
+import robotfix.cache
 from robotfix import fs
 from robotfix.cache import _OWN_SUFFIXES, own_digest
+from robotfix.config import Config
+from robotfix.run import check_paths
 
 NODE = """\
 import rclpy
@@ -81,3 +86,26 @@ def test_own_digest_is_the_full_walks() -> None:
         if path.suffix in _OWN_SUFFIXES and "__pycache__" not in path.parts:
             digest.update(f"{path.relative_to(package)} {fs.stamp(path)}".encode())
     assert own_digest.__wrapped__() == digest.hexdigest()
+
+
+def test_a_cached_run_makes_each_entry_key_once(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A run names a file many times (its stat, its bytes, its entry): the cache
+    makes its key (`abspath`, which asks the cwd of a relative name) once."""
+    package = tmp_path / "src" / "demo"
+    (package / "demo").mkdir(parents=True)
+    (package / "package.xml").write_text("<package><name>demo</name></package>")
+    (package / "demo" / "__init__.py").write_text("")
+    (package / "demo" / "driver.py").write_text(NODE)
+    monkeypatch.chdir(tmp_path)
+    config = Config(root=tmp_path)
+    cold = check_paths([Path("src")], config, jobs=1, use_cache=True)
+    asked: list[object] = []
+    real = robotfix.cache.entry_key
+    monkeypatch.setattr(
+        robotfix.cache, "entry_key", lambda p: asked.append(p) or real(p)
+    )
+    warm = check_paths([Path("src")], config, jobs=1, use_cache=True)
+    assert warm.from_cache == len(warm.checked) == len(cold.checked) == 2
+    assert asked and len(asked) == len(set(asked))
