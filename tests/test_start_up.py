@@ -5,8 +5,6 @@ dataclasses cost an `exec` per generated method at import)."""
 from __future__ import annotations
 
 import hashlib
-import os
-import subprocess
 import sys
 from pathlib import Path
 
@@ -18,6 +16,9 @@ from robotfix import fs
 from robotfix.cache import _OWN_SUFFIXES, own_digest
 from robotfix.config import Config
 from robotfix.run import check_paths
+
+sys.path.insert(0, str(Path(__file__).parent))
+from test_cached_run import run_probe
 
 NODE = """\
 import rclpy
@@ -64,15 +65,7 @@ def test_a_check_of_python_alone_loads_no_other_commands_modules(
         f"print(sorted(m for m in {NOT_LOADED!r} if m in sys.modules))\n"
         "print('robotfix.analysis.interpreter' in sys.modules)\n"
     )
-    env = {**os.environ, "PYTHONPATH": str(Path(robotfix.__file__).parent.parent)}
-    done = subprocess.run(
-        [sys.executable, "-c", probe],
-        capture_output=True,
-        text=True,
-        env=env,
-        cwd=tmp_path,
-        check=False,
-    )
+    done = run_probe(probe, tmp_path)
     lines = done.stdout.strip().splitlines()
     assert lines[-2:] == ["[]", "True"], done.stdout + done.stderr
 
