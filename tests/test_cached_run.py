@@ -200,13 +200,18 @@ def test_a_cached_run_imports_no_analysis(tree: Path) -> None:
         "heavy = ('robotfix.analysis', 'lark', 'z3', 'pint', 'robotfix.paramcheck')\n"
         "print(sorted(m for m in sys.modules if m.startswith(heavy)))\n"
     )
+    done = run_probe(probe, tree)
+    assert done.stdout.strip().endswith("[]"), done.stdout + done.stderr
+
+
+def run_probe(probe: str, cwd: Path) -> subprocess.CompletedProcess[str]:
+    """`python -c probe` in a fresh process, with this checkout's robotfix."""
     env = {**os.environ, "PYTHONPATH": str(Path(robotfix.__file__).parent.parent)}
-    done = subprocess.run(
+    return subprocess.run(
         [sys.executable, "-c", probe],
         capture_output=True,
         text=True,
         env=env,
-        cwd=tree,
+        cwd=cwd,
         check=False,
     )
-    assert done.stdout.strip().endswith("[]"), done.stdout + done.stderr

@@ -16,6 +16,7 @@ import pytest
 import robotfix.cache
 import robotfix.discovery
 import robotfix.fs
+import robotfix.ros.graph.cpp
 import robotfix.run
 from robotfix.api import check_paths
 from robotfix.config import Config
@@ -708,9 +709,9 @@ def test_the_cpp_files_graphs_outlive_a_run_that_read_none(
     os.utime(monitor, (earlier, earlier))
     assert run(workspace, cache=True) == run(workspace, cache=False)
     parsed: list[object] = []
-    real = robotfix.graphcheck.read_cpp
+    real = robotfix.ros.graph.cpp.read_cpp  # (graphcheck imports it when it reads C++)
     monkeypatch.setattr(
-        robotfix.graphcheck,
+        robotfix.ros.graph.cpp,
         "read_cpp",
         lambda *a, **k: parsed.append(a) or real(*a, **k),
     )

@@ -550,12 +550,13 @@ def _analyze(
         FileContext,
     )
     from robotfix.analysis.interpreter import analyze_module
-    from robotfix.analysis.unitmemo import UnitMemo
     from robotfix.stubs.load import stub_set
 
     discharge = Discharger(memo)
     ctx = FileContext(source, catalog, discharge, resolver, discharge.budget)
-    if memo is not None:
+    if memo is not None:  # the editor's: a check never loads unitmemo
+        from robotfix.analysis.unitmemo import UnitMemo
+
         if not isinstance(memo.units, UnitMemo):
             memo.units = UnitMemo()
         ctx.unit_memo = memo.units

@@ -89,11 +89,20 @@ def own_digest() -> str:
     stamps, not their bytes (a run starts on every save): a pull or a reinstall
     writes the files, which moves their ctime."""
     package = Path(__file__).resolve().parent
+    found: list[tuple[str, ...]] = []  # each file's parts below the package
+    for folder, folders, files in os.walk(package):  # (no symlinked folder, as rglob)
+        folders[:] = [f for f in folders if f != "__pycache__"]  # bytecode: not read
+        where = Path(folder).relative_to(package).parts
+        found += [(*where, n) for n in files + folders if _own_suffix(n)]
     digest = hashlib.blake2b(digest_size=16)
-    for path in sorted(package.rglob("*")):
-        if path.suffix in _OWN_SUFFIXES and "__pycache__" not in path.parts:
-            digest.update(f"{path.relative_to(package)} {fs.stamp(path)}".encode())
+    for parts in sorted(found):  # the order of `sorted(Path, ...)`: by parts
+        stamp = fs.stamp(os.path.join(package, *parts))
+        digest.update(f"{'/'.join(parts)} {stamp}".encode())
     return digest.hexdigest()
+
+
+def _own_suffix(name: str) -> bool:
+    return os.path.splitext(name)[1] in _OWN_SUFFIXES
 
 
 def run_key(config: Config) -> str:
@@ -163,6 +172,7 @@ class ResultCache:
         self._traced: list[Any] = []  # the traces kept by this run (`_record`)
         self._dirty = False
         self._dropped = False  # `drop`: nothing of this cache is saved
+        self._keys: dict[object, str] = {}  # `_key`'s memory
         if not trusted:
             self._dirty = True
             return
@@ -238,6 +248,14 @@ class ResultCache:
             if isinstance(cpp, dict):
                 self._cpp = cpp  # each entry checked when read (`cpp_graph`)
 
+    def _key(self, path: str | os.PathLike[str]) -> str:
+        """`entry_key`, once a name: a run names a file many times (its stat, its
+        bytes, its entry), the cwd stays (a relative name's `abspath` asks it)."""
+        key = self._keys.get(path)
+        if key is None:
+            key = self._keys[path] = entry_key(path)
+        return key
+
     @property
     def _reads(self) -> dict[str, Any]:
         """The kept launch files' readings, parsed from their text when first
@@ -277,11 +295,11 @@ class ResultCache:
 
     def take(self, path: Path) -> bytes:
         """The bytes `sha` read (once), or the file's bytes now."""
-        data = self._bytes.pop(entry_key(path), None)
+        data = self._bytes.pop(self._key(path), None)
         return data if data is not None else fs.read_regular(path)
 
     def _stat_record(self, path: Path) -> list[Any] | None:
-        key = entry_key(path)
+        key = self._key(path)
         if key in self._seen_stats:
             return self._seen_stats[key]
         stamp = fs.stamp(path)
@@ -318,7 +336,7 @@ class ResultCache:
         when it differs, or is a folder or a file no run hashed."""
         if was[3:] != now[3:]:
             return None
-        known = self._stats.get(entry_key(name))
+        known = self._stats.get(self._key(name))
         if known is None or known[:STAMP] != was:
             return None
         record = self._stat_record(Path(name))
@@ -577,7 +595,7 @@ class ResultCache:
     def cpp_graph(self, path: Path, digest: str) -> tuple[bool, Any]:
         """(known, the endpoints dumped or None) of a C++ file whose bytes hash
         to `digest`, as `put_cpp` kept them."""
-        key = entry_key(path)
+        key = self._key(path)
         entry = self._cpp.get(key)
         if not (
             isinstance(entry, list)
@@ -590,7 +608,7 @@ class ResultCache:
         return True, entry[1]
 
     def put_cpp(self, path: Path, digest: str, graph: Any) -> None:
-        self._seen_cpp[entry_key(path)] = [digest, graph]
+        self._seen_cpp[self._key(path)] = [digest, graph]
         self._dirty = True
 
     def get(
@@ -641,7 +659,7 @@ class ResultCache:
 
     def _entry(self, path: Path) -> dict[str, Any] | None:
         """This file's entry, if it is exactly what `put` writes (checked once)."""
-        name = entry_key(path)
+        name = self._key(path)
         entry: Any = self._entries.get(name)
         if entry is None or self._valid.get(name) is not entry:
             if not isinstance(entry, dict) or not _valid_entry(entry):
@@ -676,7 +694,7 @@ class ResultCache:
             key[cut:] if key.startswith(own) else key: value
             for key, value in (modules or {}).items()
         }
-        self._entries[entry_key(path)] = {
+        self._entries[self._key(path)] = {
             "file": _file_key(data, path, config),
             "types": sorted(types),
             "catalog": fingerprint,
@@ -697,9 +715,9 @@ class ResultCache:
         """Forget files that were not part of this run although they lie under one
         of the `checked` paths (deleted, renamed, now excluded), and files that no
         longer exist anywhere."""
-        roots = {entry_key(p) for p in checked}
+        roots = {self._key(p) for p in checked}
         prefixes = tuple(r.rstrip(os.sep) + os.sep for r in roots)
-        seen = {entry_key(f) for f in files}
+        seen = {self._key(f) for f in files}
         stale = [
             name
             for name in self._entries
@@ -759,7 +777,7 @@ class ResultCache:
         of a file without an extension), at most `TRACED_BYTES` long (a rosbag
         without an extension is not read for it)."""
         for name, found in _traced_stamps(trace):
-            key = entry_key(name)
+            key = self._key(name)
             if key not in self._seen_stats:
                 known = self._stats.get(key)
                 if known is None or known[:STAMP] != found:
@@ -770,7 +788,7 @@ class ResultCache:
         traces: list[Any] = [self._discovery, self._stage]
         traces += [e for e in self._reads.values() if isinstance(e, list) and e[1:]]
         return {
-            entry_key(name)
+            self._key(name)
             for t in traces
             if t is not None
             for name, _ in _traced_stamps(t["trace"] if isinstance(t, dict) else t[1])

@@ -39,7 +39,7 @@ class Span:
         return Span(line, col, line, col + 1)
 
 
-@dataclass(frozen=True, order=True)
+@dataclass(frozen=True)  # never ordered: `api.finish` sorts by `sort_key` alone
 class Note:
     """Extra context for a diagnostic; a location when `path` is set."""
 

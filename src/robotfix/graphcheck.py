@@ -40,7 +40,6 @@ from robotfix.fs import UnreadableError, probe, read_regular, remembered
 from robotfix.ros.executables import CPP_SOURCE_SUFFIXES, cpp_executable_files
 from robotfix.ros.graph import qos as Q
 from robotfix.ros.graph.build import End, Graph, Started, build
-from robotfix.ros.graph.cpp import MAX_CPP_BYTES, read_cpp
 from robotfix.ros.graph.model import (
     ACTION_CLIENT,
     ACTION_SERVER,
@@ -91,6 +90,10 @@ def read_cpp_files(
     """Each C++ file's graph; a file that cannot be read has none. With the
     result cache, a file whose bytes are unchanged is not parsed again."""
     found: dict[str, FileGraph] = {}
+    if not paths:
+        return found  # (no C++: its reader, ros/graph/cpp.py, is never loaded)
+    from robotfix.ros.graph.cpp import MAX_CPP_BYTES, read_cpp
+
     for path in paths:
         digest = cache.sha(path) if cache is not None else None
         if cache is not None and digest is not None:
@@ -538,6 +541,8 @@ def _silenced(
     if config is not None and config.silences(diag.path, diag.code, diag.rule.name):
         return True
     if diag.path not in texts:
+        from robotfix.ros.graph.cpp import MAX_CPP_BYTES
+
         try:
             text = read_regular(diag.path, MAX_CPP_BYTES).decode("utf-8", "replace")
             texts[diag.path] = text.splitlines()

@@ -12,7 +12,7 @@ import math
 from collections.abc import Callable
 from fractions import Fraction
 from functools import partial
-from typing import TypeVar
+from typing import TYPE_CHECKING, TypeVar, cast
 
 from robotfix.analysis import (
     arith,
@@ -25,7 +25,6 @@ from robotfix.analysis import (
 from robotfix.analysis.collaborators import Collaborators
 from robotfix.analysis.constants import is_constant
 from robotfix.analysis.context import TERM_LIMIT, BudgetExceededError, FileContext
-from robotfix.analysis.flows import FlowLog, Where
 from robotfix.analysis.literals import float_term, int_value, str_value
 from robotfix.analysis.program import Program
 from robotfix.analysis.state import State
@@ -34,6 +33,9 @@ from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.units import Factors, Unit
 from robotfix.diagnostics import Span
+
+if TYPE_CHECKING:  # only `robotfix suggest` keeps flows: a check never loads them
+    from robotfix.analysis.flows import FlowLog, Where
 
 T = TypeVar("T")
 ARITH = {
@@ -133,8 +135,7 @@ class ExpressionEvaluator:
 
     def flow_log(self) -> FlowLog | None:
         """The file's log of where units flow (`robotfix suggest`), if one is kept."""
-        log = self.ctx.unit_flows
-        return log if isinstance(log, FlowLog) else None
+        return cast("FlowLog | None", self.ctx.unit_flows)  # set by api.py alone
 
     def note_sink(
         self,
@@ -145,9 +146,11 @@ class ExpressionEvaluator:
     ) -> None:
         """For `robotfix suggest`: `expr`, holding `value`, reached `unit`'s place
         (an `int` one if `integer`)."""
-        log, where = self.ctx.unit_flows, self.flow_where()  # (no call: it is hot)
-        if isinstance(log, FlowLog) and where is not None:
-            log.sink(where, expr, unit, value, integer=integer)
+        log = self.ctx.unit_flows  # (no call: it is hot)
+        if log is not None:
+            where = self.flow_where()
+            if where is not None:
+                cast("FlowLog", log).sink(where, expr, unit, value, integer=integer)
 
     # -- dispatch ------------------------------------------------------------
     def eval(self, node: ast.expr, state: State) -> Value:

@@ -19,6 +19,7 @@ import ast
 from collections.abc import Callable
 from fractions import Fraction
 from functools import partial
+from typing import TYPE_CHECKING, cast
 
 from robotfix import messages
 from robotfix.analysis import heap, imported
@@ -32,17 +33,18 @@ from robotfix.analysis.context import (
     Scope,
     build_scope,
 )
-from robotfix.analysis.flows import FlowLog, Where, array_kind
 from robotfix.analysis.index import index_of
 from robotfix.analysis.program import Function, Program, collect
 from robotfix.analysis.state import MAYBE, State
 from robotfix.analysis.stmtsyntax import augmented_op
-from robotfix.analysis.unitmemo import UnitMemo
 from robotfix.analysis.values import NONE, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import named_code, named_number
 from robotfix.interface_names import interface_class
+
+if TYPE_CHECKING:  # only `robotfix suggest` keeps flows: a check never loads them
+    from robotfix.analysis.flows import FlowLog, Where
 
 
 def analyze_module(ctx: FileContext) -> None:
@@ -52,8 +54,8 @@ def analyze_module(ctx: FileContext) -> None:
     ctx.constants = scan(tree, ctx.index, ctx.qualname, ":=" in ctx.source.text)
     module = build_scope(ctx, "module", "<module>", tree, None)
     program = collect(ctx, tree, module)
-    if isinstance(ctx.unit_flows, FlowLog):
-        ctx.unit_flows.program = program
+    if ctx.unit_flows is not None:  # a `FlowLog`, set by api.py alone
+        cast("FlowLog", ctx.unit_flows).program = program
     parts = Collaborators(ctx, program)  # one set for every body of the file
     top = Interpreter(ctx, program, module, {}, parts=parts)
     state = top.exec_block(tree.body, State())
@@ -71,11 +73,12 @@ def analyze_module(ctx: FileContext) -> None:
     seen: set[int] = set()
     # the editor's memo of items analysed by an earlier check (analysis/unitmemo.py)
     units = ctx.unit_memo
-    memo = (
-        units.begin(ctx, program, tree, statics)
-        if isinstance(units, UnitMemo)
-        else None
-    )
+    memo = None
+    if units is not None:  # only the editor keeps one: a check never loads unitmemo
+        from robotfix.analysis.unitmemo import UnitMemo
+
+        if isinstance(units, UnitMemo):
+            memo = units.begin(ctx, program, tree, statics)
     while pending or later:
         node, parent = pending.pop(0) if pending else later.pop(0)
         if id(node) not in seen:
@@ -254,6 +257,8 @@ class Interpreter(CompoundWalker):
         return state
 
     def flow_where(self) -> Where:
+        from robotfix.analysis.flows import Where  # asked only when flows are kept
+
         return Where(self.scope, self.function)
 
     def _record_flow(
@@ -265,6 +270,8 @@ class Interpreter(CompoundWalker):
         log = self.flow_log()
         if log is None:
             return
+        from robotfix.analysis.flows import array_kind
+
         decl: Refinement | None = None
         if isinstance(target, ast.Name):
             decl = self.decl_for(target.id)

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import os
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 from robotfix.ros.graph.model import (
     ACTION_CLIENT,
@@ -26,7 +27,9 @@ from robotfix.ros.graph.model import (
     FileGraph,
 )
 from robotfix.ros.graph.names import expand, namespace_of, remap_rule
-from robotfix.ros.launch.model import NodeEntry, Place
+
+if TYPE_CHECKING:  # annotations only: a check without launch files never loads them
+    from robotfix.ros.launch.model import NodeEntry, Place
 
 FAMILY = {
     PUBLISHER: "topic",

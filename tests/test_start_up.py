@@ -1,0 +1,104 @@
+"""The fixed cost of every `robotfix check` process (issue 25): a cold check loads
+no module only another command or another kind of file needs (each one's
+dataclasses cost an `exec` per generated method at import)."""
+
+from __future__ import annotations
+
+import hashlib
+import sys
+from pathlib import Path
+
+import pytest
+
+import robotfix
+import robotfix.cache
+from robotfix import fs
+from robotfix.cache import _OWN_SUFFIXES, own_digest
+from robotfix.config import Config
+from robotfix.run import check_paths
+
+sys.path.insert(0, str(Path(__file__).parent))
+from test_cached_run import run_probe
+
+NODE = """\
+import rclpy
+from rclpy.node import Node
+from geometry_msgs.msg import Twist
+
+
+class Driver(Node):
+    def __init__(self) -> None:
+        super().__init__("driver")
+        self.pub = self.create_publisher(Twist, "cmd_vel", 10)
+
+    def tick(self) -> None:
+        msg = Twist()
+        msg.linear.x = 0.5
+        self.pub.publish(msg)
+"""
+# the editor's memo (api.py), `robotfix suggest`'s flow log, and the readers of
+# launch files, parameter YAML and C++ sources
+NOT_LOADED = (
+    "robotfix.analysis.unitmemo",
+    "robotfix.analysis.skeleton",
+    "robotfix.analysis.unitreads",
+    "robotfix.analysis.flows",
+    "robotfix.ros.launch.model",
+    "robotfix.ros.paramfile",
+    "robotfix.ros.yamlfile",
+    "robotfix.ros.graph.cpp",
+)
+
+
+def test_a_check_of_python_alone_loads_no_other_commands_modules(
+    tmp_path: Path,
+) -> None:
+    package = tmp_path / "src" / "demo"
+    (package / "demo").mkdir(parents=True)
+    (package / "package.xml").write_text("<package><name>demo</name></package>")
+    (package / "demo" / "__init__.py").write_text("")
+    (package / "demo" / "driver.py").write_text(NODE)
+    probe = (
+        "import sys\n"
+        "from robotfix.cli import main\n"
+        f"main(['check', {str(tmp_path / 'src')!r}, '--no-cache', '-j', '1'])\n"
+        f"print(sorted(m for m in {NOT_LOADED!r} if m in sys.modules))\n"
+        "print('robotfix.analysis.interpreter' in sys.modules)\n"
+    )
+    done = run_probe(probe, tmp_path)
+    lines = done.stdout.strip().splitlines()
+    assert lines[-2:] == ["[]", "True"], done.stdout + done.stderr
+
+
+def test_own_digest_is_the_full_walks() -> None:
+    """The walk that skips `__pycache__` folders digests what the full walk did
+    (sorted as paths, each file's stamp), in the same order."""
+    package = Path(robotfix.__file__).resolve().parent
+    digest = hashlib.blake2b(digest_size=16)
+    for path in sorted(package.rglob("*")):
+        if path.suffix in _OWN_SUFFIXES and "__pycache__" not in path.parts:
+            digest.update(f"{path.relative_to(package)} {fs.stamp(path)}".encode())
+    assert own_digest.__wrapped__() == digest.hexdigest()
+
+
+def test_a_cached_run_makes_each_entry_key_once(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A run names a file many times (its stat, its bytes, its entry): the cache
+    makes its key (`abspath`, which asks the cwd of a relative name) once."""
+    package = tmp_path / "src" / "demo"
+    (package / "demo").mkdir(parents=True)
+    (package / "package.xml").write_text("<package><name>demo</name></package>")
+    (package / "demo" / "__init__.py").write_text("")
+    (package / "demo" / "driver.py").write_text(NODE)
+    monkeypatch.chdir(tmp_path)
+    config = Config(root=tmp_path)
+    cold = check_paths([Path("src")], config, jobs=1, use_cache=True)
+    asked: list[object] = []
+    real = robotfix.cache.entry_key
+    monkeypatch.setattr(
+        robotfix.cache, "entry_key", lambda p: asked.append(p) or real(p)
+    )
+    warm = check_paths([Path("src")], config, jobs=1, use_cache=True)
+    assert warm.from_cache == len(warm.checked) == len(cold.checked) == 2
+    assert asked and len(asked) == len(set(asked))
