@@ -33,7 +33,7 @@ MESSAGE_LIKE = frozenset({"msg", "unknown", "object"})
 _T = TypeVar("_T", bound=Any)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)  # made by the thousand: see A.slot_setter
 class Items:
     """What holds of every element of a sequence, beyond the `elements` a display
     names: their kind, a predicate `each` over `_`, and a predicate `size` over `_`
@@ -50,6 +50,29 @@ class Items:
     # the elements' type, when the type model gives one (`list[Driver]`,
     # `dict[str, Driver]`: `analysis/types.py`) and they are not messages
     of: Type | None = None
+
+    def __init__(
+        self,
+        kind: str = "unknown",
+        each: A.Expr = A.TRUE,
+        size: A.Expr = A.TRUE,
+        kept: Kept | None = None,
+        sites: tuple[object, ...] | None = None,
+        message: tuple[str, str] | None = None,
+        of: Type | None = None,
+    ) -> None:
+        _SET_KIND(self, kind)
+        _SET_EACH(self, each)
+        _SET_SIZE(self, size)
+        _SET_KEPT(self, kept)
+        _SET_SITES(self, sites)
+        _SET_MESSAGE(self, message)
+        _SET_OF(self, of)
+
+
+_SET_KIND, _SET_EACH, _SET_SIZE, _SET_KEPT, _SET_SITES, _SET_MESSAGE, _SET_OF = (
+    A.slot_setter(Items, name) for name in Items.__slots__
+)
 
 
 @dataclass(frozen=True)
