@@ -45,3 +45,12 @@ def test_a_value_is_copied_with_its_changes() -> None:
 
 def test_other_dataclasses_go_to_dataclasses_replace() -> None:
     assert replace(Items("int"), kind="float") == Items("float")
+
+
+def test_every_slot_of_a_value_is_copied() -> None:
+    # `replace` writes the slots out: one added to Value must be added there
+    marks = [object() for _ in Value.__slots__]
+    value = Value(*marks)  # type: ignore[arg-type]
+    copy = replace(value)
+    assert [getattr(copy, name) for name in Value.__slots__] == marks
+

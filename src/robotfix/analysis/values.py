@@ -10,7 +10,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from dataclasses import replace as _replace
-from operator import attrgetter
 from typing import TYPE_CHECKING, Any, TypeVar
 
 from robotfix.annotations import ast as A
@@ -256,17 +255,36 @@ class Value:
 
 
 NONE = Value("none")
-# every field of a Value, in the order of its `__init__`'s arguments (its slots)
-_ALL_FIELDS = attrgetter(*Value.__slots__)
 
 
 def replace(obj: _T, /, **changes: object) -> _T:
-    """`dataclasses.replace`, about 9x faster for a Value (its fields read in one
-    call, passed to `__init__` in order; Value has no `__post_init__` and every
-    field is an `__init__` argument)."""
+    """`dataclasses.replace`, about 9x faster for a Value (its fields read one by
+    one, passed to `__init__` in order; Value has no `__post_init__` and every
+    field is an `__init__` argument). The fields are read as attributes written
+    out, not with an `attrgetter` of the slots' names, which looks each name up
+    (7,000 instructions a copy, 4,900 so); tests/unit/test_value_replace.py
+    checks that every slot is read."""
     if obj.__class__ is not Value:
         return _replace(obj, **changes)
-    new = Value(*_ALL_FIELDS(obj))
+    o: Value = obj
+    new = Value(
+        o.kind,
+        o.term,
+        o.unit,
+        o.literal,
+        o.ref,
+        o.name,
+        o.elements,
+        o.keys,
+        o.uninit,
+        o.factors,
+        o.default_of,
+        o.rad_free,
+        o.items,
+        o.frame,
+        o.conversion,
+        o.choices,
+    )
     for name, value in changes.items():
         setattr(new, name, value)
     return new  # type: ignore[return-value]
