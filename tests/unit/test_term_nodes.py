@@ -29,5 +29,7 @@ def test_the_many_made_terms_are_slotted_frozen_dataclasses() -> None:
         assert pickle.loads(pickle.dumps(term)) == term
     assert A.Sym(7, "real") != A.Sym(7, "int")
     assert A.Sym(7, "real") != (7, "real")
-    assert dataclasses.replace(A.Binary("+", sym, one), op="-") == A.Binary("-", sym, one)
+    assert dataclasses.replace(A.Binary("+", sym, one), op="-") == A.Binary(
+        "-", sym, one
+    )
     assert repr(A.Unary("-", sym)) == "Unary(op='-', operand=Sym(ident=7, sort='real'))"

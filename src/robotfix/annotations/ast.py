@@ -14,7 +14,6 @@ from fractions import Fraction
 
 from robotfix.annotations.numbers import shown_as_infinity
 
-
 # The nodes the analysis makes by the thousand (a symbol per unknown value, a sum
 # or a test per operation, a literal) are slotted, and their `__init__` sets each
 # slot through the slot's own setter: a frozen dataclass's generated one calls
