@@ -7,7 +7,7 @@ import dataclasses
 
 import pytest
 
-from robotfix.analysis.values import Items, Uninit, Value, replace
+from robotfix.analysis.values import Items, Uninit, Value, replace, unknown
 from robotfix.annotations import ast as A
 
 
@@ -45,3 +45,20 @@ def test_a_value_is_copied_with_its_changes() -> None:
 
 def test_other_dataclasses_go_to_dataclasses_replace() -> None:
     assert replace(Items("int"), kind="float") == Items("float")
+
+
+def test_every_slot_of_a_value_is_copied() -> None:
+    # `replace` writes the slots out: one added to Value must be added there
+    marks = [object() for _ in Value.__slots__]
+    value = Value(*marks)  # type: ignore[arg-type]
+    copy = replace(value)
+    assert [getattr(copy, name) for name in Value.__slots__] == marks
+
+
+def test_an_unknown_is_made_as_value_makes_it() -> None:
+    sym = A.Sym(4, "real")
+    made, plain = unknown("float", sym, None), Value("float", sym, None)
+    assert type(made) is Value
+    assert [getattr(made, n) for n in Value.__slots__] == [
+        getattr(plain, n) for n in Value.__slots__
+    ]

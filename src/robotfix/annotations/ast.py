@@ -8,14 +8,20 @@ No lark types, no z3 types live here.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
 
 from robotfix.annotations.numbers import shown_as_infinity
 
+# The nodes the analysis makes by the thousand (a symbol per unknown value, a sum
+# or a test per operation, a literal) are slotted, and their `__init__` sets each
+# slot through the slot's own setter: a frozen dataclass's generated one calls
+# object.__setattr__ per field (a Sym 0.45 us, 0.27 us so). Frozen, compared and
+# hashed as the others.
 
-@dataclass(frozen=True)
+
+@dataclass(frozen=True, slots=True)
 class Num:
     value: Fraction
     is_int: bool
@@ -24,16 +30,25 @@ class Num:
     # number, as in the declaring module; not part of equality (a display only)
     label: str | None = field(default=None, compare=False, repr=False)
 
+    def __init__(self, value: Fraction, is_int: bool, label: str | None = None) -> None:
+        _NUM_VALUE(self, value)
+        _NUM_IS_INT(self, is_int)
+        _NUM_LABEL(self, label)
+
 
 @dataclass(frozen=True)
 class Bool:
     value: bool
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Str:
     value: str
     label: str | None = field(default=None, compare=False, repr=False)  # as Num's
+
+    def __init__(self, value: str, label: str | None = None) -> None:
+        _STR_VALUE(self, value)
+        _STR_LABEL(self, label)
 
 
 @dataclass(frozen=True)
@@ -44,25 +59,53 @@ class Name:
     pos: int = field(default=0, compare=False)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Sym:
     """A solver symbol introduced by the analysis; `sort` is int, real, bool or str."""
 
     ident: int
     sort: str
 
+    def __init__(self, ident: int, sort: str) -> None:
+        _SYM_IDENT(self, ident)
+        _SYM_SORT(self, sort)
 
-@dataclass(frozen=True)
+
+@dataclass(frozen=True, slots=True)
 class Unary:
     op: str  # "-" or "not"
     operand: Expr
 
+    def __init__(self, op: str, operand: Expr) -> None:
+        _UNARY_OP(self, op)
+        _UNARY_OPERAND(self, operand)
 
-@dataclass(frozen=True)
+
+@dataclass(frozen=True, slots=True)
 class Binary:
     op: str  # + - * / // % and or == != < <= > >=  (`//`, `%`: Python's, floored)
     left: Expr
     right: Expr
+
+    def __init__(self, op: str, left: Expr, right: Expr) -> None:
+        _BINARY_OP(self, op)
+        _BINARY_LEFT(self, left)
+        _BINARY_RIGHT(self, right)
+
+
+def slot_setter(cls: type, name: str) -> Callable[[object, object], None]:
+    """The setter of `cls`'s slot `name`, which a frozen instance's setattr refuses:
+    what the `__init__` of a frozen slotted dataclass made by the thousand calls."""
+    return getattr(cls, name).__set__  # type: ignore[no-any-return]
+
+
+_NUM_VALUE, _NUM_IS_INT = slot_setter(Num, "value"), slot_setter(Num, "is_int")
+_NUM_LABEL = slot_setter(Num, "label")
+_STR_VALUE, _STR_LABEL = slot_setter(Str, "value"), slot_setter(Str, "label")
+_SYM_IDENT, _SYM_SORT = slot_setter(Sym, "ident"), slot_setter(Sym, "sort")
+_UNARY_OP, _UNARY_OPERAND = slot_setter(Unary, "op"), slot_setter(Unary, "operand")
+_BINARY_OP, _BINARY_LEFT = slot_setter(Binary, "op"), slot_setter(Binary, "left")
+_BINARY_RIGHT = slot_setter(Binary, "right")
 
 
 @dataclass(frozen=True)
