@@ -4,6 +4,7 @@ the tests do, stops the benchmark instead of being reported as a time."""
 from __future__ import annotations
 
 import os
+import shutil
 import sys
 from pathlib import Path
 
@@ -13,6 +14,7 @@ from robotfix.api import check_paths
 from robotfix.config import Config
 
 sys.path.insert(0, str(Path(__file__).parent.parent / "benchmarks"))
+import instruction_ratio
 import peers
 import seed_programs
 import seeds
@@ -49,6 +51,16 @@ def _broken_project(tmp_path: Path) -> Path:
     (tmp_path / "pyproject.toml").write_text("[tool.robotfix]\nmsg-paths = 3\n")
     (tmp_path / "node.py").write_text("x = 1\n")
     return tmp_path / "node.py"
+
+
+@pytest.mark.skipif(shutil.which("valgrind") is None, reason="needs valgrind")
+def test_instruction_ratio_does_not_count_a_failed_run(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    node = _broken_project(tmp_path)
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(SystemExit, match="exited 2: not counted"):
+        instruction_ratio.main([str(node.parent)])
 
 
 def test_peers_does_not_time_a_failed_run(tmp_path: Path) -> None:
