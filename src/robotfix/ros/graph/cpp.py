@@ -302,7 +302,6 @@ class _File:
         self.functions: list[Any] = []  # the function definitions (`callbacks`)
         self._callbacks: dict[str, str] | None = None
         self.handles: dict[str, str] = {}  # NodeHandle variable -> its namespace
-        self.calls: list[tuple[Any, str]] = []  # (call node, enclosing class)
         self.ros1 = False
         # a descriptor may make a declaration's type dynamic: then none is certain
         self.dynamic = b"dynamic_typing" in data
