@@ -122,3 +122,32 @@ def test_the_demand_bound_tells_plain_statements_from_carrying_ones(
     assert oracle.spared["Assign"] == 0 < oracle.spent["Assign"]
     assert oracle.carrying == 3  # msg = Twist(), msg.linear.x = ..., publish
     assert 0 < oracle.functions["plain"] < oracle.functions["all"]
+
+
+def test_the_demand_rule_keeps_what_feeds_a_statement_that_matters() -> None:
+    """benchmarks/demand_rule.py's syntactic slice: a value bound for a message field
+    is kept with the field's store (backward), a value read from a parameter is kept
+    (forward), a count only a plain statement reads is spared, and `--generous`
+    spares more (it drops the parameters and the module's names as sources)."""
+    import ast
+
+    import demand_rule
+
+    tree = ast.parse(
+        "from geometry_msgs.msg import Twist\n"
+        "def tick(self, speed):\n"
+        "    n = 0\n"  # read only by the plain line below
+        "    n += 1\n"
+        "    x = 0.5\n"  # feeds msg.linear.x
+        "    y = speed * 2\n"  # reads a parameter
+        "    msg = Twist()\n"
+        "    msg.linear.x = x\n"
+        "    self.pub.publish(msg)\n"
+    )
+    function = tree.body[1]
+    assert isinstance(function, ast.FunctionDef)
+    lines = {id(s): s.lineno for s in ast.walk(function) if isinstance(s, ast.stmt)}
+    plain = demand_rule.Rule(generous=False).plan(function, {"Twist"})
+    assert sorted(lines[k] for k in plain) == [3, 4]
+    generous = demand_rule.Rule(generous=True).plan(function, {"Twist"})
+    assert sorted(lines[k] for k in generous) == [3, 4, 6]
