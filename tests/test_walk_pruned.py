@@ -12,6 +12,7 @@ from pathlib import Path
 import pytest
 
 from robotfix.analysis.constants import _only_read
+from robotfix.analysis.containers import shared_names, shares
 from robotfix.astwalk import Mentions, names_under
 from robotfix.source import SourceFile
 
@@ -76,3 +77,44 @@ def test_the_walk_skips_what_cannot_name_the_table() -> None:
     assert {n.id for _, n in names_under(tree)} == {"T", "x", "y"}
     statements = [p for p, _ in names_under(tree, Mentions(text.split("\n"), {"T"}))]
     assert not any(isinstance(p, ast.Assign) and p.lineno == 4 for p in statements)
+
+
+def _scopes(tree: ast.Module) -> list[ast.AST]:
+    functions = (ast.FunctionDef, ast.AsyncFunctionDef)
+    return [tree, *(n for n in ast.walk(tree) if isinstance(n, functions))]
+
+
+def test_whether_a_list_is_shared_is_the_full_walks_answer() -> None:
+    for source in _sources():
+        assert source.tree is not None
+        for scope in _scopes(source.tree):
+            body = scope.body  # type: ignore[attr-defined]
+            full = shared_names(body, lent=set())
+            for name in _names(scope)[::4]:
+                found = shares(scope, name, source.lines)
+                assert found == (name in full), (source.path, name)
+
+
+def test_a_list_named_in_a_decorator_or_a_nested_function_is_shared() -> None:
+    text = (
+        "def f():\n"
+        "    xs = []\n"
+        "    ys = []\n"
+        "    zs = []\n"
+        "    @keep(xs)\n"
+        "    def g():\n"
+        "        return len(ys)\n"
+        "    for z in zs:\n"
+        "        print(z)\n"
+        "    ws = []\n"
+        "    for w in ws:\n"
+        "        print(w)\n"
+        "    other = \uff57s\n"  # a fullwidth `w`: the name `ws`, on a line to walk
+    )
+    scope = ast.parse(text).body[0]
+    lines = text.split("\n")
+    assert shares(scope, "xs", lines)  # handed to a decorator
+    assert shares(scope, "ys", lines)  # read in a nested function
+    assert not shares(scope, "zs", lines)  # only iterated
+    assert shares(scope, "ws", lines)  # bound to another name
+    assert "ws" in shared_names(scope.body)  # type: ignore[attr-defined]

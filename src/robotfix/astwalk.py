@@ -179,7 +179,7 @@ class Mentions:
         self.hits = hits
 
     def __call__(self, node: ast.AST) -> bool:
-        end = getattr(node, "end_lineno", None)
+        end: int | None = getattr(node, "end_lineno", None)
         if end is None or end > self.last:  # (a node made, not parsed: keep it)
             return True
         start: int = node.lineno  # type: ignore[attr-defined]
