@@ -10,7 +10,8 @@ walker looks for (they are read from their parent: `node.ctx`, `node.op`).
 from __future__ import annotations
 
 import ast
-from collections.abc import Iterable, Iterator
+import re
+from collections.abc import Callable, Collection, Iterable, Iterator
 from typing import Any
 
 # `try` statements: `try ... except*` (`ast.TryStar`) is Python 3.11's; the package
@@ -92,9 +93,12 @@ def select(
     return found
 
 
-def names_under(root: ast.AST) -> list[tuple[ast.AST, ast.Name]]:
+def names_under(
+    root: ast.AST, keep: Callable[[ast.AST], bool] | None = None
+) -> list[tuple[ast.AST, ast.Name]]:
     """Every name under `root`, with its parent (names and constants are never
-    stacked: they hold no node)."""
+    stacked: they hold no node). Given `keep` (a `Mentions`), only under the
+    statements it keeps."""
     found: list[tuple[ast.AST, ast.Name]] = []
     todo = [root]
     pop, append, add = todo.pop, todo.append, found.append
@@ -109,7 +113,11 @@ def names_under(root: ast.AST) -> list[tuple[ast.AST, ast.Name]]:
         node = pop()
         for field in known.get(node.__class__) or fields(node.__class__):
             value = getattr(node, field, None)
-            for child in value if value.__class__ is list else (value,):
+            if value.__class__ is not list:
+                value = (value,)
+            elif keep is not None and field in BLOCK_FIELDS:
+                value = [s for s in value if keep(s)]
+            for child in value:
                 kind = child.__class__
                 if kind is name_class:
                     add((node, child))
@@ -127,3 +135,66 @@ def dotted(node: ast.expr) -> str | None:
     if not isinstance(node, ast.Name):
         return None
     return ".".join([node.id, *reversed(parts)])
+
+
+# the fields whose list holds statements (or `except` handlers); a `body` that is
+# not a list is an expression's (`lambda`, `a if c else b`)
+BLOCK_FIELDS = frozenset({"body", "orelse", "finalbody", "handlers"})
+
+
+class Mentions:
+    """Which statements of a tree may hold a name among `words`: those whose lines
+    (decorators included) hold one of the words as text, or a character that is not
+    ASCII (Python normalizes identifiers: a ligature or a fullwidth letter in the
+    source is a plain letter in the name). A walk that keeps only these skips what
+    cannot hold such a name.
+    `lines` are the tree's source lines (`SourceFile.lines`); only lines `first` to
+    `last` are read, and a statement not within them is kept."""
+
+    def __init__(
+        self,
+        lines: list[str],
+        words: Collection[str],
+        first: int = 1,
+        last: int | None = None,
+    ) -> None:
+        self.first = first
+        self.last = len(lines) if last is None else min(last, len(lines))
+        # hits[i]: how many of the first i lines read may hold one of the words
+        hits = [0]
+        count = 0
+        read = lines[first - 1 : self.last]
+        if len(words) == 1:
+            (word,) = words
+            for line in read:
+                if word in line or not line.isascii():
+                    count += 1
+                hits.append(count)
+        else:
+            search = re.compile("|".join(map(re.escape, sorted(words)))).search
+            for line in read:
+                if not line.isascii() or search(line):
+                    count += 1
+                hits.append(count)
+        self.hits = hits
+
+    def __call__(self, node: ast.AST) -> bool:
+        end: int | None = getattr(node, "end_lineno", None)
+        if end is None or end > self.last:  # (a node made, not parsed: keep it)
+            return True
+        start: int = node.lineno  # type: ignore[attr-defined]
+        for decorator in getattr(node, "decorator_list", ()):
+            start = min(start, decorator.lineno)
+        if start < self.first:
+            return True
+        return self.hits[end - self.first + 1] > self.hits[start - self.first]
+
+    @staticmethod
+    def of(lines: list[str], words: Collection[str], scope: ast.AST) -> Mentions:
+        """Those of the statements of `scope` (a parsed function, class or module)."""
+        if isinstance(scope, ast.Module):
+            return Mentions(lines, words)
+        first = scope.lineno  # type: ignore[attr-defined]
+        for decorator in getattr(scope, "decorator_list", ()):
+            first = min(first, decorator.lineno)
+        return Mentions(lines, words, first, getattr(scope, "end_lineno", None))

@@ -93,7 +93,7 @@ class Binder(CallEvaluator):
         self.nested: dict[str, ast.AST] = {}  # functions defined in this body
         # which calls end a path, may end it, or only read a message
         self.facts = CallFacts(ctx, program, scope, function, self.nested)
-        self._shared: set[str] | None = None  # names whose lists may be shared
+        self._shared: dict[str, bool] = {}  # local list -> whether it may be shared
         # per loop being run, innermost last: the states at its `break`s, kept only
         # while a loop's first iteration is run again (`_first_breaks`), else None
         self._breaking: list[list[State] | None] = []
@@ -425,11 +425,12 @@ class Binder(CallEvaluator):
         """A local list as read: what it holds element by element only if no other
         name, attribute or callee can change it (else what its declaration says)."""
         if self.scope.kind != "class":
-            if self._shared is None:  # one walk of the body, at the first such read
-                self._shared = containers.shared_names(
-                    getattr(self.scope.node, "body", []), lent=set()
+            shared = self._shared.get(name)
+            if shared is None:  # a walk of what names it, at its first read
+                shared = self._shared[name] = containers.shares(
+                    self.scope.node, name, self.ctx.source.lines
                 )
-            if name not in self._shared:  # (nor lent to a call yet: `lends`)
+            if not shared:  # (nor lent to a call yet: `lends`)
                 if self.follows_lists():
                     return value
                 # its elements do not matter here, its length (truth) may

@@ -29,7 +29,7 @@ from dataclasses import dataclass, field
 from robotfix.analysis.index import FileIndex
 from robotfix.analysis.values import CONTAINERS, Value
 from robotfix.annotations import ast as A
-from robotfix.astwalk import children, names_under
+from robotfix.astwalk import Mentions, children, names_under
 
 FINAL = frozenset({"typing.Final", "typing_extensions.Final"})
 # Methods and builtins that only read a dict or list they are given.
@@ -103,8 +103,11 @@ def scan(
     index: FileIndex,
     qualname: Callable[[ast.expr], str | None],
     walrus: bool = True,
+    lines: list[str] | None = None,
 ) -> ConstantNames:
-    """`walrus`: whether the source may contain `:=` (False makes the scan cheaper)."""
+    """`walrus`: whether the source may contain `:=` (False makes the scan cheaper);
+    `lines`: the tree's source lines, if known (the uses of a table are looked for
+    only in the statements whose lines name it)."""
     found = ConstantNames()
     for scope_id, names in index.scopes.items():
         if scope_id != id(tree):
@@ -119,7 +122,7 @@ def scan(
         and _literal_display(value)
     }
     if tables:
-        found.read_only = _only_read(tree, tables)
+        found.read_only = _only_read(tree, tables, lines)
     classes = [n for n in tree.body if isinstance(n, ast.ClassDef)]
     if classes:
         _scan_classes(found, classes, index, qualname, walrus)
@@ -307,11 +310,15 @@ def _literal_display(node: ast.expr) -> bool:
     return True
 
 
-def _only_read(tree: ast.Module, names: set[str]) -> set[str]:
-    """Those of `names` whose every use reads the dict or list and nothing else."""
+def _only_read(
+    tree: ast.Module, names: set[str], lines: list[str] | None = None
+) -> set[str]:
+    """Those of `names` whose every use reads the dict or list and nothing else
+    (given the source `lines`, only statements that name one are walked)."""
+    keep = Mentions(lines, names) if lines is not None else None
     changed = {
         name.id
-        for parent, name in names_under(tree)
+        for parent, name in names_under(tree, keep)
         if name.id in names and not _reads(parent, name)
     }
     return names - changed

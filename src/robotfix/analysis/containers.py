@@ -21,7 +21,7 @@ from fractions import Fraction
 from robotfix.analysis.values import SEQUENCES, Items, Kept, Value
 from robotfix.annotations import ast as A
 from robotfix.annotations.units import Unit
-from robotfix.astwalk import FIELDS, fields
+from robotfix.astwalk import BLOCK_FIELDS, FIELDS, Mentions, fields
 
 SELF = A.Name("_")
 MAX_SPELLED = 32  # elements named one by one in `each` (`_ == a or _ == b ...`)
@@ -488,7 +488,10 @@ _NESTED = frozenset({ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.Clas
 
 
 def shared_names(
-    body: list[ast.stmt], changes: bool = False, lent: set[str] | None = None
+    body: list[ast.stmt],
+    changes: bool = False,
+    lent: set[str] | None = None,
+    keep: Mentions | None = None,
 ) -> set[str]:
     """Names in statements `body` (a function's or module's) that may share their
     list with another name, attribute, field or callee: used other than by a read,
@@ -496,17 +499,25 @@ def shared_names(
     `return`. A use inside a nested function or class counts as shared (it may run
     at any time). With `changes`, a change it follows counts too (for a loop).
     Given `lent`, names shared only by being passed to calls (`g(xs)`) go there
-    instead: they hold what they hold up to the first such call (`lends`)."""
+    instead: they hold what they hold up to the first such call (`lends`).
+    Given `keep`, only the statements it keeps are looked at: the answer holds
+    for the names it looks for (`shares`)."""
     shared: set[str] = set()
     passed: set[str] = set()
-    todo: list[tuple[ast.AST, bool]] = [(n, n.__class__ in _NESTED) for n in body]
+    todo: list[tuple[ast.AST, bool]] = [
+        (n, n.__class__ in _NESTED) for n in body if keep is None or keep(n)
+    ]
     name_class, load_class = ast.Name, ast.Load
     while todo:
         node, nested = todo.pop()
         # the fields that may hold a node (no name string, context or operator)
         for field in FIELDS.get(node.__class__) or fields(node.__class__):
             value = getattr(node, field, None)
-            for child in value if value.__class__ is list else (value,):
+            if value.__class__ is not list:
+                value = (value,)
+            elif keep is not None and field in BLOCK_FIELDS:
+                value = [s for s in value if keep(s)]
+            for child in value:
                 kind = child.__class__
                 if kind is name_class:
                     if child.ctx.__class__ is load_class and (  # type: ignore[union-attr]
@@ -523,6 +534,15 @@ def shared_names(
     if lent is not None:
         lent |= passed - shared
     return shared
+
+
+def shares(scope: ast.AST, name: str, lines: list[str]) -> bool:
+    """Whether the local list `name` of `scope` (a function or the module) may be
+    shared (`shared_names` of its body, `lent` apart), looked for only in the
+    statements whose source `lines` may name it."""
+    body = getattr(scope, "body", [])
+    keep = Mentions.of(lines, (name,), scope)
+    return name in shared_names(body, lent=set(), keep=keep)
 
 
 def lends(call: ast.Call) -> list[str]:

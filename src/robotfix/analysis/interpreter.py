@@ -51,7 +51,10 @@ def analyze_module(ctx: FileContext) -> None:
     tree = ctx.source.tree
     assert tree is not None
     ctx.record_imports(index_of(tree))
-    ctx.constants = scan(tree, ctx.index, ctx.qualname, ":=" in ctx.source.text)
+    source = ctx.source
+    ctx.constants = scan(
+        tree, ctx.index, ctx.qualname, ":=" in source.text, source.lines
+    )
     module = build_scope(ctx, "module", "<module>", tree, None)
     program = collect(ctx, tree, module)
     if ctx.unit_flows is not None:  # a `FlowLog`, set by api.py alone

@@ -504,7 +504,8 @@ class Walker:
         tree = self.source.tree
         if tree is None:
             return {}
-        names = scan(tree, self.index, self.qualname, ":=" in self.source.text)
+        source = self.source
+        names = scan(tree, self.index, self.qualname, ":=" in source.text, source.lines)
         return {
             cls.name: constants_of(
                 cls.body,

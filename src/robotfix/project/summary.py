@@ -640,7 +640,9 @@ def summarize(
     path = source.path
     ctx = FileContext(source, catalog, discharge, resolver)
     ctx.record_imports(index_of(tree))
-    ctx.constants = scan(tree, ctx.index, ctx.qualname, ":=" in source.text)
+    ctx.constants = scan(
+        tree, ctx.index, ctx.qualname, ":=" in source.text, source.lines
+    )
     summary = ModuleSummary(name, path)
     source_of = (name, path)
     try:
