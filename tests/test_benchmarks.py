@@ -151,3 +151,29 @@ def test_the_demand_rule_keeps_what_feeds_a_statement_that_matters() -> None:
     assert sorted(lines[k] for k in plain) == [3, 4]
     generous = demand_rule.Rule(generous=True).plan(function, {"Twist"})
     assert sorted(lines[k] for k in generous) == [3, 4, 6]
+
+
+def test_parsed_twice_names_who_parses_a_file_again(tmp_path: Path) -> None:
+    """benchmarks/parsed_twice.py counts a module checked before the file that
+    imports it: its check parses it, then its summary does (the run keeps no
+    checked tree: docs/performance.md, fix/parse8). A renamed parser shows as
+    another name, never as nothing parsed again."""
+    import parsed_twice
+
+    package = tmp_path / "pkg"
+    package.mkdir()
+    (package / "__init__.py").write_text("")
+    (package / "a_limits.py").write_text("MAX_SPEED = 0.5\n")
+    (package / "b_node.py").write_text(
+        "import rclpy\nfrom geometry_msgs.msg import Twist\n"
+        "from pkg.a_limits import MAX_SPEED\n\n\n"
+        "def command(pub):\n    msg = Twist()\n    msg.linear.x = MAX_SPEED\n"
+        "    pub.publish(msg)\n"
+    )
+    with parsed_twice.counting() as (again, sizes):
+        check_paths([tmp_path], Config(root=tmp_path), jobs=1)
+    limits = str((package / "a_limits.py").resolve())
+    assert sizes[limits] == len("MAX_SPEED = 0.5\n")
+    (first, second), size = again.most_common(1)[0]
+    assert size == sizes[limits]
+    assert "run._check_one" in first and "summary._build" in second
