@@ -7,9 +7,7 @@ forget what they may change in the messages and instances they are handed.
 from __future__ import annotations
 
 import ast
-from collections.abc import Iterable
 from functools import partial
-from itertools import chain
 
 from robotfix.analysis import containers, frames, heap, imported, inline
 from robotfix.analysis.builtincalls import BuiltinEvaluator
@@ -282,10 +280,15 @@ class CallEvaluator(BuiltinEvaluator):
     ) -> None:
         """Unknown code may change the messages and instances it is handed. (Most
         calls change nothing: a value the walk never read a version of, which
-        `State.changed` leaves alone, is passed over without the call.)"""
+        `State.changed` leaves alone, is passed over without the call. A call is
+        met about once: loops here, not comprehensions or helpers, each of which
+        costs a frame.)"""
         env = state.env
-        given = node.args
-        if given:
+        names: list[ast.Name] = []
+        for given in node.args:
+            if given.__class__ is ast.Name:
+                names.append(given)  # type: ignore[arg-type]
+        if names:
             for lent_name in containers.lends(node):  # the callee may keep, change it
                 lent = env.get(lent_name)
                 if isinstance(lent, Value) and lent.kind == "list":
@@ -296,28 +299,24 @@ class CallEvaluator(BuiltinEvaluator):
         ):
             return
         func = node.func
-        attr = func.attr if func.__class__ is ast.Attribute else ""
+        attr = func.attr if func.__class__ is ast.Attribute else ""  # type: ignore[attr-defined]
         if attr in PARAMETER_CALLS:
             return  # rclpy and rospy change no attribute of the node's class
-        if frames.followed(self.ctx, node):
+        if self.ctx.frame_facts is not None and frames.followed(self.ctx, node):
             return  # tf2 reads the stamped values and transforms it is given
-        pairs: Iterable[tuple[Value, ast.expr]] = zip(args, given, strict=False)
-        if kwargs:
-            keywords = {k.arg: k.value for k in node.keywords}
-            pairs = chain(pairs, ((v, keywords[k]) for k, v in kwargs.items()))
         watched = state.shared.watched  # (`State.changed` changes only these)
-        for value, expr in pairs:
+        values = [*args, *kwargs.values()] if kwargs else args
+        for index, value in enumerate(values):
             term = value.term
             if value.kind == "msg" and value.ref is not None:
-                if not self.only_reads(node, expr):
+                if not self.only_reads(node, _argument(node, kwargs, index)):
                     heap.havoc(state, value.ref)
             elif (
                 type(term) is A.Sym and term.ident in watched and value.kind in MUTABLE
             ):
                 state.changed(value)
-        names = [a for a in given if a.__class__ is ast.Name] if given else []
         if func.__class__ is ast.Attribute:
-            owner = func.value
+            owner = func.value  # type: ignore[attr-defined]
             if owner.__class__ is ast.Name:
                 # a method of this file's class may change `self.x`; rclpy's and
                 # rospy's own (`self.get_clock()`) do not touch its attributes
@@ -616,3 +615,12 @@ class CallEvaluator(BuiltinEvaluator):
                 return f":{receiver.id}"
             return f"{self._class_name() or ''}:{scope.name}/{receiver.id}"
         return f"{self._class_name()}:{dotted(receiver)}"
+
+
+def _argument(node: ast.Call, kwargs: dict[str | None, Value], index: int) -> ast.expr:
+    """The expression of a call's `index`-th argument value: its positional
+    arguments, then its keyword arguments in the order of `kwargs`."""
+    if index < len(node.args):
+        return node.args[index]
+    key = list(kwargs)[index - len(node.args)]
+    return {k.arg: k.value for k in node.keywords}[key]
