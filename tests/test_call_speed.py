@@ -10,6 +10,8 @@ import pytest
 
 from robotfix.analysis.calls import _argument
 from robotfix.analysis.values import Value
+from robotfix.api import check_source
+from robotfix.config import Config
 
 CALLS = [
     "f()",
@@ -48,3 +50,29 @@ def test_argument_pairs_each_value_with_its_expression(text: str) -> None:
     reference = _reference(node, args, kwargs)
     assert found == reference
     assert all(a is b for (_, a), (_, b) in zip(found, reference, strict=True))
+
+
+def test_a_method_of_an_unknown_value_is_checked_by_its_name_starred_or_not() -> None:
+    """`library_call` asks the stubs for the method's name first (most names are
+    no stub's) and for starred arguments after: positions unknown, keywords kept."""
+    code = (
+        "from typing import Annotated\n"
+        "T: Annotated[float, \"Unit('ms')\"] = 500.0\n"
+        "def f(client, xs):\n"
+        "    client.wait_for_service(timeout_sec=T)\n"
+        "    client.wait_for_service(T)\n"
+        "    client.wait_for_service(*xs, timeout_sec=T)\n"
+        "    client.wait_for_service(*xs)\n"
+        "    client.no_stub_has_this(T)\n"
+        "    f2 = lambda: 0\n"
+        "    f2(T)\n"
+    )
+    found = check_source(code, "a.py", Config())
+    assert [(d.span.line, d.code) for d in found] == [
+        (4, "RF201"),
+        (5, "RF201"),
+        (6, "RF201"),
+    ]
+    assert all(
+        "`timeout_sec` argument of Client.wait_for_service" in d.message for d in found
+    )

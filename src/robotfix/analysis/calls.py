@@ -25,6 +25,7 @@ from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.astwalk import dotted
 from robotfix.ros.api_model import PARAMETER_CALLS
+from robotfix.ros.frames_model import TF2_CALLS
 from robotfix.stubs import load as stubs
 
 # Methods whose first argument leaves the node: it must satisfy its refinements.
@@ -68,6 +69,10 @@ MUTATORS = FILLING | {
 SEQUENCE_METHODS = containers.MUTATORS | containers.READERS
 # Callees that change nothing they are handed (math functions too).
 _CHANGE_NOTHING = frozenset({"msgclass", "builtin", "parameter_method"})
+# Callees `_dispatch` has a way of its own for; others go to the libraries.
+_DISPATCHED = frozenset(
+    {"msgclass", "parameter_method", "function", "method", "class", "builtin", "module"}
+)
 
 
 class CallEvaluator(BuiltinEvaluator):
@@ -177,47 +182,48 @@ class CallEvaluator(BuiltinEvaluator):
         state: State,
     ) -> Value:
         kind = callee.kind
-        if kind == "msgclass":
-            message = self.construct(callee.name, args, kwargs, state)
-            if self.ctx.unit_flows is not None:
-                self._constructor_flows(message, node, args, kwargs, state)
-            return message
-        if kind == "parameter_method":  # p.get_parameter_value()
-            return Value("parameter_value", name=callee.name)
-        if (
-            kind in ("function", "method")
-            and callee.name in self.program.functions
-            and not imported.starred(node, kwargs)
-        ):
-            return self.call_known(
-                self.program.functions[callee.name],
-                args,
-                kwargs,
-                node,
-                state,
-                bound=kind == "method",
-            )
-        if kind == "class" and callee.name in self.program.classes:
-            init = self.program.functions.get(f"{callee.name}.__init__")
-            if init is not None and not any(
-                isinstance(a, ast.Starred) for a in node.args
+        if kind in _DISPATCHED:  # (the others go on to the libraries: most calls)
+            if kind == "msgclass":
+                message = self.construct(callee.name, args, kwargs, state)
+                if self.ctx.unit_flows is not None:
+                    self._constructor_flows(message, node, args, kwargs, state)
+                return message
+            if kind == "parameter_method":  # p.get_parameter_value()
+                return Value("parameter_value", name=callee.name)
+            if (
+                kind in ("function", "method")
+                and callee.name in self.program.functions
+                and not imported.starred(node, kwargs)
             ):
-                self.call_known(init, args, kwargs, node, state, bound=True)
-            return Value("instance", name=callee.name)
-        if kind == "builtin":
-            found = self.builtin(callee.name, args, node, state, kwargs)
-            if found is not None:
-                return found
-        if kind in ("module", "method"):
-            found = self.imported_call(callee, node, args, kwargs, state)
-            if found is not None:
-                return found
+                return self.call_known(
+                    self.program.functions[callee.name],
+                    args,
+                    kwargs,
+                    node,
+                    state,
+                    bound=kind == "method",
+                )
+            if kind == "class" and callee.name in self.program.classes:
+                init = self.program.functions.get(f"{callee.name}.__init__")
+                if init is not None and not any(
+                    isinstance(a, ast.Starred) for a in node.args
+                ):
+                    self.call_known(init, args, kwargs, node, state, bound=True)
+                return Value("instance", name=callee.name)
+            if kind == "builtin":
+                found = self.builtin(callee.name, args, node, state, kwargs)
+                if found is not None:
+                    return found
+            if kind in ("module", "method"):
+                found = self.imported_call(callee, node, args, kwargs, state)
+                if found is not None:
+                    return found
         func = node.func
         name = (
             callee.name.rsplit(".", 1)[-1]
             if kind == "module"
             else func.attr
-            if isinstance(func, ast.Attribute)
+            if func.__class__ is ast.Attribute
             else ""
         )
         if name in PARAMETER_CALLS:
@@ -227,7 +233,7 @@ class CallEvaluator(BuiltinEvaluator):
             if found is not None:
                 return found
         found = self.libraries.library_call(self, callee, node, args, kwargs, state)
-        if frames.is_tf2(name):  # the stub checked the arguments; frames follow
+        if name in TF2_CALLS:  # the stub checked the arguments; frames follow
             moved = frames.tf2_call(self.ctx, name, node, args, kwargs, state)
             if moved is not None:
                 return moved
@@ -287,7 +293,7 @@ class CallEvaluator(BuiltinEvaluator):
         names: list[ast.Name] = []
         for given in node.args:
             if given.__class__ is ast.Name:
-                names.append(given)  # type: ignore[arg-type]
+                names.append(given)
         if names:
             for lent_name in containers.lends(node):  # the callee may keep, change it
                 lent = env.get(lent_name)
@@ -299,7 +305,7 @@ class CallEvaluator(BuiltinEvaluator):
         ):
             return
         func = node.func
-        attr = func.attr if func.__class__ is ast.Attribute else ""  # type: ignore[attr-defined]
+        attr = func.attr if func.__class__ is ast.Attribute else ""
         if attr in PARAMETER_CALLS:
             return  # rclpy and rospy change no attribute of the node's class
         if self.ctx.frame_facts is not None and frames.followed(self.ctx, node):
@@ -316,7 +322,7 @@ class CallEvaluator(BuiltinEvaluator):
             ):
                 state.changed(value)
         if func.__class__ is ast.Attribute:
-            owner = func.value  # type: ignore[attr-defined]
+            owner = func.value
             if owner.__class__ is ast.Name:
                 # a method of this file's class may change `self.x`; rclpy's and
                 # rospy's own (`self.get_clock()`) do not touch its attributes

@@ -142,8 +142,14 @@ class Libraries:
         """The value of a call of a stubbed function, method or class; None when
         no stub speaks of it."""
         kind = callee.kind
-        by_name = kind == "unknown" and isinstance(node.func, ast.Attribute)
-        if kind not in ("libmethod", "module") and not by_name:
+        if kind == "unknown":  # a method of a value of unknown type: by its name
+            func = node.func
+            if func.__class__ is not ast.Attribute:
+                return None
+            candidates = stubs.methods_named(self._stubs(), func.attr)
+            if not candidates:
+                return None  # (most calls: no stub has a method of that name)
+        elif kind not in ("libmethod", "module"):
             return None
         if imported.starred(node, kwargs):
             args = []  # positions unknown: only keywords are checked
@@ -164,21 +170,19 @@ class Libraries:
                 shift = 1 if found.kind == "method" else 0
                 return self.call_function(at, found, args, kwargs, node, state, shift)
             return None
-        assert isinstance(node.func, ast.Attribute)
-        return self._by_method_name(at, node.func.attr, node, args, kwargs, state)
+        return self._by_method_name(at, candidates, node, args, kwargs, state)
 
     def _by_method_name(
         self,
         at: Site,
-        name: str,
+        candidates: tuple[stubs.Function, ...],
         node: ast.Call,
         args: list[Value],
         kwargs: dict[str | None, Value],
         state: State,
     ) -> Value | None:
-        candidates = stubs.methods_named(self._stubs(), name)
-        if not candidates:
-            return None
+        """A call of a method of a value of unknown type, which one of the stubs'
+        `candidates` of its name (at least one) may be."""
         if len({_signature(f) for f in candidates}) == 1:
             return self.call_function(at, candidates[0], args, kwargs, node, state, 0)
         # they differ: check only the arguments every candidate gives one unit
