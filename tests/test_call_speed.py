@@ -8,7 +8,7 @@ from itertools import chain
 
 import pytest
 
-from robotfix.analysis.calls import _argument
+from robotfix.analysis.calls import _argument, _literal_arguments
 from robotfix.analysis.values import Value
 from robotfix.api import check_source
 from robotfix.config import Config
@@ -76,3 +76,24 @@ def test_a_method_of_an_unknown_value_is_checked_by_its_name_starred_or_not() ->
     assert all(
         "`timeout_sec` argument of Client.wait_for_service" in d.message for d in found
     )
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        *CALLS,
+        "f(1, 'a', None)",
+        "f(1, x=2.5)",
+        "f(1, x=y)",
+        "f(-1)",
+        "f(*())",
+        "f(**{})",
+    ],
+)
+def test_literal_arguments_is_every_argument_a_constant(text: str) -> None:
+    node = ast.parse(text, mode="eval").body
+    assert isinstance(node, ast.Call)
+    reference = all(isinstance(a, ast.Constant) for a in node.args) and all(
+        isinstance(k.value, ast.Constant) for k in node.keywords
+    )
+    assert _literal_arguments(node) is reference
