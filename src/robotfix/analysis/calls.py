@@ -320,7 +320,7 @@ class CallEvaluator(BuiltinEvaluator):
                 if not self.only_reads(node, _argument(node, kwargs, index)):
                     heap.havoc(state, value.ref)
             elif (
-                type(term) is A.Sym and term.ident in watched and value.kind in MUTABLE
+                value.kind in MUTABLE and type(term) is A.Sym and term.ident in watched
             ):
                 state.changed(value)
         if func.__class__ is ast.Attribute:

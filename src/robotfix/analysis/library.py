@@ -59,6 +59,7 @@ class Libraries:
         self.check = check
         self.refined = refined
         self.lookups = lookups
+        self._stub_set: stubs.StubSet | None = None  # (`_stubs`, on first use)
 
     # -- names ---------------------------------------------------------------
     def object_member(self, cls_name: str, attr: str, state: State) -> Value | None:
@@ -146,7 +147,8 @@ class Libraries:
             func = node.func
             if func.__class__ is not ast.Attribute:
                 return None
-            candidates = stubs.methods_named(self._stubs(), func.attr)
+            stub_set = self._stub_set or self._stubs()  # (no call: most calls)
+            candidates = stubs.methods_named(stub_set, func.attr)
             if not candidates:
                 return None  # (most calls: no stub has a method of that name)
         elif kind not in ("libmethod", "module"):
@@ -460,7 +462,11 @@ class Libraries:
         return Value("float", term, unit, conversion=Conversion(call, first.unit))
 
     def _stubs(self) -> stubs.StubSet:
-        return imported.stub_set_of(self.ctx)
+        """The stubs the file's context reads (`imported.stub_set_of`)."""
+        found = self._stub_set
+        if found is None:
+            found = self._stub_set = imported.stub_set_of(self.ctx)
+        return found
 
 
 def _builtin(value: Value) -> str:
