@@ -12,6 +12,7 @@ from robotfix.analysis.calls import _argument, _literal_arguments
 from robotfix.analysis.values import Value
 from robotfix.api import check_source
 from robotfix.config import Config
+from robotfix.stubs.load import Class, StubSet
 
 CALLS = [
     "f()",
@@ -97,3 +98,28 @@ def test_literal_arguments_is_every_argument_a_constant(text: str) -> None:
         isinstance(k.value, ast.Constant) for k in node.keywords
     )
     assert _literal_arguments(node) is reference
+
+
+@pytest.mark.parametrize(
+    ("qualified", "attrs"),
+    [
+        ("rclpy.node.Node", ["get_logger", "create_timer", "get_clock", "no_such"]),
+        ("rospy.Duration", ["to_sec", "from_sec", "__add__", "no_such"]),
+        ("rclpy.time.Time", ["nanoseconds", "__sub__", "to_msg"]),
+    ],
+)
+def test_stub_member_is_kept_and_equals_the_walk_of_the_lineage(
+    qualified: str, attrs: list[str]
+) -> None:
+    """`StubSet.member` keeps its answer per class and name: the same as walking
+    the class and its bases again, on a fresh set and once kept."""
+    fresh = StubSet()
+    cls = fresh.lookup(qualified)
+    assert isinstance(cls, Class)
+    for attr in attrs:
+        walked = next(
+            (f for f in (c.method(attr) for c in fresh._lineage(cls)) if f), None
+        )
+        assert fresh.member(cls, attr) is walked
+        assert fresh.member(cls, attr) is walked
+        assert (id(cls), attr) in fresh._members
