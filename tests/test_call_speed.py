@@ -123,3 +123,30 @@ def test_stub_member_is_kept_and_equals_the_walk_of_the_lineage(
         assert fresh.member(cls, attr) is walked
         assert fresh.member(cls, attr) is walked
         assert (id(cls), attr) in fresh._members
+
+
+def test_a_call_of_a_file_function_checks_refined_parameters_only_when_declared() -> (
+    None
+):
+    """`call_known` reads the arguments only for a function with refinements or a
+    refined return (or when `suggest` logs flows): the rest gives the same."""
+    code = (
+        "from typing import Annotated\n"
+        "M = Annotated[float, \"Unit('m')\"]\n"
+        "MS: Annotated[float, \"Unit('ms')\"] = 5.0\n"
+        "def refined(x: M) -> None: ...\n"
+        "def returns() -> M: ...\n"
+        "def plain(x, y=1): return x\n"
+        "refined(MS)\n"
+        "refined(x=MS)\n"
+        "plain(MS, y=MS)\n"
+        "d: Annotated[float, \"Unit('s')\"] = returns()\n"
+        "e: Annotated[float, \"Unit('s')\"] = plain(MS)\n"
+    )
+    found = check_source(code, "a.py", Config())
+    assert [(d.span.line, d.code) for d in found] == [
+        (7, "RF201"),
+        (8, "RF201"),
+        (10, "RF201"),
+        (11, "RF201"),
+    ]

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import ast
 from functools import partial
+from typing import TYPE_CHECKING
 
 from robotfix.analysis import containers, frames, heap, imported, inline
 from robotfix.analysis.builtincalls import BuiltinEvaluator
@@ -27,6 +28,9 @@ from robotfix.astwalk import dotted
 from robotfix.ros.api_model import PARAMETER_CALLS
 from robotfix.ros.frames_model import TF2_CALLS
 from robotfix.stubs import load as stubs
+
+if TYPE_CHECKING:  # only `robotfix suggest` keeps flows: a check never loads them
+    from robotfix.analysis.flows import FlowLog
 
 # Methods whose first argument leaves the node: it must satisfy its refinements.
 LEAVING = frozenset(
@@ -366,6 +370,37 @@ class CallEvaluator(BuiltinEvaluator):
         bound: bool,
     ) -> Value:
         scope = self.program.signature(self.ctx, function)
+        log = self.flow_log()
+        terms: dict[str, A.Expr] = {}
+        if scope.decls or log is not None or function.returns is not None:
+            # (else nothing reads the arguments here: unannotated code, a check)
+            terms = self._given(function, scope, args, kwargs, node, state, bound, log)
+        if function.returns is None:  # `return <expr>` alone: the expression here
+            inlined = self.inline_call(function, args, kwargs, bound, state)
+            if inlined is not None:
+                return inlined  # else what its `return`s give, if they agree
+            return self.lookups.typed(
+                self.program.types.returns(function.key), node, state
+            )
+        lookup = {**self._callee_names(function.returns, function, state), **terms}
+        return self.refined.assumed(
+            state, f"{function.name}()", function.returns, lookup
+        )
+
+    def _given(
+        self,
+        function: Function,
+        scope: Scope,
+        args: list[Value],
+        kwargs: dict[str | None, Value],
+        node: ast.Call,
+        state: State,
+        bound: bool,
+        log: FlowLog | None,
+    ) -> dict[str, A.Expr]:
+        """The arguments of a call of `function`, each checked against its
+        parameter's refinement (and logged for `robotfix suggest`); the terms
+        they give the parameters."""
         fn = function.node
         params = [a.arg for a in [*fn.args.posonlyargs, *fn.args.args]]
         if bound and function.is_method and params:
@@ -375,7 +410,6 @@ class CallEvaluator(BuiltinEvaluator):
         terms = {k: v.term for k, v in given.items() if v.term is not None}
         exprs = dict(zip(params, node.args, strict=False))
         exprs.update({k.arg: k.value for k in node.keywords if k.arg is not None})
-        log = self.flow_log()
         where = self.flow_where() if log is not None else None
         for name, value in given.items():
             decl = scope.decls.get(name)
@@ -390,17 +424,7 @@ class CallEvaluator(BuiltinEvaluator):
                     log.sink(where, exprs[name], decl.unit, value, integer=integer)
                 else:
                     log.call(where, function.key, name, exprs[name])
-        if function.returns is None:  # `return <expr>` alone: the expression here
-            inlined = self.inline_call(function, args, kwargs, bound, state)
-            if inlined is not None:
-                return inlined  # else what its `return`s give, if they agree
-            return self.lookups.typed(
-                self.program.types.returns(function.key), node, state
-            )
-        lookup = {**self._callee_names(function.returns, function, state), **terms}
-        return self.refined.assumed(
-            state, f"{function.name}()", function.returns, lookup
-        )
+        return terms
 
     def helper_evaluator(self, function: Function) -> CallEvaluator | None:
         """An evaluator for `function`'s expression at a call (the statement
