@@ -12,6 +12,7 @@ from robotfix.analysis.calls import _argument, _literal_arguments
 from robotfix.analysis.values import Value
 from robotfix.api import check_source
 from robotfix.config import Config
+from robotfix.diagnostics import Diagnostic
 from robotfix.stubs.load import Class, StubSet
 
 CALLS = [
@@ -31,6 +32,10 @@ CALLS = [
 def _kwargs(node: ast.Call) -> dict[str | None, Value]:
     """What `eval_Call` makes of the keywords: a value per name, `**` under None."""
     return {k.arg: Value("unknown", name=ast.unparse(k.value)) for k in node.keywords}
+
+
+def _lines_and_codes(found: list[Diagnostic]) -> list[tuple[int, str]]:
+    return [(d.span.line, d.code) for d in found]
 
 
 def _reference(node: ast.Call, args: list[Value], kwargs: dict[str | None, Value]):
@@ -69,11 +74,7 @@ def test_a_method_of_an_unknown_value_is_checked_by_its_name_starred_or_not() ->
         "    f2(T)\n"
     )
     found = check_source(code, "a.py", Config())
-    assert [(d.span.line, d.code) for d in found] == [
-        (4, "RF201"),
-        (5, "RF201"),
-        (6, "RF201"),
-    ]
+    assert _lines_and_codes(found) == [(4, "RF201"), (5, "RF201"), (6, "RF201")]
     assert all(
         "`timeout_sec` argument of Client.wait_for_service" in d.message for d in found
     )
@@ -125,9 +126,7 @@ def test_stub_member_is_kept_and_equals_the_walk_of_the_lineage(
         assert (id(cls), attr) in fresh._members
 
 
-def test_a_call_of_a_file_function_checks_refined_parameters_only_when_declared() -> (
-    None
-):
+def test_a_file_function_call_checks_refined_parameters_only_when_declared() -> None:
     """`call_known` reads the arguments only for a function with refinements or a
     refined return (or when `suggest` logs flows): the rest gives the same."""
     code = (
@@ -144,7 +143,7 @@ def test_a_call_of_a_file_function_checks_refined_parameters_only_when_declared(
         "e: Annotated[float, \"Unit('s')\"] = plain(MS)\n"
     )
     found = check_source(code, "a.py", Config())
-    assert [(d.span.line, d.code) for d in found] == [
+    assert _lines_and_codes(found) == [
         (7, "RF201"),
         (8, "RF201"),
         (10, "RF201"),
