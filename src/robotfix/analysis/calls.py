@@ -7,9 +7,8 @@ forget what they may change in the messages and instances they are handed.
 from __future__ import annotations
 
 import ast
-from collections.abc import Iterable
 from functools import partial
-from itertools import chain
+from typing import TYPE_CHECKING
 
 from robotfix.analysis import containers, frames, heap, imported, inline
 from robotfix.analysis.builtincalls import BuiltinEvaluator
@@ -27,7 +26,11 @@ from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Refinement
 from robotfix.astwalk import dotted
 from robotfix.ros.api_model import PARAMETER_CALLS
+from robotfix.ros.frames_model import TF2_CALLS
 from robotfix.stubs import load as stubs
+
+if TYPE_CHECKING:  # only `robotfix suggest` keeps flows: a check never loads them
+    from robotfix.analysis.flows import FlowLog
 
 # Methods whose first argument leaves the node: it must satisfy its refinements.
 LEAVING = frozenset(
@@ -70,6 +73,10 @@ MUTATORS = FILLING | {
 SEQUENCE_METHODS = containers.MUTATORS | containers.READERS
 # Callees that change nothing they are handed (math functions too).
 _CHANGE_NOTHING = frozenset({"msgclass", "builtin", "parameter_method"})
+# Callees `_dispatch` has a way of its own for; others go to the libraries.
+_DISPATCHED = frozenset(
+    {"msgclass", "parameter_method", "function", "method", "class", "builtin", "module"}
+)
 
 
 class CallEvaluator(BuiltinEvaluator):
@@ -85,7 +92,9 @@ class CallEvaluator(BuiltinEvaluator):
     def member(self, base: Value, attr: str, state: State) -> Value | None:
         if base.kind == "object":
             return self.libraries.object_member(base.name, attr, state)
-        return super().member(base, attr, state)
+        # (the base class's, named: `super()` makes an object per read, 37k on
+        # corpus25; no class between them in the walker's order has a `member`)
+        return BuiltinEvaluator.member(self, base, attr, state)
 
     def inherited_method(self, class_name: str, attr: str) -> Value | None:
         return self.libraries.inherited_method(class_name, attr)
@@ -120,13 +129,14 @@ class CallEvaluator(BuiltinEvaluator):
             callee = self.eval_Attribute(func, state, receiver)
         else:
             callee = self.eval(func, state)
-            # (no comprehension for a call without arguments: `self.get_clock()`)
-            args = [self.eval(a, state) for a in node.args] if node.args else []
-            kwargs = (
-                {k.arg: self.eval(k.value, state) for k in node.keywords}
-                if node.keywords
-                else {}
-            )
+            # (loops, not comprehensions: a call is met about once, and each
+            # comprehension costs a frame)
+            args = []
+            for given in node.args:
+                args.append(self.eval(given, state))
+            kwargs = {}
+            for keyword in node.keywords:
+                kwargs[keyword.arg] = self.eval(keyword.value, state)
             if callee.kind == "object" and callee.name in SENDING:
                 self._leaving(args, state)
                 if self.ctx.obligations and not imported.starred(node, kwargs):
@@ -179,47 +189,48 @@ class CallEvaluator(BuiltinEvaluator):
         state: State,
     ) -> Value:
         kind = callee.kind
-        if kind == "msgclass":
-            message = self.construct(callee.name, args, kwargs, state)
-            if self.ctx.unit_flows is not None:
-                self._constructor_flows(message, node, args, kwargs, state)
-            return message
-        if kind == "parameter_method":  # p.get_parameter_value()
-            return Value("parameter_value", name=callee.name)
-        if (
-            kind in ("function", "method")
-            and callee.name in self.program.functions
-            and not imported.starred(node, kwargs)
-        ):
-            return self.call_known(
-                self.program.functions[callee.name],
-                args,
-                kwargs,
-                node,
-                state,
-                bound=kind == "method",
-            )
-        if kind == "class" and callee.name in self.program.classes:
-            init = self.program.functions.get(f"{callee.name}.__init__")
-            if init is not None and not any(
-                isinstance(a, ast.Starred) for a in node.args
+        if kind in _DISPATCHED:  # (the others go on to the libraries: most calls)
+            if kind == "msgclass":
+                message = self.construct(callee.name, args, kwargs, state)
+                if self.ctx.unit_flows is not None:
+                    self._constructor_flows(message, node, args, kwargs, state)
+                return message
+            if kind == "parameter_method":  # p.get_parameter_value()
+                return Value("parameter_value", name=callee.name)
+            if (
+                kind in ("function", "method")
+                and callee.name in self.program.functions
+                and not imported.starred(node, kwargs)
             ):
-                self.call_known(init, args, kwargs, node, state, bound=True)
-            return Value("instance", name=callee.name)
-        if kind == "builtin":
-            found = self.builtin(callee.name, args, node, state, kwargs)
-            if found is not None:
-                return found
-        if kind in ("module", "method"):
-            found = self.imported_call(callee, node, args, kwargs, state)
-            if found is not None:
-                return found
+                return self.call_known(
+                    self.program.functions[callee.name],
+                    args,
+                    kwargs,
+                    node,
+                    state,
+                    bound=kind == "method",
+                )
+            if kind == "class" and callee.name in self.program.classes:
+                init = self.program.functions.get(f"{callee.name}.__init__")
+                if init is not None and not any(
+                    isinstance(a, ast.Starred) for a in node.args
+                ):
+                    self.call_known(init, args, kwargs, node, state, bound=True)
+                return Value("instance", name=callee.name)
+            if kind == "builtin":
+                found = self.builtin(callee.name, args, node, state, kwargs)
+                if found is not None:
+                    return found
+            if kind in ("module", "method"):
+                found = self.imported_call(callee, node, args, kwargs, state)
+                if found is not None:
+                    return found
         func = node.func
         name = (
             callee.name.rsplit(".", 1)[-1]
             if kind == "module"
             else func.attr
-            if isinstance(func, ast.Attribute)
+            if func.__class__ is ast.Attribute
             else ""
         )
         if name in PARAMETER_CALLS:
@@ -229,7 +240,7 @@ class CallEvaluator(BuiltinEvaluator):
             if found is not None:
                 return found
         found = self.libraries.library_call(self, callee, node, args, kwargs, state)
-        if frames.is_tf2(name):  # the stub checked the arguments; frames follow
+        if name in TF2_CALLS:  # the stub checked the arguments; frames follow
             moved = frames.tf2_call(self.ctx, name, node, args, kwargs, state)
             if moved is not None:
                 return moved
@@ -239,8 +250,7 @@ class CallEvaluator(BuiltinEvaluator):
         if (
             kind == "module"
             and isinstance(value.term, A.Sym)
-            and all(isinstance(a, ast.Constant) for a in node.args)
-            and all(isinstance(k.value, ast.Constant) for k in node.keywords)
+            and _literal_arguments(node)
         ):  # `platform.system()` twice: the same answer, for all the analysis knows
             self.ctx.first_read(("call", self.ctx.source.segment(node)), value.term)
         return value
@@ -282,10 +292,15 @@ class CallEvaluator(BuiltinEvaluator):
     ) -> None:
         """Unknown code may change the messages and instances it is handed. (Most
         calls change nothing: a value the walk never read a version of, which
-        `State.changed` leaves alone, is passed over without the call.)"""
+        `State.changed` leaves alone, is passed over without the call. A call is
+        met about once: loops here, not comprehensions or helpers, each of which
+        costs a frame.)"""
         env = state.env
-        given = node.args
-        if given:
+        names: list[ast.Name] = []
+        for given in node.args:
+            if given.__class__ is ast.Name:
+                names.append(given)
+        if names:
             for lent_name in containers.lends(node):  # the callee may keep, change it
                 lent = env.get(lent_name)
                 if isinstance(lent, Value) and lent.kind == "list":
@@ -299,23 +314,19 @@ class CallEvaluator(BuiltinEvaluator):
         attr = func.attr if func.__class__ is ast.Attribute else ""
         if attr in PARAMETER_CALLS:
             return  # rclpy and rospy change no attribute of the node's class
-        if frames.followed(self.ctx, node):
+        if self.ctx.frame_facts is not None and frames.followed(self.ctx, node):
             return  # tf2 reads the stamped values and transforms it is given
-        pairs: Iterable[tuple[Value, ast.expr]] = zip(args, given, strict=False)
-        if kwargs:
-            keywords = {k.arg: k.value for k in node.keywords}
-            pairs = chain(pairs, ((v, keywords[k]) for k, v in kwargs.items()))
         watched = state.shared.watched  # (`State.changed` changes only these)
-        for value, expr in pairs:
+        values = [*args, *kwargs.values()] if kwargs else args
+        for index, value in enumerate(values):
             term = value.term
             if value.kind == "msg" and value.ref is not None:
-                if not self.only_reads(node, expr):
+                if not self.only_reads(node, _argument(node, kwargs, index)):
                     heap.havoc(state, value.ref)
             elif (
-                type(term) is A.Sym and term.ident in watched and value.kind in MUTABLE
+                value.kind in MUTABLE and type(term) is A.Sym and term.ident in watched
             ):
                 state.changed(value)
-        names = [a for a in given if a.__class__ is ast.Name] if given else []
         if func.__class__ is ast.Attribute:
             owner = func.value
             if owner.__class__ is ast.Name:
@@ -359,6 +370,37 @@ class CallEvaluator(BuiltinEvaluator):
         bound: bool,
     ) -> Value:
         scope = self.program.signature(self.ctx, function)
+        log = self.flow_log()
+        terms: dict[str, A.Expr] = {}
+        if scope.decls or log is not None or function.returns is not None:
+            # (else nothing reads the arguments here: unannotated code, a check)
+            terms = self._given(function, scope, args, kwargs, node, state, bound, log)
+        if function.returns is None:  # `return <expr>` alone: the expression here
+            inlined = self.inline_call(function, args, kwargs, bound, state)
+            if inlined is not None:
+                return inlined  # else what its `return`s give, if they agree
+            return self.lookups.typed(
+                self.program.types.returns(function.key), node, state
+            )
+        lookup = {**self._callee_names(function.returns, function, state), **terms}
+        return self.refined.assumed(
+            state, f"{function.name}()", function.returns, lookup
+        )
+
+    def _given(
+        self,
+        function: Function,
+        scope: Scope,
+        args: list[Value],
+        kwargs: dict[str | None, Value],
+        node: ast.Call,
+        state: State,
+        bound: bool,
+        log: FlowLog | None,
+    ) -> dict[str, A.Expr]:
+        """The arguments of a call of `function`, each checked against its
+        parameter's refinement (and logged for `robotfix suggest`); the terms
+        they give the parameters."""
         fn = function.node
         params = [a.arg for a in [*fn.args.posonlyargs, *fn.args.args]]
         if bound and function.is_method and params:
@@ -368,7 +410,6 @@ class CallEvaluator(BuiltinEvaluator):
         terms = {k: v.term for k, v in given.items() if v.term is not None}
         exprs = dict(zip(params, node.args, strict=False))
         exprs.update({k.arg: k.value for k in node.keywords if k.arg is not None})
-        log = self.flow_log()
         where = self.flow_where() if log is not None else None
         for name, value in given.items():
             decl = scope.decls.get(name)
@@ -383,17 +424,7 @@ class CallEvaluator(BuiltinEvaluator):
                     log.sink(where, exprs[name], decl.unit, value, integer=integer)
                 else:
                     log.call(where, function.key, name, exprs[name])
-        if function.returns is None:  # `return <expr>` alone: the expression here
-            inlined = self.inline_call(function, args, kwargs, bound, state)
-            if inlined is not None:
-                return inlined  # else what its `return`s give, if they agree
-            return self.lookups.typed(
-                self.program.types.returns(function.key), node, state
-            )
-        lookup = {**self._callee_names(function.returns, function, state), **terms}
-        return self.refined.assumed(
-            state, f"{function.name}()", function.returns, lookup
-        )
+        return terms
 
     def helper_evaluator(self, function: Function) -> CallEvaluator | None:
         """An evaluator for `function`'s expression at a call (the statement
@@ -616,3 +647,23 @@ class CallEvaluator(BuiltinEvaluator):
                 return f":{receiver.id}"
             return f"{self._class_name() or ''}:{scope.name}/{receiver.id}"
         return f"{self._class_name()}:{dotted(receiver)}"
+
+
+def _argument(node: ast.Call, kwargs: dict[str | None, Value], index: int) -> ast.expr:
+    """The expression of a call's `index`-th argument value: its positional
+    arguments, then its keyword arguments in the order of `kwargs`."""
+    if index < len(node.args):
+        return node.args[index]
+    key = list(kwargs)[index - len(node.args)]
+    return {k.arg: k.value for k in node.keywords}[key]
+
+
+def _literal_arguments(node: ast.Call) -> bool:
+    """Whether every argument of the call is a literal (loops: no generators)."""
+    for given in node.args:
+        if given.__class__ is not ast.Constant:
+            return False
+    for keyword in node.keywords:  # noqa: SIM110 (no generator per call)
+        if keyword.value.__class__ is not ast.Constant:
+            return False
+    return True

@@ -400,7 +400,11 @@ class Interpreter(CompoundWalker):
             if base is not None:  # from .limits import MAX_SPEED
                 qualified = f"{base}.{alias.name}"
             msg_type = self.ctx.msg_type_named(qualified) if not node.level else None
-            interface = self.ctx.interface_named(qualified) if not node.level else None
+            interface = (  # (a message class is no interface: not asked)
+                self.ctx.interface_named(qualified)
+                if not node.level and not msg_type
+                else None
+            )
             number = named_number(qualified) if not node.level else None
             found = (
                 None

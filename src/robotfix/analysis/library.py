@@ -59,6 +59,7 @@ class Libraries:
         self.check = check
         self.refined = refined
         self.lookups = lookups
+        self._stub_set: stubs.StubSet | None = None  # (`_stubs`, on first use)
 
     # -- names ---------------------------------------------------------------
     def object_member(self, cls_name: str, attr: str, state: State) -> Value | None:
@@ -142,8 +143,15 @@ class Libraries:
         """The value of a call of a stubbed function, method or class; None when
         no stub speaks of it."""
         kind = callee.kind
-        by_name = kind == "unknown" and isinstance(node.func, ast.Attribute)
-        if kind not in ("libmethod", "module") and not by_name:
+        if kind == "unknown":  # a method of a value of unknown type: by its name
+            func = node.func
+            if func.__class__ is not ast.Attribute:
+                return None
+            stub_set = self._stub_set or self._stubs()  # (no call: most calls)
+            candidates = stubs.methods_named(stub_set, func.attr)
+            if not candidates:
+                return None  # (most calls: no stub has a method of that name)
+        elif kind not in ("libmethod", "module"):
             return None
         if imported.starred(node, kwargs):
             args = []  # positions unknown: only keywords are checked
@@ -164,21 +172,19 @@ class Libraries:
                 shift = 1 if found.kind == "method" else 0
                 return self.call_function(at, found, args, kwargs, node, state, shift)
             return None
-        assert isinstance(node.func, ast.Attribute)
-        return self._by_method_name(at, node.func.attr, node, args, kwargs, state)
+        return self._by_method_name(at, candidates, node, args, kwargs, state)
 
     def _by_method_name(
         self,
         at: Site,
-        name: str,
+        candidates: tuple[stubs.Function, ...],
         node: ast.Call,
         args: list[Value],
         kwargs: dict[str | None, Value],
         state: State,
     ) -> Value | None:
-        candidates = stubs.methods_named(self._stubs(), name)
-        if not candidates:
-            return None
+        """A call of a method of a value of unknown type, which one of the stubs'
+        `candidates` of its name (at least one) may be."""
         if len({_signature(f) for f in candidates}) == 1:
             return self.call_function(at, candidates[0], args, kwargs, node, state, 0)
         # they differ: check only the arguments every candidate gives one unit
@@ -456,7 +462,11 @@ class Libraries:
         return Value("float", term, unit, conversion=Conversion(call, first.unit))
 
     def _stubs(self) -> stubs.StubSet:
-        return imported.stub_set_of(self.ctx)
+        """The stubs the file's context reads (`imported.stub_set_of`)."""
+        found = self._stub_set
+        if found is None:
+            found = self._stub_set = imported.stub_set_of(self.ctx)
+        return found
 
 
 def _builtin(value: Value) -> str:

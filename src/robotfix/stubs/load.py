@@ -206,6 +206,8 @@ class StubSet:
         self._methods: dict[str, tuple[Function, ...]] = {}
         self._files: dict[str, tuple[Path, str, bool] | None] = {}
         self._found: dict[str, Function | Class | None] = {}  # `lookup`'s answers
+        # (id(class), name) -> `member`'s answer (a class lives as long as its set)
+        self._members: dict[tuple[int, str], Function | None] = {}
         self._defining: dict[str, list[str]] | None = None  # `_definitions`
 
     # -- modules -------------------------------------------------------------
@@ -331,7 +333,15 @@ class StubSet:
         return found
 
     def member(self, cls: Class, attr: str) -> Function | None:
-        """A method or property of a stub class, also an inherited one."""
+        """A method or property of a stub class, also an inherited one (once per
+        class and name: asked at every `self.x` read of a `Node`'s subclass)."""
+        key = (id(cls), attr)
+        found = self._members.get(key, _UNSEEN)
+        if found is _UNSEEN:
+            found = self._members[key] = self._member(cls, attr)
+        return found  # type: ignore[return-value]
+
+    def _member(self, cls: Class, attr: str) -> Function | None:
         for here in self._lineage(cls):
             found = here.method(attr)
             if found is not None:
