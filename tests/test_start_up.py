@@ -102,3 +102,49 @@ def test_a_cached_run_makes_each_entry_key_once(
     warm = check_paths([Path("src")], config, jobs=1, use_cache=True)
     assert warm.from_cache == len(warm.checked) == len(cold.checked) == 2
     assert asked and len(asked) == len(set(asked))
+
+
+# what only reading interface files and annotations needs (ros/catalog.py's loading)
+READERS = (
+    "robotfix.annotations.ast",
+    "robotfix.annotations.parser",
+    "robotfix.annotations.units",
+    "robotfix.ros.msg",
+    "robotfix.ros.comments",
+)
+MSG = """\
+#RobotFix# Unit(speed) == "m/s"
+float64 speed  # [m/s]
+"""
+
+
+def test_a_warm_cached_run_loads_no_reader_of_interfaces_or_annotations(
+    tmp_path: Path,
+) -> None:
+    """An unchanged tree's run takes every result and the catalog's digests from
+    the cache: the catalog reads no file, so its readers are not even imported."""
+    package = tmp_path / "src" / "demo"
+    (package / "demo").mkdir(parents=True)
+    (package / "msg").mkdir()
+    (package / "package.xml").write_text("<package><name>demo</name></package>")
+    (package / "msg" / "Speed.msg").write_text(MSG)
+    (package / "demo" / "__init__.py").write_text("")
+    (package / "demo" / "driver.py").write_text(
+        NODE + "\nfrom demo.msg import Speed\nSPEED = Speed().speed\n"
+    )
+    probe = (
+        "import sys\n"
+        "from robotfix import cache, discovery, run\n"
+        "from robotfix.cli import main\n"
+        "from robotfix.project import modules\n"
+        "for module in (cache, discovery, run, modules):\n"
+        "    module.RACY_NS = 0  # the files are new: their stamps trusted at once\n"
+        f"main(['check', {str(tmp_path / 'src')!r}, '-j', '1'])\n"
+        f"print(sorted(m for m in {READERS!r} if m in sys.modules))\n"
+    )
+    cold = run_probe(probe, tmp_path)
+    assert cold.stdout.strip().splitlines()[-1] != "[]", cold.stdout + cold.stderr
+    warm = run_probe(probe, tmp_path)
+    *output, loaded = warm.stdout.strip().splitlines()
+    assert loaded == "[]", warm.stdout + warm.stderr
+    assert output == cold.stdout.strip().splitlines()[:-1]
