@@ -10,28 +10,27 @@ from pathlib import Path
 
 import robotfix
 
+sys.path.insert(0, str(Path(__file__).parent))
+from test_start_up import TRUSTED, demo_package
+
 MODULES = 12  # each imports every other one: one import cycle, many ways to walk it
-PROBE = """\
+PROBE = (
+    TRUSTED
+    + """\
 import sys
-from robotfix import cache, discovery, run
 from robotfix.cli import main
-from robotfix.project import modules
-for module in (cache, discovery, run, modules):
-    module.RACY_NS = 0  # the files are new: their stamps trusted at once
 main(["check", sys.argv[1], "-j", "1", "--cache-dir", sys.argv[2]])
 """
+)
 
 
 def test_two_runs_under_different_hash_seeds_write_the_same_cache(
     tmp_path: Path,
 ) -> None:
-    package = tmp_path / "src" / "demo"
-    (package / "demo").mkdir(parents=True)
-    (package / "package.xml").write_text("<package><name>demo</name></package>")
-    (package / "demo" / "__init__.py").write_text("")
+    package = demo_package(tmp_path)
     for i in range(MODULES):
         imports = "".join(f"from demo import m{j}\n" for j in range(MODULES) if j != i)
-        (package / "demo" / f"m{i}.py").write_text(
+        (package / f"m{i}.py").write_text(
             f"{imports}import helper{i}\n\n\ndef f{i}() -> int:\n    return {i}\n"
         )
     written = []
