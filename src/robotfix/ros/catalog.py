@@ -256,6 +256,12 @@ class MsgCatalog:
         self._children: dict[str, tuple[str, ...]] = {}
         self._digests_handed = 0  # `fresh_digests`: the table's entries handed out
         self._combined: dict[tuple[str, ...], str] = {}  # names asked -> digest
+        # a name asked -> the types its digest covers (its own, its fields'...), and
+        # each of those types' line of the digest: known once its digest and fields
+        # are (`_closure`), so a cached run's many files that share types walk
+        # each type's fields once
+        self._closures: dict[str, frozenset[str]] = {}
+        self._lines: dict[str, str] = {}
         # the lazy load (`preload_outline`): each used file in order, its digest and
         # its sections (name, has fields); files not read yet, by type they define
         self._outline: Outline | None = None
@@ -367,6 +373,12 @@ class MsgCatalog:
         known = self._combined.get(asked)
         if known is not None:  # many files use the same few types
             return known
+        covered = self._covered(asked)
+        if covered is not None:  # every digest known: no type is looked up
+            lines = sorted(map(self._lines.__getitem__, covered))
+            combined = hashlib.sha256("\n".join(lines).encode()).hexdigest()
+            self._combined[asked] = combined
+            return combined
         if self._resolved_digests is None:
             self._resolved_digests = {}
         digests = self._resolved_digests
@@ -397,6 +409,39 @@ class MsgCatalog:
         combined = hashlib.sha256("\n".join(lines).encode()).hexdigest()
         self._combined[asked] = combined  # the digests it is made of never change
         return combined
+
+    def _covered(self, names: tuple[str, ...]) -> set[str] | None:
+        """What `fingerprint_types` covers for `names` when every digest it needs
+        is known (None otherwise)."""
+        covered: set[str] = set()
+        for name in names:
+            part = self._closures.get(name) or self._closure(name)
+            if part is None:
+                return None
+            covered |= part
+        return covered
+
+    def _closure(self, name: str) -> frozenset[str] | None:
+        """The types `fingerprint_types` covers for `name`, when each one's digest
+        and fields are known already (None otherwise: it looks them up)."""
+        digests = self._resolved_digests
+        if digests is None:
+            return None
+        children = self._children
+        seen: set[str] = set()
+        todo = [normalize(name)]
+        while todo:
+            key = todo.pop()
+            if key in seen:
+                continue
+            if key not in digests or key not in children:
+                return None
+            seen.add(key)
+            if key not in self._lines:
+                self._lines[key] = f"{key} {digests[key]}"
+            todo.extend(children[key])
+        found = self._closures[name] = frozenset(seen)
+        return found
 
     def digest_table(self) -> dict[str, tuple[str, tuple[str, ...]]]:
         """What `fingerprint_types` worked out so far: each type's digest and the
