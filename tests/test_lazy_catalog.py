@@ -106,3 +106,29 @@ def test_a_file_changed_since_its_outline_falls_back_to_the_full_load(
     assert repr(lazy.lookup("robot/Wheel")) == repr(fresh.lookup("robot/Wheel"))
     assert repr(lazy.lookup("robot/Drive")) == repr(fresh.lookup("robot/Drive"))
     assert repr(lazy.problems) == repr(fresh.problems)
+
+
+def test_digests_from_an_earlier_run_give_the_fingerprints_a_full_load_gives(
+    tmp_path: Path,
+) -> None:
+    """A cached run's catalog makes each file's fingerprint from the digests an
+    earlier run kept (each type's fields walked once, `MsgCatalog._closure`): the
+    same as a catalog that reads the files, for any set of names, a name spelled
+    with `/msg/` or not known included."""
+    files = _files(tmp_path)
+    full = MsgCatalog(files)
+    full.load()
+    types = [*sorted(full._specs)[:60], "geometry_msgs/msg/Pose", "nope/Nope"]
+    rng = random.Random(7)
+    asked = [rng.sample(types, rng.randint(0, 12)) for _ in range(12)]
+    asked += [["robot/Drive"], ["robot/Drive", "robot/Wheel"], types]
+    # each by a catalog of its own, which looks every type up
+    want = [MsgCatalog(files).fingerprint_types(list(a)) for a in asked]
+    for names in asked:
+        full.fingerprint_types(names)  # the digests an earlier run kept
+    for order in (asked, asked[::-1]):
+        kept = MsgCatalog(files)
+        kept.preload_digests(full.digest_table())
+        got = {tuple(a): kept.fingerprint_types(list(a)) for a in order}
+        assert [got[tuple(a)] for a in asked] == want
+        assert kept._closures  # the kept digests answered

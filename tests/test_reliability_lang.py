@@ -27,7 +27,7 @@ from robotfix.annotations.units import UnitError, check_text, resolve
 from robotfix.api import catalog_problems, check_source, interface_files
 from robotfix.config import Config
 from robotfix.diagnostics import Diagnostic
-from robotfix.ros import catalog as catalog_module
+from robotfix.ros import msg as msg_module
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.ros.msg import read_interface
 
@@ -338,14 +338,14 @@ def test_a_failure_on_one_file_is_a_diagnostic_there(
 ) -> None:
     bad = write(tmp_path / "p" / "msg" / "Bad.msg", "float64 x\n")
     good = write(tmp_path / "p" / "msg" / "Good.msg", "float64 v #RobotFix# _ < 1\n")
-    real = catalog_module.read_interface
+    real = msg_module.read_interface
 
     def flaky(path: Path, text: str):  # type: ignore[no-untyped-def]
         if path.name == "Bad.msg":
             raise RecursionError("maximum recursion depth exceeded")
         return real(path, text)
 
-    monkeypatch.setattr(catalog_module, "read_interface", flaky)
+    monkeypatch.setattr(msg_module, "read_interface", flaky)
     catalog = MsgCatalog([bad, good])
     found = catalog_problems(catalog)
     assert [(d.path, d.span.line, d.code) for d in found] == [(str(bad), 1, "RF506")]

@@ -410,7 +410,7 @@ def test_the_workers_answers_are_kept(
     no name and reads no interface file again (the first run after a parallel one
     took 0.51 s on a 235k-line tree, against 0.31 s for the runs after it)."""
     from robotfix import run as run_module
-    from robotfix.ros import catalog as catalog_module
+    from robotfix.ros import msg as msg_module  # the catalog reads a file with it
 
     monkeypatch.setattr(run_module, "MIN_PARALLEL", 1)
     monkeypatch.setattr(run_module, "RACY_NS", 0)  # Cmd.msg is seconds old
@@ -431,13 +431,13 @@ def test_the_workers_answers_are_kept(
 
     monkeypatch.setattr(ModuleIndex, "_lookup", counted)
     read: list[object] = []
-    real_read = catalog_module.read_interface
+    real_read = msg_module.read_interface
 
     def reading(*args: object, **kwargs: object) -> object:
         read.append(args)
         return real_read(*args, **kwargs)  # type: ignore[arg-type]
 
-    monkeypatch.setattr(catalog_module, "read_interface", reading)
+    monkeypatch.setattr(msg_module, "read_interface", reading)
     warm = check_paths([tmp_path / "src"], config, jobs=2, use_cache=True)
     assert warm.from_cache == 7 and looked == []  # driver, __init__, helpers, 4 more
     assert read == []  # the workers' digests of Cmd.msg were kept too

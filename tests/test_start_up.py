@@ -36,6 +36,25 @@ class Driver(Node):
         msg.linear.x = 0.5
         self.pub.publish(msg)
 """
+# a probe's first lines: every stamp trusted at once (`fs.RACY_NS` 0 wherever it is
+# read), as in a tree untouched for two seconds, so that the cache keeps everything
+TRUSTED = """\
+from robotfix import cache, discovery, run
+from robotfix.project import modules
+for module in (cache, discovery, run, modules):
+    module.RACY_NS = 0
+"""
+
+
+def demo_package(root: Path) -> Path:
+    """`root/src/demo`, a ROS package of an empty Python package: its folder."""
+    package = root / "src" / "demo"
+    (package / "demo").mkdir(parents=True)
+    (package / "package.xml").write_text("<package><name>demo</name></package>")
+    (package / "demo" / "__init__.py").write_text("")
+    return package / "demo"
+
+
 # the editor's memo (api.py), `robotfix suggest`'s flow log, and the readers of
 # launch files, parameter YAML and C++ sources
 NOT_LOADED = (
@@ -53,11 +72,7 @@ NOT_LOADED = (
 def test_a_check_of_python_alone_loads_no_other_commands_modules(
     tmp_path: Path,
 ) -> None:
-    package = tmp_path / "src" / "demo"
-    (package / "demo").mkdir(parents=True)
-    (package / "package.xml").write_text("<package><name>demo</name></package>")
-    (package / "demo" / "__init__.py").write_text("")
-    (package / "demo" / "driver.py").write_text(NODE)
+    (demo_package(tmp_path) / "driver.py").write_text(NODE)
     probe = (
         "import sys\n"
         "from robotfix.cli import main\n"
@@ -86,11 +101,7 @@ def test_a_cached_run_makes_each_entry_key_once(
 ) -> None:
     """A run names a file many times (its stat, its bytes, its entry): the cache
     makes its key (`abspath`, which asks the cwd of a relative name) once."""
-    package = tmp_path / "src" / "demo"
-    (package / "demo").mkdir(parents=True)
-    (package / "package.xml").write_text("<package><name>demo</name></package>")
-    (package / "demo" / "__init__.py").write_text("")
-    (package / "demo" / "driver.py").write_text(NODE)
+    (demo_package(tmp_path) / "driver.py").write_text(NODE)
     monkeypatch.chdir(tmp_path)
     config = Config(root=tmp_path)
     cold = check_paths([Path("src")], config, jobs=1, use_cache=True)
@@ -102,3 +113,42 @@ def test_a_cached_run_makes_each_entry_key_once(
     warm = check_paths([Path("src")], config, jobs=1, use_cache=True)
     assert warm.from_cache == len(warm.checked) == len(cold.checked) == 2
     assert asked and len(asked) == len(set(asked))
+
+
+# what only reading interface files and annotations needs (ros/catalog.py's loading)
+READERS = (
+    "robotfix.annotations.ast",
+    "robotfix.annotations.parser",
+    "robotfix.annotations.units",
+    "robotfix.ros.msg",
+    "robotfix.ros.comments",
+)
+MSG = """\
+#RobotFix# Unit(speed) == "m/s"
+float64 speed  # [m/s]
+"""
+
+
+def test_a_warm_cached_run_loads_no_reader_of_interfaces_or_annotations(
+    tmp_path: Path,
+) -> None:
+    """An unchanged tree's run takes every result and the catalog's digests from
+    the cache: the catalog reads no file, so its readers are not even imported."""
+    package = demo_package(tmp_path)
+    (package.parent / "msg").mkdir()
+    (package.parent / "msg" / "Speed.msg").write_text(MSG)
+    (package / "driver.py").write_text(
+        NODE + "\nfrom demo.msg import Speed\nSPEED = Speed().speed\n"
+    )
+    probe = (
+        TRUSTED + "import sys\n"
+        "from robotfix.cli import main\n"
+        f"main(['check', {str(tmp_path / 'src')!r}, '-j', '1'])\n"
+        f"print(sorted(m for m in {READERS!r} if m in sys.modules))\n"
+    )
+    cold = run_probe(probe, tmp_path)
+    assert cold.stdout.strip().splitlines()[-1] != "[]", cold.stdout + cold.stderr
+    warm = run_probe(probe, tmp_path)
+    *output, loaded = warm.stdout.strip().splitlines()
+    assert loaded == "[]", warm.stdout + warm.stderr
+    assert output == cold.stdout.strip().splitlines()[:-1]

@@ -238,12 +238,13 @@ def test_the_fast_path_reads_what_extract_reads() -> None:
     import ast
 
     from robotfix.annotations.extract import extract
-    from robotfix.stubs import load
+    from robotfix.stubs import reader as stub_reader
+    from robotfix.stubs.model import Module
 
     checked = 0
     for path in sorted(DATA.rglob("*.pyi")):
         text = path.read_text(encoding="utf-8")
-        reader = load._Reader(load.Module("m"), text, path.name, None)
+        reader = stub_reader._Reader(Module("m"), text, path.name, None)
         reader.read(ast.parse(text))
         for node in ast.walk(ast.parse(text)):
             if not isinstance(node, ast.Subscript):

@@ -48,7 +48,7 @@ import os
 import stat
 import sys
 import time
-from collections.abc import Iterable, Iterator
+from collections.abc import Collection, Iterable, Iterator
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -202,9 +202,11 @@ class ResultCache:
                     and is_text(v[0])
                     and is_text(v[1])
                     and isinstance(v[2], dict)
-                    and all(is_text(m) and is_text(x) for m, x in v[2].items())
+                    and _texts(v[2])
+                    and _texts(v[2].values())
                     and isinstance(v[3], dict)
-                    and all(_name(r) and is_text(x) for r, x in v[3].items())
+                    and _texts(v[3], "surrogateescape")
+                    and _texts(v[3].values())
                 }
             stats = data.get("stats")
             if isinstance(stats, dict):
@@ -372,7 +374,7 @@ class ResultCache:
                 and len(value) == 2
                 and is_text(value[0])
                 and isinstance(value[1], list)
-                and all(is_text(t) for t in value[1])
+                and _texts(value[1])
             ):
                 return None
             table[name] = (value[0], tuple(value[1]))
@@ -931,9 +933,10 @@ def _valid_entry(entry: Any) -> bool:
         and is_text(entry.get("file"))
         and is_text(entry.get("catalog"))
         and isinstance(entry.get("types"), list)
-        and all(is_text(t) for t in entry["types"])
+        and _texts(entry["types"])
         and isinstance(entry.get("modules"), dict)
-        and all(_name(k) and is_text(v) for k, v in entry["modules"].items())
+        and _texts(entry["modules"], "surrogateescape")
+        and _texts(entry["modules"].values())
         and isinstance(entry.get("diagnostics"), list)
         and all(_valid_diagnostic(d) for d in entry["diagnostics"])
         and "graph" in entry
@@ -1030,6 +1033,17 @@ def _valid_note(raw: Any) -> bool:
 def _number(value: Any, least: int) -> bool:
     """An int (not a bool) in [least, MAX_INT)."""
     return type(value) is int and least <= value < MAX_INT
+
+
+def _texts(values: Collection[Any], errors: str = "strict") -> bool:
+    """`is_text` of each of `values` (`errors` as there): for the usual ASCII
+    strings, one join and one test instead of a call each."""
+    try:
+        if "".join(values).isascii():
+            return True
+    except TypeError:  # not all of them strings
+        return False
+    return all(is_text(value, errors) for value in values)
 
 
 def _name(value: Any) -> bool:

@@ -61,7 +61,7 @@ import re
 import unicodedata
 import weakref
 from collections.abc import Iterable, Sequence
-from typing import Any
+from typing import Any, cast
 
 from robotfix import budget
 from robotfix.analysis.constants import SCALARS
@@ -566,9 +566,10 @@ class _Scope:
                     bound = self.target(item.optional_vars, bound)
             return self.run(node.body, bound)
         if isinstance(node, TRIES):
+            tried = cast(ast.Try, node)  # or an `ast.TryStar`: the same fields
             # a handler may start anywhere in the body: only what was sure before
-            after = self.run(node.orelse, self.run(node.body, bound))
-            for handler in node.handlers:
+            after = self.run(tried.orelse, self.run(tried.body, bound))
+            for handler in tried.handlers:
                 start = bound
                 if handler.type is not None:
                     start = self.expr(handler.type, start)
@@ -578,7 +579,7 @@ class _Scope:
                 if end is not None and handler.name:
                     end = end - {handler.name}  # Python deletes it
                 after = _meet(after, end)
-            final = self.run(node.finalbody, bound)
+            final = self.run(tried.finalbody, bound)
             if after is None or final is None:
                 return None
             return after | final

@@ -149,28 +149,38 @@ class ModuleIndex:
             return None
         if self._restored is not None and self._restored[1] == self._sizes():
             return self._restored[0]  # nothing new: the same object
+        # sorted (search paths renumbered in their order): the order things were
+        # asked in follows the hash seed (`Project._ranked` walks sets of imports)
+        spelled = sorted(self._spelled)
+        spelled_as = [self._numbers[roots] for roots in spelled]  # new -> old
+        renumber = {old: new for new, old in enumerate(spelled_as)}
         # by search path: the names, and each one's file (1-based in "files"; 0:
         # no module of the tree)
+        asked: dict[int, list[str]] = {}
+        for number, name in self._resolved:
+            asked.setdefault(renumber[number], []).append(name)
         files: dict[Path, int] = {}
         groups: dict[int, tuple[list[str], list[int]]] = {}
-        for (number, name), found in self._resolved.items():
-            names, found_ids = groups.setdefault(number, ([], []))
-            names.append(name)
-            found_ids.append(
+        for number in sorted(asked):
+            names = sorted(asked[number])
+            old = spelled_as[number]
+            found_ids = [
                 0 if found is None else files.setdefault(found, len(files) + 1)
-            )
+                for found in (self._resolved[old, name] for name in names)
+            ]
+            groups[number] = (names, found_ids)
         # a probe in a folder listed before it is answered by the folder's stamp
         # (no symlink there, else nothing is kept): checked only if that changed
         covered = self._covered
-        probes = self._probes.items()
+        probes = [(k, self._probes[k]) for k in sorted(self._probes)]
         return {
             "key": key,
             "stamps": self._stamps,
             "probes": [[k, d, e] for k, (d, e) in probes if k not in covered],
             "covered": [[k, d, e] for k, (d, e) in probes if k in covered],
             "links": self._links,
-            "paths": self._spelled,
-            "ids": self._ids,
+            "paths": spelled,
+            "ids": {k: renumber[n] for k, n in self._ids.items()},
             "files": [str(f) for f in files],
             "resolved": [[n, names, ids] for n, (names, ids) in groups.items()],
         }

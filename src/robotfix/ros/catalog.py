@@ -41,19 +41,19 @@ from fractions import Fraction
 from functools import cache
 from itertools import islice
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from robotfix import messages, rules, tomlfile
-from robotfix.annotations import ast as A
-from robotfix.annotations.numbers import NUMBERS, named_number
-from robotfix.annotations.parser import AnnotationSyntaxError, parse_predicate
-from robotfix.annotations.units import UnitError, resolve
 from robotfix.diagnostics import Diagnostic, Note, Rule, Span
 from robotfix.disk_cache import JsonCache, install_key
 from robotfix.fs import UnreadableError, read_text
-from robotfix.ros.comments import CommentUnit
 from robotfix.ros.install import InstallSpace
-from robotfix.ros.msg import InterfaceFile, Section, read_interface
+
+if TYPE_CHECKING:  # a cached run asks only the digests: it reads no interface file
+    # nor annotation, and loads none of these (each function that does imports them)
+    from robotfix.annotations import ast as A
+    from robotfix.ros.comments import CommentUnit
+    from robotfix.ros.msg import InterfaceFile, Section
 
 # `MsgCatalog.outline`: (file, sha1 of its text, [(type, has fields)]) per file used
 Outline = list[tuple[str, str, list[tuple[str, bool]]]]
@@ -164,6 +164,8 @@ def suffix_unit(name: str) -> str | None:
 def is_comment_unit(text: str) -> bool:
     """Whether the text of a `[...]` in a comment is a unit pint reads (not a tag,
     not a typo, nothing pint should not evaluate)."""
+    from robotfix.annotations.units import UnitError, resolve
+
     try:
         return not resolve(text).is_label
     except UnitError:
@@ -193,6 +195,8 @@ class CatalogProblem:
 
 def constant_term(type_: str, value: Any) -> A.Expr | None:
     """The solver term of a constant or default value of a field type."""
+    from robotfix.annotations import ast as A
+
     if isinstance(value, bool):
         return A.Bool(value)
     if isinstance(value, (int, float, Fraction)) and not isinstance(value, bool):
@@ -252,6 +256,12 @@ class MsgCatalog:
         self._children: dict[str, tuple[str, ...]] = {}
         self._digests_handed = 0  # `fresh_digests`: the table's entries handed out
         self._combined: dict[tuple[str, ...], str] = {}  # names asked -> digest
+        # a name asked -> the types its digest covers (its own, its fields'...), and
+        # each of those types' line of the digest: known once its digest and fields
+        # are (`_closure`), so a cached run's many files that share types walk
+        # each type's fields once
+        self._closures: dict[str, frozenset[str]] = {}
+        self._lines: dict[str, str] = {}
         # the lazy load (`preload_outline`): each used file in order, its digest and
         # its sections (name, has fields); files not read yet, by type they define
         self._outline: Outline | None = None
@@ -363,6 +373,12 @@ class MsgCatalog:
         known = self._combined.get(asked)
         if known is not None:  # many files use the same few types
             return known
+        covered = self._covered(asked)
+        if covered is not None:  # every digest known: no type is looked up
+            lines = sorted(map(self._lines.__getitem__, covered))
+            combined = hashlib.sha256("\n".join(lines).encode()).hexdigest()
+            self._combined[asked] = combined
+            return combined
         if self._resolved_digests is None:
             self._resolved_digests = {}
         digests = self._resolved_digests
@@ -393,6 +409,39 @@ class MsgCatalog:
         combined = hashlib.sha256("\n".join(lines).encode()).hexdigest()
         self._combined[asked] = combined  # the digests it is made of never change
         return combined
+
+    def _covered(self, names: tuple[str, ...]) -> set[str] | None:
+        """What `fingerprint_types` covers for `names` when every digest it needs
+        is known (None otherwise)."""
+        covered: set[str] = set()
+        for name in names:
+            part = self._closures.get(name) or self._closure(name)
+            if part is None:
+                return None
+            covered |= part
+        return covered
+
+    def _closure(self, name: str) -> frozenset[str] | None:
+        """The types `fingerprint_types` covers for `name`, when each one's digest
+        and fields are known already (None otherwise: it looks them up)."""
+        digests = self._resolved_digests
+        if digests is None:
+            return None
+        children = self._children
+        seen: set[str] = set()
+        todo = [normalize(name)]
+        while todo:
+            key = todo.pop()
+            if key in seen:
+                continue
+            if key not in digests or key not in children:
+                return None
+            seen.add(key)
+            if key not in self._lines:
+                self._lines[key] = f"{key} {digests[key]}"
+            todo.extend(children[key])
+        found = self._closures[name] = frozenset(seen)
+        return found
 
     def digest_table(self) -> dict[str, tuple[str, tuple[str, ...]]]:
         """What `fingerprint_types` worked out so far: each type's digest and the
@@ -655,6 +704,8 @@ class MsgCatalog:
                 f"cannot read interface file: {err.reason}",
             )
             return None
+        from robotfix.ros.msg import read_interface
+
         try:
             parsed = read_interface(path, text)
         except Exception as err:  # one file never takes the run down
@@ -717,6 +768,8 @@ class MsgCatalog:
             text = read_text(path, MAX_INTERFACE_BYTES)
         except UnreadableError:
             return None
+        from robotfix.ros.msg import read_interface
+
         parsed = read_interface(path, text)
         names = [section.name for section in parsed.sections]
         if parsed.problems or key not in names:
@@ -853,6 +906,8 @@ class MsgCatalog:
     def _unit_ok(self, path: str, found: CommentUnit) -> bool:
         """An IDL `@unit` that is a typo of a unit (or unsafe for pint) is RF502;
         a word that is no unit at all (rosidl copies `[enum]`) is only ignored."""
+        from robotfix.annotations.units import UnitError, resolve
+
         try:
             resolve(found.text)
         except UnitError as err:
@@ -861,6 +916,8 @@ class MsgCatalog:
         return True
 
     def _add_annotations(self, path: str, section: Section) -> None:
+        from robotfix.annotations.parser import AnnotationSyntaxError, parse_predicate
+
         spec = self._specs[section.name]
         field_lines = {decl.line: decl.name for decl in section.fields}
         for note in section.annotations:
@@ -901,6 +958,8 @@ class MsgCatalog:
         origin: Origin,
         note: Any,
     ) -> None:
+        from robotfix.annotations import ast as A
+
         for part in A.conjuncts(predicate):
             if isinstance(part, A.UnitIs):
                 target = _own_path(part.target, own) if part.target else own
@@ -955,6 +1014,8 @@ class MsgCatalog:
         """An annotation that names an array field is on its elements (the field's
         name, or `_` on its line) or on its length (`len(field)`); a part on the
         elements names no other field."""
+        from robotfix.annotations import ast as A
+
         in_len: set[int] = set()
         for node in A.walk(part):
             if isinstance(node, A.Func) and node.name == "len":
@@ -982,6 +1043,9 @@ class MsgCatalog:
     def _put_constants(self, spec: MsgSpec, predicate: A.Expr) -> A.Expr:
         """The message's constants and `pi`, `math.pi`... by value, where no field
         has that name."""
+        from robotfix.annotations import ast as A
+        from robotfix.annotations.numbers import NUMBERS, named_number
+
         values: dict[str, A.Expr] = {}
         for ref in A.names(predicate):
             name = ref.name
@@ -999,6 +1063,8 @@ class MsgCatalog:
     def _add_unit(
         self, spec: MsgSpec, target: str, part: A.UnitIs, origin: Origin, col: int
     ) -> None:
+        from robotfix.annotations.units import UnitError, resolve
+
         text = part.text if part.kind == "unit" else f"{part.kind}:{part.text}"
         if part.kind == "unit":
             try:
@@ -1217,6 +1283,8 @@ def _type_name(file: InterfaceFile, section: str) -> str:
 
 def _same_label(a: str, b: str) -> bool:
     """Two FieldUnit texts of one kind that mean the same (`m` and `meter`)."""
+    from robotfix.annotations.units import resolve
+
     if a == b:
         return True
     return _kind(a) == "unit" and resolve(a).same_as(resolve(b))
