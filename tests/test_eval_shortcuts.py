@@ -1,0 +1,118 @@
+"""Issue 25 target 1: the evaluator's shortcuts for the most frequent nodes (a
+local's value read, an unknown's or a module's attribute, a fresh unknown made
+in place) answer what the general path answers."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from robotfix import api
+from robotfix.analysis import binder, expressions, interpreter
+from robotfix.analysis.context import FileContext
+from robotfix.analysis.state import State
+from robotfix.analysis.values import Value
+from robotfix.annotations import ast as A
+from robotfix.annotations.units import resolve
+from robotfix.ros.catalog import MsgCatalog
+from robotfix.source import SourceFile
+
+CASES = Path(__file__).parent / "cases"
+# single-file cases whose bodies read and bind many locals, lists, messages
+DIRS = ("paths", "containers", "control", "nodes")
+
+NODE = """\
+import math
+import sys
+import rclpy
+from rclpy.node import Node
+from geometry_msgs.msg import Twist
+
+
+class Driver(Node):
+    def __init__(self):
+        super().__init__('driver')
+        self.pub = self.create_publisher(Twist, 'cmd_vel', 10)
+
+    def cb(self, args):
+        speed = args.speed
+        turn = math.pi / 4
+        if args.verbose:
+            print(sys.argv, args.verbose)
+        msg = Twist()
+        msg.linear.x = speed
+        msg.angular.z = turn
+        self.pub.publish(msg)
+"""
+
+
+def _shown(diags: list[Any]) -> list[str]:
+    return [f"{d.span.line}:{d.span.col} {d.rule.code} {d.message}" for d in diags]
+
+
+def test_a_fresh_unknown_is_made_as_value_makes_it() -> None:
+    """`FileContext.fresh` fills a Value's slots in place (no call through the
+    type to `__init__`): every slot as `Value(kind, sym, unit)` has it."""
+    ctx = FileContext(SourceFile.from_bytes("n.py", b""), MsgCatalog([]), print)
+    for kind, unit in (("float", resolve("m")), ("int", None), ("unknown", None)):
+        made = ctx.fresh(kind, "x", unit)
+        assert type(made) is Value
+        sym = made.term
+        assert isinstance(sym, A.Sym) and sym.ident == ctx.last_id()
+        plain = Value(kind, A.Sym(sym.ident, "int" if kind == "int" else "real"), unit)
+        assert [getattr(made, n) for n in Value.__slots__] == [
+            getattr(plain, n) for n in Value.__slots__
+        ]
+
+
+def _cases() -> list[Path]:
+    return sorted(p for d in DIRS for p in (CASES / d).glob("*.py"))
+
+
+def test_a_local_read_by_the_shortcut_is_what_lookup_name_gives(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """`Binder.eval_Name` answers a local holding a value itself; through
+    `lookup_name` alone (the general path) every case checks the same."""
+    cases = _cases()
+    assert len(cases) > 30
+    fast = [_shown(api.check_source(p.read_text(), str(p))) for p in cases]
+    monkeypatch.setattr(
+        binder.Binder, "eval_Name", expressions.ExpressionEvaluator.eval_Name
+    )
+    monkeypatch.setattr(expressions, "_EVAL", {})  # the dispatch tables anew
+    general = [_shown(api.check_source(p.read_text(), str(p))) for p in cases]
+    assert fast == general
+    assert any(fast)
+
+
+def test_unknowns_and_modules_have_the_members_the_shortcuts_assume(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    """`eval_Attribute` answers an unknown's attribute without asking `member`
+    (it has none) and a module's from `module_attribute` alone: what `member`
+    answers for them."""
+    made: list[Any] = []
+    real = interpreter.Interpreter.__init__
+
+    def init(self: Any, *args: Any, **kwargs: Any) -> None:
+        real(self, *args, **kwargs)
+        made.append(self)
+
+    monkeypatch.setattr(interpreter.Interpreter, "__init__", init)
+    api.check_source(NODE, str(tmp_path / "a.py"))
+    walker = made[-1]
+    state = State()
+    unknown = walker.ctx.fresh("unknown", "args")
+    for attr in ("speed", "verbose", "pi", "__class__"):
+        assert walker.member(unknown, attr, state) is None
+        assert walker.member(Value("unknown"), attr, state) is None
+    for module, attr in (("math", "pi"), ("sys", "argv"), ("rclpy", "init")):
+        base = Value("module", name=module)
+        assert walker.member(base, attr, state) == (
+            walker.lookups.module_attribute(module, attr)
+        )
+    pi = walker.member(Value("module", name="math"), "pi", state)
+    assert pi is not None and pi.kind == "float"
