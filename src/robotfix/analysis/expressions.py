@@ -240,6 +240,18 @@ class ExpressionEvaluator:
         """`base.attr`; `base`, the value of `node.value`, when already known."""
         if base is None:
             base = self.eval(node.value, state)
+        # the most frequent bases first, as `member` would answer, without its calls:
+        # an unknown's (it has no member) and a module's
+        kind = base.kind
+        if kind == "unknown":
+            if type(base.term) is A.Sym:
+                # `args.verbose` twice is one value, until something may change args
+                version = state.version(base.term)
+                key = ("attribute", base.term.ident, node.attr, version)
+                return self.ctx.derived(key, "unknown", node)
+            return self.unknown(node)
+        if kind == "module":  # `math.pi`, `rospy.loginfo` (always a value)
+            return self.lookups.module_attribute(base.name, node.attr)
         if base.kind in ("parameter", "parameter_value"):
             return self.params.parameter_attribute(base, node, state)
         if base.kind == "msg" and base.ref in state.heap:
@@ -274,11 +286,6 @@ class ExpressionEvaluator:
             typed = self.program.types.attribute(base.name, node.attr)
             if typed is not None:
                 return self.lookups.typed(typed, node, state)
-        if base.kind == "unknown" and isinstance(base.term, A.Sym):
-            # `args.verbose` twice is one value, until something may change args
-            version = state.version(base.term)
-            key = ("attribute", base.term.ident, node.attr, version)
-            return self.ctx.derived(key, "unknown", node)
         return self.unknown(node)
 
     def member(self, base: Value, attr: str, state: State) -> Value | None:
