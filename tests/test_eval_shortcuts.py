@@ -10,7 +10,7 @@ from typing import Any
 import pytest
 
 from robotfix import api
-from robotfix.analysis import binder, expressions, interpreter
+from robotfix.analysis import binder, context, expressions, interpreter
 from robotfix.analysis.context import FileContext
 from robotfix.analysis.state import State
 from robotfix.analysis.values import Value
@@ -116,3 +116,45 @@ def test_unknowns_and_modules_have_the_members_the_shortcuts_assume(
         )
     pi = walker.member(Value("module", name="math"), "pi", state)
     assert pi is not None and pi.kind == "float"
+
+
+def test_a_derived_value_skips_first_version_only_where_it_is_its_own() -> None:
+    """`derived` asks `_first_version` only when something was changed or the key
+    reads a later version: for every other key it answers the key itself."""
+    sym = A.Sym(9, "real")
+    own = [
+        ("attribute", 5, "x", 0),
+        ("truthy", 5, 0),
+        ("len", 3, 0),
+        ("isinstance", 4, "int", 0),
+        ("is None", 7),
+        ("is None", sym),
+        ("==", sym, A.Str("slow")),
+        ("truthy", "math.TYPE_CHECKING"),
+    ]
+    for key in own:
+        assert context._first_version(key, {})[0] is key
+    ctx = FileContext(SourceFile.from_bytes("n.py", b""), MsgCatalog([]), print)
+    first = ctx.derived(("attribute", 5, "x", 0), "unknown", "x")
+    assert not ctx.unchanged
+    later = ctx.derived(("attribute", 5, "x", 2), "unknown", "x")
+    assert isinstance(later.term, A.Sym) and ctx.unchanged == {
+        later.term.ident: (first.term, 5)
+    }
+    again = ctx.derived(("truthy", 11, 0), "bool", "t")  # now something changed
+    assert again.term != first.term and len(ctx.unchanged) == 1
+
+
+def test_a_section_type_is_found_under_its_nested_names(tmp_path: Path) -> None:
+    """`msg_type_named` tries a name's section spellings only when it ends in one
+    (`MoveRequest`, `Move_Request`): others are looked up as written."""
+    srv = tmp_path / "pkg" / "srv" / "Move.srv"
+    srv.parent.mkdir(parents=True)
+    srv.write_text("float64 x\n---\nbool ok\n")
+    ctx = FileContext(SourceFile.from_bytes("n.py", b""), MsgCatalog([srv]), print)
+    assert ctx.msg_type_named("pkg.srv.MoveRequest") == "pkg/Move_Request"
+    assert ctx.msg_type_named("pkg.srv.Move_Request") == "pkg/Move_Request"
+    assert ctx.msg_type_named("pkg.srv.MoveResponse") == "pkg/Move_Response"
+    assert ctx.msg_type_named("pkg.srv.Move.Response") == "pkg/Move_Response"
+    assert ctx.msg_type_named("pkg.srv.Move") is None
+    assert ctx.msg_type_named("rospy.loginfo") is None

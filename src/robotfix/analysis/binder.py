@@ -100,14 +100,16 @@ class Binder(CallEvaluator):
 
     # -- names ---------------------------------------------------------------
     def eval_Name(self, node: ast.Name, state: State) -> Value:  # noqa: N802
-        """Most names read are locals holding a value, and no editor asks for
-        hovers: `lookup_name`'s first answer, without its call."""
+        """`lookup_name`, and a hover where the editor asks for one. Most names
+        read are locals holding a value: its first answer, without its call."""
+        if self.ctx.hovers is not None:
+            return CallEvaluator.eval_Name(self, node, state)
         name = node.id
-        if name in self.scope.local_names and self.ctx.hovers is None:
+        if name in self.scope.local_names:
             bound = state.env.get(name)
             if type(bound) is Value and bound.kind != "list":
                 return state.use(bound) if state.shared.defs else bound
-        return CallEvaluator.eval_Name(self, node, state)
+        return self.lookup_name(name, state, node)
 
     def lookup_name(self, name: str, state: State, node: ast.AST) -> Value:
         scope = self.scope
