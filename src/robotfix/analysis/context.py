@@ -172,6 +172,8 @@ class FileContext:
                 self._shared(found.term)
             return found
         found = self._derived[key] = self.fresh(kind, description)
+        if not self.unchanged and not (key[0] in VERSIONED and key[-1]):
+            return found  # (nothing changed, a first version: its own first read)
         first, read = _first_version(key, self.unchanged)
         if first is not key and isinstance(found.term, A.Sym):
             base = self.derived(first, kind, description)
@@ -352,11 +354,13 @@ class FileContext:
         if found is None:
             return None
         package, name = found
-        candidates = [name] + [
-            f"{name[: -len(s)].rstrip('_')}_{s}"
-            for s in SECTION_SUFFIXES
-            if name.endswith(s) and len(name) > len(s)
-        ]
+        candidates = [name]
+        if name.endswith(SECTION_SUFFIXES):  # (most names end in none: no loop)
+            candidates += [
+                f"{name[: -len(s)].rstrip('_')}_{s}"
+                for s in SECTION_SUFFIXES
+                if name.endswith(s) and len(name) > len(s)
+            ]
         for candidate in candidates:
             spec = self.catalog.lookup(f"{package}/{candidate}")
             if spec is not None:
