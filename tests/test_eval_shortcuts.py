@@ -4,6 +4,7 @@ in place) answer what the general path answers."""
 
 from __future__ import annotations
 
+from fractions import Fraction
 from pathlib import Path
 from typing import Any
 
@@ -158,3 +159,24 @@ def test_a_section_type_is_found_under_its_nested_names(tmp_path: Path) -> None:
     assert ctx.msg_type_named("pkg.srv.Move.Response") == "pkg/Move_Response"
     assert ctx.msg_type_named("pkg.srv.Move") is None
     assert ctx.msg_type_named("rospy.loginfo") is None
+
+
+def test_only_a_bool_is_compared_with_true() -> None:
+    """`State.assume` and `under` compare a fact with TRUE only when it is a
+    Bool: no other term equals it (a `Binary` asked two `__eq__`s to say so)."""
+    sym = A.Sym(1, "real")
+    others = [
+        sym,
+        A.Num(Fraction(1), True),
+        A.Str("True"),
+        A.Unary("not", A.Bool(False)),
+        A.Binary("and", A.TRUE, A.TRUE),
+        A.Name("True"),
+    ]
+    for term in others:
+        assert term != A.TRUE
+    assert A.Bool(True) == A.TRUE and A.Bool(False) != A.TRUE
+    state = State()
+    for fact in [A.TRUE, A.Bool(True), *others, A.Bool(False), None]:
+        state.assume(fact)
+    assert state.facts == [*others, A.Bool(False)]

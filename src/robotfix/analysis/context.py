@@ -187,7 +187,7 @@ class FileContext:
         first = self._first_reads.setdefault(read, sym)
         if self.unit_log is not None:
             self._shared(first)
-        if first != sym:
+        if first is not sym and first != sym:  # (the first read: no comparison)
             self.unchanged[sym.ident] = (first, read)
 
     def sub_id(self, parent: int, name: str) -> int:

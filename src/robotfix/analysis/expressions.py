@@ -237,20 +237,18 @@ class ExpressionEvaluator:
     def eval_Attribute(
         self, node: ast.Attribute, state: State, base: Value | None = None
     ) -> Value:
-        """`base.attr`; `base`, the value of `node.value`, when already known."""
+        """`base.attr`; `base`, the value of `node.value`, when already known. The
+        most frequent bases first, as `member` answers them, without its calls."""
         if base is None:
             base = self.eval(node.value, state)
-        # the most frequent bases first, as `member` would answer, without its calls:
-        # an unknown's (it has no member) and a module's
-        kind = base.kind
-        if kind == "unknown":
+        if base.kind == "unknown":  # (it has no member)
             if type(base.term) is A.Sym:
                 # `args.verbose` twice is one value, until something may change args
                 version = state.version(base.term)
                 key = ("attribute", base.term.ident, node.attr, version)
                 return self.ctx.derived(key, "unknown", node)
             return self.unknown(node)
-        if kind == "module":  # `math.pi`, `rospy.loginfo` (always a value)
+        if base.kind == "module":  # `math.pi`, `rospy.loginfo` (always a value)
             return self.lookups.module_attribute(base.name, node.attr)
         if base.kind in ("parameter", "parameter_value"):
             return self.params.parameter_attribute(base, node, state)
@@ -314,7 +312,7 @@ class ExpressionEvaluator:
         key = f"{var}.{node.attr}"
         bound = state.env.get(key, _UNREAD)
         if isinstance(bound, Value):
-            return state.use(bound)
+            return state.use(bound) if state.shared.defs else bound
         if bound is _UNREAD and base.kind == "instance":
             inherited = self.inherited_method(base.name, node.attr)
             if inherited is not None:
@@ -500,11 +498,7 @@ class ExpressionEvaluator:
         if (
             isinstance(node.op, ast.Add)
             and both
-            and "generator"
-            not in (
-                left.kind,
-                right.kind,
-            )
+            and "generator" not in (left.kind, right.kind)
         ):
             found = containers.concatenated(left, right)
         elif isinstance(node.op, ast.Mult) and not both:
@@ -761,7 +755,7 @@ class ExpressionEvaluator:
     def under(self, state: State, fact: A.Expr, evaluate: Callable[[], T]) -> T:
         """Evaluate on the path where `fact` holds (the right side of `and`, an arm
         of `a if c else b`); the fact is dropped afterwards."""
-        if fact == A.TRUE:
+        if type(fact) is A.Bool and fact == A.TRUE:  # (as `State.assume` asks)
             return evaluate()
         at = len(state.facts)
         state.facts.append(fact)
