@@ -11,7 +11,7 @@ from typing import Any
 import pytest
 
 from robotfix import api
-from robotfix.analysis import binder, context, expressions, interpreter
+from robotfix.analysis import binder, context, expressions
 from robotfix.analysis.context import FileContext
 from robotfix.analysis.state import State
 from robotfix.analysis.values import Value
@@ -19,6 +19,7 @@ from robotfix.annotations import ast as A
 from robotfix.annotations.units import resolve
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.source import SourceFile
+from tests.test_eval_costs import _interpreters
 
 CASES = Path(__file__).parent / "cases"
 # single-file cases whose bodies read and bind many locals, lists, messages
@@ -95,14 +96,7 @@ def test_unknowns_and_modules_have_the_members_the_shortcuts_assume(
     """`eval_Attribute` answers an unknown's attribute without asking `member`
     (it has none) and a module's from `module_attribute` alone: what `member`
     answers for them."""
-    made: list[Any] = []
-    real = interpreter.Interpreter.__init__
-
-    def init(self: Any, *args: Any, **kwargs: Any) -> None:
-        real(self, *args, **kwargs)
-        made.append(self)
-
-    monkeypatch.setattr(interpreter.Interpreter, "__init__", init)
+    made = _interpreters(monkeypatch)
     api.check_source(NODE, str(tmp_path / "a.py"))
     walker = made[-1]
     state = State()
