@@ -138,6 +138,12 @@ def test_a_derived_value_skips_first_version_only_where_it_is_its_own() -> None:
     }
     again = ctx.derived(("truthy", 11, 0), "bool", "t")  # now something changed
     assert again.term != first.term and len(ctx.unchanged) == 1
+    # a first read of an object that is itself a later read: tied to the first's
+    assert isinstance(first.term, A.Sym)
+    inner = ctx.derived(("attribute", later.term.ident, "y", 0), "unknown", "x.y")
+    origin = ctx.derived(("attribute", first.term.ident, "y", 0), "unknown", "x.y")
+    assert isinstance(inner.term, A.Sym)
+    assert ctx.unchanged[inner.term.ident] == (origin.term, 5)
 
 
 def test_a_section_type_is_found_under_its_nested_names(tmp_path: Path) -> None:

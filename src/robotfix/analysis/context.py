@@ -172,8 +172,11 @@ class FileContext:
                 self._shared(found.term)
             return found
         found = self._derived[key] = self.fresh(kind, description)
-        if not self.unchanged and not (key[0] in VERSIONED and key[-1]):
-            return found  # (nothing changed, a first version: its own first read)
+        if not (key[0] in VERSIONED and key[-1]):  # a first version: its own first
+            head = key[1] if len(key) > 1 else None  # read unless its object changed
+            ident = head.ident if type(head) is A.Sym else head
+            if not isinstance(ident, int) or ident not in self.unchanged:
+                return found
         first, read = _first_version(key, self.unchanged)
         if first is not key and isinstance(found.term, A.Sym):
             base = self.derived(first, kind, description)
