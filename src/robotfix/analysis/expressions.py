@@ -520,9 +520,9 @@ class ExpressionEvaluator:
         return self.unknown(node)
 
     def eval_Compare(self, node: ast.Compare, state: State) -> Value:
-        operands = [self.eval(node.left, state)] + [
-            self.eval(c, state) for c in node.comparators
-        ]
+        operands = [self.eval(node.left, state)]
+        for comparator in node.comparators:  # (a loop: no comprehension's frame)
+            operands.append(self.eval(comparator, state))
         parts: list[A.Expr] = []
         for op, left, right in zip(node.ops, operands, operands[1:], strict=False):
             if isinstance(op, (ast.Is, ast.IsNot)):
@@ -546,7 +546,8 @@ class ExpressionEvaluator:
                 parts.append(same if name == "==" else A.Unary("not", same))
                 continue
             parts.append(A.Binary(name, left.term, right.term))
-        return Value("bool", A.conjoin(parts))
+        # (one comparison, most often: it is its own conjunction)
+        return Value("bool", parts[0] if len(parts) == 1 else A.conjoin(parts))
 
     def _is_none(self, left: Value, right: Value, state: State) -> A.Expr | None:
         """`x is None`: known for None and built messages, else the same unknown
