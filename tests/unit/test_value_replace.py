@@ -7,7 +7,7 @@ import dataclasses
 
 import pytest
 
-from robotfix.analysis.values import Items, Uninit, Value, replace, unknown
+from robotfix.analysis.values import Items, Uninit, Value, replace
 from robotfix.annotations import ast as A
 
 
@@ -53,12 +53,3 @@ def test_every_slot_of_a_value_is_copied() -> None:
     value = Value(*marks)  # type: ignore[arg-type]
     copy = replace(value)
     assert [getattr(copy, name) for name in Value.__slots__] == marks
-
-
-def test_an_unknown_is_made_as_value_makes_it() -> None:
-    sym = A.Sym(4, "real")
-    made, plain = unknown("float", sym, None), Value("float", sym, None)
-    assert type(made) is Value
-    assert [getattr(made, n) for n in Value.__slots__] == [
-        getattr(plain, n) for n in Value.__slots__
-    ]

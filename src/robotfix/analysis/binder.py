@@ -99,6 +99,18 @@ class Binder(CallEvaluator):
         self._breaking: list[list[State] | None] = []
 
     # -- names ---------------------------------------------------------------
+    def eval_Name(self, node: ast.Name, state: State) -> Value:  # noqa: N802
+        """`lookup_name`, and a hover where the editor asks for one. Most names
+        read are locals holding a value: its first answer, without its call."""
+        if self.ctx.hovers is not None:
+            return CallEvaluator.eval_Name(self, node, state)
+        name = node.id
+        if name in self.scope.local_names:
+            bound = state.env.get(name)
+            if type(bound) is Value and bound.kind != "list":
+                return state.use(bound) if state.shared.defs else bound
+        return self.lookup_name(name, state, node)
+
     def lookup_name(self, name: str, state: State, node: ast.AST) -> Value:
         scope = self.scope
         if name in scope.local_names:
@@ -325,13 +337,17 @@ class Binder(CallEvaluator):
     # -- binding -------------------------------------------------------------
     def bind(self, target: ast.expr, value: Value, state: State) -> None:
         if isinstance(target, ast.Name):
-            decl = self.decl_for(target.id)
+            scope = self.scope  # (most bodies declare nothing: no call then)
+            declares = scope.decls or scope.global_names
+            decl = self.decl_for(target.id) if declares else None
             if decl is not None:
                 lookup = self.refinement_lookup(decl, state)
                 value = self.refined.assign_refined(
                     state, target.id, decl, value, self.site, lookup
                 )
-            bound = state.env[target.id] = value.settled()
+            if value.uninit is not None or value.default_of is not None:
+                value = value.settled()  # (else it is settled: no call)
+            bound = state.env[target.id] = value
             self.lists_seen = self.lists_seen or value.kind == "list"
             if self.ctx.hovers is not None:  # the editor asks: else no closure
                 self.note_hover(

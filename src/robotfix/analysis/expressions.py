@@ -237,9 +237,19 @@ class ExpressionEvaluator:
     def eval_Attribute(
         self, node: ast.Attribute, state: State, base: Value | None = None
     ) -> Value:
-        """`base.attr`; `base`, the value of `node.value`, when already known."""
+        """`base.attr`; `base`, the value of `node.value`, when already known. The
+        most frequent bases first, as `member` answers them, without its calls."""
         if base is None:
             base = self.eval(node.value, state)
+        if base.kind == "unknown":  # (it has no member)
+            if type(base.term) is A.Sym:
+                # `args.verbose` twice is one value, until something may change args
+                version = state.version(base.term)
+                key = ("attribute", base.term.ident, node.attr, version)
+                return self.ctx.derived(key, "unknown", node)
+            return self.unknown(node)
+        if base.kind == "module":  # `math.pi`, `rospy.loginfo` (always a value)
+            return self.lookups.module_attribute(base.name, node.attr)
         if base.kind in ("parameter", "parameter_value"):
             return self.params.parameter_attribute(base, node, state)
         if base.kind == "msg" and base.ref in state.heap:
@@ -274,11 +284,6 @@ class ExpressionEvaluator:
             typed = self.program.types.attribute(base.name, node.attr)
             if typed is not None:
                 return self.lookups.typed(typed, node, state)
-        if base.kind == "unknown" and isinstance(base.term, A.Sym):
-            # `args.verbose` twice is one value, until something may change args
-            version = state.version(base.term)
-            key = ("attribute", base.term.ident, node.attr, version)
-            return self.ctx.derived(key, "unknown", node)
         return self.unknown(node)
 
     def member(self, base: Value, attr: str, state: State) -> Value | None:
@@ -307,7 +312,7 @@ class ExpressionEvaluator:
         key = f"{var}.{node.attr}"
         bound = state.env.get(key, _UNREAD)
         if isinstance(bound, Value):
-            return state.use(bound)
+            return state.use(bound) if state.shared.defs else bound
         if bound is _UNREAD and base.kind == "instance":
             inherited = self.inherited_method(base.name, node.attr)
             if inherited is not None:
@@ -493,11 +498,7 @@ class ExpressionEvaluator:
         if (
             isinstance(node.op, ast.Add)
             and both
-            and "generator"
-            not in (
-                left.kind,
-                right.kind,
-            )
+            and "generator" not in (left.kind, right.kind)
         ):
             found = containers.concatenated(left, right)
         elif isinstance(node.op, ast.Mult) and not both:
@@ -519,9 +520,9 @@ class ExpressionEvaluator:
         return self.unknown(node)
 
     def eval_Compare(self, node: ast.Compare, state: State) -> Value:
-        operands = [self.eval(node.left, state)] + [
-            self.eval(c, state) for c in node.comparators
-        ]
+        operands = [self.eval(node.left, state)]
+        for comparator in node.comparators:  # (a loop: no comprehension's frame)
+            operands.append(self.eval(comparator, state))
         parts: list[A.Expr] = []
         for op, left, right in zip(node.ops, operands, operands[1:], strict=False):
             if isinstance(op, (ast.Is, ast.IsNot)):
@@ -545,7 +546,8 @@ class ExpressionEvaluator:
                 parts.append(same if name == "==" else A.Unary("not", same))
                 continue
             parts.append(A.Binary(name, left.term, right.term))
-        return Value("bool", A.conjoin(parts))
+        # (one comparison, most often: it is its own conjunction)
+        return Value("bool", parts[0] if len(parts) == 1 else A.conjoin(parts))
 
     def _is_none(self, left: Value, right: Value, state: State) -> A.Expr | None:
         """`x is None`: known for None and built messages, else the same unknown
@@ -754,7 +756,7 @@ class ExpressionEvaluator:
     def under(self, state: State, fact: A.Expr, evaluate: Callable[[], T]) -> T:
         """Evaluate on the path where `fact` holds (the right side of `and`, an arm
         of `a if c else b`); the fact is dropped afterwards."""
-        if fact == A.TRUE:
+        if type(fact) is A.Bool and fact == A.TRUE:  # (as `State.assume` asks)
             return evaluate()
         at = len(state.facts)
         state.facts.append(fact)

@@ -136,7 +136,9 @@ class State:
         return self.versions.get(term.ident, 0) if self.versions else 0
 
     def assume(self, fact: A.Expr | None) -> None:
-        if fact is not None and fact != A.TRUE:
+        # (only a Bool equals TRUE: other terms are not compared, which asks two
+        # generated `__eq__`s for a `Binary`)
+        if fact is not None and (type(fact) is not A.Bool or fact != A.TRUE):
             self.facts.append(fact)
 
 

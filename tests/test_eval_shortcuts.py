@@ -1,0 +1,182 @@
+"""Issue 25 target 1: the evaluator's shortcuts for the most frequent nodes (a
+local's value read, an unknown's or a module's attribute, a fresh unknown made
+in place) answer what the general path answers."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from robotfix import api
+from robotfix.analysis import binder, context, expressions
+from robotfix.analysis.context import FileContext
+from robotfix.analysis.state import State
+from robotfix.analysis.values import Value
+from robotfix.annotations import ast as A
+from robotfix.annotations.units import resolve
+from robotfix.ros.catalog import MsgCatalog
+from robotfix.source import SourceFile
+from tests.test_eval_costs import _interpreters
+
+CASES = Path(__file__).parent / "cases"
+# single-file cases whose bodies read and bind many locals, lists, messages
+DIRS = ("paths", "containers", "control", "nodes")
+
+NODE = """\
+import math
+import sys
+import rclpy
+from rclpy.node import Node
+from geometry_msgs.msg import Twist
+
+
+class Driver(Node):
+    def __init__(self):
+        super().__init__('driver')
+        self.pub = self.create_publisher(Twist, 'cmd_vel', 10)
+
+    def cb(self, args):
+        speed = args.speed
+        turn = math.pi / 4
+        if args.verbose:
+            print(sys.argv, args.verbose)
+        msg = Twist()
+        msg.linear.x = speed
+        msg.angular.z = turn
+        self.pub.publish(msg)
+"""
+
+
+def _shown(diags: list[Any]) -> list[str]:
+    return [f"{d.span.line}:{d.span.col} {d.rule.code} {d.message}" for d in diags]
+
+
+def test_a_fresh_unknown_is_made_as_value_makes_it() -> None:
+    """`FileContext.fresh` fills a Value's slots in place (no call through the
+    type to `__init__`): every slot as `Value(kind, sym, unit)` has it."""
+    ctx = FileContext(SourceFile.from_bytes("n.py", b""), MsgCatalog([]), print)
+    for kind, unit in (("float", resolve("m")), ("int", None), ("unknown", None)):
+        made = ctx.fresh(kind, "x", unit)
+        assert type(made) is Value
+        sym = made.term
+        assert isinstance(sym, A.Sym) and sym.ident == ctx.last_id()
+        plain = Value(kind, A.Sym(sym.ident, "int" if kind == "int" else "real"), unit)
+        assert [getattr(made, n) for n in Value.__slots__] == [
+            getattr(plain, n) for n in Value.__slots__
+        ]
+
+
+def _cases() -> list[Path]:
+    return sorted(p for d in DIRS for p in (CASES / d).glob("*.py"))
+
+
+def test_a_local_read_by_the_shortcut_is_what_lookup_name_gives(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """`Binder.eval_Name` answers a local holding a value itself; through
+    `lookup_name` alone (the general path) every case checks the same."""
+    cases = _cases()
+    assert len(cases) > 30
+    fast = [_shown(api.check_source(p.read_text(), str(p))) for p in cases]
+    monkeypatch.setattr(
+        binder.Binder, "eval_Name", expressions.ExpressionEvaluator.eval_Name
+    )
+    monkeypatch.setattr(expressions, "_EVAL", {})  # the dispatch tables anew
+    general = [_shown(api.check_source(p.read_text(), str(p))) for p in cases]
+    assert fast == general
+    assert any(fast)
+
+
+def test_unknowns_and_modules_have_the_members_the_shortcuts_assume(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
+) -> None:
+    """`eval_Attribute` answers an unknown's attribute without asking `member`
+    (it has none) and a module's from `module_attribute` alone: what `member`
+    answers for them."""
+    made = _interpreters(monkeypatch)
+    api.check_source(NODE, str(tmp_path / "a.py"))
+    walker = made[-1]
+    state = State()
+    unknown = walker.ctx.fresh("unknown", "args")
+    for attr in ("speed", "verbose", "pi", "__class__"):
+        assert walker.member(unknown, attr, state) is None
+        assert walker.member(Value("unknown"), attr, state) is None
+    for module, attr in (("math", "pi"), ("sys", "argv"), ("rclpy", "init")):
+        base = Value("module", name=module)
+        assert walker.member(base, attr, state) == (
+            walker.lookups.module_attribute(module, attr)
+        )
+    pi = walker.member(Value("module", name="math"), "pi", state)
+    assert pi is not None and pi.kind == "float"
+
+
+def test_a_derived_value_skips_first_version_only_where_it_is_its_own() -> None:
+    """`derived` asks `_first_version` only when something was changed or the key
+    reads a later version: for every other key it answers the key itself."""
+    sym = A.Sym(9, "real")
+    own = [
+        ("attribute", 5, "x", 0),
+        ("truthy", 5, 0),
+        ("len", 3, 0),
+        ("isinstance", 4, "int", 0),
+        ("is None", 7),
+        ("is None", sym),
+        ("==", sym, A.Str("slow")),
+        ("truthy", "math.TYPE_CHECKING"),
+    ]
+    for key in own:
+        assert context._first_version(key, {})[0] is key
+    ctx = FileContext(SourceFile.from_bytes("n.py", b""), MsgCatalog([]), print)
+    first = ctx.derived(("attribute", 5, "x", 0), "unknown", "x")
+    assert not ctx.unchanged
+    later = ctx.derived(("attribute", 5, "x", 2), "unknown", "x")
+    assert isinstance(later.term, A.Sym) and ctx.unchanged == {
+        later.term.ident: (first.term, 5)
+    }
+    again = ctx.derived(("truthy", 11, 0), "bool", "t")  # now something changed
+    assert again.term != first.term and len(ctx.unchanged) == 1
+    # a first read of an object that is itself a later read: tied to the first's
+    assert isinstance(first.term, A.Sym)
+    inner = ctx.derived(("attribute", later.term.ident, "y", 0), "unknown", "x.y")
+    origin = ctx.derived(("attribute", first.term.ident, "y", 0), "unknown", "x.y")
+    assert isinstance(inner.term, A.Sym)
+    assert ctx.unchanged[inner.term.ident] == (origin.term, 5)
+
+
+def test_a_section_type_is_found_under_its_nested_names(tmp_path: Path) -> None:
+    """`msg_type_named` tries a name's section spellings only when it ends in one
+    (`MoveRequest`, `Move_Request`): others are looked up as written."""
+    srv = tmp_path / "pkg" / "srv" / "Move.srv"
+    srv.parent.mkdir(parents=True)
+    srv.write_text("float64 x\n---\nbool ok\n")
+    ctx = FileContext(SourceFile.from_bytes("n.py", b""), MsgCatalog([srv]), print)
+    assert ctx.msg_type_named("pkg.srv.MoveRequest") == "pkg/Move_Request"
+    assert ctx.msg_type_named("pkg.srv.Move_Request") == "pkg/Move_Request"
+    assert ctx.msg_type_named("pkg.srv.MoveResponse") == "pkg/Move_Response"
+    assert ctx.msg_type_named("pkg.srv.Move.Response") == "pkg/Move_Response"
+    assert ctx.msg_type_named("pkg.srv.Move") is None
+    assert ctx.msg_type_named("rospy.loginfo") is None
+
+
+def test_only_a_bool_is_compared_with_true() -> None:
+    """`State.assume` and `under` compare a fact with TRUE only when it is a
+    Bool: no other term equals it (a `Binary` asked two `__eq__`s to say so)."""
+    sym = A.Sym(1, "real")
+    others = [
+        sym,
+        A.Num(Fraction(1), True),
+        A.Str("True"),
+        A.Unary("not", A.Bool(False)),
+        A.Binary("and", A.TRUE, A.TRUE),
+        A.Name("True"),
+    ]
+    for term in others:
+        assert term != A.TRUE
+    assert A.Bool(True) == A.TRUE and A.Bool(False) != A.TRUE
+    state = State()
+    for fact in [A.TRUE, A.Bool(True), *others, A.Bool(False), None]:
+        state.assume(fact)
+    assert state.facts == [*others, A.Bool(False)]
