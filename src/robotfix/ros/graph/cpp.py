@@ -29,7 +29,6 @@ by one tree-sitter query, in C.
 
 from __future__ import annotations
 
-import itertools
 import operator
 import re
 from collections.abc import Iterator
@@ -91,13 +90,22 @@ _CLASSES: dict[str, tuple[str, int, int | None, tuple[str, ...]]] = {
 # rclcpp_action's free functions: (kind, name position)
 _ACTIONS = {"create_server": ACTION_SERVER, "create_client": ACTION_CLIENT}
 # a file where none of the names that make an endpoint stands as a word (`param`
-# in `get_parameter` does not) makes none: not parsed either
-_MAKERS = re.compile(
-    rb"\b(?:%b)\b"
-    % "|".join(
-        sorted({*_METHODS, *_ACTIONS, *(c.split("::")[-1] for c in _CLASSES)})
-    ).encode()
+# in `get_parameter` does not) makes none: not parsed either (`_makers`)
+_MAKERS = frozenset(
+    w.encode() for w in {*_METHODS, *_ACTIONS, *(c.split("::")[-1] for c in _CLASSES)}
 )
+# what each of `_MAKERS` begins with: found by `bytes.find` (a regex of the words
+# between `\b`s has no prefix to look for: it tries every byte, 1% of corpus25's run)
+_MAKER_STARTS = (
+    b"create_",
+    b"declare_parameter",
+    b"advertise",
+    b"subscribe",
+    b"serviceClient",
+    b"param",
+    b"Twist",
+)
+_WORDS_AT = re.compile(rb"\w+")
 # the last names of `_CLASSES`: one of them is made by a parse wherever it stands
 _CLASS_WORDS = frozenset(c.split("::")[-1].encode() for c in _CLASSES)
 # roscpp's methods: made of only on a receiver (`nh.advertise`), as `_File._call` reads
@@ -123,8 +131,10 @@ _RCLCPP_BASES = frozenset(
 # (generate_parameter_library's ParamListener), plugins (pluginlib, which declare
 # parameters under their own names). Each is a parameter endpoint without a name,
 # its `value` the word (an OPENS endpoint: `cppparams` reads them, the graph not).
+# (At a word's start, `_opening` sees: a `\b` first would make the regex try
+# every byte, no letter it may start with known.)
 OPENING = re.compile(
-    rb"\b(?:(allow_undeclared_parameters|automatically_declare_parameters_from_"
+    rb"(?:(allow_undeclared_parameters|automatically_declare_parameters_from_"
     rb"overrides)\s*\(\s*true\b|(declare_parameters|add_parameter|ParamListener|"
     rb"ClassLoader|createUniqueInstance|createSharedInstance|"
     rb"createUnmanagedInstance)\b)"
@@ -168,11 +178,10 @@ def read_cpp(data: bytes, names: bool = True) -> FileGraph:
         return found
     if any(w in data for w in _OPENING_WORDS):
         found.endpoints += _opening(data)
-    makers = _MAKERS.finditer(data)
-    first = next(makers, None)
-    if first is None and not any(e.value == AUTO for e in found.endpoints):
+    makers = _makers(data)
+    if not makers and not any(e.value == AUTO for e in found.endpoints):
         return found  # (given any override: parsed for the node it is given to)
-    if not found.endpoints and not _may_make(data, first, makers, names):
+    if not found.endpoints and not _may_make(data, makers, names):
         return found  # a maker's name in comments only (`@param`): nothing found
     try:
         tree = _parser().parse(data)
@@ -183,27 +192,40 @@ def read_cpp(data: bytes, names: bool = True) -> FileGraph:
     return found
 
 
-def _may_make(
-    data: bytes,
-    first: re.Match[bytes] | None,
-    rest: Iterator[re.Match[bytes]],
-    names: bool,
-) -> bool:
+def _makers(data: bytes) -> list[tuple[int, int, bytes]]:
+    """Where a word of `_MAKERS` stands as a whole word in `data` (start, end,
+    the word), in no particular order."""
+    out = []
+    for start in _MAKER_STARTS:
+        at = data.find(start)
+        while at >= 0:
+            if at == 0 or data[at - 1] not in _WORD_BYTES:
+                word = _WORDS_AT.match(data, at)
+                assert word is not None
+                if word.group() in _MAKERS:
+                    out.append((at, word.end(), word.group()))
+            at = data.find(start, at + 1)
+    return out
+
+
+_WORD_BYTES = frozenset(b for b in range(256) if _WORD.match(bytes([b])))
+
+
+def _may_make(data: bytes, makers: list[tuple[int, int, bytes]], names: bool) -> bool:
     """Whether a parse of `data` may find an endpoint, `_opening`'s apart: a
     name of `_MAKERS` called (then `<` or `(`, or a comment, a line continued:
-    `first` and the `rest` of the matches; roscpp's methods on a receiver
-    only), a class of `_CLASSES`, or a base class `x::Node` not rclcpp's; with
-    `names`, also a node class or name (`_other_node`), or a ROS 1 file or a
-    node named otherwise (`_NAMING`). Nav2's and ros_comm's headers say
-    `@param` in their comments: 36% of corpus25's parsed C++ bytes; roscpp's
-    headers declare `Publisher advertise(...)`."""
-    for found in itertools.chain((first,) if first is not None else (), rest):
-        word = found.group()
+    `makers`; roscpp's methods on a receiver only), a class of `_CLASSES`, or a
+    base class `x::Node` not rclcpp's; with `names`, also a node class or name
+    (`_other_node`), or a ROS 1 file or a node named otherwise (`_NAMING`).
+    Nav2's and ros_comm's headers say `@param` in their comments: 36% of
+    corpus25's parsed C++ bytes; roscpp's headers declare `Publisher
+    advertise(...)`."""
+    for start, end, word in makers:
         if word in _CLASS_WORDS:
             return True
-        after = data[found.end() : found.end() + 80].lstrip()
+        after = data[end : end + 80].lstrip()
         called = not after or after[:1] in b"<(/\\"  # (all blanks: unsure, parsed)
-        if called and (word not in _RECEIVED or _received(data, found.start())):
+        if called and (word not in _RECEIVED or _received(data, start)):
             return True
     return _other_node(data, names) or (names and _NAMING.search(data) is not None)
 
@@ -283,6 +305,8 @@ def _opening(data: bytes) -> list[Endpoint]:
     """The words of `OPENING` in a file, as parameter endpoints without a name."""
     out = []
     for match in OPENING.finditer(data):
+        if match.start() and data[match.start() - 1] in _WORD_BYTES:
+            continue  # not a word's start (nor can one start within the match)
         line = data.count(b"\n", 0, match.start()) + 1
         word = (match.group(1) or match.group(2)).decode()
         col = match.start() - data.rfind(b"\n", 0, match.start()) - 1
