@@ -1151,6 +1151,7 @@ def test_python_graph_looks_up_only_calls_whose_last_name_may_make_something(
     assert [(e.kind, e.name) for e in found.endpoints] == [("publisher", "chatter")]
     assert found.nodes == {"A": ["a"]}
     assert "self.log.info" not in looked and "self.x.y.z" not in looked
+    assert "len" not in looked and "str" not in looked  # no import binds them
     assert "P" in looked and "rclpy.create_node" in looked
 
 

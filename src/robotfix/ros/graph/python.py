@@ -317,6 +317,8 @@ def _wanted(file: _File, call: ast.Call) -> bool:
             return False
     elif func.__class__ is not ast.Name:
         return False  # no chain of names: `qualified` finds nothing
+    elif func.id not in file.imports:  # type: ignore[attr-defined]
+        return False  # (`print(...)`: nor then)
     called = file.qualified(func)
     return called is not None and (called in ENDPOINT_CLASSES or _names_node(called))
 
