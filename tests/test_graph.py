@@ -944,16 +944,16 @@ def test_cpp_file_naming_no_endpoint_maker_is_not_parsed(
 
 
 def test_cpp_scans_find_the_words_a_regex_between_word_boundaries_finds() -> None:
-    """The bytes scans before a parse find a maker's name (`_makers`) and an
-    opening word (`_opening`) only where it stands at a word's start, as the
+    """The bytes scans before a parse find a maker's name (`makers_in`) and an
+    opening word (`opening`) only where it stands at a word's start, as the
     `\\b`-led regexes they replace did (regression: those regexes tried every
     byte of every C++ file, 1% of corpus25's run in instructions)."""
-    from robotfix.ros.graph import cpp
+    from robotfix.ros.graph import cpp_scan as scan
 
-    words = sorted(w.decode() for w in cpp._MAKERS)
+    words = sorted(w.decode() for w in scan._MAKERS)
     makers = re.compile(rb"\b(?:%b)\b" % "|".join(words).encode())
-    opening = re.compile(rb"\b" + cpp.OPENING.pattern)
-    assert all(any(w.startswith(s) for s in cpp._MAKER_STARTS) for w in cpp._MAKERS)
+    opening = re.compile(rb"\b" + scan.OPENING.pattern)
+    assert all(any(w.startswith(s) for s in scan._MAKER_STARTS) for w in scan._MAKERS)
     samples = [
         b"x.param(a); get_param(b); @param c\n nh.advertiseService(s); subscribe",
         b"declare_parameter_if_not_declared(n, p) advertise_ create_server<T>(x)",
@@ -963,9 +963,9 @@ def test_cpp_scans_find_the_words_a_regex_between_word_boundaries_finds() -> Non
     ]
     for data in samples:
         found = [(m.start(), m.end(), m.group()) for m in makers.finditer(data)]
-        assert sorted(cpp._makers(data)) == found
+        assert sorted(scan.makers_in(data)) == found
         ends = [(m.start(), m.group(1) or m.group(2)) for m in opening.finditer(data)]
-        assert [(e.col, e.value) for e in cpp._opening(data)] == [
+        assert [(e.col, e.value) for e in scan.opening(data)] == [
             (at - data.rfind(b"\n", 0, at) - 1, w.decode()) for at, w in ends
         ]
 
@@ -1127,7 +1127,7 @@ def test_python_graph_looks_up_only_calls_whose_last_name_may_make_something(
     """With the check's calls given, a call `x.y()` whose `y` names neither an
     endpoint nor a node maker is not looked up through the imports (nor met
     again in the walk); an alias imported under another name still is."""
-    from robotfix.ros.graph import python as graph_python
+    from robotfix.ros.graph import python_names
 
     source = (
         "import rclpy\nfrom rospy import Publisher as P\nimport std_msgs.msg as m\n"
@@ -1140,13 +1140,13 @@ def test_python_graph_looks_up_only_calls_whose_last_name_may_make_something(
     )
     tree = ast.parse(source)
     looked: list[str] = []
-    qualified = graph_python._File.qualified
+    qualified = python_names.File.qualified
 
     def counting(self: object, node: ast.expr) -> str | None:
         looked.append(ast.unparse(node))
         return qualified(self, node)  # type: ignore[arg-type]
 
-    monkeypatch.setattr(graph_python._File, "qualified", counting)
+    monkeypatch.setattr(python_names.File, "qualified", counting)
     found = read_python(tree, index_of(tree).calls)
     assert [(e.kind, e.name) for e in found.endpoints] == [("publisher", "chatter")]
     assert found.nodes == {"A": ["a"]}

@@ -188,10 +188,10 @@ def _passed_names(tree: ast.Module, index: FileIndex) -> dict[str, set[str]] | N
                 names = found[cls] = set()
             for arg in call.args:
                 if arg.__class__ is name:
-                    names.add(arg.id)  # type: ignore[attr-defined]
+                    names.add(arg.id)
             for keyword in call.keywords:
                 if keyword.value.__class__ is name:
-                    names.add(keyword.value.id)  # type: ignore[attr-defined]
+                    names.add(keyword.value.id)
     return found
 
 
