@@ -15,17 +15,8 @@ from __future__ import annotations
 
 import re
 
-from robotfix.ros.graph.model import (
-    ACTION_CLIENT,
-    ACTION_SERVER,
-    CLIENT,
-    OPENS,
-    PARAMETER,
-    PUBLISHER,
-    SERVICE,
-    SUBSCRIPTION,
-    Endpoint,
-)
+from robotfix.ros.graph import model as M
+from robotfix.ros.graph.model import OPENS, Endpoint
 
 # a file that holds none of these makes no endpoint: not parsed
 WORDS = (
@@ -41,18 +32,18 @@ WORDS = (
 
 # method -> (kind, ros, name position, qos position, default position)
 METHODS: dict[str, tuple[str, int, int, int | None, int | None]] = {
-    "create_publisher": (PUBLISHER, 2, 0, 1, None),
-    "create_subscription": (SUBSCRIPTION, 2, 0, 1, None),
-    "create_service": (SERVICE, 2, 0, None, None),
-    "create_client": (CLIENT, 2, 0, None, None),
-    "declare_parameter": (PARAMETER, 2, 0, None, 1),
+    "create_publisher": (M.PUBLISHER, 2, 0, 1, None),
+    "create_subscription": (M.SUBSCRIPTION, 2, 0, 1, None),
+    "create_service": (M.SERVICE, 2, 0, None, None),
+    "create_client": (M.CLIENT, 2, 0, None, None),
+    "declare_parameter": (M.PARAMETER, 2, 0, None, 1),
     # nav2_util's helper: (node, name, default), declares when not yet declared
-    "declare_parameter_if_not_declared": (PARAMETER, 2, 1, None, 2),
-    "advertise": (PUBLISHER, 1, 0, None, None),
-    "subscribe": (SUBSCRIPTION, 1, 0, None, None),
-    "advertiseService": (SERVICE, 1, 0, None, None),
-    "serviceClient": (CLIENT, 1, 0, None, None),
-    "param": (PARAMETER, 1, 0, None, 2),
+    "declare_parameter_if_not_declared": (M.PARAMETER, 2, 1, None, 2),
+    "advertise": (M.PUBLISHER, 1, 0, None, None),
+    "subscribe": (M.SUBSCRIPTION, 1, 0, None, None),
+    "advertiseService": (M.SERVICE, 1, 0, None, None),
+    "serviceClient": (M.CLIENT, 1, 0, None, None),
+    "param": (M.PARAMETER, 1, 0, None, 2),
 }
 # classes that make an endpoint when built (`std::make_unique<C>(args)`, `C(args)`):
 # kind, name position, qos position, its possible types. nav2_util's Twist
@@ -60,11 +51,11 @@ METHODS: dict[str, tuple[str, int, int, int | None, int | None]] = {
 # `enable_stamped_cmd_vel` parameter says: two possible types.
 _TWIST = ("geometry_msgs/msg/Twist", "geometry_msgs/msg/TwistStamped")
 CLASSES: dict[str, tuple[str, int, int | None, tuple[str, ...]]] = {
-    "nav2_util::TwistPublisher": (PUBLISHER, 1, 2, _TWIST),
-    "nav2_util::TwistSubscriber": (SUBSCRIPTION, 1, 2, _TWIST),
+    "nav2_util::TwistPublisher": (M.PUBLISHER, 1, 2, _TWIST),
+    "nav2_util::TwistSubscriber": (M.SUBSCRIPTION, 1, 2, _TWIST),
 }
 # rclcpp_action's free functions: (kind, name position)
-ACTIONS = {"create_server": ACTION_SERVER, "create_client": ACTION_CLIENT}
+ACTIONS = {"create_server": M.ACTION_SERVER, "create_client": M.ACTION_CLIENT}
 # a file where none of the names that make an endpoint stands as a word (`param`
 # in `get_parameter` does not) makes none: not parsed either (`makers_in`)
 _MAKERS = frozenset(
