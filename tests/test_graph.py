@@ -943,6 +943,28 @@ def test_cpp_file_naming_no_endpoint_maker_is_not_parsed(
     assert not read_cpp(data).endpoints
 
 
+def test_cpp_scan_finds_the_makers_a_regex_between_word_boundaries_finds() -> None:
+    """The bytes scan before a parse finds a maker's name (`makers_in`) only
+    where it stands as a whole word, as the `\\b`-led regex it replaces did
+    (regression: that regex tried every byte of every C++ file, 1% of
+    corpus25's run in instructions)."""
+    from robotfix.ros.graph import cpp_scan as scan
+
+    words = sorted(w.decode() for w in scan._MAKERS)
+    makers = re.compile(rb"\b(?:%b)\b" % "|".join(words).encode())
+    assert all(any(w.startswith(s) for s in scan._MAKER_STARTS) for w in scan._MAKERS)
+    samples = [
+        b"x.param(a); get_param(b); @param c\n nh.advertiseService(s); subscribe",
+        b"declare_parameter_if_not_declared(n, p) advertise_ create_server<T>(x)",
+        b"Xadd_parameter(1) add_parameter(2) ClassLoader myClassLoader\n",
+        b"allow_undeclared_parameters( true) zallow_undeclared_parameters(true)",
+        b"_TwistPublisher TwistPublisher \xc3\xa9param param\xc3\xa9 paramx",
+    ]
+    for data in samples:
+        found = [(m.start(), m.end(), m.group()) for m in makers.finditer(data)]
+        assert sorted(scan.makers_in(data)) == found
+
+
 def _counting_parses(monkeypatch: pytest.MonkeyPatch) -> list[bytes]:
     """The bytes of each C++ file tree-sitter parses from now on."""
     from robotfix.ros.graph import cpp
@@ -1100,7 +1122,7 @@ def test_python_graph_looks_up_only_calls_whose_last_name_may_make_something(
     """With the check's calls given, a call `x.y()` whose `y` names neither an
     endpoint nor a node maker is not looked up through the imports (nor met
     again in the walk); an alias imported under another name still is."""
-    from robotfix.ros.graph import python as graph_python
+    from robotfix.ros.graph import python_names
 
     source = (
         "import rclpy\nfrom rospy import Publisher as P\nimport std_msgs.msg as m\n"
@@ -1113,17 +1135,18 @@ def test_python_graph_looks_up_only_calls_whose_last_name_may_make_something(
     )
     tree = ast.parse(source)
     looked: list[str] = []
-    qualified = graph_python._File.qualified
+    qualified = python_names.File.qualified
 
     def counting(self: object, node: ast.expr) -> str | None:
         looked.append(ast.unparse(node))
         return qualified(self, node)  # type: ignore[arg-type]
 
-    monkeypatch.setattr(graph_python._File, "qualified", counting)
+    monkeypatch.setattr(python_names.File, "qualified", counting)
     found = read_python(tree, index_of(tree).calls)
     assert [(e.kind, e.name) for e in found.endpoints] == [("publisher", "chatter")]
     assert found.nodes == {"A": ["a"]}
     assert "self.log.info" not in looked and "self.x.y.z" not in looked
+    assert "len" not in looked and "str" not in looked  # no import binds them
     assert "P" in looked and "rclpy.create_node" in looked
 
 

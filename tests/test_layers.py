@@ -155,15 +155,21 @@ def test_analysis_has_no_import_cycle_even_through_type_checking_imports() -> No
 
 
 MAX_LINES = 800
-# the modules of analysis/ still above MAX_LINES: this list only shrinks (a module
-# that fell under the cap must leave it, so it cannot grow back unseen); empty now
+# the modules of `CAPPED` still above MAX_LINES (as `analysis/x.py`): this list
+# only shrinks (a module that fell under the cap must leave it, so it cannot grow
+# back unseen); empty now
 STILL_LONG: set[str] = set()
 
 
-def test_analysis_modules_stay_under_the_size_cap() -> None:
+# the packages whose modules the cap holds
+CAPPED = ("analysis", "ros/graph")
+
+
+def test_analysis_and_graph_modules_stay_under_the_size_cap() -> None:
     long = {
-        path.name
-        for path in (SRC / "analysis").glob("*.py")
+        str(path.relative_to(SRC))
+        for package in CAPPED
+        for path in (SRC / package).glob("*.py")
         if len(path.read_text(encoding="utf-8").splitlines()) > MAX_LINES
     }
     assert long <= STILL_LONG, f"over {MAX_LINES} lines: {sorted(long - STILL_LONG)}"

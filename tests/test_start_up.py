@@ -66,6 +66,7 @@ NOT_LOADED = (
     "robotfix.ros.paramfile",
     "robotfix.ros.yamlfile",
     "robotfix.ros.graph.cpp",
+    "robotfix.ros.graph.cpp_scan",
 )
 
 

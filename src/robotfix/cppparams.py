@@ -14,7 +14,7 @@ entry's values are checked against a C++ node as against a Python one
   mentions `dynamic_typing` has no certain type;
 - a node's parameters are all known by name (RF601 may say a set one is not
   declared) only when no file of its code declares one whose name is computed, or
-  holds a word of `ros.graph.cpp.OPENING` (bulk or helper declarations, a base
+  holds a word of `ros.graph.cpp_scan.OPENING` (bulk or helper declarations, a base
   class's `add_parameter`, generated code, plugins, `allow_undeclared_parameters`),
   and its class derives from rclcpp's own node classes;
 - a node made with `automatically_declare_parameters_from_overrides(true)` takes
@@ -36,7 +36,7 @@ from typing import TYPE_CHECKING
 from robotfix.faults import Fault, guard
 from robotfix.fs import UnreadableError, probe, read_regular
 from robotfix.ros.executables import MAX_BUILD_BYTES
-from robotfix.ros.graph.cpp import AUTO
+from robotfix.ros.graph.cpp_scan import AUTO
 from robotfix.ros.graph.model import OPENS, PARAMETER, FileGraph
 from robotfix.ros.package import package_folder, test_code
 

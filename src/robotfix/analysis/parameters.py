@@ -180,12 +180,18 @@ def _passed_names(tree: ast.Module, index: FileIndex) -> dict[str, set[str]] | N
     if id(tree) not in index.scopes:
         return None
     found: dict[str, set[str]] = {}
+    name = ast.Name
     for cls, call in index.calls:
         if cls is not None:
-            names = found.setdefault(cls, set())
-            for arg in [*call.args, *(k.value for k in call.keywords)]:
-                if isinstance(arg, ast.Name):
+            names = found.get(cls)
+            if names is None:
+                names = found[cls] = set()
+            for arg in call.args:
+                if arg.__class__ is name:
                     names.add(arg.id)
+            for keyword in call.keywords:
+                if keyword.value.__class__ is name:
+                    names.add(keyword.value.id)
     return found
 
 

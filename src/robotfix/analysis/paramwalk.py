@@ -10,6 +10,7 @@ from __future__ import annotations
 import ast
 import functools
 import math
+import operator
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
@@ -50,6 +51,7 @@ _UNIT_KINDS = frozenset({ast.Call, ast.Assign, ast.AnnAssign})  # what `unit` re
 _DEFINITIONS = frozenset(
     {ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda}
 )
+_PLACE = operator.attrgetter("lineno", "col_offset")  # the order `unit` reads in
 
 
 def _python_constant(name: str, value: object) -> A.Expr | None:
@@ -174,10 +176,7 @@ class Walker:
         self._bound: dict[str, _Local] | None = None
         # a function's every node; the module's, but for its functions and classes
         skip = frozenset() if function is not None else _DEFINITIONS
-        for node in sorted(
-            select(body, _UNIT_KINDS, skip),
-            key=lambda n: (n.lineno, n.col_offset),  # type: ignore[attr-defined]
-        ):
+        for node in sorted(select(body, _UNIT_KINDS, skip), key=_PLACE):
             if isinstance(node, ast.Call):
                 self.call(node)
             else:

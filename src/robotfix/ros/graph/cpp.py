@@ -23,28 +23,35 @@ variable (`node->create_...`).
 Bad C++ never fails: tree-sitter recovers from errors; a file over
 `MAX_CPP_BYTES` is not read, and one without any of `WORDS` (or where no name
 that makes an endpoint stands as a word, or none is called and no node is
-named: `_may_make`) not parsed. What the reading needs of the tree is matched
+named: `cpp_scan`) not parsed. What the reading needs of the tree is matched
 by one tree-sitter query, in C.
 """
 
 from __future__ import annotations
 
-import itertools
 import operator
 import re
 from collections.abc import Iterator
 from typing import Any
 
 from robotfix.ros.graph import qos as Q
+from robotfix.ros.graph.cpp_scan import (
+    ACTIONS,
+    AUTO,
+    CLASSES,
+    METHODS,
+    NODE_BASES,
+    OPENING_WORDS,
+    RCLCPP_BASES,
+    WORDS,
+    makers_in,
+    may_make,
+    opening,
+)
 from robotfix.ros.graph.model import (
-    ACTION_CLIENT,
-    ACTION_SERVER,
-    CLIENT,
     MIDDLE,
     OPENS,
     PARAMETER,
-    PUBLISHER,
-    SERVICE,
     SUBSCRIPTION,
     Endpoint,
     FileGraph,
@@ -52,97 +59,15 @@ from robotfix.ros.graph.model import (
 )
 
 MAX_CPP_BYTES = 2 * 1024 * 1024
-# a file that holds none of these makes no endpoint: not parsed
-WORDS = (
-    b"create_",
-    b"advertise",
-    b"subscribe",
-    b"serviceClient",
-    b"param",
-    b"TwistPublisher",
-    b"TwistSubscriber",
-    b"ClassLoader",
-)
-
-# method -> (kind, ros, name position, qos position, default position)
-_METHODS: dict[str, tuple[str, int, int, int | None, int | None]] = {
-    "create_publisher": (PUBLISHER, 2, 0, 1, None),
-    "create_subscription": (SUBSCRIPTION, 2, 0, 1, None),
-    "create_service": (SERVICE, 2, 0, None, None),
-    "create_client": (CLIENT, 2, 0, None, None),
-    "declare_parameter": (PARAMETER, 2, 0, None, 1),
-    # nav2_util's helper: (node, name, default), declares when not yet declared
-    "declare_parameter_if_not_declared": (PARAMETER, 2, 1, None, 2),
-    "advertise": (PUBLISHER, 1, 0, None, None),
-    "subscribe": (SUBSCRIPTION, 1, 0, None, None),
-    "advertiseService": (SERVICE, 1, 0, None, None),
-    "serviceClient": (CLIENT, 1, 0, None, None),
-    "param": (PARAMETER, 1, 0, None, 2),
-}
-# classes that make an endpoint when built (`std::make_unique<C>(args)`, `C(args)`):
-# kind, name position, qos position, its possible types. nav2_util's Twist
-# publisher and subscriber use `Twist` or `TwistStamped` as the node's
-# `enable_stamped_cmd_vel` parameter says: two possible types.
-_TWIST = ("geometry_msgs/msg/Twist", "geometry_msgs/msg/TwistStamped")
-_CLASSES: dict[str, tuple[str, int, int | None, tuple[str, ...]]] = {
-    "nav2_util::TwistPublisher": (PUBLISHER, 1, 2, _TWIST),
-    "nav2_util::TwistSubscriber": (SUBSCRIPTION, 1, 2, _TWIST),
-}
-# rclcpp_action's free functions: (kind, name position)
-_ACTIONS = {"create_server": ACTION_SERVER, "create_client": ACTION_CLIENT}
-# a file where none of the names that make an endpoint stands as a word (`param`
-# in `get_parameter` does not) makes none: not parsed either
-_MAKERS = re.compile(
-    rb"\b(?:%b)\b"
-    % "|".join(
-        sorted({*_METHODS, *_ACTIONS, *(c.split("::")[-1] for c in _CLASSES)})
-    ).encode()
-)
-# the last names of `_CLASSES`: one of them is made by a parse wherever it stands
-_CLASS_WORDS = frozenset(c.split("::")[-1].encode() for c in _CLASSES)
-# roscpp's methods: made of only on a receiver (`nh.advertise`), as `_File._call` reads
-_RECEIVED = frozenset(m.encode() for m, spec in _METHODS.items() if spec[1] == 1)
-_WORD = re.compile(rb"\w")
-_BLANKS = b" \t\r\n\f\v"  # what `bytes.strip` and `re`'s `\s` take
 # a call whose callee's text holds none of these makes nothing (`_File._call`)
 _CALLED = re.compile(
     b"|".join(
         re.escape(w.encode())
         for w in sorted(
-            {*_METHODS, "make_unique", "make_shared", "rclcpp_action", "init"}
+            {*METHODS, "make_unique", "make_shared", "rclcpp_action", "init"}
         )
     )
 )
-_NODE_BASES = frozenset({"Node", "LifecycleNode"})
-_RCLCPP_BASES = frozenset(
-    {"Node", "LifecycleNode", "rclcpp::Node", "rclcpp_lifecycle::LifecycleNode"}
-)
-# what declares parameters this file does not name: a node that takes its
-# parameters from overrides or lets any be set, parameters declared in bulk or by
-# a base class's helper (nav2's `add_parameter`), generated code
-# (generate_parameter_library's ParamListener), plugins (pluginlib, which declare
-# parameters under their own names). Each is a parameter endpoint without a name,
-# its `value` the word (an OPENS endpoint: `cppparams` reads them, the graph not).
-OPENING = re.compile(
-    rb"\b(?:(allow_undeclared_parameters|automatically_declare_parameters_from_"
-    rb"overrides)\s*\(\s*true\b|(declare_parameters|add_parameter|ParamListener|"
-    rb"ClassLoader|createUniqueInstance|createSharedInstance|"
-    rb"createUnmanagedInstance)\b)"
-)
-_OPENING_WORDS = (  # one of which `OPENING` needs (a quick test)
-    b"allow_undeclared",
-    b"automatically_declare",
-    b"declare_parameters",
-    b"add_parameter",
-    b"ParamListener",
-    b"ClassLoader",
-    b"Instance",
-)
-AUTO = "automatically_declare_parameters_from_overrides"
-# what may make a file ROS 1 or name a node without any endpoint (`_File._handle`,
-# `ros::init(argc, argv, "talker")`; a base class or an initializer: `_other_node`)
-_NAMING = re.compile(rb"NodeHandle|make_shared|\bros\s*::\s*init\b")
-_OURS = frozenset(b.encode() for b in _RCLCPP_BASES)  # (`_other_node`)
 _PTR = re.compile(r"(::)?(ConstPtr|Ptr|SharedPtr|ConstSharedPtr|UniquePtr)$")
 
 _PARSER: Any = None
@@ -166,13 +91,12 @@ def read_cpp(data: bytes, names: bool = True) -> FileGraph:
     found = FileGraph()
     if len(data) > MAX_CPP_BYTES or not any(w in data for w in WORDS):
         return found
-    if any(w in data for w in _OPENING_WORDS):
-        found.endpoints += _opening(data)
-    makers = _MAKERS.finditer(data)
-    first = next(makers, None)
-    if first is None and not any(e.value == AUTO for e in found.endpoints):
+    if any(w in data for w in OPENING_WORDS):
+        found.endpoints += opening(data)
+    makers = makers_in(data)
+    if not makers and not any(e.value == AUTO for e in found.endpoints):
         return found  # (given any override: parsed for the node it is given to)
-    if not found.endpoints and not _may_make(data, first, makers, names):
+    if not found.endpoints and not may_make(data, makers, names):
         return found  # a maker's name in comments only (`@param`): nothing found
     try:
         tree = _parser().parse(data)
@@ -181,113 +105,6 @@ def read_cpp(data: bytes, names: bool = True) -> FileGraph:
     _File(found, data).read(tree.root_node)
     found.endpoints.sort(key=lambda e: (e.line, e.col, e.kind))
     return found
-
-
-def _may_make(
-    data: bytes,
-    first: re.Match[bytes] | None,
-    rest: Iterator[re.Match[bytes]],
-    names: bool,
-) -> bool:
-    """Whether a parse of `data` may find an endpoint, `_opening`'s apart: a
-    name of `_MAKERS` called (then `<` or `(`, or a comment, a line continued:
-    `first` and the `rest` of the matches; roscpp's methods on a receiver
-    only), a class of `_CLASSES`, or a base class `x::Node` not rclcpp's; with
-    `names`, also a node class or name (`_other_node`), or a ROS 1 file or a
-    node named otherwise (`_NAMING`). Nav2's and ros_comm's headers say
-    `@param` in their comments: 36% of corpus25's parsed C++ bytes; roscpp's
-    headers declare `Publisher advertise(...)`."""
-    for found in itertools.chain((first,) if first is not None else (), rest):
-        word = found.group()
-        if word in _CLASS_WORDS:
-            return True
-        after = data[found.end() : found.end() + 80].lstrip()
-        called = not after or after[:1] in b"<(/\\"  # (all blanks: unsure, parsed)
-        if called and (word not in _RECEIVED or _received(data, found.start())):
-            return True
-    return _other_node(data, names) or (names and _NAMING.search(data) is not None)
-
-
-def _received(data: bytes, start: int) -> bool:
-    """Whether the name at `start` may be called on a receiver (`nh.advertise`,
-    `nh->param`), as `_File._call` takes roscpp's methods; when a comment or a
-    continued line stands before it, or only blanks: unsure, True."""
-    before = data[max(start - 80, 0) : start].rstrip()
-    return not before or before.endswith((b".", b"->", b"/", b"\\"))
-
-
-def _other_node(data: bytes, names: bool) -> bool:
-    """Whether `data` names `Node` or `LifecycleNode` with a qualifier that is not
-    rclcpp's (`nav2_util::LifecycleNode`, `::rclcpp::Node`), as `_File._bases`
-    reads a base class (its text without blanks): an endpoint if it is one; or,
-    with `names`, any as a base class or built (`: public rclcpp::Node`,
-    `: Node("talker")`): a node class, its name."""
-    at = data.find(b"Node")
-    while at >= 0:
-        end = at + 4
-        if end == len(data) or not _WORD.match(data, end):
-            start = at - 9 if data[max(at - 9, 0) : at] == b"Lifecycle" else at
-            found = _qualifier(data, start)
-            if found is not None:
-                qualifier, begin = found
-                if qualifier + data[start:end] not in _OURS:
-                    return True
-                if names and _based_or_built(data, begin, end):
-                    return True
-        at = data.find(b"Node", end)
-    return False
-
-
-def _based_or_built(data: bytes, begin: int, end: int) -> bool:
-    """Whether the `Node` named from `begin` to `end` is built (`Node("x")`) or
-    stands as a base class."""
-    if data[end : end + 80].lstrip()[:1] in (b"(", b"{"):
-        return True
-    before = data[max(begin - 80, 0) : begin].rstrip()
-    return before.endswith(_BEFORE_BASE) and not before.endswith(b"::")
-
-
-# what stands before a base class (`class A : public B, virtual C`)
-_BEFORE_BASE = (b":", b",", b"public", b"protected", b"private", b"virtual")
-
-
-def _qualifier(data: bytes, start: int) -> tuple[bytes, int] | None:
-    """The names and `::`s that stand before `start`, without blanks
-    (`::a :: b::` of `::a :: b::Node`), and where they begin; None when a word
-    goes on into it."""
-    if start > 0 and _WORD.match(data, start - 1):
-        return None  # `MyNode`: no name of its own
-    parts: list[bytes] = []
-    while True:
-        at = start
-        while at > 0 and data[at - 1 : at] in _BLANKS:
-            at -= 1
-        if data[max(at - 2, 0) : at] != b"::":
-            break
-        parts.append(b"::")
-        at -= 2
-        start = at
-        while at > 0 and data[at - 1 : at] in _BLANKS:
-            at -= 1
-        word = at
-        while word > 0 and _WORD.match(data, word - 1):
-            word -= 1
-        if word == at:
-            break  # a leading `::`
-        parts.append(data[word:at])
-        start = word
-    return b"".join(reversed(parts)), start
-
-
-def _opening(data: bytes) -> list[Endpoint]:
-    """The words of `OPENING` in a file, as parameter endpoints without a name."""
-    out = []
-    for match in OPENING.finditer(data):
-        line = data.count(b"\n", 0, match.start()) + 1
-        word = (match.group(1) or match.group(2)).decode()
-        col = match.start() - data.rfind(b"\n", 0, match.start()) - 1
-        out.append(Endpoint(OPENS, None, (), line, col, "", None, 2, "", word))
-    return out
 
 
 def _text(node: Any) -> str:
@@ -343,9 +160,9 @@ class _File:
                 for base in child.children:
                     written = re.sub(r"\s+", "", _text(base).split("<")[0])
                     last = written.split("::")[-1]
-                    if last in _NODE_BASES:
+                    if last in NODE_BASES:
                         self.found.nodes.setdefault(cls, [])
-                    if last in _NODE_BASES and written not in _RCLCPP_BASES:
+                    if last in NODE_BASES and written not in RCLCPP_BASES:
                         # another package's node class: it may declare parameters
                         point = base.start_point
                         self.found.endpoints.append(
@@ -400,7 +217,7 @@ class _File:
         ]
         literal = _string(args[0]) if args else None
         last = name.split("::")[-1].split("<")[0]
-        cls = _enclosing(node) if last in _NODE_BASES and literal is not None else ""
+        cls = _enclosing(node) if last in NODE_BASES and literal is not None else ""
         if cls and literal is not None:
             self.found.nodes.setdefault(cls, []).append(literal)
         elif (literal is not None and literal.startswith(("~", "/"))) or (
@@ -505,7 +322,7 @@ class _File:
                     self.found.nodes.setdefault("", []).append(name)
                 return
         method = _text(func)
-        spec = _METHODS.get(method)
+        spec = METHODS.get(method)
         if spec is None:
             return
         kind, ros, name_at, qos_at, default_at = spec
@@ -558,7 +375,7 @@ class _File:
 
     def _constructed(self, call: Any, made: str, args: list[Any]) -> None:
         """`std::make_unique<nav2_util::TwistPublisher>(node, "cmd_vel", 1)`."""
-        spec = _CLASSES.get(re.sub(r"\s+", "", made))
+        spec = CLASSES.get(re.sub(r"\s+", "", made))
         if spec is None:
             return
         cls = _enclosing(call)
@@ -582,7 +399,7 @@ class _File:
         )
 
     def _action(self, call: Any, function: str, template: Any, args: list[Any]) -> None:
-        kind = _ACTIONS.get(function)
+        kind = ACTIONS.get(function)
         if kind is None:
             return
         cls = _enclosing(call)
@@ -883,7 +700,7 @@ def _made(name: str, args: list[Any], depth: int) -> Qos | None:
 
 MAX_BODY_NODES = 20_000  # syntax nodes of a function body a local is looked for in
 # the calls a local profile may be passed to without being changed
-_READERS = frozenset({*_METHODS, "make_unique", "make_shared"})
+_READERS = frozenset({*METHODS, "make_unique", "make_shared"})
 
 
 def _local_qos(use: Any, depth: int) -> Qos | None:
