@@ -155,21 +155,27 @@ def test_analysis_has_no_import_cycle_even_through_type_checking_imports() -> No
 
 
 MAX_LINES = 800
-# the modules of `CAPPED` still above MAX_LINES (as `analysis/x.py`): this list
-# only shrinks (a module that fell under the cap must leave it, so it cannot grow
-# back unseen); empty now
-STILL_LONG: set[str] = set()
+# the modules still above MAX_LINES (as `run.py`, `ros/catalog.py`), each read in
+# one sitting no longer: this list only shrinks (a module that fell under the cap
+# must leave it, so it cannot grow back unseen; a module not on it that grows past
+# the cap fails). analysis/ and ros/graph/ were brought under it first.
+STILL_LONG: set[str] = {
+    "annotations/extract.py",
+    "annotations/units.py",
+    "cache.py",
+    "discovery.py",
+    "messages.py",
+    "paramcheck.py",
+    "project/summary.py",
+    "ros/catalog.py",
+    "run.py",
+}
 
 
-# the packages whose modules the cap holds
-CAPPED = ("analysis", "ros/graph")
-
-
-def test_analysis_and_graph_modules_stay_under_the_size_cap() -> None:
+def test_modules_stay_under_the_size_cap() -> None:
     long = {
-        str(path.relative_to(SRC))
-        for package in CAPPED
-        for path in (SRC / package).glob("*.py")
+        path.relative_to(SRC).as_posix()
+        for path in SRC.rglob("*.py")
         if len(path.read_text(encoding="utf-8").splitlines()) > MAX_LINES
     }
     assert long <= STILL_LONG, f"over {MAX_LINES} lines: {sorted(long - STILL_LONG)}"
