@@ -153,3 +153,41 @@ def test_a_warm_cached_run_loads_no_reader_of_interfaces_or_annotations(
     *output, loaded = warm.stdout.strip().splitlines()
     assert loaded == "[]", warm.stdout + warm.stderr
     assert output == cold.stdout.strip().splitlines()[:-1]
+
+
+# modules whose regular expressions are compiled at their first use (`lazyre.py`)
+LAZY_PATTERNS = (
+    "annotations/units.py",
+    "discovery.py",
+    "source.py",
+    "ros/executables.py",
+    "ros/package.py",
+    "stubs/load.py",
+    "stubs/reader.py",
+)
+
+
+def test_a_check_of_a_plain_file_compiles_none_of_their_patterns(
+    tmp_path: Path,
+) -> None:
+    """A one-file check of `x = 1` (pre-commit, the ament linter, an editor's
+    start) reads no unit, C++ build file or suppression comment: the ~25 patterns
+    of those modules (compiled at import before, 15 M instructions) stay text."""
+    (tmp_path / "a.py").write_text("x = 1\n")
+    probe = (
+        "import re, sys, traceback\n"
+        "real = re._compile\n"
+        "made = []\n"
+        "def spy(pattern, flags):\n"
+        "    frame = next(f for f in reversed(traceback.extract_stack()[:-1])\n"
+        "                 if '/re/' not in f.filename and 'lazyre' not in f.filename)\n"
+        "    made.append(frame.filename.replace(chr(92), '/'))\n"
+        "    return real(pattern, flags)\n"
+        "re._compile = spy\n"
+        "from robotfix.cli import main\n"
+        "main(['check', 'a.py', '--no-cache', '-j', '1'])\n"
+        "names = {f.split('/robotfix/')[-1] for f in made}\n"
+        f"print(sorted(names & {set(LAZY_PATTERNS)!r}))\n"
+    )
+    done = run_probe(probe, tmp_path)
+    assert done.stdout.strip().splitlines()[-1] == "[]", done.stdout + done.stderr

@@ -17,11 +17,11 @@ import functools
 import hashlib
 import json
 import os
-import re
 from collections.abc import Iterable, Iterator
 from pathlib import Path
 
 from robotfix.fs import UnreadableError, read_regular
+from robotfix.lazyre import lazy
 
 # the data a stub gives, re-exported: what the analysis asks a `StubSet` for
 from robotfix.stubs.model import Attribute as Attribute
@@ -39,7 +39,7 @@ MAX_STAR_DEPTH = 8  # `from m import *` followed through at most so many modules
 _UNSEEN = object()  # `StubSet.lookup`: a name not looked up yet
 # `def name(` in a stub's text (a name runs to the first space or parenthesis: each
 # `def name(` the text holds is one match)
-_DEF = re.compile(r"def ([^\s(]+)\(")
+_DEF = lazy(r"def ([^\s(]+)\(")
 
 
 @functools.cache
@@ -438,7 +438,7 @@ def _class_gives(node: ast.ClassDef) -> bool:
     return False
 
 
-_ONLY_A_UNIT = re.compile(r"""Annotated\[\w+, ['"]Unit\('[^'"()]*'\)['"]\]""")
+_ONLY_A_UNIT = lazy(r"""Annotated\[\w+, ['"]Unit\('[^'"()]*'\)['"]\]""")
 
 
 def _annotations(args: ast.arguments) -> list[ast.expr]:
