@@ -191,3 +191,37 @@ def test_a_check_of_a_plain_file_compiles_none_of_their_patterns(
     )
     done = run_probe(probe, tmp_path)
     assert done.stdout.strip().splitlines()[-1] == "[]", done.stdout + done.stderr
+
+
+def test_super_init_parses_no_stub_that_only_defines_an_init() -> None:
+    """`super().__init__("talker")` in a node class is a call by method name: the
+    stubs' seven `__init__` methods disagree and none checks a positional
+    argument, which shipped_names.json says without parsing rclpy/duration.pyi,
+    rclpy/time.pyi and rospy.pyi (17 M instructions of each such check)."""
+    import ast
+
+    from robotfix.api import check_source
+    from robotfix.stubs.load import DATA
+
+    texts = {p.read_text(encoding="utf-8"): p.name for p in DATA.rglob("*.pyi")}
+    parsed: list[str] = []
+    real = ast.parse
+
+    def parse(source: object, *args: object, **kwargs: object) -> object:
+        if source in texts:
+            parsed.append(texts[source])  # type: ignore[index]
+        return real(source, *args, **kwargs)  # type: ignore[arg-type]
+
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(ast, "parse", parse)
+        check_source(NODE.replace("driver", "talker"), "talker.py")
+    assert not {"duration.pyi", "time.pyi", "rospy.pyi"} & set(parsed), parsed
+    # what the candidates could check is still theirs to check
+    from robotfix.stubs.load import StubSet, unchecked_call
+
+    fresh = StubSet()
+    assert unchecked_call(fresh, "__init__", 1, [])
+    assert not unchecked_call(fresh, "__init__", 0, ["seconds"])
+    assert not unchecked_call(fresh, "wait_for_service", 1, [])
+    assert unchecked_call(fresh, "wait_for_service", 0, [])
+    assert fresh._modules == {}
