@@ -76,6 +76,8 @@ _SHEBANG = lazy(
 
 @dataclass
 class Discovery:
+    """What a run found to check under the paths it was given."""
+
     python_files: list[Path] = field(default_factory=list)
     interface_files: list[Path] = field(default_factory=list)
     notices: list[Diagnostic] = field(default_factory=list)  # RF004 warnings

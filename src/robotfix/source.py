@@ -74,6 +74,8 @@ _BEFORE_TUPLE_PARAMETER = lazy(
 
 @dataclass
 class SourceFile:
+    """A Python file's path and text, and its syntax tree once parsed."""
+
     path: str
     text: str
     tree: ast.Module | None = None

@@ -60,6 +60,8 @@ _NUMBER = lazy(r"(?<![\w.])[0-9.][\w.]*")
 
 @dataclass(frozen=True)
 class Unit:
+    """A physical unit: its SI dimensions, its scale and its zero."""
+
     dims: tuple[tuple[str, int], ...]  # sorted; e.g. (("meter", 1), ("second", -1))
     factor: float = 1.0  # SI (root-unit) value of one of this unit
     offset: float = 0.0  # SI value of this unit's zero (degC: 273.15 K)
