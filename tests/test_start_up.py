@@ -7,6 +7,7 @@ from __future__ import annotations
 import hashlib
 import sys
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -207,10 +208,10 @@ def test_super_init_parses_no_stub_that_only_defines_an_init() -> None:
     parsed: list[str] = []
     real = ast.parse
 
-    def parse(source: object, *args: object, **kwargs: object) -> object:
+    def parse(source: Any, *args: Any, **kwargs: Any) -> Any:
         if source in texts:
-            parsed.append(texts[source])  # type: ignore[index]
-        return real(source, *args, **kwargs)  # type: ignore[arg-type]
+            parsed.append(texts[source])
+        return real(source, *args, **kwargs)
 
     with pytest.MonkeyPatch.context() as patch:
         patch.setattr(ast, "parse", parse)
