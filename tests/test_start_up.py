@@ -248,3 +248,17 @@ def test_the_dataclasses_a_check_loads_have_docstrings() -> None:
         and (cls.__doc__ or "").startswith(f"{cls.__name__}(")
     ]
     assert generated == []
+
+
+def test_a_lazy_pattern_is_its_compiled_pattern() -> None:
+    import re
+
+    from robotfix.lazyre import lazy
+
+    pattern = lazy(r"#\s*robotfix:\s*ignore(?:\[(?P<codes>[^\]]*)\])?", re.I)
+    assert "search" not in vars(pattern)  # not compiled before its first use
+    found = pattern.search("x = 1  # RobotFix: ignore[RF101]")
+    assert found is not None and found["codes"] == "RF101"
+    assert isinstance(vars(pattern)["search"].__self__, re.Pattern)  # kept, bound
+    assert pattern.flags & re.I and pattern.groupindex == {"codes": 1}
+    assert lazy(rb"#\s*include").match(b"# include") is not None
