@@ -7,6 +7,7 @@ from __future__ import annotations
 import hashlib
 import sys
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -153,3 +154,111 @@ def test_a_warm_cached_run_loads_no_reader_of_interfaces_or_annotations(
     *output, loaded = warm.stdout.strip().splitlines()
     assert loaded == "[]", warm.stdout + warm.stderr
     assert output == cold.stdout.strip().splitlines()[:-1]
+
+
+# modules whose regular expressions are compiled at their first use (`lazyre.py`)
+LAZY_PATTERNS = (
+    "annotations/units.py",
+    "discovery.py",
+    "source.py",
+    "ros/executables.py",
+    "ros/package.py",
+    "stubs/load.py",
+    "stubs/reader.py",
+)
+
+
+def test_a_check_of_a_plain_file_compiles_none_of_their_patterns(
+    tmp_path: Path,
+) -> None:
+    """A one-file check of `x = 1` (pre-commit, the ament linter, an editor's
+    start) reads no unit, C++ build file or suppression comment: the ~25 patterns
+    of those modules (compiled at import before, 15 M instructions) stay text."""
+    (tmp_path / "a.py").write_text("x = 1\n")
+    probe = (
+        "import re, sys, traceback\n"
+        "real = re._compile\n"
+        "made = []\n"
+        "def spy(pattern, flags):\n"
+        "    frame = next(f for f in reversed(traceback.extract_stack()[:-1])\n"
+        "                 if '/re/' not in f.filename and 'lazyre' not in f.filename)\n"
+        "    made.append(frame.filename.replace(chr(92), '/'))\n"
+        "    return real(pattern, flags)\n"
+        "re._compile = spy\n"
+        "from robotfix.cli import main\n"
+        "main(['check', 'a.py', '--no-cache', '-j', '1'])\n"
+        "names = {f.split('/robotfix/')[-1] for f in made}\n"
+        f"print(sorted(names & {set(LAZY_PATTERNS)!r}))\n"
+    )
+    done = run_probe(probe, tmp_path)
+    assert done.stdout.strip().splitlines()[-1] == "[]", done.stdout + done.stderr
+
+
+def test_super_init_parses_no_stub_that_only_defines_an_init() -> None:
+    """`super().__init__("talker")` in a node class is a call by method name: the
+    stubs' seven `__init__` methods disagree and none checks a positional
+    argument, which shipped_names.json says without parsing rclpy/duration.pyi,
+    rclpy/time.pyi and rospy.pyi (17 M instructions of each such check)."""
+    import ast
+
+    from robotfix.api import check_source
+    from robotfix.stubs.load import DATA
+
+    texts = {p.read_text(encoding="utf-8"): p.name for p in DATA.rglob("*.pyi")}
+    parsed: list[str] = []
+    real = ast.parse
+
+    def parse(source: Any, *args: Any, **kwargs: Any) -> Any:
+        if source in texts:
+            parsed.append(texts[source])
+        return real(source, *args, **kwargs)
+
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(ast, "parse", parse)
+        check_source(NODE.replace("driver", "talker"), "talker.py")
+    assert not {"duration.pyi", "time.pyi", "rospy.pyi"} & set(parsed), parsed
+    # what the candidates could check is still theirs to check
+    from robotfix.stubs.load import StubSet, unchecked_call
+
+    fresh = StubSet()
+    assert unchecked_call(fresh, "__init__", 1, [])
+    assert not unchecked_call(fresh, "__init__", 0, ["seconds"])
+    assert not unchecked_call(fresh, "wait_for_service", 1, [])
+    assert unchecked_call(fresh, "wait_for_service", 0, [])
+    assert fresh._modules == {}
+
+
+def test_the_dataclasses_a_check_loads_have_docstrings() -> None:
+    """`dataclass` gives a class without a docstring one made from
+    `inspect.signature` at import (~90 us a class: 3.5 ms of each process for the
+    38 of a one-file check); these modules' classes write their own."""
+    import dataclasses
+
+    from robotfix import discovery, source
+    from robotfix.annotations import units
+    from robotfix.stubs import model
+
+    generated = [
+        cls.__qualname__
+        for module in (discovery, source, units, model)
+        for cls in vars(module).values()
+        if isinstance(cls, type)
+        and cls.__module__ == module.__name__
+        and dataclasses.is_dataclass(cls)
+        and (cls.__doc__ or "").startswith(f"{cls.__name__}(")
+    ]
+    assert generated == []
+
+
+def test_a_lazy_pattern_is_its_compiled_pattern() -> None:
+    import re
+
+    from robotfix.lazyre import lazy
+
+    pattern = lazy(r"#\s*robotfix:\s*ignore(?:\[(?P<codes>[^\]]*)\])?", re.I)
+    assert "search" not in vars(pattern)  # not compiled before its first use
+    found = pattern.search("x = 1  # RobotFix: ignore[RF101]")
+    assert found is not None and found["codes"] == "RF101"
+    assert isinstance(vars(pattern)["search"].__self__, re.Pattern)  # kept, bound
+    assert pattern.flags & re.I and pattern.groupindex == {"codes": 1}
+    assert lazy(rb"#\s*include").match(b"# include") is not None

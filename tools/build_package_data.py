@@ -8,7 +8,9 @@
   write (`_ >= 0`), parsed, so that a run with no other annotation imports no lark;
 - src/robotfix/stubs/shipped_names.json: the names through which the shipped stubs
   can give a file a unit or a refinement (`stubs/load.defined_names`), which every
-  run would otherwise parse the stubs to find;
+  run would otherwise parse the stubs to find, and which arguments of a call by
+  method name the stubs' disagreeing methods of that name check
+  (`stubs/byname.py`: `super().__init__(...)` parses no stub);
 - src/robotfix/annotations/units.json: pint's reading of every unit the REP 103 table,
   the standard messages' comment units, the shipped stubs and the vocabulary of common
   spellings (src/robotfix/ros/unit_vocabulary.toml) use, and pint's unit, prefix and
@@ -145,9 +147,21 @@ def stub_predicates() -> str:
 
 
 def shipped_names() -> str:
-    from robotfix.stubs.load import DATA, root_names, shipped_key
+    from robotfix.stubs.load import (
+        DATA,
+        StubSet,
+        by_name_checks,
+        root_names,
+        shipped_key,
+    )
 
-    return _dump({"key": shipped_key(), "names": sorted(root_names(DATA))})
+    return _dump(
+        {
+            "key": shipped_key(),
+            "names": sorted(root_names(DATA)),
+            "by_name": by_name_checks(StubSet()),
+        }
+    )
 
 
 def _dump(data: Any) -> str:

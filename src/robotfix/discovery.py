@@ -45,6 +45,7 @@ from robotfix.fs import (
     stamp,
     within,
 )
+from robotfix.lazyre import lazy
 from robotfix.ros.executables import CPP_SOURCE_SUFFIXES
 from robotfix.ros.install import IGNORE_MARKERS, InstallSpace
 from robotfix.ros.launch.names import YAML_SUFFIXES, is_launch_file
@@ -53,8 +54,8 @@ INTERFACE_SUFFIXES = (".msg", ".srv", ".action", ".idl")
 INTERFACE_FOLDERS = ("msg", "srv", "action")
 PARAMETER_FOLDERS = ("config", "params", "param")  # a package's parameter files
 MAX_BUILD_FILE_BYTES = 1024 * 1024  # CMakeLists.txt, setup.py
-_GPL_CMAKE = re.compile(r"generate_parameter_library\s*\(([^)]*)\)")
-_YAML_NAME = re.compile(r"""["']?([^\s"'()]+\.ya?ml)["']?""")
+_GPL_CMAKE = lazy(r"generate_parameter_library\s*\(([^)]*)\)")
+_YAML_NAME = lazy(r"""["']?([^\s"'()]+\.ya?ml)["']?""")
 SKIPPED_FOLDERS = ("__pycache__", "node_modules")  # and every hidden folder
 WORKSPACE_OUTPUT = ("build", "install", "log", "logs", "devel")  # colcon, catkin
 OUTPUT_FOLDERS = (  # skipped unless they hold __init__.py (ruff's defaults, and ROS's)
@@ -68,13 +69,15 @@ OUTPUT_FOLDERS = (  # skipped unless they hold __init__.py (ruff's defaults, and
 )
 WORKSPACE_MARKERS = (".catkin_workspace", ".catkin_tools")
 SHEBANG_BYTES = 256  # a kernel reads at most this much of a `#!` line
-_SHEBANG = re.compile(
+_SHEBANG = lazy(
     rb"#![ \t]*(?:\S*/)?(?:env[ \t]+(?:-\S+[ \t]+)*)?python[0-9.]*(?:[ \t]|\r|\n|$)"
 )
 
 
 @dataclass
 class Discovery:
+    """What a run found to check under the paths it was given."""
+
     python_files: list[Path] = field(default_factory=list)
     interface_files: list[Path] = field(default_factory=list)
     notices: list[Diagnostic] = field(default_factory=list)  # RF004 warnings

@@ -20,6 +20,7 @@ from robotfix import messages, rules
 from robotfix.budget import MAX_PARSED_CHARS
 from robotfix.diagnostics import Diagnostic, Edit, Span
 from robotfix.fs import UnreadableError, read_regular
+from robotfix.lazyre import lazy
 
 
 def _code_chars(lines: list[str]) -> int:
@@ -28,9 +29,7 @@ def _code_chars(lines: list[str]) -> int:
     return sum(len(line) for line in lines if not line.lstrip().startswith("#"))
 
 
-_SUPPRESS = re.compile(
-    r"#\s*robotfix:\s*ignore(?:\[(?P<codes>[^\]]*)\])?", re.IGNORECASE
-)
+_SUPPRESS = lazy(r"#\s*robotfix:\s*ignore(?:\[(?P<codes>[^\]]*)\])?", re.IGNORECASE)
 
 
 def suppresses(line: str, diag: Diagnostic) -> bool:
@@ -57,24 +56,26 @@ _PY2_HINTS = (
 # print/exec statements, `raise E, "why"`, backticks, `<>`, ur'' strings, 10L.
 # PEP 695 (Python 3.12, ROS 2 Jazzy's Python): `type X = ...`, `def f[T](...)`,
 # `class C[T]:`; an older parser stops at them.
-_PY312_FORMS = re.compile(
+_PY312_FORMS = lazy(
     r"\s*(type\s+[A-Za-z_]\w*\s*(\[.*\])?\s*="
     r"|(async\s+)?def\s+[A-Za-z_]\w*\s*\[|class\s+[A-Za-z_]\w*\s*\[)"
 )
-_PY2_TOKENS = re.compile(
+_PY2_TOKENS = lazy(
     r"^\s*(print\s+[\"'\w]|exec\s+[\"']|raise\s+[\w.]+\s*,)|`|<>"
     r"|\b[uU][rR][\"']|\b\d+[lL]\b",
     re.M,
 )
 # Python 3.10 says only "invalid syntax" at the `(` of a tuple parameter
 # (`def f(a, (x, y))`, `lambda (k, v): v`); 3.11 and later name it (_PY2_HINTS).
-_BEFORE_TUPLE_PARAMETER = re.compile(
+_BEFORE_TUPLE_PARAMETER = lazy(
     r"(\bdef\s+\w+\s*\((?:[^()=]*,)?|\blambda(?:[^():=]*,)?)\s*$"
 )
 
 
 @dataclass
 class SourceFile:
+    """A Python file's path and text, and its syntax tree once parsed."""
+
     path: str
     text: str
     tree: ast.Module | None = None
@@ -189,9 +190,9 @@ class SourceFile:
         return codes is None or diag.code in codes or diag.rule.name in codes
 
 
-LINE_BREAK = re.compile(r"\r\n|\r|\n")  # the line breaks ast counts
-_OPENED = re.compile(r"([(\[{]) ")
-_CLOSED = re.compile(r",? ([)\]}])")
+LINE_BREAK = lazy(r"\r\n|\r|\n")  # the line breaks ast counts
+_OPENED = lazy(r"([(\[{]) ")
+_CLOSED = lazy(r",? ([)\]}])")
 
 
 def _one_line(text: str) -> str:

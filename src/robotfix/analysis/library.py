@@ -17,7 +17,6 @@ from __future__ import annotations
 
 import ast
 import math
-from collections.abc import Sequence
 from dataclasses import replace
 from fractions import Fraction
 from typing import TYPE_CHECKING
@@ -33,6 +32,7 @@ from robotfix.annotations.extract import Refinement
 from robotfix.annotations.numbers import NUMBERS, named_number
 from robotfix.annotations.units import Unit, named
 from robotfix.messages import Declared
+from robotfix.stubs import byname
 from robotfix.stubs import load as stubs
 
 if TYPE_CHECKING:
@@ -148,6 +148,8 @@ class Libraries:
             if func.__class__ is not ast.Attribute:
                 return None
             stub_set = self._stub_set or self._stubs()  # (no call: most calls)
+            if stubs.unchecked_call(stub_set, func.attr, len(args), kwargs):
+                return None  # (`super().__init__(...)`: no stub parsed to know)
             candidates = stubs.methods_named(stub_set, func.attr)
             if not candidates:
                 return None  # (most calls: no stub has a method of that name)
@@ -185,18 +187,19 @@ class Libraries:
     ) -> Value | None:
         """A call of a method of a value of unknown type, which one of the stubs'
         `candidates` of its name (at least one) may be."""
-        if len({_signature(f) for f in candidates}) == 1:
+        if byname.agree(candidates):
             return self.call_function(at, candidates[0], args, kwargs, node, state, 0)
         # they differ: check only the arguments every candidate gives one unit
+        first = candidates[0]
         for index, value in enumerate(args):
-            params = [_param_at(f, index, None) for f in candidates]
-            if all(p is not None for p in params) and _one_unit(params):
-                self._check_argument(at, candidates[0], params[0], value, state)  # type: ignore[arg-type]
+            if byname.position_checked(candidates, index):
+                param = byname.param_at(first, index, None)
+                self._check_argument(at, first, param, value, state)  # type: ignore[arg-type]
         for key, value in kwargs.items():
-            params = [_param_at(f, None, key) for f in candidates]
-            given = [p for p in params if p is not None]
-            if given and _one_unit(given):
-                self._check_argument(at, candidates[0], given[0], value, state)
+            if key is not None and byname.keyword_checked(candidates, key):
+                given = (byname.param_at(f, None, key) for f in candidates)
+                param = next(p for p in given if p is not None)
+                self._check_argument(at, first, param, value, state)
         return None
 
     def call_function(
@@ -477,42 +480,6 @@ def _builtin(value: Value) -> str:
 
 def _pure_number(value: Value) -> bool:
     return value.is_number and (value.unit is None or not value.unit.dims)
-
-
-def _signature(function: stubs.Function) -> tuple[object, ...]:
-    return (
-        tuple(
-            (p.name, p.positional, p.keyword, _unit_text(p.decl))
-            for p in function.params
-        ),
-        _unit_text(function.returns),
-        function.returns_type,
-    )
-
-
-def _unit_text(decl: Refinement | None) -> str | None:
-    return None if decl is None else f"{decl.text}"
-
-
-def _param_at(
-    function: stubs.Function, index: int | None, key: str | None
-) -> stubs.Param | None:
-    for param in function.params:
-        if key is not None and param.keyword and param.name == key:
-            return param
-        if index is not None and param.positional == index and not param.variadic:
-            return param
-    return None
-
-
-def _one_unit(params: Sequence[stubs.Param | None]) -> bool:
-    units = {
-        (p.decl.unit.dims, p.decl.unit.factor)
-        if p is not None and p.decl is not None and p.decl.unit is not None
-        else None
-        for p in params
-    }
-    return len(units) == 1 and None not in units
 
 
 def _root(unit: Unit) -> Unit | None:

@@ -25,7 +25,6 @@ from __future__ import annotations
 import functools
 import json
 import math
-import re
 import unicodedata
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -34,6 +33,7 @@ from pathlib import Path
 from typing import Any
 
 from robotfix.disk_cache import JsonCache, install_key, is_text
+from robotfix.lazyre import lazy
 
 _SYMBOLS = {
     "meter": "m",
@@ -45,21 +45,23 @@ _SYMBOLS = {
     "mole": "mol",
     "candela": "cd",
 }
-_IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_\-]*")
+_IDENTIFIER = lazy(r"[A-Za-z_][A-Za-z0-9_\-]*")
 MAX_UNIT_CHARS = 100
 MAX_UNIT_EXPONENT = 9
 _MAX_DIMENSION = 99  # (m^9)^9 is allowed by the text check; m^81 is still a unit
 _SUPERSCRIPTS = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹⁻", "0123456789-")
-_SUPERSCRIPT_RUN = re.compile("⁻?[⁰¹²³⁴⁵⁶⁷⁸⁹]+")
-_POWER = re.compile(r"\*\*|\^")
+_SUPERSCRIPT_RUN = lazy("⁻?[⁰¹²³⁴⁵⁶⁷⁸⁹]+")
+_POWER = lazy(r"\*\*|\^")
 _DIGIT = r"\s*(?:\(\s*[+-]?\s*[0-9]\s*\)|[+-]?\s*[0-9])(?![\w.])"  # 2, -1, (-1)
-_EXPONENT = re.compile(_DIGIT)
-_POWER_OF = re.compile(r"(?:\*\*|\^)" + _DIGIT)
-_NUMBER = re.compile(r"(?<![\w.])[0-9.][\w.]*")
+_EXPONENT = lazy(_DIGIT)
+_POWER_OF = lazy(r"(?:\*\*|\^)" + _DIGIT)
+_NUMBER = lazy(r"(?<![\w.])[0-9.][\w.]*")
 
 
 @dataclass(frozen=True)
 class Unit:
+    """A physical unit: its SI dimensions, its scale and its zero."""
+
     dims: tuple[tuple[str, int], ...]  # sorted; e.g. (("meter", 1), ("second", -1))
     factor: float = 1.0  # SI (root-unit) value of one of this unit
     offset: float = 0.0  # SI value of this unit's zero (degC: 273.15 K)
@@ -635,10 +637,10 @@ _PINT_NAMES_VERSION = 1
 # and `-` (pint cannot subtract units: any `-` between two words fails), or one word
 # with `[`/`]` in it (pint renames brackets before tokenizing, then looks the word up).
 _WORD = r"[A-Za-z_][A-Za-z0-9_]*"
-_WORDS = re.compile(rf"{_WORD}(?:[ */-]{_WORD})*")
-_WORD_OR_SEPARATOR = re.compile(rf"{_WORD}|[ */-]")
-_BRACKETED_WORD = re.compile(r"[A-Za-z_\[\]][A-Za-z0-9_\[\]]*")
-_DIGIT_AFTER_BRACKET = re.compile(r"[\[\]][0-9]")
+_WORDS = lazy(rf"{_WORD}(?:[ */-]{_WORD})*")
+_WORD_OR_SEPARATOR = lazy(rf"{_WORD}|[ */-]")
+_BRACKETED_WORD = lazy(r"[A-Za-z_\[\]][A-Za-z0-9_\[\]]*")
+_DIGIT_AFTER_BRACKET = lazy(r"[\[\]][0-9]")
 # Text pint's `string_preprocessor` rewrites (`m per s`, `square m`, `s squared`):
 # such text goes to pint.
 _REWRITTEN = (" per ", " squared", " cubed", "cubic ", "square ", "sq ")

@@ -19,11 +19,12 @@ from pathlib import Path
 from typing import Any, TypeVar
 
 from robotfix.fs import UnreadableError, probe, read_regular, read_text, remembered
+from robotfix.lazyre import lazy
 
 MAX_BUILD_BYTES = 1024 * 1024
 SCRIPT_FOLDERS = ("scripts", "nodes", "bin", "src", "")
 T = TypeVar("T")
-_PROGRAMS = re.compile(
+_PROGRAMS = lazy(
     r"(?:install|catkin_install_python)\s*\(\s*PROGRAMS\s+([^)]*)\)", re.IGNORECASE
 )
 
@@ -187,8 +188,8 @@ def _cmake_programs(package: Path) -> list[Path]:
 
 
 # -- C++: CMake targets --------------------------------------------------------
-_COMMAND = re.compile(r"\b([A-Za-z_][A-Za-z0-9_]*)\s*\(([^()]*)\)")
-_VARIABLE = re.compile(r"\$\{([A-Za-z0-9_]+)\}")
+_COMMAND = lazy(r"\b([A-Za-z_][A-Za-z0-9_]*)\s*\(([^()]*)\)")
+_VARIABLE = lazy(r"\$\{([A-Za-z0-9_]+)\}")
 _TARGET_WORDS = frozenset(
     {
         "STATIC",
@@ -207,7 +208,7 @@ _TARGET_WORDS = frozenset(
 )
 CMAKE_STEPS = 2 * MAX_BUILD_BYTES  # characters of commands read per CMakeLists.txt
 MAX_VALUE = 4096  # a variable's value longer than this is unknown
-_INCLUDE = re.compile(rb'#\s*include\s*[<"]([^>"]+)[>"]')
+_INCLUDE = lazy(rb'#\s*include\s*[<"]([^>"]+)[>"]')
 CPP_SOURCE_SUFFIXES = (".cpp", ".cc", ".cxx", ".c++", ".hpp", ".hh", ".hxx", ".h")
 
 
@@ -265,7 +266,7 @@ def _cmake_targets(package: Path) -> dict[str, tuple[list[Path], list[str]]]:
 
 
 # `function(name args)` / `macro(...)` and their `endfunction()` / `endmacro()`
-_BOUNDARY = re.compile(
+_BOUNDARY = lazy(
     r"\b(?P<end>end)?(?:function|macro)\s*\((?P<head>[^()]*)\)", re.IGNORECASE
 )
 

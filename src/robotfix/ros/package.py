@@ -7,14 +7,14 @@ anything, while ROS names the package's types after `<name>`.
 from __future__ import annotations
 
 import os
-import re
 from pathlib import Path
 from xml.etree import ElementTree
 
 from robotfix.fs import UnreadableError, probe, read_regular
+from robotfix.lazyre import lazy
 
 MAX_PACKAGE_XML_BYTES = 1024 * 1024  # real ones are a few kB
-_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")  # what a `pkg/Type` name can hold
+_NAME = lazy(r"[A-Za-z_][A-Za-z0-9_]*")  # what a `pkg/Type` name can hold
 
 
 def package_name(folder: Path) -> str | None:

@@ -17,11 +17,13 @@ import functools
 import hashlib
 import json
 import os
-import re
 from collections.abc import Iterable, Iterator
 from pathlib import Path
+from typing import Any
 
 from robotfix.fs import UnreadableError, read_regular
+from robotfix.lazyre import lazy
+from robotfix.stubs import byname
 
 # the data a stub gives, re-exported: what the analysis asks a `StubSet` for
 from robotfix.stubs.model import Attribute as Attribute
@@ -39,7 +41,7 @@ MAX_STAR_DEPTH = 8  # `from m import *` followed through at most so many modules
 _UNSEEN = object()  # `StubSet.lookup`: a name not looked up yet
 # `def name(` in a stub's text (a name runs to the first space or parenthesis: each
 # `def name(` the text holds is one match)
-_DEF = re.compile(r"def ([^\s(]+)\(")
+_DEF = lazy(r"def ([^\s(]+)\(")
 
 
 @functools.cache
@@ -303,6 +305,7 @@ def forget() -> None:
     _stub_set.cache_clear()
     _text_of.cache_clear()
     _module_names.cache_clear()
+    _shipped.cache_clear()
 
 
 def methods_named(stubs: StubSet, name: str) -> tuple[Function, ...]:
@@ -373,16 +376,55 @@ def shipped_key() -> str:
     return digest.hexdigest()
 
 
-def _shipped_names() -> set[str]:
+@functools.cache
+def _shipped() -> dict[str, Any]:
+    """`SHIPPED_NAMES`' data, when made from the shipped stubs as they are (else
+    nothing: each fact is then found from the stubs themselves)."""
     try:
         raw = json.loads(SHIPPED_NAMES.read_text(encoding="utf-8"))
         if isinstance(raw, dict) and raw.get("key") == shipped_key():
-            names = raw.get("names")
-            if isinstance(names, list) and all(isinstance(n, str) for n in names):
-                return set(names)
+            return raw
     except (OSError, ValueError):
         pass
+    return {}
+
+
+def _shipped_names() -> set[str]:
+    names = _shipped().get("names")
+    if isinstance(names, list) and all(isinstance(n, str) for n in names):
+        return set(names)
     return root_names(DATA)  # edited stubs: read them
+
+
+def by_name_checks(stubs: StubSet) -> dict[str, tuple[list[int], list[str]]]:
+    """`byname.checked` for each method name on whose stub methods disagree (what
+    tools/build_package_data.py writes into `SHIPPED_NAMES` for the shipped set)."""
+    if stubs._defining is None:
+        stubs._defining = stubs._definitions()
+    found = {}
+    for name in sorted(stubs._defining):
+        candidates = methods_named(stubs, name)
+        if candidates and not byname.agree(candidates):
+            found[name] = byname.checked(candidates)
+    return found
+
+
+def unchecked_call(
+    stubs: StubSet, name: str, positional: int, keys: Iterable[str | None]
+) -> bool:
+    """Whether a call of a method `name` of a value of unknown type, with so many
+    positional arguments and these keywords, is known from `SHIPPED_NAMES` alone
+    to have no argument the stubs' disagreeing candidates let the analysis check
+    (`super().__init__("talker")`). False when unsure: the candidates decide."""
+    if stubs.paths:
+        return False  # a user's stub may add a candidate
+    found = _shipped().get("by_name", {}).get(name)
+    if not isinstance(found, list) or len(found) != 2:
+        return False
+    positions, keywords = found
+    return all(i >= positional for i in positions) and not any(
+        k in keywords for k in keys
+    )
 
 
 def root_names(root: Path) -> set[str]:
@@ -438,7 +480,7 @@ def _class_gives(node: ast.ClassDef) -> bool:
     return False
 
 
-_ONLY_A_UNIT = re.compile(r"""Annotated\[\w+, ['"]Unit\('[^'"()]*'\)['"]\]""")
+_ONLY_A_UNIT = lazy(r"""Annotated\[\w+, ['"]Unit\('[^'"()]*'\)['"]\]""")
 
 
 def _annotations(args: ast.arguments) -> list[ast.expr]:

@@ -14,6 +14,8 @@ if TYPE_CHECKING:
 
 @dataclass(frozen=True)
 class Param:
+    """A parameter of a stub function: where a call passes it, and its annotation."""
+
     name: str
     positional: int | None  # its position among the arguments a call passes
     keyword: bool  # may be passed by keyword
@@ -24,6 +26,8 @@ class Param:
 
 @dataclass(frozen=True)
 class Function:
+    """A stub function or method, its annotations read."""
+
     qualname: str  # `rclpy.node.Node.create_timer`, `rospy.sleep`
     params: tuple[Param, ...]  # without `self`/`cls` of a method or class method
     returns: Refinement | None
@@ -50,6 +54,8 @@ class Function:
 
 @dataclass(frozen=True)
 class Attribute:
+    """A stub class's annotated attribute."""
+
     decl: Refinement | None
     type: str | None  # qualified class name
 
@@ -70,6 +76,8 @@ def _built(
 
 @dataclass
 class Class:
+    """A stub class: its bases, methods (read when first asked for), attributes."""
+
     qualname: str
     bases: tuple[str, ...]
     members: dict[str, Function] = field(default_factory=dict)
@@ -87,6 +95,8 @@ class Class:
 
 @dataclass(frozen=True)
 class Problem:
+    """What is wrong in a user's stub, at its line and column."""
+
     path: str
     line: int
     col: int
@@ -95,6 +105,8 @@ class Problem:
 
 @dataclass
 class Module:
+    """One stub module: its functions, classes, re-exports and problems."""
+
     name: str
     functions: dict[str, Function] = field(default_factory=dict)
     classes: dict[str, Class] = field(default_factory=dict)

@@ -34,7 +34,6 @@ treated as unannotated.
 from __future__ import annotations
 
 import ast
-import re
 from collections.abc import Callable
 from pathlib import Path
 
@@ -43,9 +42,10 @@ from robotfix.annotations.extract import ANNOTATED, BASE_TYPES, Refinement, extr
 from robotfix.annotations.units import UnitError, resolve
 from robotfix.astwalk import dotted
 from robotfix.fs import UnreadableError, read_regular
+from robotfix.lazyre import lazy
 from robotfix.stubs.model import Attribute, Class, Function, Module, Param, Problem
 
-_UNIT_ONLY = re.compile(r"Unit\('([A-Za-z0-9_/*^ .]+)'\)")
+_UNIT_ONLY = lazy(r"Unit\('([A-Za-z0-9_/*^ .]+)'\)")
 UNIT_RULES = frozenset({"same", "root", "scale", "agree"})
 # The binary operators a stub class may define (`Time.__sub__`), read by operand type
 # when overloaded (`_operator_key`), and the method of each Python operator.
