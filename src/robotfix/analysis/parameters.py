@@ -241,3 +241,6 @@ class ParamContext:
     handles: dict[str, Handle] = field(default_factory=dict)
     reads: dict[int, ParamRead] = field(default_factory=dict)  # Sym ident ->
     fixed: dict[tuple[str, str], Value] = field(default_factory=dict)  # read_only
+    # id(node) -> every call of the file and every tuple under a `declare_parameters`
+    # call: where a declaration's default is read (`param_eval`, made at the first ask)
+    declarations: dict[int, ast.Call | ast.Tuple] | None = None
