@@ -192,7 +192,7 @@ def _drain(index: FileIndex, todo: Todo, where: Where, root: int) -> None:
     v: Any
     while todo:
         node = pop()
-        kind = node.__class__
+        kind = type(node)
         special = _SPECIAL.get(kind)
         if special is not None:
             if special is _MARK:  # the end of a nested scope: back to its parent
@@ -200,7 +200,7 @@ def _drain(index: FileIndex, todo: Todo, where: Where, root: int) -> None:
                 local_names = scopes[owner].local_names
                 continue
             if special is _NAME:  # one a scope's own statement holds directly
-                if node.ctx.__class__ is not load:
+                if type(node.ctx) is not load:
                     local_names.add(node.id)
                     stores[node.id] += 1
                 continue
@@ -214,10 +214,10 @@ def _drain(index: FileIndex, todo: Todo, where: Where, root: int) -> None:
             if special is _CALL:
                 calls.append((cls, node))
                 func = node.func
-                if func.__class__ is name_class and func.id == "setattr":
+                if type(func) is name_class and func.id == "setattr":
                     index.setattrs.append(node)
             elif special is _ATTRIBUTE:  # one a scope's own statement holds
-                if node.ctx.__class__ is not load:
+                if type(node.ctx) is not load:
                     attribute_stores.add(node.attr)
             elif special is _RETURN:
                 index.returns.setdefault(owner, []).append(node)
@@ -232,15 +232,15 @@ def _drain(index: FileIndex, todo: Todo, where: Where, root: int) -> None:
             names = fields(kind)
         for name in names:  # not contexts, operators and strings
             value = getattr(node, name, None)
-            for v in value if value.__class__ is list else (value,):
-                child = v.__class__
+            for v in value if type(value) is list else (value,):
+                child = type(v)
                 while child is attribute_class:  # `a.b.c`: read here, not stacked
-                    if v.ctx.__class__ is not load:
+                    if type(v.ctx) is not load:
                         attribute_stores.add(v.attr)
                     v = v.value
-                    child = v.__class__
+                    child = type(v)
                 if child is name_class:
-                    if v.ctx.__class__ is not load:
+                    if type(v.ctx) is not load:
                         local_names.add(v.id)
                         stores[v.id] += 1
                 elif child is not constant_class and isinstance(v, node_class):
