@@ -164,17 +164,17 @@ def _names_one(tree: ast.Module, vocabulary: frozenset[str]) -> bool:
     child: Any
     while todo:
         node = pop()
-        kind = node.__class__
+        kind = type(node)
         for name in known.get(kind) or fields(kind):
             value = getattr(node, name, None)
-            for child in value if value.__class__ is list else (value,):
-                part = child.__class__
+            for child in value if type(value) is list else (value,):
+                part = type(child)
                 if part is attribute_class:
                     while part is attribute_class:
                         if child.attr in vocabulary:
                             return True
                         child = child.value
-                        part = child.__class__
+                        part = type(child)
                     if part is name_class:
                         continue  # a receiver
                 if part is name_class:
