@@ -145,7 +145,7 @@ def _bound(statement: ast.stmt) -> set[str]:
     return {
         child.id
         for child in walk(statement)
-        if child.__class__ is ast.Name and child.ctx.__class__ is not ast.Load
+        if type(child) is ast.Name and type(child.ctx) is not ast.Load
     }
 
 
@@ -285,9 +285,9 @@ def _record(
         todo = list(getattr(node, "targets", None) or [node.target])  # type: ignore[attr-defined]
         while todo:  # every node of the targets (`walk`), most are one `Name`
             part: Any = todo.pop()
-            if part.__class__ is ast.Name:
+            if type(part) is ast.Name:
                 continue
-            if part.__class__ is ast.Attribute:
+            if type(part) is ast.Attribute:
                 index.assigned[part.attr] += 1
             todo += children(part)
     if kind is ast.Import or kind is ast.ImportFrom:

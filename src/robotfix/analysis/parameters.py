@@ -187,10 +187,10 @@ def _passed_names(tree: ast.Module, index: FileIndex) -> dict[str, set[str]] | N
             if names is None:
                 names = found[cls] = set()
             for arg in call.args:
-                if arg.__class__ is name:
+                if type(arg) is name:
                     names.add(arg.id)
             for keyword in call.keywords:
-                if keyword.value.__class__ is name:
+                if type(keyword.value) is name:
                     names.add(keyword.value.id)
     return found
 
