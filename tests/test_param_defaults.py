@@ -20,7 +20,7 @@ from robotfix.source import SourceFile
 
 CASES = Path(__file__).parent / "cases"
 
-ODD = '''
+ODD = """
 from rclpy.node import Node
 
 class N(Node):
@@ -30,10 +30,12 @@ class N(Node):
         self.declare_parameter(name="b", value=2)
         self.declare_parameter("c")
         self.declare_parameters("", [("d", 3), ("e",), ("f", f(("g", 4)))])
-        self.declare_parameters(namespace="", parameters=[("h", self.declare_parameter("i", 5))])
+        self.declare_parameters(
+            namespace="", parameters=[("h", self.declare_parameter("i", 5))]
+        )
         self.get_parameter("a")
         x = self.get_parameter("d").value
-'''
+"""
 
 
 def _walked(calls: list[tuple[str | None, ast.Call]], node_id: int) -> ast.expr | None:
@@ -57,7 +59,10 @@ def _mapped(calls: list[tuple[str | None, ast.Call]], node_id: int) -> ast.expr 
 
 def _sources() -> list[SourceFile]:
     files = [SourceFile.from_text("odd.py", ODD)]
-    files += [SourceFile.from_bytes(str(p), p.read_bytes()) for p in sorted(CASES.rglob("*.py"))]
+    files += [
+        SourceFile.from_bytes(str(p), p.read_bytes())
+        for p in sorted(CASES.rglob("*.py"))
+    ]
     return [f for f in files if f.tree is not None]
 
 
@@ -68,7 +73,9 @@ def test_the_map_finds_what_the_walk_found(source: SourceFile) -> None:
     summary = summarize(source, index)
     ids = [d.node_id for d in summary.decls]
     # and the calls and tuples no declaration is at
-    ids += [id(n) for n in ast.walk(source.tree) if isinstance(n, (ast.Call, ast.Tuple))]
+    ids += [
+        id(n) for n in ast.walk(source.tree) if isinstance(n, (ast.Call, ast.Tuple))
+    ]
     for node_id in ids:
         assert _mapped(index.calls, node_id) is _walked(index.calls, node_id)
 
