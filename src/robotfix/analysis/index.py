@@ -185,7 +185,7 @@ def _drain(index: FileIndex, todo: Todo, where: Where, root: int) -> None:
     attribute_stores, attribute_class = index.attribute_stores, ast.Attribute
     known = FIELDS  # node class -> fields that may hold nodes
     node_class, name_class, constant_class = ast.AST, ast.Name, ast.Constant
-    load = ast.Load
+    load, special_of = ast.Load, _SPECIAL.get
     owner, cls, self_name = where
     local_names = scopes[owner].local_names
     node: Any  # a node, or the marker at the end of a nested scope
@@ -193,7 +193,7 @@ def _drain(index: FileIndex, todo: Todo, where: Where, root: int) -> None:
     while todo:
         node = pop()
         kind = type(node)
-        special = _SPECIAL.get(kind)
+        special = special_of(kind)
         if special is not None:
             if special is _MARK:  # the end of a nested scope: back to its parent
                 owner, cls, self_name = node
