@@ -38,13 +38,13 @@ def fields(kind: type) -> tuple[str, ...]:
 
 def children(node: ast.AST) -> list[ast.AST]:
     found: list[ast.AST] = []
-    kind = node.__class__
+    kind = type(node)
     names = _FIELDS.get(kind)
     if names is None:
         names = fields(kind)
     for name in names:
         value = getattr(node, name, None)
-        if value.__class__ is list:
+        if type(value) is list:
             for v in value:
                 if isinstance(v, ast.AST):
                     found.append(v)
@@ -61,7 +61,7 @@ def walk(roots: ast.AST | Iterable[ast.AST]) -> Iterator[ast.AST]:
     while todo:
         node = pop()
         yield node
-        kind = node.__class__
+        kind = type(node)
         if kind is not ast.Name and kind is not ast.Constant:  # they have none
             extend(children(node))
 
@@ -80,15 +80,15 @@ def select(
     leaves, node_class, known = (ast.Name, ast.Constant), ast.AST, _FIELDS
     while todo:
         node = pop()
-        kind = node.__class__
+        kind = type(node)
         if kind in skip:
             continue
         if kind in kinds:
             found.append(node)
         for name in known.get(kind) or fields(kind):
             value = getattr(node, name, None)
-            for child in value if value.__class__ is list else (value,):
-                if child.__class__ not in leaves and isinstance(child, node_class):
+            for child in value if type(value) is list else (value,):
+                if type(child) not in leaves and isinstance(child, node_class):
                     append(child)
     return found
 
@@ -111,14 +111,14 @@ def names_under(
     child: Any
     while todo:
         node = pop()
-        for field in known.get(node.__class__) or fields(node.__class__):
+        for field in known.get(type(node)) or fields(type(node)):
             value = getattr(node, field, None)
-            if value.__class__ is not list:
+            if type(value) is not list:
                 value = (value,)
             elif keep is not None and field in BLOCK_FIELDS:
                 value = [s for s in value if keep(s)]
             for child in value:
-                kind = child.__class__
+                kind = type(child)
                 if kind is name_class:
                     add((node, child))
                 elif kind is not constant_class and isinstance(child, node_class):

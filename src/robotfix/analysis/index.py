@@ -145,7 +145,7 @@ def _bound(statement: ast.stmt) -> set[str]:
     return {
         child.id
         for child in walk(statement)
-        if child.__class__ is ast.Name and child.ctx.__class__ is not ast.Load
+        if type(child) is ast.Name and type(child.ctx) is not ast.Load
     }
 
 
@@ -185,22 +185,22 @@ def _drain(index: FileIndex, todo: Todo, where: Where, root: int) -> None:
     attribute_stores, attribute_class = index.attribute_stores, ast.Attribute
     known = FIELDS  # node class -> fields that may hold nodes
     node_class, name_class, constant_class = ast.AST, ast.Name, ast.Constant
-    load = ast.Load
+    load, special_of = ast.Load, _SPECIAL.get
     owner, cls, self_name = where
     local_names = scopes[owner].local_names
     node: Any  # a node, or the marker at the end of a nested scope
     v: Any
     while todo:
         node = pop()
-        kind = node.__class__
-        special = _SPECIAL.get(kind)
+        kind = type(node)
+        special = special_of(kind)
         if special is not None:
             if special is _MARK:  # the end of a nested scope: back to its parent
                 owner, cls, self_name = node
                 local_names = scopes[owner].local_names
                 continue
             if special is _NAME:  # one a scope's own statement holds directly
-                if node.ctx.__class__ is not load:
+                if type(node.ctx) is not load:
                     local_names.add(node.id)
                     stores[node.id] += 1
                 continue
@@ -214,10 +214,10 @@ def _drain(index: FileIndex, todo: Todo, where: Where, root: int) -> None:
             if special is _CALL:
                 calls.append((cls, node))
                 func = node.func
-                if func.__class__ is name_class and func.id == "setattr":
+                if type(func) is name_class and func.id == "setattr":
                     index.setattrs.append(node)
             elif special is _ATTRIBUTE:  # one a scope's own statement holds
-                if node.ctx.__class__ is not load:
+                if type(node.ctx) is not load:
                     attribute_stores.add(node.attr)
             elif special is _RETURN:
                 index.returns.setdefault(owner, []).append(node)
@@ -232,15 +232,15 @@ def _drain(index: FileIndex, todo: Todo, where: Where, root: int) -> None:
             names = fields(kind)
         for name in names:  # not contexts, operators and strings
             value = getattr(node, name, None)
-            for v in value if value.__class__ is list else (value,):
-                child = v.__class__
+            for v in value if type(value) is list else (value,):
+                child = type(v)
                 while child is attribute_class:  # `a.b.c`: read here, not stacked
-                    if v.ctx.__class__ is not load:
+                    if type(v.ctx) is not load:
                         attribute_stores.add(v.attr)
                     v = v.value
-                    child = v.__class__
+                    child = type(v)
                 if child is name_class:
-                    if v.ctx.__class__ is not load:
+                    if type(v.ctx) is not load:
                         local_names.add(v.id)
                         stores[v.id] += 1
                 elif child is not constant_class and isinstance(v, node_class):
@@ -285,9 +285,9 @@ def _record(
         todo = list(getattr(node, "targets", None) or [node.target])  # type: ignore[attr-defined]
         while todo:  # every node of the targets (`walk`), most are one `Name`
             part: Any = todo.pop()
-            if part.__class__ is ast.Name:
+            if type(part) is ast.Name:
                 continue
-            if part.__class__ is ast.Attribute:
+            if type(part) is ast.Attribute:
                 index.assigned[part.attr] += 1
             todo += children(part)
     if kind is ast.Import or kind is ast.ImportFrom:

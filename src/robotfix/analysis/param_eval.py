@@ -141,15 +141,15 @@ class ParameterCalls:
     def _declared_default(self, decl: ParamDecl) -> ast.expr | None:
         """The default's expression of a declaration, found by its node's id in
         the file's calls (`declare_parameter(name, default)`, or a tuple of
-        `declare_parameters`)."""
-        for _, call in self.ctx.index.calls:
-            if id(call) == decl.node_id:
-                return call_argument(call, 1, "value")
-            if called_name(call) == "declare_parameters":
-                for item in ast.walk(call):
-                    if id(item) == decl.node_id and isinstance(item, ast.Tuple):
-                        return item.elts[1] if len(item.elts) > 1 else None
-        return None
+        `declare_parameters`); the calls are read once a file, at the first ask."""
+        params = self.parameters()
+        nodes = params.declarations
+        if nodes is None:
+            nodes = params.declarations = _declarations(self.ctx.index.calls)
+        node = nodes.get(decl.node_id)
+        if isinstance(node, ast.Tuple):
+            return node.elts[1] if len(node.elts) > 1 else None
+        return None if node is None else call_argument(node, 1, "value")
 
     def _name(
         self,
@@ -330,3 +330,18 @@ def _owner(receiver: ast.expr, function: Function | None) -> str | None:
         function.class_name if is_method else None,
         params[0].arg if is_method else None,
     )
+
+
+def _declarations(
+    calls: list[tuple[str | None, ast.Call]],
+) -> dict[int, ast.Call | ast.Tuple]:
+    """id(node) -> the node, for every call and every tuple under a
+    `declare_parameters` call (the first such call that holds it)."""
+    found: dict[int, ast.Call | ast.Tuple] = {}
+    for _, call in calls:
+        found.setdefault(id(call), call)
+        if called_name(call) == "declare_parameters":
+            for item in ast.walk(call):
+                if isinstance(item, ast.Tuple):
+                    found.setdefault(id(item), item)
+    return found

@@ -187,10 +187,10 @@ def _passed_names(tree: ast.Module, index: FileIndex) -> dict[str, set[str]] | N
             if names is None:
                 names = found[cls] = set()
             for arg in call.args:
-                if arg.__class__ is name:
+                if type(arg) is name:
                     names.add(arg.id)
             for keyword in call.keywords:
-                if keyword.value.__class__ is name:
+                if type(keyword.value) is name:
                     names.add(keyword.value.id)
     return found
 
@@ -241,3 +241,6 @@ class ParamContext:
     handles: dict[str, Handle] = field(default_factory=dict)
     reads: dict[int, ParamRead] = field(default_factory=dict)  # Sym ident ->
     fixed: dict[tuple[str, str], Value] = field(default_factory=dict)  # read_only
+    # id(node) -> every call of the file and every tuple under a `declare_parameters`
+    # call: where a declaration's default is read (`param_eval`, made at the first ask)
+    declarations: dict[int, ast.Call | ast.Tuple] | None = None

@@ -164,17 +164,17 @@ def _names_one(tree: ast.Module, vocabulary: frozenset[str]) -> bool:
     child: Any
     while todo:
         node = pop()
-        kind = node.__class__
+        kind = type(node)
         for name in known.get(kind) or fields(kind):
             value = getattr(node, name, None)
-            for child in value if value.__class__ is list else (value,):
-                part = child.__class__
+            for child in value if type(value) is list else (value,):
+                part = type(child)
                 if part is attribute_class:
                     while part is attribute_class:
                         if child.attr in vocabulary:
                             return True
                         child = child.value
-                        part = child.__class__
+                        part = type(child)
                     if part is name_class:
                         continue  # a receiver
                 if part is name_class:
@@ -214,7 +214,7 @@ def _statements(body: list[ast.stmt]) -> Iterable[ast.stmt]:
     while todo:
         stmt = todo.pop()
         yield stmt
-        if stmt.__class__ not in _COMPOUND:  # most statements hold none
+        if type(stmt) not in _COMPOUND:  # most statements hold none
             continue
         for field in ("body", "orelse", "finalbody"):
             todo.extend(reversed(getattr(stmt, field, ())))
@@ -421,9 +421,9 @@ class _Scope:
         """Check the reads of an expression in order; the names it binds (`:=`)."""
         if node is None:
             return bound
-        kind = node.__class__
+        kind = type(node)
         if kind is ast.Name:
-            if node.ctx.__class__ is ast.Load:  # type: ignore[attr-defined]
+            if type(node.ctx) is ast.Load:  # type: ignore[attr-defined]
                 self.read(node.id, bound)  # type: ignore[attr-defined]
             return bound
         if kind is ast.Constant:
@@ -634,9 +634,9 @@ def _binders(
     pop, extend = todo.pop, todo.extend
     while todo:
         child = pop()
-        kind = child.__class__
+        kind = type(child)
         if kind is ast.Name:
-            if child.ctx.__class__ is not ast.Load:  # type: ignore[attr-defined]
+            if type(child.ctx) is not ast.Load:  # type: ignore[attr-defined]
                 bound.add(child.id)  # type: ignore[attr-defined]
             continue
         if kind is ast.Constant:
@@ -696,11 +696,11 @@ def _statement_binders(
     todo: list[ast.AST] = list(body)
     while todo:
         stmt = todo.pop()
-        kind = stmt.__class__
+        kind = type(stmt)
         field = _TARGETS.get(kind)
         if field is not None:
             found = getattr(stmt, field)
-            if found.__class__ is list:
+            if type(found) is list:
                 targets.extend(found)
             else:
                 targets.append(found)
