@@ -22,6 +22,7 @@ sight of a per-file analysis.
 from __future__ import annotations
 
 import ast
+import weakref
 from collections import Counter
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
@@ -104,10 +105,64 @@ def scan(
     qualname: Callable[[ast.expr], str | None],
     walrus: bool = True,
     lines: list[str] | None = None,
+    keep: bool = False,
 ) -> ConstantNames:
     """`walrus`: whether the source may contain `:=` (False makes the scan cheaper);
     `lines`: the tree's source lines, if known (the uses of a table are looked for
-    only in the statements whose lines name it)."""
+    only in the statements whose lines name it).
+
+    `keep` (a module summarised for its importers, whose tree its own check may
+    take): the scan is kept for the next scan of the same tree, which takes it
+    (222 of 1,257 scans on corpus25 were of a tree scanned before). It is taken
+    only for the same index and `walrus`, and if `qualname` still names every
+    annotation it asked about as it did; it holds no values (the interpreter
+    records into the scan it is given)."""
+    kept = _KEPT.pop(tree, None) if _KEPT else None
+    if (
+        kept is not None
+        and kept[0] is index
+        and kept[1] == walrus
+        and all(qualname(node) == name for node, name in kept[2])
+    ):
+        return kept[3]
+    if not keep:
+        return _scan(tree, index, qualname, walrus, lines)
+    asked: list[tuple[ast.expr, str | None]] = []
+
+    def recording(node: ast.expr) -> str | None:
+        name = qualname(node)
+        asked.append((node, name))
+        return name
+
+    found = _scan(tree, index, recording, walrus, lines)
+    _KEPT[tree] = (index, walrus, asked, _copy(found))
+    return found
+
+
+# tree -> (its index, `walrus`, what `qualname` answered, a scan without values)
+_KEPT: weakref.WeakKeyDictionary[
+    ast.Module,
+    tuple[FileIndex, bool, list[tuple[ast.expr, str | None]], ConstantNames],
+] = weakref.WeakKeyDictionary()
+
+
+def _copy(found: ConstantNames) -> ConstantNames:
+    """The syntax's half of a scan, in sets of its own."""
+    return ConstantNames(
+        module=set(found.module),
+        changed_globals=set(found.changed_globals),
+        read_only=set(found.read_only),
+        classes={k: set(v) for k, v in found.classes.items()},
+    )
+
+
+def _scan(
+    tree: ast.Module,
+    index: FileIndex,
+    qualname: Callable[[ast.expr], str | None],
+    walrus: bool,
+    lines: list[str] | None,
+) -> ConstantNames:
     found = ConstantNames()
     for scope_id, names in index.scopes.items():
         if scope_id != id(tree):

@@ -323,6 +323,8 @@ def call(
 ) -> Value:
     """A call of an imported function: each refined parameter is checked at the
     call, the refined return assumed (as for a function of the same file)."""
+    if not function.decls and function.returns is None:  # nothing refined (most
+        return ev.lookups.typed(function.result, node, state)  # unannotated code)
     given = call_arguments(function, args, kwargs, bound)
     terms = {k: v.term for k, v in given.items() if v.term is not None}
     decls = dict(function.decls)

@@ -641,7 +641,7 @@ def summarize(
     ctx = FileContext(source, catalog, discharge, resolver)
     ctx.record_imports(index_of(tree))
     ctx.constants = scan(
-        tree, ctx.index, ctx.qualname, ":=" in source.text, source.lines
+        tree, ctx.index, ctx.qualname, ":=" in source.text, source.lines, keep=True
     )
     summary = ModuleSummary(name, path)
     source_of = (name, path)
