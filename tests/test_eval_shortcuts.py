@@ -1,6 +1,6 @@
 """Issue 25 target 1: the evaluator's shortcuts for the most frequent nodes (a
 local's value read, an unknown's or a module's attribute, a fresh unknown made
-in place) answer what the general path answers."""
+without `__init__`) answer what the general path answers."""
 
 from __future__ import annotations
 
@@ -55,8 +55,9 @@ def _shown(diags: list[Any]) -> list[str]:
 
 
 def test_a_fresh_unknown_is_made_as_value_makes_it() -> None:
-    """`FileContext.fresh` fills a Value's slots in place (no call through the
-    type to `__init__`): every slot as `Value(kind, sym, unit)` has it."""
+    """`FileContext.fresh` makes its value with `values.unknown`, which fills a
+    Value's slots in place (no call through the type to `__init__`): every slot
+    as `Value(kind, sym, unit)` has it."""
     ctx = FileContext(SourceFile.from_bytes("n.py", b""), MsgCatalog([]), print)
     for kind, unit in (("float", resolve("m")), ("int", None), ("unknown", None)):
         made = ctx.fresh(kind, "x", unit)
@@ -114,8 +115,9 @@ def test_unknowns_and_modules_have_the_members_the_shortcuts_assume(
 
 
 def test_a_derived_value_skips_first_version_only_where_it_is_its_own() -> None:
-    """`derived` asks `_first_version` only when something was changed or the key
-    reads a later version: for every other key it answers the key itself."""
+    """`_first_version` answers a key that reads a first version of an unchanged
+    object with the key itself, and `derived` ties a later version (or a read of a
+    later read) to the first read."""
     sym = A.Sym(9, "real")
     own = [
         ("attribute", 5, "x", 0),

@@ -345,9 +345,7 @@ class Binder(CallEvaluator):
                 value = self.refined.assign_refined(
                     state, target.id, decl, value, self.site, lookup
                 )
-            if value.uninit is not None or value.default_of is not None:
-                value = value.settled()  # (else it is settled: no call)
-            bound = state.env[target.id] = value
+            bound = state.env[target.id] = value.settled()
             self.lists_seen = self.lists_seen or value.kind == "list"
             if self.ctx.hovers is not None:  # the editor asks: else no closure
                 self.note_hover(

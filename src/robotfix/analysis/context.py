@@ -18,7 +18,7 @@ from robotfix.analysis.consistency import consistent_invariants, contradictory
 from robotfix.analysis.constants import ConstantNames
 from robotfix.analysis.imported import absolute_imports, dotted_name
 from robotfix.analysis.index import FileIndex, index_scope
-from robotfix.analysis.values import SORTS, Value, sort_of
+from robotfix.analysis.values import SORTS, Value, sort_of, unknown
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Alias, Names, Refinement, extract
 from robotfix.annotations.units import UnitError, resolve
@@ -32,7 +32,6 @@ from robotfix.vc import VC, Verdict
 if TYPE_CHECKING:
     from robotfix.analysis.imported import Resolver
 
-_new = object.__new__
 MSG_MODULES = ("msg", "srv", "action")
 ROS_CLIENTS = ("rclpy", "rospy")
 # Python packages only ROS 1 has: a file importing one (and not rclpy) is ROS 1 code.
@@ -172,11 +171,6 @@ class FileContext:
                 self._shared(found.term)
             return found
         found = self._derived[key] = self.fresh(kind, description)
-        if not (key[0] in VERSIONED and key[-1]):  # a first version: its own first
-            head = key[1] if len(key) > 1 else None  # read unless its object changed
-            ident = head.ident if type(head) is A.Sym else head
-            if not isinstance(ident, int) or ident not in self.unchanged:
-                return found
         first, read = _first_version(key, self.unchanged)
         if first is not key and isinstance(found.term, A.Sym):
             base = self.derived(first, kind, description)
@@ -227,27 +221,7 @@ class FileContext:
         self._next += 1  # `fresh_id`, inline: ~180k unknowns on 240k lines
         ident = self._next
         self.sym_names[ident] = description
-        # `Value(kind, sym, unit)` without the call through the type to `__init__`
-        # (3,770 instructions a value, 3,330 so) nor a call to a helper: every other
-        # slot gets `__init__`'s default (a test checks that the two agree)
-        v = _new(Value)
-        v.kind = kind
-        v.term = A.Sym(ident, SORTS.get(kind, "real"))
-        v.unit = unit  # type: ignore[assignment]
-        v.literal = False
-        v.ref = None
-        v.name = ""
-        v.elements = None
-        v.keys = None
-        v.uninit = None
-        v.factors = ()
-        v.default_of = None
-        v.rad_free = False
-        v.items = None
-        v.frame = None
-        v.conversion = None
-        v.choices = None
-        return v
+        return unknown(kind, A.Sym(ident, SORTS.get(kind, "real")), unit)  # type: ignore[arg-type]
 
     def describe(self, ident: int) -> str:
         found = self.sym_names.get(ident)
