@@ -257,9 +257,8 @@ class MsgCatalog:
         self._digests_handed = 0  # `fresh_digests`: the table's entries handed out
         self._combined: dict[tuple[str, ...], str] = {}  # names asked -> digest
         # a name asked -> the types its digest covers (its own, its fields'...), and
-        # each of those types' line of the digest: known once its digest and fields
-        # are (`_closure`), so a cached run's many files that share types walk
-        # each type's fields once
+        # each of those types' line of the digest (`_closure`): the many files of a
+        # run that share types walk each type's fields once
         self._closures: dict[str, frozenset[str]] = {}
         self._lines: dict[str, str] = {}
         # the lazy load (`preload_outline`): each used file in order, its digest and
@@ -373,72 +372,45 @@ class MsgCatalog:
         known = self._combined.get(asked)
         if known is not None:  # many files use the same few types
             return known
-        covered = self._covered(asked)
-        if covered is not None:  # every digest known: no type is looked up
-            lines = sorted(map(self._lines.__getitem__, covered))
-            combined = hashlib.sha256("\n".join(lines).encode()).hexdigest()
-            self._combined[asked] = combined
-            return combined
-        if self._resolved_digests is None:
-            self._resolved_digests = {}
-        digests = self._resolved_digests
-        children = self._children
+        covered: set[str] = set()
         saved, self.touched = self.touched, None  # not a lookup of the checked file
         try:
-            seen: set[str] = set()
-            todo = sorted({normalize(n) for n in names})
-            while todo:
-                key = todo.pop()
-                if key in seen:
-                    continue
-                seen.add(key)
-                if key not in digests or key not in children:
-                    # known from `preload_digests` otherwise: the files are not read
-                    spec = self.lookup(key)
-                    text = "missing" if spec is None else _canonical(spec)
-                    digests[key] = hashlib.sha256(text.encode()).hexdigest()
-                    children[key] = tuple(
-                        f.msg_type
-                        for f in (spec.fields.values() if spec else ())
-                        if f.msg_type
-                    )
-                todo.extend(children[key])
+            for name in asked:
+                covered |= self._closures.get(name) or self._closure(name)
         finally:
             self.touched = saved
-        lines = sorted(f"{key} {digests[key]}" for key in seen)
+        lines = sorted(map(self._lines.__getitem__, covered))
         combined = hashlib.sha256("\n".join(lines).encode()).hexdigest()
         self._combined[asked] = combined  # the digests it is made of never change
         return combined
 
-    def _covered(self, names: tuple[str, ...]) -> set[str] | None:
-        """What `fingerprint_types` covers for `names` when every digest it needs
-        is known (None otherwise)."""
-        covered: set[str] = set()
-        for name in names:
-            part = self._closures.get(name) or self._closure(name)
-            if part is None:
-                return None
-            covered |= part
-        return covered
-
-    def _closure(self, name: str) -> frozenset[str] | None:
-        """The types `fingerprint_types` covers for `name`, when each one's digest
-        and fields are known already (None otherwise: it looks them up)."""
-        digests = self._resolved_digests
-        if digests is None:
-            return None
-        children = self._children
+    def _closure(self, name: str) -> frozenset[str]:
+        """The types `fingerprint_types` covers for `name`: its own, its fields'
+        message types, transitively, each with its line of the digest (kept once a
+        run, so a cached run's many files that share types walk each type's fields
+        once). A type's digest and fields come from `preload_digests` when an
+        earlier run knew them (its file is not read), else from its definition."""
+        if self._resolved_digests is None:
+            self._resolved_digests = {}
+        digests, children, lines = self._resolved_digests, self._children, self._lines
         seen: set[str] = set()
         todo = [normalize(name)]
         while todo:
             key = todo.pop()
             if key in seen:
                 continue
-            if key not in digests or key not in children:
-                return None
             seen.add(key)
-            if key not in self._lines:
-                self._lines[key] = f"{key} {digests[key]}"
+            if key not in digests or key not in children:
+                spec = self.lookup(key)
+                text = "missing" if spec is None else _canonical(spec)
+                digests[key] = hashlib.sha256(text.encode()).hexdigest()
+                children[key] = tuple(
+                    f.msg_type
+                    for f in (spec.fields.values() if spec else ())
+                    if f.msg_type
+                )
+            if key not in lines:
+                lines[key] = f"{key} {digests[key]}"
             todo.extend(children[key])
         found = self._closures[name] = frozenset(seen)
         return found
