@@ -63,6 +63,24 @@ def test_instruction_ratio_does_not_count_a_failed_run(
         instruction_ratio.main([str(node.parent)])
 
 
+def test_instruction_ratio_counts_each_layout_in_another_environment() -> None:
+    # a count repeats only where every object lies where it lay: each layout must
+    # move them (another padding length), and the first is the environment as given
+    env = {"PATH": "/bin", instruction_ratio.PAD: "stale"}
+    layouts = [instruction_ratio.layout(env, n) for n in range(7)]
+    assert layouts[0] == {"PATH": "/bin"}
+    assert len({len(e.get(instruction_ratio.PAD, "")) for e in layouts}) == 7
+    assert all(e["PATH"] == "/bin" for e in layouts)
+
+
+def test_instruction_ratio_reports_the_ratio_of_the_medians() -> None:
+    lines = instruction_ratio.summary([100, 90, 130], [500, 460, 520])
+    assert lines[2].startswith("ratio: 5.00x")  # 500 / 100, not a median of ratios
+    assert "median of 3" in lines[0] and "median of 3" in lines[1]
+    assert lines[-1] == "ratio in one layout: 4.00x to 5.11x"
+    assert len(instruction_ratio.summary([100], [450])) == 3  # one layout: as before
+
+
 def test_peers_does_not_time_a_failed_run(tmp_path: Path) -> None:
     node = _broken_project(tmp_path)
     command = [sys.executable, "-m", "robotfix", "check", str(node)]
