@@ -16,7 +16,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from robotfix import messages
+from robotfix import GC_THRESHOLDS, messages
 from robotfix.api import (
     InternalError,
     Result,
@@ -113,7 +113,7 @@ def check_paths(
     # were made (`tests/unit/test_no_cycles.py`); at 200,000, mypy's, none runs.
     threshold = gc.get_threshold()
     gc.freeze()
-    gc.set_threshold(GC_THRESHOLD, 50, 1000)
+    gc.set_threshold(*GC_THRESHOLDS)
     try:
         try:
             with answering():  # each path probed once (the stages share them)
@@ -129,8 +129,6 @@ def check_paths(
         gc.set_threshold(*threshold)
         gc.unfreeze()
 
-
-GC_THRESHOLD = 200_000  # allocations before a young collection (Python's: 700)
 
 
 @dataclass
