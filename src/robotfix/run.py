@@ -69,6 +69,8 @@ CHUNKS_PER_JOB = 4  # a task holds at most 1/(jobs * 4) of the source: balance
 
 @dataclass
 class FileResult:
+    """One file's check: its diagnostics and what the run keeps of it."""
+
     path: str
     diagnostics: list[Diagnostic] = field(default_factory=list)
     error: InternalError | None = None
@@ -128,7 +130,6 @@ def check_paths(
     finally:
         gc.set_threshold(*threshold)
         gc.unfreeze()
-
 
 
 @dataclass
