@@ -309,3 +309,19 @@ def test_the_editors_server_keeps_pythons_collector(
     before, during = done.stdout.splitlines()
     kept = command == "lsp"
     assert during == (before if kept else str(robotfix.GC_THRESHOLDS)), done.stderr
+
+
+def test_a_check_of_one_process_asks_nothing_of_the_cores(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """`-j 1` (and the default on one core) never reads the affinity and control
+    group quotas that cap `-j` (4.7 M instructions of every such process)."""
+    from robotfix import cores
+
+    def refuse(*args: object) -> int:
+        raise AssertionError("the cores were asked")
+
+    monkeypatch.setattr(cores, "available", refuse)
+    (tmp_path / "node.py").write_text(NODE)
+    result = check_paths([tmp_path / "node.py"], Config(root=tmp_path), jobs=1)
+    assert result.files == 1 and not result.internal_errors

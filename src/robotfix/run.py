@@ -979,8 +979,10 @@ def _check_all(
     one per core and per file; if the pool cannot start (no process or file
     descriptor left), the files are checked here instead. Without a `cache`, no
     check makes what only the cache keeps (`Project.records`), nor does a worker
-    send it."""
-    jobs = min(jobs, default_jobs(), len(todo))
+    send it. `-j 1` asks nothing of the cores (their affinity and control group
+    quotas: 4.7 M instructions)."""
+    if jobs > 1:
+        jobs = min(jobs, default_jobs(), len(todo))
     size = sum(_size(path, data) for path, data in todo)
     if jobs <= 1 or len(todo) < MIN_PARALLEL or size < MIN_PARALLEL_BYTES:
         # in this order, all here: a package's summaries go once it is checked
