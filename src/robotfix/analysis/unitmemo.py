@@ -140,8 +140,6 @@ Prologue = Callable[[ast.AST, Scope], tuple[Scope, Any]]
 
 @dataclass
 class Record:
-    """What one unit's run did, to replay it from the same entering state."""
-
     entering: tuple[object, ...]
     answers: tuple[tuple[object, bool], ...]  # once keys set before the item
     events: tuple[tuple[Diagnostic | None, object], ...]  # report / report_once
@@ -791,8 +789,6 @@ def _to_walk(key: object, ids: dict[int, int]) -> object:
 
 @dataclass(frozen=True)
 class _Walk:
-    """A node named by its index in a walk of the unit."""
-
     index: int
 
 
