@@ -42,6 +42,8 @@ if TYPE_CHECKING:  # the analysis is imported only when a file is checked
 
 @dataclass
 class InternalError:
+    """A fault of RobotFix on one file: the exception, and its traceback."""
+
     path: str
     summary: str  # one line: the exception
     detail: str  # the traceback, shown only on request
@@ -49,6 +51,8 @@ class InternalError:
 
 @dataclass
 class Result:
+    """A run's diagnostics, counts and internal errors."""
+
     diagnostics: list[Diagnostic] = field(default_factory=list)
     files: int = 0
     seconds: float = 0.0
@@ -342,6 +346,8 @@ def unit_suggestions(
 
 @dataclass(frozen=True)
 class Suggestion:
+    """A `Unit(...)` annotation `robotfix suggest` proposes for a name."""
+
     line: int
     col: int  # byte column of the name
     name: str

@@ -52,6 +52,8 @@ class ConfigError(Exception):
 
 @dataclass(frozen=True)
 class Config:
+    """The settings of a run, or of the files under one configuration."""
+
     msg_paths: tuple[Path, ...] = ()
     # folders of `.pyi` stubs (`robotfix.stubs`), searched before the shipped ones
     stub_paths: tuple[Path, ...] = ()

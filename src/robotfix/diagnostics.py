@@ -67,6 +67,8 @@ class Fix:
 
 @dataclass(frozen=True)
 class Diagnostic:
+    """A finding: its rule, place, message, notes and fixes."""
+
     rule: Rule
     path: str
     span: Span

@@ -70,6 +70,8 @@ _CPP_COMMENT = re.compile(r"//(?=\s*robotfix:)")
 
 @dataclass
 class Finding:
+    """A graph diagnostic and the endpoints it is about."""
+
     diagnostic: Diagnostic
     end: int  # index in Graph.ends
     other: int | None = None
@@ -77,6 +79,8 @@ class Finding:
 
 @dataclass
 class GraphResult:
+    """A run's graph and its findings."""
+
     graph: Graph
     findings: list[Finding] = field(default_factory=list)
 

@@ -78,6 +78,8 @@ Imports = dict[str, tuple[int, int, list[ImportLine]]]
 
 @dataclass
 class _Started:
+    """A launch entry and the files of the code it starts."""
+
     entry: NodeEntry
     files: set[str] = field(default_factory=set)  # real paths of its code
 

@@ -71,6 +71,8 @@ RANGE_WHY = "rclpy refuses the value (InvalidParameterValueException)"
 
 @dataclass(frozen=True)
 class Failure:
+    """Why a parameter value breaks its declaration (or cannot be decided)."""
+
     type_error: bool
     rule: str  # what is broken, in words
     got: str = ""  # type errors: the value's type

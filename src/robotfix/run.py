@@ -16,7 +16,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from robotfix import messages
+from robotfix import GC_THRESHOLDS, messages
 from robotfix.api import (
     InternalError,
     Result,
@@ -69,6 +69,8 @@ CHUNKS_PER_JOB = 4  # a task holds at most 1/(jobs * 4) of the source: balance
 
 @dataclass
 class FileResult:
+    """One file's check: its diagnostics and what the run keeps of it."""
+
     path: str
     diagnostics: list[Diagnostic] = field(default_factory=list)
     error: InternalError | None = None
@@ -113,7 +115,7 @@ def check_paths(
     # were made (`tests/unit/test_no_cycles.py`); at 200,000, mypy's, none runs.
     threshold = gc.get_threshold()
     gc.freeze()
-    gc.set_threshold(GC_THRESHOLD, 50, 1000)
+    gc.set_threshold(*GC_THRESHOLDS)
     try:
         try:
             with answering():  # each path probed once (the stages share them)
@@ -128,9 +130,6 @@ def check_paths(
     finally:
         gc.set_threshold(*threshold)
         gc.unfreeze()
-
-
-GC_THRESHOLD = 200_000  # allocations before a young collection (Python's: 700)
 
 
 @dataclass
@@ -980,8 +979,10 @@ def _check_all(
     one per core and per file; if the pool cannot start (no process or file
     descriptor left), the files are checked here instead. Without a `cache`, no
     check makes what only the cache keeps (`Project.records`), nor does a worker
-    send it."""
-    jobs = min(jobs, default_jobs(), len(todo))
+    send it. `-j 1` asks nothing of the cores (their affinity and control group
+    quotas: 4.7 M instructions)."""
+    if jobs > 1:
+        jobs = min(jobs, default_jobs(), len(todo))
     size = sum(_size(path, data) for path, data in todo)
     if jobs <= 1 or len(todo) < MIN_PARALLEL or size < MIN_PARALLEL_BYTES:
         # in this order, all here: a package's summaries go once it is checked

@@ -8,6 +8,7 @@ parse (`budget.MAX_PARSED_CHARS`) RF902.
 from __future__ import annotations
 
 import ast
+import codecs
 import io
 import os
 import re
@@ -245,9 +246,27 @@ def _byte_slice(line: str, start: int, end: int | None) -> str:
 
 
 def _decode(data: bytes) -> str:
+    # PEP 263: only a coding cookie on one of the first two lines, or a BOM, makes
+    # a file anything but UTF-8; without either, tokenize's answer is UTF-8 and the
+    # text is `data.decode()` (its Python code was 25 k instructions a file). A
+    # text that does not decode is left to it, for the same error.
+    if not data.startswith(codecs.BOM_UTF8) and b"coding" not in _two_lines(data):
+        try:
+            return data.decode("utf-8")
+        except UnicodeDecodeError:
+            pass
     encoding, _ = tokenize.detect_encoding(io.BytesIO(data).readline)
     text = data.decode(encoding)
     return text[1:] if text.startswith("\ufeff") else text
+
+
+def _two_lines(data: bytes) -> bytes:
+    """The first two lines, as `tokenize.detect_encoding` reads them (split at
+    each `\\n` alone), or the whole of a shorter text."""
+    end = data.find(b"\n")
+    if end >= 0:
+        end = data.find(b"\n", end + 1)
+    return data if end < 0 else data[:end]
 
 
 def _syntax_problem(path: str, text: str, err: SyntaxError | ValueError) -> Diagnostic:

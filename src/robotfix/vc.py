@@ -24,7 +24,7 @@ class VC:
 
 @dataclass(frozen=True)
 class Proved:
-    pass
+    """The goal holds on every execution the facts allow."""
 
 
 @dataclass(frozen=True)
@@ -44,6 +44,8 @@ class Unproven:
 
 @dataclass(frozen=True)
 class Undecided:
+    """Neither proved nor refuted (the reason says why)."""
+
     reason: str
     out_of_budget: bool = False  # the file's work budget was used up
 

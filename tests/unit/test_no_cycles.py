@@ -1,5 +1,5 @@
 """What a cold check makes and drops is freed by reference counting: the run's
-young collections (`run.GC_THRESHOLD`) are rare, so an object kept in a reference
+young collections (`robotfix.GC_THRESHOLDS`) are rare, so an object kept in a reference
 cycle would stay until one runs, and with it all it holds. Each case failed before
 its cycle was broken (the collector found the garbage)."""
 

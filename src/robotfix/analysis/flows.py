@@ -98,6 +98,9 @@ class Where:
 
 @dataclass
 class FlowLog:
+    """What `robotfix suggest` logs of a check: where values flow (sinks, calls,
+    bindings, sequences)."""
+
     # (where, expression, the place's unit, whether the place holds an int)
     sinks: list[tuple[Where, ast.expr, Unit, bool]] = field(default_factory=list)
     # function key -> (caller, parameter, argument)
@@ -267,6 +270,8 @@ class FlowLog:
 
 @dataclass(frozen=True)
 class Found:
+    """A name `robotfix suggest` can annotate, and the unit it would write."""
+
     line: int
     col: int  # byte column of the name
     name: str

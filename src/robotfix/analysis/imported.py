@@ -49,6 +49,9 @@ class FunctionSummary:
 
 @dataclass(frozen=True)
 class ClassSummary:
+    """What importers see of a class: refined attributes, methods, constants and
+    attribute types."""
+
     name: str
     attributes: tuple[tuple[str, Refinement], ...]  # refined attributes
     methods: tuple[tuple[str, FunctionSummary], ...]

@@ -19,6 +19,8 @@ COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
 
 @dataclass
 class ScopeNames:
+    """One scope's names: bound here, declared global, and annotated targets."""
+
     local_names: set[str] = field(default_factory=set)
     global_names: set[str] = field(default_factory=set)
     annotated: list[tuple[ast.expr, str]] = field(
@@ -28,6 +30,8 @@ class ScopeNames:
 
 @dataclass
 class FileIndex:
+    """What one walk of a file finds: scopes, imports, calls, annotated attributes."""
+
     scopes: dict[int, ScopeNames] = field(default_factory=dict)  # id(scope node) ->
     imports: dict[str, str] = field(default_factory=dict)  # local name -> qualified
     # local name -> (level, module, name) of `from ..module import name`

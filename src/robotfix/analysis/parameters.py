@@ -237,6 +237,8 @@ class ParamRead:
 
 @dataclass
 class ParamContext:
+    """A file's parameter summary in the making, with the handles and reads met."""
+
     summary: Summary
     handles: dict[str, Handle] = field(default_factory=dict)
     reads: dict[int, ParamRead] = field(default_factory=dict)  # Sym ident ->

@@ -75,6 +75,8 @@ class Attached:
 
 @dataclass
 class Summary:
+    """What a file declares and reads of ROS parameters, by owner (for `paramcheck`)."""
+
     path: str
     decls: list[ParamDecl] = field(default_factory=list)
     attached: list[Attached] = field(default_factory=list)

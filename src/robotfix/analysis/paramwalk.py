@@ -753,6 +753,8 @@ class Walker:
 
 @dataclass(frozen=True)
 class _Described:
+    """What a ParameterDescriptor says: range, dynamic_typing, read_only."""
+
     range: Range | None
     dynamic: bool | None  # None: not known
     read_only: bool = False

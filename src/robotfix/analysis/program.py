@@ -23,6 +23,8 @@ FunctionNode = ast.FunctionDef | ast.AsyncFunctionDef | ast.Lambda
 
 @dataclass
 class Function:
+    """A function or method of the file, with its scope and refined result."""
+
     key: str  # "name", "Class.method", or "<lambda@line:col>"
     node: FunctionNode
     parent: Scope
@@ -49,6 +51,8 @@ class Function:
 
 @dataclass(frozen=True)
 class Callback:
+    """How a ROS callback is registered: its kind, interface type, bound arguments."""
+
     kind: str  # subscription, service, service1, action, action1, timer
     interface: str | None  # pkg/Name of the message, service or action
     bound: int = 0  # leading positional arguments bound by functools.partial
@@ -56,6 +60,8 @@ class Callback:
 
 @dataclass
 class Program:
+    """A file's functions, classes, refined attributes and callbacks (the pre-pass)."""
+
     module: Scope
     functions: dict[str, Function] = field(default_factory=dict)
     classes: dict[str, Scope] = field(default_factory=dict)

@@ -67,6 +67,8 @@ class Shared:
 
 @dataclass
 class State:
+    """The abstract state on one path: bindings, heap, facts, decisions."""
+
     env: dict[str, Binding] = field(default_factory=dict)
     heap: dict[int, MsgObj] = field(default_factory=dict)
     facts: list[A.Expr] = field(default_factory=list)

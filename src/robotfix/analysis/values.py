@@ -151,6 +151,8 @@ class MaybeDefault:
 # hundred thousand (issue 13). Still treated as immutable: change one with `replace`.
 @dataclass(slots=True, unsafe_hash=True)
 class Value:
+    """An abstract value: kind, solver term, unit, and what else is known of it."""
+
     kind: str  # int float bool str msg msgclass module none unknown tuple list dict
     term: A.Expr | None = None  # the solver term, for int/float/bool/str
     unit: Unit | None = None  # None: no unit known

@@ -94,6 +94,8 @@ class Refinement:
 
 @dataclass(frozen=True)
 class AnnotationProblem:
+    """An annotation that cannot be read, at its place, with the rule it breaks."""
+
     rule: Rule
     line: int
     col: int

@@ -22,6 +22,8 @@ _DRIVE = re.compile(r"^/[a-zA-Z]:")
 
 @dataclass
 class Document:
+    """An open document: its URI, text and version."""
+
     uri: str  # as the client wrote it
     text: str
     version: int | None = None

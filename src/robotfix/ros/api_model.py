@@ -13,6 +13,8 @@ from dataclasses import dataclass
 
 @dataclass(frozen=True)
 class Registration:
+    """Where a registration call takes its interface type and its callback."""
+
     kind: str  # subscription, service, action, timer
     type_arg: tuple[int, str] | None  # (position, keyword) of the interface type
     callback_arg: tuple[int, str]  # (position, keyword) of the callback

@@ -98,12 +98,16 @@ GENPY_TIME = {
 
 @dataclass(frozen=True)
 class Origin:
+    """Where a definition is: file and line."""
+
     path: str
     line: int
 
 
 @dataclass(frozen=True)
 class FieldSpec:
+    """A message field: its type, array shape, default and range."""
+
     name: str
     kind: str  # int, float, bool, str, msg
     msg_type: str | None = None  # pkg/Name when kind == "msg"
@@ -119,6 +123,8 @@ class FieldSpec:
 
 @dataclass(frozen=True)
 class Invariant:
+    """A `#RobotFix#` predicate of a message type, over its field paths."""
+
     predicate: A.Expr  # names are field paths relative to the message
     paths: frozenset[str]
     text: str
@@ -127,6 +133,8 @@ class Invariant:
 
 @dataclass(frozen=True)
 class FieldUnit:
+    """A field's unit, and where it was written."""
+
     text: str
     origin: Origin | None  # None for REP 103 (see `source`)
     source: str = ""
@@ -174,6 +182,8 @@ def is_comment_unit(text: str) -> bool:
 
 @dataclass
 class MsgSpec:
+    """A message type: fields, units, invariants, constants."""
+
     name: str
     fields: dict[str, FieldSpec]
     units: dict[str, FieldUnit] = field(default_factory=dict)
@@ -184,6 +194,8 @@ class MsgSpec:
 
 @dataclass(frozen=True)
 class CatalogProblem:
+    """A problem of an interface file, reported when a checked file uses its type."""
+
     rule: Rule
     path: str
     line: int
@@ -1405,4 +1417,6 @@ def _canonical(value: Any) -> str:
 
 @dataclass(frozen=True)
 class _Literal:
+    """A constant's value as written."""
+
     text: str

@@ -32,6 +32,8 @@ _UNIT = re.compile(r"\s*\[([^,\]]+)\]")
 
 @dataclass(frozen=True)
 class CommentUnit:
+    """A unit written in a field's comment (`# range [m]`)."""
+
     field: str
     text: str  # between the brackets, stripped
     line: int  # the line holding the brackets
@@ -41,6 +43,8 @@ class CommentUnit:
 
 @dataclass
 class _Element:
+    """A line of an interface file with the comments that belong to it."""
+
     name: str | None  # None for a constant or a line that is not a field
     comments: list[tuple[int, str]]
 

@@ -79,6 +79,8 @@ MAX_TOKENS = 200_000  # a real .idl has a few hundred
 
 @dataclass(frozen=True)
 class Token:
+    """A token of an `.idl` file."""
+
     kind: str  # string, number, name, scope, punct, end
     text: str
     line: int
@@ -87,12 +89,16 @@ class Token:
 
 @dataclass(frozen=True)
 class _Type:
+    """A member's type, spelt as in a `.msg` file."""
+
     name: str  # .msg spelling: float64, pkg/Type
     array: bool
 
 
 @dataclass
 class _Annotation:
+    """An `@annotation(...)` of an `.idl` member or struct."""
+
     name: str
     args: dict[str, Token | str]  # keyword -> value; a lone value is "value"
     token: Token
@@ -100,6 +106,8 @@ class _Annotation:
 
 @dataclass
 class _Struct:
+    """An `.idl` struct, read into a section's parts."""
+
     name: str
     fields: list[FieldDecl] = field(default_factory=list)
     notes: list[AnnotationLine] = field(default_factory=list)

@@ -41,6 +41,8 @@ Literal = bool | int | Fraction | str
 
 @dataclass(frozen=True)
 class FieldDecl:
+    """A field line of an interface file."""
+
     name: str
     type: str  # as written: float64, Vector3, geometry_msgs/Vector3
     array: bool
@@ -52,6 +54,8 @@ class FieldDecl:
 
 @dataclass(frozen=True)
 class ConstantDecl:
+    """A constant line of an interface file."""
+
     name: str
     type: str  # a primitive type: uint8, float64, string, bool, ...
     value: Literal
@@ -60,6 +64,8 @@ class ConstantDecl:
 
 @dataclass(frozen=True)
 class AnnotationLine:
+    """A `#RobotFix#` line of an interface file."""
+
     text: str  # the predicate after the marker
     line: int
     col: int  # where the predicate starts on its line
@@ -79,6 +85,8 @@ class Section:
 
 @dataclass(frozen=True)
 class Problem:
+    """A line of an interface file that cannot be read."""
+
     line: int
     col: int
     message: str
@@ -86,6 +94,8 @@ class Problem:
 
 @dataclass(frozen=True)
 class InterfaceFile:
+    """A `.msg`, `.srv` or `.action` file, read."""
+
     path: str
     package: str
     sections: tuple[Section, ...]

@@ -342,6 +342,8 @@ class Definition:
 
 @dataclass
 class ParamFile:
+    """A parameter file's entries, node sections and definitions."""
+
     layout: str  # ros2, ros1, definitions
     entries: list[Entry] = field(default_factory=list)
     # ROS 2: each node key path above a `ros__parameters` (`/ns/node`), and where

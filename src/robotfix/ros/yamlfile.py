@@ -31,6 +31,8 @@ INT_TAG = "tag:yaml.org,2002:int"
 
 @dataclass(frozen=True)
 class Scalar:
+    """A YAML scalar as written, with its place."""
+
     text: str
     plain: bool  # not quoted, not a block scalar
     tag: str | None  # an explicit tag (`!!str 5`), else None
@@ -48,6 +50,8 @@ class Scalar:
 
 @dataclass(frozen=True)
 class Sequence:
+    """A YAML sequence with its place."""
+
     items: list[Node] = field(default_factory=list)
     line: int = 1
     col: int = 0
@@ -55,6 +59,8 @@ class Sequence:
 
 @dataclass(frozen=True)
 class Mapping:
+    """A YAML mapping (pairs in order) with its place."""
+
     items: list[tuple[Node, Node]] = field(default_factory=list)
     line: int = 1
     col: int = 0
@@ -80,6 +86,8 @@ Node = Scalar | Sequence | Mapping | Alias
 
 @dataclass(frozen=True)
 class YamlProblem:
+    """What PyYAML would refuse, at its place."""
+
     message: str
     line: int
     col: int
@@ -238,6 +246,8 @@ class Pair:
 
 @dataclass
 class _Flattening:
+    """The state of flattening a file's merge keys: budget, problems, memo."""
+
     budget: list[int]
     problems: list[YamlProblem]
     done: dict[int, list[Pair]] = field(default_factory=dict)

@@ -38,6 +38,8 @@ _ORDER = frozenset({"<", "<=", ">", ">=", "==", "!="})
 
 @dataclass(frozen=True)
 class _Bound:
+    """One side of an interval: a value, strict or not."""
+
     value: Fraction | None  # None: unbounded on that side
     strict: bool = False
 
@@ -47,6 +49,8 @@ _NONE = _Bound(None)
 
 @dataclass(frozen=True)
 class _Interval:
+    """The values a term may take."""
+
     low: _Bound = _NONE
     high: _Bound = _NONE
 

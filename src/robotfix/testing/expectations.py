@@ -37,6 +37,8 @@ _SKIP = (
 
 @dataclass(frozen=True)
 class Expectation:
+    """An expected diagnostic written in a test file."""
+
     line: int
     kind: str
     code: str

@@ -46,6 +46,8 @@ OFFERS = frozenset({PUBLISHER, SERVICE, ACTION_SERVER})
 
 @dataclass
 class Instance:
+    """A node of the graph: its name, namespace, launch entry and code."""
+
     name: str | None  # the node's name; None unknown
     namespace: str | None  # absolute; None unknown
     launch: Place | None = None  # the launch entry that starts it
@@ -81,6 +83,8 @@ class End:
 
 @dataclass
 class Graph:
+    """A run's nodes and their endpoints."""
+
     nodes: list[Instance] = field(default_factory=list)
     ends: list[End] = field(default_factory=list)
     # (name, namespace, remappings, file, owner) -> its instance: the same code

@@ -81,6 +81,8 @@ class Qos:
 
 @dataclass(frozen=True)
 class Endpoint:
+    """A publisher, subscription, service, action or parameter in the code."""
+
     kind: str
     name: str | None  # as written: `cmd_vel`, `/scan`, `~/out`, `~out`; None computed
     types: tuple[str, ...]  # `pkg/msg/Name`; () unknown; 2+ chosen at run time

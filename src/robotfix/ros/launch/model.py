@@ -21,6 +21,8 @@ from robotfix.ros.paramfile import Typed, Unread
 
 @dataclass(frozen=True)
 class Place:
+    """Where something is written: file, line, column."""
+
     path: str
     line: int
     col: int
@@ -50,6 +52,8 @@ class FileParam:
 
 @dataclass(frozen=True)
 class Remap:
+    """A remapping rule of a launch entry."""
+
     source: str | None
     target: str | None
     place: Place
@@ -82,6 +86,8 @@ class Include:
 
 @dataclass
 class LaunchFile:
+    """A launch file's node entries, includes and global parameters."""
+
     path: str
     ros: int  # 2 for Python, ROS 2 XML and YAML; 1 for roslaunch XML
     entries: list[NodeEntry] = field(default_factory=list)

@@ -24,6 +24,8 @@ MAX_DEPTH = 100
 
 @dataclass
 class Element:
+    """An XML (or YAML launch) element with its places."""
+
     tag: str
     attrs: dict[str, str]
     line: int  # 1-based
