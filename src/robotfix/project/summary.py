@@ -392,12 +392,14 @@ class Project:
     def _imports(self, path: Path) -> frozenset[Path]:
         if path not in self._edges:
             parsed = self._parse(path)
+            source = parsed[1] if parsed is not None else None
             found: set[Path] = set()
-            if parsed is not None and parsed[1].tree is not None:
+            if source is not None and source.tree is not None:
                 index = self.index
                 number = index.search_id(path)
                 asked: set[str] = set()  # `a.b.c` and `a.b.d` both ask `a.b`, `a`
-                for name in imported_names(parsed[1].tree, index.package_of(path)):
+                package = index.package_of(path)
+                for name in imported_names(source.tree, package, source.text):
                     parts = name.split(".")
                     for cut in range(len(parts), 0, -1):
                         prefix = ".".join(parts[:cut])
