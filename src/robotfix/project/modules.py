@@ -343,8 +343,12 @@ class ModuleIndex:
             return found
         return _relative(found)
 
-    def _lookup(self, number: int, name: str) -> Path | None:
-        top = name.partition(".")[0]
+    def offers(self, number: int, top: str) -> bool:
+        """Whether a folder of the search path `number` (`search_id`) holds `top` as
+        a module or a folder: no name under a top it does not hold is found."""
+        return bool(self._roots_of(number, top))
+
+    def _roots_of(self, number: int, top: str) -> tuple[str, ...]:
         roots = self._tops.get((number, top))
         if roots is None:
             module = top + ".py"
@@ -355,6 +359,10 @@ class ModuleIndex:
                 )
                 if top in entries or module in entries
             )  # a root without it answers from its listing: nothing to keep
+        return roots
+
+    def _lookup(self, number: int, name: str) -> Path | None:
+        roots = self._roots_of(number, name.partition(".")[0])
         if not roots:
             return None  # rclpy, numpy: not in any folder searched
         if not name or not all(part.isidentifier() for part in name.split(".")):
