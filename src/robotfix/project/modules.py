@@ -29,6 +29,7 @@ import json
 import os
 import sys
 import time
+from bisect import bisect_left, bisect_right
 from collections import deque
 from collections.abc import Callable, Iterable, Sequence
 from itertools import islice, repeat
@@ -342,8 +343,12 @@ class ModuleIndex:
             return found
         return _relative(found)
 
-    def _lookup(self, number: int, name: str) -> Path | None:
-        top = name.partition(".")[0]
+    def offers(self, number: int, top: str) -> bool:
+        """Whether a folder of the search path `number` (`search_id`) holds `top` as
+        a module or a folder: no name under a top it does not hold is found."""
+        return bool(self._roots_of(number, top))
+
+    def _roots_of(self, number: int, top: str) -> tuple[str, ...]:
         roots = self._tops.get((number, top))
         if roots is None:
             module = top + ".py"
@@ -354,6 +359,10 @@ class ModuleIndex:
                 )
                 if top in entries or module in entries
             )  # a root without it answers from its listing: nothing to keep
+        return roots
+
+    def _lookup(self, number: int, name: str) -> Path | None:
+        roots = self._roots_of(number, name.partition(".")[0])
         if not roots:
             return None  # rclpy, numpy: not in any folder searched
         if not name or not all(part.isidentifier() for part in name.split(".")):
@@ -593,9 +602,13 @@ def _is_dir(path: Path) -> bool:
         return False
 
 
-def imported_names(tree: ast.Module, package: str | None) -> list[str]:
-    """Every module name a file's import statements mention (absolute)."""
-    return import_names(_statements(tree), package)
+def imported_names(
+    tree: ast.Module, package: str | None, text: str | None = None
+) -> list[str]:
+    """Every module name a file's import statements mention (absolute). `text`, the
+    source `tree` was parsed from, spares the walk the compound statements whose
+    lines hold no `import` (the keyword has that one spelling)."""
+    return import_names(_import_statements(tree, text), package)
 
 
 def import_names(nodes: Iterable[ast.AST], package: str | None) -> list[str]:
@@ -618,22 +631,51 @@ def import_names(nodes: Iterable[ast.AST], package: str | None) -> list[str]:
     return found
 
 
-def _statements(tree: ast.Module) -> list[ast.AST]:
-    """The statements of `tree` (and the handlers and match cases that hold some),
-    in `ast.walk`'s order (breadth first), without visiting any expression: on real
-    files that is about a tenth of the nodes."""
-    out: list[ast.AST] = []
+def _import_statements(tree: ast.Module, text: str | None) -> list[ast.AST]:
+    """The import statements of `tree`, in `ast.walk`'s order (breadth first),
+    visiting statements (and the handlers and match cases that hold some) only: on
+    real files about a tenth of the nodes. With `text`, a compound statement none
+    of whose lines holds `import` is not entered: none of its statements is one."""
+    marks = _import_lines(text) if text is not None else None
+    found: list[ast.AST] = []
     todo: deque[ast.AST] = deque(tree.body)
     while todo:
         node = todo.popleft()
-        out.append(node)
         kind = node.__class__
+        if kind is ast.Import or kind is ast.ImportFrom:
+            found.append(node)
+            continue
         names = _BODIES.get(kind)
         if names is None:
             names = _BODIES[kind] = tuple(f for f in kind._fields if f in _BODY_FIELDS)
+        if not names:
+            continue
+        end = getattr(node, "end_lineno", None)  # (a match case has none)
+        if marks is not None and end is not None:
+            start: int = node.lineno  # type: ignore[attr-defined]
+            if bisect_left(marks, start) == bisect_right(marks, end):
+                continue  # none of its lines holds `import`
         for name in names:
             todo.extend(getattr(node, name))
-    return out
+    return found
+
+
+def _import_lines(text: str) -> list[int] | None:
+    """The numbers of the lines of `text` that hold `import`, ascending; None when
+    counting line feeds does not number the lines as the parser does (a carriage
+    return, which it reads as a line end too)."""
+    if "\r" in text:
+        return None
+    found: list[int] = []
+    line, counted = 1, 0
+    at = text.find("import")
+    while at >= 0:
+        line += text.count("\n", counted, at)
+        counted = at
+        if not found or found[-1] != line:
+            found.append(line)
+        at = text.find("import", at + 6)
+    return found
 
 
 # the fields that hold statements (or handlers, or match cases), in `_fields` order

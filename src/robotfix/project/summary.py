@@ -131,6 +131,9 @@ class Project:
         self._ways: dict[Path, tuple[str, ...]] = {}
         self._weak = frozenset(str(root) for root in index.roots)
         self._checking: Path | None = None  # the file `take`n last
+        # with `release` and no records: the files still to check that a later one
+        # imports, guessed from their bytes (`foresee.py`), by `_key`
+        self._foreseen: dict[str, Path] = {}
         self.released = 0  # modules dropped so (tests count them)
         # what only the result cache and the editor's memo read is made: each
         # resolver's records (`consulted`), the summaries' fingerprints, `built`;
@@ -392,12 +395,14 @@ class Project:
     def _imports(self, path: Path) -> frozenset[Path]:
         if path not in self._edges:
             parsed = self._parse(path)
+            source = parsed[1] if parsed is not None else None
             found: set[Path] = set()
-            if parsed is not None and parsed[1].tree is not None:
+            if source is not None and source.tree is not None:
                 index = self.index
                 number = index.search_id(path)
                 asked: set[str] = set()  # `a.b.c` and `a.b.d` both ask `a.b`, `a`
-                for name in imported_names(parsed[1].tree, index.package_of(path)):
+                package = index.package_of(path)
+                for name in imported_names(source.tree, package, source.text):
                     parts = name.split(".")
                     for cut in range(len(parts), 0, -1):
                         prefix = ".".join(parts[:cut])
@@ -449,12 +454,17 @@ class Project:
         self._holders.clear()
         self._ways.clear()
         self._checking = None
+        self._foreseen = {}
         if release:
             live = self._live
             for p in paths:
                 for folder in self.index.search_path(p):
                     spelled = str(folder)
                     live[spelled] = live.get(spelled, 0) + 1
+            if not self.records:
+                from robotfix.project.foresee import imported_later
+
+                self._foreseen = imported_later(self.index, paths, _key)
 
     def _hold(self, path: Path) -> None:
         """Note the folders through which a file still to check could import
@@ -501,11 +511,14 @@ class Project:
         are its bytes; the check of `path` then owns it (nothing here holds it any
         longer)."""
         key = _key(path)
-        self.to_check.discard(key)
         if self._live:  # the file checked before this one is done with
             if self._checking is not None:
                 self._released(self._checking)
             self._checking = path
+        found = self._foreseen.pop(key, None)  # a later file imports it
+        if found is not None and found not in self._summaries:
+            self.summary(found)  # from the parse this check takes (`_release`)
+        self.to_check.discard(key)
         parsed = self._pending.pop(key, None)
         if parsed is not None:
             self._pending_bytes -= len(parsed[0])
