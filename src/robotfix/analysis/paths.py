@@ -23,7 +23,6 @@ from robotfix.analysis.stmtsyntax import (
     BINDER_KINDS,
     KEEPS,
     WHOLE,
-    assign_targets,
     bound_by,
     constant_stores,
     excuse,
@@ -116,12 +115,20 @@ class PathWalker(Binder):
         objects: dict[str, int] = {}  # names of messages that `nodes` mention
         looked: set[str] = set()  # the names whose binding was looked at
         get = state.env.get
-        todo: list[ast.AST] = [*reversed(nodes)]  # `walk` of each node in turn
-        push = todo.append
+        lists_seen = self.lists_seen  # (the walk binds nothing)
+        # `walk` of each node in turn (the order `bound_at` keeps): the commonest
+        # classes push their children themselves, in the order of their fields
+        # (each is a node or a list of nodes), the rest through `fields`; the
+        # classes are local names (a module attribute costs a look-up a node)
+        name_node, attribute_node, call_node = ast.Name, ast.Attribute, ast.Call
+        constant_node, expr_node, assign_node = ast.Constant, ast.Expr, ast.Assign
+        load, store = ast.Load, ast.Store
+        todo: list[ast.AST] = [*reversed(nodes)]
+        push, extend, pop = todo.append, todo.extend, todo.pop
         while todo:
-            child = todo.pop()
+            child = pop()
             kind = type(child)
-            if kind is ast.Name:  # (a name and a constant have no children)
+            if kind is name_node:  # (a name and a constant have no children)
                 name: str = child.id  # type: ignore[attr-defined]
                 if name not in looked:  # (the walk pops dotted keys only)
                     looked.add(name)
@@ -130,14 +137,51 @@ class PathWalker(Binder):
                         objects[name] = bound.ref
                     elif isinstance(bound, Value) and bound.kind == "list":
                         lists.add(name)
-                if type(child.ctx) is not ast.Load:  # type: ignore[attr-defined]
+                if type(child.ctx) is not load:  # type: ignore[attr-defined]
                     bound_at.setdefault(name, child)
                     if id(child) not in assigned:
                         other_binders.add(name)
-                    if type(child.ctx) is ast.Store:  # type: ignore[attr-defined]
+                    if type(child.ctx) is store:  # type: ignore[attr-defined]
                         stores.append(child)  # type: ignore[arg-type]
                 continue
-            if kind is ast.Constant:
+            if kind is attribute_node:
+                push(child.value)  # type: ignore[attr-defined]
+                if type(child.ctx) is store:  # type: ignore[attr-defined]
+                    key = attribute_key(child)  # type: ignore[arg-type]
+                    state.env.pop(key or "", None)
+                    if watched:
+                        self._changed_root(child, state, firm=True)
+                elif lists_seen:  # `self.xs.append(v)`: forget what it held
+                    key = attribute_key(child) or ""  # type: ignore[arg-type]
+                    kept = state.env.get(key)
+                    if isinstance(kept, Value) and kept.kind == "list":
+                        state.env.pop(key, None)
+                continue
+            if kind is call_node:
+                call: ast.Call = child  # type: ignore[assignment]
+                push(call.func)
+                extend(call.args)
+                extend(call.keywords)
+                calls = True
+                if watched:
+                    method = getattr(call.func, "attr", "")
+                    self._changed_root(call.func, state, method in MUTATORS)
+                    for arg in call.args:
+                        if type(arg) is not constant_node:  # (changes no object)
+                            self._changed_root(arg, state)
+                    for keyword in call.keywords:
+                        self._changed_root(keyword, state)
+                continue
+            if kind is constant_node:
+                continue
+            if kind is expr_node:
+                push(child.value)  # type: ignore[attr-defined]
+                continue
+            if kind is assign_node:
+                extend(child.targets)  # type: ignore[attr-defined]
+                push(child.value)  # type: ignore[attr-defined]
+                assigns.append(child)  # type: ignore[arg-type]
+                assigned.update(map(id, child.targets))  # type: ignore[attr-defined]
                 continue
             for field in FIELDS.get(kind) or fields(kind):  # `children`, inline
                 value = getattr(child, field, None)
@@ -147,36 +191,13 @@ class PathWalker(Binder):
                             push(one)
                 elif isinstance(value, ast.AST):
                     push(value)
-            if kind is ast.Attribute:
-                if type(child.ctx) is ast.Store:  # type: ignore[attr-defined]
-                    key = attribute_key(child)  # type: ignore[arg-type]
-                    state.env.pop(key or "", None)
-                    if watched:
-                        self._changed_root(child, state, firm=True)
-                elif self.lists_seen:  # `self.xs.append(v)`: forget what it held
-                    key = attribute_key(child) or ""  # type: ignore[arg-type]
-                    kept = state.env.get(key)
-                    if isinstance(kept, Value) and kept.kind == "list":
-                        state.env.pop(key, None)
-            elif kind is ast.Subscript:
-                if watched and type(child.ctx) is not ast.Load:  # type: ignore[attr-defined]
+            if kind is ast.Subscript:
+                if watched and type(child.ctx) is not load:  # type: ignore[attr-defined]
                     self._changed_root(child, state, firm=True)
-            elif kind is ast.Call:
-                calls = True
-                if watched:
-                    call: ast.Call = child  # type: ignore[assignment]
-                    method = getattr(call.func, "attr", "")
-                    self._changed_root(call.func, state, method in MUTATORS)
-                    for arg in call.args:
-                        if type(arg) is not ast.Constant:  # (changes no object)
-                            self._changed_root(arg, state)
-                    for keyword in call.keywords:
-                        self._changed_root(keyword, state)
-            elif kind is ast.Assign or kind is ast.AugAssign:
+            elif kind is ast.AugAssign:
                 assigns.append(child)  # type: ignore[arg-type]
-                assigned.update(map(id, assign_targets(child)))  # type: ignore[arg-type]
-                if kind is ast.AugAssign:
-                    note_sum(child, summed, sum_targets)
+                assigned.add(id(child.target))  # type: ignore[attr-defined]
+                note_sum(child, summed, sum_targets)
             elif kind in BINDER_KINDS:
                 for name in bound_by(child):
                     bound_at.setdefault(name, child)
