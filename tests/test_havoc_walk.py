@@ -30,7 +30,7 @@ from robotfix.analysis.stmtsyntax import (
 )
 from robotfix.analysis.values import Value, replace
 from robotfix.api import check_source
-from robotfix.astwalk import FIELDS, fields
+from robotfix.astwalk import FIELDS, SHAPES, children, fields, walk
 
 CASES = Path(__file__).parent / "cases"
 
@@ -287,3 +287,28 @@ def test_havoc_walks_and_forgets_as_the_walk_before_it(
     assert len(now) == len(before)
     for mine, theirs in zip(now, before, strict=True):
         assert mine == theirs
+
+
+def test_the_shapes_are_the_fields_and_hold_nodes_only() -> None:
+    """`SHAPES` lists each class's `fields` in their order, and in every case file
+    (and the text above) each single field holds a node, each list nodes only: the
+    children `children` finds, in its order."""
+    for kind, (singles, lists) in SHAPES.items():
+        assert (*singles, *lists) == fields(kind), kind.__name__
+    met = 0
+    for _, text in _texts():
+        try:
+            tree = ast.parse(text)
+        except SyntaxError:
+            continue
+        for node in walk(tree):
+            shape = SHAPES.get(type(node))
+            if shape is None:
+                continue
+            found = [getattr(node, f) for f in shape[0]]
+            for field in shape[1]:
+                found.extend(getattr(node, field))
+            assert all(isinstance(one, ast.AST) for one in found)
+            assert found == children(node)
+            met += 1
+    assert met > 1000

@@ -38,7 +38,7 @@ from robotfix.analysis.values import (
     replace,
 )
 from robotfix.annotations import ast as A
-from robotfix.astwalk import FIELDS, fields, walk
+from robotfix.astwalk import FIELDS, SHAPES, fields, walk
 
 
 class PathWalker(Binder):
@@ -118,13 +118,15 @@ class PathWalker(Binder):
         lists_seen = self.lists_seen  # (the walk binds nothing)
         # `walk` of each node in turn (the order `bound_at` keeps): the commonest
         # classes push their children themselves, in the order of their fields
-        # (each is a node or a list of nodes), the rest through `fields`; the
-        # classes are local names (a module attribute costs a look-up a node)
+        # (each is a node or a list of nodes), the classes of `SHAPES` by their
+        # shape, the rest through `fields`, testing each child; the classes are
+        # local names (a module attribute costs a look-up a node)
         name_node, attribute_node, call_node = ast.Name, ast.Attribute, ast.Call
         constant_node, expr_node, assign_node = ast.Constant, ast.Expr, ast.Assign
         load, store = ast.Load, ast.Store
         todo: list[ast.AST] = [*reversed(nodes)]
         push, extend, pop = todo.append, todo.extend, todo.pop
+        shape_of = SHAPES.get
         while todo:
             child = pop()
             kind = type(child)
@@ -183,14 +185,21 @@ class PathWalker(Binder):
                 assigns.append(child)  # type: ignore[arg-type]
                 assigned.update(map(id, child.targets))  # type: ignore[attr-defined]
                 continue
-            for field in FIELDS.get(kind) or fields(kind):  # `children`, inline
-                value = getattr(child, field, None)
-                if value.__class__ is list:
-                    for one in value:
-                        if isinstance(one, ast.AST):
-                            push(one)
-                elif isinstance(value, ast.AST):
-                    push(value)
+            shape = shape_of(kind)
+            if shape is not None:
+                for field in shape[0]:
+                    push(getattr(child, field))
+                for field in shape[1]:
+                    extend(getattr(child, field))
+            else:
+                for field in FIELDS.get(kind) or fields(kind):  # `children`, inline
+                    value = getattr(child, field, None)
+                    if value.__class__ is list:
+                        for one in value:
+                            if isinstance(one, ast.AST):
+                                push(one)
+                    elif isinstance(value, ast.AST):
+                        push(value)
             if kind is ast.Subscript:
                 if watched and type(child.ctx) is not load:  # type: ignore[attr-defined]
                     self._changed_root(child, state, firm=True)
@@ -216,10 +225,12 @@ class PathWalker(Binder):
                 del state.env[key]  # `while self.scan is None: rospy.sleep(0.1)`
             for name in sorted(self.program.shared_globals):
                 bound_at.setdefault(name, nodes[0])  # `while not received: ...`
+        scope = self.scope
+        declares = scope.decls or scope.global_names  # (most bodies declare nothing)
         for name, child in bound_at.items():
-            if name not in self.scope.local_names:
+            if name not in scope.local_names:
                 continue
-            decl = self.decl_for(name)
+            decl = self.decl_for(name) if declares else None
             before = state.env.get(name)
             keeps = KEEPS.get(before.kind) if isinstance(before, Value) else None
             if keeps and decl is None and constant is None:  # once, when first asked
