@@ -199,11 +199,13 @@ class Interpreter(CompoundWalker):
         visits = _VISIT.setdefault(type(self), {})
         ctx = self.ctx
         budget = ctx.budget
+        limit = budget.limit  # (fixed for the file; `used` grows in each statement)
         for stmt in body:
             if not state.reachable:
                 break
-            budget.used += 1  # `FileContext.step`, inline: a call per statement
-            if budget.used > budget.limit:
+            used = budget.used + 1  # `FileContext.step`, inline: a call per statement
+            budget.used = used
+            if used > limit:
                 raise BudgetExceededError(getattr(stmt, "lineno", 1))
             self.site = stmt
             kind = type(stmt)
@@ -234,12 +236,13 @@ class Interpreter(CompoundWalker):
 
     # -- simple statements ---------------------------------------------------
     def visit_Expr(self, node: ast.Expr, state: State) -> State:
-        self.eval(node.value, state)
-        if isinstance(node.value, ast.Call):
-            facts = self.facts
-            if facts.never_returns(node.value.func):
+        value = node.value
+        self.eval(value, state)
+        if type(value) is ast.Call:
+            facts, func = self.facts, value.func
+            if facts.never_returns(func):
                 state.reachable = False  # sys.exit(1) ends this path
-            elif facts.may_stop(node.value.func):
+            elif facts.may_stop(func):
                 state.exits += 1
         return state
 
