@@ -13,8 +13,9 @@ import pytest
 
 from robotfix.analysis import decisions
 from robotfix.analysis.paths import PathWalker
-from robotfix.analysis.state import State
-from robotfix.analysis.values import Value
+from robotfix.analysis.state import MAYBE, Binding, MaybeUnbound, State
+from robotfix.analysis.stmtsyntax import excuse
+from robotfix.analysis.values import Uninit, Value
 from robotfix.api import check_source
 from robotfix.astwalk import walk
 
@@ -184,3 +185,44 @@ def test_a_decision_reads_what_a_walk_of_its_test_reads() -> None:
                 assert got == _walked(test, local, attributes), ast.unparse(test)
                 tests += 1
     assert tests > 100
+
+
+def _excused_before(side: State, other: State) -> None:
+    """`stmtsyntax.excuse` as it was written before: no identity shortcut."""
+    for name, bound in other.env.items():
+        if "." in name or not isinstance(bound, Value):
+            continue
+        mine = side.env.get(name)
+        if not isinstance(mine, Value) or mine.uninit is not None:
+            side.env[name] = MAYBE
+
+
+def test_excuse_skips_only_a_binding_it_would_keep() -> None:
+    """The same binding on both paths is skipped first, unless it is a value read
+    uninitialised: every pair of bindings gives what the loop before gave."""
+    from itertools import product
+
+    shared = Value("float")
+    bindings: list[Binding | None] = [
+        None,
+        shared,
+        Value("float"),
+        Value("unknown", uninit=Uninit("x", False)),
+        MaybeUnbound(),
+        MAYBE,
+    ]
+    for name, (mine, theirs) in product(["x", "self.x"], product(bindings, repeat=2)):
+        if theirs is None:
+            continue
+        for excused in (excuse, _excused_before):
+            side = State({name: mine} if mine is not None else {})
+            other = State({name: theirs})
+            excused(side, other)
+            if excused is excuse:
+                got = side.env
+            else:
+                assert got == side.env, (name, mine, theirs)
+    uninit = bindings[3]
+    side, other = State({"x": uninit}), State({"x": uninit})
+    excuse(side, other)  # the same object, read uninitialised: excused
+    assert side.env["x"] is MAYBE

@@ -36,6 +36,41 @@ def fields(kind: type) -> tuple[str, ...]:
     return found
 
 
+# Node classes each of whose `fields` always holds a node or a list of nodes (never
+# None or a string), the single nodes before the lists: (single fields, list
+# fields), in the order of `fields`. A walk that must be fast pushes their
+# children without a test per child (`paths.PathWalker.havoc_sums`).
+SHAPES: dict[type, tuple[tuple[str, ...], tuple[str, ...]]] = {
+    ast.Compare: (("left",), ("comparators",)),
+    ast.If: (("test",), ("body", "orelse")),
+    ast.BinOp: (("left", "right"), ()),
+    ast.For: (("target", "iter"), ("body", "orelse")),
+    ast.AsyncFor: (("target", "iter"), ("body", "orelse")),
+    ast.Subscript: (("value", "slice"), ()),
+    ast.Tuple: ((), ("elts",)),
+    ast.List: ((), ("elts",)),
+    ast.Set: ((), ("elts",)),
+    ast.keyword: (("value",), ()),
+    ast.UnaryOp: (("operand",), ()),
+    ast.BoolOp: ((), ("values",)),
+    ast.While: (("test",), ("body", "orelse")),
+    ast.Try: ((), ("body", "handlers", "orelse", "finalbody")),
+    ast.AugAssign: (("target", "value"), ()),
+    ast.comprehension: (("target", "iter"), ("ifs",)),
+    ast.ListComp: (("elt",), ("generators",)),
+    ast.SetComp: (("elt",), ("generators",)),
+    ast.GeneratorExp: (("elt",), ("generators",)),
+    ast.DictComp: (("key", "value"), ("generators",)),
+    ast.Starred: (("value",), ()),
+    ast.IfExp: (("test", "body", "orelse"), ()),
+    ast.JoinedStr: ((), ("values",)),
+    ast.With: ((), ("items", "body")),
+    ast.AsyncWith: ((), ("items", "body")),
+    ast.Await: (("value",), ()),
+    ast.Delete: ((), ("targets",)),
+}
+
+
 def children(node: ast.AST) -> list[ast.AST]:
     found: list[ast.AST] = []
     kind = type(node)

@@ -40,24 +40,41 @@ def decision(
     skipped: set[int] = set()  # callees and the objects of attributes
     found: set[tuple[str, Hashable]] = set()
     todo: list[ast.AST] = [test]  # (`walk`: parents before their children)
+    push, extend, pop = todo.append, todo.extend, todo.pop
+    # (node classes as local names: a module attribute costs a look-up a node)
+    name_node, attribute_node, call_node = ast.Name, ast.Attribute, ast.Call
     while todo:
-        node = todo.pop()
-        kind = node.__class__
-        if kind is ast.Name:  # (a name and a constant have no children)
+        node = pop()
+        kind = type(node)
+        if kind is name_node:  # (a name and a constant have no children)
             name: str = node.id  # type: ignore[attr-defined]
             local = name in local_names and name not in RECEIVERS
             if local and id(node) not in skipped:
                 found.add((name, tracked(name)))
             continue
-        if kind is ast.Constant:
-            continue
-        if kind is ast.Call:
-            skipped.add(id(node.func))  # type: ignore[attr-defined]
-        elif kind is ast.Attribute:
-            skipped.add(id(node.value))  # type: ignore[attr-defined]
+        if kind is attribute_node:
+            value = node.value  # type: ignore[attr-defined]
+            skipped.add(id(value))
             if id(node) not in skipped:  # `scan.range_min`: the field is the data
                 found.add(("." + node.attr, attributes.get(id(node))))  # type: ignore[attr-defined]
-        todo.extend(children(node))
+            push(value)
+            continue
+        if kind is call_node:
+            func = node.func  # type: ignore[attr-defined]
+            skipped.add(id(func))
+            push(func)
+            extend(node.args)  # type: ignore[attr-defined]
+            extend(node.keywords)  # type: ignore[attr-defined]
+            continue
+        if kind is ast.Compare:  # (the commonest tests push their own children)
+            push(node.left)  # type: ignore[attr-defined]
+            extend(node.comparators)  # type: ignore[attr-defined]
+        elif kind is ast.UnaryOp:
+            push(node.operand)  # type: ignore[attr-defined]
+        elif kind is ast.BoolOp:
+            extend(node.values)  # type: ignore[attr-defined]
+        elif kind is not ast.Constant:
+            extend(children(node))
     return id(test), frozenset(found)
 
 

@@ -181,6 +181,9 @@ def _function_for(program: Program, node: ast.AST, parent: Scope) -> Function:
     return program.add(Function(key, node, parent))
 
 
+# an assignment's sides that are unpacked element by element (`a, b = x, y`)
+_SEQUENCES = frozenset({ast.Tuple, ast.List})
+
 # walker class -> statement class -> its `visit_<statement class>` function, or
 # None: `exec_block`'s dispatch without building a name and a bound method
 _VISIT: dict[type, dict[type, Callable[..., State] | None]] = {}
@@ -196,11 +199,13 @@ class Interpreter(CompoundWalker):
         visits = _VISIT.setdefault(type(self), {})
         ctx = self.ctx
         budget = ctx.budget
+        limit = budget.limit  # (fixed for the file; `used` grows in each statement)
         for stmt in body:
             if not state.reachable:
                 break
-            budget.used += 1  # `FileContext.step`, inline: a call per statement
-            if budget.used > budget.limit:
+            used = budget.used + 1  # `FileContext.step`, inline: a call per statement
+            budget.used = used
+            if used > limit:
                 raise BudgetExceededError(getattr(stmt, "lineno", 1))
             self.site = stmt
             kind = type(stmt)
@@ -231,32 +236,37 @@ class Interpreter(CompoundWalker):
 
     # -- simple statements ---------------------------------------------------
     def visit_Expr(self, node: ast.Expr, state: State) -> State:
-        self.eval(node.value, state)
-        if isinstance(node.value, ast.Call):
-            facts = self.facts
-            if facts.never_returns(node.value.func):
+        value = node.value
+        self.eval(value, state)
+        if type(value) is ast.Call:
+            facts, func = self.facts, value.func
+            if facts.never_returns(func):
                 state.reachable = False  # sys.exit(1) ends this path
-            elif facts.may_stop(node.value.func):
+            elif facts.may_stop(func):
                 state.exits += 1
         return state
 
     def visit_Assign(self, node: ast.Assign, state: State) -> State:
-        if (
-            len(node.targets) == 1
-            and isinstance(node.targets[0], (ast.Tuple, ast.List))
-            and isinstance(node.value, (ast.Tuple, ast.List))
-            and len(node.targets[0].elts) == len(node.value.elts)
-            and not any(isinstance(e, ast.Starred) for e in node.value.elts)
-        ):
-            values = [self.eval(v, state) for v in node.value.elts]
-            for target, value in zip(node.targets[0].elts, values, strict=True):
-                self.bind(target, value, state)
+        targets = node.targets
+        if len(targets) == 1:  # (most assignments: one target, a name)
+            target = targets[0]
+            if type(target) in _SEQUENCES and type(node.value) in _SEQUENCES:
+                elts = node.value.elts  # type: ignore[attr-defined]
+                if len(target.elts) == len(elts) and not any(  # type: ignore[attr-defined]
+                    isinstance(e, ast.Starred) for e in elts
+                ):
+                    values = [self.eval(v, state) for v in elts]
+                    for one, value in zip(target.elts, values, strict=True):  # type: ignore[attr-defined]
+                        self.bind(one, value, state)
+                    return state
+            value = self.eval(node.value, state)
+            self.bind(target, value, state)
+            if self.ctx.unit_flows is not None:
+                self._record_flow(node.value, target, value, state)
             return state
         value = self.eval(node.value, state)
-        for target in node.targets:
+        for target in targets:
             self.bind(target, value, state)
-            if len(node.targets) == 1 and self.ctx.unit_flows is not None:
-                self._record_flow(node.value, target, value, state)
         return state
 
     def flow_where(self) -> Where:
@@ -448,27 +458,27 @@ class Interpreter(CompoundWalker):
     def visit_FunctionDef(
         self, node: ast.FunctionDef | ast.AsyncFunctionDef, state: State
     ) -> State:
-        for expr in [
-            *node.decorator_list,
-            *node.args.defaults,
-            *[d for d in node.args.kw_defaults if d is not None],
-        ]:
+        args = node.args
+        for expr in node.decorator_list:
             self.eval(expr, state)
-        key = (
-            node.name
-            if self.scope.kind == "module"
-            else f"<nested {node.name}@{node.lineno}>"
-        )
+        for expr in args.defaults:
+            self.eval(expr, state)
+        for default in args.kw_defaults:
+            if default is not None:
+                self.eval(default, state)
+        scope = self.scope
+        kind = scope.kind
+        key = node.name if kind == "module" else f"<nested {node.name}@{node.lineno}>"
         state.env[node.name] = Value("function", name=key)
-        if self.scope.kind == "function":
+        if kind == "function":
             self.nested[node.name] = node
         top_level_method = (
-            self.scope.kind == "class"
-            and self.scope.parent is not None
-            and self.scope.parent.kind == "module"
+            kind == "class"
+            and scope.parent is not None
+            and scope.parent.kind == "module"
         )
-        if self.scope.kind != "module" and not top_level_method:
-            self.pending.append((node, self.scope))  # the pre-pass knows only top level
+        if kind != "module" and not top_level_method:
+            self.pending.append((node, scope))  # the pre-pass knows only top level
         return state
 
     visit_AsyncFunctionDef = visit_FunctionDef

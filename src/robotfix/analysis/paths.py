@@ -23,7 +23,6 @@ from robotfix.analysis.stmtsyntax import (
     BINDER_KINDS,
     KEEPS,
     WHOLE,
-    assign_targets,
     bound_by,
     constant_stores,
     excuse,
@@ -39,7 +38,7 @@ from robotfix.analysis.values import (
     replace,
 )
 from robotfix.annotations import ast as A
-from robotfix.astwalk import FIELDS, fields, walk
+from robotfix.astwalk import FIELDS, SHAPES, fields, walk
 
 
 class PathWalker(Binder):
@@ -116,12 +115,22 @@ class PathWalker(Binder):
         objects: dict[str, int] = {}  # names of messages that `nodes` mention
         looked: set[str] = set()  # the names whose binding was looked at
         get = state.env.get
-        todo: list[ast.AST] = [*reversed(nodes)]  # `walk` of each node in turn
-        push = todo.append
+        lists_seen = self.lists_seen  # (the walk binds nothing)
+        # `walk` of each node in turn (the order `bound_at` keeps): the commonest
+        # classes push their children themselves, in the order of their fields
+        # (each is a node or a list of nodes), the classes of `SHAPES` by their
+        # shape, the rest through `fields`, testing each child; the classes are
+        # local names (a module attribute costs a look-up a node)
+        name_node, attribute_node, call_node = ast.Name, ast.Attribute, ast.Call
+        constant_node, expr_node, assign_node = ast.Constant, ast.Expr, ast.Assign
+        load, store = ast.Load, ast.Store
+        todo: list[ast.AST] = [*reversed(nodes)]
+        push, extend, pop = todo.append, todo.extend, todo.pop
+        shape_of = SHAPES.get
         while todo:
-            child = todo.pop()
+            child = pop()
             kind = type(child)
-            if kind is ast.Name:  # (a name and a constant have no children)
+            if kind is name_node:  # (a name and a constant have no children)
                 name: str = child.id  # type: ignore[attr-defined]
                 if name not in looked:  # (the walk pops dotted keys only)
                     looked.add(name)
@@ -130,53 +139,74 @@ class PathWalker(Binder):
                         objects[name] = bound.ref
                     elif isinstance(bound, Value) and bound.kind == "list":
                         lists.add(name)
-                if type(child.ctx) is not ast.Load:  # type: ignore[attr-defined]
+                if type(child.ctx) is not load:  # type: ignore[attr-defined]
                     bound_at.setdefault(name, child)
                     if id(child) not in assigned:
                         other_binders.add(name)
-                    if type(child.ctx) is ast.Store:  # type: ignore[attr-defined]
+                    if type(child.ctx) is store:  # type: ignore[attr-defined]
                         stores.append(child)  # type: ignore[arg-type]
                 continue
-            if kind is ast.Constant:
-                continue
-            for field in FIELDS.get(kind) or fields(kind):  # `children`, inline
-                value = getattr(child, field, None)
-                if value.__class__ is list:
-                    for one in value:
-                        if isinstance(one, ast.AST):
-                            push(one)
-                elif isinstance(value, ast.AST):
-                    push(value)
-            if kind is ast.Attribute:
-                if type(child.ctx) is ast.Store:  # type: ignore[attr-defined]
+            if kind is attribute_node:
+                push(child.value)  # type: ignore[attr-defined]
+                if type(child.ctx) is store:  # type: ignore[attr-defined]
                     key = attribute_key(child)  # type: ignore[arg-type]
                     state.env.pop(key or "", None)
                     if watched:
                         self._changed_root(child, state, firm=True)
-                elif self.lists_seen:  # `self.xs.append(v)`: forget what it held
+                elif lists_seen:  # `self.xs.append(v)`: forget what it held
                     key = attribute_key(child) or ""  # type: ignore[arg-type]
                     kept = state.env.get(key)
                     if isinstance(kept, Value) and kept.kind == "list":
                         state.env.pop(key, None)
-            elif kind is ast.Subscript:
-                if watched and type(child.ctx) is not ast.Load:  # type: ignore[attr-defined]
-                    self._changed_root(child, state, firm=True)
-            elif kind is ast.Call:
+                continue
+            if kind is call_node:
+                call: ast.Call = child  # type: ignore[assignment]
+                push(call.func)
+                extend(call.args)
+                extend(call.keywords)
                 calls = True
                 if watched:
-                    call: ast.Call = child  # type: ignore[assignment]
                     method = getattr(call.func, "attr", "")
                     self._changed_root(call.func, state, method in MUTATORS)
                     for arg in call.args:
-                        if type(arg) is not ast.Constant:  # (changes no object)
+                        if type(arg) is not constant_node:  # (changes no object)
                             self._changed_root(arg, state)
                     for keyword in call.keywords:
                         self._changed_root(keyword, state)
-            elif kind is ast.Assign or kind is ast.AugAssign:
+                continue
+            if kind is constant_node:
+                continue
+            if kind is expr_node:
+                push(child.value)  # type: ignore[attr-defined]
+                continue
+            if kind is assign_node:
+                extend(child.targets)  # type: ignore[attr-defined]
+                push(child.value)  # type: ignore[attr-defined]
                 assigns.append(child)  # type: ignore[arg-type]
-                assigned.update(map(id, assign_targets(child)))  # type: ignore[arg-type]
-                if kind is ast.AugAssign:
-                    note_sum(child, summed, sum_targets)
+                assigned.update(map(id, child.targets))  # type: ignore[attr-defined]
+                continue
+            shape = shape_of(kind)
+            if shape is not None:
+                for field in shape[0]:
+                    push(getattr(child, field))
+                for field in shape[1]:
+                    extend(getattr(child, field))
+            else:
+                for field in FIELDS.get(kind) or fields(kind):  # `children`, inline
+                    value = getattr(child, field, None)
+                    if value.__class__ is list:
+                        for one in value:
+                            if isinstance(one, ast.AST):
+                                push(one)
+                    elif isinstance(value, ast.AST):
+                        push(value)
+            if kind is ast.Subscript:
+                if watched and type(child.ctx) is not load:  # type: ignore[attr-defined]
+                    self._changed_root(child, state, firm=True)
+            elif kind is ast.AugAssign:
+                assigns.append(child)  # type: ignore[arg-type]
+                assigned.add(id(child.target))  # type: ignore[attr-defined]
+                note_sum(child, summed, sum_targets)
             elif kind in BINDER_KINDS:
                 for name in bound_by(child):
                     bound_at.setdefault(name, child)
@@ -195,10 +225,12 @@ class PathWalker(Binder):
                 del state.env[key]  # `while self.scan is None: rospy.sleep(0.1)`
             for name in sorted(self.program.shared_globals):
                 bound_at.setdefault(name, nodes[0])  # `while not received: ...`
+        scope = self.scope
+        declares = scope.decls or scope.global_names  # (most bodies declare nothing)
         for name, child in bound_at.items():
-            if name not in self.scope.local_names:
+            if name not in scope.local_names:
                 continue
-            decl = self.decl_for(name)
+            decl = self.decl_for(name) if declares else None
             before = state.env.get(name)
             keeps = KEEPS.get(before.kind) if isinstance(before, Value) else None
             if keeps and decl is None and constant is None:  # once, when first asked

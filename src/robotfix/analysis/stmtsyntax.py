@@ -228,10 +228,13 @@ def cannot_raise(stmt: ast.stmt) -> bool:
 def excuse(side: State, other: State) -> None:
     """Names bound on `other` but not on `side`, which may have ended: unbound
     there only if it went on, which the analysis cannot tell."""
+    get = side.env.get
     for name, bound in other.env.items():
+        mine = get(name)
+        if mine is bound and (not isinstance(mine, Value) or mine.uninit is None):
+            continue  # (most names) the same binding: nothing to excuse
         if "." in name or not isinstance(bound, Value):
             continue
-        mine = side.env.get(name)
         if not isinstance(mine, Value) or mine.uninit is not None:
             side.env[name] = MAYBE
 
