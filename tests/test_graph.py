@@ -1088,6 +1088,62 @@ def test_the_runs_cpp_reading_parses_no_file_that_can_make_no_endpoint(
     assert read_cpp(header).nodes == {"Talker": ["talker"]}
 
 
+_CODE = b'void f() {\n  ros::NodeHandle nh;\n  *pub = nh.advertise<T>("a", 1);\n}\n'
+
+
+@pytest.mark.parametrize(
+    ("text", "parse"),
+    [
+        (  # roscpp's node_handle.h: example code in a doc comment
+            b"class NodeHandle {\n  /**\n   * \\code\n   *   ros::Publisher pub = "
+            b'handle.advertise<std_msgs::Empty>("my_topic", 1);\n   * \\endcode\n'
+            b"   */\n  Publisher advertise(AdvertiseOptions & ops);\n};\n",
+            False,
+        ),
+        (b"/*\n" + _CODE + b"*/\n", False),  # code commented out
+        (b"/* x */\n" + _CODE, True),  # the comment ends before
+        (b'const char * s = "/*";\n' + _CODE, True),  # a string's `/*`
+        (b"int x; /* y\n" + _CODE + b"*/\n", True),  # after code: a lexer's to say
+        (b"// a line comment going on \\\n/*\n" + _CODE, True),
+        (b'#define S "a\\\n/*"\n' + _CODE, True),  # a string going on
+        (b'auto s = R"(\n/*)";\n' + _CODE, True),  # a raw string's
+        (b"/*/\n" + _CODE, True),  # `/*/` opens a comment, `*/` after is unsure
+    ],
+)
+def test_a_maker_called_in_a_block_comment_makes_no_parse(
+    text: bytes, parse: bool, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A call written inside a `/* */` comment that surely is one (its `/*`
+    begins its line, no line going on before it, no raw string before it: roscpp's
+    `node_handle.h`, 103 KB) makes no parse; what only a lexer could tell is
+    parsed. Either way the endpoints are what the parse reads."""
+    from robotfix.ros.graph import cpp
+
+    parsed = _counting_parses(monkeypatch)
+    found = read_cpp(text, names=False).endpoints
+    assert bool(parsed) is parse
+    monkeypatch.setattr(cpp, "may_make", lambda *args: True)  # the parse's reading
+    assert found == read_cpp(text, names=False).endpoints
+
+
+def test_the_cpp_scan_parses_every_file_of_the_cases_that_makes_an_endpoint(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """Every C++ file of the tests: the endpoints read after the byte scan are
+    those a parse of each file reads (the scan only spares parses)."""
+    from robotfix.ros.graph import cpp
+
+    files = [
+        p
+        for p in sorted(Path(__file__).parent.rglob("*"))
+        if p.suffix in (".cpp", ".hpp", ".h", ".cc", ".hh", ".cxx")
+    ]
+    assert len(files) >= 9
+    scanned = [read_cpp(p.read_bytes(), names=False).endpoints for p in files]
+    monkeypatch.setattr(cpp, "may_make", lambda *args: True)
+    assert scanned == [read_cpp(p.read_bytes(), names=False).endpoints for p in files]
+
+
 def test_python_graph_walks_no_nested_statement_where_no_wanted_call_starts(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:

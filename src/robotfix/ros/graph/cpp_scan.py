@@ -3,7 +3,8 @@ parse, and the tables of what makes an endpoint that the reading shares.
 
 A file without any of `WORDS` is not parsed; nor one where no name that makes
 an endpoint (`METHODS`, `ACTIONS`, `CLASSES`) stands as a word and is called
-(`makers_in`, `may_make`: `@param` in a comment is not), unless it names a
+(`makers_in`, `may_make`: `@param` in a comment is not, nor a call in a `/* */`
+comment that surely is one: `_in_block_comment`), unless it names a
 node class of another package (`_other_node`) or the reading wants its node
 names. The words of `OPENING` (parameters this file does not name) are found
 here too, as parameter endpoints without a name (`opening`). The makers are
@@ -146,9 +147,31 @@ def may_make(data: bytes, makers: list[tuple[int, int, bytes]], names: bool) -> 
             return True
         after = data[end : end + 80].lstrip()
         called = not after or after[:1] in b"<(/\\"  # (all blanks: unsure, parsed)
-        if called and (word not in _RECEIVED or _received(data, start)):
+        if (
+            called
+            and (word not in _RECEIVED or _received(data, start))
+            and not _in_block_comment(data, start)
+        ):
             return True
     return _other_node(data, names) or (names and _NAMING.search(data) is not None)
+
+
+def _in_block_comment(data: bytes, at: int) -> bool:
+    """Whether `at` is surely inside a `/* */` comment, as tree-sitter's lexer
+    reads it (the example code of roscpp's `node_handle.h`, 103 KB): the last
+    `/*` before it, with no `*/` after that, begins its line (blanks before
+    it), the line before does not end with a backslash, blanks apart (a `//`
+    comment or a string going on), and no raw string (`R"`) comes before it.
+    Anything else: not surely, False."""
+    opener = data.rfind(b"/*", 0, at)
+    if opener < 0 or data.find(b"*/", opener + 1, at) >= 0:
+        return False
+    line = data.rfind(b"\n", 0, opener) + 1
+    if data[line:opener].strip(_BLANKS):
+        return False  # (`x = 1; /*`, `"/*"`: a lexer would have to say)
+    if data[max(line - 8, 0) : line].rstrip(_BLANKS).endswith(b"\\"):
+        return False  # (refused with blanks after it too, going on or not)
+    return data.rfind(b'R"', 0, opener) < 0
 
 
 def _received(data: bytes, start: int) -> bool:
