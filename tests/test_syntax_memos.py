@@ -130,7 +130,8 @@ def test_may_raise_walks_statements_only() -> None:
 
 
 def test_binders_of_a_scope_leave_out_what_nested_scopes_bind() -> None:
-    from robotfix.analysis.relevance import _binders, _statements
+    from robotfix.analysis.relevance import _statements
+    from robotfix.analysis.unbound import _binders
 
     function = ast.parse(
         "def f(a, *b, c=d0, **e):\n"
@@ -168,7 +169,7 @@ def test_binders_of_a_scope_leave_out_what_nested_scopes_bind() -> None:
 
 
 def test_binders_without_walrus_find_what_the_walk_of_every_node_finds() -> None:
-    from robotfix.analysis.relevance import _binders
+    from robotfix.analysis.unbound import _binders
 
     scopes = 0
     for path in sorted(CASES.rglob("*.py")):

@@ -104,6 +104,7 @@ def index_module(tree: ast.Module) -> FileIndex:
 
 
 ALIAS_FORMS = (ast.Subscript, ast.BinOp, ast.Name, ast.Attribute, ast.Constant)
+_TYPE_ALIAS = getattr(ast, "TypeAlias", None)  # 3.12 `type X = ...`
 
 
 def _aliases(tree: ast.Module) -> dict[str, ast.expr]:
@@ -116,17 +117,18 @@ def _aliases(tree: ast.Module) -> dict[str, ast.expr]:
     for statement in tree.body:
         target: ast.expr | None = None
         value: ast.expr | None = None
-        if isinstance(statement, ast.Assign) and len(statement.targets) == 1:
-            target, value = statement.targets[0], statement.value
-        elif isinstance(statement, ast.AnnAssign):
-            target, value = statement.target, statement.value
-        elif type(statement).__name__ == "TypeAlias":  # 3.12 `type X = ...`
+        kind = type(statement)
+        if kind is ast.Assign and len(statement.targets) == 1:  # type: ignore[attr-defined]
+            target, value = statement.targets[0], statement.value  # type: ignore[attr-defined]
+        elif kind is ast.AnnAssign:
+            target, value = statement.target, statement.value  # type: ignore[attr-defined]
+        elif kind is _TYPE_ALIAS:  # 3.12 `type X = ...`
             target = getattr(statement, "name", None)
             value = getattr(statement, "value", None)
         else:
             others.append(statement)
             continue
-        if not isinstance(target, ast.Name):
+        if type(target) is not ast.Name:
             continue
         name = target.id
         if name in seen:
@@ -184,8 +186,8 @@ def _drain(index: FileIndex, todo: Todo, where: Where, root: int) -> None:
     nodes are met in one stack walk's order (that of the calls, returns and
     imports recorded); `Name`s and `Constant`s are read as they are met under
     their parent, never put on the stack."""
-    scopes, pop, append = index.scopes, todo.pop, todo.append
-    stores, calls = index.stores, index.calls
+    scopes, pop, append, extend = index.scopes, todo.pop, todo.append, todo.extend
+    stores, calls, assigned = index.stores, index.calls, index.assigned
     attribute_stores, attribute_class = index.attribute_stores, ast.Attribute
     known = FIELDS  # node class -> fields that may hold nodes
     node_class, name_class, constant_class = ast.AST, ast.Name, ast.Constant
@@ -198,28 +200,40 @@ def _drain(index: FileIndex, todo: Todo, where: Where, root: int) -> None:
         node = pop()
         kind = type(node)
         special = special_of(kind)
-        if special is not None:
-            if special is _MARK:  # the end of a nested scope: back to its parent
-                owner, cls, self_name = node
-                local_names = scopes[owner].local_names
-                continue
-            if special is _NAME:  # one a scope's own statement holds directly
-                if type(node.ctx) is not load:
-                    local_names.add(node.id)
-                    stores[node.id] += 1
-                continue
-            if special is _CONSTANT:
-                continue
-            if special is _SCOPE:
-                where = _enter(index, node, owner, cls, self_name, root, todo)
-                owner, cls, self_name = where
-                local_names = scopes[owner].local_names
-                continue
+        if special is not None:  # (the tests in the order of their frequency)
             if special is _CALL:
                 calls.append((cls, node))
                 func = node.func
                 if type(func) is name_class and func.id == "setattr":
                     index.setattrs.append(node)
+                names = _CALLED  # a keyword's value is stacked in its place below
+                keywords = node.keywords
+            elif special is _ASSIGN:
+                for part in node.targets:  # most are a name or `self.x`
+                    while type(part) is attribute_class:
+                        assigned[part.attr] += 1
+                        part = part.value
+                    if type(part) is not name_class:
+                        _count_assigned(index, part)
+            elif special is _EXPRESSION:  # its one child in its place
+                append(node.value)
+                continue
+            elif special is _SCOPE:
+                where = _enter(index, node, owner, cls, self_name, root, todo)
+                owner, cls, self_name = where
+                local_names = scopes[owner].local_names
+                continue
+            elif special is _MARK:  # the end of a nested scope: back to its parent
+                owner, cls, self_name = node
+                local_names = scopes[owner].local_names
+                continue
+            elif special is _NAME:  # one a scope's own statement holds directly
+                if type(node.ctx) is not load:
+                    local_names.add(node.id)
+                    stores[node.id] += 1
+                continue
+            elif special is _CONSTANT:
+                continue
             elif special is _ATTRIBUTE:  # one a scope's own statement holds
                 if type(node.ctx) is not load:
                     attribute_stores.add(node.attr)
@@ -227,13 +241,14 @@ def _drain(index: FileIndex, todo: Todo, where: Where, root: int) -> None:
                 index.returns.setdefault(owner, []).append(node)
             elif special is _YIELD:
                 index.generators.add(owner)
+            elif special is _IMPORT:  # its aliases hold nothing more
+                index.import_statements.append(node)
+                _record_import(index, scopes[owner], node)
+                continue
             else:
                 _record(index, scopes[owner], node, kind, cls, self_name)
-                if special is _IMPORT:  # its aliases hold nothing more
-                    continue
-        names = known.get(kind)
-        if names is None:
-            names = fields(kind)
+        if special is not _CALL:
+            names = known.get(kind) or fields(kind)
         for name in names:  # not contexts, operators and strings
             value = getattr(node, name, None)
             for v in value if type(value) is list else (value,):
@@ -249,18 +264,20 @@ def _drain(index: FileIndex, todo: Todo, where: Where, root: int) -> None:
                         stores[v.id] += 1
                 elif child is not constant_class and isinstance(v, node_class):
                     append(v)
+        if special is _CALL and keywords:
+            extend([keyword.value for keyword in keywords])
 
 
 # the statements and nodes `_record` reads (besides walking under them)
 _RECORDED = frozenset(
-    {ast.Assign, ast.AugAssign, ast.AnnAssign, ast.Import, ast.ImportFrom}
-    | {ast.Global, ast.Nonlocal, ast.ExceptHandler}
+    {ast.AugAssign, ast.AnnAssign, ast.Global, ast.Nonlocal, ast.ExceptHandler}
 )
+_CALLED: tuple[str, ...] = ("func", "args")  # a call's fields but its keywords
 
 
 # how `_drain` treats a node class it does not just walk under
 _MARK, _NAME, _CONSTANT, _SCOPE, _CALL, _ATTRIBUTE, _RETURN, _YIELD = range(8)
-_RECORD, _IMPORT = 8, 9
+_RECORD, _IMPORT, _ASSIGN, _EXPRESSION = 8, 9, 10, 11
 _SPECIAL: dict[type, int] = {
     tuple: _MARK,
     ast.Name: _NAME,
@@ -274,6 +291,8 @@ _SPECIAL: dict[type, int] = {
     **dict.fromkeys(_RECORDED, _RECORD),
     ast.Import: _IMPORT,
     ast.ImportFrom: _IMPORT,
+    ast.Assign: _ASSIGN,
+    ast.Expr: _EXPRESSION,
 }
 
 
@@ -285,24 +304,26 @@ def _record(
     cls: str | None,
     self_name: str | None,
 ) -> None:
-    if kind is ast.Assign or kind is ast.AugAssign or kind is ast.AnnAssign:
-        todo = list(getattr(node, "targets", None) or [node.target])  # type: ignore[attr-defined]
-        while todo:  # every node of the targets (`walk`), most are one `Name`
-            part: Any = todo.pop()
-            if type(part) is ast.Name:
-                continue
-            if type(part) is ast.Attribute:
-                index.assigned[part.attr] += 1
-            todo += children(part)
-    if kind is ast.Import or kind is ast.ImportFrom:
-        index.import_statements.append(node)  # type: ignore[arg-type]
-        _record_import(index, names, node)  # type: ignore[arg-type]
-    elif kind is ast.Global or kind is ast.Nonlocal:
+    if kind is ast.AugAssign or kind is ast.AnnAssign:
+        _count_assigned(index, node.target)  # type: ignore[attr-defined]
+    if kind is ast.Global or kind is ast.Nonlocal:
         names.global_names.update(node.names)  # type: ignore[attr-defined]
     elif kind is ast.ExceptHandler and node.name:  # type: ignore[attr-defined]
         names.local_names.add(node.name)  # type: ignore[attr-defined]
     elif kind is ast.AnnAssign:
         _record_annotation(index, names, node, cls, self_name)  # type: ignore[arg-type]
+
+
+def _count_assigned(index: FileIndex, target: ast.AST) -> None:
+    """Each attribute of an assignment's target, as a walk of it meets them."""
+    todo: list[Any] = [target]
+    while todo:  # most targets are one `Name`
+        part = todo.pop()
+        if type(part) is ast.Name:
+            continue
+        if type(part) is ast.Attribute:
+            index.assigned[part.attr] += 1
+        todo += children(part)
 
 
 def _enter(
@@ -319,37 +340,44 @@ def _enter(
     iterable), the marker back to it, then the scope's own nodes; its `Where`."""
     outer = (owner, cls, self_name)
     inner = index.scopes[id(node)] = ScopeNames()
-    if isinstance(node, ast.ClassDef):
-        index.scopes[owner].local_names.add(node.name)
+    kind = type(node)
+    if kind is ast.ClassDef:
+        index.scopes[owner].local_names.add(node.name)  # type: ignore[attr-defined]
         index.class_scopes.add(id(node))
-        todo += [*node.decorator_list, *node.bases, *node.keywords, outer, *node.body]
-        return id(node), node.name if owner == root else cls, None
-    if isinstance(node, COMPREHENSIONS):  # its first iterable is the enclosing one's
-        first = node.generators[0]
-        todo += [first.iter, outer, first.target, *first.ifs, *node.generators[1:]]
+        todo += [*node.decorator_list, *node.bases, *node.keywords, outer, *node.body]  # type: ignore[attr-defined]
+        return id(node), node.name if owner == root else cls, None  # type: ignore[attr-defined]
+    if kind in _COMPREHENSION_KINDS:  # its first iterable is the enclosing one's
+        first = node.generators[0]  # type: ignore[attr-defined]
+        todo += [first.iter, outer, first.target, *first.ifs, *node.generators[1:]]  # type: ignore[attr-defined]
         todo += [c for c in children(node) if not isinstance(c, ast.comprehension)]
         return id(node), cls, self_name
-    assert isinstance(node, (*FUNCTIONS, ast.Lambda))
-    args = node.args
-    every = [*args.posonlyargs, *args.args, *args.kwonlyargs]
-    every += [a for a in (args.vararg, args.kwarg) if a is not None]
+    assert kind in _FUNCTION_KINDS
+    args = node.args  # type: ignore[attr-defined]
     todo += args.defaults
-    todo += [d for d in args.kw_defaults if d is not None]
+    every = args.args  # most functions have only these
+    if args.posonlyargs or args.kwonlyargs or args.vararg or args.kwarg:
+        todo += [d for d in args.kw_defaults if d is not None]
+        every = [*args.posonlyargs, *args.args, *args.kwonlyargs]
+        every += [a for a in (args.vararg, args.kwarg) if a is not None]
+    names = inner.local_names
     for arg in every:
-        inner.local_names.add(arg.arg)
+        names.add(arg.arg)
         if arg.annotation is not None:
             inner.annotated.append((arg.annotation, arg.arg))
             _count_stores(index, arg.annotation)
-    returns = getattr(node, "returns", None)
-    if returns is not None:
-        _count_stores(index, returns)
-    if isinstance(node, ast.Lambda):
-        todo += [outer, node.body]
+    if kind is ast.Lambda:
+        todo += [outer, node.body]  # type: ignore[attr-defined]
         return id(node), cls, None
-    index.scopes[owner].local_names.add(node.name)
+    if node.returns is not None:  # type: ignore[attr-defined]
+        _count_stores(index, node.returns)  # type: ignore[attr-defined]
+    index.scopes[owner].local_names.add(node.name)  # type: ignore[attr-defined]
     is_method = owner in index.class_scopes
-    todo += [*node.decorator_list, outer, *node.body]
+    todo += [*node.decorator_list, outer, *node.body]  # type: ignore[attr-defined]
     return id(node), cls, args.args[0].arg if is_method and args.args else None
+
+
+_COMPREHENSION_KINDS = frozenset(COMPREHENSIONS)
+_FUNCTION_KINDS = frozenset({*FUNCTIONS, ast.Lambda})
 
 
 def _count_stores(index: FileIndex, annotation: ast.expr) -> None:

@@ -33,13 +33,9 @@ or refinement enters a file only through
   summaries (which the file's analysis would build too);
 - a declaration without a value (`x: float` in a body), whose read is RF301.
 
-RF301 needs no annotation, so `_may_be_unbound` runs a plain definite-assignment
-pass over every scope, more pessimistic than the analysis (every branch may run or
-not, loops may run zero times, a `try` body may stop anywhere, `with` bodies as
-written): a read of a local that is not assigned on every syntactic path, a name
-that no enclosing scope, the module or the builtins bind, or a `del`eted name sends
-the file to the analysis. The analysis can only prune paths (facts, dead code), so
-it never finds an unbound read this pass misses.
+RF301 needs no annotation, so `unbound.may_be_unbound` runs a plain
+definite-assignment pass over every scope, more pessimistic than the analysis:
+a read that may be unbound there sends the file to the analysis.
 
 RF902 (the work budget) is a warning about the analysis, not a finding; files
 large enough to come near it (over a 16th of the budget in bytes, 125 kB) are
@@ -54,14 +50,13 @@ programs: a file this module skips gets no diagnostic from the full analysis.
 from __future__ import annotations
 
 import ast
-import builtins
 import functools
 import os
 import re
 import unicodedata
 import weakref
-from collections.abc import Iterable, Sequence
-from typing import Any, cast
+from collections.abc import Iterable
+from typing import Any
 
 from robotfix import budget
 from robotfix.analysis.constants import SCALARS
@@ -71,8 +66,9 @@ from robotfix.analysis.imported import (
     Resolver,
     absolute,
 )
+from robotfix.analysis.unbound import COMPOUND, may_be_unbound
 from robotfix.analysis.values import Value
-from robotfix.astwalk import FIELDS, TRIES, children, fields
+from robotfix.astwalk import FIELDS, fields
 from robotfix.ros import api_model, frames_model
 from robotfix.ros.catalog import MsgCatalog
 from robotfix.stubs.load import StubSet, defined_names
@@ -82,11 +78,6 @@ PARAMETER_WORDS = ("_param", "paramlistener")
 MARKERS = ("Annotated", "Unit(", "Frame(", "Tag(")
 INTERFACE_PARTS = frozenset({"msg", "srv", "action"})
 BYTES_PER_STEP_BUDGET = 16  # a file over FILE_STEPS / 16 bytes is analysed: RF902
-# as the interpreter resolves names (`analysis/interpreter.py`)
-BUILTINS = frozenset(dir(builtins)) | {"__file__", "__name__", "__doc__", "__spec__"}
-FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef)
-COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
-DEFINITIONS = (*FUNCTIONS, ast.ClassDef)  # built once: tested at every node
 
 ENABLED = os.environ.get("ROBOTFIX_NO_SKIP", "") == ""  # off: analyse every file
 
@@ -149,7 +140,7 @@ def skippable(
     # would build too (the summaries of the modules it imports)
     if resolver is not None and _tree_relevant(resolver, imported):
         return False
-    return not _may_be_unbound(tree, frozenset(declared), ":=" in text)
+    return not may_be_unbound(tree, frozenset(declared), ":=" in text)
 
 
 def _names_one(tree: ast.Module, vocabulary: frozenset[str]) -> bool:
@@ -214,7 +205,7 @@ def _statements(body: list[ast.stmt]) -> Iterable[ast.stmt]:
     while todo:
         stmt = todo.pop()
         yield stmt
-        if type(stmt) not in _COMPOUND:  # most statements hold none
+        if type(stmt) not in COMPOUND:  # most statements hold none
             continue
         for field in ("body", "orelse", "finalbody"):
             todo.extend(reversed(getattr(stmt, field, ())))
@@ -222,13 +213,6 @@ def _statements(body: list[ast.stmt]) -> Iterable[ast.stmt]:
             todo.extend(reversed(handler.body))
         for case in getattr(stmt, "cases", ()):
             todo.extend(reversed(case.body))
-
-
-# the statements that hold statements (`_statements`)
-_COMPOUND = frozenset(
-    {ast.If, ast.For, ast.AsyncFor, ast.While, ast.With, ast.AsyncWith, ast.Try}
-    | {ast.Match, ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, *TRIES}
-)
 
 
 def _interface(dotted: str, catalog: MsgCatalog) -> bool:
@@ -340,402 +324,3 @@ def carries(member: object, depth: int = 0) -> bool:
             and member.choices is None
         )
     return True  # anything newer
-
-
-# -- RF301: a definite-assignment pass, more pessimistic than the analysis ------
-Bound = frozenset[str] | None  # None: this point is not reached
-
-
-class _RiskError(Exception):
-    """A read the analysis might report as unbound."""
-
-
-def _may_be_unbound(
-    tree: ast.Module, declared: frozenset[str], walrus: bool = True
-) -> bool:
-    """`walrus`: whether the text may hold `:=` (without, an expression binds
-    nothing of its scope, and only statements are searched for bindings)."""
-    try:
-        _Scope(tree, None, declared, walrus).run(tree.body, frozenset())
-    except (_RiskError, RecursionError):
-        return True
-    return False
-
-
-def _meet(a: Bound, b: Bound) -> Bound:
-    if a is None:
-        return b
-    if b is None:
-        return a
-    return a & b
-
-
-class _Scope:
-    """One module, class, function, lambda or comprehension."""
-
-    def __init__(
-        self,
-        node: ast.AST,
-        parent: _Scope | None,
-        declared: frozenset[str] = frozenset(),
-        walrus: bool = True,
-    ) -> None:
-        self.node = node
-        self.parent = parent
-        self.is_class = isinstance(node, ast.ClassDef)
-        self.walrus: bool = parent.walrus if parent is not None else walrus
-        self.locals, self.declared = _binders(node, self.walrus)
-        # the module scope (None: this one); not `self`, which would make a
-        # reference cycle that keeps the file's tree alive until a collection
-        self._module = parent.module if parent is not None else None
-        if parent is None:
-            self.globals = self.locals | declared  # bound by `global x; x = ...`
-
-    @property
-    def module(self) -> _Scope:
-        return self._module or self
-
-    # -- names ---------------------------------------------------------------
-    def read(self, name: str, bound: frozenset[str]) -> None:
-        if isinstance(self.node, COMPREHENSIONS) and name not in self.locals:
-            assert self.parent is not None
-            self.parent.read(name, bound)  # `bound` holds the enclosing sure names
-            return
-        if name in self.locals:
-            if name not in bound:
-                raise _RiskError
-            return
-        outer = self.parent
-        while outer is not None:
-            if outer.parent is None:
-                break
-            if not outer.is_class and name in outer.locals:
-                return
-            outer = outer.parent
-        if name in self.module.globals or name in BUILTINS:
-            return
-        raise _RiskError
-
-    # -- expressions ---------------------------------------------------------
-    def expr(self, node: ast.AST | None, bound: frozenset[str]) -> frozenset[str]:
-        """Check the reads of an expression in order; the names it binds (`:=`)."""
-        if node is None:
-            return bound
-        kind = type(node)
-        if kind is ast.Name:
-            if type(node.ctx) is ast.Load:  # type: ignore[attr-defined]
-                self.read(node.id, bound)  # type: ignore[attr-defined]
-            return bound
-        if kind is ast.Constant:
-            return bound
-        if kind is ast.Attribute:  # its one child
-            return self.expr(node.value, bound)  # type: ignore[attr-defined]
-        if kind is ast.Call:  # its children in order, a keyword's value for it
-            bound = self.expr(node.func, bound)  # type: ignore[attr-defined]
-            for argument in node.args:  # type: ignore[attr-defined]
-                bound = self.expr(argument, bound)
-            for keyword in node.keywords:  # type: ignore[attr-defined]
-                bound = self.expr(keyword.value, bound)
-            return bound
-        if isinstance(node, ast.NamedExpr):
-            bound = self.expr(node.value, bound)
-            return bound | {node.target.id}
-        if isinstance(node, ast.Lambda):
-            bound = self.defaults(node.args, bound)
-            inner = _Scope(node, self)
-            inner.expr(node.body, _params(node.args))
-            return bound
-        if isinstance(node, COMPREHENSIONS):
-            return self.comprehension(node, bound)
-        if isinstance(node, (ast.BoolOp, ast.IfExp)):
-            # operands after the first may not run: names they bind are not sure
-            first, *rest = (
-                node.values
-                if isinstance(node, ast.BoolOp)
-                else [node.test, node.body, node.orelse]
-            )
-            after = self.expr(first, bound)
-            for other in rest:
-                self.expr(other, after)
-            return after
-        for child in children(node):
-            bound = self.expr(child, bound)
-        return bound
-
-    def comprehension(self, node: ast.AST, bound: frozenset[str]) -> frozenset[str]:
-        """Runs at once, in order: the first iterable here, the rest inside, where
-        the names of the enclosing scope are read as they are bound here."""
-        if any(isinstance(sub, ast.NamedExpr) for sub in ast.walk(node)):
-            raise _RiskError  # `:=` in a comprehension binds outside it: not followed
-        generators: list[ast.comprehension] = node.generators  # type: ignore[attr-defined]
-        inner = _Scope(node, self)
-        inside = self.expr(generators[0].iter, bound)
-        for i, gen in enumerate(generators):
-            if i:
-                inside = inner.expr(gen.iter, inside)
-            inside = inside | _stores(gen.target)
-            for test in gen.ifs:
-                inside = inner.expr(test, inside)
-        for part in ("elt", "key", "value"):
-            if hasattr(node, part):
-                inner.expr(getattr(node, part), inside)
-        return bound
-
-    def defaults(self, args: ast.arguments, bound: frozenset[str]) -> frozenset[str]:
-        for default in [*args.defaults, *args.kw_defaults]:
-            bound = self.expr(default, bound)
-        return bound
-
-    # -- statements ----------------------------------------------------------
-    def run(self, body: Sequence[ast.stmt], bound: Bound) -> Bound:
-        for stmt in body:
-            if bound is None:
-                return None
-            bound = self.stmt(stmt, bound)
-        return bound
-
-    def stmt(self, node: ast.stmt, bound: frozenset[str]) -> Bound:
-        if isinstance(node, (ast.Return, ast.Raise)):
-            for child in ast.iter_child_nodes(node):
-                self.expr(child, bound)
-            return None
-        if isinstance(node, (ast.Break, ast.Continue)):
-            return None
-        if isinstance(node, (ast.Pass, ast.Global, ast.Nonlocal)):
-            return bound
-        if isinstance(node, (ast.Import, ast.ImportFrom)):
-            return bound | {
-                a.asname or a.name.partition(".")[0]
-                for a in node.names
-                if a.name != "*"
-            }
-        if isinstance(node, DEFINITIONS):
-            for decorator in node.decorator_list:
-                bound = self.expr(decorator, bound)
-            if isinstance(node, ast.ClassDef):
-                for base in [*node.bases, *node.keywords]:
-                    bound = self.expr(base, bound)
-                _Scope(node, self).run(node.body, frozenset())
-            else:
-                bound = self.defaults(node.args, bound)
-                _Scope(node, self).run(node.body, _params(node.args))
-            return bound | {node.name}
-        if isinstance(node, ast.Assign):
-            bound = self.expr(node.value, bound)
-            for target in node.targets:
-                bound = self.target(target, bound)
-            return bound
-        if isinstance(node, ast.AnnAssign):
-            if node.value is None:
-                raise _RiskError
-            bound = self.expr(node.value, bound)
-            return self.target(node.target, bound)
-        if isinstance(node, ast.AugAssign):
-            bound = self.expr(node.value, bound)
-            if isinstance(node.target, ast.Name):
-                self.read(node.target.id, bound)
-                return bound
-            return self.target(node.target, bound)
-        if isinstance(node, ast.Delete):
-            for target in node.targets:
-                if not isinstance(target, ast.Name):
-                    bound = self.expr(target, bound)
-                    continue
-                self.read(target.id, bound)
-                bound = bound - {target.id}
-            return bound
-        if isinstance(node, ast.Expr):
-            return self.expr(node.value, bound)
-        if isinstance(node, ast.If):
-            bound = self.expr(node.test, bound)
-            return _meet(self.run(node.body, bound), self.run(node.orelse, bound))
-        if isinstance(node, (ast.For, ast.AsyncFor)):
-            bound = self.expr(node.iter, bound)
-            self.run(node.body, self.target(node.target, bound))
-            self.run(node.orelse, bound)
-            return bound  # zero iterations, or a `break` before the `else`
-        if isinstance(node, ast.While):
-            bound = self.expr(node.test, bound)
-            self.run(node.body, bound)
-            self.run(node.orelse, bound)
-            return bound
-        if isinstance(node, (ast.With, ast.AsyncWith)):
-            for item in node.items:
-                bound = self.expr(item.context_expr, bound)
-                if item.optional_vars is not None:
-                    bound = self.target(item.optional_vars, bound)
-            return self.run(node.body, bound)
-        if isinstance(node, TRIES):
-            tried = cast(ast.Try, node)  # or an `ast.TryStar`: the same fields
-            # a handler may start anywhere in the body: only what was sure before
-            after = self.run(tried.orelse, self.run(tried.body, bound))
-            for handler in tried.handlers:
-                start = bound
-                if handler.type is not None:
-                    start = self.expr(handler.type, start)
-                if handler.name:
-                    start = start | {handler.name}
-                end = self.run(handler.body, start)
-                if end is not None and handler.name:
-                    end = end - {handler.name}  # Python deletes it
-                after = _meet(after, end)
-            final = self.run(tried.finalbody, bound)
-            if after is None or final is None:
-                return None
-            return after | final
-        if isinstance(node, ast.Assert):
-            bound = self.expr(node.test, bound)
-            self.expr(node.msg, bound)
-            return bound
-        raise _RiskError  # match, and anything newer: not followed
-
-    def target(self, node: ast.expr, bound: frozenset[str]) -> frozenset[str]:
-        if isinstance(node, ast.Name):
-            return bound | {node.id}
-        if isinstance(node, (ast.Tuple, ast.List)):
-            for element in node.elts:
-                bound = self.target(element, bound)
-            return bound
-        if isinstance(node, ast.Starred):
-            return self.target(node.value, bound)
-        return self.expr(node, bound)  # obj.x, obj[i]: reads obj (and i)
-
-
-def _params(args: ast.arguments) -> frozenset[str]:
-    every = [*args.posonlyargs, *args.args, *args.kwonlyargs]
-    every += [a for a in (args.vararg, args.kwarg) if a is not None]
-    return frozenset(a.arg for a in every)
-
-
-def _binders(
-    node: ast.AST, walrus: bool = True
-) -> tuple[frozenset[str], frozenset[str]]:
-    """The names a scope binds (its locals, as Python decides them), and those it
-    declares `global` or `nonlocal`: a walk of the nodes of its body, not of the
-    scopes nested in it (their names, decorators and defaults are the outer
-    scope's; the first iterable of a comprehension too). Without `walrus` (no
-    `:=` in the text) only the statements and their targets are walked: no other
-    expression stores a name of this scope (a comprehension's target is its
-    own)."""
-    bound: set[str] = set()
-    declared: set[str] = set()
-    if isinstance(node, (*FUNCTIONS, ast.Lambda)):
-        bound |= _params(node.args)
-    if isinstance(node, COMPREHENSIONS):
-        for gen in node.generators:
-            bound |= _stores(gen.target)
-        return frozenset(bound), frozenset()
-    if isinstance(node, ast.Lambda):
-        todo: list[ast.AST] = [node.body] if walrus else []
-    elif walrus:
-        todo = list(getattr(node, "body", []))
-    else:
-        todo = _statement_binders(node.body, bound, declared)  # type: ignore[attr-defined]
-    pop, extend = todo.pop, todo.extend
-    while todo:
-        child = pop()
-        kind = type(child)
-        if kind is ast.Name:
-            if type(child.ctx) is not ast.Load:  # type: ignore[attr-defined]
-                bound.add(child.id)  # type: ignore[attr-defined]
-            continue
-        if kind is ast.Constant:
-            continue
-        if kind in _DEFINITION_KINDS:
-            bound.add(child.name)  # type: ignore[attr-defined]
-            extend(child.decorator_list)  # type: ignore[attr-defined]
-            if kind is ast.ClassDef:
-                extend(child.bases)  # type: ignore[attr-defined]
-                extend(child.keywords)  # type: ignore[attr-defined]
-            else:
-                extend(child.args.defaults)  # type: ignore[attr-defined]
-                extend(d for d in child.args.kw_defaults if d is not None)  # type: ignore[attr-defined]
-            continue
-        if kind is ast.Lambda:
-            args = child.args  # type: ignore[attr-defined]
-            extend(d for d in [*args.defaults, *args.kw_defaults] if d)
-            continue
-        if kind in _COMPREHENSION_KINDS:
-            # `:=` inside binds here, but comprehensions with one are not followed
-            todo.append(child.generators[0].iter)  # type: ignore[attr-defined]
-            continue
-        if kind is ast.alias:
-            if child.name != "*":  # type: ignore[attr-defined]
-                bound.add(child.asname or child.name.partition(".")[0])  # type: ignore[attr-defined]
-            continue
-        if kind is ast.Global or kind is ast.Nonlocal:
-            declared.update(child.names)  # type: ignore[attr-defined]
-            continue
-        if kind is ast.ExceptHandler:
-            if child.name:  # type: ignore[attr-defined]
-                bound.add(child.name)  # type: ignore[attr-defined]
-        elif kind is ast.NamedExpr:
-            bound.add(child.target.id)  # type: ignore[attr-defined]
-        extend(children(child))
-    return frozenset(bound - declared), frozenset(declared)
-
-
-_DEFINITION_KINDS = frozenset(DEFINITIONS)
-_COMPREHENSION_KINDS = frozenset(COMPREHENSIONS)
-_TARGETS = {  # statement class -> its fields that hold targets
-    ast.Assign: "targets",
-    ast.AugAssign: "target",
-    ast.AnnAssign: "target",
-    ast.For: "target",
-    ast.AsyncFor: "target",
-    ast.Delete: "targets",
-}
-
-
-def _statement_binders(
-    body: list[ast.stmt], bound: set[str], declared: set[str]
-) -> list[ast.AST]:
-    """What a scope's statements bind by name (definitions, imports, handlers'
-    names) and declare; the targets they store to, for `_binders` to walk."""
-    targets: list[ast.AST] = []
-    todo: list[ast.AST] = list(body)
-    while todo:
-        stmt = todo.pop()
-        kind = type(stmt)
-        field = _TARGETS.get(kind)
-        if field is not None:
-            found = getattr(stmt, field)
-            if type(found) is list:
-                targets.extend(found)
-            else:
-                targets.append(found)
-        if kind in _DEFINITION_KINDS:
-            bound.add(stmt.name)  # type: ignore[attr-defined]
-            continue
-        if kind is ast.Import or kind is ast.ImportFrom:
-            for alias in stmt.names:  # type: ignore[attr-defined]
-                if alias.name != "*":
-                    bound.add(alias.asname or alias.name.partition(".")[0])
-            continue
-        if kind is ast.Global or kind is ast.Nonlocal:
-            declared.update(stmt.names)  # type: ignore[attr-defined]
-            continue
-        if kind is ast.With or kind is ast.AsyncWith:
-            for item in stmt.items:  # type: ignore[attr-defined]
-                if item.optional_vars is not None:
-                    targets.append(item.optional_vars)
-        if kind not in _COMPOUND:
-            continue
-        todo.extend(getattr(stmt, "body", ()))
-        todo.extend(getattr(stmt, "orelse", ()))
-        todo.extend(getattr(stmt, "finalbody", ()))
-        for handler in getattr(stmt, "handlers", ()):
-            if handler.name:
-                bound.add(handler.name)
-            todo.extend(handler.body)
-        for case in getattr(stmt, "cases", ()):
-            todo.extend(case.body)
-    return targets
-
-
-def _stores(node: ast.AST) -> set[str]:
-    return {
-        n.id
-        for n in ast.walk(node)
-        if isinstance(n, ast.Name) and not isinstance(n.ctx, ast.Load)
-    }
