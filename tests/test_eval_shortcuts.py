@@ -11,7 +11,7 @@ from typing import Any
 import pytest
 
 from robotfix import api
-from robotfix.analysis import binder, context, expressions
+from robotfix.analysis import binder, calls, context, expressions
 from robotfix.analysis.context import FileContext
 from robotfix.analysis.state import State
 from robotfix.analysis.values import Value
@@ -182,3 +182,51 @@ def test_only_a_bool_is_compared_with_true() -> None:
     for fact in [A.TRUE, A.Bool(True), *others, A.Bool(False), None]:
         state.assume(fact)
     assert state.facts == [*others, A.Bool(False)]
+
+
+def _all_cases() -> list[Path]:
+    return sorted(p for p in CASES.rglob("*.py"))
+
+
+def test_a_call_statement_makes_no_value_and_checks_the_same(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """A call whose statement drops its value (`self.get_logger().info(...)`)
+    gives no fresh unknown; its symbol's number is taken all the same. Every case
+    file checks the same when such calls make their unknown (the old path), and
+    the file's symbols are as many."""
+    cases = _all_cases()
+    assert len(cases) > 100
+    made: list[int] = []
+    contexts: list[FileContext] = []
+    fresh, numbered = FileContext.fresh, FileContext.fresh_id
+
+    def counting(self: FileContext, *args: Any, **kwargs: Any) -> Value:
+        made.append(1)
+        contexts.append(self)
+        return fresh(self, *args, **kwargs)
+
+    def noting(self: FileContext) -> int:
+        contexts.append(self)
+        return numbered(self)
+
+    monkeypatch.setattr(FileContext, "fresh", counting)
+    monkeypatch.setattr(FileContext, "fresh_id", noting)
+    lasts: list[int] = []
+
+    def check(path: Path) -> list[str]:
+        contexts.clear()
+        shown = _shown(api.check_source(path.read_text(), str(path)))
+        lasts.append(sum(c.last_id() for c in {id(c): c for c in contexts}.values()))
+        return shown
+
+    fast = [check(p) for p in cases]
+    fast_made, fast_lasts = len(made), lasts[:]
+    made.clear()
+    lasts.clear()
+    monkeypatch.setattr(calls, "_DROPPING", type(None))  # no statement drops
+    general = [check(p) for p in cases]
+    assert fast == general
+    assert fast_lasts == lasts
+    assert fast_made < len(made)
+    assert any(fast)

@@ -77,6 +77,10 @@ _CHANGE_NOTHING = frozenset({"msgclass", "builtin", "parameter_method"})
 _DISPATCHED = frozenset(
     {"msgclass", "parameter_method", "function", "method", "class", "builtin", "module"}
 )
+# The statement whose value nobody reads (a test swaps it to compare the paths),
+# and the value a call evaluated there gives: no symbol, never bound nor read.
+_DROPPING: type = ast.Expr
+_DROPPED = Value("unknown")
 
 
 class CallEvaluator(BuiltinEvaluator):
@@ -116,7 +120,7 @@ class CallEvaluator(BuiltinEvaluator):
             if method in CONTRACTED and self.ctx.obligations:
                 holder = self._holder(node.func.value)  # type: ignore[attr-defined]
                 self._contracts(values, state, holder)
-            return self.unknown(node)
+            return self._call_value(node)
         if method in SEQUENCE_METHODS:
             assert isinstance(func, ast.Attribute)
             receiver = self.receiver(func.value, state)
@@ -246,14 +250,23 @@ class CallEvaluator(BuiltinEvaluator):
                 return moved
         if found is not None:
             return found
-        value = self.unknown(node)
-        if (
-            kind == "module"
-            and isinstance(value.term, A.Sym)
-            and _literal_arguments(node)
-        ):  # `platform.system()` twice: the same answer, for all the analysis knows
-            self.ctx.first_read(("call", self.ctx.source.segment(node)), value.term)
-        return value
+        if kind == "module" and _literal_arguments(node):
+            # `platform.system()` twice: the same answer, for all the analysis knows
+            value = self.unknown(node)
+            self.ctx.first_read(("call", self.ctx.source.segment(node)), value.term)  # type: ignore[arg-type]
+            return value
+        return self._call_value(node)
+
+    def _call_value(self, node: ast.Call) -> Value:
+        """A fresh unknown for the value of a call no one knows; none for a call
+        statement's (`self.get_logger().info(...)`, a quarter of the calls), whose
+        value nobody reads: its symbol's number is taken all the same, so every
+        later symbol keeps its number."""
+        site = self.site
+        if type(site) is _DROPPING and site.value is node:  # type: ignore[attr-defined]
+            self.ctx.fresh_id()
+            return _DROPPED
+        return self.ctx.fresh("unknown", node)
 
     def imported_call(
         self,
