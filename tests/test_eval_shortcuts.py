@@ -4,6 +4,7 @@ without `__init__`) answer what the general path answers."""
 
 from __future__ import annotations
 
+import ast
 from fractions import Fraction
 from pathlib import Path
 from typing import Any
@@ -230,3 +231,34 @@ def test_a_call_statement_makes_no_value_and_checks_the_same(
     assert fast_lasts == lasts
     assert fast_made < len(made)
     assert any(fast)
+
+
+def test_a_call_hands_on_the_method_name_its_node_has(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """`eval_Call` reads the callee's node once and hands its method name on:
+    `_dispatch`, `_forget_after_call` and `library_call` are given what
+    `node.func.attr` is (None for a callee that is no attribute), and the
+    argument nodes `node.args` are."""
+    seen: list[str | None] = []
+    dispatch = calls.CallEvaluator._dispatch
+    forget = calls.CallEvaluator._forget_after_call
+
+    def _attr(node: Any) -> str | None:
+        func = node.func
+        return func.attr if isinstance(func, ast.Attribute) else None
+
+    def checked_dispatch(self: Any, callee: Any, node: Any, *rest: Any) -> Any:
+        assert rest[-1] == _attr(node)
+        seen.append(rest[-1])
+        return dispatch(self, callee, node, *rest)
+
+    def checked_forget(self: Any, node: Any, given: Any, *rest: Any) -> Any:
+        assert given is node.args and rest[-1] == _attr(node)
+        return forget(self, node, given, *rest)
+
+    monkeypatch.setattr(calls.CallEvaluator, "_dispatch", checked_dispatch)
+    monkeypatch.setattr(calls.CallEvaluator, "_forget_after_call", checked_forget)
+    for path in sorted((CASES / "nodes").glob("*.py")):
+        api.check_source(path.read_text(), str(path))
+    assert None in seen and any(seen)

@@ -336,7 +336,7 @@ class Binder(CallEvaluator):
 
     # -- binding -------------------------------------------------------------
     def bind(self, target: ast.expr, value: Value, state: State) -> None:
-        if isinstance(target, ast.Name):
+        if type(target) is ast.Name:
             scope = self.scope  # (most bodies declare nothing: no call then)
             declares = scope.decls or scope.global_names
             decl = self.decl_for(target.id) if declares else None
