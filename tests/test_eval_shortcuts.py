@@ -262,3 +262,12 @@ def test_a_call_hands_on_the_method_name_its_node_has(
     for path in sorted((CASES / "nodes").glob("*.py")):
         api.check_source(path.read_text(), str(path))
     assert None in seen and any(seen)
+
+
+def test_the_site_before_the_first_statement_is_shared_and_never_changed() -> None:
+    """Every evaluator starts at one shared `ast.Pass()` (not one made per body
+    run): checking the cases writes nothing into it."""
+    fresh = vars(ast.Pass())
+    for path in sorted((CASES / "nodes").glob("*.py")):
+        api.check_source(path.read_text(), str(path))
+    assert vars(expressions._NO_SITE) == fresh

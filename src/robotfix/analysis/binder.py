@@ -80,7 +80,7 @@ class Binder(CallEvaluator):
         function: Function | None = None,
         parts: Collaborators | None = None,
     ) -> None:
-        super().__init__(ctx, program, parts)
+        CallEvaluator.__init__(self, ctx, program, parts)  # (named: see calls.py)
         self.scope = scope
         self.statics = statics
         self.function = function
@@ -622,7 +622,8 @@ class Binder(CallEvaluator):
         every += [a for a in (args.vararg, args.kwarg) if a is not None]
         arriving = self._arriving(every)
         for index, arg in enumerate(every):
-            decl = self.scope.decls.get(arg.arg)
+            name = arg.arg  # (read once: an AST node's attribute costs a lookup)
+            decl = self.scope.decls.get(name)
             annotation = getattr(arg, "annotation", None)
             msg_type = (
                 self.ctx.msg_type_of(annotation) if annotation is not None else None
@@ -631,33 +632,33 @@ class Binder(CallEvaluator):
                 msg_type = decl.msg_type
             if index == 0 and function.is_method:
                 value = Value("instance", name=function.class_name or "")
-            elif arg.arg in arriving:
-                value = arriving[arg.arg](state)
+            elif name in arriving:
+                value = arriving[name](state)
                 if decl is not None and decl.base == "msg" and value.ref is not None:
                     # what the refinement says holds of what arrives: the
                     # senders prove it (contracts across nodes)
                     lookup = self.refinement_lookup(decl, state)
-                    rules = self.fields.message_rules(decl, arg.arg, lookup)
-                    self.fields.assume_rules(state, value.ref, rules, arg.arg)
+                    rules = self.fields.message_rules(decl, name, lookup)
+                    self.fields.assume_rules(state, value.ref, rules, name)
             elif decl is not None and decl.base == "msg":
                 lookup = self.refinement_lookup(decl, state)
-                value = self.refined.assumed(state, arg.arg, decl, lookup)
+                value = self.refined.assumed(state, name, decl, lookup)
             elif msg_type is not None:
                 value = heap.new_message(
-                    self.ctx, state, msg_type, "received", label=arg.arg
+                    self.ctx, state, msg_type, "received", label=name
                 )
             elif decl is not None:
                 lookup = self.refinement_lookup(decl, state)
-                value = self.refined.assumed(state, arg.arg, decl, lookup)
+                value = self.refined.assumed(state, name, decl, lookup)
             elif annotation is not None and (
-                typed := self.program.types.parameter(function, arg.arg)
+                typed := self.program.types.parameter(function, name)
             ):  # `driver: MotorDriver`, `scans: list[LaserScan]`
-                value = self.lookups.typed(typed, arg, state, arg.arg)
+                value = self.lookups.typed(typed, arg, state, name)
             else:
                 value = self.ctx.fresh(
-                    "unknown", f"parameter `{arg.arg}` of {function.name}()"
+                    "unknown", f"parameter `{name}` of {function.name}()"
                 )
-            state.env[arg.arg] = value
+            state.env[name] = value
             self.lists_seen = self.lists_seen or value.kind == "list"
             if self.ctx.hovers is not None:  # the editor asks: else no span
                 self.note_hover(

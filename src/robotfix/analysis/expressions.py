@@ -81,6 +81,8 @@ _ZEROS = {False: A.Num(Fraction(0), False), True: A.Num(Fraction(0), True)}
 _EMPTY = A.Str("")
 _UNREAD = object()  # `self.x` not read nor stored on this path yet
 _BOOLS = {False: Value("bool", A.Bool(False)), True: Value("bool", A.Bool(True))}
+# the site of an evaluator before its first statement (never changed: one for all)
+_NO_SITE = ast.Pass()
 
 
 class ExpressionEvaluator:
@@ -97,7 +99,7 @@ class ExpressionEvaluator:
         self.refined = parts.refined
         self.lookups = parts.lookups
         self.params = parts.params
-        self.site: ast.AST = ast.Pass()  # the statement being interpreted
+        self.site: ast.AST = _NO_SITE  # the statement being interpreted
         self.lists_seen = False  # whether a list was stored in a name or attribute
         # the symbol each attribute read last gave (`decisions.py`: two tests of
         # `scan.range_min` read one tracked value)
