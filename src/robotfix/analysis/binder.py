@@ -358,28 +358,28 @@ class Binder(CallEvaluator):
                     self.scope.kind, self.scope.name, target.id, bound
                 )
         elif isinstance(target, ast.Attribute):
-            base = self.eval(target.value, state)
-            if base.kind == "instance" and isinstance(target.value, ast.Name):
-                var = target.value.id
-                self.bind_attribute(base, var, target.attr, value, state)
-                stored = state.env[f"{var}.{target.attr}"]
+            owner, attr = target.value, target.attr  # (each read once: see calls.py)
+            base = self.eval(owner, state)
+            if base.kind == "instance" and type(owner) is ast.Name:
+                var = owner.id
+                self.bind_attribute(base, var, attr, value, state)
+                stored = state.env[f"{var}.{attr}"]
                 assert isinstance(stored, Value)
                 if self.ctx.hovers is not None:
                     self.note_hover(
                         target,
                         lambda: self.lookups.describe_attribute(
-                            base, var, target.attr, stored, state
+                            base, var, attr, stored, state
                         ),
                     )
             elif base.kind == "msg" and base.ref in state.heap:
                 ref = base.ref
-                self.note_hover(
-                    target, lambda: hover.field(self.ctx, state, ref, target.attr)
-                )
-                text = self.ctx.source.segment(target) or target.attr
-                self.fields.write_field(
-                    state, base.ref, target.attr, value, self.site, text
-                )
+                if self.ctx.hovers is not None:  # the editor asks: else no closure
+                    self.note_hover(
+                        target, lambda: hover.field(self.ctx, state, ref, attr)
+                    )
+                text = self.ctx.source.segment(target) or attr
+                self.fields.write_field(state, ref, attr, value, self.site, text)
             else:
                 state.changed(base, firm=True)
         elif isinstance(target, (ast.Tuple, ast.List)):
