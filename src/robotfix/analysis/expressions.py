@@ -83,6 +83,7 @@ _UNREAD = object()  # `self.x` not read nor stored on this path yet
 _BOOLS = {False: Value("bool", A.Bool(False)), True: Value("bool", A.Bool(True))}
 # the site of an evaluator before its first statement (never changed: one for all)
 _NO_SITE = ast.Pass()
+_ATTRIBUTE = ast.Attribute  # (`eval` tests every node: no module attribute read)
 
 
 class ExpressionEvaluator:
@@ -172,7 +173,7 @@ class ExpressionEvaluator:
             return self.unknown(node)
         result: Value = method(self, node, state)
         term = result.term
-        if kind is ast.Attribute and type(term) is A.Sym:
+        if kind is _ATTRIBUTE and type(term) is A.Sym:
             self.attribute_terms[id(node)] = term.ident
         if (
             term is not None
