@@ -116,7 +116,7 @@ class CallEvaluator(BuiltinEvaluator):
         # (an AST node's attribute costs about 280 instructions a read, a slot's
         # 25: the callee's node and method name are read here once, and handed on)
         func = node.func
-        method = func.attr if type(func) is ast.Attribute else None  # type: ignore[attr-defined]
+        method = func.attr if type(func) is ast.Attribute else None
         given = node.args
         if method in LEAVING and given:
             self.eval(func.value, state)  # type: ignore[attr-defined]
@@ -317,7 +317,7 @@ class CallEvaluator(BuiltinEvaluator):
         names: list[ast.Name] = []
         for argument in given:  # (the call's argument nodes, `node.args`)
             if type(argument) is ast.Name:
-                names.append(argument)  # type: ignore[arg-type]
+                names.append(argument)
         if names:
             for lent_name in containers.lends(node):  # the callee may keep, change it
                 lent = env.get(lent_name)
