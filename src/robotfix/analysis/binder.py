@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import ast
 from collections.abc import Callable
+from functools import partial
 
 from robotfix.analysis import containers, decisions, frames, heap, hover, typeterms
 from robotfix.analysis.callfacts import CallFacts
@@ -347,9 +348,10 @@ class Binder(CallEvaluator):
                 )
             bound = state.env[target.id] = value.settled()
             self.lists_seen = self.lists_seen or value.kind == "list"
-            if self.ctx.hovers is not None:  # the editor asks: else no closure
+            if self.ctx.hovers is not None:  # the editor asks (`partial`, not a
+                # closure: what a closure captures is a cell made at every call)
                 self.note_hover(
-                    target, lambda: self.describe_name(target.id, bound, state)
+                    target, partial(self.describe_name, target.id, bound, state)
                 )
             if self.scope.kind == "module" or (
                 self.scope.kind == "class" and self.scope.parent is self.scope.module()
@@ -366,17 +368,15 @@ class Binder(CallEvaluator):
                 stored = state.env[f"{var}.{attr}"]
                 assert isinstance(stored, Value)
                 if self.ctx.hovers is not None:
+                    describe = self.lookups.describe_attribute
                     self.note_hover(
-                        target,
-                        lambda: self.lookups.describe_attribute(
-                            base, var, attr, stored, state
-                        ),
+                        target, partial(describe, base, var, attr, stored, state)
                     )
             elif base.kind == "msg" and base.ref in state.heap:
                 ref = base.ref
                 if self.ctx.hovers is not None:  # the editor asks: else no closure
                     self.note_hover(
-                        target, lambda: hover.field(self.ctx, state, ref, attr)
+                        target, partial(hover.field, self.ctx, state, ref, attr)
                     )
                 text = self.ctx.source.segment(target) or attr
                 self.fields.write_field(state, ref, attr, value, self.site, text)
@@ -386,9 +386,10 @@ class Binder(CallEvaluator):
             parts = value.elements if value.kind in SEQUENCES else None
             starred = any(isinstance(e, ast.Starred) for e in target.elts)
             if parts is None and value.kind in SEQUENCES and not starred:
-                parts = tuple(
-                    self.lookups.element(value, e, state) for e in target.elts
-                )
+                found = []  # (a loop: a generator would make cells at every bind)
+                for element in target.elts:
+                    found.append(self.lookups.element(value, element, state))
+                parts = tuple(found)
             if parts is None or len(parts) != len(target.elts):
                 parts = None
             for index, element in enumerate(target.elts):
@@ -663,7 +664,7 @@ class Binder(CallEvaluator):
             if self.ctx.hovers is not None:  # the editor asks: else no span
                 self.note_hover(
                     self._name_span(arg),
-                    lambda: self.describe_name(arg.arg, value, state),  # noqa: B023
+                    partial(self.describe_name, name, value, state),
                 )
 
     def _name_span(self, arg: ast.arg) -> Span:

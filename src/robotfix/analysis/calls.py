@@ -120,7 +120,9 @@ class CallEvaluator(BuiltinEvaluator):
         given = node.args
         if method in LEAVING and given:
             self.eval(func.value, state)  # type: ignore[attr-defined]
-            values = [self.eval(a, state) for a in given]
+            values = []  # (loops: a comprehension makes cells at every call)
+            for argument in given:
+                values.append(self.eval(argument, state))
             self._leaving(values, state)
             if method in CONTRACTED and self.ctx.obligations:
                 holder = self._holder(func.value)  # type: ignore[attr-defined]
@@ -129,8 +131,12 @@ class CallEvaluator(BuiltinEvaluator):
         if method in SEQUENCE_METHODS:
             assert isinstance(func, ast.Attribute)
             receiver = self.receiver(func.value, state)
-            args = [self.eval(a, state) for a in given]
-            kwargs = {k.arg: self.eval(k.value, state) for k in node.keywords}
+            args = []
+            for argument in given:
+                args.append(self.eval(argument, state))
+            kwargs = {}
+            for keyword in node.keywords:
+                kwargs[keyword.arg] = self.eval(keyword.value, state)
             if receiver.kind in SEQUENCES and not any(
                 isinstance(a, ast.Starred) for a in given
             ):
@@ -369,8 +375,9 @@ class CallEvaluator(BuiltinEvaluator):
                     state.assume(self.truthy(bound, node, state))
             elif bound.kind == "instance":
                 prefix = name.id + "."
-                for key in [k for k in env if k.startswith(prefix)]:
-                    del env[key]
+                for key in list(env):  # (no comprehension: its cell at every call)
+                    if key.startswith(prefix):
+                        del env[key]
 
     def only_reads(self, call: ast.Call, arg: ast.expr) -> bool:
         """Whether `call` only reads the argument `arg` (the interpreter knows)."""

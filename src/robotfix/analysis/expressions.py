@@ -264,19 +264,15 @@ class ExpressionEvaluator:
             text = self.ctx.source.segment(node) or attr
             ref = base.ref
             if self.ctx.hovers is not None:  # the editor asks: else no closure
-                self.note_hover(node, lambda: hover.field(self.ctx, state, ref, attr))
+                self.note_hover(node, partial(hover.field, self.ctx, state, ref, attr))
             value = self.fields.read_field(state, ref, attr, self.site, text)
             return frames.framed_read(state, ref, attr, value)
         if kind in ("instance", "goal_handle") and type(owner) is ast.Name:
             var = owner.id
             value = self.instance_attribute(base, var, node, state)
             if self.ctx.hovers is not None:
-                self.note_hover(
-                    node,
-                    lambda: self.lookups.describe_attribute(
-                        base, var, attr, value, state
-                    ),
-                )
+                describe = self.lookups.describe_attribute  # (no closure: no cells)
+                self.note_hover(node, partial(describe, base, var, attr, value, state))
             return value
         found = self.member(base, attr, state)
         if found is not None:
