@@ -271,3 +271,23 @@ def test_the_site_before_the_first_statement_is_shared_and_never_changed() -> No
     for path in sorted((CASES / "nodes").glob("*.py")):
         api.check_source(path.read_text(), str(path))
     assert vars(expressions._NO_SITE) == fresh
+
+
+def test_the_hot_evaluator_functions_make_no_cell_per_call() -> None:
+    """A local that a lambda, comprehension or generator captures is a cell made
+    at every call of its function (3.11), the lambda made or not: the most called
+    evaluator functions capture nothing (their hovers are `partial`s)."""
+    from robotfix.analysis.lookups import Lookups
+
+    hot = [
+        binder.Binder.bind,
+        binder.Binder.bind_parameters,
+        expressions.ExpressionEvaluator.eval,
+        expressions.ExpressionEvaluator.eval_Attribute,
+        expressions.ExpressionEvaluator.instance_attribute,
+        calls.CallEvaluator.eval_Call,
+        calls.CallEvaluator._dispatch,
+        calls.CallEvaluator._forget_after_call,
+        Lookups.typed,
+    ]
+    assert [f.__name__ for f in hot if f.__code__.co_cellvars] == []
