@@ -19,6 +19,7 @@ from robotfix.analysis.state import State
 from robotfix.analysis.values import (
     MESSAGE_LIKE,
     MUTABLE,
+    NONE,
     SEQUENCES,
     Value,
 )
@@ -128,34 +129,29 @@ class CallEvaluator(BuiltinEvaluator):
                 holder = self._holder(func.value)  # type: ignore[attr-defined]
                 self._contracts(values, state, holder)
             return self._call_value(node)
-        if method in SEQUENCE_METHODS:
+        # a list's method: its receiver, then the arguments; else the callee first
+        sequence = method in SEQUENCE_METHODS
+        receiver = self.receiver(func.value, state) if sequence else None  # type: ignore[attr-defined]
+        callee = NONE if sequence else self.eval(func, state)
+        # (loops, not comprehensions: a call is met about once, and each
+        # comprehension costs a frame and makes cells)
+        args = []
+        for argument in given:
+            args.append(self.eval(argument, state))
+        kwargs = {}
+        for keyword in node.keywords:
+            kwargs[keyword.arg] = self.eval(keyword.value, state)
+        if receiver is not None:
             assert isinstance(func, ast.Attribute)
-            receiver = self.receiver(func.value, state)
-            args = []
-            for argument in given:
-                args.append(self.eval(argument, state))
-            kwargs = {}
-            for keyword in node.keywords:
-                kwargs[keyword.arg] = self.eval(keyword.value, state)
             if receiver.kind in SEQUENCES and not any(
                 isinstance(a, ast.Starred) for a in given
             ):
                 return self.sequence_method(func, receiver, args, node, state)
             callee = self.eval_Attribute(func, state, receiver)
-        else:
-            callee = self.eval(func, state)
-            # (loops, not comprehensions: a call is met about once, and each
-            # comprehension costs a frame)
-            args = []
-            for argument in given:
-                args.append(self.eval(argument, state))
-            kwargs = {}
-            for keyword in node.keywords:
-                kwargs[keyword.arg] = self.eval(keyword.value, state)
-            if callee.kind == "object" and callee.name in SENDING:
-                self._leaving(args, state)
-                if self.ctx.obligations and not imported.starred(node, kwargs):
-                    self._contracts(args, state, self._holder(func), kwargs)
+        elif callee.kind == "object" and callee.name in SENDING:
+            self._leaving(args, state)
+            if self.ctx.obligations and not imported.starred(node, kwargs):
+                self._contracts(args, state, self._holder(func), kwargs)
         result = self._dispatch(callee, node, args, kwargs, state, method)
         self._forget_after_call(node, given, args, kwargs, state, callee, method)
         return result
