@@ -4,6 +4,7 @@ without `__init__`) answer what the general path answers."""
 
 from __future__ import annotations
 
+import ast
 from fractions import Fraction
 from pathlib import Path
 from typing import Any
@@ -11,7 +12,7 @@ from typing import Any
 import pytest
 
 from robotfix import api
-from robotfix.analysis import binder, context, expressions
+from robotfix.analysis import binder, calls, context, expressions
 from robotfix.analysis.context import FileContext
 from robotfix.analysis.state import State
 from robotfix.analysis.values import Value
@@ -182,3 +183,111 @@ def test_only_a_bool_is_compared_with_true() -> None:
     for fact in [A.TRUE, A.Bool(True), *others, A.Bool(False), None]:
         state.assume(fact)
     assert state.facts == [*others, A.Bool(False)]
+
+
+def _all_cases() -> list[Path]:
+    return sorted(p for p in CASES.rglob("*.py"))
+
+
+def test_a_call_statement_makes_no_value_and_checks_the_same(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """A call whose statement drops its value (`self.get_logger().info(...)`)
+    gives no fresh unknown; its symbol's number is taken all the same. Every case
+    file checks the same when such calls make their unknown (the old path), and
+    the file's symbols are as many."""
+    cases = _all_cases()
+    assert len(cases) > 100
+    made: list[int] = []
+    contexts: list[FileContext] = []
+    fresh, numbered = FileContext.fresh, FileContext.fresh_id
+
+    def counting(self: FileContext, *args: Any, **kwargs: Any) -> Value:
+        made.append(1)
+        contexts.append(self)
+        return fresh(self, *args, **kwargs)
+
+    def noting(self: FileContext) -> int:
+        contexts.append(self)
+        return numbered(self)
+
+    monkeypatch.setattr(FileContext, "fresh", counting)
+    monkeypatch.setattr(FileContext, "fresh_id", noting)
+    lasts: list[int] = []
+
+    def check(path: Path) -> list[str]:
+        contexts.clear()
+        shown = _shown(api.check_source(path.read_text(), str(path)))
+        lasts.append(sum(c.last_id() for c in {id(c): c for c in contexts}.values()))
+        return shown
+
+    fast = [check(p) for p in cases]
+    fast_made, fast_lasts = len(made), lasts[:]
+    made.clear()
+    lasts.clear()
+    monkeypatch.setattr(calls, "_DROPPING", type(None))  # no statement drops
+    general = [check(p) for p in cases]
+    assert fast == general
+    assert fast_lasts == lasts
+    assert fast_made < len(made)
+    assert any(fast)
+
+
+def test_a_call_hands_on_the_method_name_its_node_has(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """`eval_Call` reads the callee's node once and hands its method name on:
+    `_dispatch`, `_forget_after_call` and `library_call` are given what
+    `node.func.attr` is (None for a callee that is no attribute), and the
+    argument nodes `node.args` are."""
+    seen: list[str | None] = []
+    dispatch = calls.CallEvaluator._dispatch
+    forget = calls.CallEvaluator._forget_after_call
+
+    def _attr(node: Any) -> str | None:
+        func = node.func
+        return func.attr if isinstance(func, ast.Attribute) else None
+
+    def checked_dispatch(self: Any, callee: Any, node: Any, *rest: Any) -> Any:
+        assert rest[-1] == _attr(node)
+        seen.append(rest[-1])
+        return dispatch(self, callee, node, *rest)
+
+    def checked_forget(self: Any, node: Any, given: Any, *rest: Any) -> Any:
+        assert given is node.args and rest[-1] == _attr(node)
+        return forget(self, node, given, *rest)
+
+    monkeypatch.setattr(calls.CallEvaluator, "_dispatch", checked_dispatch)
+    monkeypatch.setattr(calls.CallEvaluator, "_forget_after_call", checked_forget)
+    for path in sorted((CASES / "nodes").glob("*.py")):
+        api.check_source(path.read_text(), str(path))
+    assert None in seen and any(seen)
+
+
+def test_the_site_before_the_first_statement_is_shared_and_never_changed() -> None:
+    """Every evaluator starts at one shared `ast.Pass()` (not one made per body
+    run): checking the cases writes nothing into it."""
+    fresh = vars(ast.Pass())
+    for path in sorted((CASES / "nodes").glob("*.py")):
+        api.check_source(path.read_text(), str(path))
+    assert vars(expressions._NO_SITE) == fresh
+
+
+def test_the_hot_evaluator_functions_make_no_cell_per_call() -> None:
+    """A local that a lambda, comprehension or generator captures is a cell made
+    at every call of its function (3.11), the lambda made or not: the most called
+    evaluator functions capture nothing (their hovers are `partial`s)."""
+    from robotfix.analysis.lookups import Lookups
+
+    hot = [
+        binder.Binder.bind,
+        binder.Binder.bind_parameters,
+        expressions.ExpressionEvaluator.eval,
+        expressions.ExpressionEvaluator.eval_Attribute,
+        expressions.ExpressionEvaluator.instance_attribute,
+        calls.CallEvaluator.eval_Call,
+        calls.CallEvaluator._dispatch,
+        calls.CallEvaluator._forget_after_call,
+        Lookups.typed,
+    ]
+    assert [f.__name__ for f in hot if f.__code__.co_cellvars] == []

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import ast
 from collections.abc import Callable
+from functools import partial
 
 from robotfix.analysis import containers, decisions, frames, heap, hover, typeterms
 from robotfix.analysis.callfacts import CallFacts
@@ -80,7 +81,7 @@ class Binder(CallEvaluator):
         function: Function | None = None,
         parts: Collaborators | None = None,
     ) -> None:
-        super().__init__(ctx, program, parts)
+        CallEvaluator.__init__(self, ctx, program, parts)  # (named: see calls.py)
         self.scope = scope
         self.statics = statics
         self.function = function
@@ -336,7 +337,7 @@ class Binder(CallEvaluator):
 
     # -- binding -------------------------------------------------------------
     def bind(self, target: ast.expr, value: Value, state: State) -> None:
-        if isinstance(target, ast.Name):
+        if type(target) is ast.Name:
             scope = self.scope  # (most bodies declare nothing: no call then)
             declares = scope.decls or scope.global_names
             decl = self.decl_for(target.id) if declares else None
@@ -347,9 +348,10 @@ class Binder(CallEvaluator):
                 )
             bound = state.env[target.id] = value.settled()
             self.lists_seen = self.lists_seen or value.kind == "list"
-            if self.ctx.hovers is not None:  # the editor asks: else no closure
+            if self.ctx.hovers is not None:  # the editor asks (`partial`, not a
+                # closure: what a closure captures is a cell made at every call)
                 self.note_hover(
-                    target, lambda: self.describe_name(target.id, bound, state)
+                    target, partial(self.describe_name, target.id, bound, state)
                 )
             if self.scope.kind == "module" or (
                 self.scope.kind == "class" and self.scope.parent is self.scope.module()
@@ -358,37 +360,36 @@ class Binder(CallEvaluator):
                     self.scope.kind, self.scope.name, target.id, bound
                 )
         elif isinstance(target, ast.Attribute):
-            base = self.eval(target.value, state)
-            if base.kind == "instance" and isinstance(target.value, ast.Name):
-                var = target.value.id
-                self.bind_attribute(base, var, target.attr, value, state)
-                stored = state.env[f"{var}.{target.attr}"]
+            owner, attr = target.value, target.attr  # (each read once: see calls.py)
+            base = self.eval(owner, state)
+            if base.kind == "instance" and type(owner) is ast.Name:
+                var = owner.id
+                self.bind_attribute(base, var, attr, value, state)
+                stored = state.env[f"{var}.{attr}"]
                 assert isinstance(stored, Value)
                 if self.ctx.hovers is not None:
+                    describe = self.lookups.describe_attribute
                     self.note_hover(
-                        target,
-                        lambda: self.lookups.describe_attribute(
-                            base, var, target.attr, stored, state
-                        ),
+                        target, partial(describe, base, var, attr, stored, state)
                     )
             elif base.kind == "msg" and base.ref in state.heap:
                 ref = base.ref
-                self.note_hover(
-                    target, lambda: hover.field(self.ctx, state, ref, target.attr)
-                )
-                text = self.ctx.source.segment(target) or target.attr
-                self.fields.write_field(
-                    state, base.ref, target.attr, value, self.site, text
-                )
+                if self.ctx.hovers is not None:  # the editor asks: else no closure
+                    self.note_hover(
+                        target, partial(hover.field, self.ctx, state, ref, attr)
+                    )
+                text = self.ctx.source.segment(target) or attr
+                self.fields.write_field(state, ref, attr, value, self.site, text)
             else:
                 state.changed(base, firm=True)
         elif isinstance(target, (ast.Tuple, ast.List)):
             parts = value.elements if value.kind in SEQUENCES else None
             starred = any(isinstance(e, ast.Starred) for e in target.elts)
             if parts is None and value.kind in SEQUENCES and not starred:
-                parts = tuple(
-                    self.lookups.element(value, e, state) for e in target.elts
-                )
+                found = []  # (a loop: a generator would make cells at every bind)
+                for element in target.elts:
+                    found.append(self.lookups.element(value, element, state))
+                parts = tuple(found)
             if parts is None or len(parts) != len(target.elts):
                 parts = None
             for index, element in enumerate(target.elts):
@@ -622,7 +623,8 @@ class Binder(CallEvaluator):
         every += [a for a in (args.vararg, args.kwarg) if a is not None]
         arriving = self._arriving(every)
         for index, arg in enumerate(every):
-            decl = self.scope.decls.get(arg.arg)
+            name = arg.arg  # (read once: an AST node's attribute costs a lookup)
+            decl = self.scope.decls.get(name)
             annotation = getattr(arg, "annotation", None)
             msg_type = (
                 self.ctx.msg_type_of(annotation) if annotation is not None else None
@@ -631,38 +633,38 @@ class Binder(CallEvaluator):
                 msg_type = decl.msg_type
             if index == 0 and function.is_method:
                 value = Value("instance", name=function.class_name or "")
-            elif arg.arg in arriving:
-                value = arriving[arg.arg](state)
+            elif name in arriving:
+                value = arriving[name](state)
                 if decl is not None and decl.base == "msg" and value.ref is not None:
                     # what the refinement says holds of what arrives: the
                     # senders prove it (contracts across nodes)
                     lookup = self.refinement_lookup(decl, state)
-                    rules = self.fields.message_rules(decl, arg.arg, lookup)
-                    self.fields.assume_rules(state, value.ref, rules, arg.arg)
+                    rules = self.fields.message_rules(decl, name, lookup)
+                    self.fields.assume_rules(state, value.ref, rules, name)
             elif decl is not None and decl.base == "msg":
                 lookup = self.refinement_lookup(decl, state)
-                value = self.refined.assumed(state, arg.arg, decl, lookup)
+                value = self.refined.assumed(state, name, decl, lookup)
             elif msg_type is not None:
                 value = heap.new_message(
-                    self.ctx, state, msg_type, "received", label=arg.arg
+                    self.ctx, state, msg_type, "received", label=name
                 )
             elif decl is not None:
                 lookup = self.refinement_lookup(decl, state)
-                value = self.refined.assumed(state, arg.arg, decl, lookup)
+                value = self.refined.assumed(state, name, decl, lookup)
             elif annotation is not None and (
-                typed := self.program.types.parameter(function, arg.arg)
+                typed := self.program.types.parameter(function, name)
             ):  # `driver: MotorDriver`, `scans: list[LaserScan]`
-                value = self.lookups.typed(typed, arg, state, arg.arg)
+                value = self.lookups.typed(typed, arg, state, name)
             else:
                 value = self.ctx.fresh(
-                    "unknown", f"parameter `{arg.arg}` of {function.name}()"
+                    "unknown", f"parameter `{name}` of {function.name}()"
                 )
-            state.env[arg.arg] = value
+            state.env[name] = value
             self.lists_seen = self.lists_seen or value.kind == "list"
             if self.ctx.hovers is not None:  # the editor asks: else no span
                 self.note_hover(
                     self._name_span(arg),
-                    lambda: self.describe_name(arg.arg, value, state),  # noqa: B023
+                    partial(self.describe_name, name, value, state),
                 )
 
     def _name_span(self, arg: ast.arg) -> Span:

@@ -39,8 +39,9 @@ class BuiltinEvaluator(ExpressionEvaluator):
         state: State,
         kwargs: dict[str | None, Value] | None = None,
     ) -> Value | None:
-        if any(isinstance(a, ast.Starred) for a in node.args):
-            return None
+        for given in node.args:  # (a loop: no generator's frame per call)
+            if type(given) is ast.Starred:
+                return None
         kwargs = kwargs or {}
         if (args and args[0].kind in SEQUENCES) or name in ("zip", "range"):
             found = self.sequence_builtin(name, args, kwargs, node, state)

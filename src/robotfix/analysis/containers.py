@@ -505,22 +505,22 @@ def shared_names(
     shared: set[str] = set()
     passed: set[str] = set()
     todo: list[tuple[ast.AST, bool]] = [
-        (n, n.__class__ in _NESTED) for n in body if keep is None or keep(n)
+        (n, type(n) in _NESTED) for n in body if keep is None or keep(n)
     ]
     name_class, load_class = ast.Name, ast.Load
     while todo:
         node, nested = todo.pop()
         # the fields that may hold a node (no name string, context or operator)
-        for field in FIELDS.get(node.__class__) or fields(node.__class__):
+        for field in FIELDS.get(type(node)) or fields(type(node)):
             value = getattr(node, field, None)
-            if value.__class__ is not list:
+            if type(value) is not list:
                 value = (value,)
             elif keep is not None and field in BLOCK_FIELDS:
                 value = [s for s in value if keep(s)]
             for child in value:
-                kind = child.__class__
+                kind = type(child)
                 if kind is name_class:
-                    if child.ctx.__class__ is load_class and (  # type: ignore[union-attr]
+                    if type(child.ctx) is load_class and (  # type: ignore[union-attr]
                         nested
                         or not _plain_use(node, child)  # type: ignore[arg-type]
                         or (changes and _change(node))
@@ -549,9 +549,9 @@ def lends(call: ast.Call) -> list[str]:
     """The names whose lists `call` is handed (`g(xs)`): from then on the callee may
     have kept or changed them. Calls that only read a list lend nothing."""
     func = call.func  # (`_lent` of each name argument, its tests made once)
-    if func.__class__ is ast.Name and func.id in READING_CALLS:
+    if type(func) is ast.Name and func.id in READING_CALLS:
         return []
-    return [a.id for a in call.args if a.__class__ is ast.Name]
+    return [a.id for a in call.args if type(a) is ast.Name]
 
 
 def _lent(parent: ast.AST, name: ast.Name) -> bool:
@@ -564,26 +564,26 @@ def _lent(parent: ast.AST, name: ast.Name) -> bool:
 
 def _change(parent: ast.AST) -> bool:
     """Whether a name used under `parent` has its list changed in place."""
-    kind = parent.__class__
+    kind = type(parent)
     if kind is ast.Subscript:
-        return parent.ctx.__class__ is not ast.Load  # type: ignore[attr-defined]
+        return type(parent.ctx) is not ast.Load  # type: ignore[attr-defined]
     return kind is ast.Attribute and parent.attr in MUTATORS  # type: ignore[attr-defined]
 
 
 def _plain_use(parent: ast.AST, name: ast.Name) -> bool:
-    kind = parent.__class__
+    kind = type(parent)
     if kind is ast.Subscript:
-        return parent.ctx.__class__ is not ast.Del  # type: ignore[attr-defined]
+        return type(parent.ctx) is not ast.Del  # type: ignore[attr-defined]
     if kind is ast.Attribute:
         return parent.attr in MUTATORS or parent.attr in READERS  # type: ignore[attr-defined]
     if kind is ast.Call:
         func = parent.func  # type: ignore[attr-defined]
-        return func.__class__ is ast.Name and func.id in READING_CALLS
+        return type(func) is ast.Name and func.id in READING_CALLS
     if kind is ast.IfExp:  # `a if xs else b` reads it; `xs if c else b` passes it on
         return parent.test is name  # type: ignore[attr-defined]
     if kind is ast.Assign:
         targets = parent.targets  # type: ignore[attr-defined]
-        return all(t.__class__ in (ast.Tuple, ast.List) for t in targets)
+        return all(type(t) in (ast.Tuple, ast.List) for t in targets)
     return kind in READING_PARENTS
 
 

@@ -81,6 +81,8 @@ _ZEROS = {False: A.Num(Fraction(0), False), True: A.Num(Fraction(0), True)}
 _EMPTY = A.Str("")
 _UNREAD = object()  # `self.x` not read nor stored on this path yet
 _BOOLS = {False: Value("bool", A.Bool(False)), True: Value("bool", A.Bool(True))}
+_NO_SITE = ast.Pass()  # the site before the first statement (never changed)
+_ATTRIBUTE = ast.Attribute  # (`eval` tests every node: no module attribute read)
 
 
 class ExpressionEvaluator:
@@ -97,7 +99,7 @@ class ExpressionEvaluator:
         self.refined = parts.refined
         self.lookups = parts.lookups
         self.params = parts.params
-        self.site: ast.AST = ast.Pass()  # the statement being interpreted
+        self.site: ast.AST = _NO_SITE  # the statement being interpreted
         self.lists_seen = False  # whether a list was stored in a name or attribute
         # the symbol each attribute read last gave (`decisions.py`: two tests of
         # `scan.range_min` read one tracked value)
@@ -170,7 +172,7 @@ class ExpressionEvaluator:
             return self.unknown(node)
         result: Value = method(self, node, state)
         term = result.term
-        if kind is ast.Attribute and type(term) is A.Sym:
+        if kind is _ATTRIBUTE and type(term) is A.Sym:
             self.attribute_terms[id(node)] = term.ident
         if (
             term is not None
@@ -196,7 +198,7 @@ class ExpressionEvaluator:
     # -- leaves --------------------------------------------------------------
     def eval_Constant(self, node: ast.Constant, state: State) -> Value:
         value = node.value
-        kind = value.__class__  # (a literal's value is never of a subclass)
+        kind = type(value)  # (a literal's value is never of a subclass)
         if kind is str:
             return str_value(value)
         if kind is int:
@@ -238,50 +240,45 @@ class ExpressionEvaluator:
         self, node: ast.Attribute, state: State, base: Value | None = None
     ) -> Value:
         """`base.attr`; `base`, the value of `node.value`, when already known. The
-        most frequent bases first, as `member` answers them, without its calls."""
+        most frequent bases first, as `member` answers them, without its calls.
+        (Its fields read once: see `CallEvaluator.eval_Call`.)"""
+        owner, attr = node.value, node.attr
         if base is None:
-            base = self.eval(node.value, state)
-        if base.kind == "unknown":  # (it has no member)
+            base = self.eval(owner, state)
+        kind = base.kind
+        if kind == "unknown":  # (it has no member)
             if type(base.term) is A.Sym:
                 # `args.verbose` twice is one value, until something may change args
                 version = state.version(base.term)
-                key = ("attribute", base.term.ident, node.attr, version)
+                key = ("attribute", base.term.ident, attr, version)
                 return self.ctx.derived(key, "unknown", node)
             return self.unknown(node)
-        if base.kind == "module":  # `math.pi`, `rospy.loginfo` (always a value)
-            return self.lookups.module_attribute(base.name, node.attr)
-        if base.kind in ("parameter", "parameter_value"):
+        if kind == "module":  # `math.pi`, `rospy.loginfo` (always a value)
+            return self.lookups.module_attribute(base.name, attr)
+        if kind in ("parameter", "parameter_value"):
             return self.params.parameter_attribute(base, node, state)
-        if base.kind == "msg" and base.ref in state.heap:
-            constant = self.member(base, node.attr, state)
+        if kind == "msg" and base.ref in state.heap:
+            constant = self.member(base, attr, state)
             if constant is not None:  # `msg.ULTRASOUND`
                 return constant
-            text = self.ctx.source.segment(node) or node.attr
+            text = self.ctx.source.segment(node) or attr
             ref = base.ref
             if self.ctx.hovers is not None:  # the editor asks: else no closure
-                self.note_hover(
-                    node, lambda: hover.field(self.ctx, state, ref, node.attr)
-                )
-            value = self.fields.read_field(state, base.ref, node.attr, self.site, text)
-            return frames.framed_read(state, base.ref, node.attr, value)
-        if base.kind in ("instance", "goal_handle") and isinstance(
-            node.value, ast.Name
-        ):
-            var = node.value.id
+                self.note_hover(node, partial(hover.field, self.ctx, state, ref, attr))
+            value = self.fields.read_field(state, ref, attr, self.site, text)
+            return frames.framed_read(state, ref, attr, value)
+        if kind in ("instance", "goal_handle") and type(owner) is ast.Name:
+            var = owner.id
             value = self.instance_attribute(base, var, node, state)
             if self.ctx.hovers is not None:
-                self.note_hover(
-                    node,
-                    lambda: self.lookups.describe_attribute(
-                        base, var, node.attr, value, state
-                    ),
-                )
+                describe = self.lookups.describe_attribute  # (no closure: no cells)
+                self.note_hover(node, partial(describe, base, var, attr, value, state))
             return value
-        found = self.member(base, node.attr, state)
+        found = self.member(base, attr, state)
         if found is not None:
             return found
-        if base.kind == "instance":  # `self.chassis.left`: the attribute's type
-            typed = self.program.types.attribute(base.name, node.attr)
+        if kind == "instance":  # `self.chassis.left`: the attribute's type
+            typed = self.program.types.attribute(base.name, attr)
             if typed is not None:
                 return self.lookups.typed(typed, node, state)
         return self.unknown(node)
@@ -309,35 +306,35 @@ class ExpressionEvaluator:
     ) -> Value:
         """`self.x`: the value last stored in this path, else what its refinement says
         (or, for a goal handle, the goal that arrived)."""
-        key = f"{var}.{node.attr}"
+        attr = node.attr  # (read once: see `eval_Attribute`)
+        key = f"{var}.{attr}"
         bound = state.env.get(key, _UNREAD)
         if isinstance(bound, Value):
             return state.use(bound) if state.shared.defs else bound
-        if bound is _UNREAD and base.kind == "instance":
-            inherited = self.inherited_method(base.name, node.attr)
+        instance = base.kind == "instance"
+        if bound is _UNREAD and instance:
+            inherited = self.inherited_method(base.name, attr)
             if inherited is not None:
                 return inherited
-        method = (
-            self.lookups.method(base, node.attr) if base.kind == "instance" else None
-        )
+        method = self.lookups.method(base, attr) if instance else None
         if method is not None:
             return method
-        if base.kind == "instance" and "." in base.name:  # another module's constant
-            found = imported.resolve(self.ctx.resolver, f"{base.name}.{node.attr}")
+        if instance and "." in base.name:  # another module's constant
+            found = imported.resolve(self.ctx.resolver, f"{base.name}.{attr}")
             if isinstance(found, Value):
                 return found
-        constant = self.lookups.class_constant(base.name, node.attr)
-        if base.kind == "instance" and constant is not None:
+        constant = self.lookups.class_constant(base.name, attr)
+        if instance and constant is not None:
             return constant
-        if base.kind == "goal_handle" and node.attr == "request":
+        if base.kind == "goal_handle" and attr == "request":
             value = heap.new_message(
                 self.ctx, state, f"{base.name}_Goal", "received", label=key
             )
         else:
-            decl = self.program.attributes.get(base.name, {}).get(node.attr)
+            decl = self.program.attributes.get(base.name, {}).get(attr)
             typed = (
-                self.program.types.attribute(base.name, node.attr)
-                if base.kind == "instance" and decl is None
+                self.program.types.attribute(base.name, attr)
+                if instance and decl is None
                 else None
             )
             if decl is not None:
@@ -348,7 +345,7 @@ class ExpressionEvaluator:
                 # but refined, as any attribute is in a method that did not set it
                 value = self.lookups.typed(typed, node, state, key)
             else:
-                remembered = frames.recall(self.ctx, base.name, node.attr)
+                remembered = frames.recall(self.ctx, base.name, attr)
                 value = remembered or self.unknown(node)
                 if remembered is None and isinstance(value.term, A.Sym):
                     self.ctx.first_read(("attribute", key), value.term)
@@ -666,20 +663,19 @@ class ExpressionEvaluator:
         return self.unknown(node, unit=base.unit if not base.literal else None)
 
     def eval_Tuple(self, node: ast.Tuple | ast.List, state: State) -> Value:
-        values = []
-        modelled = True
-        for element in node.elts:
+        values, modelled, elts = [], True, node.elts
+        for element in elts:
             value = self.eval(element, state)
             values.append(value)
-            if element.__class__ is ast.Starred or (
+            if type(element) is ast.Starred or (
                 value.term is None and value.elements is None and value.kind != "msg"
             ):  # a message is kept by its reference (`cmds = [Twist(), Twist()]`)
                 modelled = False
         if not modelled:
-            if node.__class__ is ast.List:  # still a list, of elements not followed
+            if type(node) is ast.List:  # still a list, of elements not followed
                 return Value("list", items=Items())
             return self.unknown(node)
-        kind = "tuple" if node.__class__ is ast.Tuple else "list"
+        kind = "tuple" if type(node) is ast.Tuple else "list"
         elements = tuple(values)
         unit = containers.common_unit(elements)
         scales = {v.factors for v in elements if not v.literal and v.unit == unit}
@@ -687,7 +683,7 @@ class ExpressionEvaluator:
             kind,
             unit=unit,
             elements=elements,
-            items=Items(sites=tuple(node.elts)),
+            items=Items(sites=tuple(elts)),
             factors=scales.pop() if unit is not None and len(scales) == 1 else (),
         )
 

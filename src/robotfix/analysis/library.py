@@ -139,18 +139,19 @@ class Libraries:
         args: list[Value],
         kwargs: dict[str | None, Value],
         state: State,
+        method: str | None,
     ) -> Value | None:
         """The value of a call of a stubbed function, method or class; None when
-        no stub speaks of it."""
+        no stub speaks of it. `method`: the callee's attribute (`x.m(...)`), if it
+        is one."""
         kind = callee.kind
         if kind == "unknown":  # a method of a value of unknown type: by its name
-            func = node.func
-            if func.__class__ is not ast.Attribute:
+            if method is None:
                 return None
             stub_set = self._stub_set or self._stubs()  # (no call: most calls)
-            if stubs.unchecked_call(stub_set, func.attr, len(args), kwargs):
+            if stubs.unchecked_call(stub_set, method, len(args), kwargs):
                 return None  # (`super().__init__(...)`: no stub parsed to know)
-            candidates = stubs.methods_named(stub_set, func.attr)
+            candidates = stubs.methods_named(stub_set, method)
             if not candidates:
                 return None  # (most calls: no stub has a method of that name)
         elif kind not in ("libmethod", "module"):

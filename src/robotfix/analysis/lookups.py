@@ -73,9 +73,11 @@ class Lookups:
             return Value("instance", name=found.name, ref=self.ctx.fresh_id())
         if isinstance(found, typeterms.Lib):  # `self.last: Time`, a stub's result
             return Value("object", name=found.name)
-        if isinstance(found, typeterms.Tup):
-            parts = tuple(self.typed(t, node, state, label) for t in found.items)
-            return Value("tuple", elements=parts)
+        if isinstance(found, typeterms.Tup):  # (a loop: a generator makes cells)
+            parts = []
+            for item in found.items:
+                parts.append(self.typed(item, node, state, label))
+            return Value("tuple", elements=tuple(parts))
         if isinstance(found, typeterms.Seq) and isinstance(found.item, typeterms.Msg):
             return Value("list", items=Items(message=(found.item.name, "received")))
         if isinstance(found, typeterms.Seq):
