@@ -104,7 +104,6 @@ def index_module(tree: ast.Module) -> FileIndex:
 
 
 ALIAS_FORMS = (ast.Subscript, ast.BinOp, ast.Name, ast.Attribute, ast.Constant)
-_TYPE_ALIAS = getattr(ast, "TypeAlias", None)  # 3.12 `type X = ...`
 
 
 def _aliases(tree: ast.Module) -> dict[str, ast.expr]:
@@ -122,7 +121,7 @@ def _aliases(tree: ast.Module) -> dict[str, ast.expr]:
             target, value = statement.targets[0], statement.value  # type: ignore[attr-defined]
         elif kind is ast.AnnAssign:
             target, value = statement.target, statement.value  # type: ignore[attr-defined]
-        elif kind is _TYPE_ALIAS:  # 3.12 `type X = ...`
+        elif kind.__name__ == "TypeAlias":  # 3.12 `type X = ...` (named: not in 3.11)
             target = getattr(statement, "name", None)
             value = getattr(statement, "value", None)
         else:
