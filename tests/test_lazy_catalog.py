@@ -132,3 +132,31 @@ def test_digests_from_an_earlier_run_give_the_fingerprints_a_full_load_gives(
         got = {tuple(a): kept.fingerprint_types(list(a)) for a in order}
         assert [got[tuple(a)] for a in asked] == want
         assert kept._closures  # the kept digests answered
+
+
+@pytest.mark.parametrize("lazy", [False, True])
+def test_has_package_answers_as_a_scan_of_every_name(tmp_path: Path, lazy: bool) -> None:
+    """`has_package` keeps the names' packages in a set; it answers what a scan of
+    every declared and standard name for the prefix `package/` answers, before and
+    after lookups add names, for a spelled package, a prefix, a path and nothing."""
+    files = _files(tmp_path)
+    full = MsgCatalog(files)
+    full.load()
+    catalog = MsgCatalog(files)
+    if lazy:
+        catalog.preload_outline(full.outline() or [])
+    asked = ["robot", "std_msgs", "geometry_msgs", "rob", "", "robot/msg", "nothing"]
+    asked += ["diagnostic_msgs", "shape_msgs", "stereo_msgs", "trajectory_msgs"]
+
+    def scanned(package: str) -> bool:
+        prefix = package + "/"
+        names = (*catalog._specs, *catalog._standard())
+        return any(name.startswith(prefix) for name in names)
+
+    for name in ["", "robot/Drive", "sensor_msgs/msg/Imu", "robot/msg/Wheel"]:
+        if name:
+            catalog.lookup(name)
+        assert {p: catalog.has_package(p) for p in asked} == {
+            p: scanned(p) for p in asked
+        }
+    assert catalog.has_package("robot") and not catalog.has_package("rob")

@@ -243,6 +243,9 @@ class MsgCatalog:
         `unit_suffixes`: a number field named `*_ms`, `*_deg`, ... has that unit."""
         self._std: dict[str, Any] | None = None
         self._specs: dict[str, MsgSpec] = {}
+        # `_packages`: the packages of `_specs` and of the standard types, and how
+        # many of `_specs` they were made from (names are only ever added)
+        self._package_names: tuple[int, frozenset[str]] = (-1, frozenset())
         # order decides duplicates: the checked packages' files first, then the rest
         # in the order given (msg paths, then path order)
         chosen = {str(path) for path in preferred}
@@ -333,10 +336,26 @@ class MsgCatalog:
             self.load()
         else:  # every type is declared: the names are all it needs
             self._declare_outline()
-        prefix = package + "/"
-        return any(k.startswith(prefix) for k in (*self._specs, *self._standard())) or (
+        if "/" in package:  # no package name: the names' prefixes, as spelled
+            prefix = package + "/"
+            names = (*self._specs, *self._standard())
+            found = any(k.startswith(prefix) for k in names)
+        else:
+            found = package in self._packages()
+        return found or (
             self._installed is not None and self._installed.has_package(package)
         )
+
+    def _packages(self) -> frozenset[str]:
+        """The package (first part) of every declared and standard type's name:
+        `has_package` is asked once per imported package, and the names number
+        hundreds."""
+        count, packages = self._package_names
+        if count != len(self._specs):
+            names = (*self._specs, *self._standard())
+            packages = frozenset(k.partition("/")[0] for k in names if "/" in k)
+            self._package_names = (len(self._specs), packages)
+        return packages
 
     def field_at(self, msg_type: str, path: str) -> FieldSpec | None:
         """The field at a dotted path (`linear.x`) inside `msg_type`."""
@@ -664,6 +683,7 @@ class MsgCatalog:
         """Forget a partial load (what `__init__` set; the digests stay: they are
         the full load's too)."""
         self._specs = {}
+        self._package_names = (-1, frozenset())
         self.problems = []
         self._defined_by = {}
         self._installed_keys = set()
