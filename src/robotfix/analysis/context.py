@@ -18,7 +18,7 @@ from robotfix.analysis.consistency import consistent_invariants, contradictory
 from robotfix.analysis.constants import ConstantNames
 from robotfix.analysis.imported import absolute_imports, dotted_name
 from robotfix.analysis.index import FileIndex, index_scope
-from robotfix.analysis.values import SORTS, Value, sort_of, unknown
+from robotfix.analysis.values import Value, sort_of, unknown
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Alias, Names, Refinement, extract
 from robotfix.annotations.units import UnitError, resolve
@@ -221,7 +221,7 @@ class FileContext:
         self._next += 1  # `fresh_id`, inline: ~180k unknowns on 240k lines
         ident = self._next
         self.sym_names[ident] = description
-        return unknown(kind, A.Sym(ident, SORTS.get(kind, "real")), unit)  # type: ignore[arg-type]
+        return unknown(kind, ident, unit)  # type: ignore[arg-type]
 
     def describe(self, ident: int) -> str:
         found = self.sym_names.get(ident)
