@@ -12,7 +12,7 @@ from typing import Any
 import pytest
 
 from robotfix import api
-from robotfix.analysis import binder, calls, context, expressions
+from robotfix.analysis import binder, calls, context, expressions, interpreter, values
 from robotfix.analysis.context import FileContext
 from robotfix.analysis.state import State
 from robotfix.analysis.values import Value
@@ -69,6 +69,13 @@ def test_a_fresh_unknown_is_made_as_value_makes_it() -> None:
         assert [getattr(made, n) for n in Value.__slots__] == [
             getattr(plain, n) for n in Value.__slots__
         ]
+    # the symbol too is made in place, from its number: as `A.Sym` makes it
+    for kind in ("int", "bool", "str", "float", "unknown", "msg"):
+        made = values.unknown(kind, 41, None)
+        sym = made.term
+        assert type(sym) is A.Sym and sym == A.Sym(41, values.sort_of(kind))
+        assert hash(sym) == hash(A.Sym(41, values.sort_of(kind)))
+        assert [getattr(sym, n) for n in A.Sym.__slots__] == [41, values.sort_of(kind)]
 
 
 def _cases() -> list[Path]:
@@ -239,7 +246,7 @@ def test_a_call_hands_on_the_method_name_its_node_has(
     """`eval_Call` reads the callee's node once and hands its method name on:
     `_dispatch`, `_forget_after_call` and `library_call` are given what
     `node.func.attr` is (None for a callee that is no attribute), and the
-    argument nodes `node.args` are."""
+    callee's node `node.func` and the argument nodes `node.args` are."""
     seen: list[str | None] = []
     dispatch = calls.CallEvaluator._dispatch
     forget = calls.CallEvaluator._forget_after_call
@@ -253,9 +260,9 @@ def test_a_call_hands_on_the_method_name_its_node_has(
         seen.append(rest[-1])
         return dispatch(self, callee, node, *rest)
 
-    def checked_forget(self: Any, node: Any, given: Any, *rest: Any) -> Any:
-        assert given is node.args and rest[-1] == _attr(node)
-        return forget(self, node, given, *rest)
+    def checked_forget(self: Any, node: Any, func: Any, given: Any, *rest: Any) -> Any:
+        assert func is node.func and given is node.args and rest[-1] == _attr(node)
+        return forget(self, node, func, given, *rest)
 
     monkeypatch.setattr(calls.CallEvaluator, "_dispatch", checked_dispatch)
     monkeypatch.setattr(calls.CallEvaluator, "_forget_after_call", checked_forget)
@@ -289,5 +296,6 @@ def test_the_hot_evaluator_functions_make_no_cell_per_call() -> None:
         calls.CallEvaluator._dispatch,
         calls.CallEvaluator._forget_after_call,
         Lookups.typed,
+        interpreter.Interpreter.visit_Assign,
     ]
     assert [f.__name__ for f in hot if f.__code__.co_cellvars] == []

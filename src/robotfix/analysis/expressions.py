@@ -157,8 +157,9 @@ class ExpressionEvaluator:
     # -- dispatch ------------------------------------------------------------
     def eval(self, node: ast.expr, state: State) -> Value:
         budget = self.ctx.budget  # `FileContext.step`, inline: a call per node
-        budget.used += 1
-        if budget.used > budget.limit:
+        used = budget.used + 1  # (its slot read once)
+        budget.used = used
+        if used > budget.limit:
             raise BudgetExceededError(getattr(node, "lineno", 1))
         kind = type(node)
         try:  # (a subscript: cheaper than a `get` call; found all but once a class)
@@ -269,7 +270,7 @@ class ExpressionEvaluator:
             return frames.framed_read(state, ref, attr, value)
         if kind in ("instance", "goal_handle") and type(owner) is ast.Name:
             var = owner.id
-            value = self.instance_attribute(base, var, node, state)
+            value = self.instance_attribute(base, var, attr, node, state)
             if self.ctx.hovers is not None:
                 describe = self.lookups.describe_attribute  # (no closure: no cells)
                 self.note_hover(node, partial(describe, base, var, attr, value, state))
@@ -302,11 +303,11 @@ class ExpressionEvaluator:
         return None
 
     def instance_attribute(
-        self, base: Value, var: str, node: ast.Attribute, state: State
+        self, base: Value, var: str, attr: str, node: ast.Attribute, state: State
     ) -> Value:
-        """`self.x`: the value last stored in this path, else what its refinement says
-        (or, for a goal handle, the goal that arrived)."""
-        attr = node.attr  # (read once: see `eval_Attribute`)
+        """`self.x` (`var`, `attr`: the fields of `node`, handed on as read, see
+        `eval_Attribute`): the value last stored in this path, else what its
+        refinement says (or, for a goal handle, the goal that arrived)."""
         key = f"{var}.{attr}"
         bound = state.env.get(key, _UNREAD)
         if isinstance(bound, Value):
