@@ -299,3 +299,48 @@ def test_the_hot_evaluator_functions_make_no_cell_per_call() -> None:
         interpreter.Interpreter.visit_Assign,
     ]
     assert [f.__name__ for f in hot if f.__code__.co_cellvars] == []
+
+
+def test_a_derived_term_makes_no_value_and_checks_the_same(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """`FileContext.derived_term` (a derived symbol read for its term alone: `x is
+    None`, `if x:`, a join's ties) makes no value, only the symbol. Every case
+    file checks the same, with the same symbols, names and ties of later reads to
+    first ones, as when it takes the term of the value `derived` makes."""
+    cases = _all_cases()
+    assert len(cases) > 100
+    contexts: list[FileContext] = []
+    init = FileContext.__init__
+
+    def noting(self: FileContext, *args: Any, **kwargs: Any) -> None:
+        init(self, *args, **kwargs)
+        contexts.append(self)
+
+    monkeypatch.setattr(FileContext, "__init__", noting)
+
+    def named(found: object) -> object:
+        return found if isinstance(found, str) else ast.dump(found)  # type: ignore[arg-type]
+
+    def run() -> tuple[list[object], int]:
+        seen: list[object] = []
+        alone = 0  # entries of `_derived` made for their term alone
+        for path in cases:
+            contexts.clear()
+            seen.append(_shown(api.check_source(path.read_text(), str(path))))
+            for ctx in contexts:
+                names = {k: named(v) for k, v in ctx.sym_names.items()}
+                seen.append((ctx.last_id(), sorted(ctx.unchanged.items()), names))
+                alone += sum(isinstance(v, A.Sym) for v in ctx._derived.values())
+        return seen, alone
+
+    fast, alone = run()
+    assert alone > 0
+    monkeypatch.setattr(
+        FileContext,
+        "derived_term",
+        lambda self, key, kind, description: self.derived(key, kind, description).term,
+    )
+    general, none = run()
+    assert none == 0
+    assert fast == general

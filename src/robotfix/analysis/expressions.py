@@ -540,7 +540,7 @@ class ExpressionEvaluator:
                 # `command == "slow"` of an unknown: the solver cannot compare
                 # them, but the same test of the same values is the same
                 key = ("==", left.term, right.term)
-                same = self.ctx.derived(key, "bool", node).known_term
+                same = self.ctx.derived_term(key, "bool", node)
                 parts.append(same if name == "==" else A.Unary("not", same))
                 continue
             parts.append(A.Binary(name, left.term, right.term))
@@ -560,12 +560,12 @@ class ExpressionEvaluator:
             obj = state.heap.get(left.ref)
             if obj is not None and obj.origin == "constructed":
                 return A.Bool(False)
-            return self.ctx.derived(("is None", left.ref), "bool", "`is None`").term
+            return self.ctx.derived_term(("is None", left.ref), "bool", "`is None`")
         if isinstance(left.term, A.Sym):
             key = ("is None", left.term.ident)
-            return self.ctx.derived(key, "bool", "`is None`").term
+            return self.ctx.derived_term(key, "bool", "`is None`")
         if left.kind == "instance" and left.ref is not None:  # a typed object
-            return self.ctx.derived(("is None", left.ref), "bool", "`is None`").term
+            return self.ctx.derived_term(("is None", left.ref), "bool", "`is None`")
         if left.kind in STATIC_VALUES:
             return A.Bool(False)
         return None
@@ -788,9 +788,9 @@ class ExpressionEvaluator:
             if size is not None:  # a display: `[]` is false
                 return A.Bool(size > 0)
             key = ("truthy", term.ident, version)
-            return self.ctx.derived(key, "bool", node).known_term
+            return self.ctx.derived_term(key, "bool", node)
         if value.kind == "module":  # `if TYPE_CHECKING:`, `if sys.flags.debug:`
             if value.name.endswith("TYPE_CHECKING"):
                 return A.Bool(False)
-            return self.ctx.derived(("truthy", value.name), "bool", node).known_term
+            return self.ctx.derived_term(("truthy", value.name), "bool", node)
         return self.unknown(node, "bool").term  # type: ignore[return-value]
