@@ -12,7 +12,7 @@ from typing import Any
 import pytest
 
 from robotfix import api
-from robotfix.analysis import binder, calls, context, expressions
+from robotfix.analysis import binder, calls, context, expressions, interpreter, values
 from robotfix.analysis.context import FileContext
 from robotfix.analysis.state import State
 from robotfix.analysis.values import Value
@@ -69,6 +69,13 @@ def test_a_fresh_unknown_is_made_as_value_makes_it() -> None:
         assert [getattr(made, n) for n in Value.__slots__] == [
             getattr(plain, n) for n in Value.__slots__
         ]
+    # the symbol too is made in place, from its number: as `A.Sym` makes it
+    for kind in ("int", "bool", "str", "float", "unknown", "msg"):
+        made = values.unknown(kind, 41, None)
+        sym = made.term
+        assert type(sym) is A.Sym and sym == A.Sym(41, values.sort_of(kind))
+        assert hash(sym) == hash(A.Sym(41, values.sort_of(kind)))
+        assert [getattr(sym, n) for n in A.Sym.__slots__] == [41, values.sort_of(kind)]
 
 
 def _cases() -> list[Path]:
@@ -239,7 +246,7 @@ def test_a_call_hands_on_the_method_name_its_node_has(
     """`eval_Call` reads the callee's node once and hands its method name on:
     `_dispatch`, `_forget_after_call` and `library_call` are given what
     `node.func.attr` is (None for a callee that is no attribute), and the
-    argument nodes `node.args` are."""
+    callee's node `node.func` and the argument nodes `node.args` are."""
     seen: list[str | None] = []
     dispatch = calls.CallEvaluator._dispatch
     forget = calls.CallEvaluator._forget_after_call
@@ -253,9 +260,9 @@ def test_a_call_hands_on_the_method_name_its_node_has(
         seen.append(rest[-1])
         return dispatch(self, callee, node, *rest)
 
-    def checked_forget(self: Any, node: Any, given: Any, *rest: Any) -> Any:
-        assert given is node.args and rest[-1] == _attr(node)
-        return forget(self, node, given, *rest)
+    def checked_forget(self: Any, node: Any, func: Any, given: Any, *rest: Any) -> Any:
+        assert func is node.func and given is node.args and rest[-1] == _attr(node)
+        return forget(self, node, func, given, *rest)
 
     monkeypatch.setattr(calls.CallEvaluator, "_dispatch", checked_dispatch)
     monkeypatch.setattr(calls.CallEvaluator, "_forget_after_call", checked_forget)
@@ -289,5 +296,51 @@ def test_the_hot_evaluator_functions_make_no_cell_per_call() -> None:
         calls.CallEvaluator._dispatch,
         calls.CallEvaluator._forget_after_call,
         Lookups.typed,
+        interpreter.Interpreter.visit_Assign,
     ]
     assert [f.__name__ for f in hot if f.__code__.co_cellvars] == []
+
+
+def test_a_derived_term_makes_no_value_and_checks_the_same(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """`FileContext.derived_term` (a derived symbol read for its term alone: `x is
+    None`, `if x:`, a join's ties) makes no value, only the symbol. Every case
+    file checks the same, with the same symbols, names and ties of later reads to
+    first ones, as when it takes the term of the value `derived` makes."""
+    cases = _all_cases()
+    assert len(cases) > 100
+    contexts: list[FileContext] = []
+    init = FileContext.__init__
+
+    def noting(self: FileContext, *args: Any, **kwargs: Any) -> None:
+        init(self, *args, **kwargs)
+        contexts.append(self)
+
+    monkeypatch.setattr(FileContext, "__init__", noting)
+
+    def named(found: object) -> object:
+        return found if isinstance(found, str) else ast.dump(found)  # type: ignore[arg-type]
+
+    def run() -> tuple[list[object], int]:
+        seen: list[object] = []
+        alone = 0  # entries of `_derived` made for their term alone
+        for path in cases:
+            contexts.clear()
+            seen.append(_shown(api.check_source(path.read_text(), str(path))))
+            for ctx in contexts:
+                names = {k: named(v) for k, v in ctx.sym_names.items()}
+                seen.append((ctx.last_id(), sorted(ctx.unchanged.items()), names))
+                alone += sum(isinstance(v, A.Sym) for v in ctx._derived.values())
+        return seen, alone
+
+    fast, alone = run()
+    assert alone > 0
+    monkeypatch.setattr(
+        FileContext,
+        "derived_term",
+        lambda self, key, kind, description: self.derived(key, kind, description).term,
+    )
+    general, none = run()
+    assert none == 0
+    assert fast == general

@@ -153,7 +153,7 @@ class CallEvaluator(BuiltinEvaluator):
             if self.ctx.obligations and not imported.starred(node, kwargs):
                 self._contracts(args, state, self._holder(func), kwargs)
         result = self._dispatch(callee, node, args, kwargs, state, method)
-        self._forget_after_call(node, given, args, kwargs, state, callee, method)
+        self._forget_after_call(node, func, given, args, kwargs, state, callee, method)
         return result
 
     def _leaving(self, values: list[Value], state: State) -> None:
@@ -303,6 +303,7 @@ class CallEvaluator(BuiltinEvaluator):
     def _forget_after_call(
         self,
         node: ast.Call,
+        func: ast.expr,
         given: list[ast.expr],
         args: list[Value],
         kwargs: dict[str | None, Value],
@@ -314,14 +315,15 @@ class CallEvaluator(BuiltinEvaluator):
         calls change nothing: a value the walk never read a version of, which
         `State.changed` leaves alone, is passed over without the call. A call is
         met about once: loops here, not comprehensions or helpers, each of which
-        costs a frame.)"""
+        costs a frame. `func` and `given`: `node.func` and `node.args`, as read.)"""
         env = state.env
         names: list[ast.Name] = []
         for argument in given:  # (the call's argument nodes, `node.args`)
             if type(argument) is ast.Name:
                 names.append(argument)
         if names:
-            for lent_name in containers.lends(node):  # the callee may keep, change it
+            for lent_node in containers.lends(func, names):  # it may keep, change it
+                lent_name = lent_node.id
                 lent = env.get(lent_name)
                 if isinstance(lent, Value) and lent.kind == "list":
                     env[lent_name] = containers.stripped(lent)
@@ -347,7 +349,7 @@ class CallEvaluator(BuiltinEvaluator):
             ):
                 state.changed(value)
         if method is not None:
-            owner = node.func.value  # type: ignore[attr-defined]
+            owner = func.value  # type: ignore[attr-defined]
             if type(owner) is ast.Name:
                 # a method of this file's class may change `self.x`; rclpy's and
                 # rospy's own (`self.get_clock()`) do not touch its attributes

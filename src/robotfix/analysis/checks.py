@@ -642,7 +642,7 @@ class Checker:
         if not isinstance(value.term, A.Sym) or value.kind not in _SIZED:
             return None
         key = ("len", value.term.ident, state.version(value.term))
-        length = self.ctx.derived(key, "int", description).known_term
+        length = self.ctx.derived_term(key, "int", description)
         state.assume(A.Binary(">=", length, containers.number(0)))
         return length
 

@@ -545,13 +545,14 @@ def shares(scope: ast.AST, name: str, lines: list[str]) -> bool:
     return name in shared_names(body, lent=set(), keep=keep)
 
 
-def lends(call: ast.Call) -> list[str]:
-    """The names whose lists `call` is handed (`g(xs)`): from then on the callee may
-    have kept or changed them. Calls that only read a list lend nothing."""
-    func = call.func  # (`_lent` of each name argument, its tests made once)
+def lends(func: ast.expr, names: list[ast.Name]) -> list[ast.Name]:
+    """The names whose lists a call of `func` is handed (`g(xs)`; `names`: its
+    positional arguments that are names, as the caller found them): from then on
+    the callee may have kept or changed them. Calls that only read a list lend
+    nothing. (`_lent` of each name argument, its tests made once.)"""
     if type(func) is ast.Name and func.id in READING_CALLS:
         return []
-    return [a.id for a in call.args if type(a) is ast.Name]
+    return names
 
 
 def _lent(parent: ast.AST, name: ast.Name) -> bool:

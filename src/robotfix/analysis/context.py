@@ -18,7 +18,7 @@ from robotfix.analysis.consistency import consistent_invariants, contradictory
 from robotfix.analysis.constants import ConstantNames
 from robotfix.analysis.imported import absolute_imports, dotted_name
 from robotfix.analysis.index import FileIndex, index_scope
-from robotfix.analysis.values import SORTS, Value, sort_of, unknown
+from robotfix.analysis.values import Value, sort_of, unknown
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Alias, Names, Refinement, extract
 from robotfix.annotations.units import UnitError, resolve
@@ -97,7 +97,8 @@ class FileContext:
         self.sym_names: dict[int, str | ast.AST] = {}  # text, or a node to quote
         self._next = 0
         self._sub_ids: dict[tuple[int, str], int] = {}
-        self._derived: dict[tuple[object, ...], Value] = {}
+        # `derived` values, or the symbols `derived_term` made alone
+        self._derived: dict[tuple[object, ...], Value | A.Sym] = {}
         # symbol of a read of an object that code may have changed -> the same read
         # before any change (`possible_unchanged` asks as if nothing changed)
         # (and the id of the object read)
@@ -166,17 +167,49 @@ class FileContext:
         """An unknown value that is a function of `key` (`x is None` for one value
         of x): the same symbol wherever it is asked for."""
         found = self._derived.get(key)
+        if isinstance(found, A.Sym):  # made for its term alone: now its value
+            if self.unit_log is not None:
+                self._shared(found)
+            value = self._derived[key] = Value(kind, found)
+            return value
         if found is not None:
             if self.unit_log is not None:
                 self._shared(found.term)
             return found
-        found = self._derived[key] = self.fresh(kind, description)
+        value = self._derived[key] = self.fresh(kind, description)
+        self._tie_first(key, kind, description, value.term)  # type: ignore[arg-type]
+        return value
+
+    def derived_term(
+        self, key: tuple[object, ...], kind: str, description: str | ast.AST
+    ) -> A.Expr:
+        """`derived(key, kind, description).term`, for a caller that reads the term
+        alone (`x is None`, `if x:`, the ties of a join: 23k of the 42k derived
+        symbols of corpus25): no value is made for it, only its symbol, which is
+        the value's term if `derived` asks for that key later."""
+        found = self._derived.get(key)
+        if found is not None:
+            term = found.term if type(found) is Value else found
+            if self.unit_log is not None:
+                self._shared(term)
+            return term  # type: ignore[return-value]
+        self._next += 1  # (`fresh`'s numbering and name, without the value)
+        ident = self._next
+        self.sym_names[ident] = description
+        sym = self._derived[key] = A.Sym(ident, sort_of(kind))
+        self._tie_first(key, kind, description, sym)
+        return sym
+
+    def _tie_first(
+        self, key: tuple[object, ...], kind: str, description: str | ast.AST, sym: A.Sym
+    ) -> None:
+        """`sym`, just made for `key`, is a later read of the object read first
+        under another key (`_first_version`): `unchanged` maps it to that read."""
         first, read = _first_version(key, self.unchanged)
-        if first is not key and isinstance(found.term, A.Sym):
-            base = self.derived(first, kind, description)
-            if isinstance(base.term, A.Sym):
-                self.unchanged[found.term.ident] = (base.term, read)
-        return found
+        if first is not key:
+            base = self.derived_term(first, kind, description)
+            if isinstance(base, A.Sym):
+                self.unchanged[sym.ident] = (base, read)
 
     def first_read(self, read: object, sym: A.Sym) -> None:
         """`sym` is a read of `read` (`self.flag`), maybe again after a call that
@@ -221,7 +254,7 @@ class FileContext:
         self._next += 1  # `fresh_id`, inline: ~180k unknowns on 240k lines
         ident = self._next
         self.sym_names[ident] = description
-        return unknown(kind, A.Sym(ident, SORTS.get(kind, "real")), unit)  # type: ignore[arg-type]
+        return unknown(kind, ident, unit)  # type: ignore[arg-type]
 
     def describe(self, ident: int) -> str:
         found = self.sym_names.get(ident)

@@ -157,8 +157,9 @@ class ExpressionEvaluator:
     # -- dispatch ------------------------------------------------------------
     def eval(self, node: ast.expr, state: State) -> Value:
         budget = self.ctx.budget  # `FileContext.step`, inline: a call per node
-        budget.used += 1
-        if budget.used > budget.limit:
+        used = budget.used + 1  # (its slot read once)
+        budget.used = used
+        if used > budget.limit:
             raise BudgetExceededError(getattr(node, "lineno", 1))
         kind = type(node)
         try:  # (a subscript: cheaper than a `get` call; found all but once a class)
@@ -269,7 +270,7 @@ class ExpressionEvaluator:
             return frames.framed_read(state, ref, attr, value)
         if kind in ("instance", "goal_handle") and type(owner) is ast.Name:
             var = owner.id
-            value = self.instance_attribute(base, var, node, state)
+            value = self.instance_attribute(base, var, attr, node, state)
             if self.ctx.hovers is not None:
                 describe = self.lookups.describe_attribute  # (no closure: no cells)
                 self.note_hover(node, partial(describe, base, var, attr, value, state))
@@ -302,11 +303,11 @@ class ExpressionEvaluator:
         return None
 
     def instance_attribute(
-        self, base: Value, var: str, node: ast.Attribute, state: State
+        self, base: Value, var: str, attr: str, node: ast.Attribute, state: State
     ) -> Value:
-        """`self.x`: the value last stored in this path, else what its refinement says
-        (or, for a goal handle, the goal that arrived)."""
-        attr = node.attr  # (read once: see `eval_Attribute`)
+        """`self.x` (`var`, `attr`: the fields of `node`, handed on as read, see
+        `eval_Attribute`): the value last stored in this path, else what its
+        refinement says (or, for a goal handle, the goal that arrived)."""
         key = f"{var}.{attr}"
         bound = state.env.get(key, _UNREAD)
         if isinstance(bound, Value):
@@ -539,7 +540,7 @@ class ExpressionEvaluator:
                 # `command == "slow"` of an unknown: the solver cannot compare
                 # them, but the same test of the same values is the same
                 key = ("==", left.term, right.term)
-                same = self.ctx.derived(key, "bool", node).known_term
+                same = self.ctx.derived_term(key, "bool", node)
                 parts.append(same if name == "==" else A.Unary("not", same))
                 continue
             parts.append(A.Binary(name, left.term, right.term))
@@ -559,12 +560,12 @@ class ExpressionEvaluator:
             obj = state.heap.get(left.ref)
             if obj is not None and obj.origin == "constructed":
                 return A.Bool(False)
-            return self.ctx.derived(("is None", left.ref), "bool", "`is None`").term
+            return self.ctx.derived_term(("is None", left.ref), "bool", "`is None`")
         if isinstance(left.term, A.Sym):
             key = ("is None", left.term.ident)
-            return self.ctx.derived(key, "bool", "`is None`").term
+            return self.ctx.derived_term(key, "bool", "`is None`")
         if left.kind == "instance" and left.ref is not None:  # a typed object
-            return self.ctx.derived(("is None", left.ref), "bool", "`is None`").term
+            return self.ctx.derived_term(("is None", left.ref), "bool", "`is None`")
         if left.kind in STATIC_VALUES:
             return A.Bool(False)
         return None
@@ -787,9 +788,9 @@ class ExpressionEvaluator:
             if size is not None:  # a display: `[]` is false
                 return A.Bool(size > 0)
             key = ("truthy", term.ident, version)
-            return self.ctx.derived(key, "bool", node).known_term
+            return self.ctx.derived_term(key, "bool", node)
         if value.kind == "module":  # `if TYPE_CHECKING:`, `if sys.flags.debug:`
             if value.name.endswith("TYPE_CHECKING"):
                 return A.Bool(False)
-            return self.ctx.derived(("truthy", value.name), "bool", node).known_term
+            return self.ctx.derived_term(("truthy", value.name), "bool", node)
         return self.unknown(node, "bool").term  # type: ignore[return-value]

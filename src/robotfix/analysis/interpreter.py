@@ -255,7 +255,9 @@ class Interpreter(CompoundWalker):
                 if len(target.elts) == len(elts) and not any(  # type: ignore[attr-defined]
                     isinstance(e, ast.Starred) for e in elts
                 ):
-                    values = [self.eval(v, state) for v in elts]
+                    values = []  # (a loop: a comprehension would make cells for
+                    for v in elts:  # `self` and `state` at every call of this)
+                        values.append(self.eval(v, state))
                     for one, value in zip(target.elts, values, strict=True):  # type: ignore[attr-defined]
                         self.bind(one, value, state)
                     return state

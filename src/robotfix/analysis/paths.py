@@ -447,7 +447,7 @@ class PathWalker(Binder):
             return A.TRUE
         if isinstance(value.term, A.Sym) and value.kind == "unknown":
             key = ("is None", value.term.ident)
-            return self.ctx.derived(key, "bool", "`is None`").term
+            return self.ctx.derived_term(key, "bool", "`is None`")
         if value.kind in ("int", "float", "bool", "str", "instance", *CONTAINERS):
             return A.Bool(False)
         return None

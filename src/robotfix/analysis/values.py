@@ -258,13 +258,19 @@ class Value:
 
 NONE = Value("none")
 _new = object.__new__
+_SYM = A.Sym
+_SYM_IDENT, _SYM_SORT = A.slot_setter(_SYM, "ident"), A.slot_setter(_SYM, "sort")
 
 
-def unknown(kind: str, term: A.Expr, unit: Unit | None) -> Value:
-    """`Value(kind, term, unit)`, made without the call through the type to
-    `__init__` (a fresh unknown per symbol, 139k on corpus25: 3,770 instructions
-    a value, 3,330 so). Every other slot gets `__init__`'s default; a test checks
-    that the two agree."""
+def unknown(kind: str, ident: int, unit: Unit | None) -> Value:
+    """`Value(kind, A.Sym(ident, sort_of(kind)), unit)`, the symbol and the value
+    made without the calls through their types to `__init__` (a fresh unknown per
+    symbol, 135k on corpus25: `FileContext.fresh` took 7,770 instructions with
+    `A.Sym(...)` made there, 7,210 so). Every other slot gets `__init__`'s
+    default; a test checks that the two agree."""
+    term = _new(_SYM)
+    _SYM_IDENT(term, ident)
+    _SYM_SORT(term, SORTS.get(kind, "real"))
     v = _new(Value)
     v.kind = kind
     v.term = term
