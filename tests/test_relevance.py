@@ -345,3 +345,59 @@ def test_a_user_stub_member_re_exported_under_another_name_is_a_source(
         },
     )
     assert _codes(tmp_path) == ["drive.py:RF202"]
+
+
+WRITTEN = [
+    "x = time.sleep(1)",  # a receiver's attribute
+    "xtime = 1\ntime_of_day = 2\n",  # a longer run: no stub word
+    "time",  # the whole text
+    "(time)",
+    "Timer2 = 1",
+    "a = Timer\n",
+    "# now\n",  # a comment counts (the text is asked, not the tree)
+    "know = nowhere_now\n",
+    "x = '__add__'",
+    "x.atan2(y)",
+    "x9atan2 = 1",
+    "_now = 1",
+    "",
+    "caf\u00e9now = 1",  # not ASCII: the pattern (`\u00e9` is a word character)
+    "caf\u00e9 now = 1",
+    "\u2014now\u2014",
+]
+
+
+def test_a_stub_word_is_found_in_the_text_as_the_pattern_finds_it() -> None:
+    """`_written` (words split in C for an ASCII text) answers as the pattern
+    `\\b(word|...)\\b` does, on every case file and on edges of words."""
+    vocabulary = relevance._vocabulary(stub_set())
+    pattern = relevance._pattern(vocabulary)
+    texts = [*WRITTEN, *(path.read_text(encoding="utf-8") for path in CASE_FILES)]
+    answers = {relevance._written(text, vocabulary) for text in texts}
+    assert answers == {True, False}
+    for text in texts:
+        assert relevance._written(text, vocabulary) == (
+            pattern.search(text) is not None
+        ), text[:80]
+
+
+def test_an_ascii_text_is_not_searched_with_the_pattern(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """The pattern tries every word at every letter (about 300 instructions a
+    character of a text without a stub word); an ASCII text is split instead."""
+    vocabulary = relevance._vocabulary(stub_set())
+
+    def refused(_: frozenset[str]) -> None:
+        raise AssertionError("searched with the pattern")
+
+    monkeypatch.setattr(relevance, "_pattern", refused)
+    assert relevance._written("rclpy.time.Time()", vocabulary)
+    assert not relevance._written("x = 1", vocabulary)
+
+
+def test_a_vocabulary_word_outside_ascii_is_searched_with_the_pattern() -> None:
+    vocabulary = frozenset({"caf\u00e9"})
+    assert relevance._ascii_words(vocabulary) is None
+    assert relevance._written("x = caf\u00e9", vocabulary)
+    assert not relevance._written("x = cafe", vocabulary)

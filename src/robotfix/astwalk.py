@@ -71,6 +71,9 @@ SHAPES: dict[type, tuple[tuple[str, ...], tuple[str, ...]]] = {
 }
 
 
+_NODE = ast.AST  # (a global read, not `ast.AST`'s two lookups, per child)
+
+
 def children(node: ast.AST) -> list[ast.AST]:
     found: list[ast.AST] = []
     kind = type(node)
@@ -81,9 +84,9 @@ def children(node: ast.AST) -> list[ast.AST]:
         value = getattr(node, name, None)
         if type(value) is list:
             for v in value:
-                if isinstance(v, ast.AST):
+                if isinstance(v, _NODE):
                     found.append(v)
-        elif isinstance(value, ast.AST):
+        elif isinstance(value, _NODE):
             found.append(value)
     return found
 
@@ -108,11 +111,16 @@ def select(
 ) -> list[ast.AST]:
     """The nodes under `roots` (roots included) of a class in `kinds`, as `walk`
     meets them, not entering those of a class in `skip` (nor returning them).
-    Names and constants are never stacked, so `kinds` holds neither."""
+    Names and constants are never stacked, so `kinds` holds neither; nor are
+    attributes, unless asked for: a chain `a.b().c` is read down to what its
+    last attribute holds, which takes the chain's place on the stack (an
+    attribute holds no other node, so the order is `walk`'s)."""
     found: list[ast.AST] = []
     todo = list(roots)
     pop, append = todo.pop, todo.append
     leaves, node_class, known = (ast.Name, ast.Constant), ast.AST, _FIELDS
+    chain = ast.Attribute if ast.Attribute not in kinds | skip else None
+    child: Any
     while todo:
         node = pop()
         kind = type(node)
@@ -123,6 +131,8 @@ def select(
         for name in known.get(kind) or fields(kind):
             value = getattr(node, name, None)
             for child in value if type(value) is list else (value,):
+                while type(child) is chain:
+                    child = child.value
                 if type(child) not in leaves and isinstance(child, node_class):
                     append(child)
     return found
