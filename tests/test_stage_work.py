@@ -241,6 +241,55 @@ def test_composable_nodes_sort_the_code_files_once(
     assert counts[0] == counts[1]
 
 
+def test_an_executable_many_entries_start_is_looked_up_once_a_call(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Each entry that starts a C++ executable asked the real path of each of its
+    source files again (the two calls of a run on the issue-25 corpus: 1,372
+    of its 2,062 entries start one of 149 executables; 15,099 `probe`s, now
+    1,847): now once an executable a call, each entry its files all the same."""
+    from types import SimpleNamespace
+
+    from robotfix import graphcheck
+    from robotfix.launchcheck import _Started
+    from robotfix.ros.graph.model import FileGraph
+    from robotfix.ros.launch.model import NodeEntry, Place
+
+    package = tmp_path / "pkg"
+    (package / "src").mkdir(parents=True)
+    (package / "package.xml").write_text("<package><name>pkg</name></package>")
+    (package / "CMakeLists.txt").write_text(
+        "add_executable(talker src/a.cpp src/b.cpp)\n"
+    )
+    code = {}
+    for name in ("a", "b", "c"):
+        (package / "src" / f"{name}.cpp").write_text("")
+        code[str(package / "src" / f"{name}.cpp")] = FileGraph()
+
+    def entries(count: int) -> SimpleNamespace:
+        started = [
+            _Started(NodeEntry(2, Place("l.py", i, 0), "pkg", "talker", None, ""))
+            for i in range(count)
+        ]
+        return SimpleNamespace(
+            packages={"pkg": package}, started=started, targets={}, executables={}
+        )
+
+    probed: list[str] = []
+    probe = graphcheck.probe
+    monkeypatch.setattr(
+        graphcheck,
+        "probe",
+        lambda kind, path: probed.append(str(path)) or probe(kind, path),
+    )
+    sources = [str(package / "src" / f"{name}.cpp") for name in ("a", "b")]
+    for count in (2, 20):
+        probed.clear()
+        found = graphcheck.started_entries(entries(count), code)  # type: ignore[arg-type]
+        assert [s.files for s in found] == [sources] * count
+        assert [probed.count(s) for s in sources] == [2, 2]  # its code's, its own
+
+
 def test_a_cpp_call_that_names_no_maker_is_not_read(
     monkeypatch: pytest.MonkeyPatch,
 ) -> None:

@@ -151,6 +151,9 @@ def started_entries(
     inside: dict[Path, list[str]] = {}  # each plugin package's files, found once
     targets = launches.targets  # each package's CMake targets, read once a run
     built = launches.executables  # many entries start one, in both calls a run
+    # an executable's code files of the run, found once a call: its sources'
+    # real paths are asked once, not once an entry that starts it
+    running: dict[tuple[Path, str], list[str]] = {}
     for started in launches.started:
         entry = started.entry
         files = [by_real[f] for f in sorted(started.files) if f in by_real]
@@ -164,12 +167,12 @@ def started_entries(
             files += inside[package]
         elif package is not None and entry.executable and not files:
             one = (package, entry.executable)
-            make = partial(cpp_executable_files, package, entry.executable, targets)
-            sources = remembered(built, one, make)
-            for source in sources:
-                real = probe("realpath", source)
-                if real in by_real:
-                    files.append(by_real[real])
+            if one not in running:
+                make = partial(cpp_executable_files, package, entry.executable, targets)
+                sources = remembered(built, one, make)
+                real = [probe("realpath", source) for source in sources]
+                running[one] = [by_real[r] for r in real if r in by_real]
+            files += running[one]
         out.append(Started(entry, files, plugin))
     return out
 

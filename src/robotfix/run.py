@@ -1216,8 +1216,9 @@ def _check_one(
 
 def _graph_of(parsed: Any) -> list[Any] | None:
     """A checked file's graph endpoints (`ros.graph.python`), dumped; None when it
-    makes none (or its tree is not there). The calls its check's index found
-    spare the reading most of the walk."""
+    makes none (or its tree is not there). The calls and imports its check's
+    index found spare the reading most of the walk, and all of it in a file
+    none of whose calls makes an endpoint."""
     if parsed.tree is None:
         return None
     from robotfix.analysis.index import built
@@ -1226,7 +1227,17 @@ def _graph_of(parsed: Any) -> list[Any] | None:
 
     index = built(parsed.tree)
     try:  # a fault here costs the graph this file's endpoints, not its check
-        found = read_python(parsed.tree, index.calls if index is not None else None)
+        found = (
+            read_python(parsed.tree)
+            if index is None
+            else read_python(
+                parsed.tree,
+                index.calls,
+                index.import_statements,
+                len(index.class_scopes),
+                endpoints_only=True,
+            )
+        )
     except (RecursionError, MemoryError):
         return None
     return dump(found) if found.endpoints else None

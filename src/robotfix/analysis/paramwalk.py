@@ -10,7 +10,6 @@ from __future__ import annotations
 import ast
 import functools
 import math
-import operator
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
@@ -29,12 +28,13 @@ from robotfix.analysis.paramsummary import (
     constants_of,
     exact,
 )
+from robotfix.analysis.paramunit import Placed, unit_nodes
 from robotfix.analysis.program import call_argument
 from robotfix.annotations import ast as A
 from robotfix.annotations.extract import Alias, Names, Refinement, extract
 from robotfix.annotations.numbers import named_number
 from robotfix.annotations.parser import parse_predicate
-from robotfix.astwalk import select, walk
+from robotfix.astwalk import walk
 from robotfix.ros.api_model import (
     NODE_CONSTRUCTORS,
     PARAMETER_TYPES,
@@ -46,12 +46,6 @@ from robotfix.source import SourceFile
 if TYPE_CHECKING:
     from robotfix.stubs.load import Param as StubParam
     from robotfix.stubs.load import StubSet
-
-_UNIT_KINDS = frozenset({ast.Call, ast.Assign, ast.AnnAssign})  # what `unit` reads
-_DEFINITIONS = frozenset(
-    {ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda}
-)
-_PLACE = operator.attrgetter("lineno", "col_offset")  # the order `unit` reads in
 
 
 def _python_constant(name: str, value: object) -> A.Expr | None:
@@ -139,6 +133,15 @@ class Walker:
         self.resolver = resolver
         self.stubs = stubs
 
+    @functools.cached_property
+    def _placed(self) -> Placed | None:
+        """The index's calls by position (None: the index is not of this tree's,
+        whose calls it would not hold)."""
+        tree = self.source.tree
+        if tree is None or id(tree) not in self.index.scopes:
+            return None
+        return Placed(self.index.calls)
+
     # -- names ------------------------------------------------------------------
     def qualname(self, node: ast.expr) -> str | None:
         return imported.dotted_name(node, self.index.imports)
@@ -175,8 +178,7 @@ class Walker:
         self.body = body
         self._bound: dict[str, _Local] | None = None
         # a function's every node; the module's, but for its functions and classes
-        skip = frozenset() if function is not None else _DEFINITIONS
-        for node in sorted(select(body, _UNIT_KINDS, skip), key=_PLACE):
+        for node in unit_nodes(body, function is not None, self._placed):
             if isinstance(node, ast.Call):
                 self.call(node)
             else:

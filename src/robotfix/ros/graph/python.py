@@ -26,7 +26,7 @@ import re
 import sys
 from bisect import bisect_left
 from collections import Counter
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import replace
 
 from robotfix.astwalk import children, dotted
@@ -52,17 +52,25 @@ def _argument(call: ast.Call, where: tuple[int, str]) -> ast.expr | None:
 
 
 def read_python(
-    tree: ast.Module, calls: Iterable[tuple[str | None, ast.Call]] | None = None
+    tree: ast.Module,
+    calls: Iterable[tuple[str | None, ast.Call]] | None = None,
+    imports: Sequence[ast.Import | ast.ImportFrom] | None = None,
+    classes: int | None = None,
+    endpoints_only: bool = False,
 ) -> FileGraph:
     """The endpoints and node names of a module's code. `calls`: every call of
     the module with its top-level class (`analysis.index.FileIndex.calls`, which
     the file's check built): then only the statements that hold an endpoint or
     node call are walked, and only those `__init__` calls are looked at for the
     classes' node names; a call the walk does not meet where its position says
-    (one in a decorator) makes the whole module walked, as without `calls`."""
+    (one in a decorator) makes the whole module walked, as without `calls`.
+    `imports` and `classes`: its import statements and how many classes it
+    defines, from the same index (`bind_module`). `endpoints_only` (with
+    `calls`): a module none of whose calls makes an endpoint is not read (an
+    empty graph: its node names are not wanted)."""
     if calls is not None:
         calls = list(calls)
-        found = _read(tree, calls)
+        found = _read(tree, calls, imports, classes, endpoints_only)
         if found is not None:
             return found
     found = _read(tree, None)
@@ -71,12 +79,19 @@ def read_python(
 
 
 def _read(
-    tree: ast.Module, calls: list[tuple[str | None, ast.Call]] | None
+    tree: ast.Module,
+    calls: list[tuple[str | None, ast.Call]] | None,
+    imports: Sequence[ast.Import | ast.ImportFrom] | None = None,
+    classes: int | None = None,
+    endpoints_only: bool = False,
 ) -> FileGraph | None:
     found = File(tree)
-    bind_module(found)
+    bind_module(found, imports if calls is not None else None, classes)
+    inits = None
     if calls is not None:
-        wanted = [c for _, c in calls if _wanted(found, c)]
+        wanted, inits, endpoints = _wanted(found, calls)
+        if endpoints_only and not endpoints:
+            return FileGraph()
         found.wanted = {id(c) for c in wanted}
         found.starts = sorted((c.lineno, c.col_offset) for c in wanted)
     _visit(found, tree.body, tree, None)
@@ -84,7 +99,7 @@ def _read(
         return None
     if any(e.kind == "client" and e.holder for e in found.found.endpoints):
         _responses(found)
-    super_names(tree, found.found, calls)
+    super_names(tree, found.found, inits)
     found.found.ros = 1 if found.rospy else 2
     return found.found
 
@@ -98,20 +113,43 @@ _TAILS = frozenset(
 )
 
 
-def _wanted(file: File, call: ast.Call) -> bool:
-    """Whether `_call` makes anything of `call` (an endpoint, a node's name)."""
-    func = call.func
-    if func.__class__ is ast.Attribute:
-        if func.attr in ENDPOINT_METHODS:
-            return True
-        if func.attr not in _TAILS:  # what it names ends so: none of them
-            return False
-    elif func.__class__ is not ast.Name:
-        return False  # no chain of names: `qualified` finds nothing
-    elif func.id not in file.imports:
-        return False  # (`print(...)`: nor then)
-    called = file.qualified(func)
-    return called is not None and (called in ENDPOINT_CLASSES or _names_node(called))
+def _wanted(
+    file: File, calls: list[tuple[str | None, ast.Call]]
+) -> tuple[list[ast.Call], dict[str | None, list[ast.Call]], bool]:
+    """The calls `_call` makes anything of (an endpoint, a node's name), in the
+    order of `calls`; the `__init__` calls by top-level class (`super_names`);
+    and whether one of the calls makes an endpoint. One pass over the calls."""
+    wanted: list[ast.Call] = []
+    inits: dict[str | None, list[ast.Call]] = {}
+    endpoints = False
+    attribute, name, methods, tails = ast.Attribute, ast.Name, ENDPOINT_METHODS, _TAILS
+    imports = file.imports
+    for owner, call in calls:
+        func = call.func
+        kind = func.__class__
+        if kind is attribute:
+            attr = func.attr  # type: ignore[attr-defined]
+            if attr in methods:
+                wanted.append(call)
+                endpoints = True
+                continue
+            if attr == "__init__":
+                inits.setdefault(owner, []).append(call)
+            if attr not in tails:  # what it names ends so: none of them
+                continue
+        elif kind is not name:
+            continue  # no chain of names: `qualified` finds nothing
+        elif func.id not in imports:  # type: ignore[attr-defined]
+            continue  # (`print(...)`: nor then)
+        called = file.qualified(func)
+        if called is None:
+            continue
+        if called in ENDPOINT_CLASSES:
+            wanted.append(call)
+            endpoints = True
+        elif _names_node(called):
+            wanted.append(call)
+    return wanted, inits, endpoints
 
 
 def _names_node(called: str) -> bool:
@@ -559,27 +597,26 @@ def _node_name(file: File, call: ast.Call, scope: Scope, cls: str | None) -> str
 def super_names(
     tree: ast.Module,
     file: FileGraph,
-    calls: list[tuple[str | None, ast.Call]] | None = None,
+    inits: dict[str | None, list[ast.Call]] | None = None,
 ) -> None:
     """Each class's node name from `super().__init__('name')` (or
     `Base.__init__(self, 'name')`), and what a class of the file derives from one.
-    `calls` (each with its top-level class): a class's `__init__` calls are
-    taken from them (none in its decorators or annotations: they name no node),
-    its code walked only when it makes more than one (their order is the walk's)."""
+    `inits`: every `__init__` call of the module by its top-level class
+    (`_wanted`): a class's are taken from them (none in its decorators or
+    annotations: they name no node), its code walked only when it makes more
+    than one (their order is the walk's); None: every class is walked."""
     classes: dict[str, ast.ClassDef] = {
         n.name: n for n in tree.body if isinstance(n, ast.ClassDef)
     }
-    inits: dict[str | None, list[ast.Call]] = {}
-    for owner, call in calls or ():
-        if isinstance(call.func, ast.Attribute) and call.func.attr == "__init__":
-            inits.setdefault(owner, []).append(call)
     for name, cls in classes.items():
         start = (cls.lineno, cls.col_offset)
         end = (cls.end_lineno or sys.maxsize, cls.end_col_offset or 0)
         mine = [  # not another class of that name (`if ...: class A`)
-            c for c in inits.get(name, ()) if start <= (c.lineno, c.col_offset) <= end
+            c
+            for c in (inits or {}).get(name, ())
+            if start <= (c.lineno, c.col_offset) <= end
         ]
-        for node in walk_all(cls) if calls is None or len(mine) > 1 else mine:
+        for node in walk_all(cls) if inits is None or len(mine) > 1 else mine:
             if not (
                 isinstance(node, ast.Call)
                 and isinstance(node.func, ast.Attribute)

@@ -9,6 +9,7 @@ each within a budget of steps (`CALL_STEPS`, `FILE_STEPS`).
 from __future__ import annotations
 
 import ast
+from collections.abc import Sequence
 
 from robotfix.astwalk import children, dotted
 from robotfix.astwalk import walk as walk_all
@@ -229,9 +230,35 @@ class File:
 BLOCKS = ("body", "handlers", "orelse", "finalbody", "cases")
 
 
-def bind_module(file: File) -> None:
+def bind_module(
+    file: File,
+    imports: Sequence[ast.Import | ast.ImportFrom] | None = None,
+    classes: int | None = None,
+) -> None:
     """Imports, class bases and methods, module functions: the statements only
-    (in the order a walk of the whole tree meets them), not the expressions."""
+    (in the order a walk of the whole tree meets them), not the expressions.
+    `imports`: every import statement of the module in that order, and
+    `classes`: how many classes it defines (`analysis.index.FileIndex`'s
+    `import_statements` and `class_scopes`): when they are all at its top level,
+    its other statements are not walked."""
+    body = file.tree.body
+    if imports is not None and classes == sum(
+        1 for n in body if n.__class__ is ast.ClassDef
+    ):
+        for statement in imports:
+            _import(file, statement)
+        for node in reversed(body):  # the walk's order: the last one first
+            if isinstance(node, ast.ClassDef):
+                _class(file, node)
+    else:
+        _walk_statements(file)
+    for item in body:
+        if isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            file.functions.setdefault("", {})[item.name] = item
+
+
+def _walk_statements(file: File) -> None:
+    """`bind_module`'s imports and classes, from a walk of every statement."""
     todo: list[ast.AST] = [file.tree]
     blocks = _BLOCK_FIELDS
     while todo:  # a class before its methods
@@ -245,20 +272,20 @@ def bind_module(file: File) -> None:
                 _import(file, node)
             continue
         if isinstance(node, ast.ClassDef):
-            file.bases[node.name] = [
-                b.id for b in node.bases if isinstance(b, ast.Name)
-            ]
-            for item in node.body:
-                if isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
-                    file.scope_class[id(item)] = node.name
-                    file.functions.setdefault(node.name, {})[item.name] = item
+            _class(file, node)
         for name in names:
             block = getattr(node, name, None)
             if block.__class__ is list:
                 todo.extend(block)
-    for item in file.tree.body:
+
+
+def _class(file: File, node: ast.ClassDef) -> None:
+    """A class's bases (by name) and methods."""
+    file.bases[node.name] = [b.id for b in node.bases if isinstance(b, ast.Name)]
+    for item in node.body:
         if isinstance(item, (ast.FunctionDef, ast.AsyncFunctionDef)):
-            file.functions.setdefault("", {})[item.name] = item
+            file.scope_class[id(item)] = node.name
+            file.functions.setdefault(node.name, {})[item.name] = item
 
 
 # each statement class's fields of `BLOCKS` (none: it holds no statement)
