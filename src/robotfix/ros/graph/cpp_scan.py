@@ -121,7 +121,7 @@ def makers_in(data: bytes) -> list[tuple[int, int, bytes]]:
     for start in _MAKER_STARTS:
         at = data.find(start)
         while at >= 0:
-            if at == 0 or data[at - 1] not in _WORD_BYTES:
+            if at == 0 or data[at - 1] not in WORD_BYTES:
                 word = _WORDS_AT.match(data, at)
                 assert word is not None
                 if word.group() in _MAKERS:
@@ -130,7 +130,7 @@ def makers_in(data: bytes) -> list[tuple[int, int, bytes]]:
     return out
 
 
-_WORD_BYTES = frozenset(b for b in range(256) if _WORD.match(bytes([b])))
+WORD_BYTES = frozenset(b for b in range(256) if _WORD.match(bytes([b])))
 
 
 def may_make(data: bytes, makers: list[tuple[int, int, bytes]], names: bool) -> bool:
