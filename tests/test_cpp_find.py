@@ -174,3 +174,17 @@ def test_handles_are_read_when_a_call_asks() -> None:
     found = cpp.read_cpp(data)
     assert [(e.name, e.handle) for e in found.endpoints] == [("c", "~")]
     assert cpp.read_cpp(data.replace(b"nh_.", b"gh_.")).endpoints[0].handle == ""
+
+
+def test_a_declaration_not_in_utf8_is_read() -> None:
+    """A Latin-1 comment in a declaration: the query's `#match?` decoded every
+    declaration's text and raised UnicodeDecodeError (an internal error of the
+    check; with other bytes, a crash of the process)."""
+    data = (
+        b'class T : public rclcpp::Node {\n  T() : Node("t") {\n'
+        b"    int /* Gr\xfc\xdfe */ x = 1;\n"
+        b'    pub_ = create_publisher<std_msgs::msg::String>("chatter", 10); } };'
+    )
+    found = cpp.read_cpp(data)
+    assert found.nodes == {"T": ["t"]}
+    assert [e.name for e in found.endpoints] == ["chatter"]
