@@ -23,18 +23,18 @@ variable (`node->create_...`).
 Bad C++ never fails: tree-sitter recovers from errors; a file over
 `MAX_CPP_BYTES` is not read, and one without any of `WORDS` (or where no name
 that makes an endpoint stands as a word, or none is called and no node is
-named: `cpp_scan`) not parsed. What the reading needs of the tree is matched
-by one tree-sitter query, in C.
+named: `cpp_scan`) not parsed. What the reading needs of the tree is found
+from the words of the file's bytes (`cpp_find`): the nodes around them.
 """
 
 from __future__ import annotations
 
-import operator
 import re
 from collections.abc import Iterator
 from typing import Any
 
 from robotfix.ros.graph import qos as Q
+from robotfix.ros.graph.cpp_find import named, nodes
 from robotfix.ros.graph.cpp_scan import (
     ACTIONS,
     AUTO,
@@ -102,7 +102,7 @@ def read_cpp(data: bytes, names: bool = True) -> FileGraph:
         tree = _parser().parse(data)
     except (ValueError, RuntimeError):
         return found
-    _File(found, data).read(tree.root_node)
+    _File(found, data, tree.root_node).read(makers)
     found.endpoints.sort(key=lambda e: (e.line, e.col, e.kind))
     return found
 
@@ -112,30 +112,26 @@ def _text(node: Any) -> str:
 
 
 class _File:
-    def __init__(self, found: FileGraph, data: bytes) -> None:
+    def __init__(self, found: FileGraph, data: bytes, root: Any) -> None:
         self.found = found
         self.data = data
+        self.root = root
         self.aliases: dict[str, str] = {}  # `using Twist = geometry_msgs::msg::Twist`
-        self.functions: list[Any] = []  # the function definitions (`callbacks`)
-        self._callbacks: dict[str, str] | None = None
+        self._callbacks: dict[str, str | None] = {}  # (`callback`)
         self.handles: dict[str, str] = {}  # NodeHandle variable -> its namespace
+        self._initialized: set[str] = set()  # (`_handle_of`)
         self.ros1 = False
         # a descriptor may make a declaration's type dynamic: then none is certain
         self.dynamic = b"dynamic_typing" in data
 
-    def read(self, root: Any) -> None:
-        # in source order: tree-sitter's order of one name's captures varies from
-        # run to run (which of two `chatterCallback`s a callback is, the order of
-        # a class's node names)
-        captures = {
-            name: sorted(nodes, key=_PLACE)
-            for name, nodes in _query().captures(root).items()
-        }
+    def read(self, makers: list[tuple[int, int, bytes]]) -> None:
+        # each kind in source order (which of two `chatterCallback`s a callback
+        # is, the order of a class's node names)
+        captures = nodes(self.root, self.data, makers)
         for node in captures.get("cls", []):
             name = node.child_by_field_name("name")
             if name is not None:
                 self._bases(node, _text(name).split("::")[-1])
-        self.functions = captures.get("fn", [])
         for node in captures.get("alias", []):
             name = node.child_by_field_name("name")
             value = node.child_by_field_name("type")
@@ -180,15 +176,16 @@ class _File:
                             )
                         )
 
-    @property
-    def callbacks(self) -> dict[str, str]:
-        """Function name -> its first parameter's type (a roscpp callback's
-        message type), made when a subscription first asks: most files make none."""
-        if self._callbacks is None:
-            self._callbacks = {}
-            for node in self.functions:
-                self._function(node, self._callbacks)
-        return self._callbacks
+    def callback(self, name: str) -> str | None:
+        """The first parameter's type of the function `name` (a roscpp
+        callback's message type; of the last definition of that name), looked
+        for when a subscription first asks: most files ask for none."""
+        if name not in self._callbacks:
+            found: dict[str, str] = {}
+            for node in named(self.root, self.data, name, "function_definition"):
+                self._function(node, found)
+            self._callbacks[name] = found.get(name)
+        return self._callbacks[name]
 
     def _function(self, node: Any, callbacks: dict[str, str]) -> None:
         """A function's first parameter's type, for a roscpp callback."""
@@ -207,8 +204,9 @@ class _File:
             if kind is not None:
                 callbacks[text.split("::")[-1]] = _text(kind)
 
-    def _initializer(self, node: Any) -> None:
-        """`: Node("talker")` names the class's node; `pnh_("~")` a private handle."""
+    def _initializer(self, node: Any, handle: str | None = None) -> None:
+        """`: Node("talker")` names the class's node; with `handle`, only
+        `pnh_("~")` making `handle` a private handle (`_handle_of`)."""
         name = _text(node.children[0]) if node.children else ""
         args = [
             c
@@ -219,11 +217,24 @@ class _File:
         last = name.split("::")[-1].split("<")[0]
         cls = _enclosing(node) if last in NODE_BASES and literal is not None else ""
         if cls and literal is not None:
-            self.found.nodes.setdefault(cls, []).append(literal)
-        elif (literal is not None and literal.startswith(("~", "/"))) or (
-            literal is not None and name.endswith("_")
+            if handle is None:
+                self.found.nodes.setdefault(cls, []).append(literal)
+        elif (
+            name == handle
+            and literal is not None
+            and (literal.startswith(("~", "/")) or name.endswith("_"))
         ):
             self.handles[name] = literal
+
+    def _handle_of(self, receiver: str) -> str:
+        """The namespace of the NodeHandle `receiver` ("?": unknown): of its
+        declaration, or of the last initializer that gives it one, looked for
+        when a roscpp call on it first asks (most files ask for none)."""
+        if receiver not in self._initialized:
+            self._initialized.add(receiver)
+            for node in named(self.root, self.data, receiver, "field_initializer"):
+                self._initializer(node, receiver)
+        return self.handles.get(receiver, "?")
 
     def _handle(self, node: Any) -> None:
         """`ros::NodeHandle nh, pnh("~");`, `auto node =
@@ -337,7 +348,7 @@ class _File:
         if ros == 1:
             self.ros1 = True
             owner = ""
-            handle = self.handles.get(recv_text, "?")
+            handle = self._handle_of(recv_text)
         name = _string(args[name_at]) if len(args) > name_at else None
         types = self._types(template, kind)
         if kind == SUBSCRIPTION and ros == 1 and not types and len(args) > 2:
@@ -432,7 +443,7 @@ class _File:
     def _callback_type(self, node: Any, kind: str) -> tuple[str, ...]:
         text = _text(node).lstrip("&").strip()
         name = text.split("::")[-1]
-        param = self.callbacks.get(name)
+        param = self.callback(name)
         if param is None:
             return ()
         param = param.replace("const", " ").replace("&", " ").strip()
@@ -444,34 +455,7 @@ class _File:
         return _interface(param, self.aliases, kind)
 
 
-_QUERY: Any = None
-_PLACE = operator.attrgetter("start_byte", "end_byte")  # a capture's source order
-# what the file's reading needs of its syntax tree, matched in C
-_PATTERNS = """
-(call_expression) @call
-(function_definition) @fn
-(alias_declaration) @alias
-(using_declaration) @using
-(field_initializer) @init
-((declaration) @decl (#match? @decl "NodeHandle|make_shared"))
-((field_declaration) @decl (#match? @decl "NodeHandle"))
-(class_specifier) @cls
-(struct_specifier) @cls
-"""
-# (a class's name and bases are looked at in Python: a pattern with fields makes
-# the query's compiling, in every run that parses C++, 70% dearer)
 MAX_DEPTH = 400  # ancestors looked at for the enclosing class
-
-
-def _query() -> Any:
-    global _QUERY
-    if _QUERY is None:
-        import tree_sitter
-        import tree_sitter_cpp
-
-        language = tree_sitter.Language(tree_sitter_cpp.language())
-        _QUERY = tree_sitter.QueryCursor(tree_sitter.Query(language, _PATTERNS))
-    return _QUERY
 
 
 def _declarator(node: Any) -> Any:

@@ -121,7 +121,7 @@ def makers_in(data: bytes) -> list[tuple[int, int, bytes]]:
     for start in _MAKER_STARTS:
         at = data.find(start)
         while at >= 0:
-            if at == 0 or data[at - 1] not in _WORD_BYTES:
+            if at == 0 or data[at - 1] not in WORD_BYTES:
                 word = _WORDS_AT.match(data, at)
                 assert word is not None
                 if word.group() in _MAKERS:
@@ -130,7 +130,7 @@ def makers_in(data: bytes) -> list[tuple[int, int, bytes]]:
     return out
 
 
-_WORD_BYTES = frozenset(b for b in range(256) if _WORD.match(bytes([b])))
+WORD_BYTES = frozenset(b for b in range(256) if _WORD.match(bytes([b])))
 
 
 def may_make(data: bytes, makers: list[tuple[int, int, bytes]], names: bool) -> bool:
@@ -185,7 +185,10 @@ def _received(data: bytes, start: int) -> bool:
 def _other_node(data: bytes, names: bool) -> bool:
     """Whether `data` names `Node` or `LifecycleNode` with a qualifier that is not
     rclcpp's (`nav2_util::LifecycleNode`, `::rclcpp::Node`), as `_File._bases`
-    reads a base class (its text without blanks): an endpoint if it is one; or,
+    reads a base class (its text without blanks): an endpoint if it is one (not
+    when `::` goes on after it, blanks apart: a base's last name is no scope;
+    nav2's headers name `nav2::LifecycleNode::WeakPtr`, 142 of the 150 files of
+    corpus25 parsed for no endpoint before); or,
     with `names`, any as a base class or built (`: public rclcpp::Node`,
     `: Node("talker")`): a node class, its name."""
     at = data.find(b"Node")
@@ -197,8 +200,9 @@ def _other_node(data: bytes, names: bool) -> bool:
             if found is not None:
                 qualifier, begin = found
                 if qualifier + data[start:end] not in _OURS:
-                    return True
-                if names and _based_or_built(data, begin, end):
+                    if data[end : end + 80].lstrip(_BLANKS)[:2] != b"::":
+                        return True  # (`nav2::LifecycleNode::SharedPtr`: a type in it)
+                elif names and _based_or_built(data, begin, end):
                     return True
         at = data.find(b"Node", end)
     return False
