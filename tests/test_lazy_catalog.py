@@ -135,7 +135,9 @@ def test_digests_from_an_earlier_run_give_the_fingerprints_a_full_load_gives(
 
 
 @pytest.mark.parametrize("lazy", [False, True])
-def test_has_package_answers_as_a_scan_of_every_name(tmp_path: Path, lazy: bool) -> None:
+def test_has_package_answers_as_a_scan_of_every_name(
+    tmp_path: Path, lazy: bool
+) -> None:
     """`has_package` keeps the names' packages in a set; it answers what a scan of
     every declared and standard name for the prefix `package/` answers, before and
     after lookups add names, for a spelled package, a prefix, a path and nothing."""
