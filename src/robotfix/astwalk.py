@@ -185,6 +185,9 @@ def dotted(node: ast.expr) -> str | None:
 # the fields whose list holds statements (or `except` handlers); a `body` that is
 # not a list is an expression's (`lambda`, `a if c else b`)
 BLOCK_FIELDS = frozenset({"body", "orelse", "finalbody", "handlers"})
+# every field of a statement that holds statements, handlers or cases, in the
+# order the statement walks of the graph and parameter readings take them
+STATEMENT_BLOCKS = ("body", "handlers", "orelse", "finalbody", "cases")
 
 
 class Mentions:

@@ -10,7 +10,7 @@ import ast
 import operator
 from bisect import bisect_left
 
-from robotfix.astwalk import select
+from robotfix.astwalk import STATEMENT_BLOCKS, select
 
 UNIT_KINDS = frozenset({ast.Call, ast.Assign, ast.AnnAssign})  # what a unit reads
 _DEFINITIONS = frozenset(
@@ -18,8 +18,6 @@ _DEFINITIONS = frozenset(
 )
 PLACE = operator.attrgetter("lineno", "col_offset")  # the order a unit reads in
 _CALLS = frozenset({ast.Call})
-# the fields of a statement that hold statements (or handlers, cases)
-_BLOCKS = ("body", "handlers", "orelse", "finalbody", "cases")
 
 
 class Placed:
@@ -57,7 +55,7 @@ def unit_nodes(
             continue
         if kind is ast.FunctionDef or kind is ast.AsyncFunctionDef:
             found += _annotation_calls(node)  # type: ignore[arg-type]
-        for name in _BLOCKS:
+        for name in STATEMENT_BLOCKS:
             block = getattr(node, name, None)
             if block.__class__ is list:
                 todo += block

@@ -11,7 +11,7 @@ from __future__ import annotations
 import ast
 from collections.abc import Sequence
 
-from robotfix.astwalk import children, dotted
+from robotfix.astwalk import STATEMENT_BLOCKS, children, dotted
 from robotfix.astwalk import walk as walk_all
 from robotfix.ros.graph import qos as Q
 from robotfix.ros.graph.model import MIDDLE, FileGraph, Qos
@@ -227,7 +227,7 @@ class File:
 
 
 # the fields of a statement that hold statements, in `_fields` order
-BLOCKS = ("body", "handlers", "orelse", "finalbody", "cases")
+BLOCKS = STATEMENT_BLOCKS  # (`python.py` reads them by this name)
 
 
 def bind_module(
