@@ -2,7 +2,8 @@
 callgrind, which a shared machine's load does not move (time moved 30% between
 batches of the same command here).
 
-Usage: python benchmarks/instruction_ratio.py [--layouts N] FOLDER [FOLDER ...]
+Usage: python benchmarks/instruction_ratio.py [--layouts N] [--python]
+           FOLDER [FOLDER ...]
 
 Runs, each in its own process under `valgrind --tool=callgrind` (valgrind must be on
 PATH; about 50x slower than the runs themselves):
@@ -14,7 +15,11 @@ PATH; about 50x slower than the runs themselves):
   side counts compiling Python it imports).
 
 and prints both totals (every instruction of the process: start-up, imports, exit)
-and their ratio. Instructions are not time: the floor is C code that runs more
+and their ratio. With `--python` both count on a copy of the folders' Python files
+only (`real_code.py --mypy`'s tree: no C++, launch or parameter files beside them):
+the corpus issue 25's target 1 names ("public ROS Python"), where without it the
+check's reading of C++ for the ROS graph counts against a floor that parses only
+Python. Instructions are not time: the floor is C code that runs more
 instructions per cycle than the analysis, so the ratio in CPU time (`real_code.py`)
 is higher than this one.
 
@@ -41,7 +46,7 @@ import sys
 import tempfile
 from pathlib import Path
 
-from real_code import FLOOR  # the same floor as the timed benchmark
+from real_code import FLOOR, module_tree  # the same floor and tree as the timed one
 
 from robotfix.api import python_files
 
@@ -97,9 +102,14 @@ def instructions(command: list[str], env: dict[str, str], out: Path) -> int:
 
 
 def main(argv: list[str]) -> int:
-    layouts = 1
-    if argv[:1] == ["--layouts"] and len(argv) > 1 and argv[1].isdigit():
-        layouts, argv = max(1, int(argv[1])), argv[2:]
+    layouts, python_only = 1, False
+    while argv[:1] in (["--layouts"], ["--python"]):
+        if argv[0] == "--python":
+            python_only, argv = True, argv[1:]
+        elif len(argv) > 1 and argv[1].isdigit():
+            layouts, argv = max(1, int(argv[1])), argv[2:]
+        else:
+            break
     folders = [Path(p) for p in argv]
     if not folders or shutil.which("valgrind") is None:
         print(__doc__.split("\n\n")[1], file=sys.stderr)
@@ -109,6 +119,9 @@ def main(argv: list[str]) -> int:
     env = dict(os.environ, PYTHONHASHSEED="0")
     env.pop("PYTHONDONTWRITEBYTECODE", None)
     with tempfile.TemporaryDirectory() as tmp:
+        if python_only:
+            files = module_tree(files, folders, Path(tmp, "tree"))
+            folders = [Path(tmp, "tree")]
         env.setdefault("ROBOTFIX_CACHE_DIR", str(Path(tmp, "machine-cache")))
         names = Path(tmp, "names.txt")
         names.write_text("".join(f"{f}\n" for f in files), "utf-8", "surrogateescape")

@@ -81,6 +81,38 @@ def test_instruction_ratio_reports_the_ratio_of_the_medians() -> None:
     assert len(instruction_ratio.summary([100], [450])) == 3  # one layout: as before
 
 
+def test_instruction_ratio_python_counts_the_python_files_alone(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """--python: the check and the floor both read a copy holding only the Python
+    files (the corpus target 1 names), not the C++ and launch files beside them."""
+    repo = tmp_path / "ros2+demos"
+    (repo / "pkg" / "src").mkdir(parents=True)
+    (repo / "pkg" / "node.py").write_text("x = 1\n")
+    (repo / "pkg" / "src" / "talker.cpp").write_text("int main() {}\n")
+    (repo / "pkg" / "demo.launch.xml").write_text("<launch/>\n")
+    seen: dict[str, list[str]] = {}
+
+    def counted(command: list[str], env: dict[str, str], out: Path) -> int:
+        if out.name == "cg.floor":
+            seen["floor"] = Path(command[-1]).read_text().split()
+        else:
+            folders = command[command.index("check") + 1 : command.index("--no-cache")]
+            seen["check"] = sorted(
+                str(f.relative_to(folders[0])) for f in Path(folders[0]).rglob("*.*")
+            )
+        return 100
+
+    ran = type("Ran", (), {"returncode": 0})
+    monkeypatch.setattr(instruction_ratio.shutil, "which", lambda name: "/bin/true")
+    monkeypatch.setattr(instruction_ratio.subprocess, "run", lambda *a, **k: ran)
+    monkeypatch.setattr(instruction_ratio, "instructions", counted)
+    assert instruction_ratio.main(["--python", str(repo)]) == 0
+    assert seen["check"] == ["ros2_demos/pkg/node.py"]
+    assert [Path(f).name for f in seen["floor"]] == ["node.py"]
+    assert all("ros2_demos" in f for f in seen["floor"])
+
+
 def test_peers_does_not_time_a_failed_run(tmp_path: Path) -> None:
     node = _broken_project(tmp_path)
     command = [sys.executable, "-m", "robotfix", "check", str(node)]
