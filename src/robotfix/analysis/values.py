@@ -259,7 +259,7 @@ class Value:
 NONE = Value("none")
 _new = object.__new__
 _SYM = A.Sym
-_SYM_IDENT, _SYM_SORT = A.slot_setter(_SYM, "ident"), A.slot_setter(_SYM, "sort")
+_SYM_IDENT, _SYM_SORT = A.SET_SYM_IDENT, A.SET_SYM_SORT
 
 
 def unknown(kind: str, ident: int, unit: Unit | None) -> Value:

@@ -67,8 +67,8 @@ class Sym:
     sort: str
 
     def __init__(self, ident: int, sort: str) -> None:
-        _SYM_IDENT(self, ident)
-        _SYM_SORT(self, sort)
+        SET_SYM_IDENT(self, ident)
+        SET_SYM_SORT(self, sort)
 
 
 @dataclass(frozen=True, slots=True)
@@ -102,7 +102,8 @@ def slot_setter(cls: type, name: str) -> Callable[[object, object], None]:
 _NUM_VALUE, _NUM_IS_INT = slot_setter(Num, "value"), slot_setter(Num, "is_int")
 _NUM_LABEL = slot_setter(Num, "label")
 _STR_VALUE, _STR_LABEL = slot_setter(Str, "value"), slot_setter(Str, "label")
-_SYM_IDENT, _SYM_SORT = slot_setter(Sym, "ident"), slot_setter(Sym, "sort")
+# public: `analysis.values.unknown` makes symbols by the thousand without `__init__`
+SET_SYM_IDENT, SET_SYM_SORT = slot_setter(Sym, "ident"), slot_setter(Sym, "sort")
 _UNARY_OP, _UNARY_OPERAND = slot_setter(Unary, "op"), slot_setter(Unary, "operand")
 _BINARY_OP, _BINARY_LEFT = slot_setter(Binary, "op"), slot_setter(Binary, "left")
 _BINARY_RIGHT = slot_setter(Binary, "right")
