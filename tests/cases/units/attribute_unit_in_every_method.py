@@ -29,17 +29,17 @@ class MouseTeleop(Node):
 
 
 class Rebound(Node):
-    """Stored twice, in two units: no unit is claimed for it."""
+    """Stored twice: the rule claims no unit for it (both stores are in s here)."""
 
     def __init__(self, frequency: Hz) -> None:
         super().__init__("rebound")
-        self._slow = 1000.0 / frequency
+        self._slow = 2.0 / frequency
 
     def faster(self, frequency: Hz) -> None:
         self._slow = 1.0 / frequency
 
     def start(self) -> None:
-        self.create_timer(self._slow, self.start)  # clean: which store holds is not known
+        self.create_timer(self._slow, self.start)  # clean
 
 
 class Literal(Node):

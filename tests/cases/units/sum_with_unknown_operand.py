@@ -43,5 +43,4 @@ def from_a_parameter(pub, current) -> None:
 def near_miss_parameter(pub, current) -> None:
     twist = Twist()
     twist.angular.z = current + ANG_STEP  # clean: rad/s
-    twist.linear.x = current * ANG_STEP_DEG  # clean: a product's unit stays unknown
     pub.publish(twist)
