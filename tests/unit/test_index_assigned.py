@@ -58,3 +58,42 @@ def test_nested_scopes_and_subscripts_count() -> None:
     )
     found = index_module(ast.parse(text)).assigned
     assert found == Counter({"a": 3, "i": 1, "b": 1, "c": 1})
+
+
+def _walked_none(tree: ast.Module) -> Counter[str]:
+    """The attributes assigned `None` (`frames.remember`'s stores aside)."""
+    counts: Counter[str] = Counter()
+    for item in ast.walk(tree):
+        if isinstance(item, (ast.Assign, ast.AnnAssign)):
+            value = item.value
+            if isinstance(value, ast.Constant) and value.value is None:
+                targets = (
+                    item.targets if isinstance(item, ast.Assign) else [item.target]
+                )
+                counts.update(t.attr for t in targets if isinstance(t, ast.Attribute))
+    return counts
+
+
+def test_the_index_counts_the_attributes_assigned_none_as_a_walk_does() -> None:
+    files = sorted((ROOT / "tests" / "cases").rglob("*.py"))
+    files += sorted((ROOT / "src" / "robotfix").rglob("*.py"))
+    compared = 0
+    for path in files:
+        try:
+            tree = ast.parse(path.read_bytes())
+        except (SyntaxError, ValueError):
+            continue
+        expected = _walked_none(tree)
+        assert +index_module(tree).assigned_none == +expected, path
+        compared += bool(expected)
+    assert compared > 20
+    text = (
+        "class C:\n"
+        "    def m(self):\n"
+        "        self.a = self.b = None\n"
+        "        self.c: int | None = None\n"
+        "        self.d = 0\n"
+        "        x.e += None\n"
+    )
+    found = index_module(ast.parse(text)).assigned_none
+    assert found == Counter({"a": 1, "b": 1, "c": 1})

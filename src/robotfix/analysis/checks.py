@@ -361,7 +361,10 @@ class Checker:
         if left.literal or right.literal:
             return (right.unit if left.literal else left.unit), False
         if left.unit is None or right.unit is None:
-            return None, False
+            # one side's unit unknown (a loop's havoc, a parameter, a lost
+            # product): a sum that means anything is in the other's unit, and
+            # one that does not is the bug itself
+            return (right.unit if left.unit is None else left.unit), False
         if left.unit.same_as(right.unit) and not left.factors and not right.factors:
             return left.unit, False
         # each side against the unit the other has after its converting factors

@@ -29,7 +29,7 @@ from typing import TYPE_CHECKING
 from robotfix import messages
 from robotfix.analysis import heap
 from robotfix.analysis.state import State
-from robotfix.analysis.values import Value, replace
+from robotfix.analysis.values import NUMERIC, Value, replace
 from robotfix.annotations import ast as A
 from robotfix.annotations.units import Unit, is_frame, named
 from robotfix.astwalk import walk
@@ -48,11 +48,18 @@ if TYPE_CHECKING:
 @dataclass
 class FrameFacts:
     """Per file: how often each attribute name is assigned anywhere (`x.name = ...`),
-    and the frames of instance attributes bound once (class, attribute) -> frame."""
+    and the frames and units of instance attributes bound once: (class, attribute)
+    -> frame, -> the number stored (its unit, factors and radian), and those stored
+    in more than one unit (a store met again in a loop). Entries are only added:
+    the editor's memo sees a write by the sizes."""
 
     assigned: Counter[str]
     attributes: dict[tuple[str, str], str] = field(default_factory=dict)
     followed: set[int] = field(default_factory=set)  # ids of tf2 calls modelled
+    units: dict[tuple[str, str], Value] = field(default_factory=dict)
+    mixed: set[tuple[str, str]] = field(default_factory=set)
+    # how often each attribute name is assigned `None` (`self.a = None`)
+    nones: Counter[str] = field(default_factory=Counter)
 
 
 def normalize(name: str) -> str:
@@ -427,10 +434,12 @@ def facts(ctx: FileContext) -> FrameFacts:
         # the module's one walk counted them (assignments are statements: all of
         # them are indexed, once) and found the `setattr` calls
         found = FrameFacts(Counter(ctx.index.assigned))
+        found.nones.update(ctx.index.assigned_none)
         if ctx.index.setattrs:
             found.assigned["*"] += 2 * len(ctx.index.setattrs)
     else:
         counts: Counter[str] = Counter()
+        nones: Counter[str] = Counter()
         tree = ctx.source.tree
         for item in walk(tree) if tree is not None else ():  # once per file
             kind = type(item)  # (one test per node: this walks the whole file)
@@ -451,23 +460,66 @@ def facts(ctx: FileContext) -> FrameFacts:
                 for part in walk(target):
                     if isinstance(part, ast.Attribute):
                         counts[part.attr] += 1
-        found = FrameFacts(counts)
+            value = getattr(item, "value", None)
+            if kind is not ast.AugAssign and type(value) is ast.Constant:
+                for target in targets if value.value is None else ():
+                    if type(target) is ast.Attribute:
+                        nones[target.attr] += 1
+        found = FrameFacts(counts, nones=nones)
     ctx.frame_facts = found
     return found
 
 
 def remember(ctx: FileContext, class_name: str, attr: str, value: Value) -> None:
     """`self.frame = 'map'` (or a parameter read with a default), bound nowhere else
-    in the file: the attribute names that frame in every method."""
-    frame = known_frame(value) if value.kind in ("str", "unknown") else None
-    found = facts(ctx)
-    if frame is None or found.assigned[attr] != 1 or found.assigned["*"]:
+    in the file: the attribute names that frame in every method. So does a number
+    with a unit (`self.period = 1000.0 / self.rate_hz` is in ms in every method):
+    its unit, not its value."""
+    kind, frame = value.kind, None
+    if kind in ("str", "unknown"):
+        frame = known_frame(value)
+        if frame is None:
+            return
+    elif kind not in NUMERIC or value.unit is None or value.literal:
         return
-    found.attributes[(class_name, attr)] = frame
+    found = facts(ctx)
+    if found.assigned["*"]:
+        return
+    if found.assigned[attr] != 1 and (
+        frame is not None or not _once_but_none(found, attr)
+    ):
+        return
+    key = (class_name, attr)
+    if frame is not None:
+        found.attributes[key] = frame
+    elif kind in NUMERIC:
+        known = found.units.get(key)
+        if known is None:
+            found.units[key] = value
+        elif _unit_of(known) != _unit_of(value):
+            found.mixed.add(key)
+
+
+def _once_but_none(found: FrameFacts, attr: str) -> bool:
+    """Bound once to something other than `None` (a number's unit holds wherever it
+    is not None: `if rate > 0: self.period = 1 / rate` / `else: self.period = None`)."""
+    return found.assigned[attr] - found.nones[attr] == 1
+
+
+def _unit_of(value: Value) -> tuple[object, ...]:
+    return (value.unit, value.factors, value.rad_free)
 
 
 def recall(ctx: FileContext, class_name: str, attr: str) -> Value | None:
-    frame = facts(ctx).attributes.get((class_name, attr))
-    if frame is None:
+    found = facts(ctx)
+    key = (class_name, attr)
+    frame = found.attributes.get(key)
+    if frame is not None:
+        return replace(ctx.fresh("str", f"`self.{attr}`"), frame=frame)
+    stored = found.units.get(key)
+    if stored is None or key in found.mixed:
         return None
-    return replace(ctx.fresh("str", f"`self.{attr}`"), frame=frame)
+    fresh = ctx.fresh(stored.kind, f"`self.{attr}`")
+    return replace(
+        fresh, unit=stored.unit, factors=stored.factors, rad_free=stored.rad_free
+    )

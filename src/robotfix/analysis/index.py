@@ -54,6 +54,8 @@ class FileIndex:
     # how often each attribute name is a part of an assignment's target (`x.a = `,
     # `x.a += `, `x[o.i] = `), as `frames.facts` counts them
     assigned: Counter[str] = field(default_factory=Counter)
+    # of those, the assignments of `None` to an attribute (`self.a = None`)
+    assigned_none: Counter[str] = field(default_factory=Counter)
     # scopes `index_scope` indexed on demand, kept apart from `scopes` so that the
     # index stays as `index_module` built it: id(node) -> (node, its names)
     extra: dict[int, tuple[ast.AST, ScopeNames]] = field(default_factory=dict)
@@ -208,12 +210,16 @@ def _drain(index: FileIndex, todo: Todo, where: Where, root: int) -> None:
                 names = _CALLED  # a keyword's value is stacked in its place below
                 keywords = node.keywords
             elif special is _ASSIGN:
-                for part in node.targets:  # most are a name or `self.x`
+                targets = node.targets
+                for part in targets:  # most are a name or `self.x`
                     while type(part) is attribute_class:
                         assigned[part.attr] += 1
                         part = part.value
                     if type(part) is not name_class:
                         _count_assigned(index, part)
+                v = node.value
+                if type(v) is constant_class and v.value is None:
+                    _count_none(index, targets)
             elif special is _EXPRESSION:  # its one child in its place
                 append(node.value)
                 continue
@@ -305,12 +311,23 @@ def _record(
 ) -> None:
     if kind is ast.AugAssign or kind is ast.AnnAssign:
         _count_assigned(index, node.target)  # type: ignore[attr-defined]
+        value = getattr(node, "value", None)
+        none = type(value) is ast.Constant and value.value is None
+        if kind is ast.AnnAssign and none:
+            _count_none(index, [node.target])  # type: ignore[attr-defined]
     if kind is ast.Global or kind is ast.Nonlocal:
         names.global_names.update(node.names)  # type: ignore[attr-defined]
     elif kind is ast.ExceptHandler and node.name:  # type: ignore[attr-defined]
         names.local_names.add(node.name)  # type: ignore[attr-defined]
     elif kind is ast.AnnAssign:
         _record_annotation(index, names, node, cls, self_name)  # type: ignore[arg-type]
+
+
+def _count_none(index: FileIndex, targets: list[ast.expr]) -> None:
+    """`x.a = None`: an attribute that may hold a value or None (`frames.remember`)."""
+    for target in targets:
+        if type(target) is ast.Attribute:
+            index.assigned_none[target.attr] += 1
 
 
 def _count_assigned(index: FileIndex, target: ast.AST) -> None:
