@@ -630,13 +630,15 @@ def message_frame_mismatch(
     expected: str,
     declared: Declared,
     default: bool = False,
+    part_of: str | None = None,
 ) -> Diagnostic:
     """RF201: a stamped message whose header names one frame given where a
-    refinement says another (`Annotated[PoseStamped, "Frame('map')"]`); a
-    warning when the frame is a parameter's default (`default`), which a launch
-    or parameter file may change."""
+    refinement says another (`Annotated[PoseStamped, "Frame('map')"]`), or a part
+    of one (`msg.pose.pose`, `part_of` its type); a warning when the frame is a
+    parameter's default (`default`), which a launch or parameter file may change."""
+    whose = "its" if part_of is None else f"the {part_of} it is part of, its"
     message = (
-        f"`{stmt}` gives a message in frame `{got}` (its `{frame_path}`) where "
+        f"`{stmt}` gives a message in frame `{got}` ({whose} `{frame_path}`) where "
         f"`{expected}` is assumed{_axes(got, expected)}: transform it with tf2 first"
     )
     notes = [declared.note()]

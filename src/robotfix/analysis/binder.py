@@ -641,6 +641,7 @@ class Binder(CallEvaluator):
                     lookup = self.refinement_lookup(decl, state)
                     rules = self.fields.message_rules(decl, name, lookup)
                     self.fields.assume_rules(state, value.ref, rules, name)
+                    frames.received_in(self.ctx, state, value.ref, decl.unit)
             elif decl is not None and decl.base == "msg":
                 lookup = self.refinement_lookup(decl, state)
                 value = self.refined.assumed(state, name, decl, lookup)

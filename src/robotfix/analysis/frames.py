@@ -218,14 +218,16 @@ def check_message(
     obj = state.heap.get(ref)
     if expected is None or obj is None:
         return
-    if FRAMED_FIELDS.get(obj.type):
-        frame_path = FRAMED_FIELDS[obj.type][0][1]
-    else:  # any message with a header (sensor_msgs/LaserScan, Imu, Range, ...)
-        spec = ctx.catalog.field_at(obj.type, "header.frame_id")
-        if spec is None or spec.kind != "str" or spec.array:
+    frame_path, framing, part_of = _frame_path(ctx, obj.type), ref, None
+    if frame_path is None:  # a Pose, Point, ...: framed by the message it is part of
+        spec = ctx.catalog.lookup(obj.type)
+        first = next(iter(spec.fields), None) if spec is not None else None
+        found = frame_at(state, ref, first) if first is not None else None
+        if found is None:
             return
-        frame_path = "header.frame_id"
-    named = peek(state, ref, frame_path)
+        _, framing, frame_path = found
+        part_of = state.heap[framing].type
+    named = peek(state, framing, frame_path)
     frame = known_frame(named)
     if named is None or frame is None or frame == normalize(expected):
         return
@@ -239,9 +241,33 @@ def check_message(
             normalize(expected),
             declared,
             default=not isinstance(named.term, A.Str),
+            part_of=part_of,
         ),
         once=("frames", id(site), declared.what),
     )
+
+
+def _frame_path(ctx: FileContext, msg_type: str) -> str | None:
+    """The string field that names the frame of a message's data, if it has one."""
+    if FRAMED_FIELDS.get(msg_type):
+        return FRAMED_FIELDS[msg_type][0][1]
+    # any message with a header (sensor_msgs/LaserScan, Imu, Range, ...)
+    spec = ctx.catalog.field_at(msg_type, "header.frame_id")
+    if spec is None or spec.kind != "str" or spec.array:
+        return None
+    return "header.frame_id"
+
+
+def received_in(ctx: FileContext, state: State, ref: int, unit: Unit | None) -> None:
+    """A message that arrived whose refinement names its frame (`msg:
+    Annotated[Odometry, "Frame('odom')"]`): its header names that frame, as the
+    refinement says, so the data read from it is in it."""
+    frame = frame_of(unit)
+    obj = state.heap.get(ref)
+    path = _frame_path(ctx, obj.type) if obj is not None else None
+    if frame is None or path is None:
+        return
+    _set(ctx, state, ref, path, Value("str", A.Str(frame)))
 
 
 def _other_frame(state: State, data: Value | None, frame: str) -> str | None:

@@ -131,6 +131,7 @@ class RefinedChecker:
             assert message.ref is not None
             rules = self.fields.message_rules(decl, name, lookup)
             self.fields.assume_rules(state, message.ref, rules, name)
+            frames.received_in(self.ctx, state, message.ref, decl.unit)
             return message
         value = self.ctx.fresh(decl.base, f"`{name}`", decl.unit)
         if value.term is not None:

@@ -275,6 +275,17 @@ def _nearer(factor: float, need: float) -> bool:
     return abs(math.log(factor / need)) < abs(math.log(factor))
 
 
+def _frame_only(unit: Unit) -> bool:
+    """A frame and no unit: where a number is, not in what."""
+    return bool(unit.dims) and all(is_frame(d) for d, _ in unit.dims)
+
+
+def _where(unit: Unit) -> Unit:
+    """The frames of `unit` alone, named as `Frame(...)` names them."""
+    dims = tuple(x for x in unit.dims if is_frame(x[0]))
+    return Unit(dims, text=", ".join(f"frame {d.split(':', 1)[1]}" for d, _ in dims))
+
+
 def fit(
     got: Unit, expected: Unit, factors: Factors = (), rad_free: bool = False
 ) -> Fit:
@@ -287,8 +298,15 @@ def fit(
     (`rad_free`) may gain or lose one power of radian (`omega * r` is m/s, `v / r`
     is rad/s). A literal factor of 2*pi turns revolutions (Hz) into radians and
     back. A frame only one side names is not a mismatch (in ROS the frame of a
-    message's numbers lives in its header).
+    message's numbers lives in its header), and a side that names a frame and no
+    unit (`Frame('map')` alone) says nothing of the other's unit: only two frames
+    can disagree then.
     """
+    if _frame_only(expected) or _frame_only(got):
+        where, wanted = _where(got), _where(expected)
+        if not where.dims or not wanted.dims or where.dims == wanted.dims:
+            return Fit("ok", got if got.text else named(got))
+        got, expected, factors = where, wanted, ()
     has_frame = any(is_frame(d) for d, _ in expected.dims)
     got_frame = any(is_frame(d) for d, _ in got.dims)
     if has_frame != got_frame:

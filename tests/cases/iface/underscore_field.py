@@ -43,9 +43,9 @@ class Base(Node):
         cmd.mode = DriveCommand.MODE_IDLE
         self.pub.publish(cmd)
 
-    def frames(self, x: Annotated[float, "Frame('map')"]) -> None:
+    def frames(self, x: Annotated[float, "Frame('map') and abs(_) <= 3"]) -> None:
         cmd = DriveCommand()
-        cmd.heading = x  # error: RF201
+        cmd.heading = x  # clean: a frame alone names no unit (heading's is rad)
         cmd.mode = 7  # error: RF101
         self.pub.publish(cmd)
 
