@@ -1552,3 +1552,27 @@ def test_a_frame_contract_on_any_message_with_a_header(tmp_path: Path) -> None:
         tmp_path, "scanner", {"follower.py": listener, "bridge.py": talker}
     )
     assert found == [("bridge.py", 7, "RF201")]
+
+
+def test_a_node_and_a_client_made_inside_a_block_are_read() -> None:
+    """demos' add_two_ints_client makes its node and client inside `try:` /
+    `with rclpy.init():`: the node's name and the client's holder (`:main/cli`,
+    which the client's check names at `call_async`) come from the statement that
+    makes each, not from the block that holds it. (They were read only from a
+    function's own statements: the node was `?(...)` and the contract unchecked.)"""
+    found = _py(
+        "import rclpy\n"
+        "from example_interfaces.srv import AddTwoInts\n"
+        "def main():\n"
+        "    try:\n"
+        "        with rclpy.init():\n"
+        "            node = rclpy.create_node('add_two_ints_client')\n"
+        "            if node:\n"
+        "                cli = node.create_client(AddTwoInts, 'add_two_ints')\n"
+        "    except KeyboardInterrupt:\n"
+        "        pass\n"
+    )
+    assert found.nodes == {"node": ["add_two_ints_client"]}
+    assert [(e.name, e.holder) for e in found.endpoints] == [
+        ("add_two_ints", ":main/cli")
+    ]

@@ -186,9 +186,11 @@ def _visit(file: File, body: list[ast.stmt], scope: Scope, cls: str | None) -> N
         if isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef)):
             _visit(file, statement.body, statement, cls)
             continue
-        todo: list[tuple[ast.AST, Scope]] = [(statement, scope)]
+        # (node, its scope, the innermost statement holding it: a call's own
+        # `x = Node(...)` inside a `with`, `try` or `if`, not the block's)
+        todo: list[tuple[ast.AST, Scope, ast.stmt]] = [(statement, scope, statement)]
         while todo:
-            node, where = todo.pop()
+            node, where, inner = todo.pop()
             if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
                 _visit(file, node.body, node, cls)
                 continue
@@ -201,19 +203,21 @@ def _visit(file: File, body: list[ast.stmt], scope: Scope, cls: str | None) -> N
                     a.arg for a in [*args.posonlyargs, *args.args, *args.kwonlyargs]
                 }
                 file.bound.add(id(node))  # its names: its parameters only
-                todo.append((node.body, node))
+                todo.append((node.body, node, inner))
                 continue
             if isinstance(node, ast.Call):
                 if id(node) in file.wanted:
                     file.met += 1
-                    _call(file, node, where, cls, statement)
+                    _call(file, node, where, cls, inner)
                 elif file.starts is None:  # the file's calls not known
-                    _call(file, node, where, cls, statement)
-            elif isinstance(node, ast.stmt) and not _holds(file, node):
-                continue  # (an `if`'s branch, a loop's body: no call starts there)
+                    _call(file, node, where, cls, inner)
+            elif isinstance(node, ast.stmt):
+                if not _holds(file, node):
+                    continue  # (an `if`'s branch, a loop's body: no call starts there)
+                inner = node
             for child in children(node):
                 if child.__class__ not in _LEAVES:
-                    todo.append((child, where))
+                    todo.append((child, where, inner))
 
 
 # nodes without children, neither calls nor scopes: not put on a walk's stack
