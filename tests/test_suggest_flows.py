@@ -199,6 +199,9 @@ def _old_lines(source: str, changed: str) -> dict[int, int]:
     return lines
 
 
+_MISMATCH = {"RF202": "RF201"}  # one unit mismatch, told at the operands
+
+
 @pytest.mark.parametrize(
     "path", SINGLE_FILES, ids=lambda p: str(p.relative_to(CASES_ROOT))
 )
@@ -229,9 +232,6 @@ def test_applying_every_suggestion_on_a_case_adds_no_finding(path: Path) -> None
         if (_MISMATCH.get(d.code, d.code), old.get(d.span.line)) not in before
     ]
     assert new == [], changed
-
-
-_MISMATCH = {"RF202": "RF201"}  # one unit mismatch, told at the operands
 
 
 def test_suggest_from_the_root_uses_each_packages_own_settings(tmp_path: Path) -> None:

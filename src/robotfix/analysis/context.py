@@ -193,8 +193,7 @@ class FileContext:
             if self.unit_log is not None:
                 self._shared(term)
             return term  # type: ignore[return-value]
-        self._next += 1  # (`fresh`'s numbering and name, without the value)
-        ident = self._next
+        ident = self.fresh_id()  # (`fresh`'s numbering and name, without the value)
         self.sym_names[ident] = description
         sym = self._derived[key] = A.Sym(ident, sort_of(kind))
         self._tie_first(key, kind, description, sym)

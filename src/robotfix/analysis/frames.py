@@ -487,10 +487,8 @@ def facts(ctx: FileContext) -> FrameFacts:
                     if isinstance(part, ast.Attribute):
                         counts[part.attr] += 1
             value = getattr(item, "value", None)
-            if kind is not ast.AugAssign and type(value) is ast.Constant:
-                for target in targets if value.value is None else ():
-                    if type(target) is ast.Attribute:
-                        nones[target.attr] += 1
+            if kind is not ast.AugAssign and _is_none(value):
+                nones.update(t.attr for t in targets if type(t) is ast.Attribute)
         found = FrameFacts(counts, nones=nones)
     ctx.frame_facts = found
     return found
@@ -518,12 +516,16 @@ def remember(ctx: FileContext, class_name: str, attr: str, value: Value) -> None
     key = (class_name, attr)
     if frame is not None:
         found.attributes[key] = frame
-    elif kind in NUMERIC:
+    else:  # a number with a unit
         known = found.units.get(key)
         if known is None:
             found.units[key] = value
         elif _unit_of(known) != _unit_of(value):
             found.mixed.add(key)
+
+
+def _is_none(node: ast.AST | None) -> bool:
+    return type(node) is ast.Constant and node.value is None
 
 
 def _once_but_none(found: FrameFacts, attr: str) -> bool:

@@ -311,9 +311,12 @@ def _record(
 ) -> None:
     if kind is ast.AugAssign or kind is ast.AnnAssign:
         _count_assigned(index, node.target)  # type: ignore[attr-defined]
-        value = getattr(node, "value", None)
-        none = type(value) is ast.Constant and value.value is None
-        if kind is ast.AnnAssign and none:
+        value = node.value  # type: ignore[attr-defined]
+        if (
+            kind is ast.AnnAssign
+            and type(value) is ast.Constant
+            and value.value is None
+        ):
             _count_none(index, [node.target])  # type: ignore[attr-defined]
     if kind is ast.Global or kind is ast.Nonlocal:
         names.global_names.update(node.names)  # type: ignore[attr-defined]
